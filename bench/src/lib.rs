@@ -1,0 +1,1 @@
+//! Benchmarks of karkas live in `benches/`.

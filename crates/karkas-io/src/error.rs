@@ -1,0 +1,147 @@
+//! The one error type of this crate.
+//!
+//! Every variant names the file it is about, so the message alone tells the user where to look;
+//! line numbers are 1-based physical lines of the file, grid indices are 0-based like the `i`
+//! and `j` columns of a grid file.
+
+use std::fmt;
+use std::path::{Path, PathBuf};
+
+/// Anything that went wrong reading or writing a file.
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum IoError {
+    /// The file could not be opened or read.
+    #[error("cannot read {}: {source}", .path.display())]
+    Open {
+        /// The file.
+        path: PathBuf,
+        /// What the operating system reported.
+        source: std::io::Error,
+    },
+    /// A line of the file is malformed.
+    #[error("{}:{line}: {message}", .path.display())]
+    Parse {
+        /// The file.
+        path: PathBuf,
+        /// The 1-based line number.
+        line: usize,
+        /// What is wrong with the line.
+        message: String,
+    },
+    /// A cell of a grid file is missing or given more than once.
+    #[error("{}: grid cell (i={i}, j={j}): {message}", .path.display())]
+    Cell {
+        /// The file.
+        path: PathBuf,
+        /// The row index of the cell.
+        i: usize,
+        /// The column index of the cell.
+        j: usize,
+        /// What is wrong with the cell.
+        message: String,
+    },
+    /// A problem with the file as a whole: empty, too few points, mixed dimensions.
+    #[error("{}: {message}", .path.display())]
+    Data {
+        /// The file.
+        path: PathBuf,
+        /// What is wrong.
+        message: String,
+    },
+    /// The output file could not be written; the destination is left as it was.
+    #[error("cannot write {}: {source}", .path.display())]
+    Write {
+        /// The destination file.
+        path: PathBuf,
+        /// What the operating system (or the writer) reported.
+        source: std::io::Error,
+    },
+    /// The output file name has an extension no writer of the command handles.
+    #[error("{}: unknown output extension (use one of: {allowed})", .path.display())]
+    UnknownExtension {
+        /// The requested output file.
+        path: PathBuf,
+        /// The accepted extensions, like `".csv, .svg"`.
+        allowed: &'static str,
+    },
+}
+
+/// A 1-based line of a named file: where a parse error points.
+///
+/// Displays as `path:line`, the form editors and terminals recognise.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Location<'a> {
+    /// The file.
+    pub path: &'a Path,
+    /// The 1-based line number.
+    pub line: usize,
+}
+
+impl<'a> Location<'a> {
+    /// Line `line` (1-based) of `path`.
+    pub fn new(path: &'a Path, line: usize) -> Self {
+        Location { path, line }
+    }
+
+    /// An [`IoError::Parse`] at this location.
+    pub fn error(self, message: impl Into<String>) -> IoError {
+        IoError::Parse {
+            path: self.path.to_path_buf(),
+            line: self.line,
+            message: message.into(),
+        }
+    }
+}
+
+impl fmt::Display for Location<'_> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}:{}", self.path.display(), self.line)
+    }
+}
+
+/// An [`IoError::Data`] about the whole of `path`.
+pub(crate) fn data_error(path: &Path, message: impl Into<String>) -> IoError {
+    IoError::Data {
+        path: path.to_path_buf(),
+        message: message.into(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn messages_are_one_line_and_name_the_file() {
+        let p = Path::new("dir/a.csv");
+        assert_eq!(
+            Location::new(p, 7).error("bad").to_string(),
+            "dir/a.csv:7: bad"
+        );
+        let e = IoError::Cell {
+            path: p.into(),
+            i: 1,
+            j: 2,
+            message: "missing".into(),
+        };
+        assert_eq!(e.to_string(), "dir/a.csv: grid cell (i=1, j=2): missing");
+        let e = IoError::UnknownExtension {
+            path: "out.png".into(),
+            allowed: ".csv, .svg",
+        };
+        assert_eq!(
+            e.to_string(),
+            "out.png: unknown output extension (use one of: .csv, .svg)"
+        );
+        let e = IoError::Open {
+            path: p.into(),
+            source: std::io::Error::new(std::io::ErrorKind::NotFound, "gone"),
+        };
+        assert_eq!(e.to_string(), "cannot read dir/a.csv: gone");
+        assert_eq!(
+            data_error(p, "no points found").to_string(),
+            "dir/a.csv: no points found"
+        );
+    }
+}

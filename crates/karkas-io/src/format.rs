@@ -1,0 +1,94 @@
+//! Output formats, chosen by the extension of the output file name.
+//!
+//! The user says what they want by naming the file (`wing.svg`, `hull.obj`); each command
+//! passes the formats it can produce.
+
+use std::path::Path;
+
+use crate::error::IoError;
+
+/// A kind of output file.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum OutputFormat {
+    /// Comma-separated samples (`.csv`).
+    Csv,
+    /// A picture (`.svg`).
+    Svg,
+    /// A Wavefront triangle mesh (`.obj`).
+    Obj,
+}
+
+impl OutputFormat {
+    /// All formats, in the order they are listed in messages.
+    const ALL: [OutputFormat; 3] = [OutputFormat::Csv, OutputFormat::Svg, OutputFormat::Obj];
+
+    /// The format named by the extension of `path` (case-insensitive), if it is one of
+    /// `allowed`; otherwise [`IoError::UnknownExtension`] listing the allowed extensions.
+    pub fn from_path(path: &Path, allowed: &[OutputFormat]) -> Result<OutputFormat, IoError> {
+        let extension = path.extension().and_then(|e| e.to_str());
+        allowed
+            .iter()
+            .copied()
+            .find(|f| extension.is_some_and(|e| e.eq_ignore_ascii_case(f.extension())))
+            .ok_or_else(|| IoError::UnknownExtension {
+                path: path.to_path_buf(),
+                allowed: allowed_list(allowed),
+            })
+    }
+
+    /// The file extension, without the dot: `"csv"`, `"svg"` or `"obj"`.
+    pub fn extension(self) -> &'static str {
+        match self {
+            OutputFormat::Csv => "csv",
+            OutputFormat::Svg => "svg",
+            OutputFormat::Obj => "obj",
+        }
+    }
+}
+
+/// The extensions of `allowed` as a message fragment like `".csv, .svg"`.
+///
+/// A `&'static str` (so that [`IoError`] needs no allocation for it): with three formats there
+/// are only eight sets, listed here in the order of [`OutputFormat::ALL`].
+fn allowed_list(allowed: &[OutputFormat]) -> &'static str {
+    let [csv, svg, obj] = OutputFormat::ALL.map(|f| allowed.contains(&f));
+    match (csv, svg, obj) {
+        (false, false, false) => "(none)",
+        (true, false, false) => ".csv",
+        (false, true, false) => ".svg",
+        (false, false, true) => ".obj",
+        (true, true, false) => ".csv, .svg",
+        (true, false, true) => ".csv, .obj",
+        (false, true, true) => ".svg, .obj",
+        (true, true, true) => ".csv, .svg, .obj",
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use OutputFormat::*;
+
+    #[test]
+    fn extension_decides_case_insensitively() {
+        let p = Path::new;
+        assert_eq!(
+            OutputFormat::from_path(p("a/b.SVG"), &[Csv, Svg]).unwrap(),
+            Svg
+        );
+        assert_eq!(
+            OutputFormat::from_path(p("b.csv"), &[Csv, Svg]).unwrap(),
+            Csv
+        );
+        let e = OutputFormat::from_path(p("b.obj"), &[Svg, Csv]).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "b.obj: unknown output extension (use one of: .csv, .svg)"
+        );
+        assert!(OutputFormat::from_path(p("noext"), &[Csv, Svg, Obj]).is_err());
+        assert_eq!(allowed_list(&[Obj, Csv, Svg]), ".csv, .svg, .obj");
+        for f in OutputFormat::ALL {
+            assert_eq!(allowed_list(&[f]), format!(".{}", f.extension()));
+        }
+    }
+}

@@ -1,0 +1,217 @@
+//! A picture of a planar curve over the points it was made from, as SVG.
+//!
+//! SVG because it opens in every browser and stays sharp at any zoom. Drawn with `plotters`
+//! into a string in memory, then written with [`write_atomic`]. The axes have equal scales (a
+//! circle looks round), so the picture shows the true shape of the curve: the plot ranges are
+//! the bounding box of curve and points padded by 5%, the height follows the aspect of the
+//! data (clamped to 300..1200 px at 900 px width), and the shorter range is then enlarged until
+//! one unit is the same number of pixels along both axes.
+//!
+//! The curve is a blue polyline, the input points small red circles joined by a thin grey
+//! polygon (closed for a closed curve). For a spatial curve the caller passes the projection
+//! it wants shown.
+
+use std::ops::Range;
+use std::path::Path;
+
+use karkas::Point2;
+use plotters::prelude::*;
+
+use crate::error::IoError;
+use crate::write::write_atomic;
+
+/// Width of the picture in pixels.
+const WIDTH: u32 = 900;
+/// Smallest and largest height of the picture in pixels.
+const HEIGHTS: Range<u32> = 300..1201;
+/// Padding around the data, as a fraction of its extent.
+const PADDING: f64 = 0.05;
+
+/// What to draw.
+#[derive(Clone, Copy, Debug)]
+pub struct CurvePlot<'a> {
+    /// The caption above the plot.
+    pub title: &'a str,
+    /// The sampled curve, drawn as a polyline.
+    pub curve: &'a [Point2],
+    /// The input points, drawn as circles joined by a polygon.
+    pub input: &'a [Point2],
+    /// True when the input polygon should be closed (last point joined to the first).
+    pub closed_input: bool,
+}
+
+/// Draws `plot` and writes it as SVG to `path`, atomically.
+pub fn write_curve_svg(path: &Path, plot: &CurvePlot<'_>) -> Result<(), IoError> {
+    let svg = render_curve_svg(plot).map_err(|message| IoError::Write {
+        path: path.to_path_buf(),
+        source: std::io::Error::other(message),
+    })?;
+    write_atomic(path, |out| out.write_all(svg.as_bytes()))
+}
+
+/// Draws `plot` into an SVG document in memory; the error is the drawing library's message.
+pub fn render_curve_svg(plot: &CurvePlot<'_>) -> Result<String, String> {
+    let frame = Frame::new(plot)?;
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (WIDTH, frame.height)).into_drawing_area();
+        root.fill(&WHITE).map_err(|e| e.to_string())?;
+        let mut chart = chart_builder(&root, plot.title)
+            .build_cartesian_2d(frame.x, frame.y)
+            .map_err(|e| e.to_string())?;
+        chart
+            .configure_mesh()
+            .x_desc("x")
+            .y_desc("y")
+            .label_style(("sans-serif", 15))
+            .axis_desc_style(("sans-serif", 18))
+            .draw()
+            .map_err(|e| e.to_string())?;
+
+        let mut polygon: Vec<(f64, f64)> = finite(plot.input).collect();
+        if plot.closed_input && polygon.len() > 2 {
+            polygon.push(polygon[0]);
+        }
+        let grey = RGBColor(150, 150, 150);
+        chart
+            .draw_series(LineSeries::new(polygon, grey.stroke_width(1)))
+            .map_err(|e| e.to_string())?;
+        chart
+            .draw_series(LineSeries::new(finite(plot.curve), BLUE.stroke_width(2)))
+            .map_err(|e| e.to_string())?;
+        chart
+            .draw_series(finite(plot.input).map(|p| Circle::new(p, 3, RED.filled())))
+            .map_err(|e| e.to_string())?;
+        root.present().map_err(|e| e.to_string())?;
+    }
+    Ok(svg)
+}
+
+/// The chart layout shared by the measuring pass and the real drawing.
+fn chart_builder<'a, 'b, DB: DrawingBackend>(
+    root: &'a DrawingArea<DB, plotters::coord::Shift>,
+    title: &'b str,
+) -> ChartBuilder<'a, 'b, DB> {
+    let mut builder = ChartBuilder::on(root);
+    builder
+        .caption(title, ("sans-serif", 24))
+        .margin(12)
+        .x_label_area_size(45)
+        .y_label_area_size(65);
+    builder
+}
+
+/// The finite points of `points` as plotting coordinates (non-finite ones are left out).
+fn finite(points: &[Point2]) -> impl Iterator<Item = (f64, f64)> + '_ {
+    points
+        .iter()
+        .filter(|p| p.is_finite())
+        .map(|p| (p[0], p[1]))
+}
+
+/// Picture height and plot ranges with equal axis scales.
+#[derive(Clone, Debug, PartialEq)]
+struct Frame {
+    height: u32,
+    x: Range<f64>,
+    y: Range<f64>,
+}
+
+impl Frame {
+    fn new(plot: &CurvePlot<'_>) -> Result<Frame, String> {
+        let (x, y) = padded_bounds(finite(plot.curve).chain(finite(plot.input)));
+        let (x_len, y_len) = (x.end - x.start, y.end - y.start);
+        // Everything but the plotting area (caption, labels, margins) has a fixed size: measure
+        // it once, then choose the height that gives the plotting area the data's aspect.
+        let (plot_w, plot_h) = plotting_area(plot.title, 600)?;
+        let overhead = 600 - plot_h.min(600);
+        let wanted = f64::from(plot_w) * y_len / x_len + f64::from(overhead);
+        let height = (wanted.round() as u32).clamp(HEIGHTS.start, HEIGHTS.end - 1);
+        let (plot_w, plot_h) = plotting_area(plot.title, height)?;
+        let (plot_w, plot_h) = (f64::from(plot_w.max(1)), f64::from(plot_h.max(1)));
+        // Enlarge the shorter range (about its middle) to equal units per pixel.
+        let (x, y) = if y_len / x_len < plot_h / plot_w {
+            (x, widen(y, x_len * plot_h / plot_w))
+        } else {
+            (widen(x, y_len * plot_w / plot_h), y)
+        };
+        Ok(Frame { height, x, y })
+    }
+}
+
+/// Size in pixels of the plotting area of a picture `height` pixels high.
+fn plotting_area(title: &str, height: u32) -> Result<(u32, u32), String> {
+    let mut scratch = String::new();
+    let root = SVGBackend::with_string(&mut scratch, (WIDTH, height)).into_drawing_area();
+    let chart = chart_builder(&root, title)
+        .build_cartesian_2d(0.0..1.0, 0.0..1.0)
+        .map_err(|e| e.to_string())?;
+    Ok(chart.plotting_area().dim_in_pixel())
+}
+
+/// The bounding box of `points` padded by [`PADDING`]; a degenerate extent is opened to the
+/// other one (or to 1 for a single point, or the unit square for none).
+fn padded_bounds(points: impl Iterator<Item = (f64, f64)>) -> (Range<f64>, Range<f64>) {
+    let mut lo = (f64::INFINITY, f64::INFINITY);
+    let mut hi = (f64::NEG_INFINITY, f64::NEG_INFINITY);
+    for (x, y) in points {
+        lo = (lo.0.min(x), lo.1.min(y));
+        hi = (hi.0.max(x), hi.1.max(y));
+    }
+    if lo.0 > hi.0 {
+        return (0.0..1.0, 0.0..1.0);
+    }
+    let (mut x_len, mut y_len) = (hi.0 - lo.0, hi.1 - lo.1);
+    let fallback = x_len.max(y_len);
+    let fallback = if fallback > 0.0 && fallback.is_finite() {
+        fallback
+    } else {
+        1.0
+    };
+    if x_len <= 0.0 || !x_len.is_finite() {
+        x_len = fallback;
+    }
+    if y_len <= 0.0 || !y_len.is_finite() {
+        y_len = fallback;
+    }
+    let centre = (0.5 * lo.0 + 0.5 * hi.0, 0.5 * lo.1 + 0.5 * hi.1);
+    let half = (0.5 + PADDING) * x_len;
+    let x = centre.0 - half..centre.0 + half;
+    let half = (0.5 + PADDING) * y_len;
+    (x, centre.1 - half..centre.1 + half)
+}
+
+/// `range` widened about its middle to `length`.
+fn widen(range: Range<f64>, length: f64) -> Range<f64> {
+    let centre = 0.5 * range.start + 0.5 * range.end;
+    centre - 0.5 * length..centre + 0.5 * length
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn bounds_are_padded_and_never_empty() {
+        let (x, y) = padded_bounds([(0.0, 0.0), (10.0, 2.0)].into_iter());
+        assert!((x.start + 0.5).abs() < 1e-12 && (x.end - 10.5).abs() < 1e-12);
+        assert!((y.start + 0.1).abs() < 1e-12 && (y.end - 2.1).abs() < 1e-12);
+        let (x, y) = padded_bounds([(3.0, 3.0)].into_iter());
+        assert!(x.end > x.start && y.end > y.start);
+        assert_eq!(padded_bounds(std::iter::empty()), (0.0..1.0, 0.0..1.0));
+    }
+
+    #[test]
+    fn tall_data_gets_a_tall_picture_within_limits() {
+        let tall = [Point2::new([0.0, 0.0]), Point2::new([1.0, 100.0])];
+        let plot = CurvePlot {
+            title: "t",
+            curve: &tall,
+            input: &[],
+            closed_input: false,
+        };
+        let frame = Frame::new(&plot).unwrap();
+        assert_eq!(frame.height, 1200);
+        assert!(frame.x.end - frame.x.start > 10.0);
+    }
+}

@@ -1,0 +1,171 @@
+//! Writing output files atomically, and the CSV writers of sampled curves and surfaces.
+//!
+//! Every output goes through [`write_atomic`]: the content is written to a temporary file in
+//! the destination's directory and renamed over the destination only when complete, so a
+//! failed or interrupted run never leaves a truncated file or destroys the previous one.
+//!
+//! CSV is written with the `csv` crate. Numbers use Rust's shortest round-trip formatting of
+//! `f64` (`{}`), so a file read back gives bit-identical values.
+
+use std::fmt::Write as _;
+use std::io::{self, BufWriter, Write};
+use std::path::Path;
+
+use karkas::{Point, Point3};
+
+use crate::error::IoError;
+
+/// Writes `path` atomically with the bytes `fill` produces.
+///
+/// `fill` writes into a buffered temporary file created in the directory of `path` (the
+/// current directory for a bare file name); on success the file is renamed over `path`. On any
+/// error, from `fill` or from the file system, the destination is left untouched, the temporary
+/// file is removed, and the error is an [`IoError::Write`] naming `path`. An existing
+/// destination keeps its permissions; a new one gets the usual ones for a new file.
+pub fn write_atomic(
+    path: &Path,
+    fill: impl FnOnce(&mut dyn Write) -> io::Result<()>,
+) -> Result<(), IoError> {
+    let error = |source| IoError::Write {
+        path: path.to_path_buf(),
+        source,
+    };
+    let dir = match path.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p,
+        _ => Path::new("."),
+    };
+    let mut builder = tempfile::Builder::new();
+    builder.prefix(".karkas-").suffix(".tmp");
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt;
+        let mode = std::fs::metadata(path).map_or(0o666, |m| m.permissions().mode() & 0o7777);
+        builder.permissions(std::fs::Permissions::from_mode(mode));
+    }
+    let mut temp = builder.tempfile_in(dir).map_err(error)?;
+    {
+        let mut out = BufWriter::new(temp.as_file_mut());
+        fill(&mut out).map_err(error)?;
+        out.flush().map_err(error)?;
+    }
+    temp.as_file().sync_all().map_err(error)?;
+    temp.persist(path).map_err(|e| error(e.error))?;
+    Ok(())
+}
+
+/// Writes curve samples as CSV: header `t,x,y` (`D = 2`) or `t,x,y,z` (`D = 3`), one row per
+/// sample `(ts[k], points[k])`. Other dimensions name the coordinates `x1, x2, ...`.
+///
+/// `ts` and `points` must have the same length, else [`IoError::Write`] (nothing is written).
+pub fn write_curve_csv<const D: usize>(
+    path: &Path,
+    ts: &[f64],
+    points: &[Point<D>],
+) -> Result<(), IoError> {
+    check_len(path, "parameters", ts.len(), points.len())?;
+    let mut header = vec!["t".to_owned()];
+    header.extend(coordinate_names(D));
+    write_atomic(path, |out| {
+        let mut csv = CsvRows::new(out, &header)?;
+        for (&t, p) in ts.iter().zip(points) {
+            csv.row(std::iter::once(t).chain(p.0))?;
+        }
+        csv.finish()
+    })
+}
+
+/// Writes surface samples as CSV: header `u,v,x,y,z`, rows in row-major order of the sample
+/// grid (`u` outer, `v` inner): `points[a * vs.len() + b]` is the point at `(us[a], vs[b])`.
+///
+/// `points.len()` must be `us.len() * vs.len()`, else [`IoError::Write`] (nothing is written).
+pub fn write_surface_csv(
+    path: &Path,
+    us: &[f64],
+    vs: &[f64],
+    points: &[Point3],
+) -> Result<(), IoError> {
+    let cells = us.len().saturating_mul(vs.len());
+    check_len(path, "u x v parameters", cells, points.len())?;
+    let header = ["u", "v", "x", "y", "z"].map(str::to_owned);
+    write_atomic(path, |out| {
+        let mut csv = CsvRows::new(out, &header)?;
+        let parameters = us.iter().flat_map(|&u| vs.iter().map(move |&v| (u, v)));
+        for ((u, v), p) in parameters.zip(points) {
+            csv.row([u, v].into_iter().chain(p.0))?;
+        }
+        csv.finish()
+    })
+}
+
+/// `x, y, z` for up to three dimensions, `x1, x2, ...` beyond.
+fn coordinate_names(dim: usize) -> Vec<String> {
+    if dim <= 3 {
+        ["x", "y", "z"][..dim]
+            .iter()
+            .map(|s| (*s).to_owned())
+            .collect()
+    } else {
+        (1..=dim).map(|k| format!("x{k}")).collect()
+    }
+}
+
+/// [`IoError::Write`] unless `parameters == points`.
+fn check_len(path: &Path, what: &str, parameters: usize, points: usize) -> Result<(), IoError> {
+    if parameters == points {
+        return Ok(());
+    }
+    Err(IoError::Write {
+        path: path.to_path_buf(),
+        source: io::Error::new(
+            io::ErrorKind::InvalidInput,
+            format!("{parameters} {what} for {points} points"),
+        ),
+    })
+}
+
+/// A CSV writer of rows of numbers in shortest round-trip form.
+struct CsvRows<'a> {
+    writer: csv::Writer<&'a mut dyn Write>,
+    number: String,
+}
+
+impl<'a> CsvRows<'a> {
+    /// Starts the file with `header`.
+    fn new(out: &'a mut dyn Write, header: &[String]) -> io::Result<Self> {
+        let mut writer = csv::Writer::from_writer(out);
+        writer.write_record(header)?;
+        Ok(CsvRows {
+            writer,
+            number: String::new(),
+        })
+    }
+
+    /// Writes one row.
+    fn row(&mut self, values: impl IntoIterator<Item = f64>) -> io::Result<()> {
+        for v in values {
+            self.number.clear();
+            // Writing into a String cannot fail.
+            let _ = write!(self.number, "{v}");
+            self.writer.write_field(&self.number)?;
+        }
+        self.writer.write_record(None::<&[u8]>)?;
+        Ok(())
+    }
+
+    /// Flushes the rows into the output.
+    fn finish(mut self) -> io::Result<()> {
+        self.writer.flush()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_of_coordinates() {
+        assert_eq!(coordinate_names(2), ["x", "y"]);
+        assert_eq!(coordinate_names(3), ["x", "y", "z"]);
+        assert_eq!(coordinate_names(4), ["x1", "x2", "x3", "x4"]);
+    }
+}

@@ -1,0 +1,123 @@
+//! Reading surface frames from grid CSV.
+
+use std::path::Path;
+
+use karkas::Point;
+use karkas_io::grid::{parse_grid, read_grid};
+use karkas_io::IoError;
+
+/// A 2 x 3 frame in row-major order, point (i, j) = (i, j, i + 10 j).
+const ORDERED: &str = "i,j,x,y,z
+0,0,0,0,0
+0,1,0,1,10
+0,2,0,2,20
+1,0,1,0,1
+1,1,1,1,11
+1,2,1,2,21
+";
+
+fn cell_error(text: &str) -> IoError {
+    parse_grid(text, Path::new("g.csv")).unwrap_err()
+}
+
+#[test]
+fn ordered_grid() {
+    let g = parse_grid(ORDERED, Path::new("g.csv")).unwrap();
+    assert_eq!((g.rows(), g.cols()), (2, 3));
+    for i in 0..2 {
+        for j in 0..3 {
+            let (x, y) = (i as f64, j as f64);
+            assert_eq!(*g.get(i, j), Point([x, y, x + 10.0 * y]));
+        }
+    }
+}
+
+#[test]
+fn shuffled_rows_and_columns_give_the_same_grid() {
+    let ordered = parse_grid(ORDERED, Path::new("g.csv")).unwrap();
+    let shuffled = "# a frame\nZ, y, J, extra, x, I
+21,2,2,foo,1,1
+0,0,0,foo,0,0
+
+11,1,1,foo,1,1
+10,1,1,foo,0,0
+1,0,0,foo,1,1
+20,2,2,foo,0,0
+";
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("shuffled.csv");
+    std::fs::write(&path, shuffled).unwrap();
+    assert_eq!(read_grid(&path).unwrap(), ordered);
+}
+
+#[test]
+fn missing_cell_is_named() {
+    let text = ORDERED.replace("0,2,0,2,20\n", "");
+    let e = cell_error(&text);
+    assert!(matches!(e, IoError::Cell { i: 0, j: 2, .. }), "{e:?}");
+    assert_eq!(e.to_string(), "g.csv: grid cell (i=0, j=2): missing");
+
+    let text = "i,j,x,y,z\n0,0,0,0,0\n2,2,1,1,1\n";
+    assert_eq!(
+        cell_error(text).to_string(),
+        "g.csv: grid cell (i=0, j=1): missing (and 6 more cells)"
+    );
+}
+
+#[test]
+fn absurd_index_is_a_missing_cell_not_an_allocation() {
+    let text = "i,j,x,y,z\n0,0,0,0,0\n0,1,0,0,0\n1000000000000,1000000,0,0,0\n";
+    let e = cell_error(text);
+    assert!(matches!(e, IoError::Cell { i: 0, j: 2, .. }), "{e:?}");
+}
+
+#[test]
+fn duplicate_cell_names_both_lines() {
+    let text = ORDERED.replace("1,2,1,2,21", "0,1,5,5,5");
+    assert_eq!(
+        cell_error(&text).to_string(),
+        "g.csv: grid cell (i=0, j=1): given twice, on lines 3 and 7"
+    );
+}
+
+#[test]
+fn bad_index_names_the_line() {
+    for bad in ["-1", "1.5", "one"] {
+        let text = ORDERED.replace("1,1,1,1,11", &format!("{bad},1,1,1,11"));
+        let e = cell_error(&text);
+        assert!(matches!(e, IoError::Parse { line: 6, .. }), "{e:?}");
+        assert!(
+            e.to_string().contains("is not a non-negative integer"),
+            "{e}"
+        );
+    }
+}
+
+#[test]
+fn bad_coordinate_names_the_line() {
+    let text = ORDERED.replace("1,1,1,1,11", "1,1,1,1,NaN");
+    assert_eq!(
+        cell_error(&text).to_string(),
+        "g.csv:6: non-finite value 'NaN' in column 5"
+    );
+}
+
+#[test]
+fn missing_column_or_header() {
+    let text = ORDERED.replace("i,j,x,y,z", "i,j,x,y,w");
+    let e = cell_error(&text);
+    assert!(matches!(e, IoError::Parse { line: 1, .. }), "{e:?}");
+    assert!(e.to_string().contains("no column 'z'"), "{e}");
+
+    let text = ORDERED.replace("i,j,x,y,z\n", "");
+    let e = cell_error(&text);
+    assert!(matches!(e, IoError::Parse { line: 1, .. }), "{e:?}");
+    assert!(e.to_string().contains("missing header"), "{e}");
+}
+
+#[test]
+fn empty_grid_is_a_data_error() {
+    for text in ["", "i,j,x,y,z\n", "# nothing\n"] {
+        assert!(matches!(cell_error(text), IoError::Data { .. }));
+    }
+}

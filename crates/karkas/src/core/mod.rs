@@ -1,0 +1,16 @@
+//! Shared core types: points, intervals, grids, and the curve and surface traits that every
+//! method of karkas implements and every consumer (sampling, sections, export) relies on.
+
+mod curve;
+mod grid;
+mod interval;
+mod point;
+mod sampling;
+mod surface;
+
+pub use curve::{Curve, PiecewiseCurve, Side};
+pub use grid::Grid;
+pub use interval::Interval;
+pub use point::{Point, Point2, Point3};
+pub use sampling::uniform_into;
+pub use surface::{PiecewiseSurface, Surface};

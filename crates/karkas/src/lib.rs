@@ -1,0 +1,33 @@
+//! # karkas
+//!
+//! Smooth parametric curves and surfaces from point frames: ordered points, grids of points,
+//! networks of curves, implicit equations.
+//!
+//! The crate is the geometry only (no files, no printing). It is organised by layer:
+//!
+//! - [`core`]: points, intervals, grids, and the [`Curve`] / [`Surface`] traits every method
+//!   implements;
+//! - [`solve`]: the banded linear solvers the methods need;
+//! - [`ll`]: the LL-approximation of curves and surfaces (Aulchenko, Latypov, Nikulichev):
+//!   oscillation-free, monotone, `C^L` curves and surfaces on a uniform parameter grid, and
+//!   their interpolating variant.
+//!
+//! ```
+//! use karkas::{ll::LlCurve, Curve, Point};
+//! let pts = [Point([0.0, 0.0]), Point([1.0, 1.0]), Point([2.0, 0.0]), Point([3.0, 1.0])];
+//! let curve = LlCurve::new(&pts, 3, false).unwrap();
+//! // An open LL curve passes through its first and last points at the ends of its domain.
+//! let d = curve.domain();
+//! assert!(curve.eval(d.start).distance(pts[0]) < 1e-15);
+//! assert!(curve.eval(d.end).distance(pts[3]) < 1e-15);
+//! ```
+
+pub mod core;
+mod error;
+pub mod ll;
+pub mod solve;
+
+pub use crate::core::{
+    Curve, Grid, Interval, PiecewiseCurve, PiecewiseSurface, Point, Point2, Point3, Side, Surface,
+};
+pub use error::{Error, Result};

@@ -1,0 +1,303 @@
+//! LL curves (seed 000, formulas (3)–(6); METHODS.md §1.2).
+//!
+//! An LL curve of order `L` through the support polygon `r_1..r_K` is, on segment `i`,
+//! `P_i(xi) = c_-(xi) r_{i-1} + c_0(xi) r_i + c_+(xi) r_{i+1}`, with the kernel weights of
+//! [`LlKernel`]. Guarantees: `C^L` at segment borders; inside each segment the curve lies in
+//! the convex hull of the three points, is affine-invariant, bends only one way (each
+//! coordinate's second derivative keeps the sign of `D_i = r_{i-1} - 2 r_i + r_{i+1}`) and is
+//! monotone wherever the three points are; it deviates from node `r_i` by exactly
+//! `d_L D_i`. An open curve passes through `r_1` and `r_K`.
+//!
+//! Evaluation is `O(1)` per point: each segment is stored as `P = A + xi B + h(xi) C` with
+//! `A = (r_{i-1} + r_i)/2`, `B = r_i - r_{i-1}`, `C = D_i / 2`, and batches are evaluated with
+//! the kernel specialised to the order (1..=12) at compile time.
+
+use super::axis::NodeAxis;
+use super::frame::{close, coincide, extend, model_scale, validate};
+use super::kernel::{pow_n, LlKernel};
+use super::prefilter::interpolation_controls;
+use crate::core::{Curve, Interval, PiecewiseCurve, Side};
+use crate::{Error, Point, Result};
+
+/// One segment in power form: `P(xi) = a + xi b + h(xi) c`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Segment<const D: usize> {
+    a: Point<D>,
+    b: Point<D>,
+    c: Point<D>,
+}
+
+/// An LL curve of order `L` in R^D, open or closed.
+///
+/// Parameter `t` follows the paper: node `i` at `t = i/(K+1)`, domain `[1/(K+1), K/(K+1)]`.
+/// Outside the domain an open curve is clamped to its end points and a closed curve wraps.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LlCurve<const D: usize> {
+    kernel: LlKernel,
+    axis: NodeAxis,
+    /// `r_0..r_{K+1}`.
+    extended: Vec<Point<D>>,
+    /// Segment `i` (1-based) at index `i - 1`.
+    segments: Vec<Segment<D>>,
+}
+
+impl<const D: usize> LlCurve<D> {
+    /// The LL approximation of order `order` over the support polygon `points`.
+    ///
+    /// With `closed`, the polygon is closed: if the last point repeats the first it is the
+    /// paper's `r_K = r_1`; otherwise the last point is joined to the first (K counts the
+    /// repeated point either way).
+    ///
+    /// Errors: fewer than 3 points (3 distinct ones when closed), a non-finite coordinate,
+    /// `order` outside `1..=64`.
+    pub fn new(points: &[Point<D>], order: usize, closed: bool) -> Result<Self> {
+        let kernel = LlKernel::new(order)?;
+        let control = Self::support_polygon(points, closed)?;
+        Ok(Self::from_control(kernel, control, closed))
+    }
+
+    /// The interpolating LL curve: passes through every point of `points` at its node
+    /// `t_i = i/(K+1)`. The control polygon is found by the `O(K)` solve of system (6).
+    /// Same closing rule and errors as [`new`](Self::new).
+    pub fn interpolating(points: &[Point<D>], order: usize, closed: bool) -> Result<Self> {
+        let kernel = LlKernel::new(order)?;
+        let mut control = Self::support_polygon(points, closed)?;
+        interpolation_controls(&mut control, kernel.d_l(), closed)?;
+        Ok(Self::from_control(kernel, control, closed))
+    }
+
+    /// Validates and, when `closed`, closes the input polygon.
+    fn support_polygon(points: &[Point<D>], closed: bool) -> Result<Vec<Point<D>>> {
+        validate(points, "an LL curve")?;
+        let mut control = points.to_vec();
+        if closed {
+            let scale = model_scale(points);
+            let repeats = coincide(points[0], points[points.len() - 1], scale);
+            close(&mut control, repeats);
+            if control.len() < 4 {
+                return Err(Error::TooFewPoints {
+                    what: "a closed LL curve (distinct points)",
+                    needed: 3,
+                    got: control.len() - 1,
+                });
+            }
+        }
+        Ok(control)
+    }
+
+    /// Builds the curve from a ready control polygon (`r_K == r_1` when closed).
+    pub(crate) fn from_control(kernel: LlKernel, control: Vec<Point<D>>, closed: bool) -> Self {
+        let axis = NodeAxis::new(control.len(), closed);
+        let extended = extend(&control, closed);
+        let segments = extended
+            .windows(3)
+            .map(|w| Segment {
+                a: (w[0] + w[1]) * 0.5,
+                b: w[1] - w[0],
+                c: (w[0] + w[2] - w[1] * 2.0) * 0.5,
+            })
+            .collect();
+        LlCurve {
+            kernel,
+            axis,
+            extended,
+            segments,
+        }
+    }
+
+    /// The order `L`.
+    pub fn order(&self) -> usize {
+        self.kernel.order()
+    }
+
+    /// The kernel `h` of this curve's order.
+    pub fn kernel(&self) -> &LlKernel {
+        &self.kernel
+    }
+
+    /// The node grid of the parameter.
+    pub fn axis(&self) -> NodeAxis {
+        self.axis
+    }
+
+    /// The control polygon `r_1..r_K` (for a closed curve the last repeats the first; for the
+    /// interpolating variant these are the solved `r*`).
+    pub fn control_points(&self) -> &[Point<D>] {
+        &self.extended[1..self.extended.len() - 1]
+    }
+
+    /// The `k`-th derivative on segment `i` (1-based) at local coordinate `xi`, per unit `t`.
+    #[inline]
+    fn deriv_on_segment(&self, i: usize, xi: f64, k: usize) -> Point<D> {
+        if k == 0 {
+            let s = &self.segments[i - 1];
+            return s.a.add_scaled(xi, s.b).add_scaled(self.kernel.h(xi), s.c);
+        }
+        let w = self.kernel.weights(xi, k);
+        let r = &self.extended[i - 1..=i + 1];
+        let p = r[0] * w[0] + r[1] * w[1] + r[2] * w[2];
+        p * pow_n(self.axis.scale(), k)
+    }
+
+    /// Batch evaluation with the kernel specialised to order `L`.
+    ///
+    /// Works in chunks, in two passes: the first finds every parameter's segment, `xi` and
+    /// `h(xi)` with float arithmetic only (no gathers, no conversions, so it vectorizes); the
+    /// second combines the segment coefficients.
+    fn eval_batch<const L: usize>(&self, ts: &[f64], out: &mut [Point<D>]) {
+        const CHUNK: usize = 256;
+        let coeffs: [f64; L] = core::array::from_fn(|k| self.kernel.value_coeffs()[k]);
+        let axis = self.axis;
+        let scale = axis.scale();
+        let nodes = axis.nodes();
+        let mut segment = [0.0f64; CHUNK];
+        let mut local = [0.0f64; CHUNK];
+        let mut kernel = [0.0f64; CHUNK];
+        for (tc, oc) in ts.chunks(CHUNK).zip(out.chunks_mut(CHUNK)) {
+            let n = tc.len();
+            let (seg, loc, ker) = (&mut segment[..n], &mut local[..n], &mut kernel[..n]);
+            if axis.is_closed() {
+                for (s, &t) in seg.iter_mut().zip(tc) {
+                    *s = axis.reduce(t) * scale + 0.5;
+                }
+            } else {
+                let d = axis.domain();
+                for (s, &t) in seg.iter_mut().zip(tc) {
+                    let t = if t < d.start {
+                        d.start
+                    } else if t > d.end {
+                        d.end
+                    } else {
+                        t
+                    };
+                    *s = t * scale + 0.5;
+                }
+            }
+            for ((s, xi_out), h_out) in seg.iter_mut().zip(loc.iter_mut()).zip(ker.iter_mut()) {
+                let i = floor_small(*s);
+                let xi = *s - i;
+                let y = 1.0 - xi;
+                let mut q = coeffs[L - 1];
+                for c in coeffs[..L - 1].iter().rev() {
+                    q = q * y + c;
+                }
+                *s = i;
+                *xi_out = xi;
+                *h_out = q * pow_n(xi, L + 1);
+            }
+            for (k, p) in oc.iter_mut().enumerate() {
+                // `as usize` saturates and maps NaN to 0; the clamp keeps the index valid.
+                let s = &self.segments[(seg[k] as usize).clamp(1, nodes) - 1];
+                *p = s.a.add_scaled(loc[k], s.b).add_scaled(ker[k], s.c);
+            }
+        }
+    }
+}
+
+/// `floor(s)` for `0 <= s < 2^51`, by rounding through `2^52` (a libm call is avoided on
+/// baseline x86-64, and the loop stays vectorizable). Exact halves may round either way,
+/// which moves a parameter on a segment border to the neighbouring segment: the LL curve is
+/// continuous there, so the point is the same.
+#[inline(always)]
+fn floor_small(s: f64) -> f64 {
+    const TWO_52: f64 = 4_503_599_627_370_496.0;
+    (s - 0.5 + TWO_52) - TWO_52
+}
+
+impl<const D: usize> Curve<D> for LlCurve<D> {
+    fn domain(&self) -> Interval {
+        self.axis.domain()
+    }
+
+    fn is_closed(&self) -> bool {
+        self.axis.is_closed()
+    }
+
+    fn eval(&self, t: f64) -> Point<D> {
+        let (i, xi) = self.axis.locate(t);
+        self.deriv_on_segment(i, xi, 0)
+    }
+
+    fn deriv(&self, t: f64, k: usize) -> Point<D> {
+        let (i, xi) = self.axis.locate(t);
+        self.deriv_on_segment(i, xi, k)
+    }
+
+    fn eval_into(&self, ts: &[f64], out: &mut [Point<D>]) {
+        assert_eq!(
+            ts.len(),
+            out.len(),
+            "parameter and output buffers differ in length"
+        );
+        match self.kernel.order() {
+            1 => self.eval_batch::<1>(ts, out),
+            2 => self.eval_batch::<2>(ts, out),
+            3 => self.eval_batch::<3>(ts, out),
+            4 => self.eval_batch::<4>(ts, out),
+            5 => self.eval_batch::<5>(ts, out),
+            6 => self.eval_batch::<6>(ts, out),
+            7 => self.eval_batch::<7>(ts, out),
+            8 => self.eval_batch::<8>(ts, out),
+            9 => self.eval_batch::<9>(ts, out),
+            10 => self.eval_batch::<10>(ts, out),
+            11 => self.eval_batch::<11>(ts, out),
+            12 => self.eval_batch::<12>(ts, out),
+            _ => {
+                for (p, &t) in out.iter_mut().zip(ts) {
+                    *p = self.eval(t);
+                }
+            }
+        }
+    }
+}
+
+impl<const D: usize> PiecewiseCurve<D> for LlCurve<D> {
+    fn breakpoints(&self) -> Vec<f64> {
+        self.axis.breakpoints()
+    }
+
+    fn continuity(&self) -> usize {
+        self.kernel.order()
+    }
+
+    fn deriv_on_side(&self, t: f64, k: usize, side: Side) -> Point<D> {
+        let (i, xi) = self.axis.locate_on_side(t, side);
+        self.deriv_on_segment(i, xi, k)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn batch_and_single_evaluation_agree_for_every_order() {
+        let pts: Vec<Point<3>> = (0..9)
+            .map(|i| {
+                let f = i as f64;
+                Point([f.cos() * 3.0, f * f * 0.1, (2.0 * f).sin()])
+            })
+            .collect();
+        for order in 1..=14 {
+            for closed in [false, true] {
+                let c = LlCurve::new(&pts, order, closed).unwrap();
+                let ts: Vec<f64> = (0..=200).map(|k| -0.1 + 1.2 * k as f64 / 200.0).collect();
+                let mut out = vec![Point::ZERO; ts.len()];
+                c.eval_into(&ts, &mut out);
+                for (&t, p) in ts.iter().zip(&out) {
+                    assert!(p.distance(c.eval(t)) < 1e-13, "order {order} t {t}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn parameters_outside_the_domain_never_panic() {
+        let pts = [Point([0.0, 0.0]), Point([1.0, 2.0]), Point([2.0, 0.0])];
+        let c = LlCurve::new(&pts, 2, false).unwrap();
+        assert!(!c.eval(f64::NAN).is_finite());
+        // Open curves clamp: far outside the domain is the end point.
+        assert!(c.eval(f64::INFINITY).distance(pts[2]) < 1e-15);
+        assert!(c.eval(-1e300).distance(pts[0]) < 1e-15);
+    }
+}
