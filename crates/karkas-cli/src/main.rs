@@ -1,1 +1,67 @@
-fn main() {}
+//! `karkas`: smooth curves and surfaces from point frames, on the command line.
+//!
+//! A thin layer over the `karkas` and `karkas-io` crates: one module per command in `cmd/`.
+//! Exit codes: 0 on success, 2 on any error (bad arguments, bad or unreadable input, an
+//! output that cannot be written); the message is one line on standard error naming the file
+//! and the line or grid cell at fault. No output file is created or changed on error.
+
+mod cmd;
+mod demo;
+mod samples;
+
+use clap::error::ErrorKind;
+use clap::{Parser, Subcommand};
+use std::process::ExitCode;
+
+/// Smooth parametric curves and surfaces from point frames.
+#[derive(Debug, Parser)]
+#[command(name = "karkas", version, about, long_about = None)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Debug, Subcommand)]
+enum Command {
+    /// Build a curve from ordered points.
+    #[command(subcommand)]
+    Curve(cmd::CurveCommand),
+    /// Build a surface from a grid of points.
+    #[command(subcommand)]
+    Surface(cmd::SurfaceCommand),
+    /// Reproduce the examples of the papers on built-in data.
+    Demo(demo::DemoArgs),
+}
+
+fn main() -> ExitCode {
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        // --help, --version, and a command given without its subcommand: clap's own output.
+        Err(e)
+            if !e.use_stderr()
+                || e.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand =>
+        {
+            e.exit()
+        }
+        Err(e) => {
+            // clap's first line says what is wrong; keep every error to one line.
+            let text = e.to_string();
+            let first = text.lines().next().unwrap_or("bad arguments");
+            eprintln!("karkas: {first} (see karkas --help)");
+            return ExitCode::from(2);
+        }
+    };
+    let result = match cli.command {
+        Command::Curve(c) => c.run(),
+        Command::Surface(c) => c.run(),
+        Command::Demo(args) => demo::run(&args),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            // One line: the chain of causes joined by ": ".
+            eprintln!("karkas: error: {e:#}");
+            ExitCode::from(2)
+        }
+    }
+}

@@ -51,7 +51,7 @@ pub fn write_curve_svg(path: &Path, plot: &CurvePlot<'_>) -> Result<(), IoError>
 
 /// Draws `plot` into an SVG document in memory; the error is the drawing library's message.
 pub fn render_curve_svg(plot: &CurvePlot<'_>) -> Result<String, String> {
-    let frame = Frame::new(plot)?;
+    let frame = Frame::new(plot.title, finite(plot.curve).chain(finite(plot.input)))?;
     let mut svg = String::new();
     {
         let root = SVGBackend::with_string(&mut svg, (WIDTH, frame.height)).into_drawing_area();
@@ -82,6 +82,75 @@ pub fn render_curve_svg(plot: &CurvePlot<'_>) -> Result<String, String> {
         chart
             .draw_series(finite(plot.input).map(|p| Circle::new(p, 3, RED.filled())))
             .map_err(|e| e.to_string())?;
+        root.present().map_err(|e| e.to_string())?;
+    }
+    Ok(svg)
+}
+
+/// A wireframe: several polylines in one picture with equal axis scales (sections of a
+/// surface, a projected 3-D view).
+#[derive(Clone, Copy, Debug)]
+pub struct LinesPlot<'a> {
+    /// The caption above the plot.
+    pub title: &'a str,
+    /// Names of the horizontal and vertical axes.
+    pub axes: (&'a str, &'a str),
+    /// The groups of polylines, drawn in the order given.
+    pub groups: &'a [LineGroup<'a>],
+}
+
+/// Polylines drawn in one colour.
+#[derive(Clone, Copy, Debug)]
+pub struct LineGroup<'a> {
+    /// The polylines.
+    pub lines: &'a [Vec<Point2>],
+    /// Their colour as RGB.
+    pub rgb: (u8, u8, u8),
+    /// Their stroke width in pixels.
+    pub width: u32,
+}
+
+/// Draws `plot` and writes it as SVG to `path`, atomically.
+pub fn write_lines_svg(path: &Path, plot: &LinesPlot<'_>) -> Result<(), IoError> {
+    let svg = render_lines_svg(plot).map_err(|message| IoError::Write {
+        path: path.to_path_buf(),
+        source: std::io::Error::other(message),
+    })?;
+    write_atomic(path, |out| out.write_all(svg.as_bytes()))
+}
+
+/// Draws `plot` into an SVG document in memory; the error is the drawing library's message.
+pub fn render_lines_svg(plot: &LinesPlot<'_>) -> Result<String, String> {
+    let all = plot
+        .groups
+        .iter()
+        .flat_map(|g| g.lines.iter())
+        .flat_map(|l| finite(l));
+    let frame = Frame::new(plot.title, all)?;
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (WIDTH, frame.height)).into_drawing_area();
+        root.fill(&WHITE).map_err(|e| e.to_string())?;
+        let mut chart = chart_builder(&root, plot.title)
+            .build_cartesian_2d(frame.x, frame.y)
+            .map_err(|e| e.to_string())?;
+        chart
+            .configure_mesh()
+            .x_desc(plot.axes.0)
+            .y_desc(plot.axes.1)
+            .label_style(("sans-serif", 15))
+            .axis_desc_style(("sans-serif", 18))
+            .draw()
+            .map_err(|e| e.to_string())?;
+        for group in plot.groups {
+            let (r, g, b) = group.rgb;
+            let style = RGBColor(r, g, b).stroke_width(group.width);
+            for line in group.lines {
+                chart
+                    .draw_series(LineSeries::new(finite(line), style))
+                    .map_err(|e| e.to_string())?;
+            }
+        }
         root.present().map_err(|e| e.to_string())?;
     }
     Ok(svg)
@@ -118,16 +187,16 @@ struct Frame {
 }
 
 impl Frame {
-    fn new(plot: &CurvePlot<'_>) -> Result<Frame, String> {
-        let (x, y) = padded_bounds(finite(plot.curve).chain(finite(plot.input)));
+    fn new(title: &str, points: impl Iterator<Item = (f64, f64)>) -> Result<Frame, String> {
+        let (x, y) = padded_bounds(points);
         let (x_len, y_len) = (x.end - x.start, y.end - y.start);
         // Everything but the plotting area (caption, labels, margins) has a fixed size: measure
         // it once, then choose the height that gives the plotting area the data's aspect.
-        let (plot_w, plot_h) = plotting_area(plot.title, 600)?;
+        let (plot_w, plot_h) = plotting_area(title, 600)?;
         let overhead = 600 - plot_h.min(600);
         let wanted = f64::from(plot_w) * y_len / x_len + f64::from(overhead);
         let height = (wanted.round() as u32).clamp(HEIGHTS.start, HEIGHTS.end - 1);
-        let (plot_w, plot_h) = plotting_area(plot.title, height)?;
+        let (plot_w, plot_h) = plotting_area(title, height)?;
         let (plot_w, plot_h) = (f64::from(plot_w.max(1)), f64::from(plot_h.max(1)));
         // Enlarge the shorter range (about its middle) to equal units per pixel.
         let (x, y) = if y_len / x_len < plot_h / plot_w {
@@ -210,7 +279,7 @@ mod tests {
             input: &[],
             closed_input: false,
         };
-        let frame = Frame::new(&plot).unwrap();
+        let frame = Frame::new(plot.title, finite(plot.curve)).unwrap();
         assert_eq!(frame.height, 1200);
         assert!(frame.x.end - frame.x.start > 10.0);
     }

@@ -1,0 +1,77 @@
+//! `karkas surface ll`: the LL surface of a grid of points (seed 000, METHODS.md §1.3).
+
+use super::curve_ll::{report, MAX_SAMPLES};
+use super::output::ensure_distinct;
+use crate::samples::{default_surface_samples, parse_pair};
+use anyhow::{anyhow, bail, Result};
+use clap::Args;
+use karkas::ll::{LlKernel, LlSurface};
+use karkas::{Point3, Surface};
+use karkas_io::grid::read_grid;
+use karkas_io::obj::write_surface_obj;
+use karkas_io::write::write_surface_csv;
+use karkas_io::OutputFormat;
+use std::path::PathBuf;
+
+/// Arguments of `karkas surface ll`.
+#[derive(Debug, Args)]
+pub struct SurfaceLlArgs {
+    /// LL order L (at least 1): the surface is C^L in each variable.
+    #[arg(long, default_value_t = 3)]
+    order: usize,
+    /// Close the surface in u (across rows, index i).
+    #[arg(long)]
+    closed_u: bool,
+    /// Close the surface in v (along rows, index j).
+    #[arg(long)]
+    closed_v: bool,
+    /// Pass through every grid point instead of approximating the grid.
+    #[arg(long)]
+    interpolate: bool,
+    /// Samples NU,NV, uniform over the domain, ends included
+    /// [default: 4 per grid line in each direction, at least 50].
+    #[arg(long, value_parser = parse_pair)]
+    samples: Option<(usize, usize)>,
+    /// Input grid: CSV with header i,j,x,y,z (indices from 0, rows in any order).
+    input: PathBuf,
+    /// Output file: .csv (u,v,x,y,z) or .obj (triangle mesh).
+    #[arg(short, long)]
+    output: PathBuf,
+}
+
+/// Runs `karkas surface ll`.
+pub fn run(args: &SurfaceLlArgs) -> Result<()> {
+    let format = OutputFormat::from_path(&args.output, &[OutputFormat::Csv, OutputFormat::Obj])?;
+    LlKernel::new(args.order).map_err(|e| anyhow!("--order: {e}"))?;
+    if args
+        .samples
+        .is_some_and(|(nu, nv)| nu.saturating_mul(nv) > MAX_SAMPLES)
+    {
+        bail!("--samples: at most {MAX_SAMPLES} samples can be written");
+    }
+    ensure_distinct(&args.input, &args.output)?;
+    let grid = read_grid(&args.input)?;
+    let build = if args.interpolate {
+        LlSurface::interpolating
+    } else {
+        LlSurface::new
+    };
+    let surface = build(&grid, args.order, args.closed_u, args.closed_v)
+        .map_err(|e| anyhow!("{}: {e}", args.input.display()))?;
+    let (nu, nv) = args.samples.unwrap_or_else(|| {
+        (
+            default_surface_samples(grid.rows()),
+            default_surface_samples(grid.cols()),
+        )
+    });
+    let mut us = vec![0.0; nu];
+    let mut vs = vec![0.0; nv];
+    let mut samples = vec![Point3::ZERO; nu * nv];
+    surface.sample_grid_into(&mut us, &mut vs, &mut samples);
+    match format {
+        OutputFormat::Obj => write_surface_obj(&args.output, nu, nv, &samples)?,
+        _ => write_surface_csv(&args.output, &us, &vs, &samples)?,
+    }
+    report(&args.output, nu * nv);
+    Ok(())
+}

@@ -1,0 +1,47 @@
+//! `karkas demo`: the examples of the papers, reproduced on built-in data, written to a folder
+//! with pictures, meshes and the data itself, and a summary table on the terminal.
+
+mod data;
+mod ll;
+
+use anyhow::{Context, Result};
+use clap::Args;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+/// Arguments of `karkas demo`.
+#[derive(Debug, Args)]
+pub struct DemoArgs {
+    /// Folder for the pictures, meshes and data (created if missing; files of the same names
+    /// inside it are replaced).
+    #[arg(long, default_value = "karkas-demo")]
+    out: PathBuf,
+}
+
+/// One line of the summary: what was checked and the figure found.
+pub struct Finding {
+    /// The example.
+    pub example: &'static str,
+    /// What the figure measures.
+    pub measure: &'static str,
+    /// The figure.
+    pub value: f64,
+}
+
+/// Runs every example and prints the summary.
+pub fn run(args: &DemoArgs) -> Result<()> {
+    let started = Instant::now();
+    std::fs::create_dir_all(&args.out)
+        .with_context(|| format!("cannot create the folder {}", args.out.display()))?;
+    let findings = ll::run(&args.out)?;
+    print_summary(&findings, &args.out, started.elapsed().as_secs_f64());
+    Ok(())
+}
+
+fn print_summary(findings: &[Finding], out: &Path, seconds: f64) {
+    println!("{:<34} {:<52} {:>12}", "example", "measure", "value");
+    for f in findings {
+        println!("{:<34} {:<52} {:>12.3e}", f.example, f.measure, f.value);
+    }
+    println!("wrote {} in {seconds:.2} s", out.display());
+}
