@@ -34,9 +34,25 @@ fn shuffled(ts: &[f64]) -> Vec<f64> {
     out
 }
 
+/// The ceiling: a plain cubic evaluated into an array of 3-D points (one store stream).
+fn plain_cubic_into(ts: &[f64], out: &mut [Point3]) {
+    for (p, &t) in out.iter_mut().zip(ts) {
+        let x = ((0.5 * t - 1.0) * t + 2.0) * t + 0.25;
+        *p = Point3::new([x, t, 1.0 - x]);
+    }
+}
+
 fn curve_eval(c: &mut Criterion) {
     let mut group = c.benchmark_group("ll_curve_eval_L5_3d");
     let n = 1_000_000;
+    {
+        let ts: Vec<f64> = (0..n).map(|i| i as f64 / n as f64).collect();
+        let mut out = vec![Point3::ZERO; n];
+        group.throughput(Throughput::Elements(n as u64));
+        group.bench_function("reference_plain_cubic", |b| {
+            b.iter(|| plain_cubic_into(black_box(&ts), &mut out))
+        });
+    }
     for &k in &[1_000usize, 100_000] {
         let curve = LlCurve::new(&polygon(k), 5, false).unwrap();
         let d = curve.domain();

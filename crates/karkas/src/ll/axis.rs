@@ -8,6 +8,12 @@
 
 use crate::core::{Interval, Side};
 
+/// Relative distance (in `s = t (K+1) + 1/2`) within which a parameter counts as lying on a
+/// segment border. A breakpoint `(i - 1/2)/(K+1)` does not survive the product with `K+1`
+/// (nor the period wrap of a closed direction) exactly: without this, about one border in
+/// twenty-five was given to the wrong segment.
+const BORDER_ULPS: f64 = 8.0 * f64::EPSILON;
+
 /// The uniform nodes of one parameter direction.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct NodeAxis {
@@ -77,7 +83,12 @@ impl NodeAxis {
         // After `reduce`, s >= 1.5, so truncation is the floor (and far cheaper than
         // `f64::floor`, a libm call on baseline x86-64). `as usize` saturates (NaN -> 0), so
         // the clamp keeps the index valid for any input.
-        let i = (s as usize).clamp(1, self.nodes);
+        let mut i = s as usize;
+        // A border that came out a few ulp low (see `BORDER_ULPS`) still belongs above.
+        if (i + 1) as f64 - s <= BORDER_ULPS * s {
+            i += 1;
+        }
+        let i = i.clamp(1, self.nodes);
         (i, s - i as f64)
     }
 
@@ -85,7 +96,12 @@ impl NodeAxis {
     /// segment on `side` of it (`xi = 1` on the segment below).
     #[inline]
     pub fn locate_on_side(&self, t: f64, side: Side) -> (usize, f64) {
-        let s = self.reduce(t) * self.scale() + 0.5;
+        let mut s = self.reduce(t) * self.scale() + 0.5;
+        // Snap a parameter within rounding of a border onto it, so that `side` decides.
+        let nearest = (s + 0.5) as usize as f64;
+        if (s - nearest).abs() <= BORDER_ULPS * s {
+            s = nearest;
+        }
         let below = (s.ceil() as usize).saturating_sub(1);
         let raw = match side {
             Side::Above => s.floor() as usize,
