@@ -126,7 +126,7 @@ pub enum Error {
     /// ([`TubeSurface::new`](crate::dps::TubeSurface::new): `f_i(j n2) = g_j(i n1)`).
     #[error(
         "along curve i={along} and across curve j={across} do not meet: f_i(j n2) and g_j(i n1) \
-         are {distance:e} apart (tolerance {tolerance:e})"
+         are {distance:.3e} apart (tolerance {tolerance:.3e})"
     )]
     IncompatibleSkeleton {
         /// The along curve `i`.

@@ -11,10 +11,9 @@
 //! ```
 //!
 //! `T_r(k)` is computed as `sum_q rho_q^(2r)` with `rho_q = sin(pi k/m) / (n sin(pi (q m + k)/N))`.
-//! Every `rho_q` lies in `(0, 1]` (`|sin(n x)| <= n |sin x|`), so nothing overflows for any order,
-//! and each sine is taken of an angle reduced to `[0, pi/2]` from exact integers. `T_r` is real
-//! and `T_r(k) = T_r(m - k)`, so only `k <= m/2` is needed and the transforms are real-to-complex
-//! ones (the `realfft` crate over `rustfft`).
+//! Every `rho_q` lies in `(0, 1]` (`|sin(n x)| <= n |sin x|`), so nothing overflows for any order.
+//! `T_r` is real and `T_r(k) = T_r(m - k)`, so only `k <= m/2` is needed and the transforms are
+//! real-to-complex ones (the `realfft` crate over `rustfft`).
 //!
 //! Cost: the symbol is `O(N)` once per plan (`N/2` terms); each solve is two real FFTs of length
 //! `m` per coordinate, `O(m log m)`, with no allocation. A plan is reused for many right-hand
@@ -186,22 +185,26 @@ fn fft_error(e: realfft::FftError) -> Error {
 }
 
 /// `T_r(k)` for `k` in `0..=m/2` (module docs).
+///
+/// The sines `sin(pi (q m + k)/N) = sin(pi q/n + pi k/N)` come from the angle-addition formula
+/// with `sin` and `cos` of `pi q/n` tabulated once: two multiplications instead of a sine per
+/// term. For `k <= m/2` the added angle is at most `pi/(2n)`, so near `pi` (where the sum is a
+/// difference) at most one bit cancels, and for `q = 0` the result is `sin(pi k/N)` exactly.
 fn symbol(m: usize, n: usize, order: usize) -> Vec<f64> {
-    let big_n = m * n;
-    // sin(pi j / N) for an integer j in 0..=N, from the angle reduced to [0, pi/2].
-    let sin_of = |j: usize| {
-        let j = j.min(big_n - j);
-        (PI * j as f64 / big_n as f64).sin()
-    };
+    let big_n = (m * n) as f64;
+    let step: Vec<(f64, f64)> = (0..n)
+        .map(|q| (PI * q as f64 / n as f64).sin_cos())
+        .collect();
     let power = 2 * order as i32;
     let mut out = Vec::with_capacity(m / 2 + 1);
     out.push(1.0);
     for k in 1..=m / 2 {
-        // sin(pi k / m) = sin(pi k n / N).
-        let top = sin_of(k * n) / n as f64;
+        let (sin_k, cos_k) = (PI * k as f64 / big_n).sin_cos();
+        // sin(pi k / m) / n, the numerator of every rho_q.
+        let top = (PI * k as f64 / m as f64).sin() / n as f64;
         let mut sum = 0.0;
-        for q in 0..n {
-            let rho = top / sin_of(q * m + k);
+        for &(sin_q, cos_q) in &step {
+            let rho = top / (sin_q * cos_k + cos_q * sin_k);
             sum += rho.powi(power);
         }
         out.push(sum);
