@@ -15,6 +15,7 @@
 //!   points as CSV;
 //! - [`svg`]: pictures of a planar curve over its input points, of a discrete curve, and of
 //!   wireframes;
+//! - [`scene`]: a shaded picture of a projected 3-D scene (painter's algorithm);
 //! - [`obj`]: a sampled surface as a Wavefront OBJ triangle mesh;
 //! - [`stl`]: a sampled surface as a binary STL triangle mesh.
 //!
@@ -27,6 +28,7 @@ pub mod format;
 pub mod grid;
 pub mod obj;
 pub mod points;
+pub mod scene;
 pub mod skeleton;
 pub mod stl;
 pub mod svg;

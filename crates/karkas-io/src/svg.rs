@@ -21,7 +21,7 @@ use crate::error::IoError;
 use crate::write::write_atomic;
 
 /// Width of the picture in pixels.
-const WIDTH: u32 = 900;
+pub(crate) const WIDTH: u32 = 900;
 /// Smallest and largest height of the picture in pixels.
 const HEIGHTS: Range<u32> = 300..1201;
 /// Padding around the data, as a fraction of its extent.
@@ -229,7 +229,7 @@ pub fn render_lines_svg(plot: &LinesPlot<'_>) -> Result<String, String> {
 }
 
 /// The chart layout shared by the measuring pass and the real drawing.
-fn chart_builder<'a, 'b, DB: DrawingBackend>(
+pub(crate) fn chart_builder<'a, 'b, DB: DrawingBackend>(
     root: &'a DrawingArea<DB, plotters::coord::Shift>,
     title: &'b str,
 ) -> ChartBuilder<'a, 'b, DB> {
@@ -243,7 +243,7 @@ fn chart_builder<'a, 'b, DB: DrawingBackend>(
 }
 
 /// The finite points of `points` as plotting coordinates (non-finite ones are left out).
-fn finite(points: &[Point2]) -> impl Iterator<Item = (f64, f64)> + '_ {
+pub(crate) fn finite(points: &[Point2]) -> impl Iterator<Item = (f64, f64)> + '_ {
     points
         .iter()
         .filter(|p| p.is_finite())
@@ -252,14 +252,15 @@ fn finite(points: &[Point2]) -> impl Iterator<Item = (f64, f64)> + '_ {
 
 /// Picture height and plot ranges with equal axis scales.
 #[derive(Clone, Debug, PartialEq)]
-struct Frame {
-    height: u32,
-    x: Range<f64>,
-    y: Range<f64>,
+pub(crate) struct Frame {
+    pub height: u32,
+    pub x: Range<f64>,
+    pub y: Range<f64>,
 }
 
 impl Frame {
-    fn new(title: &str, points: impl Iterator<Item = (f64, f64)>) -> Result<Frame, String> {
+    /// The frame of a picture titled `title` showing `points`.
+    pub fn new(title: &str, points: impl Iterator<Item = (f64, f64)>) -> Result<Frame, String> {
         let (x, y) = padded_bounds(points);
         let (x_len, y_len) = (x.end - x.start, y.end - y.start);
         // Everything but the plotting area (caption, labels, margins) has a fixed size: measure
