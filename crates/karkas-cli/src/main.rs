@@ -26,7 +26,7 @@ enum Command {
     /// Build a curve from ordered points.
     #[command(subcommand)]
     Curve(cmd::CurveCommand),
-    /// Build a surface from a grid of points.
+    /// Build a surface from a grid of points or a skeleton of curves.
     #[command(subcommand)]
     Surface(cmd::SurfaceCommand),
     /// Reproduce the examples of the papers on built-in data.

@@ -240,11 +240,7 @@ type ColouredLine = (Vec<Point3>, (u8, u8, u8));
 /// The shaded picture of the closed `grid` (first row and column repeated): one quadrilateral
 /// per cell, lit from over the viewer's left shoulder, with `lines` (polylines on the surface)
 /// drawn in front of the faces they lie on.
-fn shaded_scene(
-    camera: &Camera,
-    grid: &Grid<Point3>,
-    lines: &[ColouredLine],
-) -> Vec<SceneItem> {
+fn shaded_scene(camera: &Camera, grid: &Grid<Point3>, lines: &[ColouredLine]) -> Vec<SceneItem> {
     let light = (camera.up * 0.6 - camera.right * 0.4 - camera.forward) * (1.0 / 1.2);
     let mut items = Vec::new();
     for a in 0..grid.rows() - 1 {
