@@ -26,7 +26,7 @@ enum Command {
     /// Build a curve from ordered points.
     #[command(subcommand)]
     Curve(cmd::CurveCommand),
-    /// Build a surface from a grid of points.
+    /// Build a surface from a grid of points or a skeleton of curves.
     #[command(subcommand)]
     Surface(cmd::SurfaceCommand),
     /// Reproduce the examples of the papers on built-in data.
@@ -44,10 +44,16 @@ fn main() -> ExitCode {
             e.exit()
         }
         Err(e) => {
-            // clap's first line says what is wrong; keep every error to one line.
+            // clap's first line says what is wrong; keep every error to one line. When it ends
+            // in a colon (missing arguments), the next line names them.
             let text = e.to_string();
-            let first = text.lines().next().unwrap_or("bad arguments");
-            eprintln!("karkas: {first} (see karkas --help)");
+            let mut lines = text.lines().map(str::trim).filter(|l| !l.is_empty());
+            let first = lines.next().unwrap_or("bad arguments");
+            let detail = match lines.next() {
+                Some(next) if first.ends_with(':') => format!(" {next}"),
+                _ => String::new(),
+            };
+            eprintln!("karkas: {first}{detail} (see karkas --help)");
             return ExitCode::from(2);
         }
     };

@@ -57,13 +57,29 @@ pub enum IoError {
         /// What the operating system (or the writer) reported.
         source: std::io::Error,
     },
+    /// A sample of a skeleton curve file is missing or given more than once.
+    #[error("{}: {curve_column}={curve}, {sample_column}={sample}: {message}", .path.display())]
+    Sample {
+        /// The file.
+        path: PathBuf,
+        /// The name of the curve index column (`i` or `j`).
+        curve_column: &'static str,
+        /// The curve index.
+        curve: usize,
+        /// The name of the sample index column (`q` or `p`).
+        sample_column: &'static str,
+        /// The sample index.
+        sample: usize,
+        /// What is wrong with the sample.
+        message: String,
+    },
     /// The output file name has an extension no writer of the command handles.
     #[error("{}: unknown output extension (use one of: {allowed})", .path.display())]
     UnknownExtension {
         /// The requested output file.
         path: PathBuf,
         /// The accepted extensions, like `".csv, .svg"`.
-        allowed: &'static str,
+        allowed: String,
     },
 }
 
@@ -128,7 +144,7 @@ mod tests {
         assert_eq!(e.to_string(), "dir/a.csv: grid cell (i=1, j=2): missing");
         let e = IoError::UnknownExtension {
             path: "out.png".into(),
-            allowed: ".csv, .svg",
+            allowed: ".csv, .svg".into(),
         };
         assert_eq!(
             e.to_string(),

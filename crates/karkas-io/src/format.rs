@@ -16,11 +16,18 @@ pub enum OutputFormat {
     Svg,
     /// A Wavefront triangle mesh (`.obj`).
     Obj,
+    /// A binary STL triangle mesh (`.stl`).
+    Stl,
 }
 
 impl OutputFormat {
     /// All formats, in the order they are listed in messages.
-    const ALL: [OutputFormat; 3] = [OutputFormat::Csv, OutputFormat::Svg, OutputFormat::Obj];
+    const ALL: [OutputFormat; 4] = [
+        OutputFormat::Csv,
+        OutputFormat::Svg,
+        OutputFormat::Obj,
+        OutputFormat::Stl,
+    ];
 
     /// The format named by the extension of `path` (case-insensitive), if it is one of
     /// `allowed`; otherwise [`IoError::UnknownExtension`] listing the allowed extensions.
@@ -36,31 +43,29 @@ impl OutputFormat {
             })
     }
 
-    /// The file extension, without the dot: `"csv"`, `"svg"` or `"obj"`.
+    /// The file extension, without the dot: `"csv"`, `"svg"`, `"obj"` or `"stl"`.
     pub fn extension(self) -> &'static str {
         match self {
             OutputFormat::Csv => "csv",
             OutputFormat::Svg => "svg",
             OutputFormat::Obj => "obj",
+            OutputFormat::Stl => "stl",
         }
     }
 }
 
-/// The extensions of `allowed` as a message fragment like `".csv, .svg"`.
-///
-/// A `&'static str` (so that [`IoError`] needs no allocation for it): with three formats there
-/// are only eight sets, listed here in the order of [`OutputFormat::ALL`].
-fn allowed_list(allowed: &[OutputFormat]) -> &'static str {
-    let [csv, svg, obj] = OutputFormat::ALL.map(|f| allowed.contains(&f));
-    match (csv, svg, obj) {
-        (false, false, false) => "(none)",
-        (true, false, false) => ".csv",
-        (false, true, false) => ".svg",
-        (false, false, true) => ".obj",
-        (true, true, false) => ".csv, .svg",
-        (true, false, true) => ".csv, .obj",
-        (false, true, true) => ".svg, .obj",
-        (true, true, true) => ".csv, .svg, .obj",
+/// The extensions of `allowed` as a message fragment like `".csv, .svg"`, in the order of
+/// [`OutputFormat::ALL`].
+fn allowed_list(allowed: &[OutputFormat]) -> String {
+    let list: Vec<String> = OutputFormat::ALL
+        .iter()
+        .filter(|f| allowed.contains(f))
+        .map(|f| format!(".{}", f.extension()))
+        .collect();
+    if list.is_empty() {
+        "(none)".to_owned()
+    } else {
+        list.join(", ")
     }
 }
 
@@ -87,6 +92,8 @@ mod tests {
         );
         assert!(OutputFormat::from_path(p("noext"), &[Csv, Svg, Obj]).is_err());
         assert_eq!(allowed_list(&[Obj, Csv, Svg]), ".csv, .svg, .obj");
+        assert_eq!(allowed_list(&[Stl, Csv, Obj]), ".csv, .obj, .stl");
+        assert_eq!(allowed_list(&[]), "(none)");
         for f in OutputFormat::ALL {
             assert_eq!(allowed_list(&[f]), format!(".{}", f.extension()));
         }

@@ -6,6 +6,9 @@
 //! columns are ignored. The result is a [`Grid`] with `max i + 1` rows and `max j + 1` columns,
 //! every cell given exactly once. Read with the `csv` crate (`#` comments and blank lines are
 //! skipped as in the other formats).
+//!
+//! The same layout with other index names holds the skeleton curves of a tube
+//! ([`crate::skeleton`]); the parser here serves both.
 
 use std::collections::HashMap;
 use std::path::Path;
@@ -15,8 +18,30 @@ use karkas::{Grid, Point, Point3};
 use crate::error::{data_error, IoError, Location};
 use crate::lines::{csv_rows, is_number, parse_coordinate, read_text, strip_bom, Row};
 
-/// The column names of a grid file, in the order of [`GridColumns`].
-const NAMES: [&str; 5] = ["i", "j", "x", "y", "z"];
+/// The names of a file of indexed points `a,b,x,y,z`, and how its errors name a cell.
+pub(crate) struct IndexedLayout {
+    /// The five column names: two indices, then `x`, `y`, `z`.
+    pub names: [&'static str; 5],
+    /// The header as the messages quote it, like `"i,j,x,y,z"`.
+    pub header: &'static str,
+    /// What the points are, for "no ... found".
+    pub what: &'static str,
+    /// The error about cell `(a, b)` of `path`.
+    pub cell_error: fn(&Path, usize, usize, String) -> IoError,
+}
+
+/// The layout of a surface frame.
+const GRID: IndexedLayout = IndexedLayout {
+    names: ["i", "j", "x", "y", "z"],
+    header: "i,j,x,y,z",
+    what: "grid points",
+    cell_error: |path, i, j, message| IoError::Cell {
+        path: path.to_path_buf(),
+        i,
+        j,
+        message,
+    },
+};
 
 /// Reads the surface frame of the grid CSV file at `path`.
 pub fn read_grid(path: &Path) -> Result<Grid<Point3>, IoError> {
@@ -26,14 +51,24 @@ pub fn read_grid(path: &Path) -> Result<Grid<Point3>, IoError> {
 /// Reads a surface frame from grid CSV `text` already in memory; `path` names the file in
 /// error messages.
 pub fn parse_grid(text: &str, path: &Path) -> Result<Grid<Point3>, IoError> {
+    parse_indexed(text, path, &GRID)
+}
+
+/// Reads a grid of points from `text` in the `layout` (header names, error wording).
+pub(crate) fn parse_indexed(
+    text: &str,
+    path: &Path,
+    layout: &IndexedLayout,
+) -> Result<Grid<Point3>, IoError> {
     let text = strip_bom(text);
     let rows = csv_rows(text, path)?;
+    let none_found = || data_error(path, format!("no {} found", layout.what));
     let Some((header, data)) = rows.split_first() else {
-        return Err(data_error(path, "no grid points found"));
+        return Err(none_found());
     };
-    let columns = GridColumns::from_header(header, path)?;
+    let columns = GridColumns::from_header(header, path, layout)?;
     if data.is_empty() {
-        return Err(data_error(path, "no grid points found"));
+        return Err(none_found());
     }
 
     // Cell -> (line, point); duplicates are caught here.
@@ -42,12 +77,8 @@ pub fn parse_grid(text: &str, path: &Path) -> Result<Grid<Point3>, IoError> {
     for row in data {
         let (i, j, p) = columns.read(row, path)?;
         if let Some(&(first_line, _)) = cells.get(&(i, j)) {
-            return Err(IoError::Cell {
-                path: path.to_path_buf(),
-                i,
-                j,
-                message: format!("given twice, on lines {first_line} and {}", row.line),
-            });
+            let message = format!("given twice, on lines {first_line} and {}", row.line);
+            return Err((layout.cell_error)(path, i, j, message));
         }
         cells.insert((i, j), (row.line, p));
         max_i = max_i.max(i);
@@ -63,6 +94,7 @@ pub fn parse_grid(text: &str, path: &Path) -> Result<Grid<Point3>, IoError> {
             max_j as u128 + 1,
             expected,
             path,
+            layout,
         ));
     }
     let (rows, cols) = (max_i + 1, max_j + 1);
@@ -83,6 +115,7 @@ fn first_missing_cell(
     cols: u128,
     expected: u128,
     path: &Path,
+    layout: &IndexedLayout,
 ) -> IoError {
     let first = (0..=cells.len())
         .map(|k| {
@@ -98,32 +131,34 @@ fn first_missing_cell(
         1 => "missing (and 1 more cell)".to_owned(),
         n => format!("missing (and {n} more cells)"),
     };
-    IoError::Cell {
-        path: path.to_path_buf(),
-        i: first.0,
-        j: first.1,
-        message,
-    }
+    (layout.cell_error)(path, first.0, first.1, message)
 }
 
 /// Where the five named columns are in the rows of a grid file (0-based field indices).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 struct GridColumns {
-    /// Field indices of `i`, `j`, `x`, `y`, `z`.
+    /// Field indices of the two indices and `x`, `y`, `z`.
     index: [usize; 5],
+    /// The column names, in the same order.
+    names: [&'static str; 5],
     /// Number of fields every row has.
     width: usize,
 }
 
 impl GridColumns {
     /// Finds the columns in the header row.
-    fn from_header(header: &Row, path: &Path) -> Result<GridColumns, IoError> {
+    fn from_header(
+        header: &Row,
+        path: &Path,
+        layout: &IndexedLayout,
+    ) -> Result<GridColumns, IoError> {
         let at = Location::new(path, header.line);
+        let expected = layout.header;
         if header.fields.iter().all(|f| is_number(f)) {
-            return Err(at.error("missing header: expected the columns i,j,x,y,z"));
+            return Err(at.error(format!("missing header: expected the columns {expected}")));
         }
         let mut index = [0; 5];
-        for (slot, name) in index.iter_mut().zip(NAMES) {
+        for (slot, name) in index.iter_mut().zip(layout.names) {
             let mut found = header
                 .fields
                 .iter()
@@ -132,7 +167,7 @@ impl GridColumns {
                 .map(|(k, _)| k);
             *slot = found.next().ok_or_else(|| {
                 at.error(format!(
-                    "the header has no column '{name}' (expected i,j,x,y,z)"
+                    "the header has no column '{name}' (expected {expected})"
                 ))
             })?;
             if found.next().is_some() {
@@ -141,6 +176,7 @@ impl GridColumns {
         }
         Ok(GridColumns {
             index,
+            names: layout.names,
             width: header.fields.len(),
         })
     }
@@ -162,7 +198,7 @@ impl GridColumns {
                     "'{}' is not a non-negative integer (column {}, '{}')",
                     field(k),
                     self.index[k] + 1,
-                    NAMES[k]
+                    self.names[k]
                 ))
             })
         };

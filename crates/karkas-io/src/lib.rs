@@ -6,12 +6,18 @@
 //! Reading:
 //! - [`points`]: an ordered list of curve points from CSV, whitespace-separated columns or an
 //!   airfoil `.dat` ([`airfoil`]), chosen by content;
-//! - [`grid`]: a surface frame as CSV rows `i,j,x,y,z`.
+//! - [`grid`]: a surface frame as CSV rows `i,j,x,y,z`;
+//! - [`skeleton`]: the skeleton curves of a tube as CSV rows `i,q,x,y,z` (along) and
+//!   `j,p,x,y,z` (across).
 //!
 //! Writing (always atomically, see [`write::write_atomic`]):
-//! - [`write`](mod@write): sampled curves and surfaces as CSV;
-//! - [`svg`]: a picture of a planar curve over its input points;
-//! - [`obj`]: a sampled surface as a Wavefront OBJ triangle mesh.
+//! - [`write`](mod@write): sampled curves and surfaces, discrete curves and indexed grids of
+//!   points as CSV;
+//! - [`svg`]: pictures of a planar curve over its input points, of a discrete curve, and of
+//!   wireframes;
+//! - [`scene`]: a shaded picture of a projected 3-D scene (painter's algorithm);
+//! - [`obj`]: a sampled surface as a Wavefront OBJ triangle mesh;
+//! - [`stl`]: a sampled surface as a binary STL triangle mesh.
 //!
 //! Every error is an [`IoError`] naming the file and, where there is one, the 1-based line or
 //! the grid cell. No input, however malformed, makes these functions panic.
@@ -22,6 +28,9 @@ pub mod format;
 pub mod grid;
 pub mod obj;
 pub mod points;
+pub mod scene;
+pub mod skeleton;
+pub mod stl;
 pub mod svg;
 pub mod write;
 

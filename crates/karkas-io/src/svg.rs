@@ -21,7 +21,7 @@ use crate::error::IoError;
 use crate::write::write_atomic;
 
 /// Width of the picture in pixels.
-const WIDTH: u32 = 900;
+pub(crate) const WIDTH: u32 = 900;
 /// Smallest and largest height of the picture in pixels.
 const HEIGHTS: Range<u32> = 300..1201;
 /// Padding around the data, as a fraction of its extent.
@@ -81,6 +81,78 @@ pub fn render_curve_svg(plot: &CurvePlot<'_>) -> Result<String, String> {
             .map_err(|e| e.to_string())?;
         chart
             .draw_series(finite(plot.input).map(|p| Circle::new(p, 3, RED.filled())))
+            .map_err(|e| e.to_string())?;
+        root.present().map_err(|e| e.to_string())?;
+    }
+    Ok(svg)
+}
+
+/// A discrete curve (a closed sequence of points, such as the values of a discrete periodic
+/// spline) over its poles or nodes.
+#[derive(Clone, Copy, Debug)]
+pub struct DiscreteCurvePlot<'a> {
+    /// The caption above the plot.
+    pub title: &'a str,
+    /// The values of the curve, in order; the last is joined to the first.
+    pub values: &'a [Point2],
+    /// Draw the values as dots (`true`) or as the closed polyline through them (`false`).
+    pub dots: bool,
+    /// The poles or nodes: red circles joined by a thin grey closed polygon.
+    pub input: &'a [Point2],
+}
+
+/// Draws `plot` and writes it as SVG to `path`, atomically.
+pub fn write_discrete_curve_svg(path: &Path, plot: &DiscreteCurvePlot<'_>) -> Result<(), IoError> {
+    let svg = render_discrete_curve_svg(plot).map_err(|message| IoError::Write {
+        path: path.to_path_buf(),
+        source: std::io::Error::other(message),
+    })?;
+    write_atomic(path, |out| out.write_all(svg.as_bytes()))
+}
+
+/// Draws `plot` into an SVG document in memory; the error is the drawing library's message.
+pub fn render_discrete_curve_svg(plot: &DiscreteCurvePlot<'_>) -> Result<String, String> {
+    if !plot.dots {
+        let mut closed: Vec<Point2> = plot.values.to_vec();
+        if let Some(&first) = plot.values.first() {
+            closed.push(first);
+        }
+        return render_curve_svg(&CurvePlot {
+            title: plot.title,
+            curve: &closed,
+            input: plot.input,
+            closed_input: true,
+        });
+    }
+    let frame = Frame::new(plot.title, finite(plot.values).chain(finite(plot.input)))?;
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (WIDTH, frame.height)).into_drawing_area();
+        root.fill(&WHITE).map_err(|e| e.to_string())?;
+        let mut chart = chart_builder(&root, plot.title)
+            .build_cartesian_2d(frame.x, frame.y)
+            .map_err(|e| e.to_string())?;
+        chart
+            .configure_mesh()
+            .x_desc("x")
+            .y_desc("y")
+            .label_style(("sans-serif", 15))
+            .axis_desc_style(("sans-serif", 18))
+            .draw()
+            .map_err(|e| e.to_string())?;
+        let mut polygon: Vec<(f64, f64)> = finite(plot.input).collect();
+        if polygon.len() > 2 {
+            polygon.push(polygon[0]);
+        }
+        let grey = RGBColor(150, 150, 150);
+        chart
+            .draw_series(LineSeries::new(polygon, grey.stroke_width(1)))
+            .map_err(|e| e.to_string())?;
+        chart
+            .draw_series(finite(plot.values).map(|p| Circle::new(p, 2, BLUE.filled())))
+            .map_err(|e| e.to_string())?;
+        chart
+            .draw_series(finite(plot.input).map(|p| Circle::new(p, 4, RED.filled())))
             .map_err(|e| e.to_string())?;
         root.present().map_err(|e| e.to_string())?;
     }
@@ -157,7 +229,7 @@ pub fn render_lines_svg(plot: &LinesPlot<'_>) -> Result<String, String> {
 }
 
 /// The chart layout shared by the measuring pass and the real drawing.
-fn chart_builder<'a, 'b, DB: DrawingBackend>(
+pub(crate) fn chart_builder<'a, 'b, DB: DrawingBackend>(
     root: &'a DrawingArea<DB, plotters::coord::Shift>,
     title: &'b str,
 ) -> ChartBuilder<'a, 'b, DB> {
@@ -171,7 +243,7 @@ fn chart_builder<'a, 'b, DB: DrawingBackend>(
 }
 
 /// The finite points of `points` as plotting coordinates (non-finite ones are left out).
-fn finite(points: &[Point2]) -> impl Iterator<Item = (f64, f64)> + '_ {
+pub(crate) fn finite(points: &[Point2]) -> impl Iterator<Item = (f64, f64)> + '_ {
     points
         .iter()
         .filter(|p| p.is_finite())
@@ -180,14 +252,15 @@ fn finite(points: &[Point2]) -> impl Iterator<Item = (f64, f64)> + '_ {
 
 /// Picture height and plot ranges with equal axis scales.
 #[derive(Clone, Debug, PartialEq)]
-struct Frame {
-    height: u32,
-    x: Range<f64>,
-    y: Range<f64>,
+pub(crate) struct Frame {
+    pub height: u32,
+    pub x: Range<f64>,
+    pub y: Range<f64>,
 }
 
 impl Frame {
-    fn new(title: &str, points: impl Iterator<Item = (f64, f64)>) -> Result<Frame, String> {
+    /// The frame of a picture titled `title` showing `points`.
+    pub fn new(title: &str, points: impl Iterator<Item = (f64, f64)>) -> Result<Frame, String> {
         let (x, y) = padded_bounds(points);
         let (x_len, y_len) = (x.end - x.start, y.end - y.start);
         // Everything but the plotting area (caption, labels, margins) has a fixed size: measure

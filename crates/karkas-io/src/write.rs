@@ -11,7 +11,7 @@ use std::fmt::Write as _;
 use std::io::{self, BufWriter, Write};
 use std::path::Path;
 
-use karkas::{Point, Point3};
+use karkas::{Grid, Point, Point3};
 
 use crate::error::IoError;
 
@@ -97,6 +97,48 @@ pub fn write_surface_csv(
     })
 }
 
+/// Writes the values of a discrete curve as CSV: header `j,x,y` (`D = 2`) or `j,x,y,z`
+/// (`D = 3`), one row per value `points[j]`, `j` written as an integer from 0. Other dimensions
+/// name the coordinates `x1, x2, ...`.
+pub fn write_discrete_curve_csv<const D: usize>(
+    path: &Path,
+    points: &[Point<D>],
+) -> Result<(), IoError> {
+    let mut header = vec!["j".to_owned()];
+    header.extend(coordinate_names(D));
+    write_atomic(path, |out| {
+        let mut csv = CsvRows::new(out, &header)?;
+        for (j, p) in points.iter().enumerate() {
+            csv.indexed_row(&[j], p.0)?;
+        }
+        csv.finish()
+    })
+}
+
+/// Writes a grid of spatial points with their indices as CSV: header `A,B,x,y,z` with
+/// `[A, B] = names` (e.g. `p,q` for the values of a tube, `i,q` for curves along it), one row
+/// per point in row-major order, indices written as integers from 0.
+pub fn write_indexed_grid_csv(
+    path: &Path,
+    names: [&str; 2],
+    grid: &Grid<Point3>,
+) -> Result<(), IoError> {
+    let header: Vec<String> = names
+        .iter()
+        .map(|s| (*s).to_owned())
+        .chain(coordinate_names(3))
+        .collect();
+    write_atomic(path, |out| {
+        let mut csv = CsvRows::new(out, &header)?;
+        for a in 0..grid.rows() {
+            for (b, p) in grid.row(a).iter().enumerate() {
+                csv.indexed_row(&[a, b], p.0)?;
+            }
+        }
+        csv.finish()
+    })
+}
+
 /// `x, y, z` for up to three dimensions, `x1, x2, ...` beyond.
 fn coordinate_names(dim: usize) -> Vec<String> {
     if dim <= 3 {
@@ -150,6 +192,20 @@ impl<'a> CsvRows<'a> {
         }
         self.writer.write_record(None::<&[u8]>)?;
         Ok(())
+    }
+
+    /// Writes one row that starts with integer indices.
+    fn indexed_row(
+        &mut self,
+        indices: &[usize],
+        values: impl IntoIterator<Item = f64>,
+    ) -> io::Result<()> {
+        for k in indices {
+            self.number.clear();
+            let _ = write!(self.number, "{k}");
+            self.writer.write_field(&self.number)?;
+        }
+        self.row(values)
     }
 
     /// Flushes the rows into the output.

@@ -5,6 +5,7 @@ use std::path::Path;
 use karkas_io::airfoil::parse_airfoil;
 use karkas_io::grid::parse_grid;
 use karkas_io::points::parse_curve_points;
+use karkas_io::skeleton::{parse_across_curves, parse_along_curves};
 
 /// Deterministic pseudo-random texts over an alphabet of the characters that matter.
 fn texts(count: usize) -> impl Iterator<Item = String> {
@@ -40,6 +41,8 @@ fn random_text_never_panics() {
         }
         let _ = parse_airfoil(&text, Path::new("r.dat"));
         let _ = parse_grid(&text, Path::new("r.csv"));
+        let _ = parse_along_curves(&text, Path::new("f.csv"));
+        let _ = parse_across_curves(&text, Path::new("g.csv"));
     }
     // Some texts are valid, so the readers were not simply rejecting everything.
     assert!(parsed > 0);

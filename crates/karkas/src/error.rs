@@ -61,6 +61,95 @@ pub enum Error {
     /// Any other invalid argument, described in words.
     #[error("{0}")]
     InvalidInput(String),
+    /// A discrete periodic spline with a step `n` below 2 between its nodes
+    /// (e.g. [`DiscreteSpline::from_poles`](crate::dps::DiscreteSpline::from_poles) with
+    /// `n = 1`; the seed asks for `n >= 2`).
+    #[error("the step n between nodes must be at least 2, got {step}")]
+    InvalidStep {
+        /// The step given.
+        step: usize,
+    },
+    /// A discrete period `N = m n` too large to index
+    /// (e.g. [`DiscreteSpline::from_poles`](crate::dps::DiscreteSpline::from_poles) with
+    /// `m n > usize::MAX`).
+    #[error("the period m n = {poles} x {step} is too large")]
+    PeriodTooLarge {
+        /// The number of poles (or nodes) `m`.
+        poles: usize,
+        /// The step `n`.
+        step: usize,
+    },
+    /// A family of skeleton curves of a tube with too few curves
+    /// ([`TubeSurface::new`](crate::dps::TubeSurface::new) with fewer than 2 curves along or
+    /// across).
+    #[error("the {family} skeleton needs at least {needed} curves, got {got}")]
+    TooFewCurves {
+        /// `"along"` or `"across"`.
+        family: &'static str,
+        /// The minimum number of curves.
+        needed: usize,
+        /// The number given.
+        got: usize,
+    },
+    /// Skeleton curves of a tube whose sample count does not match the other family
+    /// ([`TubeSurface::new`](crate::dps::TubeSurface::new): every along curve needs
+    /// `N2 = m2 n2` samples, every across curve `N1 = m1 n1`).
+    #[error(
+        "each {family} curve needs {expected} samples ({curves} {other} curves x step {step}), got {got}"
+    )]
+    SkeletonLength {
+        /// `"along"` or `"across"`: the family whose curves have the wrong length.
+        family: &'static str,
+        /// The other family.
+        other: &'static str,
+        /// The number of curves of the other family (`m2` for along curves).
+        curves: usize,
+        /// The step of this family's direction (`n2` for along curves).
+        step: usize,
+        /// The number of samples needed.
+        expected: usize,
+        /// The number of samples given.
+        got: usize,
+    },
+    /// A skeleton point with a NaN or infinite coordinate
+    /// ([`TubeSurface::new`](crate::dps::TubeSurface::new)).
+    #[error("{family} curve {curve}, sample {sample} has a non-finite coordinate")]
+    NonFiniteSkeletonPoint {
+        /// `"along"` or `"across"`.
+        family: &'static str,
+        /// The curve index (`i` along, `j` across).
+        curve: usize,
+        /// The sample index on the curve (`q` along, `p` across).
+        sample: usize,
+    },
+    /// Two skeleton curves of a tube that do not meet where they must
+    /// ([`TubeSurface::new`](crate::dps::TubeSurface::new): `f_i(j n2) = g_j(i n1)`).
+    #[error(
+        "along curve i={along} and across curve j={across} do not meet: f_i(j n2) and g_j(i n1) \
+         are {distance:.3e} apart (tolerance {tolerance:.3e})"
+    )]
+    IncompatibleSkeleton {
+        /// The along curve `i`.
+        along: usize,
+        /// The across curve `j`.
+        across: usize,
+        /// The distance between `f_i(j n2)` and `g_j(i n1)`.
+        distance: f64,
+        /// The largest distance accepted (relative to the size of the skeleton).
+        tolerance: f64,
+    },
+    /// A list of the wrong length for what it is passed to
+    /// (e.g. [`InterpolationPlan::poles_into`](crate::dps::InterpolationPlan::poles_into) with
+    /// a number of nodes other than the plan's `m`).
+    #[error("{what}: expected {expected}, got {got}")]
+    CountMismatch {
+        /// What was counted.
+        what: &'static str,
+        /// The length needed.
+        expected: usize,
+        /// The length given.
+        got: usize,
+    },
 }
 
 /// `Result` with [`Error`].

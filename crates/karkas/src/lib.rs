@@ -10,7 +10,9 @@
 //! - [`solve`]: the banded linear solvers the methods need;
 //! - [`ll`]: the LL-approximation of curves and surfaces (Aulchenko, Latypov, Nikulichev):
 //!   oscillation-free, monotone, `C^L` curves and surfaces on a uniform parameter grid, and
-//!   their interpolating variant.
+//!   their interpolating variant;
+//! - [`dps`]: discrete periodic splines with vector coefficients (Malozemov, Khorokhonov,
+//!   Chashnikov): closed discrete curves from poles or through nodes, and closed tubes.
 //!
 //! ```
 //! use karkas::{ll::LlCurve, Curve, Point};
@@ -23,6 +25,7 @@
 //! ```
 
 pub mod core;
+pub mod dps;
 mod error;
 pub mod ll;
 pub mod solve;

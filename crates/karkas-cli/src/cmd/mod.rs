@@ -1,7 +1,9 @@
 //! The commands of the `karkas` binary, one file each.
 
+mod curve_dps;
 mod curve_ll;
 mod output;
+mod surface_dps_tube;
 mod surface_ll;
 
 use clap::Subcommand;
@@ -11,6 +13,8 @@ use clap::Subcommand;
 pub enum CurveCommand {
     /// LL-approximation (or interpolation) of an ordered point list.
     Ll(curve_ll::CurveLlArgs),
+    /// Discrete periodic spline: a closed discrete curve through (or with poles at) the points.
+    Dps(curve_dps::CurveDpsArgs),
 }
 
 impl CurveCommand {
@@ -18,6 +22,7 @@ impl CurveCommand {
     pub fn run(self) -> anyhow::Result<()> {
         match self {
             CurveCommand::Ll(args) => curve_ll::run(&args),
+            CurveCommand::Dps(args) => curve_dps::run(&args),
         }
     }
 }
@@ -27,6 +32,8 @@ impl CurveCommand {
 pub enum SurfaceCommand {
     /// LL-approximation (or interpolation) of a grid of points.
     Ll(surface_ll::SurfaceLlArgs),
+    /// Closed tube through curves along and across it (discrete periodic splines).
+    DpsTube(surface_dps_tube::SurfaceDpsTubeArgs),
 }
 
 impl SurfaceCommand {
@@ -34,6 +41,7 @@ impl SurfaceCommand {
     pub fn run(self) -> anyhow::Result<()> {
         match self {
             SurfaceCommand::Ll(args) => surface_ll::run(&args),
+            SurfaceCommand::DpsTube(args) => surface_dps_tube::run(&args),
         }
     }
 }

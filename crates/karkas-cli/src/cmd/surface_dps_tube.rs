@@ -1,0 +1,96 @@
+//! `karkas surface dps-tube`: a closed tube through a skeleton of curves along and across it,
+//! by formula (3) of seed 002 (METHODS.md §3).
+
+use super::curve_dps::{check_order, check_step};
+use super::curve_ll::{report, MAX_SAMPLES};
+use super::output::ensure_distinct;
+use anyhow::{anyhow, bail, Result};
+use clap::Args;
+use karkas::dps::TubeSurface;
+use karkas::Error;
+use karkas_io::obj::write_surface_obj;
+use karkas_io::skeleton::{read_across_curves, read_along_curves};
+use karkas_io::stl::write_surface_stl;
+use karkas_io::write::write_indexed_grid_csv;
+use karkas_io::OutputFormat;
+use std::path::PathBuf;
+
+/// Arguments of `karkas surface dps-tube`.
+#[derive(Debug, Args)]
+pub struct SurfaceDpsTubeArgs {
+    /// Curves along the tube, f_i(q): CSV with header i,q,x,y,z (m1 curves of N2 = m2 n2
+    /// samples).
+    #[arg(long, value_name = "F.csv")]
+    along: PathBuf,
+    /// Curves across the tube, g_j(p): CSV with header j,p,x,y,z (m2 curves of N1 = m1 n1
+    /// samples).
+    #[arg(long, value_name = "G.csv")]
+    across: PathBuf,
+    /// Values between neighbouring along curves, around the tube (p direction).
+    #[arg(long = "n1", value_name = "N1")]
+    n1: usize,
+    /// Values between neighbouring across curves, along the tube (q direction).
+    #[arg(long = "n2", value_name = "N2")]
+    n2: usize,
+    /// Spline order around the tube (in p).
+    #[arg(long = "r1", value_name = "R1", default_value_t = 2)]
+    r1: usize,
+    /// Spline order along the tube (in q).
+    #[arg(long = "r2", value_name = "R2", default_value_t = 2)]
+    r2: usize,
+    /// Output file: .csv (p,q,x,y,z), .obj or .stl (closed triangle mesh).
+    #[arg(short, long)]
+    output: PathBuf,
+}
+
+/// Runs `karkas surface dps-tube`.
+pub fn run(args: &SurfaceDpsTubeArgs) -> Result<()> {
+    let format = OutputFormat::from_path(
+        &args.output,
+        &[OutputFormat::Csv, OutputFormat::Obj, OutputFormat::Stl],
+    )?;
+    check_order("--r1", args.r1)?;
+    check_order("--r2", args.r2)?;
+    check_step("--n1", args.n1)?;
+    check_step("--n2", args.n2)?;
+    ensure_distinct(&args.along, &args.output)?;
+    ensure_distinct(&args.across, &args.output)?;
+    let along = read_along_curves(&args.along)?;
+    let across = read_across_curves(&args.across)?;
+    let (big_n1, big_n2) = (
+        along.rows().saturating_mul(args.n1),
+        across.rows().saturating_mul(args.n2),
+    );
+    if big_n1.saturating_mul(big_n2) > MAX_SAMPLES {
+        bail!(
+            "--n1, --n2: {big_n1} x {big_n2} values, more than the {MAX_SAMPLES} that can be written"
+        );
+    }
+    let (f, g) = (args.along.display(), args.across.display());
+    let tube = TubeSurface::new(&along, &across, args.n1, args.n2, args.r1, args.r2).map_err(
+        |e| match &e {
+            Error::TooFewCurves {
+                family: "along", ..
+            }
+            | Error::SkeletonLength {
+                family: "along", ..
+            } => anyhow!("{f}: {e}"),
+            Error::TooFewCurves { .. } | Error::SkeletonLength { .. } => anyhow!("{g}: {e}"),
+            _ => anyhow!("{f}, {g}: {e}"),
+        },
+    )?;
+    match format {
+        OutputFormat::Csv => write_indexed_grid_csv(&args.output, ["p", "q"], tube.values())?,
+        _ => {
+            let closed = tube.closed_grid();
+            let (rows, cols) = (closed.rows(), closed.cols());
+            if format == OutputFormat::Stl {
+                write_surface_stl(&args.output, rows, cols, closed.as_slice())?;
+            } else {
+                write_surface_obj(&args.output, rows, cols, closed.as_slice())?;
+            }
+        }
+    }
+    report(&args.output, big_n1 * big_n2);
+    Ok(())
+}
