@@ -10,7 +10,12 @@
 //! - [`solve`]: the banded linear solvers the methods need;
 //! - [`ll`]: the LL-approximation of curves and surfaces (Aulchenko, Latypov, Nikulichev):
 //!   oscillation-free, monotone, `C^L` curves and surfaces on a uniform parameter grid, and
-//!   their interpolating variant.
+//!   their interpolating variant;
+//! - [`param`]: parameterizations, 1-D cubic splines and bicubic interpolation of grids
+//!   (Kuznetsov, Filatov);
+//! - [`implicit`]: implicit surfaces `F(x, y, z) = 0`, their principal curvatures, and node
+//!   grids traced along lines of curvature (or turned nets) by continuation;
+//! - [`measure`]: the two-sided Hausdorff distance between surfaces and point sets.
 //!
 //! ```
 //! use karkas::{ll::LlCurve, Curve, Point};
@@ -24,7 +29,10 @@
 
 pub mod core;
 mod error;
+pub mod implicit;
 pub mod ll;
+pub mod measure;
+pub mod param;
 pub mod solve;
 
 pub use crate::core::{
