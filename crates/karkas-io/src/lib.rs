@@ -6,7 +6,8 @@
 //! Reading:
 //! - [`points`]: an ordered list of curve points from CSV, whitespace-separated columns or an
 //!   airfoil `.dat` ([`airfoil`]), chosen by content;
-//! - [`grid`]: a surface frame as CSV rows `i,j,x,y,z`.
+//! - [`grid`]: a surface frame as CSV rows `i,j,x,y,z`;
+//! - [`pointset`]: a point set in space from OBJ vertices or CSV columns `x,y,z`.
 //!
 //! Writing (always atomically, see [`write::write_atomic`]):
 //! - [`write`](mod@write): sampled curves and surfaces as CSV;
@@ -22,6 +23,7 @@ pub mod format;
 pub mod grid;
 pub mod obj;
 pub mod points;
+pub mod pointset;
 pub mod svg;
 pub mod write;
 

@@ -100,11 +100,11 @@ pub enum Error {
     /// Newton's projection onto an implicit surface `F = 0` did not converge from a point
     /// ([`project_onto`](crate::implicit::project_onto), the start of
     /// [`trace_net`](crate::implicit::trace_net)).
-    #[error("no surface F = 0 near ({}, {}, {}) (|F| = {residual:.3e} after the projection)", point[0], point[1], point[2])]
+    #[error("no surface F = 0 near ({}, {}, {}) (|F| = {residual:.3e} there)", point[0], point[1], point[2])]
     NoSurfaceNear {
-        /// The point the projection started from.
+        /// The point the search started from.
         point: [f64; 3],
-        /// `|F|` where the projection stopped.
+        /// `|F|` at that point.
         residual: f64,
     },
     /// The gradient of an implicit surface vanishes (a singular point: no normal, no

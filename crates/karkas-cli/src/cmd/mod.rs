@@ -1,7 +1,10 @@
 //! The commands of the `karkas` binary, one file each.
 
 mod curve_ll;
+pub mod hausdorff;
 mod output;
+mod surface_bicubic;
+mod surface_implicit;
 mod surface_ll;
 
 use clap::Subcommand;
@@ -27,6 +30,10 @@ impl CurveCommand {
 pub enum SurfaceCommand {
     /// LL-approximation (or interpolation) of a grid of points.
     Ll(surface_ll::SurfaceLlArgs),
+    /// Bicubic interpolation of a grid of points with chosen parameters.
+    Bicubic(surface_bicubic::SurfaceBicubicArgs),
+    /// A grid of nodes on an implicit surface along its lines of curvature.
+    Implicit(surface_implicit::SurfaceImplicitArgs),
 }
 
 impl SurfaceCommand {
@@ -34,6 +41,8 @@ impl SurfaceCommand {
     pub fn run(self) -> anyhow::Result<()> {
         match self {
             SurfaceCommand::Ll(args) => surface_ll::run(&args),
+            SurfaceCommand::Bicubic(args) => surface_bicubic::run(&args),
+            SurfaceCommand::Implicit(args) => surface_implicit::run(&args),
         }
     }
 }

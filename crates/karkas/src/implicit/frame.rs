@@ -129,11 +129,16 @@ fn tangent_basis(n: Point3) -> (Point3, Point3) {
 /// `p <- p - F(p) grad F(p) / |grad F(p)|^2`, to full precision.
 ///
 /// Errors: [`Error::NoSurfaceNear`] when the iteration does not converge (no surface near,
-/// or a non-finite value), [`Error::SingularPoint`] on a vanishing gradient.
+/// a non-finite value, or a vanishing gradient on the way), [`Error::SingularPoint`] when
+/// `point` itself is a singular point of the surface.
 pub fn project_onto<S: ImplicitSurface + ?Sized>(surface: &S, point: Point3) -> Result<Point3> {
     let mut p = point;
     let scale = point.max_abs().max(1.0);
-    for _ in 0..PROJECTION_ITERATIONS {
+    let lost = || Error::NoSurfaceNear {
+        point: point.0,
+        residual: surface.value(point).abs(),
+    };
+    for iteration in 0..PROJECTION_ITERATIONS {
         let f = surface.value(p);
         let g = surface.gradient(p);
         let g2 = g.norm_sq();
@@ -141,7 +146,12 @@ pub fn project_onto<S: ImplicitSurface + ?Sized>(surface: &S, point: Point3) -> 
             break;
         }
         if g2 <= 1e-300 {
-            return Err(Error::SingularPoint { point: p.0 });
+            // At the point itself: a singular point; after moving: no surface found.
+            return Err(if iteration == 0 && f == 0.0 {
+                Error::SingularPoint { point: p.0 }
+            } else {
+                lost()
+            });
         }
         let step = g * (f / g2);
         p -= step;
@@ -149,10 +159,7 @@ pub fn project_onto<S: ImplicitSurface + ?Sized>(surface: &S, point: Point3) -> 
             return Ok(p);
         }
     }
-    Err(Error::NoSurfaceNear {
-        point: point.0,
-        residual: surface.value(p).abs(),
-    })
+    Err(lost())
 }
 
 /// The closest point of `F = 0` to `point`: [`project_onto`], then tangential corrections

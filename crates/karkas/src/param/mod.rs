@@ -15,8 +15,9 @@
 //!   node derivatives found by the seed's three steps of `2N + M` spline solves, `O(N M)`;
 //!   not-a-knot ends, periodic in a closed direction.
 //!
-//! Implicit surfaces and their curvature-line grids are in [`crate::implicit`]; the Hausdorff
-//! error of the seed's experiments is in [`crate::measure`].
+//! Implicit surfaces and their curvature-line grids are in [`crate::implicit`], the Hausdorff
+//! distance in [`crate::measure`]; [`experiments`] puts them together into the seed's table
+//! of errors.
 //!
 //! ```
 //! use karkas::param::{CubicSpline, CurveParameterization, SplineEnds};
@@ -31,6 +32,7 @@
 //! ```
 
 mod bicubic;
+pub mod experiments;
 mod knots;
 mod parameterization;
 mod slopes;
