@@ -244,6 +244,9 @@ fn close_grid<const D: usize>(
     closed_u: bool,
     closed_v: bool,
 ) -> Result<Grid<Point<D>>> {
+    if !closed_u && !closed_v {
+        return Ok(grid.clone());
+    }
     let (rows, cols) = (grid.rows(), grid.cols());
     let scale = grid
         .as_slice()
