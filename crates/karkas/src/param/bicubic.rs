@@ -21,22 +21,9 @@
 
 use super::knots::{check_knots, locate};
 use super::parameterization::{grid_parameters, GridParameterization};
-use super::slopes::{hermite_weights, spline_slopes, SplineEnds};
+use super::slopes::{hermite_weights, SlopeSystem, SplineEnds};
 use crate::core::{Grid, Interval, PiecewiseSurface, Side, Surface};
 use crate::{Error, Point, Result};
-
-/// The Hermite data of one node: value and the three derivatives of (3.8).
-#[derive(Clone, Copy, Debug, PartialEq)]
-struct NodeData<const D: usize> {
-    /// `r_ij`.
-    r: Point<D>,
-    /// `m^(1,0)`: `dW/du`.
-    ru: Point<D>,
-    /// `m^(0,1)`: `dW/dv`.
-    rv: Point<D>,
-    /// `m^(1,1)`: `d^2 W / du dv`.
-    ruv: Point<D>,
-}
 
 /// A bicubic interpolating spline surface over a grid `r_ij` (row `i` at `u_i`, column `j`
 /// at `v_j`), each direction open (not-a-knot ends) or closed (periodic).
@@ -49,7 +36,14 @@ pub struct BicubicSurface<const D: usize> {
     knots_v: Vec<f64>,
     closed_u: bool,
     closed_v: bool,
-    nodes: Grid<NodeData<D>>,
+    /// The node values `r_ij` ((3.8); a closed direction repeats its first line).
+    values: Grid<Point<D>>,
+    /// `m^(1,0) = dW/du` at the nodes, row-major like `values`.
+    ru: Vec<Point<D>>,
+    /// `m^(0,1) = dW/dv`.
+    rv: Vec<Point<D>>,
+    /// `m^(1,1) = d^2 W / du dv`.
+    ruv: Vec<Point<D>>,
 }
 
 impl<const D: usize> BicubicSurface<D> {
@@ -70,7 +64,7 @@ impl<const D: usize> BicubicSurface<D> {
         validate(grid)?;
         let grid = close_grid(grid, closed_u, closed_v)?;
         let (us, vs) = grid_parameters(&grid, parameterization)?;
-        Self::build(&grid, us, vs, closed_u, closed_v)
+        Self::build(grid, us, vs, closed_u, closed_v)
     }
 
     /// The bicubic interpolant of `grid` on given knots (`knots_u.len() == rows`,
@@ -106,7 +100,7 @@ impl<const D: usize> BicubicSurface<D> {
             ));
         }
         Self::build(
-            &closed,
+            closed,
             knots_u.to_vec(),
             knots_v.to_vec(),
             closed_u,
@@ -116,14 +110,14 @@ impl<const D: usize> BicubicSurface<D> {
 
     /// The three steps of the seed: `2N + M` spline solves.
     fn build(
-        grid: &Grid<Point<D>>,
+        grid: Grid<Point<D>>,
         knots_u: Vec<f64>,
         knots_v: Vec<f64>,
         closed_u: bool,
         closed_v: bool,
     ) -> Result<Self> {
         let (rows, cols) = (grid.rows(), grid.cols());
-        let ends = |closed: bool| {
+        let ends = |closed: bool| -> SplineEnds<D> {
             if closed {
                 SplineEnds::Periodic
             } else {
@@ -131,42 +125,28 @@ impl<const D: usize> BicubicSurface<D> {
             }
         };
         let (ends_u, ends_v) = (ends(closed_u), ends(closed_v));
-        // Step 1: r_u along every column.
+        let system_u = SlopeSystem::new(&knots_u, &ends_u)?;
+        let system_v = SlopeSystem::new(&knots_v, &ends_v)?;
+        // Step 1: r_u along every column, all columns in one sweep over the grid rows.
         let mut ru = vec![Point::ZERO; rows * cols];
-        let mut column = vec![Point::ZERO; rows];
-        let mut column_slopes = vec![Point::ZERO; rows];
-        for j in 0..cols {
-            for (i, c) in column.iter_mut().enumerate() {
-                *c = *grid.get(i, j);
-            }
-            spline_slopes(&knots_u, &column, &ends_u, &mut column_slopes)?;
-            for (i, s) in column_slopes.iter().enumerate() {
-                ru[i * cols + j] = *s;
-            }
-        }
+        system_u.solve(grid.as_slice(), &mut ru, cols, None);
         // Steps 2 and 3: r_v and r_uv along every row.
         let mut rv = vec![Point::ZERO; rows * cols];
         let mut ruv = vec![Point::ZERO; rows * cols];
         for i in 0..rows {
             let span = i * cols..(i + 1) * cols;
-            spline_slopes(&knots_v, grid.row(i), &ends_v, &mut rv[span.clone()])?;
-            spline_slopes(&knots_v, &ru[span.clone()], &ends_v, &mut ruv[span])?;
+            system_v.solve(grid.row(i), &mut rv[span.clone()], 1, None);
+            system_v.solve(&ru[span.clone()], &mut ruv[span], 1, None);
         }
-        let nodes = Grid::from_fn(rows, cols, |i, j| {
-            let k = i * cols + j;
-            NodeData {
-                r: *grid.get(i, j),
-                ru: ru[k],
-                rv: rv[k],
-                ruv: ruv[k],
-            }
-        });
         Ok(BicubicSurface {
             knots_u,
             knots_v,
             closed_u,
             closed_v,
-            nodes,
+            values: grid,
+            ru,
+            rv,
+            ruv,
         })
     }
 
@@ -182,25 +162,50 @@ impl<const D: usize> BicubicSurface<D> {
 
     /// The interpolated node `r_ij` (of the closed grid).
     pub fn node(&self, i: usize, j: usize) -> Point<D> {
-        self.nodes.get(i, j).r
+        *self.values.get(i, j)
     }
 
     /// The node derivatives `(m^(1,0), m^(0,1), m^(1,1))` at node `(i, j)` ((3.8)).
     pub fn node_derivatives(&self, i: usize, j: usize) -> (Point<D>, Point<D>, Point<D>) {
-        let n = self.nodes.get(i, j);
-        (n.ru, n.rv, n.ruv)
+        let k = i * self.values.cols() + j;
+        (self.ru[k], self.rv[k], self.ruv[k])
     }
 
     /// The value and `v`-slope of the line `u = const` at node column `j`, combined from the
     /// two node rows `i`, `i + 1` with the u-weights `w`.
     #[inline]
     fn column_data(&self, i: usize, j: usize, w: &[f64; 4]) -> (Point<D>, Point<D>) {
-        let a = self.nodes.get(i, j);
-        let b = self.nodes.get(i + 1, j);
+        let cols = self.values.cols();
+        let (a, b) = (i * cols + j, (i + 1) * cols + j);
+        let r = self.values.as_slice();
         (
-            a.r * w[0] + b.r * w[1] + a.ru * w[2] + b.ru * w[3],
-            a.rv * w[0] + b.rv * w[1] + a.ruv * w[2] + b.ruv * w[3],
+            r[a] * w[0] + r[b] * w[1] + self.ru[a] * w[2] + self.ru[b] * w[3],
+            self.rv[a] * w[0] + self.rv[b] * w[1] + self.ruv[a] * w[2] + self.ruv[b] * w[3],
         )
+    }
+
+    /// Fills `values` and `slopes` with the value and `v`-slope of the line `u = const` at
+    /// every node column, from node rows `i`, `i + 1` with the u-weights `w` (`O(M)`).
+    fn combine_rows(
+        &self,
+        i: usize,
+        w: &[f64; 4],
+        values: &mut [Point<D>],
+        slopes: &mut [Point<D>],
+    ) {
+        let cols = self.values.cols();
+        let (upper, lower) = (i * cols..(i + 1) * cols, (i + 1) * cols..(i + 2) * cols);
+        let r = self.values.as_slice();
+        let rows = r[upper.clone()].iter().zip(&r[lower.clone()]);
+        let u_slopes = self.ru[upper.clone()].iter().zip(&self.ru[lower.clone()]);
+        for ((q, (&a, &b)), (&ua, &ub)) in values.iter_mut().zip(rows).zip(u_slopes) {
+            *q = a * w[0] + b * w[1] + ua * w[2] + ub * w[3];
+        }
+        let v_slopes = self.rv[upper.clone()].iter().zip(&self.rv[lower.clone()]);
+        let twists = self.ruv[upper].iter().zip(&self.ruv[lower]);
+        for ((qv, (&a, &b)), (&ua, &ub)) in slopes.iter_mut().zip(v_slopes).zip(twists) {
+            *qv = a * w[0] + b * w[1] + ua * w[2] + ub * w[3];
+        }
     }
 
     fn deriv_on_cell(
@@ -332,17 +337,13 @@ impl<const D: usize> Surface<D> for BicubicSurface<D> {
                 )
             })
             .collect();
-        let cols = self.nodes.cols();
+        let cols = self.values.cols();
         let mut values = vec![Point::ZERO; cols];
         let mut slopes = vec![Point::ZERO; cols];
         for (&u, out_row) in us.iter().zip(out.chunks_exact_mut(vs.len().max(1))) {
             let (i, s) = locate(&self.knots_u, self.closed_u, u, Side::Above);
             let wu = hermite_weights(s, self.knots_u[i + 1] - self.knots_u[i], 0);
-            let (upper, lower) = (self.nodes.row(i), self.nodes.row(i + 1));
-            for (((q, qv), a), b) in values.iter_mut().zip(&mut slopes).zip(upper).zip(lower) {
-                *q = a.r * wu[0] + b.r * wu[1] + a.ru * wu[2] + b.ru * wu[3];
-                *qv = a.rv * wu[0] + b.rv * wu[1] + a.ruv * wu[2] + b.ruv * wu[3];
-            }
+            self.combine_rows(i, &wu, &mut values, &mut slopes);
             for (p, &(j, w)) in out_row.iter_mut().zip(&columns) {
                 *p = values[j] * w[0]
                     + values[j + 1] * w[1]

@@ -24,8 +24,8 @@
 //!   turned frame replaces the meridian by a line at 68° to it (the middle of the paper's
 //!   65°–71°), the `u` step again stretched by `1 / cos a`.
 //!
-//! The exact patch is the same net traced 6 times denser; the interpolant is sampled on a
-//! `120 x 200` grid. A frame of constant-angle helices (both families turned, lines not
+//! The exact patch is the same net traced 4 times denser; the interpolant is sampled on a
+//! `64 x 160` grid. A frame of constant-angle helices (both families turned, lines not
 //! closed) is also offered ([`helix_experiment`]): on the developable cylinder it
 //! interpolates better than the lines of curvature, which the paper's frames do not show.
 
@@ -36,10 +36,10 @@ use crate::{Grid, Point3, Result};
 use core::f64::consts::TAU;
 
 /// How much denser than the frame the exact patch is traced.
-const PATCH_REFINEMENT: usize = 6;
+const PATCH_REFINEMENT: usize = 4;
 
 /// Samples of the interpolant in the Hausdorff distance.
-const SAMPLES: (usize, usize) = (120, 200);
+const SAMPLES: (usize, usize) = (64, 160);
 
 /// Which surface of the seed an experiment uses.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -9,7 +9,7 @@
 
 use super::knots::{check_knots, locate};
 use super::parameterization::{curve_parameters, CurveParameterization};
-use super::slopes::{hermite_weights, spline_slopes, SplineEnds};
+use super::slopes::{hermite_weights, SlopeSystem, SplineEnds};
 use crate::core::{Curve, Interval, PiecewiseCurve, Side};
 use crate::{Error, Point, Result};
 
@@ -71,7 +71,11 @@ impl<const D: usize> CubicSpline<D> {
             values[n - 1] = values[0];
         }
         let mut slopes = vec![Point::ZERO; n];
-        spline_slopes(knots, &values, &ends, &mut slopes)?;
+        let clamped = match ends {
+            SplineEnds::Clamped { start, end } => Some((start, end)),
+            _ => None,
+        };
+        SlopeSystem::new(knots, &ends)?.solve(&values, &mut slopes, 1, clamped);
         Ok(CubicSpline {
             knots: knots.to_vec(),
             values,
