@@ -7,8 +7,9 @@
 //! (periodic: `y[-1] = 1.0`; `nak3` / `nak4`: the first 3 / 4 points only, evaluated at the
 //! same `q`, so mostly extrapolated).
 
-use karkas::param::{CubicSpline, SplineEnds};
-use karkas::{Curve, PiecewiseCurve, Point, Side};
+use karkas::param::{CubicSpline, CurveParameterization, SplineEnds};
+use karkas::{Curve, PiecewiseCurve, Point, Point3, Side};
+use proptest::prelude::*;
 
 const X: [f64; 7] = [0.0, 0.5, 1.3, 2.0, 3.1, 4.0, 5.2];
 const Y: [f64; 7] = [1.0, -0.4, 0.8, 2.2, 1.1, -0.7, 0.3];
@@ -381,4 +382,49 @@ fn bad_input_is_an_error() {
         CubicSpline::new(&X, &bad, SplineEnds::NotAKnot),
         Err(Error::NonFinitePoint { index: 2 })
     );
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(32))]
+
+    #[test]
+    fn every_spline_interpolates_and_is_c2(
+        steps in proptest::collection::vec(0.05f64..3.0, 1..12),
+        seed in 0u64..1000,
+        kind in 0usize..3,
+        periodic in any::<bool>(),
+    ) {
+        let pts: Vec<Point3> = steps
+            .iter()
+            .scan(0.0, |t, h| { *t += h; Some(*t) })
+            .chain(std::iter::once(0.0))
+            .enumerate()
+            .map(|(k, t)| {
+                let x = (seed as f64 + k as f64 * 1.7).sin();
+                Point3::new([t, x, (t * x).cos()])
+            })
+            .collect();
+        let parameterization = [
+            CurveParameterization::Uniform,
+            CurveParameterization::ChordLength,
+            CurveParameterization::Centripetal,
+        ][kind];
+        let ends = if periodic { SplineEnds::Periodic } else { SplineEnds::NotAKnot };
+        let Ok(s) = CubicSpline::through(&pts, parameterization, ends) else {
+            // Only a periodic spline of too few distinct points may be refused.
+            prop_assert!(periodic);
+            return Ok(());
+        };
+        for (t, p) in s.knots().iter().zip(&pts) {
+            prop_assert!(s.eval(*t).distance(*p) < 1e-9 * (1.0 + p.norm()));
+        }
+        for &t in &s.knots()[1..s.knots().len() - 1] {
+            for k in 0..=2 {
+                let a = s.deriv_on_side(t, k, Side::Below);
+                let b = s.deriv_on_side(t, k, Side::Above);
+                let scale = 1.0 + a.norm();
+                prop_assert!((a - b).norm() < 1e-7 * scale, "D^{k} jumps at {t}");
+            }
+        }
+    }
 }

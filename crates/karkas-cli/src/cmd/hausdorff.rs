@@ -16,10 +16,10 @@ use std::path::PathBuf;
 pub struct HausdorffArgs {
     /// The sets A and B: files of points (.obj: mesh vertices; .csv or columns: x,y,z, e.g. a
     /// grid i,j,x,y,z or a sampled surface u,v,x,y,z). With --expr, one file (A).
-    #[arg(num_args = 1..=2, required = true)]
+    #[arg(num_args = 1..=2, required = true, value_name = "FILE")]
     inputs: Vec<PathBuf>,
     /// B as the implicit surface F(x, y, z) = 0 (same syntax as `surface implicit --expr`).
-    #[arg(long)]
+    #[arg(long, value_name = "EXPR")]
     expr: Option<String>,
 }
 

@@ -53,7 +53,7 @@ pub struct SurfaceBicubicArgs {
     closed_v: bool,
     /// Samples NU,NV, uniform in the parameters over the domain, ends included
     /// [default: 4 per grid line in each direction, at least 50].
-    #[arg(long, value_parser = parse_pair)]
+    #[arg(long, value_name = "NU,NV", value_parser = parse_pair)]
     samples: Option<(usize, usize)>,
     /// Input grid: CSV with header i,j,x,y,z (indices from 0, rows in any order).
     input: PathBuf,

@@ -18,27 +18,32 @@ pub struct SurfaceImplicitArgs {
     /// The surface F(x, y, z) = 0 as an expression in x, y, z, e.g. "x^2+y^2-1"
     /// (+ - * / ^, numbers, pi, e, sin cos tan asin acos atan sinh cosh tanh exp ln log log2
     /// log10 sqrt).
-    #[arg(long)]
+    #[arg(long, value_name = "EXPR")]
     expr: String,
     /// A point X,Y,Z on or near the surface (within one step): the node (0, 0).
-    #[arg(long, value_parser = parse_point)]
+    #[arg(long, value_name = "X,Y,Z", value_parser = parse_point)]
     start: Point3,
     /// Nodes NU,NV: NU along the u lines (first principal direction), NV along every v line.
-    #[arg(long, value_parser = parse_nodes)]
+    #[arg(long, value_name = "NU,NV", value_parser = parse_nodes)]
     nodes: (usize, usize),
     /// Arc length between nodes: H for both directions, or HU,HV.
-    #[arg(long, value_parser = parse_steps)]
+    #[arg(long, value_name = "H", value_parser = parse_steps)]
     step: (f64, f64),
     /// Turn both families of lines by DEG degrees about the normal: a net at a constant angle
-    /// to the lines of curvature [default: 0, the lines of curvature].
-    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
+    /// to the lines of curvature (0: the lines of curvature themselves).
+    #[arg(
+        long,
+        value_name = "DEG",
+        default_value_t = 0.0,
+        allow_negative_numbers = true
+    )]
     turn: f64,
     /// The v lines are closed: spread their NV nodes evenly over one turn (the last node
     /// repeats the first); the v step is then only the tracing step while measuring a turn.
     #[arg(long)]
     closed_v: bool,
     /// Output grid: .csv with header i,j,x,y,z (input of `surface bicubic`, `surface ll`).
-    #[arg(short, long)]
+    #[arg(short, long, value_name = "GRID.csv")]
     output: PathBuf,
 }
 

@@ -222,6 +222,33 @@ mod tests {
         }
     }
 
+    /// `|det [alpha; beta; grad F]| / |grad F|`: the condition measure (2.4) of the
+    /// continuation system (2.3) for unit `alpha`, `beta`.
+    fn condition(alpha: Point3, beta: Point3, g: Point3) -> f64 {
+        alpha.dot(cross(beta, g)).abs() / g.norm()
+    }
+
+    #[test]
+    fn principal_frames_condition_the_continuation_system_best() {
+        // Theorem 2.1: the measure reaches its maximum 1 exactly for orthonormal tangent
+        // directions; the principal directions are such, turned or skewed pairs are not.
+        let h = Hyperboloid { neck_radius: 1.0 };
+        let p = Point3::new([1.1, 0.4, (1.1f64 * 1.1 + 0.16 - 1.0).sqrt()]);
+        let f = SurfaceFrame::at(&h, p).unwrap();
+        let g = h.gradient(p);
+        let best = condition(f.first_direction, f.second_direction, g);
+        assert!((best - 1.0).abs() < 1e-14);
+        let turned = (
+            f.turn(f.first_direction, 0.5),
+            f.turn(f.second_direction, 0.5),
+        );
+        assert!((condition(turned.0, turned.1, g) - 1.0).abs() < 1e-14);
+        let skewed = f.turn(f.second_direction, 30f64.to_radians());
+        assert!((condition(f.first_direction, skewed, g) - 30f64.to_radians().cos()).abs() < 1e-14);
+        let lifted = (f.first_direction * 0.8 + f.normal * 0.6, f.second_direction);
+        assert!(condition(lifted.0, lifted.1, g) < 0.81);
+    }
+
     #[test]
     fn sphere_is_umbilic_and_projection_finds_it() {
         let s = Sphere { radius: 3.0 };
