@@ -29,6 +29,8 @@ enum Command {
     /// Build a surface from a grid of points or a skeleton of curves.
     #[command(subcommand)]
     Surface(cmd::SurfaceCommand),
+    /// Two-sided Hausdorff distance between point sets or a point set and F(x, y, z) = 0.
+    Hausdorff(cmd::hausdorff::HausdorffArgs),
     /// Reproduce the examples of the papers on built-in data.
     Demo(demo::DemoArgs),
 }
@@ -60,6 +62,7 @@ fn main() -> ExitCode {
     let result = match cli.command {
         Command::Curve(c) => c.run(),
         Command::Surface(c) => c.run(),
+        Command::Hausdorff(args) => cmd::hausdorff::run(&args),
         Command::Demo(args) => demo::run(&args),
     };
     match result {

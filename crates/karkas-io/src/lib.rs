@@ -9,6 +9,7 @@
 //! - [`grid`]: a surface frame as CSV rows `i,j,x,y,z`;
 //! - [`skeleton`]: the skeleton curves of a tube as CSV rows `i,q,x,y,z` (along) and
 //!   `j,p,x,y,z` (across).
+//! - [`pointset`]: a point set in space from OBJ vertices or CSV columns `x,y,z`.
 //!
 //! Writing (always atomically, see [`write::write_atomic`]):
 //! - [`write`](mod@write): sampled curves and surfaces, discrete curves and indexed grids of
@@ -28,6 +29,7 @@ pub mod format;
 pub mod grid;
 pub mod obj;
 pub mod points;
+pub mod pointset;
 pub mod scene;
 pub mod skeleton;
 pub mod stl;

@@ -150,6 +150,70 @@ pub enum Error {
         /// The length given.
         got: usize,
     },
+    /// Spline knots that are not finite and strictly increasing
+    /// (e.g. [`CubicSpline::new`](crate::param::CubicSpline::new) with `knots[index] <=
+    /// knots[index - 1]`).
+    #[error("knot {index} is not finite and greater than the knot before it")]
+    KnotsNotIncreasing {
+        /// Index of the first offending knot.
+        index: usize,
+    },
+    /// Two consecutive points coincide, so chord-length (or centripetal) parameters do not
+    /// increase ([`curve_parameters`](crate::param::curve_parameters)).
+    #[error("points {first} and {second} coincide: the parameters would not increase")]
+    CoincidentPoints {
+        /// Index of the first point.
+        first: usize,
+        /// Index of the second point.
+        second: usize,
+    },
+    /// Two consecutive grid lines give a zero parameter step
+    /// ([`grid_parameters`](crate::param::grid_parameters)): every chord between them used
+    /// by the parameterization vanishes.
+    #[error("grid lines {direction} = {index} and {direction} = {} coincide: the parameters would not increase", index + 1)]
+    CoincidentGridLines {
+        /// `"i"` (rows, parameter u) or `"j"` (columns, parameter v).
+        direction: &'static str,
+        /// Index of the first of the two lines.
+        index: usize,
+    },
+    /// An expression of an implicit surface that does not parse
+    /// ([`ExpressionSurface::parse`](crate::implicit::ExpressionSurface::parse)).
+    #[error("expression: {message} (at character {position})")]
+    ExpressionParse {
+        /// 1-based character position in the expression where the problem was found.
+        position: usize,
+        /// What is wrong.
+        message: String,
+    },
+    /// Newton's projection onto an implicit surface `F = 0` did not converge from a point
+    /// ([`project_onto`](crate::implicit::project_onto), the start of
+    /// [`trace_net`](crate::implicit::trace_net)).
+    #[error("no surface F = 0 near ({}, {}, {}) (|F| = {residual:.3e} there)", point[0], point[1], point[2])]
+    NoSurfaceNear {
+        /// The point the search started from.
+        point: [f64; 3],
+        /// `|F|` at that point.
+        residual: f64,
+    },
+    /// The gradient of an implicit surface vanishes (a singular point: no normal, no
+    /// curvature) ([`SurfaceFrame::at`](crate::implicit::SurfaceFrame::at)).
+    #[error("the gradient of F vanishes at ({}, {}, {}): a singular point of the surface", point[0], point[1], point[2])]
+    SingularPoint {
+        /// Where.
+        point: [f64; 3],
+    },
+    /// The continuation along a line of a net failed
+    /// ([`trace_net`](crate::implicit::trace_net)).
+    #[error("tracing line {line} of the net failed at node {node}: {reason}")]
+    ContinuationFailed {
+        /// The line (0-based; the first traced line is the spine).
+        line: usize,
+        /// The node being reached.
+        node: usize,
+        /// What went wrong.
+        reason: &'static str,
+    },
 }
 
 /// `Result` with [`Error`].

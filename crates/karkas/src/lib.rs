@@ -13,6 +13,11 @@
 //!   their interpolating variant;
 //! - [`dps`]: discrete periodic splines with vector coefficients (Malozemov, Khorokhonov,
 //!   Chashnikov): closed discrete curves from poles or through nodes, and closed tubes.
+//! - [`param`]: parameterizations, 1-D cubic splines and bicubic interpolation of grids
+//!   (Kuznetsov, Filatov);
+//! - [`implicit`]: implicit surfaces `F(x, y, z) = 0`, their principal curvatures, and node
+//!   grids traced along lines of curvature (or turned nets) by continuation;
+//! - [`measure`]: the two-sided Hausdorff distance between surfaces and point sets.
 //!
 //! ```
 //! use karkas::{ll::LlCurve, Curve, Point};
@@ -27,7 +32,10 @@
 pub mod core;
 pub mod dps;
 mod error;
+pub mod implicit;
 pub mod ll;
+pub mod measure;
+pub mod param;
 pub mod solve;
 
 pub use crate::core::{

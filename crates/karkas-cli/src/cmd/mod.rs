@@ -2,8 +2,11 @@
 
 mod curve_dps;
 mod curve_ll;
+pub mod hausdorff;
 mod output;
+mod surface_bicubic;
 mod surface_dps_tube;
+mod surface_implicit;
 mod surface_ll;
 
 use clap::Subcommand;
@@ -34,6 +37,10 @@ pub enum SurfaceCommand {
     Ll(surface_ll::SurfaceLlArgs),
     /// Closed tube through curves along and across it (discrete periodic splines).
     DpsTube(surface_dps_tube::SurfaceDpsTubeArgs),
+    /// Bicubic interpolation of a grid of points with chosen parameters.
+    Bicubic(surface_bicubic::SurfaceBicubicArgs),
+    /// A grid of nodes on an implicit surface along its lines of curvature.
+    Implicit(surface_implicit::SurfaceImplicitArgs),
 }
 
 impl SurfaceCommand {
@@ -42,6 +49,8 @@ impl SurfaceCommand {
         match self {
             SurfaceCommand::Ll(args) => surface_ll::run(&args),
             SurfaceCommand::DpsTube(args) => surface_dps_tube::run(&args),
+            SurfaceCommand::Bicubic(args) => surface_bicubic::run(&args),
+            SurfaceCommand::Implicit(args) => surface_implicit::run(&args),
         }
     }
 }

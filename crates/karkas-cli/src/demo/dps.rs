@@ -149,19 +149,22 @@ fn five_petals(out: &Path) -> Result<Vec<Finding>> {
         .fold(0.0, f64::max);
     Ok(vec![
         Finding {
-            example: "002 five-petal, 20 poles, r = 2",
-            measure: "self-intersections of the closed polyline",
+            example: "002 five-petal, 20 poles, r = 2".into(),
+            measure: "self-intersections of the closed polyline".into(),
             value: self_intersections(&values) as f64,
+            paper: None,
         },
         Finding {
-            example: "002 five-petal, 20 poles, r = 2",
-            measure: "max |sum_p Q_2(j - p n) - 1| (partition of unity)",
+            example: "002 five-petal, 20 poles, r = 2".into(),
+            measure: "max |sum_p Q_2(j - p n) - 1| (partition of unity)".into(),
             value: unity,
+            paper: None,
         },
         Finding {
-            example: "002 five-petal, interpolating",
-            measure: "max |S_2(l n) - z(l)| at the 20 nodes",
+            example: "002 five-petal, interpolating".into(),
+            measure: "max |S_2(l n) - z(l)| at the 20 nodes".into(),
             value: node_error,
+            paper: None,
         },
     ])
 }
@@ -396,19 +399,22 @@ fn knot(out: &Path) -> Result<Vec<Finding>> {
         .fold(0.0, f64::max);
     Ok(vec![
         Finding {
-            example: "002 knotted tube, 2 x 5 by 3 x 40",
-            measure: "skeleton max |f_i(j n2) - g_j(i n1)|",
+            example: "002 knotted tube, 2 x 5 by 3 x 40".into(),
+            measure: "skeleton max |f_i(j n2) - g_j(i n1)|".into(),
             value: compatibility_residual(&along, &across, TUBE_N1, TUBE_N2)?,
+            paper: None,
         },
         Finding {
-            example: "002 knotted tube, 2 x 5 by 3 x 40",
-            measure: "max |c(i n1, q) - f_i(q)| (condition 2)",
+            example: "002 knotted tube, 2 x 5 by 3 x 40".into(),
+            measure: "max |c(i n1, q) - f_i(q)| (condition 2)".into(),
             value: along_error,
+            paper: None,
         },
         Finding {
-            example: "002 knotted tube, 2 x 5 by 3 x 40",
-            measure: "max |c(p, j n2) - g_j(p)| (condition 2)",
+            example: "002 knotted tube, 2 x 5 by 3 x 40".into(),
+            measure: "max |c(p, j n2) - g_j(p)| (condition 2)".into(),
             value: across_error,
+            paper: None,
         },
     ])
 }

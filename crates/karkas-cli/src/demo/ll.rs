@@ -80,24 +80,28 @@ fn contour(out: &Path) -> Result<Vec<Finding>> {
     let dip = |s: &[Point2]| s.iter().map(|p| -p[1]).fold(0.0, f64::max);
     Ok(vec![
         Finding {
-            example: "000 contour, 53 points, L = 5",
-            measure: "max |P(t_i) - r_i - d_L D_i| (formula 5)",
+            example: "000 contour, 53 points, L = 5".into(),
+            measure: "max |P(t_i) - r_i - d_L D_i| (formula 5)".into(),
             value: node_error,
+            paper: None,
         },
         Finding {
-            example: "000 contour, 53 points, L = 5",
-            measure: "dip below the flat bottom, approximating",
+            example: "000 contour, 53 points, L = 5".into(),
+            measure: "dip below the flat bottom, approximating".into(),
             value: dip(&samples),
+            paper: None,
         },
         Finding {
-            example: "000 contour, interpolating",
-            measure: "max |P(t_i) - p_i|",
+            example: "000 contour, interpolating".into(),
+            measure: "max |P(t_i) - p_i|".into(),
             value: interp_error,
+            paper: None,
         },
         Finding {
-            example: "000 contour, interpolating",
-            measure: "dip below the flat bottom, interpolating",
+            example: "000 contour, interpolating".into(),
+            measure: "dip below the flat bottom, interpolating".into(),
             value: dip(&interp_samples),
+            paper: None,
         },
     ])
 }
@@ -189,14 +193,16 @@ fn aircraft(out: &Path) -> Result<Vec<Finding>> {
         .fold(0.0, f64::max);
     Ok(vec![
         Finding {
-            example: "000 aircraft 15 x 31, L = 5",
-            measure: "max corner error (corners interpolated)",
+            example: "000 aircraft 15 x 31, L = 5".into(),
+            measure: "max corner error (corners interpolated)".into(),
             value: corner_error,
+            paper: None,
         },
         Finding {
-            example: "000 aircraft 15 x 31, L = 5",
-            measure: "max |x - x_i| on the node sections",
+            example: "000 aircraft 15 x 31, L = 5".into(),
+            measure: "max |x - x_i| on the node sections".into(),
             value: plane_error,
+            paper: None,
         },
     ])
 }

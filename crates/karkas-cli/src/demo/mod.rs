@@ -4,6 +4,7 @@
 mod data;
 mod dps;
 mod ll;
+mod param;
 
 use anyhow::{Context, Result};
 use clap::Args;
@@ -19,14 +20,16 @@ pub struct DemoArgs {
     out: PathBuf,
 }
 
-/// One line of the summary: what was checked and the figure found.
+/// One line of the summary: what was checked, the figure found and the paper's figure.
 pub struct Finding {
     /// The example.
-    pub example: &'static str,
+    pub example: String,
     /// What the figure measures.
-    pub measure: &'static str,
+    pub measure: String,
     /// The figure.
     pub value: f64,
+    /// The paper's figure for the same measure, where it gives one.
+    pub paper: Option<f64>,
 }
 
 /// Runs every example and prints the summary.
@@ -36,14 +39,22 @@ pub fn run(args: &DemoArgs) -> Result<()> {
         .with_context(|| format!("cannot create the folder {}", args.out.display()))?;
     let mut findings = ll::run(&args.out)?;
     findings.extend(dps::run(&args.out)?);
+    findings.extend(param::run(&args.out)?);
     print_summary(&findings, &args.out, started.elapsed().as_secs_f64());
     Ok(())
 }
 
 fn print_summary(findings: &[Finding], out: &Path, seconds: f64) {
-    println!("{:<34} {:<52} {:>12}", "example", "measure", "value");
+    println!(
+        "{:<40} {:<44} {:>12} {:>8}",
+        "example", "measure", "value", "paper"
+    );
     for f in findings {
-        println!("{:<34} {:<52} {:>12.3e}", f.example, f.measure, f.value);
+        let paper = f.paper.map_or_else(String::new, |p| p.to_string());
+        println!(
+            "{:<40} {:<44} {:>12.3e} {:>8}",
+            f.example, f.measure, f.value, paper
+        );
     }
     println!("wrote {} in {seconds:.2} s", out.display());
 }

@@ -1,0 +1,78 @@
+//! `karkas hausdorff`: the two-sided Hausdorff distance between two point sets, or between a
+//! point set and an implicit surface (seed 004, formula (3.14); METHODS.md §5).
+
+use anyhow::{anyhow, bail, Result};
+use clap::Args;
+use karkas::implicit::{closest_point_on, ExpressionSurface};
+use karkas::measure::{
+    distance_to_implicit, hausdorff_sets, DirectedDistance, Hausdorff, PointCloud,
+};
+use karkas::Point3;
+use karkas_io::pointset::read_point_set;
+use std::path::PathBuf;
+
+/// Arguments of `karkas hausdorff`.
+#[derive(Debug, Args)]
+pub struct HausdorffArgs {
+    /// The sets A and B: files of points (.obj: mesh vertices; .csv or columns: x,y,z, e.g. a
+    /// grid i,j,x,y,z or a sampled surface u,v,x,y,z). With --expr, one file (A).
+    #[arg(num_args = 1..=2, required = true, value_name = "FILE")]
+    inputs: Vec<PathBuf>,
+    /// B as the implicit surface F(x, y, z) = 0 (same syntax as `surface implicit --expr`).
+    #[arg(long, value_name = "EXPR")]
+    expr: Option<String>,
+}
+
+/// Runs `karkas hausdorff`.
+pub fn run(args: &HausdorffArgs) -> Result<()> {
+    let a_path = &args.inputs[0];
+    let a = read_point_set(a_path)?;
+    let (h, b_name, b_count) = match (&args.expr, args.inputs.get(1)) {
+        (Some(_), Some(_)) => bail!("give either two files or one file and --expr, not both"),
+        (None, None) => bail!("give two files, or one file and --expr"),
+        (None, Some(b_path)) => {
+            let b = read_point_set(b_path)?;
+            let h = hausdorff_sets(&a, &b).map_err(|e| anyhow!("{e}"))?;
+            (h, b_path.display().to_string(), Some(b.len()))
+        }
+        (Some(expr), None) => {
+            let surface = ExpressionSurface::parse(expr).map_err(|e| anyhow!("--expr: {e}"))?;
+            let forward = distance_to_implicit(&a, &surface)
+                .map_err(|e| anyhow!("{}: {e}", a_path.display()))?;
+            // The implicit side is the patch A covers: the closest points of A's points.
+            let feet: Vec<Point3> = a
+                .iter()
+                .map(|&p| closest_point_on(&surface, p))
+                .collect::<karkas::Result<_>>()
+                .map_err(|e| anyhow!("{}: {e}", a_path.display()))?;
+            let cloud = PointCloud::new(&a).map_err(|e| anyhow!("{}: {e}", a_path.display()))?;
+            let backward = cloud.directed_from(&feet);
+            (
+                Hausdorff::new(forward, backward),
+                format!("F = 0 with F = {expr}"),
+                None,
+            )
+        }
+    };
+    let a_name = a_path.display().to_string();
+    println!("hausdorff {}", h.distance);
+    print_direction("A -> B", &h.forward);
+    print_direction("B -> A", &h.backward);
+    let b_points = b_count.map_or_else(String::new, |n| format!(" ({n} points)"));
+    eprintln!(
+        "karkas: A = {a_name} ({} points), B = {b_name}{b_points}",
+        a.len()
+    );
+    Ok(())
+}
+
+/// One line: the directed distance, the point where it is attained and its nearest point.
+fn print_direction(label: &str, d: &DirectedDistance) {
+    let p = |q: &Point3| format!("{},{},{}", q[0], q[1], q[2]);
+    println!(
+        "{label} {} at {} nearest {}",
+        d.distance,
+        p(&d.from),
+        p(&d.to)
+    );
+}

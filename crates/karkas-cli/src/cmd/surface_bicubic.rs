@@ -1,0 +1,94 @@
+//! `karkas surface bicubic`: the bicubic interpolant of a grid of points with chosen
+//! parameters (seed 004, METHODS.md §5).
+
+use super::curve_ll::{report, MAX_SAMPLES};
+use super::output::ensure_distinct;
+use crate::samples::{default_surface_samples, parse_pair};
+use anyhow::{anyhow, bail, Result};
+use clap::{Args, ValueEnum};
+use karkas::param::{BicubicSurface, GridParameterization};
+use karkas::{Point3, Surface};
+use karkas_io::grid::read_grid;
+use karkas_io::obj::write_surface_obj;
+use karkas_io::write::write_surface_csv;
+use karkas_io::OutputFormat;
+use std::path::PathBuf;
+
+/// The parameterizations of `--param`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum ParamKind {
+    /// u_i = i, v_j = j.
+    Uniform,
+    /// Chord lengths along the row and the column through node (0, 0) (the seed's rule).
+    Chord,
+    /// Chord lengths averaged over all rows and columns.
+    Averaged,
+    /// Square roots of chord lengths averaged over all rows and columns.
+    Centripetal,
+}
+
+impl ParamKind {
+    /// The library's parameterization.
+    pub fn to_library(self) -> GridParameterization {
+        match self {
+            ParamKind::Uniform => GridParameterization::Uniform,
+            ParamKind::Chord => GridParameterization::default(),
+            ParamKind::Averaged => GridParameterization::AveragedChord,
+            ParamKind::Centripetal => GridParameterization::Centripetal,
+        }
+    }
+}
+
+/// Arguments of `karkas surface bicubic`.
+#[derive(Debug, Args)]
+pub struct SurfaceBicubicArgs {
+    /// Parameters of the grid nodes.
+    #[arg(long, value_enum, default_value_t = ParamKind::Chord)]
+    param: ParamKind,
+    /// Close the surface in u (across rows, index i): periodic ends.
+    #[arg(long)]
+    closed_u: bool,
+    /// Close the surface in v (along rows, index j): periodic ends.
+    #[arg(long)]
+    closed_v: bool,
+    /// Samples NU,NV, uniform in the parameters over the domain, ends included
+    /// [default: 4 per grid line in each direction, at least 50].
+    #[arg(long, value_name = "NU,NV", value_parser = parse_pair)]
+    samples: Option<(usize, usize)>,
+    /// Input grid: CSV with header i,j,x,y,z (indices from 0, rows in any order).
+    input: PathBuf,
+    /// Output file: .csv (u,v,x,y,z in the chosen parameters) or .obj (triangle mesh).
+    #[arg(short, long)]
+    output: PathBuf,
+}
+
+/// Runs `karkas surface bicubic`.
+pub fn run(args: &SurfaceBicubicArgs) -> Result<()> {
+    let format = OutputFormat::from_path(&args.output, &[OutputFormat::Csv, OutputFormat::Obj])?;
+    if args
+        .samples
+        .is_some_and(|(nu, nv)| nu.saturating_mul(nv) > MAX_SAMPLES)
+    {
+        bail!("--samples: at most {MAX_SAMPLES} samples can be written");
+    }
+    ensure_distinct(&args.input, &args.output)?;
+    let grid = read_grid(&args.input)?;
+    let surface = BicubicSurface::new(&grid, args.param.to_library(), args.closed_u, args.closed_v)
+        .map_err(|e| anyhow!("{}: {e}", args.input.display()))?;
+    let (nu, nv) = args.samples.unwrap_or_else(|| {
+        (
+            default_surface_samples(grid.rows()),
+            default_surface_samples(grid.cols()),
+        )
+    });
+    let mut us = vec![0.0; nu];
+    let mut vs = vec![0.0; nv];
+    let mut samples = vec![Point3::ZERO; nu * nv];
+    surface.sample_grid_into(&mut us, &mut vs, &mut samples);
+    match format {
+        OutputFormat::Obj => write_surface_obj(&args.output, nu, nv, &samples)?,
+        _ => write_surface_csv(&args.output, &us, &vs, &samples)?,
+    }
+    report(&args.output, nu * nv);
+    Ok(())
+}

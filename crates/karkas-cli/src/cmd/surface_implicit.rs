@@ -1,0 +1,149 @@
+//! `karkas surface implicit`: a grid of nodes on an implicit surface, traced along its lines
+//! of curvature (or a net turned by an angle) by continuation (seed 004, METHODS.md §5).
+
+use anyhow::{anyhow, bail, Result};
+use clap::Args;
+use karkas::implicit::{trace_net, ExpressionSurface, NetDirections, NetSpec};
+use karkas::Point3;
+use karkas_io::grid::write_grid_csv;
+use karkas_io::OutputFormat;
+use std::path::PathBuf;
+
+/// The largest grid the command traces.
+const MAX_NODES: usize = 1_000_000;
+
+/// Arguments of `karkas surface implicit`.
+#[derive(Debug, Args)]
+pub struct SurfaceImplicitArgs {
+    /// The surface F(x, y, z) = 0 as an expression in x, y, z, e.g. "x^2+y^2-1"
+    /// (+ - * / ^, numbers, pi, e, sin cos tan asin acos atan sinh cosh tanh exp ln log log2
+    /// log10 sqrt).
+    #[arg(long, value_name = "EXPR")]
+    expr: String,
+    /// A point X,Y,Z on or near the surface (within one step): the node (0, 0).
+    #[arg(long, value_name = "X,Y,Z", value_parser = parse_point)]
+    start: Point3,
+    /// Nodes NU,NV: NU along the u lines (first principal direction), NV along every v line.
+    #[arg(long, value_name = "NU,NV", value_parser = parse_nodes)]
+    nodes: (usize, usize),
+    /// Arc length between nodes: H for both directions, or HU,HV.
+    #[arg(long, value_name = "H", value_parser = parse_steps)]
+    step: (f64, f64),
+    /// Turn both families of lines by DEG degrees about the normal: a net at a constant angle
+    /// to the lines of curvature (0: the lines of curvature themselves).
+    #[arg(
+        long,
+        value_name = "DEG",
+        default_value_t = 0.0,
+        allow_negative_numbers = true
+    )]
+    turn: f64,
+    /// The v lines are closed: spread their NV nodes evenly over one turn (the last node
+    /// repeats the first); the v step is then only the tracing step while measuring a turn.
+    #[arg(long)]
+    closed_v: bool,
+    /// Output grid: .csv with header i,j,x,y,z (input of `surface bicubic`, `surface ll`).
+    #[arg(short, long, value_name = "GRID.csv")]
+    output: PathBuf,
+}
+
+/// Runs `karkas surface implicit`.
+pub fn run(args: &SurfaceImplicitArgs) -> Result<()> {
+    OutputFormat::from_path(&args.output, &[OutputFormat::Csv])?;
+    let (nu, nv) = args.nodes;
+    if nu.saturating_mul(nv) > MAX_NODES {
+        bail!("--nodes: at most {MAX_NODES} nodes can be traced");
+    }
+    if !args.turn.is_finite() {
+        bail!("--turn: the angle must be finite");
+    }
+    let surface = ExpressionSurface::parse(&args.expr).map_err(|e| anyhow!("--expr: {e}"))?;
+    let directions = if args.turn == 0.0 {
+        NetDirections::Principal
+    } else {
+        NetDirections::Turned {
+            angle: args.turn.to_radians(),
+        }
+    };
+    let mut spec = NetSpec::new(args.start, directions, args.nodes, args.step);
+    spec.closed_v = args.closed_v;
+    let grid = trace_net(&surface, &spec).map_err(|e| match e {
+        karkas::Error::NoSurfaceNear { .. } | karkas::Error::SingularPoint { .. } => {
+            anyhow!("--start: {e}")
+        }
+        _ => anyhow!("{e}"),
+    })?;
+    write_grid_csv(&args.output, &grid)?;
+    eprintln!(
+        "karkas: wrote {} ({nu} x {nv} nodes)",
+        args.output.display()
+    );
+    Ok(())
+}
+
+/// Parses `X,Y,Z`.
+fn parse_point(text: &str) -> Result<Point3, String> {
+    let values: Vec<&str> = text.split(',').collect();
+    if values.len() != 3 {
+        return Err(format!(
+            "expected X,Y,Z (three numbers separated by commas), got '{text}'"
+        ));
+    }
+    let mut p = Point3::ZERO;
+    for (k, v) in values.iter().enumerate() {
+        p[k] = parse_finite(v)?;
+    }
+    Ok(p)
+}
+
+fn parse_finite(text: &str) -> Result<f64, String> {
+    match text.trim().parse::<f64>() {
+        Ok(v) if v.is_finite() => Ok(v),
+        _ => Err(format!("'{}' is not a finite number", text.trim())),
+    }
+}
+
+/// Parses `NU,NV` (each at least 2).
+fn parse_nodes(text: &str) -> Result<(usize, usize), String> {
+    let (a, b) = text
+        .split_once(',')
+        .ok_or_else(|| format!("expected NU,NV (two counts separated by a comma), got '{text}'"))?;
+    let count = |s: &str| match s.trim().parse::<usize>() {
+        Ok(n) if n >= 2 => Ok(n),
+        Ok(n) => Err(format!("at least 2 nodes are needed, got {n}")),
+        Err(_) => Err(format!("'{}' is not a whole number", s.trim())),
+    };
+    Ok((count(a)?, count(b)?))
+}
+
+/// Parses `H` or `HU,HV` (positive).
+fn parse_steps(text: &str) -> Result<(f64, f64), String> {
+    let positive = |s: &str| match parse_finite(s)? {
+        h if h > 0.0 => Ok(h),
+        h => Err(format!("the step must be positive, got {h}")),
+    };
+    match text.split_once(',') {
+        Some((a, b)) => Ok((positive(a)?, positive(b)?)),
+        None => {
+            let h = positive(text)?;
+            Ok((h, h))
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn option_values() {
+        assert_eq!(parse_point("1, 0,-2.5"), Ok(Point3::new([1.0, 0.0, -2.5])));
+        assert!(parse_point("1,0").is_err());
+        assert!(parse_point("1,0,inf").is_err());
+        assert_eq!(parse_nodes("5,9"), Ok((5, 9)));
+        assert!(parse_nodes("1,9").is_err());
+        assert_eq!(parse_steps("0.5"), Ok((0.5, 0.5)));
+        assert_eq!(parse_steps("0.5,0.25"), Ok((0.5, 0.25)));
+        assert!(parse_steps("-1").is_err());
+    }
+}

@@ -1,0 +1,55 @@
+//! Seed 004 (parameterization and bicubic interpolation): the table of Hausdorff errors of
+//! frames laid along the lines of curvature or turned away from them (METHODS.md §5), with
+//! the paper's figures beside ours. Writes every frame's nodes (grid CSV) and interpolant
+//! (OBJ mesh).
+
+use super::Finding;
+use anyhow::{Context, Result};
+use karkas::param::experiments::{helix_experiment, seed_experiments, SeedExperiment};
+use karkas::{Point3, Surface};
+use karkas_io::grid::write_grid_csv;
+use karkas_io::obj::write_surface_obj;
+use std::path::Path;
+
+/// Runs the seven rows of the seed's table and the extra helix frame into `out`.
+pub fn run(out: &Path) -> Result<Vec<Finding>> {
+    let mut findings = Vec::new();
+    for row in seed_experiments()
+        .into_iter()
+        .chain(std::iter::once(helix_experiment()))
+    {
+        findings.push(experiment(out, &row)?);
+    }
+    Ok(findings)
+}
+
+/// A file name from a label: `cylinder, both axes turned 30 deg` -> `004-cylinder-both-axes-turned-30-deg`.
+fn slug(label: &str) -> String {
+    let words: Vec<&str> = label
+        .split(|c: char| !c.is_ascii_alphanumeric())
+        .filter(|w| !w.is_empty())
+        .collect();
+    format!("004-{}", words.join("-"))
+}
+
+fn experiment(out: &Path, row: &SeedExperiment) -> Result<Finding> {
+    let outcome = row
+        .run()
+        .with_context(|| format!("seed 004, {}", row.label))?;
+    let name = slug(row.label);
+    write_grid_csv(&out.join(format!("{name}-nodes.csv")), &outcome.nodes)?;
+    let (nu, nv) = (41, 121);
+    let mut us = vec![0.0; nu];
+    let mut vs = vec![0.0; nv];
+    let mut mesh = vec![Point3::ZERO; nu * nv];
+    outcome
+        .surface
+        .sample_grid_into(&mut us, &mut vs, &mut mesh);
+    write_surface_obj(&out.join(format!("{name}.obj")), nu, nv, &mesh)?;
+    Ok(Finding {
+        example: format!("004 {}", row.label),
+        measure: "two-sided Hausdorff error, 5 x 9 frame".into(),
+        value: outcome.error.distance,
+        paper: row.paper_error,
+    })
+}

@@ -1,0 +1,208 @@
+//! The CLI contract of `karkas surface bicubic` (options, CSV header, parameters, exit code 2
+//! and no output on bad input).
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn karkas(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_karkas"))
+        .args(args)
+        .output()
+        .expect("the karkas binary runs")
+}
+
+fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
+    let p = dir.join(name);
+    std::fs::write(&p, text).unwrap();
+    p
+}
+
+fn s(p: &Path) -> &str {
+    p.to_str().unwrap()
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+fn read_csv(path: &Path) -> (Vec<String>, Vec<Vec<f64>>) {
+    let text = std::fs::read_to_string(path).unwrap();
+    let mut lines = text.lines();
+    let header = lines
+        .next()
+        .unwrap()
+        .split(',')
+        .map(str::to_owned)
+        .collect();
+    let rows = lines
+        .map(|l| l.split(',').map(|f| f.parse().unwrap()).collect())
+        .collect();
+    (header, rows)
+}
+
+/// A 4 x 5 grid whose rows are 1, 3, 2 apart (x) and columns 1 apart (y), with a bump in z.
+fn grid_text() -> String {
+    let xs = [0.0, 1.0, 4.0, 6.0];
+    let mut text = String::from("i,j,x,y,z\n");
+    for (i, x) in xs.iter().enumerate() {
+        for j in 0..5 {
+            text.push_str(&format!("{i},{j},{x},{j},{}\n", 0.1 * (i * j) as f64));
+        }
+    }
+    text
+}
+
+#[test]
+fn uniform_parameters_reproduce_every_node() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = write(dir.path(), "g.csv", &grid_text());
+    let out = dir.path().join("s.csv");
+    let o = karkas(&[
+        "surface",
+        "bicubic",
+        "--param",
+        "uniform",
+        "--samples",
+        "4,5",
+        s(&input),
+        "-o",
+        s(&out),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let (header, rows) = read_csv(&out);
+    assert_eq!(header, ["u", "v", "x", "y", "z"]);
+    assert_eq!(rows.len(), 20);
+    let xs = [0.0, 1.0, 4.0, 6.0];
+    for (k, row) in rows.iter().enumerate() {
+        let (i, j) = (k / 5, k % 5);
+        assert_eq!((row[0], row[1]), (i as f64, j as f64));
+        let expected = [xs[i], j as f64, 0.1 * (i * j) as f64];
+        for c in 0..3 {
+            assert!(
+                (row[2 + c] - expected[c]).abs() < 1e-12,
+                "node ({i}, {j}): {row:?}"
+            );
+        }
+    }
+}
+
+#[test]
+fn chord_parameters_are_the_default_and_averaged_ones_differ() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = write(dir.path(), "g.csv", &grid_text());
+    let out = dir.path().join("s.csv");
+    let o = karkas(&[
+        "surface",
+        "bicubic",
+        "--samples",
+        "3,2",
+        s(&input),
+        "-o",
+        s(&out),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let (_, rows) = read_csv(&out);
+    // Chords along the column j = 0 (z = 0): 1 + 3 + 2 = 6; along the row i = 0: 4.
+    assert_eq!(rows.last().unwrap()[..2], [6.0, 4.0]);
+    let o = karkas(&[
+        "surface",
+        "bicubic",
+        "--param",
+        "averaged",
+        "--samples",
+        "3,2",
+        s(&input),
+        "-o",
+        s(&out),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let (_, rows) = read_csv(&out);
+    assert!(
+        rows.last().unwrap()[1] > 4.0,
+        "averaged v chords include the tilted rows"
+    );
+}
+
+#[test]
+fn closed_direction_and_obj_output() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut text = String::from("i,j,x,y,z\n");
+    for i in 0..3 {
+        for j in 0..6 {
+            let a = std::f64::consts::TAU * j as f64 / 6.0;
+            text.push_str(&format!("{i},{j},{},{},{i}\n", a.cos(), a.sin()));
+        }
+    }
+    let input = write(dir.path(), "ring.csv", &text);
+    let out = dir.path().join("ring-out.csv");
+    let o = karkas(&[
+        "surface",
+        "bicubic",
+        "--closed-v",
+        "--samples",
+        "3,13",
+        s(&input),
+        "-o",
+        s(&out),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let (_, rows) = read_csv(&out);
+    for i in 0..3 {
+        let (first, last) = (&rows[13 * i], &rows[13 * i + 12]);
+        for c in 2..5 {
+            assert!((first[c] - last[c]).abs() < 1e-12, "the seam is closed");
+        }
+    }
+    let mesh = dir.path().join("ring.obj");
+    let o = karkas(&[
+        "surface",
+        "bicubic",
+        "--closed-v",
+        s(&input),
+        "-o",
+        s(&mesh),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let obj = std::fs::read_to_string(&mesh).unwrap();
+    assert!(obj.lines().any(|l| l.starts_with("v ")) && obj.lines().any(|l| l.starts_with("f ")));
+}
+
+#[test]
+fn bad_input_exits_2_with_one_line_and_no_output() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("s.csv");
+    let missing = write(
+        dir.path(),
+        "m.csv",
+        "i,j,x,y,z\n0,0,0,0,0\n0,1,0,1,0\n1,1,1,1,0\n",
+    );
+    let o = karkas(&["surface", "bicubic", s(&missing), "-o", s(&out)]);
+    assert_eq!(o.status.code(), Some(2));
+    let err = stderr(&o);
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(err.contains("m.csv") && err.contains("(i=1, j=0)"), "{err}");
+    let twice = write(
+        dir.path(),
+        "t.csv",
+        "i,j,x,y,z\n0,0,0,0,0\n0,1,0,1,0\n1,0,0,0,0\n1,1,0,1,0\n",
+    );
+    let o = karkas(&["surface", "bicubic", s(&twice), "-o", s(&out)]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("t.csv") && stderr(&o).contains("coincide"),
+        "{}",
+        stderr(&o)
+    );
+    let good = write(dir.path(), "g.csv", &grid_text());
+    let o = karkas(&[
+        "surface",
+        "bicubic",
+        "--param",
+        "arc",
+        s(&good),
+        "-o",
+        s(&out),
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(!out.exists());
+}

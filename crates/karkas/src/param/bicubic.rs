@@ -1,0 +1,386 @@
+//! Bicubic interpolation of a grid in Hermite form (seed 004, (3.3)–(3.13); METHODS.md §5).
+//!
+//! On the cell `[u_i, u_{i+1}] x [v_j, v_{j+1}]` the surface is `W = phi(s)^T F phi(t)` (3.6)
+//! with the Hermite basis `phi` of (3.7), (3.9) and the 4 x 4 matrix (3.8) of node values
+//! `r`, u-slopes `r_u`, v-slopes `r_v` and twists `r_uv` at the four corners. The unknown
+//! derivatives come from `2N + M` one-dimensional spline solves (the seed's three steps):
+//!
+//! 1. a spline in `u` along every column `v = v_j` gives `r_u` (M solves);
+//! 2. a spline in `v` along every row `u = u_i` gives `r_v` (N solves);
+//! 3. a spline in `v` of the `r_u` of every row gives `r_uv` (N solves).
+//!
+//! Each solve is tridiagonal (not-a-knot ends eliminated as in (3.10)–(3.12), or cyclic for a
+//! closed direction), so construction is `O(N M)`. Guarantees: `W(u_i, v_j) = r_ij` at every
+//! node; every partial derivative `D^{a,b} W` with `a, b <= 2` is continuous; every line
+//! `u = u_i` and `v = v_j` is the 1-D cubic spline of its nodes; with not-a-knot ends a
+//! bicubic polynomial is reproduced exactly.
+//!
+//! Grid evaluation ([`Surface::eval_grid_into`]) combines the two node rows of a sample row
+//! once (`O(M)`), then costs 4 multiply-adds per point; the `v` weights of every sample
+//! column are computed once per call.
+
+use super::knots::{check_knots, locate};
+use super::parameterization::{grid_parameters, GridParameterization};
+use super::slopes::{hermite_weights, SlopeSystem, SplineEnds};
+use crate::core::{Grid, Interval, PiecewiseSurface, Side, Surface};
+use crate::{Error, Point, Result};
+
+/// A bicubic interpolating spline surface over a grid `r_ij` (row `i` at `u_i`, column `j`
+/// at `v_j`), each direction open (not-a-knot ends) or closed (periodic).
+///
+/// Outside the domain an open direction continues its end patches' polynomials and a closed
+/// one wraps by its period.
+#[derive(Clone, Debug, PartialEq)]
+pub struct BicubicSurface<const D: usize> {
+    knots_u: Vec<f64>,
+    knots_v: Vec<f64>,
+    closed_u: bool,
+    closed_v: bool,
+    /// The node values `r_ij` ((3.8); a closed direction repeats its first line).
+    values: Grid<Point<D>>,
+    /// `m^(1,0) = dW/du` at the nodes, row-major like `values`.
+    ru: Vec<Point<D>>,
+    /// `m^(0,1) = dW/dv`.
+    rv: Vec<Point<D>>,
+    /// `m^(1,1) = d^2 W / du dv`.
+    ruv: Vec<Point<D>>,
+}
+
+impl<const D: usize> BicubicSurface<D> {
+    /// The bicubic interpolant of `grid` with parameters by `parameterization`.
+    ///
+    /// A closed direction is closed like a curve: if the last row (column) repeats the first
+    /// (relative tolerance `1e-12`) it is the seam, otherwise the first is appended; the
+    /// parameters include the closing step.
+    ///
+    /// Errors: fewer than 2 rows or columns (3 distinct when closed), a non-finite point
+    /// (named by its cell), coincident consecutive lines ([`Error::CoincidentGridLines`]).
+    pub fn new(
+        grid: &Grid<Point<D>>,
+        parameterization: GridParameterization,
+        closed_u: bool,
+        closed_v: bool,
+    ) -> Result<Self> {
+        validate(grid)?;
+        let grid = close_grid(grid, closed_u, closed_v)?;
+        let (us, vs) = grid_parameters(&grid, parameterization)?;
+        Self::build(grid, us, vs, closed_u, closed_v)
+    }
+
+    /// The bicubic interpolant of `grid` on given knots (`knots_u.len() == rows`,
+    /// `knots_v.len() == cols`). In a closed direction the last row (column) must repeat the
+    /// first.
+    ///
+    /// Errors: as [`new`](Self::new), plus knots that do not fit the grid or do not increase
+    /// ([`Error::KnotsNotIncreasing`]), a closed direction whose last line does not repeat the
+    /// first.
+    pub fn from_knots(
+        grid: &Grid<Point<D>>,
+        knots_u: &[f64],
+        knots_v: &[f64],
+        closed_u: bool,
+        closed_v: bool,
+    ) -> Result<Self> {
+        validate(grid)?;
+        if knots_u.len() != grid.rows() || knots_v.len() != grid.cols() {
+            return Err(Error::InvalidInput(format!(
+                "{} x {} knots for a {} x {} grid",
+                knots_u.len(),
+                knots_v.len(),
+                grid.rows(),
+                grid.cols()
+            )));
+        }
+        check_knots(knots_u)?;
+        check_knots(knots_v)?;
+        let closed = close_grid(grid, closed_u, closed_v)?;
+        if closed.rows() != grid.rows() || closed.cols() != grid.cols() {
+            return Err(Error::InvalidInput(
+                "a closed direction needs its last grid line to repeat the first".into(),
+            ));
+        }
+        Self::build(
+            closed,
+            knots_u.to_vec(),
+            knots_v.to_vec(),
+            closed_u,
+            closed_v,
+        )
+    }
+
+    /// The three steps of the seed: `2N + M` spline solves.
+    fn build(
+        grid: Grid<Point<D>>,
+        knots_u: Vec<f64>,
+        knots_v: Vec<f64>,
+        closed_u: bool,
+        closed_v: bool,
+    ) -> Result<Self> {
+        let (rows, cols) = (grid.rows(), grid.cols());
+        let ends = |closed: bool| -> SplineEnds<D> {
+            if closed {
+                SplineEnds::Periodic
+            } else {
+                SplineEnds::NotAKnot
+            }
+        };
+        let (ends_u, ends_v) = (ends(closed_u), ends(closed_v));
+        let system_u = SlopeSystem::new(&knots_u, &ends_u)?;
+        let system_v = SlopeSystem::new(&knots_v, &ends_v)?;
+        // Step 1: r_u along every column, all columns in one sweep over the grid rows.
+        let mut ru = vec![Point::ZERO; rows * cols];
+        system_u.solve(grid.as_slice(), &mut ru, cols, None);
+        // Steps 2 and 3: r_v and r_uv along every row.
+        let mut rv = vec![Point::ZERO; rows * cols];
+        let mut ruv = vec![Point::ZERO; rows * cols];
+        for i in 0..rows {
+            let span = i * cols..(i + 1) * cols;
+            system_v.solve(grid.row(i), &mut rv[span.clone()], 1, None);
+            system_v.solve(&ru[span.clone()], &mut ruv[span], 1, None);
+        }
+        Ok(BicubicSurface {
+            knots_u,
+            knots_v,
+            closed_u,
+            closed_v,
+            values: grid,
+            ru,
+            rv,
+            ruv,
+        })
+    }
+
+    /// The knots `u_0 < .. < u_{N-1}` (a closed direction includes the seam twice).
+    pub fn knots_u(&self) -> &[f64] {
+        &self.knots_u
+    }
+
+    /// The knots `v_0 < .. < v_{M-1}`.
+    pub fn knots_v(&self) -> &[f64] {
+        &self.knots_v
+    }
+
+    /// The interpolated node `r_ij` (of the closed grid).
+    pub fn node(&self, i: usize, j: usize) -> Point<D> {
+        *self.values.get(i, j)
+    }
+
+    /// The node derivatives `(m^(1,0), m^(0,1), m^(1,1))` at node `(i, j)` ((3.8)).
+    pub fn node_derivatives(&self, i: usize, j: usize) -> (Point<D>, Point<D>, Point<D>) {
+        let k = i * self.values.cols() + j;
+        (self.ru[k], self.rv[k], self.ruv[k])
+    }
+
+    /// The value and `v`-slope of the line `u = const` at node column `j`, combined from the
+    /// two node rows `i`, `i + 1` with the u-weights `w`.
+    #[inline]
+    fn column_data(&self, i: usize, j: usize, w: &[f64; 4]) -> (Point<D>, Point<D>) {
+        let cols = self.values.cols();
+        let (a, b) = (i * cols + j, (i + 1) * cols + j);
+        let r = self.values.as_slice();
+        (
+            r[a] * w[0] + r[b] * w[1] + self.ru[a] * w[2] + self.ru[b] * w[3],
+            self.rv[a] * w[0] + self.rv[b] * w[1] + self.ruv[a] * w[2] + self.ruv[b] * w[3],
+        )
+    }
+
+    /// Fills `values` and `slopes` with the value and `v`-slope of the line `u = const` at
+    /// every node column, from node rows `i`, `i + 1` with the u-weights `w` (`O(M)`).
+    fn combine_rows(
+        &self,
+        i: usize,
+        w: &[f64; 4],
+        values: &mut [Point<D>],
+        slopes: &mut [Point<D>],
+    ) {
+        let cols = self.values.cols();
+        let (upper, lower) = (i * cols..(i + 1) * cols, (i + 1) * cols..(i + 2) * cols);
+        let r = self.values.as_slice();
+        let rows = r[upper.clone()].iter().zip(&r[lower.clone()]);
+        let u_slopes = self.ru[upper.clone()].iter().zip(&self.ru[lower.clone()]);
+        for ((q, (&a, &b)), (&ua, &ub)) in values.iter_mut().zip(rows).zip(u_slopes) {
+            *q = a * w[0] + b * w[1] + ua * w[2] + ub * w[3];
+        }
+        let v_slopes = self.rv[upper.clone()].iter().zip(&self.rv[lower.clone()]);
+        let twists = self.ruv[upper].iter().zip(&self.ruv[lower]);
+        for ((qv, (&a, &b)), (&ua, &ub)) in slopes.iter_mut().zip(v_slopes).zip(twists) {
+            *qv = a * w[0] + b * w[1] + ua * w[2] + ub * w[3];
+        }
+    }
+
+    fn deriv_on_cell(
+        &self,
+        (i, s): (usize, f64),
+        (j, t): (usize, f64),
+        ku: usize,
+        kv: usize,
+    ) -> Point<D> {
+        let wu = hermite_weights(s, self.knots_u[i + 1] - self.knots_u[i], ku);
+        let wv = hermite_weights(t, self.knots_v[j + 1] - self.knots_v[j], kv);
+        let (q0, s0) = self.column_data(i, j, &wu);
+        let (q1, s1) = self.column_data(i, j + 1, &wu);
+        q0 * wv[0] + q1 * wv[1] + s0 * wv[2] + s1 * wv[3]
+    }
+}
+
+/// At least 2 x 2 points, all finite.
+fn validate<const D: usize>(grid: &Grid<Point<D>>) -> Result<()> {
+    let (rows, cols) = (grid.rows(), grid.cols());
+    if rows < 2 || cols < 2 {
+        return Err(Error::TooFewPoints {
+            what: "a bicubic surface (in each grid direction)",
+            needed: 2,
+            got: rows.min(cols),
+        });
+    }
+    if let Some(k) = grid.as_slice().iter().position(|p| !p.is_finite()) {
+        return Err(Error::NonFiniteCell {
+            row: k / cols,
+            col: k % cols,
+        });
+    }
+    Ok(())
+}
+
+/// Closes the grid in the closed directions: a last line that repeats the first becomes an
+/// exact copy of it, otherwise the first line is appended.
+fn close_grid<const D: usize>(
+    grid: &Grid<Point<D>>,
+    closed_u: bool,
+    closed_v: bool,
+) -> Result<Grid<Point<D>>> {
+    if !closed_u && !closed_v {
+        return Ok(grid.clone());
+    }
+    let (rows, cols) = (grid.rows(), grid.cols());
+    let scale = grid
+        .as_slice()
+        .iter()
+        .fold(1.0f64, |m, p| m.max(p.max_abs()));
+    let same = |a: &Point<D>, b: &Point<D>| (*a - *b).max_abs() <= 1e-12 * scale;
+    let mut lines: Vec<Vec<Point<D>>> = (0..rows).map(|i| grid.row(i).to_vec()).collect();
+    if closed_v {
+        let repeats = lines.iter().all(|r| same(&r[0], &r[cols - 1]));
+        for r in &mut lines {
+            if repeats {
+                r[cols - 1] = r[0];
+            } else {
+                r.push(r[0]);
+            }
+        }
+    }
+    if closed_u {
+        let repeats = lines[0]
+            .iter()
+            .zip(&lines[rows - 1])
+            .all(|(a, b)| same(a, b));
+        if repeats {
+            lines[rows - 1] = lines[0].clone();
+        } else {
+            lines.push(lines[0].clone());
+        }
+    }
+    let (n, m) = (lines.len(), lines[0].len());
+    if (closed_u && n < 4) || (closed_v && m < 4) {
+        return Err(Error::TooFewPoints {
+            what: "a closed direction of a bicubic surface (distinct grid lines)",
+            needed: 3,
+            got: if closed_u && n < 4 { n - 1 } else { m - 1 },
+        });
+    }
+    Grid::from_row_major(n, m, lines.concat())
+}
+
+impl<const D: usize> Surface<D> for BicubicSurface<D> {
+    fn domain_u(&self) -> Interval {
+        Interval::new(self.knots_u[0], self.knots_u[self.knots_u.len() - 1])
+    }
+
+    fn domain_v(&self) -> Interval {
+        Interval::new(self.knots_v[0], self.knots_v[self.knots_v.len() - 1])
+    }
+
+    fn is_closed_u(&self) -> bool {
+        self.closed_u
+    }
+
+    fn is_closed_v(&self) -> bool {
+        self.closed_v
+    }
+
+    fn eval(&self, u: f64, v: f64) -> Point<D> {
+        self.deriv(u, v, 0, 0)
+    }
+
+    fn deriv(&self, u: f64, v: f64, ku: usize, kv: usize) -> Point<D> {
+        self.deriv_on_cell(
+            locate(&self.knots_u, self.closed_u, u, Side::Above),
+            locate(&self.knots_v, self.closed_v, v, Side::Above),
+            ku,
+            kv,
+        )
+    }
+
+    fn eval_grid_into(&self, us: &[f64], vs: &[f64], out: &mut [Point<D>]) {
+        assert_eq!(
+            out.len(),
+            us.len() * vs.len(),
+            "output buffer does not fit the grid"
+        );
+        let columns: Vec<(usize, [f64; 4])> = vs
+            .iter()
+            .map(|&v| {
+                let (j, t) = locate(&self.knots_v, self.closed_v, v, Side::Above);
+                (
+                    j,
+                    hermite_weights(t, self.knots_v[j + 1] - self.knots_v[j], 0),
+                )
+            })
+            .collect();
+        let cols = self.values.cols();
+        let mut values = vec![Point::ZERO; cols];
+        let mut slopes = vec![Point::ZERO; cols];
+        for (&u, out_row) in us.iter().zip(out.chunks_exact_mut(vs.len().max(1))) {
+            let (i, s) = locate(&self.knots_u, self.closed_u, u, Side::Above);
+            let wu = hermite_weights(s, self.knots_u[i + 1] - self.knots_u[i], 0);
+            self.combine_rows(i, &wu, &mut values, &mut slopes);
+            for (p, &(j, w)) in out_row.iter_mut().zip(&columns) {
+                *p = values[j] * w[0]
+                    + values[j + 1] * w[1]
+                    + slopes[j] * w[2]
+                    + slopes[j + 1] * w[3];
+            }
+        }
+    }
+}
+
+impl<const D: usize> PiecewiseSurface<D> for BicubicSurface<D> {
+    fn breakpoints_u(&self) -> Vec<f64> {
+        self.knots_u.clone()
+    }
+
+    fn breakpoints_v(&self) -> Vec<f64> {
+        self.knots_v.clone()
+    }
+
+    fn continuity(&self) -> usize {
+        2
+    }
+
+    fn deriv_on_side(
+        &self,
+        u: f64,
+        v: f64,
+        ku: usize,
+        kv: usize,
+        side_u: Side,
+        side_v: Side,
+    ) -> Point<D> {
+        self.deriv_on_cell(
+            locate(&self.knots_u, self.closed_u, u, side_u),
+            locate(&self.knots_v, self.closed_v, v, side_v),
+            ku,
+            kv,
+        )
+    }
+}

@@ -1,0 +1,217 @@
+//! The experiments of seed 004 (section 3, examples 3.1 and 3.2; METHODS.md §5): node frames
+//! of a cylinder and a hyperboloid laid along the lines of curvature or turned away from
+//! them, interpolated bicubically with the seed's chord-length parameters and not-a-knot
+//! ends, and measured by the two-sided Hausdorff distance to the exact surface patch.
+//!
+//! Layout (the paper gives counts and angles; the rest is chosen here and stated):
+//!
+//! - every frame has 5 nodes along `u` (the spine, traced from the start node) and 9 around
+//!   (`v`, a closed line: the 9th node repeats the first, as in the paper's "first = last");
+//!   both directions are interpolated with open not-a-knot ends, as the seed does (its 40
+//!   distinct points);
+//! - cylinder `x^2 + y^2 = 1`, start `(1, 0, 0)`: lines of curvature are the generators
+//!   (`u`, step 0.5, so `z` in `[0, 2]`) and the circles;
+//! - "both axes turned by 30° / 45°": the paper's frame lines are "ellipses and spirals";
+//!   here the `v` lines are the sections by the planes normal to `(0, -sin a, cos a)`
+//!   (ellipses, leaving the circles at angle `a` at the start node) and the `u` lines their
+//!   orthogonal trajectories (spirals), so the axes are orthogonal and turned by `a` at the
+//!   start node;
+//! - "one axis turned": the circles stay, the generator is replaced by the helix at angle
+//!   `a` to it, with the `u` step `0.5 / cos a` so that the nodes stay on the same five
+//!   circles;
+//! - hyperboloid `x^2 + y^2 - z^2 = 1`, start `(sqrt(1.25), 0, -0.5)`: meridians (`u`, 4 steps
+//!   of a quarter of the meridian's length from `z = -0.5` to `0.5`) and circles; the
+//!   turned frame replaces the meridian by a line at 68° to it (the middle of the paper's
+//!   65°–71°), the `u` step again stretched by `1 / cos a`.
+//!
+//! The exact patch is the same net traced 4 times denser; the interpolant is sampled on a
+//! `64 x 160` grid. A frame of constant-angle helices (both families turned, lines not
+//! closed) is also offered ([`helix_experiment`]): on the developable cylinder it
+//! interpolates better than the lines of curvature, which the paper's frames do not show.
+
+use super::{BicubicSurface, GridParameterization};
+use crate::implicit::{trace_net, Cylinder, Hyperboloid, ImplicitSurface, NetDirections, NetSpec};
+use crate::measure::{hausdorff_surface_implicit, Hausdorff};
+use crate::{Grid, Point3, Result};
+use core::f64::consts::TAU;
+
+/// How much denser than the frame the exact patch is traced.
+const PATCH_REFINEMENT: usize = 4;
+
+/// Samples of the interpolant in the Hausdorff distance.
+const SAMPLES: (usize, usize) = (64, 160);
+
+/// Which surface of the seed an experiment uses.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum SeedSurface {
+    /// `x^2 + y^2 = 1`.
+    Cylinder,
+    /// `x^2 + y^2 - z^2 = 1`.
+    Hyperboloid,
+}
+
+/// One row of the seed's table of errors.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SeedExperiment {
+    /// What the frame is.
+    pub label: &'static str,
+    /// The Hausdorff error the paper reports, when it reports one.
+    pub paper_error: Option<f64>,
+    /// The surface.
+    pub surface: SeedSurface,
+    /// The net of nodes.
+    pub net: NetSpec,
+}
+
+/// The outcome of one experiment.
+#[derive(Clone, Debug)]
+pub struct ExperimentOutcome {
+    /// The frame's nodes.
+    pub nodes: Grid<Point3>,
+    /// Its bicubic interpolant (chord-length parameters through node `(0, 0)`, not-a-knot).
+    pub surface: BicubicSurface<3>,
+    /// The two-sided Hausdorff distance to the exact patch.
+    pub error: Hausdorff,
+}
+
+impl SeedExperiment {
+    /// Traces the frame and its exact patch, interpolates and measures.
+    pub fn run(&self) -> Result<ExperimentOutcome> {
+        match self.surface {
+            SeedSurface::Cylinder => self.run_on(&Cylinder { radius: 1.0 }),
+            SeedSurface::Hyperboloid => self.run_on(&Hyperboloid { neck_radius: 1.0 }),
+        }
+    }
+
+    fn run_on<S: ImplicitSurface>(&self, implicit: &S) -> Result<ExperimentOutcome> {
+        let nodes = trace_net(implicit, &self.net)?;
+        let surface = BicubicSurface::new(&nodes, GridParameterization::default(), false, false)?;
+        let k = PATCH_REFINEMENT;
+        let mut dense = self.net;
+        dense.nodes = (
+            (self.net.nodes.0 - 1) * k + 1,
+            (self.net.nodes.1 - 1) * k + 1,
+        );
+        dense.steps = (self.net.steps.0 / k as f64, self.net.steps.1 / k as f64);
+        let patch = trace_net(implicit, &dense)?;
+        let error = hausdorff_surface_implicit(&surface, implicit, patch.as_slice(), SAMPLES)?;
+        Ok(ExperimentOutcome {
+            nodes,
+            surface,
+            error,
+        })
+    }
+}
+
+/// A 5 x 9 net with closed `v` lines.
+fn net(start: Point3, directions: NetDirections, u_step: f64) -> NetSpec {
+    let mut spec = NetSpec::new(start, directions, (5, 9), (u_step, TAU / 8.0));
+    spec.closed_v = true;
+    spec
+}
+
+/// The length of the hyperbola `r = sqrt(1 + z^2)` from `z = -0.5` to `0.5` (Simpson's rule,
+/// 1000 intervals: exact to far below the tracing accuracy).
+fn meridian_length() -> f64 {
+    let f = |z: f64| (1.0 + z * z / (1.0 + z * z)).sqrt();
+    let n = 1000;
+    let h = 1.0 / n as f64;
+    let inner: f64 = (1..n)
+        .map(|k| f(-0.5 + k as f64 * h) * if k % 2 == 1 { 4.0 } else { 2.0 })
+        .sum();
+    (f(-0.5) + f(0.5) + inner) * h / 3.0
+}
+
+/// The seven rows of the seed's table: cylinder (lines of curvature; both axes turned by 30°
+/// and 45°; the generator turned by 30° and 45°) and hyperboloid (lines of curvature; the
+/// meridian turned by 68°), with the paper's errors.
+pub fn seed_experiments() -> Vec<SeedExperiment> {
+    let cylinder_start = Point3::new([1.0, 0.0, 0.0]);
+    let hyperboloid_start = Point3::new([1.25f64.sqrt(), 0.0, -0.5]);
+    let meridian_step = meridian_length() / 4.0;
+    let turned_planes = |deg: f64| {
+        let a = deg.to_radians();
+        NetDirections::PlaneSections {
+            plane_normal: Point3::new([0.0, -a.sin(), a.cos()]),
+        }
+    };
+    let generator = |deg: f64| NetDirections::TurnedU {
+        angle: deg.to_radians(),
+    };
+    let stretched = |step: f64, deg: f64| step / deg.to_radians().cos();
+    let row = |label, paper, surface, net| SeedExperiment {
+        label,
+        paper_error: Some(paper),
+        surface,
+        net,
+    };
+    use SeedSurface::{Cylinder as C, Hyperboloid as H};
+    vec![
+        row(
+            "cylinder, lines of curvature",
+            0.011,
+            C,
+            net(cylinder_start, NetDirections::Principal, 0.5),
+        ),
+        row(
+            "cylinder, both axes turned 30 deg",
+            0.089,
+            C,
+            net(cylinder_start, turned_planes(30.0), 0.5),
+        ),
+        row(
+            "cylinder, both axes turned 45 deg",
+            0.267,
+            C,
+            net(cylinder_start, turned_planes(45.0), 0.5),
+        ),
+        row(
+            "cylinder, generator turned 30 deg",
+            0.086,
+            C,
+            net(cylinder_start, generator(30.0), stretched(0.5, 30.0)),
+        ),
+        row(
+            "cylinder, generator turned 45 deg",
+            0.09,
+            C,
+            net(cylinder_start, generator(45.0), stretched(0.5, 45.0)),
+        ),
+        row(
+            "hyperboloid, lines of curvature",
+            0.03,
+            H,
+            net(hyperboloid_start, NetDirections::Principal, meridian_step),
+        ),
+        row(
+            "hyperboloid, meridian turned 68 deg",
+            0.078,
+            H,
+            net(
+                hyperboloid_start,
+                generator(68.0),
+                stretched(meridian_step, 68.0),
+            ),
+        ),
+    ]
+}
+
+/// A frame not in the paper: the cylinder's net of constant-angle helices, both families
+/// turned by 30° from the lines of curvature, with the principal frame's node steps (open
+/// lines: helices do not close).
+pub fn helix_experiment() -> SeedExperiment {
+    let degrees: f64 = 30.0;
+    SeedExperiment {
+        label: "cylinder, helices turned 30 deg",
+        paper_error: None,
+        surface: SeedSurface::Cylinder,
+        net: NetSpec::new(
+            Point3::new([1.0, 0.0, 0.0]),
+            NetDirections::Turned {
+                angle: degrees.to_radians(),
+            },
+            (5, 9),
+            (0.5, TAU / 8.0),
+        ),
+    }
+}

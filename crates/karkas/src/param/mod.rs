@@ -1,0 +1,46 @@
+//! Parameterization and cubic / bicubic spline interpolation (seed 004: Kuznetsov, Filatov,
+//! "Parametrization of surfaces by the continuation method"; METHODS.md §5).
+//!
+//! Points measured on a curve or a surface become a smooth curve or surface only after
+//! parameters are chosen, and the seed shows that the choice decides the error. This module
+//! has the seed's pipeline for point data:
+//!
+//! - [`curve_parameters`], [`grid_parameters`]: uniform, chord-length (along two grid lines
+//!   through an origin node, the seed's rule, or averaged over all lines) and centripetal
+//!   parameters, `O(n)` / `O(N M)`;
+//! - [`CubicSpline`]: 1-D cubic interpolating splines on any increasing knots with
+//!   not-a-knot (the seed's (3.10)–(3.12)), natural, clamped or periodic ends; one `O(n)`
+//!   tridiagonal solve;
+//! - [`BicubicSurface`]: the bicubic interpolant of a grid in Hermite form (3.6)–(3.9), its
+//!   node derivatives found by the seed's three steps of `2N + M` spline solves, `O(N M)`;
+//!   not-a-knot ends, periodic in a closed direction.
+//!
+//! Implicit surfaces and their curvature-line grids are in [`crate::implicit`], the Hausdorff
+//! distance in [`crate::measure`]; [`experiments`] puts them together into the seed's table
+//! of errors.
+//!
+//! ```
+//! use karkas::param::{CubicSpline, CurveParameterization, SplineEnds};
+//! use karkas::{Curve, Point2};
+//! let pts = [Point2::new([0.0, 0.0]), Point2::new([1.0, 2.0]), Point2::new([3.0, 3.0]),
+//!            Point2::new([4.0, 1.0])];
+//! let spline = CubicSpline::through(&pts, CurveParameterization::ChordLength,
+//!                                   SplineEnds::NotAKnot).unwrap();
+//! // It passes through every point at its chord-length parameter.
+//! let t = spline.knots()[2];
+//! assert!(spline.eval(t).distance(pts[2]) < 1e-14);
+//! ```
+
+mod bicubic;
+pub mod experiments;
+mod knots;
+mod parameterization;
+mod slopes;
+mod spline;
+
+pub use bicubic::BicubicSurface;
+pub use parameterization::{
+    curve_parameters, grid_parameters, CurveParameterization, GridParameterization,
+};
+pub use slopes::SplineEnds;
+pub use spline::CubicSpline;
