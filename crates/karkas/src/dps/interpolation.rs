@@ -161,7 +161,7 @@ impl InterpolationPlan {
             }
             // Exactly real, as the inverse transform requires (they are, up to rounding).
             self.spectrum[0].im = 0.0;
-            if m % 2 == 0 {
+            if m.is_multiple_of(2) {
                 self.spectrum[m / 2].im = 0.0;
             }
             self.inverse
