@@ -10,7 +10,8 @@
 //! - [`solve`]: the banded linear solvers the methods need;
 //! - [`ll`]: the LL-approximation of curves and surfaces (Aulchenko, Latypov, Nikulichev):
 //!   oscillation-free, monotone, `C^L` curves and surfaces on a uniform parameter grid, and
-//!   their interpolating variant.
+//!   their interpolating variant, and the paper's surface variation method;
+//! - [`section`]: plane sections and isolines of any [`Surface`].
 //!
 //! ```
 //! use karkas::{ll::LlCurve, Curve, Point};
@@ -25,9 +26,11 @@
 pub mod core;
 mod error;
 pub mod ll;
+pub mod section;
 pub mod solve;
 
 pub use crate::core::{
-    Curve, Grid, Interval, PiecewiseCurve, PiecewiseSurface, Point, Point2, Point3, Side, Surface,
+    Curve, Grid, Interval, ParameterLine, PiecewiseCurve, PiecewiseSurface, Point, Point2, Point3,
+    Side, Surface,
 };
 pub use error::{Error, Result};
