@@ -29,6 +29,10 @@ enum Command {
     /// Build a surface from a grid of points.
     #[command(subcommand)]
     Surface(cmd::SurfaceCommand),
+    /// Cut a surface built from a grid by planes: sections and isolines.
+    Section(cmd::section::SectionArgs),
+    /// Vary one coordinate of a grid through new row sums, column sums and total.
+    Vary(cmd::vary::VaryArgs),
     /// Reproduce the examples of the papers on built-in data.
     Demo(demo::DemoArgs),
 }
@@ -46,7 +50,14 @@ fn main() -> ExitCode {
         Err(e) => {
             // clap's first line says what is wrong; keep every error to one line.
             let text = e.to_string();
-            let first = text.lines().next().unwrap_or("bad arguments");
+            let mut lines = text.lines().map(str::trim).filter(|l| !l.is_empty());
+            let mut first = lines.next().unwrap_or("bad arguments").to_owned();
+            // "the following required arguments were not provided:" names them below.
+            if first.ends_with(':') {
+                if let Some(next) = lines.next() {
+                    first = format!("{first} {next}");
+                }
+            }
             eprintln!("karkas: {first} (see karkas --help)");
             return ExitCode::from(2);
         }
@@ -54,6 +65,8 @@ fn main() -> ExitCode {
     let result = match cli.command {
         Command::Curve(c) => c.run(),
         Command::Surface(c) => c.run(),
+        Command::Section(args) => cmd::section::run(&args),
+        Command::Vary(args) => cmd::vary::run(&args),
         Command::Demo(args) => demo::run(&args),
     };
     match result {

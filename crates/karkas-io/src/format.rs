@@ -16,11 +16,18 @@ pub enum OutputFormat {
     Svg,
     /// A Wavefront triangle mesh (`.obj`).
     Obj,
+    /// A picture in pixels (`.png`).
+    Png,
 }
 
 impl OutputFormat {
     /// All formats, in the order they are listed in messages.
-    const ALL: [OutputFormat; 3] = [OutputFormat::Csv, OutputFormat::Svg, OutputFormat::Obj];
+    const ALL: [OutputFormat; 4] = [
+        OutputFormat::Csv,
+        OutputFormat::Svg,
+        OutputFormat::Obj,
+        OutputFormat::Png,
+    ];
 
     /// The format named by the extension of `path` (case-insensitive), if it is one of
     /// `allowed`; otherwise [`IoError::UnknownExtension`] listing the allowed extensions.
@@ -36,32 +43,47 @@ impl OutputFormat {
             })
     }
 
-    /// The file extension, without the dot: `"csv"`, `"svg"` or `"obj"`.
+    /// The file extension, without the dot: `"csv"`, `"svg"`, `"obj"` or `"png"`.
     pub fn extension(self) -> &'static str {
         match self {
             OutputFormat::Csv => "csv",
             OutputFormat::Svg => "svg",
             OutputFormat::Obj => "obj",
+            OutputFormat::Png => "png",
         }
     }
 }
 
 /// The extensions of `allowed` as a message fragment like `".csv, .svg"`.
 ///
-/// A `&'static str` (so that [`IoError`] needs no allocation for it): with three formats there
-/// are only eight sets, listed here in the order of [`OutputFormat::ALL`].
+/// A `&'static str` (so that [`IoError`] needs no allocation for it): with four formats there
+/// are sixteen sets, listed here by the bit mask of [`OutputFormat::ALL`] (bit 0 `.csv`, bit 1
+/// `.svg`, bit 2 `.obj`, bit 3 `.png`).
 fn allowed_list(allowed: &[OutputFormat]) -> &'static str {
-    let [csv, svg, obj] = OutputFormat::ALL.map(|f| allowed.contains(&f));
-    match (csv, svg, obj) {
-        (false, false, false) => "(none)",
-        (true, false, false) => ".csv",
-        (false, true, false) => ".svg",
-        (false, false, true) => ".obj",
-        (true, true, false) => ".csv, .svg",
-        (true, false, true) => ".csv, .obj",
-        (false, true, true) => ".svg, .obj",
-        (true, true, true) => ".csv, .svg, .obj",
-    }
+    const LISTS: [&str; 16] = [
+        "(none)",
+        ".csv",
+        ".svg",
+        ".csv, .svg",
+        ".obj",
+        ".csv, .obj",
+        ".svg, .obj",
+        ".csv, .svg, .obj",
+        ".png",
+        ".csv, .png",
+        ".svg, .png",
+        ".csv, .svg, .png",
+        ".obj, .png",
+        ".csv, .obj, .png",
+        ".svg, .obj, .png",
+        ".csv, .svg, .obj, .png",
+    ];
+    let mask = OutputFormat::ALL
+        .iter()
+        .enumerate()
+        .filter(|(_, f)| allowed.contains(f))
+        .fold(0, |m, (bit, _)| m | (1 << bit));
+    LISTS[mask]
 }
 
 #[cfg(test)]
@@ -87,6 +109,8 @@ mod tests {
         );
         assert!(OutputFormat::from_path(p("noext"), &[Csv, Svg, Obj]).is_err());
         assert_eq!(allowed_list(&[Obj, Csv, Svg]), ".csv, .svg, .obj");
+        assert_eq!(allowed_list(&[Png, Svg, Csv]), ".csv, .svg, .png");
+        assert_eq!(allowed_list(&[]), "(none)");
         for f in OutputFormat::ALL {
             assert_eq!(allowed_list(&[f]), format!(".{}", f.extension()));
         }

@@ -6,11 +6,14 @@
 //! Reading:
 //! - [`points`]: an ordered list of curve points from CSV, whitespace-separated columns or an
 //!   airfoil `.dat` ([`airfoil`]), chosen by content;
-//! - [`grid`]: a surface frame as CSV rows `i,j,x,y,z`.
+//! - [`grid`]: a surface frame as CSV rows `i,j,x,y,z`;
+//! - [`mask`]: a set of grid cells as CSV rows `i,j` (e.g. the entries a variation keeps).
 //!
 //! Writing (always atomically, see [`write::write_atomic`]):
-//! - [`write`](mod@write): sampled curves and surfaces as CSV;
-//! - [`svg`]: a picture of a planar curve over its input points;
+//! - [`write`](mod@write): sampled curves and surfaces, grids and sections as CSV;
+//! - [`svg`]: a picture of a planar curve over its input points, or of several polylines;
+//! - [`scene`]: a shaded surface in space with curves on it, hidden parts removed;
+//! - [`png`]: any of these pictures rendered to PNG (with a compiled-in font);
 //! - [`obj`]: a sampled surface as a Wavefront OBJ triangle mesh.
 //!
 //! Every error is an [`IoError`] naming the file and, where there is one, the 1-based line or
@@ -20,8 +23,11 @@ pub mod airfoil;
 pub mod error;
 pub mod format;
 pub mod grid;
+pub mod mask;
 pub mod obj;
+pub mod png;
 pub mod points;
+pub mod scene;
 pub mod svg;
 pub mod write;
 

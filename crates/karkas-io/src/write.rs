@@ -11,7 +11,7 @@ use std::fmt::Write as _;
 use std::io::{self, BufWriter, Write};
 use std::path::Path;
 
-use karkas::{Point, Point3};
+use karkas::{Grid, Point, Point3};
 
 use crate::error::IoError;
 
@@ -92,6 +92,41 @@ pub fn write_surface_csv(
         let parameters = us.iter().flat_map(|&u| vs.iter().map(move |&v| (u, v)));
         for ((u, v), p) in parameters.zip(points) {
             csv.row([u, v].into_iter().chain(p.0))?;
+        }
+        csv.finish()
+    })
+}
+
+/// Writes a grid of points as CSV with header `i,j,x,y,z`, row-major (row index `i`, column
+/// index `j`, from 0): the format [`read_grid`](crate::grid::read_grid) reads.
+pub fn write_grid_csv(path: &Path, grid: &Grid<Point3>) -> Result<(), IoError> {
+    let header = ["i", "j", "x", "y", "z"].map(str::to_owned);
+    write_atomic(path, |out| {
+        let mut csv = CsvRows::new(out, &header)?;
+        for i in 0..grid.rows() {
+            for (j, p) in grid.row(i).iter().enumerate() {
+                csv.row([i as f64, j as f64].into_iter().chain(p.0))?;
+            }
+        }
+        csv.finish()
+    })
+}
+
+/// Writes polylines (the pieces of sections) as CSV with header `section,t,x,y,z`: one block
+/// of rows per polyline, numbered from 0 in the order given; `t` is the length along the
+/// polyline from its first point. A closed polyline should repeat its first point at the end.
+pub fn write_sections_csv(path: &Path, lines: &[Vec<Point3>]) -> Result<(), IoError> {
+    let header = ["section", "t", "x", "y", "z"].map(str::to_owned);
+    write_atomic(path, |out| {
+        let mut csv = CsvRows::new(out, &header)?;
+        for (k, line) in lines.iter().enumerate() {
+            let mut t = 0.0;
+            for (n, p) in line.iter().enumerate() {
+                if n > 0 {
+                    t += p.distance(line[n - 1]);
+                }
+                csv.row([k as f64, t].into_iter().chain(p.0))?;
+            }
         }
         csv.finish()
     })

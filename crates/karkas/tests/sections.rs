@@ -3,8 +3,11 @@
 //! misses, termination at saddles and tangencies, and the fast path against the traced one.
 
 use karkas::ll::LlSurface;
-use karkas::section::{plane_section, Plane, Section, SectionOptions, SectionWarning, Sectioner};
+use karkas::section::{
+    plane_section, LevelFunction, Plane, Section, SectionOptions, SectionWarning, Sectioner,
+};
 use karkas::{Grid, Interval, Point3, Surface};
+use proptest::prelude::*;
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
 /// Every point of every curve lies on the plane (to `1e-9`) and is the surface's point at
@@ -379,5 +382,71 @@ fn bad_options_are_errors() {
     ];
     for options in bad {
         assert!(Sectioner::new(&sphere, &options).is_err(), "{options:?}");
+    }
+}
+
+/// A plane that does not bound itself over boxes: every block of the grid is searched.
+struct Unbounded(Plane<3>);
+
+impl LevelFunction<3> for Unbounded {
+    fn value(&self, p: Point3) -> f64 {
+        self.0.value(p)
+    }
+    fn gradient(&self, p: Point3) -> Point3 {
+        self.0.gradient(p)
+    }
+}
+
+#[test]
+fn skipping_blocks_the_plane_cannot_reach_changes_nothing() {
+    let torus = torus();
+    let sphere = sphere_like();
+    let planes = [
+        plane([0.3, -0.2, 1.0], 0.25),
+        plane([1.0, 0.0, 0.1], 0.5),
+        plane([0.0, 1.0, 0.2], -0.8),
+    ];
+    for cells in [(64, 64), (13, 29)] {
+        let options = SectionOptions {
+            cells,
+            ..SectionOptions::default()
+        };
+        for sectioner in [
+            Sectioner::new(&torus, &options).unwrap(),
+            Sectioner::new(&sphere, &options).unwrap(),
+        ] {
+            for p in &planes {
+                let culled = sectioner.level_set(p);
+                let full = sectioner.level_set(&Unbounded(*p));
+                assert!(!full.curves.is_empty());
+                assert_eq!(culled, full);
+            }
+        }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(32))]
+
+    /// Any plane through the sphere-like surface: points on the plane and on the surface,
+    /// and every open piece ends on the open border (u at its ends; v is closed).
+    #[test]
+    fn any_plane_gives_valid_pieces(
+        nx in -1.0..1.0f64,
+        ny in -1.0..1.0f64,
+        nz in -1.0..1.0f64,
+        c in -0.9..0.9f64,
+    ) {
+        prop_assume!(nx.abs() + ny.abs() + nz.abs() > 0.1);
+        let sphere = sphere_like();
+        let p = plane([nx, ny, nz], c);
+        let section = plane_section(&sphere, &p, &SectionOptions::default()).unwrap();
+        assert_on_plane_and_surface(&sphere, &p, &section);
+        let d = sphere.domain_u();
+        for curve in section.curves.iter().filter(|c| !c.closed) {
+            for &(u, _) in [curve.params[0], curve.params[curve.params.len() - 1]].iter() {
+                prop_assert!((u - d.start).abs() < 1e-9 || (d.end - u).abs() < 1e-9);
+            }
+        }
     }
 }

@@ -6,6 +6,7 @@
 use karkas::ll::{vary, FixedEntries, SumTargets, VariationOptions};
 use karkas::{Error, Grid};
 use nalgebra::{DMatrix, DVector};
+use proptest::prelude::*;
 
 /// A small xorshift generator: fixed seeds, no dependency.
 struct Rng(u64);
@@ -332,4 +333,32 @@ fn scaling_with_the_total_is_the_papers_normalization() {
         columns: vec![1.0, 1.0],
     };
     assert!(vary(&zero, &free, &t, &options).is_err());
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(24))]
+
+    /// Reachable sums are met and fixed entries kept, for any shape and mask.
+    #[test]
+    fn reachable_sums_are_always_met(
+        n in 1usize..7,
+        m in 1usize..7,
+        share in 0.0..0.8f64,
+        seed in 1u64..u64::MAX,
+    ) {
+        let mut rng = Rng(seed);
+        let (matrix, fixed, targets) = random_case(&mut rng, n, m, share);
+        let varied = vary(&matrix, &fixed, &targets, &VariationOptions::default()).unwrap();
+        for (got, want) in row_sums(&varied).iter().zip(&targets.rows) {
+            prop_assert!((got - want).abs() <= 1e-12);
+        }
+        for (got, want) in column_sums(&varied).iter().zip(&targets.columns) {
+            prop_assert!((got - want).abs() <= 1e-12);
+        }
+        for (k, f) in fixed.as_slice().iter().enumerate() {
+            if *f {
+                prop_assert_eq!(varied.as_slice()[k], matrix.as_slice()[k]);
+            }
+        }
+    }
 }

@@ -2,7 +2,9 @@
 
 mod curve_ll;
 mod output;
+pub mod section;
 mod surface_ll;
+pub mod vary;
 
 use clap::Subcommand;
 

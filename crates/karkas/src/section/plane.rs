@@ -13,6 +13,14 @@ pub trait LevelFunction<const D: usize> {
 
     /// Its gradient at `p`.
     fn gradient(&self, p: Point<D>) -> Point<D>;
+
+    /// Bounds `(lowest, highest)` of the function over the box `lo <= p <= hi`, if known:
+    /// regions of the surface whose bounding box cannot hold a zero are then skipped. `None`
+    /// (the default) when not known.
+    fn range_over_box(&self, lo: Point<D>, hi: Point<D>) -> Option<(f64, f64)> {
+        let _ = (lo, hi);
+        None
+    }
 }
 
 /// The (hyper)plane `n . p = c` in R^D, stored with a unit normal so that
@@ -81,6 +89,16 @@ impl<const D: usize> LevelFunction<D> for Plane<D> {
     fn gradient(&self, _p: Point<D>) -> Point<D> {
         self.normal
     }
+
+    /// Exact: the value at the centre plus or minus `sum |n_k| h_k` (the half-sizes `h`).
+    fn range_over_box(&self, lo: Point<D>, hi: Point<D>) -> Option<(f64, f64)> {
+        let centre = lo.lerp(hi, 0.5);
+        let reach: f64 = (0..D)
+            .map(|k| self.normal[k].abs() * 0.5 * (hi[k] - lo[k]))
+            .sum();
+        let value = self.value(centre);
+        Some((value - reach, value + reach))
+    }
 }
 
 #[cfg(test)]
@@ -103,5 +121,11 @@ mod tests {
                 .value(Point([5.0, 1.0, 9.0])),
             3.0
         );
+        // Over the box [0,1]^3 the plane 3y + 4z = 10 (distance 2 from 0) ranges over the
+        // values at the corners (0,0,0) and (1,1,1): -2 and -0.6.
+        let (lo, hi) = p
+            .range_over_box(Point([0.0, 0.0, 0.0]), Point([1.0, 1.0, 1.0]))
+            .unwrap();
+        assert!((lo + 2.0).abs() < 1e-15 && (hi + 0.6).abs() < 1e-15);
     }
 }

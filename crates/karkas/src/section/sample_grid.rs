@@ -120,6 +120,16 @@ impl Axis {
     }
 }
 
+/// Cells per side of a block: the unit in which regions a plane cannot reach are skipped.
+pub(crate) const BLOCK: usize = 8;
+
+/// The bounding box of the samples of one block of `BLOCK x BLOCK` cells.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct BlockBox<const D: usize> {
+    pub(crate) lo: Point<D>,
+    pub(crate) hi: Point<D>,
+}
+
 /// The surface sampled at the grid's vertices, once, for every level function to be cut.
 #[derive(Clone, Debug)]
 pub(crate) struct SampleGrid<const D: usize> {
@@ -131,6 +141,9 @@ pub(crate) struct SampleGrid<const D: usize> {
     pub(crate) scale: f64,
     /// The diagonal of the samples' bounding box.
     pub(crate) diagonal: f64,
+    /// Bounding boxes of the blocks, `blocks_u x blocks_v`, `u` outer; a box holding a
+    /// non-finite sample is infinite.
+    pub(crate) blocks: Vec<BlockBox<D>>,
 }
 
 impl<const D: usize> SampleGrid<D> {
@@ -156,13 +169,79 @@ impl<const D: usize> SampleGrid<D> {
         } else {
             0.0
         };
-        SampleGrid {
+        let mut grid = SampleGrid {
             u,
             v,
             points,
             scale,
             diagonal,
+            blocks: Vec::new(),
+        };
+        grid.blocks = grid.block_boxes();
+        grid
+    }
+
+    /// Blocks along `u` and `v`.
+    pub(crate) fn block_counts(&self) -> (usize, usize) {
+        (
+            self.u.cells().div_ceil(BLOCK),
+            self.v.cells().div_ceil(BLOCK),
+        )
+    }
+
+    /// The grid lines (vertices) along `axis` owned by block `k`: every vertex belongs to
+    /// exactly one block, the last block taking the far border of an open direction.
+    pub(crate) fn owned_vertices(axis: &Axis, k: usize) -> core::ops::Range<usize> {
+        let blocks = axis.cells().div_ceil(BLOCK);
+        let start = k * BLOCK;
+        let end = if k + 1 == blocks {
+            axis.vertices()
+        } else {
+            start + BLOCK
+        };
+        start..end
+    }
+
+    /// The cells along `axis` of block `k`.
+    pub(crate) fn block_cells(axis: &Axis, k: usize) -> core::ops::Range<usize> {
+        k * BLOCK..((k + 1) * BLOCK).min(axis.cells())
+    }
+
+    /// The bounding box of each block's samples, its far border lines included (so that it
+    /// holds both ends of every edge the block owns).
+    fn block_boxes(&self) -> Vec<BlockBox<D>> {
+        let (bu, bv) = self.block_counts();
+        let nv = self.v.vertices();
+        let mut boxes = Vec::with_capacity(bu * bv);
+        for bi in 0..bu {
+            for bj in 0..bv {
+                let mut lo = Point([f64::INFINITY; D]);
+                let mut hi = Point([f64::NEG_INFINITY; D]);
+                for da in 0..=BLOCK {
+                    let Some(a) = self.u.vertex((bi * BLOCK + da) as i64) else {
+                        continue;
+                    };
+                    for db in 0..=BLOCK {
+                        let Some(b) = self.v.vertex((bj * BLOCK + db) as i64) else {
+                            continue;
+                        };
+                        let p = self.points[a * nv + b];
+                        for k in 0..D {
+                            // NaN makes the box infinite: never skipped on a guess.
+                            if p[k].is_nan() {
+                                lo[k] = f64::NEG_INFINITY;
+                                hi[k] = f64::INFINITY;
+                            } else {
+                                lo[k] = lo[k].min(p[k]);
+                                hi[k] = hi[k].max(p[k]);
+                            }
+                        }
+                    }
+                }
+                boxes.push(BlockBox { lo, hi });
+            }
         }
+        boxes
     }
 
     /// The surface parameters at cell coordinates `s`.

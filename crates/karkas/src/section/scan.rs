@@ -40,13 +40,14 @@ struct Visited<const D: usize> {
 }
 
 /// Traces every piece of the level set of `tracer.level`.
+///
+/// The crossed edges are found block by block; a block whose bounding box the level function
+/// cannot vanish in (when it can tell, [`LevelFunction::range_over_box`]) is skipped whole.
 pub(crate) fn trace_all<S: Surface<D> + ?Sized, F: LevelFunction<D>, const D: usize>(
     tracer: &Tracer<'_, S, F, D>,
 ) -> (Vec<SectionCurve<D>>, Vec<SectionWarning>) {
     let grid = tracer.grid;
-    let values: Vec<f64> = grid.points.iter().map(|&p| tracer.level.value(p)).collect();
     let (nu, nv) = (grid.u.vertices(), grid.v.vertices());
-    let value = |a: usize, b: usize| values[a * nv + b];
     let u_edges = grid.u.cells() * nv;
     let mut visited = Visited {
         edges: vec![false; u_edges + nu * grid.v.cells()],
@@ -62,32 +63,8 @@ pub(crate) fn trace_all<S: Surface<D> + ?Sized, F: LevelFunction<D>, const D: us
     let near = 4.0 * tracer.tolerance + 1e-9 * grid.scale;
     let mut curves = Vec::new();
     let mut warnings = Vec::new();
-    let edges = (0..grid.u.cells())
-        .flat_map(|a| {
-            (0..nv).map(move |b| Edge {
-                a,
-                b,
-                along_v: false,
-            })
-        })
-        .chain((0..nu).flat_map(|a| {
-            (0..grid.v.cells()).map(move |b| Edge {
-                a,
-                b,
-                along_v: true,
-            })
-        }));
-    for edge in edges {
-        let (a1, b1) = if edge.along_v {
-            (edge.a, (edge.b + 1) % nv)
-        } else {
-            ((edge.a + 1) % nu, edge.b)
-        };
-        let (g0, g1) = (value(edge.a, edge.b), value(a1, b1));
-        // NaN is no sign change; a zero counts as positive.
-        if !(g0.is_finite() && g1.is_finite()) || (g0 < 0.0) == (g1 < 0.0) {
-            continue;
-        }
+    let crossings = crossed_edges(tracer);
+    for (edge, g0, g1) in crossings {
         if visited.edges[edge_index(edge)] {
             continue;
         }
@@ -108,6 +85,74 @@ pub(crate) fn trace_all<S: Surface<D> + ?Sized, F: LevelFunction<D>, const D: us
         }
     }
     (curves, warnings)
+}
+
+/// The grid edges whose ends differ in sign (NaN is no sign change; zero counts as positive),
+/// with the values at their ends.
+fn crossed_edges<S: Surface<D> + ?Sized, F: LevelFunction<D>, const D: usize>(
+    tracer: &Tracer<'_, S, F, D>,
+) -> Vec<(Edge, f64, f64)> {
+    let grid = tracer.grid;
+    let level = tracer.level;
+    let (nu, nv) = (grid.u.vertices(), grid.v.vertices());
+    let value = |a: usize, b: usize| level.value(grid.points[a * nv + b]);
+    let crossed = |g0: f64, g1: f64| g0.is_finite() && g1.is_finite() && (g0 < 0.0) != (g1 < 0.0);
+    let (blocks_u, blocks_v) = grid.block_counts();
+    let mut crossings = Vec::new();
+    for bi in 0..blocks_u {
+        for bj in 0..blocks_v {
+            let block = grid.blocks[bi * blocks_v + bj];
+            if let Some((lowest, highest)) = level.range_over_box(block.lo, block.hi) {
+                if lowest >= 0.0 || highest < 0.0 {
+                    continue;
+                }
+            }
+            let (cells_u, cells_v) = (
+                SampleGrid::<D>::block_cells(&grid.u, bi),
+                SampleGrid::<D>::block_cells(&grid.v, bj),
+            );
+            let (lines_u, lines_v) = (
+                SampleGrid::<D>::owned_vertices(&grid.u, bi),
+                SampleGrid::<D>::owned_vertices(&grid.v, bj),
+            );
+            // Edges along u start on the block's cells in u and its lines in v.
+            for a in cells_u.clone() {
+                let a1 = if a + 1 == nu { 0 } else { a + 1 };
+                for b in lines_v.clone() {
+                    let (g0, g1) = (value(a, b), value(a1, b));
+                    if crossed(g0, g1) {
+                        crossings.push((
+                            Edge {
+                                a,
+                                b,
+                                along_v: false,
+                            },
+                            g0,
+                            g1,
+                        ));
+                    }
+                }
+            }
+            for a in lines_u {
+                for b in cells_v.clone() {
+                    let b1 = if b + 1 == nv { 0 } else { b + 1 };
+                    let (g0, g1) = (value(a, b), value(a, b1));
+                    if crossed(g0, g1) {
+                        crossings.push((
+                            Edge {
+                                a,
+                                b,
+                                along_v: true,
+                            },
+                            g0,
+                            g1,
+                        ));
+                    }
+                }
+            }
+        }
+    }
+    crossings
 }
 
 /// Traces the piece through `seed` both ways: forward until it closes or ends, then backward.

@@ -136,13 +136,14 @@ impl<'s, S: Surface<D> + ?Sized, const D: usize> Sectioner<'s, S, D> {
 
     /// The traced curves where `level` vanishes on the surface (never the fast path).
     pub fn level_set<F: LevelFunction<D>>(&self, level: &F) -> Section<D> {
-        // The size of the level function's values, for Newton's stopping test.
+        // The size of the values, for Newton's stopping test: rounding in `f(p)` is relative
+        // to `|f(p)| + |grad f| |p|`. Only its order of magnitude matters: every 16th vertex.
         let value_scale = self
             .grid
             .points
             .iter()
-            .filter(|p| p.is_finite())
-            .map(|&p| level.value(p).abs() + level.gradient(p).norm() * p.max_abs())
+            .step_by(16)
+            .map(|&p| level.value(p).abs() + level.gradient(p).norm() * self.grid.scale)
             .filter(|s| s.is_finite())
             .fold(f64::MIN_POSITIVE, f64::max);
         let tracer = Tracer {
