@@ -173,8 +173,8 @@ fn aircraft(out: &Path) -> Result<Vec<Finding>> {
     surface.sample_grid_into(&mut us, &mut vs, &mut mesh);
     write_surface_obj(&out.join("aircraft-ll5.obj"), nu, nv, &mesh)?;
     let scene = Scene {
-        title: "Seed 000: LL surface, L = 5: 15 sections x = const and 11 sections y = const, \
-                hidden lines removed",
+        title: "Seed 000: LL surface, L = 5, of the aircraft-like body (right half): \
+                15 sections x = const, 11 sections y = const",
         mesh: SceneMesh {
             rows: nu,
             cols: nv,
