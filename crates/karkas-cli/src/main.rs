@@ -31,6 +31,10 @@ enum Command {
     Surface(cmd::SurfaceCommand),
     /// Two-sided Hausdorff distance between point sets or a point set and F(x, y, z) = 0.
     Hausdorff(cmd::hausdorff::HausdorffArgs),
+    /// Cut a surface built from a grid by planes: sections and isolines.
+    Section(cmd::section::SectionArgs),
+    /// Vary one coordinate of a grid through new row sums, column sums and total.
+    Vary(cmd::vary::VaryArgs),
     /// Reproduce the examples of the papers on built-in data.
     Demo(demo::DemoArgs),
 }
@@ -63,6 +67,8 @@ fn main() -> ExitCode {
         Command::Curve(c) => c.run(),
         Command::Surface(c) => c.run(),
         Command::Hausdorff(args) => cmd::hausdorff::run(&args),
+        Command::Section(args) => cmd::section::run(&args),
+        Command::Vary(args) => cmd::vary::run(&args),
         Command::Demo(args) => demo::run(&args),
     };
     match result {

@@ -18,15 +18,18 @@ pub enum OutputFormat {
     Obj,
     /// A binary STL triangle mesh (`.stl`).
     Stl,
+    /// A picture in pixels (`.png`).
+    Png,
 }
 
 impl OutputFormat {
     /// All formats, in the order they are listed in messages.
-    const ALL: [OutputFormat; 4] = [
+    const ALL: [OutputFormat; 5] = [
         OutputFormat::Csv,
         OutputFormat::Svg,
         OutputFormat::Obj,
         OutputFormat::Stl,
+        OutputFormat::Png,
     ];
 
     /// The format named by the extension of `path` (case-insensitive), if it is one of
@@ -43,13 +46,14 @@ impl OutputFormat {
             })
     }
 
-    /// The file extension, without the dot: `"csv"`, `"svg"`, `"obj"` or `"stl"`.
+    /// The file extension, without the dot: `"csv"`, `"svg"`, `"obj"`, `"stl"` or `"png"`.
     pub fn extension(self) -> &'static str {
         match self {
             OutputFormat::Csv => "csv",
             OutputFormat::Svg => "svg",
             OutputFormat::Obj => "obj",
             OutputFormat::Stl => "stl",
+            OutputFormat::Png => "png",
         }
     }
 }
@@ -93,6 +97,7 @@ mod tests {
         assert!(OutputFormat::from_path(p("noext"), &[Csv, Svg, Obj]).is_err());
         assert_eq!(allowed_list(&[Obj, Csv, Svg]), ".csv, .svg, .obj");
         assert_eq!(allowed_list(&[Stl, Csv, Obj]), ".csv, .obj, .stl");
+        assert_eq!(allowed_list(&[Png, Svg, Csv]), ".csv, .svg, .png");
         assert_eq!(allowed_list(&[]), "(none)");
         for f in OutputFormat::ALL {
             assert_eq!(allowed_list(&[f]), format!(".{}", f.extension()));

@@ -17,7 +17,6 @@ use karkas::{Grid, Point, Point3};
 
 use crate::error::{data_error, IoError, Location};
 use crate::lines::{csv_rows, is_number, parse_coordinate, read_text, strip_bom, Row};
-use crate::write::write_atomic;
 
 /// The names of a file of indexed points `a,b,x,y,z`, and how its errors name a cell.
 pub(crate) struct IndexedLayout {
@@ -212,20 +211,6 @@ impl GridColumns {
     }
 }
 
-/// Writes `grid` atomically as grid CSV (header `i,j,x,y,z`, rows in row-major order, numbers
-/// in shortest round-trip form), the format [`read_grid`] reads back bit for bit.
-pub fn write_grid_csv(path: &Path, grid: &Grid<Point3>) -> Result<(), IoError> {
-    write_atomic(path, |out| {
-        writeln!(out, "i,j,x,y,z")?;
-        for i in 0..grid.rows() {
-            for (j, p) in grid.row(i).iter().enumerate() {
-                writeln!(out, "{i},{j},{},{},{}", p[0], p[1], p[2])?;
-            }
-        }
-        Ok(())
-    })
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -254,7 +239,7 @@ mod tests {
         let grid = Grid::from_fn(2, 3, |i, j| {
             Point([0.1 * i as f64, 1.0 / 3.0 + j as f64, -2e-17])
         });
-        write_grid_csv(&path, &grid).unwrap();
+        crate::write::write_grid_csv(&path, &grid).unwrap();
         assert_eq!(read_grid(&path).unwrap(), grid);
         let text = std::fs::read_to_string(&path).unwrap();
         assert!(text.starts_with("i,j,x,y,z\n0,0,0,0.3333333333333333,-0.00000000000000002\n"));

@@ -8,15 +8,18 @@
 //!   airfoil `.dat` ([`airfoil`]), chosen by content;
 //! - [`grid`]: a surface frame as CSV rows `i,j,x,y,z`;
 //! - [`skeleton`]: the skeleton curves of a tube as CSV rows `i,q,x,y,z` (along) and
-//!   `j,p,x,y,z` (across).
-//! - [`pointset`]: a point set in space from OBJ vertices or CSV columns `x,y,z`.
+//!   `j,p,x,y,z` (across);
+//! - [`pointset`]: a point set in space from OBJ vertices or CSV columns `x,y,z`;
+//! - [`mask`]: a set of grid cells as CSV rows `i,j` (e.g. the entries a variation keeps).
 //!
 //! Writing (always atomically, see [`write::write_atomic`]):
-//! - [`write`](mod@write): sampled curves and surfaces, discrete curves and indexed grids of
-//!   points as CSV;
+//! - [`write`](mod@write): sampled curves and surfaces, discrete curves, grids, indexed grids
+//!   and sections as CSV;
 //! - [`svg`]: pictures of a planar curve over its input points, of a discrete curve, and of
 //!   wireframes;
-//! - [`scene`]: a shaded picture of a projected 3-D scene (painter's algorithm);
+//! - [`scene`]: a shaded surface in space with curves on it, hidden parts removed;
+//! - [`painter`]: a shaded picture of projected polygons and segments (painter's algorithm);
+//! - [`png`]: any of these pictures rendered to PNG (with a compiled-in font);
 //! - [`obj`]: a sampled surface as a Wavefront OBJ triangle mesh;
 //! - [`stl`]: a sampled surface as a binary STL triangle mesh.
 //!
@@ -27,7 +30,10 @@ pub mod airfoil;
 pub mod error;
 pub mod format;
 pub mod grid;
+pub mod mask;
 pub mod obj;
+pub mod painter;
+pub mod png;
 pub mod points;
 pub mod pointset;
 pub mod scene;

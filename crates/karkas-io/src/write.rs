@@ -139,6 +139,32 @@ pub fn write_indexed_grid_csv(
     })
 }
 
+/// Writes a grid of points as CSV with header `i,j,x,y,z`, row-major (row index `i`, column
+/// index `j`, from 0): the format [`read_grid`](crate::grid::read_grid) reads back bit for bit.
+pub fn write_grid_csv(path: &Path, grid: &Grid<Point3>) -> Result<(), IoError> {
+    write_indexed_grid_csv(path, ["i", "j"], grid)
+}
+
+/// Writes polylines (the pieces of sections) as CSV with header `section,t,x,y,z`: one block
+/// of rows per polyline, numbered from 0 in the order given; `t` is the length along the
+/// polyline from its first point. A closed polyline should repeat its first point at the end.
+pub fn write_sections_csv(path: &Path, lines: &[Vec<Point3>]) -> Result<(), IoError> {
+    let header = ["section", "t", "x", "y", "z"].map(str::to_owned);
+    write_atomic(path, |out| {
+        let mut csv = CsvRows::new(out, &header)?;
+        for (k, line) in lines.iter().enumerate() {
+            let mut t = 0.0;
+            for (n, p) in line.iter().enumerate() {
+                if n > 0 {
+                    t += p.distance(line[n - 1]);
+                }
+                csv.row([k as f64, t].into_iter().chain(p.0))?;
+            }
+        }
+        csv.finish()
+    })
+}
+
 /// `x, y, z` for up to three dimensions, `x1, x2, ...` beyond.
 fn coordinate_names(dim: usize) -> Vec<String> {
     if dim <= 3 {

@@ -3,9 +3,12 @@
 use std::io;
 use std::path::Path;
 
-use karkas::{Point, Point2, Point3};
+use karkas::{Grid, Point, Point2, Point3};
+use karkas_io::grid::read_grid;
 use karkas_io::points::{read_curve_points, CurvePoints};
-use karkas_io::write::{write_atomic, write_curve_csv, write_surface_csv};
+use karkas_io::write::{
+    write_atomic, write_curve_csv, write_grid_csv, write_sections_csv, write_surface_csv,
+};
 use karkas_io::IoError;
 
 /// Values whose decimal form is easy to get wrong.
@@ -136,4 +139,45 @@ fn existing_permissions_are_kept() {
     write_atomic(&path, |out| out.write_all(b"new")).unwrap();
     let mode = std::fs::metadata(&path).unwrap().permissions().mode() & 0o777;
     assert_eq!(mode, 0o640);
+}
+
+#[test]
+fn grid_csv_reads_back_bit_exact() {
+    let dir = tempfile::tempdir().unwrap();
+    let grid = Grid::from_fn(2, 4, |i, j| {
+        let a = AWKWARD[i * 4 + j];
+        Point([a, -a, (i + j) as f64])
+    });
+    let path = dir.path().join("g.csv");
+    write_grid_csv(&path, &grid).unwrap();
+    let text = std::fs::read_to_string(&path).unwrap();
+    assert!(
+        text.starts_with("i,j,x,y,z\n0,0,0.1,-0.1,0\n0,1,"),
+        "{text}"
+    );
+    let back = read_grid(&path).unwrap();
+    let bits = |g: &Grid<Point3>| -> Vec<[u64; 3]> {
+        g.as_slice().iter().map(|p| p.0.map(f64::to_bits)).collect()
+    };
+    assert_eq!(bits(&back), bits(&grid));
+}
+
+#[test]
+fn sections_csv_golden() {
+    let dir = tempfile::tempdir().unwrap();
+    let square = vec![
+        Point([0.0, 0.0, 1.0]),
+        Point([3.0, 0.0, 1.0]),
+        Point([3.0, 4.0, 1.0]),
+        Point([0.0, 0.0, 1.0]),
+    ];
+    let open = vec![Point([1.0, 2.0, 3.0]), Point([1.0, 2.0, 3.5])];
+    let path = dir.path().join("s.csv");
+    write_sections_csv(&path, &[square, open]).unwrap();
+    assert_eq!(
+        std::fs::read_to_string(&path).unwrap(),
+        "section,t,x,y,z\n0,0,0,0,1\n0,3,3,0,1\n0,7,3,4,1\n0,12,0,0,1\n1,0,1,2,3\n1,0.5,1,2,3.5\n"
+    );
+    write_sections_csv(&path, &[]).unwrap();
+    assert_eq!(std::fs::read_to_string(&path).unwrap(), "section,t,x,y,z\n");
 }

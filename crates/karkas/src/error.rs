@@ -214,6 +214,69 @@ pub enum Error {
         /// What went wrong.
         reason: &'static str,
     },
+    /// A plane that cannot be used: a zero or non-finite normal, or a non-finite offset
+    /// ([`Plane::new`](crate::section::Plane::new)).
+    #[error("invalid plane: {reason}")]
+    InvalidPlane {
+        /// What is wrong with it.
+        reason: &'static str,
+    },
+    /// An option value outside its allowed range
+    /// (e.g. [`Sectioner::new`](crate::section::Sectioner::new) with a negative tolerance).
+    #[error("option {name} = {value}: {reason}")]
+    InvalidOption {
+        /// The option's name.
+        name: &'static str,
+        /// The value given.
+        value: f64,
+        /// What the option needs.
+        reason: &'static str,
+    },
+    /// Prescribed row (or column) sums of a variation that the fixed entries make impossible:
+    /// a line with every entry fixed whose sum would have to change
+    /// ([`vary`](crate::ll::vary) with exact fixed entries).
+    #[error("{kind} {index} has every entry fixed: its sum {current} cannot become {wanted}")]
+    FixedLineSum {
+        /// `"row"` or `"column"`.
+        kind: &'static str,
+        /// The 0-based index of the row or column.
+        index: usize,
+        /// Its sum now (fixed entries only).
+        current: f64,
+        /// The sum asked for.
+        wanted: f64,
+    },
+    /// Prescribed sums of a variation that contradict each other: the row sums, the column
+    /// sums and the total do not add up ([`vary`](crate::ll::vary)).
+    #[error(
+        "inconsistent sums: the row sums add up to {rows_total} and the column sums to \
+         {columns_total}; they must be equal (the total)"
+    )]
+    InconsistentTotals {
+        /// Sum of the prescribed row sums.
+        rows_total: f64,
+        /// Sum of the prescribed column sums.
+        columns_total: f64,
+    },
+    /// Prescribed sums of a variation that the fixed entries make impossible: a block of rows
+    /// and columns is linked to the rest of the matrix by fixed entries only, so its rows' sums
+    /// and its columns' sums must change by the same amount ([`vary`](crate::ll::vary) with
+    /// exact fixed entries).
+    #[error(
+        "rows {rows:?} and columns {columns:?} share their free entries only among themselves: \
+         their sums must change by the same amount, but the rows change by {rows_change} and \
+         the columns by {columns_change}"
+    )]
+    InconsistentBlock {
+        /// The 0-based rows of the block.
+        rows: Vec<usize>,
+        /// The 0-based columns of the block.
+        columns: Vec<usize>,
+        /// How much the rows' sums change together.
+        rows_change: f64,
+        /// How much the columns' sums change together.
+        columns_change: f64,
+    },
 }
 
 /// `Result` with [`Error`].

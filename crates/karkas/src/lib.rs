@@ -10,9 +10,10 @@
 //! - [`solve`]: the banded linear solvers the methods need;
 //! - [`ll`]: the LL-approximation of curves and surfaces (Aulchenko, Latypov, Nikulichev):
 //!   oscillation-free, monotone, `C^L` curves and surfaces on a uniform parameter grid, and
-//!   their interpolating variant;
+//!   their interpolating variant, and the paper's surface variation method;
+//! - [`section`]: plane sections and isolines of any [`Surface`];
 //! - [`dps`]: discrete periodic splines with vector coefficients (Malozemov, Khorokhonov,
-//!   Chashnikov): closed discrete curves from poles or through nodes, and closed tubes.
+//!   Chashnikov): closed discrete curves from poles or through nodes, and closed tubes;
 //! - [`param`]: parameterizations, 1-D cubic splines and bicubic interpolation of grids
 //!   (Kuznetsov, Filatov);
 //! - [`implicit`]: implicit surfaces `F(x, y, z) = 0`, their principal curvatures, and node
@@ -36,9 +37,11 @@ pub mod implicit;
 pub mod ll;
 pub mod measure;
 pub mod param;
+pub mod section;
 pub mod solve;
 
 pub use crate::core::{
-    Curve, Grid, Interval, PiecewiseCurve, PiecewiseSurface, Point, Point2, Point3, Side, Surface,
+    Curve, Grid, Interval, ParameterLine, PiecewiseCurve, PiecewiseSurface, Point, Point2, Point3,
+    Side, Surface,
 };
 pub use error::{Error, Result};

@@ -4,10 +4,12 @@ mod curve_dps;
 mod curve_ll;
 pub mod hausdorff;
 mod output;
+pub mod section;
 mod surface_bicubic;
 mod surface_dps_tube;
 mod surface_implicit;
 mod surface_ll;
+pub mod vary;
 
 use clap::Subcommand;
 

@@ -5,7 +5,7 @@ use anyhow::{anyhow, bail, Result};
 use clap::Args;
 use karkas::implicit::{trace_net, ExpressionSurface, NetDirections, NetSpec};
 use karkas::Point3;
-use karkas_io::grid::write_grid_csv;
+use karkas_io::write::write_grid_csv;
 use karkas_io::OutputFormat;
 use std::path::PathBuf;
 

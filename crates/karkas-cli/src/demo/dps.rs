@@ -13,7 +13,7 @@ use anyhow::Result;
 use karkas::dps::{compatibility_residual, discrete_bspline, DiscreteSpline, TubeSurface};
 use karkas::{Grid, Point2, Point3};
 use karkas_io::obj::write_surface_obj;
-use karkas_io::scene::{write_scene_svg, SceneItem, ScenePlot};
+use karkas_io::painter::{write_scene_svg, SceneItem, ScenePlot};
 use karkas_io::svg::{write_discrete_curve_svg, write_lines_svg, DiscreteCurvePlot};
 use karkas_io::svg::{LineGroup, LinesPlot};
 use karkas_io::write::{write_atomic, write_discrete_curve_csv, write_indexed_grid_csv};

@@ -1,12 +1,15 @@
 //! Seed 000 (LL-approximation): the 53-point contour with L = 5 and the aircraft-like surface
-//! with its sections (METHODS.md §1.6).
+//! with 15 sections x = const and 11 sections y = const, hidden lines removed (METHODS.md
+//! §1.4, §1.6).
 
 use super::data::{aircraft_15x31, contour_53, contour_csv, grid_csv};
 use super::Finding;
 use anyhow::Result;
 use karkas::ll::{LlCurve, LlSurface};
+use karkas::section::{Plane, Section, SectionOptions, Sectioner};
 use karkas::{Curve, Point, Point2, Point3, Surface};
 use karkas_io::obj::write_surface_obj;
+use karkas_io::scene::{write_scene_png, write_scene_svg, Scene, SceneCurves, SceneMesh, View};
 use karkas_io::svg::{write_curve_svg, write_lines_svg, CurvePlot, LineGroup, LinesPlot};
 use karkas_io::write::{write_atomic, write_curve_csv};
 use std::path::Path;
@@ -106,13 +109,33 @@ fn contour(out: &Path) -> Result<Vec<Finding>> {
     ])
 }
 
-/// An axonometric view of a 3-D point: the camera on the side of +y, a little ahead of the
-/// nose (azimuth 15 degrees) and above (elevation 35 degrees).
-fn view(p: Point3) -> Point2 {
-    let (az, el) = (15f64.to_radians(), 35f64.to_radians());
-    let right = p[0] * az.cos() + p[1] * az.sin();
-    let up = (p[0] * az.sin() - p[1] * az.cos()) * el.sin() + p[2] * el.cos();
-    Point2::new([right, up])
+/// The camera of the aircraft picture: on the side of the wing (+y), ahead of the nose and
+/// above it.
+const AIRCRAFT_VIEW: View = View {
+    azimuth: 118.0,
+    elevation: 28.0,
+};
+
+/// The stations of the paper's picture: 15 sections x = const through the grid's rows.
+const STATIONS: usize = 15;
+/// And 11 sections y = const, from beside the keel line to near the wing tip.
+fn buttock_lines() -> Vec<f64> {
+    (0..11).map(|k| 0.25 + 0.5 * k as f64).collect()
+}
+
+/// The polylines of a section, closed ones closed again.
+fn polylines(section: &Section<3>) -> Vec<Vec<Point3>> {
+    section
+        .curves
+        .iter()
+        .map(|c| {
+            let mut line = c.points.clone();
+            if c.closed {
+                line.push(c.points[0]);
+            }
+            line
+        })
+        .collect()
 }
 
 fn aircraft(out: &Path) -> Result<Vec<Finding>> {
@@ -121,41 +144,65 @@ fn aircraft(out: &Path) -> Result<Vec<Finding>> {
     let surface = LlSurface::new(&grid, ORDER, false, false)?;
     let (au, av) = (surface.axis_u(), surface.axis_v());
 
-    // The 15 sections x = const through the nodes, and 11 lines v = const along the body.
-    let sections: Vec<Vec<Point3>> = (1..=au.nodes())
-        .map(|i| sample(&surface.curve_at_u(au.node(i)), 200).1)
-        .collect();
-    let v_lines: Vec<Vec<Point3>> = (0..11)
-        .map(|k| sample(&surface.curve_at_v(surface.domain_v().uniform(k, 11)), 200).1)
-        .collect();
-    let to_view = |lines: &[Vec<Point3>]| -> Vec<Vec<Point2>> {
-        lines
-            .iter()
-            .map(|l| l.iter().map(|&p| view(p)).collect())
-            .collect()
+    // Sections by true planes: x = const (the paper's fast path, formula (21)) and
+    // y = const (traced). Two cells per LL segment for the start points.
+    let options = SectionOptions {
+        cells: (2 * grid.rows(), 2 * grid.cols()),
+        ..SectionOptions::default()
     };
-    let frame_lines = to_view(&v_lines);
-    let section_lines = to_view(&sections);
-    write_lines_svg(
-        &out.join("aircraft-ll5-view.svg"),
-        &LinesPlot {
-            title: "Seed 000: LL surface, L = 5, 15 sections x = const and 11 lines v = const",
-            axes: ("view x", "view y"),
-            groups: &[
-                LineGroup {
-                    lines: &frame_lines,
-                    rgb: (160, 160, 160),
-                    width: 1,
-                },
-                LineGroup {
-                    lines: &section_lines,
-                    rgb: (20, 60, 200),
-                    width: 2,
-                },
-            ],
+    let sectioner = Sectioner::new(&surface, &options)?;
+    let mut plane_error = 0.0f64;
+    let mut all_fast = true;
+    let mut cut = |axis: usize, value: f64| -> Result<Vec<Vec<Point3>>> {
+        let plane = Plane::coordinate(axis, value)?;
+        let section = sectioner.plane(&plane);
+        all_fast &= axis != 0 || section.fast_path;
+        for p in section.curves.iter().flat_map(|c| &c.points) {
+            plane_error = plane_error.max((p[axis] - value).abs());
+        }
+        Ok(polylines(&section))
+    };
+    let mut stations = Vec::new();
+    for i in 0..STATIONS {
+        stations.extend(cut(0, grid.get(i, 0)[0])?);
+    }
+    let mut buttocks = Vec::new();
+    for y in buttock_lines() {
+        buttocks.extend(cut(1, y)?);
+    }
+    let (nu, nv) = (141, 121);
+    let mut us = vec![0.0; nu];
+    let mut vs = vec![0.0; nv];
+    let mut mesh = vec![Point3::ZERO; nu * nv];
+    surface.sample_grid_into(&mut us, &mut vs, &mut mesh);
+    write_surface_obj(&out.join("aircraft-ll5.obj"), nu, nv, &mesh)?;
+    let scene = Scene {
+        title: "Seed 000: LL surface, L = 5, of the aircraft-like body (right half): \
+                15 sections x = const, 11 sections y = const",
+        mesh: SceneMesh {
+            rows: nu,
+            cols: nv,
+            points: &mesh,
         },
-    )?;
-    let body_plan: Vec<Vec<Point2>> = sections
+        curves: &[
+            SceneCurves {
+                label: "x = 0, 1, ..., 14",
+                lines: &stations,
+                rgb: (20, 60, 200),
+                width: 1.6,
+            },
+            SceneCurves {
+                label: "y = 0.25, 0.75, ..., 5.25",
+                lines: &buttocks,
+                rgb: (200, 40, 30),
+                width: 1.6,
+            },
+        ],
+        view: AIRCRAFT_VIEW,
+    };
+    write_scene_svg(&out.join("aircraft-ll5-view.svg"), &scene)?;
+    write_scene_png(&out.join("aircraft-ll5-view.png"), &scene)?;
+    let body_plan: Vec<Vec<Point2>> = stations
         .iter()
         .map(|s| s.iter().map(|p| Point2::new([p[1], p[2]])).collect())
         .collect();
@@ -171,12 +218,6 @@ fn aircraft(out: &Path) -> Result<Vec<Finding>> {
             }],
         },
     )?;
-    let (nu, nv) = (141, 121);
-    let mut us = vec![0.0; nu];
-    let mut vs = vec![0.0; nv];
-    let mut mesh = vec![Point3::ZERO; nu * nv];
-    surface.sample_grid_into(&mut us, &mut vs, &mut mesh);
-    write_surface_obj(&out.join("aircraft-ll5.obj"), nu, nv, &mesh)?;
 
     let corner_error = [(0, 0), (0, 30), (14, 0), (14, 30)]
         .iter()
@@ -186,11 +227,6 @@ fn aircraft(out: &Path) -> Result<Vec<Finding>> {
                 .distance(*grid.get(i, j))
         })
         .fold(0.0, f64::max);
-    let plane_error = sections
-        .iter()
-        .enumerate()
-        .flat_map(|(i, s)| s.iter().map(move |p| (p[0] - i as f64).abs()))
-        .fold(0.0, f64::max);
     Ok(vec![
         Finding {
             example: "000 aircraft 15 x 31, L = 5".into(),
@@ -199,9 +235,25 @@ fn aircraft(out: &Path) -> Result<Vec<Finding>> {
             paper: None,
         },
         Finding {
-            example: "000 aircraft 15 x 31, L = 5".into(),
-            measure: "max |x - x_i| on the node sections".into(),
+            example: "000 aircraft sections".into(),
+            measure: "max distance of section points from their plane".into(),
             value: plane_error,
+            paper: None,
+        },
+        Finding {
+            example: "000 aircraft sections".into(),
+            measure: "pieces: x = const (all by the fast path (21))".into(),
+            value: if all_fast {
+                stations.len() as f64
+            } else {
+                f64::NAN
+            },
+            paper: None,
+        },
+        Finding {
+            example: "000 aircraft sections".into(),
+            measure: "pieces: y = const (traced)".into(),
+            value: buttocks.len() as f64,
             paper: None,
         },
     ])

@@ -7,8 +7,8 @@ use super::Finding;
 use anyhow::{Context, Result};
 use karkas::param::experiments::{helix_experiment, seed_experiments, SeedExperiment};
 use karkas::{Point3, Surface};
-use karkas_io::grid::write_grid_csv;
 use karkas_io::obj::write_surface_obj;
+use karkas_io::write::write_grid_csv;
 use std::path::Path;
 
 /// Runs the seven rows of the seed's table and the extra helix frame into `out`.

@@ -13,4 +13,4 @@ pub use grid::Grid;
 pub use interval::Interval;
 pub use point::{Point, Point2, Point3};
 pub use sampling::uniform_into;
-pub use surface::{PiecewiseSurface, Surface};
+pub use surface::{ParameterLine, PiecewiseSurface, Surface};

@@ -40,6 +40,18 @@ pub trait Surface<const D: usize> {
         }
     }
 
+    /// The level set `{(u, v) : normal . P(u, v) = level}`, when this surface knows it to be
+    /// made of whole parameter lines: the fast path of plane sections for a surface whose `x`
+    /// depends on `u` only (seed 000, formula (21)). The lines are listed in increasing
+    /// parameter; an empty list means the level is never reached.
+    ///
+    /// `None` (the default) when the surface cannot tell, or when it lies in the level set
+    /// over a whole strip; [sections](crate::section) then trace the level curve instead.
+    fn level_parameter_lines(&self, normal: Point<D>, level: f64) -> Option<Vec<ParameterLine>> {
+        let _ = (normal, level);
+        None
+    }
+
     /// Samples a uniform `us.len() x vs.len()` grid over the whole domain, ends included,
     /// writing the parameters into `us`, `vs` and the points into `out` (row-major, `u` outer).
     ///
@@ -50,6 +62,15 @@ pub trait Surface<const D: usize> {
         uniform_into(self.domain_v(), vs);
         self.eval_grid_into(us, vs, out);
     }
+}
+
+/// A line of constant parameter on a surface.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ParameterLine {
+    /// The line `u = value`, running along `v`.
+    U(f64),
+    /// The line `v = value`, running along `u`.
+    V(f64),
 }
 
 /// A surface made of polynomial patches on a rectangular grid of breakpoints.

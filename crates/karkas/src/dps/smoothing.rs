@@ -44,7 +44,7 @@ pub(crate) fn raise_order<const D: usize>(
     wrap: &mut Vec<Point<D>>,
 ) {
     let len = values.len();
-    debug_assert!(n >= 2 && len % n == 0 && len >= n);
+    debug_assert!(n >= 2 && len.is_multiple_of(n) && len >= n);
     backward_window_sums(values, n, wrap);
     forward_window_sums(values, n, 1.0 / (n as f64 * n as f64), wrap);
 }

@@ -148,7 +148,7 @@ impl LlKernel {
                 let mut sum = 0.0;
                 for r in m.saturating_sub(a)..=m.min(a) {
                     let s = m - r;
-                    let sign = if s % 2 == 0 { 1.0 } else { -1.0 };
+                    let sign = if s.is_multiple_of(2) { 1.0 } else { -1.0 };
                     sum += binomial(m, r)
                         * falling_factorial(a, r)
                         * pow_n(xi, a - r)

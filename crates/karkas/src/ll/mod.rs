@@ -9,17 +9,26 @@
 //! - [`LlKernel`]: the kernel `h` of order `L` (§1.1);
 //! - [`LlCurve`]: open and closed curves in any dimension (§1.2);
 //! - [`LlSurface`]: tensor-product surfaces, each direction open or closed (§1.3);
-//! - [`interpolation_controls`]: the `O(K)` solve of the interpolating variant.
+//! - [`interpolation_controls`]: the `O(K)` solve of the interpolating variant;
+//! - [`vary`]: the surface variation method (§1.5): a coordinate matrix varied through new
+//!   row sums, column sums and total, with chosen entries fixed.
+//!
+//! Sections of LL surfaces go through [`crate::section`]; the paper's fast path (a section
+//! `x = const` when `x` depends on `u` only, formula (21)) is the LL surface's
+//! [`Surface::level_parameter_lines`](crate::Surface::level_parameter_lines).
 
 mod axis;
 mod curve;
 mod frame;
 mod kernel;
+mod level_lines;
 mod prefilter;
 mod surface;
+mod variation;
 
 pub use axis::NodeAxis;
 pub use curve::LlCurve;
 pub use kernel::{LlKernel, MAX_ORDER};
 pub use prefilter::interpolation_controls;
 pub use surface::LlSurface;
+pub use variation::{vary, FixedEntries, SumTargets, VariationOptions};

@@ -17,7 +17,7 @@ use super::curve::LlCurve;
 use super::frame::{close, coincide, extend, model_scale};
 use super::kernel::{pow_n, LlKernel};
 use super::prefilter::interpolation_controls;
-use crate::core::{Grid, Interval, PiecewiseSurface, Side, Surface};
+use crate::core::{Grid, Interval, ParameterLine, PiecewiseSurface, Side, Surface};
 use crate::{Error, Point, Result};
 
 /// An LL surface of order `L` over a grid `r_ij`, `i = 1..Kx` (parameter `u`, rows),
@@ -177,6 +177,16 @@ impl<const D: usize> LlSurface<D> {
         *self.extended.get(i + 1, j + 1)
     }
 
+    /// The kernel `h` of this surface's order.
+    pub fn kernel(&self) -> &LlKernel {
+        &self.kernel
+    }
+
+    /// The extended control grid `r_{0..Kx+1, 0..Ky+1}`.
+    pub(super) fn extended(&self) -> &Grid<Point<D>> {
+        &self.extended
+    }
+
     /// The line `u = const` as an LL curve of `v`: its control points are the row
     /// combinations `Q_j = sum_a c_a(xi) r_{i+a, j}`.
     pub fn curve_at_u(&self, u: f64) -> LlCurve<D> {
@@ -265,6 +275,14 @@ impl<const D: usize> Surface<D> for LlSurface<D> {
 
     fn deriv(&self, u: f64, v: f64, ku: usize, kv: usize) -> Point<D> {
         self.deriv_on_cell(self.axis_u.locate(u), self.axis_v.locate(v), ku, kv)
+    }
+
+    /// Lines `u = u*` when `normal . r_ij` is constant along every row (the paper's grids,
+    /// where `x` depends on the row only), lines `v = v*` when it is constant along every
+    /// column; the roots of the 1-D LL function (21) are found exactly
+    /// (see `ll/level_lines.rs`).
+    fn level_parameter_lines(&self, normal: Point<D>, level: f64) -> Option<Vec<ParameterLine>> {
+        self.level_lines(normal, level)
     }
 
     fn eval_grid_into(&self, us: &[f64], vs: &[f64], out: &mut [Point<D>]) {

@@ -1,0 +1,348 @@
+//! `karkas section`: plane sections of a surface built from a grid (seed 000, METHODS.md §1.4).
+//!
+//! The planes come from `--plane nx,ny,nz,c` (the plane `nx x + ny y + nz z = c`) and the
+//! shorthands `--x X`, `--y Y`, `--z Z` (each repeatable, each taking a comma list). Sections
+//! are numbered from 0 over all pieces, planes taken in this order: every `--plane` as given,
+//! then the `--x` values, the `--y` values, the `--z` values.
+
+use super::output::ensure_distinct;
+use anyhow::{anyhow, bail, Context, Result};
+use clap::{Args, ValueEnum};
+use karkas::ll::{LlKernel, LlSurface};
+use karkas::section::{Plane, Section, SectionOptions, Sectioner, MAX_CELLS};
+use karkas::{Point3, Surface};
+use karkas_io::grid::read_grid;
+use karkas_io::scene::{write_scene_png, write_scene_svg, Scene, SceneCurves, SceneMesh, View};
+use karkas_io::write::write_sections_csv;
+use karkas_io::OutputFormat;
+use std::path::PathBuf;
+
+/// The surface methods a section can be taken of.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum SurfaceMethod {
+    /// LL-approximation (seed 000), as `karkas surface ll` builds it.
+    Ll,
+}
+
+/// Arguments of `karkas section`.
+#[derive(Debug, Args)]
+pub struct SectionArgs {
+    /// Input grid: CSV with header i,j,x,y,z (indices from 0, rows in any order).
+    input: PathBuf,
+    /// How the surface is built from the grid.
+    #[arg(long, value_enum)]
+    method: SurfaceMethod,
+    /// LL order L (at least 1).
+    #[arg(long, default_value_t = 3)]
+    order: usize,
+    /// Close the surface in u (across rows, index i).
+    #[arg(long)]
+    closed_u: bool,
+    /// Close the surface in v (along rows, index j).
+    #[arg(long)]
+    closed_v: bool,
+    /// Pass through every grid point instead of approximating the grid.
+    #[arg(long)]
+    interpolate: bool,
+    /// A cutting plane nx,ny,nz,c: the plane nx*x + ny*y + nz*z = c (repeatable).
+    #[arg(long = "plane", value_name = "NX,NY,NZ,C", value_parser = parse_plane,
+          allow_hyphen_values = true)]
+    planes: Vec<[f64; 4]>,
+    /// Sections x = X (repeatable; a comma list gives several).
+    #[arg(
+        long = "x",
+        value_name = "X",
+        value_delimiter = ',',
+        allow_hyphen_values = true
+    )]
+    xs: Vec<f64>,
+    /// Sections y = Y (repeatable; a comma list gives several).
+    #[arg(
+        long = "y",
+        value_name = "Y",
+        value_delimiter = ',',
+        allow_hyphen_values = true
+    )]
+    ys: Vec<f64>,
+    /// Sections z = Z (repeatable; a comma list gives several).
+    #[arg(
+        long = "z",
+        value_name = "Z",
+        value_delimiter = ',',
+        allow_hyphen_values = true
+    )]
+    zs: Vec<f64>,
+    /// Largest distance between a section polyline and the true curve, in model units
+    /// [default: 1e-4 of the diagonal of the surface's bounding box].
+    #[arg(long, allow_hyphen_values = true)]
+    tolerance: Option<f64>,
+    /// Cells NU,NV of the grid on which sections are looked for: a closed piece smaller than a
+    /// cell may be missed [default: 2 per grid line, at least 16, in each direction].
+    #[arg(long, value_name = "NU,NV", value_parser = parse_cells)]
+    cells: Option<(usize, usize)>,
+    /// Camera of the .svg/.png picture: azimuth and elevation in degrees.
+    #[arg(long, value_name = "AZ,EL", value_parser = parse_view, allow_hyphen_values = true,
+          default_value = "45,30")]
+    view: (f64, f64),
+    /// Output file: .csv with header section,t,x,y,z (one block per piece: section = piece
+    /// number from 0 in plane order, t = length along the piece; a closed piece repeats its
+    /// first point), or .svg / .png (the shaded surface with its sections, hidden parts
+    /// removed).
+    #[arg(short, long)]
+    output: PathBuf,
+}
+
+/// One plane to cut, with the group it belongs to in the picture and how the user wrote it.
+struct Cut {
+    plane: Plane<3>,
+    group: usize,
+    label: String,
+}
+
+/// Picture groups: custom planes, x, y, z sections.
+const GROUPS: [(&str, (u8, u8, u8)); 4] = [
+    ("planes", (20, 140, 60)),
+    ("x = const", (20, 60, 200)),
+    ("y = const", (200, 40, 30)),
+    ("z = const", (200, 120, 0)),
+];
+
+/// Runs `karkas section`.
+pub fn run(args: &SectionArgs) -> Result<()> {
+    let format = OutputFormat::from_path(
+        &args.output,
+        &[OutputFormat::Csv, OutputFormat::Svg, OutputFormat::Png],
+    )?;
+    LlKernel::new(args.order).map_err(|e| anyhow!("--order: {e}"))?;
+    if let Some(t) = args.tolerance {
+        if !(t.is_finite() && t > 0.0) {
+            bail!("--tolerance: must be a positive number, got {t}");
+        }
+    }
+    let cuts = planes(args)?;
+    ensure_distinct(&args.input, &args.output)?;
+    let grid = read_grid(&args.input)?;
+    let build = if args.interpolate {
+        LlSurface::interpolating
+    } else {
+        LlSurface::new
+    };
+    let surface = build(&grid, args.order, args.closed_u, args.closed_v)
+        .map_err(|e| anyhow!("{}: {e}", args.input.display()))?;
+    let default_cells = |lines: usize| (2 * lines).clamp(16, MAX_CELLS);
+    let options = SectionOptions {
+        tolerance: args.tolerance,
+        cells: args
+            .cells
+            .unwrap_or((default_cells(grid.rows()), default_cells(grid.cols()))),
+        ..SectionOptions::default()
+    };
+    let sectioner = Sectioner::new(&surface, &options).map_err(|e| anyhow!("{e}"))?;
+
+    let mut lines: Vec<Vec<Point3>> = Vec::new();
+    let mut groups: [Vec<Vec<Point3>>; 4] = Default::default();
+    for (k, cut) in cuts.iter().enumerate() {
+        let section = sectioner.plane(&cut.plane);
+        report_section(k, cut, &section, lines.len());
+        for curve in &section.curves {
+            let mut line = curve.points.clone();
+            if curve.closed {
+                line.push(curve.points[0]);
+            }
+            groups[cut.group].push(line.clone());
+            lines.push(line);
+        }
+    }
+    match format {
+        OutputFormat::Csv => write_sections_csv(&args.output, &lines)?,
+        _ => {
+            let (nu, nv) = (mesh_samples(grid.rows()), mesh_samples(grid.cols()));
+            let mut us = vec![0.0; nu];
+            let mut vs = vec![0.0; nv];
+            let mut mesh = vec![Point3::ZERO; nu * nv];
+            surface.sample_grid_into(&mut us, &mut vs, &mut mesh);
+            let labels: Vec<String> = groups
+                .iter()
+                .zip(GROUPS)
+                .map(|(g, (name, _))| match g.len() {
+                    1 => format!("{name} (1 piece)"),
+                    n => format!("{name} ({n} pieces)"),
+                })
+                .collect();
+            let curves: Vec<SceneCurves<'_>> = groups
+                .iter()
+                .zip(GROUPS)
+                .zip(&labels)
+                .filter(|((g, _), _)| !g.is_empty())
+                .map(|((g, (_, rgb)), label)| SceneCurves {
+                    label,
+                    lines: g,
+                    rgb,
+                    width: 1.6,
+                })
+                .collect();
+            let title = format!(
+                "{} sections of the LL surface (L = {}) of {}",
+                cuts.len(),
+                args.order,
+                args.input
+                    .file_name()
+                    .map_or_else(String::new, |n| n.to_string_lossy().into_owned())
+            );
+            let scene = Scene {
+                title: &title,
+                mesh: SceneMesh {
+                    rows: nu,
+                    cols: nv,
+                    points: &mesh,
+                },
+                curves: &curves,
+                view: View {
+                    azimuth: args.view.0,
+                    elevation: args.view.1,
+                },
+            };
+            if format == OutputFormat::Png {
+                write_scene_png(&args.output, &scene)?;
+            } else {
+                write_scene_svg(&args.output, &scene)?;
+            }
+        }
+    }
+    eprintln!(
+        "karkas: wrote {} ({} section pieces from {} planes)",
+        args.output.display(),
+        lines.len(),
+        cuts.len()
+    );
+    Ok(())
+}
+
+/// Mesh samples of the picture along a direction with `k` grid lines.
+fn mesh_samples(k: usize) -> usize {
+    (4 * k).clamp(50, 240)
+}
+
+/// The planes of the command line, in section order.
+fn planes(args: &SectionArgs) -> Result<Vec<Cut>> {
+    let mut cuts = Vec::new();
+    for p in &args.planes {
+        let plane = Plane::new(Point3::new([p[0], p[1], p[2]]), p[3])
+            .map_err(|e| anyhow!("--plane {},{},{},{}: {e}", p[0], p[1], p[2], p[3]))?;
+        cuts.push(Cut {
+            plane,
+            group: 0,
+            label: format!("{}x + {}y + {}z = {}", p[0], p[1], p[2], p[3]),
+        });
+    }
+    for (axis, (name, values)) in [("--x", &args.xs), ("--y", &args.ys), ("--z", &args.zs)]
+        .into_iter()
+        .enumerate()
+    {
+        for &value in values {
+            let plane = Plane::coordinate(axis, value)
+                .with_context(|| format!("{name} {value}: not a finite number"))?;
+            cuts.push(Cut {
+                plane,
+                group: axis + 1,
+                label: format!("{} = {value}", &name[2..]),
+            });
+        }
+    }
+    if cuts.is_empty() {
+        bail!("no plane given: use --plane NX,NY,NZ,C or --x / --y / --z");
+    }
+    Ok(cuts)
+}
+
+/// Prints what one plane gave, and its warnings.
+fn report_section(k: usize, cut: &Cut, section: &Section<3>, first: usize) {
+    let pieces = section.curves.len();
+    let closed = section.curves.iter().filter(|c| c.closed).count();
+    let what = match (pieces, closed) {
+        (0, _) => "no section".to_owned(),
+        (1, 1) => format!("1 closed piece, section {first}"),
+        (1, _) => format!("1 open piece, section {first}"),
+        (n, c) => format!(
+            "{n} pieces ({c} closed), sections {first}-{}",
+            first + n - 1
+        ),
+    };
+    let how = if section.fast_path {
+        " (lines of constant parameter)"
+    } else {
+        ""
+    };
+    eprintln!("karkas: plane {} ({}): {what}{how}", k + 1, cut.label);
+    for w in &section.warnings {
+        eprintln!("karkas: warning: plane {} ({}): {w}", k + 1, cut.label);
+    }
+}
+
+/// Parses `nx,ny,nz,c`.
+fn parse_plane(text: &str) -> Result<[f64; 4], String> {
+    let values: Vec<&str> = text.split(',').map(str::trim).collect();
+    if values.len() != 4 {
+        return Err(format!(
+            "expected NX,NY,NZ,C (four numbers separated by commas), got '{text}'"
+        ));
+    }
+    let mut out = [0.0; 4];
+    for (slot, v) in out.iter_mut().zip(&values) {
+        *slot = v
+            .parse::<f64>()
+            .ok()
+            .filter(|x| x.is_finite())
+            .ok_or_else(|| format!("'{v}' is not a finite number"))?;
+    }
+    Ok(out)
+}
+
+/// Parses `NU,NV` cell counts.
+fn parse_cells(text: &str) -> Result<(usize, usize), String> {
+    let (a, b) = text
+        .split_once(',')
+        .ok_or_else(|| format!("expected NU,NV (two counts separated by a comma), got '{text}'"))?;
+    let count = |s: &str| -> Result<usize, String> {
+        let n: usize = s
+            .trim()
+            .parse()
+            .map_err(|_| format!("'{s}' is not a whole number"))?;
+        if !(3..=MAX_CELLS).contains(&n) {
+            return Err(format!("cells must be 3 to {MAX_CELLS}, got {n}"));
+        }
+        Ok(n)
+    };
+    Ok((count(a)?, count(b)?))
+}
+
+/// Parses `AZ,EL` in degrees.
+fn parse_view(text: &str) -> Result<(f64, f64), String> {
+    let (a, b) = text
+        .split_once(',')
+        .ok_or_else(|| format!("expected AZ,EL (two angles in degrees), got '{text}'"))?;
+    let angle = |s: &str| {
+        s.trim()
+            .parse::<f64>()
+            .ok()
+            .filter(|x| x.is_finite())
+            .ok_or_else(|| format!("'{s}' is not a finite number"))
+    };
+    Ok((angle(a)?, angle(b)?))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn option_values_parse() {
+        assert_eq!(parse_plane("0, 0,1,-2.5"), Ok([0.0, 0.0, 1.0, -2.5]));
+        assert!(parse_plane("0,0,1").is_err());
+        assert!(parse_plane("0,0,1,nan").is_err());
+        assert_eq!(parse_cells("16,40"), Ok((16, 40)));
+        assert!(parse_cells("2,40").is_err());
+        assert_eq!(parse_view("-60,25"), Ok((-60.0, 25.0)));
+        assert!(parse_view("10").is_err());
+    }
+}

@@ -1,0 +1,90 @@
+//! The fast path of sections (seed 000, formula (21)): when the surface reports its level set
+//! as whole parameter lines, each line is sampled into a polyline, finely enough that no chord
+//! strays from the line by more than the tolerance.
+//!
+//! Sampling starts from the grid's vertices along the line and halves every interval whose
+//! midpoint lies farther than the tolerance from its chord (at most [`MAX_DEPTH`] times), so a
+//! line costs `O(cells + refinements)` evaluations.
+
+use super::result::SectionCurve;
+use super::sample_grid::{Axis, SampleGrid};
+use crate::core::{ParameterLine, Surface};
+use crate::Point;
+
+/// Most halvings of one interval.
+const MAX_DEPTH: usize = 24;
+
+/// The polyline of one parameter line.
+pub(crate) fn sample_line<S: Surface<D> + ?Sized, const D: usize>(
+    surface: &S,
+    grid: &SampleGrid<D>,
+    line: ParameterLine,
+    tolerance: f64,
+) -> SectionCurve<D> {
+    let (axis, fixed, along_u) = match line {
+        ParameterLine::U(u) => (&grid.v, u, false),
+        ParameterLine::V(v) => (&grid.u, v, true),
+    };
+    let eval = |t: f64| {
+        if along_u {
+            surface.eval(t, fixed)
+        } else {
+            surface.eval(fixed, t)
+        }
+    };
+    let ts = sample_params(axis, &eval, tolerance);
+    let points: Vec<Point<D>> = ts.iter().map(|&t| eval(t)).collect();
+    let params = ts
+        .iter()
+        .map(|&t| if along_u { (t, fixed) } else { (fixed, t) })
+        .collect();
+    SectionCurve {
+        params,
+        points,
+        closed: axis.closed(),
+    }
+}
+
+/// Parameters along `axis`, refined until every chord is within `tolerance` of the curve.
+fn sample_params<const D: usize>(
+    axis: &Axis,
+    eval: &impl Fn(f64) -> Point<D>,
+    tolerance: f64,
+) -> Vec<f64> {
+    let coarse: Vec<f64> = (0..=axis.cells()).map(|k| k as f64).collect();
+    let mut out = Vec::with_capacity(2 * coarse.len());
+    let mut previous = (coarse[0], eval(axis.param(coarse[0])));
+    out.push(previous.0);
+    for &s in &coarse[1..] {
+        let next = (s, eval(axis.param(s)));
+        refine(axis, eval, previous, next, tolerance, MAX_DEPTH, &mut out);
+        out.push(s);
+        previous = next;
+    }
+    if axis.closed() {
+        out.pop(); // s = cells is s = 0 again
+    }
+    out.into_iter().map(|s| axis.param(s)).collect()
+}
+
+/// Adds the cell coordinates strictly between `a` and `b` needed to follow the curve.
+fn refine<const D: usize>(
+    axis: &Axis,
+    eval: &impl Fn(f64) -> Point<D>,
+    a: (f64, Point<D>),
+    b: (f64, Point<D>),
+    tolerance: f64,
+    depth: usize,
+    out: &mut Vec<f64>,
+) {
+    let s = 0.5 * (a.0 + b.0);
+    let m = (s, eval(axis.param(s)));
+    let deviation = m.1.distance(a.1.lerp(b.1, 0.5));
+    let too_far = deviation > tolerance; // false for NaN: nothing to refine
+    if depth == 0 || !too_far {
+        return;
+    }
+    refine(axis, eval, a, m, tolerance, depth - 1, out);
+    out.push(s);
+    refine(axis, eval, m, b, tolerance, depth - 1, out);
+}
