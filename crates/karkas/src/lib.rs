@@ -10,7 +10,10 @@
 //! - [`solve`]: the banded linear solvers the methods need;
 //! - [`ll`]: the LL-approximation of curves and surfaces (Aulchenko, Latypov, Nikulichev):
 //!   oscillation-free, monotone, `C^L` curves and surfaces on a uniform parameter grid, and
-//!   their interpolating variant.
+//!   their interpolating variant;
+//! - [`coons`]: generalized Coons surfaces (Chashnikov): the Boolean sum over any blending
+//!   families and curves, with the bilinear and bicubic Coons, Gordon (Lagrange and
+//!   cubic-spline blending) and composite Coons surfaces as instances.
 //!
 //! ```
 //! use karkas::{ll::LlCurve, Curve, Point};
@@ -22,6 +25,7 @@
 //! assert!(curve.eval(d.end).distance(pts[3]) < 1e-15);
 //! ```
 
+pub mod coons;
 pub mod core;
 mod error;
 pub mod ll;
