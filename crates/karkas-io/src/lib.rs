@@ -6,7 +6,8 @@
 //! Reading:
 //! - [`points`]: an ordered list of curve points from CSV, whitespace-separated columns or an
 //!   airfoil `.dat` ([`airfoil`]), chosen by content;
-//! - [`grid`]: a surface frame as CSV rows `i,j,x,y,z`.
+//! - [`grid`]: a surface frame as CSV rows `i,j,x,y,z`;
+//! - [`network`]: a family of curves of a curve network as CSV rows `curve,x,y,z`.
 //!
 //! Writing (always atomically, see [`write::write_atomic`]):
 //! - [`write`](mod@write): sampled curves and surfaces as CSV;
@@ -20,6 +21,7 @@ pub mod airfoil;
 pub mod error;
 pub mod format;
 pub mod grid;
+pub mod network;
 pub mod obj;
 pub mod points;
 pub mod svg;

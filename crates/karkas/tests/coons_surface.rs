@@ -330,6 +330,21 @@ fn grid_evaluation_equals_pointwise_evaluation() {
                 assert_close(grid[a * vs.len() + b], c.eval(u, v), 1e-12, "grid");
             }
         }
+        // Derivatives on a grid, inside the domain (clamping makes one-sided derivatives
+        // outside it meaningless).
+        let us = linspace(du.start, du.end, 13);
+        let vs = linspace(dv.start, dv.end, 11);
+        let mut grid = vec![Point3::ZERO; us.len() * vs.len()];
+        for (ku, kv) in [(1, 0), (0, 1), (1, 1), (2, 0)] {
+            c.deriv_grid_into(&us, &vs, ku, kv, &mut grid);
+            for (a, &u) in us.iter().enumerate() {
+                for (b, &v) in vs.iter().enumerate() {
+                    let want = c.deriv(u, v, ku, kv);
+                    let tol = 1e-11 * (1.0 + want.norm());
+                    assert_close(grid[a * vs.len() + b], want, tol, "derivative grid");
+                }
+            }
+        }
     }
 }
 

@@ -2,6 +2,7 @@
 
 mod curve_ll;
 mod output;
+mod surface_coons;
 mod surface_ll;
 
 use clap::Subcommand;
@@ -27,6 +28,8 @@ impl CurveCommand {
 pub enum SurfaceCommand {
     /// LL-approximation (or interpolation) of a grid of points.
     Ll(surface_ll::SurfaceLlArgs),
+    /// Coons, Gordon or composite Coons surface through a network of curves.
+    Coons(surface_coons::SurfaceCoonsArgs),
 }
 
 impl SurfaceCommand {
@@ -34,6 +37,7 @@ impl SurfaceCommand {
     pub fn run(self) -> anyhow::Result<()> {
         match self {
             SurfaceCommand::Ll(args) => surface_ll::run(&args),
+            SurfaceCommand::Coons(args) => surface_coons::run(&args),
         }
     }
 }

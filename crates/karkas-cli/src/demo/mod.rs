@@ -1,6 +1,8 @@
 //! `karkas demo`: the examples of the papers, reproduced on built-in data, written to a folder
 //! with pictures, meshes and the data itself, and a summary table on the terminal.
 
+mod coons;
+mod coons_data;
 mod data;
 mod ll;
 
@@ -33,7 +35,8 @@ pub fn run(args: &DemoArgs) -> Result<()> {
     let started = Instant::now();
     std::fs::create_dir_all(&args.out)
         .with_context(|| format!("cannot create the folder {}", args.out.display()))?;
-    let findings = ll::run(&args.out)?;
+    let mut findings = ll::run(&args.out)?;
+    findings.extend(coons::run(&args.out)?);
     print_summary(&findings, &args.out, started.elapsed().as_secs_f64());
     Ok(())
 }

@@ -3,6 +3,7 @@
 
 use std::sync::Arc;
 
+use super::CoonsSurface;
 use crate::core::{Curve, Interval, Surface};
 use crate::Point;
 
@@ -108,26 +109,38 @@ pub enum Along {
     V,
 }
 
-/// The first derivative of a surface across one of its parameter lines, as a curve along the
-/// line: for [`Along::V`], `t -> dS/du (at, t)`; for [`Along::U`], `t -> dS/dv (t, at)`.
+/// The first derivative of a Coons surface across one of its parameter lines, as a curve
+/// along the line: for [`Along::V`], `t -> dS/du (at, t)`; for [`Along::U`],
+/// `t -> dS/dv (t, at)`.
 ///
 /// This is how omitted cross-derivative curves of a curve network are derived (see
-/// [`CrossDerivatives::from_surface`](super::CrossDerivatives::from_surface)).
-pub struct SurfaceCrossDerivative<const D: usize, S: Surface<D>> {
-    surface: Arc<S>,
+/// [`CrossDerivatives::from_surface`](super::CrossDerivatives::from_surface)). Batch
+/// evaluation goes through the surface's grid evaluation.
+#[derive(Clone)]
+pub struct SurfaceCrossDerivative<const D: usize> {
+    surface: Arc<CoonsSurface<D>>,
     along: Along,
     at: f64,
 }
 
-impl<const D: usize, S: Surface<D>> SurfaceCrossDerivative<D, S> {
+impl<const D: usize> core::fmt::Debug for SurfaceCrossDerivative<D> {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("SurfaceCrossDerivative")
+            .field("along", &self.along)
+            .field("at", &self.at)
+            .finish_non_exhaustive()
+    }
+}
+
+impl<const D: usize> SurfaceCrossDerivative<D> {
     /// The cross-derivative of `surface` along the line `u = at` ([`Along::V`]) or `v = at`
     /// ([`Along::U`]).
-    pub fn new(surface: Arc<S>, along: Along, at: f64) -> Self {
+    pub fn new(surface: Arc<CoonsSurface<D>>, along: Along, at: f64) -> Self {
         SurfaceCrossDerivative { surface, along, at }
     }
 }
 
-impl<const D: usize, S: Surface<D>> Curve<D> for SurfaceCrossDerivative<D, S> {
+impl<const D: usize> Curve<D> for SurfaceCrossDerivative<D> {
     fn domain(&self) -> Interval {
         match self.along {
             Along::U => self.surface.domain_u(),
@@ -150,6 +163,22 @@ impl<const D: usize, S: Surface<D>> Curve<D> for SurfaceCrossDerivative<D, S> {
         match self.along {
             Along::U => self.surface.deriv(t, self.at, k, 1),
             Along::V => self.surface.deriv(self.at, t, 1, k),
+        }
+    }
+
+    fn eval_into(&self, ts: &[f64], out: &mut [Point<D>]) {
+        self.deriv_into(ts, 0, out);
+    }
+
+    fn deriv_into(&self, ts: &[f64], k: usize, out: &mut [Point<D>]) {
+        assert_eq!(
+            ts.len(),
+            out.len(),
+            "parameter and output buffers differ in length"
+        );
+        match self.along {
+            Along::U => self.surface.deriv_grid_into(ts, &[self.at], k, 1, out),
+            Along::V => self.surface.deriv_grid_into(&[self.at], ts, 1, k, out),
         }
     }
 }

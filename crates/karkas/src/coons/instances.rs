@@ -154,7 +154,11 @@ impl<const D: usize> CoonsSurface<D> {
     ///
     /// `cross` gives `A_i` and `B_j`; without it they are the cross-derivatives of the
     /// not-a-knot (periodic in a closed direction) spline Gordon surface `G` of the network,
-    /// `A_i = G_u(u_i, .)`, `B_j = G_v(., v_j)`, which satisfy (11) by construction. In a
+    /// `A_i = G_u(u_i, .)`, `B_j = G_v(., v_j)`, which satisfy (11) by construction. The
+    /// composite surface is then `G` itself: the cardinal splines are cubic between the nodes,
+    /// so the piecewise Hermite operators reproduce them and the residual
+    /// `(I - P)(I - Q) G` of the Boolean sum vanishes. Give cross-derivatives to get anything
+    /// else (a surface with prescribed tangent planes along the curves). In a
     /// closed direction the first curve and its cross-derivative are repeated one period on
     /// (the piecewise Hermite family is local, so the seam is `C^1` like every other node).
     ///

@@ -26,7 +26,9 @@
 //!
 //! Omitted cross-derivative curves are derived from the network: `A_i = G_u(u_i, .)`,
 //! `B_j = G_v(., v_j)` for the not-a-knot (periodic when closed) spline Gordon surface `G`
-//! through the network, which satisfy (11) by Proposition 1 applied to `G`.
+//! through the network, which satisfy (11) by Proposition 1 applied to `G`. (The composite
+//! surface of these is `G` itself: the cardinal splines are cubic between nodes, so the
+//! piecewise Hermite Boolean sum reproduces them.)
 //!
 //! **Compatibility.** Every constructor checks (8) (which for the composite family is (11))
 //! at every pair of curves with a tolerance relative to the model size, and fails with

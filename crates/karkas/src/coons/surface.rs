@@ -222,6 +222,96 @@ impl<const D: usize> CoonsSurface<D> {
         reduce(self.v_family.domain(), self.closed_v, v)
     }
 
+    /// The partial derivative `d^(ku+kv) c / du^ku dv^kv` on the tensor grid `us x vs`, into
+    /// `out` (row-major, `u` outer), in
+    /// `O(NU (m n) + NV (m + n) + NU NV (nnz_u + nnz_v))`: the blending weights of every
+    /// sample line and the curve samples `f_i^(kv)(v_b)`, `g_j^(ku)(u_a)` are computed once
+    /// (the curves' batch evaluation), and (9) is regrouped as
+    /// `sum_i H^u_i f_i(v) + sum_j H^v_j(v) q_j(u)` with
+    /// `q_j(u) = g_j(u) - sum_i H^u_i(u) L^u_i(g_j)` formed once per `u` line, so each point
+    /// costs only the nonzero weights of its lines (8 for a composite Coons surface, `m + n`
+    /// for a Gordon surface).
+    ///
+    /// # Panics
+    /// When `out.len() != us.len() * vs.len()`.
+    pub fn deriv_grid_into(
+        &self,
+        us: &[f64],
+        vs: &[f64],
+        ku: usize,
+        kv: usize,
+        out: &mut [Point<D>],
+    ) {
+        assert_eq!(
+            out.len(),
+            us.len() * vs.len(),
+            "output buffer does not fit the grid"
+        );
+        let (m, n) = (self.v_curves.len(), self.u_curves.len());
+        let (nu, nv) = (us.len(), vs.len());
+        if nu == 0 || nv == 0 {
+            return;
+        }
+        let vr: Vec<f64> = vs.iter().map(|&v| self.reduce_v(v)).collect();
+        let ur: Vec<f64> = us.iter().map(|&u| self.reduce_u(u)).collect();
+        let sample = |curve: &CurveRef<D>, ts: &[f64], k: usize, out: &mut [Point<D>]| {
+            if k == 0 {
+                curve.eval_into(ts, out);
+            } else {
+                curve.deriv_into(ts, k, out);
+            }
+        };
+
+        // Per v sample: the v weights and the v-curve points.
+        let mut weights_v = vec![0.0; nv * n];
+        let ranges_v: Vec<_> = vr
+            .iter()
+            .zip(weights_v.chunks_exact_mut(n))
+            .map(|(&v, w)| self.v_family.eval_into(v, kv, w))
+            .collect();
+        let mut column = vec![Point::ZERO; nv.max(nu)];
+        let mut f_table = vec![Point::ZERO; nv * m];
+        for (i, f) in self.v_curves.iter().enumerate() {
+            sample(f, &vr, kv, &mut column[..nv]);
+            for (b, p) in column[..nv].iter().enumerate() {
+                f_table[b * m + i] = *p;
+            }
+        }
+        // Per u sample: the u-curve points.
+        let mut g_table = vec![Point::ZERO; nu * n];
+        for (j, g) in self.u_curves.iter().enumerate() {
+            sample(g, &ur, ku, &mut column[..nu]);
+            for (a, p) in column[..nu].iter().enumerate() {
+                g_table[a * n + j] = *p;
+            }
+        }
+
+        let mut weights_u = vec![0.0; m];
+        let mut q = vec![Point::ZERO; n];
+        for (a, (&u, out_row)) in ur.iter().zip(out.chunks_exact_mut(nv)).enumerate() {
+            let ru = self.u_family.eval_into(u, ku, &mut weights_u);
+            for (j, qj) in q.iter_mut().enumerate() {
+                let mut s = g_table[a * n + j];
+                for i in ru.clone() {
+                    s = s.add_scaled(-weights_u[i], self.corners[i * n + j]);
+                }
+                *qj = s;
+            }
+            for (b, p) in out_row.iter_mut().enumerate() {
+                let f_row = &f_table[b * m..(b + 1) * m];
+                let w_row = &weights_v[b * n..(b + 1) * n];
+                let mut s = Point::ZERO;
+                for i in ru.clone() {
+                    s = s.add_scaled(weights_u[i], f_row[i]);
+                }
+                for j in ranges_v[b].clone() {
+                    s = s.add_scaled(w_row[j], q[j]);
+                }
+                *p = s;
+            }
+        }
+    }
+
     /// The partial derivative of (9) at one point: every term differentiated.
     fn derivative_at(&self, u: f64, v: f64, ku: usize, kv: usize) -> Point<D> {
         let (u, v) = (self.reduce_u(u), self.reduce_v(v));
@@ -328,73 +418,7 @@ impl<const D: usize> Surface<D> for CoonsSurface<D> {
         self.derivative_at(u, v, ku, kv)
     }
 
-    /// Grid evaluation in `O(NU (m n) + NV (m + n) + NU NV (nnz_u + nnz_v))`: the blending
-    /// weights of every sample line and the curve samples `f_i(v_b)`, `g_j(u_a)` are computed
-    /// once (the curves' batch evaluation), and (9) is regrouped as
-    /// `sum_i H^u_i f_i(v) + sum_j H^v_j(v) q_j(u)` with `q_j(u) = g_j(u) - sum_i H^u_i(u) L^u_i(g_j)`
-    /// formed once per `u` line, so each point costs only the nonzero weights of its lines
-    /// (8 for a composite Coons surface, `m + n` for a Gordon surface).
     fn eval_grid_into(&self, us: &[f64], vs: &[f64], out: &mut [Point<D>]) {
-        assert_eq!(
-            out.len(),
-            us.len() * vs.len(),
-            "output buffer does not fit the grid"
-        );
-        let (m, n) = (self.v_curves.len(), self.u_curves.len());
-        let (nu, nv) = (us.len(), vs.len());
-        if nu == 0 || nv == 0 {
-            return;
-        }
-        let vr: Vec<f64> = vs.iter().map(|&v| self.reduce_v(v)).collect();
-        let ur: Vec<f64> = us.iter().map(|&u| self.reduce_u(u)).collect();
-
-        // Per v sample: the v weights and the v-curve points.
-        let mut weights_v = vec![0.0; nv * n];
-        let ranges_v: Vec<_> = vr
-            .iter()
-            .zip(weights_v.chunks_exact_mut(n))
-            .map(|(&v, w)| self.v_family.eval_into(v, 0, w))
-            .collect();
-        let mut column = vec![Point::ZERO; nv.max(nu)];
-        let mut f_table = vec![Point::ZERO; nv * m];
-        for (i, f) in self.v_curves.iter().enumerate() {
-            f.eval_into(&vr, &mut column[..nv]);
-            for (b, p) in column[..nv].iter().enumerate() {
-                f_table[b * m + i] = *p;
-            }
-        }
-        // Per u sample: the u-curve points.
-        let mut g_table = vec![Point::ZERO; nu * n];
-        for (j, g) in self.u_curves.iter().enumerate() {
-            g.eval_into(&ur, &mut column[..nu]);
-            for (a, p) in column[..nu].iter().enumerate() {
-                g_table[a * n + j] = *p;
-            }
-        }
-
-        let mut weights_u = vec![0.0; m];
-        let mut q = vec![Point::ZERO; n];
-        for (a, (&u, out_row)) in ur.iter().zip(out.chunks_exact_mut(nv)).enumerate() {
-            let ru = self.u_family.eval_into(u, 0, &mut weights_u);
-            for (j, qj) in q.iter_mut().enumerate() {
-                let mut s = g_table[a * n + j];
-                for i in ru.clone() {
-                    s = s.add_scaled(-weights_u[i], self.corners[i * n + j]);
-                }
-                *qj = s;
-            }
-            for (b, p) in out_row.iter_mut().enumerate() {
-                let f_row = &f_table[b * m..(b + 1) * m];
-                let w_row = &weights_v[b * n..(b + 1) * n];
-                let mut s = Point::ZERO;
-                for i in ru.clone() {
-                    s = s.add_scaled(weights_u[i], f_row[i]);
-                }
-                for j in ranges_v[b].clone() {
-                    s = s.add_scaled(w_row[j], q[j]);
-                }
-                *p = s;
-            }
-        }
+        self.deriv_grid_into(us, vs, 0, 0, out);
     }
 }

@@ -154,6 +154,12 @@ impl<const D: usize, C: Curve<D>> Curve<D> for WarpedCurve<D, C> {
     /// Faa di Bruno: `d^k/dv^k c(tau(v)) = sum_{m=1..k} c^(m)(tau) B_{k,m}(tau', tau'', ...)`
     /// with the partial Bell polynomials `B_{k,m}`.
     fn deriv(&self, v: f64, k: usize) -> Point<D> {
+        if self.warp.is_none() {
+            // tau is affine: d^k/dv^k c(tau) = length^k c^(k)(tau).
+            let length = self.own.length();
+            let scale = (0..k).fold(1.0, |p, _| p * length);
+            return self.inner.deriv(self.own.start + length * v, k) * scale;
+        }
         let mut tau = vec![0.0; k + 1];
         let mut weights = vec![0.0; self.weights_len()];
         self.inner_derivatives(v, &mut tau, &mut weights);
