@@ -391,3 +391,34 @@ fn bad_input_exits_2_naming_the_file_and_writes_nothing() {
     assert!(stderr(&o).contains("overwrite the input"));
     assert_eq!(std::fs::read_to_string(&u).unwrap(), before);
 }
+
+#[test]
+fn without_derivative_files_composite_is_the_spline_gordon_surface() {
+    let dir = tempfile::tempdir().unwrap();
+    let (u, v) = sheet_files(dir.path(), 1);
+    let out = |kind: &str| {
+        let path = dir.path().join(format!("{kind}.csv"));
+        let o = karkas(&[
+            "surface",
+            "coons",
+            "--kind",
+            kind,
+            "--u-curves",
+            s(&u),
+            "--v-curves",
+            s(&v),
+            "--samples",
+            "13,9",
+            "-o",
+            s(&path),
+        ]);
+        assert!(o.status.success(), "{}", stderr(&o));
+        read_csv(&path).1
+    };
+    let (composite, spline) = (out("composite"), out("gordon-spline"));
+    for (a, b) in composite.iter().zip(&spline) {
+        for c in 0..5 {
+            assert!((a[c] - b[c]).abs() < 1e-12, "{a:?} vs {b:?}");
+        }
+    }
+}

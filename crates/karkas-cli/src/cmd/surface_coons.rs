@@ -58,11 +58,12 @@ pub struct SurfaceCoonsArgs {
     #[arg(long, value_name = "V.csv")]
     v_curves: PathBuf,
     /// Cross-derivatives dS/dv along the u-curves (bicubic, composite): same format and
-    /// point counts as --u-curves, one vector per point [default: derived from the network].
+    /// point counts as --u-curves, one vector per point, per unit of the surface parameters
+    /// [default: those of the gordon-spline surface, which the result then equals].
     #[arg(long, value_name = "DU.csv")]
     u_derivs: Option<PathBuf>,
     /// Cross-derivatives dS/du along the v-curves (bicubic, composite): same format and
-    /// point counts as --v-curves [default: derived from the network].
+    /// point counts as --v-curves [default: those of the gordon-spline surface].
     #[arg(long, value_name = "DV.csv")]
     v_derivs: Option<PathBuf>,
     /// Samples NU,NV, uniform over the domain, ends included

@@ -43,7 +43,7 @@
 //! curve evaluations. A grid `NU x NV` ([`Surface::eval_grid_into`](crate::Surface)): each
 //! curve is sampled once per line of its direction, blending weights once per line, then
 //! `O(nnz_u + nnz_v)` per point (8 for the composite surface). Families: see
-//! [`blending`](self::BlendingFamily).
+//! [`BlendingFamily`].
 //!
 //! Hand-written: no maintained crate offers Coons/Gordon surfaces over arbitrary curve types
 //! and blending schemes; the cubic-spline cardinal functions are evaluated with the

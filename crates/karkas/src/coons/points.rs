@@ -120,7 +120,7 @@ impl<const D: usize> PointNetwork<D> {
         let size = model_size(v_curves.iter().chain(u_curves).flatten());
         let v_family = family("v-curve", v_curves, size)?;
         let u_family = family("u-curve", u_curves, size)?;
-        let crossings = find_crossings(&v_family, &u_family, tolerance * size)?;
+        let crossings = find_crossings(&v_family, &u_family, tolerance * size, size)?;
         let (m, n) = (v_curves.len(), u_curves.len());
 
         // Rotate closed curves to start at their crossing with curve 0 of the other family.
@@ -434,8 +434,11 @@ fn find_crossings<const D: usize>(
     v: &Family<'_, D>,
     u: &Family<'_, D>,
     tolerance: f64,
+    size: f64,
 ) -> Result<Vec<(usize, usize)>> {
-    let cell = tolerance.max(f64::MIN_POSITIVE);
+    // A cell of the tolerance, but not so small that coordinates overflow the cell index
+    // (`size` is the model size the tolerance is relative to).
+    let cell = tolerance.max(size * 1e-12).max(f64::MIN_POSITIVE);
     let key = |p: &Point<D>| -> [i64; D] { core::array::from_fn(|c| (p[c] / cell).floor() as i64) };
     let mut grid: HashMap<[i64; D], Vec<(usize, usize)>> = HashMap::new();
     for (j, curve) in u.curves.iter().enumerate() {
@@ -458,7 +461,13 @@ fn find_crossings<const D: usize>(
                 }
                 for &(j, q) in grid.get(&cell_key).into_iter().flatten() {
                     if u.curves[j][q].distance(*p) <= tolerance {
-                        found[i * n + j].push((k, q));
+                        let hits = &mut found[i * n + j];
+                        hits.push((k, q));
+                        if hits.len() > 1 {
+                            // Stop at once: degenerate data (many coinciding points) would
+                            // otherwise cost a product of the point counts.
+                            return Err(meet_twice(i, j, hits[0], hits[1], v.name, u.name));
+                        }
                     }
                 }
             }
@@ -479,18 +488,31 @@ fn find_crossings<const D: usize>(
                          within {tolerance:.3e})"
                     ),
                 }),
-                [a, b, ..] => Err(Error::NetworkCrossing {
-                    v_curve,
-                    u_curve,
-                    problem: format!(
-                        "they meet more than once: point {} of the {} and point {} of the {} \
-                         and also point {} and point {}",
-                        a.0, v.name, a.1, u.name, b.0, b.1
-                    ),
-                }),
+                [a, b, ..] => Err(meet_twice(v_curve, u_curve, *a, *b, v.name, u.name)),
             }
         })
         .collect()
+}
+
+/// The error for a pair of curves with two crossings `a` and `b` (point indices on the
+/// v-curve and the u-curve).
+fn meet_twice(
+    v_curve: usize,
+    u_curve: usize,
+    a: (usize, usize),
+    b: (usize, usize),
+    v_name: &str,
+    u_name: &str,
+) -> Error {
+    Error::NetworkCrossing {
+        v_curve,
+        u_curve,
+        problem: format!(
+            "they meet more than once: point {} of the {v_name} and point {} of the {u_name}, \
+             and also point {} and point {}",
+            a.0, a.1, b.0, b.1
+        ),
+    }
 }
 
 /// Checks that the crossing parameters increase along every curve: `params[i * n + j]` along

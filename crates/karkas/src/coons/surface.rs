@@ -118,6 +118,11 @@ impl<const D: usize> CoonsSurface<D> {
                 "a Coons surface needs at least one blending function in each direction".into(),
             ));
         }
+        if u_family.functionals().len() != m || v_family.functionals().len() != n {
+            return Err(Error::InvalidInput(
+                "a blending family must have one functional per function".into(),
+            ));
+        }
         if v_curves.len() != m || u_curves.len() != n {
             return Err(Error::InvalidInput(format!(
                 "a Coons surface needs one v-curve per u-blending function ({m}) and one u-curve \

@@ -17,7 +17,8 @@ use core::ops::Range;
 /// `start + j (end - start)/count` (closed, period `end - start`).
 ///
 /// Evaluation costs `O(count)` per parameter (one LL segment per cardinal function); the
-/// cardinal curves are built once with `count` `O(count)` solves.
+/// cardinal curves are built once with `count` `O(count)` solves and kept, `O(count^2)`
+/// memory: meant for curve networks (tens to hundreds of curves).
 #[derive(Clone, Debug, PartialEq)]
 pub struct LlBlending {
     domain: Interval,
