@@ -30,6 +30,35 @@
 //! surface of these is `G` itself: the cardinal splines are cubic between nodes, so the
 //! piecewise Hermite Boolean sum reproduces them.)
 //!
+//! ```
+//! use karkas::coons::{curve_ref, CoonsSurface, CurveNetwork, NetworkAxis, PolylineCurve};
+//! use karkas::{Point3, Surface};
+//! // Four straight borders of a twisted quadrilateral: v-curves at u = 0, 1; u-curves at v = 0, 1.
+//! let p = |x: f64, y: f64, z: f64| Point3::new([x, y, z]);
+//! let edge = |a: Point3, b: Point3| curve_ref(PolylineCurve::new(&[a, b], &[0.0, 1.0]).unwrap());
+//! let (p00, p10, p01, p11) = (p(0., 0., 0.), p(1., 0., 0.), p(0., 1., 0.), p(1., 1., 1.));
+//! let unit = NetworkAxis::open(vec![0.0, 1.0])?;
+//! let network = CurveNetwork::new(
+//!     unit.clone(),
+//!     vec![edge(p00, p01), edge(p10, p11)],
+//!     unit,
+//!     vec![edge(p00, p10), edge(p01, p11)],
+//! )?;
+//! let coons = CoonsSurface::bilinear(&network, 1e-9)?;
+//! // The bilinear Coons surface of straight borders is the hyperbolic paraboloid z = u v.
+//! assert!((coons.eval(0.5, 0.5)[2] - 0.25).abs() < 1e-15);
+//! // A border that misses a corner is an error naming the pair.
+//! let bad = CurveNetwork::new(
+//!     NetworkAxis::open(vec![0.0, 1.0])?,
+//!     vec![edge(p00, p01), edge(p10, p(1., 1., 2.))],
+//!     NetworkAxis::open(vec![0.0, 1.0])?,
+//!     vec![edge(p00, p10), edge(p01, p11)],
+//! )?;
+//! let error = CoonsSurface::bilinear(&bad, 1e-9).unwrap_err().to_string();
+//! assert!(error.starts_with("v-curve 1 and u-curve 1 disagree at (u=1, v=1)"));
+//! # Ok::<(), karkas::Error>(())
+//! ```
+//!
 //! **Compatibility.** Every constructor checks (8) (which for the composite family is (11))
 //! at every pair of curves with a tolerance relative to the model size, and fails with
 //! [`Error::IncompatibleCurves`](crate::Error::IncompatibleCurves) naming the two curves, the
