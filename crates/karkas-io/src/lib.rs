@@ -11,6 +11,7 @@
 //!   `j,p,x,y,z` (across);
 //! - [`pointset`]: a point set in space from OBJ vertices or CSV columns `x,y,z`;
 //! - [`mask`]: a set of grid cells as CSV rows `i,j` (e.g. the entries a variation keeps).
+//! - [`network`]: a family of curves of a curve network as CSV rows `curve,x,y,z`.
 //!
 //! Writing (always atomically, see [`write::write_atomic`]):
 //! - [`write`](mod@write): sampled curves and surfaces, discrete curves, grids, indexed grids
@@ -31,6 +32,7 @@ pub mod error;
 pub mod format;
 pub mod grid;
 pub mod mask;
+pub mod network;
 pub mod obj;
 pub mod painter;
 pub mod png;

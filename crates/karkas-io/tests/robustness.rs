@@ -4,6 +4,7 @@ use std::path::Path;
 
 use karkas_io::airfoil::parse_airfoil;
 use karkas_io::grid::parse_grid;
+use karkas_io::network::parse_curve_family;
 use karkas_io::points::parse_curve_points;
 use karkas_io::skeleton::{parse_across_curves, parse_along_curves};
 
@@ -43,6 +44,8 @@ fn random_text_never_panics() {
         let _ = parse_grid(&text, Path::new("r.csv"));
         let _ = parse_along_curves(&text, Path::new("f.csv"));
         let _ = parse_across_curves(&text, Path::new("g.csv"));
+        let _ = parse_curve_family(&text, Path::new("r.csv"));
+        let _ = parse_curve_family(&format!("curve,x,y,z\n{text}"), Path::new("r.csv"));
     }
     // Some texts are valid, so the readers were not simply rejecting everything.
     assert!(parsed > 0);

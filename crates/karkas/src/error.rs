@@ -277,6 +277,45 @@ pub enum Error {
         /// How much the columns' sums change together.
         columns_change: f64,
     },
+    /// Boundary data of a Coons surface that violates the compatibility conditions (8) / (11)
+    /// of seed 001: two curves, one of each family, disagree where they meet (a point, or a
+    /// derivative there) by more than the tolerance. Produced by every constructor of
+    /// [`CoonsSurface`](crate::coons::CoonsSurface) (e.g.
+    /// [`CoonsSurface::gordon`](crate::coons::CoonsSurface::gordon)).
+    #[error(
+        "{first} and {second} disagree at (u={u}, v={v}): {condition} differ by {mismatch:.3e} \
+         (tolerance {tolerance:.3e})"
+    )]
+    IncompatibleCurves {
+        /// The curve of the family along `v` (a line `u = const` or its cross-derivative), named
+        /// as the constructor's arguments name it, e.g. `"v-curve 2"`.
+        first: String,
+        /// The curve of the family along `u`, e.g. `"u-curve 1"`.
+        second: String,
+        /// The surface parameter `u` of the intersection.
+        u: f64,
+        /// The surface parameter `v` of the intersection.
+        v: f64,
+        /// The quantities compared, e.g. `"the points"` or `"d/du of u-curve 1 and the
+        /// cross-derivative curve"`.
+        condition: String,
+        /// The size of the disagreement (Euclidean norm).
+        mismatch: f64,
+        /// The largest disagreement allowed.
+        tolerance: f64,
+    },
+    /// A curve network given as point lists whose curves do not cross as a network must: a
+    /// pair without a common point, a pair meeting twice, or crossings out of order. Produced
+    /// by [`PointNetwork::new`](crate::coons::PointNetwork::new).
+    #[error("v-curve {v_curve} and u-curve {u_curve}: {problem}")]
+    NetworkCrossing {
+        /// Index of the curve along `v` (a line `u = const`), 0-based.
+        v_curve: usize,
+        /// Index of the curve along `u` (a line `v = const`), 0-based.
+        u_curve: usize,
+        /// What is wrong.
+        problem: String,
+    },
 }
 
 /// `Result` with [`Error`].

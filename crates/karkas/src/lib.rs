@@ -11,6 +11,9 @@
 //! - [`ll`]: the LL-approximation of curves and surfaces (Aulchenko, Latypov, Nikulichev):
 //!   oscillation-free, monotone, `C^L` curves and surfaces on a uniform parameter grid, and
 //!   their interpolating variant, and the paper's surface variation method;
+//! - [`coons`]: generalized Coons surfaces (Chashnikov): the Boolean sum over any blending
+//!   families and curves, with the bilinear and bicubic Coons, Gordon (Lagrange and
+//!   cubic-spline blending) and composite Coons surfaces as instances;
 //! - [`section`]: plane sections and isolines of any [`Surface`];
 //! - [`dps`]: discrete periodic splines with vector coefficients (Malozemov, Khorokhonov,
 //!   Chashnikov): closed discrete curves from poles or through nodes, and closed tubes;
@@ -30,6 +33,7 @@
 //! assert!(curve.eval(d.end).distance(pts[3]) < 1e-15);
 //! ```
 
+pub mod coons;
 pub mod core;
 pub mod dps;
 mod error;

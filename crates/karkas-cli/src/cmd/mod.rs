@@ -6,6 +6,7 @@ pub mod hausdorff;
 mod output;
 pub mod section;
 mod surface_bicubic;
+mod surface_coons;
 mod surface_dps_tube;
 mod surface_implicit;
 mod surface_ll;
@@ -43,6 +44,8 @@ pub enum SurfaceCommand {
     Bicubic(surface_bicubic::SurfaceBicubicArgs),
     /// A grid of nodes on an implicit surface along its lines of curvature.
     Implicit(surface_implicit::SurfaceImplicitArgs),
+    /// Coons, Gordon or composite Coons surface through a network of curves.
+    Coons(surface_coons::SurfaceCoonsArgs),
 }
 
 impl SurfaceCommand {
@@ -53,6 +56,7 @@ impl SurfaceCommand {
             SurfaceCommand::DpsTube(args) => surface_dps_tube::run(&args),
             SurfaceCommand::Bicubic(args) => surface_bicubic::run(&args),
             SurfaceCommand::Implicit(args) => surface_implicit::run(&args),
+            SurfaceCommand::Coons(args) => surface_coons::run(&args),
         }
     }
 }

@@ -1,6 +1,8 @@
 //! `karkas demo`: the examples of the papers, reproduced on built-in data, written to a folder
 //! with pictures, meshes and the data itself, and a summary table on the terminal.
 
+mod coons;
+mod coons_data;
 mod data;
 mod dps;
 mod ll;
@@ -40,6 +42,7 @@ pub fn run(args: &DemoArgs) -> Result<()> {
     let mut findings = ll::run(&args.out)?;
     findings.extend(dps::run(&args.out)?);
     findings.extend(param::run(&args.out)?);
+    findings.extend(coons::run(&args.out)?);
     print_summary(&findings, &args.out, started.elapsed().as_secs_f64());
     Ok(())
 }

@@ -1,0 +1,218 @@
+//! `karkas surface coons`: Coons, Gordon and composite Coons surfaces through a network of
+//! curves given as point lists (seed 001, METHODS.md §2).
+//!
+//! The curves are interpolated and parameterized by `karkas::coons::PointNetwork` (not-a-knot
+//! cubic splines in the point-index parameter, warped so that the crossings sit at common
+//! node values in `[0, 1]`); the surface's parameters `u`, `v` are those node values.
+
+use super::curve_ll::{report, MAX_SAMPLES};
+use super::output::ensure_distinct;
+use crate::samples::{default_surface_samples, parse_pair};
+use anyhow::{anyhow, bail, Result};
+use clap::{Args, ValueEnum};
+use karkas::coons::{CoonsSurface, CrossDerivatives, CurveFit, PointNetwork, SplineEnds};
+use karkas::{Error, Point3, Surface};
+use karkas_io::network::{read_curve_family, CurveFamily};
+use karkas_io::obj::write_surface_obj;
+use karkas_io::write::write_surface_csv;
+use karkas_io::OutputFormat;
+use std::path::{Path, PathBuf};
+
+/// How far apart (relative to the model size) a point of a u-curve and a point of a v-curve
+/// may be and still be their crossing.
+pub const CROSSING_TOLERANCE: f64 = 1e-6;
+
+/// The tolerance of the compatibility conditions (8) / (11), relative to the model size (per
+/// node spacing for derivatives): cross-derivative files are interpolated like the curves,
+/// so they agree with the curves' own tangents only to the interpolation error.
+pub const COMPATIBILITY_TOLERANCE: f64 = 1e-4;
+
+/// Which surface to build.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum Kind {
+    /// Bilinear Coons: two u-curves and two v-curves.
+    Bilinear,
+    /// Bicubic Coons: two u-curves and two v-curves and the cross-derivatives along them.
+    Bicubic,
+    /// Gordon surface with Lagrange blending.
+    Gordon,
+    /// Gordon surface with cubic-spline blending (not-a-knot; periodic in a closed direction).
+    GordonSpline,
+    /// Composite Coons surface (C^1, piecewise bicubic) with cross-derivative curves.
+    Composite,
+}
+
+/// Arguments of `karkas surface coons`.
+#[derive(Debug, Args)]
+pub struct SurfaceCoonsArgs {
+    /// The surface to build.
+    #[arg(long, value_enum)]
+    kind: Kind,
+    /// The curves running along u (the lines v = const), in the order of increasing v: CSV
+    /// with header curve,x,y,z (curves numbered from 0, each curve's points in order; a curve
+    /// whose last point repeats its first is closed).
+    #[arg(long, value_name = "U.csv")]
+    u_curves: PathBuf,
+    /// The curves running along v (the lines u = const), in the order of increasing u; same
+    /// format. Every v-curve must share exactly one point with every u-curve.
+    #[arg(long, value_name = "V.csv")]
+    v_curves: PathBuf,
+    /// Cross-derivatives dS/dv along the u-curves (bicubic, composite): same format and
+    /// point counts as --u-curves, one vector per point, per unit of the surface parameters
+    /// [default: those of the gordon-spline surface, which the result then equals].
+    #[arg(long, value_name = "DU.csv")]
+    u_derivs: Option<PathBuf>,
+    /// Cross-derivatives dS/du along the v-curves (bicubic, composite): same format and
+    /// point counts as --v-curves [default: those of the gordon-spline surface].
+    #[arg(long, value_name = "DV.csv")]
+    v_derivs: Option<PathBuf>,
+    /// Samples NU,NV, uniform over the domain, ends included
+    /// [default: 4 per point of the longest curve in each direction, at least 50].
+    #[arg(long, value_parser = parse_pair)]
+    samples: Option<(usize, usize)>,
+    /// Output file: .csv (u,v,x,y,z) or .obj (triangle mesh).
+    #[arg(short, long)]
+    output: PathBuf,
+}
+
+/// Runs `karkas surface coons`.
+pub fn run(args: &SurfaceCoonsArgs) -> Result<()> {
+    let format = OutputFormat::from_path(&args.output, &[OutputFormat::Csv, OutputFormat::Obj])?;
+    if args
+        .samples
+        .is_some_and(|(nu, nv)| nu.saturating_mul(nv) > MAX_SAMPLES)
+    {
+        bail!("--samples: at most {MAX_SAMPLES} samples can be written");
+    }
+    if args.u_derivs.is_some() != args.v_derivs.is_some() {
+        bail!("--u-derivs and --v-derivs go together: give both or neither");
+    }
+    let with_derivs = args.u_derivs.is_some();
+    if with_derivs && !matches!(args.kind, Kind::Bicubic | Kind::Composite) {
+        bail!("--u-derivs and --v-derivs are used only by --kind bicubic and composite");
+    }
+    let inputs = [&args.u_curves, &args.v_curves]
+        .into_iter()
+        .chain(args.u_derivs.as_ref())
+        .chain(args.v_derivs.as_ref());
+    for input in inputs {
+        ensure_distinct(input, &args.output)?;
+    }
+
+    let u_family = read_family(&args.u_curves)?;
+    let v_family = read_family(&args.v_curves)?;
+    let files = Files {
+        u: &args.u_curves,
+        v: &args.v_curves,
+        u_family: &u_family,
+        v_family: &v_family,
+    };
+    let network = PointNetwork::new(
+        &v_family.curves,
+        &u_family.curves,
+        CurveFit::CubicSpline,
+        CROSSING_TOLERANCE,
+    )
+    .map_err(|e| files.explain(e))?;
+    let cross = match (&args.u_derivs, &args.v_derivs) {
+        (Some(du), Some(dv)) => {
+            let (du_family, dv_family) = (read_family(du)?, read_family(dv)?);
+            let derivs = network
+                .cross_derivatives(&dv_family.curves, &du_family.curves)
+                .map_err(|e| anyhow!("{}, {}: {e}", du.display(), dv.display()))?;
+            Some(derivs)
+        }
+        _ => None,
+    };
+    let surface = build(args.kind, &network, cross.as_ref()).map_err(|e| files.explain(e))?;
+
+    let longest = |f: &CurveFamily| f.curves.iter().map(Vec::len).max().unwrap_or(0);
+    let (nu, nv) = args.samples.unwrap_or_else(|| {
+        (
+            default_surface_samples(longest(&u_family)),
+            default_surface_samples(longest(&v_family)),
+        )
+    });
+    let mut us = vec![0.0; nu];
+    let mut vs = vec![0.0; nv];
+    let mut samples = vec![Point3::ZERO; nu * nv];
+    surface.sample_grid_into(&mut us, &mut vs, &mut samples);
+    match format {
+        OutputFormat::Obj => write_surface_obj(&args.output, nu, nv, &samples)?,
+        _ => write_surface_csv(&args.output, &us, &vs, &samples)?,
+    }
+    report(&args.output, nu * nv);
+    Ok(())
+}
+
+/// The surface of `kind` over the network.
+fn build(
+    kind: Kind,
+    network: &PointNetwork<3>,
+    cross: Option<&CrossDerivatives<3>>,
+) -> karkas::Result<CoonsSurface<3>> {
+    let net = network.network();
+    let tol = COMPATIBILITY_TOLERANCE;
+    match kind {
+        Kind::Bilinear => CoonsSurface::bilinear(net, tol),
+        Kind::Bicubic => CoonsSurface::bicubic(net, cross, tol),
+        Kind::Gordon => CoonsSurface::gordon(net, tol),
+        Kind::GordonSpline => CoonsSurface::gordon_spline(net, SplineEnds::NotAKnot, tol),
+        Kind::Composite => CoonsSurface::composite(net, cross, tol),
+    }
+}
+
+/// Reads a curve family, refusing curves too short to interpolate (named by their line).
+fn read_family(path: &Path) -> Result<CurveFamily> {
+    let family = read_curve_family(path)?;
+    for (k, (curve, line)) in family.curves.iter().zip(&family.first_lines).enumerate() {
+        if curve.len() < 3 {
+            bail!(
+                "{}:{line}: curve {k} has {} point{}; at least 3 are needed",
+                path.display(),
+                curve.len(),
+                if curve.len() == 1 { "" } else { "s" }
+            );
+        }
+    }
+    Ok(family)
+}
+
+/// The input files, to put library errors about curves in terms of files and lines.
+struct Files<'a> {
+    u: &'a Path,
+    v: &'a Path,
+    u_family: &'a CurveFamily,
+    v_family: &'a CurveFamily,
+}
+
+impl Files<'_> {
+    /// `path:line (which curve)` for curve `k` of a family.
+    fn at(&self, v_family: bool, k: usize) -> String {
+        let (path, family, name) = if v_family {
+            (self.v, self.v_family, "v-curve")
+        } else {
+            (self.u, self.u_family, "u-curve")
+        };
+        match family.first_lines.get(k) {
+            Some(line) => format!("{}:{line} ({name} {k})", path.display()),
+            None => format!("{} ({name} {k})", path.display()),
+        }
+    }
+
+    /// A library error as one line naming the files (and lines) at fault.
+    fn explain(&self, e: Error) -> anyhow::Error {
+        match e {
+            Error::NetworkCrossing {
+                v_curve,
+                u_curve,
+                problem,
+            } => anyhow!(
+                "{} and {}: {problem}",
+                self.at(true, v_curve),
+                self.at(false, u_curve)
+            ),
+            other => anyhow!("{}, {}: {other}", self.u.display(), self.v.display()),
+        }
+    }
+}

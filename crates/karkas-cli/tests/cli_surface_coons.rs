@@ -1,0 +1,424 @@
+//! The CLI contract of `karkas surface coons`: options, the `curve,x,y,z` inputs, the `u,v`
+//! parameters of the output, and exit code 2 with one line naming the file (and line) and no
+//! output on bad input.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn karkas(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_karkas"))
+        .args(args)
+        .output()
+        .expect("the karkas binary runs")
+}
+
+fn s(p: &Path) -> &str {
+    p.to_str().unwrap()
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+/// The sheet `(x, y, 0.3 sin x cos y)`.
+fn sheet(x: f64, y: f64) -> [f64; 3] {
+    [x, y, 0.3 * x.sin() * y.cos()]
+}
+
+/// A curve family as `curve,x,y,z` text: curve `k` is `f(k, t)` at `t = 0, 0.1, .., 2`.
+fn family(count: usize, f: impl Fn(usize, f64) -> [f64; 3]) -> String {
+    let mut text = String::from("curve,x,y,z\n");
+    for k in 0..count {
+        for q in 0..=20 {
+            let p = f(k, q as f64 / 10.0);
+            text.push_str(&format!("{k},{},{},{}\n", p[0], p[1], p[2]));
+        }
+    }
+    text
+}
+
+/// The network of the sheet: u-curves at y = 0, 1, 2 (along x), v-curves at x = 0, 1, 2
+/// (`spacing` = 1), or just the borders (`spacing` = 2).
+fn sheet_files(dir: &Path, spacing: usize) -> (PathBuf, PathBuf) {
+    let count = 2 / spacing + 1;
+    let at = |k: usize| (k * spacing) as f64;
+    let u = dir.join("u.csv");
+    let v = dir.join("v.csv");
+    std::fs::write(&u, family(count, |k, t| sheet(t, at(k)))).unwrap();
+    std::fs::write(&v, family(count, |k, t| sheet(at(k), t))).unwrap();
+    (u, v)
+}
+
+fn read_csv(path: &Path) -> (Vec<String>, Vec<Vec<f64>>) {
+    let text = std::fs::read_to_string(path).unwrap();
+    let mut lines = text.lines();
+    let header = lines
+        .next()
+        .unwrap()
+        .split(',')
+        .map(str::to_owned)
+        .collect();
+    let rows = lines
+        .map(|l| l.split(',').map(|f| f.parse().unwrap()).collect())
+        .collect();
+    (header, rows)
+}
+
+#[test]
+fn every_kind_writes_a_surface_through_the_network() {
+    let dir = tempfile::tempdir().unwrap();
+    let (u3, v3) = sheet_files(dir.path(), 1);
+    let sub = dir.path().join("borders");
+    std::fs::create_dir(&sub).unwrap();
+    let (u2, v2) = sheet_files(&sub, 2);
+    for (kind, u, v) in [
+        ("bilinear", &u2, &v2),
+        ("bicubic", &u2, &v2),
+        ("gordon", &u3, &v3),
+        ("gordon-spline", &u3, &v3),
+        ("composite", &u3, &v3),
+    ] {
+        let out = dir.path().join(format!("{kind}.csv"));
+        let o = karkas(&[
+            "surface",
+            "coons",
+            "--kind",
+            kind,
+            "--u-curves",
+            s(u),
+            "--v-curves",
+            s(v),
+            "--samples",
+            "21,11",
+            "-o",
+            s(&out),
+        ]);
+        assert!(o.status.success(), "{kind}: {}", stderr(&o));
+        let (header, rows) = read_csv(&out);
+        assert_eq!(header, ["u", "v", "x", "y", "z"]);
+        assert_eq!(rows.len(), 21 * 11);
+        // u outer, v inner, both over [0, 1]: the curves' point index, normalised.
+        assert_eq!(&rows[0][..2], &[0.0, 0.0]);
+        assert_eq!(&rows[1][..2], &[0.0, 0.1]);
+        assert_eq!(&rows[11][..2], &[0.05, 0.0]);
+        assert_eq!(&rows[230][..2], &[1.0, 1.0]);
+        // The borders are the input curves: v = 0 is u-curve 0 (y = 0), u = 1 is the last
+        // v-curve (x = 2), at their points (every other sample).
+        for a in (0..21).step_by(2) {
+            let row = &rows[a * 11];
+            let want = sheet(a as f64 / 10.0, 0.0);
+            for c in 0..3 {
+                assert!((row[2 + c] - want[c]).abs() < 1e-12, "{kind}: {row:?}");
+            }
+        }
+        for b in 0..11 {
+            let row = &rows[20 * 11 + b];
+            let want = sheet(2.0, b as f64 / 5.0);
+            for c in 0..3 {
+                assert!((row[2 + c] - want[c]).abs() < 1e-12, "{kind}: {row:?}");
+            }
+        }
+    }
+}
+
+#[test]
+fn obj_output_and_cross_derivative_files() {
+    let dir = tempfile::tempdir().unwrap();
+    let (u, v) = sheet_files(dir.path(), 1);
+    // dS/dv along the u-curves and dS/du along the v-curves, per unit of the surface's
+    // parameters (which run over 0..2 in y and x: a factor 2).
+    let du = dir.path().join("du.csv");
+    let dv = dir.path().join("dv.csv");
+    std::fs::write(
+        &du,
+        family(3, |k, t| [0.0, 2.0, -0.6 * t.sin() * (k as f64).sin()]),
+    )
+    .unwrap();
+    std::fs::write(
+        &dv,
+        family(3, |k, t| [2.0, 0.0, 0.6 * (k as f64).cos() * t.cos()]),
+    )
+    .unwrap();
+    let out = dir.path().join("c.obj");
+    let o = karkas(&[
+        "surface",
+        "coons",
+        "--kind",
+        "composite",
+        "--u-curves",
+        s(&u),
+        "--v-curves",
+        s(&v),
+        "--u-derivs",
+        s(&du),
+        "--v-derivs",
+        s(&dv),
+        "--samples",
+        "9,7",
+        "-o",
+        s(&out),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let mesh = std::fs::read_to_string(&out).unwrap();
+    assert_eq!(mesh.lines().filter(|l| l.starts_with("v ")).count(), 63);
+    assert_eq!(
+        mesh.lines().filter(|l| l.starts_with("f ")).count(),
+        2 * 8 * 6
+    );
+}
+
+#[test]
+fn closed_curves_make_a_closed_surface() {
+    // A tube: 3 closed frames (v-curves, last point repeating the first), 4 stringers.
+    let dir = tempfile::tempdir().unwrap();
+    let tau = std::f64::consts::TAU;
+    let ring = |x: f64, a: f64| [x, (1.0 + 0.1 * x) * a.cos(), (1.0 + 0.1 * x) * a.sin()];
+    let mut frames = String::from("curve,x,y,z\n");
+    for k in 0..3 {
+        for q in 0..=16 {
+            let p = ring(k as f64, tau * (q % 16) as f64 / 16.0);
+            frames.push_str(&format!("{k},{},{},{}\n", p[0], p[1], p[2]));
+        }
+    }
+    let mut stringers = String::from("curve,x,y,z\n");
+    for j in 0..4 {
+        for q in 0..=10 {
+            let p = ring(q as f64 / 5.0, tau * j as f64 / 4.0);
+            stringers.push_str(&format!("{j},{},{},{}\n", p[0], p[1], p[2]));
+        }
+    }
+    let u = dir.path().join("stringers.csv");
+    let v = dir.path().join("frames.csv");
+    std::fs::write(&u, stringers).unwrap();
+    std::fs::write(&v, frames).unwrap();
+    let out = dir.path().join("tube.csv");
+    let o = karkas(&[
+        "surface",
+        "coons",
+        "--kind",
+        "gordon-spline",
+        "--u-curves",
+        s(&u),
+        "--v-curves",
+        s(&v),
+        "--samples",
+        "5,9",
+        "-o",
+        s(&out),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let (_, rows) = read_csv(&out);
+    // v runs over one period [0, 1]: the last sample of each u line is the first again.
+    for a in 0..5 {
+        let (first, last) = (&rows[a * 9], &rows[a * 9 + 8]);
+        assert_eq!((first[1], last[1]), (0.0, 1.0));
+        for c in 2..5 {
+            assert!((first[c] - last[c]).abs() < 1e-12);
+        }
+    }
+    // Bilinear Coons surfaces need open curves.
+    let o = karkas(&[
+        "surface",
+        "coons",
+        "--kind",
+        "bilinear",
+        "--u-curves",
+        s(&u),
+        "--v-curves",
+        s(&v),
+        "-o",
+        s(&out),
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+}
+
+/// Runs a failing command: exit code 2, one line containing every needle, `out` untouched.
+fn assert_rejected(args: &[&str], needles: &[&str], out: &Path) {
+    let o = karkas(args);
+    assert_eq!(o.status.code(), Some(2), "args {args:?}: {}", stderr(&o));
+    let err = stderr(&o);
+    assert_eq!(
+        err.trim_end().lines().count(),
+        1,
+        "one line expected: {err}"
+    );
+    for needle in needles {
+        assert!(err.contains(needle), "'{needle}' not in: {err}");
+    }
+    assert_eq!(std::fs::read_to_string(out).unwrap(), "keep me");
+}
+
+#[test]
+fn bad_input_exits_2_naming_the_file_and_writes_nothing() {
+    let dir = tempfile::tempdir().unwrap();
+    let (u, v) = sheet_files(dir.path(), 1);
+    let out = dir.path().join("out.csv");
+    std::fs::write(&out, "keep me").unwrap();
+    let run = |kind: &str, u: &Path, v: &Path, extra: &[&str], needles: &[&str]| {
+        let mut args = vec![
+            "surface",
+            "coons",
+            "--kind",
+            kind,
+            "--u-curves",
+            s(u),
+            "--v-curves",
+            s(v),
+            "-o",
+            s(&out),
+        ];
+        args.extend_from_slice(extra);
+        assert_rejected(&args, needles, &out);
+    };
+    let bad = |name: &str, text: &str| {
+        let p = dir.path().join(name);
+        std::fs::write(&p, text).unwrap();
+        p
+    };
+    // A malformed file: named with its line.
+    let header = bad("header.csv", "curve,x,y\n0,1,2\n");
+    run(
+        "gordon",
+        &header,
+        &v,
+        &[],
+        &["header.csv:1:", "no column 'z'"],
+    );
+    let nan = bad("nan.csv", "curve,x,y,z\n0,0,0,0\n0,1,nan,0\n0,2,0,0\n");
+    run("gordon", &u, &nan, &[], &["nan.csv:3:", "non-finite"]);
+    // A curve too short to interpolate: named by its first line.
+    let short = bad(
+        "short.csv",
+        &(family(2, |k, t| sheet(t, k as f64)) + "2,0,2,0\n2,2,2,0\n"),
+    );
+    run(
+        "gordon",
+        &short,
+        &v,
+        &[],
+        &["short.csv:44:", "curve 2 has 2 points"],
+    );
+    // u-curve 1 lifted off the network: the pair is named with both files and lines.
+    let lifted = bad(
+        "lifted.csv",
+        &family(3, |k, t| {
+            let mut p = sheet(t, k as f64);
+            if k == 1 {
+                p[2] += 0.01;
+            }
+            p
+        }),
+    );
+    run(
+        "gordon",
+        &lifted,
+        &v,
+        &[],
+        &[
+            "v.csv:2 (v-curve 0) and ",
+            "lifted.csv:23 (u-curve 1): no common point",
+        ],
+    );
+    // Bilinear needs two curves per direction.
+    run(
+        "bilinear",
+        &u,
+        &v,
+        &[],
+        &["two open v-curves and two open u-curves"],
+    );
+    // Cross-derivatives: only for bicubic and composite, both files together, and they
+    // must agree with the curves' own tangents.
+    let zeros = bad("zeros.csv", &family(3, |_, _| [0.0, 0.0, 0.0]));
+    run(
+        "gordon",
+        &u,
+        &v,
+        &["--u-derivs", s(&zeros), "--v-derivs", s(&zeros)],
+        &["only by --kind bicubic and composite"],
+    );
+    run(
+        "composite",
+        &u,
+        &v,
+        &["--u-derivs", s(&zeros)],
+        &["--u-derivs and --v-derivs go together"],
+    );
+    run(
+        "composite",
+        &u,
+        &v,
+        &["--u-derivs", s(&zeros), "--v-derivs", s(&zeros)],
+        &[
+            "u.csv, ",
+            "v.csv: ",
+            "disagree at",
+            "cross-derivative curve",
+        ],
+    );
+    // Unknown kind, unknown extension, output equal to an input.
+    run("coons", &u, &v, &[], &["invalid value 'coons'"]);
+    let svg = dir.path().join("out.svg");
+    let o = karkas(&[
+        "surface",
+        "coons",
+        "--kind",
+        "gordon",
+        "--u-curves",
+        s(&u),
+        "--v-curves",
+        s(&v),
+        "-o",
+        s(&svg),
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("unknown output extension"));
+    assert!(!svg.exists());
+    let before = std::fs::read_to_string(&u).unwrap();
+    let o = karkas(&[
+        "surface",
+        "coons",
+        "--kind",
+        "gordon",
+        "--u-curves",
+        s(&u),
+        "--v-curves",
+        s(&v),
+        "-o",
+        s(&u),
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("overwrite the input"));
+    assert_eq!(std::fs::read_to_string(&u).unwrap(), before);
+}
+
+#[test]
+fn without_derivative_files_composite_is_the_spline_gordon_surface() {
+    let dir = tempfile::tempdir().unwrap();
+    let (u, v) = sheet_files(dir.path(), 1);
+    let out = |kind: &str| {
+        let path = dir.path().join(format!("{kind}.csv"));
+        let o = karkas(&[
+            "surface",
+            "coons",
+            "--kind",
+            kind,
+            "--u-curves",
+            s(&u),
+            "--v-curves",
+            s(&v),
+            "--samples",
+            "13,9",
+            "-o",
+            s(&path),
+        ]);
+        assert!(o.status.success(), "{}", stderr(&o));
+        read_csv(&path).1
+    };
+    let (composite, spline) = (out("composite"), out("gordon-spline"));
+    for (a, b) in composite.iter().zip(&spline) {
+        for c in 0..5 {
+            assert!((a[c] - b[c]).abs() < 1e-12, "{a:?} vs {b:?}");
+        }
+    }
+}

@@ -1,0 +1,211 @@
+//! Cubic Hermite blending: the bicubic Coons family (seed 001, formulas (1)–(3)) and its
+//! piecewise version on a node set, the composite Coons family (formulas (15)–(18)).
+
+use super::{check_nodes, locate, powi, reduce, BlendingFamily};
+use crate::coons::Functional;
+use crate::core::Interval;
+use crate::Result;
+use core::ops::Range;
+
+/// The `k`-th derivative (in `s`) of the cubic Hermite polynomials of the seed's (3) at `s`,
+/// in the seed's order: `H_1 = 2s^3 - 3s^2 + 1` (value 1 at 0), `H_2 = s^3 - 2s^2 + s`
+/// (derivative 1 at 0), `H_3 = s^3 - s^2` (derivative 1 at 1), `H_4 = -2s^3 + 3s^2` (value 1
+/// at 1). Zero for `k >= 4`.
+pub fn hermite_cubic(s: f64, k: usize) -> [f64; 4] {
+    match k {
+        0 => {
+            let s2 = s * s;
+            let s3 = s2 * s;
+            [
+                2.0 * s3 - 3.0 * s2 + 1.0,
+                s3 - 2.0 * s2 + s,
+                s3 - s2,
+                -2.0 * s3 + 3.0 * s2,
+            ]
+        }
+        1 => {
+            let s2 = s * s;
+            [
+                6.0 * s2 - 6.0 * s,
+                3.0 * s2 - 4.0 * s + 1.0,
+                3.0 * s2 - 2.0 * s,
+                -6.0 * s2 + 6.0 * s,
+            ]
+        }
+        2 => [
+            12.0 * s - 6.0,
+            6.0 * s - 4.0,
+            6.0 * s - 2.0,
+            -12.0 * s + 6.0,
+        ],
+        3 => [12.0, 6.0, 6.0, -12.0],
+        _ => [0.0; 4],
+    }
+}
+
+/// The bicubic Coons family on an interval `[a, b]` (seed 001, (1)–(3)): functionals
+/// `f(a), f'(a), f'(b), f(b)` (the seed's order) and the cubic Hermite polynomials scaled to
+/// the interval, `H_1(s), h H_2(s), h H_3(s), H_4(s)` with `s = (t - a)/h`, `h = b - a` (the
+/// factor `h` makes the derivative functionals return 1 per unit of `t`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct CubicHermiteBlending {
+    domain: Interval,
+    functionals: [Functional; 4],
+}
+
+impl CubicHermiteBlending {
+    /// The family on `[a, b]`; fails unless `a < b` are finite.
+    pub fn new(a: f64, b: f64) -> Result<Self> {
+        check_nodes(&[a, b], 2, "a cubic Hermite blending family")?;
+        Ok(CubicHermiteBlending {
+            domain: Interval::new(a, b),
+            functionals: [
+                Functional::Value { at: a },
+                Functional::Derivative { at: a, order: 1 },
+                Functional::Derivative { at: b, order: 1 },
+                Functional::Value { at: b },
+            ],
+        })
+    }
+}
+
+impl BlendingFamily for CubicHermiteBlending {
+    fn len(&self) -> usize {
+        4
+    }
+
+    fn domain(&self) -> Interval {
+        self.domain
+    }
+
+    fn is_periodic(&self) -> bool {
+        false
+    }
+
+    fn functionals(&self) -> &[Functional] {
+        &self.functionals
+    }
+
+    fn eval_into(&self, t: f64, k: usize, out: &mut [f64]) -> Range<usize> {
+        let h = self.domain.length();
+        let s = (reduce(self.domain, false, t) - self.domain.start) / h;
+        let w = hermite_cubic(s, k);
+        let scale = powi(h, k).recip();
+        out[0] = w[0] * scale;
+        out[1] = w[1] * h * scale;
+        out[2] = w[2] * h * scale;
+        out[3] = w[3] * scale;
+        0..4
+    }
+}
+
+/// The composite Coons family on nodes `u_0 < ... < u_m` (seed 001, (15)–(18)), generalised
+/// to uneven nodes: functionals `L_{2i} f = f(u_i)`, `L_{2i+1} f = f'(u_i)`, and functions
+///
+/// ```text
+/// H_{2i}(t)   = H_1((t - u_i)/h_i)            on [u_i, u_{i+1}],   H_4((t - u_{i-1})/h_{i-1})          on [u_{i-1}, u_i]
+/// H_{2i+1}(t) = h_i H_2((t - u_i)/h_i)        on [u_i, u_{i+1}],   h_{i-1} H_3((t - u_{i-1})/h_{i-1})  on [u_{i-1}, u_i]
+/// ```
+///
+/// (`h_i = u_{i+1} - u_i`), zero elsewhere. With the seed's integer nodes `u_i = i` this is
+/// exactly (17)–(18). The functions are `C^1`; at any parameter at most four are nonzero.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PiecewiseHermiteBlending {
+    nodes: Vec<f64>,
+    functionals: Vec<Functional>,
+}
+
+impl PiecewiseHermiteBlending {
+    /// The family on `nodes` (at least two, finite, strictly increasing): `2 * nodes.len()`
+    /// functions.
+    pub fn new(nodes: &[f64]) -> Result<Self> {
+        check_nodes(nodes, 2, "a piecewise Hermite blending family")?;
+        let functionals = nodes
+            .iter()
+            .flat_map(|&at| {
+                [
+                    Functional::Value { at },
+                    Functional::Derivative { at, order: 1 },
+                ]
+            })
+            .collect();
+        Ok(PiecewiseHermiteBlending {
+            nodes: nodes.to_vec(),
+            functionals,
+        })
+    }
+
+    /// The nodes `u_0..u_m`.
+    pub fn nodes(&self) -> &[f64] {
+        &self.nodes
+    }
+}
+
+impl BlendingFamily for PiecewiseHermiteBlending {
+    fn len(&self) -> usize {
+        2 * self.nodes.len()
+    }
+
+    fn domain(&self) -> Interval {
+        Interval::new(self.nodes[0], self.nodes[self.nodes.len() - 1])
+    }
+
+    fn is_periodic(&self) -> bool {
+        false
+    }
+
+    fn functionals(&self) -> &[Functional] {
+        &self.functionals
+    }
+
+    fn eval_into(&self, t: f64, k: usize, out: &mut [f64]) -> Range<usize> {
+        let m = self.len();
+        out[..m].fill(0.0);
+        let t = reduce(self.domain(), false, t);
+        let (l, s) = locate(&self.nodes, t);
+        let h = self.nodes[l + 1] - self.nodes[l];
+        let w = hermite_cubic(s, k);
+        let scale = powi(h, k).recip();
+        // Seed (17): on [u_l, u_{l+1}] the nonzero functions are H_{2l} = H_1, H_{2l+1} = h H_2,
+        // H_{2l+2} = H_4, H_{2l+3} = h H_3.
+        out[2 * l] = w[0] * scale;
+        out[2 * l + 1] = w[1] * h * scale;
+        out[2 * l + 2] = w[3] * scale;
+        out[2 * l + 3] = w[2] * h * scale;
+        2 * l..2 * l + 4
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn hermite_conditions_of_the_seed() {
+        // (2): H_1(0)=1, H_2'(0)=1, H_3'(1)=1, H_4(1)=1, all other conditions zero.
+        let (v0, d0, d1, v1) = (
+            hermite_cubic(0.0, 0),
+            hermite_cubic(0.0, 1),
+            hermite_cubic(1.0, 1),
+            hermite_cubic(1.0, 0),
+        );
+        assert_eq!(v0, [1.0, 0.0, 0.0, 0.0]);
+        assert_eq!(d0, [0.0, 1.0, 0.0, 0.0]);
+        assert_eq!(d1, [0.0, 0.0, 1.0, 0.0]);
+        assert_eq!(v1, [0.0, 0.0, 0.0, 1.0]);
+    }
+
+    #[test]
+    fn derivatives_match_differences() {
+        for k in 0..4 {
+            for s in [0.1, 0.37, 0.8] {
+                let e = 1e-6;
+                let (a, b) = (hermite_cubic(s - e, k), hermite_cubic(s + e, k));
+                let d = hermite_cubic(s, k + 1);
+                for c in 0..4 {
+                    assert!(((b[c] - a[c]) / (2.0 * e) - d[c]).abs() < 1e-6);
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,263 @@
+//! The classical surfaces as instances of the Boolean sum (seed 001, §3 cases 1–3 and §5).
+
+use std::sync::Arc;
+
+use super::blending::{
+    CubicHermiteBlending, LagrangeBlending, PiecewiseHermiteBlending, SplineBlending, SplineEnds,
+};
+use super::curves::CurveRef;
+use super::network::{CrossDerivatives, CurveNetwork, NetworkAxis};
+use super::surface::{FamilyRef, Names};
+use super::CoonsSurface;
+use crate::{Error, Result};
+
+/// The end conditions used for cross-derivatives derived from a network (the not-a-knot
+/// cubic-spline Gordon surface).
+pub const DERIVED_CROSS_ENDS: SplineEnds = SplineEnds::NotAKnot;
+
+impl<const D: usize> CoonsSurface<D> {
+    /// The bilinear Coons surface (seed 001, §3 case 1) of a network of two v-curves (at
+    /// `u_0`, `u_1`) and two u-curves (at `v_0`, `v_1`), both directions open: the Boolean sum
+    /// with `L f = f(u_0), f(u_1)` and `H = 1 - x, x` on `[u_0, u_1]` (same in `v`).
+    ///
+    /// Errors: another network shape; incompatible corners ([`Error::IncompatibleCurves`]).
+    pub fn bilinear(network: &CurveNetwork<D>, tolerance: f64) -> Result<Self> {
+        let (u0, u1, v0, v1) = four_sided(network, "bilinear Coons")?;
+        let u: FamilyRef = Arc::new(LagrangeBlending::new(&[u0, u1])?);
+        let v: FamilyRef = Arc::new(LagrangeBlending::new(&[v0, v1])?);
+        Self::build(
+            u,
+            v,
+            network.v_curves().to_vec(),
+            network.u_curves().to_vec(),
+            tolerance,
+            (false, false),
+            Names {
+                v_curve: &|i| format!("v-curve {i}"),
+                u_curve: &|j| format!("u-curve {j}"),
+            },
+        )
+    }
+
+    /// The bicubic Coons surface (seed 001, §3 case 2) of a two-by-two network with the
+    /// cross-derivatives on its four borders: `L f = f(u_0), f'(u_0), f'(u_1), f(u_1)` (the
+    /// seed's order (1)) and the cubic Hermite polynomials (3) on `[u_0, u_1]`; the v-curves
+    /// family is `a_0, A_0, A_1, a_1` (same in `v`).
+    ///
+    /// `cross` gives `A_0, A_1` (`dS/du` along the v-curves) and `B_0, B_1` (`dS/dv` along the
+    /// u-curves); without it they are taken from the not-a-knot spline Gordon surface of the
+    /// network, which on two curves per direction is the bilinear Coons surface (see
+    /// [`CrossDerivatives::from_surface`]).
+    ///
+    /// Errors: another network shape; cross-derivative counts other than two; a violation of
+    /// (8) ([`Error::IncompatibleCurves`]).
+    pub fn bicubic(
+        network: &CurveNetwork<D>,
+        cross: Option<&CrossDerivatives<D>>,
+        tolerance: f64,
+    ) -> Result<Self> {
+        let (u0, u1, v0, v1) = four_sided(network, "bicubic Coons")?;
+        let cross = cross_or_derived(network, cross, tolerance)?;
+        let (a, b) = (network.v_curves(), network.u_curves());
+        let (da, db) = (&cross.v_curves, &cross.u_curves);
+        let u: FamilyRef = Arc::new(CubicHermiteBlending::new(u0, u1)?);
+        let v: FamilyRef = Arc::new(CubicHermiteBlending::new(v0, v1)?);
+        // Seed (1): value, derivative, derivative, value.
+        let order = |k: usize| [(0, false), (0, true), (1, true), (1, false)][k];
+        let name = |curve: &str, k: usize| {
+            let (i, derivative) = order(k);
+            if derivative {
+                format!("the cross-derivative curve of {curve} {i}")
+            } else {
+                format!("{curve} {i}")
+            }
+        };
+        Self::build(
+            u,
+            v,
+            vec![a[0].clone(), da[0].clone(), da[1].clone(), a[1].clone()],
+            vec![b[0].clone(), db[0].clone(), db[1].clone(), b[1].clone()],
+            tolerance,
+            (false, false),
+            Names {
+                v_curve: &|k| name("v-curve", k),
+                u_curve: &|k| name("u-curve", k),
+            },
+        )
+    }
+
+    /// The Gordon surface (seed 001, §3 case 3): values at the nodes, Lagrange blending in both
+    /// directions. In a closed direction the first curve is repeated one period on (Lagrange
+    /// polynomials are not periodic: the surface closes with a `C^0` seam).
+    ///
+    /// Errors: a violation of (8) at a crossing ([`Error::IncompatibleCurves`] naming the
+    /// v-curve and u-curve).
+    pub fn gordon(network: &CurveNetwork<D>, tolerance: f64) -> Result<Self> {
+        let (u_axis, v_axis) = (network.u_axis(), network.v_axis());
+        let u: FamilyRef = Arc::new(LagrangeBlending::new(&u_axis.nodes_with_seam())?);
+        let v: FamilyRef = Arc::new(LagrangeBlending::new(&v_axis.nodes_with_seam())?);
+        let count = (network.v_curves().len(), network.u_curves().len());
+        Self::build(
+            u,
+            v,
+            with_seam(network.v_curves(), u_axis),
+            with_seam(network.u_curves(), v_axis),
+            tolerance,
+            (u_axis.is_closed(), v_axis.is_closed()),
+            Names {
+                v_curve: &|i| format!("v-curve {}", i % count.0),
+                u_curve: &|j| format!("u-curve {}", j % count.1),
+            },
+        )
+    }
+
+    /// The Gordon surface with cubic-spline cardinal blending: `ends` in an open direction,
+    /// periodic splines in a closed one (`C^2` across the seam).
+    ///
+    /// Errors: as [`gordon`](Self::gordon).
+    pub fn gordon_spline(
+        network: &CurveNetwork<D>,
+        ends: SplineEnds,
+        tolerance: f64,
+    ) -> Result<Self> {
+        let family = |axis: &NetworkAxis| -> Result<FamilyRef> {
+            Ok(if axis.is_closed() {
+                Arc::new(SplineBlending::new(
+                    &axis.nodes_with_seam(),
+                    SplineEnds::Periodic,
+                )?)
+            } else {
+                Arc::new(SplineBlending::new(axis.nodes(), ends)?)
+            })
+        };
+        let (u_axis, v_axis) = (network.u_axis(), network.v_axis());
+        Self::build(
+            family(u_axis)?,
+            family(v_axis)?,
+            network.v_curves().to_vec(),
+            network.u_curves().to_vec(),
+            tolerance,
+            (u_axis.is_closed(), v_axis.is_closed()),
+            Names {
+                v_curve: &|i| format!("v-curve {i}"),
+                u_curve: &|j| format!("u-curve {j}"),
+            },
+        )
+    }
+
+    /// The composite Coons surface of seed 001 §4–5 on a network with cross-derivative curves:
+    /// the Boolean sum with the piecewise Hermite families (15)–(18) on the node values
+    /// (generalised to uneven nodes, see [`PiecewiseHermiteBlending`]); the v-curve family is
+    /// `a_0, A_0, a_1, A_1, ...`. By Proposition 2 it equals the patch-by-patch composite
+    /// Coons surface (13); it is `C^1` and satisfies (14): `S(u_i, .) = a_i`,
+    /// `S_u(u_i, .) = A_i`, `S(., v_j) = b_j`, `S_v(., v_j) = B_j`.
+    ///
+    /// `cross` gives `A_i` and `B_j`; without it they are the cross-derivatives of the
+    /// not-a-knot (periodic in a closed direction) spline Gordon surface `G` of the network,
+    /// `A_i = G_u(u_i, .)`, `B_j = G_v(., v_j)`, which satisfy (11) by construction. The
+    /// composite surface is then `G` itself: the cardinal splines are cubic between the nodes,
+    /// so the piecewise Hermite operators reproduce them and the residual
+    /// `(I - P)(I - Q) G` of the Boolean sum vanishes. Give cross-derivatives to get anything
+    /// else (a surface with prescribed tangent planes along the curves). In a
+    /// closed direction the first curve and its cross-derivative are repeated one period on
+    /// (the piecewise Hermite family is local, so the seam is `C^1` like every other node).
+    ///
+    /// Errors: cross-derivative counts that differ from the curve counts; a violation of (11)
+    /// ([`Error::IncompatibleCurves`] naming the curves and the condition).
+    pub fn composite(
+        network: &CurveNetwork<D>,
+        cross: Option<&CrossDerivatives<D>>,
+        tolerance: f64,
+    ) -> Result<Self> {
+        let cross = cross_or_derived(network, cross, tolerance)?;
+        let (u_axis, v_axis) = (network.u_axis(), network.v_axis());
+        let u: FamilyRef = Arc::new(PiecewiseHermiteBlending::new(&u_axis.nodes_with_seam())?);
+        let v: FamilyRef = Arc::new(PiecewiseHermiteBlending::new(&v_axis.nodes_with_seam())?);
+        let interleave = |curves: &[CurveRef<D>], derivs: &[CurveRef<D>], axis: &NetworkAxis| {
+            let curves = with_seam(curves, axis);
+            let derivs = with_seam(derivs, axis);
+            curves
+                .into_iter()
+                .zip(derivs)
+                .flat_map(|(c, d)| [c, d])
+                .collect::<Vec<_>>()
+        };
+        let count = (network.v_curves().len(), network.u_curves().len());
+        let name = |curve: &str, k: usize, count: usize| {
+            if k.is_multiple_of(2) {
+                format!("{curve} {}", (k / 2) % count)
+            } else {
+                format!("the cross-derivative curve of {curve} {}", (k / 2) % count)
+            }
+        };
+        Self::build(
+            u,
+            v,
+            interleave(network.v_curves(), &cross.v_curves, u_axis),
+            interleave(network.u_curves(), &cross.u_curves, v_axis),
+            tolerance,
+            (u_axis.is_closed(), v_axis.is_closed()),
+            Names {
+                v_curve: &|k| name("v-curve", k, count.0),
+                u_curve: &|k| name("u-curve", k, count.1),
+            },
+        )
+    }
+}
+
+/// The node values of a two-by-two open network, or an error naming `what`.
+fn four_sided<const D: usize>(
+    network: &CurveNetwork<D>,
+    what: &str,
+) -> Result<(f64, f64, f64, f64)> {
+    let (u, v) = (network.u_axis(), network.v_axis());
+    if u.nodes().len() != 2 || v.nodes().len() != 2 || u.is_closed() || v.is_closed() {
+        return Err(Error::InvalidInput(format!(
+            "a {what} surface needs two open v-curves and two open u-curves, got {} and {}{}",
+            u.nodes().len(),
+            v.nodes().len(),
+            if u.is_closed() || v.is_closed() {
+                " (closed)"
+            } else {
+                ""
+            }
+        )));
+    }
+    Ok((u.nodes()[0], u.nodes()[1], v.nodes()[0], v.nodes()[1]))
+}
+
+/// `curves`, with the first repeated at the end in a closed direction.
+fn with_seam<const D: usize>(curves: &[CurveRef<D>], axis: &NetworkAxis) -> Vec<CurveRef<D>> {
+    let mut out = curves.to_vec();
+    if axis.is_closed() {
+        out.push(curves[0].clone());
+    }
+    out
+}
+
+/// The given cross-derivatives (checked against the network's curve counts) or those of the
+/// network's spline Gordon surface.
+fn cross_or_derived<const D: usize>(
+    network: &CurveNetwork<D>,
+    cross: Option<&CrossDerivatives<D>>,
+    tolerance: f64,
+) -> Result<CrossDerivatives<D>> {
+    match cross {
+        Some(c) => {
+            let (a, b) = (network.v_curves().len(), network.u_curves().len());
+            if c.v_curves.len() != a || c.u_curves.len() != b {
+                return Err(Error::InvalidInput(format!(
+                    "the network has {a} v-curves and {b} u-curves, but {} and {} \
+                     cross-derivative curves were given",
+                    c.v_curves.len(),
+                    c.u_curves.len()
+                )));
+            }
+            Ok(c.clone())
+        }
+        None => {
+            let gordon = CoonsSurface::gordon_spline(network, DERIVED_CROSS_ENDS, tolerance)?;
+            Ok(CrossDerivatives::from_surface(Arc::new(gordon), network))
+        }
+    }
+}

@@ -1,0 +1,105 @@
+//! Generalized Coons, Gordon and composite Coons surfaces (seed 001: Chashnikov, "Composite
+//! and generalized Coons surfaces"; METHODS.md §2).
+//!
+//! **The operator.** For each parameter direction a [`BlendingFamily`]: linear functionals
+//! `L_i` ([`Functional`]: the value at a point, a derivative at a point, ...) and functions
+//! `H_j` with `L_i(H_j) = delta_ij` (formulas (5), (6)). Given curve families `f_i(v)` and
+//! `g_j(u)` (any [`Curve`](crate::Curve)) satisfying the compatibility conditions (8)
+//! `L^u_i(g_j) = L^v_j(f_i)`, the generalized Coons surface is the Boolean sum (9)
+//!
+//! ```text
+//! c(u,v) = sum_i H^u_i(u) f_i(v) + sum_j H^v_j(v) g_j(u) - sum_i sum_j H^u_i(u) H^v_j(v) L^u_i(g_j)
+//! ```
+//!
+//! ([`CoonsSurface::new`]). Proposition 1: `L^u_i c(., v) = f_i(v)` and `L^v_j c(u, .) = g_j(u)`.
+//!
+//! **The instances**, each a constructor over a [`CurveNetwork`] (v-curves `a_i` along `v` at
+//! `u = u_i`, u-curves `b_j` along `u` at `v = v_j`):
+//! - [`CoonsSurface::bilinear`] (§3 case 1), [`CoonsSurface::bicubic`] (§3 case 2, with
+//!   cross-derivatives on the four borders);
+//! - [`CoonsSurface::gordon`]: Lagrange blending (§3 case 3); oscillates with many curves;
+//! - [`CoonsSurface::gordon_spline`]: cubic-spline cardinal blending (natural or not-a-knot;
+//!   periodic in a closed direction), what CAD kernels use for curve networks;
+//! - [`CoonsSurface::composite`]: the composite Coons surface with cross-derivative curves
+//!   `A_i`, `B_j` (11) and the piecewise Hermite blending (17)–(18): `C^1`, satisfies (14), and
+//!   equals the patch-by-patch surface (13) (Proposition 2).
+//!
+//! Omitted cross-derivative curves are derived from the network: `A_i = G_u(u_i, .)`,
+//! `B_j = G_v(., v_j)` for the not-a-knot (periodic when closed) spline Gordon surface `G`
+//! through the network, which satisfy (11) by Proposition 1 applied to `G`. (The composite
+//! surface of these is `G` itself: the cardinal splines are cubic between nodes, so the
+//! piecewise Hermite Boolean sum reproduces them.)
+//!
+//! ```
+//! use karkas::coons::{curve_ref, CoonsSurface, CurveNetwork, NetworkAxis, PolylineCurve};
+//! use karkas::{Point3, Surface};
+//! // Four straight borders of a twisted quadrilateral: v-curves at u = 0, 1; u-curves at v = 0, 1.
+//! let p = |x: f64, y: f64, z: f64| Point3::new([x, y, z]);
+//! let edge = |a: Point3, b: Point3| curve_ref(PolylineCurve::new(&[a, b], &[0.0, 1.0]).unwrap());
+//! let (p00, p10, p01, p11) = (p(0., 0., 0.), p(1., 0., 0.), p(0., 1., 0.), p(1., 1., 1.));
+//! let unit = NetworkAxis::open(vec![0.0, 1.0])?;
+//! let network = CurveNetwork::new(
+//!     unit.clone(),
+//!     vec![edge(p00, p01), edge(p10, p11)],
+//!     unit,
+//!     vec![edge(p00, p10), edge(p01, p11)],
+//! )?;
+//! let coons = CoonsSurface::bilinear(&network, 1e-9)?;
+//! // The bilinear Coons surface of straight borders is the hyperbolic paraboloid z = u v.
+//! assert!((coons.eval(0.5, 0.5)[2] - 0.25).abs() < 1e-15);
+//! // A border that misses a corner is an error naming the pair.
+//! let bad = CurveNetwork::new(
+//!     NetworkAxis::open(vec![0.0, 1.0])?,
+//!     vec![edge(p00, p01), edge(p10, p(1., 1., 2.))],
+//!     NetworkAxis::open(vec![0.0, 1.0])?,
+//!     vec![edge(p00, p10), edge(p01, p11)],
+//! )?;
+//! let error = CoonsSurface::bilinear(&bad, 1e-9).unwrap_err().to_string();
+//! assert!(error.starts_with("v-curve 1 and u-curve 1 disagree at (u=1, v=1)"));
+//! # Ok::<(), karkas::Error>(())
+//! ```
+//!
+//! **Compatibility.** Every constructor checks (8) (which for the composite family is (11))
+//! at every pair of curves with a tolerance relative to the model size, and fails with
+//! [`Error::IncompatibleCurves`](crate::Error::IncompatibleCurves) naming the two curves, the
+//! crossing and the condition: never a silently wrong surface.
+//!
+//! **Curves from points.** [`PointNetwork`] turns point lists into a network: interpolating
+//! cubic-spline curves ([`CubicSplineCurve`], or LL curves of seed 000), crossings found as
+//! shared points, node values from the crossing parameters (see its docs for every rule).
+//!
+//! **Cost.** Building: `O(m n)` functional evaluations for the check. A point: `O(m + n)`
+//! curve evaluations. A grid `NU x NV` ([`Surface::eval_grid_into`](crate::Surface)): each
+//! curve is sampled once per line of its direction, blending weights once per line, then
+//! `O(nnz_u + nnz_v)` per point (8 for the composite surface). Families: see
+//! [`BlendingFamily`].
+//!
+//! Hand-written: no maintained crate offers Coons/Gordon surfaces over arbitrary curve types
+//! and blending schemes; the cubic-spline cardinal functions are evaluated with the
+//! tridiagonal solvers of [`solve`](crate::solve) rather than a spline crate because the
+//! Boolean sum needs all cardinal functions at a parameter (a transposed solve), not one
+//! interpolant.
+
+mod blending;
+mod curves;
+mod functional;
+mod instances;
+mod network;
+mod points;
+mod polyline;
+mod spline_curve;
+mod surface;
+mod warp;
+
+pub use blending::{
+    hermite_cubic, BlendingFamily, CubicHermiteBlending, LagrangeBlending, LlBlending,
+    PiecewiseHermiteBlending, SplineBlending, SplineEnds,
+};
+pub use curves::{curve_ref, AffineCurve, Along, CurveRef, SurfaceCrossDerivative};
+pub use functional::Functional;
+pub use instances::DERIVED_CROSS_ENDS;
+pub use network::{CrossDerivatives, CurveNetwork, NetworkAxis};
+pub use points::{CurveFit, PointNetwork};
+pub use polyline::PolylineCurve;
+pub use spline_curve::CubicSplineCurve;
+pub use surface::{CoonsSurface, FamilyRef, DEFAULT_TOLERANCE};
