@@ -1,16 +1,13 @@
 //! `karkas surface bicubic`: the bicubic interpolant of a grid of points with chosen
 //! parameters (seed 004, METHODS.md §5).
 
-use super::curve_ll::{report, MAX_SAMPLES};
-use super::output::ensure_distinct;
+use super::curve_ll::MAX_SAMPLES;
+use super::output::{ensure_distinct, write_sampled_surface};
 use crate::samples::{default_surface_samples, parse_pair};
 use anyhow::{anyhow, bail, Result};
 use clap::{Args, ValueEnum};
 use karkas::param::{BicubicSurface, GridParameterization};
-use karkas::{Point3, Surface};
 use karkas_io::grid::read_grid;
-use karkas_io::obj::write_surface_obj;
-use karkas_io::write::write_surface_csv;
 use karkas_io::OutputFormat;
 use std::path::PathBuf;
 
@@ -81,14 +78,5 @@ pub fn run(args: &SurfaceBicubicArgs) -> Result<()> {
             default_surface_samples(grid.cols()),
         )
     });
-    let mut us = vec![0.0; nu];
-    let mut vs = vec![0.0; nv];
-    let mut samples = vec![Point3::ZERO; nu * nv];
-    surface.sample_grid_into(&mut us, &mut vs, &mut samples);
-    match format {
-        OutputFormat::Obj => write_surface_obj(&args.output, nu, nv, &samples)?,
-        _ => write_surface_csv(&args.output, &us, &vs, &samples)?,
-    }
-    report(&args.output, nu * nv);
-    Ok(())
+    write_sampled_surface(&surface, (nu, nv), format, &args.output)
 }

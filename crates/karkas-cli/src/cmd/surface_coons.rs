@@ -5,16 +5,14 @@
 //! cubic splines in the point-index parameter, warped so that the crossings sit at common
 //! node values in `[0, 1]`); the surface's parameters `u`, `v` are those node values.
 
-use super::curve_ll::{report, MAX_SAMPLES};
-use super::output::ensure_distinct;
+use super::curve_ll::MAX_SAMPLES;
+use super::output::{ensure_distinct, write_sampled_surface};
 use crate::samples::{default_surface_samples, parse_pair};
 use anyhow::{anyhow, bail, Result};
 use clap::{Args, ValueEnum};
 use karkas::coons::{CoonsSurface, CrossDerivatives, CurveFit, PointNetwork, SplineEnds};
-use karkas::{Error, Point3, Surface};
+use karkas::Error;
 use karkas_io::network::{read_curve_family, CurveFamily};
-use karkas_io::obj::write_surface_obj;
-use karkas_io::write::write_surface_csv;
 use karkas_io::OutputFormat;
 use std::path::{Path, PathBuf};
 
@@ -133,16 +131,7 @@ pub fn run(args: &SurfaceCoonsArgs) -> Result<()> {
             default_surface_samples(longest(&v_family)),
         )
     });
-    let mut us = vec![0.0; nu];
-    let mut vs = vec![0.0; nv];
-    let mut samples = vec![Point3::ZERO; nu * nv];
-    surface.sample_grid_into(&mut us, &mut vs, &mut samples);
-    match format {
-        OutputFormat::Obj => write_surface_obj(&args.output, nu, nv, &samples)?,
-        _ => write_surface_csv(&args.output, &us, &vs, &samples)?,
-    }
-    report(&args.output, nu * nv);
-    Ok(())
+    write_sampled_surface(&surface, (nu, nv), format, &args.output)
 }
 
 /// The surface of `kind` over the network.

@@ -1,15 +1,12 @@
 //! `karkas surface ll`: the LL surface of a grid of points (seed 000, METHODS.md §1.3).
 
-use super::curve_ll::{report, MAX_SAMPLES};
-use super::output::ensure_distinct;
+use super::curve_ll::MAX_SAMPLES;
+use super::output::{ensure_distinct, write_sampled_surface};
 use crate::samples::{default_surface_samples, parse_pair};
 use anyhow::{anyhow, bail, Result};
 use clap::Args;
 use karkas::ll::{LlKernel, LlSurface};
-use karkas::{Point3, Surface};
 use karkas_io::grid::read_grid;
-use karkas_io::obj::write_surface_obj;
-use karkas_io::write::write_surface_csv;
 use karkas_io::OutputFormat;
 use std::path::PathBuf;
 
@@ -64,14 +61,5 @@ pub fn run(args: &SurfaceLlArgs) -> Result<()> {
             default_surface_samples(grid.cols()),
         )
     });
-    let mut us = vec![0.0; nu];
-    let mut vs = vec![0.0; nv];
-    let mut samples = vec![Point3::ZERO; nu * nv];
-    surface.sample_grid_into(&mut us, &mut vs, &mut samples);
-    match format {
-        OutputFormat::Obj => write_surface_obj(&args.output, nu, nv, &samples)?,
-        _ => write_surface_csv(&args.output, &us, &vs, &samples)?,
-    }
-    report(&args.output, nu * nv);
-    Ok(())
+    write_sampled_surface(&surface, (nu, nv), format, &args.output)
 }
