@@ -3,7 +3,12 @@
 use karkas::{ll::LlCurve, Curve, Point};
 
 fn main() -> Result<(), karkas::Error> {
-    let pts = [Point([0.0, 0.0]), Point([1.0, 1.0]), Point([2.0, 0.0]), Point([3.0, 1.0])];
+    let pts = [
+        Point([0.0, 0.0]),
+        Point([1.0, 1.0]),
+        Point([2.0, 0.0]),
+        Point([3.0, 1.0]),
+    ];
     let curve = LlCurve::new(&pts, 5, false)?; // order 5, open
     let mid = curve.eval(0.5); // a point
     let tangent = curve.deriv(0.5, 1); // d/dt

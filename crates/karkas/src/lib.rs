@@ -10,7 +10,9 @@
 //! - [`solve`]: the banded linear solvers the methods need;
 //! - [`ll`]: the LL-approximation of curves and surfaces (Aulchenko, Latypov, Nikulichev):
 //!   oscillation-free, monotone, `C^L` curves and surfaces on a uniform parameter grid, and
-//!   their interpolating variant.
+//!   their interpolating variant;
+//! - [`fit`]: fitting measured points with C^1 cubic Hermite splines (cubic splines of defect
+//!   2) whose second-derivative jumps are bounded (Pavlov).
 //!
 //! ```
 //! use karkas::{ll::LlCurve, Curve, Point};
@@ -24,6 +26,7 @@
 
 pub mod core;
 mod error;
+pub mod fit;
 pub mod ll;
 pub mod solve;
 
