@@ -1,5 +1,6 @@
 //! The commands of the `karkas` binary, one file each.
 
+mod curve_fit;
 mod curve_ll;
 mod output;
 mod surface_ll;
@@ -11,6 +12,8 @@ use clap::Subcommand;
 pub enum CurveCommand {
     /// LL-approximation (or interpolation) of an ordered point list.
     Ll(curve_ll::CurveLlArgs),
+    /// Fit a C^1 cubic spline with bounded second-derivative jumps to measured points.
+    Fit(curve_fit::CurveFitArgs),
 }
 
 impl CurveCommand {
@@ -18,6 +21,7 @@ impl CurveCommand {
     pub fn run(self) -> anyhow::Result<()> {
         match self {
             CurveCommand::Ll(args) => curve_ll::run(&args),
+            CurveCommand::Fit(args) => curve_fit::run(&args),
         }
     }
 }

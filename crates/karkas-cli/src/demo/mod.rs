@@ -2,6 +2,7 @@
 //! with pictures, meshes and the data itself, and a summary table on the terminal.
 
 mod data;
+mod fit;
 mod ll;
 
 use anyhow::{Context, Result};
@@ -33,7 +34,8 @@ pub fn run(args: &DemoArgs) -> Result<()> {
     let started = Instant::now();
     std::fs::create_dir_all(&args.out)
         .with_context(|| format!("cannot create the folder {}", args.out.display()))?;
-    let findings = ll::run(&args.out)?;
+    let mut findings = ll::run(&args.out)?;
+    findings.extend(fit::run(&args.out)?);
     print_summary(&findings, &args.out, started.elapsed().as_secs_f64());
     Ok(())
 }

@@ -29,6 +29,8 @@ struct Jet {
     d: f64,
     g: f64,
     h: f64,
+    /// `|R'|^2`.
+    speed_sq: f64,
 }
 
 #[inline]
@@ -40,6 +42,7 @@ fn jet<const D: usize>(curve: &HermiteSpline<D>, r: Point<D>, t: f64) -> Jet {
         d: 0.5 * e.norm_sq(),
         g: e.dot(d1),
         h: d1.norm_sq() + e.dot(d2),
+        speed_sq: d1.norm_sq(),
     }
 }
 
@@ -130,9 +133,14 @@ fn descend<const D: usize>(curve: &HermiteSpline<D>, r: Point<D>, t_io: &mut f64
             0.5 * (t + b)
         };
         let mut next = jet(curve, r, next_t);
-        if !bracketed {
+        // A Newton step that moves the curve point by less than half the distance is in the
+        // quadratic regime: there d changes below its own rounding, so it is not checked.
+        let step = next_t - t;
+        let small = next_t == newton && step * step * cur.speed_sq <= 0.5 * cur.d;
+        if !bracketed && !small {
             let mut halvings = 0;
-            while next.d > cur.d && halvings < 60 {
+            // Rounding in d near the minimum must not veto a good Newton step.
+            while next.d > cur.d * (1.0 + 8.0 * f64::EPSILON) && halvings < 60 {
                 next_t = 0.5 * (t + next_t);
                 next = jet(curve, r, next_t);
                 halvings += 1;
