@@ -84,6 +84,21 @@ pub(crate) fn jump_coefficients(h_l: f64, h_r: f64) -> [f64; 6] {
     ]
 }
 
+/// The Gram matrix of the second derivatives of the four Hermite basis functions of a piece of
+/// length `h`: entry `(a, b)` is `int B_a''(t) B_b''(t) dt` over the piece, in the order
+/// `[R_k, H_k, R_{k+1}, H_{k+1}]` (the stiffness matrix of the cubic beam element).
+#[inline]
+pub(crate) fn bending_gram(h: f64) -> [[f64; 4]; 4] {
+    let a = 1.0 / (h * h * h);
+    let (b, c, d) = (6.0 * h * a, 4.0 * h * h * a, 2.0 * h * h * a);
+    [
+        [12.0 * a, b, -12.0 * a, b],
+        [b, c, -b, d],
+        [-12.0 * a, -b, 12.0 * a, -b],
+        [b, d, -b, c],
+    ]
+}
+
 /// Checks that `knots` are finite and strictly increasing, at least two of them.
 fn check_increasing(knots: &[f64]) -> Result<()> {
     if knots.len() < 2 {
@@ -209,12 +224,6 @@ impl<const D: usize> HermiteSpline<D> {
         p.add_scaled(b[3], self.derivatives[piece + 1])
     }
 
-    /// The point, first and second derivative on piece `piece` at `s`, in one pass.
-    #[inline]
-    pub(crate) fn jet_on_piece(&self, piece: usize, s: f64) -> [Point<D>; 3] {
-        [0, 1, 2].map(|k| self.deriv_on_piece(piece, s, k))
-    }
-
     /// The jump of the second derivative `R''(T_L+) - R''(T_L-)` at inner knot `L`
     /// (`1 <= L <= N - 2`).
     ///
@@ -259,6 +268,39 @@ impl<const D: usize> HermiteSpline<D> {
         (1..self.knots.len() - 1)
             .map(|l| weights[l] * self.jump_measure(l).norm_sq())
             .sum()
+    }
+
+    /// The bending energy `int |R''(t)|^2 dt` over the knots' range, exact: on a piece of
+    /// length `h` the second derivative is linear, and the integral is
+    /// `h |R''(mid)|^2 + h^3 |R'''|^2 / 12`.
+    pub fn bending_energy(&self) -> f64 {
+        (0..self.pieces())
+            .map(|k| {
+                let h = self.knots[k + 1] - self.knots[k];
+                let mid = self.deriv_on_piece(k, 0.5, 2).norm_sq();
+                let third = self.deriv_on_piece(k, 0.5, 3).norm_sq();
+                h * mid + h * h * h / 12.0 * third
+            })
+            .sum()
+    }
+
+    /// The piece holding `t`, trying `hint` and its neighbours before a binary search (for
+    /// parameters that move little between calls).
+    #[inline]
+    pub(crate) fn piece_near(&self, t: f64, hint: usize) -> usize {
+        let last = self.pieces() - 1;
+        let inside =
+            |k: usize| (k == 0 || t >= self.knots[k]) && (k == last || t < self.knots[k + 1]);
+        if hint <= last && inside(hint) {
+            return hint;
+        }
+        if hint < last && inside(hint + 1) {
+            return hint + 1;
+        }
+        if hint >= 1 && hint <= last + 1 && inside(hint - 1) {
+            return hint - 1;
+        }
+        self.locate(t).0
     }
 
     /// The same curve with one more knot at `t` (strictly inside a piece): the value and

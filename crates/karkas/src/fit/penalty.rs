@@ -1,30 +1,43 @@
 //! The fit on given knots: the penalty method of seed 003 around the inner solver.
 //!
-//! Minimize `H(q)` (sum of squared foot-point distances) subject to
-//! `f(q) = sum_L delta_L |J_L|^2 <= eps`:
+//! Minimize `H(q) + lambda S(q)` (the sum of squared foot-point distances plus the small
+//! bending term of [`FitOptions::fairness`]) subject to `f(q) = sum_L delta_L |J_L|^2 <= eps`:
 //!
-//! 1. the unconstrained fit `q_H` (`p = 0`) is tried first: when `f(q_H) <= eps` it is the
-//!    answer (the seed's "the problem reduces to finding `q_H`");
+//! 1. the unconstrained fit `q_H` (`p = 0`) is found first, from the least-squares fit at the
+//!    starting parameters: when `f(q_H) <= eps` it is the answer (the seed's "the problem
+//!    reduces to finding `q_H`");
 //! 2. otherwise `q*` is the fit on the knots `{0, corners, 1}` only, which has no jump at any
-//!    knot with `delta_L = 1` (so `f(q*) = 0`), and `p = H(q*) / eps` (the seed's bound,
-//!    proved for global minimizers of `H + p f`); `p` is multiplied by 10 until
-//!    `f(q_p) <= eps` holds for the minimizer found;
-//! 3. with [`PenaltyRule::ActiveBound`] (the default) `p` is then lowered, by a safeguarded
-//!    secant search on `log f` against `log p`, to where `f(q_p)` meets `eps` to a relative
-//!    [`FitOptions::eps_tolerance`]: that `q_p` satisfies the optimality conditions of the
-//!    constrained problem (`grad H + p grad f = 0`, `f = eps`, `p` its multiplier), so its `H`
-//!    is the lowest the bound allows; the seed's `p` over-penalizes, and its fit can lie
-//!    farther from the points than `eps` requires. [`PenaltyRule::SeedBound`] stops at step 2.
+//!    knot with `delta_L = 1` (so `f(q*) = 0`), and the seed's bound is
+//!    `p* = (H + lambda S)(q*) / eps` (proved for global minimizers of `H + lambda S + p f`);
+//!    with [`PenaltyRule::SeedBound`] `p = p*`, multiplied by 10 until `f(q_p) <= eps` holds
+//!    for the minimizer found;
+//! 3. with [`PenaltyRule::ActiveBound`] (the default) `p` is chosen so that `f(q_p)` meets
+//!    `eps` to a relative [`FitOptions::eps_tolerance`]: that `q_p` satisfies the optimality
+//!    conditions of the constrained problem (`grad (H + lambda S) + p grad f = 0`, `f = eps`,
+//!    `p` its multiplier), so its `H + lambda S` is the lowest the bound allows; the seed's
+//!    `p*` over-penalizes, and its fit can lie farther from the points than `eps` requires.
+//!    The search for `p` rides on the Newton iteration: every step takes the `p` for which
+//!    the jump sum after the step meets the bound (a scalar search costing banded
+//!    factorizations only, see [`Penalty::Target`]), starting from the least-squares fit at
+//!    the starting parameters whose jump sum meets the bound. Should the iteration end
+//!    outside the tolerance (iteration cap), the seed's rule takes over from the `p` found.
 //!
 //! Every `q_p` is found by [`Solver::minimize`], warm-started from the previous one.
+//! Cost: a few inner minimizations, each `O(n)` per iteration.
 
 use super::hermite::HermiteSpline;
 use super::knots::{check_knots, start_parameters, StartParameters};
-use super::solver::{Solver, State};
+use super::power::PowerForm;
+use super::solver::{Penalty, Problem, Solver, State, Stop};
 use crate::{Curve, Error, Point, Result};
 
 /// Iterations spent on the feasible reference `q*` of the seed's bound.
-const REFERENCE_ITERATIONS: usize = 20;
+const REFERENCE_ITERATIONS: usize = 5;
+
+/// The default of [`FitOptions::fairness`].
+pub const DEFAULT_FAIRNESS: f64 = 3e-11;
+/// The default of [`FitOptions::tolerance`].
+pub const DEFAULT_TOLERANCE: f64 = 1e-2;
 
 /// How the penalty `p` is chosen.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
@@ -58,6 +71,31 @@ pub struct FitOptions {
     /// [`PenaltyRule::ActiveBound`] stops when `(1 - eps_tolerance) eps <= f <= eps`
     /// (default `1e-3`).
     pub eps_tolerance: f64,
+    /// `rho`: the objective gets the bending energy `lambda int |R''(t)|^2 dt` with
+    /// `lambda = rho n` for `n` points (default [`DEFAULT_FAIRNESS`], `3e-11`; 0 for none).
+    ///
+    /// Why: the foot-point distances do not change when the points slide along the curve, so
+    /// without it the unconstrained problem has (nearly) flat directions, the derivatives
+    /// `H_L` can drift without bound, and a bound on the jumps can be met by slowing the
+    /// curve down where it bends and spending the parameter range on a fold between two
+    /// sparse points. The bending energy is smallest for a parameterization that is even
+    /// where the curve is straight and slow where it bends, and it penalizes folds. With the
+    /// weight proportional to `n` it stays as small relative to the data term however many
+    /// points there are; its pull on the shape is about `rho |R''''(t)|` (a few `1e-6` of
+    /// the chord on a NACA section at the default).
+    pub fairness: f64,
+    /// Pin the end values to the first and last points (`R(0) = r_1`, `R(1) = r_n`;
+    /// default `false`). Without it, noisy points beyond an end of an open curve pull the
+    /// end outwards (their foot point is the end itself); a closed contour sampled from a
+    /// known point (e.g. a trailing edge) should pin its ends.
+    pub pin_ends: bool,
+    /// The inner minimization stops once an undamped step changes no point's distance by
+    /// more than `tolerance` times the RMS distance (default [`DEFAULT_TOLERANCE`], `1e-2`), or
+    /// when the gradient of the objective vanishes (relative `1e-12`) or no progress is made;
+    /// 0 leaves only the last two rules. The objective is nearly flat along
+    /// reparameterizations of the curve (points sliding along it), where the iteration would
+    /// creep for many steps with the shape already settled.
+    pub tolerance: f64,
 }
 
 impl Default for FitOptions {
@@ -70,6 +108,9 @@ impl Default for FitOptions {
             foot_points: true,
             max_iterations: 200,
             eps_tolerance: 1e-3,
+            fairness: DEFAULT_FAIRNESS,
+            pin_ends: false,
+            tolerance: DEFAULT_TOLERANCE,
         }
     }
 }
@@ -93,6 +134,10 @@ pub struct CurveFit<const D: usize> {
     pub seed_bound: f64,
     /// `delta_L` per knot (0 at the ends and at corners).
     pub weights: Vec<f64>,
+    /// `lambda = fairness * n`, the weight of the bending energy.
+    pub bending_weight: f64,
+    /// `S = int |R''(t)|^2 dt` achieved.
+    pub bending_energy: f64,
     /// Inner iterations done in all.
     pub iterations: usize,
 }
@@ -108,9 +153,9 @@ impl<const D: usize> CurveFit<D> {
         (self.data_term / self.distances.len() as f64).sqrt()
     }
 
-    /// `H + p f`, the objective of the last minimization.
+    /// `H + p f + lambda S`, the objective of the last minimization.
     pub fn objective(&self) -> f64 {
-        self.data_term + self.penalty * self.jump_sum
+        self.data_term + self.penalty * self.jump_sum + self.bending_weight * self.bending_energy
     }
 }
 
@@ -165,6 +210,20 @@ pub(crate) fn check_settings(options: &FitOptions) -> Result<()> {
             reason: "must lie strictly between 0 and 1",
         });
     }
+    if !(options.fairness >= 0.0 && options.fairness.is_finite()) {
+        return Err(Error::InvalidSetting {
+            name: "fairness",
+            value: options.fairness,
+            reason: "must be zero or positive and finite",
+        });
+    }
+    if !(options.tolerance >= 0.0 && options.tolerance < 1.0) {
+        return Err(Error::InvalidSetting {
+            name: "tolerance",
+            value: options.tolerance,
+            reason: "must lie in [0, 1)",
+        });
+    }
     if options.max_iterations == 0 {
         return Err(Error::InvalidSetting {
             name: "max_iterations",
@@ -186,13 +245,13 @@ pub(crate) fn check_settings(options: &FitOptions) -> Result<()> {
 
 /// Fits a C^1 cubic Hermite spline on `knots` (`0 = T_1 < ... < T_N = 1`) to the ordered
 /// `points`, minimizing the sum of squared foot-point distances subject to
-/// `sum delta_L |J_L|^2 <= options.eps` (see the [module docs](self)).
+/// `sum delta_L |J_L|^2 <= options.eps` (see the [module docs](crate::fit)).
 ///
 /// Errors: fewer than 3 points, a non-finite coordinate, all points coinciding; invalid
 /// knots ([`Error::InvalidKnot`]); invalid settings ([`Error::InvalidSetting`]);
-/// [`Error::SingularSystem`] when the points cannot determine the spline (the unconstrained
-/// fit, `eps = infinity`, needs points on every piece: about three per pair of neighbouring
-/// pieces).
+/// [`Error::SingularSystem`] when the points cannot determine the spline (possible only
+/// without the bending term, `fairness: 0`: the unconstrained fit then needs points on every
+/// piece, about three per pair of neighbouring pieces).
 pub fn fit_curve<const D: usize>(
     points: &[Point<D>],
     knots: &[f64],
@@ -203,20 +262,6 @@ pub fn fit_curve<const D: usize>(
     fit_checked(points, knots, &weights, start, options)
 }
 
-/// A state on `knots` with zero coefficients and the given parameters.
-fn blank_state<const D: usize>(knots: &[f64], params: Vec<f64>) -> State<D> {
-    let n = knots.len();
-    State {
-        spline: HermiteSpline::from_parts(
-            knots.to_vec(),
-            vec![Point::ZERO; n],
-            vec![Point::ZERO; n],
-        ),
-        dist_sq: vec![0.0; params.len()],
-        params,
-    }
-}
-
 /// The fit after the inputs were checked.
 pub(crate) fn fit_checked<const D: usize>(
     points: &[Point<D>],
@@ -225,11 +270,26 @@ pub(crate) fn fit_checked<const D: usize>(
     start: Vec<f64>,
     options: &FitOptions,
 ) -> Result<CurveFit<D>> {
-    let mut state = blank_state::<D>(knots, start.clone());
-    let mut solver = Solver::new(points, weights, options.foot_points, &state.spline);
+    let problem = Problem {
+        points,
+        delta: weights,
+        bending: options.fairness * points.len() as f64,
+        pins: options
+            .pin_ends
+            .then(|| [points[0], points[points.len() - 1]]),
+        foot_points: options.foot_points,
+    };
+    let stop = Stop {
+        max_iterations: options.max_iterations,
+        tolerance: options.tolerance,
+    };
+    let mut state = State::<D>::blank(knots, start.clone());
+    let mut solver = Solver::new(problem, &state.spline);
     let mut iterations = 0;
     let finish = |state: State<D>, p: f64, seed_bound: f64, iterations: usize| CurveFit {
         jump_sum: state.spline.jump_penalty(weights),
+        bending_energy: state.spline.bending_energy(),
+        bending_weight: problem.bending,
         data_term: state.data_term(),
         distances: state.dist_sq.iter().map(|d| d.sqrt()).collect(),
         parameters: state.params,
@@ -239,19 +299,25 @@ pub(crate) fn fit_checked<const D: usize>(
         weights: weights.to_vec(),
         iterations,
     };
+    let f_of = |s: &State<D>| s.spline.jump_penalty(weights);
 
     // 1. The unconstrained fit.
-    let unconstrained = solver.solve_fixed(&start, 0.0, &mut state.spline);
-    match unconstrained {
+    match solver.solve_fixed(&mut state, 0.0) {
         Ok(()) => {
             solver.project(&mut state);
-            iterations += solver.minimize(&mut state, 0.0, options.max_iterations)?;
-            if state.spline.jump_penalty(weights) <= options.eps {
+            iterations += solver.minimize(&mut state, Penalty::Fixed(0.0), stop)?.0;
+            if f_of(&state) <= options.eps {
                 return Ok(finish(state, 0.0, 0.0, iterations));
             }
         }
         Err(e) if options.eps.is_infinite() => return Err(e),
-        Err(_) => {}
+        Err(_) => {
+            // Too few points for the unconstrained fit: start from the fit with the jumps
+            // held to zero (always determined when the points determine one cubic).
+            state.params.copy_from_slice(&start);
+            solver.solve_fixed(&mut state, 1.0)?;
+            solver.project(&mut state);
+        }
     }
 
     // 2. The seed's bound from a feasible q*: the fit on the knots {0, corners, 1}.
@@ -263,165 +329,118 @@ pub(crate) fn fit_checked<const D: usize>(
         .map(|(_, (&k, _))| k)
         .collect();
     coarse.dedup();
-    let (reference_h, reference) = feasible_reference(points, &coarse, knots, &start, options);
-    if reference_h <= 0.0 {
-        if let Some(exact) = reference {
-            // The points lie exactly on a spline without bounded jumps: it is the answer.
-            return Ok(finish(exact, 0.0, 0.0, iterations));
-        }
+    let (reference, exact) = feasible_reference(problem, &coarse, knots, &start, stop);
+    if reference <= 0.0 {
+        // The points lie exactly on a spline without bounded jumps: it is the answer.
+        return Ok(finish(exact, 0.0, 0.0, iterations));
     }
-    let seed_bound = reference_h / options.eps;
+    let eps = options.eps;
+    let seed_bound = reference / eps;
+    // The constrained fit starts again from the starting parameters: the unconstrained fit
+    // can be far from the bound, and its foot points no guide.
+    let restart = |state: &mut State<D>| {
+        state.params.copy_from_slice(&start);
+        state.piece.fill(0);
+    };
     let mut p = seed_bound;
-    state.params.copy_from_slice(&start);
-    solver.solve_fixed(&start, p, &mut state.spline)?;
+    restart(&mut state);
+    solver.solve_fixed(&mut state, p)?;
     solver.project(&mut state);
-    let mut raised = 0;
-    loop {
-        iterations += solver.minimize(&mut state, p, options.max_iterations)?;
-        if state.spline.jump_penalty(weights) <= options.eps {
-            break;
+    if options.penalty == PenaltyRule::ActiveBound {
+        // 3. The active bound, from the fit at the seed's p* (stiff, so that the foot points
+        // settle on a smooth curve first): p is then chosen at every Newton step.
+        let settle = Stop {
+            tolerance: stop.tolerance.max(DEFAULT_TOLERANCE),
+            ..stop
+        };
+        iterations += solver.minimize(&mut state, Penalty::Fixed(p), settle)?.0;
+        let lowest = (1.0 - options.eps_tolerance) * eps;
+        let penalty = Penalty::Target {
+            target: eps * (1.0 - 0.5 * options.eps_tolerance),
+            lowest,
+            highest: eps,
+            guess: p,
+        };
+        let (done, found) = solver.minimize(&mut state, penalty, stop)?;
+        iterations += done;
+        let f = f_of(&state);
+        if f <= eps && f >= lowest {
+            return Ok(finish(state, found, seed_bound, iterations));
         }
-        raised += 1;
-        if raised > 40 {
-            return Err(Error::InvalidSetting {
-                name: "eps",
-                value: options.eps,
-                reason: "the jump bound could not be met (the penalty grew past 1e40 times the seed's bound)",
-            });
+        // Not settled in the window (iteration cap): hold the p found, raised if need be.
+        p = found.max(f64::MIN_POSITIVE);
+    }
+    // The seed's rule: p = p*, times 10 until the bound holds.
+    for _ in 0..=40 {
+        iterations += solver.minimize(&mut state, Penalty::Fixed(p), stop)?.0;
+        if f_of(&state) <= eps {
+            return Ok(finish(state, p, seed_bound, iterations));
         }
         p *= 10.0;
     }
-    if options.penalty == PenaltyRule::SeedBound {
-        return Ok(finish(state, p, seed_bound, iterations));
-    }
-
-    // 3. Lower p until the bound is active.
-    let eps = options.eps;
-    let target_lo = (1.0 - options.eps_tolerance) * eps;
-    let mut best = (p, state.clone());
-    let f_of = |s: &State<D>| s.spline.jump_penalty(weights);
-    if f_of(&best.1) >= target_lo {
-        return Ok(finish(best.1, best.0, seed_bound, iterations));
-    }
-    // Bracket: (p_lo, f_lo > eps) and (p_hi, f_hi <= eps), in logarithms.
-    let (mut p_hi, mut f_hi) = (p, f_of(&state));
-    let mut lower: Option<(f64, f64)> = None;
-    let floor = seed_bound * 1e-16;
-    let mut probe = p_hi;
-    while lower.is_none() {
-        probe /= 100.0;
-        if probe < floor {
-            break;
-        }
-        state = best.1.clone();
-        iterations += solver.minimize(&mut state, probe, options.max_iterations)?;
-        let f = f_of(&state);
-        if f > eps {
-            lower = Some((probe, f));
-        } else {
-            p_hi = probe;
-            f_hi = f;
-            best = (probe, state.clone());
-            if f >= target_lo {
-                return Ok(finish(state, probe, seed_bound, iterations));
-            }
-        }
-    }
-    let Some((mut p_lo, mut f_lo)) = lower else {
-        return Ok(finish(best.1, best.0, seed_bound, iterations));
-    };
-    let log_eps = eps.ln();
-    // Illinois-modified regula falsi on phi(x) = ln f - ln eps, x = ln p.
-    let (mut side_lo, mut side_hi) = (
-        f_lo.ln() - log_eps,
-        f_hi.max(f64::MIN_POSITIVE).ln() - log_eps,
-    );
-    let mut last_moved_hi: Option<bool> = None;
-    for _ in 0..60 {
-        let (x_lo, x_hi) = (p_lo.ln(), p_hi.ln());
-        let mut x = if side_lo.is_finite() && side_hi.is_finite() && side_lo != side_hi {
-            x_lo - side_lo * (x_hi - x_lo) / (side_hi - side_lo)
-        } else {
-            0.5 * (x_lo + x_hi)
-        };
-        if !(x > x_lo && x < x_hi) {
-            x = 0.5 * (x_lo + x_hi);
-        }
-        let probe = x.exp();
-        // Warm start from the feasible side (the lowest feasible p so far).
-        state = best.1.clone();
-        iterations += solver.minimize(&mut state, probe, options.max_iterations)?;
-        let f = f_of(&state);
-        let side = f.max(f64::MIN_POSITIVE).ln() - log_eps;
-        if f <= eps {
-            p_hi = probe;
-            side_hi = side;
-            best = (probe, state.clone());
-            if f >= target_lo {
-                break;
-            }
-            if last_moved_hi == Some(true) {
-                side_lo *= 0.5;
-            }
-            last_moved_hi = Some(true);
-        } else {
-            p_lo = probe;
-            f_lo = f;
-            side_lo = f_lo.ln() - log_eps;
-            if last_moved_hi == Some(false) {
-                side_hi *= 0.5;
-            }
-            last_moved_hi = Some(false);
-        }
-        if (p_hi / p_lo).ln() < 1e-12 {
-            break;
-        }
-    }
-    Ok(finish(best.1, best.0, seed_bound, iterations))
+    Err(unreachable_bound(eps))
 }
 
-/// `H(q*)` of the fit on the knots `coarse` (which carry no bounded jump) and that fit
-/// carried over to `knots` (the same curve: values and derivatives at the finer knots), or
-/// `H(0)` of `q* = 0` when that fit cannot be made (the seed's crude bound).
+/// The error for a bound that the penalty could not enforce.
+fn unreachable_bound(eps: f64) -> Error {
+    Error::InvalidSetting {
+        name: "eps",
+        value: eps,
+        reason: "the jump bound could not be met (the penalty grew past 1e40 times its start)",
+    }
+}
+
+/// `(H + lambda S)(q*)` of a feasible `q*` (no jump at any knot with `delta_L = 1`): the fit on
+/// the knots `coarse` carried over to `knots` (the same curve, values and derivatives at the
+/// finer knots), or, when that fit cannot be made, the straight segment from the first point
+/// to the last; and that `q*` (the answer when `H + lambda S` vanishes).
 fn feasible_reference<const D: usize>(
-    points: &[Point<D>],
+    problem: Problem<D>,
     coarse: &[f64],
     knots: &[f64],
     start: &[f64],
-    options: &FitOptions,
-) -> (f64, Option<State<D>>) {
+    stop: Stop,
+) -> (f64, State<D>) {
     let no_weights = vec![0.0; coarse.len()];
-    let fallback: f64 = points.iter().map(|p| p.norm_sq()).sum();
-    let mut state = blank_state::<D>(coarse, start.to_vec());
-    let mut solver = Solver::new(points, &no_weights, options.foot_points, &state.spline);
-    if solver.solve_fixed(start, 0.0, &mut state.spline).is_err() {
-        return (fallback, None);
-    }
-    solver.project(&mut state);
-    // Any feasible q* gives a valid bound: a few iterations suffice.
-    if solver
-        .minimize(
-            &mut state,
-            0.0,
-            options.max_iterations.min(REFERENCE_ITERATIONS),
-        )
-        .is_err()
-    {
-        return (fallback, None);
-    }
-    let h = state.data_term();
-    if h > fallback {
-        return (fallback, None);
-    }
-    let fine = HermiteSpline::from_parts(
-        knots.to_vec(),
-        knots.iter().map(|&t| state.spline.eval(t)).collect(),
-        knots.iter().map(|&t| state.spline.deriv(t, 1)).collect(),
-    );
-    let lifted = State {
-        spline: fine,
-        params: state.params,
-        dist_sq: state.dist_sq,
+    let coarse_problem = Problem {
+        delta: &no_weights,
+        ..problem
     };
-    (h, Some(lifted))
+    let mut state = State::<D>::blank(coarse, start.to_vec());
+    let mut solver = Solver::new(coarse_problem, &state.spline);
+    let fitted = solver.solve_fixed(&mut state, 0.0).is_ok() && {
+        solver.project(&mut state);
+        // Any feasible q* gives a valid bound: a few iterations suffice.
+        let stop = Stop {
+            max_iterations: stop.max_iterations.min(REFERENCE_ITERATIONS),
+            ..stop
+        };
+        solver
+            .minimize(&mut state, Penalty::Fixed(0.0), stop)
+            .is_ok()
+    };
+    let spline = if fitted {
+        HermiteSpline::from_parts(
+            knots.to_vec(),
+            knots.iter().map(|&t| state.spline.eval(t)).collect(),
+            knots.iter().map(|&t| state.spline.deriv(t, 1)).collect(),
+        )
+    } else {
+        let (a, b) = (problem.points[0], problem.points[problem.points.len() - 1]);
+        HermiteSpline::from_parts(
+            knots.to_vec(),
+            knots.iter().map(|&t| a.add_scaled(t, b - a)).collect(),
+            vec![b - a; knots.len()],
+        )
+    };
+    let mut lifted = State {
+        spline,
+        params: if fitted { state.params } else { start.to_vec() },
+        dist_sq: vec![0.0; start.len()],
+        piece: vec![0; start.len()],
+    };
+    let mut form = PowerForm::new(&lifted.spline);
+    super::solver::project(problem.points, problem.foot_points, &mut lifted, &mut form);
+    let value = lifted.data_term() + problem.bending * lifted.spline.bending_energy();
+    (value, lifted)
 }

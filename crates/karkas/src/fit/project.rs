@@ -16,12 +16,15 @@
 //! or an end of `[0, 1]` where `d` increases inwards. `O(1)` curve evaluations per point in
 //! the usual case (quadratic convergence from the previous foot point).
 
-use super::hermite::HermiteSpline;
+use super::power::PowerForm;
 use crate::Point;
 
 /// The most Newton or bisection steps per projection (each at least halves a bracket or
 /// converges quadratically; 100 is never reached in practice).
 const MAX_STEPS: usize = 100;
+/// A Newton step shorter than this times the search window (a few pieces) ends the search:
+/// the error left is of the order of its square.
+const NEWTON_SETTLED: f64 = 1e-10;
 
 /// Value, slope and curvature of `d(t) = |R(t) - r|^2 / 2`.
 #[derive(Clone, Copy, Debug)]
@@ -33,10 +36,11 @@ struct Jet {
     speed_sq: f64,
 }
 
+/// The jet at `t`; `piece` is a hint for the piece of `t` and is updated to it.
 #[inline]
-fn jet<const D: usize>(curve: &HermiteSpline<D>, r: Point<D>, t: f64) -> Jet {
-    let (piece, s) = curve.locate(t);
-    let [p, d1, d2] = curve.jet_on_piece(piece, s);
+fn jet<const D: usize>(curve: &PowerForm<D>, r: Point<D>, t: f64, piece: &mut usize) -> Jet {
+    *piece = curve.piece_near(t, *piece);
+    let [p, d1, d2] = curve.jet(*piece, t);
     let e = p - r;
     Jet {
         d: 0.5 * e.norm_sq(),
@@ -48,10 +52,23 @@ fn jet<const D: usize>(curve: &HermiteSpline<D>, r: Point<D>, t: f64) -> Jet {
 
 /// The foot point of `r` on `curve` over `[0, 1]` (the curve's domain), searched from
 /// `start`; returns `(t, |R(t) - r|^2)`.
+#[cfg(test)]
 pub(crate) fn foot_point<const D: usize>(
-    curve: &HermiteSpline<D>,
+    curve: &super::hermite::HermiteSpline<D>,
     r: Point<D>,
     start: f64,
+) -> (f64, f64) {
+    let mut piece = 0;
+    foot_point_near(&PowerForm::new(curve), r, start, &mut piece)
+}
+
+/// [`foot_point`] with `piece`, a hint for the piece of `start`, updated to the piece of the
+/// result (the fit keeps one per point, so that locating a parameter is `O(1)`).
+pub(crate) fn foot_point_near<const D: usize>(
+    curve: &PowerForm<D>,
+    r: Point<D>,
+    start: f64,
+    piece: &mut usize,
 ) -> (f64, f64) {
     let knots = curve.knots();
     let (first, last) = (knots[0], knots[knots.len() - 1]);
@@ -60,7 +77,7 @@ pub(crate) fn foot_point<const D: usize>(
     } else {
         start.clamp(first, last)
     };
-    let mut cur = descend(curve, r, &mut t);
+    let mut cur = descend(curve, r, &mut t, piece);
     // A point where g vanishes but d bends down (a maximum, or a fold where two feet merge)
     // is no foot point: step off it to the lower side and descend again.
     for _ in 0..4 {
@@ -71,22 +88,26 @@ pub(crate) fn foot_point<const D: usize>(
         let nudge = 1e-7 * (last - first);
         let below = (t - nudge).max(first);
         let above = (t + nudge).min(last);
-        let (jb, ja) = (jet(curve, r, below), jet(curve, r, above));
+        let (jb, ja) = (jet(curve, r, below, piece), jet(curve, r, above, piece));
         t = if jb.d <= ja.d { below } else { above };
-        cur = descend(curve, r, &mut t);
+        cur = descend(curve, r, &mut t, piece);
     }
     (t, 2.0 * cur.d)
 }
 
 /// Safeguarded Newton descent on `d` from `t` (updated in place); returns the jet there.
-fn descend<const D: usize>(curve: &HermiteSpline<D>, r: Point<D>, t_io: &mut f64) -> Jet {
+fn descend<const D: usize>(
+    curve: &PowerForm<D>,
+    r: Point<D>,
+    t_io: &mut f64,
+    piece: &mut usize,
+) -> Jet {
     let knots = curve.knots();
     let (first, last) = (knots[0], knots[knots.len() - 1]);
     let mut t = *t_io;
-    let (piece, _) = curve.locate(t);
+    let mut cur = jet(curve, r, t, piece);
     let mut lo_knot = piece.saturating_sub(1);
-    let mut hi_knot = (piece + 2).min(knots.len() - 1);
-    let mut cur = jet(curve, r, t);
+    let mut hi_knot = (*piece + 2).min(knots.len() - 1);
     let (mut left, mut right) = (f64::NEG_INFINITY, f64::INFINITY);
     for _ in 0..MAX_STEPS {
         if cur.g < 0.0 {
@@ -117,7 +138,11 @@ fn descend<const D: usize>(curve: &HermiteSpline<D>, r: Point<D>, t_io: &mut f64
         let b = knots[hi_knot].min(right);
         let bracketed = left.is_finite() && right.is_finite();
         let newton = if cur.h > 0.0 {
-            t - cur.g / cur.h
+            let delta = cur.g / cur.h;
+            if delta.abs() <= 4.0 * f64::EPSILON * t.abs().max(f64::MIN_POSITIVE) {
+                break; // the Newton step is below the resolution of t: converged
+            }
+            t - delta
         } else {
             f64::NAN
         };
@@ -132,7 +157,7 @@ fn descend<const D: usize>(curve: &HermiteSpline<D>, r: Point<D>, t_io: &mut f64
         } else {
             0.5 * (t + b)
         };
-        let mut next = jet(curve, r, next_t);
+        let mut next = jet(curve, r, next_t, piece);
         // A Newton step that moves the curve point by less than half the distance is in the
         // quadratic regime: there d changes below its own rounding, so it is not checked.
         let step = next_t - t;
@@ -142,14 +167,17 @@ fn descend<const D: usize>(curve: &HermiteSpline<D>, r: Point<D>, t_io: &mut f64
             // Rounding in d near the minimum must not veto a good Newton step.
             while next.d > cur.d * (1.0 + 8.0 * f64::EPSILON) && halvings < 60 {
                 next_t = 0.5 * (t + next_t);
-                next = jet(curve, r, next_t);
+                next = jet(curve, r, next_t, piece);
                 halvings += 1;
             }
         }
         let moved = (next_t - t).abs();
         t = next_t;
         cur = next;
-        if moved <= 2.0 * f64::EPSILON * t.abs().max(f64::MIN_POSITIVE) {
+        // Quadratic convergence: after a Newton step this short the next one would be below
+        // the resolution of t.
+        let converged = small && moved <= NEWTON_SETTLED * (knots[hi_knot] - knots[lo_knot]);
+        if converged || moved <= 2.0 * f64::EPSILON * t.abs().max(f64::MIN_POSITIVE) {
             break;
         }
     }
@@ -160,6 +188,7 @@ fn descend<const D: usize>(curve: &HermiteSpline<D>, r: Point<D>, t_io: &mut f64
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::fit::HermiteSpline;
 
     #[test]
     fn foot_point_on_a_straight_line_is_the_orthogonal_projection() {

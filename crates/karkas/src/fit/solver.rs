@@ -1,524 +1,491 @@
-//! The inner problem of the penalty method: for a fixed `p`, minimize
-//! `F(q) = sum_i min_t |R(t) - r_i|^2 + p sum_L delta_L |J_L|^2` over the spline
-//! coefficients `q = {R_L, H_L}`.
+//! The inner problem of the penalty method: minimize
 //!
-//! Two steps, both banded least-squares solves ([`BandedLeastSquares`]):
+//! ```text
+//! F(q) = sum_i min_t |R(t) - r_i|^2 + p sum_L delta_L |J_L|^2 + lambda int |R''|^2 dt
+//! ```
 //!
-//! - the alternation step of the seed: with the parameters `t_i` held, `F` is quadratic in
-//!   `q` and separates by coordinate; one Givens triangularization of width 6 with `D`
-//!   right-hand sides (unknowns ordered `R_0, H_0, R_1, H_1, ...`) gives the minimizer, then
-//!   every point is projected onto the new curve ([`foot_point`]);
-//! - Gauss–Newton on `(q, t)` together, with the `t_i` eliminated: at a foot point the
-//!   residual is orthogonal to the tangent, and minimizing the linearized residual over
-//!   `dt_i` leaves its normal part, `P_i (e_i + A_i dq)` with `P_i = I - u_i u_i^T`
-//!   (tangent-distance rows); the coordinates couple, so the unknowns are interleaved
-//!   (`(2L + a) D + c`) and the band is `6 D` wide. Levenberg–Marquardt damping (rows
-//!   `sqrt(mu diag)`, Marquardt's scaling by the column norms) keeps the step safe; a step
-//!   is taken only when the true objective, after re-projecting every point, decreases, and
-//!   the alternation step is the fallback. Gauss–Newton converges fast where the alternation
-//!   alone crawls along the curve.
+//! over the spline coefficients `q = {R_L, H_L}` (the last term is the bending energy, see
+//! [`FitOptions::fairness`](super::FitOptions::fairness)), optionally with the end values
+//! pinned to the first and last points, with `p` held or chosen per step ([`Penalty`]).
+//!
+//! - Newton's method on the reduced objective (the `t_i` eliminated by projection, see
+//!   [`newton`](super::newton)): each iteration assembles the banded Hessian in one pass over
+//!   the points, solves it by banded Cholesky, moves the coefficients and re-projects every
+//!   point from its previous foot point ([`foot_point_near`]).
+//! - Levenberg–Marquardt damping (Marquardt's scaling): a step is taken only when the true
+//!   objective, after re-projecting every point, decreases; the damping follows the ratio of
+//!   the actual to the predicted decrease; each damping is tried with the exact model, then
+//!   with the safe one. When no damped step succeeds, the seed's alternation step (the
+//!   least-squares spline with the parameters held, [`solve_fixed`], then projection) is taken
+//!   instead; it never increases `F`. Near the minimum, where `F` no longer changes in
+//!   floating point, a step is taken when it shrinks the gradient.
+//! - The iteration stops when the gradient vanishes (relative `1e-12`), when an undamped step
+//!   changes no point's distance by more than [`Stop::tolerance`] times the RMS distance,
+//!   after iterations that lower neither `F` nor the gradient, or after
+//!   [`Stop::max_iterations`]. The
+//!   second rule exists because `F` is nearly flat along reparameterizations of the curve
+//!   (points sliding along it): there the iterates creep, lowering `F` by tiny amounts for
+//!   many iterations, while the shape and the distances have settled.
 //!
 //! The first and last points keep `t = 0` and `t = 1`: they anchor the ends of the curve
 //! (the seed minimizes over the `t_i` of the inner points only).
 //!
-//! Each iteration is `O(n D^2 w + N D^3)` for `n` points and `N` knots, with `w = 6 D`, and
+//! Each iteration is `O(n D^2)` for `n` points in R^D plus `O(N D^3)` for `N` knots, and
 //! allocates nothing: every buffer lives in the [`Solver`].
 
-use super::hermite::{hermite_basis, jump_coefficients, HermiteSpline};
-use super::project::foot_point;
+use super::fixed::{solve_fixed, PieceIndex};
+use super::hermite::HermiteSpline;
+use super::newton::{accumulate_gradient, Gradient};
+use super::power::PowerForm;
+use super::project::foot_point_near;
 use crate::solve::{BandedLeastSquares, BandedSpd};
-use crate::{Curve, Error, Point, Result};
+use crate::{Error, Point, Result};
 
 /// Stop when the largest gradient entry is below this times the gradient's scale.
 const GRADIENT_TOLERANCE: f64 = 1e-12;
-/// Stop after this many iterations in a row without progress.
+/// Stop after this many iterations in a row without progress: lowering `F` by more than
+/// `PROGRESS` (relative) or the gradient by the factor `GRADIENT_PROGRESS`.
 const STALLS: usize = 3;
-/// An iteration lowering `F` by less than this (relative) makes no progress.
-const PROGRESS: f64 = 1e-12;
-/// Damping tries per iteration before the alternation step is taken instead.
-const DAMPING_TRIES: usize = 8;
+/// See `STALLS`.
+const PROGRESS: f64 = 1e-13;
+/// See `STALLS`.
+const GRADIENT_PROGRESS: f64 = 0.99;
+/// Damping values tried per iteration before the alternation step is taken instead.
+const DAMPING_TRIES: usize = 6;
+/// The damping of the first Newton step.
+const INITIAL_DAMPING: f64 = 1e-6;
+/// A step counts for the settled-distances test only when damped by at most this (a damped
+/// step is short, and its small changes say nothing about convergence).
+const SETTLED_DAMPING: f64 = 1e-3;
 
-/// A spline and the parameters and squared distances of the data points on it.
+/// The data of one fit, shared by every minimization.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Problem<'a, const D: usize> {
+    /// The points, in order.
+    pub points: &'a [Point<D>],
+    /// `delta_L`, one per knot (the end knots' entries are unused).
+    pub delta: &'a [f64],
+    /// `lambda`, the weight of the bending energy.
+    pub bending: f64,
+    /// The end values, when the ends are pinned to the first and last points.
+    pub pins: Option<[Point<D>; 2]>,
+    /// Project the points (foot-point distances) or keep their parameters.
+    pub foot_points: bool,
+}
+
+/// How the penalty `p` is set during a minimization.
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum Penalty {
+    /// `p` held.
+    Fixed(f64),
+    /// `p` chosen at every Newton step so that the jump sum after the step meets `target`
+    /// (the bound made active), starting next to `guess`.
+    Target {
+        /// The jump sum aimed at.
+        target: f64,
+        /// The iteration ends only with the jump sum in `[lowest, highest]`.
+        lowest: f64,
+        /// See `lowest`.
+        highest: f64,
+        /// Where the search of the first step starts.
+        guess: f64,
+    },
+}
+
+/// When the inner minimization stops.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Stop {
+    /// The most iterations.
+    pub max_iterations: usize,
+    /// Stop once an undamped step changes no distance by more than this times the RMS
+    /// distance (0: never).
+    pub tolerance: f64,
+}
+
+/// A spline and the parameters, squared distances and pieces of the data points on it.
 #[derive(Clone, Debug)]
 pub(crate) struct State<const D: usize> {
     pub spline: HermiteSpline<D>,
     pub params: Vec<f64>,
     pub dist_sq: Vec<f64>,
+    /// The piece of every parameter (a hint kept up to date by the projection).
+    pub piece: Vec<usize>,
 }
 
 impl<const D: usize> State<D> {
+    /// A state on `knots` with zero coefficients and the given parameters.
+    pub fn blank(knots: &[f64], params: Vec<f64>) -> Self {
+        let n = knots.len();
+        State {
+            spline: HermiteSpline::from_parts(
+                knots.to_vec(),
+                vec![Point::ZERO; n],
+                vec![Point::ZERO; n],
+            ),
+            dist_sq: vec![0.0; params.len()],
+            piece: vec![0; params.len()],
+            params,
+        }
+    }
+
     /// `H`: the sum of squared distances.
     pub fn data_term(&self) -> f64 {
         self.dist_sq.iter().sum()
     }
 }
 
-/// The points grouped by the piece their parameter falls on (a counting sort), so that the
-/// least-squares rows can be added in the order of their first column.
-#[derive(Clone, Debug, Default)]
-struct PieceIndex {
-    /// Point indices, piece by piece.
-    order: Vec<usize>,
-    /// `order[start[k]..start[k + 1]]` are the points on piece `k`.
-    start: Vec<usize>,
-    /// The piece of every point.
-    piece: Vec<usize>,
-}
-
-impl PieceIndex {
-    fn new(points: usize, pieces: usize) -> Self {
-        PieceIndex {
-            order: vec![0; points],
-            start: vec![0; pieces + 1],
-            piece: vec![0; points],
-        }
-    }
-
-    fn build<const D: usize>(&mut self, spline: &HermiteSpline<D>, params: &[f64]) {
-        self.start.fill(0);
-        for (slot, &t) in self.piece.iter_mut().zip(params) {
-            *slot = spline.locate(t).0;
-            self.start[*slot + 1] += 1;
-        }
-        for k in 1..self.start.len() {
-            self.start[k] += self.start[k - 1];
-        }
-        // Fill using `start` as running cursors, then shift it back.
-        for (i, &k) in self.piece.iter().enumerate() {
-            self.order[self.start[k]] = i;
-            self.start[k] += 1;
-        }
-        for k in (1..self.start.len()).rev() {
-            self.start[k] = self.start[k - 1];
-        }
-        self.start[0] = 0;
-    }
-
-    fn on_piece(&self, k: usize) -> &[usize] {
-        &self.order[self.start[k]..self.start[k + 1]]
-    }
-}
-
 /// Buffers and settings of the inner minimization.
 pub(crate) struct Solver<'a, const D: usize> {
-    points: &'a [Point<D>],
-    /// `delta_L`, one per knot (the end knots' entries are unused).
-    delta: &'a [f64],
-    /// Project the points (foot-point distances) or keep their parameters.
-    project: bool,
+    pub(super) problem: Problem<'a, D>,
     coord: BandedLeastSquares,
-    hessian: BandedSpd,
+    pub(super) hessian: BandedSpd,
     index: PieceIndex,
+    /// Per piece: `sum A^T A` of its points, 4 x 4 (the same for every coordinate).
+    pub(super) separable: Vec<f64>,
+    /// Per piece: `-sum v v^T / h` of its points, `4 D x 4 D`.
+    pub(super) coupled: Vec<f64>,
+    /// The same with the safe `h` (see [`newton`](super::newton)).
+    pub(super) coupled_safe: Vec<f64>,
+    /// Use `coupled_safe` in the Newton step.
+    pub(super) safe: bool,
+    /// The gradient at the current state.
+    pub(super) gradient: Gradient,
+    /// The gradient at a trial state.
+    trial_gradient: Gradient,
+    /// The Newton step, interleaved layout.
+    pub(super) step: Vec<f64>,
+    /// The damping added to each diagonal entry.
+    pub(super) damping: Vec<f64>,
+    /// Coefficients in the layout of [`BandedLeastSquares`] (`D` per unknown).
     x: Vec<f64>,
-    abs_sum: Vec<f64>,
-    /// `v_i` of the Newton step, `4 D` numbers.
-    local: Vec<f64>,
+    /// The power form of the spline being projected onto.
+    power: PowerForm<D>,
     trial: State<D>,
 }
 
 impl<'a, const D: usize> Solver<'a, D> {
-    /// A solver for `points` on the knots of `template` (whose coefficients only size the
+    /// A solver for `problem` on the knots of `template` (whose coefficients only size the
     /// buffers).
-    pub fn new(
-        points: &'a [Point<D>],
-        delta: &'a [f64],
-        project: bool,
-        template: &HermiteSpline<D>,
-    ) -> Self {
+    pub fn new(problem: Problem<'a, D>, template: &HermiteSpline<D>) -> Self {
         let n_knots = template.knots().len();
-        let unknowns = 2 * n_knots;
+        let pieces = n_knots - 1;
+        let unknowns = 2 * n_knots * D;
+        let n = problem.points.len();
         Solver {
-            points,
-            delta,
-            project,
-            coord: BandedLeastSquares::new(unknowns, 6, D),
-            hessian: BandedSpd::new(unknowns * D, 5 * D + 1),
-            index: PieceIndex::new(points.len(), n_knots - 1),
-            x: vec![0.0; unknowns * D],
-            abs_sum: vec![0.0; unknowns * D],
-            local: vec![0.0; 4 * D],
+            problem,
+            coord: BandedLeastSquares::new(2 * n_knots, 6, D),
+            hessian: BandedSpd::new(unknowns, 5 * D + 1),
+            index: PieceIndex::new(n, pieces),
+            separable: vec![0.0; pieces * 16],
+            coupled: vec![0.0; pieces * 16 * D * D],
+            coupled_safe: vec![0.0; pieces * 16 * D * D],
+            safe: false,
+            gradient: Gradient::new(unknowns),
+            trial_gradient: Gradient::new(unknowns),
+            step: vec![0.0; unknowns],
+            damping: vec![0.0; unknowns],
+            x: vec![0.0; unknowns],
+            power: PowerForm::new(template),
             trial: State {
                 spline: template.clone(),
-                params: vec![0.0; points.len()],
-                dist_sq: vec![0.0; points.len()],
+                params: vec![0.0; n],
+                dist_sq: vec![0.0; n],
+                piece: vec![0; n],
             },
         }
     }
 
-    /// `F = H + p f` of a state.
+    /// `F = H + p f + lambda S` of a state.
     pub fn objective(&self, state: &State<D>, p: f64) -> f64 {
-        objective(self.delta, state, p)
+        objective(&self.problem, state, p)
     }
 
-    /// The least-squares spline for the parameters `params` held fixed, into `out`.
+    /// The least-squares spline for the parameters of `state` held fixed, into
+    /// `state.spline` (distances not refreshed).
     ///
-    /// Errors: [`Error::SingularSystem`] when the points and jump rows do not determine
-    /// every coefficient (too few points on some pieces for the penalty given).
-    pub fn solve_fixed(
-        &mut self,
-        params: &[f64],
-        p: f64,
-        out: &mut HermiteSpline<D>,
-    ) -> Result<()> {
-        self.index.build(out, params);
+    /// Errors: [`Error::SingularSystem`] when the points and the other rows do not determine
+    /// every coefficient (too few points on some pieces).
+    pub fn solve_fixed(&mut self, state: &mut State<D>, p: f64) -> Result<()> {
         solve_fixed(
+            &self.problem,
             &mut self.coord,
+            &mut self.index,
             &mut self.x,
-            &self.index,
-            self.points,
-            self.delta,
-            params,
+            state,
             p,
-            out,
         )
     }
 
     /// Re-projects every inner point onto `state.spline` from its current parameter (the ends
     /// keep theirs), and refreshes the squared distances.
-    pub fn project(&self, state: &mut State<D>) {
-        project(self.points, self.project, state);
-    }
-
-    /// The gradient of `F` with respect to the coefficients at `state` (envelope theorem: the
-    /// parameters are foot points), as `(max |g_k|, max_k sum |terms of g_k|)`.
-    pub fn gradient(&mut self, state: &State<D>, p: f64) -> (f64, f64) {
-        gradient(
-            self.points,
-            self.delta,
+    pub fn project(&mut self, state: &mut State<D>) {
+        project(
+            self.problem.points,
+            self.problem.foot_points,
             state,
-            p,
-            &mut self.x,
-            &mut self.abs_sum,
-        )
+            &mut self.power,
+        );
     }
 
-    /// The damped Newton step at `state` into `self.x` (interleaved layout).
-    ///
-    /// The Hessian of the reduced objective `sum_i min_t |R(t) - r_i|^2 + p f` (halved), by
-    /// implicit differentiation of the foot-point condition `e . R' = 0`, is
-    /// `sum_i (A_i^T A_i - v_i v_i^T / h_i) + p sum_L delta_L a_L a_L^T`, with `A_i` the
-    /// basis values at `t_i`, `v_i = A_i^T R' + B_i^T e_i` (`B_i` the basis derivatives),
-    /// `h_i = |R'|^2 + e_i . R''`; it is banded (`5 D + 1` diagonals). Points whose foot point
-    /// is not a strict minimum (`h_i <= 0`) keep only `A_i^T A_i`. Damping adds
-    /// `mu max(K_jj, floor)` to the diagonal (Marquardt's scaling); a matrix that is not
-    /// positive definite fails the factorization and the caller damps more.
-    fn newton_step(&mut self, state: &State<D>, p: f64, mu: f64) -> Result<()> {
-        let spline = &state.spline;
-        let knots = spline.knots();
-        let n = self.points.len();
-        let k_mat = &mut self.hessian;
-        k_mat.clear();
-        let g = &mut self.x;
-        g.fill(0.0);
-        let v = &mut self.local;
-        for (i, (r, &t)) in self.points.iter().zip(&state.params).enumerate() {
-            let (k, s) = spline.locate(t);
-            let h = knots[k + 1] - knots[k];
-            let [pt, d1, d2] = spline.jet_on_piece(k, s);
-            let e = pt - *r;
-            let b0 = hermite_basis(s, h, 0);
-            let b1 = hermite_basis(s, h, 1);
-            let base = 2 * k * D;
-            for (a, &pa) in b0.iter().enumerate() {
-                for c in 0..D {
-                    g[base + a * D + c] += pa * e[c];
-                }
-                for (b, &pb) in b0.iter().enumerate().take(a + 1) {
-                    for c in 0..D {
-                        k_mat.add(base + a * D + c, base + b * D + c, pa * pb);
-                    }
-                }
-            }
-            let curvature = d1.norm_sq() + e.dot(d2);
-            let free =
-                self.project && i > 0 && i + 1 < n && t > knots[0] && t < knots[knots.len() - 1];
-            if free && curvature > 0.0 {
-                for a in 0..4 {
-                    for c in 0..D {
-                        v[a * D + c] = b0[a] * d1[c] + b1[a] * e[c];
-                    }
-                }
-                let inv = 1.0 / curvature;
-                for x in 0..4 * D {
-                    for y in 0..=x {
-                        k_mat.add(base + x, base + y, -v[x] * v[y] * inv);
-                    }
-                }
-            }
-        }
-        for l in 1..knots.len() - 1 {
-            let w = p * self.delta[l];
-            if w.is_nan() || w <= 0.0 {
-                continue;
-            }
-            let jl = spline.jump_measure(l);
-            let coef = jump_coefficients(knots[l] - knots[l - 1], knots[l + 1] - knots[l]);
-            let base = 2 * (l - 1) * D;
-            for (a, &ca) in coef.iter().enumerate() {
-                for c in 0..D {
-                    g[base + a * D + c] += w * jl[c] * ca;
-                }
-                for (b, &cb) in coef.iter().enumerate().take(a + 1) {
-                    for c in 0..D {
-                        k_mat.add(base + a * D + c, base + b * D + c, w * ca * cb);
-                    }
-                }
-            }
-        }
-        if mu > 0.0 {
-            let size = k_mat.size();
-            let floor = (0..size).fold(0.0f64, |m, j| m.max(k_mat.diagonal(j))) * 1e-12;
-            for j in 0..size {
-                let d = k_mat.diagonal(j);
-                k_mat.add(j, j, mu * d.max(floor));
-            }
-        }
-        k_mat.factor()?;
-        for x in g.iter_mut() {
-            *x = -*x;
-        }
-        k_mat.solve_factored(g);
-        Ok(())
-    }
-
-    /// The state `state + x` (the step in `self.x`) into `self.trial`, projected.
-    fn step_into_trial(&mut self, state: &State<D>) {
+    /// The state `state + step` into `self.trial`, projected; returns its `F`, or infinity
+    /// as soon as it is sure to exceed `budget` (the projection is then left unfinished: a
+    /// step that went astray costs little).
+    fn step_into_trial(&mut self, state: &State<D>, p: f64, budget: f64) -> f64 {
         self.trial.params.copy_from_slice(&state.params);
+        self.trial.piece.copy_from_slice(&state.piece);
         copy_coefficients(&state.spline, &mut self.trial.spline);
         let (values, derivatives) = self.trial.spline.coefficients_mut();
         for (k, (v, d)) in values.iter_mut().zip(derivatives.iter_mut()).enumerate() {
             for c in 0..D {
-                v[c] += self.x[2 * k * D + c];
-                d[c] += self.x[(2 * k + 1) * D + c];
+                v[c] += self.step[2 * k * D + c];
+                d[c] += self.step[(2 * k + 1) * D + c];
             }
         }
-        project(self.points, self.project, &mut self.trial);
+        let penalties = penalties(&self.problem, &self.trial.spline, p);
+        let finished = project_within(
+            self.problem.points,
+            self.problem.foot_points,
+            &mut self.trial,
+            &mut self.power,
+            budget - penalties,
+        );
+        if finished {
+            self.trial.data_term() + penalties
+        } else {
+            f64::INFINITY
+        }
     }
 
-    /// Minimizes `F` for the penalty `p` from `state` (whose parameters are already foot
-    /// points, or fixed ones); returns the iterations done.
+    /// The seed's alternation step into `self.trial`: the least-squares spline for the
+    /// parameters of `state`, then projection; returns its `F` (infinite when the solve
+    /// fails).
+    fn alternation_into_trial(&mut self, state: &State<D>, p: f64) -> f64 {
+        let trial = &mut self.trial;
+        trial.params.copy_from_slice(&state.params);
+        trial.piece.copy_from_slice(&state.piece);
+        copy_coefficients(&state.spline, &mut trial.spline);
+        let solved = solve_fixed(
+            &self.problem,
+            &mut self.coord,
+            &mut self.index,
+            &mut self.x,
+            trial,
+            p,
+        );
+        if solved.is_err() {
+            return f64::INFINITY;
+        }
+        project(
+            self.problem.points,
+            self.problem.foot_points,
+            trial,
+            &mut self.power,
+        );
+        objective(&self.problem, trial, p)
+    }
+
+    /// Minimizes `F` from `state` (whose parameters are already foot points, or fixed
+    /// ones), with `p` held or chosen per step (see [`Penalty`]); returns the iterations done
+    /// and the final `p`.
+    ///
+    /// Errors: [`Error::SingularSystem`] when the parameters are held and the least-squares
+    /// problem does not determine the spline.
     pub fn minimize(
         &mut self,
         state: &mut State<D>,
-        p: f64,
-        max_iterations: usize,
-    ) -> Result<usize> {
-        if !self.project {
-            self.index.build(&state.spline, &state.params);
-            solve_fixed(
-                &mut self.coord,
-                &mut self.x,
-                &self.index,
-                self.points,
-                self.delta,
-                &state.params,
-                p,
-                &mut state.spline,
-            )?;
-            project(self.points, false, state);
-            return Ok(1);
+        penalty: Penalty,
+        stop: Stop,
+    ) -> Result<(usize, f64)> {
+        let (mut p, window) = match penalty {
+            Penalty::Fixed(p) => (p, None),
+            Penalty::Target {
+                guess,
+                lowest,
+                highest,
+                ..
+            } => (guess, Some((lowest, highest))),
+        };
+        if let (false, Penalty::Fixed(p)) = (self.problem.foot_points, penalty) {
+            self.solve_fixed(state, p)?;
+            self.project(state);
+            return Ok((1, p));
         }
-        let mut current = self.objective(state, p);
-        let (mut g, mut scale) = self.gradient(state, p);
-        let mut mu = 1e-4;
+        let delta = self.problem.delta;
+        let in_window = |s: &State<D>| match window {
+            None => true,
+            Some((lo, hi)) => {
+                let f = s.spline.jump_penalty(delta);
+                f >= lo && f <= hi
+            }
+        };
+        let mut mu = INITIAL_DAMPING;
         let mut stalls = 0;
-        for iteration in 0..max_iterations {
-            if g <= GRADIENT_TOLERANCE * scale || !current.is_finite() {
-                return Ok(iteration);
+        let mut last_gradient = f64::INFINITY;
+        for iteration in 0..stop.max_iterations {
+            self.assemble(state);
+            let (g, scale) = self.gradient.size(p);
+            if g < GRADIENT_PROGRESS * last_gradient {
+                stalls = 0;
             }
-            let mut accepted = false;
-            for _ in 0..DAMPING_TRIES {
-                match self.newton_step(state, p, mu) {
-                    Ok(()) => {}
-                    Err(Error::SingularSystem { .. }) => {
-                        mu = (mu * 10.0).max(1e-10);
-                        continue;
-                    }
-                    Err(e) => return Err(e),
-                }
-                self.step_into_trial(state);
-                let value = objective(self.delta, &self.trial, p);
-                // Near the minimum F stops changing in floating point before the gradient
-                // vanishes: there a step that keeps F (to rounding) and shrinks the gradient
-                // counts as progress.
-                let level = value <= current + 4.0 * f64::EPSILON * current.abs();
-                let (g_trial, scale_trial) = if value < current || level {
-                    gradient(
-                        self.points,
-                        self.delta,
-                        &self.trial,
-                        p,
-                        &mut self.x,
-                        &mut self.abs_sum,
-                    )
-                } else {
-                    (f64::INFINITY, 0.0)
+            last_gradient = g;
+            let mut current = self.objective(state, p);
+            if !current.is_finite() || (g <= GRADIENT_TOLERANCE * scale && in_window(state)) {
+                return Ok((iteration, p));
+            }
+            let mut gained = None;
+            let mut progress = false;
+            let mut settled = false;
+            // Each damping is tried with the exact model, then with the safe one.
+            'tries: for attempt in 0..2 * DAMPING_TRIES {
+                self.safe = attempt % 2 == 1;
+                let tried = match penalty {
+                    Penalty::Fixed(p) => self.newton_step(state, p, mu).map(|x| (p, x)),
+                    Penalty::Target { target, .. } => self.target_step(state, target, p, mu),
                 };
-                if value < current || (level && g_trial < 0.5 * g) {
+                let mu_tried = mu;
+                if self.safe {
+                    mu = (mu * 8.0).max(1e-10);
+                }
+                let (p_try, predicted) = match tried {
+                    Ok(found) => found,
+                    Err(Error::SingularSystem { .. }) => continue 'tries,
+                    Err(e) => return Err(e),
+                };
+                let before = if p_try == p {
+                    current
+                } else {
+                    self.objective(state, p_try)
+                };
+                let budget = before + 8.0 * f64::EPSILON * before.abs();
+                let value = self.step_into_trial(state, p_try, budget);
+                let lower = value < before;
+                // Near the minimum F stops changing in floating point before the gradient
+                // vanishes: there a step that keeps F to rounding and shrinks the gradient
+                // is taken.
+                let level = !lower && value <= before + 4.0 * f64::EPSILON * before.abs() && {
+                    accumulate_gradient(&self.problem, &self.trial, &mut self.trial_gradient);
+                    self.trial_gradient.size(p_try).0
+                        < GRADIENT_PROGRESS * self.gradient.size(p_try).0
+                };
+                if lower || level {
+                    let ratio = (before - value) / predicted.max(f64::MIN_POSITIVE);
+                    mu = if ratio > 0.75 {
+                        (mu_tried * 0.25).max(1e-15)
+                    } else if ratio < 0.25 {
+                        mu_tried * 2.0
+                    } else {
+                        mu_tried
+                    };
+                    settled = mu_tried <= SETTLED_DAMPING
+                        && settled_distances(&state.dist_sq, &self.trial.dist_sq, stop.tolerance);
                     std::mem::swap(state, &mut self.trial);
-                    let gained = current - value > PROGRESS * current.abs() || g_trial < 0.5 * g;
-                    stalls = if gained { 0 } else { stalls + 1 };
+                    gained = Some(before - value);
+                    progress = before - value > PROGRESS * value.abs();
+                    p = p_try;
                     current = value;
-                    (g, scale) = (g_trial, scale_trial);
-                    mu = (mu * 0.25).max(1e-15);
-                    accepted = true;
-                    break;
+                    break 'tries;
                 }
-                mu *= 8.0;
             }
-            if !accepted {
-                // The alternation step of the seed: never increases F.
-                self.trial.params.copy_from_slice(&state.params);
-                copy_coefficients(&state.spline, &mut self.trial.spline);
-                self.index.build(&state.spline, &state.params);
-                let solved = solve_fixed(
-                    &mut self.coord,
-                    &mut self.x,
-                    &self.index,
-                    self.points,
-                    self.delta,
-                    &state.params,
-                    p,
-                    &mut self.trial.spline,
-                );
-                let mut moved = false;
-                if solved.is_ok() {
-                    project(self.points, self.project, &mut self.trial);
-                    let value = objective(self.delta, &self.trial, p);
-                    if value < current {
-                        std::mem::swap(state, &mut self.trial);
-                        moved = current - value > PROGRESS * current.abs();
-                        current = value;
-                        (g, scale) = self.gradient(state, p);
-                    }
+            self.safe = false;
+            if gained.is_none() {
+                let value = self.alternation_into_trial(state, p);
+                if value < current {
+                    std::mem::swap(state, &mut self.trial);
+                    gained = Some(current - value);
+                    progress = current - value > PROGRESS * value.abs();
                 }
-                mu = 1e-4;
-                stalls = if moved { 0 } else { stalls + 1 };
+                mu = mu.max(1e-4);
             }
-            if stalls >= STALLS {
-                return Ok(iteration + 1);
+            if !progress {
+                stalls += 1;
+            }
+            if stalls > STALLS {
+                return Ok((iteration + 1, p));
+            }
+            if gained.is_some() && settled && in_window(state) {
+                return Ok((iteration + 1, p));
             }
         }
-        Ok(max_iterations)
+        Ok((stop.max_iterations, p))
     }
 }
 
-/// The least-squares spline for fixed parameters (see [`Solver::solve_fixed`]); `index`
-/// groups the points by piece for `params`.
-#[allow(clippy::too_many_arguments)]
-fn solve_fixed<const D: usize>(
-    coord: &mut BandedLeastSquares,
-    x: &mut [f64],
-    index: &PieceIndex,
-    points: &[Point<D>],
-    delta: &[f64],
-    params: &[f64],
-    p: f64,
-    out: &mut HermiteSpline<D>,
-) -> Result<()> {
-    coord.clear();
-    let knots = out.knots();
-    for k in 0..knots.len() - 1 {
-        let h = knots[k + 1] - knots[k];
-        for &i in index.on_piece(k) {
-            let b = hermite_basis(out.local(k, params[i]), h, 0);
-            coord.add_row(2 * k, &b, &points[i].0);
-        }
-        let l = k + 1;
-        if l + 1 < knots.len() {
-            let w = (p * delta[l]).sqrt();
-            if w > 0.0 {
-                let c = jump_coefficients(knots[l] - knots[l - 1], knots[l + 1] - knots[l]);
-                coord.add_row(2 * (l - 1), &c.map(|v| v * w), &[0.0; D]);
-            }
-        }
+/// Whether no distance changed by more than `tolerance` times the RMS of the new distances
+/// (from squared distances `old` and `new`).
+fn settled_distances(old: &[f64], new: &[f64], tolerance: f64) -> bool {
+    if tolerance <= 0.0 {
+        return false;
     }
-    coord.solve(x)?;
-    let (values, derivatives) = out.coefficients_mut();
-    for (k, (v, d)) in values.iter_mut().zip(derivatives.iter_mut()).enumerate() {
-        for c in 0..D {
-            v[c] = x[2 * k * D + c];
-            d[c] = x[(2 * k + 1) * D + c];
-        }
+    let mut largest: f64 = 0.0;
+    let mut sum = 0.0;
+    for (a, b) in old.iter().zip(new) {
+        largest = largest.max((a.sqrt() - b.sqrt()).abs());
+        sum += b;
     }
-    Ok(())
+    largest <= tolerance * (sum / new.len().max(1) as f64).sqrt()
 }
 
-/// The gradient of `F` with respect to the coefficients at `state` (envelope theorem: the
-/// parameters are foot points), as `(max |g_k|, max_k sum |terms of g_k|)`.
-pub(crate) fn gradient<const D: usize>(
-    points: &[Point<D>],
-    delta: &[f64],
-    state: &State<D>,
-    p: f64,
-    g: &mut [f64],
-    abs_sum: &mut [f64],
-) -> (f64, f64) {
-    g.fill(0.0);
-    abs_sum.fill(0.0);
-    let spline = &state.spline;
-    let knots = spline.knots();
-    for (r, &t) in points.iter().zip(&state.params) {
-        let (k, s) = spline.locate(t);
-        let e = spline.deriv_on_piece(k, s, 0) - *r;
-        let b = hermite_basis(s, knots[k + 1] - knots[k], 0);
-        for (slot, &phi) in b.iter().enumerate() {
-            for c in 0..D {
-                let v = 2.0 * e[c] * phi;
-                let j = (2 * k + slot) * D + c;
-                g[j] += v;
-                abs_sum[j] += v.abs();
-            }
-        }
-    }
-    for l in 1..knots.len() - 1 {
-        let w = p * delta[l];
-        if w > 0.0 {
-            let jl = spline.jump_measure(l);
-            let coef = jump_coefficients(knots[l] - knots[l - 1], knots[l + 1] - knots[l]);
-            for (slot, &a) in coef.iter().enumerate() {
-                for c in 0..D {
-                    let v = 2.0 * w * jl[c] * a;
-                    let j = (2 * (l - 1) + slot) * D + c;
-                    g[j] += v;
-                    abs_sum[j] += v.abs();
-                }
-            }
-        }
-    }
-    let largest = g.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-    let scale = abs_sum.iter().fold(0.0f64, |m, v| m.max(*v));
-    (largest, scale)
+/// `F = H + p f + lambda S` of a state.
+pub(crate) fn objective<const D: usize>(problem: &Problem<D>, state: &State<D>, p: f64) -> f64 {
+    state.data_term() + penalties(problem, &state.spline, p)
 }
 
-/// `F = H + p f` of a state, with `delta_L` per knot.
-pub(crate) fn objective<const D: usize>(delta: &[f64], state: &State<D>, p: f64) -> f64 {
+/// `p f + lambda S` of a spline.
+fn penalties<const D: usize>(problem: &Problem<D>, spline: &HermiteSpline<D>, p: f64) -> f64 {
     let f = if p > 0.0 {
-        state.spline.jump_penalty(delta)
+        spline.jump_penalty(problem.delta)
     } else {
         0.0
     };
-    state.data_term() + p * f
+    let s = if problem.bending > 0.0 {
+        spline.bending_energy()
+    } else {
+        0.0
+    };
+    p * f + problem.bending * s
 }
 
 /// Re-projects every inner point of `points` onto `state.spline` from its current parameter
-/// when `foot_points` (the ends keep theirs), and refreshes the squared distances.
+/// when `foot_points` (the ends keep theirs), and refreshes the squared distances; `form` is
+/// scratch space for the power form of the spline (same knots).
 pub(crate) fn project<const D: usize>(
     points: &[Point<D>],
     foot_points: bool,
     state: &mut State<D>,
+    form: &mut PowerForm<D>,
 ) {
+    project_within(points, foot_points, state, form, f64::INFINITY);
+}
+
+/// [`project`], abandoned (returning `false`) once the sum of the squared distances exceeds
+/// `budget`.
+fn project_within<const D: usize>(
+    points: &[Point<D>],
+    foot_points: bool,
+    state: &mut State<D>,
+    form: &mut PowerForm<D>,
+    budget: f64,
+) -> bool {
+    form.update(&state.spline);
     let n = points.len();
+    let mut sum = 0.0;
     for (i, r) in points.iter().enumerate() {
         let t = state.params[i];
+        let piece = &mut state.piece[i];
         if foot_points && i > 0 && i + 1 < n {
-            let (t, d) = foot_point(&state.spline, *r, t);
+            let (t, d) = foot_point_near(form, *r, t, piece);
             state.params[i] = t;
             state.dist_sq[i] = d;
         } else {
-            state.dist_sq[i] = state.spline.eval(t).distance_sq(*r);
+            *piece = form.piece_near(t, *piece);
+            state.dist_sq[i] = form.point(*piece, t).distance_sq(*r);
+        }
+        sum += state.dist_sq[i];
+        if sum > budget {
+            return false;
         }
     }
+    true
 }
 
 /// Copies values and derivatives of `from` into `to` (same knots).
