@@ -79,6 +79,56 @@ fn csv_output_and_deviation_report() {
 }
 
 #[test]
+fn pinned_ends_start_and_end_at_the_first_and_last_points() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = write(dir.path(), "arc.csv", &arc());
+    let first: Vec<f64> = arc()
+        .lines()
+        .nth(1)
+        .unwrap()
+        .split(',')
+        .map(|f| f.parse().unwrap())
+        .collect();
+    let last: Vec<f64> = arc()
+        .lines()
+        .last()
+        .unwrap()
+        .split(',')
+        .map(|f| f.parse().unwrap())
+        .collect();
+    let out = dir.path().join("fit.csv");
+    let o = karkas(&[
+        "curve",
+        "fit",
+        s(&input),
+        "--knots",
+        "0,0.5,1",
+        "--pin-ends",
+        "--samples",
+        "7",
+        "-o",
+        s(&out),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let text = std::fs::read_to_string(&out).unwrap();
+    let rows: Vec<Vec<f64>> = text
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').map(|f| f.parse().unwrap()).collect())
+        .collect();
+    assert_eq!(rows.len(), 7);
+    let (start, end) = (&rows[0], &rows[rows.len() - 1]);
+    assert_eq!((start[0], end[0]), (0.0, 1.0));
+    for c in 0..2 {
+        assert!(
+            (start[c + 1] - first[c]).abs() < 1e-12,
+            "{start:?} vs {first:?}"
+        );
+        assert!((end[c + 1] - last[c]).abs() < 1e-12, "{end:?} vs {last:?}");
+    }
+}
+
+#[test]
 fn svg_output_with_tolerance() {
     let dir = tempfile::tempdir().unwrap();
     let input = write(dir.path(), "arc.csv", &arc());
@@ -115,6 +165,20 @@ fn bad_knots_are_one_line_errors_with_exit_2_and_no_output() {
         assert!(err.contains("knot"), "{err}");
         assert!(!out.exists());
     }
+    // Too few samples.
+    let o = karkas(&[
+        "curve",
+        "fit",
+        s(&input),
+        "--knots",
+        "0,1",
+        "--samples",
+        "1",
+        "-o",
+        s(&out),
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(!out.exists());
     // A corner that is not a knot.
     let o = karkas(&[
         "curve",

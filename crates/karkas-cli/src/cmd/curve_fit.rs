@@ -1,8 +1,9 @@
 //! `karkas curve fit`: a C^1 cubic Hermite spline fitted to measured points with bounded
 //! second-derivative jumps (seed 003, METHODS.md §4).
 
+use super::curve_ll::MAX_SAMPLES;
 use super::output::ensure_distinct;
-use crate::samples::default_curve_samples;
+use crate::samples::{default_curve_samples, parse_count};
 use anyhow::{anyhow, bail, Result};
 use clap::Args;
 use karkas::fit::{check_knots, fit_curve, fit_curve_adaptive, CurveFit, FitOptions};
@@ -12,6 +13,7 @@ use karkas_io::svg::{write_fit_svg, FitPlot};
 use karkas_io::write::{write_atomic, write_curve_csv};
 use karkas_io::OutputFormat;
 use std::path::PathBuf;
+use std::time::Instant;
 
 /// Arguments of `karkas curve fit`.
 #[derive(Debug, Args)]
@@ -32,6 +34,14 @@ pub struct CurveFitArgs {
     /// An inner knot whose jump is left free (a corner); repeat for several.
     #[arg(long = "corner", value_name = "T")]
     corners: Vec<f64>,
+    /// Number of samples of the fitted curve, uniform in t, ends included [default: 20 per
+    /// piece, at least 200].
+    #[arg(long, value_name = "N", value_parser = parse_count)]
+    samples: Option<usize>,
+    /// Pin the ends of the curve to the first and last points (e.g. a profile closed at a
+    /// known trailing edge).
+    #[arg(long)]
+    pin_ends: bool,
     /// Output: .csv (t,x,y[,z] samples of the curve) or .svg (points, curve, deviations).
     #[arg(short, long)]
     output: PathBuf,
@@ -50,6 +60,9 @@ pub fn run(args: &CurveFitArgs) -> Result<()> {
         if !(tol.is_finite() && tol > 0.0) {
             bail!("--tolerance: must be a positive number, got {tol}");
         }
+    }
+    if args.samples.is_some_and(|n| n > MAX_SAMPLES) {
+        bail!("--samples: at most {MAX_SAMPLES} samples can be written");
     }
     if args.knots.is_none() && args.tolerance.is_none() {
         bail!("give the knots (--knots T1,...,TN) or a tolerance (--tolerance TOL)");
@@ -80,9 +93,11 @@ fn fit_and_write<const D: usize>(
     let options = FitOptions {
         eps: args.eps.unwrap_or(f64::INFINITY),
         corners: args.corners.clone(),
+        pin_ends: args.pin_ends,
         ..Default::default()
     };
     let input = args.input.display();
+    let started = Instant::now();
     let fit: CurveFit<D> = match (&args.knots, args.tolerance) {
         (Some(knots), _) => {
             fit_curve(points, knots, &options).map_err(|e| anyhow!("{input}: {e}"))?
@@ -101,7 +116,10 @@ fn fit_and_write<const D: usize>(
         }
         (None, None) => bail!("give --knots or --tolerance"),
     };
-    let n = default_curve_samples(points.len()).max(20 * fit.spline.pieces());
+    let fit_time = started.elapsed();
+    let n = args
+        .samples
+        .unwrap_or_else(|| default_curve_samples(2 * fit.spline.pieces()));
     let mut ts = vec![0.0; n];
     let mut samples = vec![Point::ZERO; n];
     fit.spline.sample_into(&mut ts, &mut samples);
@@ -140,13 +158,14 @@ fn fit_and_write<const D: usize>(
         _ => write_curve_csv(&args.output, &ts, &samples)?,
     }
     eprintln!(
-        "karkas: wrote {} ({n} samples); {} knots, max deviation {:.6e}, rms {:.6e}, f = {:.6e}, p = {:.6e}",
+        "karkas: wrote {} ({n} samples); {} knots, max deviation {:.6e}, rms {:.6e}, f = {:.6e}, p = {:.6e}, fitted in {:.1} ms",
         args.output.display(),
         fit.spline.knots().len(),
         fit.max_distance(),
         fit.rms_distance(),
         fit.jump_sum,
-        fit.penalty
+        fit.penalty,
+        fit_time.as_secs_f64() * 1e3
     );
     Ok(())
 }
