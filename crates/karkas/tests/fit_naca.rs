@@ -21,30 +21,36 @@ fn section(beta: f64) -> Point2 {
 }
 
 /// Two-sided largest distance between the fitted curve and the true contour, both walked in
-/// order (each nearest segment is searched near the previous one).
+/// order: the nearest vertex of each point is found by descending from the previous one,
+/// then the segments around it are searched.
 fn distance_to_truth<C: Curve<2>>(curve: &C) -> f64 {
     let truth: Vec<Point2> = (0..=8000)
         .map(|k| section(2.0 * PI * k as f64 / 8000.0))
         .collect();
     let fit: Vec<Point2> = (0..=4000).map(|k| curve.eval(k as f64 / 4000.0)).collect();
     let one_way = |a: &[Point2], b: &[Point2]| {
+        // Both start at the trailing edge on the upper surface (a search from scratch could
+        // pick the lower surface, which meets the upper one there).
         let mut at: usize = 0;
         let mut worst: f64 = 0.0;
-        for (k, &q) in a.iter().enumerate() {
-            // Both start at the trailing edge on the upper surface: start the window there (a
-            // full search could pick the lower surface, which meets the upper one there).
-            let (from, to) = if k == 0 {
-                (0, 150)
-            } else {
-                (at.saturating_sub(150), at + 150)
-            };
-            let (mut d, mut seg) = polyline_distance(b, q, from, to);
-            if d > 1e-3 {
-                // Lost track (the two parameterizations run at different speeds): search all.
-                (d, seg) = polyline_distance(b, q, 0, b.len());
+        for &q in a {
+            let d = |j: usize| b[j].distance(q);
+            loop {
+                if at + 1 < b.len() && d(at + 1) < d(at) {
+                    at += 1;
+                } else if at > 0 && d(at - 1) < d(at) {
+                    at -= 1;
+                } else {
+                    break;
+                }
             }
-            at = seg;
-            worst = worst.max(d);
+            let (mut dist, _) = polyline_distance(b, q, at.saturating_sub(20), at + 20);
+            if dist > 1e-3 {
+                // Lost track (a local minimum of the vertex distance): search all.
+                let (full, seg) = polyline_distance(b, q, 0, b.len());
+                (dist, at) = (full, seg);
+            }
+            worst = worst.max(dist);
         }
         worst
     };

@@ -2,7 +2,7 @@
 //! point is a local minimizer of the distance, the gradient of `H + p f + lambda S` (with the
 //! small bending term `S = int |R''|^2` of `FitOptions::fairness`) with respect to the spline
 //! coefficients vanishes, the jump bound holds (and is active), and other starting
-//! parameterizations find nothing lower. The fits iterate to convergence (`tolerance: 0`).
+//! parameterizations find nothing lower. The fits iterate to convergence (`settle_tolerance: 0`).
 
 mod fit_common;
 
@@ -26,7 +26,7 @@ fn active_eps(_points: &[Point2]) -> f64 {
 fn options(eps: f64) -> FitOptions {
     FitOptions {
         eps,
-        tolerance: 0.0,
+        settle_tolerance: 0.0,
         ..Default::default()
     }
 }

@@ -33,7 +33,7 @@
 //! Guarantees (tested): every inner foot point is a local minimizer of the distance
 //! (residual orthogonal to the tangent, second-order condition); the gradient of
 //! `H + p f + lambda S` with respect to the coefficients vanishes at the result when iterated
-//! to convergence ([`FitOptions::tolerance`] 0); `eps -> 0` tends to the C^2 least-squares
+//! to convergence ([`FitOptions::settle_tolerance`] 0); `eps -> 0` tends to the C^2 least-squares
 //! cubic spline on the same knots and a large `eps` gives the unconstrained C^1 fit; on a
 //! NACA section with known truth the fit approaches the true contour as knots are added.
 //! The objective is not convex in the parameters: the result is a local minimum reached
@@ -59,5 +59,5 @@ pub use adaptive::{fit_curve_adaptive, AdaptiveFit};
 pub use hermite::HermiteSpline;
 pub use knots::{check_knots, start_parameters, uniform_knots, StartParameters, MIN_KNOT_SPACING};
 pub use penalty::{
-    fit_curve, CurveFit, FitOptions, PenaltyRule, DEFAULT_FAIRNESS, DEFAULT_TOLERANCE,
+    fit_curve, CurveFit, FitOptions, PenaltyRule, DEFAULT_FAIRNESS, DEFAULT_SETTLE_TOLERANCE,
 };

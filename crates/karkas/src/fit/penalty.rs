@@ -36,8 +36,8 @@ const REFERENCE_ITERATIONS: usize = 5;
 
 /// The default of [`FitOptions::fairness`].
 pub const DEFAULT_FAIRNESS: f64 = 3e-11;
-/// The default of [`FitOptions::tolerance`].
-pub const DEFAULT_TOLERANCE: f64 = 1e-2;
+/// The default of [`FitOptions::settle_tolerance`].
+pub const DEFAULT_SETTLE_TOLERANCE: f64 = 1e-2;
 
 /// How the penalty `p` is chosen.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
@@ -90,12 +90,12 @@ pub struct FitOptions {
     /// known point (e.g. a trailing edge) should pin its ends.
     pub pin_ends: bool,
     /// The inner minimization stops once an undamped step changes no point's distance by
-    /// more than `tolerance` times the RMS distance (default [`DEFAULT_TOLERANCE`], `1e-2`), or
-    /// when the gradient of the objective vanishes (relative `1e-12`) or no progress is made;
-    /// 0 leaves only the last two rules. The objective is nearly flat along
+    /// more than `settle_tolerance` times the RMS distance (default
+    /// [`DEFAULT_SETTLE_TOLERANCE`], `1e-2`), or when the gradient of the objective vanishes
+    /// (relative `1e-12`) or no progress is made; 0 leaves only the last two rules. The objective is nearly flat along
     /// reparameterizations of the curve (points sliding along it), where the iteration would
     /// creep for many steps with the shape already settled.
-    pub tolerance: f64,
+    pub settle_tolerance: f64,
 }
 
 impl Default for FitOptions {
@@ -110,7 +110,7 @@ impl Default for FitOptions {
             eps_tolerance: 1e-3,
             fairness: DEFAULT_FAIRNESS,
             pin_ends: false,
-            tolerance: DEFAULT_TOLERANCE,
+            settle_tolerance: DEFAULT_SETTLE_TOLERANCE,
         }
     }
 }
@@ -217,10 +217,10 @@ pub(crate) fn check_settings(options: &FitOptions) -> Result<()> {
             reason: "must be zero or positive and finite",
         });
     }
-    if !(options.tolerance >= 0.0 && options.tolerance < 1.0) {
+    if !(options.settle_tolerance >= 0.0 && options.settle_tolerance < 1.0) {
         return Err(Error::InvalidSetting {
-            name: "tolerance",
-            value: options.tolerance,
+            name: "settle_tolerance",
+            value: options.settle_tolerance,
             reason: "must lie in [0, 1)",
         });
     }
@@ -281,7 +281,7 @@ pub(crate) fn fit_checked<const D: usize>(
     };
     let stop = Stop {
         max_iterations: options.max_iterations,
-        tolerance: options.tolerance,
+        tolerance: options.settle_tolerance,
     };
     let mut state = State::<D>::blank(knots, start.clone());
     let mut solver = Solver::new(problem, &state.spline);
@@ -350,7 +350,7 @@ pub(crate) fn fit_checked<const D: usize>(
         // 3. The active bound, from the fit at the seed's p* (stiff, so that the foot points
         // settle on a smooth curve first): p is then chosen at every Newton step.
         let settle = Stop {
-            tolerance: stop.tolerance.max(DEFAULT_TOLERANCE),
+            tolerance: stop.tolerance.max(DEFAULT_SETTLE_TOLERANCE),
             ..stop
         };
         iterations += solver.minimize(&mut state, Penalty::Fixed(p), settle)?.0;
