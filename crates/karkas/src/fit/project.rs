@@ -12,9 +12,12 @@
 //! - before that, every step must decrease `d` (halving it until it does), and Newton is
 //!   used only where `g' > 0`.
 //!
-//! The result is a local minimizer: an inner `t` with `g = 0` and `g' >= 0` up to rounding,
-//! or an end of `[0, 1]` where `d` increases inwards. `O(1)` curve evaluations per point in
-//! the usual case (quadratic convergence from the previous foot point).
+//! The search ends when Newton's step falls below the resolution of `t`, or, in the
+//! quadratic regime, below `1e-10` of the window (the error left is then of the order of its
+//! square). The result is a local minimizer: an inner `t` with `g = 0` and `g' >= 0` up to
+//! rounding, or an end of `[0, 1]` where `d` increases inwards. The curve is evaluated from
+//! its power form ([`PowerForm`]) with a piece hint per point; `O(1)` evaluations per point
+//! in the usual case (three or four from the previous foot point).
 
 use super::power::PowerForm;
 use crate::Point;
