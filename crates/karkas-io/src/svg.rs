@@ -228,6 +228,65 @@ pub fn render_lines_svg(plot: &LinesPlot<'_>) -> Result<String, String> {
     Ok(svg)
 }
 
+/// A fit: the points, the fitted curve, and a whisker from every point to its foot point.
+#[derive(Clone, Copy, Debug)]
+pub struct FitPlot<'a> {
+    /// The caption above the plot.
+    pub title: &'a str,
+    /// The sampled curve, drawn as a polyline.
+    pub curve: &'a [Point2],
+    /// The data points, drawn as circles.
+    pub points: &'a [Point2],
+    /// The foot point of every data point on the curve (same length as `points`).
+    pub feet: &'a [Point2],
+}
+
+/// Draws `plot` and writes it as SVG to `path`, atomically.
+pub fn write_fit_svg(path: &Path, plot: &FitPlot<'_>) -> Result<(), IoError> {
+    let svg = render_fit_svg(plot).map_err(|message| IoError::Write {
+        path: path.to_path_buf(),
+        source: std::io::Error::other(message),
+    })?;
+    write_atomic(path, |out| out.write_all(svg.as_bytes()))
+}
+
+/// Draws `plot` into an SVG document in memory; the error is the drawing library's message.
+pub fn render_fit_svg(plot: &FitPlot<'_>) -> Result<String, String> {
+    let frame = Frame::new(plot.title, finite(plot.curve).chain(finite(plot.points)))?;
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (WIDTH, frame.height)).into_drawing_area();
+        root.fill(&WHITE).map_err(|e| e.to_string())?;
+        let mut chart = chart_builder(&root, plot.title)
+            .build_cartesian_2d(frame.x, frame.y)
+            .map_err(|e| e.to_string())?;
+        chart
+            .configure_mesh()
+            .x_desc("x")
+            .y_desc("y")
+            .label_style(("sans-serif", 15))
+            .axis_desc_style(("sans-serif", 18))
+            .draw()
+            .map_err(|e| e.to_string())?;
+        chart
+            .draw_series(LineSeries::new(finite(plot.curve), BLUE.stroke_width(2)))
+            .map_err(|e| e.to_string())?;
+        let whisker = RGBColor(230, 120, 0).stroke_width(1);
+        for (p, f) in plot.points.iter().zip(plot.feet) {
+            if p.is_finite() && f.is_finite() {
+                chart
+                    .draw_series(LineSeries::new([(p[0], p[1]), (f[0], f[1])], whisker))
+                    .map_err(|e| e.to_string())?;
+            }
+        }
+        chart
+            .draw_series(finite(plot.points).map(|p| Circle::new(p, 3, RED.filled())))
+            .map_err(|e| e.to_string())?;
+        root.present().map_err(|e| e.to_string())?;
+    }
+    Ok(svg)
+}
+
 /// The chart layout shared by the measuring pass and the real drawing.
 pub(crate) fn chart_builder<'a, 'b, DB: DrawingBackend>(
     root: &'a DrawingArea<DB, plotters::coord::Shift>,

@@ -316,6 +316,29 @@ pub enum Error {
         /// What is wrong.
         problem: String,
     },
+    /// A knot that is not finite, out of order, too close to its neighbour or outside the
+    /// allowed range ([`HermiteSpline::new`](crate::fit::HermiteSpline::new),
+    /// [`FitOptions::knots`](crate::fit::FitOptions), [`fit_curve`](crate::fit::fit_curve)).
+    #[error("knot {index} ({value}) is invalid: {reason}")]
+    InvalidKnot {
+        /// Index of the knot (0-based).
+        index: usize,
+        /// Its value.
+        value: f64,
+        /// What is wrong with it.
+        reason: &'static str,
+    },
+    /// A numeric setting outside its allowed range (e.g. a negative `eps` or tolerance in
+    /// [`fit_curve`](crate::fit::fit_curve), a corner that is not an inner knot).
+    #[error("{name} = {value} is not allowed: {reason}")]
+    InvalidSetting {
+        /// The setting.
+        name: &'static str,
+        /// The value given.
+        value: f64,
+        /// Why it is not allowed.
+        reason: &'static str,
+    },
 }
 
 /// `Result` with [`Error`].

@@ -22,6 +22,8 @@
 //! - [`implicit`]: implicit surfaces `F(x, y, z) = 0`, their principal curvatures, and node
 //!   grids traced along lines of curvature (or turned nets) by continuation;
 //! - [`measure`]: the two-sided Hausdorff distance between surfaces and point sets.
+//! - [`fit`]: fitting measured points with C^1 cubic Hermite splines (cubic splines of defect
+//!   2) whose second-derivative jumps are bounded (Pavlov).
 //!
 //! ```
 //! use karkas::{ll::LlCurve, Curve, Point};
@@ -37,6 +39,7 @@ pub mod coons;
 pub mod core;
 pub mod dps;
 mod error;
+pub mod fit;
 pub mod implicit;
 pub mod ll;
 pub mod measure;

@@ -1,6 +1,7 @@
 //! The commands of the `karkas` binary, one file each.
 
 mod curve_dps;
+mod curve_fit;
 mod curve_ll;
 pub mod hausdorff;
 mod output;
@@ -21,6 +22,8 @@ pub enum CurveCommand {
     Ll(curve_ll::CurveLlArgs),
     /// Discrete periodic spline: a closed discrete curve through (or with poles at) the points.
     Dps(curve_dps::CurveDpsArgs),
+    /// Fit a C^1 cubic spline with bounded second-derivative jumps to measured points.
+    Fit(curve_fit::CurveFitArgs),
 }
 
 impl CurveCommand {
@@ -29,6 +32,7 @@ impl CurveCommand {
         match self {
             CurveCommand::Ll(args) => curve_ll::run(&args),
             CurveCommand::Dps(args) => curve_dps::run(&args),
+            CurveCommand::Fit(args) => curve_fit::run(&args),
         }
     }
 }

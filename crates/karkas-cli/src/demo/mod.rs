@@ -5,6 +5,7 @@ mod coons;
 mod coons_data;
 mod data;
 mod dps;
+mod fit;
 mod ll;
 mod param;
 
@@ -43,6 +44,7 @@ pub fn run(args: &DemoArgs) -> Result<()> {
     findings.extend(dps::run(&args.out)?);
     findings.extend(param::run(&args.out)?);
     findings.extend(coons::run(&args.out)?);
+    findings.extend(fit::run(&args.out)?);
     print_summary(&findings, &args.out, started.elapsed().as_secs_f64());
     Ok(())
 }

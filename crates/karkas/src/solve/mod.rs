@@ -5,7 +5,16 @@
 //! case, the Sherman–Morrison correction. They are written here because no maintained crate
 //! solves a banded system with vector-valued right-hand sides in place without allocating
 //! dense matrices; the routines are short and tested against dense solves.
+//!
+//! The spline fits of seed 003 lead to banded least-squares problems, solved by Givens
+//! rotations in [`BandedLeastSquares`], and to banded symmetric positive definite Newton
+//! systems, solved by Cholesky factorization in [`BandedSpd`] (see their docs for why no
+//! crate is used).
 
+mod banded_cholesky;
+mod banded_qr;
 mod tridiagonal;
 
+pub use banded_cholesky::BandedSpd;
+pub use banded_qr::BandedLeastSquares;
 pub use tridiagonal::{solve_cyclic_tridiagonal, solve_tridiagonal};

@@ -1,0 +1,176 @@
+//! `karkas curve fit`: a C^1 cubic Hermite spline fitted to measured points with bounded
+//! second-derivative jumps (seed 003, METHODS.md §4).
+
+use super::curve_ll::MAX_SAMPLES;
+use super::output::ensure_distinct;
+use crate::samples::{default_curve_samples, parse_count};
+use anyhow::{anyhow, bail, Result};
+use clap::Args;
+use karkas::fit::{check_knots, fit_curve, fit_curve_adaptive, CurveFit, FitOptions};
+use karkas::{Curve, Point, Point2};
+use karkas_io::points::{read_curve_points, CurvePoints};
+use karkas_io::svg::{write_fit_svg, FitPlot};
+use karkas_io::write::{write_atomic, write_curve_csv};
+use karkas_io::OutputFormat;
+use std::path::PathBuf;
+use std::time::Instant;
+
+/// Arguments of `karkas curve fit`.
+#[derive(Debug, Args)]
+pub struct CurveFitArgs {
+    /// Input points, in order along the curve: CSV or whitespace columns x,y[,z], or an
+    /// airfoil .dat.
+    input: PathBuf,
+    /// The knots 0 = T1 < T2 < ... < TN = 1, comma-separated.
+    #[arg(long, value_delimiter = ',', conflicts_with = "tolerance")]
+    knots: Option<Vec<f64>>,
+    /// Place knots automatically until every point is within TOL of the curve.
+    #[arg(long, value_name = "TOL")]
+    tolerance: Option<f64>,
+    /// Bound on the sum of squared second-derivative jumps (the seed's J_L) at the inner
+    /// knots [default: none, the unconstrained C^1 fit].
+    #[arg(long, value_name = "E")]
+    eps: Option<f64>,
+    /// An inner knot whose jump is left free (a corner); repeat for several.
+    #[arg(long = "corner", value_name = "T")]
+    corners: Vec<f64>,
+    /// Number of samples of the fitted curve, uniform in t, ends included [default: 20 per
+    /// piece, at least 200].
+    #[arg(long, value_name = "N", value_parser = parse_count)]
+    samples: Option<usize>,
+    /// Pin the ends of the curve to the first and last points (e.g. a profile closed at a
+    /// known trailing edge).
+    #[arg(long)]
+    pin_ends: bool,
+    /// Output: .csv (t,x,y[,z] samples of the curve) or .svg (points, curve, deviations).
+    #[arg(short, long)]
+    output: PathBuf,
+    /// Per-point deviations as CSV: point,t,distance.
+    #[arg(long, value_name = "DEV.csv")]
+    report: Option<PathBuf>,
+}
+
+/// Runs `karkas curve fit`.
+pub fn run(args: &CurveFitArgs) -> Result<()> {
+    let format = OutputFormat::from_path(&args.output, &[OutputFormat::Csv, OutputFormat::Svg])?;
+    if let Some(knots) = &args.knots {
+        check_knots(knots).map_err(|e| anyhow!("--knots: {e}"))?;
+    }
+    if let Some(tol) = args.tolerance {
+        if !(tol.is_finite() && tol > 0.0) {
+            bail!("--tolerance: must be a positive number, got {tol}");
+        }
+    }
+    if args.samples.is_some_and(|n| n > MAX_SAMPLES) {
+        bail!("--samples: at most {MAX_SAMPLES} samples can be written");
+    }
+    if args.knots.is_none() && args.tolerance.is_none() {
+        bail!("give the knots (--knots T1,...,TN) or a tolerance (--tolerance TOL)");
+    }
+    if let Some(eps) = args.eps {
+        if eps.is_nan() || eps <= 0.0 {
+            bail!("--eps: must be a positive number, got {eps}");
+        }
+    }
+    ensure_distinct(&args.input, &args.output)?;
+    if let Some(report) = &args.report {
+        ensure_distinct(&args.input, report)?;
+        if report == &args.output {
+            bail!("--report: must differ from the output file");
+        }
+    }
+    match read_curve_points(&args.input)? {
+        CurvePoints::Planar(points) => fit_and_write(args, format, &points),
+        CurvePoints::Spatial(points) => fit_and_write(args, format, &points),
+    }
+}
+
+fn fit_and_write<const D: usize>(
+    args: &CurveFitArgs,
+    format: OutputFormat,
+    points: &[Point<D>],
+) -> Result<()> {
+    let options = FitOptions {
+        eps: args.eps.unwrap_or(f64::INFINITY),
+        corners: args.corners.clone(),
+        pin_ends: args.pin_ends,
+        ..Default::default()
+    };
+    let input = args.input.display();
+    let started = Instant::now();
+    let fit: CurveFit<D> = match (&args.knots, args.tolerance) {
+        (Some(knots), _) => {
+            fit_curve(points, knots, &options).map_err(|e| anyhow!("{input}: {e}"))?
+        }
+        (None, Some(tol)) => {
+            let adaptive =
+                fit_curve_adaptive(points, tol, &options).map_err(|e| anyhow!("{input}: {e}"))?;
+            if !adaptive.tolerance_met {
+                eprintln!(
+                    "karkas: warning: tolerance {tol} not met (largest deviation {:.6}) with {} knots",
+                    adaptive.fit.max_distance(),
+                    adaptive.fit.spline.knots().len()
+                );
+            }
+            adaptive.fit
+        }
+        (None, None) => bail!("give --knots or --tolerance"),
+    };
+    let fit_time = started.elapsed();
+    let n = args
+        .samples
+        .unwrap_or_else(|| default_curve_samples(2 * fit.spline.pieces()));
+    let mut ts = vec![0.0; n];
+    let mut samples = vec![Point::ZERO; n];
+    fit.spline.sample_into(&mut ts, &mut samples);
+    if let Some(report) = &args.report {
+        write_atomic(report, |w| {
+            writeln!(w, "point,t,distance")?;
+            for (i, (t, d)) in fit.parameters.iter().zip(&fit.distances).enumerate() {
+                writeln!(w, "{},{t},{d}", i + 1)?;
+            }
+            Ok(())
+        })?;
+    }
+    match format {
+        OutputFormat::Svg => {
+            let feet: Vec<Point2> = fit
+                .parameters
+                .iter()
+                .map(|&t| project(&[fit.spline.eval(t)])[0])
+                .collect();
+            let title = format!(
+                "defect-2 cubic spline fit, {} knots, {} points, max deviation {:.3e}",
+                fit.spline.knots().len(),
+                points.len(),
+                fit.max_distance()
+            );
+            write_fit_svg(
+                &args.output,
+                &FitPlot {
+                    title: &title,
+                    curve: &project(&samples),
+                    points: &project(points),
+                    feet: &feet,
+                },
+            )?;
+        }
+        _ => write_curve_csv(&args.output, &ts, &samples)?,
+    }
+    eprintln!(
+        "karkas: wrote {} ({n} samples); {} knots, max deviation {:.6e}, rms {:.6e}, f = {:.6e}, p = {:.6e}, fitted in {:.1} ms",
+        args.output.display(),
+        fit.spline.knots().len(),
+        fit.max_distance(),
+        fit.rms_distance(),
+        fit.jump_sum,
+        fit.penalty,
+        fit_time.as_secs_f64() * 1e3
+    );
+    Ok(())
+}
+
+/// The x-y projection of points of any dimension.
+fn project<const D: usize>(points: &[Point<D>]) -> Vec<Point2> {
+    points.iter().map(|p| Point2::new([p[0], p[1]])).collect()
+}

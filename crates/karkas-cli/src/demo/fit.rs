@@ -1,0 +1,140 @@
+//! Seed 003 (fitting with bounded second-derivative jumps): the paper's hydrofoil, knots
+//! (0, 0.445, 0.449, 0.587, 1), eps = 0.01 (METHODS.md §4). The paper's deviations are printed
+//! beside ours as context: its printed coordinates carry transcription errors.
+
+use super::Finding;
+use anyhow::{Context, Result};
+use karkas::fit::{fit_curve, FitOptions, PenaltyRule};
+use karkas::{Curve, Point, Point2};
+use karkas_io::svg::{write_fit_svg, FitPlot};
+use karkas_io::write::{write_atomic, write_curve_csv};
+use std::path::Path;
+
+/// The seed's table: x, y and the paper's deviation dR (also in data/hydrofoil-profile.csv).
+const HYDROFOIL: [(f64, f64, f64); 20] = [
+    (94.80, 78.50, 0.45),
+    (71.10, 52.60, 0.19),
+    (47.40, 29.90, 0.30),
+    (23.70, 7.90, 0.31),
+    (0.00, -12.90, 0.38),
+    (-23.70, -23.00, 0.60),
+    (-47.10, -67.90, 0.64),
+    (-74.80, -94.30, 0.59),
+    (-106.60, -93.00, 0.56),
+    (-115.00, -101.70, 0.71),
+    (-106.60, -104.80, 0.23),
+    (-94.80, -101.00, 0.34),
+    (-71.10, -90.90, 0.30),
+    (-47.40, -77.90, 0.20),
+    (-23.70, -63.00, 0.12),
+    (0.00, -48.50, 0.06),
+    (23.70, -25.00, 0.27),
+    (47.40, 0.00, 0.18),
+    (71.10, 28.60, 0.12),
+    (94.80, 62.60, 0.10),
+];
+const KNOTS: [f64; 5] = [0.0, 0.445, 0.449, 0.587, 1.0];
+const EPS: f64 = 0.01;
+
+/// Runs the example into `out`.
+pub fn run(out: &Path) -> Result<Vec<Finding>> {
+    let points: Vec<Point2> = HYDROFOIL
+        .iter()
+        .map(|&(x, y, _)| Point2::new([x, y]))
+        .collect();
+    let seed = fit_curve(
+        &points,
+        &KNOTS,
+        &FitOptions {
+            eps: EPS,
+            penalty: PenaltyRule::SeedBound,
+            ..Default::default()
+        },
+    )
+    .context("hydrofoil fit, seed's penalty")?;
+    let active = fit_curve(
+        &points,
+        &KNOTS,
+        &FitOptions {
+            eps: EPS,
+            ..Default::default()
+        },
+    )
+    .context("hydrofoil fit")?;
+    println!("seed 003 hydrofoil, knots {KNOTS:?}, eps = {EPS}: deviation of each point");
+    println!(
+        "{:>5} {:>9} {:>9} {:>8} {:>12} {:>12}",
+        "point", "x", "y", "paper", "seed's p", "active p"
+    );
+    let mut table = String::from("point,x,y,paper_dR,t,distance_seed_p,distance_active_p\n");
+    for (i, &(x, y, paper)) in HYDROFOIL.iter().enumerate() {
+        println!(
+            "{:>5} {x:>9.2} {y:>9.2} {paper:>8.2} {:>12.3} {:>12.3}",
+            i + 1,
+            seed.distances[i],
+            active.distances[i]
+        );
+        table.push_str(&format!(
+            "{},{x},{y},{paper},{},{},{}\n",
+            i + 1,
+            active.parameters[i],
+            seed.distances[i],
+            active.distances[i]
+        ));
+    }
+    write_atomic(&out.join("hydrofoil-fit-deviations.csv"), |w| {
+        w.write_all(table.as_bytes())
+    })?;
+    let n = 1000;
+    let mut ts = vec![0.0; n];
+    let mut samples = vec![Point::ZERO; n];
+    active.spline.sample_into(&mut ts, &mut samples);
+    write_curve_csv(&out.join("hydrofoil-fit.csv"), &ts, &samples)?;
+    let feet: Vec<Point2> = active
+        .parameters
+        .iter()
+        .map(|&t| active.spline.eval(t))
+        .collect();
+    write_fit_svg(
+        &out.join("hydrofoil-fit.svg"),
+        &FitPlot {
+            title: "Seed 003: hydrofoil, defect-2 cubic spline, eps = 0.01",
+            curve: &samples,
+            points: &points,
+            feet: &feet,
+        },
+    )?;
+    let example = "003 hydrofoil, 5 knots, eps = 0.01";
+    Ok(vec![
+        Finding {
+            example: example.into(),
+            measure: "max deviation, bound active".into(),
+            value: active.max_distance(),
+            paper: Some(0.71),
+        },
+        Finding {
+            example: example.into(),
+            measure: "max deviation, seed's p = H(q*)/eps".into(),
+            value: seed.max_distance(),
+            paper: None,
+        },
+        Finding {
+            example: example.into(),
+            measure: "f = sum J_L^2 achieved (bound active)".into(),
+            value: active.jump_sum,
+            paper: None,
+        },
+        Finding {
+            example: example.into(),
+            measure: "penalty p (bound active)".into(),
+            value: active.penalty,
+            paper: None,
+        },
+        Finding {
+            example: example.into(),
+            measure: "seed's p = H(q*)/eps".into(),
+            value: seed.penalty,
+            paper: None,
+        },
+    ])
+}

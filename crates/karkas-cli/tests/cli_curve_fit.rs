@@ -1,0 +1,198 @@
+//! The CLI contract of `karkas curve fit` (issue 12): options, CSV headers, and exit code 2
+//! with no output on bad knots.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn karkas(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_karkas"))
+        .args(args)
+        .output()
+        .expect("the karkas binary runs")
+}
+
+fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
+    let p = dir.join(name);
+    std::fs::write(&p, text).unwrap();
+    p
+}
+
+fn s(p: &Path) -> &str {
+    p.to_str().unwrap()
+}
+
+/// A noisy arc of 30 points.
+fn arc() -> String {
+    let mut text = String::from("x,y\n");
+    for i in 0..30 {
+        let a = 2.0 * i as f64 / 29.0;
+        let wobble = 0.003 * ((i * 7919) % 13) as f64 / 13.0;
+        text.push_str(&format!(
+            "{},{}\n",
+            (1.0 + wobble) * a.cos(),
+            (1.0 + wobble) * a.sin()
+        ));
+    }
+    text
+}
+
+#[test]
+fn csv_output_and_deviation_report() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = write(dir.path(), "arc.csv", &arc());
+    let out = dir.path().join("fit.csv");
+    let dev = dir.path().join("dev.csv");
+    let o = karkas(&[
+        "curve",
+        "fit",
+        s(&input),
+        "--knots",
+        "0,0.3,0.7,1",
+        "--eps",
+        "0.01",
+        "-o",
+        s(&out),
+        "--report",
+        s(&dev),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let text = std::fs::read_to_string(&out).unwrap();
+    assert!(text.starts_with("t,x,y\n"));
+    let rows: Vec<Vec<f64>> = text
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').map(|f| f.parse().unwrap()).collect())
+        .collect();
+    assert_eq!(rows[0][0], 0.0);
+    assert_eq!(rows[rows.len() - 1][0], 1.0);
+    let report = std::fs::read_to_string(&dev).unwrap();
+    let mut lines = report.lines();
+    assert_eq!(lines.next(), Some("point,t,distance"));
+    let dev: Vec<Vec<f64>> = lines
+        .map(|l| l.split(',').map(|f| f.parse().unwrap()).collect())
+        .collect();
+    assert_eq!(dev.len(), 30);
+    assert_eq!(dev[0][0], 1.0);
+    assert!(dev
+        .iter()
+        .all(|r| r[2] >= 0.0 && r[2] < 0.01 && (0.0..=1.0).contains(&r[1])));
+}
+
+#[test]
+fn pinned_ends_start_and_end_at_the_first_and_last_points() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = write(dir.path(), "arc.csv", &arc());
+    let first: Vec<f64> = arc()
+        .lines()
+        .nth(1)
+        .unwrap()
+        .split(',')
+        .map(|f| f.parse().unwrap())
+        .collect();
+    let last: Vec<f64> = arc()
+        .lines()
+        .last()
+        .unwrap()
+        .split(',')
+        .map(|f| f.parse().unwrap())
+        .collect();
+    let out = dir.path().join("fit.csv");
+    let o = karkas(&[
+        "curve",
+        "fit",
+        s(&input),
+        "--knots",
+        "0,0.5,1",
+        "--pin-ends",
+        "--samples",
+        "7",
+        "-o",
+        s(&out),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let text = std::fs::read_to_string(&out).unwrap();
+    let rows: Vec<Vec<f64>> = text
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').map(|f| f.parse().unwrap()).collect())
+        .collect();
+    assert_eq!(rows.len(), 7);
+    let (start, end) = (&rows[0], &rows[rows.len() - 1]);
+    assert_eq!((start[0], end[0]), (0.0, 1.0));
+    for c in 0..2 {
+        assert!(
+            (start[c + 1] - first[c]).abs() < 1e-12,
+            "{start:?} vs {first:?}"
+        );
+        assert!((end[c + 1] - last[c]).abs() < 1e-12, "{end:?} vs {last:?}");
+    }
+}
+
+#[test]
+fn svg_output_with_tolerance() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = write(dir.path(), "arc.csv", &arc());
+    let out = dir.path().join("fit.svg");
+    let o = karkas(&[
+        "curve",
+        "fit",
+        s(&input),
+        "--tolerance",
+        "0.005",
+        "-o",
+        s(&out),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let svg = std::fs::read_to_string(&out).unwrap();
+    assert!(svg.starts_with("<svg") && svg.contains("polyline"));
+}
+
+#[test]
+fn bad_knots_are_one_line_errors_with_exit_2_and_no_output() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = write(dir.path(), "arc.csv", &arc());
+    let out = dir.path().join("fit.csv");
+    for knots in [
+        "0,0.6,0.4,1",
+        "0,0.5,0.5000000001,1",
+        "0,0.5,1.5",
+        "0.1,0.5,1",
+    ] {
+        let o = karkas(&["curve", "fit", s(&input), "--knots", knots, "-o", s(&out)]);
+        assert_eq!(o.status.code(), Some(2), "{knots}");
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+        assert!(err.contains("knot"), "{err}");
+        assert!(!out.exists());
+    }
+    // Too few samples.
+    let o = karkas(&[
+        "curve",
+        "fit",
+        s(&input),
+        "--knots",
+        "0,1",
+        "--samples",
+        "1",
+        "-o",
+        s(&out),
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(!out.exists());
+    // A corner that is not a knot.
+    let o = karkas(&[
+        "curve",
+        "fit",
+        s(&input),
+        "--knots",
+        "0,0.5,1",
+        "--eps",
+        "1",
+        "--corner",
+        "0.3",
+        "-o",
+        s(&out),
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(!out.exists());
+}

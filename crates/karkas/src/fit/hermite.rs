@@ -1,0 +1,382 @@
+//! C^1 cubic Hermite splines: cubic splines of defect 2 (seed 003; METHODS.md §4).
+//!
+//! On knots `T_0 < ... < T_{N-1}` the spline stores a value `R_L` and a derivative `H_L` at
+//! every knot. On piece `k` (`[T_k, T_{k+1}]`, length `h`, local `s = (t - T_k)/h`):
+//!
+//! ```text
+//! R(t) = R_k (1-s)^2 (1+2s) + R_{k+1} s^2 (3-2s) + H_k h s (1-s)^2 - H_{k+1} h s^2 (1-s)
+//! ```
+//!
+//! (the seed prints `- h_L` in `F_0` where `+ h_L` is meant). Value and first derivative are
+//! continuous at the knots; the second derivative jumps, and the seed measures the jump at an
+//! inner knot by its formula (2):
+//!
+//! ```text
+//! J_L = lambda_L H_{L-1} + 2 H_L + mu_L H_{L+1}
+//!       - 3 lambda_L (R_L - R_{L-1}) / h_L - 3 mu_L (R_{L+1} - R_L) / h_{L+1},
+//! lambda_L = h_{L+1} / (h_L + h_{L+1}),  mu_L = 1 - lambda_L,
+//! ```
+//!
+//! which is the jump `R''(T_L+) - R''(T_L-)` times `-h_L h_{L+1} / (2 (h_L + h_{L+1}))`.
+//! `J = 0` at every inner knot makes the spline C^2.
+//!
+//! Evaluation is `O(log N)` (binary search of the piece) plus `O(D)`.
+
+use crate::core::{Curve, Interval, PiecewiseCurve, Side};
+use crate::{Error, Point, Result};
+
+/// A C^1 piecewise cubic curve in R^D given by values and derivatives at its knots.
+///
+/// Outside `[T_0, T_{N-1}]` the polynomials of the end pieces are extended.
+#[derive(Clone, Debug, PartialEq)]
+pub struct HermiteSpline<const D: usize> {
+    knots: Vec<f64>,
+    values: Vec<Point<D>>,
+    derivatives: Vec<Point<D>>,
+}
+
+/// The four Hermite basis functions of a piece of length `h` at local `s`, differentiated `k`
+/// times with respect to `t`, in the order `[R_k, H_k, R_{k+1}, H_{k+1}]`. Zero for `k > 3`.
+#[inline]
+pub(crate) fn hermite_basis(s: f64, h: f64, k: usize) -> [f64; 4] {
+    let s2 = s * s;
+    match k {
+        0 => {
+            let v1 = s2 * (3.0 - 2.0 * s);
+            [
+                1.0 - v1,
+                h * s * (1.0 - s) * (1.0 - s),
+                v1,
+                -h * s2 * (1.0 - s),
+            ]
+        }
+        1 => {
+            let d = 6.0 * s * (1.0 - s) / h;
+            [-d, 1.0 - 4.0 * s + 3.0 * s2, d, 3.0 * s2 - 2.0 * s]
+        }
+        2 => {
+            let d = (12.0 * s - 6.0) / (h * h);
+            [d, (6.0 * s - 4.0) / h, -d, (6.0 * s - 2.0) / h]
+        }
+        3 => {
+            let h2 = h * h;
+            let d = 12.0 / (h2 * h);
+            [d, 6.0 / h2, -d, 6.0 / h2]
+        }
+        _ => [0.0; 4],
+    }
+}
+
+/// The coefficients of `J_L` (formula (2) of seed 003) on
+/// `[R_{L-1}, H_{L-1}, R_L, H_L, R_{L+1}, H_{L+1}]`, for knots with `h_l = T_L - T_{L-1}` and
+/// `h_r = T_{L+1} - T_L`.
+#[inline]
+pub(crate) fn jump_coefficients(h_l: f64, h_r: f64) -> [f64; 6] {
+    let lambda = h_r / (h_l + h_r);
+    let mu = h_l / (h_l + h_r);
+    [
+        3.0 * lambda / h_l,
+        lambda,
+        -3.0 * lambda / h_l + 3.0 * mu / h_r,
+        2.0,
+        -3.0 * mu / h_r,
+        mu,
+    ]
+}
+
+/// The Gram matrix of the second derivatives of the four Hermite basis functions of a piece of
+/// length `h`: entry `(a, b)` is `int B_a''(t) B_b''(t) dt` over the piece, in the order
+/// `[R_k, H_k, R_{k+1}, H_{k+1}]` (the stiffness matrix of the cubic beam element).
+#[inline]
+pub(crate) fn bending_gram(h: f64) -> [[f64; 4]; 4] {
+    let a = 1.0 / (h * h * h);
+    let (b, c, d) = (6.0 * h * a, 4.0 * h * h * a, 2.0 * h * h * a);
+    [
+        [12.0 * a, b, -12.0 * a, b],
+        [b, c, -b, d],
+        [-12.0 * a, -b, 12.0 * a, -b],
+        [b, d, -b, c],
+    ]
+}
+
+/// Checks that `knots` are finite and strictly increasing, at least two of them.
+fn check_increasing(knots: &[f64]) -> Result<()> {
+    if knots.len() < 2 {
+        return Err(Error::TooFewPoints {
+            what: "a Hermite spline (knots)",
+            needed: 2,
+            got: knots.len(),
+        });
+    }
+    for (index, &value) in knots.iter().enumerate() {
+        if !value.is_finite() {
+            return Err(Error::InvalidKnot {
+                index,
+                value,
+                reason: "not a finite number",
+            });
+        }
+        if index > 0 && value <= knots[index - 1] {
+            return Err(Error::InvalidKnot {
+                index,
+                value,
+                reason: "not greater than the knot before it",
+            });
+        }
+    }
+    Ok(())
+}
+
+impl<const D: usize> HermiteSpline<D> {
+    /// The spline with `values[L]` and `derivatives[L]` at `knots[L]`.
+    ///
+    /// Errors: fewer than 2 knots; knots not finite or not strictly increasing
+    /// ([`Error::InvalidKnot`]); `values` or `derivatives` of another length than `knots`;
+    /// a non-finite value or derivative.
+    pub fn new(knots: Vec<f64>, values: Vec<Point<D>>, derivatives: Vec<Point<D>>) -> Result<Self> {
+        check_increasing(&knots)?;
+        if values.len() != knots.len() || derivatives.len() != knots.len() {
+            return Err(Error::InvalidInput(format!(
+                "a Hermite spline on {} knots needs as many values and derivatives, got {} and {}",
+                knots.len(),
+                values.len(),
+                derivatives.len()
+            )));
+        }
+        if let Some(index) = values
+            .iter()
+            .zip(&derivatives)
+            .position(|(v, d)| !v.is_finite() || !d.is_finite())
+        {
+            return Err(Error::NonFinitePoint { index });
+        }
+        Ok(HermiteSpline {
+            knots,
+            values,
+            derivatives,
+        })
+    }
+
+    /// Builds without checks (the fit keeps its knots valid and its coefficients finite).
+    pub(crate) fn from_parts(
+        knots: Vec<f64>,
+        values: Vec<Point<D>>,
+        derivatives: Vec<Point<D>>,
+    ) -> Self {
+        HermiteSpline {
+            knots,
+            values,
+            derivatives,
+        }
+    }
+
+    /// The knots `T_0 < ... < T_{N-1}`.
+    pub fn knots(&self) -> &[f64] {
+        &self.knots
+    }
+
+    /// The values `R_L` at the knots.
+    pub fn values(&self) -> &[Point<D>] {
+        &self.values
+    }
+
+    /// The derivatives `H_L = R'(T_L)` at the knots.
+    pub fn derivatives(&self) -> &[Point<D>] {
+        &self.derivatives
+    }
+
+    /// Mutable access to values and derivatives (the knots stay).
+    pub(crate) fn coefficients_mut(&mut self) -> (&mut [Point<D>], &mut [Point<D>]) {
+        (&mut self.values, &mut self.derivatives)
+    }
+
+    /// The number of pieces, `N - 1`.
+    pub fn pieces(&self) -> usize {
+        self.knots.len() - 1
+    }
+
+    /// The piece holding `t` (the last piece for `t` at or beyond the upper end, the first one
+    /// below the lower end or for NaN) and its local coordinate `s` (outside `[0, 1]` when `t`
+    /// is outside the domain).
+    #[inline]
+    pub fn locate(&self, t: f64) -> (usize, f64) {
+        let last = self.pieces() - 1;
+        // Number of inner knots <= t: the piece index.
+        let inner = &self.knots[1..self.knots.len() - 1];
+        let k = inner.partition_point(|&knot| knot <= t).min(last);
+        (k, self.local(k, t))
+    }
+
+    /// Local coordinate of `t` on piece `k`.
+    #[inline]
+    pub(crate) fn local(&self, k: usize, t: f64) -> f64 {
+        (t - self.knots[k]) / (self.knots[k + 1] - self.knots[k])
+    }
+
+    /// The `k`-th derivative on piece `piece` at local coordinate `s`, per unit `t`.
+    #[inline]
+    pub fn deriv_on_piece(&self, piece: usize, s: f64, k: usize) -> Point<D> {
+        let h = self.knots[piece + 1] - self.knots[piece];
+        let b = hermite_basis(s, h, k);
+        let mut p = self.values[piece] * b[0];
+        p = p.add_scaled(b[1], self.derivatives[piece]);
+        p = p.add_scaled(b[2], self.values[piece + 1]);
+        p.add_scaled(b[3], self.derivatives[piece + 1])
+    }
+
+    /// The jump of the second derivative `R''(T_L+) - R''(T_L-)` at inner knot `L`
+    /// (`1 <= L <= N - 2`).
+    ///
+    /// # Panics
+    /// When `L` is not an inner knot.
+    pub fn second_derivative_jump(&self, l: usize) -> Point<D> {
+        assert!(l >= 1 && l + 1 < self.knots.len(), "not an inner knot");
+        self.deriv_on_piece(l, 0.0, 2) - self.deriv_on_piece(l - 1, 1.0, 2)
+    }
+
+    /// The seed's jump measure `J_L` at inner knot `L` (formula (2) of seed 003; see the
+    /// module docs): the second-derivative jump times `-h_L h_{L+1} / (2 (h_L + h_{L+1}))`.
+    ///
+    /// # Panics
+    /// When `L` is not an inner knot.
+    pub fn jump_measure(&self, l: usize) -> Point<D> {
+        assert!(l >= 1 && l + 1 < self.knots.len(), "not an inner knot");
+        let c = jump_coefficients(
+            self.knots[l] - self.knots[l - 1],
+            self.knots[l + 1] - self.knots[l],
+        );
+        let mut j = Point::ZERO;
+        for (slot, &coef) in c.iter().enumerate() {
+            let knot = l - 1 + slot / 2;
+            let q = if slot % 2 == 0 {
+                self.values[knot]
+            } else {
+                self.derivatives[knot]
+            };
+            j = j.add_scaled(coef, q);
+        }
+        j
+    }
+
+    /// `f(q) = sum_L weights[L] |J_L|^2` over the inner knots (`weights[L]` is `delta_L`;
+    /// entries for the end knots are ignored).
+    ///
+    /// # Panics
+    /// When `weights.len()` differs from the number of knots.
+    pub fn jump_penalty(&self, weights: &[f64]) -> f64 {
+        assert_eq!(weights.len(), self.knots.len(), "one weight per knot");
+        (1..self.knots.len() - 1)
+            .map(|l| weights[l] * self.jump_measure(l).norm_sq())
+            .sum()
+    }
+
+    /// The bending energy `int |R''(t)|^2 dt` over the knots' range, exact: on a piece of
+    /// length `h` the second derivative is linear, and the integral is
+    /// `h |R''(mid)|^2 + h^3 |R'''|^2 / 12`.
+    pub fn bending_energy(&self) -> f64 {
+        (0..self.pieces())
+            .map(|k| {
+                let h = self.knots[k + 1] - self.knots[k];
+                let mid = self.deriv_on_piece(k, 0.5, 2).norm_sq();
+                let third = self.deriv_on_piece(k, 0.5, 3).norm_sq();
+                h * mid + h * h * h / 12.0 * third
+            })
+            .sum()
+    }
+
+    /// The piece holding `t`, trying `hint` and its neighbours before a binary search (for
+    /// parameters that move little between calls).
+    #[inline]
+    pub(crate) fn piece_near(&self, t: f64, hint: usize) -> usize {
+        let last = self.pieces() - 1;
+        let inside =
+            |k: usize| (k == 0 || t >= self.knots[k]) && (k == last || t < self.knots[k + 1]);
+        if hint <= last && inside(hint) {
+            return hint;
+        }
+        if hint < last && inside(hint + 1) {
+            return hint + 1;
+        }
+        if hint >= 1 && hint <= last + 1 && inside(hint - 1) {
+            return hint - 1;
+        }
+        self.locate(t).0
+    }
+
+    /// The same curve with one more knot at `t` (strictly inside a piece): the value and
+    /// derivative there are the curve's own, so the shape does not change.
+    ///
+    /// Errors: `t` not strictly between two knots ([`Error::InvalidKnot`]).
+    pub fn with_knot(&self, t: f64) -> Result<Self> {
+        let (piece, s) = self.locate(t);
+        if !(s > 0.0 && s < 1.0) {
+            return Err(Error::InvalidKnot {
+                index: piece + 1,
+                value: t,
+                reason: "not strictly inside a piece of the spline",
+            });
+        }
+        let mut out = self.clone();
+        out.knots.insert(piece + 1, t);
+        out.values
+            .insert(piece + 1, self.deriv_on_piece(piece, s, 0));
+        out.derivatives
+            .insert(piece + 1, self.deriv_on_piece(piece, s, 1));
+        Ok(out)
+    }
+}
+
+impl<const D: usize> Curve<D> for HermiteSpline<D> {
+    fn domain(&self) -> Interval {
+        Interval::new(self.knots[0], self.knots[self.knots.len() - 1])
+    }
+
+    fn is_closed(&self) -> bool {
+        false
+    }
+
+    fn eval(&self, t: f64) -> Point<D> {
+        let (piece, s) = self.locate(t);
+        self.deriv_on_piece(piece, s, 0)
+    }
+
+    fn deriv(&self, t: f64, k: usize) -> Point<D> {
+        let (piece, s) = self.locate(t);
+        self.deriv_on_piece(piece, s, k)
+    }
+
+    fn eval_into(&self, ts: &[f64], out: &mut [Point<D>]) {
+        assert_eq!(
+            ts.len(),
+            out.len(),
+            "parameter and output buffers differ in length"
+        );
+        // Sorted parameters are the common case: try the previous piece first.
+        let mut piece = 0;
+        for (p, &t) in out.iter_mut().zip(ts) {
+            let inside = t >= self.knots[piece] && t < self.knots[piece + 1];
+            if !inside {
+                piece = self.locate(t).0;
+            }
+            *p = self.deriv_on_piece(piece, self.local(piece, t), 0);
+        }
+    }
+}
+
+impl<const D: usize> PiecewiseCurve<D> for HermiteSpline<D> {
+    fn breakpoints(&self) -> Vec<f64> {
+        self.knots.clone()
+    }
+
+    fn continuity(&self) -> usize {
+        1
+    }
+
+    fn deriv_on_side(&self, t: f64, k: usize, side: Side) -> Point<D> {
+        let (mut piece, _) = self.locate(t);
+        if side == Side::Below && piece > 0 && t <= self.knots[piece] {
+            piece -= 1;
+        }
+        self.deriv_on_piece(piece, self.local(piece, t), k)
+    }
+}

@@ -1,0 +1,173 @@
+//! Knot grids and starting parameters of the fit.
+//!
+//! The seed's grid is `0 = T_1 < ... < T_N = 1`; the data points get parameters
+//! `0 = t_1 <= ... <= t_n = 1`, by default in proportion to the cumulative chord length
+//! (the seed's starting point), optionally uniform or centripetal (square roots of the
+//! chords), which the multi-start check uses.
+
+use crate::{Error, Point, Result};
+
+/// The smallest allowed distance between two knots of a fit (in the parameter, whose range
+/// is `[0, 1]`). The seed's own grid has knots `0.004` apart.
+pub const MIN_KNOT_SPACING: f64 = 1e-6;
+
+/// Checks a knot grid for a fit: finite, `T_1 = 0`, `T_N = 1`, strictly increasing, at
+/// least [`MIN_KNOT_SPACING`] apart, at least two knots.
+///
+/// Errors: [`Error::TooFewPoints`] for fewer than two knots, [`Error::InvalidKnot`] naming
+/// the first offending knot otherwise.
+pub fn check_knots(knots: &[f64]) -> Result<()> {
+    if knots.len() < 2 {
+        return Err(Error::TooFewPoints {
+            what: "a fit (knots)",
+            needed: 2,
+            got: knots.len(),
+        });
+    }
+    for (index, &value) in knots.iter().enumerate() {
+        let reason = if !value.is_finite() {
+            Some("not a finite number")
+        } else if !(0.0..=1.0).contains(&value) {
+            Some("outside [0, 1]")
+        } else if index == 0 && value != 0.0 {
+            Some("the first knot must be 0")
+        } else if index + 1 == knots.len() && value != 1.0 {
+            Some("the last knot must be 1")
+        } else if index > 0 && value <= knots[index - 1] {
+            Some("not greater than the knot before it (knots must increase)")
+        } else if index > 0 && value - knots[index - 1] < MIN_KNOT_SPACING {
+            Some("closer than 1e-6 to the knot before it")
+        } else {
+            None
+        };
+        if let Some(reason) = reason {
+            return Err(Error::InvalidKnot {
+                index,
+                value,
+                reason,
+            });
+        }
+    }
+    Ok(())
+}
+
+/// `n >= 2` uniformly spaced knots from 0 to 1 (the last exactly 1).
+pub fn uniform_knots(n: usize) -> Vec<f64> {
+    let n = n.max(2);
+    (0..n)
+        .map(|k| {
+            if k + 1 == n {
+                1.0
+            } else {
+                k as f64 / (n - 1) as f64
+            }
+        })
+        .collect()
+}
+
+/// How the data points get their starting parameters.
+#[derive(Clone, Debug, PartialEq, Default)]
+pub enum StartParameters {
+    /// In proportion to cumulative chord length (the seed's choice).
+    #[default]
+    ChordLength,
+    /// Centripetal: in proportion to cumulative square roots of the chords.
+    Centripetal,
+    /// Uniform: `t_i = (i - 1) / (n - 1)`.
+    Uniform,
+    /// Given by the caller: `n` values, nondecreasing, from 0 to 1.
+    Given(Vec<f64>),
+}
+
+/// The starting parameters of `points` by `rule` (`t_1 = 0`, `t_n = 1`).
+///
+/// Errors: points that all coincide (for the chord rules); given parameters of the wrong
+/// count, not nondecreasing, or not from 0 to 1 ([`Error::InvalidSetting`]).
+pub fn start_parameters<const D: usize>(
+    points: &[Point<D>],
+    rule: &StartParameters,
+) -> Result<Vec<f64>> {
+    let n = points.len();
+    let chords = |power: f64| -> Result<Vec<f64>> {
+        let mut acc = Vec::with_capacity(n);
+        let mut total = 0.0;
+        acc.push(0.0);
+        for w in points.windows(2) {
+            total += w[0].distance(w[1]).powf(power);
+            acc.push(total);
+        }
+        if !(total.is_finite() && total > 0.0) {
+            return Err(Error::TooFewPoints {
+                what: "a fit (distinct points)",
+                needed: 2,
+                got: 1,
+            });
+        }
+        for a in &mut acc {
+            *a /= total;
+        }
+        acc[n - 1] = 1.0;
+        Ok(acc)
+    };
+    match rule {
+        StartParameters::ChordLength => chords(1.0),
+        StartParameters::Centripetal => chords(0.5),
+        StartParameters::Uniform => Ok(uniform_knots(n)),
+        StartParameters::Given(ts) => {
+            if ts.len() != n {
+                return Err(Error::InvalidSetting {
+                    name: "number of start parameters",
+                    value: ts.len() as f64,
+                    reason: "must equal the number of points",
+                });
+            }
+            for (i, &t) in ts.iter().enumerate() {
+                let bad = !t.is_finite()
+                    || !(0.0..=1.0).contains(&t)
+                    || (i > 0 && t < ts[i - 1])
+                    || (i == 0 && t != 0.0)
+                    || (i + 1 == n && t != 1.0);
+                if bad {
+                    return Err(Error::InvalidSetting {
+                        name: "start parameter",
+                        value: t,
+                        reason: "parameters must rise from 0 to 1",
+                    });
+                }
+            }
+            Ok(ts.clone())
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn knot_rules() {
+        assert!(check_knots(&[0.0, 0.445, 0.449, 0.587, 1.0]).is_ok());
+        let bad = |k: &[f64]| match check_knots(k) {
+            Err(Error::InvalidKnot { index, .. }) => index,
+            other => panic!("{other:?}"),
+        };
+        assert_eq!(bad(&[0.0, 0.6, 0.5, 1.0]), 2);
+        assert_eq!(bad(&[0.0, 0.5, 0.5 + 1e-9, 1.0]), 2);
+        assert_eq!(bad(&[0.0, 1.5, 1.0]), 1);
+        assert_eq!(bad(&[0.1, 0.5, 1.0]), 0);
+        assert_eq!(bad(&[0.0, 0.5, 0.9]), 2);
+        assert_eq!(bad(&[0.0, f64::NAN, 1.0]), 1);
+        assert!(check_knots(&[0.0]).is_err());
+    }
+
+    #[test]
+    fn chord_length_parameters() {
+        let pts = [Point([0.0, 0.0]), Point([3.0, 4.0]), Point([3.0, 9.0])];
+        let t = start_parameters(&pts, &StartParameters::ChordLength).unwrap();
+        assert_eq!(t, vec![0.0, 0.5, 1.0]);
+        let t = start_parameters(&pts, &StartParameters::Uniform).unwrap();
+        assert_eq!(t, vec![0.0, 0.5, 1.0]);
+        assert!(start_parameters(&[Point([1.0, 1.0]); 3], &StartParameters::ChordLength).is_err());
+        assert!(start_parameters(&pts, &StartParameters::Given(vec![0.0, 0.7, 0.6])).is_err());
+    }
+}

@@ -1,0 +1,441 @@
+//! The Newton model of the inner problem: gradient, Hessian and damped steps.
+//!
+//! At foot points the half gradient of `F = H + p f + lambda S` with respect to the
+//! coefficients is `sum_i A_i^T e_i + p sum_L delta_L a_L J_L + lambda G q` (`A_i` the basis
+//! values at `t_i`, `e_i = R(t_i) - r_i`, `a_L` the coefficients of `J_L`, `G` the Gram matrix
+//! of the basis' second derivatives); the points' parameters do not appear because each is a
+//! minimizer (envelope theorem). Differentiating the foot-point condition `e . R' = 0`
+//! implicitly gives the half Hessian
+//!
+//! ```text
+//! sum_i (A_i^T A_i - v_i v_i^T / h_i) + p sum_L delta_L a_L a_L^T + lambda G,
+//! v_i = A_i^T R' + B_i^T e_i,   h_i = |R'|^2 + e_i . R''
+//! ```
+//!
+//! (`B_i` the basis derivatives): Gauss–Newton on `(q, t)` jointly with the diagonal
+//! `t`-block eliminated, curvature terms kept. Points at an end of the domain, the first and
+//! last points, and points whose parameters are held keep only `A_i^T A_i`. The exact `h_i`
+//! drops below `|R'|^2` on the concave side of the curve, where it makes the point's term
+//! indefinite (singular at the centre of curvature); the safe model raises it to `|R'|^2`
+//! there, which drops the tangential part (the squared-distance model of Wang, Pottmann and
+//! Liu, "Fitting B-spline curves to point clouds by curvature-based squared distance
+//! minimization", 2006). The solver tries the exact model first.
+//!
+//! The Hessian is banded (unknowns interleaved as `(2 L + a) D + c`, `5 D + 1` diagonals):
+//! one pass over the points accumulates it piece by piece into small dense blocks, which are
+//! then scattered into a banded Cholesky factorization ([`BandedSpd`]): `O(n D^2)` for the
+//! points, `O(N D^3)` for the `N` knots.
+
+use super::hermite::{bending_gram, hermite_basis, jump_coefficients, HermiteSpline};
+use super::solver::{Problem, Solver, State};
+use crate::{Point, Result};
+
+/// Secant and bisection steps of the search for `p`, at most.
+const SEARCH_STEPS: usize = 100;
+/// Decades the bracket of `p` is widened by, at most, on either side of the guess.
+const BRACKET_DECADES: usize = 60;
+
+/// The half gradient of `F = H + p f + lambda S` in two parts, `base` (of `H + lambda S`) and
+/// `jump` (of `f`, per unit `p`), with the sums of the absolute values of their terms (the
+/// scale of the relative gradient test); interleaved layout, zero at pinned unknowns.
+#[derive(Clone, Debug)]
+pub(crate) struct Gradient {
+    base: Vec<f64>,
+    base_abs: Vec<f64>,
+    jump: Vec<f64>,
+    jump_abs: Vec<f64>,
+}
+
+impl Gradient {
+    /// A zero gradient of `unknowns` entries.
+    pub fn new(unknowns: usize) -> Self {
+        Gradient {
+            base: vec![0.0; unknowns],
+            base_abs: vec![0.0; unknowns],
+            jump: vec![0.0; unknowns],
+            jump_abs: vec![0.0; unknowns],
+        }
+    }
+
+    /// Entry `j` for the penalty `p`.
+    #[inline]
+    pub fn at(&self, j: usize, p: f64) -> f64 {
+        self.base[j] + p * self.jump[j]
+    }
+
+    /// `(max_k |g_k|, max_k sum |terms of g_k|)` for the penalty `p`.
+    pub fn size(&self, p: f64) -> (f64, f64) {
+        let mut largest: f64 = 0.0;
+        let mut scale: f64 = 0.0;
+        for j in 0..self.base.len() {
+            largest = largest.max(self.at(j, p).abs());
+            scale = scale.max(self.base_abs[j] + p * self.jump_abs[j]);
+        }
+        (largest, scale)
+    }
+}
+
+/// The coefficients `[R_k, H_k, R_{k+1}, H_{k+1}]` of piece `k`.
+#[inline]
+fn piece_coefficients<const D: usize>(spline: &HermiteSpline<D>, k: usize) -> [Point<D>; 4] {
+    let (v, d) = (spline.values(), spline.derivatives());
+    [v[k], d[k], v[k + 1], d[k + 1]]
+}
+
+/// Whether unknown `j` (interleaved layout, `unknowns` in all) is an end value held by a pin.
+#[inline]
+pub(crate) fn pinned<const D: usize>(problem: &Problem<D>, unknowns: usize, j: usize) -> bool {
+    problem.pins.is_some() && (j < D || (j >= unknowns - 2 * D && j < unknowns - D))
+}
+
+/// The gradient of `F` at `state` into `out`.
+pub(crate) fn accumulate_gradient<const D: usize>(
+    problem: &Problem<D>,
+    state: &State<D>,
+    out: &mut Gradient,
+) {
+    let spline = &state.spline;
+    let knots = spline.knots();
+    for v in [
+        &mut out.base,
+        &mut out.base_abs,
+        &mut out.jump,
+        &mut out.jump_abs,
+    ] {
+        v.fill(0.0);
+    }
+    for (i, (r, &t)) in problem.points.iter().zip(&state.params).enumerate() {
+        let k = spline.piece_near(t, state.piece[i]);
+        let h = knots[k + 1] - knots[k];
+        let b0 = hermite_basis((t - knots[k]) / h, h, 0);
+        let q = piece_coefficients(spline, k);
+        let mut e = -*r;
+        for a in 0..4 {
+            e = e.add_scaled(b0[a], q[a]);
+        }
+        let base = 2 * k * D;
+        for (a, &phi) in b0.iter().enumerate() {
+            for c in 0..D {
+                let term = phi * e[c];
+                out.base[base + a * D + c] += term;
+                out.base_abs[base + a * D + c] += term.abs();
+            }
+        }
+    }
+    for l in 1..knots.len() - 1 {
+        let w = problem.delta[l];
+        if w.is_nan() || w <= 0.0 {
+            continue;
+        }
+        let jl = spline.jump_measure(l);
+        let coef = jump_coefficients(knots[l] - knots[l - 1], knots[l + 1] - knots[l]);
+        let base = 2 * (l - 1) * D;
+        for (a, &ca) in coef.iter().enumerate() {
+            for c in 0..D {
+                let term = w * jl[c] * ca;
+                out.jump[base + a * D + c] += term;
+                out.jump_abs[base + a * D + c] += term.abs();
+            }
+        }
+    }
+    let lambda = problem.bending;
+    if lambda > 0.0 {
+        for k in 0..knots.len() - 1 {
+            let g = bending_gram(knots[k + 1] - knots[k]);
+            let q = piece_coefficients(spline, k);
+            let base = 2 * k * D;
+            for (a, row) in g.iter().enumerate() {
+                let gq = row
+                    .iter()
+                    .zip(&q)
+                    .fold(Point::<D>::ZERO, |acc, (&gab, qb)| acc.add_scaled(gab, *qb));
+                for c in 0..D {
+                    let term = lambda * gq[c];
+                    out.base[base + a * D + c] += term;
+                    out.base_abs[base + a * D + c] += term.abs();
+                }
+            }
+        }
+    }
+    let unknowns = out.base.len();
+    for j in 0..unknowns {
+        if pinned(problem, unknowns, j) {
+            out.base[j] = 0.0;
+            out.jump[j] = 0.0;
+        }
+    }
+}
+
+impl<const D: usize> Solver<'_, D> {
+    /// Accumulates the gradient and the per-piece Hessian blocks of `H` at `state` (see the
+    /// module docs).
+    pub(super) fn assemble(&mut self, state: &State<D>) {
+        accumulate_gradient(&self.problem, state, &mut self.gradient);
+        let spline = &state.spline;
+        let knots = spline.knots();
+        let n = self.problem.points.len();
+        let (first_t, last_t) = (knots[0], knots[knots.len() - 1]);
+        self.separable.fill(0.0);
+        self.coupled.fill(0.0);
+        self.coupled_safe.fill(0.0);
+        let w4 = 4 * D;
+        let mut v = [[0.0; 4]; D];
+        for (i, (r, &t)) in self.problem.points.iter().zip(&state.params).enumerate() {
+            let k = spline.piece_near(t, state.piece[i]);
+            let h = knots[k + 1] - knots[k];
+            let s = (t - knots[k]) / h;
+            let b0 = hermite_basis(s, h, 0);
+            let sep = &mut self.separable[16 * k..16 * k + 16];
+            for a in 0..4 {
+                for b in 0..=a {
+                    sep[4 * a + b] += b0[a] * b0[b];
+                }
+            }
+            let free = self.problem.foot_points && i > 0 && i + 1 < n && t > first_t && t < last_t;
+            if !free {
+                continue;
+            }
+            let b1 = hermite_basis(s, h, 1);
+            let b2 = hermite_basis(s, h, 2);
+            let q = piece_coefficients(spline, k);
+            let (mut e, mut d1, mut d2) = (-*r, Point::<D>::ZERO, Point::<D>::ZERO);
+            for a in 0..4 {
+                e = e.add_scaled(b0[a], q[a]);
+                d1 = d1.add_scaled(b1[a], q[a]);
+                d2 = d2.add_scaled(b2[a], q[a]);
+            }
+            let speed_sq = d1.norm_sq();
+            let exact = speed_sq + e.dot(d2);
+            if speed_sq <= 0.0 {
+                continue;
+            }
+            for (c, vc) in v.iter_mut().enumerate() {
+                for a in 0..4 {
+                    vc[a] = b0[a] * d1[c] + b1[a] * e[c];
+                }
+            }
+            let range = w4 * w4 * k..w4 * w4 * (k + 1);
+            let inv_safe = 1.0 / exact.max(speed_sq);
+            let inv_exact = if exact > 0.0 { 1.0 / exact } else { 0.0 };
+            let block = &mut self.coupled[range.clone()];
+            let safe = &mut self.coupled_safe[range];
+            for x in 0..w4 {
+                let vx = v[x % D][x / D];
+                for y in 0..=x {
+                    let vv = vx * v[y % D][y / D];
+                    block[w4 * x + y] -= vv * inv_exact;
+                    safe[w4 * x + y] -= vv * inv_safe;
+                }
+            }
+        }
+    }
+
+    /// The damped Newton step from the assembled blocks into `self.step`; returns the
+    /// decrease of `F` the quadratic model predicts.
+    ///
+    /// Errors: [`Error::SingularSystem`](crate::Error::SingularSystem) when the damped matrix is not positive definite
+    /// (the caller damps more).
+    pub(super) fn newton_step(&mut self, state: &State<D>, p: f64, mu: f64) -> Result<f64> {
+        let spline = &state.spline;
+        let knots = spline.knots();
+        let w4 = 4 * D;
+        let k_mat = &mut self.hessian;
+        k_mat.clear();
+        let unknowns = self.step.len();
+        let problem = &self.problem;
+        let pinned = |j: usize| pinned(problem, unknowns, j);
+        let mut add = |i: usize, j: usize, value: f64| {
+            if !pinned(i) && !pinned(j) {
+                k_mat.add(i, j, value);
+            }
+        };
+        let lambda = self.problem.bending;
+        for k in 0..knots.len() - 1 {
+            let base = 2 * k * D;
+            let sep = &self.separable[16 * k..16 * k + 16];
+            let coupled = if self.safe {
+                &self.coupled_safe
+            } else {
+                &self.coupled
+            };
+            let block = &coupled[w4 * w4 * k..w4 * w4 * (k + 1)];
+            let g = if lambda > 0.0 {
+                bending_gram(knots[k + 1] - knots[k])
+            } else {
+                [[0.0; 4]; 4]
+            };
+            for x in 0..w4 {
+                let (a, c) = (x / D, x % D);
+                for y in 0..=x {
+                    let (b, d) = (y / D, y % D);
+                    let mut value = block[w4 * x + y];
+                    if c == d {
+                        value += sep[4 * a.max(b) + a.min(b)] + lambda * g[a][b];
+                    }
+                    add(base + x, base + y, value);
+                }
+            }
+        }
+        for l in 1..knots.len() - 1 {
+            let w = p * self.problem.delta[l];
+            if w.is_nan() || w <= 0.0 {
+                continue;
+            }
+            let coef = jump_coefficients(knots[l] - knots[l - 1], knots[l + 1] - knots[l]);
+            let base = 2 * (l - 1) * D;
+            for (a, &ca) in coef.iter().enumerate() {
+                for (b, &cb) in coef.iter().enumerate().take(a + 1) {
+                    for c in 0..D {
+                        add(base + a * D + c, base + b * D + c, w * ca * cb);
+                    }
+                }
+            }
+        }
+        let size = k_mat.size();
+        let floor = (0..size).fold(0.0f64, |m, j| m.max(k_mat.diagonal(j))) * 1e-12;
+        for j in 0..size {
+            if pinned(j) {
+                self.damping[j] = 0.0;
+                k_mat.add(j, j, 1.0);
+                continue;
+            }
+            let d = mu * k_mat.diagonal(j).max(floor);
+            self.damping[j] = d;
+            k_mat.add(j, j, d);
+        }
+        k_mat.factor()?;
+        for (j, x) in self.step.iter_mut().enumerate() {
+            *x = -self.gradient.at(j, p);
+        }
+        k_mat.solve_factored(&mut self.step);
+        // F(q + x) - F(q) ~ 2 g.x + x^T K x = g.x - x^T M x for (K + M) x = -g.
+        let mut predicted = 0.0;
+        for j in 0..size {
+            let x = self.step[j];
+            predicted += -self.gradient.at(j, p) * x + self.damping[j] * x * x;
+        }
+        Ok(predicted)
+    }
+
+    /// `f` of the spline of `state` moved by the step in `self.step`.
+    pub(super) fn jump_sum_after_step(&self, state: &State<D>) -> f64 {
+        let knots = state.spline.knots();
+        let (values, derivatives) = (state.spline.values(), state.spline.derivatives());
+        let mut f = 0.0;
+        for l in 1..knots.len() - 1 {
+            let w = self.problem.delta[l];
+            if w <= 0.0 {
+                continue;
+            }
+            let coef = jump_coefficients(knots[l] - knots[l - 1], knots[l + 1] - knots[l]);
+            let mut j = Point::<D>::ZERO;
+            for (slot, &a) in coef.iter().enumerate() {
+                let knot = l - 1 + slot / 2;
+                let base = (2 * knot + slot % 2) * D;
+                let q = if slot % 2 == 0 {
+                    values[knot]
+                } else {
+                    derivatives[knot]
+                };
+                for c in 0..D {
+                    j[c] += a * (q[c] + self.step[base + c]);
+                }
+            }
+            f += w * j.norm_sq();
+        }
+        f
+    }
+
+    /// The damped Newton step whose `p` makes the jump sum after the step meet `target`
+    /// (to a relative `1e-6`), into `self.step`; returns `(p, predicted decrease)`. The jump
+    /// sum after the step does not increase with `p`, so `p` is found by a safeguarded secant
+    /// search on `ln f` against `ln p`, starting next to `guess`; every trial is one banded
+    /// factorization of order `2 N D` (no pass over the points). When even `p -> 0` keeps
+    /// the jump sum below the target, `p = 0`.
+    ///
+    /// Errors: [`Error::SingularSystem`](crate::Error::SingularSystem) as for the Newton step.
+    pub(super) fn target_step(
+        &mut self,
+        state: &State<D>,
+        target: f64,
+        guess: f64,
+        mu: f64,
+    ) -> Result<(f64, f64)> {
+        let ln_target = target.ln();
+        let phi = |s: &mut Self, x: f64| -> Result<f64> {
+            s.newton_step(state, x.exp(), mu)?;
+            Ok(s.jump_sum_after_step(state).max(f64::MIN_POSITIVE).ln() - ln_target)
+        };
+        let start = if guess > 0.0 && guess.is_finite() {
+            guess.ln()
+        } else {
+            0.0
+        };
+        let decade = std::f64::consts::LN_10;
+        let first = phi(self, start)?;
+        // phi decreases with x: bracket a sign change, lo with phi > 0, hi with phi <= 0.
+        let (mut lo, mut f_lo, mut hi, mut f_hi);
+        let mut x = start;
+        if first > 0.0 {
+            (lo, f_lo) = (start, first);
+            loop {
+                x += decade;
+                let v = phi(self, x)?;
+                if v <= 0.0 {
+                    (hi, f_hi) = (x, v);
+                    break;
+                }
+                (lo, f_lo) = (x, v);
+                if x > start + BRACKET_DECADES as f64 * decade {
+                    // The target is out of reach: the largest penalty tried.
+                    let predicted = self.newton_step(state, x.exp(), mu)?;
+                    return Ok((x.exp(), predicted));
+                }
+            }
+        } else {
+            (hi, f_hi) = (start, first);
+            loop {
+                x -= decade;
+                let v = phi(self, x)?;
+                if v > 0.0 {
+                    (lo, f_lo) = (x, v);
+                    break;
+                }
+                (hi, f_hi) = (x, v);
+                if x < start - BRACKET_DECADES as f64 * decade {
+                    // The bound is not active for this model.
+                    let predicted = self.newton_step(state, 0.0, mu)?;
+                    return Ok((0.0, predicted));
+                }
+            }
+        }
+        // Illinois-modified regula falsi; hi stays on the feasible side.
+        let mut side = 0i8;
+        for _ in 0..SEARCH_STEPS {
+            if f_hi.abs() < 1e-6 || hi - lo < 1e-13 * (1.0 + hi.abs()) {
+                break;
+            }
+            let mut x = hi - f_hi * (hi - lo) / (f_hi - f_lo);
+            if !(x > lo && x < hi) {
+                x = 0.5 * (lo + hi);
+            }
+            let v = phi(self, x)?;
+            if v <= 0.0 {
+                (hi, f_hi) = (x, v);
+                if side == 1 {
+                    f_lo *= 0.5;
+                }
+                side = 1;
+            } else {
+                (lo, f_lo) = (x, v);
+                if side == -1 {
+                    f_hi *= 0.5;
+                }
+                side = -1;
+            }
+        }
+        let p = hi.exp();
+        let predicted = self.newton_step(state, p, mu)?;
+        Ok((p, predicted))
+    }
+}

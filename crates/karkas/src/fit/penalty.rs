@@ -1,0 +1,446 @@
+//! The fit on given knots: the penalty method of seed 003 around the inner solver.
+//!
+//! Minimize `H(q) + lambda S(q)` (the sum of squared foot-point distances plus the small
+//! bending term of [`FitOptions::fairness`]) subject to `f(q) = sum_L delta_L |J_L|^2 <= eps`:
+//!
+//! 1. the unconstrained fit `q_H` (`p = 0`) is found first, from the least-squares fit at the
+//!    starting parameters: when `f(q_H) <= eps` it is the answer (the seed's "the problem
+//!    reduces to finding `q_H`");
+//! 2. otherwise `q*` is the fit on the knots `{0, corners, 1}` only, which has no jump at any
+//!    knot with `delta_L = 1` (so `f(q*) = 0`), and the seed's bound is
+//!    `p* = (H + lambda S)(q*) / eps` (proved for global minimizers of `H + lambda S + p f`);
+//!    with [`PenaltyRule::SeedBound`] `p = p*`, multiplied by 10 until `f(q_p) <= eps` holds
+//!    for the minimizer found;
+//! 3. with [`PenaltyRule::ActiveBound`] (the default) `p` is chosen so that `f(q_p)` meets
+//!    `eps` to a relative [`FitOptions::eps_tolerance`]: that `q_p` satisfies the optimality
+//!    conditions of the constrained problem (`grad (H + lambda S) + p grad f = 0`, `f = eps`,
+//!    `p` its multiplier), so its `H + lambda S` is the lowest the bound allows; the seed's
+//!    `p*` over-penalizes, and its fit can lie farther from the points than `eps` requires.
+//!    The search for `p` rides on the Newton iteration: every step takes the `p` for which
+//!    the jump sum after the step meets the bound (a scalar search costing banded
+//!    factorizations only, see [`Penalty::Target`]), starting from the least-squares fit at
+//!    the starting parameters whose jump sum meets the bound. Should the iteration end
+//!    outside the tolerance (iteration cap), the seed's rule takes over from the `p` found.
+//!
+//! Every `q_p` is found by [`Solver::minimize`], warm-started from the previous one.
+//! Cost: a few inner minimizations, each `O(n)` per iteration.
+
+use super::hermite::HermiteSpline;
+use super::knots::{check_knots, start_parameters, StartParameters};
+use super::power::PowerForm;
+use super::solver::{Penalty, Problem, Solver, State, Stop};
+use crate::{Curve, Error, Point, Result};
+
+/// Iterations spent on the feasible reference `q*` of the seed's bound.
+const REFERENCE_ITERATIONS: usize = 5;
+
+/// The default of [`FitOptions::fairness`].
+pub const DEFAULT_FAIRNESS: f64 = 3e-11;
+/// The default of [`FitOptions::settle_tolerance`].
+pub const DEFAULT_SETTLE_TOLERANCE: f64 = 1e-2;
+
+/// How the penalty `p` is chosen.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum PenaltyRule {
+    /// Lower `p` from the seed's bound until the constraint is active (`f` within
+    /// [`FitOptions::eps_tolerance`] of `eps`): the solution of the constrained problem.
+    #[default]
+    ActiveBound,
+    /// The seed's rule: `p = H(q*) / eps`, times 10 until `f <= eps`.
+    SeedBound,
+}
+
+/// Settings of [`fit_curve`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct FitOptions {
+    /// The bound on `f = sum delta_L |J_L|^2`; `f64::INFINITY` (the default) for none: the
+    /// unconstrained C^1 fit.
+    pub eps: f64,
+    /// Inner knots that stay corners (`delta_L = 0`: no bound on their jump). Each must equal
+    /// a knot (to `1e-9`).
+    pub corners: Vec<f64>,
+    /// How `p` is chosen.
+    pub penalty: PenaltyRule,
+    /// How the points get their starting parameters (chord length by default).
+    pub start: StartParameters,
+    /// `true` (default): foot-point distances, each point projected onto the curve. `false`:
+    /// the starting parameters are kept (an ordinary least-squares fit with given parameters).
+    pub foot_points: bool,
+    /// The most iterations of the inner minimization per value of `p` (default 200).
+    pub max_iterations: usize,
+    /// [`PenaltyRule::ActiveBound`] stops when `(1 - eps_tolerance) eps <= f <= eps`
+    /// (default `1e-3`).
+    pub eps_tolerance: f64,
+    /// `rho`: the objective gets the bending energy `lambda int |R''(t)|^2 dt` with
+    /// `lambda = rho n` for `n` points (default [`DEFAULT_FAIRNESS`], `3e-11`; 0 for none).
+    ///
+    /// Why: the foot-point distances do not change when the points slide along the curve, so
+    /// without it the unconstrained problem has (nearly) flat directions, the derivatives
+    /// `H_L` can drift without bound, and a bound on the jumps can be met by slowing the
+    /// curve down where it bends and spending the parameter range on a fold between two
+    /// sparse points. The bending energy is smallest for a parameterization that is even
+    /// where the curve is straight and slow where it bends, and it penalizes folds. With the
+    /// weight proportional to `n` it stays as small relative to the data term however many
+    /// points there are; its pull on the shape is about `rho |R''''(t)|` (a few `1e-6` of
+    /// the chord on a NACA section at the default).
+    pub fairness: f64,
+    /// Pin the end values to the first and last points (`R(0) = r_1`, `R(1) = r_n`;
+    /// default `false`). Without it, noisy points beyond an end of an open curve pull the
+    /// end outwards (their foot point is the end itself); a closed contour sampled from a
+    /// known point (e.g. a trailing edge) should pin its ends.
+    pub pin_ends: bool,
+    /// The inner minimization stops once an undamped step changes no point's distance by
+    /// more than `settle_tolerance` times the RMS distance (default
+    /// [`DEFAULT_SETTLE_TOLERANCE`], `1e-2`), or when the gradient of the objective vanishes
+    /// (relative `1e-12`) or no progress is made; 0 leaves only the last two rules. The objective is nearly flat along
+    /// reparameterizations of the curve (points sliding along it), where the iteration would
+    /// creep for many steps with the shape already settled.
+    pub settle_tolerance: f64,
+}
+
+impl Default for FitOptions {
+    fn default() -> Self {
+        FitOptions {
+            eps: f64::INFINITY,
+            corners: Vec::new(),
+            penalty: PenaltyRule::default(),
+            start: StartParameters::default(),
+            foot_points: true,
+            max_iterations: 200,
+            eps_tolerance: 1e-3,
+            fairness: DEFAULT_FAIRNESS,
+            pin_ends: false,
+            settle_tolerance: DEFAULT_SETTLE_TOLERANCE,
+        }
+    }
+}
+
+/// The result of a fit.
+#[derive(Clone, Debug)]
+pub struct CurveFit<const D: usize> {
+    /// The fitted spline on `[0, 1]`.
+    pub spline: HermiteSpline<D>,
+    /// The foot parameter `t_i` of every point (`t_1 = 0`, `t_n = 1`).
+    pub parameters: Vec<f64>,
+    /// The distance of every point from the curve, `|R(t_i) - r_i|`.
+    pub distances: Vec<f64>,
+    /// `H`: the sum of squared distances.
+    pub data_term: f64,
+    /// `f = sum delta_L |J_L|^2` achieved.
+    pub jump_sum: f64,
+    /// The penalty `p` of the final minimization (0 for the unconstrained fit).
+    pub penalty: f64,
+    /// The seed's bound `H(q*) / eps` (0 when no penalty was needed).
+    pub seed_bound: f64,
+    /// `delta_L` per knot (0 at the ends and at corners).
+    pub weights: Vec<f64>,
+    /// `lambda = fairness * n`, the weight of the bending energy.
+    pub bending_weight: f64,
+    /// `S = int |R''(t)|^2 dt` achieved.
+    pub bending_energy: f64,
+    /// Inner iterations done in all.
+    pub iterations: usize,
+}
+
+impl<const D: usize> CurveFit<D> {
+    /// The largest distance of a point from the curve.
+    pub fn max_distance(&self) -> f64 {
+        self.distances.iter().fold(0.0, |m, d| m.max(*d))
+    }
+
+    /// The root mean square of the distances.
+    pub fn rms_distance(&self) -> f64 {
+        (self.data_term / self.distances.len() as f64).sqrt()
+    }
+
+    /// `H + p f + lambda S`, the objective of the last minimization.
+    pub fn objective(&self) -> f64 {
+        self.data_term + self.penalty * self.jump_sum + self.bending_weight * self.bending_energy
+    }
+}
+
+/// Checks the points and settings shared by every fit; returns `delta_L` per knot.
+pub(crate) fn check_inputs<const D: usize>(
+    points: &[Point<D>],
+    knots: &[f64],
+    options: &FitOptions,
+) -> Result<Vec<f64>> {
+    if points.len() < 3 {
+        return Err(Error::TooFewPoints {
+            what: "a fit",
+            needed: 3,
+            got: points.len(),
+        });
+    }
+    if let Some(index) = points.iter().position(|p| !p.is_finite()) {
+        return Err(Error::NonFinitePoint { index });
+    }
+    check_knots(knots)?;
+    check_settings(options)?;
+    let mut weights = vec![1.0; knots.len()];
+    weights[0] = 0.0;
+    weights[knots.len() - 1] = 0.0;
+    for &corner in &options.corners {
+        let at = knots[1..knots.len() - 1]
+            .iter()
+            .position(|&k| (k - corner).abs() <= 1e-9)
+            .ok_or(Error::InvalidSetting {
+                name: "corner",
+                value: corner,
+                reason: "not an inner knot",
+            })?;
+        weights[at + 1] = 0.0;
+    }
+    Ok(weights)
+}
+
+/// Checks `eps`, the tolerance on it, the iteration count and the corner values.
+pub(crate) fn check_settings(options: &FitOptions) -> Result<()> {
+    if options.eps.is_nan() || options.eps <= 0.0 {
+        return Err(Error::InvalidSetting {
+            name: "eps",
+            value: options.eps,
+            reason: "must be positive (infinity for no bound)",
+        });
+    }
+    if !(options.eps_tolerance > 0.0 && options.eps_tolerance < 1.0) {
+        return Err(Error::InvalidSetting {
+            name: "eps_tolerance",
+            value: options.eps_tolerance,
+            reason: "must lie strictly between 0 and 1",
+        });
+    }
+    if !(options.fairness >= 0.0 && options.fairness.is_finite()) {
+        return Err(Error::InvalidSetting {
+            name: "fairness",
+            value: options.fairness,
+            reason: "must be zero or positive and finite",
+        });
+    }
+    if !(options.settle_tolerance >= 0.0 && options.settle_tolerance < 1.0) {
+        return Err(Error::InvalidSetting {
+            name: "settle_tolerance",
+            value: options.settle_tolerance,
+            reason: "must lie in [0, 1)",
+        });
+    }
+    if options.max_iterations == 0 {
+        return Err(Error::InvalidSetting {
+            name: "max_iterations",
+            value: 0.0,
+            reason: "must be at least 1",
+        });
+    }
+    for &corner in &options.corners {
+        if !(corner > 0.0 && corner < 1.0) {
+            return Err(Error::InvalidSetting {
+                name: "corner",
+                value: corner,
+                reason: "must lie strictly between 0 and 1",
+            });
+        }
+    }
+    Ok(())
+}
+
+/// Fits a C^1 cubic Hermite spline on `knots` (`0 = T_1 < ... < T_N = 1`) to the ordered
+/// `points`, minimizing the sum of squared foot-point distances subject to
+/// `sum delta_L |J_L|^2 <= options.eps` (see the [module docs](crate::fit)).
+///
+/// Errors: fewer than 3 points, a non-finite coordinate, all points coinciding; invalid
+/// knots ([`Error::InvalidKnot`]); invalid settings ([`Error::InvalidSetting`]);
+/// [`Error::SingularSystem`] when the points cannot determine the spline (possible only
+/// without the bending term, `fairness: 0`: the unconstrained fit then needs points on every
+/// piece, about three per pair of neighbouring pieces).
+pub fn fit_curve<const D: usize>(
+    points: &[Point<D>],
+    knots: &[f64],
+    options: &FitOptions,
+) -> Result<CurveFit<D>> {
+    let weights = check_inputs(points, knots, options)?;
+    let start = start_parameters(points, &options.start)?;
+    fit_checked(points, knots, &weights, start, options)
+}
+
+/// The fit after the inputs were checked.
+pub(crate) fn fit_checked<const D: usize>(
+    points: &[Point<D>],
+    knots: &[f64],
+    weights: &[f64],
+    start: Vec<f64>,
+    options: &FitOptions,
+) -> Result<CurveFit<D>> {
+    let problem = Problem {
+        points,
+        delta: weights,
+        bending: options.fairness * points.len() as f64,
+        pins: options
+            .pin_ends
+            .then(|| [points[0], points[points.len() - 1]]),
+        foot_points: options.foot_points,
+    };
+    let stop = Stop {
+        max_iterations: options.max_iterations,
+        tolerance: options.settle_tolerance,
+    };
+    let mut state = State::<D>::blank(knots, start.clone());
+    let mut solver = Solver::new(problem, &state.spline);
+    let mut iterations = 0;
+    let finish = |state: State<D>, p: f64, seed_bound: f64, iterations: usize| CurveFit {
+        jump_sum: state.spline.jump_penalty(weights),
+        bending_energy: state.spline.bending_energy(),
+        bending_weight: problem.bending,
+        data_term: state.data_term(),
+        distances: state.dist_sq.iter().map(|d| d.sqrt()).collect(),
+        parameters: state.params,
+        spline: state.spline,
+        penalty: p,
+        seed_bound,
+        weights: weights.to_vec(),
+        iterations,
+    };
+    let f_of = |s: &State<D>| s.spline.jump_penalty(weights);
+
+    // 1. The unconstrained fit.
+    match solver.solve_fixed(&mut state, 0.0) {
+        Ok(()) => {
+            solver.project(&mut state);
+            iterations += solver.minimize(&mut state, Penalty::Fixed(0.0), stop)?.0;
+            if f_of(&state) <= options.eps {
+                return Ok(finish(state, 0.0, 0.0, iterations));
+            }
+        }
+        Err(e) if options.eps.is_infinite() => return Err(e),
+        Err(_) => {
+            // Too few points for the unconstrained fit: start from the fit with the jumps
+            // held to zero (always determined when the points determine one cubic).
+            state.params.copy_from_slice(&start);
+            solver.solve_fixed(&mut state, 1.0)?;
+            solver.project(&mut state);
+        }
+    }
+
+    // 2. The seed's bound from a feasible q*: the fit on the knots {0, corners, 1}.
+    let mut coarse: Vec<f64> = knots
+        .iter()
+        .zip(weights)
+        .enumerate()
+        .filter(|&(l, (_, &w))| l == 0 || l + 1 == knots.len() || w == 0.0)
+        .map(|(_, (&k, _))| k)
+        .collect();
+    coarse.dedup();
+    let (reference, exact) = feasible_reference(problem, &coarse, knots, &start, stop);
+    if reference <= 0.0 {
+        // The points lie exactly on a spline without bounded jumps: it is the answer.
+        return Ok(finish(exact, 0.0, 0.0, iterations));
+    }
+    let eps = options.eps;
+    let seed_bound = reference / eps;
+    // The constrained fit starts again from the starting parameters: the unconstrained fit
+    // can be far from the bound, and its foot points no guide.
+    let restart = |state: &mut State<D>| {
+        state.params.copy_from_slice(&start);
+        state.piece.fill(0);
+    };
+    let mut p = seed_bound;
+    restart(&mut state);
+    solver.solve_fixed(&mut state, p)?;
+    solver.project(&mut state);
+    if options.penalty == PenaltyRule::ActiveBound {
+        // 3. The active bound, from the fit at the seed's p* (stiff, so that the foot points
+        // settle on a smooth curve first): p is then chosen at every Newton step.
+        let settle = Stop {
+            tolerance: stop.tolerance.max(DEFAULT_SETTLE_TOLERANCE),
+            ..stop
+        };
+        iterations += solver.minimize(&mut state, Penalty::Fixed(p), settle)?.0;
+        let lowest = (1.0 - options.eps_tolerance) * eps;
+        let penalty = Penalty::Target {
+            target: eps * (1.0 - 0.5 * options.eps_tolerance),
+            lowest,
+            highest: eps,
+            guess: p,
+        };
+        let (done, found) = solver.minimize(&mut state, penalty, stop)?;
+        iterations += done;
+        let f = f_of(&state);
+        if f <= eps && f >= lowest {
+            return Ok(finish(state, found, seed_bound, iterations));
+        }
+        // Not settled in the window (iteration cap): hold the p found, raised if need be.
+        p = found.max(f64::MIN_POSITIVE);
+    }
+    // The seed's rule: p = p*, times 10 until the bound holds.
+    for _ in 0..=40 {
+        iterations += solver.minimize(&mut state, Penalty::Fixed(p), stop)?.0;
+        if f_of(&state) <= eps {
+            return Ok(finish(state, p, seed_bound, iterations));
+        }
+        p *= 10.0;
+    }
+    Err(unreachable_bound(eps))
+}
+
+/// The error for a bound that the penalty could not enforce.
+fn unreachable_bound(eps: f64) -> Error {
+    Error::InvalidSetting {
+        name: "eps",
+        value: eps,
+        reason: "the jump bound could not be met (the penalty grew past 1e40 times its start)",
+    }
+}
+
+/// `(H + lambda S)(q*)` of a feasible `q*` (no jump at any knot with `delta_L = 1`): the fit on
+/// the knots `coarse` carried over to `knots` (the same curve, values and derivatives at the
+/// finer knots), or, when that fit cannot be made, the straight segment from the first point
+/// to the last; and that `q*` (the answer when `H + lambda S` vanishes).
+fn feasible_reference<const D: usize>(
+    problem: Problem<D>,
+    coarse: &[f64],
+    knots: &[f64],
+    start: &[f64],
+    stop: Stop,
+) -> (f64, State<D>) {
+    let no_weights = vec![0.0; coarse.len()];
+    let coarse_problem = Problem {
+        delta: &no_weights,
+        ..problem
+    };
+    let mut state = State::<D>::blank(coarse, start.to_vec());
+    let mut solver = Solver::new(coarse_problem, &state.spline);
+    let fitted = solver.solve_fixed(&mut state, 0.0).is_ok() && {
+        solver.project(&mut state);
+        // Any feasible q* gives a valid bound: a few iterations suffice.
+        let stop = Stop {
+            max_iterations: stop.max_iterations.min(REFERENCE_ITERATIONS),
+            ..stop
+        };
+        solver
+            .minimize(&mut state, Penalty::Fixed(0.0), stop)
+            .is_ok()
+    };
+    let spline = if fitted {
+        HermiteSpline::from_parts(
+            knots.to_vec(),
+            knots.iter().map(|&t| state.spline.eval(t)).collect(),
+            knots.iter().map(|&t| state.spline.deriv(t, 1)).collect(),
+        )
+    } else {
+        let (a, b) = (problem.points[0], problem.points[problem.points.len() - 1]);
+        HermiteSpline::from_parts(
+            knots.to_vec(),
+            knots.iter().map(|&t| a.add_scaled(t, b - a)).collect(),
+            vec![b - a; knots.len()],
+        )
+    };
+    let mut lifted = State {
+        spline,
+        params: if fitted { state.params } else { start.to_vec() },
+        dist_sq: vec![0.0; start.len()],
+        piece: vec![0; start.len()],
+    };
+    let mut form = PowerForm::new(&lifted.spline);
+    super::solver::project(problem.points, problem.foot_points, &mut lifted, &mut form);
+    let value = lifted.data_term() + problem.bending * lifted.spline.bending_energy();
+    (value, lifted)
+}

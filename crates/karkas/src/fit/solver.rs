@@ -1,0 +1,496 @@
+//! The inner problem of the penalty method: minimize
+//!
+//! ```text
+//! F(q) = sum_i min_t |R(t) - r_i|^2 + p sum_L delta_L |J_L|^2 + lambda int |R''|^2 dt
+//! ```
+//!
+//! over the spline coefficients `q = {R_L, H_L}` (the last term is the bending energy, see
+//! [`FitOptions::fairness`](super::FitOptions::fairness)), optionally with the end values
+//! pinned to the first and last points, with `p` held or chosen per step ([`Penalty`]).
+//!
+//! - Newton's method on the reduced objective (the `t_i` eliminated by projection, see
+//!   [`newton`](super::newton)): each iteration assembles the banded Hessian in one pass over
+//!   the points, solves it by banded Cholesky, moves the coefficients and re-projects every
+//!   point from its previous foot point ([`foot_point_near`]).
+//! - Levenberg–Marquardt damping (Marquardt's scaling): a step is taken only when the true
+//!   objective, after re-projecting every point, decreases; the damping follows the ratio of
+//!   the actual to the predicted decrease; each damping is tried with the exact model, then
+//!   with the safe one. When no damped step succeeds, the seed's alternation step (the
+//!   least-squares spline with the parameters held, [`solve_fixed`], then projection) is taken
+//!   instead; it never increases `F`. Near the minimum, where `F` no longer changes in
+//!   floating point, a step is taken when it shrinks the gradient.
+//! - The iteration stops when the gradient vanishes (relative `1e-12`), when an undamped step
+//!   changes no point's distance by more than [`Stop::tolerance`] times the RMS distance,
+//!   after iterations that lower neither `F` nor the gradient, or after
+//!   [`Stop::max_iterations`]. The
+//!   second rule exists because `F` is nearly flat along reparameterizations of the curve
+//!   (points sliding along it): there the iterates creep, lowering `F` by tiny amounts for
+//!   many iterations, while the shape and the distances have settled.
+//!
+//! The first and last points keep `t = 0` and `t = 1`: they anchor the ends of the curve
+//! (the seed minimizes over the `t_i` of the inner points only).
+//!
+//! Each iteration is `O(n D^2)` for `n` points in R^D plus `O(N D^3)` for `N` knots, and
+//! allocates nothing: every buffer lives in the [`Solver`].
+
+use super::fixed::{solve_fixed, PieceIndex};
+use super::hermite::HermiteSpline;
+use super::newton::{accumulate_gradient, Gradient};
+use super::power::PowerForm;
+use super::project::foot_point_near;
+use crate::solve::{BandedLeastSquares, BandedSpd};
+use crate::{Error, Point, Result};
+
+/// Stop when the largest gradient entry is below this times the gradient's scale.
+const GRADIENT_TOLERANCE: f64 = 1e-12;
+/// Stop after this many iterations in a row without progress: lowering `F` by more than
+/// `PROGRESS` (relative) or the gradient by the factor `GRADIENT_PROGRESS`.
+const STALLS: usize = 3;
+/// See `STALLS`.
+const PROGRESS: f64 = 1e-13;
+/// See `STALLS`.
+const GRADIENT_PROGRESS: f64 = 0.99;
+/// Damping values tried per iteration before the alternation step is taken instead.
+const DAMPING_TRIES: usize = 6;
+/// The damping of the first Newton step.
+const INITIAL_DAMPING: f64 = 1e-6;
+/// A step counts for the settled-distances test only when damped by at most this (a damped
+/// step is short, and its small changes say nothing about convergence).
+const SETTLED_DAMPING: f64 = 1e-3;
+
+/// The data of one fit, shared by every minimization.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Problem<'a, const D: usize> {
+    /// The points, in order.
+    pub points: &'a [Point<D>],
+    /// `delta_L`, one per knot (the end knots' entries are unused).
+    pub delta: &'a [f64],
+    /// `lambda`, the weight of the bending energy.
+    pub bending: f64,
+    /// The end values, when the ends are pinned to the first and last points.
+    pub pins: Option<[Point<D>; 2]>,
+    /// Project the points (foot-point distances) or keep their parameters.
+    pub foot_points: bool,
+}
+
+/// How the penalty `p` is set during a minimization.
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum Penalty {
+    /// `p` held.
+    Fixed(f64),
+    /// `p` chosen at every Newton step so that the jump sum after the step meets `target`
+    /// (the bound made active), starting next to `guess`.
+    Target {
+        /// The jump sum aimed at.
+        target: f64,
+        /// The iteration ends only with the jump sum in `[lowest, highest]`.
+        lowest: f64,
+        /// See `lowest`.
+        highest: f64,
+        /// Where the search of the first step starts.
+        guess: f64,
+    },
+}
+
+/// When the inner minimization stops.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Stop {
+    /// The most iterations.
+    pub max_iterations: usize,
+    /// Stop once an undamped step changes no distance by more than this times the RMS
+    /// distance (0: never).
+    pub tolerance: f64,
+}
+
+/// A spline and the parameters, squared distances and pieces of the data points on it.
+#[derive(Clone, Debug)]
+pub(crate) struct State<const D: usize> {
+    pub spline: HermiteSpline<D>,
+    pub params: Vec<f64>,
+    pub dist_sq: Vec<f64>,
+    /// The piece of every parameter (a hint kept up to date by the projection).
+    pub piece: Vec<usize>,
+}
+
+impl<const D: usize> State<D> {
+    /// A state on `knots` with zero coefficients and the given parameters.
+    pub fn blank(knots: &[f64], params: Vec<f64>) -> Self {
+        let n = knots.len();
+        State {
+            spline: HermiteSpline::from_parts(
+                knots.to_vec(),
+                vec![Point::ZERO; n],
+                vec![Point::ZERO; n],
+            ),
+            dist_sq: vec![0.0; params.len()],
+            piece: vec![0; params.len()],
+            params,
+        }
+    }
+
+    /// `H`: the sum of squared distances.
+    pub fn data_term(&self) -> f64 {
+        self.dist_sq.iter().sum()
+    }
+}
+
+/// Buffers and settings of the inner minimization.
+pub(crate) struct Solver<'a, const D: usize> {
+    pub(super) problem: Problem<'a, D>,
+    coord: BandedLeastSquares,
+    pub(super) hessian: BandedSpd,
+    index: PieceIndex,
+    /// Per piece: `sum A^T A` of its points, 4 x 4 (the same for every coordinate).
+    pub(super) separable: Vec<f64>,
+    /// Per piece: `-sum v v^T / h` of its points, `4 D x 4 D`.
+    pub(super) coupled: Vec<f64>,
+    /// The same with the safe `h` (see [`newton`](super::newton)).
+    pub(super) coupled_safe: Vec<f64>,
+    /// Use `coupled_safe` in the Newton step.
+    pub(super) safe: bool,
+    /// The gradient at the current state.
+    pub(super) gradient: Gradient,
+    /// The gradient at a trial state.
+    trial_gradient: Gradient,
+    /// The Newton step, interleaved layout.
+    pub(super) step: Vec<f64>,
+    /// The damping added to each diagonal entry.
+    pub(super) damping: Vec<f64>,
+    /// Coefficients in the layout of [`BandedLeastSquares`] (`D` per unknown).
+    x: Vec<f64>,
+    /// The power form of the spline being projected onto.
+    power: PowerForm<D>,
+    trial: State<D>,
+}
+
+impl<'a, const D: usize> Solver<'a, D> {
+    /// A solver for `problem` on the knots of `template` (whose coefficients only size the
+    /// buffers).
+    pub fn new(problem: Problem<'a, D>, template: &HermiteSpline<D>) -> Self {
+        let n_knots = template.knots().len();
+        let pieces = n_knots - 1;
+        let unknowns = 2 * n_knots * D;
+        let n = problem.points.len();
+        Solver {
+            problem,
+            coord: BandedLeastSquares::new(2 * n_knots, 6, D),
+            hessian: BandedSpd::new(unknowns, 5 * D + 1),
+            index: PieceIndex::new(n, pieces),
+            separable: vec![0.0; pieces * 16],
+            coupled: vec![0.0; pieces * 16 * D * D],
+            coupled_safe: vec![0.0; pieces * 16 * D * D],
+            safe: false,
+            gradient: Gradient::new(unknowns),
+            trial_gradient: Gradient::new(unknowns),
+            step: vec![0.0; unknowns],
+            damping: vec![0.0; unknowns],
+            x: vec![0.0; unknowns],
+            power: PowerForm::new(template),
+            trial: State {
+                spline: template.clone(),
+                params: vec![0.0; n],
+                dist_sq: vec![0.0; n],
+                piece: vec![0; n],
+            },
+        }
+    }
+
+    /// `F = H + p f + lambda S` of a state.
+    pub fn objective(&self, state: &State<D>, p: f64) -> f64 {
+        objective(&self.problem, state, p)
+    }
+
+    /// The least-squares spline for the parameters of `state` held fixed, into
+    /// `state.spline` (distances not refreshed).
+    ///
+    /// Errors: [`Error::SingularSystem`] when the points and the other rows do not determine
+    /// every coefficient (too few points on some pieces).
+    pub fn solve_fixed(&mut self, state: &mut State<D>, p: f64) -> Result<()> {
+        solve_fixed(
+            &self.problem,
+            &mut self.coord,
+            &mut self.index,
+            &mut self.x,
+            state,
+            p,
+        )
+    }
+
+    /// Re-projects every inner point onto `state.spline` from its current parameter (the ends
+    /// keep theirs), and refreshes the squared distances.
+    pub fn project(&mut self, state: &mut State<D>) {
+        project(
+            self.problem.points,
+            self.problem.foot_points,
+            state,
+            &mut self.power,
+        );
+    }
+
+    /// The state `state + step` into `self.trial`, projected; returns its `F`, or infinity
+    /// as soon as it is sure to exceed `budget` (the projection is then left unfinished: a
+    /// step that went astray costs little).
+    fn step_into_trial(&mut self, state: &State<D>, p: f64, budget: f64) -> f64 {
+        self.trial.params.copy_from_slice(&state.params);
+        self.trial.piece.copy_from_slice(&state.piece);
+        copy_coefficients(&state.spline, &mut self.trial.spline);
+        let (values, derivatives) = self.trial.spline.coefficients_mut();
+        for (k, (v, d)) in values.iter_mut().zip(derivatives.iter_mut()).enumerate() {
+            for c in 0..D {
+                v[c] += self.step[2 * k * D + c];
+                d[c] += self.step[(2 * k + 1) * D + c];
+            }
+        }
+        let penalties = penalties(&self.problem, &self.trial.spline, p);
+        let finished = project_within(
+            self.problem.points,
+            self.problem.foot_points,
+            &mut self.trial,
+            &mut self.power,
+            budget - penalties,
+        );
+        if finished {
+            self.trial.data_term() + penalties
+        } else {
+            f64::INFINITY
+        }
+    }
+
+    /// The seed's alternation step into `self.trial`: the least-squares spline for the
+    /// parameters of `state`, then projection; returns its `F` (infinite when the solve
+    /// fails).
+    fn alternation_into_trial(&mut self, state: &State<D>, p: f64) -> f64 {
+        let trial = &mut self.trial;
+        trial.params.copy_from_slice(&state.params);
+        trial.piece.copy_from_slice(&state.piece);
+        copy_coefficients(&state.spline, &mut trial.spline);
+        let solved = solve_fixed(
+            &self.problem,
+            &mut self.coord,
+            &mut self.index,
+            &mut self.x,
+            trial,
+            p,
+        );
+        if solved.is_err() {
+            return f64::INFINITY;
+        }
+        project(
+            self.problem.points,
+            self.problem.foot_points,
+            trial,
+            &mut self.power,
+        );
+        objective(&self.problem, trial, p)
+    }
+
+    /// Minimizes `F` from `state` (whose parameters are already foot points, or fixed
+    /// ones), with `p` held or chosen per step (see [`Penalty`]); returns the iterations done
+    /// and the final `p`.
+    ///
+    /// Errors: [`Error::SingularSystem`] when the parameters are held and the least-squares
+    /// problem does not determine the spline.
+    pub fn minimize(
+        &mut self,
+        state: &mut State<D>,
+        penalty: Penalty,
+        stop: Stop,
+    ) -> Result<(usize, f64)> {
+        let (mut p, window) = match penalty {
+            Penalty::Fixed(p) => (p, None),
+            Penalty::Target {
+                guess,
+                lowest,
+                highest,
+                ..
+            } => (guess, Some((lowest, highest))),
+        };
+        if let (false, Penalty::Fixed(p)) = (self.problem.foot_points, penalty) {
+            self.solve_fixed(state, p)?;
+            self.project(state);
+            return Ok((1, p));
+        }
+        let delta = self.problem.delta;
+        let in_window = |s: &State<D>| match window {
+            None => true,
+            Some((lo, hi)) => {
+                let f = s.spline.jump_penalty(delta);
+                f >= lo && f <= hi
+            }
+        };
+        let mut mu = INITIAL_DAMPING;
+        let mut stalls = 0;
+        let mut last_gradient = f64::INFINITY;
+        for iteration in 0..stop.max_iterations {
+            self.assemble(state);
+            let (g, scale) = self.gradient.size(p);
+            if g < GRADIENT_PROGRESS * last_gradient {
+                stalls = 0;
+            }
+            last_gradient = g;
+            let mut current = self.objective(state, p);
+            if !current.is_finite() || (g <= GRADIENT_TOLERANCE * scale && in_window(state)) {
+                return Ok((iteration, p));
+            }
+            let mut gained = None;
+            let mut progress = false;
+            let mut settled = false;
+            // Each damping is tried with the exact model, then with the safe one.
+            'tries: for attempt in 0..2 * DAMPING_TRIES {
+                self.safe = attempt % 2 == 1;
+                let tried = match penalty {
+                    Penalty::Fixed(p) => self.newton_step(state, p, mu).map(|x| (p, x)),
+                    Penalty::Target { target, .. } => self.target_step(state, target, p, mu),
+                };
+                let mu_tried = mu;
+                if self.safe {
+                    mu = (mu * 8.0).max(1e-10);
+                }
+                let (p_try, predicted) = match tried {
+                    Ok(found) => found,
+                    Err(Error::SingularSystem { .. }) => continue 'tries,
+                    Err(e) => return Err(e),
+                };
+                let before = if p_try == p {
+                    current
+                } else {
+                    self.objective(state, p_try)
+                };
+                let budget = before + 8.0 * f64::EPSILON * before.abs();
+                let value = self.step_into_trial(state, p_try, budget);
+                let lower = value < before;
+                // Near the minimum F stops changing in floating point before the gradient
+                // vanishes: there a step that keeps F to rounding and shrinks the gradient
+                // is taken.
+                let level = !lower && value <= before + 4.0 * f64::EPSILON * before.abs() && {
+                    accumulate_gradient(&self.problem, &self.trial, &mut self.trial_gradient);
+                    self.trial_gradient.size(p_try).0
+                        < GRADIENT_PROGRESS * self.gradient.size(p_try).0
+                };
+                if lower || level {
+                    let ratio = (before - value) / predicted.max(f64::MIN_POSITIVE);
+                    mu = if ratio > 0.75 {
+                        (mu_tried * 0.25).max(1e-15)
+                    } else if ratio < 0.25 {
+                        mu_tried * 2.0
+                    } else {
+                        mu_tried
+                    };
+                    settled = mu_tried <= SETTLED_DAMPING
+                        && settled_distances(&state.dist_sq, &self.trial.dist_sq, stop.tolerance);
+                    std::mem::swap(state, &mut self.trial);
+                    gained = Some(before - value);
+                    progress = before - value > PROGRESS * value.abs();
+                    p = p_try;
+                    current = value;
+                    break 'tries;
+                }
+            }
+            self.safe = false;
+            if gained.is_none() {
+                let value = self.alternation_into_trial(state, p);
+                if value < current {
+                    std::mem::swap(state, &mut self.trial);
+                    gained = Some(current - value);
+                    progress = current - value > PROGRESS * value.abs();
+                }
+                mu = mu.max(1e-4);
+            }
+            if !progress {
+                stalls += 1;
+            }
+            if stalls > STALLS {
+                return Ok((iteration + 1, p));
+            }
+            if gained.is_some() && settled && in_window(state) {
+                return Ok((iteration + 1, p));
+            }
+        }
+        Ok((stop.max_iterations, p))
+    }
+}
+
+/// Whether no distance changed by more than `tolerance` times the RMS of the new distances
+/// (from squared distances `old` and `new`).
+fn settled_distances(old: &[f64], new: &[f64], tolerance: f64) -> bool {
+    if tolerance <= 0.0 {
+        return false;
+    }
+    let mut largest: f64 = 0.0;
+    let mut sum = 0.0;
+    for (a, b) in old.iter().zip(new) {
+        largest = largest.max((a.sqrt() - b.sqrt()).abs());
+        sum += b;
+    }
+    largest <= tolerance * (sum / new.len().max(1) as f64).sqrt()
+}
+
+/// `F = H + p f + lambda S` of a state.
+pub(crate) fn objective<const D: usize>(problem: &Problem<D>, state: &State<D>, p: f64) -> f64 {
+    state.data_term() + penalties(problem, &state.spline, p)
+}
+
+/// `p f + lambda S` of a spline.
+fn penalties<const D: usize>(problem: &Problem<D>, spline: &HermiteSpline<D>, p: f64) -> f64 {
+    let f = if p > 0.0 {
+        spline.jump_penalty(problem.delta)
+    } else {
+        0.0
+    };
+    let s = if problem.bending > 0.0 {
+        spline.bending_energy()
+    } else {
+        0.0
+    };
+    p * f + problem.bending * s
+}
+
+/// Re-projects every inner point of `points` onto `state.spline` from its current parameter
+/// when `foot_points` (the ends keep theirs), and refreshes the squared distances; `form` is
+/// scratch space for the power form of the spline (same knots).
+pub(crate) fn project<const D: usize>(
+    points: &[Point<D>],
+    foot_points: bool,
+    state: &mut State<D>,
+    form: &mut PowerForm<D>,
+) {
+    project_within(points, foot_points, state, form, f64::INFINITY);
+}
+
+/// [`project`], abandoned (returning `false`) once the sum of the squared distances exceeds
+/// `budget`.
+fn project_within<const D: usize>(
+    points: &[Point<D>],
+    foot_points: bool,
+    state: &mut State<D>,
+    form: &mut PowerForm<D>,
+    budget: f64,
+) -> bool {
+    form.update(&state.spline);
+    let n = points.len();
+    let mut sum = 0.0;
+    for (i, r) in points.iter().enumerate() {
+        let t = state.params[i];
+        let piece = &mut state.piece[i];
+        if foot_points && i > 0 && i + 1 < n {
+            let (t, d) = foot_point_near(form, *r, t, piece);
+            state.params[i] = t;
+            state.dist_sq[i] = d;
+        } else {
+            *piece = form.piece_near(t, *piece);
+            state.dist_sq[i] = form.point(*piece, t).distance_sq(*r);
+        }
+        sum += state.dist_sq[i];
+        if sum > budget {
+            return false;
+        }
+    }
+    true
+}
+
+/// Copies values and derivatives of `from` into `to` (same knots).
+fn copy_coefficients<const D: usize>(from: &HermiteSpline<D>, to: &mut HermiteSpline<D>) {
+    let (values, derivatives) = to.coefficients_mut();
+    values.copy_from_slice(from.values());
+    derivatives.copy_from_slice(from.derivatives());
+}
