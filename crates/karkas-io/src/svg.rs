@@ -15,6 +15,7 @@ use std::ops::Range;
 use std::path::Path;
 
 use karkas::Point2;
+use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
 
 use crate::error::IoError;
@@ -42,32 +43,13 @@ pub struct CurvePlot<'a> {
 
 /// Draws `plot` and writes it as SVG to `path`, atomically.
 pub fn write_curve_svg(path: &Path, plot: &CurvePlot<'_>) -> Result<(), IoError> {
-    let svg = render_curve_svg(plot).map_err(|message| IoError::Write {
-        path: path.to_path_buf(),
-        source: std::io::Error::other(message),
-    })?;
-    write_atomic(path, |out| out.write_all(svg.as_bytes()))
+    write_rendered(path, render_curve_svg(plot))
 }
 
 /// Draws `plot` into an SVG document in memory; the error is the drawing library's message.
 pub fn render_curve_svg(plot: &CurvePlot<'_>) -> Result<String, String> {
-    let frame = Frame::new(plot.title, finite(plot.curve).chain(finite(plot.input)))?;
-    let mut svg = String::new();
-    {
-        let root = SVGBackend::with_string(&mut svg, (WIDTH, frame.height)).into_drawing_area();
-        root.fill(&WHITE).map_err(|e| e.to_string())?;
-        let mut chart = chart_builder(&root, plot.title)
-            .build_cartesian_2d(frame.x, frame.y)
-            .map_err(|e| e.to_string())?;
-        chart
-            .configure_mesh()
-            .x_desc("x")
-            .y_desc("y")
-            .label_style(("sans-serif", 15))
-            .axis_desc_style(("sans-serif", 18))
-            .draw()
-            .map_err(|e| e.to_string())?;
-
+    let points = finite(plot.curve).chain(finite(plot.input));
+    render_chart(plot.title, ("x", "y"), points, |chart| {
         let mut polygon: Vec<(f64, f64)> = finite(plot.input).collect();
         if plot.closed_input && polygon.len() > 2 {
             polygon.push(polygon[0]);
@@ -82,9 +64,8 @@ pub fn render_curve_svg(plot: &CurvePlot<'_>) -> Result<String, String> {
         chart
             .draw_series(finite(plot.input).map(|p| Circle::new(p, 3, RED.filled())))
             .map_err(|e| e.to_string())?;
-        root.present().map_err(|e| e.to_string())?;
-    }
-    Ok(svg)
+        Ok(())
+    })
 }
 
 /// A discrete curve (a closed sequence of points, such as the values of a discrete periodic
@@ -103,11 +84,7 @@ pub struct DiscreteCurvePlot<'a> {
 
 /// Draws `plot` and writes it as SVG to `path`, atomically.
 pub fn write_discrete_curve_svg(path: &Path, plot: &DiscreteCurvePlot<'_>) -> Result<(), IoError> {
-    let svg = render_discrete_curve_svg(plot).map_err(|message| IoError::Write {
-        path: path.to_path_buf(),
-        source: std::io::Error::other(message),
-    })?;
-    write_atomic(path, |out| out.write_all(svg.as_bytes()))
+    write_rendered(path, render_discrete_curve_svg(plot))
 }
 
 /// Draws `plot` into an SVG document in memory; the error is the drawing library's message.
@@ -124,22 +101,8 @@ pub fn render_discrete_curve_svg(plot: &DiscreteCurvePlot<'_>) -> Result<String,
             closed_input: true,
         });
     }
-    let frame = Frame::new(plot.title, finite(plot.values).chain(finite(plot.input)))?;
-    let mut svg = String::new();
-    {
-        let root = SVGBackend::with_string(&mut svg, (WIDTH, frame.height)).into_drawing_area();
-        root.fill(&WHITE).map_err(|e| e.to_string())?;
-        let mut chart = chart_builder(&root, plot.title)
-            .build_cartesian_2d(frame.x, frame.y)
-            .map_err(|e| e.to_string())?;
-        chart
-            .configure_mesh()
-            .x_desc("x")
-            .y_desc("y")
-            .label_style(("sans-serif", 15))
-            .axis_desc_style(("sans-serif", 18))
-            .draw()
-            .map_err(|e| e.to_string())?;
+    let points = finite(plot.values).chain(finite(plot.input));
+    render_chart(plot.title, ("x", "y"), points, |chart| {
         let mut polygon: Vec<(f64, f64)> = finite(plot.input).collect();
         if polygon.len() > 2 {
             polygon.push(polygon[0]);
@@ -154,9 +117,8 @@ pub fn render_discrete_curve_svg(plot: &DiscreteCurvePlot<'_>) -> Result<String,
         chart
             .draw_series(finite(plot.input).map(|p| Circle::new(p, 4, RED.filled())))
             .map_err(|e| e.to_string())?;
-        root.present().map_err(|e| e.to_string())?;
-    }
-    Ok(svg)
+        Ok(())
+    })
 }
 
 /// A wireframe: several polylines in one picture with equal axis scales (sections of a
@@ -184,11 +146,7 @@ pub struct LineGroup<'a> {
 
 /// Draws `plot` and writes it as SVG to `path`, atomically.
 pub fn write_lines_svg(path: &Path, plot: &LinesPlot<'_>) -> Result<(), IoError> {
-    let svg = render_lines_svg(plot).map_err(|message| IoError::Write {
-        path: path.to_path_buf(),
-        source: std::io::Error::other(message),
-    })?;
-    write_atomic(path, |out| out.write_all(svg.as_bytes()))
+    write_rendered(path, render_lines_svg(plot))
 }
 
 /// Draws `plot` into an SVG document in memory; the error is the drawing library's message.
@@ -198,22 +156,8 @@ pub fn render_lines_svg(plot: &LinesPlot<'_>) -> Result<String, String> {
         .iter()
         .flat_map(|g| g.lines.iter())
         .flat_map(|l| finite(l));
-    let frame = Frame::new(plot.title, all)?;
-    let mut svg = String::new();
-    {
-        let root = SVGBackend::with_string(&mut svg, (WIDTH, frame.height)).into_drawing_area();
-        root.fill(&WHITE).map_err(|e| e.to_string())?;
-        let mut chart = chart_builder(&root, plot.title)
-            .build_cartesian_2d(frame.x, frame.y)
-            .map_err(|e| e.to_string())?;
-        chart
-            .configure_mesh()
-            .x_desc(plot.axes.0)
-            .y_desc(plot.axes.1)
-            .label_style(("sans-serif", 15))
-            .axis_desc_style(("sans-serif", 18))
-            .draw()
-            .map_err(|e| e.to_string())?;
+    let points = all;
+    render_chart(plot.title, plot.axes, points, |chart| {
         for group in plot.groups {
             let (r, g, b) = group.rgb;
             let style = RGBColor(r, g, b).stroke_width(group.width);
@@ -223,9 +167,8 @@ pub fn render_lines_svg(plot: &LinesPlot<'_>) -> Result<String, String> {
                     .map_err(|e| e.to_string())?;
             }
         }
-        root.present().map_err(|e| e.to_string())?;
-    }
-    Ok(svg)
+        Ok(())
+    })
 }
 
 /// A fit: the points, the fitted curve, and a whisker from every point to its foot point.
@@ -243,31 +186,13 @@ pub struct FitPlot<'a> {
 
 /// Draws `plot` and writes it as SVG to `path`, atomically.
 pub fn write_fit_svg(path: &Path, plot: &FitPlot<'_>) -> Result<(), IoError> {
-    let svg = render_fit_svg(plot).map_err(|message| IoError::Write {
-        path: path.to_path_buf(),
-        source: std::io::Error::other(message),
-    })?;
-    write_atomic(path, |out| out.write_all(svg.as_bytes()))
+    write_rendered(path, render_fit_svg(plot))
 }
 
 /// Draws `plot` into an SVG document in memory; the error is the drawing library's message.
 pub fn render_fit_svg(plot: &FitPlot<'_>) -> Result<String, String> {
-    let frame = Frame::new(plot.title, finite(plot.curve).chain(finite(plot.points)))?;
-    let mut svg = String::new();
-    {
-        let root = SVGBackend::with_string(&mut svg, (WIDTH, frame.height)).into_drawing_area();
-        root.fill(&WHITE).map_err(|e| e.to_string())?;
-        let mut chart = chart_builder(&root, plot.title)
-            .build_cartesian_2d(frame.x, frame.y)
-            .map_err(|e| e.to_string())?;
-        chart
-            .configure_mesh()
-            .x_desc("x")
-            .y_desc("y")
-            .label_style(("sans-serif", 15))
-            .axis_desc_style(("sans-serif", 18))
-            .draw()
-            .map_err(|e| e.to_string())?;
+    let points = finite(plot.curve).chain(finite(plot.points));
+    render_chart(plot.title, ("x", "y"), points, |chart| {
         chart
             .draw_series(LineSeries::new(finite(plot.curve), BLUE.stroke_width(2)))
             .map_err(|e| e.to_string())?;
@@ -282,9 +207,52 @@ pub fn render_fit_svg(plot: &FitPlot<'_>) -> Result<String, String> {
         chart
             .draw_series(finite(plot.points).map(|p| Circle::new(p, 3, RED.filled())))
             .map_err(|e| e.to_string())?;
+        Ok(())
+    })
+}
+
+/// The chart every picture of this module draws on.
+type Chart<'a, 'b> = ChartContext<'a, SVGBackend<'b>, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
+
+/// Renders a picture with equal axis scales over `points`: white background, caption, a mesh
+/// with the axis names `axes`; `draw` adds the series (its error is the drawing library's
+/// message).
+fn render_chart(
+    title: &str,
+    axes: (&str, &str),
+    points: impl Iterator<Item = (f64, f64)>,
+    draw: impl FnOnce(&mut Chart<'_, '_>) -> Result<(), String>,
+) -> Result<String, String> {
+    let frame = Frame::new(title, points)?;
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (WIDTH, frame.height)).into_drawing_area();
+        root.fill(&WHITE).map_err(|e| e.to_string())?;
+        let mut chart = chart_builder(&root, title)
+            .build_cartesian_2d(frame.x, frame.y)
+            .map_err(|e| e.to_string())?;
+        chart
+            .configure_mesh()
+            .x_desc(axes.0)
+            .y_desc(axes.1)
+            .label_style(("sans-serif", 15))
+            .axis_desc_style(("sans-serif", 18))
+            .draw()
+            .map_err(|e| e.to_string())?;
+        draw(&mut chart)?;
         root.present().map_err(|e| e.to_string())?;
     }
     Ok(svg)
+}
+
+/// Writes a rendered picture to `path` atomically; a rendering error becomes an
+/// [`IoError::Write`] naming `path`, and nothing is written.
+fn write_rendered(path: &Path, rendered: Result<String, String>) -> Result<(), IoError> {
+    let svg = rendered.map_err(|message| IoError::Write {
+        path: path.to_path_buf(),
+        source: std::io::Error::other(message),
+    })?;
+    write_atomic(path, |out| out.write_all(svg.as_bytes()))
 }
 
 /// The chart layout shared by the measuring pass and the real drawing.
