@@ -1,0 +1,244 @@
+//! The Python base class `Surface`: grid and pointwise evaluation of any karkas surface.
+
+use std::sync::Arc;
+
+use karkas::{Point, Surface};
+use numpy::PyArrayDyn;
+use pyo3::prelude::*;
+
+use crate::convert::{as_points_mut, invalid, maybe_detach, output_array, write_flat, Params};
+
+/// A karkas surface of either dimension, evaluated on flat buffers.
+pub trait SurfaceImpl: Send + Sync {
+    /// The dimension `d` (2 or 3).
+    fn dim(&self) -> usize;
+    /// The `u` domain.
+    fn domain_u(&self) -> (f64, f64);
+    /// The `v` domain.
+    fn domain_v(&self) -> (f64, f64);
+    /// Closed in `u`, in `v`.
+    fn closed(&self) -> (bool, bool);
+    /// The derivative `(ku, kv)` ((0, 0): the point) on the grid `us x vs`, row-major with `u`
+    /// outer, into `out`.
+    fn grid_flat(&self, us: &[f64], vs: &[f64], ku: usize, kv: usize, out: &mut [f64]);
+    /// The derivative `(ku, kv)` at the pairs `(us[i], vs[i])` into `out`.
+    fn points_flat(&self, us: &[f64], vs: &[f64], ku: usize, kv: usize, out: &mut [f64]);
+}
+
+/// A karkas surface of dimension `D` behind [`SurfaceImpl`].
+pub struct WrappedSurface<S, const D: usize>(pub S);
+
+impl<S, const D: usize> SurfaceImpl for WrappedSurface<S, D>
+where
+    S: Surface<D> + Send + Sync,
+{
+    fn dim(&self) -> usize {
+        D
+    }
+    fn domain_u(&self) -> (f64, f64) {
+        let d = self.0.domain_u();
+        (d.start, d.end)
+    }
+    fn domain_v(&self) -> (f64, f64) {
+        let d = self.0.domain_v();
+        (d.start, d.end)
+    }
+    fn closed(&self) -> (bool, bool) {
+        (self.0.is_closed_u(), self.0.is_closed_v())
+    }
+    fn grid_flat(&self, us: &[f64], vs: &[f64], ku: usize, kv: usize, out: &mut [f64]) {
+        let out: &mut [Point<D>] = as_points_mut(out);
+        if ku == 0 && kv == 0 {
+            self.0.eval_grid_into(us, vs, out);
+            return;
+        }
+        for (row, &u) in out.chunks_exact_mut(vs.len().max(1)).zip(us) {
+            for (p, &v) in row.iter_mut().zip(vs) {
+                *p = self.0.deriv(u, v, ku, kv);
+            }
+        }
+    }
+    fn points_flat(&self, us: &[f64], vs: &[f64], ku: usize, kv: usize, out: &mut [f64]) {
+        let out: &mut [Point<D>] = as_points_mut(out);
+        for ((p, &u), &v) in out.iter_mut().zip(us).zip(vs) {
+            *p = if ku == 0 && kv == 0 {
+                self.0.eval(u, v)
+            } else {
+                self.0.deriv(u, v, ku, kv)
+            };
+        }
+    }
+}
+
+/// Base class of every karkas surface.
+///
+/// S(u, v, grid=True, out=None): with grid=True, u (mu,) and v (mv,) give the points of the
+/// grid u x v, shape (mu, mv, d) (u outer, as SciPy's RectBivariateSpline); with grid=False,
+/// u and v of one shape give the points (u[i], v[i]), shape u.shape + (d,). Floats work too.
+/// out= takes a preallocated C-contiguous float64 array of the result's shape.
+#[pyclass(subclass, module = "karkas", name = "Surface", frozen)]
+pub struct PySurface {
+    pub inner: Arc<dyn SurfaceImpl>,
+    /// What the object is, for `repr`.
+    pub description: String,
+}
+
+impl PySurface {
+    /// The base part of a surface object.
+    pub fn new(inner: Arc<dyn SurfaceImpl>, description: String) -> Self {
+        PySurface { inner, description }
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    fn evaluate<'py>(
+        &self,
+        py: Python<'py>,
+        u: &Bound<'py, PyAny>,
+        v: &Bound<'py, PyAny>,
+        ku: usize,
+        kv: usize,
+        grid: bool,
+        out: Option<Bound<'py, PyAny>>,
+    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        let pu = Params::extract(u, "u")?;
+        let pv = Params::extract(v, "v")?;
+        let (su, sv) = (pu.shape(), pv.shape());
+        let d = self.inner.dim();
+        let shape: Vec<usize> = if grid {
+            if su.len() > 1 || sv.len() > 1 {
+                return Err(invalid(
+                    "with grid=True, u and v must be floats or 1-D arrays",
+                ));
+            }
+            let mut s = su.clone();
+            s.extend(&sv);
+            s.push(d);
+            s
+        } else {
+            if su != sv {
+                return Err(invalid(format!(
+                    "with grid=False, u and v must have one shape (got {su:?} and {sv:?})"
+                )));
+            }
+            let mut s = su.clone();
+            s.push(d);
+            s
+        };
+        let array = output_array(py, out, &shape)?;
+        let (us, vs) = (pu.flat(), pv.flat());
+        let inner = &self.inner;
+        let work = if grid { us.len() * vs.len() } else { us.len() };
+        write_flat(&array, |flat| {
+            maybe_detach(py, work, || {
+                if grid {
+                    inner.grid_flat(&us, &vs, ku, kv, flat)
+                } else {
+                    inner.points_flat(&us, &vs, ku, kv, flat)
+                }
+            })
+        })?;
+        Ok(array)
+    }
+}
+
+#[pymethods]
+impl PySurface {
+    /// S(u, v, grid=True, out=None): points of the surface.
+    #[pyo3(signature = (u, v, grid = true, out = None))]
+    fn __call__<'py>(
+        &self,
+        py: Python<'py>,
+        u: &Bound<'py, PyAny>,
+        v: &Bound<'py, PyAny>,
+        grid: bool,
+        out: Option<Bound<'py, PyAny>>,
+    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        self.evaluate(py, u, v, 0, 0, grid, out)
+    }
+
+    /// S.derivative(u, v, ku=1, kv=0, grid=True, out=None): the partial derivative
+    /// d^(ku+kv) S / du^ku dv^kv.
+    #[pyo3(signature = (u, v, ku = 1, kv = 0, grid = true, out = None))]
+    #[allow(clippy::too_many_arguments)]
+    fn derivative<'py>(
+        &self,
+        py: Python<'py>,
+        u: &Bound<'py, PyAny>,
+        v: &Bound<'py, PyAny>,
+        ku: usize,
+        kv: usize,
+        grid: bool,
+        out: Option<Bound<'py, PyAny>>,
+    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        self.evaluate(py, u, v, ku, kv, grid, out)
+    }
+
+    /// S.sample(nu, nv): the points at nu x nv uniformly spaced parameters, (nu, nv, d).
+    fn sample<'py>(
+        &self,
+        py: Python<'py>,
+        nu: usize,
+        nv: usize,
+    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        let us = uniform(self.inner.domain_u(), nu);
+        let vs = uniform(self.inner.domain_v(), nv);
+        let array = PyArrayDyn::<f64>::zeros(py, &[nu, nv, self.inner.dim()][..], false);
+        let inner = &self.inner;
+        write_flat(&array, |flat| {
+            maybe_detach(py, nu * nv, || inner.grid_flat(&us, &vs, 0, 0, flat))
+        })?;
+        Ok(array)
+    }
+
+    /// The u domain (a, b).
+    #[getter]
+    fn domain_u(&self) -> (f64, f64) {
+        self.inner.domain_u()
+    }
+
+    /// The v domain (a, b).
+    #[getter]
+    fn domain_v(&self) -> (f64, f64) {
+        self.inner.domain_v()
+    }
+
+    /// The dimension d (2 or 3).
+    #[getter]
+    fn dim(&self) -> usize {
+        self.inner.dim()
+    }
+
+    /// True when closed in u.
+    #[getter]
+    fn closed_u(&self) -> bool {
+        self.inner.closed().0
+    }
+
+    /// True when closed in v.
+    #[getter]
+    fn closed_v(&self) -> bool {
+        self.inner.closed().1
+    }
+
+    fn __repr__(&self) -> String {
+        let (a, b) = self.inner.domain_u();
+        let (c, d) = self.inner.domain_v();
+        format!(
+            "{}, domain_u=({a}, {b}), domain_v=({c}, {d})>",
+            self.description
+        )
+    }
+}
+
+/// `n` uniformly spaced parameters over `(a, b)`, ends included.
+pub fn uniform((a, b): (f64, f64), n: usize) -> Vec<f64> {
+    (0..n)
+        .map(|i| {
+            if n == 1 {
+                a
+            } else {
+                a + (b - a) * i as f64 / (n - 1) as f64
+            }
+        })
+        .collect()
+}
