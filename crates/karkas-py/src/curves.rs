@@ -167,7 +167,7 @@ impl PyLlCurve {
     }
 }
 
-fn parse_parameterization(name: &str) -> PyResult<CurveParameterization> {
+pub fn parse_parameterization(name: &str) -> PyResult<CurveParameterization> {
     match name {
         "uniform" => Ok(CurveParameterization::Uniform),
         "chord" | "chord-length" | "chordlength" => Ok(CurveParameterization::ChordLength),

@@ -9,6 +9,7 @@ mod convert;
 mod curve;
 mod curves;
 mod discrete;
+mod extras;
 mod surface;
 mod surfaces;
 
@@ -32,6 +33,14 @@ fn karkas_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<surfaces::PyBicubicSurface>()?;
     m.add_class::<discrete::PyDiscreteSpline>()?;
     m.add_class::<discrete::PyTubeSurface>()?;
+    m.add_class::<extras::PyCoonsSurface>()?;
+    m.add_class::<extras::PySectionCurve>()?;
+    m.add_class::<extras::PyImplicitSurface>()?;
+    m.add_function(wrap_pyfunction!(extras::hausdorff, m)?)?;
+    m.add_function(wrap_pyfunction!(extras::hausdorff_to_implicit, m)?)?;
+    m.add_function(wrap_pyfunction!(extras::vary, m)?)?;
+    m.add_function(wrap_pyfunction!(extras::curve_parameters, m)?)?;
+    m.add_function(wrap_pyfunction!(extras::grid_parameters, m)?)?;
     let names: Vec<String> = m
         .dict()
         .keys()

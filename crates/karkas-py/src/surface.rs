@@ -2,11 +2,16 @@
 
 use std::sync::Arc;
 
-use karkas::{Point, Surface};
+use karkas::implicit::ExpressionSurface;
+use karkas::measure::{hausdorff_surface_implicit, Hausdorff};
+use karkas::section::{plane_section, Plane, SectionOptions};
+use karkas::{Point, Point3, Surface};
 use numpy::PyArrayDyn;
 use pyo3::prelude::*;
 
-use crate::convert::{as_points_mut, invalid, maybe_detach, output_array, write_flat, Params};
+use crate::convert::{
+    as_points_mut, flatten, invalid, maybe_detach, output_array, write_flat, Params,
+};
 
 /// A karkas surface of either dimension, evaluated on flat buffers.
 pub trait SurfaceImpl: Send + Sync {
@@ -23,6 +28,73 @@ pub trait SurfaceImpl: Send + Sync {
     fn grid_flat(&self, us: &[f64], vs: &[f64], ku: usize, kv: usize, out: &mut [f64]);
     /// The derivative `(ku, kv)` at the pairs `(us[i], vs[i])` into `out`.
     fn points_flat(&self, us: &[f64], vs: &[f64], ku: usize, kv: usize, out: &mut [f64]);
+    /// The section by the plane `normal . x = offset` (`normal.len() == dim`).
+    fn section(
+        &self,
+        normal: &[f64],
+        offset: f64,
+        options: &SectionOptions,
+    ) -> karkas::Result<FlatSection>;
+    /// The two-sided Hausdorff distance to the patch of an implicit surface (3-D only).
+    fn hausdorff_implicit(
+        &self,
+        implicit: &ExpressionSurface,
+        patch: &[Point3],
+        samples: (usize, usize),
+    ) -> karkas::Result<Hausdorff>;
+}
+
+/// One piece of a section with dimension-free coordinates.
+pub struct FlatCurve {
+    /// The points, `dim` numbers each.
+    pub points: Vec<f64>,
+    /// The surface parameters `(u, v)` of the points, flat.
+    pub params: Vec<f64>,
+    /// True when the last point joins the first.
+    pub closed: bool,
+    /// The polyline's length (the closing chord included when closed).
+    pub length: f64,
+}
+
+/// A section with dimension-free coordinates.
+pub struct FlatSection {
+    /// The pieces.
+    pub curves: Vec<FlatCurve>,
+    /// The library's warnings, as text.
+    pub warnings: Vec<String>,
+}
+
+/// A surface of dimension `D` seen as one in 3-D (used only when `D == 3`: the coordinates
+/// are copied, missing ones are zero).
+struct Lift<'a, S, const D: usize>(&'a S);
+
+fn lift<const D: usize>(p: Point<D>) -> Point3 {
+    let mut q = Point3::ZERO;
+    for (a, b) in q.0.iter_mut().zip(p.0) {
+        *a = b;
+    }
+    q
+}
+
+impl<S: Surface<D>, const D: usize> Surface<3> for Lift<'_, S, D> {
+    fn domain_u(&self) -> karkas::Interval {
+        self.0.domain_u()
+    }
+    fn domain_v(&self) -> karkas::Interval {
+        self.0.domain_v()
+    }
+    fn is_closed_u(&self) -> bool {
+        self.0.is_closed_u()
+    }
+    fn is_closed_v(&self) -> bool {
+        self.0.is_closed_v()
+    }
+    fn eval(&self, u: f64, v: f64) -> Point3 {
+        lift(self.0.eval(u, v))
+    }
+    fn deriv(&self, u: f64, v: f64, ku: usize, kv: usize) -> Point3 {
+        lift(self.0.deriv(u, v, ku, kv))
+    }
 }
 
 /// A karkas surface of dimension `D` behind [`SurfaceImpl`].
@@ -57,6 +129,37 @@ where
                 *p = self.0.deriv(u, v, ku, kv);
             }
         }
+    }
+    fn section(
+        &self,
+        normal: &[f64],
+        offset: f64,
+        options: &SectionOptions,
+    ) -> karkas::Result<FlatSection> {
+        let mut n = Point::<D>::ZERO;
+        n.0.copy_from_slice(normal);
+        let section = plane_section(&self.0, &Plane::new(n, offset)?, options)?;
+        Ok(FlatSection {
+            curves: section
+                .curves
+                .iter()
+                .map(|c| FlatCurve {
+                    points: flatten(&c.points).to_vec(),
+                    params: c.params.iter().flat_map(|&(u, v)| [u, v]).collect(),
+                    closed: c.closed,
+                    length: c.length(),
+                })
+                .collect(),
+            warnings: section.warnings.iter().map(|w| format!("{w:?}")).collect(),
+        })
+    }
+    fn hausdorff_implicit(
+        &self,
+        implicit: &ExpressionSurface,
+        patch: &[Point3],
+        samples: (usize, usize),
+    ) -> karkas::Result<Hausdorff> {
+        hausdorff_surface_implicit(&Lift(&self.0), implicit, patch, samples)
     }
     fn points_flat(&self, us: &[f64], vs: &[f64], ku: usize, kv: usize, out: &mut [f64]) {
         let out: &mut [Point<D>] = as_points_mut(out);
@@ -188,6 +291,38 @@ impl PySurface {
             maybe_detach(py, nu * nv, || inner.grid_flat(&us, &vs, 0, 0, flat))
         })?;
         Ok(array)
+    }
+
+    /// S.section(normal, offset, tolerance=None, cells=(64, 64)) -> list[SectionCurve]: where
+    /// the plane normal . x = offset cuts the surface, as polylines on it (chord error at most
+    /// tolerance; default 1e-4 of the bounding box diagonal). Pieces smaller than a cell of the
+    /// cells grid may be missed.
+    #[pyo3(signature = (normal, offset, tolerance = None, cells = (64, 64)))]
+    fn section(
+        &self,
+        py: Python<'_>,
+        normal: Vec<f64>,
+        offset: f64,
+        tolerance: Option<f64>,
+        cells: (usize, usize),
+    ) -> PyResult<Vec<crate::extras::PySectionCurve>> {
+        let d = self.inner.dim();
+        if normal.len() != d {
+            return Err(invalid(format!(
+                "normal must have {d} coordinates (got {})",
+                normal.len()
+            )));
+        }
+        let options = SectionOptions {
+            tolerance,
+            cells,
+            ..SectionOptions::default()
+        };
+        let inner = &self.inner;
+        let section = py
+            .detach(|| inner.section(&normal, offset, &options))
+            .map_err(crate::convert::value_error)?;
+        Ok(crate::extras::section_curves(section, d))
     }
 
     /// The u domain (a, b).
