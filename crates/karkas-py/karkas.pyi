@@ -1,5 +1,6 @@
 """Type stubs of the karkas Python package (built from crates/karkas-py)."""
 
+import os
 from typing import Optional, Sequence, Tuple, Union
 
 import numpy as np
@@ -111,6 +112,14 @@ class Surface:
         out: Optional[Floats] = None,
     ) -> Floats: ...
     def sample(self, nu: int, nv: int) -> Floats: ...
+    def section(
+        self,
+        normal: Sequence[float],
+        offset: float,
+        tolerance: Optional[float] = None,
+        cells: Tuple[int, int] = (64, 64),
+    ) -> "list[SectionCurve]":
+        """Where the plane normal . x = offset cuts the surface, as polylines on it."""
     @property
     def domain_u(self) -> Tuple[float, float]: ...
     @property
@@ -190,3 +199,85 @@ class TubeSurface:
         """c(p, q), (N1, N2, d)."""
     def closed_grid(self) -> Floats:
         """The values with the seams repeated, (N1 + 1, N2 + 1, d)."""
+
+class SectionCurve:
+    """One connected piece of a plane section: a polyline on the surface."""
+
+    closed: bool
+    length: float
+    @property
+    def points(self) -> Floats:
+        """(n, d)."""
+    @property
+    def params(self) -> Floats:
+        """The surface parameters (u, v) of the points, (n, 2)."""
+    def __len__(self) -> int: ...
+
+class CoonsSurface(Surface):
+    """Generalized Coons surfaces over a network of curves given by points."""
+
+    kind: str
+    def __init__(
+        self,
+        v_curves: Sequence[ArrayLike],
+        u_curves: Sequence[ArrayLike],
+        kind: str = "gordon-spline",
+        u_derivs: Optional[Sequence[ArrayLike]] = None,
+        v_derivs: Optional[Sequence[ArrayLike]] = None,
+        fit: Union[None, str, Tuple[str, int]] = None,
+        crossing_tolerance: float = 1e-6,
+        tolerance: float = 1e-4,
+    ) -> None:
+        """kind: 'bilinear', 'bicubic', 'gordon', 'gordon-spline', 'composite'."""
+
+class ImplicitSurface:
+    """An implicit surface F(x, y, z) = 0 given as an expression."""
+
+    def __init__(self, expression: str) -> None: ...
+    @property
+    def expression(self) -> str: ...
+    def value(self, points: ArrayLike) -> Floats: ...
+    def gradient(self, points: ArrayLike) -> Floats: ...
+    def project(self, points: ArrayLike) -> Floats: ...
+    def curvatures(self, point: Sequence[float]) -> dict:
+        """normal, k1, k2, d1, d2, gaussian, mean."""
+    def trace_net(
+        self,
+        start: Sequence[float],
+        nodes: Tuple[int, int],
+        steps: Tuple[float, float],
+        directions: str = "principal",
+        angle: float = 0.0,
+        plane_normal: Optional[Sequence[float]] = None,
+        closed_v: bool = False,
+        substeps: int = 32,
+    ) -> Floats:
+        """A node grid (nu, nv, 3) on F = 0 along lines of curvature (or turned nets)."""
+
+def hausdorff(a: ArrayLike, b: ArrayLike) -> dict:
+    """Two-sided Hausdorff distance of point sets (n, 3), (m, 3): distance, forward, backward."""
+
+def hausdorff_to_implicit(
+    surface: Surface,
+    implicit: ImplicitSurface,
+    patch: ArrayLike,
+    samples: Tuple[int, int] = (50, 50),
+) -> dict: ...
+def vary(
+    matrix: ArrayLike,
+    row_sums: Sequence[float],
+    column_sums: Sequence[float],
+    fixed: Optional[ArrayLike] = None,
+    penalty: Optional[float] = None,
+    scale_with_total: bool = False,
+) -> Floats:
+    """The least change of matrix with the given row and column sums (LL surface variation)."""
+
+def curve_parameters(points: ArrayLike, parameterization: str = "chord") -> Floats: ...
+def grid_parameters(grid: ArrayLike, parameterization: str = "chord") -> Tuple[Floats, Floats]: ...
+def export_obj(path: Union[str, "os.PathLike[str]"], grid: ArrayLike) -> None: ...
+def export_stl(path: Union[str, "os.PathLike[str]"], grid: ArrayLike) -> None: ...
+def export_curve_csv(path: Union[str, "os.PathLike[str]"], t: ArrayLike, points: ArrayLike) -> None: ...
+def export_surface_csv(
+    path: Union[str, "os.PathLike[str]"], u: ArrayLike, v: ArrayLike, grid: ArrayLike
+) -> None: ...

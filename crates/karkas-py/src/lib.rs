@@ -9,6 +9,7 @@ mod convert;
 mod curve;
 mod curves;
 mod discrete;
+mod export;
 mod extras;
 mod surface;
 mod surfaces;
@@ -41,6 +42,10 @@ fn karkas_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(extras::vary, m)?)?;
     m.add_function(wrap_pyfunction!(extras::curve_parameters, m)?)?;
     m.add_function(wrap_pyfunction!(extras::grid_parameters, m)?)?;
+    m.add_function(wrap_pyfunction!(export::export_obj, m)?)?;
+    m.add_function(wrap_pyfunction!(export::export_stl, m)?)?;
+    m.add_function(wrap_pyfunction!(export::export_curve_csv, m)?)?;
+    m.add_function(wrap_pyfunction!(export::export_surface_csv, m)?)?;
     let names: Vec<String> = m
         .dict()
         .keys()
