@@ -28,9 +28,11 @@
 //! the grid cell. No input, however malformed, makes these functions panic.
 
 pub mod airfoil;
+pub mod cad;
 pub mod error;
 pub mod format;
 pub mod grid;
+pub mod iges;
 pub mod mask;
 pub mod network;
 pub mod obj;
@@ -40,6 +42,7 @@ pub mod points;
 pub mod pointset;
 pub mod scene;
 pub mod skeleton;
+pub mod step;
 pub mod stl;
 pub mod svg;
 pub mod write;
