@@ -195,7 +195,7 @@ impl<const D: usize> CoonsSurface<D> {
             for z in bv.windows(2) {
                 let (u, v) = (0.5 * (w[0] + w[1]), 0.5 * (z[0] + z[1]));
                 let gap = self.eval(u, v).distance(result.eval(u, v));
-                if !(gap <= 1e-9 * size) {
+                if gap.is_nan() || gap > 1e-9 * size {
                     return Err(Error::NotExactlyConvertible {
                         what: "a Coons surface",
                         reason: format!(

@@ -87,3 +87,29 @@ impl PolynomialPieces {
             .collect()
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn merging_takes_every_break_and_the_weakest_continuity() {
+        let blend = PolynomialPieces::uniform_continuity(3, vec![0.0, 0.5, 1.0], 1);
+        let curve =
+            PolynomialPieces::uniform_continuity(3, vec![0.0, 0.25, 0.5 + 1e-13, 0.75, 1.0], 2);
+        let line = PolynomialPieces::uniform_continuity(1, vec![0.0, 1.0], 0);
+        let m = PolynomialPieces::merge(&[blend, curve, line], Interval::new(0.0, 1.0));
+        assert_eq!(m.degree, 3);
+        assert_eq!(m.breaks, vec![0.0, 0.25, 0.5, 0.75, 1.0]);
+        assert_eq!(m.continuity, vec![2, 1, 2]);
+        assert_eq!(m.multiplicities(3), vec![1, 2, 1]);
+        assert_eq!(m.multiplicities(5), vec![3, 4, 3]);
+    }
+
+    #[test]
+    fn mapping_lands_on_the_target_ends() {
+        let p = PolynomialPieces::uniform_continuity(2, vec![0.0, 0.3, 1.0], 1)
+            .mapped(Interval::new(0.0, 1.0), Interval::new(2.0, 4.0));
+        assert_eq!(p.breaks, vec![2.0, 2.6, 4.0]);
+    }
+}
