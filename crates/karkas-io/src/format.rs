@@ -20,17 +20,27 @@ pub enum OutputFormat {
     Stl,
     /// A picture in pixels (`.png`).
     Png,
+    /// A STEP file of exact B-spline geometry (`.step` or `.stp`).
+    Step,
+    /// An IGES file of exact B-spline geometry (`.iges` or `.igs`).
+    Iges,
 }
 
 impl OutputFormat {
     /// All formats, in the order they are listed in messages.
-    const ALL: [OutputFormat; 5] = [
+    const ALL: [OutputFormat; 7] = [
         OutputFormat::Csv,
         OutputFormat::Svg,
         OutputFormat::Obj,
         OutputFormat::Stl,
         OutputFormat::Png,
+        OutputFormat::Step,
+        OutputFormat::Iges,
     ];
+
+    /// The exact CAD formats (STEP and IGES), for the commands whose result is a piecewise
+    /// polynomial.
+    pub const CAD: [OutputFormat; 2] = [OutputFormat::Step, OutputFormat::Iges];
 
     /// The format named by the extension of `path` (case-insensitive), if it is one of
     /// `allowed`; otherwise [`IoError::UnknownExtension`] listing the allowed extensions.
@@ -39,7 +49,12 @@ impl OutputFormat {
         allowed
             .iter()
             .copied()
-            .find(|f| extension.is_some_and(|e| e.eq_ignore_ascii_case(f.extension())))
+            .find(|f| {
+                extension.is_some_and(|e| {
+                    e.eq_ignore_ascii_case(f.extension())
+                        || f.alias().is_some_and(|a| e.eq_ignore_ascii_case(a))
+                })
+            })
             .ok_or_else(|| IoError::UnknownExtension {
                 path: path.to_path_buf(),
                 allowed: allowed_list(allowed),
@@ -54,7 +69,23 @@ impl OutputFormat {
             OutputFormat::Obj => "obj",
             OutputFormat::Stl => "stl",
             OutputFormat::Png => "png",
+            OutputFormat::Step => "step",
+            OutputFormat::Iges => "iges",
         }
+    }
+
+    /// The other accepted extension, if any: `"stp"` for STEP, `"igs"` for IGES.
+    pub fn alias(self) -> Option<&'static str> {
+        match self {
+            OutputFormat::Step => Some("stp"),
+            OutputFormat::Iges => Some("igs"),
+            _ => None,
+        }
+    }
+
+    /// True for the exact CAD formats (STEP, IGES).
+    pub fn is_cad(self) -> bool {
+        OutputFormat::CAD.contains(&self)
     }
 }
 
@@ -64,7 +95,10 @@ fn allowed_list(allowed: &[OutputFormat]) -> String {
     let list: Vec<String> = OutputFormat::ALL
         .iter()
         .filter(|f| allowed.contains(f))
-        .map(|f| format!(".{}", f.extension()))
+        .map(|f| match f.alias() {
+            Some(a) => format!(".{}/.{a}", f.extension()),
+            None => format!(".{}", f.extension()),
+        })
         .collect();
     if list.is_empty() {
         "(none)".to_owned()
@@ -100,7 +134,28 @@ mod tests {
         assert_eq!(allowed_list(&[Png, Svg, Csv]), ".csv, .svg, .png");
         assert_eq!(allowed_list(&[]), "(none)");
         for f in OutputFormat::ALL {
-            assert_eq!(allowed_list(&[f]), format!(".{}", f.extension()));
+            assert!(allowed_list(&[f]).starts_with(&format!(".{}", f.extension())));
         }
+        assert_eq!(
+            allowed_list(&[Iges, Csv, Step]),
+            ".csv, .step/.stp, .iges/.igs"
+        );
+        assert_eq!(
+            OutputFormat::from_path(p("a.STP"), &OutputFormat::CAD).unwrap(),
+            Step
+        );
+        assert_eq!(
+            OutputFormat::from_path(p("a.step"), &OutputFormat::CAD).unwrap(),
+            Step
+        );
+        assert_eq!(
+            OutputFormat::from_path(p("a.igs"), &OutputFormat::CAD).unwrap(),
+            Iges
+        );
+        assert_eq!(
+            OutputFormat::from_path(p("a.Iges"), &OutputFormat::CAD).unwrap(),
+            Iges
+        );
+        assert!(OutputFormat::from_path(p("a.st"), &OutputFormat::CAD).is_err());
     }
 }

@@ -22,15 +22,19 @@
 //! - [`painter`]: a shaded picture of projected polygons and segments (painter's algorithm);
 //! - [`png`]: any of these pictures rendered to PNG (with a compiled-in font);
 //! - [`obj`]: a sampled surface as a Wavefront OBJ triangle mesh;
-//! - [`stl`]: a sampled surface as a binary STL triangle mesh.
+//! - [`stl`]: a sampled surface as a binary STL triangle mesh;
+//! - [`step`] and [`iges`]: exact B-spline curves and surfaces ([`cad::CadEntity`], from
+//!   [`karkas::bspline`]) as STEP AP214 and IGES 5.3 (entities 126, 128) files.
 //!
 //! Every error is an [`IoError`] naming the file and, where there is one, the 1-based line or
 //! the grid cell. No input, however malformed, makes these functions panic.
 
 pub mod airfoil;
+pub mod cad;
 pub mod error;
 pub mod format;
 pub mod grid;
+pub mod iges;
 pub mod mask;
 pub mod network;
 pub mod obj;
@@ -40,6 +44,7 @@ pub mod points;
 pub mod pointset;
 pub mod scene;
 pub mod skeleton;
+pub mod step;
 pub mod stl;
 pub mod svg;
 pub mod write;

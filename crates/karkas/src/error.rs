@@ -339,6 +339,16 @@ pub enum Error {
         /// Why it is not allowed.
         reason: &'static str,
     },
+    /// A curve or surface whose exact B-spline form cannot be built: data that are not known
+    /// piecewise polynomials, or a degree too high to convert without losing digits
+    /// ([`ToBSplineSurface::to_bspline`](crate::bspline::ToBSplineSurface) of a Coons surface).
+    #[error("{what} has no exact B-spline form: {reason}")]
+    NotExactlyConvertible {
+        /// What was converted.
+        what: &'static str,
+        /// Why it cannot be.
+        reason: String,
+    },
 }
 
 /// `Result` with [`Error`].

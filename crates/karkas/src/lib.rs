@@ -21,6 +21,8 @@
 //!   (Kuznetsov, Filatov);
 //! - [`implicit`]: implicit surfaces `F(x, y, z) = 0`, their principal curvatures, and node
 //!   grids traced along lines of curvature (or turned nets) by continuation;
+//! - [`bspline`]: exact B-spline form of every piecewise polynomial curve and surface (for
+//!   CAD export);
 //! - [`measure`]: the two-sided Hausdorff distance between surfaces and point sets.
 //! - [`fit`]: fitting measured points with C^1 cubic Hermite splines (cubic splines of defect
 //!   2) whose second-derivative jumps are bounded (Pavlov).
@@ -35,6 +37,7 @@
 //! assert!(curve.eval(d.end).distance(pts[3]) < 1e-15);
 //! ```
 
+pub mod bspline;
 pub mod coons;
 pub mod core;
 pub mod dps;

@@ -36,6 +36,7 @@ pub struct CurveDpsArgs {
 
 /// Runs `karkas curve dps`.
 pub fn run(args: &CurveDpsArgs) -> Result<()> {
+    super::output::refuse_cad_for_discrete(&args.output)?;
     let format = OutputFormat::from_path(&args.output, &[OutputFormat::Csv, OutputFormat::Svg])?;
     check_order("--order", args.order)?;
     check_step("--n", args.step)?;

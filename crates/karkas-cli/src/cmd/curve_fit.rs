@@ -2,7 +2,7 @@
 //! second-derivative jumps (seed 003, METHODS.md §4).
 
 use super::curve_ll::MAX_SAMPLES;
-use super::output::ensure_distinct;
+use super::output::{ensure_distinct, write_cad_curve};
 use crate::samples::{default_curve_samples, parse_count};
 use anyhow::{anyhow, bail, Result};
 use clap::Args;
@@ -42,7 +42,8 @@ pub struct CurveFitArgs {
     /// known trailing edge).
     #[arg(long)]
     pin_ends: bool,
-    /// Output: .csv (t,x,y[,z] samples of the curve) or .svg (points, curve, deviations).
+    /// Output: .csv (t,x,y[,z] samples of the curve), .svg (points, curve, deviations), or
+    /// the exact B-spline curve (degree 3, inner knots doubled) as .step/.stp or .iges/.igs.
     #[arg(short, long)]
     output: PathBuf,
     /// Per-point deviations as CSV: point,t,distance.
@@ -52,7 +53,15 @@ pub struct CurveFitArgs {
 
 /// Runs `karkas curve fit`.
 pub fn run(args: &CurveFitArgs) -> Result<()> {
-    let format = OutputFormat::from_path(&args.output, &[OutputFormat::Csv, OutputFormat::Svg])?;
+    let format = OutputFormat::from_path(
+        &args.output,
+        &[
+            OutputFormat::Csv,
+            OutputFormat::Svg,
+            OutputFormat::Step,
+            OutputFormat::Iges,
+        ],
+    )?;
     if let Some(knots) = &args.knots {
         check_knots(knots).map_err(|e| anyhow!("--knots: {e}"))?;
     }
@@ -131,6 +140,10 @@ fn fit_and_write<const D: usize>(
             }
             Ok(())
         })?;
+    }
+    if format.is_cad() {
+        let what = args.input.display().to_string();
+        return write_cad_curve(&fit.spline, format, &args.output, &what);
     }
     match format {
         OutputFormat::Svg => {

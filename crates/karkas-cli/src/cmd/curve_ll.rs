@@ -1,6 +1,6 @@
 //! `karkas curve ll`: the LL curve of an ordered point list (seed 000, METHODS.md §1.2).
 
-use super::output::ensure_distinct;
+use super::output::{ensure_distinct, write_cad_curve};
 use crate::samples::{default_curve_samples, parse_count};
 use anyhow::{anyhow, bail, Result};
 use clap::Args;
@@ -34,14 +34,23 @@ pub struct CurveLlArgs {
     samples: Option<usize>,
     /// Input points: CSV or whitespace columns x,y[,z], or an airfoil .dat (Selig or Lednicer).
     input: PathBuf,
-    /// Output file: .csv (t,x,y[,z]) or .svg (picture of the curve over its points).
+    /// Output file: .csv (t,x,y[,z]), .svg (picture of the curve over its points), or the
+    /// exact B-spline curve as .step/.stp or .iges/.igs (planar curves in the plane z = 0).
     #[arg(short, long)]
     output: PathBuf,
 }
 
 /// Runs `karkas curve ll`.
 pub fn run(args: &CurveLlArgs) -> Result<()> {
-    let format = OutputFormat::from_path(&args.output, &[OutputFormat::Csv, OutputFormat::Svg])?;
+    let format = OutputFormat::from_path(
+        &args.output,
+        &[
+            OutputFormat::Csv,
+            OutputFormat::Svg,
+            OutputFormat::Step,
+            OutputFormat::Iges,
+        ],
+    )?;
     LlKernel::new(args.order).map_err(|e| anyhow!("--order: {e}"))?;
     if args.samples.is_some_and(|n| n > MAX_SAMPLES) {
         bail!("--samples: at most {MAX_SAMPLES} samples can be written");
@@ -65,6 +74,10 @@ fn build_and_write<const D: usize>(
     };
     let curve = build(points, args.order, args.closed)
         .map_err(|e| anyhow!("{}: {e}", args.input.display()))?;
+    if format.is_cad() {
+        let what = args.input.display().to_string();
+        return write_cad_curve(&curve, format, &args.output, &what);
+    }
     let n = args
         .samples
         .unwrap_or_else(|| default_curve_samples(points.len()));

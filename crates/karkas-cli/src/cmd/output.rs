@@ -1,9 +1,13 @@
 //! What every command that writes an output file shares: the input-overwrite check and the
 //! writing of a sampled surface.
 
-use anyhow::{bail, Result};
+use anyhow::{anyhow, bail, Result};
+use karkas::bspline::{ToBSplineCurve, ToBSplineSurface};
 use karkas::{Point3, Surface};
+use karkas_io::cad::{curve_in_space, CadEntity};
+use karkas_io::iges::write_iges;
 use karkas_io::obj::write_surface_obj;
+use karkas_io::step::write_step;
 use karkas_io::write::write_surface_csv;
 use karkas_io::OutputFormat;
 use std::path::Path;
@@ -41,5 +45,67 @@ pub fn write_sampled_surface(
         _ => write_surface_csv(output, &us, &vs, &samples)?,
     }
     super::curve_ll::report(output, nu * nv);
+    Ok(())
+}
+
+/// Writes the exact B-spline form of `curve` as STEP or IGES (by `format`, one of
+/// [`OutputFormat::CAD`]); `what` names the input for errors.
+pub fn write_cad_curve<const D: usize>(
+    curve: &impl ToBSplineCurve<D>,
+    format: OutputFormat,
+    output: &Path,
+    what: &str,
+) -> Result<()> {
+    let bspline = curve.to_bspline().map_err(|e| anyhow!("{what}: {e}"))?;
+    let spatial = curve_in_space(&bspline).map_err(|e| anyhow!("{what}: {e}"))?;
+    write_cad(&[CadEntity::Curve(&spatial)], format, output)?;
+    eprintln!(
+        "karkas: wrote {} (B-spline curve of degree {}, {} control points)",
+        output.display(),
+        spatial.degree(),
+        spatial.control_points().len()
+    );
+    Ok(())
+}
+
+/// Writes the exact B-spline form of `surface` as STEP or IGES (by `format`).
+pub fn write_cad_surface(
+    surface: &impl ToBSplineSurface<3>,
+    format: OutputFormat,
+    output: &Path,
+    what: &str,
+) -> Result<()> {
+    let bspline = surface.to_bspline().map_err(|e| anyhow!("{what}: {e}"))?;
+    write_cad(&[CadEntity::Surface(&bspline)], format, output)?;
+    let grid = bspline.control_points();
+    eprintln!(
+        "karkas: wrote {} (B-spline surface of degree {}x{}, {}x{} control points)",
+        output.display(),
+        bspline.degree_u(),
+        bspline.degree_v(),
+        grid.rows(),
+        grid.cols()
+    );
+    Ok(())
+}
+
+fn write_cad(entities: &[CadEntity<'_>], format: OutputFormat, output: &Path) -> Result<()> {
+    match format {
+        OutputFormat::Iges => write_iges(output, entities)?,
+        _ => write_step(output, entities)?,
+    }
+    Ok(())
+}
+
+/// Refuses STEP and IGES for the discrete periodic splines: they are point sets (METHODS.md
+/// §3, §6), with no exact piecewise polynomial form to export.
+pub fn refuse_cad_for_discrete(output: &Path) -> Result<()> {
+    if OutputFormat::from_path(output, &OutputFormat::CAD).is_ok() {
+        bail!(
+            "{}: discrete periodic splines are point sets, not piecewise polynomials: they have no \
+             exact STEP/IGES form (write .csv, .obj or .stl and convert the points)",
+            output.display()
+        );
+    }
     Ok(())
 }

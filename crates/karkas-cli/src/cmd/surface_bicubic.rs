@@ -2,7 +2,7 @@
 //! parameters (seed 004, METHODS.md §5).
 
 use super::curve_ll::MAX_SAMPLES;
-use super::output::{ensure_distinct, write_sampled_surface};
+use super::output::{ensure_distinct, write_cad_surface, write_sampled_surface};
 use crate::samples::{default_surface_samples, parse_pair};
 use anyhow::{anyhow, bail, Result};
 use clap::{Args, ValueEnum};
@@ -54,14 +54,23 @@ pub struct SurfaceBicubicArgs {
     samples: Option<(usize, usize)>,
     /// Input grid: CSV with header i,j,x,y,z (indices from 0, rows in any order).
     input: PathBuf,
-    /// Output file: .csv (u,v,x,y,z in the chosen parameters) or .obj (triangle mesh).
+    /// Output file: .csv (u,v,x,y,z in the chosen parameters), .obj (triangle mesh), or the
+    /// exact B-spline surface as .step/.stp or .iges/.igs.
     #[arg(short, long)]
     output: PathBuf,
 }
 
 /// Runs `karkas surface bicubic`.
 pub fn run(args: &SurfaceBicubicArgs) -> Result<()> {
-    let format = OutputFormat::from_path(&args.output, &[OutputFormat::Csv, OutputFormat::Obj])?;
+    let format = OutputFormat::from_path(
+        &args.output,
+        &[
+            OutputFormat::Csv,
+            OutputFormat::Obj,
+            OutputFormat::Step,
+            OutputFormat::Iges,
+        ],
+    )?;
     if args
         .samples
         .is_some_and(|(nu, nv)| nu.saturating_mul(nv) > MAX_SAMPLES)
@@ -72,6 +81,10 @@ pub fn run(args: &SurfaceBicubicArgs) -> Result<()> {
     let grid = read_grid(&args.input)?;
     let surface = BicubicSurface::new(&grid, args.param.to_library(), args.closed_u, args.closed_v)
         .map_err(|e| anyhow!("{}: {e}", args.input.display()))?;
+    if format.is_cad() {
+        let what = args.input.display().to_string();
+        return write_cad_surface(&surface, format, &args.output, &what);
+    }
     let (nu, nv) = args.samples.unwrap_or_else(|| {
         (
             default_surface_samples(grid.rows()),

@@ -6,7 +6,7 @@
 //! node values in `[0, 1]`); the surface's parameters `u`, `v` are those node values.
 
 use super::curve_ll::MAX_SAMPLES;
-use super::output::{ensure_distinct, write_sampled_surface};
+use super::output::{ensure_distinct, write_cad_surface, write_sampled_surface};
 use crate::samples::{default_surface_samples, parse_pair};
 use anyhow::{anyhow, bail, Result};
 use clap::{Args, ValueEnum};
@@ -68,14 +68,23 @@ pub struct SurfaceCoonsArgs {
     /// [default: 4 per point of the longest curve in each direction, at least 50].
     #[arg(long, value_parser = parse_pair)]
     samples: Option<(usize, usize)>,
-    /// Output file: .csv (u,v,x,y,z) or .obj (triangle mesh).
+    /// Output file: .csv (u,v,x,y,z), .obj (triangle mesh), or the exact B-spline surface as
+    /// .step/.stp or .iges/.igs.
     #[arg(short, long)]
     output: PathBuf,
 }
 
 /// Runs `karkas surface coons`.
 pub fn run(args: &SurfaceCoonsArgs) -> Result<()> {
-    let format = OutputFormat::from_path(&args.output, &[OutputFormat::Csv, OutputFormat::Obj])?;
+    let format = OutputFormat::from_path(
+        &args.output,
+        &[
+            OutputFormat::Csv,
+            OutputFormat::Obj,
+            OutputFormat::Step,
+            OutputFormat::Iges,
+        ],
+    )?;
     if args
         .samples
         .is_some_and(|(nu, nv)| nu.saturating_mul(nv) > MAX_SAMPLES)
@@ -123,6 +132,10 @@ pub fn run(args: &SurfaceCoonsArgs) -> Result<()> {
         _ => None,
     };
     let surface = build(args.kind, &network, cross.as_ref()).map_err(|e| files.explain(e))?;
+    if format.is_cad() {
+        let what = format!("{}, {}", args.u_curves.display(), args.v_curves.display());
+        return write_cad_surface(&surface, format, &args.output, &what);
+    }
 
     let longest = |f: &CurveFamily| f.curves.iter().map(Vec::len).max().unwrap_or(0);
     let (nu, nv) = args.samples.unwrap_or_else(|| {

@@ -45,6 +45,7 @@ pub struct SurfaceDpsTubeArgs {
 
 /// Runs `karkas surface dps-tube`.
 pub fn run(args: &SurfaceDpsTubeArgs) -> Result<()> {
+    super::output::refuse_cad_for_discrete(&args.output)?;
     let format = OutputFormat::from_path(
         &args.output,
         &[OutputFormat::Csv, OutputFormat::Obj, OutputFormat::Stl],

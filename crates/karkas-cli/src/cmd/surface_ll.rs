@@ -1,7 +1,7 @@
 //! `karkas surface ll`: the LL surface of a grid of points (seed 000, METHODS.md §1.3).
 
 use super::curve_ll::MAX_SAMPLES;
-use super::output::{ensure_distinct, write_sampled_surface};
+use super::output::{ensure_distinct, write_cad_surface, write_sampled_surface};
 use crate::samples::{default_surface_samples, parse_pair};
 use anyhow::{anyhow, bail, Result};
 use clap::Args;
@@ -31,14 +31,23 @@ pub struct SurfaceLlArgs {
     samples: Option<(usize, usize)>,
     /// Input grid: CSV with header i,j,x,y,z (indices from 0, rows in any order).
     input: PathBuf,
-    /// Output file: .csv (u,v,x,y,z) or .obj (triangle mesh).
+    /// Output file: .csv (u,v,x,y,z), .obj (triangle mesh), or the exact B-spline surface as
+    /// .step/.stp or .iges/.igs.
     #[arg(short, long)]
     output: PathBuf,
 }
 
 /// Runs `karkas surface ll`.
 pub fn run(args: &SurfaceLlArgs) -> Result<()> {
-    let format = OutputFormat::from_path(&args.output, &[OutputFormat::Csv, OutputFormat::Obj])?;
+    let format = OutputFormat::from_path(
+        &args.output,
+        &[
+            OutputFormat::Csv,
+            OutputFormat::Obj,
+            OutputFormat::Step,
+            OutputFormat::Iges,
+        ],
+    )?;
     LlKernel::new(args.order).map_err(|e| anyhow!("--order: {e}"))?;
     if args
         .samples
@@ -55,6 +64,10 @@ pub fn run(args: &SurfaceLlArgs) -> Result<()> {
     };
     let surface = build(&grid, args.order, args.closed_u, args.closed_v)
         .map_err(|e| anyhow!("{}: {e}", args.input.display()))?;
+    if format.is_cad() {
+        let what = args.input.display().to_string();
+        return write_cad_surface(&surface, format, &args.output, &what);
+    }
     let (nu, nv) = args.samples.unwrap_or_else(|| {
         (
             default_surface_samples(grid.rows()),

@@ -82,6 +82,12 @@ impl<const D: usize> Curve<D> for AffineCurve<D> {
         self.inner.deriv(self.own_parameter(t), k) * scale
     }
 
+    fn polynomial_pieces(&self) -> Option<crate::bspline::PolynomialPieces> {
+        self.inner
+            .polynomial_pieces()
+            .map(|p| p.mapped(self.own, self.domain))
+    }
+
     fn eval_into(&self, ts: &[f64], out: &mut [Point<D>]) {
         assert_eq!(
             ts.len(),
@@ -163,6 +169,14 @@ impl<const D: usize> Curve<D> for SurfaceCrossDerivative<D> {
         match self.along {
             Along::U => self.surface.deriv(t, self.at, k, 1),
             Along::V => self.surface.deriv(self.at, t, 1, k),
+        }
+    }
+
+    /// The surface's pieces along the line (a derivative across it keeps them).
+    fn polynomial_pieces(&self) -> Option<crate::bspline::PolynomialPieces> {
+        match self.along {
+            Along::U => self.surface.pieces_u().ok(),
+            Along::V => self.surface.pieces_v().ok(),
         }
     }
 

@@ -109,6 +109,14 @@ impl<const D: usize> Curve<D> for PolylineCurve<D> {
         let (l, s) = locate(&self.params, self.reduce(t));
         self.on_piece(l, s, k)
     }
+
+    fn polynomial_pieces(&self) -> Option<crate::bspline::PolynomialPieces> {
+        Some(crate::bspline::PolynomialPieces::uniform_continuity(
+            1,
+            self.params.clone(),
+            0,
+        ))
+    }
 }
 
 impl<const D: usize> PiecewiseCurve<D> for PolylineCurve<D> {

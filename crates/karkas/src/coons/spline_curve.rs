@@ -185,6 +185,14 @@ impl<const D: usize> Curve<D> for CubicSplineCurve<D> {
     fn deriv(&self, t: f64, k: usize) -> Point<D> {
         self.deriv_at(t, k, Side::Above)
     }
+
+    fn polynomial_pieces(&self) -> Option<crate::bspline::PolynomialPieces> {
+        Some(crate::bspline::PolynomialPieces::uniform_continuity(
+            3,
+            self.system.nodes().to_vec(),
+            2,
+        ))
+    }
 }
 
 impl<const D: usize> PiecewiseCurve<D> for CubicSplineCurve<D> {

@@ -144,6 +144,18 @@ impl<const D: usize, C: Curve<D>> Curve<D> for WarpedCurve<D, C> {
         self.inner.is_closed()
     }
 
+    /// Without a warp the inner curve's pieces, mapped by `tau = own.start + own.length v`;
+    /// with one, `None` (a polynomial composed with the cubic warp has other breakpoints and
+    /// a higher degree).
+    fn polynomial_pieces(&self) -> Option<crate::bspline::PolynomialPieces> {
+        if self.warp.is_some() {
+            return None;
+        }
+        self.inner
+            .polynomial_pieces()
+            .map(|p| p.mapped(self.own, Interval::new(0.0, 1.0)))
+    }
+
     fn eval(&self, v: f64) -> Point<D> {
         let mut tau = [0.0];
         let mut weights = vec![0.0; self.weights_len()];

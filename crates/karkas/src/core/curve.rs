@@ -35,6 +35,14 @@ pub trait Curve<const D: usize> {
     /// [`Side::Above`] is returned (from below at the upper end of the domain).
     fn deriv(&self, t: f64, k: usize) -> Point<D>;
 
+    /// The curve's polynomial pieces (degree, breakpoints, continuity) when it is a piecewise
+    /// polynomial of its parameter; `None` (the default) when it is not or is not known to
+    /// be. Used for exact B-spline export of surfaces built from curves
+    /// ([`bspline`](crate::bspline)).
+    fn polynomial_pieces(&self) -> Option<crate::bspline::PolynomialPieces> {
+        None
+    }
+
     /// Evaluates at every parameter of `ts` into `out`.
     ///
     /// # Panics

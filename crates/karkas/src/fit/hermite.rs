@@ -345,6 +345,14 @@ impl<const D: usize> Curve<D> for HermiteSpline<D> {
         self.deriv_on_piece(piece, s, k)
     }
 
+    fn polynomial_pieces(&self) -> Option<crate::bspline::PolynomialPieces> {
+        Some(crate::bspline::PolynomialPieces::uniform_continuity(
+            3,
+            self.knots.clone(),
+            1,
+        ))
+    }
+
     fn eval_into(&self, ts: &[f64], out: &mut [Point<D>]) {
         assert_eq!(
             ts.len(),

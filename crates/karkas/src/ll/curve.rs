@@ -16,6 +16,7 @@ use super::axis::NodeAxis;
 use super::frame::{close, coincide, extend, model_scale, validate};
 use super::kernel::{pow_n, LlKernel};
 use super::prefilter::interpolation_controls;
+use crate::bspline::PolynomialPieces;
 use crate::core::{Curve, Interval, PiecewiseCurve, Side};
 use crate::{Error, Point, Result};
 
@@ -126,6 +127,11 @@ impl<const D: usize> LlCurve<D> {
         &self.extended[1..self.extended.len() - 1]
     }
 
+    /// The extended polygon `r_0..r_{K+1}` (end extensions included).
+    pub(crate) fn extended_points(&self) -> &[Point<D>] {
+        &self.extended
+    }
+
     /// The `k`-th derivative on segment `i` (1-based) at local coordinate `xi`, per unit `t`.
     #[inline]
     fn deriv_on_segment(&self, i: usize, xi: f64, k: usize) -> Point<D> {
@@ -221,6 +227,14 @@ impl<const D: usize> Curve<D> for LlCurve<D> {
     fn deriv(&self, t: f64, k: usize) -> Point<D> {
         let (i, xi) = self.axis.locate(t);
         self.deriv_on_segment(i, xi, k)
+    }
+
+    fn polynomial_pieces(&self) -> Option<PolynomialPieces> {
+        Some(PolynomialPieces::uniform_continuity(
+            2 * self.order(),
+            self.axis.breakpoints(),
+            self.order(),
+        ))
     }
 
     fn eval_into(&self, ts: &[f64], out: &mut [Point<D>]) {

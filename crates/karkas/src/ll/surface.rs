@@ -183,7 +183,7 @@ impl<const D: usize> LlSurface<D> {
     }
 
     /// The extended control grid `r_{0..Kx+1, 0..Ky+1}`.
-    pub(super) fn extended(&self) -> &Grid<Point<D>> {
+    pub(crate) fn extended(&self) -> &Grid<Point<D>> {
         &self.extended
     }
 

@@ -154,6 +154,14 @@ impl<const D: usize> Curve<D> for CubicSpline<D> {
     fn deriv(&self, t: f64, k: usize) -> Point<D> {
         self.deriv_on_piece(self.locate(t, Side::Above), k)
     }
+
+    fn polynomial_pieces(&self) -> Option<crate::bspline::PolynomialPieces> {
+        Some(crate::bspline::PolynomialPieces::uniform_continuity(
+            3,
+            self.knots.clone(),
+            2,
+        ))
+    }
 }
 
 impl<const D: usize> PiecewiseCurve<D> for CubicSpline<D> {

@@ -74,6 +74,14 @@ impl BlendingFamily for CubicHermiteBlending {
         4
     }
 
+    fn polynomial_pieces(&self) -> Option<crate::bspline::PolynomialPieces> {
+        Some(crate::bspline::PolynomialPieces::uniform_continuity(
+            3,
+            vec![self.domain.start, self.domain.end],
+            3,
+        ))
+    }
+
     fn domain(&self) -> Interval {
         self.domain
     }
@@ -152,6 +160,14 @@ impl BlendingFamily for PiecewiseHermiteBlending {
 
     fn is_periodic(&self) -> bool {
         false
+    }
+
+    fn polynomial_pieces(&self) -> Option<crate::bspline::PolynomialPieces> {
+        Some(crate::bspline::PolynomialPieces::uniform_continuity(
+            3,
+            self.nodes.clone(),
+            1,
+        ))
     }
 
     fn functionals(&self) -> &[Functional] {

@@ -63,6 +63,15 @@ impl BlendingFamily for LagrangeBlending {
         Interval::new(self.nodes[0], self.nodes[self.nodes.len() - 1])
     }
 
+    fn polynomial_pieces(&self) -> Option<crate::bspline::PolynomialPieces> {
+        let d = self.domain();
+        Some(crate::bspline::PolynomialPieces::uniform_continuity(
+            (self.nodes.len() - 1).max(1),
+            vec![d.start, d.end],
+            0,
+        ))
+    }
+
     fn is_periodic(&self) -> bool {
         false
     }

@@ -91,6 +91,13 @@ impl BlendingFamily for LlBlending {
         self.closed
     }
 
+    fn polynomial_pieces(&self) -> Option<crate::bspline::PolynomialPieces> {
+        let cardinal = &self.cardinals[0];
+        cardinal
+            .polynomial_pieces()
+            .map(|p| p.mapped(cardinal.domain(), self.domain))
+    }
+
     fn functionals(&self) -> &[Functional] {
         &self.functionals
     }

@@ -64,6 +64,13 @@ pub trait BlendingFamily: Debug + Send + Sync {
     /// # Panics
     /// When `out.len() < self.len()`.
     fn eval_into(&self, t: f64, k: usize, out: &mut [f64]) -> Range<usize>;
+
+    /// The pieces all functions of the family share (degree, breakpoints, continuity) when
+    /// they are piecewise polynomials; `None` (the default) otherwise. Used for exact
+    /// B-spline export ([`bspline`](crate::bspline)).
+    fn polynomial_pieces(&self) -> Option<crate::bspline::PolynomialPieces> {
+        None
+    }
 }
 
 /// `t` brought into `domain`: wrapped when `periodic`, clamped otherwise.

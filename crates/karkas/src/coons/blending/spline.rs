@@ -301,6 +301,17 @@ impl BlendingFamily for SplineBlending {
         self.system.is_periodic()
     }
 
+    fn polynomial_pieces(&self) -> Option<crate::bspline::PolynomialPieces> {
+        if let Some(p) = &self.polynomial {
+            return p.polynomial_pieces();
+        }
+        Some(crate::bspline::PolynomialPieces::uniform_continuity(
+            3,
+            self.system.nodes().to_vec(),
+            2,
+        ))
+    }
+
     fn functionals(&self) -> &[Functional] {
         &self.functionals
     }

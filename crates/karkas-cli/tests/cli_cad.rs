@@ -1,0 +1,292 @@
+//! The CLI contract of the exact CAD outputs: `.step`/`.stp` and `.iges`/`.igs` for every
+//! command whose result is a piecewise polynomial (README, "Command line"); a clear error for
+//! the discrete periodic splines and for Coons networks without an exact form.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn karkas(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_karkas"))
+        .args(args)
+        .output()
+        .expect("the karkas binary runs")
+}
+
+fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
+    let p = dir.join(name);
+    std::fs::write(&p, text).unwrap();
+    p
+}
+
+fn s(p: &Path) -> &str {
+    p.to_str().unwrap()
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+/// The STEP entity instances of a given type, as their argument text.
+fn step_items(text: &str, entity: &str) -> Vec<String> {
+    let prefix = format!("={entity}(");
+    text.lines()
+        .filter_map(|l| l.find(&prefix).map(|k| l[k + prefix.len()..].to_owned()))
+        .collect()
+}
+
+/// The parameters of the first entity in an IGES file's parameter section.
+fn iges_first_entity(text: &str) -> Vec<String> {
+    let data: String = text
+        .lines()
+        .filter(|l| l.len() == 80 && &l[72..73] == "P" && l[65..72].trim() == "1")
+        .map(|l| l[..64].trim_end())
+        .collect();
+    data.trim_end_matches(';')
+        .split(',')
+        .map(str::to_owned)
+        .collect()
+}
+
+fn grid_csv(rows: usize, cols: usize) -> String {
+    let mut text = String::from("i,j,x,y,z\n");
+    for i in 0..rows {
+        for j in 0..cols {
+            let (x, y) = (i as f64, j as f64 * 0.5);
+            text.push_str(&format!(
+                "{i},{j},{x},{y},{}\n",
+                (x * 0.7).sin() * (1.0 + y * y)
+            ));
+        }
+    }
+    text
+}
+
+const POINTS: &str = "x,y\n0,0\n1,2\n2,1\n3,3\n4,0\n";
+
+#[test]
+fn ll_curve_step_and_iges_hold_the_exact_b_spline() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = write(dir.path(), "pts.csv", POINTS);
+    for name in ["c.step", "c.STP"] {
+        let out = dir.path().join(name);
+        let o = karkas(&["curve", "ll", "--order", "3", s(&input), "-o", s(&out)]);
+        assert!(o.status.success(), "{}", stderr(&o));
+        assert!(
+            stderr(&o).contains("B-spline curve of degree 6"),
+            "{}",
+            stderr(&o)
+        );
+        let text = std::fs::read_to_string(&out).unwrap();
+        assert!(text.starts_with("ISO-10303-21;"));
+        let curves = step_items(&text, "B_SPLINE_CURVE_WITH_KNOTS");
+        assert_eq!(curves.len(), 1);
+        // Degree 2L = 6; knot multiplicities 7, then L = 3 at the 4 inner borders, then 7.
+        assert!(curves[0].contains(",6,(#"), "{}", curves[0]);
+        assert!(curves[0].contains(",(7,3,3,3,3,7),("), "{}", curves[0]);
+        // A planar curve lies in z = 0; an open LL curve starts at its first point.
+        let points = step_items(&text, "CARTESIAN_POINT");
+        assert!(points
+            .iter()
+            .all(|p| p.ends_with(",0.0000000000000000E0));")));
+    }
+    for name in ["c.iges", "c.igs"] {
+        let out = dir.path().join(name);
+        let o = karkas(&["curve", "ll", "--order", "2", s(&input), "-o", s(&out)]);
+        assert!(o.status.success(), "{}", stderr(&o));
+        let text = std::fs::read_to_string(&out).unwrap();
+        assert!(text.lines().all(|l| l.len() == 80));
+        let f = iges_first_entity(&text);
+        // Entity 126: L (K + 1) + 1 = 13 control points (index 12), degree 2L = 4, planar.
+        assert_eq!(f[0], "126");
+        assert_eq!(f[1], "12");
+        assert_eq!(f[2], "4");
+        assert_eq!(f[3], "1");
+        let n: usize = f[1].parse::<usize>().unwrap() + 1;
+        // Knots: n + p + 1 of them; the first control point is the first input point.
+        let first_point = 7 + (n + 5) + n;
+        let x: f64 = f[first_point].parse().unwrap();
+        let y: f64 = f[first_point + 1].parse().unwrap();
+        assert_eq!((x, y), (0.0, 0.0));
+    }
+}
+
+#[test]
+fn surfaces_write_step_faces_and_iges_128() {
+    let dir = tempfile::tempdir().unwrap();
+    let grid = write(dir.path(), "g.csv", &grid_csv(5, 4));
+    let out = dir.path().join("s.iges");
+    let o = karkas(&["surface", "ll", "--order", "2", s(&grid), "-o", s(&out)]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    // L (K + 1) + 1 control points per direction: 13 x 11 for L = 2, K = 5 x 4; degree 4.
+    let f = iges_first_entity(&std::fs::read_to_string(&out).unwrap());
+    assert_eq!(
+        &f[..10],
+        ["128", "12", "10", "4", "4", "0", "0", "1", "0", "0"]
+    );
+
+    let out = dir.path().join("b.step");
+    let o = karkas(&[
+        "surface",
+        "bicubic",
+        "--param",
+        "uniform",
+        s(&grid),
+        "-o",
+        s(&out),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = std::fs::read_to_string(&out).unwrap();
+    let surfaces = step_items(&text, "B_SPLINE_SURFACE_WITH_KNOTS");
+    assert_eq!(surfaces.len(), 1);
+    // Degrees 3 x 3; uniform parameters 0..4 and 0..3 with simple inner knots.
+    assert!(surfaces[0].starts_with("'b_0',3,3,((#"), "{}", surfaces[0]);
+    assert!(
+        surfaces[0].contains(",(4,1,1,1,4),(4,1,1,4),"),
+        "{}",
+        surfaces[0]
+    );
+    assert_eq!(step_items(&text, "ADVANCED_FACE").len(), 1);
+    assert_eq!(step_items(&text, "OPEN_SHELL").len(), 1);
+}
+
+/// A network whose curves cross at equal point indices (exact) or not (warped).
+fn network(dir: &Path, warped: bool) -> (PathBuf, PathBuf) {
+    let surface = |u: f64, v: f64| [2.0 * u, 2.0 * v, u * v + 0.1 * u * u];
+    let mut u_text = String::from("curve,x,y,z\n");
+    for (c, v) in [0.0, 0.5, 1.0].iter().enumerate() {
+        for k in 0..=6 {
+            let p = surface(k as f64 / 6.0, *v);
+            u_text.push_str(&format!("{c},{},{},{}\n", p[0], p[1], p[2]));
+        }
+    }
+    let mut v_text = String::from("curve,x,y,z\n");
+    for (c, u) in [0.0, 0.5, 1.0].iter().enumerate() {
+        let params: Vec<f64> = if warped && c == 1 {
+            vec![0.0, 0.1, 0.2, 0.5, 0.9, 1.0]
+        } else {
+            vec![0.0, 0.25, 0.5, 0.75, 1.0]
+        };
+        for v in params {
+            let p = surface(*u, v);
+            v_text.push_str(&format!("{c},{},{},{}\n", p[0], p[1], p[2]));
+        }
+    }
+    (write(dir, "u.csv", &u_text), write(dir, "v.csv", &v_text))
+}
+
+#[test]
+fn coons_surfaces_are_exported_exactly_or_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let (u, v) = network(dir.path(), false);
+    for kind in ["composite", "gordon-spline", "bilinear"] {
+        let out = dir.path().join(format!("{kind}.stp"));
+        let o = karkas(&[
+            "surface",
+            "coons",
+            "--kind",
+            kind,
+            "--u-curves",
+            s(&u),
+            "--v-curves",
+            s(&v),
+            "-o",
+            s(&out),
+        ]);
+        if kind == "bilinear" {
+            // Three curves per family: bilinear needs two; refused before any export.
+            assert_eq!(o.status.code(), Some(2));
+            continue;
+        }
+        assert!(o.status.success(), "{kind}: {}", stderr(&o));
+        let text = std::fs::read_to_string(&out).unwrap();
+        assert_eq!(step_items(&text, "B_SPLINE_SURFACE_WITH_KNOTS").len(), 1);
+    }
+    let warped = tempfile::tempdir().unwrap();
+    let (u, v) = network(warped.path(), true);
+    let out = warped.path().join("w.step");
+    let o = karkas(&[
+        "surface",
+        "coons",
+        "--kind",
+        "composite",
+        "--u-curves",
+        s(&u),
+        "--v-curves",
+        s(&v),
+        "-o",
+        s(&out),
+    ]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    let e = stderr(&o);
+    assert!(
+        e.contains("has no exact B-spline form") && e.contains("warp"),
+        "{e}"
+    );
+    assert_eq!(e.lines().count(), 1);
+    assert!(!out.exists());
+}
+
+#[test]
+fn fitted_curves_export_defect_two_cubics() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut text = String::from("x,y\n");
+    for k in 0..=20 {
+        let t = k as f64 / 20.0;
+        text.push_str(&format!("{},{}\n", t * 4.0, (3.0 * t).sin()));
+    }
+    let input = write(dir.path(), "p.csv", &text);
+    let out = dir.path().join("f.step");
+    let o = karkas(&[
+        "curve",
+        "fit",
+        "--knots",
+        "0,0.5,1",
+        s(&input),
+        "-o",
+        s(&out),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let curves = step_items(
+        &std::fs::read_to_string(&out).unwrap(),
+        "B_SPLINE_CURVE_WITH_KNOTS",
+    );
+    assert!(
+        curves[0].contains(",3,(#") && curves[0].contains(",(4,2,4),("),
+        "{}",
+        curves[0]
+    );
+}
+
+#[test]
+fn discrete_splines_and_bad_input_give_one_line_errors_and_no_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = write(dir.path(), "pts.csv", POINTS);
+    for name in ["d.step", "d.igs"] {
+        let out = dir.path().join(name);
+        let o = karkas(&[
+            "curve",
+            "dps",
+            "--order",
+            "2",
+            "--n",
+            "4",
+            s(&input),
+            "-o",
+            s(&out),
+        ]);
+        assert_eq!(o.status.code(), Some(2));
+        let e = stderr(&o);
+        assert!(
+            e.contains("discrete periodic splines are point sets"),
+            "{e}"
+        );
+        assert_eq!(e.lines().count(), 1);
+        assert!(!out.exists());
+    }
+    let bad = write(dir.path(), "bad.csv", "x,y\n0,0\n1,nan\n2,1\n");
+    let out = dir.path().join("bad.step");
+    let o = karkas(&["curve", "ll", s(&bad), "-o", s(&out)]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("bad.csv"), "{}", stderr(&o));
+    assert!(!out.exists());
+}

@@ -1,0 +1,361 @@
+//! IGES 5.3 files of exact B-spline curves (entity 126) and surfaces (entity 128).
+//!
+//! Fixed 80-column records: Start (`S`), Global (`G`), Directory Entry (`D`, two lines per
+//! entity), Parameter Data (`P`, data in columns 1–64, the entity's directory pointer in
+//! 66–72) and Terminate (`T`), each line numbered in columns 74–80. Entities are
+//! non-rational (all weights 1, `PROP3 = 1`) and not periodic; a closed karkas curve or
+//! surface direction is written clamped over one period with its closed flag set. Units:
+//! millimetres (flag 2). Reals carry 17 significant digits. Surfaces are untrimmed (the
+//! whole parameter rectangle).
+//!
+//! Hand-written: no maintained Rust crate writes IGES without a whole CAD kernel.
+
+use std::fmt::Write as _;
+use std::io::{self, Write};
+use std::path::Path;
+
+use karkas::bspline::{BSplineCurve, BSplineSurface};
+use karkas::{Curve, Surface};
+
+use crate::cad::{real, CadEntity};
+use crate::error::IoError;
+use crate::write::write_atomic;
+
+/// Columns of data in a parameter line.
+const P_WIDTH: usize = 64;
+/// Columns of data in a global or start line.
+const G_WIDTH: usize = 72;
+
+/// The parameters of one entity (type number first) and its form number.
+fn parameters(entity: &CadEntity<'_>) -> (u32, Vec<String>) {
+    match entity {
+        CadEntity::Curve(c) => (126, curve_parameters(c)),
+        CadEntity::Surface(s) => (128, surface_parameters(s)),
+    }
+}
+
+fn curve_parameters(c: &BSplineCurve<3>) -> Vec<String> {
+    let n = c.control_points().len();
+    let planar = c.control_points().iter().all(|p| p[2] == 0.0);
+    let d = c.domain();
+    let mut p = vec![
+        "126".to_owned(),
+        (n - 1).to_string(),
+        c.degree().to_string(),
+        u8::from(planar).to_string(),
+        u8::from(c.is_closed()).to_string(),
+        "1".to_owned(),
+        "0".to_owned(),
+    ];
+    p.extend(c.knots().iter().map(|&k| real(k)));
+    p.extend((0..n).map(|_| real(1.0)));
+    for q in c.control_points() {
+        p.extend([real(q[0]), real(q[1]), real(q[2])]);
+    }
+    p.extend([real(d.start), real(d.end)]);
+    let normal = if planar { [0.0, 0.0, 1.0] } else { [0.0; 3] };
+    p.extend(normal.iter().map(|&x| real(x)));
+    p
+}
+
+fn surface_parameters(s: &BSplineSurface<3>) -> Vec<String> {
+    let grid = s.control_points();
+    let (rows, cols) = (grid.rows(), grid.cols());
+    let (du, dv) = (s.domain_u(), s.domain_v());
+    let mut p = vec![
+        "128".to_owned(),
+        (rows - 1).to_string(),
+        (cols - 1).to_string(),
+        s.degree_u().to_string(),
+        s.degree_v().to_string(),
+        u8::from(s.is_closed_u()).to_string(),
+        u8::from(s.is_closed_v()).to_string(),
+        "1".to_owned(),
+        "0".to_owned(),
+        "0".to_owned(),
+    ];
+    p.extend(s.knots_u().iter().map(|&k| real(k)));
+    p.extend(s.knots_v().iter().map(|&k| real(k)));
+    p.extend((0..rows * cols).map(|_| real(1.0)));
+    // The first index (u) runs fastest.
+    for j in 0..cols {
+        for i in 0..rows {
+            let q = grid.get(i, j);
+            p.extend([real(q[0]), real(q[1]), real(q[2])]);
+        }
+    }
+    p.extend([real(du.start), real(du.end), real(dv.start), real(dv.end)]);
+    p
+}
+
+/// A Hollerith string `nHtext`.
+fn hollerith(text: &str) -> String {
+    let text: String = text
+        .chars()
+        .filter(|c| c.is_ascii() && !c.is_ascii_control())
+        .collect();
+    format!("{}H{text}", text.len())
+}
+
+/// Packs delimited `fields` (each followed by `,` and the last by `;`) into lines of at most
+/// `width` columns, never splitting a field (a Hollerith string longer than a line is
+/// split, as the standard allows for strings).
+fn pack(fields: &[String], width: usize) -> Vec<String> {
+    let mut lines = Vec::new();
+    let mut line = String::new();
+    for (k, field) in fields.iter().enumerate() {
+        let delimiter = if k + 1 == fields.len() { ';' } else { ',' };
+        let token = format!("{field}{delimiter}");
+        if line.len() + token.len() > width && !line.is_empty() {
+            lines.push(std::mem::take(&mut line));
+        }
+        let mut rest = token.as_str();
+        while rest.len() > width {
+            let (head, tail) = rest.split_at(width - line.len());
+            line.push_str(head);
+            lines.push(std::mem::take(&mut line));
+            rest = tail;
+        }
+        line.push_str(rest);
+    }
+    if !line.is_empty() {
+        lines.push(line);
+    }
+    lines
+}
+
+/// One 80-column line: `data` padded to 72 columns, the section letter, the sequence number.
+fn record(text: &mut String, data: &str, section: char, number: usize) {
+    let _ = writeln!(text, "{data:<72}{section}{number:>7}");
+}
+
+/// The text of an IGES file holding `entities`, named `name`.
+pub fn iges_text(entities: &[CadEntity<'_>], name: &str) -> String {
+    let mut text = String::new();
+    let start = [format!("karkas exact B-spline export: {name}")];
+    for (k, line) in start.iter().enumerate() {
+        let line: String = line.chars().filter(char::is_ascii).take(G_WIDTH).collect();
+        record(&mut text, &line, 'S', k + 1);
+    }
+    let stamp = "20000101.000000"; // files are reproducible: no clock in the output
+    let global = [
+        "1H,".to_owned(),
+        "1H;".to_owned(),
+        hollerith("karkas"),
+        hollerith(&format!("{name}.igs")),
+        hollerith("karkas"),
+        hollerith(env!("CARGO_PKG_VERSION")),
+        "32".to_owned(),
+        "38".to_owned(),
+        "6".to_owned(),
+        "308".to_owned(),
+        "15".to_owned(),
+        hollerith("karkas"),
+        real(1.0),
+        "2".to_owned(),
+        hollerith("MM"),
+        "1".to_owned(),
+        real(1.0),
+        hollerith(stamp),
+        real(1e-9),
+        real(0.0),
+        hollerith(""),
+        hollerith(""),
+        "11".to_owned(),
+        "0".to_owned(),
+        hollerith(stamp),
+    ];
+    let global_lines = pack(&global, G_WIDTH);
+    for (k, line) in global_lines.iter().enumerate() {
+        record(&mut text, line, 'G', k + 1);
+    }
+
+    // Parameter lines of every entity, then the directory pointing at them.
+    let mut parameter_lines: Vec<(String, usize)> = Vec::new();
+    let mut directory: Vec<[String; 2]> = Vec::new();
+    for (k, entity) in entities.iter().enumerate() {
+        let de = 2 * k + 1;
+        let (kind, fields) = parameters(entity);
+        let lines = pack(&fields, P_WIDTH);
+        let first = parameter_lines.len() + 1;
+        let count = lines.len();
+        parameter_lines.extend(lines.into_iter().map(|l| (l, de)));
+        let label = if kind == 126 { "BSCURVE" } else { "BSSURF" };
+        directory.push([
+            format!(
+                "{kind:>8}{first:>8}{:>8}{:>8}{:>8}{:>8}{:>8}{:>8}{:>8}",
+                0, 0, 0, 0, 0, 0, "00000000"
+            ),
+            format!(
+                "{kind:>8}{:>8}{:>8}{count:>8}{:>8}{:>8}{:>8}{label:>8}{:>8}",
+                0,
+                0,
+                0,
+                "",
+                "",
+                k + 1
+            ),
+        ]);
+    }
+    for (k, [a, b]) in directory.iter().enumerate() {
+        record(&mut text, a, 'D', 2 * k + 1);
+        record(&mut text, b, 'D', 2 * k + 2);
+    }
+    for (k, (line, de)) in parameter_lines.iter().enumerate() {
+        let data = format!("{line:<64} {de:>7}");
+        record(&mut text, &data, 'P', k + 1);
+    }
+    let terminate = format!(
+        "S{:>7}G{:>7}D{:>7}P{:>7}",
+        start.len(),
+        global_lines.len(),
+        2 * directory.len(),
+        parameter_lines.len()
+    );
+    record(&mut text, &terminate, 'T', 1);
+    text
+}
+
+/// Writes `entities` to the IGES file `path` (atomically; see
+/// [`write_atomic`](crate::write::write_atomic)).
+pub fn write_iges(path: &Path, entities: &[CadEntity<'_>]) -> Result<(), IoError> {
+    let name = path
+        .file_stem()
+        .and_then(|s| s.to_str())
+        .unwrap_or("karkas");
+    let text = iges_text(entities, name);
+    write_atomic(path, |out: &mut dyn Write| -> io::Result<()> {
+        out.write_all(text.as_bytes())
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use karkas::{Grid, Point};
+
+    fn curve() -> BSplineCurve<3> {
+        BSplineCurve::new(
+            3,
+            vec![0.0, 0.0, 0.0, 0.0, 0.25, 0.25, 1.0, 1.0, 1.0, 1.0],
+            (0..6)
+                .map(|i| Point([i as f64, (i * i) as f64 / 7.0, -(i as f64) / 3.0]))
+                .collect(),
+        )
+        .unwrap()
+    }
+
+    fn surface() -> BSplineSurface<3> {
+        let grid = Grid::from_fn(4, 3, |i, j| {
+            Point([i as f64 * 1.5, j as f64, (i + j) as f64 / 9.0])
+        });
+        BSplineSurface::new(
+            (3, vec![0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0]),
+            (2, vec![-1.0, -1.0, -1.0, 1.0, 1.0, 1.0]),
+            grid,
+        )
+        .unwrap()
+    }
+
+    /// The lines of each section, checking the 80-column layout and the numbering.
+    fn sections(text: &str) -> std::collections::BTreeMap<char, Vec<String>> {
+        let mut out: std::collections::BTreeMap<char, Vec<String>> = Default::default();
+        for line in text.lines() {
+            assert_eq!(line.len(), 80, "{line:?}");
+            let section = line.as_bytes()[72] as char;
+            let number: usize = line[73..].trim().parse().unwrap();
+            let list = out.entry(section).or_default();
+            assert_eq!(number, list.len() + 1, "{line}");
+            list.push(line[..72].to_owned());
+        }
+        out
+    }
+
+    /// The parameters of the entity whose data lines are `lines`.
+    fn fields(lines: &[String]) -> Vec<String> {
+        let data: String = lines.iter().map(|l| l[..64].trim_end()).collect();
+        data.trim_end_matches(';')
+            .split(',')
+            .map(str::to_owned)
+            .collect()
+    }
+
+    #[test]
+    fn curve_file_has_all_sections_and_entity_126() {
+        let c = curve();
+        let text = iges_text(&[CadEntity::Curve(&c)], "c");
+        let s = sections(&text);
+        assert_eq!(s.keys().collect::<String>(), "DGPST");
+        let t = &s[&'T'][0];
+        assert_eq!(
+            t.trim_end(),
+            format!("S      1G{:>7}D      2P{:>7}", s[&'G'].len(), s[&'P'].len())
+        );
+        let d = &s[&'D'];
+        assert_eq!(&d[0][..8], "     126");
+        assert_eq!(d[0][8..16].trim(), "1"); // first parameter line
+        assert_eq!(d[1][24..32].trim(), s[&'P'].len().to_string());
+        for p in &s[&'P'] {
+            assert_eq!(p[65..72].trim(), "1"); // back-pointer to the directory entry
+        }
+        let f = fields(&s[&'P']);
+        assert_eq!(&f[..7], ["126", "5", "3", "0", "0", "1", "0"]);
+        // 10 knots, 6 weights, 18 coordinates, 2 parameters, 3 normal components.
+        assert_eq!(f.len(), 7 + 10 + 6 + 18 + 2 + 3);
+        let knots: Vec<f64> = f[7..17].iter().map(|x| x.parse().unwrap()).collect();
+        assert_eq!(knots, c.knots());
+        let coords: Vec<f64> = f[23..41].iter().map(|x| x.parse().unwrap()).collect();
+        for (k, p) in c.control_points().iter().enumerate() {
+            assert_eq!(&coords[3 * k..3 * k + 3], &p.0[..]);
+        }
+        let g: String = s[&'G'].iter().map(|l| l.trim_end()).collect();
+        assert!(g.starts_with("1H,,1H;,6Hkarkas,5Hc.igs,"), "{g}");
+    }
+
+    #[test]
+    fn surface_entity_128_lists_u_fastest() {
+        let srf = surface();
+        let text = iges_text(&[CadEntity::Curve(&curve()), CadEntity::Surface(&srf)], "s");
+        let s = sections(&text);
+        let d = &s[&'D'];
+        assert_eq!(d.len(), 4);
+        assert_eq!(&d[2][..8], "     128");
+        let first: usize = d[2][8..16].trim().parse().unwrap();
+        let lines: Vec<String> = s[&'P']
+            .iter()
+            .filter(|l| l[65..72].trim() == "3")
+            .cloned()
+            .collect();
+        assert_eq!(first, s[&'P'].len() - lines.len() + 1);
+        let f = fields(&lines);
+        assert_eq!(
+            &f[..10],
+            ["128", "3", "2", "3", "2", "0", "0", "1", "0", "0"]
+        );
+        let (nku, nkv, nw) = (8, 6, 12);
+        let start = 10 + nku + nkv + nw;
+        let coords: Vec<f64> = f[start..start + 36]
+            .iter()
+            .map(|x| x.parse().unwrap())
+            .collect();
+        // Control point (i, j) at index i + 4 j.
+        for j in 0..3 {
+            for i in 0..4 {
+                let k = 3 * (i + 4 * j);
+                assert_eq!(&coords[k..k + 3], &srf.control_points().get(i, j).0[..]);
+            }
+        }
+        let tail: Vec<f64> = f[start + 36..].iter().map(|x| x.parse().unwrap()).collect();
+        assert_eq!(tail, vec![0.0, 1.0, -1.0, 1.0]);
+    }
+
+    #[test]
+    fn long_fields_never_cross_a_line() {
+        let fields: Vec<String> = (0..50).map(|k| real(k as f64 / 7.0)).collect();
+        let lines = pack(&fields, P_WIDTH);
+        let rejoined: String = lines.concat();
+        assert_eq!(rejoined.split(',').count(), 50);
+        assert!(lines.iter().all(|l| l.len() <= P_WIDTH));
+        assert!(lines.iter().all(|l| l.ends_with(',') || l.ends_with(';')));
+    }
+}

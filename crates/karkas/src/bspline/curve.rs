@@ -1,0 +1,266 @@
+//! B-spline curves: degree, clamped knot vector, control points, de Boor evaluation.
+
+use crate::core::{Curve, Interval};
+use crate::{Error, Point, Result};
+
+/// The largest degree of a [`BSplineCurve`] or [`BSplineSurface`](super::BSplineSurface):
+/// `2 L` for the largest LL order `L = 64`.
+pub const MAX_DEGREE: usize = 128;
+
+/// A non-rational B-spline curve of degree `p` with a clamped knot vector.
+///
+/// The knot vector has `n + p + 1` entries for `n` control points; its first `p + 1` and
+/// last `p + 1` entries are equal (clamped), so the curve starts at the first control point
+/// and ends at the last. The domain is `[knots[p], knots[n]]`. Evaluation outside the domain
+/// clamps the parameter. A closed karkas curve is exported over one period as such a clamped
+/// open curve whose ends coincide ([`is_closed`](Curve::is_closed) reports it).
+#[derive(Clone, Debug, PartialEq)]
+pub struct BSplineCurve<const D: usize> {
+    degree: usize,
+    knots: Vec<f64>,
+    control: Vec<Point<D>>,
+    closed: bool,
+}
+
+/// Checks a clamped knot vector of degree `degree` for `count` control points.
+pub(crate) fn check_knots(degree: usize, knots: &[f64], count: usize) -> Result<()> {
+    let invalid = |index: usize, reason: &'static str| Error::InvalidKnot {
+        index,
+        value: knots.get(index).copied().unwrap_or(f64::NAN),
+        reason,
+    };
+    if degree == 0 || degree > MAX_DEGREE {
+        return Err(Error::InvalidOrder {
+            order: degree,
+            reason: "a B-spline degree must be in 1..=128",
+        });
+    }
+    if count < degree + 1 {
+        return Err(Error::TooFewPoints {
+            what: "a B-spline (control points)",
+            needed: degree + 1,
+            got: count,
+        });
+    }
+    if knots.len() != count + degree + 1 {
+        return Err(Error::InvalidInput(format!(
+            "a B-spline of degree {degree} with {count} control points needs {} knots, got {}",
+            count + degree + 1,
+            knots.len()
+        )));
+    }
+    if let Some(k) = knots.iter().position(|k| !k.is_finite()) {
+        return Err(invalid(k, "knots must be finite"));
+    }
+    if let Some(k) = knots.windows(2).position(|w| w[1] < w[0]) {
+        return Err(invalid(k + 1, "knots must not decrease"));
+    }
+    let (first, last) = (knots[0], knots[knots.len() - 1]);
+    if knots[..=degree].iter().any(|&k| k != first) {
+        return Err(invalid(
+            degree,
+            "the first degree + 1 knots must be equal (clamped)",
+        ));
+    }
+    if knots[count..].iter().any(|&k| k != last) {
+        return Err(invalid(
+            count,
+            "the last degree + 1 knots must be equal (clamped)",
+        ));
+    }
+    if last <= first {
+        return Err(invalid(
+            knots.len() - 1,
+            "the knot vector spans an empty domain",
+        ));
+    }
+    if let Some(k) = (degree + 1..count).find(|&k| knots[k + degree] == knots[k]) {
+        return Err(invalid(k, "an inner knot repeats more than degree times"));
+    }
+    Ok(())
+}
+
+/// The knot span `s` (`knots[s] <= t < knots[s + 1]`, `degree <= s < count`) holding `t`,
+/// which must lie in the domain; the domain end belongs to the last nonempty span.
+pub(crate) fn find_span(degree: usize, knots: &[f64], count: usize, t: f64) -> usize {
+    if t >= knots[count] {
+        let mut s = count - 1;
+        while s > degree && knots[s] == knots[s + 1] {
+            s -= 1;
+        }
+        return s;
+    }
+    // First index in degree+1..=count with knots[index] > t, minus one.
+    let upper = knots[degree + 1..=count].partition_point(|&k| k <= t) + degree + 1;
+    (upper - 1).clamp(degree, count - 1)
+}
+
+/// The de Boor algorithm on the `degree + 1` control points of span `span`, written into
+/// `work` (which must hold `degree + 1` points): the point at `t`.
+pub(crate) fn de_boor<const D: usize>(
+    degree: usize,
+    knots: &[f64],
+    control: impl Fn(usize) -> Point<D>,
+    span: usize,
+    t: f64,
+    work: &mut [Point<D>],
+) -> Point<D> {
+    for (j, w) in work.iter_mut().enumerate().take(degree + 1) {
+        *w = control(span - degree + j);
+    }
+    for r in 1..=degree {
+        for j in (r..=degree).rev() {
+            let i = span - degree + j;
+            let denominator = knots[i + degree + 1 - r] - knots[i];
+            let alpha = if denominator > 0.0 {
+                (t - knots[i]) / denominator
+            } else {
+                0.0
+            };
+            work[j] = work[j - 1] * (1.0 - alpha) + work[j] * alpha;
+        }
+    }
+    work[degree]
+}
+
+impl<const D: usize> BSplineCurve<D> {
+    /// The B-spline of degree `degree` over the clamped knot vector `knots` with control
+    /// points `control` (`knots.len() == control.len() + degree + 1`).
+    ///
+    /// Errors: degree 0, fewer than `degree + 1` control points, a knot count that does not
+    /// match, knots that are not finite, decrease, are not clamped, span an empty domain or
+    /// repeat more than `degree` times inside; a non-finite control point.
+    pub fn new(degree: usize, knots: Vec<f64>, control: Vec<Point<D>>) -> Result<Self> {
+        check_knots(degree, &knots, control.len())?;
+        if let Some(index) = control.iter().position(|p| !p.is_finite()) {
+            return Err(Error::NonFinitePoint { index });
+        }
+        Ok(BSplineCurve {
+            degree,
+            knots,
+            control,
+            closed: false,
+        })
+    }
+
+    /// Marks the curve as one period of a closed curve (its ends coincide).
+    pub(crate) fn with_closed(mut self, closed: bool) -> Self {
+        self.closed = closed;
+        self
+    }
+
+    /// The degree `p`.
+    pub fn degree(&self) -> usize {
+        self.degree
+    }
+
+    /// The clamped knot vector (`n + p + 1` values).
+    pub fn knots(&self) -> &[f64] {
+        &self.knots
+    }
+
+    /// The control points.
+    pub fn control_points(&self) -> &[Point<D>] {
+        &self.control
+    }
+
+    /// The distinct knots with their multiplicities, ascending (the ends have `p + 1`).
+    pub fn distinct_knots(&self) -> Vec<(f64, usize)> {
+        distinct_knots(&self.knots)
+    }
+
+    /// A curve from parts known to be valid (checked by the callers' construction).
+    pub(crate) fn from_parts(degree: usize, knots: Vec<f64>, control: Vec<Point<D>>) -> Self {
+        BSplineCurve {
+            degree,
+            knots,
+            control,
+            closed: false,
+        }
+    }
+}
+
+/// The derivative's degree, knots and control points (degree `p - 1`; degree 0 is
+/// piecewise constant, which [`de_boor`] evaluates as is).
+fn derivative_data<const D: usize>(
+    p: usize,
+    knots: &[f64],
+    control: &[Point<D>],
+) -> (usize, Vec<f64>, Vec<Point<D>>) {
+    let derived = (0..control.len() - 1)
+        .map(|i| {
+            let span = knots[i + p + 1] - knots[i + 1];
+            if span > 0.0 {
+                (control[i + 1] - control[i]) * (p as f64 / span)
+            } else {
+                Point::ZERO
+            }
+        })
+        .collect();
+    (p - 1, knots[1..knots.len() - 1].to_vec(), derived)
+}
+
+/// The distinct values of a sorted knot vector with their multiplicities.
+pub(crate) fn distinct_knots(knots: &[f64]) -> Vec<(f64, usize)> {
+    let mut out: Vec<(f64, usize)> = Vec::new();
+    for &k in knots {
+        match out.last_mut() {
+            Some((v, m)) if *v == k => *m += 1,
+            _ => out.push((k, 1)),
+        }
+    }
+    out
+}
+
+/// Evaluates the `k`-th derivative of the B-spline `(degree, knots, control)` at `t`.
+fn deriv_of<const D: usize>(
+    degree: usize,
+    knots: &[f64],
+    control: &[Point<D>],
+    t: f64,
+    k: usize,
+) -> Point<D> {
+    let n = control.len();
+    let t = t.clamp(knots[degree], knots[n]);
+    if k == 0 {
+        let span = find_span(degree, knots, n, t);
+        let mut work = [Point::ZERO; MAX_DEGREE + 1];
+        return de_boor(degree, knots, |i| control[i], span, t, &mut work);
+    }
+    if k > degree {
+        return Point::ZERO;
+    }
+    let (p, dk, dc) = derivative_data(degree, knots, control);
+    deriv_of(p, &dk, &dc, t, k - 1)
+}
+
+impl<const D: usize> Curve<D> for BSplineCurve<D> {
+    fn domain(&self) -> Interval {
+        Interval::new(self.knots[self.degree], self.knots[self.control.len()])
+    }
+
+    fn is_closed(&self) -> bool {
+        self.closed
+    }
+
+    fn eval(&self, t: f64) -> Point<D> {
+        deriv_of(self.degree, &self.knots, &self.control, t, 0)
+    }
+
+    fn deriv(&self, t: f64, k: usize) -> Point<D> {
+        deriv_of(self.degree, &self.knots, &self.control, t, k)
+    }
+
+    fn polynomial_pieces(&self) -> Option<super::PolynomialPieces> {
+        let distinct = self.distinct_knots();
+        let n = distinct.len();
+        Some(super::PolynomialPieces {
+            degree: self.degree,
+            breaks: distinct.iter().map(|d| d.0).collect(),
+            continuity: distinct[1..n - 1]
+                .iter()
+                .map(|d| self.degree.saturating_sub(d.1))
+                .collect(),
+        })
+    }
+}

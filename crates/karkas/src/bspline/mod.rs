@@ -1,0 +1,57 @@
+//! Exact B-spline form of every piecewise polynomial curve and surface of karkas
+//! (METHODS.md §6): how they leave the program for CAD (STEP and IGES B-spline entities)
+//! without approximation.
+//!
+//! [`BSplineCurve`] and [`BSplineSurface`] are non-rational B-splines with clamped knot
+//! vectors, evaluated by de Boor's algorithm (independently of the types they come from).
+//! [`ToBSplineCurve`] / [`ToBSplineSurface`] convert:
+//!
+//! | type | degree | inner knot multiplicity |
+//! |---|---|---|
+//! | [`LlCurve`](crate::ll::LlCurve), [`LlSurface`](crate::ll::LlSurface) of order `L` | `2L` | `L` (`C^L` joins) |
+//! | [`HermiteSpline`](crate::fit::HermiteSpline) (defect 2) | 3 | 2 (`C^1`) |
+//! | [`CubicSpline`](crate::param::CubicSpline) (not-a-knot, natural, clamped, periodic) | 3 | 1 (`C^2`) |
+//! | [`BicubicSurface`](crate::param::BicubicSurface) | 3 x 3 | 1 x 1 |
+//! | [`CoonsSurface`](crate::coons::CoonsSurface) over piecewise polynomial data | largest of blends and curves | `degree - continuity` per merged breakpoint |
+//!
+//! Method: each type gives its Bezier pieces in closed form (LL: the Bernstein coefficients
+//! of the kernel `h`, all positive; Hermite and bicubic: the Hermite-to-Bezier rule; Coons:
+//! interpolation in each cell, see [`coons`]); the pieces are then joined into one B-spline
+//! by blossoming (`bezier.rs`), which is exact for pieces that join with the continuity the
+//! knot vector encodes. Cost: `O(n p^2)` for `n` pieces of degree `p` (`O(n p^2 q^2)`-ish for
+//! surfaces, linear in the number of patches).
+//!
+//! Closed curves and closed surface directions are exported over one period as clamped
+//! open B-splines whose ends coincide (not as periodic B-splines).
+//!
+//! Guarantee: the B-spline evaluates to the same points as the original to rounding (tests
+//! check `1e-12` relative to the data's size, derivatives included).
+//!
+//! Hand-written: the B-spline crates available evaluate and fit, but none converts these
+//! piecewise polynomial types with prescribed knot multiplicities; de Boor's algorithm and
+//! blossoming are a few dozen lines.
+
+mod bezier;
+mod convert;
+pub mod coons;
+mod curve;
+mod pieces;
+mod surface;
+
+pub use curve::{BSplineCurve, MAX_DEGREE};
+pub use pieces::PolynomialPieces;
+pub use surface::BSplineSurface;
+
+use crate::Result;
+
+/// Conversion of a piecewise polynomial curve to its exact B-spline form.
+pub trait ToBSplineCurve<const D: usize> {
+    /// The B-spline equal to this curve over its domain.
+    fn to_bspline(&self) -> Result<BSplineCurve<D>>;
+}
+
+/// Conversion of a piecewise polynomial surface to its exact B-spline form.
+pub trait ToBSplineSurface<const D: usize> {
+    /// The B-spline surface equal to this surface over its domain.
+    fn to_bspline(&self) -> Result<BSplineSurface<D>>;
+}
