@@ -6,7 +6,10 @@
 //! The group names are the job names; the benchmark parameter is the size (points, or
 //! evaluated values).
 
-use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
+use criterion::measurement::WallTime;
+use criterion::{
+    criterion_group, criterion_main, BenchmarkGroup, BenchmarkId, Criterion, Throughput,
+};
 use karkas::dps::DiscreteSpline;
 use karkas::fit::{fit_curve_adaptive, FitOptions};
 use karkas::param::{
@@ -73,7 +76,7 @@ fn sheet(n: usize) -> Grid<Point3> {
     })
 }
 
-fn short(c: &mut Criterion, name: &str) -> criterion::BenchmarkGroup<'_, criterion::measurement::WallTime> {
+fn short<'a>(c: &'a mut Criterion, name: &str) -> BenchmarkGroup<'a, WallTime> {
     let mut group = c.benchmark_group(name);
     group.sample_size(10);
     group.warm_up_time(Duration::from_millis(500));

@@ -217,7 +217,11 @@ fn symbol(m: usize, n: usize, order: usize) -> Vec<f64> {
     if (m / 2) * n < PARALLEL_THRESHOLD {
         (0..=m / 2).map(term).collect()
     } else {
-        (0..=m / 2).into_par_iter().with_min_len(1024).map(term).collect()
+        (0..m / 2 + 1)
+            .into_par_iter()
+            .with_min_len(1024)
+            .map(term)
+            .collect()
     }
 }
 

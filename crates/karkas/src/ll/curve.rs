@@ -231,24 +231,22 @@ impl<const D: usize> Curve<D> for LlCurve<D> {
             "parameter and output buffers differ in length"
         );
         // Large batches run in parallel chunks (multiples of the kernel's 256).
-        for_each_chunk(ts, out, |ts, out| {
-            match self.kernel.order() {
-                1 => self.eval_batch::<1>(ts, out),
-                2 => self.eval_batch::<2>(ts, out),
-                3 => self.eval_batch::<3>(ts, out),
-                4 => self.eval_batch::<4>(ts, out),
-                5 => self.eval_batch::<5>(ts, out),
-                6 => self.eval_batch::<6>(ts, out),
-                7 => self.eval_batch::<7>(ts, out),
-                8 => self.eval_batch::<8>(ts, out),
-                9 => self.eval_batch::<9>(ts, out),
-                10 => self.eval_batch::<10>(ts, out),
-                11 => self.eval_batch::<11>(ts, out),
-                12 => self.eval_batch::<12>(ts, out),
-                _ => {
-                    for (p, &t) in out.iter_mut().zip(ts) {
-                        *p = self.eval(t);
-                    }
+        for_each_chunk(ts, out, |ts, out| match self.kernel.order() {
+            1 => self.eval_batch::<1>(ts, out),
+            2 => self.eval_batch::<2>(ts, out),
+            3 => self.eval_batch::<3>(ts, out),
+            4 => self.eval_batch::<4>(ts, out),
+            5 => self.eval_batch::<5>(ts, out),
+            6 => self.eval_batch::<6>(ts, out),
+            7 => self.eval_batch::<7>(ts, out),
+            8 => self.eval_batch::<8>(ts, out),
+            9 => self.eval_batch::<9>(ts, out),
+            10 => self.eval_batch::<10>(ts, out),
+            11 => self.eval_batch::<11>(ts, out),
+            12 => self.eval_batch::<12>(ts, out),
+            _ => {
+                for (p, &t) in out.iter_mut().zip(ts) {
+                    *p = self.eval(t);
                 }
             }
         });

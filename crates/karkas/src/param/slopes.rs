@@ -473,7 +473,7 @@ pub(crate) fn not_a_knot_slopes<const D: usize>(
     let mut upper_prime = vec![0.0; len];
     let mut previous = 0.0;
     let mut hp = h0;
-    for r in 0..len {
+    for (r, up_r) in upper_prime.iter_mut().enumerate() {
         let k = r + 1;
         let hc = step(k);
         let lambda = hc / (hp + hc);
@@ -503,7 +503,7 @@ pub(crate) fn not_a_knot_slopes<const D: usize>(
         }
         let inv_pivot = 1.0 / pivot;
         let up = upper * inv_pivot;
-        upper_prime[r] = up;
+        *up_r = up;
         previous = up;
         let rhs = values[k - 1] * weights[0] + values[k] * weights[1] + values[k + 1] * weights[2];
         slopes[k] = if r == 0 {
