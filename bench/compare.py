@@ -209,7 +209,7 @@ def exponent(sizes, times):
 # The jobs
 
 
-def curve_eval_job(sizes, knots_n, with_derivative):
+def curve_eval_job(sizes, knots_n, with_derivative, max_size=None):
     pts = open_curve(knots_n)
     t = chord_parameters(pts)
     mine = karkas.CubicSpline(pts, parameterization="chord", bc="not-a-knot")
@@ -284,7 +284,7 @@ def curve_eval_job(sizes, knots_n, with_derivative):
     job.tool("karkas CubicSpline (out=)", run_karkas)
     job.tool("SciPy CubicSpline", run_cs)
     job.tool("SciPy BSpline.__call__", run_bspline)
-    job.tool("SciPy splev", run_splev)
+    job.tool("SciPy splev", run_splev, max_size)
     job.tool("store limit (NumPy fill)", run_store)
     return job
 
@@ -616,7 +616,7 @@ def main():
         jobs = [
             curve_eval_job([10_000, 30_000, 100_000], 1000, False),
             curve_eval_job([10_000, 30_000, 100_000], 1000, True),
-            curve_interp_job([1_000, 3_000, 10_000], 100, 1_000),
+            curve_interp_job([100, 1_000, 10_000], 100, 1_000),
             closed_interp_job([1_000, 3_000, 10_000]),
             smoothing_fit_job([1_000, 3_000, 10_000], 2.9e-4),
             bicubic_job([50**2, 100**2, 200**2], 50**2),
@@ -624,12 +624,12 @@ def main():
         ]
     else:
         jobs = [
-            curve_eval_job([100_000, 1_000_000, 3_000_000, 10_000_000], 1000, False),
-            curve_eval_job([100_000, 1_000_000, 3_000_000, 10_000_000], 1000, True),
-            curve_interp_job([1_000, 10_000, 100_000, 300_000, 1_000_000], 300, 10_000),
+            curve_eval_job([100_000, 1_000_000, 3_000_000, 10_000_000], 1000, False, 3_000_000),
+            curve_eval_job([100_000, 1_000_000, 3_000_000, 10_000_000], 1000, True, 3_000_000),
+            curve_interp_job([100, 300, 1_000, 10_000, 100_000, 300_000, 1_000_000], 300, 1_000),
             closed_interp_job([1_000, 10_000, 30_000, 100_000, 300_000]),
             smoothing_fit_job([3_000, 10_000, 30_000, 100_000], 2.9e-4),
-            bicubic_job([125**2, 250**2, 500**2, 1000**2], 100**2),
+            bicubic_job([125**2, 250**2, 500**2, 1000**2], 125**2),
             bicubic_eval_job([250**2, 500**2, 1000**2, 2000**2], 1000),
         ]
     if args.jobs:
