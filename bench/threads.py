@@ -40,10 +40,10 @@ sys.path.insert(0, {here!r})
 from compare import open_curve, closed_curve, sheet
 {setup}
 run()
-ts = []
+times = []
 for _ in range(7):
-    t0 = time.perf_counter(); run(); ts.append(time.perf_counter() - t0)
-print(statistics.median(ts))
+    t0 = time.perf_counter(); run(); times.append(time.perf_counter() - t0)
+print(statistics.median(times))
 """
 
 
