@@ -335,3 +335,52 @@ proptest! {
         }
     }
 }
+
+/// A grid large enough for the parallel paths (column blocks, row solves, row blocks of the
+/// grid evaluation): the node slopes equal the 1-D splines of the grid lines and the grid
+/// evaluation equals point evaluation, bitwise.
+#[test]
+fn large_grids_match_line_splines_and_point_evaluation_bitwise() {
+    use karkas::param::{CubicSpline, SplineEnds};
+    let (n, m) = (230, 190);
+    let grid = Grid::from_fn(n, m, |i, j| {
+        let (x, y) = (i as f64 / n as f64, j as f64 / m as f64);
+        Point3::new([x + 0.1 * x * x, y, (5.0 * x).sin() * (3.0 * y).cos()])
+    });
+    let surface = BicubicSurface::new(&grid, GridParameterization::default(), false, false)
+        .expect("valid grid");
+    let same = |a: Point3, b: Point3| (0..3).all(|c| a[c].to_bits() == b[c].to_bits());
+    for j in [0, 1, 77, m - 1] {
+        let column: Vec<Point3> = (0..n).map(|i| *grid.get(i, j)).collect();
+        let spline = CubicSpline::new(surface.knots_u(), &column, SplineEnds::NotAKnot).unwrap();
+        for i in 0..n {
+            assert!(
+                same(surface.node_derivatives(i, j).0, spline.slopes()[i]),
+                "ru {i} {j}"
+            );
+        }
+    }
+    for i in [0, 101, n - 1] {
+        let spline =
+            CubicSpline::new(surface.knots_v(), grid.row(i), SplineEnds::NotAKnot).unwrap();
+        for j in 0..m {
+            assert!(
+                same(surface.node_derivatives(i, j).1, spline.slopes()[j]),
+                "rv {i} {j}"
+            );
+        }
+    }
+    let (du, dv) = (surface.domain_u(), surface.domain_v());
+    let us: Vec<f64> = (0..301).map(|k| du.uniform(k, 301)).collect();
+    let vs: Vec<f64> = (0..257).map(|k| dv.uniform(k, 257)).collect();
+    let mut out = vec![Point3::ZERO; us.len() * vs.len()];
+    surface.eval_grid_into(&us, &vs, &mut out);
+    for (a, &u) in us.iter().enumerate() {
+        for (b, &v) in vs.iter().enumerate() {
+            assert!(
+                same(out[a * vs.len() + b], surface.eval(u, v)),
+                "({u}, {v})"
+            );
+        }
+    }
+}

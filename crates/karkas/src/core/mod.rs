@@ -4,6 +4,7 @@
 mod curve;
 mod grid;
 mod interval;
+pub(crate) mod parallel;
 mod point;
 mod sampling;
 mod surface;

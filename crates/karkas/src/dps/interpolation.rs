@@ -26,7 +26,10 @@ use std::sync::Arc;
 use realfft::num_complex::Complex;
 use realfft::{ComplexToReal, RealFftPlanner, RealToComplex};
 
+use rayon::prelude::*;
+
 use super::period::check_period;
+use crate::core::parallel::PARALLEL_THRESHOLD;
 use crate::{Error, Point, Result};
 
 /// A reusable solver of the interpolation problem `S_r(l n) = z(l)`, `l` in `0..m`, for one
@@ -196,9 +199,10 @@ fn symbol(m: usize, n: usize, order: usize) -> Vec<f64> {
         .map(|q| (PI * q as f64 / n as f64).sin_cos())
         .collect();
     let power = 2 * order as i32;
-    let mut out = Vec::with_capacity(m / 2 + 1);
-    out.push(1.0);
-    for k in 1..=m / 2 {
+    let term = |k: usize| -> f64 {
+        if k == 0 {
+            return 1.0;
+        }
         let (sin_k, cos_k) = (PI * k as f64 / big_n).sin_cos();
         // sin(pi k / m) / n, the numerator of every rho_q.
         let top = (PI * k as f64 / m as f64).sin() / n as f64;
@@ -207,9 +211,18 @@ fn symbol(m: usize, n: usize, order: usize) -> Vec<f64> {
             let rho = top / (sin_q * cos_k + cos_q * sin_k);
             sum += rho.powi(power);
         }
-        out.push(sum);
+        sum
+    };
+    // Every k is independent: large symbols are computed in parallel (same values).
+    if (m / 2) * n < PARALLEL_THRESHOLD {
+        (0..=m / 2).map(term).collect()
+    } else {
+        (0..m / 2 + 1)
+            .into_par_iter()
+            .with_min_len(1024)
+            .map(term)
+            .collect()
     }
-    out
 }
 
 #[cfg(test)]

@@ -22,6 +22,7 @@
 //!
 //! Evaluation is `O(log N)` (binary search of the piece) plus `O(D)`.
 
+use crate::core::parallel::for_each_chunk;
 use crate::core::{Curve, Interval, PiecewiseCurve, Side};
 use crate::{Error, Point, Result};
 
@@ -359,15 +360,18 @@ impl<const D: usize> Curve<D> for HermiteSpline<D> {
             out.len(),
             "parameter and output buffers differ in length"
         );
-        // Sorted parameters are the common case: try the previous piece first.
-        let mut piece = 0;
-        for (p, &t) in out.iter_mut().zip(ts) {
-            let inside = t >= self.knots[piece] && t < self.knots[piece + 1];
-            if !inside {
-                piece = self.locate(t).0;
+        // Sorted parameters are the common case: try the previous piece first. Large
+        // batches run in parallel chunks.
+        for_each_chunk(ts, out, |ts, out| {
+            let mut piece = 0;
+            for (p, &t) in out.iter_mut().zip(ts) {
+                let inside = t >= self.knots[piece] && t < self.knots[piece + 1];
+                if !inside {
+                    piece = self.locate(t).0;
+                }
+                *p = self.deriv_on_piece(piece, self.local(piece, t), 0);
             }
-            *p = self.deriv_on_piece(piece, self.local(piece, t), 0);
-        }
+        });
     }
 }
 

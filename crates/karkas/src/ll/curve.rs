@@ -17,6 +17,7 @@ use super::frame::{close, coincide, extend, model_scale, validate};
 use super::kernel::{pow_n, LlKernel};
 use super::prefilter::interpolation_controls;
 use crate::bspline::PolynomialPieces;
+use crate::core::parallel::for_each_chunk;
 use crate::core::{Curve, Interval, PiecewiseCurve, Side};
 use crate::{Error, Point, Result};
 
@@ -243,7 +244,8 @@ impl<const D: usize> Curve<D> for LlCurve<D> {
             out.len(),
             "parameter and output buffers differ in length"
         );
-        match self.kernel.order() {
+        // Large batches run in parallel chunks (multiples of the kernel's 256).
+        for_each_chunk(ts, out, |ts, out| match self.kernel.order() {
             1 => self.eval_batch::<1>(ts, out),
             2 => self.eval_batch::<2>(ts, out),
             3 => self.eval_batch::<3>(ts, out),
@@ -261,7 +263,7 @@ impl<const D: usize> Curve<D> for LlCurve<D> {
                     *p = self.eval(t);
                 }
             }
-        }
+        });
     }
 }
 

@@ -17,6 +17,7 @@ use super::curve::LlCurve;
 use super::frame::{close, coincide, extend, model_scale};
 use super::kernel::{pow_n, LlKernel};
 use super::prefilter::interpolation_controls;
+use crate::core::parallel::for_each_row_block;
 use crate::core::{Grid, Interval, ParameterLine, PiecewiseSurface, Side, Surface};
 use crate::{Error, Point, Result};
 
@@ -298,14 +299,17 @@ impl<const D: usize> Surface<D> for LlSurface<D> {
                 (j, self.kernel.weights(eta, 0))
             })
             .collect();
-        let mut row = vec![Point::ZERO; self.extended.cols()];
-        for (&u, out_row) in us.iter().zip(out.chunks_exact_mut(vs.len().max(1))) {
-            let (i, xi) = self.axis_u.locate(u);
-            self.combine_rows_into(i, self.kernel.weights(xi, 0), &mut row);
-            for (p, &(j, w)) in out_row.iter_mut().zip(&columns) {
-                *p = row[j - 1] * w[0] + row[j] * w[1] + row[j + 1] * w[2];
+        let row_len = vs.len().max(1);
+        for_each_row_block(out, row_len, |first, block| {
+            let mut row = vec![Point::ZERO; self.extended.cols()];
+            for (&u, out_row) in us[first..].iter().zip(block.chunks_exact_mut(row_len)) {
+                let (i, xi) = self.axis_u.locate(u);
+                self.combine_rows_into(i, self.kernel.weights(xi, 0), &mut row);
+                for (p, &(j, w)) in out_row.iter_mut().zip(&columns) {
+                    *p = row[j - 1] * w[0] + row[j] * w[1] + row[j + 1] * w[2];
+                }
             }
-        }
+        });
     }
 }
 

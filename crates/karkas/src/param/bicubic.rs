@@ -22,8 +22,10 @@
 use super::knots::{check_knots, locate};
 use super::parameterization::{grid_parameters, GridParameterization};
 use super::slopes::{hermite_weights, SlopeSystem, SplineEnds};
+use crate::core::parallel::{for_each_row_block, PARALLEL_THRESHOLD};
 use crate::core::{Grid, Interval, PiecewiseSurface, Side, Surface};
 use crate::{Error, Point, Result};
+use rayon::prelude::*;
 
 /// A bicubic interpolating spline surface over a grid `r_ij` (row `i` at `u_i`, column `j`
 /// at `v_j`), each direction open (not-a-knot ends) or closed (periodic).
@@ -127,16 +129,26 @@ impl<const D: usize> BicubicSurface<D> {
         let (ends_u, ends_v) = (ends(closed_u), ends(closed_v));
         let system_u = SlopeSystem::new(&knots_u, &ends_u)?;
         let system_v = SlopeSystem::new(&knots_v, &ends_v)?;
-        // Step 1: r_u along every column, all columns in one sweep over the grid rows.
-        let mut ru = vec![Point::ZERO; rows * cols];
-        system_u.solve(grid.as_slice(), &mut ru, cols, None);
-        // Steps 2 and 3: r_v and r_uv along every row.
+        // Step 1: r_u along every column, all columns in sweeps over the grid rows.
+        let ru = solve_columns(&system_u, &grid);
+        // Steps 2 and 3: r_v and r_uv along every row (rows in parallel when large).
         let mut rv = vec![Point::ZERO; rows * cols];
         let mut ruv = vec![Point::ZERO; rows * cols];
-        for i in 0..rows {
+        let solve_row = |i: usize, rv_row: &mut [Point<D>], ruv_row: &mut [Point<D>]| {
             let span = i * cols..(i + 1) * cols;
-            system_v.solve(grid.row(i), &mut rv[span.clone()], 1, None);
-            system_v.solve(&ru[span.clone()], &mut ruv[span], 1, None);
+            system_v.solve(grid.row(i), rv_row, 1, None);
+            system_v.solve(&ru[span], ruv_row, 1, None);
+        };
+        if rows * cols < PARALLEL_THRESHOLD {
+            for (i, (a, b)) in rv.chunks_mut(cols).zip(ruv.chunks_mut(cols)).enumerate() {
+                solve_row(i, a, b);
+            }
+        } else {
+            rv.par_chunks_mut(cols)
+                .zip(ruv.par_chunks_mut(cols))
+                .enumerate()
+                .with_min_len((PARALLEL_THRESHOLD / 4 / cols).max(1))
+                .for_each(|(i, (a, b))| solve_row(i, a, b));
         }
         Ok(BicubicSurface {
             knots_u,
@@ -224,6 +236,42 @@ impl<const D: usize> BicubicSurface<D> {
 }
 
 /// At least 2 x 2 points, all finite.
+/// The `u`-slopes of every column of `grid` (step 1). Large grids are solved in blocks of
+/// columns in parallel: each block is gathered into a contiguous buffer, solved there (the
+/// same arithmetic per column as one solve over all columns) and copied back.
+fn solve_columns<const D: usize>(system: &SlopeSystem, grid: &Grid<Point<D>>) -> Vec<Point<D>> {
+    let (rows, cols) = (grid.rows(), grid.cols());
+    let mut ru = vec![Point::ZERO; rows * cols];
+    if rows * cols < PARALLEL_THRESHOLD || cols < 2 * COLUMN_BLOCK {
+        system.solve(grid.as_slice(), &mut ru, cols, None);
+        return ru;
+    }
+    let starts: Vec<usize> = (0..cols).step_by(COLUMN_BLOCK).collect();
+    let blocks: Vec<Vec<Point<D>>> = starts
+        .par_iter()
+        .map(|&a| {
+            let width = COLUMN_BLOCK.min(cols - a);
+            let mut values = Vec::with_capacity(rows * width);
+            for i in 0..rows {
+                values.extend_from_slice(&grid.row(i)[a..a + width]);
+            }
+            let mut slopes = vec![Point::ZERO; rows * width];
+            system.solve(&values, &mut slopes, width, None);
+            slopes
+        })
+        .collect();
+    ru.par_chunks_mut(cols).enumerate().for_each(|(i, row)| {
+        for (&a, block) in starts.iter().zip(&blocks) {
+            let width = COLUMN_BLOCK.min(cols - a);
+            row[a..a + width].copy_from_slice(&block[i * width..(i + 1) * width]);
+        }
+    });
+    ru
+}
+
+/// Columns per parallel block of [`solve_columns`].
+const COLUMN_BLOCK: usize = 32;
+
 fn validate<const D: usize>(grid: &Grid<Point<D>>) -> Result<()> {
     let (rows, cols) = (grid.rows(), grid.cols());
     if rows < 2 || cols < 2 {
@@ -338,19 +386,22 @@ impl<const D: usize> Surface<D> for BicubicSurface<D> {
             })
             .collect();
         let cols = self.values.cols();
-        let mut values = vec![Point::ZERO; cols];
-        let mut slopes = vec![Point::ZERO; cols];
-        for (&u, out_row) in us.iter().zip(out.chunks_exact_mut(vs.len().max(1))) {
-            let (i, s) = locate(&self.knots_u, self.closed_u, u, Side::Above);
-            let wu = hermite_weights(s, self.knots_u[i + 1] - self.knots_u[i], 0);
-            self.combine_rows(i, &wu, &mut values, &mut slopes);
-            for (p, &(j, w)) in out_row.iter_mut().zip(&columns) {
-                *p = values[j] * w[0]
-                    + values[j + 1] * w[1]
-                    + slopes[j] * w[2]
-                    + slopes[j + 1] * w[3];
+        let row_len = vs.len().max(1);
+        for_each_row_block(out, row_len, |first, block| {
+            let mut values = vec![Point::ZERO; cols];
+            let mut slopes = vec![Point::ZERO; cols];
+            for (&u, out_row) in us[first..].iter().zip(block.chunks_exact_mut(row_len)) {
+                let (i, s) = locate(&self.knots_u, self.closed_u, u, Side::Above);
+                let wu = hermite_weights(s, self.knots_u[i + 1] - self.knots_u[i], 0);
+                self.combine_rows(i, &wu, &mut values, &mut slopes);
+                for (p, &(j, w)) in out_row.iter_mut().zip(&columns) {
+                    *p = values[j] * w[0]
+                        + values[j + 1] * w[1]
+                        + slopes[j] * w[2]
+                        + slopes[j + 1] * w[3];
+                }
             }
-        }
+        });
     }
 }
 

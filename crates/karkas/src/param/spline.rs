@@ -9,7 +9,8 @@
 
 use super::knots::{check_knots, locate};
 use super::parameterization::{curve_parameters, CurveParameterization};
-use super::slopes::{hermite_weights, SlopeSystem, SplineEnds};
+use super::slopes::{hermite_weights, not_a_knot_slopes, SlopeSystem, SplineEnds};
+use crate::core::parallel::for_each_chunk;
 use crate::core::{Curve, Interval, PiecewiseCurve, Side};
 use crate::{Error, Point, Result};
 
@@ -33,6 +34,11 @@ impl<const D: usize> CubicSpline<D> {
     /// periodic ends a last value that does not repeat the first (relative tolerance
     /// `1e-12`).
     pub fn new(knots: &[f64], values: &[Point<D>], ends: SplineEnds<D>) -> Result<Self> {
+        Self::from_owned(knots.to_vec(), values.to_vec(), ends)
+    }
+
+    /// [`new`](Self::new) on owned knots and values (no copies of them are made).
+    fn from_owned(knots: Vec<f64>, values: Vec<Point<D>>, ends: SplineEnds<D>) -> Result<Self> {
         let n = knots.len();
         let periodic = matches!(ends, SplineEnds::Periodic);
         let needed = if periodic { 3 } else { 2 };
@@ -49,7 +55,7 @@ impl<const D: usize> CubicSpline<D> {
                 values.len()
             )));
         }
-        check_knots(knots)?;
+        check_knots(&knots)?;
         if let Some(index) = values.iter().position(|p| !p.is_finite()) {
             return Err(Error::NonFinitePoint { index });
         }
@@ -60,7 +66,7 @@ impl<const D: usize> CubicSpline<D> {
                 ));
             }
         }
-        let mut values = values.to_vec();
+        let mut values = values;
         if periodic {
             let scale = values.iter().fold(1.0f64, |m, p| m.max(p.max_abs()));
             if (values[n - 1] - values[0]).max_abs() > 1e-12 * scale {
@@ -75,9 +81,13 @@ impl<const D: usize> CubicSpline<D> {
             SplineEnds::Clamped { start, end } => Some((start, end)),
             _ => None,
         };
-        SlopeSystem::new(knots, &ends)?.solve(&values, &mut slopes, 1, clamped);
+        if matches!(ends, SplineEnds::NotAKnot) && n >= 4 {
+            not_a_knot_slopes(&knots, &values, &mut slopes)?;
+        } else {
+            SlopeSystem::new(&knots, &ends)?.solve(&values, &mut slopes, 1, clamped);
+        }
         Ok(CubicSpline {
-            knots: knots.to_vec(),
+            knots,
             values,
             slopes,
             periodic,
@@ -104,7 +114,7 @@ impl<const D: usize> CubicSpline<D> {
             }
         }
         let knots = curve_parameters(&pts, parameterization)?;
-        Self::new(&knots, &pts, ends)
+        Self::from_owned(knots, pts, ends)
     }
 
     /// The knots `t_0 < .. < t_{n-1}`.
@@ -125,6 +135,38 @@ impl<const D: usize> CubicSpline<D> {
     #[inline]
     fn locate(&self, t: f64, side: Side) -> (usize, f64) {
         locate(&self.knots, self.periodic, t, side)
+    }
+
+    /// The piece of `t` (already wrapped when periodic), trying `hint` and the piece after it
+    /// before searching: the same piece as [`locate`] with [`Side::Above`].
+    #[inline]
+    fn piece_from(&self, t: f64, hint: usize) -> usize {
+        let last = self.knots.len() - 2;
+        let holds =
+            |k: usize| (k == 0 || self.knots[k] <= t) && (k == last || t < self.knots[k + 1]);
+        if holds(hint) {
+            hint
+        } else if hint < last && holds(hint + 1) {
+            hint + 1
+        } else {
+            self.knots
+                .partition_point(|&x| x <= t)
+                .saturating_sub(1)
+                .min(last)
+        }
+    }
+
+    /// The `order`-th derivative at every parameter of `ts` into `out`, serially; sorted
+    /// parameters find their piece in `O(1)`.
+    fn deriv_batch(&self, ts: &[f64], order: usize, out: &mut [Point<D>]) {
+        let domain = self.domain();
+        let mut k = 0;
+        for (p, &t) in out.iter_mut().zip(ts) {
+            let t = if self.periodic { domain.wrap(t) } else { t };
+            k = self.piece_from(t, k);
+            let s = (t - self.knots[k]) / (self.knots[k + 1] - self.knots[k]);
+            *p = self.deriv_on_piece((k, s), order);
+        }
     }
 
     #[inline]
@@ -162,6 +204,23 @@ impl<const D: usize> Curve<D> for CubicSpline<D> {
             2,
         ))
     }
+
+    /// Equal to [`eval`](Curve::eval) at every parameter; in parallel above
+    /// a size threshold, `O(1)` per parameter when they are sorted.
+    fn eval_into(&self, ts: &[f64], out: &mut [Point<D>]) {
+        self.deriv_into(ts, 0, out);
+    }
+
+    /// Equal to [`deriv`](Curve::deriv) at every parameter; in parallel above a size
+    /// threshold, `O(1)` per parameter when they are sorted.
+    fn deriv_into(&self, ts: &[f64], k: usize, out: &mut [Point<D>]) {
+        assert_eq!(
+            ts.len(),
+            out.len(),
+            "parameter and output buffers differ in length"
+        );
+        for_each_chunk(ts, out, |t, o| self.deriv_batch(t, k, o));
+    }
 }
 
 impl<const D: usize> PiecewiseCurve<D> for CubicSpline<D> {
@@ -175,5 +234,73 @@ impl<const D: usize> PiecewiseCurve<D> for CubicSpline<D> {
 
     fn deriv_on_side(&self, t: f64, k: usize, side: Side) -> Point<D> {
         self.deriv_on_piece(self.locate(t, side), k)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Batches (serial and parallel, sorted and not, outside the domain, NaN) equal the
+    /// one-point calls bitwise.
+    #[test]
+    fn batches_equal_single_calls_bitwise() {
+        let n = 300;
+        let points: Vec<Point<3>> = (0..n)
+            .map(|k| {
+                let s = k as f64 * 0.05;
+                Point([s.cos(), (2.0 * s).sin(), 0.1 * s * s])
+            })
+            .collect();
+        let ring: Vec<Point<3>> = (0..n)
+            .map(|k| {
+                let s = k as f64 * std::f64::consts::TAU / n as f64;
+                Point([s.cos(), s.sin(), 0.3 * (3.0 * s).sin()])
+            })
+            .collect();
+        let open = CubicSpline::through(
+            &points,
+            CurveParameterization::ChordLength,
+            SplineEnds::NotAKnot,
+        )
+        .unwrap();
+        let closed = CubicSpline::through(
+            &ring,
+            CurveParameterization::Centripetal,
+            SplineEnds::Periodic,
+        )
+        .unwrap();
+        for curve in [&open, &closed] {
+            let d = curve.domain();
+            let m = 70_001; // above the parallel threshold
+            let mut ts: Vec<f64> = (0..m)
+                .map(|i| d.start - 0.1 + (d.length() + 0.2) * i as f64 / (m - 1) as f64)
+                .collect();
+            ts[7] = f64::NAN;
+            ts[8] = d.end;
+            ts[9] = d.start;
+            let mut shuffled = ts.clone();
+            for i in 0..m {
+                shuffled.swap(i, (i * 7919) % m);
+            }
+            for ts in [&ts, &shuffled, &ts[..100].to_vec()] {
+                for k in 0..4 {
+                    let mut out = vec![Point::ZERO; ts.len()];
+                    curve.deriv_into(ts, k, &mut out);
+                    for (&t, p) in ts.iter().zip(&out) {
+                        let e = curve.deriv(t, k);
+                        for c in 0..3 {
+                            assert_eq!(p[c].to_bits(), e[c].to_bits(), "t={t} k={k}");
+                        }
+                    }
+                }
+                let mut out = vec![Point::ZERO; ts.len()];
+                curve.eval_into(ts, &mut out);
+                assert!(ts.iter().zip(&out).all(|(&t, p)| {
+                    let e = curve.eval(t);
+                    (0..3).all(|c| p[c].to_bits() == e[c].to_bits())
+                }));
+            }
+        }
     }
 }
