@@ -20,16 +20,41 @@ pub enum OutputFormat {
     Stl,
     /// A picture in pixels (`.png`).
     Png,
+    /// A Stanford PLY triangle mesh (`.ply`, binary little-endian).
+    Ply,
+    /// A legacy VTK file (`.vtk`): a structured grid for surfaces.
+    Vtk,
+    /// A VTK XML structured grid (`.vts`).
+    Vts,
+    /// A binary glTF 2.0 mesh (`.glb`).
+    Glb,
+    /// A self-contained 3-D viewer page (`.html`).
+    Html,
 }
 
 impl OutputFormat {
     /// All formats, in the order they are listed in messages.
-    const ALL: [OutputFormat; 5] = [
+    const ALL: [OutputFormat; 10] = [
         OutputFormat::Csv,
         OutputFormat::Svg,
         OutputFormat::Obj,
         OutputFormat::Stl,
         OutputFormat::Png,
+        OutputFormat::Ply,
+        OutputFormat::Vtk,
+        OutputFormat::Vts,
+        OutputFormat::Glb,
+        OutputFormat::Html,
+    ];
+
+    /// Every triangle-mesh format a sampled surface can be written in.
+    pub const MESHES: [OutputFormat; 6] = [
+        OutputFormat::Obj,
+        OutputFormat::Stl,
+        OutputFormat::Ply,
+        OutputFormat::Vtk,
+        OutputFormat::Vts,
+        OutputFormat::Glb,
     ];
 
     /// The format named by the extension of `path` (case-insensitive), if it is one of
@@ -46,7 +71,8 @@ impl OutputFormat {
             })
     }
 
-    /// The file extension, without the dot: `"csv"`, `"svg"`, `"obj"`, `"stl"` or `"png"`.
+    /// The file extension, without the dot: `"csv"`, `"svg"`, `"obj"`, `"stl"`, `"png"`,
+    /// `"ply"`, `"vtk"`, `"vts"`, `"glb"` or `"html"`.
     pub fn extension(self) -> &'static str {
         match self {
             OutputFormat::Csv => "csv",
@@ -54,6 +80,11 @@ impl OutputFormat {
             OutputFormat::Obj => "obj",
             OutputFormat::Stl => "stl",
             OutputFormat::Png => "png",
+            OutputFormat::Ply => "ply",
+            OutputFormat::Vtk => "vtk",
+            OutputFormat::Vts => "vts",
+            OutputFormat::Glb => "glb",
+            OutputFormat::Html => "html",
         }
     }
 }
