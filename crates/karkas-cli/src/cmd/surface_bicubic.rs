@@ -2,7 +2,7 @@
 //! parameters (seed 004, METHODS.md §5).
 
 use super::curve_ll::MAX_SAMPLES;
-use super::output::{ensure_distinct, write_sampled_surface};
+use super::output::{ensure_distinct, write_sampled_surface_with_net};
 use crate::samples::{default_surface_samples, parse_pair};
 use anyhow::{anyhow, bail, Result};
 use clap::{Args, ValueEnum};
@@ -54,14 +54,15 @@ pub struct SurfaceBicubicArgs {
     samples: Option<(usize, usize)>,
     /// Input grid: CSV with header i,j,x,y,z (indices from 0, rows in any order).
     input: PathBuf,
-    /// Output file: .csv (u,v,x,y,z in the chosen parameters) or .obj (triangle mesh).
+    /// Output file: .csv (u,v,x,y,z in the chosen parameters), a mesh (.obj .stl .ply .vtk .vts .glb), a picture
+    /// (.svg .png) or a 3-D viewer page (.html).
     #[arg(short, long)]
     output: PathBuf,
 }
 
 /// Runs `karkas surface bicubic`.
 pub fn run(args: &SurfaceBicubicArgs) -> Result<()> {
-    let format = OutputFormat::from_path(&args.output, &[OutputFormat::Csv, OutputFormat::Obj])?;
+    let format = OutputFormat::from_path(&args.output, &super::export::SURFACE_FORMATS)?;
     if args
         .samples
         .is_some_and(|(nu, nv)| nu.saturating_mul(nv) > MAX_SAMPLES)
@@ -78,5 +79,13 @@ pub fn run(args: &SurfaceBicubicArgs) -> Result<()> {
             default_surface_samples(grid.cols()),
         )
     });
-    write_sampled_surface(&surface, (nu, nv), format, &args.output)
+    let title = format!("bicubic surface, {} x {} grid", grid.rows(), grid.cols());
+    write_sampled_surface_with_net(
+        &surface,
+        (nu, nv),
+        format,
+        &args.output,
+        &title,
+        Some(&grid),
+    )
 }

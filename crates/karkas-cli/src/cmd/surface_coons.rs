@@ -68,14 +68,15 @@ pub struct SurfaceCoonsArgs {
     /// [default: 4 per point of the longest curve in each direction, at least 50].
     #[arg(long, value_parser = parse_pair)]
     samples: Option<(usize, usize)>,
-    /// Output file: .csv (u,v,x,y,z) or .obj (triangle mesh).
+    /// Output file: .csv (u,v,x,y,z), a mesh (.obj .stl .ply .vtk .vts .glb), a picture
+    /// (.svg .png) or a 3-D viewer page (.html).
     #[arg(short, long)]
     output: PathBuf,
 }
 
 /// Runs `karkas surface coons`.
 pub fn run(args: &SurfaceCoonsArgs) -> Result<()> {
-    let format = OutputFormat::from_path(&args.output, &[OutputFormat::Csv, OutputFormat::Obj])?;
+    let format = OutputFormat::from_path(&args.output, &super::export::SURFACE_FORMATS)?;
     if args
         .samples
         .is_some_and(|(nu, nv)| nu.saturating_mul(nv) > MAX_SAMPLES)
