@@ -10,7 +10,7 @@ screenshot's top-left pixel.
 Usage: check_page.py PAGE [--screenshot OUT.png] [--min-foreground FRACTION]
                           [--width W] [--height H] [--wait-ms MS]
 
-Uses Python Playwright with the system Chromium (/usr/bin/chromium, or $CHROMIUM); Playwright
+Needs Python Playwright, Pillow and NumPy. Uses the system Chromium (/usr/bin/chromium, or $CHROMIUM); Playwright
 never downloads a browser here.
 """
 import argparse
@@ -32,14 +32,12 @@ ARGS = [
 
 def foreground_fraction(png_path):
     """The fraction of pixels that differ from the top-left pixel (by more than 8 levels)."""
-    from PIL import Image  # Pillow comes with trimesh/matplotlib installs; imported lazily
+    import numpy
+    from PIL import Image
 
-    image = Image.open(png_path).convert("RGB")
-    w, h = image.size
-    background = image.getpixel((0, 0))
-    pixels = image.getdata()
-    differ = sum(1 for p in pixels if max(abs(p[k] - background[k]) for k in range(3)) > 8)
-    return differ / float(w * h)
+    pixels = numpy.asarray(Image.open(png_path).convert("RGB")).astype(int)
+    differ = numpy.abs(pixels - pixels[0, 0]).max(axis=2) > 8
+    return float(differ.mean())
 
 
 def main():

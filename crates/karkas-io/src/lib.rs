@@ -19,7 +19,6 @@
 //! - [`svg`]: pictures of a planar curve over its input points, of a discrete curve, and of
 //!   wireframes;
 //! - [`scene`]: a shaded surface in space with curves on it, hidden parts removed;
-//! - [`painter`]: a shaded picture of projected polygons and segments (painter's algorithm);
 //! - [`png`]: any of these pictures rendered to PNG (with a compiled-in font);
 //! - [`obj`]: a sampled surface as a Wavefront OBJ triangle mesh;
 //! - [`stl`]: a sampled surface or a triangle mesh as binary or ASCII STL;
@@ -41,7 +40,6 @@ pub mod mesh;
 pub mod mesh_io;
 pub mod network;
 pub mod obj;
-pub mod painter;
 pub mod ply;
 pub mod png;
 pub mod points;

@@ -109,7 +109,7 @@ impl TriangleMesh {
             if let (Some(a), Some(b), Some(c)) = (at(t[0]), at(t[1]), at(t[2])) {
                 let n = cross(b - a, c - a); // length = twice the area
                 for &k in t {
-                    sums[k as usize] = sums[k as usize] + n;
+                    sums[k as usize] += n;
                 }
             }
         }

@@ -4,10 +4,15 @@
 //! - A sampled surface (a mesh that keeps its grid shape) is written as a legacy
 //!   `DATASET STRUCTURED_GRID` (`.vtk`) or as an XML `StructuredGrid` (`.vts`): the points in
 //!   VTK order (the first index fastest, so `DIMENSIONS nv nu 1` for a row-major `nu x nv`
-//!   grid) and the point normals as `NORMALS`. ParaView shows it as a surface of
+//!   grid) and the point normals. ParaView shows it as a surface of
 //!   `(nu-1)(nv-1)` quadrilateral cells.
-//! - A general triangle mesh is written as a legacy `DATASET POLYDATA` with `POLYGONS`;
-//!   a structured grid cannot hold it, so `.vts` refuses it.
+//! - A general triangle mesh is written as a legacy `DATASET UNSTRUCTURED_GRID` of triangles
+//!   (`CELLS`, `CELL_TYPES 5`; meshio reads this dataset but not `POLYDATA`); a structured grid
+//!   cannot hold it, so `.vts` refuses it.
+//!
+//! The normals are point data `VECTORS Normals` in the legacy file (the legacy `NORMALS`
+//! keyword would be equivalent for ParaView, but common readers such as meshio reject it) and
+//! the `Normals` array of the XML file.
 //!
 //! Both are ASCII text with shortest round-trip decimals (exact values). They are written
 //! directly: the `vtkio` crate covers the same ground but pulls a large dependency tree for a
@@ -21,7 +26,7 @@ use crate::mesh::TriangleMesh;
 use crate::write::write_atomic;
 
 /// Writes `mesh` as a legacy VTK file at `path`, atomically: a structured grid when the mesh
-/// has a grid shape, polygon data otherwise.
+/// has a grid shape, an unstructured grid of triangles otherwise.
 pub fn write_mesh_vtk(path: &Path, mesh: &TriangleMesh) -> Result<(), IoError> {
     crate::mesh_check(path, mesh)?;
     write_atomic(path, |out| render_mesh_vtk(mesh, out))
@@ -51,7 +56,7 @@ pub fn render_mesh_vtk(mesh: &TriangleMesh, out: &mut dyn Write) -> io::Result<(
         Some((nu, nv)) => {
             writeln!(out, "DATASET STRUCTURED_GRID\nDIMENSIONS {nv} {nu} 1")?;
         }
-        None => writeln!(out, "DATASET POLYDATA")?,
+        None => writeln!(out, "DATASET UNSTRUCTURED_GRID")?,
     }
     writeln!(out, "POINTS {n} double")?;
     for p in &mesh.positions {
@@ -59,12 +64,16 @@ pub fn render_mesh_vtk(mesh: &TriangleMesh, out: &mut dyn Write) -> io::Result<(
     }
     if mesh.grid.is_none() {
         let m = mesh.triangles.len();
-        writeln!(out, "POLYGONS {m} {}", 4 * m)?;
+        writeln!(out, "CELLS {m} {}", 4 * m)?;
         for t in &mesh.triangles {
             writeln!(out, "3 {} {} {}", t[0], t[1], t[2])?;
         }
+        writeln!(out, "CELL_TYPES {m}")?;
+        for _ in 0..m {
+            writeln!(out, "5")?;
+        }
     }
-    writeln!(out, "POINT_DATA {n}\nNORMALS normals double")?;
+    writeln!(out, "POINT_DATA {n}\nVECTORS Normals double")?;
     for p in mesh.vertex_normals() {
         writeln!(out, "{} {} {}", p[0], p[1], p[2])?;
     }
@@ -86,8 +95,8 @@ pub fn render_mesh_vts(mesh: &TriangleMesh, out: &mut dyn Write) -> io::Result<(
         "<?xml version=\"1.0\"?>\n\
          <VTKFile type=\"StructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n\
          <StructuredGrid WholeExtent=\"{extent}\">\n<Piece Extent=\"{extent}\">\n\
-         <PointData Normals=\"normals\">\n\
-         <DataArray type=\"Float64\" Name=\"normals\" NumberOfComponents=\"3\" format=\"ascii\">"
+         <PointData Normals=\"Normals\">\n\
+         <DataArray type=\"Float64\" Name=\"Normals\" NumberOfComponents=\"3\" format=\"ascii\">"
     )?;
     for p in mesh.vertex_normals() {
         writeln!(out, "{} {} {}", p[0], p[1], p[2])?;
@@ -125,21 +134,23 @@ mod tests {
         let expected = "# vtk DataFile Version 3.0\nkarkas mesh\nASCII\n\
             DATASET STRUCTURED_GRID\nDIMENSIONS 3 2 1\nPOINTS 6 double\n\
             0 0 0\n1 0 0\n2 0 0\n0 1 0\n1 1 0\n2 1 0\n\
-            POINT_DATA 6\nNORMALS normals double\n";
+            POINT_DATA 6\nVECTORS Normals double\n";
         assert!(text.starts_with(expected), "{text}");
         // d/du = +y, d/dv = +x: the normal is -z at every point.
         assert_eq!(text.matches("\n0 0 -1").count(), 6);
     }
 
     #[test]
-    fn legacy_polydata_for_a_general_mesh() {
+    fn legacy_unstructured_grid_for_a_general_mesh() {
         let mut mesh = grid_mesh();
         mesh.grid = None;
         let mut out = Vec::new();
         render_mesh_vtk(&mesh, &mut out).unwrap();
         let text = String::from_utf8(out).unwrap();
-        assert!(text.contains("DATASET POLYDATA\nPOINTS 6 double\n"));
-        assert!(text.contains("POLYGONS 4 16\n3 0 3 4\n3 0 4 1\n3 1 4 5\n3 1 5 2\n"));
+        assert!(text.contains("DATASET UNSTRUCTURED_GRID\nPOINTS 6 double\n"));
+        assert!(text.contains(
+            "CELLS 4 16\n3 0 3 4\n3 0 4 1\n3 1 4 5\n3 1 5 2\nCELL_TYPES 4\n5\n5\n5\n5\nPOINT_DATA 6\n"
+        ));
     }
 
     #[test]

@@ -255,9 +255,12 @@ mod tests {
                 }
             }
         }
-        let ts: Vec<f64> = (0..50).map(|k| k as f64 * 0.1).collect();
+        // t = 0 and t = pi give x = +-2: the extent is 4.
+        let ts: Vec<f64> = (0..=50)
+            .map(|k| k as f64 * std::f64::consts::TAU / 50.0)
+            .collect();
         let comb = curvature_comb(&Circle, &ts);
-        assert_eq!(comb.len(), 50);
+        assert_eq!(comb.len(), 51);
         for [p, tip] in comb {
             assert!((tip.norm() - (2.0 + 4.0 / 6.0)).abs() < 1e-9, "{tip:?}");
             assert!((p.norm() - 2.0).abs() < 1e-12);

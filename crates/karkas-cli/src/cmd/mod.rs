@@ -1,5 +1,6 @@
 //! The commands of the `karkas` binary, one file each.
 
+pub mod convert;
 mod curve_dps;
 mod curve_fit;
 mod curve_ll;
