@@ -113,14 +113,20 @@ if (box.isEmpty()) box.set(new THREE.Vector3(-1, -1, -1), new THREE.Vector3(1, 1
 const sphere = box.getBoundingSphere(new THREE.Sphere());
 const radius = Math.max(sphere.radius, 1e-9);
 const distance = radius / Math.sin(THREE.MathUtils.degToRad(camera.fov / 2)) * 1.05;
-const direction = new THREE.Vector3(Math.cos(Math.PI / 6) * Math.cos(Math.PI / 4),
+let direction = new THREE.Vector3(Math.cos(Math.PI / 6) * Math.cos(Math.PI / 4),
   Math.cos(Math.PI / 6) * Math.sin(Math.PI / 4), Math.sin(Math.PI / 6));
+// A flat scene (a planar curve, say) in the x-y plane: look straight down, y up.
+const size = box.getSize(new THREE.Vector3());
+if (size.z <= 1e-9 * Math.max(size.x, size.y)) {
+  direction = new THREE.Vector3(0, 0, 1);
+  camera.up.set(0, 1, 0);
+}
 camera.position.copy(sphere.center).addScaledVector(direction, distance);
 camera.near = distance / 1000;
 camera.far = distance * 100;
 camera.lookAt(sphere.center);
 camera.updateProjectionMatrix();
-// Move in until the box's corners fill 90% of the view (perspective: repeat to settle).
+// Move in until the box's corners fill 80% of the view (perspective: repeat to settle).
 for (let pass = 0; pass < 3; pass++) {
   camera.updateMatrixWorld();
   let reach = 0;
@@ -130,7 +136,7 @@ for (let pass = 0; pass < 3; pass++) {
     reach = Math.max(reach, Math.abs(corner.x), Math.abs(corner.y));
   }
   if (!(reach > 0) || !isFinite(reach)) break;
-  const d = camera.position.distanceTo(sphere.center) * Math.min(Math.max(reach / 0.9, 0.2), 5);
+  const d = camera.position.distanceTo(sphere.center) * Math.min(Math.max(reach / 0.8, 0.2), 5);
   camera.position.copy(sphere.center).addScaledVector(direction, d);
 }
 
