@@ -70,6 +70,23 @@ fn curve_eval(c: &mut Criterion) {
     group.finish();
 }
 
+/// 10^7 points of an LL curve into a reused buffer: the job the Python package's `out=`
+/// evaluation is compared with (crates/karkas-py/tests/bench_eval.py does the same from Python).
+fn curve_eval_10m(c: &mut Criterion) {
+    let mut group = c.benchmark_group("ll_curve_eval_L5_3d_1e7");
+    group.sample_size(10);
+    let n = 10_000_000;
+    let curve = LlCurve::new(&polygon(1_000), 5, false).unwrap();
+    let d = curve.domain();
+    let ts: Vec<f64> = (0..n).map(|i| d.uniform(i, n)).collect();
+    let mut out = vec![Point3::ZERO; n];
+    group.throughput(Throughput::Elements(n as u64));
+    group.bench_function(BenchmarkId::new("sorted", 1_000), |b| {
+        b.iter(|| curve.eval_into(black_box(&ts), &mut out))
+    });
+    group.finish();
+}
+
 fn prefilter(c: &mut Criterion) {
     let mut group = c.benchmark_group("ll_interpolation_prefilter_3d");
     let n = 1_000_000;
@@ -113,5 +130,5 @@ fn surface_grid(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, curve_eval, prefilter, surface_grid);
+criterion_group!(benches, curve_eval, curve_eval_10m, prefilter, surface_grid);
 criterion_main!(benches);

@@ -7,7 +7,7 @@ use super::coons_data::{
     body_line, curve_family_csv, figure_3_sheet, fuselage, fuselage_point_lists, Body,
     FUSELAGE_STATIONS, FUSELAGE_STRINGERS,
 };
-use super::Finding;
+use super::{Finding, Output};
 use anyhow::Result;
 use karkas::coons::{
     Along, CoonsSurface, CrossDerivatives, CurveFit, CurveNetwork, NetworkAxis, PointNetwork,
@@ -22,13 +22,6 @@ use std::path::Path;
 
 /// Samples per direction when measuring the distance to the body.
 const MEASURE: usize = 81;
-
-/// Runs both examples into `out`.
-pub fn run(out: &Path) -> Result<Vec<Finding>> {
-    let mut findings = figure_3(out)?;
-    findings.extend(fuselage_network(out)?);
-    Ok(findings)
-}
 
 /// The network of `body` on the nodes: v-curves at the `u` nodes, u-curves at the `v` nodes.
 fn network_of(body: Body, u_axis: &NetworkAxis, v_axis: &NetworkAxis) -> Result<CurveNetwork<3>> {
@@ -50,7 +43,7 @@ fn network_of(body: Body, u_axis: &NetworkAxis, v_axis: &NetworkAxis) -> Result<
     )?)
 }
 
-fn figure_3(out: &Path) -> Result<Vec<Finding>> {
+pub fn figure_3(out: &Output) -> Result<Vec<Finding>> {
     let body = figure_3_sheet();
     let axis = NetworkAxis::uniform(3, false)?; // the seed's nodes 0, 1, 2 (m = n = 2)
     let net = network_of(body, &axis, &axis)?;
@@ -81,11 +74,11 @@ fn figure_3(out: &Path) -> Result<Vec<Finding>> {
     let u_lists: Vec<_> = (0..3).map(|j| sample(Along::U, j as f64)).collect();
     let v_lists: Vec<_> = (0..3).map(|i| sample(Along::V, i as f64)).collect();
     write_text(
-        &out.join("coons-fig3-u-curves.csv"),
+        &out.file("coons-fig3-u-curves.csv"),
         &curve_family_csv(&u_lists),
     )?;
     write_text(
-        &out.join("coons-fig3-v-curves.csv"),
+        &out.file("coons-fig3-v-curves.csv"),
         &curve_family_csv(&v_lists),
     )?;
 
@@ -97,11 +90,11 @@ fn figure_3(out: &Path) -> Result<Vec<Finding>> {
         .map(|(k, s)| wireframe(s, 13, 13, Point2::new([width * k as f64, 0.0]), sheet_view))
         .collect();
     write_panels(
-        &out.join("coons-fig3-gordon-vs-spline.svg"),
+        &out.file("coons-fig3-gordon-vs-spline.svg"),
         "Seed 001 fig. 3 network: Lagrange Gordon | natural-spline Gordon | composite Coons",
         &pictures,
     )?;
-    write_mesh(&out.join("coons-fig3-composite.obj"), &composite, 81, 81)?;
+    write_mesh(&out.file("coons-fig3-composite.obj"), &composite, 81, 81)?;
 
     let miss = [&lagrange, &natural, &composite, &derived]
         .iter()
@@ -114,7 +107,7 @@ fn figure_3(out: &Path) -> Result<Vec<Finding>> {
         Deviation::measure(&composite, body, &same),
     ];
     write_profiles(
-        &out.join("coons-fig3-deviation.svg"),
+        &out.file("coons-fig3-deviation.svg"),
         "fig. 3, distance to the body",
         ("u", "distance"),
         &measured,
@@ -127,35 +120,40 @@ fn figure_3(out: &Path) -> Result<Vec<Finding>> {
             measure: "largest miss of a network curve (Prop. 1)".into(),
             value: miss,
             paper: None,
+            detail: false,
         },
         Finding {
             example: example.into(),
             measure: "distance to the body, Lagrange Gordon".into(),
             value: measured[0].max(),
             paper: None,
+            detail: false,
         },
         Finding {
             example: example.into(),
             measure: "distance to the body, natural-spline Gordon".into(),
             value: measured[1].max(),
             paper: None,
+            detail: false,
         },
         Finding {
             example: example.into(),
             measure: "distance to the body, composite Coons (exact A, B)".into(),
             value: measured[2].max(),
             paper: None,
+            detail: false,
         },
         Finding {
             example: example.into(),
             measure: "distance to the body, composite Coons (derived A, B)".into(),
             value: to_body(&derived),
             paper: None,
+            detail: false,
         },
     ])
 }
 
-fn fuselage_network(out: &Path) -> Result<Vec<Finding>> {
+pub fn fuselage_network(out: &Output) -> Result<Vec<Finding>> {
     let body = fuselage();
     let u_axis = NetworkAxis::open(FUSELAGE_STATIONS.to_vec())?;
     let angles: Vec<f64> = (0..FUSELAGE_STRINGERS)
@@ -170,11 +168,11 @@ fn fuselage_network(out: &Path) -> Result<Vec<Finding>> {
     // The same network as point lists, through the command line's path.
     let (frames, stringers) = fuselage_point_lists();
     write_text(
-        &out.join("fuselage-u-curves.csv"),
+        &out.file("fuselage-u-curves.csv"),
         &curve_family_csv(&stringers),
     )?;
     write_text(
-        &out.join("fuselage-v-curves.csv"),
+        &out.file("fuselage-v-curves.csv"),
         &curve_family_csv(&frames),
     )?;
     let points = PointNetwork::new(&frames, &stringers, CurveFit::CubicSpline, 1e-6)?;
@@ -191,11 +189,11 @@ fn fuselage_network(out: &Path) -> Result<Vec<Finding>> {
     let above = wireframe(&lagrange, 49, 21, Point2::new([0.0, 0.0]), body_view);
     let below = wireframe(&spline, 49, 21, Point2::new([0.0, -3.6]), body_view);
     write_panels(
-        &out.join("fuselage-gordon-vs-spline.svg"),
+        &out.file("fuselage-gordon-vs-spline.svg"),
         "Seed 001, 7 frames x 5 stringers: Lagrange Gordon (top), spline Gordon (bottom)",
         &[above, below],
     )?;
-    write_mesh(&out.join("fuselage-composite.obj"), &composite, 145, 73)?;
+    write_mesh(&out.file("fuselage-composite.obj"), &composite, 145, 73)?;
 
     let miss = [&lagrange, &spline, &composite]
         .iter()
@@ -207,7 +205,7 @@ fn fuselage_network(out: &Path) -> Result<Vec<Finding>> {
         Deviation::measure(&spline, body, &same),
     ];
     write_profiles(
-        &out.join("fuselage-deviation.svg"),
+        &out.file("fuselage-deviation.svg"),
         "fuselage, distance to the body",
         ("x", "distance"),
         &measured,
@@ -220,30 +218,35 @@ fn fuselage_network(out: &Path) -> Result<Vec<Finding>> {
             measure: "largest miss of a network curve (Prop. 1)".into(),
             value: miss,
             paper: None,
+            detail: false,
         },
         Finding {
             example: example.into(),
             measure: "distance to the body, Lagrange Gordon".into(),
             value: measured[0].max(),
             paper: None,
+            detail: false,
         },
         Finding {
             example: example.into(),
             measure: "distance to the body, spline Gordon".into(),
             value: measured[1].max(),
             paper: None,
+            detail: false,
         },
         Finding {
             example: example.into(),
             measure: "distance to the body, composite Coons (derived A, B)".into(),
             value: to_body(&composite),
             paper: None,
+            detail: false,
         },
         Finding {
             example: example.into(),
             measure: "distance to the body, spline Gordon from points".into(),
             value: Deviation::measure(&from_points, body, &|u, v| (station(u), TAU * v)).max(),
             paper: None,
+            detail: false,
         },
     ])
 }
@@ -524,7 +527,9 @@ mod tests {
     #[test]
     fn the_demo_shows_what_it_claims() {
         let dir = tempfile::tempdir().unwrap();
-        let findings = run(dir.path()).unwrap();
+        let out = Output::new(dir.path());
+        let mut findings = figure_3(&out).unwrap();
+        findings.extend(fuselage_network(&out).unwrap());
         let value = |example: &str, measure: &str| {
             findings
                 .iter()

@@ -8,7 +8,7 @@
 //! (offset horizontally, perpendicular to the knot), and the three rings across it are circles
 //! through those two curves at `q = 0, 40, 80`.
 
-use super::Finding;
+use super::{Finding, Output};
 use anyhow::Result;
 use karkas::dps::{compatibility_residual, discrete_bspline, DiscreteSpline, TubeSurface};
 use karkas::{Grid, Point2, Point3};
@@ -18,7 +18,6 @@ use karkas_io::svg::{write_discrete_curve_svg, write_lines_svg, DiscreteCurvePlo
 use karkas_io::svg::{LineGroup, LinesPlot};
 use karkas_io::write::{write_atomic, write_discrete_curve_csv, write_indexed_grid_csv};
 use std::f64::consts::TAU;
-use std::path::Path;
 
 /// The five-petal curve: order, values per pole.
 const PETAL_ORDER: usize = 2;
@@ -32,13 +31,6 @@ const TUBE_N2: usize = 40;
 const TUBE_ORDERS: (usize, usize) = (2, 2);
 /// The radius of the tube the skeleton is cut from.
 const TUBE_RADIUS: f64 = 0.4;
-
-/// Runs both examples into `out`.
-pub fn run(out: &Path) -> Result<Vec<Finding>> {
-    let mut findings = five_petals(out)?;
-    findings.extend(knot(out)?);
-    Ok(findings)
-}
 
 /// The 20 poles of the five-petal curve: the (2, 5) torus-knot diagram
 /// `(1 + 0.7 cos 5t) (cos 2t, sin 2t)` at `t = 2 pi (l + 1/2) / 20` (the half step keeps the 20
@@ -89,20 +81,20 @@ pub fn knot_skeleton() -> (Grid<Point3>, Grid<Point3>) {
     (along, across)
 }
 
-fn five_petals(out: &Path) -> Result<Vec<Finding>> {
+pub fn five_petals(out: &Output) -> Result<Vec<Finding>> {
     let poles = five_petal_poles();
     let text: String = std::iter::once("x,y\n".to_owned())
         .chain(poles.iter().map(|p| format!("{},{}\n", p[0], p[1])))
         .collect();
-    write_atomic(&out.join("five-petal-poles.csv"), |w| {
+    write_atomic(&out.file("five-petal-poles.csv"), |w| {
         w.write_all(text.as_bytes())
     })?;
     let spline = DiscreteSpline::from_poles(&poles, PETAL_ORDER, PETAL_STEP)?;
     let values = spline.to_values();
-    write_discrete_curve_csv(&out.join("five-petal-r2.csv"), &values)?;
+    write_discrete_curve_csv(&out.file("five-petal-r2.csv"), &values)?;
     let title = "Seed 002, fig. 1: 20 poles and the 320 values of the order-2 spline (n = 16)";
     write_discrete_curve_svg(
-        &out.join("five-petal-poles.svg"),
+        &out.file("five-petal-poles.svg"),
         &DiscreteCurvePlot {
             title,
             values: &values,
@@ -111,7 +103,7 @@ fn five_petals(out: &Path) -> Result<Vec<Finding>> {
         },
     )?;
     write_discrete_curve_svg(
-        &out.join("five-petal-r2.svg"),
+        &out.file("five-petal-r2.svg"),
         &DiscreteCurvePlot {
             title: "Seed 002, fig. 2: the five-petal curve (neighbouring values joined)",
             values: &values,
@@ -124,7 +116,7 @@ fn five_petals(out: &Path) -> Result<Vec<Finding>> {
     let through = DiscreteSpline::interpolating(&poles, PETAL_ORDER, PETAL_STEP)?;
     let through_values = through.to_values();
     write_discrete_curve_svg(
-        &out.join("five-petal-interpolating.svg"),
+        &out.file("five-petal-interpolating.svg"),
         &DiscreteCurvePlot {
             title: "Seed 002: the order-2 spline through the same 20 points (nodes)",
             values: &through_values,
@@ -153,18 +145,21 @@ fn five_petals(out: &Path) -> Result<Vec<Finding>> {
             measure: "self-intersections of the closed polyline".into(),
             value: self_intersections(&values) as f64,
             paper: None,
+            detail: false,
         },
         Finding {
             example: "002 five-petal, 20 poles, r = 2".into(),
             measure: "max |sum_p Q_2(j - p n) - 1| (partition of unity)".into(),
             value: unity,
             paper: None,
+            detail: false,
         },
         Finding {
             example: "002 five-petal, interpolating".into(),
             measure: "max |S_2(l n) - z(l)| at the 20 nodes".into(),
             value: node_error,
             paper: None,
+            detail: false,
         },
     ])
 }
@@ -222,15 +217,15 @@ impl Camera {
     }
 }
 
-fn knot(out: &Path) -> Result<Vec<Finding>> {
+pub fn knot(out: &Output) -> Result<Vec<Finding>> {
     let (along, across) = knot_skeleton();
-    write_indexed_grid_csv(&out.join("knot-along.csv"), ["i", "q"], &along)?;
-    write_indexed_grid_csv(&out.join("knot-across.csv"), ["j", "p"], &across)?;
+    write_indexed_grid_csv(&out.file("knot-along.csv"), ["i", "q"], &along)?;
+    write_indexed_grid_csv(&out.file("knot-across.csv"), ["j", "p"], &across)?;
     let (r1, r2) = TUBE_ORDERS;
     let tube = TubeSurface::new(&along, &across, TUBE_N1, TUBE_N2, r1, r2)?;
     let closed = tube.closed_grid();
     write_surface_obj(
-        &out.join("knot-tube.obj"),
+        &out.file("knot-tube.obj"),
         closed.rows(),
         closed.cols(),
         closed.as_slice(),
@@ -269,7 +264,7 @@ fn knot(out: &Path) -> Result<Vec<Finding>> {
         ]
     };
     write_lines_svg(
-        &out.join("knot-skeleton.svg"),
+        &out.file("knot-skeleton.svg"),
         &LinesPlot {
             title: "Seed 002, fig. 3: the skeleton, 2 curves along (red) and 3 across (blue)",
             axes: ("view x", "view y"),
@@ -288,7 +283,7 @@ fn knot(out: &Path) -> Result<Vec<Finding>> {
         .collect();
     let [bold_along, bold_across] = skeleton_groups(3);
     write_lines_svg(
-        &out.join("knot-tube-wireframe.svg"),
+        &out.file("knot-tube-wireframe.svg"),
         &LinesPlot {
             title: "Seed 002: the knotted tube by formula (3), wireframe, skeleton in bold",
             axes: ("view x", "view y"),
@@ -323,7 +318,7 @@ fn knot(out: &Path) -> Result<Vec<Finding>> {
         },
     ];
     write_scene_svg(
-        &out.join("knot-tube.svg"),
+        &out.file("knot-tube.svg"),
         &Scene {
             title: "Seed 002, fig. 4: the knotted tube by formula (3), skeleton in bold",
             mesh: SceneMesh {
@@ -353,18 +348,21 @@ fn knot(out: &Path) -> Result<Vec<Finding>> {
             measure: "skeleton max |f_i(j n2) - g_j(i n1)|".into(),
             value: compatibility_residual(&along, &across, TUBE_N1, TUBE_N2)?,
             paper: None,
+            detail: false,
         },
         Finding {
             example: "002 knotted tube, 2 x 5 by 3 x 40".into(),
             measure: "max |c(i n1, q) - f_i(q)| (condition 2)".into(),
             value: along_error,
             paper: None,
+            detail: false,
         },
         Finding {
             example: "002 knotted tube, 2 x 5 by 3 x 40".into(),
             measure: "max |c(p, j n2) - g_j(p)| (condition 2)".into(),
             value: across_error,
             paper: None,
+            detail: false,
         },
     ])
 }

@@ -2,13 +2,12 @@
 //! (0, 0.445, 0.449, 0.587, 1), eps = 0.01 (METHODS.md §4). The paper's deviations are printed
 //! beside ours as context: its printed coordinates carry transcription errors.
 
-use super::Finding;
+use super::{Finding, Output};
 use anyhow::{Context, Result};
 use karkas::fit::{fit_curve, FitOptions, PenaltyRule};
 use karkas::{Curve, Point, Point2};
 use karkas_io::svg::{write_fit_svg, FitPlot};
 use karkas_io::write::{write_atomic, write_curve_csv};
-use std::path::Path;
 
 /// The seed's table: x, y and the paper's deviation dR (also in data/hydrofoil-profile.csv).
 const HYDROFOIL: [(f64, f64, f64); 20] = [
@@ -37,7 +36,7 @@ const KNOTS: [f64; 5] = [0.0, 0.445, 0.449, 0.587, 1.0];
 const EPS: f64 = 0.01;
 
 /// Runs the example into `out`.
-pub fn run(out: &Path) -> Result<Vec<Finding>> {
+pub fn run(out: &Output) -> Result<Vec<Finding>> {
     let points: Vec<Point2> = HYDROFOIL
         .iter()
         .map(|&(x, y, _)| Point2::new([x, y]))
@@ -61,19 +60,10 @@ pub fn run(out: &Path) -> Result<Vec<Finding>> {
         },
     )
     .context("hydrofoil fit")?;
-    println!("seed 003 hydrofoil, knots {KNOTS:?}, eps = {EPS}: deviation of each point");
-    println!(
-        "{:>5} {:>9} {:>9} {:>8} {:>12} {:>12}",
-        "point", "x", "y", "paper", "seed's p", "active p"
-    );
+    let example = "003 hydrofoil, 5 knots, eps = 0.01";
     let mut table = String::from("point,x,y,paper_dR,t,distance_seed_p,distance_active_p\n");
+    let mut per_point = Vec::with_capacity(HYDROFOIL.len());
     for (i, &(x, y, paper)) in HYDROFOIL.iter().enumerate() {
-        println!(
-            "{:>5} {x:>9.2} {y:>9.2} {paper:>8.2} {:>12.3} {:>12.3}",
-            i + 1,
-            seed.distances[i],
-            active.distances[i]
-        );
         table.push_str(&format!(
             "{},{x},{y},{paper},{},{},{}\n",
             i + 1,
@@ -81,22 +71,32 @@ pub fn run(out: &Path) -> Result<Vec<Finding>> {
             seed.distances[i],
             active.distances[i]
         ));
+        per_point.push(Finding {
+            example: example.into(),
+            measure: format!(
+                "deviation of point {} ({x:.2}, {y:.2}), bound active",
+                i + 1
+            ),
+            value: active.distances[i],
+            paper: Some(paper),
+            detail: true,
+        });
     }
-    write_atomic(&out.join("hydrofoil-fit-deviations.csv"), |w| {
+    write_atomic(&out.file("hydrofoil-fit-deviations.csv"), |w| {
         w.write_all(table.as_bytes())
     })?;
     let n = 1000;
     let mut ts = vec![0.0; n];
     let mut samples = vec![Point::ZERO; n];
     active.spline.sample_into(&mut ts, &mut samples);
-    write_curve_csv(&out.join("hydrofoil-fit.csv"), &ts, &samples)?;
+    write_curve_csv(&out.file("hydrofoil-fit.csv"), &ts, &samples)?;
     let feet: Vec<Point2> = active
         .parameters
         .iter()
         .map(|&t| active.spline.eval(t))
         .collect();
     write_fit_svg(
-        &out.join("hydrofoil-fit.svg"),
+        &out.file("hydrofoil-fit.svg"),
         &FitPlot {
             title: "Seed 003: hydrofoil, defect-2 cubic spline, eps = 0.01",
             curve: &samples,
@@ -104,37 +104,43 @@ pub fn run(out: &Path) -> Result<Vec<Finding>> {
             feet: &feet,
         },
     )?;
-    let example = "003 hydrofoil, 5 knots, eps = 0.01";
-    Ok(vec![
+    let mut findings = vec![
         Finding {
             example: example.into(),
             measure: "max deviation, bound active".into(),
             value: active.max_distance(),
             paper: Some(0.71),
+            detail: false,
         },
         Finding {
             example: example.into(),
             measure: "max deviation, seed's p = H(q*)/eps".into(),
             value: seed.max_distance(),
             paper: None,
+            detail: false,
         },
         Finding {
             example: example.into(),
             measure: "f = sum J_L^2 achieved (bound active)".into(),
             value: active.jump_sum,
             paper: None,
+            detail: false,
         },
         Finding {
             example: example.into(),
             measure: "penalty p (bound active)".into(),
             value: active.penalty,
             paper: None,
+            detail: false,
         },
         Finding {
             example: example.into(),
             measure: "seed's p = H(q*)/eps".into(),
             value: seed.penalty,
             paper: None,
+            detail: false,
         },
-    ])
+    ];
+    findings.extend(per_point);
+    Ok(findings)
 }

@@ -3,7 +3,7 @@
 //! §1.4, §1.6).
 
 use super::data::{aircraft_15x31, contour_53, contour_csv, grid_csv};
-use super::Finding;
+use super::{Finding, Output};
 use anyhow::Result;
 use karkas::ll::{LlCurve, LlSurface};
 use karkas::section::{Plane, Section, SectionOptions, Sectioner};
@@ -15,13 +15,6 @@ use karkas_io::write::{write_atomic, write_curve_csv};
 use std::path::Path;
 
 const ORDER: usize = 5;
-
-/// Runs both examples into `out`.
-pub fn run(out: &Path) -> Result<Vec<Finding>> {
-    let mut findings = contour(out)?;
-    findings.extend(aircraft(out)?);
-    Ok(findings)
-}
 
 fn write_text(path: &Path, text: &str) -> Result<()> {
     write_atomic(path, |w| w.write_all(text.as_bytes()))?;
@@ -35,15 +28,15 @@ fn sample<const D: usize>(curve: &LlCurve<D>, n: usize) -> (Vec<f64>, Vec<Point<
     (ts, pts)
 }
 
-fn contour(out: &Path) -> Result<Vec<Finding>> {
+pub fn contour(out: &Output) -> Result<Vec<Finding>> {
     let points = contour_53();
-    write_text(&out.join("contour-53.csv"), &contour_csv(&points))?;
+    write_text(&out.file("contour-53.csv"), &contour_csv(&points))?;
     let approx = LlCurve::new(&points, ORDER, true)?;
     let interp = LlCurve::interpolating(&points, ORDER, true)?;
     let (ts, samples) = sample(&approx, 2000);
-    write_curve_csv(&out.join("contour-ll5.csv"), &ts, &samples)?;
+    write_curve_csv(&out.file("contour-ll5.csv"), &ts, &samples)?;
     write_curve_svg(
-        &out.join("contour-ll5.svg"),
+        &out.file("contour-ll5.svg"),
         &CurvePlot {
             title: "Seed 000: LL curve, L = 5, through a 53-point contour",
             curve: &samples,
@@ -53,7 +46,7 @@ fn contour(out: &Path) -> Result<Vec<Finding>> {
     )?;
     let (_, interp_samples) = sample(&interp, 2000);
     write_curve_svg(
-        &out.join("contour-ll5-interpolating.svg"),
+        &out.file("contour-ll5-interpolating.svg"),
         &CurvePlot {
             title: "Seed 000: interpolating LL curve, L = 5",
             curve: &interp_samples,
@@ -87,24 +80,28 @@ fn contour(out: &Path) -> Result<Vec<Finding>> {
             measure: "max |P(t_i) - r_i - d_L D_i| (formula 5)".into(),
             value: node_error,
             paper: None,
+            detail: false,
         },
         Finding {
             example: "000 contour, 53 points, L = 5".into(),
             measure: "dip below the flat bottom, approximating".into(),
             value: dip(&samples),
             paper: None,
+            detail: false,
         },
         Finding {
             example: "000 contour, interpolating".into(),
             measure: "max |P(t_i) - p_i|".into(),
             value: interp_error,
             paper: None,
+            detail: false,
         },
         Finding {
             example: "000 contour, interpolating".into(),
             measure: "dip below the flat bottom, interpolating".into(),
             value: dip(&interp_samples),
             paper: None,
+            detail: false,
         },
     ])
 }
@@ -138,9 +135,9 @@ fn polylines(section: &Section<3>) -> Vec<Vec<Point3>> {
         .collect()
 }
 
-fn aircraft(out: &Path) -> Result<Vec<Finding>> {
+pub fn aircraft(out: &Output) -> Result<Vec<Finding>> {
     let grid = aircraft_15x31();
-    write_text(&out.join("aircraft-15x31.csv"), &grid_csv(&grid))?;
+    write_text(&out.file("aircraft-15x31.csv"), &grid_csv(&grid))?;
     let surface = LlSurface::new(&grid, ORDER, false, false)?;
     let (au, av) = (surface.axis_u(), surface.axis_v());
 
@@ -175,7 +172,7 @@ fn aircraft(out: &Path) -> Result<Vec<Finding>> {
     let mut vs = vec![0.0; nv];
     let mut mesh = vec![Point3::ZERO; nu * nv];
     surface.sample_grid_into(&mut us, &mut vs, &mut mesh);
-    write_surface_obj(&out.join("aircraft-ll5.obj"), nu, nv, &mesh)?;
+    write_surface_obj(&out.file("aircraft-ll5.obj"), nu, nv, &mesh)?;
     let scene = Scene {
         title: "Seed 000: LL surface, L = 5, of the aircraft-like body (right half): \
                 15 sections x = const, 11 sections y = const",
@@ -200,14 +197,14 @@ fn aircraft(out: &Path) -> Result<Vec<Finding>> {
         ],
         view: AIRCRAFT_VIEW,
     };
-    write_scene_svg(&out.join("aircraft-ll5-view.svg"), &scene)?;
-    write_scene_png(&out.join("aircraft-ll5-view.png"), &scene)?;
+    write_scene_svg(&out.file("aircraft-ll5-view.svg"), &scene)?;
+    write_scene_png(&out.file("aircraft-ll5-view.png"), &scene)?;
     let body_plan: Vec<Vec<Point2>> = stations
         .iter()
         .map(|s| s.iter().map(|p| Point2::new([p[1], p[2]])).collect())
         .collect();
     write_lines_svg(
-        &out.join("aircraft-ll5-sections.svg"),
+        &out.file("aircraft-ll5-sections.svg"),
         &LinesPlot {
             title: "Seed 000: the 15 sections x = const (body plan, y-z)",
             axes: ("y", "z"),
@@ -233,12 +230,14 @@ fn aircraft(out: &Path) -> Result<Vec<Finding>> {
             measure: "max corner error (corners interpolated)".into(),
             value: corner_error,
             paper: None,
+            detail: false,
         },
         Finding {
             example: "000 aircraft sections".into(),
             measure: "max distance of section points from their plane".into(),
             value: plane_error,
             paper: None,
+            detail: false,
         },
         Finding {
             example: "000 aircraft sections".into(),
@@ -249,12 +248,14 @@ fn aircraft(out: &Path) -> Result<Vec<Finding>> {
                 f64::NAN
             },
             paper: None,
+            detail: false,
         },
         Finding {
             example: "000 aircraft sections".into(),
             measure: "pieces: y = const (traced)".into(),
             value: buttocks.len() as f64,
             paper: None,
+            detail: false,
         },
     ])
 }

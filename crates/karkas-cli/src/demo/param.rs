@@ -3,16 +3,17 @@
 //! the paper's figures beside ours. Writes every frame's nodes (grid CSV) and interpolant
 //! (OBJ mesh).
 
-use super::Finding;
+use super::{Finding, Output};
 use anyhow::{Context, Result};
 use karkas::param::experiments::{helix_experiment, seed_experiments, SeedExperiment};
+use karkas::param::BicubicSurface;
 use karkas::{Point3, Surface};
 use karkas_io::obj::write_surface_obj;
+use karkas_io::scene::{write_scene_svg, Scene, SceneCurves, SceneMesh, View};
 use karkas_io::write::write_grid_csv;
-use std::path::Path;
 
 /// Runs the seven rows of the seed's table and the extra helix frame into `out`.
-pub fn run(out: &Path) -> Result<Vec<Finding>> {
+pub fn run(out: &Output) -> Result<Vec<Finding>> {
     let mut findings = Vec::new();
     for row in seed_experiments()
         .into_iter()
@@ -32,12 +33,12 @@ fn slug(label: &str) -> String {
     format!("004-{}", words.join("-"))
 }
 
-fn experiment(out: &Path, row: &SeedExperiment) -> Result<Finding> {
+fn experiment(out: &Output, row: &SeedExperiment) -> Result<Finding> {
     let outcome = row
         .run()
         .with_context(|| format!("seed 004, {}", row.label))?;
     let name = slug(row.label);
-    write_grid_csv(&out.join(format!("{name}-nodes.csv")), &outcome.nodes)?;
+    write_grid_csv(&out.file(format!("{name}-nodes.csv")), &outcome.nodes)?;
     let (nu, nv) = (41, 121);
     let mut us = vec![0.0; nu];
     let mut vs = vec![0.0; nv];
@@ -45,11 +46,56 @@ fn experiment(out: &Path, row: &SeedExperiment) -> Result<Finding> {
     outcome
         .surface
         .sample_grid_into(&mut us, &mut vs, &mut mesh);
-    write_surface_obj(&out.join(format!("{name}.obj")), nu, nv, &mesh)?;
+    write_surface_obj(&out.file(format!("{name}.obj")), nu, nv, &mesh)?;
+    let frame = frame_lines(&outcome.surface);
+    let title = format!(
+        "Seed 004: {}, bicubic interpolant of the 5 x 9 frame, Hausdorff error {:.4}",
+        row.label, outcome.error.distance
+    );
+    write_scene_svg(
+        &out.file(format!("{name}.svg")),
+        &Scene {
+            title: &title,
+            mesh: SceneMesh {
+                rows: nu,
+                cols: nv,
+                points: &mesh,
+            },
+            curves: &[SceneCurves {
+                label: "parameter lines through the nodes",
+                lines: &frame,
+                rgb: (20, 60, 200),
+                width: 1.4,
+            }],
+            view: View {
+                azimuth: 30.0,
+                elevation: 25.0,
+            },
+        },
+    )?;
     Ok(Finding {
         example: format!("004 {}", row.label),
         measure: "two-sided Hausdorff error, 5 x 9 frame".into(),
         value: outcome.error.distance,
         paper: row.paper_error,
+        detail: false,
     })
+}
+
+/// The interpolant's lines through the nodes: the parameter lines at every knot, sampled
+/// densely so that they lie on the surface.
+fn frame_lines(surface: &BicubicSurface<3>) -> Vec<Vec<Point3>> {
+    const SAMPLES: usize = 97;
+    let (du, dv) = (surface.domain_u(), surface.domain_v());
+    let along_v = surface.knots_u().iter().map(|&u| {
+        (0..SAMPLES)
+            .map(|k| surface.eval(u, dv.uniform(k, SAMPLES)))
+            .collect()
+    });
+    let along_u = surface.knots_v().iter().map(|&v| {
+        (0..SAMPLES)
+            .map(|k| surface.eval(du.uniform(k, SAMPLES), v))
+            .collect()
+    });
+    along_v.chain(along_u).collect()
 }

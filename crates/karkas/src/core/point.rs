@@ -12,7 +12,10 @@
 use core::ops::{Add, AddAssign, Index, IndexMut, Mul, MulAssign, Neg, Sub, SubAssign};
 
 /// A point (or vector) in R^D, stored as `[f64; D]`.
-#[derive(Clone, Copy, Debug, PartialEq)]
+///
+/// `Pod` and `Zeroable` let a flat `&[f64]` of `D * n` numbers be viewed as `&[Point<D>]`
+/// (and back) without copying, e.g. `bytemuck::cast_slice`.
+#[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
 #[repr(transparent)]
 pub struct Point<const D: usize>(pub [f64; D]);
 

@@ -1,0 +1,91 @@
+//! `karkas demo`: the report lists every example of the five papers, the cylinder row of
+//! seed 004 lands where the paper's figure is, and every file the report names exists.
+
+mod common;
+
+use common::{karkas, s, stderr};
+use serde_json::Value;
+
+/// The examples the demo promises (issue contract: scripts read report.json by these ids).
+const EXAMPLES: [&str; 8] = [
+    "ll-contour",
+    "ll-aircraft",
+    "coons-fig3",
+    "coons-fuselage",
+    "dps-five-petal",
+    "dps-knotted-tube",
+    "fit-hydrofoil",
+    "param-cylinder-hyperboloid",
+];
+
+#[test]
+fn demo_writes_a_complete_report() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("demo");
+    let run = karkas(&["demo", "--out", s(&out)]);
+    assert!(run.status.success(), "demo failed: {}", stderr(&run));
+
+    let report: Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("report.json")).unwrap()).unwrap();
+    let examples = report["examples"].as_array().unwrap();
+    let ids: Vec<&str> = examples.iter().map(|e| e["id"].as_str().unwrap()).collect();
+    assert_eq!(ids, EXAMPLES);
+
+    for e in examples {
+        assert!(
+            !e["rows"].as_array().unwrap().is_empty(),
+            "{} has no rows",
+            e["id"]
+        );
+        for kind in ["pictures", "viewers", "data"] {
+            for f in e[kind].as_array().unwrap() {
+                let name = f.as_str().unwrap();
+                let len = std::fs::metadata(out.join(name)).map(|m| m.len());
+                assert!(matches!(len, Ok(n) if n > 0), "{name} missing or empty");
+            }
+        }
+        assert!(
+            !e["pictures"].as_array().unwrap().is_empty(),
+            "{} has no picture",
+            e["id"]
+        );
+    }
+
+    // Seed 004's table: the cylinder frame along the lines of curvature, paper 0.011.
+    let cylinder = examples
+        .iter()
+        .flat_map(|e| e["rows"].as_array().unwrap())
+        .find(|r| r["example"].as_str() == Some("004 cylinder, lines of curvature"))
+        .expect("the cylinder row");
+    let value = cylinder["karkas"].as_f64().unwrap();
+    assert!((0.008..=0.013).contains(&value), "cylinder {value}");
+    assert_eq!(cylinder["paper"].as_f64(), Some(0.011));
+    let ratio = cylinder["ratio"].as_f64().unwrap();
+    assert!((ratio - value / 0.011).abs() < 1e-12);
+
+    // Every paper's figure is in a row with its ratio.
+    let paper_rows = examples
+        .iter()
+        .flat_map(|e| e["rows"].as_array().unwrap())
+        .filter(|r| r["paper"].is_number())
+        .count();
+    // Seed 004: 7 table entries; seed 003: 20 per-point deviations and their maximum.
+    assert_eq!(paper_rows, 7 + 21);
+
+    let html = std::fs::read_to_string(out.join("index.html")).unwrap();
+    for seed in ["000", "001", "002", "003", "004"] {
+        assert!(html.contains(&format!("id=\"seed-{seed}\"")), "seed {seed}");
+    }
+    assert!(html.contains("report.json"));
+}
+
+#[test]
+fn demo_into_a_file_is_an_error() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("taken");
+    std::fs::write(&file, "keep").unwrap();
+    let run = karkas(&["demo", "--out", s(&file)]);
+    assert_eq!(run.status.code(), Some(2));
+    assert_eq!(std::fs::read_to_string(&file).unwrap(), "keep");
+    assert!(stderr(&run).contains("taken"), "{}", stderr(&run));
+}

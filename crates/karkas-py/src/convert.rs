@@ -1,0 +1,255 @@
+//! NumPy arrays to karkas points and grids and back, and karkas errors to Python exceptions.
+//!
+//! Input arrays are read in place when they are C-contiguous float64 (anything else array-like
+//! is converted once by NumPy). Output arrays are written in place: a flat `&mut [f64]` of a
+//! C-contiguous `(..., d)` array is viewed as `&mut [Point<D>]` (`Point<D>` is
+//! `#[repr(transparent)]` over `[f64; D]` and `Pod`), so evaluation stores straight into the
+//! caller's memory.
+
+use std::borrow::Cow;
+
+use karkas::{Grid, Point};
+use numpy::{
+    AllowTypeChange, PyArrayDyn, PyArrayLike1, PyArrayLike2, PyArrayLike3, PyArrayLikeDyn,
+    PyArrayMethods, PyUntypedArrayMethods,
+};
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+
+/// Evaluations of at least this many points run with the GIL released (below it the release
+/// costs more than it frees).
+pub const DETACH_ABOVE: usize = 4096;
+
+/// A karkas error as a Python `ValueError` carrying the library's message.
+pub fn value_error(e: karkas::Error) -> PyErr {
+    PyValueError::new_err(e.to_string())
+}
+
+/// A Python `ValueError` with `message`.
+pub fn invalid(message: impl Into<String>) -> PyErr {
+    PyValueError::new_err(message.into())
+}
+
+/// Runs `f` with the GIL released when `work` is large.
+pub fn maybe_detach<T: Send, F: FnOnce() -> T + Send>(py: Python<'_>, work: usize, f: F) -> T {
+    if work >= DETACH_ABOVE {
+        py.detach(f)
+    } else {
+        f()
+    }
+}
+
+/// Points of a float64 array of shape `(n, d)`, borrowed when contiguous.
+pub struct PointsArray<'py> {
+    array: PyArrayLike2<'py, f64, AllowTypeChange>,
+}
+
+impl<'py> PointsArray<'py> {
+    /// Reads `obj` (anything `numpy.asarray` accepts) as a 2-D float64 array.
+    pub fn extract(obj: &Bound<'py, PyAny>, what: &str) -> PyResult<Self> {
+        let array: PyArrayLike2<'py, f64, AllowTypeChange> = obj.extract().map_err(|_| {
+            invalid(format!(
+                "{what} must be a 2-D float array of shape (n, d) with d in {{2, 3}}"
+            ))
+        })?;
+        Ok(PointsArray { array })
+    }
+
+    /// The dimension `d` (the number of columns).
+    pub fn dim(&self) -> usize {
+        self.array.shape()[1]
+    }
+
+    /// The number of points.
+    pub fn len(&self) -> usize {
+        self.array.shape()[0]
+    }
+
+    /// The coordinates as a flat row-major slice (copied only when not contiguous).
+    pub fn flat(&self) -> Cow<'_, [f64]> {
+        match self.array.as_slice() {
+            Ok(s) => Cow::Borrowed(s),
+            Err(_) => Cow::Owned(self.array.as_array().iter().copied().collect()),
+        }
+    }
+}
+
+/// The dimension of `d` columns, or a `ValueError` naming `what`.
+pub fn check_dim(d: usize, what: &str) -> PyResult<usize> {
+    match d {
+        2 | 3 => Ok(d),
+        _ => Err(invalid(format!(
+            "{what} must have 2 or 3 coordinates per point (got {d})"
+        ))),
+    }
+}
+
+/// A flat slice of `D * n` numbers as `n` points.
+pub fn as_points<const D: usize>(flat: &[f64]) -> &[Point<D>] {
+    bytemuck::cast_slice(flat)
+}
+
+/// A flat mutable slice of `D * n` numbers as `n` points.
+pub fn as_points_mut<const D: usize>(flat: &mut [f64]) -> &mut [Point<D>] {
+    bytemuck::cast_slice_mut(flat)
+}
+
+/// Points as a flat slice of `D * n` numbers.
+pub fn flatten<const D: usize>(points: &[Point<D>]) -> &[f64] {
+    bytemuck::cast_slice(points)
+}
+
+/// A grid of points of shape `(nu, nv, d)`.
+pub struct GridArray<'py> {
+    array: PyArrayLike3<'py, f64, AllowTypeChange>,
+}
+
+impl<'py> GridArray<'py> {
+    /// Reads `obj` as a 3-D float64 array.
+    pub fn extract(obj: &Bound<'py, PyAny>, what: &str) -> PyResult<Self> {
+        let array: PyArrayLike3<'py, f64, AllowTypeChange> = obj.extract().map_err(|_| {
+            invalid(format!(
+                "{what} must be a 3-D float array of shape (nu, nv, d) with d in {{2, 3}}"
+            ))
+        })?;
+        Ok(GridArray { array })
+    }
+
+    /// The dimension `d`.
+    pub fn dim(&self) -> usize {
+        self.array.shape()[2]
+    }
+
+    /// The grid (rows along `u`) as karkas points.
+    pub fn grid<const D: usize>(&self) -> PyResult<Grid<Point<D>>> {
+        let shape = self.array.shape();
+        let flat: Vec<f64> = match self.array.as_slice() {
+            Ok(s) => s.to_vec(),
+            Err(_) => self.array.as_array().iter().copied().collect(),
+        };
+        let points: Vec<Point<D>> = as_points::<D>(&flat).to_vec();
+        Grid::from_row_major(shape[0], shape[1], points).map_err(value_error)
+    }
+}
+
+/// A 1-D float64 array of parameters (or knots).
+pub fn extract_vector(obj: &Bound<'_, PyAny>, what: &str) -> PyResult<Vec<f64>> {
+    let array: PyArrayLike1<'_, f64, AllowTypeChange> = obj
+        .extract()
+        .map_err(|_| invalid(format!("{what} must be a 1-D float array")))?;
+    Ok(match array.as_slice() {
+        Ok(s) => s.to_vec(),
+        Err(_) => array.as_array().iter().copied().collect(),
+    })
+}
+
+/// Parameters given as a scalar or an array of any shape.
+pub enum Params<'py> {
+    /// One parameter: the result has shape `(d,)`.
+    Scalar(f64),
+    /// An array: the result has shape `params.shape + (d,)`.
+    Array(PyArrayLikeDyn<'py, f64, AllowTypeChange>),
+}
+
+impl<'py> Params<'py> {
+    /// Reads `obj` as a Python number or an array of numbers.
+    pub fn extract(obj: &Bound<'py, PyAny>, what: &str) -> PyResult<Self> {
+        if let Ok(t) = obj.extract::<f64>() {
+            if obj.cast::<numpy::PyUntypedArray>().is_err() {
+                return Ok(Params::Scalar(t));
+            }
+        }
+        let array: PyArrayLikeDyn<'py, f64, AllowTypeChange> = obj
+            .extract()
+            .map_err(|_| invalid(format!("{what} must be a float or an array of floats")))?;
+        Ok(Params::Array(array))
+    }
+
+    /// The shape of the parameters (empty for a scalar).
+    pub fn shape(&self) -> Vec<usize> {
+        match self {
+            Params::Scalar(_) => Vec::new(),
+            Params::Array(a) => a.shape().to_vec(),
+        }
+    }
+
+    /// The parameters as a flat slice (copied only when not contiguous).
+    pub fn flat(&self) -> Cow<'_, [f64]> {
+        match self {
+            Params::Scalar(t) => Cow::Owned(vec![*t]),
+            Params::Array(a) => match a.as_slice() {
+                Ok(s) => Cow::Borrowed(s),
+                Err(_) => Cow::Owned(a.as_array().iter().copied().collect()),
+            },
+        }
+    }
+}
+
+/// The output array of shape `shape`: `out` checked (float64, C-contiguous, writeable, that
+/// shape) or a new zeroed one.
+pub fn output_array<'py>(
+    py: Python<'py>,
+    out: Option<Bound<'py, PyAny>>,
+    shape: &[usize],
+) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+    let Some(out) = out else {
+        return Ok(PyArrayDyn::<f64>::zeros(py, shape, false));
+    };
+    let array = out
+        .cast_into::<PyArrayDyn<f64>>()
+        .map_err(|_| invalid("out must be a float64 numpy.ndarray"))?;
+    if array.shape() != shape {
+        return Err(invalid(format!(
+            "out has shape {:?}, expected {:?}",
+            array.shape(),
+            shape
+        )));
+    }
+    if !array.is_c_contiguous() {
+        return Err(invalid("out must be C-contiguous"));
+    }
+    Ok(array)
+}
+
+/// Runs `write` on the flat contents of `array` (checked C-contiguous and writeable).
+pub fn write_flat<R>(
+    array: &Bound<'_, PyArrayDyn<f64>>,
+    write: impl FnOnce(&mut [f64]) -> R,
+) -> PyResult<R> {
+    let mut rw = array.try_readwrite().map_err(|e| {
+        invalid(format!(
+            "out cannot be written ({e}): is it read-only or does it share memory with the input?"
+        ))
+    })?;
+    let flat = rw
+        .as_slice_mut()
+        .map_err(|_| invalid("out must be C-contiguous"))?;
+    Ok(write(flat))
+}
+
+/// A new `(n, d)` float64 array holding `points`.
+pub fn points_to_array<'py, const D: usize>(
+    py: Python<'py>,
+    points: &[Point<D>],
+) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+    let array = PyArrayDyn::<f64>::zeros(py, &[points.len(), D][..], false);
+    write_flat(&array, |flat| flat.copy_from_slice(flatten(points)))?;
+    Ok(array)
+}
+
+/// A new `(nu, nv, d)` float64 array holding `grid`.
+pub fn grid_to_array<'py, const D: usize>(
+    py: Python<'py>,
+    grid: &Grid<Point<D>>,
+) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+    let array = PyArrayDyn::<f64>::zeros(py, &[grid.rows(), grid.cols(), D][..], false);
+    write_flat(&array, |flat| {
+        flat.copy_from_slice(flatten(grid.as_slice()))
+    })?;
+    Ok(array)
+}
+
+/// A new 1-D float64 array holding `values`.
+pub fn vector_to_array<'py>(py: Python<'py>, values: &[f64]) -> Bound<'py, PyArrayDyn<f64>> {
+    numpy::PyArray1::from_slice(py, values).to_dyn().clone()
+}

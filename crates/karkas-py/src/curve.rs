@@ -1,0 +1,184 @@
+//! The Python base class `Curve`: vectorized evaluation of any karkas curve in 2-D or 3-D.
+//!
+//! Every concrete curve class (`LLCurve`, `CubicSpline`, `HermiteSpline`, ...) extends it and
+//! hands it a [`CurveImpl`]: the curve behind a dimension-free interface that evaluates whole
+//! parameter arrays into flat output buffers (one dynamic call per batch, the library's
+//! `eval_into` inside).
+
+use std::sync::Arc;
+
+use karkas::PiecewiseCurve;
+use numpy::PyArrayDyn;
+use pyo3::prelude::*;
+
+use crate::convert::{as_points_mut, maybe_detach, output_array, write_flat, Params};
+
+/// A karkas curve of either dimension, evaluated on flat buffers.
+pub trait CurveImpl: Send + Sync {
+    /// The dimension `d` (2 or 3).
+    fn dim(&self) -> usize;
+    /// The parameter domain `(a, b)`.
+    fn domain(&self) -> (f64, f64);
+    /// True for a closed curve (evaluation wraps by the period).
+    fn closed(&self) -> bool;
+    /// The parameters where the pieces meet, ends included.
+    fn breakpoints(&self) -> Vec<f64>;
+    /// The order of continuity at the breakpoints.
+    fn continuity(&self) -> usize;
+    /// Writes the `k`-th derivative (0: the point) at every `ts[i]` into `out[d i..d i + d]`.
+    fn eval_flat(&self, ts: &[f64], k: usize, out: &mut [f64]);
+}
+
+/// A karkas curve of dimension `D` behind [`CurveImpl`].
+pub struct Wrapped<C, const D: usize>(pub C);
+
+impl<C, const D: usize> CurveImpl for Wrapped<C, D>
+where
+    C: PiecewiseCurve<D> + Send + Sync,
+{
+    fn dim(&self) -> usize {
+        D
+    }
+    fn domain(&self) -> (f64, f64) {
+        let d = self.0.domain();
+        (d.start, d.end)
+    }
+    fn closed(&self) -> bool {
+        self.0.is_closed()
+    }
+    fn breakpoints(&self) -> Vec<f64> {
+        self.0.breakpoints()
+    }
+    fn continuity(&self) -> usize {
+        self.0.continuity()
+    }
+    fn eval_flat(&self, ts: &[f64], k: usize, out: &mut [f64]) {
+        let out = as_points_mut::<D>(out);
+        if k == 0 {
+            self.0.eval_into(ts, out);
+        } else {
+            self.0.deriv_into(ts, k, out);
+        }
+    }
+}
+
+/// Base class of every karkas curve.
+///
+/// Calling a curve evaluates it: `c(t)` with a float `t` gives an array of shape `(d,)`, with an
+/// array of any shape an array of shape `t.shape + (d,)`. `out=` takes a preallocated
+/// C-contiguous float64 array of that shape and writes into it without allocating (it is
+/// returned). Parameters outside the domain are clamped (open curves, except cubic splines,
+/// which extend their end pieces) or wrapped (closed curves).
+#[pyclass(subclass, module = "karkas", name = "Curve", frozen)]
+pub struct PyCurve {
+    pub inner: Arc<dyn CurveImpl>,
+    /// What the object is, for `repr` (e.g. `LLCurve(order=5, closed=False, points=53, dim=2)`).
+    pub description: String,
+}
+
+impl PyCurve {
+    /// The base part of a curve object.
+    pub fn new(inner: Arc<dyn CurveImpl>, description: String) -> Self {
+        PyCurve { inner, description }
+    }
+
+    fn evaluate<'py>(
+        &self,
+        py: Python<'py>,
+        t: &Bound<'py, PyAny>,
+        k: usize,
+        out: Option<Bound<'py, PyAny>>,
+    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        let params = Params::extract(t, "t")?;
+        let mut shape = params.shape();
+        shape.push(self.inner.dim());
+        let array = output_array(py, out, &shape)?;
+        let ts = params.flat();
+        let inner = &self.inner;
+        write_flat(&array, |flat| {
+            maybe_detach(py, ts.len(), || inner.eval_flat(&ts, k, flat))
+        })?;
+        Ok(array)
+    }
+}
+
+#[pymethods]
+impl PyCurve {
+    /// c(t, out=None): the curve at `t` (float -> (d,), array -> t.shape + (d,)).
+    #[pyo3(signature = (t, out = None))]
+    fn __call__<'py>(
+        &self,
+        py: Python<'py>,
+        t: &Bound<'py, PyAny>,
+        out: Option<Bound<'py, PyAny>>,
+    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        self.evaluate(py, t, 0, out)
+    }
+
+    /// c.derivative(t, k=1, out=None): the k-th derivative with respect to the parameter.
+    #[pyo3(signature = (t, k = 1, out = None))]
+    fn derivative<'py>(
+        &self,
+        py: Python<'py>,
+        t: &Bound<'py, PyAny>,
+        k: usize,
+        out: Option<Bound<'py, PyAny>>,
+    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        self.evaluate(py, t, k, out)
+    }
+
+    /// c.sample(n): `n` points at uniformly spaced parameters over the domain, shape (n, d).
+    fn sample<'py>(&self, py: Python<'py>, n: usize) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        let (a, b) = self.inner.domain();
+        let ts: Vec<f64> = (0..n)
+            .map(|i| {
+                if n == 1 {
+                    a
+                } else {
+                    a + (b - a) * i as f64 / (n - 1) as f64
+                }
+            })
+            .collect();
+        let array = PyArrayDyn::<f64>::zeros(py, &[n, self.inner.dim()][..], false);
+        let inner = &self.inner;
+        write_flat(&array, |flat| {
+            maybe_detach(py, n, || inner.eval_flat(&ts, 0, flat))
+        })?;
+        Ok(array)
+    }
+
+    /// The parameter domain (a, b).
+    #[getter]
+    fn domain(&self) -> (f64, f64) {
+        self.inner.domain()
+    }
+
+    /// The dimension d (2 or 3).
+    #[getter]
+    fn dim(&self) -> usize {
+        self.inner.dim()
+    }
+
+    /// True when the curve is closed (evaluation wraps by the period).
+    #[getter]
+    fn closed(&self) -> bool {
+        self.inner.closed()
+    }
+
+    /// The parameters where the polynomial pieces meet, ends included.
+    #[getter]
+    fn breakpoints<'py>(&self, py: Python<'py>) -> Bound<'py, PyArrayDyn<f64>> {
+        crate::convert::vector_to_array(py, &self.inner.breakpoints())
+    }
+
+    /// The order of continuity at the breakpoints (C^k).
+    #[getter]
+    fn continuity(&self) -> usize {
+        self.inner.continuity()
+    }
+
+    fn __repr__(&self) -> String {
+        let (a, b) = self.inner.domain();
+        format!("{}, domain=({a}, {b})>", self.description)
+    }
+}

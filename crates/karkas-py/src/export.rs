@@ -1,0 +1,83 @@
+//! Exports through karkas-io: OBJ and binary STL meshes of sampled surfaces, CSV of curve and
+//! surface samples. Files are written atomically (nothing is left behind on failure).
+
+use std::path::PathBuf;
+
+use karkas::Point3;
+use karkas_io::obj::write_surface_obj;
+use karkas_io::stl::write_surface_stl;
+use karkas_io::write::{write_curve_csv, write_surface_csv};
+use pyo3::exceptions::PyOSError;
+use pyo3::prelude::*;
+
+use crate::convert::{as_points, check_dim, extract_vector, invalid, GridArray, PointsArray};
+use crate::curves::by_dim;
+
+fn os_error(e: karkas_io::IoError) -> PyErr {
+    PyOSError::new_err(e.to_string())
+}
+
+/// A (nu, nv, 3) grid of points.
+fn grid3(grid: &Bound<'_, PyAny>) -> PyResult<(usize, usize, Vec<Point3>)> {
+    let g = GridArray::extract(grid, "grid")?;
+    if g.dim() != 3 {
+        return Err(invalid(format!(
+            "grid must have 3 coordinates per point (got {})",
+            g.dim()
+        )));
+    }
+    let grid = g.grid::<3>()?;
+    Ok((grid.rows(), grid.cols(), grid.into_vec()))
+}
+
+/// export_obj(path, grid): writes a sampled surface (nu, nv, 3), e.g. S.sample(nu, nv), as an
+/// OBJ mesh of quads.
+#[pyfunction]
+pub fn export_obj(py: Python<'_>, path: PathBuf, grid: &Bound<'_, PyAny>) -> PyResult<()> {
+    let (nu, nv, points) = grid3(grid)?;
+    py.detach(|| write_surface_obj(&path, nu, nv, &points))
+        .map_err(os_error)
+}
+
+/// export_stl(path, grid): writes a sampled surface (nu, nv, 3) as a binary STL mesh.
+#[pyfunction]
+pub fn export_stl(py: Python<'_>, path: PathBuf, grid: &Bound<'_, PyAny>) -> PyResult<()> {
+    let (nu, nv, points) = grid3(grid)?;
+    py.detach(|| write_surface_stl(&path, nu, nv, &points))
+        .map_err(os_error)
+}
+
+/// export_curve_csv(path, t, points): writes curve samples as CSV with header t,x,y or
+/// t,x,y,z (points (n, d) at parameters t (n,)).
+#[pyfunction]
+pub fn export_curve_csv(
+    py: Python<'_>,
+    path: PathBuf,
+    t: &Bound<'_, PyAny>,
+    points: &Bound<'_, PyAny>,
+) -> PyResult<()> {
+    let ts = extract_vector(t, "t")?;
+    let pts = PointsArray::extract(points, "points")?;
+    let dim = check_dim(pts.dim(), "points")?;
+    let flat = pts.flat();
+    by_dim!(dim, D => {
+        let p = as_points::<D>(&flat);
+        py.detach(|| write_curve_csv(&path, &ts, p)).map_err(os_error)
+    })
+}
+
+/// export_surface_csv(path, u, v, grid): writes surface samples as CSV with header u,v,x,y,z
+/// (grid (len(u), len(v), 3), e.g. S(u, v)).
+#[pyfunction]
+pub fn export_surface_csv(
+    py: Python<'_>,
+    path: PathBuf,
+    u: &Bound<'_, PyAny>,
+    v: &Bound<'_, PyAny>,
+    grid: &Bound<'_, PyAny>,
+) -> PyResult<()> {
+    let (us, vs) = (extract_vector(u, "u")?, extract_vector(v, "v")?);
+    let (_, _, points) = grid3(grid)?;
+    py.detach(|| write_surface_csv(&path, &us, &vs, &points))
+        .map_err(os_error)
+}

@@ -1,0 +1,58 @@
+//! `karkas` for Python: the karkas library's curves and surfaces on NumPy arrays.
+//!
+//! Built by maturin into the Python module `karkas` (see `pyproject.toml`). Points are float64
+//! arrays of shape `(n, d)`, grids `(nu, nv, d)`, `d` in {2, 3}. Evaluation writes straight
+//! into the output array (`out=`) with the GIL released for large batches; construction with
+//! the GIL released too. Bad input raises `ValueError` with the library's message.
+
+mod convert;
+mod curve;
+mod curves;
+mod discrete;
+mod export;
+mod extras;
+mod surface;
+mod surfaces;
+
+use pyo3::prelude::*;
+
+/// karkas: smooth parametric curves and surfaces from point frames.
+///
+/// Curves (LLCurve, CubicSpline, HermiteSpline from fit_curve, ...) are called like SciPy's
+/// spline objects: c(t) -> points, c.derivative(t, k); surfaces S(u, v, grid=True). Arrays are
+/// float64, points (n, d), grids (nu, nv, d), d in {2, 3}.
+#[pymodule(name = "karkas")]
+fn karkas_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    m.add_class::<curve::PyCurve>()?;
+    m.add_class::<curves::PyLlCurve>()?;
+    m.add_class::<curves::PyCubicSpline>()?;
+    m.add_class::<curves::PyHermiteSpline>()?;
+    m.add_function(wrap_pyfunction!(curves::fit_curve, m)?)?;
+    m.add_class::<surface::PySurface>()?;
+    m.add_class::<surfaces::PyLlSurface>()?;
+    m.add_class::<surfaces::PyBicubicSurface>()?;
+    m.add_class::<discrete::PyDiscreteSpline>()?;
+    m.add_class::<discrete::PyTubeSurface>()?;
+    m.add_class::<extras::PyCoonsSurface>()?;
+    m.add_class::<extras::PySectionCurve>()?;
+    m.add_class::<extras::PyImplicitSurface>()?;
+    m.add_function(wrap_pyfunction!(extras::hausdorff, m)?)?;
+    m.add_function(wrap_pyfunction!(extras::hausdorff_to_implicit, m)?)?;
+    m.add_function(wrap_pyfunction!(extras::vary, m)?)?;
+    m.add_function(wrap_pyfunction!(extras::curve_parameters, m)?)?;
+    m.add_function(wrap_pyfunction!(extras::grid_parameters, m)?)?;
+    m.add_function(wrap_pyfunction!(export::export_obj, m)?)?;
+    m.add_function(wrap_pyfunction!(export::export_stl, m)?)?;
+    m.add_function(wrap_pyfunction!(export::export_curve_csv, m)?)?;
+    m.add_function(wrap_pyfunction!(export::export_surface_csv, m)?)?;
+    let names: Vec<String> = m
+        .dict()
+        .keys()
+        .iter()
+        .filter_map(|k| k.extract::<String>().ok())
+        .filter(|k| !k.starts_with('_') || k == "__version__")
+        .collect();
+    m.add("__all__", names)?;
+    Ok(())
+}
