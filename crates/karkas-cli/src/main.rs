@@ -37,6 +37,12 @@ enum Command {
     Vary(cmd::vary::VaryArgs),
     /// Reproduce the examples of the papers on built-in data.
     Demo(demo::DemoArgs),
+    /// Convert a mesh, grid or curve file into another format (by the output extension).
+    ///
+    /// A mesh (.obj .stl .ply) converts to .obj .stl .ply .vtk .glb .html; a grid CSV
+    /// (i,j,x,y,z or u,v,x,y,z) to those and .vts .svg .png .csv (i,j,x,y,z); curve points
+    /// (CSV x,y[,z], airfoil .dat) to .svg .png .html.
+    Convert(cmd::convert::ConvertArgs),
 }
 
 fn main() -> ExitCode {
@@ -70,6 +76,7 @@ fn main() -> ExitCode {
         Command::Section(args) => cmd::section::run(&args),
         Command::Vary(args) => cmd::vary::run(&args),
         Command::Demo(args) => demo::run(&args),
+        Command::Convert(args) => cmd::convert::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -358,7 +358,7 @@ fn bad_input_exits_2_naming_the_file_and_writes_nothing() {
     );
     // Unknown kind, unknown extension, output equal to an input.
     run("coons", &u, &v, &[], &["invalid value 'coons'"]);
-    let svg = dir.path().join("out.svg");
+    let svg = dir.path().join("out.dxf");
     let o = karkas(&[
         "surface",
         "coons",

@@ -24,11 +24,21 @@ pub enum OutputFormat {
     Step,
     /// An IGES file of exact B-spline geometry (`.iges` or `.igs`).
     Iges,
+    /// A Stanford PLY triangle mesh (`.ply`, binary little-endian).
+    Ply,
+    /// A legacy VTK file (`.vtk`): a structured grid for surfaces.
+    Vtk,
+    /// A VTK XML structured grid (`.vts`).
+    Vts,
+    /// A binary glTF 2.0 mesh (`.glb`).
+    Glb,
+    /// A self-contained 3-D viewer page (`.html`).
+    Html,
 }
 
 impl OutputFormat {
     /// All formats, in the order they are listed in messages.
-    const ALL: [OutputFormat; 7] = [
+    const ALL: [OutputFormat; 12] = [
         OutputFormat::Csv,
         OutputFormat::Svg,
         OutputFormat::Obj,
@@ -36,6 +46,21 @@ impl OutputFormat {
         OutputFormat::Png,
         OutputFormat::Step,
         OutputFormat::Iges,
+        OutputFormat::Ply,
+        OutputFormat::Vtk,
+        OutputFormat::Vts,
+        OutputFormat::Glb,
+        OutputFormat::Html,
+    ];
+
+    /// Every triangle-mesh format a sampled surface can be written in.
+    pub const MESHES: [OutputFormat; 6] = [
+        OutputFormat::Obj,
+        OutputFormat::Stl,
+        OutputFormat::Ply,
+        OutputFormat::Vtk,
+        OutputFormat::Vts,
+        OutputFormat::Glb,
     ];
 
     /// The exact CAD formats (STEP and IGES), for the commands whose result is a piecewise
@@ -61,7 +86,8 @@ impl OutputFormat {
             })
     }
 
-    /// The file extension, without the dot: `"csv"`, `"svg"`, `"obj"`, `"stl"` or `"png"`.
+    /// The file extension, without the dot: `"csv"`, `"svg"`, `"obj"`, `"stl"`, `"png"`,
+    /// `"ply"`, `"vtk"`, `"vts"`, `"glb"` or `"html"`.
     pub fn extension(self) -> &'static str {
         match self {
             OutputFormat::Csv => "csv",
@@ -71,6 +97,11 @@ impl OutputFormat {
             OutputFormat::Png => "png",
             OutputFormat::Step => "step",
             OutputFormat::Iges => "iges",
+            OutputFormat::Ply => "ply",
+            OutputFormat::Vtk => "vtk",
+            OutputFormat::Vts => "vts",
+            OutputFormat::Glb => "glb",
+            OutputFormat::Html => "html",
         }
     }
 

@@ -19,12 +19,15 @@
 //! - [`svg`]: pictures of a planar curve over its input points, of a discrete curve, and of
 //!   wireframes;
 //! - [`scene`]: a shaded surface in space with curves on it, hidden parts removed;
-//! - [`painter`]: a shaded picture of projected polygons and segments (painter's algorithm);
 //! - [`png`]: any of these pictures rendered to PNG (with a compiled-in font);
 //! - [`obj`]: a sampled surface as a Wavefront OBJ triangle mesh;
-//! - [`stl`]: a sampled surface as a binary STL triangle mesh;
+//! - [`stl`]: a sampled surface or a triangle mesh as binary or ASCII STL;
+//! - [`mesh`]: the triangle mesh every mesh writer takes, and [`mesh_io::write_mesh`] choosing
+//!   the writer by format: [`ply`] (PLY), [`vtk`] (legacy VTK and XML structured grids),
+//!   [`glb`] (binary glTF); [`mesh_io`] also reads OBJ, STL and PLY meshes back;
+//! - [`viewer`]: a self-contained HTML page showing surfaces and curves in 3-D.
 //! - [`step`] and [`iges`]: exact B-spline curves and surfaces ([`cad::CadEntity`], from
-//!   [`karkas::bspline`]) as STEP AP214 and IGES 5.3 (entities 126, 128) files.
+//!   [`karkas::bspline`]) as STEP AP214 and IGES 5.3 (entities 126, 128) files;
 //!
 //! Every error is an [`IoError`] naming the file and, where there is one, the 1-based line or
 //! the grid cell. No input, however malformed, makes these functions panic.
@@ -33,12 +36,15 @@ pub mod airfoil;
 pub mod cad;
 pub mod error;
 pub mod format;
+pub mod glb;
 pub mod grid;
 pub mod iges;
 pub mod mask;
+pub mod mesh;
+pub mod mesh_io;
 pub mod network;
 pub mod obj;
-pub mod painter;
+pub mod ply;
 pub mod png;
 pub mod points;
 pub mod pointset;
@@ -47,9 +53,19 @@ pub mod skeleton;
 pub mod step;
 pub mod stl;
 pub mod svg;
+pub mod viewer;
+pub mod vtk;
 pub mod write;
 
 mod lines;
 
 pub use error::{IoError, Location};
 pub use format::OutputFormat;
+
+/// The [`IoError::Write`] for a mesh that fails [`mesh::TriangleMesh::validate`].
+fn mesh_check(path: &std::path::Path, mesh: &mesh::TriangleMesh) -> Result<(), IoError> {
+    mesh.validate().map_err(|message| IoError::Write {
+        path: path.to_path_buf(),
+        source: std::io::Error::new(std::io::ErrorKind::InvalidInput, message),
+    })
+}

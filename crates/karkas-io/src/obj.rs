@@ -18,6 +18,7 @@ use std::path::Path;
 use karkas::{Point, Point3};
 
 use crate::error::IoError;
+use crate::mesh::TriangleMesh;
 use crate::write::write_atomic;
 
 /// Writes the `nu x nv` sample grid `points` (row-major, `u` outer) as an OBJ mesh at `path`,
@@ -73,6 +74,45 @@ pub fn render_surface_obj(
             writeln!(out, "f {p}//{p} {q}//{q} {r}//{r}")?;
             writeln!(out, "f {p}//{p} {r}//{r} {s}//{s}")?;
         }
+    }
+    Ok(())
+}
+
+/// The unit normals of every sample of the `nu x nv` grid `points` (`points.len() == nu nv`),
+/// row-major (see the module docs): `d/du x d/dv`, or `0 0 1` where that vanishes.
+pub(crate) fn grid_normals(nu: usize, nv: usize, points: &[Point3]) -> Vec<Point3> {
+    let grid = SampleGrid::new(nu, nv, points);
+    (0..nu)
+        .flat_map(|a| (0..nv).map(move |b| (a, b)))
+        .map(|(a, b)| grid.normal(a, b))
+        .collect()
+}
+
+/// Writes the triangle mesh `mesh` as OBJ at `path`, atomically: `v`, `vn` (the mesh's
+/// normals, or face-averaged ones, see [`TriangleMesh::vertex_normals`]) and `f a//a b//b c//c`
+/// lines. A mesh failing [`TriangleMesh::validate`] is an [`IoError::Write`], nothing written.
+pub fn write_mesh_obj(path: &Path, mesh: &TriangleMesh) -> Result<(), IoError> {
+    crate::mesh_check(path, mesh)?;
+    write_atomic(path, |out| render_mesh_obj(mesh, out))
+}
+
+/// Writes the OBJ text of `mesh` into `out` (the mesh is assumed valid).
+pub fn render_mesh_obj(mesh: &TriangleMesh, out: &mut dyn Write) -> io::Result<()> {
+    writeln!(
+        out,
+        "# karkas mesh, {} vertices, {} triangles",
+        mesh.positions.len(),
+        mesh.triangles.len()
+    )?;
+    for p in &mesh.positions {
+        writeln!(out, "v {} {} {}", p[0], p[1], p[2])?;
+    }
+    for n in mesh.vertex_normals() {
+        writeln!(out, "vn {} {} {}", n[0], n[1], n[2])?;
+    }
+    for t in &mesh.triangles {
+        let (p, q, r) = (t[0] + 1, t[1] + 1, t[2] + 1);
+        writeln!(out, "f {p}//{p} {q}//{q} {r}//{r}")?;
     }
     Ok(())
 }
@@ -169,6 +209,25 @@ mod tests {
         assert_eq!(difference(1, 4, false, line)[0], 2.0);
         assert_eq!(difference(0, 4, true, line)[0], -1.0);
         assert_eq!(difference(0, 1, false, line), Point::ZERO);
+    }
+
+    /// The mesh writer gives the same text as the grid writer, apart from the comment line.
+    #[test]
+    fn mesh_writer_matches_grid_writer() {
+        let grid = karkas::Grid::from_fn(3, 2, |a, b| Point([a as f64, b as f64, (a * b) as f64]));
+        let mesh = TriangleMesh::from_grid(&grid).unwrap();
+        let (mut a, mut b) = (Vec::new(), Vec::new());
+        render_surface_obj(3, 2, grid.as_slice(), &mut a).unwrap();
+        render_mesh_obj(&mesh, &mut b).unwrap();
+        let body = |v: Vec<u8>| {
+            String::from_utf8(v)
+                .unwrap()
+                .split_once('\n')
+                .unwrap()
+                .1
+                .to_owned()
+        };
+        assert_eq!(body(a), body(b));
     }
 
     #[test]

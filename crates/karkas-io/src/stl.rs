@@ -19,6 +19,7 @@ use karkas::Point3;
 use stl_io::{Normal, Triangle, Vertex};
 
 use crate::error::IoError;
+use crate::mesh::TriangleMesh;
 use crate::write::write_atomic;
 
 /// Writes the `nu x nv` sample grid `points` (row-major, `u` outer) as a binary STL mesh at
@@ -124,6 +125,38 @@ fn triangle(corners: [Point3; 3]) -> Triangle {
     }
 }
 
+/// Writes the triangle mesh `mesh` as STL at `path`, atomically: binary (through `stl_io`) or
+/// ASCII (`solid` / `facet normal` / `outer loop` / `vertex` lines, written directly since
+/// `stl_io` writes binary only). Facet normals are the triangles' own (zero when degenerate).
+/// A mesh failing [`TriangleMesh::validate`] is an [`IoError::Write`], nothing written.
+pub fn write_mesh_stl(path: &Path, mesh: &TriangleMesh, ascii: bool) -> Result<(), IoError> {
+    crate::mesh_check(path, mesh)?;
+    if ascii {
+        write_atomic(path, |out| render_mesh_stl_ascii(mesh, out))
+    } else {
+        let triangles = mesh.triangles.iter().map(|t| {
+            let at = |k: u32| mesh.positions[k as usize];
+            triangle([at(t[0]), at(t[1]), at(t[2])])
+        });
+        write_atomic(path, |out| stl_io::write_stl(&mut &mut *out, triangles))
+    }
+}
+
+/// Writes the ASCII STL text of `mesh` into `out` (the mesh is assumed valid).
+pub fn render_mesh_stl_ascii(mesh: &TriangleMesh, out: &mut dyn io::Write) -> io::Result<()> {
+    writeln!(out, "solid karkas")?;
+    for t in &mesh.triangles {
+        let n = mesh.face_normal(*t);
+        writeln!(out, "facet normal {} {} {}\n  outer loop", n[0], n[1], n[2])?;
+        for &k in t {
+            let p = mesh.positions[k as usize];
+            writeln!(out, "    vertex {} {} {}", p[0], p[1], p[2])?;
+        }
+        writeln!(out, "  endloop\nendfacet")?;
+    }
+    writeln!(out, "endsolid karkas")
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -141,5 +174,23 @@ mod tests {
         }
         assert!(SurfaceTriangles::new(3, 3, &pts).is_err());
         assert_eq!(SurfaceTriangles::new(1, 12, &pts).unwrap().len(), 0);
+    }
+
+    #[test]
+    fn ascii_golden() {
+        let grid = karkas::Grid::from_fn(2, 2, |a, b| Point3::new([a as f64, b as f64, 0.0]));
+        let mesh = TriangleMesh::from_grid(&grid).unwrap();
+        let mut out = Vec::new();
+        render_mesh_stl_ascii(&mesh, &mut out).unwrap();
+        let expected = "solid karkas\nfacet normal 0 0 1\n  outer loop\n    vertex 0 0 0\n\
+            \x20   vertex 1 0 0\n    vertex 1 1 0\n  endloop\nendfacet\nfacet normal 0 0 1\n\
+            \x20 outer loop\n    vertex 0 0 0\n    vertex 1 1 0\n    vertex 0 1 0\n  endloop\n\
+            endfacet\nendsolid karkas\n";
+        assert_eq!(String::from_utf8(out).unwrap(), expected);
+        // stl_io reads it back as two faces over four vertices.
+        let mut text = Vec::new();
+        render_mesh_stl_ascii(&mesh, &mut text).unwrap();
+        let read = stl_io::read_stl(&mut std::io::Cursor::new(text)).unwrap();
+        assert_eq!((read.faces.len(), read.vertices.len()), (2, 4));
     }
 }

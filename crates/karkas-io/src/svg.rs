@@ -41,14 +41,62 @@ pub struct CurvePlot<'a> {
     pub closed_input: bool,
 }
 
+/// Optional additions to a curve picture.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct CurveOverlay<'a> {
+    /// A curvature comb: teeth from curve points to their tips (drawn thin, the tips joined by
+    /// a line, the comb's envelope).
+    pub comb: &'a [[Point2; 2]],
+    /// Deviation whiskers: from each input point to its point on the curve.
+    pub whiskers: &'a [[Point2; 2]],
+}
+
 /// Draws `plot` and writes it as SVG to `path`, atomically.
 pub fn write_curve_svg(path: &Path, plot: &CurvePlot<'_>) -> Result<(), IoError> {
     write_rendered(path, render_curve_svg(plot))
 }
 
+/// Draws `plot` with `overlay` and writes it to `path` atomically, as PNG when `png` is true,
+/// otherwise as SVG.
+pub fn write_curve_picture(
+    path: &Path,
+    plot: &CurvePlot<'_>,
+    overlay: &CurveOverlay<'_>,
+    png: bool,
+) -> Result<(), IoError> {
+    let rendered = render_curve_svg_with(plot, overlay);
+    if png {
+        let svg = rendered.map_err(|message| IoError::Write {
+            path: path.to_path_buf(),
+            source: std::io::Error::other(message),
+        })?;
+        crate::png::write_svg_as_png(path, &svg)
+    } else {
+        write_rendered(path, rendered)
+    }
+}
+
 /// Draws `plot` into an SVG document in memory; the error is the drawing library's message.
 pub fn render_curve_svg(plot: &CurvePlot<'_>) -> Result<String, String> {
-    let points = finite(plot.curve).chain(finite(plot.input));
+    render_curve_svg_with(plot, &CurveOverlay::default())
+}
+
+/// Draws `plot` with `overlay` into an SVG document in memory (the frame takes in the comb's
+/// tips, so nothing is clipped); the error is the drawing library's message.
+pub fn render_curve_svg_with(
+    plot: &CurvePlot<'_>,
+    overlay: &CurveOverlay<'_>,
+) -> Result<String, String> {
+    let overlays: Vec<Point2> = overlay
+        .comb
+        .iter()
+        .chain(overlay.whiskers)
+        .flatten()
+        .copied()
+        .collect();
+    let points = finite(plot.curve)
+        .chain(finite(plot.input))
+        .chain(finite(&overlays));
     render_chart(plot.title, ("x", "y"), points, |chart| {
         let mut polygon: Vec<(f64, f64)> = finite(plot.input).collect();
         if plot.closed_input && polygon.len() > 2 {
@@ -58,9 +106,38 @@ pub fn render_curve_svg(plot: &CurvePlot<'_>) -> Result<String, String> {
         chart
             .draw_series(LineSeries::new(polygon, grey.stroke_width(1)))
             .map_err(|e| e.to_string())?;
+        let teeth = RGBColor(120, 170, 120).stroke_width(1);
+        for tooth in overlay
+            .comb
+            .iter()
+            .filter(|t| t.iter().all(|p| p.is_finite()))
+        {
+            chart
+                .draw_series(LineSeries::new(tooth.map(|p| (p[0], p[1])), teeth))
+                .map_err(|e| e.to_string())?;
+        }
+        if !overlay.comb.is_empty() {
+            let tips = overlay.comb.iter().map(|t| t[1]).filter(|p| p.is_finite());
+            chart
+                .draw_series(LineSeries::new(
+                    tips.map(|p| (p[0], p[1])),
+                    RGBColor(40, 140, 40).stroke_width(1),
+                ))
+                .map_err(|e| e.to_string())?;
+        }
         chart
             .draw_series(LineSeries::new(finite(plot.curve), BLUE.stroke_width(2)))
             .map_err(|e| e.to_string())?;
+        let whisker = RGBColor(230, 120, 0).stroke_width(2);
+        for w in overlay
+            .whiskers
+            .iter()
+            .filter(|t| t.iter().all(|p| p.is_finite()))
+        {
+            chart
+                .draw_series(LineSeries::new(w.map(|p| (p[0], p[1])), whisker))
+                .map_err(|e| e.to_string())?;
+        }
         chart
             .draw_series(finite(plot.input).map(|p| Circle::new(p, 3, RED.filled())))
             .map_err(|e| e.to_string())?;

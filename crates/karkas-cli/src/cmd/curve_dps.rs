@@ -2,13 +2,15 @@
 //! poles at) the input points (seed 002, METHODS.md §3).
 
 use super::curve_ll::{report, MAX_SAMPLES};
+use super::export::{to_space, write_curve_html};
 use super::output::ensure_distinct;
 use anyhow::{anyhow, bail, Result};
 use clap::Args;
 use karkas::dps::{DiscreteSpline, MAX_ORDER};
 use karkas::{Error, Point, Point2};
+use karkas_io::png::write_svg_as_png;
 use karkas_io::points::{read_curve_points, CurvePoints};
-use karkas_io::svg::{write_discrete_curve_svg, DiscreteCurvePlot};
+use karkas_io::svg::{render_discrete_curve_svg, write_discrete_curve_svg, DiscreteCurvePlot};
 use karkas_io::write::write_discrete_curve_csv;
 use karkas_io::OutputFormat;
 use std::path::PathBuf;
@@ -29,7 +31,8 @@ pub struct CurveDpsArgs {
     /// Input points (m of them, at least 2): CSV or whitespace columns x,y[,z], or an airfoil
     /// .dat.
     input: PathBuf,
-    /// Output file: .csv (j,x,y[,z]) or .svg (picture of the closed curve over its points).
+    /// Output file: .csv (j,x,y[,z]), a picture of the closed curve over its points (.svg,
+    /// .png) or a 3-D viewer page (.html).
     #[arg(short, long)]
     output: PathBuf,
 }
@@ -37,7 +40,7 @@ pub struct CurveDpsArgs {
 /// Runs `karkas curve dps`.
 pub fn run(args: &CurveDpsArgs) -> Result<()> {
     super::output::refuse_cad_for_discrete(&args.output)?;
-    let format = OutputFormat::from_path(&args.output, &[OutputFormat::Csv, OutputFormat::Svg])?;
+    let format = OutputFormat::from_path(&args.output, &super::export::CURVE_FORMATS)?;
     check_order("--order", args.order)?;
     check_step("--n", args.step)?;
     ensure_distinct(&args.input, &args.output)?;
@@ -89,7 +92,7 @@ fn build_and_write<const D: usize>(
     let mut values = vec![Point::ZERO; period];
     spline.values(&mut values);
     match format {
-        OutputFormat::Svg => {
+        OutputFormat::Svg | OutputFormat::Png => {
             let title = format!(
                 "discrete periodic spline, order {}, {m} {}, n = {} ({period} values){}",
                 args.order,
@@ -103,7 +106,21 @@ fn build_and_write<const D: usize>(
                 dots: false,
                 input: &project(points),
             };
-            write_discrete_curve_svg(&args.output, &plot)?;
+            if format == OutputFormat::Png {
+                let svg = render_discrete_curve_svg(&plot).map_err(|e| anyhow!("{e}"))?;
+                write_svg_as_png(&args.output, &svg)?;
+            } else {
+                write_discrete_curve_svg(&args.output, &plot)?;
+            }
+        }
+        OutputFormat::Html => {
+            let title = format!(
+                "discrete periodic spline, order {}, n = {} ({period} values)",
+                args.order, args.step
+            );
+            let mut closed = to_space(&values);
+            closed.extend(closed.first().copied());
+            write_curve_html(&args.output, &title, &closed, &to_space(points))?;
         }
         _ => write_discrete_curve_csv(&args.output, &values)?,
     }

@@ -2,6 +2,7 @@
 //! second-derivative jumps (seed 003, METHODS.md §4).
 
 use super::curve_ll::MAX_SAMPLES;
+use super::export::{curvature_comb, write_curve_figure, EXACT_CURVE_FORMATS};
 use super::output::{ensure_distinct, write_cad_curve};
 use crate::samples::{default_curve_samples, parse_count};
 use anyhow::{anyhow, bail, Result};
@@ -9,7 +10,7 @@ use clap::Args;
 use karkas::fit::{check_knots, fit_curve, fit_curve_adaptive, CurveFit, FitOptions};
 use karkas::{Curve, Point, Point2};
 use karkas_io::points::{read_curve_points, CurvePoints};
-use karkas_io::svg::{write_fit_svg, FitPlot};
+use karkas_io::svg::CurveOverlay;
 use karkas_io::write::{write_atomic, write_curve_csv};
 use karkas_io::OutputFormat;
 use std::path::PathBuf;
@@ -42,10 +43,14 @@ pub struct CurveFitArgs {
     /// known trailing edge).
     #[arg(long)]
     pin_ends: bool,
-    /// Output: .csv (t,x,y[,z] samples of the curve), .svg (points, curve, deviations), or
-    /// the exact B-spline curve (degree 3, inner knots doubled) as .step/.stp or .iges/.igs.
+    /// Output: .csv (t,x,y[,z] samples of the curve), a picture .svg or .png (points, curve,
+    /// deviation whiskers; x-y projection) a 3-D viewer page (.html), or
+    /// the exact B-spline curve as .step/.stp or .iges/.igs (planar curves in z = 0).
     #[arg(short, long)]
     output: PathBuf,
+    /// Pictures: draw the curvature comb of the fitted curve.
+    #[arg(long)]
+    comb: bool,
     /// Per-point deviations as CSV: point,t,distance.
     #[arg(long, value_name = "DEV.csv")]
     report: Option<PathBuf>,
@@ -53,15 +58,7 @@ pub struct CurveFitArgs {
 
 /// Runs `karkas curve fit`.
 pub fn run(args: &CurveFitArgs) -> Result<()> {
-    let format = OutputFormat::from_path(
-        &args.output,
-        &[
-            OutputFormat::Csv,
-            OutputFormat::Svg,
-            OutputFormat::Step,
-            OutputFormat::Iges,
-        ],
-    )?;
+    let format = OutputFormat::from_path(&args.output, &EXACT_CURVE_FORMATS)?;
     if let Some(knots) = &args.knots {
         check_knots(knots).map_err(|e| anyhow!("--knots: {e}"))?;
     }
@@ -146,29 +143,42 @@ fn fit_and_write<const D: usize>(
         return write_cad_curve(&fit.spline, format, &args.output, &what);
     }
     match format {
-        OutputFormat::Svg => {
-            let feet: Vec<Point2> = fit
+        OutputFormat::Csv => write_curve_csv(&args.output, &ts, &samples)?,
+        _ => {
+            let whiskers: Vec<[Point2; 2]> = fit
                 .parameters
                 .iter()
-                .map(|&t| project(&[fit.spline.eval(t)])[0])
+                .zip(points)
+                .map(|(&t, p)| {
+                    let f = fit.spline.eval(t);
+                    [Point2::new([p[0], p[1]]), Point2::new([f[0], f[1]])]
+                })
                 .collect();
+            let comb = if args.comb {
+                curvature_comb(&fit.spline, &ts)
+            } else {
+                Vec::new()
+            };
             let title = format!(
                 "defect-2 cubic spline fit, {} knots, {} points, max deviation {:.3e}",
                 fit.spline.knots().len(),
                 points.len(),
                 fit.max_distance()
             );
-            write_fit_svg(
+            let overlay = CurveOverlay {
+                comb: &comb,
+                whiskers: &whiskers,
+            };
+            write_curve_figure(
                 &args.output,
-                &FitPlot {
-                    title: &title,
-                    curve: &project(&samples),
-                    points: &project(points),
-                    feet: &feet,
-                },
+                format,
+                &title,
+                &samples,
+                points,
+                false,
+                &overlay,
             )?;
         }
-        _ => write_curve_csv(&args.output, &ts, &samples)?,
     }
     eprintln!(
         "karkas: wrote {} ({n} samples); {} knots, max deviation {:.6e}, rms {:.6e}, f = {:.6e}, p = {:.6e}, fitted in {:.1} ms",
@@ -181,9 +191,4 @@ fn fit_and_write<const D: usize>(
         fit_time.as_secs_f64() * 1e3
     );
     Ok(())
-}
-
-/// The x-y projection of points of any dimension.
-fn project<const D: usize>(points: &[Point<D>]) -> Vec<Point2> {
-    points.iter().map(|p| Point2::new([p[0], p[1]])).collect()
 }

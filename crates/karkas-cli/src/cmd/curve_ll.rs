@@ -1,5 +1,6 @@
 //! `karkas curve ll`: the LL curve of an ordered point list (seed 000, METHODS.md §1.2).
 
+use super::export::{curvature_comb, write_curve_figure, EXACT_CURVE_FORMATS};
 use super::output::{ensure_distinct, write_cad_curve};
 use crate::samples::{default_curve_samples, parse_count};
 use anyhow::{anyhow, bail, Result};
@@ -7,7 +8,7 @@ use clap::Args;
 use karkas::ll::{LlCurve, LlKernel};
 use karkas::{Curve, Point, Point2};
 use karkas_io::points::{read_curve_points, CurvePoints};
-use karkas_io::svg::{write_curve_svg, CurvePlot};
+use karkas_io::svg::CurveOverlay;
 use karkas_io::write::write_curve_csv;
 use karkas_io::OutputFormat;
 use std::path::{Path, PathBuf};
@@ -34,23 +35,22 @@ pub struct CurveLlArgs {
     samples: Option<usize>,
     /// Input points: CSV or whitespace columns x,y[,z], or an airfoil .dat (Selig or Lednicer).
     input: PathBuf,
-    /// Output file: .csv (t,x,y[,z]), .svg (picture of the curve over its points), or the
-    /// exact B-spline curve as .step/.stp or .iges/.igs (planar curves in the plane z = 0).
+    /// Output file: .csv (t,x,y[,z]), a picture of the curve over its points (.svg, .png;
+    /// x-y projection) a 3-D viewer page (.html), or
+    /// the exact B-spline curve as .step/.stp or .iges/.igs (planar curves in z = 0).
     #[arg(short, long)]
     output: PathBuf,
+    /// Pictures: draw the curvature comb of the curve.
+    #[arg(long)]
+    comb: bool,
+    /// Pictures: draw a whisker from every input point to the curve at its node.
+    #[arg(long)]
+    whiskers: bool,
 }
 
 /// Runs `karkas curve ll`.
 pub fn run(args: &CurveLlArgs) -> Result<()> {
-    let format = OutputFormat::from_path(
-        &args.output,
-        &[
-            OutputFormat::Csv,
-            OutputFormat::Svg,
-            OutputFormat::Step,
-            OutputFormat::Iges,
-        ],
-    )?;
+    let format = OutputFormat::from_path(&args.output, &EXACT_CURVE_FORMATS)?;
     LlKernel::new(args.order).map_err(|e| anyhow!("--order: {e}"))?;
     if args.samples.is_some_and(|n| n > MAX_SAMPLES) {
         bail!("--samples: at most {MAX_SAMPLES} samples can be written");
@@ -85,35 +85,62 @@ fn build_and_write<const D: usize>(
     let mut samples = vec![Point::ZERO; n];
     curve.sample_into(&mut ts, &mut samples);
     match format {
-        OutputFormat::Svg => {
+        OutputFormat::Csv => write_curve_csv(&args.output, &ts, &samples)?,
+        _ => {
             let variant = if args.interpolate {
                 "interpolating "
             } else {
                 ""
             };
             let title = format!(
-                "{variant}LL curve, L = {}, {} points{}",
+                "{variant}LL curve, L = {}, {} points",
                 args.order,
-                points.len(),
-                if D > 2 { " (x-y projection)" } else { "" }
+                points.len()
             );
-            let plot = CurvePlot {
-                title: &title,
-                curve: &project(&samples),
-                input: &project(points),
-                closed_input: args.closed,
+            let comb = if args.comb {
+                curvature_comb(&curve, &ts)
+            } else {
+                Vec::new()
             };
-            write_curve_svg(&args.output, &plot)?;
+            let whiskers = if args.whiskers {
+                node_whiskers(&curve, points)
+            } else {
+                Vec::new()
+            };
+            let overlay = CurveOverlay {
+                comb: &comb,
+                whiskers: &whiskers,
+            };
+            write_curve_figure(
+                &args.output,
+                format,
+                &title,
+                &samples,
+                points,
+                args.closed,
+                &overlay,
+            )?;
         }
-        _ => write_curve_csv(&args.output, &ts, &samples)?,
     }
     report(&args.output, n);
     Ok(())
 }
 
-/// The x-y projection of points of any dimension.
-fn project<const D: usize>(points: &[Point<D>]) -> Vec<Point2> {
-    points.iter().map(|p| Point2::new([p[0], p[1]])).collect()
+/// Whiskers from every input point (x-y projection) to the curve at its node: point `i`
+/// (1-based) of `K` at `t = i / (K + 1)` (a closed curve's nodes are spread the same way over
+/// its domain).
+fn node_whiskers<const D: usize>(curve: &LlCurve<D>, points: &[Point<D>]) -> Vec<[Point2; 2]> {
+    let (axis, domain) = (curve.axis(), curve.domain());
+    points
+        .iter()
+        .enumerate()
+        .map(|(k, p)| (p, axis.node(k + 1)))
+        .filter(|(_, t)| domain.contains(*t))
+        .map(|(p, t)| {
+            let q = curve.eval(t);
+            [Point2::new([p[0], p[1]]), Point2::new([q[0], q[1]])]
+        })
+        .collect()
 }
 
 /// Prints what was written.

@@ -1,8 +1,10 @@
 //! The commands of the `karkas` binary, one file each.
 
+pub mod convert;
 mod curve_dps;
 mod curve_fit;
 mod curve_ll;
+pub mod export;
 pub mod hausdorff;
 mod output;
 pub mod section;

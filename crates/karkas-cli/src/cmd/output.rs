@@ -3,7 +3,7 @@
 
 use anyhow::{anyhow, bail, Result};
 use karkas::bspline::{ToBSplineCurve, ToBSplineSurface};
-use karkas::{Point3, Surface};
+use karkas::{Grid, Point3, Surface};
 use karkas_io::cad::{curve_in_space, CadEntity};
 use karkas_io::iges::write_iges;
 use karkas_io::obj::write_surface_obj;
@@ -29,12 +29,27 @@ pub fn ensure_distinct(input: &Path, output: &Path) -> Result<()> {
 }
 
 /// Samples `surface` on a uniform `nu x nv` grid over its whole domain and writes the samples
-/// to `output` as a `.obj` mesh or a `u,v,x,y,z` CSV, by `format`; then reports what was written.
+/// to `output` as a `u,v,x,y,z` CSV or any mesh, picture or page format of
+/// [`super::export::EXACT_SURFACE_FORMATS`],
+/// by `format`; then reports what was written.
 pub fn write_sampled_surface(
     surface: &impl Surface<3>,
     (nu, nv): (usize, usize),
     format: OutputFormat,
     output: &Path,
+) -> Result<()> {
+    write_sampled_surface_with_net(surface, (nu, nv), format, output, "karkas surface", None)
+}
+
+/// [`write_sampled_surface`] with a caption for pictures and the page, and the input grid
+/// `net` shown on the page.
+pub fn write_sampled_surface_with_net(
+    surface: &impl Surface<3>,
+    (nu, nv): (usize, usize),
+    format: OutputFormat,
+    output: &Path,
+    title: &str,
+    net: Option<&Grid<Point3>>,
 ) -> Result<()> {
     let mut us = vec![0.0; nu];
     let mut vs = vec![0.0; nv];
@@ -42,7 +57,11 @@ pub fn write_sampled_surface(
     surface.sample_grid_into(&mut us, &mut vs, &mut samples);
     match format {
         OutputFormat::Obj => write_surface_obj(output, nu, nv, &samples)?,
-        _ => write_surface_csv(output, &us, &vs, &samples)?,
+        OutputFormat::Csv => write_surface_csv(output, &us, &vs, &samples)?,
+        _ => {
+            let grid = Grid::from_row_major(nu, nv, samples)?;
+            super::export::write_surface(output, format, &grid, title, net)?;
+        }
     }
     super::curve_ll::report(output, nu * nv);
     Ok(())

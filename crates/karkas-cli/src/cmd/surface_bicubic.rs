@@ -2,7 +2,7 @@
 //! parameters (seed 004, METHODS.md §5).
 
 use super::curve_ll::MAX_SAMPLES;
-use super::output::{ensure_distinct, write_cad_surface, write_sampled_surface};
+use super::output::{ensure_distinct, write_cad_surface, write_sampled_surface_with_net};
 use crate::samples::{default_surface_samples, parse_pair};
 use anyhow::{anyhow, bail, Result};
 use clap::{Args, ValueEnum};
@@ -54,7 +54,8 @@ pub struct SurfaceBicubicArgs {
     samples: Option<(usize, usize)>,
     /// Input grid: CSV with header i,j,x,y,z (indices from 0, rows in any order).
     input: PathBuf,
-    /// Output file: .csv (u,v,x,y,z in the chosen parameters), .obj (triangle mesh), or the
+    /// Output file: .csv (u,v,x,y,z in the chosen parameters), a mesh (.obj .stl .ply .vtk .vts .glb), a picture
+    /// (.svg .png) a 3-D viewer page (.html), or the
     /// exact B-spline surface as .step/.stp or .iges/.igs.
     #[arg(short, long)]
     output: PathBuf,
@@ -62,15 +63,7 @@ pub struct SurfaceBicubicArgs {
 
 /// Runs `karkas surface bicubic`.
 pub fn run(args: &SurfaceBicubicArgs) -> Result<()> {
-    let format = OutputFormat::from_path(
-        &args.output,
-        &[
-            OutputFormat::Csv,
-            OutputFormat::Obj,
-            OutputFormat::Step,
-            OutputFormat::Iges,
-        ],
-    )?;
+    let format = OutputFormat::from_path(&args.output, &super::export::EXACT_SURFACE_FORMATS)?;
     if args
         .samples
         .is_some_and(|(nu, nv)| nu.saturating_mul(nv) > MAX_SAMPLES)
@@ -91,5 +84,13 @@ pub fn run(args: &SurfaceBicubicArgs) -> Result<()> {
             default_surface_samples(grid.cols()),
         )
     });
-    write_sampled_surface(&surface, (nu, nv), format, &args.output)
+    let title = format!("bicubic surface, {} x {} grid", grid.rows(), grid.cols());
+    write_sampled_surface_with_net(
+        &surface,
+        (nu, nv),
+        format,
+        &args.output,
+        &title,
+        Some(&grid),
+    )
 }

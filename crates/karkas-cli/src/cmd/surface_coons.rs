@@ -68,23 +68,16 @@ pub struct SurfaceCoonsArgs {
     /// [default: 4 per point of the longest curve in each direction, at least 50].
     #[arg(long, value_parser = parse_pair)]
     samples: Option<(usize, usize)>,
-    /// Output file: .csv (u,v,x,y,z), .obj (triangle mesh), or the exact B-spline surface as
-    /// .step/.stp or .iges/.igs.
+    /// Output file: .csv (u,v,x,y,z), a mesh (.obj .stl .ply .vtk .vts .glb), a picture
+    /// (.svg .png) a 3-D viewer page (.html), or the
+    /// exact B-spline surface as .step/.stp or .iges/.igs.
     #[arg(short, long)]
     output: PathBuf,
 }
 
 /// Runs `karkas surface coons`.
 pub fn run(args: &SurfaceCoonsArgs) -> Result<()> {
-    let format = OutputFormat::from_path(
-        &args.output,
-        &[
-            OutputFormat::Csv,
-            OutputFormat::Obj,
-            OutputFormat::Step,
-            OutputFormat::Iges,
-        ],
-    )?;
+    let format = OutputFormat::from_path(&args.output, &super::export::EXACT_SURFACE_FORMATS)?;
     if args
         .samples
         .is_some_and(|(nu, nv)| nu.saturating_mul(nv) > MAX_SAMPLES)

@@ -1,7 +1,7 @@
 //! `karkas surface ll`: the LL surface of a grid of points (seed 000, METHODS.md §1.3).
 
 use super::curve_ll::MAX_SAMPLES;
-use super::output::{ensure_distinct, write_cad_surface, write_sampled_surface};
+use super::output::{ensure_distinct, write_cad_surface, write_sampled_surface_with_net};
 use crate::samples::{default_surface_samples, parse_pair};
 use anyhow::{anyhow, bail, Result};
 use clap::Args;
@@ -31,23 +31,16 @@ pub struct SurfaceLlArgs {
     samples: Option<(usize, usize)>,
     /// Input grid: CSV with header i,j,x,y,z (indices from 0, rows in any order).
     input: PathBuf,
-    /// Output file: .csv (u,v,x,y,z), .obj (triangle mesh), or the exact B-spline surface as
-    /// .step/.stp or .iges/.igs.
+    /// Output file: .csv (u,v,x,y,z), a mesh (.obj .stl .ply .vtk .vts .glb), a picture
+    /// (.svg .png) a 3-D viewer page (.html), or the
+    /// exact B-spline surface as .step/.stp or .iges/.igs.
     #[arg(short, long)]
     output: PathBuf,
 }
 
 /// Runs `karkas surface ll`.
 pub fn run(args: &SurfaceLlArgs) -> Result<()> {
-    let format = OutputFormat::from_path(
-        &args.output,
-        &[
-            OutputFormat::Csv,
-            OutputFormat::Obj,
-            OutputFormat::Step,
-            OutputFormat::Iges,
-        ],
-    )?;
+    let format = OutputFormat::from_path(&args.output, &super::export::EXACT_SURFACE_FORMATS)?;
     LlKernel::new(args.order).map_err(|e| anyhow!("--order: {e}"))?;
     if args
         .samples
@@ -74,5 +67,18 @@ pub fn run(args: &SurfaceLlArgs) -> Result<()> {
             default_surface_samples(grid.cols()),
         )
     });
-    write_sampled_surface(&surface, (nu, nv), format, &args.output)
+    let title = format!(
+        "LL surface, L = {}, {} x {} grid",
+        args.order,
+        grid.rows(),
+        grid.cols()
+    );
+    write_sampled_surface_with_net(
+        &surface,
+        (nu, nv),
+        format,
+        &args.output,
+        &title,
+        Some(&grid),
+    )
 }

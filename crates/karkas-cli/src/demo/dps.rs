@@ -13,7 +13,7 @@ use anyhow::Result;
 use karkas::dps::{compatibility_residual, discrete_bspline, DiscreteSpline, TubeSurface};
 use karkas::{Grid, Point2, Point3};
 use karkas_io::obj::write_surface_obj;
-use karkas_io::painter::{write_scene_svg, SceneItem, ScenePlot};
+use karkas_io::scene::{write_scene_svg, Scene, SceneCurves, SceneMesh, View};
 use karkas_io::svg::{write_discrete_curve_svg, write_lines_svg, DiscreteCurvePlot};
 use karkas_io::svg::{LineGroup, LinesPlot};
 use karkas_io::write::{write_atomic, write_discrete_curve_csv, write_indexed_grid_csv};
@@ -191,11 +191,10 @@ fn self_intersections(points: &[Point2]) -> usize {
 }
 
 /// An axonometric camera: looking down at `ELEVATION` degrees from the azimuth `AZIMUTH`.
+/// The same view as [`View`] with these angles, for the wireframe pictures.
 struct Camera {
     right: Point3,
     up: Point3,
-    /// The viewing direction, into the picture.
-    forward: Point3,
 }
 
 const AZIMUTH: f64 = -75.0;
@@ -210,78 +209,12 @@ impl Camera {
         Camera {
             right,
             up: vertical * el.cos() - towards * el.sin(),
-            forward: -(towards * el.cos() + vertical * el.sin()),
         }
     }
 
     fn project(&self, p: Point3) -> Point2 {
         Point2::new([p.dot(self.right), p.dot(self.up)])
     }
-
-    fn depth(&self, p: Point3) -> f64 {
-        p.dot(self.forward)
-    }
-}
-
-/// The cross product `a x b`.
-fn cross(a: Point3, b: Point3) -> Point3 {
-    Point3::new([
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ])
-}
-
-/// A polyline in space and its colour (RGB).
-type ColouredLine = (Vec<Point3>, (u8, u8, u8));
-
-/// The shaded picture of the closed `grid` (first row and column repeated): one quadrilateral
-/// per cell, lit from over the viewer's left shoulder, with `lines` (polylines on the surface)
-/// drawn in front of the faces they lie on.
-fn shaded_scene(camera: &Camera, grid: &Grid<Point3>, lines: &[ColouredLine]) -> Vec<SceneItem> {
-    let light = (camera.up * 0.6 - camera.right * 0.4 - camera.forward) * (1.0 / 1.2);
-    let mut items = Vec::new();
-    for a in 0..grid.rows() - 1 {
-        for b in 0..grid.cols() - 1 {
-            let corners = [
-                *grid.get(a, b),
-                *grid.get(a + 1, b),
-                *grid.get(a + 1, b + 1),
-                *grid.get(a, b + 1),
-            ];
-            let normal = cross(corners[2] - corners[0], corners[3] - corners[1]);
-            let len = normal.norm();
-            let lit = if len > 0.0 {
-                (normal.dot(light) / (len * light.norm())).abs()
-            } else {
-                0.0
-            };
-            let shade = 0.35 + 0.65 * lit;
-            let tone = |c: f64| (c * shade).round().clamp(0.0, 255.0) as u8;
-            let centre = corners.iter().fold(Point3::ZERO, |s, p| s + *p) * 0.25;
-            items.push(SceneItem::Polygon {
-                corners: corners.iter().map(|&p| camera.project(p)).collect(),
-                depth: camera.depth(centre),
-                fill: (tone(150.0), tone(185.0), tone(235.0)),
-                outline: (tone(100.0), tone(125.0), tone(165.0)),
-            });
-        }
-    }
-    // A line on the surface is drawn just after the faces around it (a small pull towards the
-    // viewer), and before anything nearer.
-    let pull = 0.15;
-    for (line, rgb) in lines {
-        for pair in line.windows(2) {
-            let middle = (pair[0] + pair[1]) * 0.5;
-            items.push(SceneItem::Segment {
-                ends: [camera.project(pair[0]), camera.project(pair[1])],
-                depth: camera.depth(middle) - pull,
-                rgb: *rgb,
-                width: 3,
-            });
-        }
-    }
-    items
 }
 
 pub fn knot(out: &Output) -> Result<Vec<Finding>> {
@@ -370,17 +303,34 @@ pub fn knot(out: &Output) -> Result<Vec<Finding>> {
             ],
         },
     )?;
-    let skeleton: Vec<ColouredLine> = along_3d
-        .iter()
-        .map(|l| (l.clone(), red))
-        .chain(across_3d.iter().map(|l| (l.clone(), blue)))
-        .collect();
+    let skeleton = [
+        SceneCurves {
+            label: "curves along",
+            lines: &along_3d,
+            rgb: red,
+            width: 3.0,
+        },
+        SceneCurves {
+            label: "curves across",
+            lines: &across_3d,
+            rgb: blue,
+            width: 3.0,
+        },
+    ];
     write_scene_svg(
         &out.file("knot-tube.svg"),
-        &ScenePlot {
+        &Scene {
             title: "Seed 002, fig. 4: the knotted tube by formula (3), skeleton in bold",
-            axes: ("view x", "view y"),
-            items: &shaded_scene(&camera, &closed, &skeleton),
+            mesh: SceneMesh {
+                rows: closed.rows(),
+                cols: closed.cols(),
+                points: closed.as_slice(),
+            },
+            curves: &skeleton,
+            view: View {
+                azimuth: AZIMUTH,
+                elevation: ELEVATION,
+            },
         },
     )?;
 

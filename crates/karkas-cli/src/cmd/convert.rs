@@ -1,0 +1,204 @@
+//! `karkas convert IN OUT`: one file format into another, where both hold the same kind of
+//! thing.
+//!
+//! Input kinds, by extension and (for CSV) header:
+//! - a triangle mesh: `.obj`, `.stl` (binary or ASCII), `.ply`;
+//! - a surface grid: CSV with header `i,j,x,y,z` (a frame) or `u,v,x,y,z` (samples, `u`
+//!   outer, as the surface commands write them);
+//! - a curve: any other CSV or whitespace columns `x,y[,z]`, or an airfoil `.dat`.
+//!
+//! Outputs: a mesh to `.obj .stl .ply .vtk .glb .html`; a grid to those and `.vts .svg .png`
+//! and `.csv` (`i,j,x,y,z`); a curve to `.svg .png .html`. Any other pair is refused.
+
+use super::export::{to_space, write_curve_figure, write_surface};
+use super::output::ensure_distinct;
+use anyhow::{bail, Result};
+use clap::Args;
+use karkas::{Grid, Point3};
+use karkas_io::mesh::TriangleMesh;
+use karkas_io::mesh_io::{read_mesh, read_surface_samples, write_mesh};
+use karkas_io::points::{read_curve_points, CurvePoints};
+use karkas_io::svg::CurveOverlay;
+use karkas_io::viewer::{write_viewer_html, ViewerMesh, ViewerScene};
+use karkas_io::write::write_grid_csv;
+use karkas_io::OutputFormat;
+use std::path::{Path, PathBuf};
+
+/// Arguments of `karkas convert`.
+#[derive(Debug, Args)]
+pub struct ConvertArgs {
+    /// Input: a mesh (.obj .stl .ply), a grid CSV (i,j,x,y,z or u,v,x,y,z) or curve points
+    /// (CSV / columns x,y[,z], airfoil .dat).
+    input: PathBuf,
+    /// Output, by extension: .obj .stl .ply .vtk .vts .glb .html .svg .png .csv (which ones
+    /// depend on the input, see karkas convert --help).
+    output: PathBuf,
+    /// Write .stl and .ply as ASCII instead of binary.
+    #[arg(long)]
+    ascii: bool,
+}
+
+/// What the input holds.
+enum Input {
+    Mesh(TriangleMesh),
+    /// A grid, and whether it is a frame of nodes (`i,j`) rather than samples (`u,v`).
+    Grid(Grid<Point3>, bool),
+    Curve(Vec<Point3>, bool),
+}
+
+const MESH_OUT: [OutputFormat; 6] = [
+    OutputFormat::Obj,
+    OutputFormat::Stl,
+    OutputFormat::Ply,
+    OutputFormat::Vtk,
+    OutputFormat::Glb,
+    OutputFormat::Html,
+];
+const GRID_OUT: [OutputFormat; 10] = [
+    OutputFormat::Csv,
+    OutputFormat::Obj,
+    OutputFormat::Stl,
+    OutputFormat::Ply,
+    OutputFormat::Vtk,
+    OutputFormat::Vts,
+    OutputFormat::Glb,
+    OutputFormat::Svg,
+    OutputFormat::Png,
+    OutputFormat::Html,
+];
+const CURVE_OUT: [OutputFormat; 3] = [OutputFormat::Svg, OutputFormat::Png, OutputFormat::Html];
+
+/// Runs `karkas convert`.
+pub fn run(args: &ConvertArgs) -> Result<()> {
+    const EVERY: [OutputFormat; 10] = GRID_OUT;
+    let format = OutputFormat::from_path(&args.output, &EVERY)?;
+    ensure_distinct(&args.input, &args.output)?;
+    let input = read_input(&args.input)?;
+    let (kind, allowed): (&str, &[OutputFormat]) = match &input {
+        Input::Mesh(_) => ("a triangle mesh", &MESH_OUT),
+        Input::Grid(..) => ("a surface grid", &GRID_OUT),
+        Input::Curve(..) => ("a curve", &CURVE_OUT),
+    };
+    if !allowed.contains(&format) {
+        let list: Vec<String> = allowed
+            .iter()
+            .map(|f| format!(".{}", f.extension()))
+            .collect();
+        bail!(
+            "cannot convert {} ({kind}) to .{}: {kind} converts to {}",
+            args.input.display(),
+            format.extension(),
+            list.join(", ")
+        );
+    }
+    let title = args
+        .input
+        .file_name()
+        .map_or_else(String::new, |n| n.to_string_lossy().into_owned());
+    let count = match input {
+        Input::Mesh(mesh) => {
+            write_any_mesh(&args.output, format, &mesh, args.ascii, &title)?;
+            mesh.positions.len()
+        }
+        Input::Grid(grid, is_frame) => {
+            let net = is_frame.then_some(&grid);
+            match format {
+                OutputFormat::Csv => write_grid_csv(&args.output, &grid)?,
+                OutputFormat::Stl | OutputFormat::Ply if args.ascii => {
+                    let mesh = TriangleMesh::from_grid(&grid)
+                        .map_err(|e| anyhow::anyhow!("{}: {e}", args.input.display()))?;
+                    write_any_mesh(&args.output, format, &mesh, true, &title)?;
+                }
+                _ => write_surface(&args.output, format, &grid, &title, net)?,
+            }
+            grid.rows() * grid.cols()
+        }
+        Input::Curve(points, planar) => {
+            let overlay = CurveOverlay::default();
+            if planar {
+                let flat: Vec<karkas::Point2> = points
+                    .iter()
+                    .map(|p| karkas::Point2::new([p[0], p[1]]))
+                    .collect();
+                write_curve_figure(&args.output, format, &title, &flat, &[], false, &overlay)?;
+            } else {
+                write_curve_figure(&args.output, format, &title, &points, &[], false, &overlay)?;
+            }
+            points.len()
+        }
+    };
+    eprintln!("karkas: wrote {} ({count} points)", args.output.display());
+    Ok(())
+}
+
+/// Writes a mesh in a mesh format or as the viewer page.
+fn write_any_mesh(
+    output: &Path,
+    format: OutputFormat,
+    mesh: &TriangleMesh,
+    ascii: bool,
+    title: &str,
+) -> Result<()> {
+    match format {
+        OutputFormat::Html => {
+            let scene = ViewerScene {
+                title: title.to_owned(),
+                meshes: vec![ViewerMesh {
+                    name: title.to_owned(),
+                    mesh: mesh.clone(),
+                }],
+                ..ViewerScene::default()
+            };
+            write_viewer_html(output, &scene)?;
+        }
+        OutputFormat::Stl if ascii => karkas_io::stl::write_mesh_stl(output, mesh, true)?,
+        OutputFormat::Ply if ascii => {
+            karkas_io::ply::write_mesh_ply(output, mesh, karkas_io::ply::PlyEncoding::Ascii)?
+        }
+        _ => write_mesh(output, format, mesh)?,
+    }
+    Ok(())
+}
+
+/// Reads `path` as a mesh, a grid or a curve (see the module docs).
+fn read_input(path: &Path) -> Result<Input> {
+    let ext = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase);
+    if matches!(ext.as_deref(), Some("obj" | "stl" | "ply")) {
+        return Ok(Input::Mesh(read_mesh(path)?));
+    }
+    match csv_header(path).as_deref() {
+        Some(h) if h.contains(&"i".to_owned()) && h.contains(&"j".to_owned()) => {
+            Ok(Input::Grid(karkas_io::grid::read_grid(path)?, true))
+        }
+        Some(h) if h.contains(&"u".to_owned()) && h.contains(&"v".to_owned()) => {
+            Ok(Input::Grid(read_surface_samples(path)?, false))
+        }
+        _ => Ok(match read_curve_points(path)? {
+            CurvePoints::Planar(points) => Input::Curve(to_space(&points), true),
+            CurvePoints::Spatial(points) => Input::Curve(points, false),
+        }),
+    }
+}
+
+/// The lower-case fields of the first content line of a CSV file with a header (a line with
+/// a field that is not a number); `None` when there is none or the file cannot be read (the
+/// reader that follows reports that).
+fn csv_header(path: &Path) -> Option<Vec<String>> {
+    let text = std::fs::read_to_string(path).ok()?;
+    let line = text
+        .trim_start_matches('\u{feff}')
+        .lines()
+        .map(|l| l.split('#').next().unwrap_or("").trim())
+        .find(|l| !l.is_empty())?;
+    let fields: Vec<String> = line
+        .split(',')
+        .map(|f| f.trim().to_ascii_lowercase())
+        .collect();
+    fields
+        .iter()
+        .any(|f| f.parse::<f64>().is_err())
+        .then_some(fields)
+}
