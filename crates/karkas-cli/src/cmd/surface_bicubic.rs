@@ -70,6 +70,7 @@ pub fn run(args: &SurfaceBicubicArgs) -> Result<()> {
     }
     ensure_distinct(&args.input, &args.output)?;
     let grid = read_grid(&args.input)?;
+    super::guard::grid_points(&args.input, grid.as_slice())?;
     let surface = BicubicSurface::new(&grid, args.param.to_library(), args.closed_u, args.closed_v)
         .map_err(|e| anyhow!("{}: {e}", args.input.display()))?;
     let (nu, nv) = args.samples.unwrap_or_else(|| {
