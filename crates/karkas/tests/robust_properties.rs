@@ -271,3 +271,15 @@ fn knots_closer_than_1e_12_of_the_span_are_refused() {
     );
     assert!(CubicSpline::new(&[0.0, 1e-11, 1.0], &values, SplineEnds::Natural).is_ok());
 }
+
+/// Found by the `expression` fuzz target: projecting a point with a NaN coordinate onto
+/// `x = 0` returned that NaN point as a foot point. Non-finite points are now refused.
+#[test]
+fn regression_projecting_a_non_finite_point() {
+    use karkas::implicit::{project_onto, ExpressionSurface};
+    let plane = ExpressionSurface::parse("x").unwrap();
+    let e = project_onto(&plane, Point([792.0, -1526.0, f64::NAN]));
+    assert!(matches!(e, Err(Error::InvalidInput(_))), "{e:?}");
+    let foot = project_onto(&plane, Point([792.0, -1526.0, 3.0])).unwrap();
+    assert_eq!(foot.0, [0.0, -1526.0, 3.0]);
+}

@@ -97,8 +97,8 @@ enum Spread {
     OnePoint,
     /// The points lie on one straight line (relative tolerance `1e-12`).
     OneLine,
-    /// Anything else.
-    Spread,
+    /// Anything else: enough for a surface.
+    Surface,
 }
 
 /// How `points` spread (finite points assumed; the readers refuse others).
@@ -114,7 +114,7 @@ fn spread<const D: usize>(points: &[Point<D>]) -> Spread {
         return if scale == 0.0 {
             Spread::OnePoint
         } else {
-            Spread::Spread
+            Spread::Surface
         };
     }
     let rel = |p: Point<D>| (p - first) * (1.0 / scale);
@@ -129,7 +129,7 @@ fn spread<const D: usize>(points: &[Point<D>]) -> Spread {
         (q - axis * q.dot(axis)).norm() > 1e-12
     });
     if off_line {
-        Spread::Spread
+        Spread::Surface
     } else {
         Spread::OneLine
     }
@@ -163,7 +163,7 @@ pub fn grid_points<const D: usize>(input: &Path, points: &[Point<D>]) -> Result<
                 input.display(),
                 points.len()
             ),
-            Spread::Spread => {}
+            Spread::Surface => {}
         }
     }
     Ok(())
@@ -205,7 +205,7 @@ mod tests {
         let tiny: Vec<_> = (0..5)
             .map(|k| p(1e-150 * k as f64, 1e-150 * (k * k) as f64, 0.0))
             .collect();
-        assert_eq!(spread(&tiny), Spread::Spread);
+        assert_eq!(spread(&tiny), Spread::Surface);
         assert_eq!(spread::<3>(&[]), Spread::OnePoint);
     }
 }
