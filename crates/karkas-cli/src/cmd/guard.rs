@@ -30,11 +30,11 @@ pub fn set_max_memory(option: Option<u64>) -> Result<()> {
 /// Parses a size: a whole number of bytes with an optional suffix `K`, `M`, `G`, `T`
 /// (powers of 1024, an optional trailing `B` or `iB`), e.g. `512M`, `2G`, `1500000`.
 pub fn parse_size(text: &str) -> Result<u64, String> {
-    let t = text.trim();
-    let t = t
-        .strip_suffix("iB")
-        .or_else(|| t.strip_suffix('B'))
-        .unwrap_or(t);
+    let upper = text.trim().to_ascii_uppercase();
+    let t = upper
+        .strip_suffix("IB")
+        .or_else(|| upper.strip_suffix('B'))
+        .unwrap_or(&upper);
     let (digits, shift) = match t.char_indices().last() {
         Some((k, c)) if c.is_ascii_alphabetic() => {
             let shift = match c.to_ascii_uppercase() {
