@@ -19,6 +19,10 @@ use std::process::ExitCode;
 struct Cli {
     #[command(subcommand)]
     command: Command,
+    /// The most memory one request's output may take, like 512M or 4G (default 2G, or the
+    /// environment variable KARKAS_MAX_MEMORY); larger requests fail before any work.
+    #[arg(long, global = true, value_name = "SIZE", value_parser = cmd::guard::parse_size)]
+    max_memory: Option<u64>,
 }
 
 #[derive(Debug, Subcommand)]
@@ -69,6 +73,10 @@ fn main() -> ExitCode {
             return ExitCode::from(2);
         }
     };
+    if let Err(e) = cmd::guard::set_max_memory(cli.max_memory) {
+        eprintln!("karkas: error: {e:#}");
+        return ExitCode::from(2);
+    }
     let result = match cli.command {
         Command::Curve(c) => c.run(),
         Command::Surface(c) => c.run(),

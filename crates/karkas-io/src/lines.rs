@@ -117,6 +117,112 @@ pub(crate) fn csv_rows(text: &str, path: &Path) -> Result<Vec<Row>, IoError> {
     Ok(rows)
 }
 
+/// A streaming reader of rows: one line at a time into a reused buffer, so a file of any
+/// length is read in memory proportional to its longest line (plus what the caller keeps).
+///
+/// Lines follow the shared conventions: `#` comments stripped, blank lines skipped, a
+/// byte-order mark at the start ignored, 1-based physical line numbers. Fields are split at
+/// whitespace, or at commas (trimmed; a line with a double quote is read with the `csv`
+/// crate, so quoted fields work as in [`csv_rows`]).
+pub(crate) struct RowReader<'p, R> {
+    reader: R,
+    path: &'p Path,
+    buf: String,
+    line: usize,
+    fields: Vec<String>,
+}
+
+impl<'p, R: std::io::BufRead> RowReader<'p, R> {
+    /// Rows of `reader`; `path` names the file in errors.
+    pub fn new(reader: R, path: &'p Path) -> Self {
+        RowReader {
+            reader,
+            path,
+            buf: String::new(),
+            line: 0,
+            fields: Vec::new(),
+        }
+    }
+
+    /// The next line that is neither blank nor only a comment: its 1-based number and its
+    /// content, comment stripped and trimmed; `None` at the end of the input.
+    pub fn next_content_line(&mut self) -> Result<Option<(usize, &str)>, IoError> {
+        Ok(self
+            .advance()?
+            .map(|(line, range)| (line, &self.buf[range])))
+    }
+
+    /// Reads up to the next content line; its number and where its content is in `buf`.
+    fn advance(&mut self) -> Result<Option<(usize, std::ops::Range<usize>)>, IoError> {
+        loop {
+            self.buf.clear();
+            let read = self
+                .reader
+                .read_line(&mut self.buf)
+                .map_err(|source| IoError::Open {
+                    path: self.path.to_path_buf(),
+                    source,
+                })?;
+            if read == 0 {
+                return Ok(None);
+            }
+            self.line += 1;
+            let skip = if self.line == 1 {
+                self.buf.len() - strip_bom(&self.buf).len()
+            } else {
+                0
+            };
+            let content = strip_comment(&self.buf[skip..]).trim();
+            if !content.is_empty() {
+                let start = content.as_ptr() as usize - self.buf.as_ptr() as usize;
+                return Ok(Some((self.line, start..start + content.len())));
+            }
+        }
+    }
+
+    /// The next non-empty row of fields, split at commas (`csv`) or whitespace.
+    pub fn next_row(&mut self, csv: bool) -> Result<Option<(usize, &[String])>, IoError> {
+        loop {
+            let path = self.path;
+            let Some((line, range)) = self.advance()? else {
+                return Ok(None);
+            };
+            let content = &self.buf[range];
+            let fields = &mut self.fields;
+            fields.clear();
+            if !csv {
+                fields.extend(content.split_whitespace().map(str::to_owned));
+            } else if content.contains('"') {
+                let mut reader = csv::ReaderBuilder::new()
+                    .has_headers(false)
+                    .flexible(true)
+                    .trim(csv::Trim::All)
+                    .from_reader(content.as_bytes());
+                let mut record = csv::StringRecord::new();
+                reader
+                    .read_record(&mut record)
+                    .map_err(|e| Location::new(path, line).error(format!("malformed CSV: {e}")))?;
+                fields.extend(record.iter().map(str::to_owned));
+            } else {
+                fields.extend(content.split(',').map(|f| f.trim().to_owned()));
+            }
+            if self.fields.iter().any(|f| !f.is_empty()) {
+                return Ok(Some((line, &self.fields)));
+            }
+        }
+    }
+}
+
+/// Opens `path` for buffered reading, as [`IoError::Open`] on failure.
+pub(crate) fn open_buffered(path: &Path) -> Result<std::io::BufReader<std::fs::File>, IoError> {
+    std::fs::File::open(path)
+        .map(|f| std::io::BufReader::with_capacity(1 << 16, f))
+        .map_err(|source| IoError::Open {
+            path: path.to_path_buf(),
+            source,
+        })
+}
+
 /// A finite coordinate from `field` of column `column` (1-based), or a parse error at `at`.
 pub(crate) fn parse_coordinate(
     field: &str,

@@ -16,6 +16,7 @@
 //! so the `t,x,y[,z]` files of [`crate::write::write_curve_csv`] read back as points. Without a
 //! header, two columns are planar points and three are spatial ones.
 
+use std::io::BufRead;
 use std::path::Path;
 
 use karkas::{Point, Point2, Point3};
@@ -23,8 +24,7 @@ use karkas::{Point, Point2, Point3};
 use crate::airfoil::parse_airfoil;
 use crate::error::{data_error, IoError, Location};
 use crate::lines::{
-    csv_rows, first_content_line, is_number, parse_coordinate, read_text, strip_bom,
-    whitespace_rows, Row,
+    first_content_line, is_number, open_buffered, parse_coordinate, read_text, strip_bom, RowReader,
 };
 
 /// An ordered list of curve points, planar or spatial as the file says.
@@ -60,8 +60,20 @@ impl CurvePoints {
 }
 
 /// Reads the curve points of the file at `path` (see the [module docs](self) for the formats).
+///
+/// Column files are streamed line by line: memory is the points themselves (16 or 24 bytes
+/// each) plus one line. Only a file whose first line is a name (an airfoil `.dat`, small by
+/// nature) is read whole.
 pub fn read_curve_points(path: &Path) -> Result<CurvePoints, IoError> {
-    parse_curve_points(&read_text(path)?, path)
+    let mut rows = RowReader::new(open_buffered(path)?, path);
+    let Some((_, first)) = rows.next_content_line()? else {
+        return Err(data_error(path, "no points found"));
+    };
+    if first_line_is_a_name(first) {
+        return parse_curve_points(&read_text(path)?, path);
+    }
+    let csv = first.contains(',');
+    points_from_rows(RowReader::new(open_buffered(path)?, path), csv, path)
 }
 
 /// Reads curve points from `text` already in memory; `path` names the file in error messages
@@ -74,12 +86,18 @@ pub fn parse_curve_points(text: &str, path: &Path) -> Result<CurvePoints, IoErro
     if looks_like_airfoil(text, first, path) {
         return Ok(CurvePoints::Planar(parse_airfoil(text, path)?.points));
     }
-    let rows = if first.contains(',') {
-        csv_rows(text, path)?
-    } else {
-        whitespace_rows(text)
-    };
-    points_from_rows(&rows, path)
+    let csv = first.contains(',');
+    points_from_rows(RowReader::new(text.as_bytes(), path), csv, path)
+}
+
+/// True when the first content line is neither numbers, nor comma-separated, nor a column
+/// header naming `x` and `y`: the name line of an airfoil (or a mistake).
+fn first_line_is_a_name(first: &str) -> bool {
+    if first.contains(',') || first.split_whitespace().all(is_number) {
+        return false;
+    }
+    let fields: Vec<String> = first.split_whitespace().map(str::to_owned).collect();
+    Columns::from_header(&fields).is_none()
 }
 
 /// True when the file should be read as an airfoil `.dat`: its first line is a name (not
@@ -88,14 +106,7 @@ fn looks_like_airfoil(text: &str, first: &str, path: &Path) -> bool {
     let is_dat = path
         .extension()
         .is_some_and(|e| e.eq_ignore_ascii_case("dat"));
-    if first.contains(',') || first.split_whitespace().all(is_number) {
-        return false;
-    }
-    let fields: Vec<String> = first.split_whitespace().map(str::to_owned).collect();
-    if Columns::from_header(&fields).is_some() {
-        return false;
-    }
-    is_dat || !text.contains(',')
+    first_line_is_a_name(first) && (is_dat || !text.contains(','))
 }
 
 /// Which fields of a row hold x, y and (for spatial points) z, 0-based.
@@ -119,26 +130,31 @@ impl Columns {
     }
 }
 
-/// The points of rows of fields: an optional header, then data rows of equal length.
-fn points_from_rows(rows: &[Row], path: &Path) -> Result<CurvePoints, IoError> {
-    let Some(first) = rows.first() else {
+/// The points of a stream of rows: an optional header, then data rows of equal length.
+fn points_from_rows<R: BufRead>(
+    mut rows: RowReader<'_, R>,
+    csv: bool,
+    path: &Path,
+) -> Result<CurvePoints, IoError> {
+    let at = |line| Location::new(path, line);
+    let Some((first_line, first)) = rows.next_row(csv)? else {
         return Err(data_error(path, "no points found"));
     };
-    let at = |line| Location::new(path, line);
-    let has_header = !first.fields.iter().all(|f| is_number(f));
-    let (columns, data) = if has_header {
-        let columns = Columns::from_header(&first.fields).ok_or_else(|| {
-            at(first.line).error(format!(
+    let width = first.len();
+    let has_header = !first.iter().all(|f| is_number(f));
+    let columns = if has_header {
+        let columns = Columns::from_header(first).ok_or_else(|| {
+            at(first_line).error(format!(
                 "the header '{}' names no 'x' and 'y' columns",
-                first.fields.join(",")
+                first.join(",")
             ))
         })?;
-        if let Some(name) = duplicated_name(&first.fields) {
-            return Err(at(first.line).error(format!("the header names column '{name}' twice")));
+        if let Some(name) = duplicated_name(first) {
+            return Err(at(first_line).error(format!("the header names column '{name}' twice")));
         }
-        (columns, &rows[1..])
+        columns
     } else {
-        let columns = match first.fields.len() {
+        match width {
             2 => Columns {
                 x: 0,
                 y: 1,
@@ -150,53 +166,65 @@ fn points_from_rows(rows: &[Row], path: &Path) -> Result<CurvePoints, IoError> {
                 z: Some(2),
             },
             n => {
-                return Err(at(first.line).error(format!(
+                return Err(at(first_line).error(format!(
                     "expected 2 columns (x y) or 3 columns (x y z), found {n}"
                 )))
             }
-        };
-        (columns, rows)
-    };
-    if data.is_empty() {
-        return Err(data_error(path, "no points found"));
-    }
-    let width = first.fields.len();
-    let coordinate = |row: &Row, k: usize| parse_coordinate(&row.fields[k], k + 1, at(row.line));
-    let check_width = |row: &Row| {
-        if row.fields.len() == width {
-            Ok(())
-        } else {
-            Err(at(row.line).error(format!(
-                "expected {width} fields, found {}",
-                row.fields.len()
-            )))
         }
     };
+    let first_data = if has_header {
+        None
+    } else {
+        Some((first_line, first.to_vec()))
+    };
     match columns.z {
-        None => data
-            .iter()
-            .map(|row| {
-                check_width(row)?;
-                Ok(Point([
-                    coordinate(row, columns.x)?,
-                    coordinate(row, columns.y)?,
-                ]))
-            })
-            .collect::<Result<Vec<_>, _>>()
+        None => collect_points(rows, csv, first_data, width, [columns.x, columns.y], path)
             .map(CurvePoints::Planar),
-        Some(z) => data
-            .iter()
-            .map(|row| {
-                check_width(row)?;
-                Ok(Point([
-                    coordinate(row, columns.x)?,
-                    coordinate(row, columns.y)?,
-                    coordinate(row, z)?,
-                ]))
-            })
-            .collect::<Result<Vec<_>, _>>()
-            .map(CurvePoints::Spatial),
+        Some(z) => collect_points(
+            rows,
+            csv,
+            first_data,
+            width,
+            [columns.x, columns.y, z],
+            path,
+        )
+        .map(CurvePoints::Spatial),
     }
+}
+
+/// The points of the data rows (`first`, if the first row was data, then the rest of
+/// `rows`), coordinate `k` from field `columns[k]`; every row `width` fields long.
+fn collect_points<R: BufRead, const D: usize>(
+    mut rows: RowReader<'_, R>,
+    csv: bool,
+    first: Option<(usize, Vec<String>)>,
+    width: usize,
+    columns: [usize; D],
+    path: &Path,
+) -> Result<Vec<Point<D>>, IoError> {
+    let mut points = Vec::new();
+    let mut push = |line: usize, fields: &[String]| -> Result<(), IoError> {
+        let at = Location::new(path, line);
+        if fields.len() != width {
+            return Err(at.error(format!("expected {width} fields, found {}", fields.len())));
+        }
+        let mut p = [0.0; D];
+        for (c, &k) in p.iter_mut().zip(&columns) {
+            *c = parse_coordinate(&fields[k], k + 1, at)?;
+        }
+        points.push(Point(p));
+        Ok(())
+    };
+    if let Some((line, fields)) = first {
+        push(line, &fields)?;
+    }
+    while let Some((line, fields)) = rows.next_row(csv)? {
+        push(line, fields)?;
+    }
+    if points.is_empty() {
+        return Err(data_error(path, "no points found"));
+    }
+    Ok(points)
 }
 
 /// A coordinate column name (`x`, `y`, `z`) that a header gives twice, if any.

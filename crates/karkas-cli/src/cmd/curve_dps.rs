@@ -71,6 +71,7 @@ fn build_and_write<const D: usize>(
     format: OutputFormat,
     points: &[Point<D>],
 ) -> Result<()> {
+    super::guard::curve_points(&args.input, points)?;
     let m = points.len();
     let period = m.saturating_mul(args.step);
     if period > MAX_SAMPLES {

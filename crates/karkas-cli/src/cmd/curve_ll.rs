@@ -72,6 +72,7 @@ fn build_and_write<const D: usize>(
     } else {
         LlCurve::new
     };
+    super::guard::curve_points(&args.input, points)?;
     let curve = build(points, args.order, args.closed)
         .map_err(|e| anyhow!("{}: {e}", args.input.display()))?;
     if format.is_cad() {
@@ -80,7 +81,11 @@ fn build_and_write<const D: usize>(
     }
     let n = args
         .samples
-        .unwrap_or_else(|| default_curve_samples(points.len()));
+        .unwrap_or_else(|| default_curve_samples(points.len()).min(MAX_SAMPLES));
+    super::guard::check_memory(
+        &format!("curve ll: {n} samples"),
+        (n as u128) * (8 + 8 * D as u128),
+    )?;
     let mut ts = vec![0.0; n];
     let mut samples = vec![Point::ZERO; n];
     curve.sample_into(&mut ts, &mut samples);

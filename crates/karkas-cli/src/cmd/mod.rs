@@ -5,6 +5,7 @@ mod curve_dps;
 mod curve_fit;
 mod curve_ll;
 pub mod export;
+pub mod guard;
 pub mod hausdorff;
 mod output;
 pub mod section;

@@ -51,6 +51,10 @@ pub fn write_sampled_surface_with_net(
     title: &str,
     net: Option<&Grid<Point3>>,
 ) -> Result<()> {
+    super::guard::check_memory(
+        &format!("{}: {nu} x {nv} samples", output.display()),
+        (nu as u128) * (nv as u128) * 24 + (nu as u128 + nv as u128) * 8,
+    )?;
     let mut us = vec![0.0; nu];
     let mut vs = vec![0.0; nv];
     let mut samples = vec![Point3::ZERO; nu * nv];

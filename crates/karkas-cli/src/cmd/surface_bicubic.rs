@@ -72,6 +72,7 @@ pub fn run(args: &SurfaceBicubicArgs) -> Result<()> {
     }
     ensure_distinct(&args.input, &args.output)?;
     let grid = read_grid(&args.input)?;
+    super::guard::grid_points(&args.input, grid.as_slice())?;
     let surface = BicubicSurface::new(&grid, args.param.to_library(), args.closed_u, args.closed_v)
         .map_err(|e| anyhow!("{}: {e}", args.input.display()))?;
     if format.is_cad() {

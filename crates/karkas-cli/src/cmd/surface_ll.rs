@@ -50,6 +50,7 @@ pub fn run(args: &SurfaceLlArgs) -> Result<()> {
     }
     ensure_distinct(&args.input, &args.output)?;
     let grid = read_grid(&args.input)?;
+    super::guard::grid_points(&args.input, grid.as_slice())?;
     let build = if args.interpolate {
         LlSurface::interpolating
     } else {

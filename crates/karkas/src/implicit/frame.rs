@@ -128,10 +128,17 @@ fn tangent_basis(n: Point3) -> (Point3, Point3) {
 /// The foot of `point` on `F = 0` by Newton's method along the gradient,
 /// `p <- p - F(p) grad F(p) / |grad F(p)|^2`, to full precision.
 ///
-/// Errors: [`Error::NoSurfaceNear`] when the iteration does not converge (no surface near,
-/// a non-finite value, or a vanishing gradient on the way), [`Error::SingularPoint`] when
-/// `point` itself is a singular point of the surface.
+/// Errors: [`Error::InvalidInput`] for a non-finite `point`, [`Error::NoSurfaceNear`] when
+/// the iteration does not converge (no surface near, a non-finite value, or a vanishing
+/// gradient on the way), [`Error::SingularPoint`] when `point` itself is a singular point of
+/// the surface.
 pub fn project_onto<S: ImplicitSurface + ?Sized>(surface: &S, point: Point3) -> Result<Point3> {
+    if !point.is_finite() {
+        return Err(Error::InvalidInput(format!(
+            "the point to project, {:?}, has a non-finite coordinate",
+            point.0
+        )));
+    }
     let mut p = point;
     let scale = point.max_abs().max(1.0);
     let lost = || Error::NoSurfaceNear {
@@ -155,6 +162,9 @@ pub fn project_onto<S: ImplicitSurface + ?Sized>(surface: &S, point: Point3) -> 
         }
         let step = g * (f / g2);
         p -= step;
+        if !p.is_finite() {
+            break;
+        }
         if step.norm() <= 1e-15 * scale {
             return Ok(p);
         }

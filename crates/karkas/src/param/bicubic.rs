@@ -56,7 +56,9 @@ impl<const D: usize> BicubicSurface<D> {
     /// parameters include the closing step.
     ///
     /// Errors: fewer than 2 rows or columns (3 distinct when closed), a non-finite point
-    /// (named by its cell), coincident consecutive lines ([`Error::CoincidentGridLines`]).
+    /// (named by its cell), coincident consecutive lines ([`Error::CoincidentGridLines`]),
+    /// parameters closer than `1e-12` of their span ([`Error::InvalidKnot`], e.g. from one far
+    /// outlier).
     pub fn new(
         grid: &Grid<Point<D>>,
         parameterization: GridParameterization,
@@ -66,6 +68,9 @@ impl<const D: usize> BicubicSurface<D> {
         validate(grid)?;
         let grid = close_grid(grid, closed_u, closed_v)?;
         let (us, vs) = grid_parameters(&grid, parameterization)?;
+        // Parameters spanning many orders of magnitude (a far outlier) are refused here.
+        check_knots(&us)?;
+        check_knots(&vs)?;
         Self::build(grid, us, vs, closed_u, closed_v)
     }
 
