@@ -39,7 +39,9 @@ fn surface_commands_write_every_format() {
         s(&dir.path().join("x.step.txt")),
     ]);
     assert_eq!(o.status.code(), Some(2));
-    assert!(stderr(&o).contains(".csv, .svg, .obj, .stl, .png, .ply, .vtk, .vts, .glb, .html"));
+    assert!(stderr(&o).contains(
+        ".csv, .svg, .obj, .stl, .png, .step/.stp, .iges/.igs, .ply, .vtk, .vts, .glb, .html"
+    ));
 }
 
 #[test]

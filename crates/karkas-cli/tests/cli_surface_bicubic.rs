@@ -184,7 +184,7 @@ fn bad_input_exits_2_with_one_line_and_no_output() {
     let twice = write(
         dir.path(),
         "t.csv",
-        "i,j,x,y,z\n0,0,0,0,0\n0,1,0,1,0\n1,0,0,0,0\n1,1,0,1,0\n",
+        "i,j,x,y,z\n0,0,0,0,0\n0,1,0,1,0\n0,2,1,2,0\n1,0,0,0,0\n1,1,0,1,0\n1,2,1,2,0\n",
     );
     let o = karkas(&["surface", "bicubic", s(&twice), "-o", s(&out)]);
     assert_eq!(o.status.code(), Some(2));

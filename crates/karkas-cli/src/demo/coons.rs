@@ -7,7 +7,7 @@ use super::coons_data::{
     body_line, curve_family_csv, figure_3_sheet, fuselage, fuselage_point_lists, Body,
     FUSELAGE_STATIONS, FUSELAGE_STRINGERS,
 };
-use super::{Finding, Output};
+use super::{write_viewer, Finding, Output};
 use anyhow::Result;
 use karkas::coons::{
     Along, CoonsSurface, CrossDerivatives, CurveFit, CurveNetwork, NetworkAxis, PointNetwork,
@@ -94,7 +94,14 @@ pub fn figure_3(out: &Output) -> Result<Vec<Finding>> {
         "Seed 001 fig. 3 network: Lagrange Gordon | natural-spline Gordon | composite Coons",
         &pictures,
     )?;
-    write_mesh(&out.file("coons-fig3-composite.obj"), &composite, 81, 81)?;
+    write_mesh(
+        out,
+        "coons-fig3-composite",
+        "Seed 001 fig. 3 network: composite Coons surface",
+        &composite,
+        81,
+        81,
+    )?;
 
     let miss = [&lagrange, &natural, &composite, &derived]
         .iter()
@@ -193,7 +200,14 @@ pub fn fuselage_network(out: &Output) -> Result<Vec<Finding>> {
         "Seed 001, 7 frames x 5 stringers: Lagrange Gordon (top), spline Gordon (bottom)",
         &[above, below],
     )?;
-    write_mesh(&out.file("fuselage-composite.obj"), &composite, 145, 73)?;
+    write_mesh(
+        out,
+        "fuselage-composite",
+        "Seed 001, 7 frames x 5 stringers: composite Coons surface",
+        &composite,
+        145,
+        73,
+    )?;
 
     let miss = [&lagrange, &spline, &composite]
         .iter()
@@ -256,13 +270,29 @@ fn write_text(path: &Path, text: &str) -> Result<()> {
     Ok(())
 }
 
-fn write_mesh(path: &Path, surface: &CoonsSurface<3>, nu: usize, nv: usize) -> Result<()> {
+/// Writes the OBJ mesh `{stem}.obj` and the viewer page `{stem}.html` of `surface`.
+fn write_mesh(
+    out: &Output,
+    stem: &str,
+    title: &str,
+    surface: &CoonsSurface<3>,
+    nu: usize,
+    nv: usize,
+) -> Result<()> {
     let mut us = vec![0.0; nu];
     let mut vs = vec![0.0; nv];
     let mut mesh = vec![Point3::ZERO; nu * nv];
     surface.sample_grid_into(&mut us, &mut vs, &mut mesh);
-    write_surface_obj(path, nu, nv, &mesh)?;
-    Ok(())
+    write_surface_obj(&out.file(format!("{stem}.obj")), nu, nv, &mesh)?;
+    write_viewer(
+        out,
+        &format!("{stem}.html"),
+        title,
+        (nu, nv),
+        &mesh,
+        None,
+        Vec::new(),
+    )
 }
 
 /// The largest distance between the network curves and the surface along its node lines.

@@ -8,7 +8,7 @@
 //! (offset horizontally, perpendicular to the knot), and the three rings across it are circles
 //! through those two curves at `q = 0, 40, 80`.
 
-use super::{Finding, Output};
+use super::{write_viewer, Finding, Output};
 use anyhow::Result;
 use karkas::dps::{compatibility_residual, discrete_bspline, DiscreteSpline, TubeSurface};
 use karkas::{Grid, Point2, Point3};
@@ -229,6 +229,15 @@ pub fn knot(out: &Output) -> Result<Vec<Finding>> {
         closed.rows(),
         closed.cols(),
         closed.as_slice(),
+    )?;
+    write_viewer(
+        out,
+        "knot-tube.html",
+        "Seed 002: the knotted tube, 2 x 5 curves along, 3 x 40 rings across",
+        (closed.rows(), closed.cols()),
+        closed.as_slice(),
+        None,
+        Vec::new(),
     )?;
 
     let camera = Camera::new();

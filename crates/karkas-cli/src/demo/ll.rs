@@ -3,7 +3,7 @@
 //! §1.4, §1.6).
 
 use super::data::{aircraft_15x31, contour_53, contour_csv, grid_csv};
-use super::{Finding, Output};
+use super::{write_viewer, Finding, Output};
 use anyhow::Result;
 use karkas::ll::{LlCurve, LlSurface};
 use karkas::section::{Plane, Section, SectionOptions, Sectioner};
@@ -198,6 +198,18 @@ pub fn aircraft(out: &Output) -> Result<Vec<Finding>> {
         view: AIRCRAFT_VIEW,
     };
     write_scene_svg(&out.file("aircraft-ll5-view.svg"), &scene)?;
+    write_viewer(
+        out,
+        "aircraft-ll5.html",
+        "Seed 000: LL surface, L = 5, of the aircraft-like body, with its sections",
+        (nu, nv),
+        &mesh,
+        Some(grid.clone()),
+        vec![
+            ("sections x = const", stations.clone()),
+            ("sections y = const", buttocks.clone()),
+        ],
+    )?;
     write_scene_png(&out.file("aircraft-ll5-view.png"), &scene)?;
     let body_plan: Vec<Vec<Point2>> = stations
         .iter()

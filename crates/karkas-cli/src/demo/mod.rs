@@ -16,6 +16,8 @@ mod report;
 use anyhow::{Context, Result};
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
+use karkas::{Grid, Point3};
+use karkas_io::viewer::{write_viewer_html, ViewerCurve, ViewerScene, ViewerSurface};
 use std::cell::RefCell;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -71,6 +73,45 @@ impl Output {
         names.dedup();
         names
     }
+}
+
+/// Writes the 3-D viewer page `name` of a surface sampled `rows x cols` (row-major), with
+/// its isoparametric lines, the input grid `net` as the control net where there is one, and
+/// named curves on it (sections, network curves).
+pub fn write_viewer(
+    out: &Output,
+    name: &str,
+    title: &str,
+    (rows, cols): (usize, usize),
+    samples: &[Point3],
+    net: Option<Grid<Point3>>,
+    curves: Vec<(&str, Vec<Vec<Point3>>)>,
+) -> Result<()> {
+    let samples = Grid::from_row_major(rows, cols, samples.to_vec())
+        .context("viewer samples do not fill the grid")?;
+    let isolines = crate::cmd::export::isoparametric_lines(&samples);
+    let curves = curves
+        .into_iter()
+        .flat_map(|(label, lines)| {
+            lines.into_iter().map(move |points| ViewerCurve {
+                name: label.to_string(),
+                points,
+            })
+        })
+        .collect();
+    let scene = ViewerScene {
+        title: title.to_string(),
+        surfaces: vec![ViewerSurface {
+            name: title.to_string(),
+            samples,
+            control_net: net,
+            isolines,
+        }],
+        curves,
+        ..ViewerScene::default()
+    };
+    write_viewer_html(&out.file(name), &scene)?;
+    Ok(())
 }
 
 /// One example of a paper, as the demo runs it.

@@ -3,7 +3,7 @@
 //! the paper's figures beside ours. Writes every frame's nodes (grid CSV) and interpolant
 //! (OBJ mesh).
 
-use super::{Finding, Output};
+use super::{write_viewer, Finding, Output};
 use anyhow::{Context, Result};
 use karkas::param::experiments::{helix_experiment, seed_experiments, SeedExperiment};
 use karkas::param::BicubicSurface;
@@ -48,6 +48,18 @@ fn experiment(out: &Output, row: &SeedExperiment) -> Result<Finding> {
         .sample_grid_into(&mut us, &mut vs, &mut mesh);
     write_surface_obj(&out.file(format!("{name}.obj")), nu, nv, &mesh)?;
     let frame = frame_lines(&outcome.surface);
+    write_viewer(
+        out,
+        &format!("{name}.html"),
+        &format!(
+            "Seed 004: {}, bicubic interpolant of the 5 x 9 frame",
+            row.label
+        ),
+        (nu, nv),
+        &mesh,
+        Some(outcome.nodes.clone()),
+        vec![("parameter lines through the nodes", frame.clone())],
+    )?;
     let title = format!(
         "Seed 004: {}, bicubic interpolant of the 5 x 9 frame, Hausdorff error {:.4}",
         row.label, outcome.error.distance
