@@ -372,6 +372,34 @@ fn tube_csv_obj_and_stl() {
         2 * 12 * 20
     );
     assert_eq!(bytes.len(), 84 + 50 * 2 * 12 * 20);
+
+    // The other mesh formats and the viewer page, by extension.
+    for ext in ["ply", "html"] {
+        let path = dir.path().join(format!("t.{ext}"));
+        let o = karkas(&[
+            "surface",
+            "dps-tube",
+            "--along",
+            s(&f),
+            "--across",
+            s(&g),
+            "--n1",
+            "4",
+            "--n2",
+            "5",
+            "-o",
+            s(&path),
+        ]);
+        assert!(o.status.success(), "{ext}: {}", stderr(&o));
+        let bytes = std::fs::read(&path).unwrap();
+        let head = String::from_utf8_lossy(&bytes[..bytes.len().min(4096)]).into_owned();
+        if ext == "ply" {
+            assert!(head.contains("element vertex 273\n"), "{head}");
+            assert!(head.contains("element face 480\n"), "{head}");
+        } else {
+            assert!(head.starts_with("<!DOCTYPE html>"), "{head}");
+        }
+    }
 }
 
 #[test]
@@ -398,11 +426,11 @@ fn bad_tube_input_exits_2_and_writes_nothing() {
     run(&["--n1", "1", "--n2", "4"], "--n1", &out);
     run(&["--n1", "5", "--n2", "4", "--r2", "0"], "--r2", &out);
     run(&["--n1", "5", "--n2", "4", "--r1", "99"], "--r1", &out);
-    let svg = dir.path().join("t.svg");
+    let unknown = dir.path().join("t.dxf");
     run(
         &["--n1", "5", "--n2", "4"],
         "unknown output extension",
-        &svg,
+        &unknown,
     );
 
     // f_1 moved where it must meet g_2 (q = 2 n2 = 8).

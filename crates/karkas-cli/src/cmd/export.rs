@@ -113,8 +113,22 @@ pub const EXACT_CURVE_FORMATS: [OutputFormat; 6] = [
     OutputFormat::Iges,
 ];
 
-/// Every format a sampled surface can be written in (the sampled CSV, meshes, pictures,
-/// the viewer page) and the exact B-spline surface as STEP or IGES.
+/// Every format a sampled surface can be written in: the sampled CSV, meshes, pictures and
+/// the viewer page.
+pub const SURFACE_FORMATS: [OutputFormat; 10] = [
+    OutputFormat::Csv,
+    OutputFormat::Obj,
+    OutputFormat::Stl,
+    OutputFormat::Ply,
+    OutputFormat::Vtk,
+    OutputFormat::Vts,
+    OutputFormat::Glb,
+    OutputFormat::Svg,
+    OutputFormat::Png,
+    OutputFormat::Html,
+];
+
+/// [`SURFACE_FORMATS`] and the exact B-spline surface as STEP or IGES.
 pub const EXACT_SURFACE_FORMATS: [OutputFormat; 12] = [
     OutputFormat::Csv,
     OutputFormat::Obj,

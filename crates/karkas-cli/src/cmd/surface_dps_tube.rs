@@ -8,9 +8,7 @@ use anyhow::{anyhow, bail, Result};
 use clap::Args;
 use karkas::dps::TubeSurface;
 use karkas::Error;
-use karkas_io::obj::write_surface_obj;
 use karkas_io::skeleton::{read_across_curves, read_along_curves};
-use karkas_io::stl::write_surface_stl;
 use karkas_io::write::write_indexed_grid_csv;
 use karkas_io::OutputFormat;
 use std::path::PathBuf;
@@ -38,7 +36,8 @@ pub struct SurfaceDpsTubeArgs {
     /// Spline order along the tube (in q).
     #[arg(long = "r2", value_name = "R2", default_value_t = 2)]
     r2: usize,
-    /// Output file: .csv (p,q,x,y,z), .obj or .stl (closed triangle mesh).
+    /// Output file: .csv (p,q,x,y,z), a closed mesh (.obj .stl .ply .vtk .vts .glb), a
+    /// picture (.svg .png) or a 3-D viewer page (.html).
     #[arg(short, long)]
     output: PathBuf,
 }
@@ -46,10 +45,7 @@ pub struct SurfaceDpsTubeArgs {
 /// Runs `karkas surface dps-tube`.
 pub fn run(args: &SurfaceDpsTubeArgs) -> Result<()> {
     super::output::refuse_cad_for_discrete(&args.output)?;
-    let format = OutputFormat::from_path(
-        &args.output,
-        &[OutputFormat::Csv, OutputFormat::Obj, OutputFormat::Stl],
-    )?;
+    let format = OutputFormat::from_path(&args.output, &super::export::SURFACE_FORMATS)?;
     check_order("--r1", args.r1)?;
     check_order("--r2", args.r2)?;
     check_step("--n1", args.n1)?;
@@ -83,13 +79,11 @@ pub fn run(args: &SurfaceDpsTubeArgs) -> Result<()> {
     match format {
         OutputFormat::Csv => write_indexed_grid_csv(&args.output, ["p", "q"], tube.values())?,
         _ => {
-            let closed = tube.closed_grid();
-            let (rows, cols) = (closed.rows(), closed.cols());
-            if format == OutputFormat::Stl {
-                write_surface_stl(&args.output, rows, cols, closed.as_slice())?;
-            } else {
-                write_surface_obj(&args.output, rows, cols, closed.as_slice())?;
-            }
+            let title = format!(
+                "discrete periodic tube, {big_n1} x {big_n2} values, orders {} and {}",
+                args.r1, args.r2
+            );
+            super::export::write_surface(&args.output, format, &tube.closed_grid(), &title, None)?;
         }
     }
     report(&args.output, big_n1 * big_n2);
