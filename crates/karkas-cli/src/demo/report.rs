@@ -252,13 +252,7 @@ fn example_html(html: &mut String, o: &ExampleOutcome) {
     }
     let viewers = files_of(o, Kind::Viewer);
     if !viewers.is_empty() {
-        html.push_str("<p>3-D viewer pages: ");
-        let links: Vec<String> = viewers
-            .iter()
-            .map(|n| format!("<a href=\"{n}\">{n}</a>", n = escape(n)))
-            .collect();
-        html.push_str(&links.join(", "));
-        html.push_str("</p>\n");
+        let _ = writeln!(html, "<p>3-D viewer pages: {}</p>", links(&viewers));
     }
     let data = files_of(o, Kind::Data);
     if !data.is_empty() {
@@ -267,13 +261,17 @@ fn example_html(html: &mut String, o: &ExampleOutcome) {
             "<details><summary>{} data and mesh files</summary><p>",
             data.len()
         );
-        let links: Vec<String> = data
-            .iter()
-            .map(|n| format!("<a href=\"{n}\">{n}</a>", n = escape(n)))
-            .collect();
-        html.push_str(&links.join(", "));
-        html.push_str("</p></details>\n");
+        let _ = writeln!(html, "{}</p></details>", links(&data));
     }
+}
+
+/// Links to the files `names`, separated by commas.
+fn links(names: &[&str]) -> String {
+    let links: Vec<String> = names
+        .iter()
+        .map(|n| format!("<a href=\"{n}\">{n}</a>", n = escape(n)))
+        .collect();
+    links.join(", ")
 }
 
 /// Renders `index.html`.
