@@ -2,29 +2,10 @@
 //! command whose result is a piecewise polynomial (README, "Command line"); a clear error for
 //! the discrete periodic splines and for Coons networks without an exact form.
 
+mod common;
+
+use common::{karkas, s, stderr, write};
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-
-fn karkas(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_karkas"))
-        .args(args)
-        .output()
-        .expect("the karkas binary runs")
-}
-
-fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
-    let p = dir.join(name);
-    std::fs::write(&p, text).unwrap();
-    p
-}
-
-fn s(p: &Path) -> &str {
-    p.to_str().unwrap()
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
-}
 
 /// The STEP entity instances of a given type, as their argument text.
 fn step_items(text: &str, entity: &str) -> Vec<String> {
