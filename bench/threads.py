@@ -29,6 +29,10 @@ S = karkas.BicubicSurface(sheet(1000), parameterization="chord")
 (a, b), (c0, d) = S.domain_u, S.domain_v
 us, vs = np.linspace(a, b, 2000), np.linspace(c0, d, 2000); out = np.empty((2000, 2000, 3))
 run = lambda: S(us, vs, grid=True, out=out)""",
+    "smoothing fit 1e5 noisy 2-D points, 2012 knots": """
+rng = np.random.default_rng(7)
+pts = noisy_spiral(100_000, 2.9e-4, rng)
+run = lambda: karkas.fit_curve(pts, knots=2012)""",
     "closed DPS interpolation 1e5": """
 pts = closed_curve(100_000)
 run = lambda: karkas.DiscreteSpline.interpolate(pts, order=3, n=10)""",
@@ -37,7 +41,7 @@ run = lambda: karkas.DiscreteSpline.interpolate(pts, order=3, n=10)""",
 CHILD = """
 import sys, time, statistics, numpy as np, karkas
 sys.path.insert(0, {here!r})
-from compare import open_curve, closed_curve, sheet
+from compare import open_curve, closed_curve, sheet, noisy_spiral
 {setup}
 run()
 times = []

@@ -13,6 +13,12 @@ use clap::error::ErrorKind;
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;
 
+/// mimalloc keeps freed memory for the next allocation instead of returning it to the
+/// kernel: large results (10^6 points and more) then skip the first-touch page faults that
+/// cost more than the computation itself (BENCHMARKS.md, "Memory").
+#[global_allocator]
+static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
 /// Smooth parametric curves and surfaces from point frames.
 #[derive(Debug, Parser)]
 #[command(name = "karkas", version, about, long_about = None)]

@@ -16,6 +16,12 @@ mod surfaces;
 
 use pyo3::prelude::*;
 
+/// mimalloc keeps freed memory for the next allocation instead of returning it to the
+/// kernel: large results (10^6 points and more) then skip the first-touch page faults that
+/// cost more than the computation itself (BENCHMARKS.md, "Memory").
+#[global_allocator]
+static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
 /// karkas: smooth parametric curves and surfaces from point frames.
 ///
 /// Curves (LLCurve, CubicSpline, HermiteSpline from fit_curve, ...) are called like SciPy's

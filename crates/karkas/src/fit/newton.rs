@@ -28,12 +28,18 @@
 
 use super::hermite::{bending_gram, hermite_basis, jump_coefficients, HermiteSpline};
 use super::solver::{Problem, Solver, State};
+use rayon::prelude::*;
+
+use crate::core::parallel::PARALLEL_THRESHOLD;
 use crate::{Point, Result};
 
 /// Secant and bisection steps of the search for `p`, at most.
 const SEARCH_STEPS: usize = 100;
 /// Decades the bracket of `p` is widened by, at most, on either side of the guess.
 const BRACKET_DECADES: usize = 60;
+/// A tenfold penalty that lowers the logarithm of the jump sum after the step by less than
+/// this has saturated (see [`Solver::target_step`]).
+const SATURATED: f64 = 1e-6;
 
 /// The half gradient of `F = H + p f + lambda S` in two parts, `base` (of `H + lambda S`) and
 /// `jump` (of `f`, per unit `p`), with the sums of the absolute values of their terms (the
@@ -169,65 +175,79 @@ pub(crate) fn accumulate_gradient<const D: usize>(
 impl<const D: usize> Solver<'_, D> {
     /// Accumulates the gradient and the per-piece Hessian blocks of `H` at `state` (see the
     /// module docs).
+    ///
+    /// A piece's blocks gather the terms of the points on it, in the order of the points; with
+    /// many points, ranges of pieces are filled in parallel (each by a scan of all points), so
+    /// the blocks do not depend on the number of threads.
     pub(super) fn assemble(&mut self, state: &State<D>) {
         accumulate_gradient(&self.problem, state, &mut self.gradient);
         let spline = &state.spline;
-        let knots = spline.knots();
-        let n = self.problem.points.len();
-        let (first_t, last_t) = (knots[0], knots[knots.len() - 1]);
-        self.separable.fill(0.0);
-        self.coupled.fill(0.0);
-        self.coupled_safe.fill(0.0);
-        let w4 = 4 * D;
-        let mut v = [[0.0; 4]; D];
-        for (i, (r, &t)) in self.problem.points.iter().zip(&state.params).enumerate() {
-            let k = spline.piece_near(t, state.piece[i]);
-            let h = knots[k + 1] - knots[k];
-            let s = (t - knots[k]) / h;
-            let b0 = hermite_basis(s, h, 0);
-            let sep = &mut self.separable[16 * k..16 * k + 16];
-            for a in 0..4 {
-                for b in 0..=a {
-                    sep[4 * a + b] += b0[a] * b0[b];
-                }
-            }
-            let free = self.problem.foot_points && i > 0 && i + 1 < n && t > first_t && t < last_t;
-            if !free {
-                continue;
-            }
-            let b1 = hermite_basis(s, h, 1);
-            let b2 = hermite_basis(s, h, 2);
-            let q = piece_coefficients(spline, k);
-            let (mut e, mut d1, mut d2) = (-*r, Point::<D>::ZERO, Point::<D>::ZERO);
-            for a in 0..4 {
-                e = e.add_scaled(b0[a], q[a]);
-                d1 = d1.add_scaled(b1[a], q[a]);
-                d2 = d2.add_scaled(b2[a], q[a]);
-            }
-            let speed_sq = d1.norm_sq();
-            let exact = speed_sq + e.dot(d2);
-            if speed_sq <= 0.0 {
-                continue;
-            }
-            for (c, vc) in v.iter_mut().enumerate() {
-                for a in 0..4 {
-                    vc[a] = b0[a] * d1[c] + b1[a] * e[c];
-                }
-            }
-            let range = w4 * w4 * k..w4 * w4 * (k + 1);
-            let inv_safe = 1.0 / exact.max(speed_sq);
-            let inv_exact = if exact > 0.0 { 1.0 / exact } else { 0.0 };
-            let block = &mut self.coupled[range.clone()];
-            let safe = &mut self.coupled_safe[range];
-            for x in 0..w4 {
-                let vx = v[x % D][x / D];
-                for y in 0..=x {
-                    let vv = vx * v[y % D][y / D];
-                    block[w4 * x + y] -= vv * inv_exact;
-                    safe[w4 * x + y] -= vv * inv_safe;
-                }
-            }
+        let pieces = spline.knots().len() - 1;
+        for (slot, (&t, &hint)) in self
+            .point_piece
+            .iter_mut()
+            .zip(state.params.iter().zip(&state.piece))
+        {
+            *slot = spline.piece_near(t, hint);
         }
+        let point_piece = &self.point_piece;
+        let kernel = BlockKernel {
+            problem: &self.problem,
+            state,
+            point_piece,
+        };
+        let (sep, coupled, safe) = (16, 16 * D * D, 16 * D * D);
+        let threads = rayon::current_num_threads();
+        if point_piece.len() < PARALLEL_THRESHOLD || threads < 2 || pieces < 2 {
+            kernel.fill(
+                0..pieces,
+                0..point_piece.len(),
+                &mut self.separable,
+                &mut self.coupled,
+                &mut self.coupled_safe,
+            );
+            return;
+        }
+        // Ranges of pieces holding about equal numbers of points, each with its own slices
+        // of the blocks and the span of the indices of its points (short: the parameters are
+        // nearly sorted).
+        let ranges = (2 * threads).min(pieces);
+        let n = point_piece.len();
+        let mut bounds: Vec<usize> = (0..=ranges)
+            .map(|r| {
+                if r == ranges {
+                    pieces
+                } else {
+                    point_piece[r * n / ranges]
+                }
+            })
+            .collect();
+        bounds[0] = 0;
+        for r in 1..bounds.len() {
+            bounds[r] = bounds[r].max(bounds[r - 1]);
+        }
+        let mut spans = vec![(usize::MAX, 0); ranges];
+        for (i, &k) in point_piece.iter().enumerate() {
+            let r = bounds.partition_point(|&b| b <= k) - 1;
+            let span = &mut spans[r.min(ranges - 1)];
+            *span = (span.0.min(i), i + 1);
+        }
+        let mut jobs = Vec::with_capacity(ranges);
+        let (mut a, mut b, mut c) = (
+            &mut self.separable[..],
+            &mut self.coupled[..],
+            &mut self.coupled_safe[..],
+        );
+        for (w, &(lo, hi)) in bounds.windows(2).zip(&spans) {
+            let len = w[1] - w[0];
+            let (a0, a1) = std::mem::take(&mut a).split_at_mut(len * sep);
+            let (b0, b1) = std::mem::take(&mut b).split_at_mut(len * coupled);
+            let (c0, c1) = std::mem::take(&mut c).split_at_mut(len * safe);
+            jobs.push((w[0]..w[1], lo.min(hi)..hi, a0, b0, c0));
+            (a, b, c) = (a1, b1, c1);
+        }
+        jobs.into_par_iter()
+            .for_each(|(range, span, a, b, c)| kernel.fill(range, span, a, b, c));
     }
 
     /// The damped Newton step from the assembled blocks into `self.step`; returns the
@@ -385,6 +405,13 @@ impl<const D: usize> Solver<'_, D> {
                     (hi, f_hi) = (x, v);
                     break;
                 }
+                if v >= f_lo - SATURATED {
+                    // A tenfold penalty no longer lowers the jump sum of the step (the
+                    // damping limits it): the target is out of reach of this step, and a
+                    // larger penalty would only grow without use.
+                    let predicted = self.newton_step(state, lo.exp(), mu)?;
+                    return Ok((lo.exp(), predicted));
+                }
                 (lo, f_lo) = (x, v);
                 if x > start + BRACKET_DECADES as f64 * decade {
                     // The target is out of reach: the largest penalty tried.
@@ -437,5 +464,95 @@ impl<const D: usize> Solver<'_, D> {
         let p = hi.exp();
         let predicted = self.newton_step(state, p, mu)?;
         Ok((p, predicted))
+    }
+}
+
+/// Fills the Hessian blocks of a range of pieces (see [`Solver::assemble`]).
+struct BlockKernel<'s, 'a, const D: usize> {
+    problem: &'s Problem<'a, D>,
+    state: &'s State<D>,
+    /// The piece of every point.
+    point_piece: &'s [usize],
+}
+
+impl<const D: usize> BlockKernel<'_, '_, D> {
+    /// The blocks of pieces `range` (slices of `separable`, `coupled`, `coupled_safe` that
+    /// start at piece `range.start`), zeroed and then accumulated from the points of indices
+    /// `span` (which holds every point on those pieces).
+    fn fill(
+        &self,
+        range: std::ops::Range<usize>,
+        span: std::ops::Range<usize>,
+        separable: &mut [f64],
+        coupled: &mut [f64],
+        coupled_safe: &mut [f64],
+    ) {
+        separable.fill(0.0);
+        coupled.fill(0.0);
+        coupled_safe.fill(0.0);
+        let spline = &self.state.spline;
+        let knots = spline.knots();
+        let n = self.problem.points.len();
+        let (first_t, last_t) = (knots[0], knots[knots.len() - 1]);
+        let w4 = 4 * D;
+        let mut v = [[0.0; D]; 4];
+        for i in span {
+            let (r, t, k) = (
+                &self.problem.points[i],
+                self.state.params[i],
+                self.point_piece[i],
+            );
+            if !range.contains(&k) {
+                continue;
+            }
+            let local = k - range.start;
+            let h = knots[k + 1] - knots[k];
+            let s = (t - knots[k]) / h;
+            let b0 = hermite_basis(s, h, 0);
+            let sep = &mut separable[16 * local..16 * local + 16];
+            for a in 0..4 {
+                for b in 0..=a {
+                    sep[4 * a + b] += b0[a] * b0[b];
+                }
+            }
+            let free = self.problem.foot_points && i > 0 && i + 1 < n && t > first_t && t < last_t;
+            if !free {
+                continue;
+            }
+            let b1 = hermite_basis(s, h, 1);
+            let b2 = hermite_basis(s, h, 2);
+            let q = piece_coefficients(spline, k);
+            let (mut e, mut d1, mut d2) = (-*r, Point::<D>::ZERO, Point::<D>::ZERO);
+            for a in 0..4 {
+                e = e.add_scaled(b0[a], q[a]);
+                d1 = d1.add_scaled(b1[a], q[a]);
+                d2 = d2.add_scaled(b2[a], q[a]);
+            }
+            let speed_sq = d1.norm_sq();
+            let exact = speed_sq + e.dot(d2);
+            if speed_sq <= 0.0 {
+                continue;
+            }
+            // `v` in the interleaved layout: entry `a D + c`.
+            for (a, va) in v.iter_mut().enumerate() {
+                for c in 0..D {
+                    va[c] = b0[a] * d1[c] + b1[a] * e[c];
+                }
+            }
+            let v = v.as_flattened();
+            let block_range = w4 * w4 * local..w4 * w4 * (local + 1);
+            let inv_safe = 1.0 / exact.max(speed_sq);
+            let inv_exact = if exact > 0.0 { 1.0 / exact } else { 0.0 };
+            let block = &mut coupled[block_range.clone()];
+            let safe = &mut coupled_safe[block_range];
+            for (x, &vx) in v.iter().enumerate() {
+                let row = w4 * x..w4 * x + x + 1;
+                for ((b, s), &vy) in block[row.clone()].iter_mut().zip(&mut safe[row]).zip(v) {
+                    let vv = vx * vy;
+                    *b -= vv * inv_exact;
+                    *s -= vv * inv_safe;
+                }
+            }
+        }
     }
 }

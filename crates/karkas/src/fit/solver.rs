@@ -39,6 +39,11 @@ use super::newton::{accumulate_gradient, Gradient};
 use super::power::PowerForm;
 use super::project::foot_point_near;
 use crate::solve::{BandedLeastSquares, BandedSpd};
+use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
+
+use rayon::prelude::*;
+
+use crate::core::parallel::PARALLEL_THRESHOLD;
 use crate::{Error, Point, Result};
 
 /// Stop when the largest gradient entry is below this times the gradient's scale.
@@ -146,6 +151,9 @@ pub(crate) struct Solver<'a, const D: usize> {
     pub(super) coupled: Vec<f64>,
     /// The same with the safe `h` (see [`newton`](super::newton)).
     pub(super) coupled_safe: Vec<f64>,
+    /// The piece of every point (scratch of the assembly).
+    #[allow(dead_code)]
+    pub(super) point_piece: Vec<usize>,
     /// Use `coupled_safe` in the Newton step.
     pub(super) safe: bool,
     /// The gradient at the current state.
@@ -179,6 +187,7 @@ impl<'a, const D: usize> Solver<'a, D> {
             separable: vec![0.0; pieces * 16],
             coupled: vec![0.0; pieces * 16 * D * D],
             coupled_safe: vec![0.0; pieces * 16 * D * D],
+            point_piece: vec![0; n],
             safe: false,
             gradient: Gradient::new(unknowns),
             trial_gradient: Gradient::new(unknowns),
@@ -457,8 +466,21 @@ pub(crate) fn project<const D: usize>(
     project_within(points, foot_points, state, form, f64::INFINITY);
 }
 
+/// A chunk of the projection: its index, and its parameters, squared distances and pieces.
+type ChunkSlices<'s> = (usize, ((&'s mut [f64], &'s mut [f64]), &'s mut [usize]));
+
+/// Points per chunk of the projection: chunks are projected in parallel when there are
+/// enough points (every point is projected on its own, from its own previous foot point).
+const PROJECTION_CHUNK: usize = 1 << 12;
+
 /// [`project`], abandoned (returning `false`) once the sum of the squared distances exceeds
 /// `budget`.
+///
+/// The points are projected in chunks of [`PROJECTION_CHUNK`], in parallel above
+/// [`PARALLEL_THRESHOLD`] points. A chunk gives up when its own sum plus those of the chunks
+/// already done exceeds the budget by a margin larger than any rounding of the sum (the
+/// distances are not negative, so the total exceeds it too); otherwise the total, summed in
+/// chunk order, decides. So the result does not depend on the number of threads.
 fn project_within<const D: usize>(
     points: &[Point<D>],
     foot_points: bool,
@@ -467,25 +489,73 @@ fn project_within<const D: usize>(
     budget: f64,
 ) -> bool {
     form.update(&state.spline);
+    let form = &*form;
     let n = points.len();
-    let mut sum = 0.0;
-    for (i, r) in points.iter().enumerate() {
-        let t = state.params[i];
-        let piece = &mut state.piece[i];
-        if foot_points && i > 0 && i + 1 < n {
-            let (t, d) = foot_point_near(form, *r, t, piece);
-            state.params[i] = t;
-            state.dist_sq[i] = d;
-        } else {
-            *piece = form.piece_near(t, *piece);
-            state.dist_sq[i] = form.point(*piece, t).distance_sq(*r);
+    let limit = budget * (1.0 + 1e-6);
+    // The sum of the chunks done (f64 bits), and whether one gave up.
+    let done = AtomicU64::new(0f64.to_bits());
+    let abandoned = AtomicBool::new(false);
+    let chunk = |(c, ((params, dist_sq), piece)): ChunkSlices<'_>| {
+        let first = c * PROJECTION_CHUNK;
+        let mut sum = 0.0;
+        for (j, ((t, d), piece)) in params.iter_mut().zip(dist_sq).zip(piece).enumerate() {
+            let i = first + j;
+            let r = points[i];
+            if foot_points && i > 0 && i + 1 < n {
+                (*t, *d) = foot_point_near(form, r, *t, piece);
+            } else {
+                *piece = form.piece_near(*t, *piece);
+                *d = form.point(*piece, *t).distance_sq(r);
+            }
+            sum += *d;
+            if j % 64 == 63
+                && (abandoned.load(Ordering::Relaxed)
+                    || sum + f64::from_bits(done.load(Ordering::Relaxed)) > limit)
+            {
+                abandoned.store(true, Ordering::Relaxed);
+                return None;
+            }
         }
-        sum += state.dist_sq[i];
-        if sum > budget {
-            return false;
+        // Lock-free `done += sum`.
+        let mut old = done.load(Ordering::Relaxed);
+        while let Err(now) = done.compare_exchange_weak(
+            old,
+            (f64::from_bits(old) + sum).to_bits(),
+            Ordering::Relaxed,
+            Ordering::Relaxed,
+        ) {
+            old = now;
         }
+        Some(sum)
+    };
+    if n < PARALLEL_THRESHOLD {
+        let chunks = state
+            .params
+            .chunks_mut(PROJECTION_CHUNK)
+            .zip(state.dist_sq.chunks_mut(PROJECTION_CHUNK))
+            .zip(state.piece.chunks_mut(PROJECTION_CHUNK))
+            .enumerate();
+        let mut total = 0.0;
+        for item in chunks {
+            match chunk(item) {
+                Some(sum) => total += sum,
+                None => return false,
+            }
+        }
+        total <= budget
+    } else {
+        let sums: Vec<Option<f64>> = state
+            .params
+            .par_chunks_mut(PROJECTION_CHUNK)
+            .zip(state.dist_sq.par_chunks_mut(PROJECTION_CHUNK))
+            .zip(state.piece.par_chunks_mut(PROJECTION_CHUNK))
+            .enumerate()
+            .map(chunk)
+            .collect();
+        sums.iter()
+            .try_fold(0.0, |total, sum| sum.map(|sum| total + sum))
+            .is_some_and(|total| total <= budget)
     }
-    true
 }
 
 /// Copies values and derivatives of `from` into `to` (same knots).
