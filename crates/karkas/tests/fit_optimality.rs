@@ -191,7 +191,7 @@ fn gradient_of_the_penalized_objective_vanishes() {
             }
         }
     }
-    assert!(worst < 1e-8, "relative gradient {worst:e}");
+    assert!(worst < 1e-10, "relative gradient {worst:e}");
 }
 
 #[test]

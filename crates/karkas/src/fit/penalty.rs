@@ -19,8 +19,13 @@
 //!    The search for `p` rides on the Newton iteration: every step takes the `p` for which
 //!    the jump sum after the step meets the bound (a scalar search costing banded
 //!    factorizations only, see [`Penalty::Target`]), starting from the least-squares fit at
-//!    the starting parameters whose jump sum meets the bound. Should the iteration end
-//!    outside the tolerance (iteration cap), the seed's rule takes over from the `p` found.
+//!    the starting parameters whose jump sum meets the bound. That search meets the bound
+//!    only to its own accuracy, so the `p` of the last step is the multiplier only
+//!    approximately: the fit is then polished at `p` held (a few Newton steps to a
+//!    stationary point of `H + lambda S + p f`), `p` moved by secant steps on `ln f` against
+//!    `ln p` until `f` lands in the tolerance again (usually one to three). Should the
+//!    iteration end outside the tolerance (iteration cap), the seed's rule takes over from
+//!    the `p` found.
 //!
 //! Every `q_p` is found by [`Solver::minimize`], warm-started from the previous one.
 //! Cost: a few inner minimizations, each `O(n)` per iteration.
@@ -33,6 +38,8 @@ use crate::{Curve, Error, Point, Result};
 
 /// Iterations spent on the feasible reference `q*` of the seed's bound.
 const REFERENCE_ITERATIONS: usize = 5;
+/// Minimizations at a held `p` that polish the active bound's fit, at most.
+const POLISH_STEPS: usize = 8;
 
 /// The default of [`FitOptions::fairness`].
 pub const DEFAULT_FAIRNESS: f64 = 3e-11;
@@ -356,7 +363,7 @@ pub(crate) fn fit_checked<const D: usize>(
         iterations += solver.minimize(&mut state, Penalty::Fixed(p), settle)?.0;
         let lowest = (1.0 - options.eps_tolerance) * eps;
         let penalty = Penalty::Target {
-            target: eps * (1.0 - 0.5 * options.eps_tolerance),
+            target: penalty_target(eps, options.eps_tolerance),
             lowest,
             highest: eps,
             guess: p,
@@ -364,6 +371,32 @@ pub(crate) fn fit_checked<const D: usize>(
         let (done, found) = solver.minimize(&mut state, penalty, stop)?;
         iterations += done;
         let f = f_of(&state);
+        if f <= eps && f >= lowest && found > 0.0 {
+            // The search for p rides on the steps, so the p found is the multiplier only to
+            // the accuracy of that search: the fit is polished at p held (a stationary point
+            // of H + lambda S + p f), p moved by secant steps on ln f against ln p until
+            // f lands in the window again.
+            let ln_target = penalty_target(eps, options.eps_tolerance).ln();
+            let (mut ln_p, mut slope, mut last) = (found.ln(), -1.0, None::<(f64, f64)>);
+            let mut polished = state.clone();
+            for _ in 0..POLISH_STEPS {
+                let p = ln_p.exp();
+                iterations += solver.minimize(&mut polished, Penalty::Fixed(p), stop)?.0;
+                let f = f_of(&polished);
+                if f <= eps && f >= lowest {
+                    return Ok(finish(polished, p, seed_bound, iterations));
+                }
+                let miss = f.max(f64::MIN_POSITIVE).ln() - ln_target;
+                if let Some((ln_p0, miss0)) = last {
+                    if ln_p != ln_p0 && miss != miss0 {
+                        slope = ((miss - miss0) / (ln_p - ln_p0)).min(-1e-3);
+                    }
+                }
+                last = Some((ln_p, miss));
+                ln_p -= miss / slope;
+            }
+            return Ok(finish(state, found, seed_bound, iterations));
+        }
         if f <= eps && f >= lowest {
             return Ok(finish(state, found, seed_bound, iterations));
         }
@@ -379,6 +412,11 @@ pub(crate) fn fit_checked<const D: usize>(
         p *= 10.0;
     }
     Err(unreachable_bound(eps))
+}
+
+/// The jump sum aimed at for the active bound: the middle of its window.
+fn penalty_target(eps: f64, tolerance: f64) -> f64 {
+    eps * (1.0 - 0.5 * tolerance)
 }
 
 /// The error for a bound that the penalty could not enforce.

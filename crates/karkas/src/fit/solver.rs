@@ -15,7 +15,9 @@
 //! - Levenberg–Marquardt damping (Marquardt's scaling): a step is taken only when the true
 //!   objective, after re-projecting every point, decreases; the damping follows the ratio of
 //!   the actual to the predicted decrease; each damping is tried with the exact model, then
-//!   with the safe one. When no damped step succeeds, the seed's alternation step (the
+//!   with the safe one (the safe one first once an exact step failed where the safe one
+//!   succeeded: near the minimum the exact model's steps slide the points along the curve
+//!   and are refused, each at the cost of a projection). When no damped step succeeds, the seed's alternation step (the
 //!   least-squares spline with the parameters held, [`solve_fixed`], then projection) is taken
 //!   instead; it never increases `F`. Near the minimum, where `F` no longer changes in
 //!   floating point, a step is taken when it shrinks the gradient.
@@ -33,7 +35,7 @@
 //! Each iteration is `O(n D^2)` for `n` points in R^D plus `O(N D^3)` for `N` knots, and
 //! allocates nothing: every buffer lives in the [`Solver`].
 
-use super::fixed::{solve_fixed, PieceIndex};
+use super::fixed::{solve_fixed, FixedScratch};
 use super::hermite::HermiteSpline;
 use super::newton::{accumulate_gradient, Gradient};
 use super::power::PowerForm;
@@ -144,7 +146,7 @@ pub(crate) struct Solver<'a, const D: usize> {
     pub(super) problem: Problem<'a, D>,
     coord: BandedLeastSquares,
     pub(super) hessian: BandedSpd,
-    index: PieceIndex,
+    fixed: FixedScratch<D>,
     /// Per piece: `sum A^T A` of its points, 4 x 4 (the same for every coordinate).
     pub(super) separable: Vec<f64>,
     /// Per piece: `-sum v v^T / h` of its points, `4 D x 4 D`.
@@ -183,7 +185,7 @@ impl<'a, const D: usize> Solver<'a, D> {
             problem,
             coord: BandedLeastSquares::new(2 * n_knots, 6, D),
             hessian: BandedSpd::new(unknowns, 5 * D + 1),
-            index: PieceIndex::new(n, pieces),
+            fixed: FixedScratch::new(n, pieces),
             separable: vec![0.0; pieces * 16],
             coupled: vec![0.0; pieces * 16 * D * D],
             coupled_safe: vec![0.0; pieces * 16 * D * D],
@@ -218,7 +220,7 @@ impl<'a, const D: usize> Solver<'a, D> {
         solve_fixed(
             &self.problem,
             &mut self.coord,
-            &mut self.index,
+            &mut self.fixed,
             &mut self.x,
             state,
             p,
@@ -276,7 +278,7 @@ impl<'a, const D: usize> Solver<'a, D> {
         let solved = solve_fixed(
             &self.problem,
             &mut self.coord,
-            &mut self.index,
+            &mut self.fixed,
             &mut self.x,
             trial,
             p,
@@ -328,6 +330,9 @@ impl<'a, const D: usize> Solver<'a, D> {
             }
         };
         let mut mu = INITIAL_DAMPING;
+        // Which model goes first: the exact one, until a step of the exact model failed
+        // where the safe one at the same damping succeeded.
+        let mut prefer_safe = false;
         let mut stalls = 0;
         let mut last_gradient = f64::INFINITY;
         for iteration in 0..stop.max_iterations {
@@ -344,15 +349,15 @@ impl<'a, const D: usize> Solver<'a, D> {
             let mut gained = None;
             let mut progress = false;
             let mut settled = false;
-            // Each damping is tried with the exact model, then with the safe one.
+            // Each damping is tried with both models, the preferred one first.
             'tries: for attempt in 0..2 * DAMPING_TRIES {
-                self.safe = attempt % 2 == 1;
+                self.safe = (attempt % 2 == 1) != prefer_safe;
                 let tried = match penalty {
                     Penalty::Fixed(p) => self.newton_step(state, p, mu).map(|x| (p, x)),
                     Penalty::Target { target, .. } => self.target_step(state, target, p, mu),
                 };
                 let mu_tried = mu;
-                if self.safe {
+                if attempt % 2 == 1 {
                     mu = (mu * 8.0).max(1e-10);
                 }
                 let (p_try, predicted) = match tried {
@@ -377,6 +382,7 @@ impl<'a, const D: usize> Solver<'a, D> {
                         < GRADIENT_PROGRESS * self.gradient.size(p_try).0
                 };
                 if lower || level {
+                    prefer_safe |= self.safe && attempt % 2 == 1;
                     let ratio = (before - value) / predicted.max(f64::MIN_POSITIVE);
                     mu = if ratio > 0.75 {
                         (mu_tried * 0.25).max(1e-15)
