@@ -371,7 +371,7 @@ pub(crate) fn fit_checked<const D: usize>(
         let (done, found) = solver.minimize(&mut state, penalty, stop)?;
         iterations += done;
         let f = f_of(&state);
-        if f <= eps && f >= lowest && found > 0.0 {
+        if f <= eps && f >= lowest {
             // The search for p rides on the steps, so the p found is the multiplier only to
             // the accuracy of that search: the fit is polished at p held (a stationary point
             // of H + lambda S + p f), p moved by secant steps on ln f against ln p until
@@ -379,7 +379,9 @@ pub(crate) fn fit_checked<const D: usize>(
             let ln_target = penalty_target(eps, options.eps_tolerance).ln();
             let (mut ln_p, mut slope, mut last) = (found.ln(), -1.0, None::<(f64, f64)>);
             let mut polished = state.clone();
-            for _ in 0..POLISH_STEPS {
+            // (p = 0: the bound is not active for the model, nothing to polish.)
+            let steps = if found > 0.0 { POLISH_STEPS } else { 0 };
+            for _ in 0..steps {
                 let p = ln_p.exp();
                 iterations += solver.minimize(&mut polished, Penalty::Fixed(p), stop)?.0;
                 let f = f_of(&polished);
@@ -395,9 +397,6 @@ pub(crate) fn fit_checked<const D: usize>(
                 last = Some((ln_p, miss));
                 ln_p -= miss / slope;
             }
-            return Ok(finish(state, found, seed_bound, iterations));
-        }
-        if f <= eps && f >= lowest {
             return Ok(finish(state, found, seed_bound, iterations));
         }
         // Not settled in the window (iteration cap): hold the p found, raised if need be.
