@@ -1,13 +1,17 @@
 //! `karkas`: smooth curves and surfaces from point frames, on the command line.
 //!
-//! A thin layer over the `karkas` and `karkas-io` crates: one module per command in `cmd/`.
+//! A thin layer over the `karkas` and `karkas-io` crates: one file per command in `cmd/`, the
+//! option groups they share in `args`, the checks of input frames in `input`, and every way a
+//! result leaves the program (files, reports, the error line) in `output/`.
 //! Exit codes: 0 on success, 2 on any error (bad arguments, bad or unreadable input, an
 //! output that cannot be written); the message is one line on standard error naming the file
 //! and the line or grid cell at fault. No output file is created or changed on error.
 
+mod args;
 mod cmd;
 mod demo;
-mod samples;
+mod input;
+mod output;
 
 use clap::error::ErrorKind;
 use clap::{Parser, Subcommand};
@@ -27,7 +31,7 @@ struct Cli {
     command: Command,
     /// The most memory one request's output may take, like 512M or 4G (default 2G, or the
     /// environment variable KARKAS_MAX_MEMORY); larger requests fail before any work.
-    #[arg(long, global = true, value_name = "SIZE", value_parser = cmd::guard::parse_size)]
+    #[arg(long, global = true, value_name = "SIZE", value_parser = output::memory::parse_size)]
     max_memory: Option<u64>,
 }
 
@@ -79,8 +83,8 @@ fn main() -> ExitCode {
             return ExitCode::from(2);
         }
     };
-    if let Err(e) = cmd::guard::set_max_memory(cli.max_memory) {
-        eprintln!("karkas: error: {e:#}");
+    if let Err(e) = output::memory::set_max_memory(cli.max_memory) {
+        eprintln!("karkas: error: {}", output::message::error_line(&e));
         return ExitCode::from(2);
     }
     let result = match cli.command {
@@ -95,8 +99,7 @@ fn main() -> ExitCode {
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
-            // One line: the chain of causes joined by ": ".
-            eprintln!("karkas: error: {e:#}");
+            eprintln!("karkas: error: {}", output::message::error_line(&e));
             ExitCode::from(2)
         }
     }

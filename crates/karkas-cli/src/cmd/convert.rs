@@ -10,9 +10,10 @@
 //! Outputs: a mesh to `.obj .stl .ply .vtk .glb .html`; a grid to those and `.vts .svg .png`
 //! and `.csv` (`i,j,x,y,z`); a curve to `.svg .png .html`. Any other pair is refused.
 
-use super::export::{to_space, write_curve_figure, write_surface};
-use super::output::ensure_distinct;
-use anyhow::{bail, Result};
+use crate::output::curve::{to_space, write_curve_figure};
+use crate::output::overwrite::ensure_distinct;
+use crate::output::surface::write_surface;
+use anyhow::{bail, Context, Result};
 use clap::Args;
 use karkas::{Grid, Point3};
 use karkas_io::mesh::TriangleMesh;
@@ -106,7 +107,8 @@ pub fn run(args: &ConvertArgs) -> Result<()> {
                 OutputFormat::Csv => write_grid_csv(&args.output, &grid)?,
                 OutputFormat::Stl | OutputFormat::Ply if args.ascii => {
                     let mesh = TriangleMesh::from_grid(&grid)
-                        .map_err(|e| anyhow::anyhow!("{}: {e}", args.input.display()))?;
+                        .map_err(anyhow::Error::msg)
+                        .with_context(|| args.input.display().to_string())?;
                     write_any_mesh(&args.output, format, &mesh, true, &title)?;
                 }
                 _ => write_surface(&args.output, format, &grid, &title, net)?,

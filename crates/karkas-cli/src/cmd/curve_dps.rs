@@ -1,13 +1,17 @@
 //! `karkas curve dps`: a closed discrete curve, the discrete periodic spline through (or with
 //! poles at) the input points (seed 002, METHODS.md §3).
 
-use super::curve_ll::{report, MAX_SAMPLES};
-use super::export::{to_space, write_curve_html};
-use super::output::ensure_distinct;
-use anyhow::{anyhow, bail, Result};
+use crate::args::{check_dps_order, check_dps_step};
+use crate::input::curve_points;
+use crate::output::cad::refuse_cad_for_discrete;
+use crate::output::curve::{project, to_space, write_curve_html};
+use crate::output::formats::CURVE_FORMATS;
+use crate::output::overwrite::ensure_distinct;
+use crate::output::samples::{report_samples, MAX_SAMPLES};
+use anyhow::{bail, Result};
 use clap::Args;
-use karkas::dps::{DiscreteSpline, MAX_ORDER};
-use karkas::{Error, Point, Point2};
+use karkas::dps::DiscreteSpline;
+use karkas::{Error, Point};
 use karkas_io::png::write_svg_as_png;
 use karkas_io::points::{read_curve_points, CurvePoints};
 use karkas_io::svg::{render_discrete_curve_svg, write_discrete_curve_svg, DiscreteCurvePlot};
@@ -39,10 +43,10 @@ pub struct CurveDpsArgs {
 
 /// Runs `karkas curve dps`.
 pub fn run(args: &CurveDpsArgs) -> Result<()> {
-    super::output::refuse_cad_for_discrete(&args.output)?;
-    let format = OutputFormat::from_path(&args.output, &super::export::CURVE_FORMATS)?;
-    check_order("--order", args.order)?;
-    check_step("--n", args.step)?;
+    refuse_cad_for_discrete(&args.output)?;
+    let format = OutputFormat::from_path(&args.output, &CURVE_FORMATS)?;
+    check_dps_order("--order", args.order)?;
+    check_dps_step("--n", args.step)?;
     ensure_distinct(&args.input, &args.output)?;
     match read_curve_points(&args.input)? {
         CurvePoints::Planar(points) => build_and_write(args, format, &points),
@@ -50,28 +54,12 @@ pub fn run(args: &CurveDpsArgs) -> Result<()> {
     }
 }
 
-/// Refuses an order outside `1..=MAX_ORDER`, naming the option.
-pub fn check_order(option: &str, order: usize) -> Result<()> {
-    if order == 0 || order > MAX_ORDER {
-        bail!("{option}: the order must be between 1 and {MAX_ORDER}, got {order}");
-    }
-    Ok(())
-}
-
-/// Refuses a step below 2, naming the option.
-pub fn check_step(option: &str, step: usize) -> Result<()> {
-    if step < 2 {
-        bail!("{option}: the number of values per point must be at least 2, got {step}");
-    }
-    Ok(())
-}
-
 fn build_and_write<const D: usize>(
     args: &CurveDpsArgs,
     format: OutputFormat,
     points: &[Point<D>],
 ) -> Result<()> {
-    super::guard::curve_points(&args.input, points)?;
+    curve_points(&args.input, points)?;
     let m = points.len();
     let period = m.saturating_mul(args.step);
     if period > MAX_SAMPLES {
@@ -85,10 +73,13 @@ fn build_and_write<const D: usize>(
     } else {
         DiscreteSpline::interpolating
     };
-    let spline = build(points, args.order, args.step).map_err(|e| match e {
-        Error::InvalidOrder { .. } => anyhow!("--order: {e}"),
-        Error::InvalidStep { .. } | Error::PeriodTooLarge { .. } => anyhow!("--n: {e}"),
-        _ => anyhow!("{}: {e}", args.input.display()),
+    let spline = build(points, args.order, args.step).map_err(|e| {
+        let at = match e {
+            Error::InvalidOrder { .. } => "--order".to_owned(),
+            Error::InvalidStep { .. } | Error::PeriodTooLarge { .. } => "--n".to_owned(),
+            _ => args.input.display().to_string(),
+        };
+        anyhow::Error::new(e).context(at)
     })?;
     let mut values = vec![Point::ZERO; period];
     spline.values(&mut values);
@@ -108,7 +99,7 @@ fn build_and_write<const D: usize>(
                 input: &project(points),
             };
             if format == OutputFormat::Png {
-                let svg = render_discrete_curve_svg(&plot).map_err(|e| anyhow!("{e}"))?;
+                let svg = render_discrete_curve_svg(&plot).map_err(anyhow::Error::msg)?;
                 write_svg_as_png(&args.output, &svg)?;
             } else {
                 write_discrete_curve_svg(&args.output, &plot)?;
@@ -125,11 +116,6 @@ fn build_and_write<const D: usize>(
         }
         _ => write_discrete_curve_csv(&args.output, &values)?,
     }
-    report(&args.output, period);
+    report_samples(&args.output, period);
     Ok(())
-}
-
-/// The x-y projection of points of any dimension.
-fn project<const D: usize>(points: &[Point<D>]) -> Vec<Point2> {
-    points.iter().map(|p| Point2::new([p[0], p[1]])).collect()
 }

@@ -1,11 +1,13 @@
 //! `karkas curve fit`: a C^1 cubic Hermite spline fitted to measured points with bounded
 //! second-derivative jumps (seed 003, METHODS.md §4).
 
-use super::curve_ll::MAX_SAMPLES;
-use super::export::{curvature_comb, write_curve_figure, EXACT_CURVE_FORMATS};
-use super::output::{ensure_distinct, write_cad_curve};
-use crate::samples::{default_curve_samples, parse_count};
-use anyhow::{anyhow, bail, Result};
+use crate::args::{CombOption, CurveSamples};
+use crate::output::cad::write_cad_curve;
+use crate::output::curve::write_curve_figure;
+use crate::output::formats::EXACT_CURVE_FORMATS;
+use crate::output::overwrite::ensure_distinct;
+use crate::output::samples::default_curve_samples;
+use anyhow::{bail, Context, Result};
 use clap::Args;
 use karkas::fit::{check_knots, fit_curve, fit_curve_adaptive, CurveFit, FitOptions};
 use karkas::{Curve, Point, Point2};
@@ -18,6 +20,11 @@ use std::time::Instant;
 
 /// Arguments of `karkas curve fit`.
 #[derive(Debug, Args)]
+#[command(mut_arg("samples", |a| a.value_name("N").help(
+    "Number of samples of the fitted curve, uniform in t, ends included [default: 20 per \
+     piece, at least 200]"
+)))]
+#[command(mut_arg("comb", |a| a.help("Pictures: draw the curvature comb of the fitted curve")))]
 pub struct CurveFitArgs {
     /// Input points, in order along the curve: CSV or whitespace columns x,y[,z], or an
     /// airfoil .dat.
@@ -35,10 +42,8 @@ pub struct CurveFitArgs {
     /// An inner knot whose jump is left free (a corner); repeat for several.
     #[arg(long = "corner", value_name = "T")]
     corners: Vec<f64>,
-    /// Number of samples of the fitted curve, uniform in t, ends included [default: 20 per
-    /// piece, at least 200].
-    #[arg(long, value_name = "N", value_parser = parse_count)]
-    samples: Option<usize>,
+    #[command(flatten)]
+    samples: CurveSamples,
     /// Pin the ends of the curve to the first and last points (e.g. a profile closed at a
     /// known trailing edge).
     #[arg(long)]
@@ -48,9 +53,8 @@ pub struct CurveFitArgs {
     /// the exact B-spline curve as .step/.stp or .iges/.igs (planar curves in z = 0).
     #[arg(short, long)]
     output: PathBuf,
-    /// Pictures: draw the curvature comb of the fitted curve.
-    #[arg(long)]
-    comb: bool,
+    #[command(flatten)]
+    comb: CombOption,
     /// Per-point deviations as CSV: point,t,distance.
     #[arg(long, value_name = "DEV.csv")]
     report: Option<PathBuf>,
@@ -60,16 +64,14 @@ pub struct CurveFitArgs {
 pub fn run(args: &CurveFitArgs) -> Result<()> {
     let format = OutputFormat::from_path(&args.output, &EXACT_CURVE_FORMATS)?;
     if let Some(knots) = &args.knots {
-        check_knots(knots).map_err(|e| anyhow!("--knots: {e}"))?;
+        check_knots(knots).context("--knots")?;
     }
     if let Some(tol) = args.tolerance {
         if !(tol.is_finite() && tol > 0.0) {
             bail!("--tolerance: must be a positive number, got {tol}");
         }
     }
-    if args.samples.is_some_and(|n| n > MAX_SAMPLES) {
-        bail!("--samples: at most {MAX_SAMPLES} samples can be written");
-    }
+    args.samples.check()?;
     if args.knots.is_none() && args.tolerance.is_none() {
         bail!("give the knots (--knots T1,...,TN) or a tolerance (--tolerance TOL)");
     }
@@ -102,15 +104,12 @@ fn fit_and_write<const D: usize>(
         pin_ends: args.pin_ends,
         ..Default::default()
     };
-    let input = args.input.display();
+    let input = || args.input.display().to_string();
     let started = Instant::now();
     let fit: CurveFit<D> = match (&args.knots, args.tolerance) {
-        (Some(knots), _) => {
-            fit_curve(points, knots, &options).map_err(|e| anyhow!("{input}: {e}"))?
-        }
+        (Some(knots), _) => fit_curve(points, knots, &options).with_context(input)?,
         (None, Some(tol)) => {
-            let adaptive =
-                fit_curve_adaptive(points, tol, &options).map_err(|e| anyhow!("{input}: {e}"))?;
+            let adaptive = fit_curve_adaptive(points, tol, &options).with_context(input)?;
             if !adaptive.tolerance_met {
                 eprintln!(
                     "karkas: warning: tolerance {tol} not met (largest deviation {:.6}) with {} knots",
@@ -125,7 +124,7 @@ fn fit_and_write<const D: usize>(
     let fit_time = started.elapsed();
     let n = args
         .samples
-        .unwrap_or_else(|| default_curve_samples(2 * fit.spline.pieces()));
+        .or_else(|| default_curve_samples(2 * fit.spline.pieces()));
     let mut ts = vec![0.0; n];
     let mut samples = vec![Point::ZERO; n];
     fit.spline.sample_into(&mut ts, &mut samples);
@@ -154,11 +153,7 @@ fn fit_and_write<const D: usize>(
                     [Point2::new([p[0], p[1]]), Point2::new([f[0], f[1]])]
                 })
                 .collect();
-            let comb = if args.comb {
-                curvature_comb(&fit.spline, &ts)
-            } else {
-                Vec::new()
-            };
+            let comb = args.comb.teeth(&fit.spline, &ts);
             let title = format!(
                 "defect-2 cubic spline fit, {} knots, {} points, max deviation {:.3e}",
                 fit.spline.knots().len(),

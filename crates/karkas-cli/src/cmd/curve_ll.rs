@@ -1,21 +1,22 @@
 //! `karkas curve ll`: the LL curve of an ordered point list (seed 000, METHODS.md §1.2).
 
-use super::export::{curvature_comb, write_curve_figure, EXACT_CURVE_FORMATS};
-use super::output::{ensure_distinct, write_cad_curve};
-use crate::samples::{default_curve_samples, parse_count};
-use anyhow::{anyhow, bail, Result};
+use crate::args::{check_ll_order, CombOption, CurveSamples};
+use crate::input::curve_points;
+use crate::output::cad::write_cad_curve;
+use crate::output::curve::write_curve_figure;
+use crate::output::formats::EXACT_CURVE_FORMATS;
+use crate::output::memory::check_memory;
+use crate::output::overwrite::ensure_distinct;
+use crate::output::samples::{default_curve_samples, report_samples, MAX_SAMPLES};
+use anyhow::{Context, Result};
 use clap::Args;
-use karkas::ll::{LlCurve, LlKernel};
+use karkas::ll::LlCurve;
 use karkas::{Curve, Point, Point2};
 use karkas_io::points::{read_curve_points, CurvePoints};
 use karkas_io::svg::CurveOverlay;
 use karkas_io::write::write_curve_csv;
 use karkas_io::OutputFormat;
-use std::path::{Path, PathBuf};
-
-/// The largest number of samples one command writes (a guard against a mistyped count
-/// exhausting memory).
-pub const MAX_SAMPLES: usize = 50_000_000;
+use std::path::PathBuf;
 
 /// Arguments of `karkas curve ll`.
 #[derive(Debug, Args)]
@@ -29,10 +30,8 @@ pub struct CurveLlArgs {
     /// Pass through every input point instead of approximating the polygon.
     #[arg(long)]
     interpolate: bool,
-    /// Number of samples, uniform in t over the curve's domain, ends included
-    /// [default: 10 per input point, at least 200].
-    #[arg(long, value_parser = parse_count)]
-    samples: Option<usize>,
+    #[command(flatten)]
+    samples: CurveSamples,
     /// Input points: CSV or whitespace columns x,y[,z], or an airfoil .dat (Selig or Lednicer).
     input: PathBuf,
     /// Output file: .csv (t,x,y[,z]), a picture of the curve over its points (.svg, .png;
@@ -40,9 +39,8 @@ pub struct CurveLlArgs {
     /// the exact B-spline curve as .step/.stp or .iges/.igs (planar curves in z = 0).
     #[arg(short, long)]
     output: PathBuf,
-    /// Pictures: draw the curvature comb of the curve.
-    #[arg(long)]
-    comb: bool,
+    #[command(flatten)]
+    comb: CombOption,
     /// Pictures: draw a whisker from every input point to the curve at its node.
     #[arg(long)]
     whiskers: bool,
@@ -51,10 +49,8 @@ pub struct CurveLlArgs {
 /// Runs `karkas curve ll`.
 pub fn run(args: &CurveLlArgs) -> Result<()> {
     let format = OutputFormat::from_path(&args.output, &EXACT_CURVE_FORMATS)?;
-    LlKernel::new(args.order).map_err(|e| anyhow!("--order: {e}"))?;
-    if args.samples.is_some_and(|n| n > MAX_SAMPLES) {
-        bail!("--samples: at most {MAX_SAMPLES} samples can be written");
-    }
+    check_ll_order(args.order)?;
+    args.samples.check()?;
     ensure_distinct(&args.input, &args.output)?;
     match read_curve_points(&args.input)? {
         CurvePoints::Planar(points) => build_and_write(args, format, &points),
@@ -72,17 +68,17 @@ fn build_and_write<const D: usize>(
     } else {
         LlCurve::new
     };
-    super::guard::curve_points(&args.input, points)?;
-    let curve = build(points, args.order, args.closed)
-        .map_err(|e| anyhow!("{}: {e}", args.input.display()))?;
+    curve_points(&args.input, points)?;
+    let curve =
+        build(points, args.order, args.closed).with_context(|| args.input.display().to_string())?;
     if format.is_cad() {
         let what = args.input.display().to_string();
         return write_cad_curve(&curve, format, &args.output, &what);
     }
     let n = args
         .samples
-        .unwrap_or_else(|| default_curve_samples(points.len()).min(MAX_SAMPLES));
-    super::guard::check_memory(
+        .or_else(|| default_curve_samples(points.len()).min(MAX_SAMPLES));
+    check_memory(
         &format!("curve ll: {n} samples"),
         (n as u128) * (8 + 8 * D as u128),
     )?;
@@ -102,11 +98,7 @@ fn build_and_write<const D: usize>(
                 args.order,
                 points.len()
             );
-            let comb = if args.comb {
-                curvature_comb(&curve, &ts)
-            } else {
-                Vec::new()
-            };
+            let comb = args.comb.teeth(&curve, &ts);
             let whiskers = if args.whiskers {
                 node_whiskers(&curve, points)
             } else {
@@ -127,7 +119,7 @@ fn build_and_write<const D: usize>(
             )?;
         }
     }
-    report(&args.output, n);
+    report_samples(&args.output, n);
     Ok(())
 }
 
@@ -146,9 +138,4 @@ fn node_whiskers<const D: usize>(curve: &LlCurve<D>, points: &[Point<D>]) -> Vec
             [Point2::new([p[0], p[1]]), Point2::new([q[0], q[1]])]
         })
         .collect()
-}
-
-/// Prints what was written.
-pub fn report(output: &Path, samples: usize) {
-    eprintln!("karkas: wrote {} ({samples} samples)", output.display());
 }

@@ -1,7 +1,7 @@
 //! `karkas hausdorff`: the two-sided Hausdorff distance between two point sets, or between a
 //! point set and an implicit surface (seed 004, formula (3.14); METHODS.md §5).
 
-use anyhow::{anyhow, bail, Result};
+use anyhow::{bail, Context, Result};
 use clap::Args;
 use karkas::implicit::{closest_point_on, ExpressionSurface};
 use karkas::measure::{
@@ -32,20 +32,20 @@ pub fn run(args: &HausdorffArgs) -> Result<()> {
         (None, None) => bail!("give two files, or one file and --expr"),
         (None, Some(b_path)) => {
             let b = read_point_set(b_path)?;
-            let h = hausdorff_sets(&a, &b).map_err(|e| anyhow!("{e}"))?;
+            let h = hausdorff_sets(&a, &b)?;
             (h, b_path.display().to_string(), Some(b.len()))
         }
         (Some(expr), None) => {
-            let surface = ExpressionSurface::parse(expr).map_err(|e| anyhow!("--expr: {e}"))?;
-            let forward = distance_to_implicit(&a, &surface)
-                .map_err(|e| anyhow!("{}: {e}", a_path.display()))?;
+            let surface = ExpressionSurface::parse(expr).context("--expr")?;
+            let a_name = || a_path.display().to_string();
+            let forward = distance_to_implicit(&a, &surface).with_context(a_name)?;
             // The implicit side is the patch A covers: the closest points of A's points.
             let feet: Vec<Point3> = a
                 .iter()
                 .map(|&p| closest_point_on(&surface, p))
                 .collect::<karkas::Result<_>>()
-                .map_err(|e| anyhow!("{}: {e}", a_path.display()))?;
-            let cloud = PointCloud::new(&a).map_err(|e| anyhow!("{}: {e}", a_path.display()))?;
+                .with_context(a_name)?;
+            let cloud = PointCloud::new(&a).with_context(a_name)?;
             let backward = cloud.directed_from(&feet);
             (
                 Hausdorff::new(forward, backward),

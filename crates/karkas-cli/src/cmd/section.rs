@@ -5,10 +5,10 @@
 //! are numbered from 0 over all pieces, planes taken in this order: every `--plane` as given,
 //! then the `--x` values, the `--y` values, the `--z` values.
 
-use super::output::ensure_distinct;
-use anyhow::{anyhow, bail, Context, Result};
+use crate::args::LlSurfaceOptions;
+use crate::output::overwrite::ensure_distinct;
+use anyhow::{bail, Context, Result};
 use clap::{Args, ValueEnum};
-use karkas::ll::{LlKernel, LlSurface};
 use karkas::section::{Plane, Section, SectionOptions, Sectioner, MAX_CELLS};
 use karkas::{Point3, Surface};
 use karkas_io::grid::read_grid;
@@ -32,18 +32,8 @@ pub struct SectionArgs {
     /// How the surface is built from the grid.
     #[arg(long, value_enum)]
     method: SurfaceMethod,
-    /// LL order L (at least 1).
-    #[arg(long, default_value_t = 3)]
-    order: usize,
-    /// Close the surface in u (across rows, index i).
-    #[arg(long)]
-    closed_u: bool,
-    /// Close the surface in v (along rows, index j).
-    #[arg(long)]
-    closed_v: bool,
-    /// Pass through every grid point instead of approximating the grid.
-    #[arg(long)]
-    interpolate: bool,
+    #[command(flatten)]
+    ll: LlSurfaceOptions,
     /// A cutting plane nx,ny,nz,c: the plane nx*x + ny*y + nz*z = c (repeatable).
     #[arg(long = "plane", value_name = "NX,NY,NZ,C", value_parser = parse_plane,
           allow_hyphen_values = true)]
@@ -113,7 +103,7 @@ pub fn run(args: &SectionArgs) -> Result<()> {
         &args.output,
         &[OutputFormat::Csv, OutputFormat::Svg, OutputFormat::Png],
     )?;
-    LlKernel::new(args.order).map_err(|e| anyhow!("--order: {e}"))?;
+    args.ll.check()?;
     if let Some(t) = args.tolerance {
         if !(t.is_finite() && t > 0.0) {
             bail!("--tolerance: must be a positive number, got {t}");
@@ -122,13 +112,7 @@ pub fn run(args: &SectionArgs) -> Result<()> {
     let cuts = planes(args)?;
     ensure_distinct(&args.input, &args.output)?;
     let grid = read_grid(&args.input)?;
-    let build = if args.interpolate {
-        LlSurface::interpolating
-    } else {
-        LlSurface::new
-    };
-    let surface = build(&grid, args.order, args.closed_u, args.closed_v)
-        .map_err(|e| anyhow!("{}: {e}", args.input.display()))?;
+    let surface = args.ll.build(&grid, &args.input)?;
     let default_cells = |lines: usize| (2 * lines).clamp(16, MAX_CELLS);
     let options = SectionOptions {
         tolerance: args.tolerance,
@@ -137,7 +121,7 @@ pub fn run(args: &SectionArgs) -> Result<()> {
             .unwrap_or((default_cells(grid.rows()), default_cells(grid.cols()))),
         ..SectionOptions::default()
     };
-    let sectioner = Sectioner::new(&surface, &options).map_err(|e| anyhow!("{e}"))?;
+    let sectioner = Sectioner::new(&surface, &options)?;
 
     let mut lines: Vec<Vec<Point3>> = Vec::new();
     let mut groups: [Vec<Vec<Point3>>; 4] = Default::default();
@@ -184,7 +168,7 @@ pub fn run(args: &SectionArgs) -> Result<()> {
             let title = format!(
                 "{} sections of the LL surface (L = {}) of {}",
                 cuts.len(),
-                args.order,
+                args.ll.order,
                 args.input
                     .file_name()
                     .map_or_else(String::new, |n| n.to_string_lossy().into_owned())
@@ -228,7 +212,7 @@ fn planes(args: &SectionArgs) -> Result<Vec<Cut>> {
     let mut cuts = Vec::new();
     for p in &args.planes {
         let plane = Plane::new(Point3::new([p[0], p[1], p[2]]), p[3])
-            .map_err(|e| anyhow!("--plane {},{},{},{}: {e}", p[0], p[1], p[2], p[3]))?;
+            .with_context(|| format!("--plane {},{},{},{}", p[0], p[1], p[2], p[3]))?;
         cuts.push(Cut {
             plane,
             group: 0,

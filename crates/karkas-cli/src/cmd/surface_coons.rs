@@ -5,10 +5,13 @@
 //! cubic splines in the point-index parameter, warped so that the crossings sit at common
 //! node values in `[0, 1]`); the surface's parameters `u`, `v` are those node values.
 
-use super::curve_ll::MAX_SAMPLES;
-use super::output::{ensure_distinct, write_cad_surface, write_sampled_surface};
-use crate::samples::{default_surface_samples, parse_pair};
-use anyhow::{anyhow, bail, Result};
+use crate::args::GridSamples;
+use crate::output::cad::write_cad_surface;
+use crate::output::formats::EXACT_SURFACE_FORMATS;
+use crate::output::overwrite::ensure_distinct;
+use crate::output::samples::default_surface_samples;
+use crate::output::surface::write_sampled_surface;
+use anyhow::{anyhow, bail, Context, Result};
 use clap::{Args, ValueEnum};
 use karkas::coons::{CoonsSurface, CrossDerivatives, CurveFit, PointNetwork, SplineEnds};
 use karkas::Error;
@@ -42,6 +45,10 @@ pub enum Kind {
 
 /// Arguments of `karkas surface coons`.
 #[derive(Debug, Args)]
+#[command(mut_arg("samples", |a| a.help(
+    "Samples NU,NV, uniform over the domain, ends included [default: 4 per point of the \
+     longest curve in each direction, at least 50]"
+)))]
 pub struct SurfaceCoonsArgs {
     /// The surface to build.
     #[arg(long, value_enum)]
@@ -64,10 +71,8 @@ pub struct SurfaceCoonsArgs {
     /// point counts as --v-curves [default: those of the gordon-spline surface].
     #[arg(long, value_name = "DV.csv")]
     v_derivs: Option<PathBuf>,
-    /// Samples NU,NV, uniform over the domain, ends included
-    /// [default: 4 per point of the longest curve in each direction, at least 50].
-    #[arg(long, value_parser = parse_pair)]
-    samples: Option<(usize, usize)>,
+    #[command(flatten)]
+    samples: GridSamples,
     /// Output file: .csv (u,v,x,y,z), a mesh (.obj .stl .ply .vtk .vts .glb), a picture
     /// (.svg .png) a 3-D viewer page (.html), or the
     /// exact B-spline surface as .step/.stp or .iges/.igs.
@@ -77,13 +82,8 @@ pub struct SurfaceCoonsArgs {
 
 /// Runs `karkas surface coons`.
 pub fn run(args: &SurfaceCoonsArgs) -> Result<()> {
-    let format = OutputFormat::from_path(&args.output, &super::export::EXACT_SURFACE_FORMATS)?;
-    if args
-        .samples
-        .is_some_and(|(nu, nv)| nu.saturating_mul(nv) > MAX_SAMPLES)
-    {
-        bail!("--samples: at most {MAX_SAMPLES} samples can be written");
-    }
+    let format = OutputFormat::from_path(&args.output, &EXACT_SURFACE_FORMATS)?;
+    args.samples.check()?;
     if args.u_derivs.is_some() != args.v_derivs.is_some() {
         bail!("--u-derivs and --v-derivs go together: give both or neither");
     }
@@ -119,7 +119,7 @@ pub fn run(args: &SurfaceCoonsArgs) -> Result<()> {
             let (du_family, dv_family) = (read_family(du)?, read_family(dv)?);
             let derivs = network
                 .cross_derivatives(&dv_family.curves, &du_family.curves)
-                .map_err(|e| anyhow!("{}, {}: {e}", du.display(), dv.display()))?;
+                .with_context(|| format!("{}, {}", du.display(), dv.display()))?;
             Some(derivs)
         }
         _ => None,
@@ -131,13 +131,20 @@ pub fn run(args: &SurfaceCoonsArgs) -> Result<()> {
     }
 
     let longest = |f: &CurveFamily| f.curves.iter().map(Vec::len).max().unwrap_or(0);
-    let (nu, nv) = args.samples.unwrap_or_else(|| {
+    let (nu, nv) = args.samples.or_else(|| {
         (
             default_surface_samples(longest(&u_family)),
             default_surface_samples(longest(&v_family)),
         )
     });
-    write_sampled_surface(&surface, (nu, nv), format, &args.output)
+    write_sampled_surface(
+        &surface,
+        (nu, nv),
+        format,
+        &args.output,
+        "karkas surface",
+        None,
+    )
 }
 
 /// The surface of `kind` over the network.
@@ -195,7 +202,8 @@ impl Files<'_> {
         }
     }
 
-    /// A library error as one line naming the files (and lines) at fault.
+    /// A library error with the files (and lines) at fault: a crossing names both curves by
+    /// file and line in place of the library's curve numbers.
     fn explain(&self, e: Error) -> anyhow::Error {
         match e {
             Error::NetworkCrossing {
@@ -207,7 +215,11 @@ impl Files<'_> {
                 self.at(true, v_curve),
                 self.at(false, u_curve)
             ),
-            other => anyhow!("{}, {}: {other}", self.u.display(), self.v.display()),
+            other => anyhow::Error::new(other).context(format!(
+                "{}, {}",
+                self.u.display(),
+                self.v.display()
+            )),
         }
     }
 }

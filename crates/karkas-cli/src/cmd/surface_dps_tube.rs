@@ -1,10 +1,13 @@
 //! `karkas surface dps-tube`: a closed tube through a skeleton of curves along and across it,
 //! by formula (3) of seed 002 (METHODS.md §3).
 
-use super::curve_dps::{check_order, check_step};
-use super::curve_ll::{report, MAX_SAMPLES};
-use super::output::ensure_distinct;
-use anyhow::{anyhow, bail, Result};
+use crate::args::{check_dps_order, check_dps_step};
+use crate::output::cad::refuse_cad_for_discrete;
+use crate::output::formats::SURFACE_FORMATS;
+use crate::output::overwrite::ensure_distinct;
+use crate::output::samples::{report_samples, MAX_SAMPLES};
+use crate::output::surface::write_surface;
+use anyhow::{bail, Result};
 use clap::Args;
 use karkas::dps::TubeSurface;
 use karkas::Error;
@@ -44,12 +47,12 @@ pub struct SurfaceDpsTubeArgs {
 
 /// Runs `karkas surface dps-tube`.
 pub fn run(args: &SurfaceDpsTubeArgs) -> Result<()> {
-    super::output::refuse_cad_for_discrete(&args.output)?;
-    let format = OutputFormat::from_path(&args.output, &super::export::SURFACE_FORMATS)?;
-    check_order("--r1", args.r1)?;
-    check_order("--r2", args.r2)?;
-    check_step("--n1", args.n1)?;
-    check_step("--n2", args.n2)?;
+    refuse_cad_for_discrete(&args.output)?;
+    let format = OutputFormat::from_path(&args.output, &SURFACE_FORMATS)?;
+    check_dps_order("--r1", args.r1)?;
+    check_dps_order("--r2", args.r2)?;
+    check_dps_step("--n1", args.n1)?;
+    check_dps_step("--n2", args.n2)?;
     ensure_distinct(&args.along, &args.output)?;
     ensure_distinct(&args.across, &args.output)?;
     let along = read_along_curves(&args.along)?;
@@ -64,18 +67,20 @@ pub fn run(args: &SurfaceDpsTubeArgs) -> Result<()> {
         );
     }
     let (f, g) = (args.along.display(), args.across.display());
-    let tube = TubeSurface::new(&along, &across, args.n1, args.n2, args.r1, args.r2).map_err(
-        |e| match &e {
-            Error::TooFewCurves {
-                family: "along", ..
-            }
-            | Error::SkeletonLength {
-                family: "along", ..
-            } => anyhow!("{f}: {e}"),
-            Error::TooFewCurves { .. } | Error::SkeletonLength { .. } => anyhow!("{g}: {e}"),
-            _ => anyhow!("{f}, {g}: {e}"),
-        },
-    )?;
+    let tube =
+        TubeSurface::new(&along, &across, args.n1, args.n2, args.r1, args.r2).map_err(|e| {
+            let at = match &e {
+                Error::TooFewCurves {
+                    family: "along", ..
+                }
+                | Error::SkeletonLength {
+                    family: "along", ..
+                } => f.to_string(),
+                Error::TooFewCurves { .. } | Error::SkeletonLength { .. } => g.to_string(),
+                _ => format!("{f}, {g}"),
+            };
+            anyhow::Error::new(e).context(at)
+        })?;
     match format {
         OutputFormat::Csv => write_indexed_grid_csv(&args.output, ["p", "q"], tube.values())?,
         _ => {
@@ -83,9 +88,9 @@ pub fn run(args: &SurfaceDpsTubeArgs) -> Result<()> {
                 "discrete periodic tube, {big_n1} x {big_n2} values, orders {} and {}",
                 args.r1, args.r2
             );
-            super::export::write_surface(&args.output, format, &tube.closed_grid(), &title, None)?;
+            write_surface(&args.output, format, &tube.closed_grid(), &title, None)?;
         }
     }
-    report(&args.output, big_n1 * big_n2);
+    report_samples(&args.output, big_n1 * big_n2);
     Ok(())
 }

@@ -1,7 +1,7 @@
 //! `karkas surface implicit`: a grid of nodes on an implicit surface, traced along its lines
 //! of curvature (or a net turned by an angle) by continuation (seed 004, METHODS.md §5).
 
-use anyhow::{anyhow, bail, Result};
+use anyhow::{bail, Context, Result};
 use clap::Args;
 use karkas::implicit::{trace_net, ExpressionSurface, NetDirections, NetSpec};
 use karkas::Point3;
@@ -57,7 +57,7 @@ pub fn run(args: &SurfaceImplicitArgs) -> Result<()> {
     if !args.turn.is_finite() {
         bail!("--turn: the angle must be finite");
     }
-    let surface = ExpressionSurface::parse(&args.expr).map_err(|e| anyhow!("--expr: {e}"))?;
+    let surface = ExpressionSurface::parse(&args.expr).context("--expr")?;
     let directions = if args.turn == 0.0 {
         NetDirections::Principal
     } else {
@@ -69,9 +69,9 @@ pub fn run(args: &SurfaceImplicitArgs) -> Result<()> {
     spec.closed_v = args.closed_v;
     let grid = trace_net(&surface, &spec).map_err(|e| match e {
         karkas::Error::NoSurfaceNear { .. } | karkas::Error::SingularPoint { .. } => {
-            anyhow!("--start: {e}")
+            anyhow::Error::new(e).context("--start")
         }
-        _ => anyhow!("{e}"),
+        _ => anyhow::Error::new(e),
     })?;
     write_grid_csv(&args.output, &grid)?;
     eprintln!(

@@ -3,8 +3,8 @@
 //! One coordinate of a grid is varied through new row sums, column sums and total, with the
 //! cells listed in a mask file kept fixed; the other coordinates are copied.
 
-use super::output::ensure_distinct;
-use anyhow::{anyhow, bail, Result};
+use crate::output::overwrite::ensure_distinct;
+use anyhow::{bail, Context, Result};
 use clap::{Args, ValueEnum};
 use karkas::ll::{vary, FixedEntries, SumTargets, VariationOptions};
 use karkas::{Grid, Point3};
@@ -112,7 +112,7 @@ pub fn run(args: &VaryArgs) -> Result<()> {
         scale_with_total: args.scale_with_total,
     };
     let varied = vary(&matrix, &fixed, &targets, &options)
-        .map_err(|e| anyhow!("{}: {e}", args.input.display()))?;
+        .with_context(|| args.input.display().to_string())?;
     let out = Grid::from_fn(n, m, |i, j| {
         let mut p: Point3 = *grid.get(i, j);
         p[axis] = *varied.get(i, j);

@@ -3,11 +3,11 @@
 //! spline Gordon surfaces side by side, the composite Coons surfaces as meshes, and the
 //! distance of every surface to its body (foot-point projection onto the closed form).
 
+use super::common::{write_viewer, Finding, Output};
 use super::coons_data::{
     body_line, curve_family_csv, figure_3_sheet, fuselage, fuselage_point_lists, Body,
     FUSELAGE_STATIONS, FUSELAGE_STRINGERS,
 };
-use super::{write_viewer, Finding, Output};
 use anyhow::Result;
 use karkas::coons::{
     Along, CoonsSurface, CrossDerivatives, CurveFit, CurveNetwork, NetworkAxis, PointNetwork,

@@ -8,7 +8,7 @@
 //! (offset horizontally, perpendicular to the knot), and the three rings across it are circles
 //! through those two curves at `q = 0, 40, 80`.
 
-use super::{write_viewer, Finding, Output};
+use super::common::{write_viewer, Finding, Output};
 use anyhow::Result;
 use karkas::dps::{compatibility_residual, discrete_bspline, DiscreteSpline, TubeSurface};
 use karkas::{Grid, Point2, Point3};

@@ -2,7 +2,7 @@
 //! (0, 0.445, 0.449, 0.587, 1), eps = 0.01 (METHODS.md §4). The paper's deviations are printed
 //! beside ours as context: its printed coordinates carry transcription errors.
 
-use super::{Finding, Output};
+use super::common::{Finding, Output};
 use anyhow::{Context, Result};
 use karkas::fit::{fit_curve, FitOptions, PenaltyRule};
 use karkas::{Curve, Point, Point2};

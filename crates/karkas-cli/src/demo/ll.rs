@@ -2,8 +2,8 @@
 //! with 15 sections x = const and 11 sections y = const, hidden lines removed (METHODS.md
 //! §1.4, §1.6).
 
+use super::common::{write_viewer, Finding, Output};
 use super::data::{aircraft_15x31, contour_53, contour_csv, grid_csv};
-use super::{write_viewer, Finding, Output};
 use anyhow::Result;
 use karkas::ll::{LlCurve, LlSurface};
 use karkas::section::{Plane, Section, SectionOptions, Sectioner};

@@ -4,6 +4,7 @@
 //! numbers for scripts (`report.json`); a progress bar while it runs and a summary table at
 //! the end.
 
+mod common;
 mod coons;
 mod coons_data;
 mod data;
@@ -15,10 +16,9 @@ mod report;
 
 use anyhow::{Context, Result};
 use clap::Args;
+use common::{Finding, Output};
 use indicatif::{ProgressBar, ProgressStyle};
-use karkas::{Grid, Point3};
-use karkas_io::viewer::{write_viewer_html, ViewerCurve, ViewerScene, ViewerSurface};
-use std::cell::RefCell;
+use report::ExampleOutcome;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
@@ -29,89 +29,6 @@ pub struct DemoArgs {
     /// same names inside it are replaced).
     #[arg(long, default_value = "karkas-demo")]
     out: PathBuf,
-}
-
-/// One line of the report: what was checked, the figure found and the paper's figure.
-pub struct Finding {
-    /// The example.
-    pub example: String,
-    /// What the figure measures.
-    pub measure: String,
-    /// The figure.
-    pub value: f64,
-    /// The paper's figure for the same measure, where it gives one.
-    pub paper: Option<f64>,
-    /// A detail row: in the report, not in the terminal's summary.
-    pub detail: bool,
-}
-
-/// The output folder of the demo; it records the name of every file an example writes, so
-/// that the report lists exactly what is there.
-pub struct Output {
-    dir: PathBuf,
-    written: RefCell<Vec<String>>,
-}
-
-impl Output {
-    /// An output into `dir` (which must exist).
-    pub fn new(dir: &Path) -> Output {
-        Output {
-            dir: dir.to_path_buf(),
-            written: RefCell::new(Vec::new()),
-        }
-    }
-
-    /// The path of the file `name` in the folder, recorded as written by the running example.
-    pub fn file(&self, name: impl AsRef<str>) -> PathBuf {
-        let name = name.as_ref();
-        self.written.borrow_mut().push(name.to_string());
-        self.dir.join(name)
-    }
-
-    fn take_written(&self) -> Vec<String> {
-        let mut names = std::mem::take(&mut *self.written.borrow_mut());
-        names.dedup();
-        names
-    }
-}
-
-/// Writes the 3-D viewer page `name` of a surface sampled `rows x cols` (row-major), with
-/// its isoparametric lines, the input grid `net` as the control net where there is one, and
-/// named curves on it (sections, network curves).
-pub fn write_viewer(
-    out: &Output,
-    name: &str,
-    title: &str,
-    (rows, cols): (usize, usize),
-    samples: &[Point3],
-    net: Option<Grid<Point3>>,
-    curves: Vec<(&str, Vec<Vec<Point3>>)>,
-) -> Result<()> {
-    let samples = Grid::from_row_major(rows, cols, samples.to_vec())
-        .context("viewer samples do not fill the grid")?;
-    let isolines = crate::cmd::export::isoparametric_lines(&samples);
-    let curves = curves
-        .into_iter()
-        .flat_map(|(label, lines)| {
-            lines.into_iter().map(move |points| ViewerCurve {
-                name: label.to_string(),
-                points,
-            })
-        })
-        .collect();
-    let scene = ViewerScene {
-        title: title.to_string(),
-        surfaces: vec![ViewerSurface {
-            name: title.to_string(),
-            samples,
-            control_net: net,
-            isolines,
-        }],
-        curves,
-        ..ViewerScene::default()
-    };
-    write_viewer_html(&out.file(name), &scene)?;
-    Ok(())
 }
 
 /// One example of a paper, as the demo runs it.
@@ -203,17 +120,6 @@ const STEPS: [Step; 8] = [
         run: param::run,
     },
 ];
-
-/// What one example produced.
-pub struct ExampleOutcome {
-    id: &'static str,
-    seed: &'static str,
-    title: &'static str,
-    note: Option<&'static str>,
-    seconds: f64,
-    findings: Vec<Finding>,
-    files: Vec<String>,
-}
 
 /// Runs every example, writes the report and prints the summary.
 pub fn run(args: &DemoArgs) -> Result<()> {

@@ -3,7 +3,7 @@
 //! the paper's figures beside ours. Writes every frame's nodes (grid CSV) and interpolant
 //! (OBJ mesh).
 
-use super::{write_viewer, Finding, Output};
+use super::common::{write_viewer, Finding, Output};
 use anyhow::{Context, Result};
 use karkas::param::experiments::{helix_experiment, seed_experiments, SeedExperiment};
 use karkas::param::BicubicSurface;

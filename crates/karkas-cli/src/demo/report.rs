@@ -6,12 +6,30 @@
 //! no network). It is assembled with `format!` and a five-character HTML escape: a template
 //! engine would be a larger dependency than the page.
 
-use super::{ExampleOutcome, Finding};
+use super::common::Finding;
 use anyhow::Result;
 use karkas_io::write::write_atomic;
 use serde::Serialize;
 use std::fmt::Write as _;
 use std::path::Path;
+
+/// What one example produced.
+pub struct ExampleOutcome {
+    /// The example's key for scripts.
+    pub id: &'static str,
+    /// The seed (paper) number.
+    pub seed: &'static str,
+    /// What the example shows.
+    pub title: &'static str,
+    /// Where our figures differ from the paper's and why, if they do.
+    pub note: Option<&'static str>,
+    /// How long it ran.
+    pub seconds: f64,
+    /// Its lines of the report.
+    pub findings: Vec<Finding>,
+    /// The names of the files it wrote.
+    pub files: Vec<String>,
+}
 
 /// The papers, by seed number: the section titles of METHODS.md.
 const PAPERS: [(&str, &str); 5] = [

@@ -1,0 +1,181 @@
+//! The option groups several commands share, each flattened into the commands' arguments
+//! (`#[command(flatten)]`) with its parsing and its checks, so that an option means and
+//! reports the same everywhere.
+//!
+//! A command whose option says something of its own (a different default of `--samples`)
+//! keeps the group and overrides the help text with `#[command(mut_arg(..))]`.
+
+use crate::output::curve::curvature_comb;
+use crate::output::samples::MAX_SAMPLES;
+use anyhow::{bail, Context, Result};
+use clap::Args;
+use karkas::dps::MAX_ORDER;
+use karkas::ll::{LlKernel, LlSurface};
+use karkas::{Curve, Grid, Point2, Point3};
+use std::path::Path;
+
+/// `--samples N` of the curve commands.
+#[derive(Debug, Args)]
+pub struct CurveSamples {
+    /// Number of samples, uniform in t over the curve's domain, ends included
+    /// [default: 10 per input point, at least 200].
+    #[arg(long, value_parser = parse_count)]
+    pub samples: Option<usize>,
+}
+
+impl CurveSamples {
+    /// Refuses more than [`MAX_SAMPLES`] samples.
+    pub fn check(&self) -> Result<()> {
+        if self.samples.is_some_and(|n| n > MAX_SAMPLES) {
+            bail!("--samples: at most {MAX_SAMPLES} samples can be written");
+        }
+        Ok(())
+    }
+
+    /// The count given, else `default()`.
+    pub fn or_else(&self, default: impl FnOnce() -> usize) -> usize {
+        self.samples.unwrap_or_else(default)
+    }
+}
+
+/// `--samples NU,NV` of the surface commands.
+#[derive(Debug, Args)]
+pub struct GridSamples {
+    /// Samples NU,NV, uniform over the domain, ends included
+    /// [default: 4 per grid line in each direction, at least 50].
+    #[arg(long, value_parser = parse_pair)]
+    pub samples: Option<(usize, usize)>,
+}
+
+impl GridSamples {
+    /// Refuses more than [`MAX_SAMPLES`] samples in all.
+    pub fn check(&self) -> Result<()> {
+        if self
+            .samples
+            .is_some_and(|(nu, nv)| nu.saturating_mul(nv) > MAX_SAMPLES)
+        {
+            bail!("--samples: at most {MAX_SAMPLES} samples can be written");
+        }
+        Ok(())
+    }
+
+    /// The counts given, else `default()`.
+    pub fn or_else(&self, default: impl FnOnce() -> (usize, usize)) -> (usize, usize) {
+        self.samples.unwrap_or_else(default)
+    }
+}
+
+/// `--closed-u`, `--closed-v` of the commands that build a surface from a grid.
+#[derive(Debug, Args)]
+pub struct ClosedUv {
+    /// Close the surface in u (across rows, index i): periodic ends.
+    #[arg(long)]
+    pub closed_u: bool,
+    /// Close the surface in v (along rows, index j): periodic ends.
+    #[arg(long)]
+    pub closed_v: bool,
+}
+
+/// The options of an LL surface (`surface ll`, `section --method ll`).
+#[derive(Debug, Args)]
+pub struct LlSurfaceOptions {
+    /// LL order L (at least 1): the surface is C^L in each variable.
+    #[arg(long, default_value_t = 3)]
+    pub order: usize,
+    #[command(flatten)]
+    pub closed: ClosedUv,
+    /// Pass through every grid point instead of approximating the grid.
+    #[arg(long)]
+    pub interpolate: bool,
+}
+
+impl LlSurfaceOptions {
+    /// Refuses an order the LL kernel does not have.
+    pub fn check(&self) -> Result<()> {
+        check_ll_order(self.order)
+    }
+
+    /// The LL surface of `grid` (read from `input`, which errors name).
+    pub fn build(&self, grid: &Grid<Point3>, input: &Path) -> Result<LlSurface<3>> {
+        let build = if self.interpolate {
+            LlSurface::interpolating
+        } else {
+            LlSurface::new
+        };
+        build(grid, self.order, self.closed.closed_u, self.closed.closed_v)
+            .with_context(|| input.display().to_string())
+    }
+}
+
+/// `--comb` of the curve pictures.
+#[derive(Debug, Args)]
+pub struct CombOption {
+    /// Pictures: draw the curvature comb of the curve.
+    #[arg(long)]
+    pub comb: bool,
+}
+
+impl CombOption {
+    /// The comb's teeth at the parameters `ts`, or none when not asked for.
+    pub fn teeth<const D: usize>(&self, curve: &impl Curve<D>, ts: &[f64]) -> Vec<[Point2; 2]> {
+        if self.comb {
+            curvature_comb(curve, ts)
+        } else {
+            Vec::new()
+        }
+    }
+}
+
+/// Refuses an LL order the kernel does not have, as an error of `--order`.
+pub fn check_ll_order(order: usize) -> Result<()> {
+    LlKernel::new(order).context("--order")?;
+    Ok(())
+}
+
+/// Refuses a discrete spline order outside `1..=MAX_ORDER`, naming the option.
+pub fn check_dps_order(option: &str, order: usize) -> Result<()> {
+    if order == 0 || order > MAX_ORDER {
+        bail!("{option}: the order must be between 1 and {MAX_ORDER}, got {order}");
+    }
+    Ok(())
+}
+
+/// Refuses a discrete spline step below 2, naming the option.
+pub fn check_dps_step(option: &str, step: usize) -> Result<()> {
+    if step < 2 {
+        bail!("{option}: the number of values per point must be at least 2, got {step}");
+    }
+    Ok(())
+}
+
+/// Parses `NU,NV` (each at least 2).
+pub fn parse_pair(text: &str) -> Result<(usize, usize), String> {
+    let (a, b) = text
+        .split_once(',')
+        .ok_or_else(|| format!("expected NU,NV (two counts separated by a comma), got '{text}'"))?;
+    Ok((parse_count(a.trim())?, parse_count(b.trim())?))
+}
+
+/// Parses one sample count (at least 2).
+pub fn parse_count(text: &str) -> Result<usize, String> {
+    let n: usize = text
+        .parse()
+        .map_err(|_| format!("'{text}' is not a whole number"))?;
+    if n < 2 {
+        return Err(format!("at least 2 samples are needed, got {n}"));
+    }
+    Ok(n)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn pairs_and_counts() {
+        assert_eq!(parse_pair("10, 20"), Ok((10, 20)));
+        assert!(parse_pair("10").is_err());
+        assert!(parse_pair("1,5").is_err());
+        assert!(parse_count("x").is_err());
+    }
+}

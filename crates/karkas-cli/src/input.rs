@@ -1,0 +1,111 @@
+//! Checks of the input points every command makes before building: a frame whose points all
+//! lie at one place (or, for a surface, on one line) has nothing to build.
+
+use anyhow::{bail, Result};
+use karkas::Point;
+use std::path::Path;
+
+/// Where the points lie, as far as building a curve or surface goes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Spread {
+    /// Every point is the same point.
+    OnePoint,
+    /// The points lie on one straight line (relative tolerance `1e-12`).
+    OneLine,
+    /// Anything else: enough for a surface.
+    Surface,
+}
+
+/// How `points` spread (finite points assumed; the readers refuse others).
+fn spread<const D: usize>(points: &[Point<D>]) -> Spread {
+    let Some(&first) = points.first() else {
+        return Spread::OnePoint;
+    };
+    // Scale by the largest coordinate difference so that huge and tiny data compare alike.
+    let scale = points
+        .iter()
+        .fold(0.0f64, |m, &p| m.max((p - first).max_abs()));
+    if scale == 0.0 || !scale.is_finite() {
+        return if scale == 0.0 {
+            Spread::OnePoint
+        } else {
+            Spread::Surface
+        };
+    }
+    let rel = |p: Point<D>| (p - first) * (1.0 / scale);
+    let far = points
+        .iter()
+        .map(|&p| rel(p))
+        .max_by(|a, b| a.norm().total_cmp(&b.norm()))
+        .unwrap_or(Point::ZERO);
+    let axis = far * (1.0 / far.norm());
+    let off_line = points.iter().any(|&p| {
+        let q = rel(p);
+        (q - axis * q.dot(axis)).norm() > 1e-12
+    });
+    if off_line {
+        Spread::Surface
+    } else {
+        Spread::OneLine
+    }
+}
+
+/// Refuses a curve input whose points all coincide.
+pub fn curve_points<const D: usize>(input: &Path, points: &[Point<D>]) -> Result<()> {
+    if points.len() > 1 && spread(points) == Spread::OnePoint {
+        bail!(
+            "{}: all {} points coincide (at {}): there is no curve to build",
+            input.display(),
+            points.len(),
+            coordinates(points[0])
+        );
+    }
+    Ok(())
+}
+
+/// Refuses a surface grid whose points all coincide or all lie on one line.
+pub fn grid_points<const D: usize>(input: &Path, points: &[Point<D>]) -> Result<()> {
+    if points.len() > 1 {
+        match spread(points) {
+            Spread::OnePoint => bail!(
+                "{}: all {} grid points coincide (at {}): there is no surface to build",
+                input.display(),
+                points.len(),
+                coordinates(points[0])
+            ),
+            Spread::OneLine => bail!(
+                "{}: all {} grid points lie on one straight line: there is no surface to build",
+                input.display(),
+                points.len()
+            ),
+            Spread::Surface => {}
+        }
+    }
+    Ok(())
+}
+
+/// `x,y[,z]` of a point.
+fn coordinates<const D: usize>(p: Point<D>) -> String {
+    p.0.iter()
+        .map(|c| c.to_string())
+        .collect::<Vec<_>>()
+        .join(",")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn spread_of_points() {
+        let p = |x: f64, y: f64, z: f64| Point([x, y, z]);
+        assert_eq!(spread(&[p(1., 1., 1.); 4]), Spread::OnePoint);
+        let line: Vec<_> = (0..5).map(|k| p(k as f64, 2.0 * k as f64, 1e150)).collect();
+        assert_eq!(spread(&line), Spread::OneLine);
+        let tiny: Vec<_> = (0..5)
+            .map(|k| p(1e-150 * k as f64, 1e-150 * (k * k) as f64, 0.0))
+            .collect();
+        assert_eq!(spread(&tiny), Spread::Surface);
+        assert_eq!(spread::<3>(&[]), Spread::OnePoint);
+    }
+}

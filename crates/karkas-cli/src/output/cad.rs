@@ -1,0 +1,72 @@
+//! The exact B-spline forms as STEP or IGES, and the refusal of those formats for the discrete
+//! periodic splines, which have none.
+
+use anyhow::{bail, Context, Result};
+use karkas::bspline::{ToBSplineCurve, ToBSplineSurface};
+use karkas_io::cad::{curve_in_space, CadEntity};
+use karkas_io::iges::write_iges;
+use karkas_io::step::write_step;
+use karkas_io::OutputFormat;
+use std::path::Path;
+
+/// Writes the exact B-spline form of `curve` as STEP or IGES (by `format`, one of
+/// [`OutputFormat::CAD`]); `what` names the input for errors.
+pub fn write_cad_curve<const D: usize>(
+    curve: &impl ToBSplineCurve<D>,
+    format: OutputFormat,
+    output: &Path,
+    what: &str,
+) -> Result<()> {
+    let bspline = curve.to_bspline().with_context(|| what.to_owned())?;
+    let spatial = curve_in_space(&bspline).with_context(|| what.to_owned())?;
+    write_cad(&[CadEntity::Curve(&spatial)], format, output)?;
+    eprintln!(
+        "karkas: wrote {} (B-spline curve of degree {}, {} control points)",
+        output.display(),
+        spatial.degree(),
+        spatial.control_points().len()
+    );
+    Ok(())
+}
+
+/// Writes the exact B-spline form of `surface` as STEP or IGES (by `format`).
+pub fn write_cad_surface(
+    surface: &impl ToBSplineSurface<3>,
+    format: OutputFormat,
+    output: &Path,
+    what: &str,
+) -> Result<()> {
+    let bspline = surface.to_bspline().with_context(|| what.to_owned())?;
+    write_cad(&[CadEntity::Surface(&bspline)], format, output)?;
+    let grid = bspline.control_points();
+    eprintln!(
+        "karkas: wrote {} (B-spline surface of degree {}x{}, {}x{} control points)",
+        output.display(),
+        bspline.degree_u(),
+        bspline.degree_v(),
+        grid.rows(),
+        grid.cols()
+    );
+    Ok(())
+}
+
+fn write_cad(entities: &[CadEntity<'_>], format: OutputFormat, output: &Path) -> Result<()> {
+    match format {
+        OutputFormat::Iges => write_iges(output, entities)?,
+        _ => write_step(output, entities)?,
+    }
+    Ok(())
+}
+
+/// Refuses STEP and IGES for the discrete periodic splines: they are point sets (METHODS.md
+/// §3, §6), with no exact piecewise polynomial form to export.
+pub fn refuse_cad_for_discrete(output: &Path) -> Result<()> {
+    if OutputFormat::from_path(output, &OutputFormat::CAD).is_ok() {
+        bail!(
+            "{}: discrete periodic splines are point sets, not piecewise polynomials: they have no \
+             exact STEP/IGES form (write .csv, .obj or .stl and convert the points)",
+            output.display()
+        );
+    }
+    Ok(())
+}

@@ -1,0 +1,110 @@
+//! The memory a request's output will take, against the cap of `--max-memory` /
+//! `KARKAS_MAX_MEMORY`: checked before any work, so that a mistyped count fails at once.
+
+use anyhow::{bail, Context, Result};
+use std::sync::OnceLock;
+
+/// The default memory cap for one request's output buffers: 2 GiB.
+pub const DEFAULT_MAX_MEMORY: u64 = 2 << 30;
+
+/// The cap in force, set once from the command line or the environment.
+static MAX_MEMORY: OnceLock<u64> = OnceLock::new();
+
+/// Sets the cap: `--max-memory` if given, else `KARKAS_MAX_MEMORY`, else the default.
+pub fn set_max_memory(option: Option<u64>) -> Result<()> {
+    let cap = match option {
+        Some(bytes) => bytes,
+        None => match std::env::var("KARKAS_MAX_MEMORY") {
+            Ok(text) => parse_size(&text)
+                .map_err(anyhow::Error::msg)
+                .context("KARKAS_MAX_MEMORY")?,
+            Err(_) => DEFAULT_MAX_MEMORY,
+        },
+    };
+    // Set once per process; a second call keeps the first value.
+    let _ = MAX_MEMORY.set(cap);
+    Ok(())
+}
+
+/// Parses a size: a whole number of bytes with an optional suffix `K`, `M`, `G`, `T`
+/// (powers of 1024, an optional trailing `B` or `iB`), e.g. `512M`, `2G`, `1500000`.
+pub fn parse_size(text: &str) -> Result<u64, String> {
+    let upper = text.trim().to_ascii_uppercase();
+    let t = upper
+        .strip_suffix("IB")
+        .or_else(|| upper.strip_suffix('B'))
+        .unwrap_or(&upper);
+    let (digits, shift) = match t.char_indices().last() {
+        Some((k, c)) if c.is_ascii_alphabetic() => {
+            let shift = match c.to_ascii_uppercase() {
+                'K' => 10,
+                'M' => 20,
+                'G' => 30,
+                'T' => 40,
+                _ => return Err(format!("'{text}': unknown unit (use K, M, G or T)")),
+            };
+            (&t[..k], shift)
+        }
+        _ => (t, 0),
+    };
+    let n: u64 = digits
+        .trim()
+        .parse()
+        .map_err(|_| format!("'{text}' is not a size like 512M or 2G"))?;
+    match n.checked_mul(1 << shift) {
+        Some(bytes) if bytes > 0 => Ok(bytes),
+        Some(_) => Err(format!("'{text}': the cap must be positive")),
+        None => Err(format!("'{text}' is too large")),
+    }
+}
+
+/// Fails early when `request` (e.g. "curve ll: 50000000 samples") needs `bytes` of output
+/// buffers, more than the cap.
+pub fn check_memory(request: &str, bytes: u128) -> Result<()> {
+    let cap = *MAX_MEMORY.get_or_init(|| DEFAULT_MAX_MEMORY);
+    if bytes > u128::from(cap) {
+        bail!(
+            "{request} would need {} of memory, above the cap of {} (raise it with --max-memory \
+             or KARKAS_MAX_MEMORY, or ask for fewer samples)",
+            human(bytes),
+            human(u128::from(cap))
+        );
+    }
+    Ok(())
+}
+
+/// `bytes` in the largest binary unit that keeps it at least 1.
+fn human(bytes: u128) -> String {
+    let units = ["B", "KiB", "MiB", "GiB", "TiB"];
+    let mut value = bytes as f64;
+    let mut unit = 0;
+    while value >= 1024.0 && unit + 1 < units.len() {
+        value /= 1024.0;
+        unit += 1;
+    }
+    if unit == 0 {
+        format!("{bytes} B")
+    } else {
+        format!("{value:.1} {}", units[unit])
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn sizes_parse_with_binary_units() {
+        assert_eq!(parse_size("1500"), Ok(1500));
+        assert_eq!(parse_size("512M"), Ok(512 << 20));
+        assert_eq!(parse_size("2G"), Ok(2 << 30));
+        assert_eq!(parse_size("2GiB"), Ok(2 << 30));
+        assert_eq!(parse_size("1kb"), Ok(1024));
+        assert!(parse_size("0").is_err());
+        assert!(parse_size("12X").is_err());
+        assert!(parse_size("lots").is_err());
+        assert!(parse_size("99999999999T").is_err());
+        assert_eq!(human(3 << 29), "1.5 GiB");
+        assert_eq!(human(10), "10 B");
+    }
+}

@@ -1,0 +1,147 @@
+//! A sampled surface in any format: the `u,v,x,y,z` CSV, meshes (`.obj .stl .ply .vtk .vts
+//! .glb`), pictures (`.svg .png`: the shaded surface with isoparametric lines, hidden parts
+//! removed) and the 3-D viewer page (`.html`).
+
+use super::memory::check_memory;
+use super::samples::report_samples;
+use anyhow::{bail, Result};
+use karkas::{Grid, Point3, Surface};
+use karkas_io::mesh_io::write_surface_mesh;
+use karkas_io::obj::write_surface_obj;
+use karkas_io::scene::{write_scene_png, write_scene_svg, Scene, SceneCurves, SceneMesh, View};
+use karkas_io::viewer::{write_viewer_html, ViewerScene, ViewerSurface};
+use karkas_io::write::write_surface_csv;
+use karkas_io::OutputFormat;
+use std::path::Path;
+
+/// How many isoparametric lines per direction the pictures and the page draw (at most).
+const ISOLINES: usize = 11;
+
+/// The default view of the surface pictures (azimuth, elevation in degrees).
+pub const DEFAULT_VIEW: View = View {
+    azimuth: 45.0,
+    elevation: 30.0,
+};
+
+/// Samples `surface` on a uniform `nu x nv` grid over its whole domain and writes the samples
+/// to `output` as a `u,v,x,y,z` CSV or any mesh, picture or page format of
+/// [`super::formats::SURFACE_FORMATS`], by `format`; then reports what was written. `title`
+/// captions pictures and the page; `net` (the input grid) is shown on the page.
+pub fn write_sampled_surface(
+    surface: &impl Surface<3>,
+    (nu, nv): (usize, usize),
+    format: OutputFormat,
+    output: &Path,
+    title: &str,
+    net: Option<&Grid<Point3>>,
+) -> Result<()> {
+    check_memory(
+        &format!("{}: {nu} x {nv} samples", output.display()),
+        (nu as u128) * (nv as u128) * 24 + (nu as u128 + nv as u128) * 8,
+    )?;
+    let mut us = vec![0.0; nu];
+    let mut vs = vec![0.0; nv];
+    let mut samples = vec![Point3::ZERO; nu * nv];
+    surface.sample_grid_into(&mut us, &mut vs, &mut samples);
+    match format {
+        OutputFormat::Obj => write_surface_obj(output, nu, nv, &samples)?,
+        OutputFormat::Csv => write_surface_csv(output, &us, &vs, &samples)?,
+        _ => {
+            let grid = Grid::from_row_major(nu, nv, samples)?;
+            write_surface(output, format, &grid, title, net)?;
+        }
+    }
+    report_samples(output, nu * nv);
+    Ok(())
+}
+
+/// Writes the sampled surface `samples` (row-major, `u` outer) at `output` in `format`, which
+/// is any of [`super::formats::SURFACE_FORMATS`] but CSV. `title` captions pictures and the
+/// page; `net` (the input grid or control net) is shown on the page.
+pub fn write_surface(
+    output: &Path,
+    format: OutputFormat,
+    samples: &Grid<Point3>,
+    title: &str,
+    net: Option<&Grid<Point3>>,
+) -> Result<()> {
+    match format {
+        OutputFormat::Svg | OutputFormat::Png => {
+            let lines = isoparametric_lines(samples);
+            let curves = [SceneCurves {
+                label: "isoparametric lines",
+                lines: &lines,
+                rgb: (40, 70, 140),
+                width: 1.0,
+            }];
+            let scene = Scene {
+                title,
+                mesh: SceneMesh {
+                    rows: samples.rows(),
+                    cols: samples.cols(),
+                    points: samples.as_slice(),
+                },
+                curves: &curves,
+                view: DEFAULT_VIEW,
+            };
+            if format == OutputFormat::Png {
+                write_scene_png(output, &scene)?;
+            } else {
+                write_scene_svg(output, &scene)?;
+            }
+        }
+        OutputFormat::Html => {
+            let scene = ViewerScene {
+                title: title.to_owned(),
+                surfaces: vec![ViewerSurface {
+                    name: title.to_owned(),
+                    samples: samples.clone(),
+                    control_net: net.cloned(),
+                    isolines: isoparametric_lines(samples),
+                }],
+                ..ViewerScene::default()
+            };
+            write_viewer_html(output, &scene)?;
+        }
+        OutputFormat::Csv => bail!("internal: CSV is written by the command"),
+        mesh => write_surface_mesh(output, mesh, samples)?,
+    }
+    Ok(())
+}
+
+/// Up to [`ISOLINES`] evenly spread sample rows (lines of constant `u`) and as many columns
+/// (constant `v`) of `samples`, ends included.
+pub fn isoparametric_lines(samples: &Grid<Point3>) -> Vec<Vec<Point3>> {
+    let (nu, nv) = (samples.rows(), samples.cols());
+    let picks = |n: usize| -> Vec<usize> {
+        if n == 0 {
+            return Vec::new();
+        }
+        let k = ISOLINES.min(n);
+        let mut v: Vec<usize> = (0..k)
+            .map(|i| if k == 1 { 0 } else { i * (n - 1) / (k - 1) })
+            .collect();
+        v.dedup();
+        v
+    };
+    let rows = picks(nu).into_iter().map(|i| samples.row(i).to_vec());
+    let cols = picks(nv)
+        .into_iter()
+        .map(|j| (0..nu).map(|i| *samples.get(i, j)).collect());
+    rows.chain(cols).collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn isolines_are_spread_with_ends() {
+        let g = Grid::from_fn(21, 3, |a, b| Point3::new([a as f64, b as f64, 0.0]));
+        let lines = isoparametric_lines(&g);
+        assert_eq!(lines.len(), 11 + 3);
+        assert_eq!(lines[0][0][0], 0.0);
+        assert_eq!(lines[10][0][0], 20.0);
+        assert_eq!(lines[11].len(), 21);
+    }
+}
