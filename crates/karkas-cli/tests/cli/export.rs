@@ -1,13 +1,10 @@
 //! Every command writes meshes, pictures and the viewer page by the output extension; curve
 //! pictures take `--comb` and `--whiskers`.
 
-mod common;
-
-use common::{karkas, s, stderr, write};
-
+use crate::common::{karkas, s, stderr, temp_dir, write};
 #[test]
 fn surface_commands_write_every_format() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = temp_dir();
     let mut text = String::from("i,j,x,y,z\n");
     for i in 0..4 {
         for j in 0..5 {
@@ -46,7 +43,7 @@ fn surface_commands_write_every_format() {
 
 #[test]
 fn curve_pictures_with_comb_and_whiskers() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = temp_dir();
     let pts = write(dir.path(), "p.csv", "x,y\n0,0\n1,2\n2,1\n3,3\n4,0\n5,1\n");
     let plain = dir.path().join("plain.svg");
     let decorated = dir.path().join("decorated.svg");

@@ -1,26 +1,19 @@
 //! The CLI contract of `karkas convert IN OUT`: which pairs convert, what the outputs hold, and
 //! exit code 2 with a clear message and no output for a pair that makes no sense.
 
-mod common;
-
-use common::{karkas, s, stderr, write};
+use crate::common::{grid_csv, karkas, s, stderr, temp_dir, write};
 use std::path::Path;
 
 /// A 3 x 4 grid frame `i,j,x,y,z` on the plane z = i j / 10.
-fn grid_csv(dir: &Path) -> std::path::PathBuf {
-    let mut text = String::from("i,j,x,y,z\n");
-    for i in 0..3 {
-        for j in 0..4 {
-            text.push_str(&format!("{i},{j},{i},{j},{}\n", (i * j) as f64 / 10.0));
-        }
-    }
+fn grid_file(dir: &Path) -> std::path::PathBuf {
+    let text = grid_csv(3, 4, |i, j| [i as f64, j as f64, (i * j) as f64 / 10.0]);
     write(dir, "grid.csv", &text)
 }
 
 #[test]
 fn grid_converts_to_every_mesh_format_with_the_right_counts() {
-    let dir = tempfile::tempdir().unwrap();
-    let grid = grid_csv(dir.path());
+    let dir = temp_dir();
+    let grid = grid_file(dir.path());
     for ext in [
         "obj", "stl", "ply", "vtk", "vts", "glb", "html", "svg", "png", "csv",
     ] {
@@ -63,8 +56,8 @@ fn grid_converts_to_every_mesh_format_with_the_right_counts() {
 
 #[test]
 fn meshes_convert_between_formats_and_ascii_is_an_option() {
-    let dir = tempfile::tempdir().unwrap();
-    let grid = grid_csv(dir.path());
+    let dir = temp_dir();
+    let grid = grid_file(dir.path());
     let obj = dir.path().join("a.obj");
     assert!(karkas(&["convert", s(&grid), s(&obj)]).status.success());
     let stl = dir.path().join("b.stl");
@@ -94,7 +87,7 @@ fn meshes_convert_between_formats_and_ascii_is_an_option() {
 
 #[test]
 fn curves_convert_to_pictures_and_the_page() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = temp_dir();
     let pts = write(dir.path(), "pts.csv", "x,y\n0,0\n1,2\n2,1\n3,3\n");
     for ext in ["svg", "png", "html"] {
         let out = dir.path().join(format!("c.{ext}"));
@@ -108,7 +101,7 @@ fn curves_convert_to_pictures_and_the_page() {
         "ll",
         "--samples",
         "5,6",
-        s(&grid_csv(dir.path())),
+        s(&grid_file(dir.path())),
         "-o",
         s(&samples),
     ]);
@@ -122,7 +115,7 @@ fn curves_convert_to_pictures_and_the_page() {
 
 #[test]
 fn bad_pairs_exit_2_with_a_clear_message_and_no_output() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = temp_dir();
     let pts = write(dir.path(), "pts.csv", "x,y\n0,0\n1,2\n2,1\n3,3\n");
     let out = dir.path().join("c.obj");
     let o = karkas(&["convert", s(&pts), s(&out)]);
@@ -136,7 +129,7 @@ fn bad_pairs_exit_2_with_a_clear_message_and_no_output() {
     );
     assert!(!out.exists());
     // A general mesh has no grid: no structured grid, no picture.
-    let grid = grid_csv(dir.path());
+    let grid = grid_file(dir.path());
     let obj = dir.path().join("a.obj");
     assert!(karkas(&["convert", s(&grid), s(&obj)]).status.success());
     for ext in ["vts", "svg"] {

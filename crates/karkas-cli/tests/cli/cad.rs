@@ -2,9 +2,7 @@
 //! command whose result is a piecewise polynomial (README, "Command line"); a clear error for
 //! the discrete periodic splines and for Coons networks without an exact form.
 
-mod common;
-
-use common::{karkas, s, stderr, write};
+use crate::common::{grid_csv, karkas, s, stderr, temp_dir, write};
 use std::path::{Path, PathBuf};
 
 /// The STEP entity instances of a given type, as their argument text.
@@ -28,25 +26,18 @@ fn iges_first_entity(text: &str) -> Vec<String> {
         .collect()
 }
 
-fn grid_csv(rows: usize, cols: usize) -> String {
-    let mut text = String::from("i,j,x,y,z\n");
-    for i in 0..rows {
-        for j in 0..cols {
-            let (x, y) = (i as f64, j as f64 * 0.5);
-            text.push_str(&format!(
-                "{i},{j},{x},{y},{}\n",
-                (x * 0.7).sin() * (1.0 + y * y)
-            ));
-        }
-    }
-    text
+fn wavy_grid(rows: usize, cols: usize) -> String {
+    grid_csv(rows, cols, |i, j| {
+        let (x, y) = (i as f64, j as f64 * 0.5);
+        [x, y, (x * 0.7).sin() * (1.0 + y * y)]
+    })
 }
 
 const POINTS: &str = "x,y\n0,0\n1,2\n2,1\n3,3\n4,0\n";
 
 #[test]
 fn ll_curve_step_and_iges_hold_the_exact_b_spline() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = temp_dir();
     let input = write(dir.path(), "pts.csv", POINTS);
     for name in ["c.step", "c.STP"] {
         let out = dir.path().join(name);
@@ -93,8 +84,8 @@ fn ll_curve_step_and_iges_hold_the_exact_b_spline() {
 
 #[test]
 fn surfaces_write_step_faces_and_iges_128() {
-    let dir = tempfile::tempdir().unwrap();
-    let grid = write(dir.path(), "g.csv", &grid_csv(5, 4));
+    let dir = temp_dir();
+    let grid = write(dir.path(), "g.csv", &wavy_grid(5, 4));
     let out = dir.path().join("s.iges");
     let o = karkas(&["surface", "ll", "--order", "2", s(&grid), "-o", s(&out)]);
     assert!(o.status.success(), "{}", stderr(&o));
@@ -157,7 +148,7 @@ fn network(dir: &Path, warped: bool) -> (PathBuf, PathBuf) {
 
 #[test]
 fn coons_surfaces_are_exported_exactly_or_refused() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = temp_dir();
     let (u, v) = network(dir.path(), false);
     for kind in ["composite", "gordon-spline", "bilinear"] {
         let out = dir.path().join(format!("{kind}.stp"));
@@ -182,7 +173,7 @@ fn coons_surfaces_are_exported_exactly_or_refused() {
         let text = std::fs::read_to_string(&out).unwrap();
         assert_eq!(step_items(&text, "B_SPLINE_SURFACE_WITH_KNOTS").len(), 1);
     }
-    let warped = tempfile::tempdir().unwrap();
+    let warped = temp_dir();
     let (u, v) = network(warped.path(), true);
     let out = warped.path().join("w.step");
     let o = karkas(&[
@@ -209,7 +200,7 @@ fn coons_surfaces_are_exported_exactly_or_refused() {
 
 #[test]
 fn fitted_curves_export_defect_two_cubics() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = temp_dir();
     let mut text = String::from("x,y\n");
     for k in 0..=20 {
         let t = k as f64 / 20.0;
@@ -240,7 +231,7 @@ fn fitted_curves_export_defect_two_cubics() {
 
 #[test]
 fn discrete_splines_and_bad_input_give_one_line_errors_and_no_file() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = temp_dir();
     let input = write(dir.path(), "pts.csv", POINTS);
     for name in ["d.step", "d.igs"] {
         let out = dir.path().join(name);

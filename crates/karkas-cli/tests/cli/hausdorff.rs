@@ -1,33 +1,7 @@
 //! The CLI contract of `karkas hausdorff`: two point sets, or a point set and `--expr`;
 //! prints the distance and where it is attained.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-
-fn karkas(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_karkas"))
-        .args(args)
-        .output()
-        .expect("the karkas binary runs")
-}
-
-fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
-    let p = dir.join(name);
-    std::fs::write(&p, text).unwrap();
-    p
-}
-
-fn s(p: &Path) -> &str {
-    p.to_str().unwrap()
-}
-
-fn stdout(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stdout).into_owned()
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
-}
+use crate::common::{karkas, s, stderr, stdout, temp_dir, write};
 
 /// The number after `label` on its line of the output, and the rest of the line.
 fn field(out: &str, label: &str) -> (f64, String) {
@@ -39,7 +13,7 @@ fn field(out: &str, label: &str) -> (f64, String) {
 
 #[test]
 fn two_point_sets() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = temp_dir();
     let a = write(dir.path(), "a.csv", "x,y,z\n0,0,0\n1,0,0\n");
     let b = write(dir.path(), "b.obj", "v 0 0 0\nv 1 0 0\nv 1 3 4\nf 1 2 3\n");
     let o = karkas(&["hausdorff", s(&a), s(&b)]);
@@ -54,7 +28,7 @@ fn two_point_sets() {
 
 #[test]
 fn point_set_against_an_implicit_surface() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = temp_dir();
     // Points at radius 1.25 around the cylinder of radius 1, and one on it.
     let a = write(
         dir.path(),
@@ -72,7 +46,7 @@ fn point_set_against_an_implicit_surface() {
 
 #[test]
 fn errors_exit_2() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = temp_dir();
     let a = write(dir.path(), "a.csv", "x,y,z\n0,0,0\n");
     let o = karkas(&["hausdorff", s(&a), s(&dir.path().join("none.csv"))]);
     assert_eq!(o.status.code(), Some(2));

@@ -1,10 +1,7 @@
 //! The CLI contract of `karkas vary` (README, "Command line"): the varied grid meets the sums,
 //! keeps the mask's cells and the other coordinates, and bad input exits 2 with no output.
 
-mod common;
-
-use common::{assert_rejected, grid_csv, karkas, read_csv, s, stderr, write};
-
+use crate::common::{assert_rejected, grid_csv, karkas, read_csv, s, stderr, temp_dir, write};
 /// A 3 x 4 grid with z = i * j + 1.
 fn grid(dir: &std::path::Path) -> std::path::PathBuf {
     let text = grid_csv(3, 4, |i, j| [i as f64, j as f64, (i * j + 1) as f64]);
@@ -13,7 +10,7 @@ fn grid(dir: &std::path::Path) -> std::path::PathBuf {
 
 #[test]
 fn varied_grid_meets_the_sums_and_keeps_fixed_cells() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = temp_dir();
     let input = grid(dir.path());
     let mask = write(dir.path(), "mask.csv", "i,j\n0,0\n2,3 # a corner\n");
     let out = dir.path().join("v.csv");
@@ -63,7 +60,7 @@ fn varied_grid_meets_the_sums_and_keeps_fixed_cells() {
 
 #[test]
 fn unchanged_sums_give_the_same_grid() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = temp_dir();
     let input = grid(dir.path());
     let out = dir.path().join("same.csv");
     // z rows: 4, 10, 16; columns: 3, 6, 9, 12.
@@ -85,7 +82,7 @@ fn unchanged_sums_give_the_same_grid() {
 
 #[test]
 fn bad_vary_input_exits_2_and_writes_nothing() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = temp_dir();
     let input = grid(dir.path());
     let out = dir.path().join("v.csv");
     let run = |extra: &[&str], needle: &str| {

@@ -1,9 +1,7 @@
 //! The CLI contract of `karkas section` (README, "Command line"): options, the CSV header
 //! `section,t,x,y,z`, section numbering, pictures, and exit code 2 with no output on bad input.
 
-mod common;
-
-use common::{assert_rejected, grid_csv, karkas, read_csv, s, stderr, write};
+use crate::common::{assert_rejected, grid_csv, karkas, read_csv, s, stderr, temp_dir, write};
 use std::path::Path;
 
 /// A sphere-like grid: 17 latitudes (-80..80 degrees, rows) by 18 longitudes (columns).
@@ -36,7 +34,7 @@ fn blocks(rows: &[Vec<f64>]) -> Vec<Vec<Vec<f64>>> {
 
 #[test]
 fn csv_has_one_block_per_piece_in_plane_order() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = temp_dir();
     let input = sphere(dir.path());
     let out = dir.path().join("s.csv");
     let o = karkas(&[
@@ -93,7 +91,7 @@ fn csv_has_one_block_per_piece_in_plane_order() {
 
 #[test]
 fn a_plane_that_misses_writes_only_the_header() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = temp_dir();
     let input = sphere(dir.path());
     let out = dir.path().join("none.csv");
     let o = karkas(&[
@@ -112,7 +110,7 @@ fn a_plane_that_misses_writes_only_the_header() {
 
 #[test]
 fn pictures_in_svg_and_png() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = temp_dir();
     let input = sphere(dir.path());
     for (name, check) in [
         (
@@ -150,7 +148,7 @@ fn pictures_in_svg_and_png() {
 
 #[test]
 fn bad_section_input_exits_2_and_writes_nothing() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = temp_dir();
     let input = sphere(dir.path());
     let out = dir.path().join("out.csv");
     let base = ["section", s(&input), "--method", "ll"];

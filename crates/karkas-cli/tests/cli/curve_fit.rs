@@ -1,25 +1,7 @@
 //! The CLI contract of `karkas curve fit` (issue 12): options, CSV headers, and exit code 2
 //! with no output on bad knots.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-
-fn karkas(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_karkas"))
-        .args(args)
-        .output()
-        .expect("the karkas binary runs")
-}
-
-fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
-    let p = dir.join(name);
-    std::fs::write(&p, text).unwrap();
-    p
-}
-
-fn s(p: &Path) -> &str {
-    p.to_str().unwrap()
-}
+use crate::common::{karkas, s, stderr, temp_dir, write};
 
 /// A noisy arc of 30 points.
 fn arc() -> String {
@@ -38,7 +20,7 @@ fn arc() -> String {
 
 #[test]
 fn csv_output_and_deviation_report() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = temp_dir();
     let input = write(dir.path(), "arc.csv", &arc());
     let out = dir.path().join("fit.csv");
     let dev = dir.path().join("dev.csv");
@@ -55,7 +37,7 @@ fn csv_output_and_deviation_report() {
         "--report",
         s(&dev),
     ]);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(o.status.success(), "{}", stderr(&o));
     let text = std::fs::read_to_string(&out).unwrap();
     assert!(text.starts_with("t,x,y\n"));
     let rows: Vec<Vec<f64>> = text
@@ -80,7 +62,7 @@ fn csv_output_and_deviation_report() {
 
 #[test]
 fn pinned_ends_start_and_end_at_the_first_and_last_points() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = temp_dir();
     let input = write(dir.path(), "arc.csv", &arc());
     let first: Vec<f64> = arc()
         .lines()
@@ -109,7 +91,7 @@ fn pinned_ends_start_and_end_at_the_first_and_last_points() {
         "-o",
         s(&out),
     ]);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(o.status.success(), "{}", stderr(&o));
     let text = std::fs::read_to_string(&out).unwrap();
     let rows: Vec<Vec<f64>> = text
         .lines()
@@ -130,7 +112,7 @@ fn pinned_ends_start_and_end_at_the_first_and_last_points() {
 
 #[test]
 fn svg_output_with_tolerance() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = temp_dir();
     let input = write(dir.path(), "arc.csv", &arc());
     let out = dir.path().join("fit.svg");
     let o = karkas(&[
@@ -142,14 +124,14 @@ fn svg_output_with_tolerance() {
         "-o",
         s(&out),
     ]);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(o.status.success(), "{}", stderr(&o));
     let svg = std::fs::read_to_string(&out).unwrap();
     assert!(svg.starts_with("<svg") && svg.contains("polyline"));
 }
 
 #[test]
 fn bad_knots_are_one_line_errors_with_exit_2_and_no_output() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = temp_dir();
     let input = write(dir.path(), "arc.csv", &arc());
     let out = dir.path().join("fit.csv");
     for knots in [
@@ -160,7 +142,7 @@ fn bad_knots_are_one_line_errors_with_exit_2_and_no_output() {
     ] {
         let o = karkas(&["curve", "fit", s(&input), "--knots", knots, "-o", s(&out)]);
         assert_eq!(o.status.code(), Some(2), "{knots}");
-        let err = String::from_utf8_lossy(&o.stderr);
+        let err = stderr(&o);
         assert_eq!(err.trim_end().lines().count(), 1, "{err}");
         assert!(err.contains("knot"), "{err}");
         assert!(!out.exists());

@@ -1,9 +1,7 @@
 //! `karkas demo`: the report lists every example of the five papers, the cylinder row of
 //! seed 004 lands where the paper's figure is, and every file the report names exists.
 
-mod common;
-
-use common::{karkas, s, stderr};
+use crate::common::{karkas, s, stderr, temp_dir};
 use serde_json::Value;
 
 /// The examples the demo promises (issue contract: scripts read report.json by these ids).
@@ -20,7 +18,7 @@ const EXAMPLES: [&str; 8] = [
 
 #[test]
 fn demo_writes_a_complete_report() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = temp_dir();
     let out = dir.path().join("demo");
     let run = karkas(&["demo", "--out", s(&out)]);
     assert!(run.status.success(), "demo failed: {}", stderr(&run));
@@ -81,7 +79,7 @@ fn demo_writes_a_complete_report() {
 
 #[test]
 fn demo_into_a_file_is_an_error() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = temp_dir();
     let file = dir.path().join("taken");
     std::fs::write(&file, "keep").unwrap();
     let run = karkas(&["demo", "--out", s(&file)]);

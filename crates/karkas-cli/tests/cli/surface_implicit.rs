@@ -1,40 +1,21 @@
 //! The CLI contract of `karkas surface implicit` (grid CSV out, expression errors naming the
 //! character, no surface near the start).
 
+use crate::common::{karkas, read_csv, s, stderr, temp_dir};
 use std::path::Path;
-use std::process::{Command, Output};
-
-fn karkas(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_karkas"))
-        .args(args)
-        .output()
-        .expect("the karkas binary runs")
-}
-
-fn s(p: &Path) -> &str {
-    p.to_str().unwrap()
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
-}
 
 /// The rows `i,j,x,y,z` of a grid file.
 fn read_grid(path: &Path) -> Vec<[f64; 5]> {
-    let text = std::fs::read_to_string(path).unwrap();
-    let mut lines = text.lines();
-    assert_eq!(lines.next(), Some("i,j,x,y,z"));
-    lines
-        .map(|l| {
-            let v: Vec<f64> = l.split(',').map(|f| f.parse().unwrap()).collect();
-            [v[0], v[1], v[2], v[3], v[4]]
-        })
+    let (header, rows) = read_csv(path);
+    assert_eq!(header.join(","), "i,j,x,y,z");
+    rows.iter()
+        .map(|v| [v[0], v[1], v[2], v[3], v[4]])
         .collect()
 }
 
 #[test]
 fn cylinder_lines_of_curvature_feed_the_bicubic_command() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = temp_dir();
     let grid = dir.path().join("g.csv");
     let o = karkas(&[
         "surface",
@@ -71,7 +52,7 @@ fn cylinder_lines_of_curvature_feed_the_bicubic_command() {
 
 #[test]
 fn turned_and_closed_nets() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = temp_dir();
     let grid = dir.path().join("g.csv");
     let o = karkas(&[
         "surface",
@@ -123,7 +104,7 @@ fn turned_and_closed_nets() {
 
 #[test]
 fn expression_errors_name_the_character() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = temp_dir();
     let grid = dir.path().join("g.csv");
     for (expr, at) in [
         ("x^2+*y", "character 5"),
@@ -154,7 +135,7 @@ fn expression_errors_name_the_character() {
 
 #[test]
 fn no_surface_near_the_start_is_a_clear_error() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = temp_dir();
     let grid = dir.path().join("g.csv");
     for (expr, start) in [("x^2+y^2+z^2+1", "1,0,0"), ("x^2+y^2-1", "5,5,0")] {
         let o = karkas(&[

@@ -1,16 +1,36 @@
-//! Helpers shared by the CLI contract tests of `section` and `vary`.
-
-#![allow(dead_code)]
+//! What every test of the command line uses: running the binary, temporary folders, writing
+//! inputs, reading the CSV files the CLI writes, and the check of a refused command.
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
+/// The karkas binary, with no memory cap from the caller's environment.
+fn command() -> Command {
+    let mut command = Command::new(env!("CARGO_BIN_EXE_karkas"));
+    command.env_remove("KARKAS_MAX_MEMORY");
+    command
+}
+
 /// Runs the karkas binary.
 pub fn karkas(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_karkas"))
+    command()
         .args(args)
         .output()
         .expect("the karkas binary runs")
+}
+
+/// Runs the karkas binary in the folder `dir`.
+pub fn karkas_in(dir: &Path, args: &[&str]) -> Output {
+    command()
+        .args(args)
+        .current_dir(dir)
+        .output()
+        .expect("the karkas binary runs")
+}
+
+/// A fresh temporary folder, removed when dropped.
+pub fn temp_dir() -> tempfile::TempDir {
+    tempfile::tempdir().expect("a temporary folder")
 }
 
 /// Writes `text` to `dir/name`.
@@ -23,6 +43,11 @@ pub fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
 /// The path as a string argument.
 pub fn s(p: &Path) -> &str {
     p.to_str().unwrap()
+}
+
+/// Standard output as text.
+pub fn stdout(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stdout).into_owned()
 }
 
 /// Standard error as text.
@@ -58,9 +83,27 @@ pub fn grid_csv(rows: usize, cols: usize, f: impl Fn(usize, usize) -> [f64; 3]) 
     text
 }
 
-/// Runs a failing command: exit code 2, one line naming `needle`, and `out` untouched
+/// What a refused command's message must contain: one text or several.
+pub trait Needles {
+    /// The texts.
+    fn texts(&self) -> Vec<&str>;
+}
+
+impl Needles for &str {
+    fn texts(&self) -> Vec<&str> {
+        vec![self]
+    }
+}
+
+impl Needles for &[&str] {
+    fn texts(&self) -> Vec<&str> {
+        self.to_vec()
+    }
+}
+
+/// Runs a failing command: exit code 2, one line containing every needle, and `out` untouched
 /// (`before`: its content, or `None` when it must not exist).
-pub fn assert_rejected(args: &[&str], needle: &str, out: &Path, before: Option<&str>) {
+pub fn assert_rejected(args: &[&str], needles: impl Needles, out: &Path, before: Option<&str>) {
     let o = karkas(args);
     assert_eq!(o.status.code(), Some(2), "args {args:?}: {}", stderr(&o));
     let err = stderr(&o);
@@ -69,7 +112,9 @@ pub fn assert_rejected(args: &[&str], needle: &str, out: &Path, before: Option<&
         1,
         "one line expected: {err}"
     );
-    assert!(err.contains(needle), "'{needle}' not in: {err}");
+    for needle in needles.texts() {
+        assert!(err.contains(needle), "'{needle}' not in: {err}");
+    }
     match before {
         Some(content) => assert_eq!(std::fs::read_to_string(out).unwrap(), content),
         None => assert!(!out.exists(), "{} was created", out.display()),

@@ -3,26 +3,22 @@
 //! before is left byte for byte as it was, and nothing panics. The huge- and tiny-coordinate
 //! rows are the cases that work: the methods are linear in the coordinates.
 
+use crate::common::{grid_csv, karkas_in, read_csv, stderr, temp_dir, write};
 use std::path::Path;
-use std::process::{Command, Output};
+use std::process::Output;
 
 /// What the output file holds before each refused run.
 const EXISTING: &str = "existing output, must survive\n";
 
 /// Runs `karkas args` in a fresh folder holding `files` and an existing `out.csv`.
 fn run(files: &[(&str, &str)], args: &[&str]) -> (Output, String, tempfile::TempDir) {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = temp_dir();
     for (name, text) in files {
-        std::fs::write(dir.path().join(name), text).unwrap();
+        write(dir.path(), name, text);
     }
-    std::fs::write(dir.path().join("out.csv"), EXISTING).unwrap();
-    let output = Command::new(env!("CARGO_BIN_EXE_karkas"))
-        .args(args)
-        .current_dir(dir.path())
-        .env_remove("KARKAS_MAX_MEMORY")
-        .output()
-        .expect("the karkas binary runs");
-    let stderr = String::from_utf8_lossy(&output.stderr).into_owned();
+    write(dir.path(), "out.csv", EXISTING);
+    let output = karkas_in(dir.path(), args);
+    let stderr = stderr(&output);
     (output, stderr, dir)
 }
 
@@ -47,12 +43,7 @@ fn works(files: &[(&str, &str)], args: &[&str]) -> Vec<Vec<f64>> {
 
 /// The data rows of a CSV the CLI wrote, every value finite.
 fn read_rows(path: &Path) -> Vec<Vec<f64>> {
-    let text = std::fs::read_to_string(path).unwrap();
-    let rows: Vec<Vec<f64>> = text
-        .lines()
-        .skip(1)
-        .map(|l| l.split(',').map(|f| f.parse::<f64>().unwrap()).collect())
-        .collect();
+    let (_, rows) = read_csv(path);
     assert!(!rows.is_empty());
     assert!(
         rows.iter().flatten().all(|v| v.is_finite()),
@@ -63,14 +54,7 @@ fn read_rows(path: &Path) -> Vec<Vec<f64>> {
 
 /// A grid CSV `i,j,x,y,z` of `f(i, j)`.
 fn grid(rows: usize, cols: usize, f: impl Fn(f64, f64) -> [f64; 3]) -> String {
-    let mut text = String::from("i,j,x,y,z\n");
-    for i in 0..rows {
-        for j in 0..cols {
-            let p = f(i as f64, j as f64);
-            text.push_str(&format!("{i},{j},{:e},{:e},{:e}\n", p[0], p[1], p[2]));
-        }
-    }
-    text
+    grid_csv(rows, cols, |i, j| f(i as f64, j as f64))
 }
 
 /// A wavy grid: not flat, not on a line.

@@ -1,60 +1,17 @@
 //! The CLI contract of `karkas surface bicubic` (options, CSV header, parameters, exit code 2
 //! and no output on bad input).
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-
-fn karkas(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_karkas"))
-        .args(args)
-        .output()
-        .expect("the karkas binary runs")
-}
-
-fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
-    let p = dir.join(name);
-    std::fs::write(&p, text).unwrap();
-    p
-}
-
-fn s(p: &Path) -> &str {
-    p.to_str().unwrap()
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
-}
-
-fn read_csv(path: &Path) -> (Vec<String>, Vec<Vec<f64>>) {
-    let text = std::fs::read_to_string(path).unwrap();
-    let mut lines = text.lines();
-    let header = lines
-        .next()
-        .unwrap()
-        .split(',')
-        .map(str::to_owned)
-        .collect();
-    let rows = lines
-        .map(|l| l.split(',').map(|f| f.parse().unwrap()).collect())
-        .collect();
-    (header, rows)
-}
+use crate::common::{grid_csv, karkas, read_csv, s, stderr, temp_dir, write};
 
 /// A 4 x 5 grid whose rows are 1, 3, 2 apart (x) and columns 1 apart (y), with a bump in z.
 fn grid_text() -> String {
     let xs = [0.0, 1.0, 4.0, 6.0];
-    let mut text = String::from("i,j,x,y,z\n");
-    for (i, x) in xs.iter().enumerate() {
-        for j in 0..5 {
-            text.push_str(&format!("{i},{j},{x},{j},{}\n", 0.1 * (i * j) as f64));
-        }
-    }
-    text
+    grid_csv(4, 5, |i, j| [xs[i], j as f64, 0.1 * (i * j) as f64])
 }
 
 #[test]
 fn uniform_parameters_reproduce_every_node() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = temp_dir();
     let input = write(dir.path(), "g.csv", &grid_text());
     let out = dir.path().join("s.csv");
     let o = karkas(&[
@@ -88,7 +45,7 @@ fn uniform_parameters_reproduce_every_node() {
 
 #[test]
 fn chord_parameters_are_the_default_and_averaged_ones_differ() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = temp_dir();
     let input = write(dir.path(), "g.csv", &grid_text());
     let out = dir.path().join("s.csv");
     let o = karkas(&[
@@ -125,7 +82,7 @@ fn chord_parameters_are_the_default_and_averaged_ones_differ() {
 
 #[test]
 fn closed_direction_and_obj_output() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = temp_dir();
     let mut text = String::from("i,j,x,y,z\n");
     for i in 0..3 {
         for j in 0..6 {
@@ -169,7 +126,7 @@ fn closed_direction_and_obj_output() {
 
 #[test]
 fn bad_input_exits_2_with_one_line_and_no_output() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = temp_dir();
     let out = dir.path().join("s.csv");
     let missing = write(
         dir.path(),

@@ -2,23 +2,8 @@
 //! parameters of the output, and exit code 2 with one line naming the file (and line) and no
 //! output on bad input.
 
+use crate::common::{assert_rejected, karkas, read_csv, s, stderr, temp_dir};
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-
-fn karkas(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_karkas"))
-        .args(args)
-        .output()
-        .expect("the karkas binary runs")
-}
-
-fn s(p: &Path) -> &str {
-    p.to_str().unwrap()
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
-}
 
 /// The sheet `(x, y, 0.3 sin x cos y)`.
 fn sheet(x: f64, y: f64) -> [f64; 3] {
@@ -49,24 +34,9 @@ fn sheet_files(dir: &Path, spacing: usize) -> (PathBuf, PathBuf) {
     (u, v)
 }
 
-fn read_csv(path: &Path) -> (Vec<String>, Vec<Vec<f64>>) {
-    let text = std::fs::read_to_string(path).unwrap();
-    let mut lines = text.lines();
-    let header = lines
-        .next()
-        .unwrap()
-        .split(',')
-        .map(str::to_owned)
-        .collect();
-    let rows = lines
-        .map(|l| l.split(',').map(|f| f.parse().unwrap()).collect())
-        .collect();
-    (header, rows)
-}
-
 #[test]
 fn every_kind_writes_a_surface_through_the_network() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = temp_dir();
     let (u3, v3) = sheet_files(dir.path(), 1);
     let sub = dir.path().join("borders");
     std::fs::create_dir(&sub).unwrap();
@@ -123,7 +93,7 @@ fn every_kind_writes_a_surface_through_the_network() {
 
 #[test]
 fn obj_output_and_cross_derivative_files() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = temp_dir();
     let (u, v) = sheet_files(dir.path(), 1);
     // dS/dv along the u-curves and dS/du along the v-curves, per unit of the surface's
     // parameters (which run over 0..2 in y and x: a factor 2).
@@ -170,7 +140,7 @@ fn obj_output_and_cross_derivative_files() {
 #[test]
 fn closed_curves_make_a_closed_surface() {
     // A tube: 3 closed frames (v-curves, last point repeating the first), 4 stringers.
-    let dir = tempfile::tempdir().unwrap();
+    let dir = temp_dir();
     let tau = std::f64::consts::TAU;
     let ring = |x: f64, a: f64| [x, (1.0 + 0.1 * x) * a.cos(), (1.0 + 0.1 * x) * a.sin()];
     let mut frames = String::from("curve,x,y,z\n");
@@ -232,25 +202,9 @@ fn closed_curves_make_a_closed_surface() {
     assert_eq!(o.status.code(), Some(2));
 }
 
-/// Runs a failing command: exit code 2, one line containing every needle, `out` untouched.
-fn assert_rejected(args: &[&str], needles: &[&str], out: &Path) {
-    let o = karkas(args);
-    assert_eq!(o.status.code(), Some(2), "args {args:?}: {}", stderr(&o));
-    let err = stderr(&o);
-    assert_eq!(
-        err.trim_end().lines().count(),
-        1,
-        "one line expected: {err}"
-    );
-    for needle in needles {
-        assert!(err.contains(needle), "'{needle}' not in: {err}");
-    }
-    assert_eq!(std::fs::read_to_string(out).unwrap(), "keep me");
-}
-
 #[test]
 fn bad_input_exits_2_naming_the_file_and_writes_nothing() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = temp_dir();
     let (u, v) = sheet_files(dir.path(), 1);
     let out = dir.path().join("out.csv");
     std::fs::write(&out, "keep me").unwrap();
@@ -268,7 +222,7 @@ fn bad_input_exits_2_naming_the_file_and_writes_nothing() {
             s(&out),
         ];
         args.extend_from_slice(extra);
-        assert_rejected(&args, needles, &out);
+        assert_rejected(&args, needles, &out, Some("keep me"));
     };
     let bad = |name: &str, text: &str| {
         let p = dir.path().join(name);
@@ -394,7 +348,7 @@ fn bad_input_exits_2_naming_the_file_and_writes_nothing() {
 
 #[test]
 fn without_derivative_files_composite_is_the_spline_gordon_surface() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = temp_dir();
     let (u, v) = sheet_files(dir.path(), 1);
     let out = |kind: &str| {
         let path = dir.path().join(format!("{kind}.csv"));

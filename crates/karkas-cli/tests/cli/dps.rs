@@ -1,65 +1,14 @@
 //! The CLI contract of `karkas curve dps` and `karkas surface dps-tube`: options, CSV headers,
 //! indices, meshes, and exit code 2 with no output on bad input.
 
+use crate::common::{assert_rejected, karkas, read_csv, s, stderr, temp_dir, write};
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-
-fn karkas(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_karkas"))
-        .args(args)
-        .output()
-        .expect("the karkas binary runs")
-}
-
-fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
-    let p = dir.join(name);
-    std::fs::write(&p, text).unwrap();
-    p
-}
-
-fn s(p: &Path) -> &str {
-    p.to_str().unwrap()
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
-}
-
-/// Header fields and rows of numbers of a CSV the CLI wrote.
-fn read_csv(path: &Path) -> (Vec<String>, Vec<Vec<f64>>) {
-    let text = std::fs::read_to_string(path).unwrap();
-    let mut lines = text.lines();
-    let header = lines
-        .next()
-        .unwrap()
-        .split(',')
-        .map(str::to_owned)
-        .collect();
-    let rows = lines
-        .map(|l| l.split(',').map(|f| f.parse().unwrap()).collect())
-        .collect();
-    (header, rows)
-}
-
-/// Runs a failing command: exit code 2, one line containing `needle`, `out` not created.
-fn assert_rejected(args: &[&str], needle: &str, out: &Path) {
-    let o = karkas(args);
-    assert_eq!(o.status.code(), Some(2), "args {args:?}: {}", stderr(&o));
-    let err = stderr(&o);
-    assert_eq!(
-        err.trim_end().lines().count(),
-        1,
-        "one line expected: {err}"
-    );
-    assert!(err.contains(needle), "'{needle}' not in: {err}");
-    assert!(!out.exists(), "{} was created", out.display());
-}
 
 const SQUARE: &str = "x,y\n0,0\n2,0\n2,1\n0,1\n";
 
 #[test]
 fn curve_through_nodes_has_j_from_zero_and_passes_through_them() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = temp_dir();
     let input = write(dir.path(), "sq.csv", SQUARE);
     let out = dir.path().join("c.csv");
     let o = karkas(&[
@@ -92,7 +41,7 @@ fn curve_through_nodes_has_j_from_zero_and_passes_through_them() {
 
 #[test]
 fn curve_from_poles_stays_in_their_hull_and_svg_works() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = temp_dir();
     let input = write(dir.path(), "ring.txt", "1 0 0\n0 1 1\n-1 0 0\n0 -1 1\n");
     let out = dir.path().join("c.csv");
     let o = karkas(&[
@@ -138,7 +87,7 @@ fn curve_from_poles_stays_in_their_hull_and_svg_works() {
 
 #[test]
 fn bad_curve_input_exits_2_and_writes_nothing() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = temp_dir();
     let out = dir.path().join("out.csv");
     let good = write(dir.path(), "good.csv", SQUARE);
     let one = write(dir.path(), "one.csv", "x,y\n1,2\n");
@@ -156,6 +105,7 @@ fn bad_curve_input_exits_2_and_writes_nothing() {
         ],
         "one.csv: a discrete periodic spline needs at least 2 points, got 1",
         &out,
+        None,
     );
     assert_rejected(
         &[
@@ -171,6 +121,7 @@ fn bad_curve_input_exits_2_and_writes_nothing() {
         ],
         "--order",
         &out,
+        None,
     );
     assert_rejected(
         &[
@@ -186,6 +137,7 @@ fn bad_curve_input_exits_2_and_writes_nothing() {
         ],
         "--order",
         &out,
+        None,
     );
     assert_rejected(
         &[
@@ -201,6 +153,7 @@ fn bad_curve_input_exits_2_and_writes_nothing() {
         ],
         "--n",
         &out,
+        None,
     );
     assert_rejected(
         &[
@@ -216,11 +169,13 @@ fn bad_curve_input_exits_2_and_writes_nothing() {
         ],
         "--n",
         &out,
+        None,
     );
     assert_rejected(
         &["curve", "dps", "--n", "4", s(&good), "-o", s(&out)],
         "--order",
         &out,
+        None,
     );
     let nan = write(dir.path(), "nan.csv", "x,y\n0,0\n1,inf\n2,0\n");
     assert_rejected(
@@ -237,6 +192,7 @@ fn bad_curve_input_exits_2_and_writes_nothing() {
         ],
         "nan.csv:3",
         &out,
+        None,
     );
     let obj = dir.path().join("out.obj");
     assert_rejected(
@@ -253,6 +209,7 @@ fn bad_curve_input_exits_2_and_writes_nothing() {
         ],
         "unknown output extension",
         &obj,
+        None,
     );
 }
 
@@ -284,7 +241,7 @@ fn torus_files(dir: &Path, (m1, n1, m2, n2): (usize, usize, usize, usize)) -> (P
 
 #[test]
 fn tube_csv_obj_and_stl() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = temp_dir();
     let (f, g) = torus_files(dir.path(), (3, 4, 4, 5));
     let out = dir.path().join("t.csv");
     let o = karkas(&[
@@ -404,14 +361,14 @@ fn tube_csv_obj_and_stl() {
 
 #[test]
 fn bad_tube_input_exits_2_and_writes_nothing() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = temp_dir();
     let (f, g) = torus_files(dir.path(), (2, 5, 3, 4));
     let out = dir.path().join("t.obj");
     let run = |extra: &[&str], needle: &str, out: &Path| {
         let mut args = vec!["surface", "dps-tube", "--along", s(&f), "--across", s(&g)];
         args.extend_from_slice(extra);
         args.extend_from_slice(&["-o", s(out)]);
-        assert_rejected(&args, needle, out);
+        assert_rejected(&args, needle, out, None);
     };
     run(
         &["--n1", "5", "--n2", "5"],
@@ -463,6 +420,7 @@ fn bad_tube_input_exits_2_and_writes_nothing() {
         ],
         "along curve i=1 and across curve j=2 do not meet",
         &out,
+        None,
     );
     let holey = write(dir.path(), "holey.csv", &text.replace("0,3,", "0,33,"));
     assert_rejected(
@@ -482,5 +440,6 @@ fn bad_tube_input_exits_2_and_writes_nothing() {
         ],
         "holey.csv: i=0, q=3: missing",
         &out,
+        None,
     );
 }

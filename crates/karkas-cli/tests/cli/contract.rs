@@ -1,49 +1,11 @@
 //! The CLI contract of `karkas curve ll` and `karkas surface ll` (README, "Command line"):
 //! options, CSV headers, parameters, and exit code 2 with no output on bad input.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-
-fn karkas(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_karkas"))
-        .args(args)
-        .output()
-        .expect("the karkas binary runs")
-}
-
-fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
-    let p = dir.join(name);
-    std::fs::write(&p, text).unwrap();
-    p
-}
-
-fn s(p: &Path) -> &str {
-    p.to_str().unwrap()
-}
-
-/// Parses the CSV the CLI wrote: header fields and rows of numbers.
-fn read_csv(path: &Path) -> (Vec<String>, Vec<Vec<f64>>) {
-    let text = std::fs::read_to_string(path).unwrap();
-    let mut lines = text.lines();
-    let header = lines
-        .next()
-        .unwrap()
-        .split(',')
-        .map(str::to_owned)
-        .collect();
-    let rows = lines
-        .map(|l| l.split(',').map(|f| f.parse().unwrap()).collect())
-        .collect();
-    (header, rows)
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
-}
+use crate::common::{assert_rejected, karkas, read_csv, s, stderr, temp_dir, write};
 
 #[test]
 fn open_curve_csv_has_the_papers_parameters_and_ends() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = temp_dir();
     let input = write(dir.path(), "pts.csv", "x,y\n0,0\n1,2\n2,1\n3,3\n4,0\n");
     let out = dir.path().join("out.csv");
     let o = karkas(&[
@@ -69,7 +31,7 @@ fn open_curve_csv_has_the_papers_parameters_and_ends() {
 
 #[test]
 fn interpolating_closed_spatial_curve_passes_through_its_points() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = temp_dir();
     let pts = [
         [1.0, 0.0, 0.0],
         [0.0, 1.0, 0.5],
@@ -111,7 +73,7 @@ fn interpolating_closed_spatial_curve_passes_through_its_points() {
 
 #[test]
 fn airfoil_dat_and_svg_output() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = temp_dir();
     let dat = "TEST AIRFOIL\n1.0 0.0\n0.5 0.06\n0.1 0.04\n0.0 0.0\n0.1 -0.03\n0.5 -0.04\n1.0 0.0\n";
     let input = write(dir.path(), "foil.dat", dat);
     let out = dir.path().join("foil.svg");
@@ -126,7 +88,7 @@ fn airfoil_dat_and_svg_output() {
 
 #[test]
 fn surface_csv_and_obj() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = temp_dir();
     let mut text = String::from("i,j,x,y,z\n");
     // Rows in reverse order: the reader must place them by index.
     for i in (0..4).rev() {
@@ -180,26 +142,9 @@ fn surface_csv_and_obj() {
     );
 }
 
-/// Runs a failing command: exit code 2, one line naming `needle`, and `out` untouched.
-fn assert_rejected(args: &[&str], needle: &str, out: &Path, before: Option<&str>) {
-    let o = karkas(args);
-    assert_eq!(o.status.code(), Some(2), "args {args:?}: {}", stderr(&o));
-    let err = stderr(&o);
-    assert_eq!(
-        err.trim_end().lines().count(),
-        1,
-        "one line expected: {err}"
-    );
-    assert!(err.contains(needle), "'{needle}' not in: {err}");
-    match before {
-        Some(content) => assert_eq!(std::fs::read_to_string(out).unwrap(), content),
-        None => assert!(!out.exists(), "{} was created", out.display()),
-    }
-}
-
 #[test]
 fn bad_curve_input_exits_2_and_writes_nothing() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = temp_dir();
     let out = dir.path().join("out.csv");
     let two = write(dir.path(), "two.csv", "x,y\n0,0\n1,1\n");
     assert_rejected(
@@ -262,7 +207,7 @@ fn bad_curve_input_exits_2_and_writes_nothing() {
 
 #[test]
 fn bad_grid_input_names_the_cell() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = temp_dir();
     let out = dir.path().join("out.obj");
     let mut text = String::from("i,j,x,y,z\n");
     for i in 0..3 {

@@ -1,0 +1,18 @@
+//! The command-line contract of `karkas`, as one test binary: one module per command or
+//! concern, the helpers they share in `common`.
+
+mod bad_input;
+mod cad;
+mod common;
+mod contract;
+mod convert;
+mod curve_fit;
+mod demo_report;
+mod dps;
+mod export;
+mod hausdorff;
+mod section;
+mod surface_bicubic;
+mod surface_coons;
+mod surface_implicit;
+mod vary;
