@@ -6,13 +6,14 @@
 //! keeps the group and overrides the help text with `#[command(mut_arg(..))]`.
 
 use crate::output::curve::curvature_comb;
-use crate::output::samples::MAX_SAMPLES;
+use crate::output::samples::{default_surface_samples, MAX_SAMPLES};
 use anyhow::{bail, Context, Result};
 use clap::Args;
 use karkas::dps::MAX_ORDER;
 use karkas::ll::{LlKernel, LlSurface};
 use karkas::{Curve, Grid, Point2, Point3};
-use std::path::Path;
+use karkas_io::grid::read_grid;
+use std::path::{Path, PathBuf};
 
 /// `--samples N` of the curve commands.
 #[derive(Debug, Args)]
@@ -62,6 +63,29 @@ impl GridSamples {
     /// The counts given, else `default()`.
     pub fn or_else(&self, default: impl FnOnce() -> (usize, usize)) -> (usize, usize) {
         self.samples.unwrap_or_else(default)
+    }
+}
+
+/// The input grid of the commands that build on a grid of points.
+#[derive(Debug, Args)]
+pub struct GridInput {
+    /// Input grid: CSV with header i,j,x,y,z (indices from 0, rows in any order).
+    pub input: PathBuf,
+}
+
+impl GridInput {
+    /// Reads the grid.
+    pub fn read(&self) -> Result<Grid<Point3>> {
+        Ok(read_grid(&self.input)?)
+    }
+
+    /// The default samples of a surface over `grid`: [`default_surface_samples`] in each
+    /// direction.
+    pub fn default_samples(grid: &Grid<Point3>) -> (usize, usize) {
+        (
+            default_surface_samples(grid.rows()),
+            default_surface_samples(grid.cols()),
+        )
     }
 }
 

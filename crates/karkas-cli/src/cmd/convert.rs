@@ -11,6 +11,7 @@
 //! and `.csv` (`i,j,x,y,z`); a curve to `.svg .png .html`. Any other pair is refused.
 
 use crate::output::curve::{to_space, write_curve_figure};
+use crate::output::formats::SURFACE_FORMATS;
 use crate::output::overwrite::ensure_distinct;
 use crate::output::surface::write_surface;
 use anyhow::{bail, Context, Result};
@@ -55,24 +56,14 @@ const MESH_OUT: [OutputFormat; 6] = [
     OutputFormat::Glb,
     OutputFormat::Html,
 ];
-const GRID_OUT: [OutputFormat; 10] = [
-    OutputFormat::Csv,
-    OutputFormat::Obj,
-    OutputFormat::Stl,
-    OutputFormat::Ply,
-    OutputFormat::Vtk,
-    OutputFormat::Vts,
-    OutputFormat::Glb,
-    OutputFormat::Svg,
-    OutputFormat::Png,
-    OutputFormat::Html,
-];
+/// A grid converts to every format of a sampled surface.
+const GRID_OUT: [OutputFormat; 10] = SURFACE_FORMATS;
 const CURVE_OUT: [OutputFormat; 3] = [OutputFormat::Svg, OutputFormat::Png, OutputFormat::Html];
 
 /// Runs `karkas convert`.
 pub fn run(args: &ConvertArgs) -> Result<()> {
-    const EVERY: [OutputFormat; 10] = GRID_OUT;
-    let format = OutputFormat::from_path(&args.output, &EVERY)?;
+    // Every format some input converts to: the grid's, which include the others.
+    let format = OutputFormat::from_path(&args.output, &GRID_OUT)?;
     ensure_distinct(&args.input, &args.output)?;
     let input = read_input(&args.input)?;
     let (kind, allowed): (&str, &[OutputFormat]) = match &input {

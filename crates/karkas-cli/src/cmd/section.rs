@@ -5,13 +5,12 @@
 //! are numbered from 0 over all pieces, planes taken in this order: every `--plane` as given,
 //! then the `--x` values, the `--y` values, the `--z` values.
 
-use crate::args::LlSurfaceOptions;
+use crate::args::{GridInput, LlSurfaceOptions};
 use crate::output::overwrite::ensure_distinct;
 use anyhow::{bail, Context, Result};
 use clap::{Args, ValueEnum};
 use karkas::section::{Plane, Section, SectionOptions, Sectioner, MAX_CELLS};
 use karkas::{Point3, Surface};
-use karkas_io::grid::read_grid;
 use karkas_io::scene::{write_scene_png, write_scene_svg, Scene, SceneCurves, SceneMesh, View};
 use karkas_io::write::write_sections_csv;
 use karkas_io::OutputFormat;
@@ -27,8 +26,8 @@ pub enum SurfaceMethod {
 /// Arguments of `karkas section`.
 #[derive(Debug, Args)]
 pub struct SectionArgs {
-    /// Input grid: CSV with header i,j,x,y,z (indices from 0, rows in any order).
-    input: PathBuf,
+    #[command(flatten)]
+    grid: GridInput,
     /// How the surface is built from the grid.
     #[arg(long, value_enum)]
     method: SurfaceMethod,
@@ -110,9 +109,9 @@ pub fn run(args: &SectionArgs) -> Result<()> {
         }
     }
     let cuts = planes(args)?;
-    ensure_distinct(&args.input, &args.output)?;
-    let grid = read_grid(&args.input)?;
-    let surface = args.ll.build(&grid, &args.input)?;
+    ensure_distinct(&args.grid.input, &args.output)?;
+    let grid = args.grid.read()?;
+    let surface = args.ll.build(&grid, &args.grid.input)?;
     let default_cells = |lines: usize| (2 * lines).clamp(16, MAX_CELLS);
     let options = SectionOptions {
         tolerance: args.tolerance,
@@ -169,7 +168,8 @@ pub fn run(args: &SectionArgs) -> Result<()> {
                 "{} sections of the LL surface (L = {}) of {}",
                 cuts.len(),
                 args.ll.order,
-                args.input
+                args.grid
+                    .input
                     .file_name()
                     .map_or_else(String::new, |n| n.to_string_lossy().into_owned())
             );

@@ -1,17 +1,15 @@
 //! `karkas surface bicubic`: the bicubic interpolant of a grid of points with chosen
 //! parameters (seed 004, METHODS.md §5).
 
-use crate::args::{ClosedUv, GridSamples};
+use crate::args::{ClosedUv, GridInput, GridSamples};
 use crate::input::grid_points;
 use crate::output::cad::write_cad_surface;
 use crate::output::formats::EXACT_SURFACE_FORMATS;
 use crate::output::overwrite::ensure_distinct;
-use crate::output::samples::default_surface_samples;
 use crate::output::surface::write_sampled_surface;
 use anyhow::{Context, Result};
 use clap::{Args, ValueEnum};
 use karkas::param::{BicubicSurface, GridParameterization};
-use karkas_io::grid::read_grid;
 use karkas_io::OutputFormat;
 use std::path::PathBuf;
 
@@ -54,8 +52,8 @@ pub struct SurfaceBicubicArgs {
     closed: ClosedUv,
     #[command(flatten)]
     samples: GridSamples,
-    /// Input grid: CSV with header i,j,x,y,z (indices from 0, rows in any order).
-    input: PathBuf,
+    #[command(flatten)]
+    grid: GridInput,
     /// Output file: .csv (u,v,x,y,z in the chosen parameters), a mesh (.obj .stl .ply .vtk .vts .glb), a picture
     /// (.svg .png) a 3-D viewer page (.html), or the
     /// exact B-spline surface as .step/.stp or .iges/.igs.
@@ -67,22 +65,17 @@ pub struct SurfaceBicubicArgs {
 pub fn run(args: &SurfaceBicubicArgs) -> Result<()> {
     let format = OutputFormat::from_path(&args.output, &EXACT_SURFACE_FORMATS)?;
     args.samples.check()?;
-    ensure_distinct(&args.input, &args.output)?;
-    let grid = read_grid(&args.input)?;
-    grid_points(&args.input, grid.as_slice())?;
+    ensure_distinct(&args.grid.input, &args.output)?;
+    let grid = args.grid.read()?;
+    grid_points(&args.grid.input, grid.as_slice())?;
     let (closed_u, closed_v) = (args.closed.closed_u, args.closed.closed_v);
     let surface = BicubicSurface::new(&grid, args.param.to_library(), closed_u, closed_v)
-        .with_context(|| args.input.display().to_string())?;
+        .with_context(|| args.grid.input.display().to_string())?;
     if format.is_cad() {
-        let what = args.input.display().to_string();
+        let what = args.grid.input.display().to_string();
         return write_cad_surface(&surface, format, &args.output, &what);
     }
-    let (nu, nv) = args.samples.or_else(|| {
-        (
-            default_surface_samples(grid.rows()),
-            default_surface_samples(grid.cols()),
-        )
-    });
+    let (nu, nv) = args.samples.or_else(|| GridInput::default_samples(&grid));
     let title = format!("bicubic surface, {} x {} grid", grid.rows(), grid.cols());
     write_sampled_surface(
         &surface,

@@ -1,15 +1,13 @@
 //! `karkas surface ll`: the LL surface of a grid of points (seed 000, METHODS.md §1.3).
 
-use crate::args::{GridSamples, LlSurfaceOptions};
+use crate::args::{GridInput, GridSamples, LlSurfaceOptions};
 use crate::input::grid_points;
 use crate::output::cad::write_cad_surface;
 use crate::output::formats::EXACT_SURFACE_FORMATS;
 use crate::output::overwrite::ensure_distinct;
-use crate::output::samples::default_surface_samples;
 use crate::output::surface::write_sampled_surface;
 use anyhow::Result;
 use clap::Args;
-use karkas_io::grid::read_grid;
 use karkas_io::OutputFormat;
 use std::path::PathBuf;
 
@@ -20,8 +18,8 @@ pub struct SurfaceLlArgs {
     ll: LlSurfaceOptions,
     #[command(flatten)]
     samples: GridSamples,
-    /// Input grid: CSV with header i,j,x,y,z (indices from 0, rows in any order).
-    input: PathBuf,
+    #[command(flatten)]
+    grid: GridInput,
     /// Output file: .csv (u,v,x,y,z), a mesh (.obj .stl .ply .vtk .vts .glb), a picture
     /// (.svg .png) a 3-D viewer page (.html), or the
     /// exact B-spline surface as .step/.stp or .iges/.igs.
@@ -34,20 +32,15 @@ pub fn run(args: &SurfaceLlArgs) -> Result<()> {
     let format = OutputFormat::from_path(&args.output, &EXACT_SURFACE_FORMATS)?;
     args.ll.check()?;
     args.samples.check()?;
-    ensure_distinct(&args.input, &args.output)?;
-    let grid = read_grid(&args.input)?;
-    grid_points(&args.input, grid.as_slice())?;
-    let surface = args.ll.build(&grid, &args.input)?;
+    ensure_distinct(&args.grid.input, &args.output)?;
+    let grid = args.grid.read()?;
+    grid_points(&args.grid.input, grid.as_slice())?;
+    let surface = args.ll.build(&grid, &args.grid.input)?;
     if format.is_cad() {
-        let what = args.input.display().to_string();
+        let what = args.grid.input.display().to_string();
         return write_cad_surface(&surface, format, &args.output, &what);
     }
-    let (nu, nv) = args.samples.or_else(|| {
-        (
-            default_surface_samples(grid.rows()),
-            default_surface_samples(grid.cols()),
-        )
-    });
+    let (nu, nv) = args.samples.or_else(|| GridInput::default_samples(&grid));
     let title = format!(
         "LL surface, L = {}, {} x {} grid",
         args.ll.order,

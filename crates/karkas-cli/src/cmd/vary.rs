@@ -3,12 +3,12 @@
 //! One coordinate of a grid is varied through new row sums, column sums and total, with the
 //! cells listed in a mask file kept fixed; the other coordinates are copied.
 
+use crate::args::GridInput;
 use crate::output::overwrite::ensure_distinct;
 use anyhow::{bail, Context, Result};
 use clap::{Args, ValueEnum};
 use karkas::ll::{vary, FixedEntries, SumTargets, VariationOptions};
 use karkas::{Grid, Point3};
-use karkas_io::grid::read_grid;
 use karkas_io::mask::read_cell_mask;
 use karkas_io::write::write_grid_csv;
 use karkas_io::OutputFormat;
@@ -28,8 +28,8 @@ pub enum Coordinate {
 /// Arguments of `karkas vary`.
 #[derive(Debug, Args)]
 pub struct VaryArgs {
-    /// Input grid: CSV with header i,j,x,y,z (indices from 0, rows in any order).
-    input: PathBuf,
+    #[command(flatten)]
+    grid: GridInput,
     /// The coordinate to vary.
     #[arg(long, value_enum)]
     coord: Coordinate,
@@ -92,11 +92,11 @@ pub fn run(args: &VaryArgs) -> Result<()> {
             bail!("{name}: '{v}' is not a finite number");
         }
     }
-    ensure_distinct(&args.input, &args.output)?;
+    ensure_distinct(&args.grid.input, &args.output)?;
     if let Some(mask) = &args.fixed {
         ensure_distinct(mask, &args.output)?;
     }
-    let grid = read_grid(&args.input)?;
+    let grid = args.grid.read()?;
     let (n, m) = (grid.rows(), grid.cols());
     let axis = args.coord as usize;
     let matrix = Grid::from_fn(n, m, |i, j| grid.get(i, j)[axis]);
@@ -112,7 +112,7 @@ pub fn run(args: &VaryArgs) -> Result<()> {
         scale_with_total: args.scale_with_total,
     };
     let varied = vary(&matrix, &fixed, &targets, &options)
-        .with_context(|| args.input.display().to_string())?;
+        .with_context(|| args.grid.input.display().to_string())?;
     let out = Grid::from_fn(n, m, |i, j| {
         let mut p: Point3 = *grid.get(i, j);
         p[axis] = *varied.get(i, j);
