@@ -172,19 +172,53 @@ pub fn check_dps_step(option: &str, step: usize) -> Result<()> {
     Ok(())
 }
 
-/// Parses `NU,NV` (each at least 2).
+/// Parses `NU,NV` sample counts (each at least 2).
 pub fn parse_pair(text: &str) -> Result<(usize, usize), String> {
+    parse_pair_with(text, parse_count)
+}
+
+/// Parses `NU,NV`, each count (trimmed) by `count`.
+pub fn parse_pair_with(
+    text: &str,
+    count: impl Fn(&str) -> Result<usize, String>,
+) -> Result<(usize, usize), String> {
     let (a, b) = text
         .split_once(',')
         .ok_or_else(|| format!("expected NU,NV (two counts separated by a comma), got '{text}'"))?;
-    Ok((parse_count(a.trim())?, parse_count(b.trim())?))
+    Ok((count(a.trim())?, count(b.trim())?))
+}
+
+/// Parses a whole number, naming the text when it is not one.
+pub fn parse_whole(text: &str) -> Result<usize, String> {
+    text.parse()
+        .map_err(|_| format!("'{text}' is not a whole number"))
+}
+
+/// Parses a finite number (surrounding spaces allowed).
+pub fn parse_finite(text: &str) -> Result<f64, String> {
+    match text.trim().parse::<f64>() {
+        Ok(v) if v.is_finite() => Ok(v),
+        _ => Err(format!("'{}' is not a finite number", text.trim())),
+    }
+}
+
+/// Parses `N` finite numbers separated by commas; `expected` describes the form for the
+/// error, e.g. `X,Y,Z (three numbers separated by commas)`.
+pub fn parse_finite_list<const N: usize>(text: &str, expected: &str) -> Result<[f64; N], String> {
+    let values: Vec<&str> = text.split(',').collect();
+    if values.len() != N {
+        return Err(format!("expected {expected}, got '{text}'"));
+    }
+    let mut out = [0.0; N];
+    for (slot, v) in out.iter_mut().zip(values) {
+        *slot = parse_finite(v)?;
+    }
+    Ok(out)
 }
 
 /// Parses one sample count (at least 2).
 pub fn parse_count(text: &str) -> Result<usize, String> {
-    let n: usize = text
-        .parse()
-        .map_err(|_| format!("'{text}' is not a whole number"))?;
+    let n = parse_whole(text)?;
     if n < 2 {
         return Err(format!("at least 2 samples are needed, got {n}"));
     }
@@ -201,5 +235,12 @@ mod tests {
         assert!(parse_pair("10").is_err());
         assert!(parse_pair("1,5").is_err());
         assert!(parse_count("x").is_err());
+        assert_eq!(parse_finite(" -2.5 "), Ok(-2.5));
+        assert!(parse_finite("inf").is_err());
+        assert_eq!(parse_finite_list::<2>("1, 2", "A,B"), Ok([1.0, 2.0]));
+        assert_eq!(
+            parse_finite_list::<2>("1", "A,B (two numbers)"),
+            Err("expected A,B (two numbers), got '1'".to_owned())
+        );
     }
 }

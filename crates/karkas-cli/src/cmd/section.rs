@@ -5,7 +5,7 @@
 //! are numbered from 0 over all pieces, planes taken in this order: every `--plane` as given,
 //! then the `--x` values, the `--y` values, the `--z` values.
 
-use crate::args::{GridInput, LlSurfaceOptions};
+use crate::args::{parse_finite_list, parse_pair_with, parse_whole, GridInput, LlSurfaceOptions};
 use crate::output::overwrite::ensure_distinct;
 use anyhow::{bail, Context, Result};
 use clap::{Args, ValueEnum};
@@ -265,54 +265,21 @@ fn report_section(k: usize, cut: &Cut, section: &Section<3>, first: usize) {
 
 /// Parses `nx,ny,nz,c`.
 fn parse_plane(text: &str) -> Result<[f64; 4], String> {
-    let values: Vec<&str> = text.split(',').map(str::trim).collect();
-    if values.len() != 4 {
-        return Err(format!(
-            "expected NX,NY,NZ,C (four numbers separated by commas), got '{text}'"
-        ));
-    }
-    let mut out = [0.0; 4];
-    for (slot, v) in out.iter_mut().zip(&values) {
-        *slot = v
-            .parse::<f64>()
-            .ok()
-            .filter(|x| x.is_finite())
-            .ok_or_else(|| format!("'{v}' is not a finite number"))?;
-    }
-    Ok(out)
+    parse_finite_list(text, "NX,NY,NZ,C (four numbers separated by commas)")
 }
 
 /// Parses `NU,NV` cell counts.
 fn parse_cells(text: &str) -> Result<(usize, usize), String> {
-    let (a, b) = text
-        .split_once(',')
-        .ok_or_else(|| format!("expected NU,NV (two counts separated by a comma), got '{text}'"))?;
-    let count = |s: &str| -> Result<usize, String> {
-        let n: usize = s
-            .trim()
-            .parse()
-            .map_err(|_| format!("'{s}' is not a whole number"))?;
-        if !(3..=MAX_CELLS).contains(&n) {
-            return Err(format!("cells must be 3 to {MAX_CELLS}, got {n}"));
-        }
-        Ok(n)
-    };
-    Ok((count(a)?, count(b)?))
+    parse_pair_with(text, |s| match parse_whole(s)? {
+        n if (3..=MAX_CELLS).contains(&n) => Ok(n),
+        n => Err(format!("cells must be 3 to {MAX_CELLS}, got {n}")),
+    })
 }
 
 /// Parses `AZ,EL` in degrees.
 fn parse_view(text: &str) -> Result<(f64, f64), String> {
-    let (a, b) = text
-        .split_once(',')
-        .ok_or_else(|| format!("expected AZ,EL (two angles in degrees), got '{text}'"))?;
-    let angle = |s: &str| {
-        s.trim()
-            .parse::<f64>()
-            .ok()
-            .filter(|x| x.is_finite())
-            .ok_or_else(|| format!("'{s}' is not a finite number"))
-    };
-    Ok((angle(a)?, angle(b)?))
+    let [azimuth, elevation] = parse_finite_list(text, "AZ,EL (two angles in degrees)")?;
+    Ok((azimuth, elevation))
 }
 
 #[cfg(test)]

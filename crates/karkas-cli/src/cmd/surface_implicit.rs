@@ -1,6 +1,7 @@
 //! `karkas surface implicit`: a grid of nodes on an implicit surface, traced along its lines
 //! of curvature (or a net turned by an angle) by continuation (seed 004, METHODS.md §5).
 
+use crate::args::{parse_finite, parse_finite_list, parse_pair_with, parse_whole};
 use anyhow::{bail, Context, Result};
 use clap::Args;
 use karkas::implicit::{trace_net, ExpressionSurface, NetDirections, NetSpec};
@@ -83,37 +84,15 @@ pub fn run(args: &SurfaceImplicitArgs) -> Result<()> {
 
 /// Parses `X,Y,Z`.
 fn parse_point(text: &str) -> Result<Point3, String> {
-    let values: Vec<&str> = text.split(',').collect();
-    if values.len() != 3 {
-        return Err(format!(
-            "expected X,Y,Z (three numbers separated by commas), got '{text}'"
-        ));
-    }
-    let mut p = Point3::ZERO;
-    for (k, v) in values.iter().enumerate() {
-        p[k] = parse_finite(v)?;
-    }
-    Ok(p)
-}
-
-fn parse_finite(text: &str) -> Result<f64, String> {
-    match text.trim().parse::<f64>() {
-        Ok(v) if v.is_finite() => Ok(v),
-        _ => Err(format!("'{}' is not a finite number", text.trim())),
-    }
+    parse_finite_list(text, "X,Y,Z (three numbers separated by commas)").map(Point3::new)
 }
 
 /// Parses `NU,NV` (each at least 2).
 fn parse_nodes(text: &str) -> Result<(usize, usize), String> {
-    let (a, b) = text
-        .split_once(',')
-        .ok_or_else(|| format!("expected NU,NV (two counts separated by a comma), got '{text}'"))?;
-    let count = |s: &str| match s.trim().parse::<usize>() {
-        Ok(n) if n >= 2 => Ok(n),
-        Ok(n) => Err(format!("at least 2 nodes are needed, got {n}")),
-        Err(_) => Err(format!("'{}' is not a whole number", s.trim())),
-    };
-    Ok((count(a)?, count(b)?))
+    parse_pair_with(text, |s| match parse_whole(s)? {
+        n if n >= 2 => Ok(n),
+        n => Err(format!("at least 2 nodes are needed, got {n}")),
+    })
 }
 
 /// Parses `H` or `HU,HV` (positive).
