@@ -22,6 +22,35 @@ pub struct Finding {
     pub detail: bool,
 }
 
+impl Finding {
+    /// A summary line with no figure of the paper's.
+    pub fn new(example: impl Into<String>, measure: impl Into<String>, value: f64) -> Finding {
+        Finding {
+            example: example.into(),
+            measure: measure.into(),
+            value,
+            paper: None,
+            detail: false,
+        }
+    }
+
+    /// With the paper's figure for the same measure.
+    pub fn paper(self, paper: f64) -> Finding {
+        Finding {
+            paper: Some(paper),
+            ..self
+        }
+    }
+
+    /// As a detail row: in the report, not in the terminal's summary.
+    pub fn detail(self) -> Finding {
+        Finding {
+            detail: true,
+            ..self
+        }
+    }
+}
+
 /// The output folder of the demo; it records the name of every file an example writes, so
 /// that the report lists exactly what is there.
 pub struct Output {

@@ -122,41 +122,27 @@ pub fn figure_3(out: &Output) -> Result<Vec<Finding>> {
     let example = "001 fig. 3 network, 3 x 3 curves";
     let to_body = |s: &CoonsSurface<3>| Deviation::measure(s, body, &same).max();
     Ok(vec![
-        Finding {
-            example: example.into(),
-            measure: "largest miss of a network curve (Prop. 1)".into(),
-            value: miss,
-            paper: None,
-            detail: false,
-        },
-        Finding {
-            example: example.into(),
-            measure: "distance to the body, Lagrange Gordon".into(),
-            value: measured[0].max(),
-            paper: None,
-            detail: false,
-        },
-        Finding {
-            example: example.into(),
-            measure: "distance to the body, natural-spline Gordon".into(),
-            value: measured[1].max(),
-            paper: None,
-            detail: false,
-        },
-        Finding {
-            example: example.into(),
-            measure: "distance to the body, composite Coons (exact A, B)".into(),
-            value: measured[2].max(),
-            paper: None,
-            detail: false,
-        },
-        Finding {
-            example: example.into(),
-            measure: "distance to the body, composite Coons (derived A, B)".into(),
-            value: to_body(&derived),
-            paper: None,
-            detail: false,
-        },
+        Finding::new(example, "largest miss of a network curve (Prop. 1)", miss),
+        Finding::new(
+            example,
+            "distance to the body, Lagrange Gordon",
+            measured[0].max(),
+        ),
+        Finding::new(
+            example,
+            "distance to the body, natural-spline Gordon",
+            measured[1].max(),
+        ),
+        Finding::new(
+            example,
+            "distance to the body, composite Coons (exact A, B)",
+            measured[2].max(),
+        ),
+        Finding::new(
+            example,
+            "distance to the body, composite Coons (derived A, B)",
+            to_body(&derived),
+        ),
     ])
 }
 
@@ -227,41 +213,27 @@ pub fn fuselage_network(out: &Output) -> Result<Vec<Finding>> {
     let example = "001 fuselage, 7 x 5 curves";
     let to_body = |s: &CoonsSurface<3>| Deviation::measure(s, body, &same).max();
     Ok(vec![
-        Finding {
-            example: example.into(),
-            measure: "largest miss of a network curve (Prop. 1)".into(),
-            value: miss,
-            paper: None,
-            detail: false,
-        },
-        Finding {
-            example: example.into(),
-            measure: "distance to the body, Lagrange Gordon".into(),
-            value: measured[0].max(),
-            paper: None,
-            detail: false,
-        },
-        Finding {
-            example: example.into(),
-            measure: "distance to the body, spline Gordon".into(),
-            value: measured[1].max(),
-            paper: None,
-            detail: false,
-        },
-        Finding {
-            example: example.into(),
-            measure: "distance to the body, composite Coons (derived A, B)".into(),
-            value: to_body(&composite),
-            paper: None,
-            detail: false,
-        },
-        Finding {
-            example: example.into(),
-            measure: "distance to the body, spline Gordon from points".into(),
-            value: Deviation::measure(&from_points, body, &|u, v| (station(u), TAU * v)).max(),
-            paper: None,
-            detail: false,
-        },
+        Finding::new(example, "largest miss of a network curve (Prop. 1)", miss),
+        Finding::new(
+            example,
+            "distance to the body, Lagrange Gordon",
+            measured[0].max(),
+        ),
+        Finding::new(
+            example,
+            "distance to the body, spline Gordon",
+            measured[1].max(),
+        ),
+        Finding::new(
+            example,
+            "distance to the body, composite Coons (derived A, B)",
+            to_body(&composite),
+        ),
+        Finding::new(
+            example,
+            "distance to the body, spline Gordon from points",
+            Deviation::measure(&from_points, body, &|u, v| (station(u), TAU * v)).max(),
+        ),
     ])
 }
 

@@ -140,27 +140,21 @@ pub fn five_petals(out: &Output) -> Result<Vec<Finding>> {
         })
         .fold(0.0, f64::max);
     Ok(vec![
-        Finding {
-            example: "002 five-petal, 20 poles, r = 2".into(),
-            measure: "self-intersections of the closed polyline".into(),
-            value: self_intersections(&values) as f64,
-            paper: None,
-            detail: false,
-        },
-        Finding {
-            example: "002 five-petal, 20 poles, r = 2".into(),
-            measure: "max |sum_p Q_2(j - p n) - 1| (partition of unity)".into(),
-            value: unity,
-            paper: None,
-            detail: false,
-        },
-        Finding {
-            example: "002 five-petal, interpolating".into(),
-            measure: "max |S_2(l n) - z(l)| at the 20 nodes".into(),
-            value: node_error,
-            paper: None,
-            detail: false,
-        },
+        Finding::new(
+            "002 five-petal, 20 poles, r = 2",
+            "self-intersections of the closed polyline",
+            self_intersections(&values) as f64,
+        ),
+        Finding::new(
+            "002 five-petal, 20 poles, r = 2",
+            "max |sum_p Q_2(j - p n) - 1| (partition of unity)",
+            unity,
+        ),
+        Finding::new(
+            "002 five-petal, interpolating",
+            "max |S_2(l n) - z(l)| at the 20 nodes",
+            node_error,
+        ),
     ])
 }
 
@@ -352,27 +346,21 @@ pub fn knot(out: &Output) -> Result<Vec<Finding>> {
         .map(|(j, p)| tube.value(p, j * TUBE_N2).distance(*across.get(j, p)))
         .fold(0.0, f64::max);
     Ok(vec![
-        Finding {
-            example: "002 knotted tube, 2 x 5 by 3 x 40".into(),
-            measure: "skeleton max |f_i(j n2) - g_j(i n1)|".into(),
-            value: compatibility_residual(&along, &across, TUBE_N1, TUBE_N2)?,
-            paper: None,
-            detail: false,
-        },
-        Finding {
-            example: "002 knotted tube, 2 x 5 by 3 x 40".into(),
-            measure: "max |c(i n1, q) - f_i(q)| (condition 2)".into(),
-            value: along_error,
-            paper: None,
-            detail: false,
-        },
-        Finding {
-            example: "002 knotted tube, 2 x 5 by 3 x 40".into(),
-            measure: "max |c(p, j n2) - g_j(p)| (condition 2)".into(),
-            value: across_error,
-            paper: None,
-            detail: false,
-        },
+        Finding::new(
+            "002 knotted tube, 2 x 5 by 3 x 40",
+            "skeleton max |f_i(j n2) - g_j(i n1)|",
+            compatibility_residual(&along, &across, TUBE_N1, TUBE_N2)?,
+        ),
+        Finding::new(
+            "002 knotted tube, 2 x 5 by 3 x 40",
+            "max |c(i n1, q) - f_i(q)| (condition 2)",
+            along_error,
+        ),
+        Finding::new(
+            "002 knotted tube, 2 x 5 by 3 x 40",
+            "max |c(p, j n2) - g_j(p)| (condition 2)",
+            across_error,
+        ),
     ])
 }
 

@@ -71,16 +71,18 @@ pub fn run(out: &Output) -> Result<Vec<Finding>> {
             seed.distances[i],
             active.distances[i]
         ));
-        per_point.push(Finding {
-            example: example.into(),
-            measure: format!(
-                "deviation of point {} ({x:.2}, {y:.2}), bound active",
-                i + 1
-            ),
-            value: active.distances[i],
-            paper: Some(paper),
-            detail: true,
-        });
+        per_point.push(
+            Finding::new(
+                example,
+                format!(
+                    "deviation of point {} ({x:.2}, {y:.2}), bound active",
+                    i + 1
+                ),
+                active.distances[i],
+            )
+            .paper(paper)
+            .detail(),
+        );
     }
     write_atomic(&out.file("hydrofoil-fit-deviations.csv"), |w| {
         w.write_all(table.as_bytes())
@@ -105,41 +107,24 @@ pub fn run(out: &Output) -> Result<Vec<Finding>> {
         },
     )?;
     let mut findings = vec![
-        Finding {
-            example: example.into(),
-            measure: "max deviation, bound active".into(),
-            value: active.max_distance(),
-            paper: Some(0.71),
-            detail: false,
-        },
-        Finding {
-            example: example.into(),
-            measure: "max deviation, seed's p = H(q*)/eps".into(),
-            value: seed.max_distance(),
-            paper: None,
-            detail: false,
-        },
-        Finding {
-            example: example.into(),
-            measure: "f = sum J_L^2 achieved (bound active)".into(),
-            value: active.jump_sum,
-            paper: None,
-            detail: false,
-        },
-        Finding {
-            example: example.into(),
-            measure: "penalty p (bound active)".into(),
-            value: active.penalty,
-            paper: None,
-            detail: false,
-        },
-        Finding {
-            example: example.into(),
-            measure: "seed's p = H(q*)/eps".into(),
-            value: seed.penalty,
-            paper: None,
-            detail: false,
-        },
+        Finding::new(
+            example,
+            "max deviation, bound active",
+            active.max_distance(),
+        )
+        .paper(0.71),
+        Finding::new(
+            example,
+            "max deviation, seed's p = H(q*)/eps",
+            seed.max_distance(),
+        ),
+        Finding::new(
+            example,
+            "f = sum J_L^2 achieved (bound active)",
+            active.jump_sum,
+        ),
+        Finding::new(example, "penalty p (bound active)", active.penalty),
+        Finding::new(example, "seed's p = H(q*)/eps", seed.penalty),
     ];
     findings.extend(per_point);
     Ok(findings)

@@ -75,34 +75,26 @@ pub fn contour(out: &Output) -> Result<Vec<Finding>> {
     // consecutive triples); the interpolating one overshoots at the corners.
     let dip = |s: &[Point2]| s.iter().map(|p| -p[1]).fold(0.0, f64::max);
     Ok(vec![
-        Finding {
-            example: "000 contour, 53 points, L = 5".into(),
-            measure: "max |P(t_i) - r_i - d_L D_i| (formula 5)".into(),
-            value: node_error,
-            paper: None,
-            detail: false,
-        },
-        Finding {
-            example: "000 contour, 53 points, L = 5".into(),
-            measure: "dip below the flat bottom, approximating".into(),
-            value: dip(&samples),
-            paper: None,
-            detail: false,
-        },
-        Finding {
-            example: "000 contour, interpolating".into(),
-            measure: "max |P(t_i) - p_i|".into(),
-            value: interp_error,
-            paper: None,
-            detail: false,
-        },
-        Finding {
-            example: "000 contour, interpolating".into(),
-            measure: "dip below the flat bottom, interpolating".into(),
-            value: dip(&interp_samples),
-            paper: None,
-            detail: false,
-        },
+        Finding::new(
+            "000 contour, 53 points, L = 5",
+            "max |P(t_i) - r_i - d_L D_i| (formula 5)",
+            node_error,
+        ),
+        Finding::new(
+            "000 contour, 53 points, L = 5",
+            "dip below the flat bottom, approximating",
+            dip(&samples),
+        ),
+        Finding::new(
+            "000 contour, interpolating",
+            "max |P(t_i) - p_i|",
+            interp_error,
+        ),
+        Finding::new(
+            "000 contour, interpolating",
+            "dip below the flat bottom, interpolating",
+            dip(&interp_samples),
+        ),
     ])
 }
 
@@ -237,37 +229,29 @@ pub fn aircraft(out: &Output) -> Result<Vec<Finding>> {
         })
         .fold(0.0, f64::max);
     Ok(vec![
-        Finding {
-            example: "000 aircraft 15 x 31, L = 5".into(),
-            measure: "max corner error (corners interpolated)".into(),
-            value: corner_error,
-            paper: None,
-            detail: false,
-        },
-        Finding {
-            example: "000 aircraft sections".into(),
-            measure: "max distance of section points from their plane".into(),
-            value: plane_error,
-            paper: None,
-            detail: false,
-        },
-        Finding {
-            example: "000 aircraft sections".into(),
-            measure: "pieces: x = const (all by the fast path (21))".into(),
-            value: if all_fast {
+        Finding::new(
+            "000 aircraft 15 x 31, L = 5",
+            "max corner error (corners interpolated)",
+            corner_error,
+        ),
+        Finding::new(
+            "000 aircraft sections",
+            "max distance of section points from their plane",
+            plane_error,
+        ),
+        Finding::new(
+            "000 aircraft sections",
+            "pieces: x = const (all by the fast path (21))",
+            if all_fast {
                 stations.len() as f64
             } else {
                 f64::NAN
             },
-            paper: None,
-            detail: false,
-        },
-        Finding {
-            example: "000 aircraft sections".into(),
-            measure: "pieces: y = const (traced)".into(),
-            value: buttocks.len() as f64,
-            paper: None,
-            detail: false,
-        },
+        ),
+        Finding::new(
+            "000 aircraft sections",
+            "pieces: y = const (traced)",
+            buttocks.len() as f64,
+        ),
     ])
 }
