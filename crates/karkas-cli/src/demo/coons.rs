@@ -103,47 +103,61 @@ pub fn figure_3(out: &Output) -> Result<Vec<Finding>> {
         81,
     )?;
 
-    let miss = [&lagrange, &natural, &composite, &derived]
+    body_findings(
+        out,
+        "001 fig. 3 network, 3 x 3 curves",
+        (
+            "coons-fig3-deviation.svg",
+            "fig. 3, distance to the body",
+            "u",
+        ),
+        body,
+        &[
+            ("Lagrange Gordon", &lagrange),
+            ("natural-spline Gordon", &natural),
+            ("composite Coons (exact A, B)", &composite),
+            ("composite Coons (derived A, B)", &derived),
+        ],
+        3,
+    )
+}
+
+/// The checks of surfaces through a network cut from `body`: the largest miss of a network
+/// curve over all of them (Prop. 1), then the distance of each `(name, surface)` to the body;
+/// the distance profiles of the first `profiled` are drawn into `file` (title, axis name).
+fn body_findings(
+    out: &Output,
+    example: &str,
+    (file, title, axis): (&str, &str, &str),
+    body: Body,
+    surfaces: &[(&str, &CoonsSurface<3>)],
+    profiled: usize,
+) -> Result<Vec<Finding>> {
+    let miss = surfaces
         .iter()
-        .map(|s| network_miss(s, body))
+        .map(|(_, s)| network_miss(s, body))
         .fold(0.0, f64::max);
     let same = |u: f64, v: f64| (u, v);
-    let measured = [
-        Deviation::measure(&lagrange, body, &same),
-        Deviation::measure(&natural, body, &same),
-        Deviation::measure(&composite, body, &same),
-    ];
+    let measured: Vec<Deviation> = surfaces
+        .iter()
+        .map(|(_, s)| Deviation::measure(s, body, &same))
+        .collect();
     write_profiles(
-        &out.file("coons-fig3-deviation.svg"),
-        "fig. 3, distance to the body",
-        ("u", "distance"),
-        &measured,
+        &out.file(file),
+        title,
+        (axis, "distance"),
+        &measured[..profiled],
     )?;
-    let example = "001 fig. 3 network, 3 x 3 curves";
-    let to_body = |s: &CoonsSurface<3>| Deviation::measure(s, body, &same).max();
-    Ok(vec![
-        Finding::new(example, "largest miss of a network curve (Prop. 1)", miss),
-        Finding::new(
-            example,
-            "distance to the body, Lagrange Gordon",
-            measured[0].max(),
-        ),
-        Finding::new(
-            example,
-            "distance to the body, natural-spline Gordon",
-            measured[1].max(),
-        ),
-        Finding::new(
-            example,
-            "distance to the body, composite Coons (exact A, B)",
-            measured[2].max(),
-        ),
-        Finding::new(
-            example,
-            "distance to the body, composite Coons (derived A, B)",
-            to_body(&derived),
-        ),
-    ])
+    let mut findings = vec![Finding::new(
+        example,
+        "largest miss of a network curve (Prop. 1)",
+        miss,
+    )];
+    for ((name, _), deviation) in surfaces.iter().zip(&measured) {
+        let measure = format!("distance to the body, {name}");
+        findings.push(Finding::new(example, measure, deviation.max()));
+    }
+    Ok(findings)
 }
 
 pub fn fuselage_network(out: &Output) -> Result<Vec<Finding>> {
@@ -195,46 +209,29 @@ pub fn fuselage_network(out: &Output) -> Result<Vec<Finding>> {
         73,
     )?;
 
-    let miss = [&lagrange, &spline, &composite]
-        .iter()
-        .map(|s| network_miss(s, body))
-        .fold(0.0, f64::max);
-    let same = |u: f64, v: f64| (u, v);
-    let measured = [
-        Deviation::measure(&lagrange, body, &same),
-        Deviation::measure(&spline, body, &same),
-    ];
-    write_profiles(
-        &out.file("fuselage-deviation.svg"),
-        "fuselage, distance to the body",
-        ("x", "distance"),
-        &measured,
-    )?;
     let example = "001 fuselage, 7 x 5 curves";
-    let to_body = |s: &CoonsSurface<3>| Deviation::measure(s, body, &same).max();
-    Ok(vec![
-        Finding::new(example, "largest miss of a network curve (Prop. 1)", miss),
-        Finding::new(
-            example,
-            "distance to the body, Lagrange Gordon",
-            measured[0].max(),
+    let mut findings = body_findings(
+        out,
+        example,
+        (
+            "fuselage-deviation.svg",
+            "fuselage, distance to the body",
+            "x",
         ),
-        Finding::new(
-            example,
-            "distance to the body, spline Gordon",
-            measured[1].max(),
-        ),
-        Finding::new(
-            example,
-            "distance to the body, composite Coons (derived A, B)",
-            to_body(&composite),
-        ),
-        Finding::new(
-            example,
-            "distance to the body, spline Gordon from points",
-            Deviation::measure(&from_points, body, &|u, v| (station(u), TAU * v)).max(),
-        ),
-    ])
+        body,
+        &[
+            ("Lagrange Gordon", &lagrange),
+            ("spline Gordon", &spline),
+            ("composite Coons (derived A, B)", &composite),
+        ],
+        2,
+    )?;
+    findings.push(Finding::new(
+        example,
+        "distance to the body, spline Gordon from points",
+        Deviation::measure(&from_points, body, &|u, v| (station(u), TAU * v)).max(),
+    ));
+    Ok(findings)
 }
 
 fn write_text(path: &Path, text: &str) -> Result<()> {
