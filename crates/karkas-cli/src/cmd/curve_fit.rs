@@ -138,8 +138,7 @@ fn fit_and_write<const D: usize>(
         })?;
     }
     if format.is_cad() {
-        let what = args.input.display().to_string();
-        return write_cad_curve(&fit.spline, format, &args.output, &what);
+        return write_cad_curve(&fit.spline, format, &args.output, args.input.display());
     }
     match format {
         OutputFormat::Csv => write_curve_csv(&args.output, &ts, &samples)?,

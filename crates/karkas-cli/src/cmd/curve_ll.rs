@@ -72,8 +72,7 @@ fn build_and_write<const D: usize>(
     let curve =
         build(points, args.order, args.closed).with_context(|| args.input.display().to_string())?;
     if format.is_cad() {
-        let what = args.input.display().to_string();
-        return write_cad_curve(&curve, format, &args.output, &what);
+        return write_cad_curve(&curve, format, &args.output, args.input.display());
     }
     let n = args
         .samples

@@ -72,8 +72,7 @@ pub fn run(args: &SurfaceBicubicArgs) -> Result<()> {
     let surface = BicubicSurface::new(&grid, args.param.to_library(), closed_u, closed_v)
         .with_context(|| args.grid.input.display().to_string())?;
     if format.is_cad() {
-        let what = args.grid.input.display().to_string();
-        return write_cad_surface(&surface, format, &args.output, &what);
+        return write_cad_surface(&surface, format, &args.output, args.grid.input.display());
     }
     let (nu, nv) = args.samples.or_else(|| GridInput::default_samples(&grid));
     let title = format!("bicubic surface, {} x {} grid", grid.rows(), grid.cols());

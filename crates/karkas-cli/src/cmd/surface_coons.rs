@@ -127,7 +127,7 @@ pub fn run(args: &SurfaceCoonsArgs) -> Result<()> {
     let surface = build(args.kind, &network, cross.as_ref()).map_err(|e| files.explain(e))?;
     if format.is_cad() {
         let what = format!("{}, {}", args.u_curves.display(), args.v_curves.display());
-        return write_cad_surface(&surface, format, &args.output, &what);
+        return write_cad_surface(&surface, format, &args.output, what);
     }
 
     let longest = |f: &CurveFamily| f.curves.iter().map(Vec::len).max().unwrap_or(0);

@@ -37,8 +37,7 @@ pub fn run(args: &SurfaceLlArgs) -> Result<()> {
     grid_points(&args.grid.input, grid.as_slice())?;
     let surface = args.ll.build(&grid, &args.grid.input)?;
     if format.is_cad() {
-        let what = args.grid.input.display().to_string();
-        return write_cad_surface(&surface, format, &args.output, &what);
+        return write_cad_surface(&surface, format, &args.output, args.grid.input.display());
     }
     let (nu, nv) = args.samples.or_else(|| GridInput::default_samples(&grid));
     let title = format!(

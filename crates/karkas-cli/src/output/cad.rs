@@ -15,10 +15,10 @@ pub fn write_cad_curve<const D: usize>(
     curve: &impl ToBSplineCurve<D>,
     format: OutputFormat,
     output: &Path,
-    what: &str,
+    what: impl std::fmt::Display,
 ) -> Result<()> {
-    let bspline = curve.to_bspline().with_context(|| what.to_owned())?;
-    let spatial = curve_in_space(&bspline).with_context(|| what.to_owned())?;
+    let bspline = curve.to_bspline().with_context(|| what.to_string())?;
+    let spatial = curve_in_space(&bspline).with_context(|| what.to_string())?;
     write_cad(&[CadEntity::Curve(&spatial)], format, output)?;
     eprintln!(
         "karkas: wrote {} (B-spline curve of degree {}, {} control points)",
@@ -34,9 +34,9 @@ pub fn write_cad_surface(
     surface: &impl ToBSplineSurface<3>,
     format: OutputFormat,
     output: &Path,
-    what: &str,
+    what: impl std::fmt::Display,
 ) -> Result<()> {
-    let bspline = surface.to_bspline().with_context(|| what.to_owned())?;
+    let bspline = surface.to_bspline().with_context(|| what.to_string())?;
     write_cad(&[CadEntity::Surface(&bspline)], format, output)?;
     let grid = bspline.control_points();
     eprintln!(
