@@ -82,7 +82,7 @@ impl<const D: usize> Curve<D> for AffineCurve<D> {
         self.inner.deriv(self.own_parameter(t), k) * scale
     }
 
-    fn polynomial_pieces(&self) -> Option<crate::bspline::PolynomialPieces> {
+    fn polynomial_pieces(&self) -> Option<crate::core::PolynomialPieces> {
         self.inner
             .polynomial_pieces()
             .map(|p| p.mapped(self.own, self.domain))
@@ -173,7 +173,7 @@ impl<const D: usize> Curve<D> for SurfaceCrossDerivative<D> {
     }
 
     /// The surface's pieces along the line (a derivative across it keeps them).
-    fn polynomial_pieces(&self) -> Option<crate::bspline::PolynomialPieces> {
+    fn polynomial_pieces(&self) -> Option<crate::core::PolynomialPieces> {
         match self.along {
             Along::U => self.surface.pieces_u().ok(),
             Along::V => self.surface.pieces_v().ok(),

@@ -81,6 +81,7 @@
 //! interpolant.
 
 mod blending;
+mod bspline;
 mod curves;
 mod functional;
 mod instances;
@@ -95,6 +96,7 @@ pub use blending::{
     hermite_cubic, BlendingFamily, CubicHermiteBlending, LagrangeBlending, LlBlending,
     PiecewiseHermiteBlending, SplineBlending, SplineEnds,
 };
+pub use bspline::MAX_SAMPLED_DEGREE;
 pub use curves::{curve_ref, AffineCurve, Along, CurveRef, SurfaceCrossDerivative};
 pub use functional::Functional;
 pub use instances::DERIVED_CROSS_ENDS;

@@ -46,6 +46,7 @@
 //! bound, 0.4 s with an active one).
 
 mod adaptive;
+mod bspline;
 mod fixed;
 mod hermite;
 mod knots;

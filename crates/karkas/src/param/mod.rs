@@ -32,6 +32,7 @@
 //! ```
 
 mod bicubic;
+mod bspline;
 pub mod experiments;
 mod knots;
 mod parameterization;
