@@ -3,9 +3,9 @@
 //! the paper's figures beside ours. Writes every frame's nodes (grid CSV) and interpolant
 //! (OBJ mesh).
 
+use super::param_experiment::{helix_experiment, seed_experiments, SeedExperiment};
 use super::{write_viewer, Finding, Output};
 use anyhow::{Context, Result};
-use karkas::param::experiments::{helix_experiment, seed_experiments, SeedExperiment};
 use karkas::param::BicubicSurface;
 use karkas::{Point3, Surface};
 use karkas_io::obj::write_surface_obj;
