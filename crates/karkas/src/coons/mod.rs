@@ -82,6 +82,7 @@
 
 mod blending;
 mod bspline;
+mod cross_derivative;
 mod curves;
 mod functional;
 mod instances;
@@ -97,7 +98,8 @@ pub use blending::{
     PiecewiseHermiteBlending, SplineBlending, SplineEnds,
 };
 pub use bspline::MAX_SAMPLED_DEGREE;
-pub use curves::{curve_ref, AffineCurve, Along, CurveRef, SurfaceCrossDerivative};
+pub use cross_derivative::{Along, SurfaceCrossDerivative};
+pub use curves::{curve_ref, AffineCurve, CurveRef};
 pub use functional::Functional;
 pub use instances::DERIVED_CROSS_ENDS;
 pub use network::{CrossDerivatives, CurveNetwork, NetworkAxis};
