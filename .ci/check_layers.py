@@ -370,7 +370,9 @@ def self_test():
         "crates/karkas/src/lib.rs": "pub mod core;\npub mod ll;\nmod error;\n"
         "pub use crate::core::Point;\npub use error::Result;\n",
         "crates/karkas/src/error.rs": "pub type Result<T> = std::result::Result<T, ()>;\n",
-        "crates/karkas/src/core/mod.rs": "mod point;\npub use point::Point;\n",
+        "crates/karkas/src/core/mod.rs": "mod grid;\nmod point;\npub use point::Point;\n",
+        # Upward inside a group of a `use` line (error is fine from anywhere).
+        "crates/karkas/src/core/grid.rs": "use crate::{error::Result, ll::{curve::g}};\n",
         # Upward: core names ll inline, behind a comment and a string that must not count.
         "crates/karkas/src/core/point.rs": "// crate::ll::x in a comment\n"
         "pub struct Point;\nfn f() { let _ = \"crate::ll\"; crate::ll::curve::g(); }\n",
@@ -391,7 +393,8 @@ def self_test():
     expected_up = "crates/karkas/src/core/point.rs:3: core -> ll (runs up)"
     assert expected_up in report, report
     assert "file-level import cycle" in report and "ll/surface.rs" in report, report
-    assert len(problems) == 2, report
+    assert "crates/karkas/src/core/grid.rs:1: core -> ll (runs up)" in report, report
+    assert len(problems) == 3, report
     print("check_layers self-test: the synthetic upward import and cycle fail, as they must")
 
 
