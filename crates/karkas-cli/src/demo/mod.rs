@@ -12,6 +12,7 @@ mod dps;
 mod fit;
 mod ll;
 mod param;
+mod param_experiment;
 mod report;
 
 use anyhow::{Context, Result};

@@ -4,8 +4,8 @@
 //! (OBJ mesh).
 
 use super::common::{write_viewer, Finding, Output};
+use super::param_experiment::{helix_experiment, seed_experiments, SeedExperiment};
 use anyhow::{Context, Result};
-use karkas::param::experiments::{helix_experiment, seed_experiments, SeedExperiment};
 use karkas::param::BicubicSurface;
 use karkas::{Point3, Surface};
 use karkas_io::obj::write_surface_obj;

@@ -11,7 +11,9 @@
 //! for Hermite and bicubic pieces; at most `L/2` for LL pieces), so the conversion adds only
 //! a few rounding errors to the Bezier points.
 
-use crate::Point;
+use super::BSplineCurve;
+use crate::core::Grid;
+use crate::{Point, Result};
 
 /// The clamped knot vector of degree `degree` over `breaks` with the inner multiplicities
 /// `multiplicity` (one per inner breakpoint, each in `1..=degree`).
@@ -136,4 +138,48 @@ pub(crate) fn hermite_bezier<const D: usize>(
         r1.add_scaled(-h / 3.0, d1),
         r1,
     ]
+}
+
+/// The control grid of the tensor-product B-spline equal to the Bezier patches
+/// `patch(k, l, a, b)` (patch `(k, l)` on `[bu_k, bu_{k+1}] x [bv_l, bv_{l+1}]`, Bezier point
+/// `(a, b)`): converted along `u` for every Bezier row of every `v` piece, then along `v`.
+pub(crate) fn tensor_controls<const D: usize>(
+    (p, breaks_u, knots_u): (usize, &[f64], &[f64]),
+    (q, breaks_v, knots_v): (usize, &[f64], &[f64]),
+    patch: impl Fn(usize, usize, usize, usize) -> Point<D>,
+) -> Grid<Point<D>> {
+    let pieces_v = breaks_v.len() - 1;
+    // rows[l * (q + 1) + b][i]: u-control i of the Bezier row b of v-piece l.
+    let rows: Vec<Vec<Point<D>>> = (0..pieces_v)
+        .flat_map(|l| (0..=q).map(move |b| (l, b)))
+        .map(|(l, b)| bspline_controls(p, breaks_u, knots_u, |k, a| patch(k, l, a, b)))
+        .collect();
+    let nu = knots_u.len() - p - 1;
+    let columns: Vec<Vec<Point<D>>> = (0..nu)
+        .map(|i| bspline_controls(q, breaks_v, knots_v, |l, b| rows[l * (q + 1) + b][i]))
+        .collect();
+    let nv = knots_v.len() - q - 1;
+    Grid::from_fn(nu, nv, |i, j| columns[i][j])
+}
+
+/// Cubic Hermite data on `knots` as a B-spline with inner multiplicity `multiplicity`
+/// (2 for `C^1`, 1 for `C^2` data).
+pub(crate) fn hermite_curve<const D: usize>(
+    knots: &[f64],
+    values: &[Point<D>],
+    derivatives: &[Point<D>],
+    multiplicity: usize,
+) -> Result<BSplineCurve<D>> {
+    let mult = vec![multiplicity; knots.len() - 2];
+    let knot_vec = knot_vector(3, knots, &mult);
+    let control = bspline_controls(3, knots, &knot_vec, |k, a| {
+        hermite_bezier(
+            values[k],
+            derivatives[k],
+            values[k + 1],
+            derivatives[k + 1],
+            knots[k + 1] - knots[k],
+        )[a]
+    });
+    BSplineCurve::new(3, knot_vec, control)
 }

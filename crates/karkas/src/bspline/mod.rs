@@ -4,7 +4,9 @@
 //!
 //! [`BSplineCurve`] and [`BSplineSurface`] are non-rational B-splines with clamped knot
 //! vectors, evaluated by de Boor's algorithm (independently of the types they come from).
-//! [`ToBSplineCurve`] / [`ToBSplineSurface`] convert:
+//! [`ToBSplineCurve`] / [`ToBSplineSurface`] convert; each type implements them in its own
+//! module (`ll/bspline.rs`, `fit/bspline.rs`, `param/bspline.rs`, `coons/bspline.rs`) with the
+//! helpers of this module, which knows none of them:
 //!
 //! | type | degree | inner knot multiplicity |
 //! |---|---|---|
@@ -16,8 +18,8 @@
 //!
 //! Method: each type gives its Bezier pieces in closed form (LL: the Bernstein coefficients
 //! of the kernel `h`, all positive; Hermite and bicubic: the Hermite-to-Bezier rule; Coons:
-//! interpolation in each cell, see [`coons`]); the pieces are then joined into one B-spline
-//! by blossoming (`bezier.rs`), which is exact for pieces that join with the continuity the
+//! interpolation in each cell); the pieces are then joined into one B-spline by blossoming
+//! (`bezier.rs`), which is exact for pieces that join with the continuity the
 //! knot vector encodes. Cost: `O(n p^2)` for `n` pieces of degree `p` (`O(n p^2 q^2)`-ish for
 //! surfaces, linear in the number of patches).
 //!
@@ -32,14 +34,14 @@
 //! blossoming are a few dozen lines.
 
 mod bezier;
-mod convert;
-pub mod coons;
 mod curve;
-mod pieces;
 mod surface;
 
+pub use crate::core::PolynomialPieces;
+pub(crate) use bezier::{
+    bspline_controls, hermite_curve, knot_vector, split_scalar, tensor_controls,
+};
 pub use curve::{BSplineCurve, MAX_DEGREE};
-pub use pieces::PolynomialPieces;
 pub use surface::BSplineSurface;
 
 use crate::Result;

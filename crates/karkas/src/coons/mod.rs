@@ -81,6 +81,8 @@
 //! interpolant.
 
 mod blending;
+mod bspline;
+mod cross_derivative;
 mod curves;
 mod functional;
 mod instances;
@@ -95,7 +97,9 @@ pub use blending::{
     hermite_cubic, BlendingFamily, CubicHermiteBlending, LagrangeBlending, LlBlending,
     PiecewiseHermiteBlending, SplineBlending, SplineEnds,
 };
-pub use curves::{curve_ref, AffineCurve, Along, CurveRef, SurfaceCrossDerivative};
+pub use bspline::MAX_SAMPLED_DEGREE;
+pub use cross_derivative::{Along, SurfaceCrossDerivative};
+pub use curves::{curve_ref, AffineCurve, CurveRef};
 pub use functional::Functional;
 pub use instances::DERIVED_CROSS_ENDS;
 pub use network::{CrossDerivatives, CurveNetwork, NetworkAxis};

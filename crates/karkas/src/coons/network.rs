@@ -8,7 +8,8 @@
 use std::sync::Arc;
 
 use super::blending::check_nodes;
-use super::curves::{AffineCurve, Along, CurveRef, SurfaceCrossDerivative};
+use super::cross_derivative::{Along, SurfaceCrossDerivative};
+use super::curves::{AffineCurve, CurveRef};
 use super::CoonsSurface;
 use crate::core::Interval;
 use crate::{Error, Result};

@@ -110,8 +110,8 @@ impl<const D: usize> Curve<D> for PolylineCurve<D> {
         self.on_piece(l, s, k)
     }
 
-    fn polynomial_pieces(&self) -> Option<crate::bspline::PolynomialPieces> {
-        Some(crate::bspline::PolynomialPieces::uniform_continuity(
+    fn polynomial_pieces(&self) -> Option<crate::core::PolynomialPieces> {
+        Some(crate::core::PolynomialPieces::uniform_continuity(
             1,
             self.params.clone(),
             0,

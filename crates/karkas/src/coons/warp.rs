@@ -147,7 +147,7 @@ impl<const D: usize, C: Curve<D>> Curve<D> for WarpedCurve<D, C> {
     /// Without a warp the inner curve's pieces, mapped by `tau = own.start + own.length v`;
     /// with one, `None` (a polynomial composed with the cubic warp has other breakpoints and
     /// a higher degree).
-    fn polynomial_pieces(&self) -> Option<crate::bspline::PolynomialPieces> {
+    fn polynomial_pieces(&self) -> Option<crate::core::PolynomialPieces> {
         if self.warp.is_some() {
             return None;
         }

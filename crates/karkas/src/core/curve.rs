@@ -1,6 +1,6 @@
 //! The curve traits.
 
-use super::{uniform_into, Interval, Point};
+use super::{uniform_into, Interval, Point, PolynomialPieces};
 
 /// Which side of a breakpoint a one-sided derivative is taken from.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -39,7 +39,7 @@ pub trait Curve<const D: usize> {
     /// polynomial of its parameter; `None` (the default) when it is not or is not known to
     /// be. Used for exact B-spline export of surfaces built from curves
     /// ([`bspline`](crate::bspline)).
-    fn polynomial_pieces(&self) -> Option<crate::bspline::PolynomialPieces> {
+    fn polynomial_pieces(&self) -> Option<PolynomialPieces> {
         None
     }
 

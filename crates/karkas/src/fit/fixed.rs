@@ -18,7 +18,7 @@
 //! number of threads (each piece is rotated on its own, in the order of its points).
 
 use super::hermite::{hermite_basis, jump_coefficients};
-use super::solver::{Problem, State};
+use super::problem::{Problem, State};
 use crate::core::parallel::PARALLEL_THRESHOLD;
 use crate::solve::BandedLeastSquares;
 use crate::{Point, Result};

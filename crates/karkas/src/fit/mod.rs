@@ -46,13 +46,17 @@
 //! bound, 0.4 s with an active one).
 
 mod adaptive;
+mod bspline;
 mod fixed;
+mod gradient;
 mod hermite;
 mod knots;
 mod newton;
 mod penalty;
 mod power;
+mod problem;
 mod project;
+mod project_all;
 mod solver;
 
 pub use adaptive::{fit_curve_adaptive, AdaptiveFit};

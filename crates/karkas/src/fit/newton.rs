@@ -1,4 +1,5 @@
-//! The Newton model of the inner problem: gradient, Hessian and damped steps.
+//! The Newton model of the inner problem: Hessian blocks and damped steps (the gradient is in
+//! [`gradient`](super::gradient)).
 //!
 //! At foot points the half gradient of `F = H + p f + lambda S` with respect to the
 //! coefficients is `sum_i A_i^T e_i + p sum_L delta_L a_L J_L + lambda G q` (`A_i` the basis
@@ -26,161 +27,75 @@
 //! then scattered into a banded Cholesky factorization ([`BandedSpd`]): `O(n D^2)` for the
 //! points, `O(N D^3)` for the `N` knots.
 
-use super::hermite::{bending_gram, hermite_basis, jump_coefficients, HermiteSpline};
-use super::solver::{Problem, Solver, State};
-use rayon::prelude::*;
-
+use super::gradient::{accumulate_gradient, piece_coefficients, pinned, Gradient};
+use super::hermite::{bending_gram, hermite_basis, jump_coefficients};
+use super::problem::{Problem, State};
 use crate::core::parallel::PARALLEL_THRESHOLD;
+use crate::solve::BandedSpd;
 use crate::{Point, Result};
+use rayon::prelude::*;
 
 /// Secant and bisection steps of the search for `p`, at most.
 const SEARCH_STEPS: usize = 100;
 /// Decades the bracket of `p` is widened by, at most, on either side of the guess.
 const BRACKET_DECADES: usize = 60;
 /// A tenfold penalty that lowers the logarithm of the jump sum after the step by less than
-/// this has saturated (see [`Solver::target_step`]).
+/// this has saturated (see [`NewtonModel::target_step`]).
 const SATURATED: f64 = 1e-6;
 
-/// The half gradient of `F = H + p f + lambda S` in two parts, `base` (of `H + lambda S`) and
-/// `jump` (of `f`, per unit `p`), with the sums of the absolute values of their terms (the
-/// scale of the relative gradient test); interleaved layout, zero at pinned unknowns.
-#[derive(Clone, Debug)]
-pub(crate) struct Gradient {
-    base: Vec<f64>,
-    base_abs: Vec<f64>,
-    jump: Vec<f64>,
-    jump_abs: Vec<f64>,
+/// The Newton model of the inner problem at a state: the per-piece Hessian blocks of `H`,
+/// the gradient, and the damped step, with their buffers (allocated once per fit).
+pub(crate) struct NewtonModel<const D: usize> {
+    hessian: BandedSpd,
+    /// Per piece: `sum A^T A` of its points, 4 x 4 (the same for every coordinate).
+    separable: Vec<f64>,
+    /// Per piece: `-sum v v^T / h` of its points, `4 D x 4 D`.
+    coupled: Vec<f64>,
+    /// The same with the safe `h` (see the module docs).
+    coupled_safe: Vec<f64>,
+    /// The piece of every point (scratch of the assembly).
+    point_piece: Vec<usize>,
+    /// The gradient at the current state.
+    gradient: Gradient,
+    /// The Newton step, interleaved layout.
+    step: Vec<f64>,
+    /// The damping added to each diagonal entry.
+    damping: Vec<f64>,
 }
 
-impl Gradient {
-    /// A zero gradient of `unknowns` entries.
-    pub fn new(unknowns: usize) -> Self {
-        Gradient {
-            base: vec![0.0; unknowns],
-            base_abs: vec![0.0; unknowns],
-            jump: vec![0.0; unknowns],
-            jump_abs: vec![0.0; unknowns],
+impl<const D: usize> NewtonModel<D> {
+    /// Buffers for `unknowns` coefficients on `pieces` pieces and `points` data points.
+    pub fn new(unknowns: usize, pieces: usize, points: usize) -> Self {
+        NewtonModel {
+            hessian: BandedSpd::new(unknowns, 5 * D + 1),
+            separable: vec![0.0; pieces * 16],
+            coupled: vec![0.0; pieces * 16 * D * D],
+            coupled_safe: vec![0.0; pieces * 16 * D * D],
+            point_piece: vec![0; points],
+            gradient: Gradient::new(unknowns),
+            step: vec![0.0; unknowns],
+            damping: vec![0.0; unknowns],
         }
     }
 
-    /// Entry `j` for the penalty `p`.
-    #[inline]
-    pub fn at(&self, j: usize, p: f64) -> f64 {
-        self.base[j] + p * self.jump[j]
+    /// The gradient at the state last assembled.
+    pub fn gradient(&self) -> &Gradient {
+        &self.gradient
     }
 
-    /// `(max_k |g_k|, max_k sum |terms of g_k|)` for the penalty `p`.
-    pub fn size(&self, p: f64) -> (f64, f64) {
-        let mut largest: f64 = 0.0;
-        let mut scale: f64 = 0.0;
-        for j in 0..self.base.len() {
-            largest = largest.max(self.at(j, p).abs());
-            scale = scale.max(self.base_abs[j] + p * self.jump_abs[j]);
-        }
-        (largest, scale)
+    /// The last step computed, interleaved layout.
+    pub fn step(&self) -> &[f64] {
+        &self.step
     }
-}
 
-/// The coefficients `[R_k, H_k, R_{k+1}, H_{k+1}]` of piece `k`.
-#[inline]
-fn piece_coefficients<const D: usize>(spline: &HermiteSpline<D>, k: usize) -> [Point<D>; 4] {
-    let (v, d) = (spline.values(), spline.derivatives());
-    [v[k], d[k], v[k + 1], d[k + 1]]
-}
-
-/// Whether unknown `j` (interleaved layout, `unknowns` in all) is an end value held by a pin.
-#[inline]
-pub(crate) fn pinned<const D: usize>(problem: &Problem<D>, unknowns: usize, j: usize) -> bool {
-    problem.pins.is_some() && (j < D || (j >= unknowns - 2 * D && j < unknowns - D))
-}
-
-/// The gradient of `F` at `state` into `out`.
-pub(crate) fn accumulate_gradient<const D: usize>(
-    problem: &Problem<D>,
-    state: &State<D>,
-    out: &mut Gradient,
-) {
-    let spline = &state.spline;
-    let knots = spline.knots();
-    for v in [
-        &mut out.base,
-        &mut out.base_abs,
-        &mut out.jump,
-        &mut out.jump_abs,
-    ] {
-        v.fill(0.0);
-    }
-    for (i, (r, &t)) in problem.points.iter().zip(&state.params).enumerate() {
-        let k = spline.piece_near(t, state.piece[i]);
-        let h = knots[k + 1] - knots[k];
-        let b0 = hermite_basis((t - knots[k]) / h, h, 0);
-        let q = piece_coefficients(spline, k);
-        let mut e = -*r;
-        for a in 0..4 {
-            e = e.add_scaled(b0[a], q[a]);
-        }
-        let base = 2 * k * D;
-        for (a, &phi) in b0.iter().enumerate() {
-            for c in 0..D {
-                let term = phi * e[c];
-                out.base[base + a * D + c] += term;
-                out.base_abs[base + a * D + c] += term.abs();
-            }
-        }
-    }
-    for l in 1..knots.len() - 1 {
-        let w = problem.delta[l];
-        if w.is_nan() || w <= 0.0 {
-            continue;
-        }
-        let jl = spline.jump_measure(l);
-        let coef = jump_coefficients(knots[l] - knots[l - 1], knots[l + 1] - knots[l]);
-        let base = 2 * (l - 1) * D;
-        for (a, &ca) in coef.iter().enumerate() {
-            for c in 0..D {
-                let term = w * jl[c] * ca;
-                out.jump[base + a * D + c] += term;
-                out.jump_abs[base + a * D + c] += term.abs();
-            }
-        }
-    }
-    let lambda = problem.bending;
-    if lambda > 0.0 {
-        for k in 0..knots.len() - 1 {
-            let g = bending_gram(knots[k + 1] - knots[k]);
-            let q = piece_coefficients(spline, k);
-            let base = 2 * k * D;
-            for (a, row) in g.iter().enumerate() {
-                let gq = row
-                    .iter()
-                    .zip(&q)
-                    .fold(Point::<D>::ZERO, |acc, (&gab, qb)| acc.add_scaled(gab, *qb));
-                for c in 0..D {
-                    let term = lambda * gq[c];
-                    out.base[base + a * D + c] += term;
-                    out.base_abs[base + a * D + c] += term.abs();
-                }
-            }
-        }
-    }
-    let unknowns = out.base.len();
-    for j in 0..unknowns {
-        if pinned(problem, unknowns, j) {
-            out.base[j] = 0.0;
-            out.jump[j] = 0.0;
-        }
-    }
-}
-
-impl<const D: usize> Solver<'_, D> {
     /// Accumulates the gradient and the per-piece Hessian blocks of `H` at `state` (see the
     /// module docs).
     ///
     /// A piece's blocks gather the terms of the points on it, in the order of the points; with
     /// many points, ranges of pieces are filled in parallel (each by a scan of all points), so
     /// the blocks do not depend on the number of threads.
-    pub(super) fn assemble(&mut self, state: &State<D>) {
-        accumulate_gradient(&self.problem, state, &mut self.gradient);
+    pub fn assemble(&mut self, problem: &Problem<D>, state: &State<D>) {
+        accumulate_gradient(problem, state, &mut self.gradient);
         let spline = &state.spline;
         let pieces = spline.knots().len() - 1;
         for (slot, (&t, &hint)) in self
@@ -192,7 +107,7 @@ impl<const D: usize> Solver<'_, D> {
         }
         let point_piece = &self.point_piece;
         let kernel = BlockKernel {
-            problem: &self.problem,
+            problem,
             state,
             point_piece,
         };
@@ -251,29 +166,36 @@ impl<const D: usize> Solver<'_, D> {
     }
 
     /// The damped Newton step from the assembled blocks into `self.step`; returns the
-    /// decrease of `F` the quadratic model predicts.
+    /// decrease of `F` the quadratic model predicts; `safe` picks the safe model (see the
+    /// module docs).
     ///
     /// Errors: [`Error::SingularSystem`](crate::Error::SingularSystem) when the damped matrix is not positive definite
     /// (the caller damps more).
-    pub(super) fn newton_step(&mut self, state: &State<D>, p: f64, mu: f64) -> Result<f64> {
+    pub fn newton_step(
+        &mut self,
+        problem: &Problem<D>,
+        state: &State<D>,
+        p: f64,
+        mu: f64,
+        safe: bool,
+    ) -> Result<f64> {
         let spline = &state.spline;
         let knots = spline.knots();
         let w4 = 4 * D;
         let k_mat = &mut self.hessian;
         k_mat.clear();
         let unknowns = self.step.len();
-        let problem = &self.problem;
         let pinned = |j: usize| pinned(problem, unknowns, j);
         let mut add = |i: usize, j: usize, value: f64| {
             if !pinned(i) && !pinned(j) {
                 k_mat.add(i, j, value);
             }
         };
-        let lambda = self.problem.bending;
+        let lambda = problem.bending;
         for k in 0..knots.len() - 1 {
             let base = 2 * k * D;
             let sep = &self.separable[16 * k..16 * k + 16];
-            let coupled = if self.safe {
+            let coupled = if safe {
                 &self.coupled_safe
             } else {
                 &self.coupled
@@ -297,7 +219,7 @@ impl<const D: usize> Solver<'_, D> {
             }
         }
         for l in 1..knots.len() - 1 {
-            let w = p * self.problem.delta[l];
+            let w = p * problem.delta[l];
             if w.is_nan() || w <= 0.0 {
                 continue;
             }
@@ -338,12 +260,12 @@ impl<const D: usize> Solver<'_, D> {
     }
 
     /// `f` of the spline of `state` moved by the step in `self.step`.
-    pub(super) fn jump_sum_after_step(&self, state: &State<D>) -> f64 {
+    pub fn jump_sum_after_step(&self, problem: &Problem<D>, state: &State<D>) -> f64 {
         let knots = state.spline.knots();
         let (values, derivatives) = (state.spline.values(), state.spline.derivatives());
         let mut f = 0.0;
         for l in 1..knots.len() - 1 {
-            let w = self.problem.delta[l];
+            let w = problem.delta[l];
             if w <= 0.0 {
                 continue;
             }
@@ -374,17 +296,23 @@ impl<const D: usize> Solver<'_, D> {
     /// the jump sum below the target, `p = 0`.
     ///
     /// Errors: [`Error::SingularSystem`](crate::Error::SingularSystem) as for the Newton step.
-    pub(super) fn target_step(
+    #[allow(clippy::too_many_arguments)]
+    pub fn target_step(
         &mut self,
+        problem: &Problem<D>,
         state: &State<D>,
         target: f64,
         guess: f64,
         mu: f64,
+        safe: bool,
     ) -> Result<(f64, f64)> {
         let ln_target = target.ln();
         let phi = |s: &mut Self, x: f64| -> Result<f64> {
-            s.newton_step(state, x.exp(), mu)?;
-            Ok(s.jump_sum_after_step(state).max(f64::MIN_POSITIVE).ln() - ln_target)
+            s.newton_step(problem, state, x.exp(), mu, safe)?;
+            Ok(s.jump_sum_after_step(problem, state)
+                .max(f64::MIN_POSITIVE)
+                .ln()
+                - ln_target)
         };
         let start = if guess > 0.0 && guess.is_finite() {
             guess.ln()
@@ -409,13 +337,13 @@ impl<const D: usize> Solver<'_, D> {
                     // A tenfold penalty no longer lowers the jump sum of the step (the
                     // damping limits it): the target is out of reach of this step, and a
                     // larger penalty would only grow without use.
-                    let predicted = self.newton_step(state, lo.exp(), mu)?;
+                    let predicted = self.newton_step(problem, state, lo.exp(), mu, safe)?;
                     return Ok((lo.exp(), predicted));
                 }
                 (lo, f_lo) = (x, v);
                 if x > start + BRACKET_DECADES as f64 * decade {
                     // The target is out of reach: the largest penalty tried.
-                    let predicted = self.newton_step(state, x.exp(), mu)?;
+                    let predicted = self.newton_step(problem, state, x.exp(), mu, safe)?;
                     return Ok((x.exp(), predicted));
                 }
             }
@@ -431,7 +359,7 @@ impl<const D: usize> Solver<'_, D> {
                 (hi, f_hi) = (x, v);
                 if x < start - BRACKET_DECADES as f64 * decade {
                     // The bound is not active for this model.
-                    let predicted = self.newton_step(state, 0.0, mu)?;
+                    let predicted = self.newton_step(problem, state, 0.0, mu, safe)?;
                     return Ok((0.0, predicted));
                 }
             }
@@ -462,12 +390,12 @@ impl<const D: usize> Solver<'_, D> {
             }
         }
         let p = hi.exp();
-        let predicted = self.newton_step(state, p, mu)?;
+        let predicted = self.newton_step(problem, state, p, mu, safe)?;
         Ok((p, predicted))
     }
 }
 
-/// Fills the Hessian blocks of a range of pieces (see [`Solver::assemble`]).
+/// Fills the Hessian blocks of a range of pieces (see [`NewtonModel::assemble`]).
 struct BlockKernel<'s, 'a, const D: usize> {
     problem: &'s Problem<'a, D>,
     state: &'s State<D>,

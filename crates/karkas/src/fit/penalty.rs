@@ -33,7 +33,8 @@
 use super::hermite::HermiteSpline;
 use super::knots::{check_knots, start_parameters, StartParameters};
 use super::power::PowerForm;
-use super::solver::{Penalty, Problem, Solver, State, Stop};
+use super::problem::{Problem, State};
+use super::solver::{Penalty, Solver, Stop};
 use crate::{Curve, Error, Point, Result};
 
 /// Iterations spent on the feasible reference `q*` of the seed's bound.
@@ -477,7 +478,7 @@ fn feasible_reference<const D: usize>(
         piece: vec![0; start.len()],
     };
     let mut form = PowerForm::new(&lifted.spline);
-    super::solver::project(problem.points, problem.foot_points, &mut lifted, &mut form);
+    super::project_all::project(problem.points, problem.foot_points, &mut lifted, &mut form);
     let value = lifted.data_term() + problem.bending * lifted.spline.bending_energy();
     (value, lifted)
 }

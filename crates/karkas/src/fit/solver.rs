@@ -9,7 +9,7 @@
 //! pinned to the first and last points, with `p` held or chosen per step ([`Penalty`]).
 //!
 //! - Newton's method on the reduced objective (the `t_i` eliminated by projection, see
-//!   [`newton`](super::newton)): each iteration assembles the banded Hessian in one pass over
+//!   [`newton`](super::newton) and [`gradient`](super::gradient)): each iteration assembles the banded Hessian in one pass over
 //!   the points, solves it by banded Cholesky, moves the coefficients and re-projects every
 //!   point from its previous foot point ([`foot_point_near`]).
 //! - Levenberg–Marquardt damping (Marquardt's scaling): a step is taken only when the true
@@ -36,17 +36,14 @@
 //! allocates nothing: every buffer lives in the [`Solver`].
 
 use super::fixed::{solve_fixed, FixedScratch};
+use super::gradient::{accumulate_gradient, Gradient};
 use super::hermite::HermiteSpline;
-use super::newton::{accumulate_gradient, Gradient};
+use super::newton::NewtonModel;
 use super::power::PowerForm;
-use super::project::foot_point_near;
-use crate::solve::{BandedLeastSquares, BandedSpd};
-use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
-
-use rayon::prelude::*;
-
-use crate::core::parallel::PARALLEL_THRESHOLD;
-use crate::{Error, Point, Result};
+use super::problem::{objective, penalties, Problem, State};
+use super::project_all::{project, project_within};
+use crate::solve::BandedLeastSquares;
+use crate::{Error, Result};
 
 /// Stop when the largest gradient entry is below this times the gradient's scale.
 const GRADIENT_TOLERANCE: f64 = 1e-12;
@@ -64,21 +61,6 @@ const INITIAL_DAMPING: f64 = 1e-6;
 /// A step counts for the settled-distances test only when damped by at most this (a damped
 /// step is short, and its small changes say nothing about convergence).
 const SETTLED_DAMPING: f64 = 1e-3;
-
-/// The data of one fit, shared by every minimization.
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct Problem<'a, const D: usize> {
-    /// The points, in order.
-    pub points: &'a [Point<D>],
-    /// `delta_L`, one per knot (the end knots' entries are unused).
-    pub delta: &'a [f64],
-    /// `lambda`, the weight of the bending energy.
-    pub bending: f64,
-    /// The end values, when the ends are pinned to the first and last points.
-    pub pins: Option<[Point<D>; 2]>,
-    /// Project the points (foot-point distances) or keep their parameters.
-    pub foot_points: bool,
-}
 
 /// How the penalty `p` is set during a minimization.
 #[derive(Clone, Copy, Debug)]
@@ -109,63 +91,15 @@ pub(crate) struct Stop {
     pub tolerance: f64,
 }
 
-/// A spline and the parameters, squared distances and pieces of the data points on it.
-#[derive(Clone, Debug)]
-pub(crate) struct State<const D: usize> {
-    pub spline: HermiteSpline<D>,
-    pub params: Vec<f64>,
-    pub dist_sq: Vec<f64>,
-    /// The piece of every parameter (a hint kept up to date by the projection).
-    pub piece: Vec<usize>,
-}
-
-impl<const D: usize> State<D> {
-    /// A state on `knots` with zero coefficients and the given parameters.
-    pub fn blank(knots: &[f64], params: Vec<f64>) -> Self {
-        let n = knots.len();
-        State {
-            spline: HermiteSpline::from_parts(
-                knots.to_vec(),
-                vec![Point::ZERO; n],
-                vec![Point::ZERO; n],
-            ),
-            dist_sq: vec![0.0; params.len()],
-            piece: vec![0; params.len()],
-            params,
-        }
-    }
-
-    /// `H`: the sum of squared distances.
-    pub fn data_term(&self) -> f64 {
-        self.dist_sq.iter().sum()
-    }
-}
-
 /// Buffers and settings of the inner minimization.
 pub(crate) struct Solver<'a, const D: usize> {
-    pub(super) problem: Problem<'a, D>,
+    problem: Problem<'a, D>,
     coord: BandedLeastSquares,
-    pub(super) hessian: BandedSpd,
     fixed: FixedScratch<D>,
-    /// Per piece: `sum A^T A` of its points, 4 x 4 (the same for every coordinate).
-    pub(super) separable: Vec<f64>,
-    /// Per piece: `-sum v v^T / h` of its points, `4 D x 4 D`.
-    pub(super) coupled: Vec<f64>,
-    /// The same with the safe `h` (see [`newton`](super::newton)).
-    pub(super) coupled_safe: Vec<f64>,
-    /// The piece of every point (scratch of the assembly).
-    #[allow(dead_code)]
-    pub(super) point_piece: Vec<usize>,
-    /// Use `coupled_safe` in the Newton step.
-    pub(super) safe: bool,
-    /// The gradient at the current state.
-    pub(super) gradient: Gradient,
+    /// The Newton model at the current state.
+    model: NewtonModel<D>,
     /// The gradient at a trial state.
     trial_gradient: Gradient,
-    /// The Newton step, interleaved layout.
-    pub(super) step: Vec<f64>,
-    /// The damping added to each diagonal entry.
-    pub(super) damping: Vec<f64>,
     /// Coefficients in the layout of [`BandedLeastSquares`] (`D` per unknown).
     x: Vec<f64>,
     /// The power form of the spline being projected onto.
@@ -184,17 +118,9 @@ impl<'a, const D: usize> Solver<'a, D> {
         Solver {
             problem,
             coord: BandedLeastSquares::new(2 * n_knots, 6, D),
-            hessian: BandedSpd::new(unknowns, 5 * D + 1),
             fixed: FixedScratch::new(n, pieces),
-            separable: vec![0.0; pieces * 16],
-            coupled: vec![0.0; pieces * 16 * D * D],
-            coupled_safe: vec![0.0; pieces * 16 * D * D],
-            point_piece: vec![0; n],
-            safe: false,
-            gradient: Gradient::new(unknowns),
+            model: NewtonModel::new(unknowns, pieces, n),
             trial_gradient: Gradient::new(unknowns),
-            step: vec![0.0; unknowns],
-            damping: vec![0.0; unknowns],
             x: vec![0.0; unknowns],
             power: PowerForm::new(template),
             trial: State {
@@ -245,11 +171,12 @@ impl<'a, const D: usize> Solver<'a, D> {
         self.trial.params.copy_from_slice(&state.params);
         self.trial.piece.copy_from_slice(&state.piece);
         copy_coefficients(&state.spline, &mut self.trial.spline);
+        let step = self.model.step();
         let (values, derivatives) = self.trial.spline.coefficients_mut();
         for (k, (v, d)) in values.iter_mut().zip(derivatives.iter_mut()).enumerate() {
             for c in 0..D {
-                v[c] += self.step[2 * k * D + c];
-                d[c] += self.step[(2 * k + 1) * D + c];
+                v[c] += step[2 * k * D + c];
+                d[c] += step[(2 * k + 1) * D + c];
             }
         }
         let penalties = penalties(&self.problem, &self.trial.spline, p);
@@ -336,8 +263,8 @@ impl<'a, const D: usize> Solver<'a, D> {
         let mut stalls = 0;
         let mut last_gradient = f64::INFINITY;
         for iteration in 0..stop.max_iterations {
-            self.assemble(state);
-            let (g, scale) = self.gradient.size(p);
+            self.model.assemble(&self.problem, state);
+            let (g, scale) = self.model.gradient().size(p);
             if g < GRADIENT_PROGRESS * last_gradient {
                 stalls = 0;
             }
@@ -351,10 +278,16 @@ impl<'a, const D: usize> Solver<'a, D> {
             let mut settled = false;
             // Each damping is tried with both models, the preferred one first.
             'tries: for attempt in 0..2 * DAMPING_TRIES {
-                self.safe = (attempt % 2 == 1) != prefer_safe;
+                let safe = (attempt % 2 == 1) != prefer_safe;
+                let problem = &self.problem;
                 let tried = match penalty {
-                    Penalty::Fixed(p) => self.newton_step(state, p, mu).map(|x| (p, x)),
-                    Penalty::Target { target, .. } => self.target_step(state, target, p, mu),
+                    Penalty::Fixed(p) => self
+                        .model
+                        .newton_step(problem, state, p, mu, safe)
+                        .map(|x| (p, x)),
+                    Penalty::Target { target, .. } => {
+                        self.model.target_step(problem, state, target, p, mu, safe)
+                    }
                 };
                 let mu_tried = mu;
                 if attempt % 2 == 1 {
@@ -379,10 +312,10 @@ impl<'a, const D: usize> Solver<'a, D> {
                 let level = !lower && value <= before + 4.0 * f64::EPSILON * before.abs() && {
                     accumulate_gradient(&self.problem, &self.trial, &mut self.trial_gradient);
                     self.trial_gradient.size(p_try).0
-                        < GRADIENT_PROGRESS * self.gradient.size(p_try).0
+                        < GRADIENT_PROGRESS * self.model.gradient().size(p_try).0
                 };
                 if lower || level {
-                    prefer_safe |= self.safe && attempt % 2 == 1;
+                    prefer_safe |= safe && attempt % 2 == 1;
                     let ratio = (before - value) / predicted.max(f64::MIN_POSITIVE);
                     mu = if ratio > 0.75 {
                         (mu_tried * 0.25).max(1e-15)
@@ -401,7 +334,6 @@ impl<'a, const D: usize> Solver<'a, D> {
                     break 'tries;
                 }
             }
-            self.safe = false;
             if gained.is_none() {
                 let value = self.alternation_into_trial(state, p);
                 if value < current {
@@ -438,130 +370,6 @@ fn settled_distances(old: &[f64], new: &[f64], tolerance: f64) -> bool {
         sum += b;
     }
     largest <= tolerance * (sum / new.len().max(1) as f64).sqrt()
-}
-
-/// `F = H + p f + lambda S` of a state.
-pub(crate) fn objective<const D: usize>(problem: &Problem<D>, state: &State<D>, p: f64) -> f64 {
-    state.data_term() + penalties(problem, &state.spline, p)
-}
-
-/// `p f + lambda S` of a spline.
-fn penalties<const D: usize>(problem: &Problem<D>, spline: &HermiteSpline<D>, p: f64) -> f64 {
-    let f = if p > 0.0 {
-        spline.jump_penalty(problem.delta)
-    } else {
-        0.0
-    };
-    let s = if problem.bending > 0.0 {
-        spline.bending_energy()
-    } else {
-        0.0
-    };
-    p * f + problem.bending * s
-}
-
-/// Re-projects every inner point of `points` onto `state.spline` from its current parameter
-/// when `foot_points` (the ends keep theirs), and refreshes the squared distances; `form` is
-/// scratch space for the power form of the spline (same knots).
-pub(crate) fn project<const D: usize>(
-    points: &[Point<D>],
-    foot_points: bool,
-    state: &mut State<D>,
-    form: &mut PowerForm<D>,
-) {
-    project_within(points, foot_points, state, form, f64::INFINITY);
-}
-
-/// A chunk of the projection: its index, and its parameters, squared distances and pieces.
-type ChunkSlices<'s> = (usize, ((&'s mut [f64], &'s mut [f64]), &'s mut [usize]));
-
-/// Points per chunk of the projection: chunks are projected in parallel when there are
-/// enough points (every point is projected on its own, from its own previous foot point).
-const PROJECTION_CHUNK: usize = 1 << 12;
-
-/// [`project`], abandoned (returning `false`) once the sum of the squared distances exceeds
-/// `budget`.
-///
-/// The points are projected in chunks of [`PROJECTION_CHUNK`], in parallel above
-/// [`PARALLEL_THRESHOLD`] points. A chunk gives up when its own sum plus those of the chunks
-/// already done exceeds the budget by a margin larger than any rounding of the sum (the
-/// distances are not negative, so the total exceeds it too); otherwise the total, summed in
-/// chunk order, decides. So the result does not depend on the number of threads.
-fn project_within<const D: usize>(
-    points: &[Point<D>],
-    foot_points: bool,
-    state: &mut State<D>,
-    form: &mut PowerForm<D>,
-    budget: f64,
-) -> bool {
-    form.update(&state.spline);
-    let form = &*form;
-    let n = points.len();
-    let limit = budget * (1.0 + 1e-6);
-    // The sum of the chunks done (f64 bits), and whether one gave up.
-    let done = AtomicU64::new(0f64.to_bits());
-    let abandoned = AtomicBool::new(false);
-    let chunk = |(c, ((params, dist_sq), piece)): ChunkSlices<'_>| {
-        let first = c * PROJECTION_CHUNK;
-        let mut sum = 0.0;
-        for (j, ((t, d), piece)) in params.iter_mut().zip(dist_sq).zip(piece).enumerate() {
-            let i = first + j;
-            let r = points[i];
-            if foot_points && i > 0 && i + 1 < n {
-                (*t, *d) = foot_point_near(form, r, *t, piece);
-            } else {
-                *piece = form.piece_near(*t, *piece);
-                *d = form.point(*piece, *t).distance_sq(r);
-            }
-            sum += *d;
-            if j % 64 == 63
-                && (abandoned.load(Ordering::Relaxed)
-                    || sum + f64::from_bits(done.load(Ordering::Relaxed)) > limit)
-            {
-                abandoned.store(true, Ordering::Relaxed);
-                return None;
-            }
-        }
-        // Lock-free `done += sum`.
-        let mut old = done.load(Ordering::Relaxed);
-        while let Err(now) = done.compare_exchange_weak(
-            old,
-            (f64::from_bits(old) + sum).to_bits(),
-            Ordering::Relaxed,
-            Ordering::Relaxed,
-        ) {
-            old = now;
-        }
-        Some(sum)
-    };
-    if n < PARALLEL_THRESHOLD {
-        let chunks = state
-            .params
-            .chunks_mut(PROJECTION_CHUNK)
-            .zip(state.dist_sq.chunks_mut(PROJECTION_CHUNK))
-            .zip(state.piece.chunks_mut(PROJECTION_CHUNK))
-            .enumerate();
-        let mut total = 0.0;
-        for item in chunks {
-            match chunk(item) {
-                Some(sum) => total += sum,
-                None => return false,
-            }
-        }
-        total <= budget
-    } else {
-        let sums: Vec<Option<f64>> = state
-            .params
-            .par_chunks_mut(PROJECTION_CHUNK)
-            .zip(state.dist_sq.par_chunks_mut(PROJECTION_CHUNK))
-            .zip(state.piece.par_chunks_mut(PROJECTION_CHUNK))
-            .enumerate()
-            .map(chunk)
-            .collect();
-        sums.iter()
-            .try_fold(0.0, |total, sum| sum.map(|sum| total + sum))
-            .is_some_and(|total| total <= budget)
-    }
 }
 
 /// Copies values and derivatives of `from` into `to` (same knots).

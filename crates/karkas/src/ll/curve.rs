@@ -16,8 +16,8 @@ use super::axis::NodeAxis;
 use super::frame::{close, coincide, extend, model_scale, validate};
 use super::kernel::{pow_n, LlKernel};
 use super::prefilter::interpolation_controls;
-use crate::bspline::PolynomialPieces;
 use crate::core::parallel::for_each_chunk;
+use crate::core::PolynomialPieces;
 use crate::core::{Curve, Interval, PiecewiseCurve, Side};
 use crate::{Error, Point, Result};
 

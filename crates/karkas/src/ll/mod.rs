@@ -18,6 +18,7 @@
 //! [`Surface::level_parameter_lines`](crate::Surface::level_parameter_lines).
 
 mod axis;
+mod bspline;
 mod curve;
 mod frame;
 mod kernel;

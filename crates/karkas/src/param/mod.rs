@@ -15,9 +15,8 @@
 //!   node derivatives found by the seed's three steps of `2N + M` spline solves, `O(N M)`;
 //!   not-a-knot ends, periodic in a closed direction.
 //!
-//! Implicit surfaces and their curvature-line grids are in [`crate::implicit`], the Hausdorff
-//! distance in [`crate::measure`]; [`experiments`] puts them together into the seed's table
-//! of errors.
+//! The seed's table of errors (frames from [`crate::implicit`], measured with
+//! [`crate::measure`]) is an experiment built on this module: the CLI's `demo` runs it.
 //!
 //! ```
 //! use karkas::param::{CubicSpline, CurveParameterization, SplineEnds};
@@ -32,7 +31,7 @@
 //! ```
 
 mod bicubic;
-pub mod experiments;
+mod bspline;
 mod knots;
 mod parameterization;
 mod slopes;

@@ -17,16 +17,14 @@
 //! ([`Curve::polynomial_pieces`](crate::Curve::polynomial_pieces): cubic splines, LL curves, polylines, B-splines, their
 //! affine reparameterizations and the cross-derivatives of such surfaces). What is not: curves
 //! of unknown structure and curves composed with a nonlinear reparameterization (the warp
-//! of a [`PointNetwork`](crate::coons::PointNetwork) whose crossings do not sit at the node
+//! of a [`PointNetwork`](super::PointNetwork) whose crossings do not sit at the node
 //! values): [`Error::NotExactlyConvertible`]. Degrees above [`MAX_SAMPLED_DEGREE`] are
 //! refused too (the sampling would lose digits). The result is checked against the surface
 //! at every cell centre; a mismatch is reported, never returned.
 
-use super::bezier::knot_vector;
-use super::convert::tensor_controls;
-use super::{BSplineSurface, PolynomialPieces, ToBSplineSurface};
-use crate::coons::{BlendingFamily, CoonsSurface};
-use crate::core::Surface;
+use super::{BlendingFamily, CoonsSurface, CurveRef};
+use crate::bspline::{knot_vector, tensor_controls, BSplineSurface, ToBSplineSurface};
+use crate::core::{PolynomialPieces, Surface};
 use crate::{Error, Point, Result};
 
 /// The largest degree per direction of a Coons surface converted by sampling.
@@ -36,7 +34,7 @@ pub const MAX_SAMPLED_DEGREE: usize = 12;
 /// are functions of that parameter.
 fn direction_pieces<const D: usize>(
     family: &dyn BlendingFamily,
-    curves: &[crate::coons::CurveRef<D>],
+    curves: &[CurveRef<D>],
     what: &'static str,
 ) -> Result<PolynomialPieces> {
     let domain = family.domain();

@@ -1,11 +1,14 @@
-//! Exact conversion of the LL, Hermite, cubic-spline and bicubic types.
+//! Exact B-spline form of LL curves and surfaces (Aulchenko, Latypov, Nikulichev): degree
+//! `2L`, knots at the segment borders with multiplicity `L`, the Bezier pieces from the
+//! Bernstein coefficients of the kernel `h` (all positive), joined by blossoming
+//! ([`crate::bspline`]).
 
-use super::bezier::{bspline_controls, hermite_bezier, knot_vector, split_scalar};
-use super::{BSplineCurve, BSplineSurface, ToBSplineCurve, ToBSplineSurface};
-use crate::core::{Curve, Grid, Surface};
-use crate::fit::HermiteSpline;
-use crate::ll::{LlCurve, LlKernel, LlSurface, NodeAxis};
-use crate::param::{BicubicSurface, CubicSpline};
+use super::{LlCurve, LlKernel, LlSurface, NodeAxis};
+use crate::bspline::{
+    bspline_controls, knot_vector, split_scalar, tensor_controls, BSplineCurve, BSplineSurface,
+    ToBSplineCurve, ToBSplineSurface,
+};
+use crate::core::{Curve, Surface};
 use crate::{Point, Result};
 
 /// The Bernstein coefficients (degree `2L`) of the LL kernel `h`.
@@ -125,104 +128,6 @@ impl<const D: usize> ToBSplineSurface<D> for LlSurface<D> {
         };
         let control = tensor_controls((p, &breaks_u, &knots_u), (q, &breaks_v, &knots_v), patch);
         Ok(BSplineSurface::new((p, knots_u), (q, knots_v), control)?
-            .with_closed(self.is_closed_u(), self.is_closed_v()))
-    }
-}
-
-/// The control grid of the tensor-product B-spline equal to the Bezier patches
-/// `patch(k, l, a, b)` (patch `(k, l)` on `[bu_k, bu_{k+1}] x [bv_l, bv_{l+1}]`, Bezier point
-/// `(a, b)`): converted along `u` for every Bezier row of every `v` piece, then along `v`.
-pub(crate) fn tensor_controls<const D: usize>(
-    (p, breaks_u, knots_u): (usize, &[f64], &[f64]),
-    (q, breaks_v, knots_v): (usize, &[f64], &[f64]),
-    patch: impl Fn(usize, usize, usize, usize) -> Point<D>,
-) -> Grid<Point<D>> {
-    let pieces_v = breaks_v.len() - 1;
-    // rows[l * (q + 1) + b][i]: u-control i of the Bezier row b of v-piece l.
-    let rows: Vec<Vec<Point<D>>> = (0..pieces_v)
-        .flat_map(|l| (0..=q).map(move |b| (l, b)))
-        .map(|(l, b)| bspline_controls(p, breaks_u, knots_u, |k, a| patch(k, l, a, b)))
-        .collect();
-    let nu = knots_u.len() - p - 1;
-    let columns: Vec<Vec<Point<D>>> = (0..nu)
-        .map(|i| bspline_controls(q, breaks_v, knots_v, |l, b| rows[l * (q + 1) + b][i]))
-        .collect();
-    let nv = knots_v.len() - q - 1;
-    Grid::from_fn(nu, nv, |i, j| columns[i][j])
-}
-
-/// Cubic Hermite data on `knots` as a B-spline with inner multiplicity `multiplicity`
-/// (2 for `C^1`, 1 for `C^2` data).
-fn hermite_curve<const D: usize>(
-    knots: &[f64],
-    values: &[Point<D>],
-    derivatives: &[Point<D>],
-    multiplicity: usize,
-) -> Result<BSplineCurve<D>> {
-    let mult = vec![multiplicity; knots.len() - 2];
-    let knot_vec = knot_vector(3, knots, &mult);
-    let control = bspline_controls(3, knots, &knot_vec, |k, a| {
-        hermite_bezier(
-            values[k],
-            derivatives[k],
-            values[k + 1],
-            derivatives[k + 1],
-            knots[k + 1] - knots[k],
-        )[a]
-    });
-    BSplineCurve::new(3, knot_vec, control)
-}
-
-/// Cubic splines of defect 2: degree 3, every inner knot doubled (`C^1`).
-impl<const D: usize> ToBSplineCurve<D> for HermiteSpline<D> {
-    fn to_bspline(&self) -> Result<BSplineCurve<D>> {
-        hermite_curve(self.knots(), self.values(), self.derivatives(), 2)
-    }
-}
-
-/// `C^2` cubic splines (any end conditions): degree 3, simple inner knots. A periodic spline
-/// is exported over its one period as a clamped curve whose ends coincide.
-impl<const D: usize> ToBSplineCurve<D> for CubicSpline<D> {
-    fn to_bspline(&self) -> Result<BSplineCurve<D>> {
-        Ok(
-            hermite_curve(self.knots(), self.values(), self.slopes(), 1)?
-                .with_closed(self.is_closed()),
-        )
-    }
-}
-
-/// Bicubic interpolating splines: degree 3 by 3, simple inner knots (`C^2` in each
-/// direction), from the Hermite data of the nodes (the Bezier net of each patch is
-/// `b_ab = r + A h_u/3 r_u + B h_v/3 r_v + A B h_u h_v/9 r_uv` at the patch corner nearest
-/// to Bezier point `(a, b)`, `A, B` in `{0, 1, -1, 0}` by distance and side).
-impl<const D: usize> ToBSplineSurface<D> for BicubicSurface<D> {
-    fn to_bspline(&self) -> Result<BSplineSurface<D>> {
-        let (ku, kv) = (self.knots_u(), self.knots_v());
-        let mult_u = vec![1; ku.len() - 2];
-        let mult_v = vec![1; kv.len() - 2];
-        let knots_u = knot_vector(3, ku, &mult_u);
-        let knots_v = knot_vector(3, kv, &mult_v);
-        let side = |a: usize| -> (usize, f64) {
-            match a {
-                0 => (0, 0.0),
-                1 => (0, 1.0),
-                2 => (1, -1.0),
-                _ => (1, 0.0),
-            }
-        };
-        let patch = |k: usize, l: usize, a: usize, b: usize| {
-            let (di, sa) = side(a);
-            let (dj, sb) = side(b);
-            let (i, j) = (k + di, l + dj);
-            let (hu, hv) = (ku[k + 1] - ku[k], kv[l + 1] - kv[l]);
-            let r = self.node(i, j);
-            let (ru, rv, ruv) = self.node_derivatives(i, j);
-            r.add_scaled(sa * hu / 3.0, ru)
-                .add_scaled(sb * hv / 3.0, rv)
-                .add_scaled(sa * sb * hu * hv / 9.0, ruv)
-        };
-        let control = tensor_controls((3, ku, &knots_u), (3, kv, &knots_v), patch);
-        Ok(BSplineSurface::new((3, knots_u), (3, knots_v), control)?
             .with_closed(self.is_closed_u(), self.is_closed_v()))
     }
 }

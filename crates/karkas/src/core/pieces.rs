@@ -1,7 +1,7 @@
 //! How a curve or a blending family is made of polynomial pieces: what the exact B-spline
 //! conversion of a Coons surface needs to know about its curves.
 
-use crate::core::Interval;
+use super::Interval;
 
 /// The piece structure of a piecewise polynomial function of one parameter: its degree (an
 /// upper bound on every piece's degree), its breakpoints (the domain ends included,

@@ -1,0 +1,99 @@
+//! Curves taken from a Coons surface: its first derivative across a parameter line, the
+//! cross-derivative curve that a curve network derives when none is given (Chashnikov).
+
+use std::sync::Arc;
+
+use super::CoonsSurface;
+use crate::core::{Curve, Interval, Surface};
+use crate::Point;
+
+/// Which parameter of a surface a cross-derivative curve runs along.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Along {
+    /// The curve is a function of `u` on the line `v = at`.
+    U,
+    /// The curve is a function of `v` on the line `u = at`.
+    V,
+}
+
+/// The first derivative of a Coons surface across one of its parameter lines, as a curve
+/// along the line: for [`Along::V`], `t -> dS/du (at, t)`; for [`Along::U`],
+/// `t -> dS/dv (t, at)`.
+///
+/// This is how omitted cross-derivative curves of a curve network are derived (see
+/// [`CrossDerivatives::from_surface`](super::CrossDerivatives::from_surface)). Batch
+/// evaluation goes through the surface's grid evaluation.
+#[derive(Clone)]
+pub struct SurfaceCrossDerivative<const D: usize> {
+    surface: Arc<CoonsSurface<D>>,
+    along: Along,
+    at: f64,
+}
+
+impl<const D: usize> core::fmt::Debug for SurfaceCrossDerivative<D> {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("SurfaceCrossDerivative")
+            .field("along", &self.along)
+            .field("at", &self.at)
+            .finish_non_exhaustive()
+    }
+}
+
+impl<const D: usize> SurfaceCrossDerivative<D> {
+    /// The cross-derivative of `surface` along the line `u = at` ([`Along::V`]) or `v = at`
+    /// ([`Along::U`]).
+    pub fn new(surface: Arc<CoonsSurface<D>>, along: Along, at: f64) -> Self {
+        SurfaceCrossDerivative { surface, along, at }
+    }
+}
+
+impl<const D: usize> Curve<D> for SurfaceCrossDerivative<D> {
+    fn domain(&self) -> Interval {
+        match self.along {
+            Along::U => self.surface.domain_u(),
+            Along::V => self.surface.domain_v(),
+        }
+    }
+
+    fn is_closed(&self) -> bool {
+        match self.along {
+            Along::U => self.surface.is_closed_u(),
+            Along::V => self.surface.is_closed_v(),
+        }
+    }
+
+    fn eval(&self, t: f64) -> Point<D> {
+        self.deriv(t, 0)
+    }
+
+    fn deriv(&self, t: f64, k: usize) -> Point<D> {
+        match self.along {
+            Along::U => self.surface.deriv(t, self.at, k, 1),
+            Along::V => self.surface.deriv(self.at, t, 1, k),
+        }
+    }
+
+    /// The surface's pieces along the line (a derivative across it keeps them).
+    fn polynomial_pieces(&self) -> Option<crate::core::PolynomialPieces> {
+        match self.along {
+            Along::U => self.surface.pieces_u().ok(),
+            Along::V => self.surface.pieces_v().ok(),
+        }
+    }
+
+    fn eval_into(&self, ts: &[f64], out: &mut [Point<D>]) {
+        self.deriv_into(ts, 0, out);
+    }
+
+    fn deriv_into(&self, ts: &[f64], k: usize, out: &mut [Point<D>]) {
+        assert_eq!(
+            ts.len(),
+            out.len(),
+            "parameter and output buffers differ in length"
+        );
+        match self.along {
+            Along::U => self.surface.deriv_grid_into(ts, &[self.at], k, 1, out),
+            Along::V => self.surface.deriv_grid_into(&[self.at], ts, 1, k, out),
+        }
+    }
+}
