@@ -18,12 +18,15 @@ pub enum CadEntity<'a> {
 /// A curve of dimension `D <= 3` in 3-D space (missing coordinates 0: a planar curve lies
 /// in the plane `z = 0`), with the same degree and knots.
 ///
-/// Errors: `D > 3` ([`karkas::Error::InvalidInput`]).
+/// Errors: `D > 3` ([`karkas::Error::DimensionTooHigh`]).
 pub fn curve_in_space<const D: usize>(curve: &BSplineCurve<D>) -> karkas::Result<BSplineCurve<3>> {
     if D > 3 {
-        return Err(karkas::Error::InvalidInput(format!(
-            "a curve in {D} dimensions cannot be written to a CAD file (at most 3)"
-        )));
+        return Err(karkas::Error::DimensionTooHigh {
+            what: "a curve",
+            target: "a CAD file",
+            dimension: D,
+            max: 3,
+        });
     }
     let control = curve
         .control_points()

@@ -389,6 +389,9 @@ pub fn fit_curve(
     if knots.is_some() && tolerance.is_some() {
         return Err(invalid("give knots or tolerance, not both"));
     }
+    if knots.is_none() && tolerance.is_none() {
+        return Err(invalid("give the knots or a tolerance"));
+    }
     let mut options = FitOptions {
         pin_ends,
         corners: corners.unwrap_or_default(),
@@ -411,9 +414,9 @@ pub fn fit_curve(
                         let a = fit::fit_curve_adaptive(p, tol, &options)?;
                         Ok((a.fit, Some(a.tolerance_met)))
                     }
-                    (None, None) => Err(karkas::Error::InvalidInput(
-                        "give the knots or a tolerance".into(),
-                    )),
+                    (None, None) => Err(karkas::Error::Internal {
+                        what: "neither knots nor a tolerance reached the fit",
+                    }),
                 }
             })
             .map_err(value_error)?;

@@ -150,7 +150,7 @@ impl PyBicubicSurface {
             let surface = maybe_detach(py, grid.rows() * grid.cols(), || match (&how, rule) {
                 (Err((ku, kv)), _) => BicubicSurface::<D>::from_knots(&grid, ku, kv, closed_u, closed_v),
                 (_, Some(rule)) => BicubicSurface::<D>::new(&grid, rule, closed_u, closed_v),
-                (Ok(_), None) => Err(karkas::Error::InvalidInput("no parameterization".into())),
+                (Ok(_), None) => Err(karkas::Error::Internal { what: "a parameterization without its rule" }),
             })
             .map_err(value_error)?;
             let sub = PyBicubicSurface {

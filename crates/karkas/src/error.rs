@@ -58,9 +58,71 @@ pub enum Error {
         /// Its value.
         pivot: f64,
     },
-    /// Any other invalid argument, described in words.
-    #[error("{0}")]
-    InvalidInput(String),
+    /// A grid size (rows x columns) outside what a method accepts
+    /// (e.g. [`trace_net`](crate::implicit::trace_net) with fewer than 2 nodes in a
+    /// direction, [`hausdorff_surface_implicit`](crate::measure::hausdorff_surface_implicit)
+    /// with fewer than 2 samples, [`vary`](crate::ll::vary) with an empty matrix).
+    #[error("a {rows} x {cols} {what} is not allowed: {reason}")]
+    InvalidGridSize {
+        /// What the grid is, e.g. `"net"`.
+        what: &'static str,
+        /// Rows asked for.
+        rows: usize,
+        /// Columns asked for.
+        cols: usize,
+        /// What the method needs.
+        reason: &'static str,
+    },
+    /// A grid node that lies outside the grid
+    /// ([`grid_parameters`](crate::param::grid_parameters) with a chord origin beyond the
+    /// last row or column).
+    #[error("{what} (i={row}, j={col}) is outside the {rows} x {cols} grid")]
+    OutsideGrid {
+        /// What the node is, e.g. `"the origin node"`.
+        what: &'static str,
+        /// Its row.
+        row: usize,
+        /// Its column.
+        col: usize,
+        /// Rows of the grid.
+        rows: usize,
+        /// Columns of the grid.
+        cols: usize,
+    },
+    /// A single argument (a point, an angle, a vector) that is NaN or infinite
+    /// (e.g. [`project_onto`](crate::implicit::project_onto) with a non-finite point,
+    /// [`trace_net`](crate::implicit::trace_net) with a non-finite start or angle).
+    #[error("{what} is not finite")]
+    NonFiniteArgument {
+        /// What the argument is, e.g. `"the point to project"`.
+        what: &'static str,
+    },
+    /// An entry of a list of numbers that is NaN or infinite
+    /// (e.g. [`vary`](crate::ll::vary) with a non-finite row sum).
+    #[error("{what} {index} is not finite")]
+    NonFiniteEntry {
+        /// What the entries are, e.g. `"row sum"`.
+        what: &'static str,
+        /// Index of the entry (0-based).
+        index: usize,
+    },
+    /// A parameter domain that is empty or not finite
+    /// ([`Sectioner::new`](crate::section::Sectioner::new) of such a surface).
+    #[error("the surface's parameter domain [{start}, {end}] is empty or not finite")]
+    InvalidDomain {
+        /// The start of the domain.
+        start: f64,
+        /// Its end.
+        end: f64,
+    },
+    /// A fault inside the library that valid input cannot cause (a bug), e.g. an FFT of a
+    /// size its own plan was made for failing
+    /// ([`InterpolationPlan`](crate::dps::InterpolationPlan)).
+    #[error("internal error: {what} (please report this as a bug)")]
+    Internal {
+        /// What failed.
+        what: &'static str,
+    },
     /// A discrete periodic spline with a step `n` below 2 between its nodes
     /// (e.g. [`DiscreteSpline::from_poles`](crate::dps::DiscreteSpline::from_poles) with
     /// `n = 1`; the seed asks for `n >= 2`).
@@ -221,17 +283,6 @@ pub enum Error {
         /// What is wrong with it.
         reason: &'static str,
     },
-    /// An option value outside its allowed range
-    /// (e.g. [`Sectioner::new`](crate::section::Sectioner::new) with a negative tolerance).
-    #[error("option {name} = {value}: {reason}")]
-    InvalidOption {
-        /// The option's name.
-        name: &'static str,
-        /// The value given.
-        value: f64,
-        /// What the option needs.
-        reason: &'static str,
-    },
     /// Prescribed row (or column) sums of a variation that the fixed entries make impossible:
     /// a line with every entry fixed whose sum would have to change
     /// ([`vary`](crate::ll::vary) with exact fixed entries).
@@ -328,8 +379,12 @@ pub enum Error {
         /// What is wrong with it.
         reason: &'static str,
     },
-    /// A numeric setting outside its allowed range (e.g. a negative `eps` or tolerance in
-    /// [`fit_curve`](crate::fit::fit_curve), a corner that is not an inner knot).
+    /// A numeric setting or option outside its allowed range (e.g. a negative `eps` or
+    /// tolerance in [`fit_curve`](crate::fit::fit_curve), a corner that is not an inner knot,
+    /// a tolerance or cell count of [`Sectioner::new`](crate::section::Sectioner::new), the
+    /// penalty of [`vary`](crate::ll::vary), node steps of
+    /// [`trace_net`](crate::implicit::trace_net), the compatibility tolerance of a
+    /// [`CoonsSurface`](crate::coons::CoonsSurface)).
     #[error("{name} = {value} is not allowed: {reason}")]
     InvalidSetting {
         /// The setting.
@@ -338,6 +393,147 @@ pub enum Error {
         value: f64,
         /// Why it is not allowed.
         reason: &'static str,
+    },
+    /// A closed direction of a curve network whose period does not pass its last node
+    /// ([`NetworkAxis::closed`](crate::coons::NetworkAxis::closed)).
+    #[error(
+        "a closed network direction needs its nodes within one period: the period {period} \
+         from node 0 ({first}) does not pass the last node ({last})"
+    )]
+    InvalidPeriod {
+        /// The period given.
+        period: f64,
+        /// The first node.
+        first: f64,
+        /// The last node.
+        last: f64,
+    },
+    /// A curve of a network that is closed in an open direction or open in a closed one
+    /// ([`CurveNetwork::new`](crate::coons::CurveNetwork::new)).
+    #[error(
+        "{family} {curve} is {} but its direction is {}",
+        if *closed { "closed" } else { "open" },
+        if *closed { "open" } else { "closed" }
+    )]
+    CurveClosure {
+        /// `"v-curve"` or `"u-curve"`.
+        family: &'static str,
+        /// Index of the curve in its family (0-based).
+        curve: usize,
+        /// Whether that curve is closed.
+        closed: bool,
+    },
+    /// A family of point lists of a network that mixes closed and open curves
+    /// ([`PointNetwork::new`](crate::coons::PointNetwork::new); a closed curve repeats its
+    /// first point last).
+    #[error(
+        "{family} {curve} is {} but {family} 0 is {}: the curves of a family must all be \
+         closed (last point repeating the first) or all open",
+        if *closed { "closed" } else { "open" },
+        if *closed { "open" } else { "closed" }
+    )]
+    MixedClosure {
+        /// `"v-curve"` or `"u-curve"`.
+        family: &'static str,
+        /// Index of the first curve that differs from curve 0.
+        curve: usize,
+        /// Whether that curve is closed.
+        closed: bool,
+    },
+    /// A family of a curve network with too few curves
+    /// ([`PointNetwork::new`](crate::coons::PointNetwork::new): at least 2, or 3 closed).
+    #[error(
+        "a curve network needs at least {needed} {family}s{}, got {got}",
+        if *closed { " when they are closed" } else { "" }
+    )]
+    TooFewNetworkCurves {
+        /// `"v-curve"` or `"u-curve"`.
+        family: &'static str,
+        /// The minimum number of curves.
+        needed: usize,
+        /// The number given.
+        got: usize,
+        /// Whether the family is closed.
+        closed: bool,
+    },
+    /// A blending family with no functions
+    /// ([`CoonsSurface::new`](crate::coons::CoonsSurface::new)).
+    #[error(
+        "a Coons surface needs at least one blending function in each direction; the \
+         {direction} family has none"
+    )]
+    EmptyBlendingFamily {
+        /// `"u"` or `"v"`.
+        direction: &'static str,
+    },
+    /// A network that is not two open curves by two open curves, given to a surface that
+    /// needs four sides ([`CoonsSurface::bilinear`](crate::coons::CoonsSurface::bilinear),
+    /// [`CoonsSurface::bicubic`](crate::coons::CoonsSurface::bicubic)).
+    #[error(
+        "a {what} surface needs two open v-curves and two open u-curves, got {v_curves} and \
+         {u_curves}{}",
+        if *closed { " (closed)" } else { "" }
+    )]
+    NotFourSided {
+        /// The surface, e.g. `"bilinear Coons"`.
+        what: &'static str,
+        /// The number of v-curves.
+        v_curves: usize,
+        /// The number of u-curves.
+        u_curves: usize,
+        /// Whether a direction is closed.
+        closed: bool,
+    },
+    /// An error in one curve of a point network, naming the curve
+    /// ([`PointNetwork::new`](crate::coons::PointNetwork::new) for a curve's points or its
+    /// reparameterization, [`PointNetwork::cross_derivatives`](crate::coons::PointNetwork::cross_derivatives)
+    /// for its cross-derivative vectors).
+    #[error("{family} {curve}: {source}")]
+    NetworkCurve {
+        /// `"v-curve"`, `"u-curve"`, or `"the cross-derivative of v-curve"` (`u-curve`).
+        family: &'static str,
+        /// Index of the curve in its family (0-based).
+        curve: usize,
+        /// What is wrong with it.
+        source: Box<Error>,
+    },
+    /// Crossings along a point-list curve spaced so unevenly, compared with the network's node
+    /// values, that no increasing `C^2` reparameterization exists
+    /// ([`PointNetwork::new`](crate::coons::PointNetwork::new), inside
+    /// [`Error::NetworkCurve`]).
+    #[error(
+        "between crossings {piece} and {} the curve's spacing differs too much from the other \
+         curves' for a smooth reparameterization",
+        piece + 1
+    )]
+    UnevenCrossings {
+        /// Index of the first crossing of the offending piece.
+        piece: usize,
+    },
+    /// Cross-derivative vectors of a closed curve whose last vector does not repeat the first
+    /// ([`PointNetwork::cross_derivatives`](crate::coons::PointNetwork::cross_derivatives)).
+    #[error(
+        "the cross-derivative of closed {family} {curve}: the last vector must repeat the \
+         first, as the last point does"
+    )]
+    UnclosedCrossDerivative {
+        /// `"v-curve"` or `"u-curve"`.
+        family: &'static str,
+        /// Index of the curve (0-based).
+        curve: usize,
+    },
+    /// Data in more dimensions than a format or method handles (e.g. a 4-D curve written to
+    /// a CAD file).
+    #[error("{what} in {dimension} dimensions cannot be written to {target} (at most {max})")]
+    DimensionTooHigh {
+        /// What was to be written, e.g. `"a curve"`.
+        what: &'static str,
+        /// Where, e.g. `"a CAD file"`.
+        target: &'static str,
+        /// The dimension of the data.
+        dimension: usize,
+        /// The highest dimension allowed.
+        max: usize,
     },
     /// A curve or surface whose exact B-spline form cannot be built: data that are not known
     /// piecewise polynomials, or a degree too high to convert without losing digits
@@ -349,6 +545,11 @@ pub enum Error {
         /// Why it cannot be.
         reason: String,
     },
+    /// An invalid argument described only in words. Being replaced by the typed variants
+    /// above: the cubic-spline, knot and Hermite modules still produce it until they are
+    /// rebuilt on one spline core, and it is then removed. New code must not use it.
+    #[error("{0}")]
+    InvalidInput(String),
 }
 
 /// `Result` with [`Error`].

@@ -323,7 +323,7 @@ fn incompatible_cross_derivatives_are_an_error_naming_the_curves() {
     };
     assert!(matches!(
         CoonsSurface::composite(&net, Some(&short), 1e-6),
-        Err(Error::InvalidInput(_))
+        Err(Error::CountMismatch { .. })
     ));
 }
 

@@ -290,7 +290,7 @@ fn network_errors_name_the_curves() {
     mixed[1].push(first);
     assert!(matches!(
         PointNetwork::new(&mixed, &u_lists, CurveFit::CubicSpline, 1e-9),
-        Err(Error::InvalidInput(_))
+        Err(Error::MixedClosure { .. })
     ));
     let mut short = v_lists.clone();
     short[2] = vec![short[2][0], short[2][20]];

@@ -279,7 +279,7 @@ fn regression_projecting_a_non_finite_point() {
     use karkas::implicit::{project_onto, ExpressionSurface};
     let plane = ExpressionSurface::parse("x").unwrap();
     let e = project_onto(&plane, Point([792.0, -1526.0, f64::NAN]));
-    assert!(matches!(e, Err(Error::InvalidInput(_))), "{e:?}");
+    assert!(matches!(e, Err(Error::NonFiniteArgument { .. })), "{e:?}");
     let foot = project_onto(&plane, Point([792.0, -1526.0, 3.0])).unwrap();
     assert_eq!(foot.0, [0.0, -1526.0, 3.0]);
 }

@@ -20,7 +20,8 @@ impl<const D: usize> CoonsSurface<D> {
     /// `u_0`, `u_1`) and two u-curves (at `v_0`, `v_1`), both directions open: the Boolean sum
     /// with `L f = f(u_0), f(u_1)` and `H = 1 - x, x` on `[u_0, u_1]` (same in `v`).
     ///
-    /// Errors: another network shape; incompatible corners ([`Error::IncompatibleCurves`]).
+    /// Errors: another network shape ([`Error::NotFourSided`]); incompatible corners
+    /// ([`Error::IncompatibleCurves`]).
     pub fn bilinear(network: &CurveNetwork<D>, tolerance: f64) -> Result<Self> {
         let (u0, u1, v0, v1) = four_sided(network, "bilinear Coons")?;
         let u: FamilyRef = Arc::new(LagrangeBlending::new(&[u0, u1])?);
@@ -49,8 +50,8 @@ impl<const D: usize> CoonsSurface<D> {
     /// network, which on two curves per direction is the bilinear Coons surface (see
     /// [`CrossDerivatives::from_surface`]).
     ///
-    /// Errors: another network shape; cross-derivative counts other than two; a violation of
-    /// (8) ([`Error::IncompatibleCurves`]).
+    /// Errors: another network shape ([`Error::NotFourSided`]); cross-derivative counts other
+    /// than two ([`Error::CountMismatch`]); a violation of (8) ([`Error::IncompatibleCurves`]).
     pub fn bicubic(
         network: &CurveNetwork<D>,
         cross: Option<&CrossDerivatives<D>>,
@@ -162,7 +163,8 @@ impl<const D: usize> CoonsSurface<D> {
     /// closed direction the first curve and its cross-derivative are repeated one period on
     /// (the piecewise Hermite family is local, so the seam is `C^1` like every other node).
     ///
-    /// Errors: cross-derivative counts that differ from the curve counts; a violation of (11)
+    /// Errors: cross-derivative counts that differ from the curve counts
+    /// ([`Error::CountMismatch`]); a violation of (11)
     /// ([`Error::IncompatibleCurves`] naming the curves and the condition).
     pub fn composite(
         network: &CurveNetwork<D>,
@@ -208,20 +210,16 @@ impl<const D: usize> CoonsSurface<D> {
 /// The node values of a two-by-two open network, or an error naming `what`.
 fn four_sided<const D: usize>(
     network: &CurveNetwork<D>,
-    what: &str,
+    what: &'static str,
 ) -> Result<(f64, f64, f64, f64)> {
     let (u, v) = (network.u_axis(), network.v_axis());
     if u.nodes().len() != 2 || v.nodes().len() != 2 || u.is_closed() || v.is_closed() {
-        return Err(Error::InvalidInput(format!(
-            "a {what} surface needs two open v-curves and two open u-curves, got {} and {}{}",
-            u.nodes().len(),
-            v.nodes().len(),
-            if u.is_closed() || v.is_closed() {
-                " (closed)"
-            } else {
-                ""
-            }
-        )));
+        return Err(Error::NotFourSided {
+            what,
+            v_curves: u.nodes().len(),
+            u_curves: v.nodes().len(),
+            closed: u.is_closed() || v.is_closed(),
+        });
     }
     Ok((u.nodes()[0], u.nodes()[1], v.nodes()[0], v.nodes()[1]))
 }
@@ -244,14 +242,26 @@ fn cross_or_derived<const D: usize>(
 ) -> Result<CrossDerivatives<D>> {
     match cross {
         Some(c) => {
-            let (a, b) = (network.v_curves().len(), network.u_curves().len());
-            if c.v_curves.len() != a || c.u_curves.len() != b {
-                return Err(Error::InvalidInput(format!(
-                    "the network has {a} v-curves and {b} u-curves, but {} and {} \
-                     cross-derivative curves were given",
+            let counts = [
+                (
+                    "cross-derivative curves of the v-curves",
+                    network.v_curves().len(),
                     c.v_curves.len(),
-                    c.u_curves.len()
-                )));
+                ),
+                (
+                    "cross-derivative curves of the u-curves",
+                    network.u_curves().len(),
+                    c.u_curves.len(),
+                ),
+            ];
+            for (what, expected, got) in counts {
+                if got != expected {
+                    return Err(Error::CountMismatch {
+                        what,
+                        expected,
+                        got,
+                    });
+                }
             }
             Ok(c.clone())
         }

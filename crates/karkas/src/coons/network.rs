@@ -39,12 +39,11 @@ impl NetworkAxis {
         check_nodes(&nodes, 3, "a closed network direction")?;
         let end = nodes[0] + period;
         if !(end.is_finite() && end > nodes[nodes.len() - 1]) {
-            return Err(Error::InvalidInput(format!(
-                "a closed network direction needs its nodes within one period: the period \
-                 {period} from node 0 ({}) does not pass the last node ({})",
-                nodes[0],
-                nodes[nodes.len() - 1]
-            )));
+            return Err(Error::InvalidPeriod {
+                period,
+                first: nodes[0],
+                last: nodes[nodes.len() - 1],
+            });
         }
         Ok(NetworkAxis {
             nodes,
@@ -127,37 +126,50 @@ impl<const D: usize> CurveNetwork<D> {
     /// The network of `v_curves` (one per node of `u_axis`, functions of `v`) and `u_curves`
     /// (one per node of `v_axis`, functions of `u`).
     ///
-    /// Errors: curve counts that differ from the node counts; an open v-curve when the `v`
-    /// direction is closed, or a closed one when it is open (same for u-curves).
+    /// Errors: curve counts that differ from the node counts ([`Error::CountMismatch`]); an
+    /// open v-curve when the `v` direction is closed, or a closed one when it is open (same
+    /// for u-curves; [`Error::CurveClosure`]).
     pub fn new(
         u_axis: NetworkAxis,
         v_curves: Vec<CurveRef<D>>,
         v_axis: NetworkAxis,
         u_curves: Vec<CurveRef<D>>,
     ) -> Result<Self> {
-        let check =
-            |curves: &[CurveRef<D>], axis: &NetworkAxis, name: &str, across: &NetworkAxis| {
-                if curves.len() != across.nodes.len() {
-                    return Err(Error::InvalidInput(format!(
-                        "the network has {} {name}s but {} node values for them",
-                        curves.len(),
-                        across.nodes.len()
-                    )));
-                }
-                match curves
-                    .iter()
-                    .position(|c| c.is_closed() != axis.is_closed())
-                {
-                    Some(k) => Err(Error::InvalidInput(format!(
-                        "{name} {k} is {} but its direction is {}",
-                        if axis.is_closed() { "open" } else { "closed" },
-                        if axis.is_closed() { "closed" } else { "open" }
-                    ))),
-                    None => Ok(()),
-                }
-            };
-        check(&v_curves, &v_axis, "v-curve", &u_axis)?;
-        check(&u_curves, &u_axis, "u-curve", &v_axis)?;
+        let check = |curves: &[CurveRef<D>],
+                     axis: &NetworkAxis,
+                     (family, what): (&'static str, &'static str),
+                     across: &NetworkAxis| {
+            if curves.len() != across.nodes.len() {
+                return Err(Error::CountMismatch {
+                    what,
+                    expected: across.nodes.len(),
+                    got: curves.len(),
+                });
+            }
+            match curves
+                .iter()
+                .position(|c| c.is_closed() != axis.is_closed())
+            {
+                Some(curve) => Err(Error::CurveClosure {
+                    family,
+                    curve,
+                    closed: !axis.is_closed(),
+                }),
+                None => Ok(()),
+            }
+        };
+        check(
+            &v_curves,
+            &v_axis,
+            ("v-curve", "v-curves (one per node of the u direction)"),
+            &u_axis,
+        )?;
+        check(
+            &u_curves,
+            &u_axis,
+            ("u-curve", "u-curves (one per node of the v direction)"),
+            &v_axis,
+        )?;
         let (du, dv) = (u_axis.domain(), v_axis.domain());
         Ok(CurveNetwork {
             v_curves: v_curves

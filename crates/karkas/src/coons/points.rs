@@ -99,10 +99,14 @@ impl<const D: usize> PointNetwork<D> {
     /// `tolerance` is relative to the model size: how far apart two points may be and still
     /// be one crossing.
     ///
-    /// Errors: a family with fewer than two curves (three when closed), a curve with fewer
-    /// than three distinct points or a non-finite point, closed and open curves in one family,
-    /// and [`Error::NetworkCrossing`] for a pair without a common point, a pair meeting more
-    /// than once, or crossings out of order; an LL order outside `1..=64`.
+    /// Errors: a tolerance that is negative or not finite ([`Error::InvalidSetting`]); a family
+    /// with fewer than two curves, three when closed ([`Error::TooFewNetworkCurves`]); a curve
+    /// with fewer than three distinct points or a non-finite point ([`Error::NetworkCurve`]
+    /// around [`Error::TooFewPoints`] or [`Error::NonFinitePoint`]); closed and open curves in
+    /// one family ([`Error::MixedClosure`]); [`Error::NetworkCrossing`] for a pair without a
+    /// common point, a pair meeting more than once, or crossings out of order; crossings too
+    /// unevenly spaced along a curve ([`Error::NetworkCurve`] around
+    /// [`Error::UnevenCrossings`]); an LL order outside `1..=64`.
     pub fn new(
         v_curves: &[Vec<Point<D>>],
         u_curves: &[Vec<Point<D>>],
@@ -113,9 +117,11 @@ impl<const D: usize> PointNetwork<D> {
             LlKernel::new(order)?;
         }
         if !(tolerance.is_finite() && tolerance >= 0.0) {
-            return Err(Error::InvalidInput(format!(
-                "the crossing tolerance must be a finite number >= 0, got {tolerance}"
-            )));
+            return Err(Error::InvalidSetting {
+                name: "tolerance",
+                value: tolerance,
+                reason: "the crossing tolerance must be a finite number >= 0",
+            });
         }
         let size = model_size(v_curves.iter().chain(u_curves).flatten());
         let v_family = family("v-curve", v_curves, size)?;
@@ -184,7 +190,7 @@ impl<const D: usize> PointNetwork<D> {
                             rotation: &[usize],
                             axis: &NetworkAxis,
                             target: &dyn Fn(usize, usize) -> f64,
-                            name: &str|
+                            name: &'static str|
          -> Result<Vec<Parameterization>> {
             let nodes = axis.nodes_with_seam();
             (0..count)
@@ -205,10 +211,13 @@ impl<const D: usize> PointNetwork<D> {
                     let warp = if same {
                         None
                     } else {
-                        Some(
-                            Warp::new(&nodes, &targets, closed)
-                                .map_err(|e| Error::InvalidInput(format!("{name} {c}: {e}")))?,
-                        )
+                        Some(Warp::new(&nodes, &targets, closed).map_err(|e| {
+                            Error::NetworkCurve {
+                                family: name,
+                                curve: c,
+                                source: Box::new(e),
+                            }
+                        })?)
                     };
                     Ok(Parameterization {
                         given: given[c].len(),
@@ -270,56 +279,82 @@ impl<const D: usize> PointNetwork<D> {
     /// `k` of u-curve `j`, per unit of the network's parameters. They are interpolated like
     /// the curves themselves.
     ///
-    /// Errors: counts of curves or vectors that differ from the network's, a non-finite
-    /// vector, a closed curve's last vector differing from its first.
+    /// Errors: counts of curves or vectors that differ from the network's
+    /// ([`Error::CountMismatch`], for vectors inside [`Error::NetworkCurve`]), a non-finite
+    /// vector ([`Error::NetworkCurve`] around [`Error::NonFinitePoint`]), a closed curve's last
+    /// vector differing from its first ([`Error::UnclosedCrossDerivative`]).
     pub fn cross_derivatives(
         &self,
         v_derivs: &[Vec<Point<D>>],
         u_derivs: &[Vec<Point<D>>],
     ) -> Result<CrossDerivatives<D>> {
-        let build = |params: &[Parameterization], lists: &[Vec<Point<D>>], name: &str| {
-            if lists.len() != params.len() {
-                return Err(Error::InvalidInput(format!(
-                    "{} cross-derivative curves given for {} {name}s",
-                    lists.len(),
-                    params.len()
-                )));
-            }
-            params
-                .iter()
-                .zip(lists)
-                .enumerate()
-                .map(|(c, (p, vectors))| {
-                    if vectors.len() != p.given {
-                        return Err(Error::InvalidInput(format!(
-                            "the cross-derivative of {name} {c} has {} vectors, but the curve \
-                             has {} points",
-                            vectors.len(),
-                            p.given
-                        )));
-                    }
-                    if let Some(k) = vectors.iter().position(|v| !v.is_finite()) {
-                        return Err(Error::InvalidInput(format!(
-                            "the cross-derivative of {name} {c}: vector {k} is not finite"
-                        )));
-                    }
-                    if p.closed {
-                        let scale = vectors.iter().fold(0.0f64, |s, v| s.max(v.max_abs()));
-                        let (first, last) = (vectors[0], vectors[vectors.len() - 1]);
-                        if (first - last).max_abs() > CLOSING * scale.max(1.0) {
-                            return Err(Error::InvalidInput(format!(
-                                "the cross-derivative of closed {name} {c}: the last vector \
-                                 must repeat the first, as the last point does"
-                            )));
+        // (family, what is counted, the family of the curves' cross-derivatives)
+        type Names = (&'static str, &'static str, &'static str);
+        let build =
+            |params: &[Parameterization], lists: &[Vec<Point<D>>], (name, what, of): Names| {
+                if lists.len() != params.len() {
+                    return Err(Error::CountMismatch {
+                        what,
+                        expected: params.len(),
+                        got: lists.len(),
+                    });
+                }
+                let in_curve = |curve: usize, source: Error| Error::NetworkCurve {
+                    family: of,
+                    curve,
+                    source: Box::new(source),
+                };
+                params
+                    .iter()
+                    .zip(lists)
+                    .enumerate()
+                    .map(|(c, (p, vectors))| {
+                        if vectors.len() != p.given {
+                            return Err(in_curve(
+                                c,
+                                Error::CountMismatch {
+                                    what: "vectors (one per point of the curve)",
+                                    expected: p.given,
+                                    got: vectors.len(),
+                                },
+                            ));
                         }
-                    }
-                    p.curve(vectors)
-                })
-                .collect::<Result<Vec<_>>>()
-        };
+                        if let Some(index) = vectors.iter().position(|v| !v.is_finite()) {
+                            return Err(in_curve(c, Error::NonFinitePoint { index }));
+                        }
+                        if p.closed {
+                            let scale = vectors.iter().fold(0.0f64, |s, v| s.max(v.max_abs()));
+                            let (first, last) = (vectors[0], vectors[vectors.len() - 1]);
+                            if (first - last).max_abs() > CLOSING * scale.max(1.0) {
+                                return Err(Error::UnclosedCrossDerivative {
+                                    family: name,
+                                    curve: c,
+                                });
+                            }
+                        }
+                        p.curve(vectors)
+                    })
+                    .collect::<Result<Vec<_>>>()
+            };
         Ok(CrossDerivatives {
-            v_curves: build(&self.v_params, v_derivs, "v-curve")?,
-            u_curves: build(&self.u_params, u_derivs, "u-curve")?,
+            v_curves: build(
+                &self.v_params,
+                v_derivs,
+                (
+                    "v-curve",
+                    "cross-derivative curves of the v-curves",
+                    "the cross-derivative of v-curve",
+                ),
+            )?,
+            u_curves: build(
+                &self.u_params,
+                u_derivs,
+                (
+                    "u-curve",
+                    "cross-derivative curves of the u-curves",
+                    "the cross-derivative of u-curve",
+                ),
+            )?,
         })
     }
 }
@@ -393,32 +428,40 @@ fn family<'a, const D: usize>(
     let closed = curves.first().is_some_and(closed_of);
     let needed = if closed { 3 } else { 2 };
     if curves.len() < needed {
-        return Err(Error::InvalidInput(format!(
-            "a curve network needs at least {needed} {name}s{}, got {}",
-            if closed { " when they are closed" } else { "" },
-            curves.len()
-        )));
+        return Err(Error::TooFewNetworkCurves {
+            family: name,
+            needed,
+            got: curves.len(),
+            closed,
+        });
     }
     for (c, curve) in curves.iter().enumerate() {
-        if let Some(k) = curve.iter().position(|p| !p.is_finite()) {
-            return Err(Error::InvalidInput(format!(
-                "{name} {c}: point {k} has a non-finite coordinate"
-            )));
+        let in_curve = |source: Error| Error::NetworkCurve {
+            family: name,
+            curve: c,
+            source: Box::new(source),
+        };
+        if let Some(index) = curve.iter().position(|p| !p.is_finite()) {
+            return Err(in_curve(Error::NonFinitePoint { index }));
         }
         if closed_of(curve) != closed {
-            return Err(Error::InvalidInput(format!(
-                "{name} {c} is {} but {name} 0 is {}: the curves of a family must all be \
-                 closed (last point repeating the first) or all open",
-                if closed { "open" } else { "closed" },
-                if closed { "closed" } else { "open" }
-            )));
+            return Err(Error::MixedClosure {
+                family: name,
+                curve: c,
+                closed: !closed,
+            });
         }
         let distinct = distinct_len(curve, closed);
         if distinct < 3 {
-            return Err(Error::InvalidInput(format!(
-                "{name} {c} has {distinct} {}points; at least 3 are needed",
-                if closed { "distinct " } else { "" }
-            )));
+            return Err(in_curve(Error::TooFewPoints {
+                what: if closed {
+                    "a closed curve (its repeated last point not counted)"
+                } else {
+                    "a curve"
+                },
+                needed: 3,
+                got: distinct,
+            }));
         }
     }
     Ok(Family {

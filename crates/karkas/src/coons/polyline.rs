@@ -21,15 +21,15 @@ pub struct PolylineCurve<const D: usize> {
 impl<const D: usize> PolylineCurve<D> {
     /// The polyline through `points` at `params`.
     ///
-    /// Errors: fewer than two points, lengths that differ, a non-finite coordinate, parameters
-    /// not finite and strictly increasing.
+    /// Errors: fewer than two points, lengths that differ ([`Error::CountMismatch`]), a
+    /// non-finite coordinate, parameters not finite and strictly increasing.
     pub fn new(points: &[Point<D>], params: &[f64]) -> Result<Self> {
         if points.len() != params.len() {
-            return Err(Error::InvalidInput(format!(
-                "a polyline needs one parameter per point: {} points, {} parameters",
-                points.len(),
-                params.len()
-            )));
+            return Err(Error::CountMismatch {
+                what: "parameters of a polyline (one per point)",
+                expected: points.len(),
+                got: params.len(),
+            });
         }
         check_nodes(params, 2, "a polyline")?;
         if let Some(index) = points.iter().position(|p| !p.is_finite()) {

@@ -76,8 +76,9 @@ impl<const D: usize> CoonsSurface<D> {
     /// functionals of each family look at (a derivative is a position difference per parameter
     /// step).
     ///
-    /// Errors: curve counts that differ from the family sizes, a tolerance that is negative or
-    /// not finite, and [`Error::IncompatibleCurves`] naming the first pair that violates (8)
+    /// Errors: an empty family ([`Error::EmptyBlendingFamily`]), curve or functional counts
+    /// that differ from the family sizes ([`Error::CountMismatch`]), a tolerance that is
+    /// negative or not finite ([`Error::InvalidSetting`]), and [`Error::IncompatibleCurves`] naming the first pair that violates (8)
     /// (curves are named `f_i` and `g_j`).
     pub fn new(
         u_family: FamilyRef,
@@ -113,28 +114,40 @@ impl<const D: usize> CoonsSurface<D> {
         names: Names<'_>,
     ) -> Result<Self> {
         let (m, n) = (u_family.len(), v_family.len());
-        if m == 0 || n == 0 {
-            return Err(Error::InvalidInput(
-                "a Coons surface needs at least one blending function in each direction".into(),
-            ));
+        for (direction, count) in [("u", m), ("v", n)] {
+            if count == 0 {
+                return Err(Error::EmptyBlendingFamily { direction });
+            }
         }
-        if u_family.functionals().len() != m || v_family.functionals().len() != n {
-            return Err(Error::InvalidInput(
-                "a blending family must have one functional per function".into(),
-            ));
-        }
-        if v_curves.len() != m || u_curves.len() != n {
-            return Err(Error::InvalidInput(format!(
-                "a Coons surface needs one v-curve per u-blending function ({m}) and one u-curve \
-                 per v-blending function ({n}), got {} and {}",
-                v_curves.len(),
-                u_curves.len()
-            )));
+        let counts = [
+            (
+                "functionals of the u-blending family (one per function)",
+                m,
+                u_family.functionals().len(),
+            ),
+            (
+                "functionals of the v-blending family (one per function)",
+                n,
+                v_family.functionals().len(),
+            ),
+            ("v-curves (one per u-blending function)", m, v_curves.len()),
+            ("u-curves (one per v-blending function)", n, u_curves.len()),
+        ];
+        for (what, expected, got) in counts {
+            if got != expected {
+                return Err(Error::CountMismatch {
+                    what,
+                    expected,
+                    got,
+                });
+            }
         }
         if !(tolerance.is_finite() && tolerance >= 0.0) {
-            return Err(Error::InvalidInput(format!(
-                "the compatibility tolerance must be a finite number >= 0, got {tolerance}"
-            )));
+            return Err(Error::InvalidSetting {
+                name: "tolerance",
+                value: tolerance,
+                reason: "the compatibility tolerance must be a finite number >= 0",
+            });
         }
         let (du, dv) = (u_family.domain(), v_family.domain());
         let v_curves: Vec<CurveRef<D>> = v_curves

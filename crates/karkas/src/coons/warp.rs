@@ -79,11 +79,7 @@ impl Warp {
                 }
             }
             if lowest.is_nan() || lowest <= 0.0 {
-                return Err(Error::InvalidInput(format!(
-                    "between crossings {l} and {} the curve's spacing differs too much from the \
-                     other curves' for a smooth reparameterization",
-                    l + 1
-                )));
+                return Err(Error::UnevenCrossings { piece: l });
             }
         }
         Ok(())

@@ -183,8 +183,10 @@ impl InterpolationPlan {
 }
 
 /// An FFT failure; buffers are made by the plans themselves, so this does not happen.
-fn fft_error(e: realfft::FftError) -> Error {
-    Error::InvalidInput(format!("FFT failed: {e}"))
+fn fft_error(_: realfft::FftError) -> Error {
+    Error::Internal {
+        what: "an FFT of the size its plan was made for failed",
+    }
 }
 
 /// `T_r(k)` for `k` in `0..=m/2` (module docs).

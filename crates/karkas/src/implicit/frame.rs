@@ -128,16 +128,15 @@ fn tangent_basis(n: Point3) -> (Point3, Point3) {
 /// The foot of `point` on `F = 0` by Newton's method along the gradient,
 /// `p <- p - F(p) grad F(p) / |grad F(p)|^2`, to full precision.
 ///
-/// Errors: [`Error::InvalidInput`] for a non-finite `point`, [`Error::NoSurfaceNear`] when
+/// Errors: [`Error::NonFiniteArgument`] for a non-finite `point`, [`Error::NoSurfaceNear`] when
 /// the iteration does not converge (no surface near, a non-finite value, or a vanishing
 /// gradient on the way), [`Error::SingularPoint`] when `point` itself is a singular point of
 /// the surface.
 pub fn project_onto<S: ImplicitSurface + ?Sized>(surface: &S, point: Point3) -> Result<Point3> {
     if !point.is_finite() {
-        return Err(Error::InvalidInput(format!(
-            "the point to project, {:?}, has a non-finite coordinate",
-            point.0
-        )));
+        return Err(Error::NonFiniteArgument {
+            what: "the point to project",
+        });
     }
     let mut p = point;
     let scale = point.max_abs().max(1.0);

@@ -3,7 +3,7 @@
 //!
 //! - [`ImplicitSurface`]: `F`, its gradient and Hessian; built in: [`Cylinder`],
 //!   [`Hyperboloid`], [`Sphere`]; from a typed expression: [`ExpressionSurface`] (parsed and
-//!   differentiated symbolically by the `exmex` crate, errors naming the character);
+//!   differentiated exactly by forward-mode differentiation, errors naming the character);
 //! - [`SurfaceFrame`]: unit normal, principal curvatures and directions from the gradient and
 //!   Hessian (the second fundamental form of an implicit surface), `O(1)` per point;
 //!   [`project_onto`] / [`closest_point_on`]: Newton's projection onto `F = 0`;

@@ -313,41 +313,54 @@ fn loop_length<S: ImplicitSurface + ?Sized>(
 /// Traces the node grid described by `spec` on `surface`: `nu x nv` nodes, row `i` the `v`
 /// line from spine node `i`.
 ///
-/// Errors: [`Error::InvalidInput`] for fewer than 2 nodes, non-positive or non-finite steps,
-/// an angle or plane normal that is not finite; [`Error::NoSurfaceNear`] when the start
+/// Errors: [`Error::InvalidGridSize`] for fewer than 2 nodes in a direction (or more than
+/// `10^8` in all), [`Error::InvalidSetting`] for non-positive or non-finite steps or a zero
+/// or non-finite plane normal, [`Error::NonFiniteArgument`] for a non-finite start or angle; [`Error::NoSurfaceNear`] when the start
 /// point is farther than one node step from the surface (or no surface is found);
 /// [`Error::SingularPoint`] at the start; [`Error::ContinuationFailed`] when a line cannot
 /// be continued.
 pub fn trace_net<S: ImplicitSurface + ?Sized>(surface: &S, spec: &NetSpec) -> Result<Grid<Point3>> {
     let (nu, nv) = spec.nodes;
     let (hu, hv) = spec.steps;
-    if nu < 2 || nv < 2 {
-        return Err(Error::InvalidInput(format!(
-            "a net needs at least 2 nodes in each direction, got {nu} x {nv}"
-        )));
+    if nu < 2 || nv < 2 || nu.saturating_mul(nv) > 100_000_000 {
+        return Err(Error::InvalidGridSize {
+            what: "net",
+            rows: nu,
+            cols: nv,
+            reason: "a net needs at least 2 nodes in each direction and at most 10^8 in all",
+        });
     }
-    if nu.saturating_mul(nv) > 100_000_000 {
-        return Err(Error::InvalidInput(format!(
-            "a {nu} x {nv} net is too large"
-        )));
-    }
-    if !(hu > 0.0 && hv > 0.0 && hu.is_finite() && hv.is_finite()) {
-        return Err(Error::InvalidInput(format!(
-            "the node steps must be positive, got {hu} and {hv}"
-        )));
-    }
-    let finite = match spec.directions {
-        NetDirections::Principal => true,
-        NetDirections::Turned { angle } | NetDirections::TurnedU { angle } => angle.is_finite(),
-        NetDirections::PlaneSections { plane_normal } => {
-            plane_normal.is_finite() && plane_normal.norm() > 0.0
+    for (name, h) in [("step_u", hu), ("step_v", hv)] {
+        if !(h > 0.0 && h.is_finite()) {
+            return Err(Error::InvalidSetting {
+                name,
+                value: h,
+                reason: "the node steps must be positive and finite",
+            });
         }
-    };
-    if !finite || !spec.start.is_finite() {
-        return Err(Error::InvalidInput(
-            "the start point, angle and plane normal must be finite (and the normal non-zero)"
-                .into(),
-        ));
+    }
+    match spec.directions {
+        NetDirections::Principal => {}
+        NetDirections::Turned { angle } | NetDirections::TurnedU { angle } => {
+            if !angle.is_finite() {
+                return Err(Error::NonFiniteArgument { what: "the angle" });
+            }
+        }
+        NetDirections::PlaneSections { plane_normal } => {
+            let length = plane_normal.norm();
+            if !(plane_normal.is_finite() && length > 0.0) {
+                return Err(Error::InvalidSetting {
+                    name: "|plane_normal|",
+                    value: length,
+                    reason: "the plane normal must be finite and non-zero",
+                });
+            }
+        }
+    }
+    if !spec.start.is_finite() {
+        return Err(Error::NonFiniteArgument {
+            what: "the start point",
+        });
     }
     let start = project_onto(surface, spec.start)?;
     if start.distance(spec.start) > hu.max(hv) {

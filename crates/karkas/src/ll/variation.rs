@@ -98,9 +98,10 @@ impl SumTargets {
 /// entries not marked in `fixed` as little as possible (least squares). Returns the varied
 /// matrix.
 ///
-/// Errors: `fixed` or `targets` of the wrong size ([`Error::GridShape`],
-/// [`Error::InvalidInput`]); a non-finite entry or sum; a penalty that is not positive and
-/// finite; sums that cannot be met ([`Error::InconsistentTotals`], [`Error::FixedLineSum`],
+/// Errors: an empty matrix ([`Error::InvalidGridSize`]); `fixed` or `targets` of the wrong
+/// size ([`Error::GridShape`], [`Error::CountMismatch`]); a non-finite entry or sum
+/// ([`Error::NonFiniteCell`], [`Error::NonFiniteEntry`]); a penalty that is not positive and
+/// finite ([`Error::InvalidSetting`]); sums that cannot be met ([`Error::InconsistentTotals`], [`Error::FixedLineSum`],
 /// [`Error::InconsistentBlock`]); with `scale_with_total`, an original total of zero.
 ///
 /// ```
@@ -222,9 +223,12 @@ fn check_input(
 ) -> Result<()> {
     let (n, m) = (matrix.rows(), matrix.cols());
     if n == 0 || m == 0 {
-        return Err(Error::InvalidInput(
-            "the matrix to vary has no entries".into(),
-        ));
+        return Err(Error::InvalidGridSize {
+            what: "matrix to vary",
+            rows: n,
+            cols: m,
+            reason: "it has no entries",
+        });
     }
     if (fixed.rows(), fixed.cols()) != (n, m) {
         return Err(Error::GridShape {
@@ -233,12 +237,17 @@ fn check_input(
             len: fixed.rows() * fixed.cols(),
         });
     }
-    if targets.rows.len() != n || targets.columns.len() != m {
-        return Err(Error::InvalidInput(format!(
-            "a {n} x {m} matrix needs {n} row sums and {m} column sums, got {} and {}",
-            targets.rows.len(),
-            targets.columns.len()
-        )));
+    for (what, expected, got) in [
+        ("row sums (one per row)", n, targets.rows.len()),
+        ("column sums (one per column)", m, targets.columns.len()),
+    ] {
+        if got != expected {
+            return Err(Error::CountMismatch {
+                what,
+                expected,
+                got,
+            });
+        }
     }
     if let Some(k) = matrix.as_slice().iter().position(|r| !r.is_finite()) {
         return Err(Error::NonFiniteCell {
@@ -247,14 +256,20 @@ fn check_input(
         });
     }
     if let Some(k) = targets.rows.iter().position(|r| !r.is_finite()) {
-        return Err(Error::InvalidInput(format!("row sum {k} is not finite")));
+        return Err(Error::NonFiniteEntry {
+            what: "row sum",
+            index: k,
+        });
     }
     if let Some(k) = targets.columns.iter().position(|r| !r.is_finite()) {
-        return Err(Error::InvalidInput(format!("column sum {k} is not finite")));
+        return Err(Error::NonFiniteEntry {
+            what: "column sum",
+            index: k,
+        });
     }
     if let FixedEntries::Penalty(s) = options.fixed_entries {
         if !(s > 0.0 && s.is_finite()) {
-            return Err(Error::InvalidOption {
+            return Err(Error::InvalidSetting {
                 name: "penalty",
                 value: s,
                 reason: "the penalty S must be positive and finite",
@@ -273,7 +288,7 @@ fn reference_matrix(matrix: &Grid<f64>, total: f64, scale_with_total: bool) -> R
     let old_total: f64 = matrix.as_slice().iter().sum();
     let magnitude: f64 = matrix.as_slice().iter().map(|r| r.abs()).sum();
     if old_total.abs() <= SUM_TOLERANCE * magnitude || old_total == 0.0 {
-        return Err(Error::InvalidOption {
+        return Err(Error::InvalidSetting {
             name: "scale_with_total",
             value: old_total,
             reason: "the original total is zero, so there is no share of it to keep",

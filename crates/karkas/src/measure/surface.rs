@@ -123,8 +123,8 @@ pub fn distance_to_implicit<I: ImplicitSurface + ?Sized>(
 /// Backward (patch to surface): each patch point's closest point on the surface is found by
 /// [`ClosestPoint::search`] from the nearest sample.
 ///
-/// Errors: fewer than 2 samples a direction, an empty or non-finite patch, a sample from
-/// which no surface `F = 0` is found.
+/// Errors: fewer than 2 samples a direction ([`Error::InvalidGridSize`]), an empty or
+/// non-finite patch, a sample from which no surface `F = 0` is found.
 pub fn hausdorff_surface_implicit<S: Surface<3> + ?Sized, I: ImplicitSurface + ?Sized>(
     surface: &S,
     implicit: &I,
@@ -133,9 +133,12 @@ pub fn hausdorff_surface_implicit<S: Surface<3> + ?Sized, I: ImplicitSurface + ?
 ) -> Result<Hausdorff> {
     let (nu, nv) = samples;
     if nu < 2 || nv < 2 || nu.saturating_mul(nv) > 100_000_000 {
-        return Err(Error::InvalidInput(format!(
-            "{nu} x {nv} samples: at least 2 and at most 10^8 in all are needed"
-        )));
+        return Err(Error::InvalidGridSize {
+            what: "sample grid",
+            rows: nu,
+            cols: nv,
+            reason: "at least 2 samples in each direction and at most 10^8 in all are needed",
+        });
     }
     let mut us = vec![0.0; nu];
     let mut vs = vec![0.0; nv];

@@ -142,10 +142,13 @@ pub fn grid_parameters<const D: usize>(
             origin_col,
         } => {
             if origin_row >= rows || origin_col >= cols {
-                return Err(Error::InvalidInput(format!(
-                    "the origin node (i={origin_row}, j={origin_col}) is outside the \
-                     {rows} x {cols} grid"
-                )));
+                return Err(Error::OutsideGrid {
+                    what: "the origin node",
+                    row: origin_row,
+                    col: origin_col,
+                    rows,
+                    cols,
+                });
             }
             origin = (origin_row, origin_col);
             u_steps = (1..rows)

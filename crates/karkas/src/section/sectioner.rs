@@ -59,13 +59,13 @@ pub struct Sectioner<'s, S: ?Sized, const D: usize> {
 impl<'s, S: Surface<D> + ?Sized, const D: usize> Sectioner<'s, S, D> {
     /// Prepares sections of `surface`.
     ///
-    /// Errors: [`Error::InvalidOption`] for cells outside `3..=MAX_CELLS`, a tolerance that is
-    /// not positive and finite, a zero step budget; [`Error::InvalidInput`] for a surface whose
+    /// Errors: [`Error::InvalidSetting`] for cells outside `3..=MAX_CELLS`, a tolerance that is
+    /// not positive and finite, a zero step budget; [`Error::InvalidDomain`] for a surface whose
     /// parameter domain is empty or not finite.
     pub fn new(surface: &'s S, options: &SectionOptions) -> Result<Self> {
         for (name, cells) in [("cells_u", options.cells.0), ("cells_v", options.cells.1)] {
             if !(3..=MAX_CELLS).contains(&cells) {
-                return Err(Error::InvalidOption {
+                return Err(Error::InvalidSetting {
                     name,
                     value: cells as f64,
                     reason: "the coarse grid needs 3 to 4096 cells in each direction",
@@ -74,7 +74,7 @@ impl<'s, S: Surface<D> + ?Sized, const D: usize> Sectioner<'s, S, D> {
         }
         if let Some(t) = options.tolerance {
             if !(t > 0.0 && t.is_finite()) {
-                return Err(Error::InvalidOption {
+                return Err(Error::InvalidSetting {
                     name: "tolerance",
                     value: t,
                     reason: "the tolerance must be positive and finite",
@@ -82,7 +82,7 @@ impl<'s, S: Surface<D> + ?Sized, const D: usize> Sectioner<'s, S, D> {
             }
         }
         if options.max_steps == 0 {
-            return Err(Error::InvalidOption {
+            return Err(Error::InvalidSetting {
                 name: "max_steps",
                 value: 0.0,
                 reason: "at least one step is needed",
@@ -91,10 +91,10 @@ impl<'s, S: Surface<D> + ?Sized, const D: usize> Sectioner<'s, S, D> {
         for domain in [surface.domain_u(), surface.domain_v()] {
             let length = domain.length();
             if !(length > 0.0 && length.is_finite() && domain.start.is_finite()) {
-                return Err(Error::InvalidInput(format!(
-                    "the surface's parameter domain [{}, {}] is empty or not finite",
-                    domain.start, domain.end
-                )));
+                return Err(Error::InvalidDomain {
+                    start: domain.start,
+                    end: domain.end,
+                });
             }
         }
         let grid = SampleGrid::new(surface, options.cells);

@@ -49,15 +49,20 @@ pub fn solve_tridiagonal<const D: usize>(
 /// `coef(i)` returns `(lower_i, diag_i, upper_i)` with the wrap-around entries
 /// `lower_0 = T[0][n-1]` and `upper_{n-1} = T[n-1][0]`. Sherman–Morrison on top of
 /// [`solve_tridiagonal`]: two Thomas sweeps, `O(n)`.
+///
+/// Errors: fewer than 3 unknowns ([`Error::TooFewPoints`]), a vanishing pivot
+/// ([`Error::SingularSystem`]).
 pub fn solve_cyclic_tridiagonal<const D: usize>(
     coef: impl Fn(usize) -> (f64, f64, f64),
     rhs: &mut [Point<D>],
 ) -> Result<()> {
     let n = rhs.len();
     if n < 3 {
-        return Err(Error::InvalidInput(format!(
-            "a cyclic tridiagonal system needs at least 3 unknowns, got {n}"
-        )));
+        return Err(Error::TooFewPoints {
+            what: "a cyclic tridiagonal system",
+            needed: 3,
+            got: n,
+        });
     }
     let (corner_top, d0, _) = coef(0); // T[0][n-1]
     let (_, dn, corner_bottom) = coef(n - 1); // T[n-1][0]
