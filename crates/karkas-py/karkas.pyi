@@ -13,6 +13,34 @@ Floats = NDArray[np.float64]
 Params = Union[float, ArrayLike]
 Bc = Union[str, Tuple[str, ArrayLike, ArrayLike]]
 
+class KarkasError(ValueError):
+    """An error of karkas: input a curve or surface cannot be built from, or a method that
+    could not finish. The typed subclasses say which kind of mistake it is; file errors of the
+    exports are OSError instead."""
+
+class PointsError(KarkasError):
+    """Points, grids or skeleton curves that cannot be used: too few, a non-finite coordinate,
+    coinciding neighbours, or an array of the wrong shape or dimension."""
+
+class KnotsError(KarkasError):
+    """Knots (parameters) that are not finite and strictly increasing, too close together,
+    outside their range, or too few."""
+
+class OptionError(KarkasError):
+    """An order, step, tolerance or other option outside its allowed range, an unknown name,
+    or options that exclude each other."""
+
+class IncompatibleDataError(KarkasError):
+    """Input parts that contradict each other: curves of a network or a tube skeleton that do
+    not meet where they must, or prescribed sums that cannot all hold."""
+
+class ConvergenceError(KarkasError):
+    """A numerical method that could not finish: a singular linear system, a projection or a
+    continuation that did not converge, a singular point of an implicit surface."""
+
+class ExpressionError(KarkasError):
+    """An expression of an implicit surface that does not parse."""
+
 class Curve:
     """Base class of every curve: c(t) -> points, c.derivative(t, k)."""
 

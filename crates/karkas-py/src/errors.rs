@@ -1,0 +1,165 @@
+//! The Python exceptions of karkas and the mapping of library errors onto them.
+//!
+//! Every error karkas raises for bad input or a failed method is a `karkas.KarkasError`, a
+//! subclass of `ValueError` (so `except ValueError` keeps working), or one of its typed
+//! subclasses, one per kind of mistake a caller would handle:
+//!
+//! ```text
+//! ValueError
+//! └── KarkasError                 anything else (the fallback)
+//!     ├── PointsError             points, grids or skeleton curves that cannot be used
+//!     ├── KnotsError              knots or parameters not finite and increasing
+//!     ├── OptionError             an order, step, option or name outside what is allowed
+//!     ├── IncompatibleDataError   input parts that contradict each other
+//!     ├── ConvergenceError        a numerical method that could not finish
+//!     └── ExpressionError         an implicit-surface expression that does not parse
+//! ```
+//!
+//! File errors of the exports are not karkas errors: they are `OSError` (its subclass for the
+//! operating system's error kind, e.g. `FileNotFoundError`), as Python's own `open` raises, so
+//! that `except ValueError` never swallows a full disk or a missing directory.
+
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+
+pyo3::create_exception!(
+    karkas,
+    KarkasError,
+    PyValueError,
+    "An error of karkas: input a curve or surface cannot be built from, or a method that \
+     could not finish. A subclass of ValueError; the typed subclasses (PointsError, \
+     KnotsError, OptionError, IncompatibleDataError, ConvergenceError, ExpressionError) say \
+     which kind of mistake it is. The message is the library's, naming the offending input."
+);
+pyo3::create_exception!(
+    karkas,
+    PointsError,
+    KarkasError,
+    "Points, grids or skeleton curves that cannot be used: too few, a non-finite coordinate, \
+     coinciding neighbours, or an array of the wrong shape or dimension."
+);
+pyo3::create_exception!(
+    karkas,
+    KnotsError,
+    KarkasError,
+    "Knots (parameters) that are not finite and strictly increasing, too close together, \
+     outside their range, or too few."
+);
+pyo3::create_exception!(
+    karkas,
+    OptionError,
+    KarkasError,
+    "An order, step, tolerance or other option outside its allowed range, an unknown name \
+     (end condition, parameterization, kind, ...), or options that exclude each other."
+);
+pyo3::create_exception!(
+    karkas,
+    IncompatibleDataError,
+    KarkasError,
+    "Input parts that contradict each other: curves of a network or a tube skeleton that do \
+     not meet where they must, or prescribed sums that cannot all hold."
+);
+pyo3::create_exception!(
+    karkas,
+    ConvergenceError,
+    KarkasError,
+    "A numerical method that could not finish: a singular linear system, a projection or a \
+     continuation that did not converge, a singular point of an implicit surface."
+);
+pyo3::create_exception!(
+    karkas,
+    ExpressionError,
+    KarkasError,
+    "An expression of an implicit surface that does not parse; the message gives the \
+     character position."
+);
+
+/// Adds the exception classes to the module `m`.
+pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    let py = m.py();
+    m.add("KarkasError", py.get_type::<KarkasError>())?;
+    m.add("PointsError", py.get_type::<PointsError>())?;
+    m.add("KnotsError", py.get_type::<KnotsError>())?;
+    m.add("OptionError", py.get_type::<OptionError>())?;
+    m.add(
+        "IncompatibleDataError",
+        py.get_type::<IncompatibleDataError>(),
+    )?;
+    m.add("ConvergenceError", py.get_type::<ConvergenceError>())?;
+    m.add("ExpressionError", py.get_type::<ExpressionError>())?;
+    Ok(())
+}
+
+/// A library error as the exception of its kind, carrying the library's message.
+///
+/// Variants not listed (among them any added to the non-exhaustive enum later) raise the
+/// base class `KarkasError`.
+pub fn library_error(e: karkas::Error) -> PyErr {
+    use karkas::Error as E;
+    let message = e.to_string();
+    match e {
+        E::TooFewPoints { .. }
+        | E::NonFinitePoint { .. }
+        | E::NonFiniteCell { .. }
+        | E::GridShape { .. }
+        | E::CountMismatch { .. }
+        | E::CoincidentPoints { .. }
+        | E::CoincidentGridLines { .. }
+        | E::TooFewCurves { .. }
+        | E::SkeletonLength { .. }
+        | E::NonFiniteSkeletonPoint { .. } => PointsError::new_err(message),
+        E::KnotsNotIncreasing { .. } | E::InvalidKnot { .. } => KnotsError::new_err(message),
+        E::InvalidOrder { .. }
+        | E::InvalidStep { .. }
+        | E::PeriodTooLarge { .. }
+        | E::InvalidOption { .. }
+        | E::InvalidSetting { .. }
+        | E::InvalidPlane { .. } => OptionError::new_err(message),
+        E::IncompatibleSkeleton { .. }
+        | E::IncompatibleCurves { .. }
+        | E::NetworkCrossing { .. }
+        | E::FixedLineSum { .. }
+        | E::InconsistentTotals { .. }
+        | E::InconsistentBlock { .. } => IncompatibleDataError::new_err(message),
+        E::SingularSystem { .. }
+        | E::NoSurfaceNear { .. }
+        | E::SingularPoint { .. }
+        | E::ContinuationFailed { .. } => ConvergenceError::new_err(message),
+        E::ExpressionParse { .. } => ExpressionError::new_err(message),
+        _ => KarkasError::new_err(message),
+    }
+}
+
+/// A file error of karkas-io as `OSError`: the subclass of the operating system's error kind
+/// when it reported one (`FileNotFoundError`, `PermissionError`, ...), with karkas-io's
+/// message naming the file.
+pub fn file_error(e: karkas_io::IoError) -> PyErr {
+    let kind = match &e {
+        karkas_io::IoError::Open { source, .. } | karkas_io::IoError::Write { source, .. } => {
+            source.kind()
+        }
+        _ => std::io::ErrorKind::Other,
+    };
+    PyErr::from(std::io::Error::new(kind, e.to_string()))
+}
+
+/// A `KarkasError` raised by the bindings themselves (e.g. a bad `out` array).
+pub fn karkas_error(message: impl Into<String>) -> PyErr {
+    KarkasError::new_err(message.into())
+}
+
+/// A `PointsError` raised by the bindings (an array of the wrong shape or dimension).
+pub fn points_error(message: impl Into<String>) -> PyErr {
+    PointsError::new_err(message.into())
+}
+
+/// A `KnotsError` raised by the bindings.
+pub fn knots_error(message: impl Into<String>) -> PyErr {
+    KnotsError::new_err(message.into())
+}
+
+/// An `OptionError` raised by the bindings (an unknown name, a negative count, options that
+/// exclude each other).
+pub fn option_error(message: impl Into<String>) -> PyErr {
+    OptionError::new_err(message.into())
+}
