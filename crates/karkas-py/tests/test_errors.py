@@ -25,10 +25,16 @@ def test_the_hierarchy_is_exported_and_rooted_in_value_error():
     assert "ValueError" in karkas.KarkasError.__doc__
 
 
-def _curve_net():
-    """Two v-curves and two u-curves of a bilinear patch, the u-curves lifted off the v-curves."""
-    v = [np.array([[0.0, 0.0, 0.0], [0.0, 1.0, 0.0]]), np.array([[1.0, 0.0, 0.0], [1.0, 1.0, 0.0]])]
-    u = [np.array([[0.0, 0.0, 1.0], [1.0, 0.0, 1.0]]), np.array([[0.0, 1.0, 1.0], [1.0, 1.0, 1.0]])]
+ZIGZAG = np.array([[0.0, 0.0], [1.0, 1.0], [2.0, 0.0], [3.0, 1.0]])
+
+
+def _crossing_missed():
+    """The edges of the unit square as two v-curves and two u-curves, the last corner of the
+    second u-curve lifted off the second v-curve."""
+    s = np.linspace(0.0, 1.0, 3)
+    zero, one = np.zeros(3), np.ones(3)
+    v = [np.column_stack([zero, s, zero]), np.column_stack([one, s, zero])]
+    u = [np.column_stack([s, zero, zero]), np.column_stack([s, one, [0.0, 0.0, 0.5]])]
     return v, u
 
 
@@ -39,7 +45,7 @@ def _curve_net():
         (karkas.PointsError, lambda: karkas.LLCurve([[0, 0], [1, np.nan], [2, 0]]), "finite"),
         (karkas.PointsError, lambda: karkas.LLCurve(np.zeros((5, 4))), "2 or 3 coordinates"),
         (karkas.PointsError, lambda: karkas.curve_parameters(np.zeros((3, 2))), "coincid"),
-        (karkas.KnotsError, lambda: karkas.CubicSpline(np.eye(4), t=[0.0, 2.0, 1.0, 3.0]), "knot 2"),
+        (karkas.KnotsError, lambda: karkas.CubicSpline(ZIGZAG, t=[0.0, 2.0, 1.0, 3.0]), "knot 2"),
         (
             karkas.KnotsError,
             lambda: karkas.fit_curve(np.column_stack([np.linspace(0, 1, 20), np.zeros(20)]), knots=[0.0, 0.6, 0.4, 1.0]),
@@ -49,7 +55,7 @@ def _curve_net():
         (karkas.OptionError, lambda: karkas.CubicSpline(np.eye(3), bc="quadratic"), "unknown bc"),
         (karkas.OptionError, lambda: karkas.DiscreteSpline(np.eye(3), n=1), "step"),
         (karkas.IncompatibleDataError, lambda: karkas.vary(np.eye(2), [1.0, 1.0], [1.0, 2.0]), "sums"),
-        (karkas.IncompatibleDataError, lambda: karkas.CoonsSurface(*_curve_net(), kind="bilinear"), "u-curve"),
+        (karkas.IncompatibleDataError, lambda: karkas.CoonsSurface(*_crossing_missed(), kind="bilinear"), "u-curve 1"),
         (
             karkas.ConvergenceError,
             lambda: karkas.ImplicitSurface("x^2 + y^2 + z^2 + 1").project([[1.0, 2.0, 3.0]]),
@@ -77,9 +83,9 @@ def test_each_kind_of_mistake_raises_its_class(cls, make, message):
 def test_the_same_knot_mistake_is_one_class_everywhere():
     pts = np.column_stack([np.linspace(0, 1, 20), np.sin(np.linspace(0, 1, 20))])
     for make in [
-        lambda: karkas.CubicSpline(np.eye(4), t=[0.0, 2.0, 1.0, 3.0]),
+        lambda: karkas.CubicSpline(ZIGZAG, t=[0.0, 2.0, 1.0, 3.0]),
         lambda: karkas.fit_curve(pts, knots=[0.0, 0.6, 0.4, 1.0]),
-        lambda: karkas.BicubicSurface.from_knots(np.zeros((4, 3, 3)), [0.0, 2.0, 1.0, 3.0], [0.0, 1.0, 2.0]),
+        lambda: karkas.BicubicSurface.from_knots(np.ones((4, 3, 3)), [0.0, 2.0, 1.0, 3.0], [0.0, 1.0, 2.0]),
     ]:
         with pytest.raises(karkas.KnotsError):
             make()
