@@ -15,7 +15,7 @@ use numpy::{
 };
 use pyo3::prelude::*;
 
-use crate::errors::{karkas_error, knots_error, library_error, option_error, points_error};
+use crate::errors::{library_error, KarkasError, KnotsError, OptionError, PointsError};
 
 /// Evaluations of at least this many points run with the GIL released (below it the release
 /// costs more than it frees).
@@ -56,7 +56,7 @@ impl<'py> PointsArray<'py> {
     /// Reads `obj` (anything `numpy.asarray` accepts) as a 2-D float64 array.
     pub fn extract(obj: &Bound<'py, PyAny>, what: &str) -> PyResult<Self> {
         let array: PyArrayLike2<'py, f64, AllowTypeChange> = obj.extract().map_err(|_| {
-            points_error(format!(
+            PointsError::new_err(format!(
                 "{what} must be a 2-D float array of shape (n, d) with d in {{2, 3}}"
             ))
         })?;
@@ -86,7 +86,7 @@ impl<'py> PointsArray<'py> {
 pub fn check_dim(d: usize, what: &str) -> PyResult<usize> {
     match d {
         2 | 3 => Ok(d),
-        _ => Err(points_error(format!(
+        _ => Err(PointsError::new_err(format!(
             "{what} must have 2 or 3 coordinates per point (got {d})"
         ))),
     }
@@ -116,7 +116,7 @@ impl<'py> GridArray<'py> {
     /// Reads `obj` as a 3-D float64 array.
     pub fn extract(obj: &Bound<'py, PyAny>, what: &str) -> PyResult<Self> {
         let array: PyArrayLike3<'py, f64, AllowTypeChange> = obj.extract().map_err(|_| {
-            points_error(format!(
+            PointsError::new_err(format!(
                 "{what} must be a 3-D float array of shape (nu, nv, d) with d in {{2, 3}}"
             ))
         })?;
@@ -157,7 +157,7 @@ pub fn uniform((a, b): (f64, f64), n: usize) -> Vec<f64> {
 pub fn extract_vector(obj: &Bound<'_, PyAny>, what: &str) -> PyResult<Vec<f64>> {
     let array: PyArrayLike1<'_, f64, AllowTypeChange> = obj
         .extract()
-        .map_err(|_| knots_error(format!("{what} must be a 1-D float array")))?;
+        .map_err(|_| KnotsError::new_err(format!("{what} must be a 1-D float array")))?;
     Ok(match array.as_slice() {
         Ok(s) => s.to_vec(),
         Err(_) => array.as_array().iter().copied().collect(),
@@ -180,9 +180,9 @@ impl<'py> Params<'py> {
                 return Ok(Params::Scalar(t));
             }
         }
-        let array: PyArrayLikeDyn<'py, f64, AllowTypeChange> = obj
-            .extract()
-            .map_err(|_| karkas_error(format!("{what} must be a float or an array of floats")))?;
+        let array: PyArrayLikeDyn<'py, f64, AllowTypeChange> = obj.extract().map_err(|_| {
+            KarkasError::new_err(format!("{what} must be a float or an array of floats"))
+        })?;
         Ok(Params::Array(array))
     }
 
@@ -218,16 +218,16 @@ pub fn output_array<'py>(
     };
     let array = out
         .cast_into::<PyArrayDyn<f64>>()
-        .map_err(|_| karkas_error("out must be a float64 numpy.ndarray"))?;
+        .map_err(|_| KarkasError::new_err("out must be a float64 numpy.ndarray"))?;
     if array.shape() != shape {
-        return Err(karkas_error(format!(
+        return Err(KarkasError::new_err(format!(
             "out has shape {:?}, expected {:?}",
             array.shape(),
             shape
         )));
     }
     if !array.is_c_contiguous() {
-        return Err(karkas_error("out must be C-contiguous"));
+        return Err(KarkasError::new_err("out must be C-contiguous"));
     }
     Ok(array)
 }
@@ -238,13 +238,13 @@ pub fn write_flat<R>(
     write: impl FnOnce(&mut [f64]) -> R,
 ) -> PyResult<R> {
     let mut rw = array.try_readwrite().map_err(|e| {
-        karkas_error(format!(
+        KarkasError::new_err(format!(
             "out cannot be written ({e}): is it read-only or does it share memory with the input?"
         ))
     })?;
     let flat = rw
         .as_slice_mut()
-        .map_err(|_| karkas_error("out must be C-contiguous"))?;
+        .map_err(|_| KarkasError::new_err("out must be C-contiguous"))?;
     Ok(write(flat))
 }
 
@@ -278,7 +278,7 @@ pub fn vector_to_array<'py>(py: Python<'py>, values: &[f64]) -> Bound<'py, PyArr
 /// A non-negative Python integer as a count, or an `OptionError` naming it.
 pub fn count(value: i64, name: &str) -> PyResult<usize> {
     usize::try_from(value)
-        .map_err(|_| option_error(format!("{name} must be non-negative (got {value})")))
+        .map_err(|_| OptionError::new_err(format!("{name} must be non-negative (got {value})")))
 }
 
 /// `True`/`False` as Python spells them.
@@ -318,7 +318,9 @@ impl FlatPoints {
 pub fn point3(p: &[f64], what: &str) -> PyResult<Point3> {
     match p {
         [x, y, z] => Ok(Point3::new([*x, *y, *z])),
-        _ => Err(points_error(format!("{what} must have 3 coordinates"))),
+        _ => Err(PointsError::new_err(format!(
+            "{what} must have 3 coordinates"
+        ))),
     }
 }
 
@@ -326,7 +328,7 @@ pub fn point3(p: &[f64], what: &str) -> PyResult<Point3> {
 pub fn points3(obj: &Bound<'_, PyAny>, what: &str) -> PyResult<Vec<Point3>> {
     let pts = PointsArray::extract(obj, what)?;
     if pts.dim() != 3 {
-        return Err(points_error(format!(
+        return Err(PointsError::new_err(format!(
             "{what} must have 3 coordinates per point (got {})",
             pts.dim()
         )));

@@ -7,7 +7,7 @@ use karkas::Point;
 use pyo3::prelude::*;
 
 use crate::convert::{as_points, by_dim, check_dim, count, PointsArray};
-use crate::errors::{library_error, option_error, points_error};
+use crate::errors::{library_error, OptionError, PointsError};
 use crate::surface::PySurface;
 use crate::wrapper::{SurfaceImpl, WrappedSurface};
 
@@ -22,7 +22,7 @@ fn point_lists<const D: usize>(
         .map(|(i, obj)| {
             let pts = PointsArray::extract(obj, &format!("{what}[{i}]"))?;
             if pts.dim() != D {
-                return Err(points_error(format!(
+                return Err(PointsError::new_err(format!(
                     "{what}[{i}] has {} coordinates per point, expected {D}",
                     pts.dim()
                 )));
@@ -36,7 +36,7 @@ fn point_lists<const D: usize>(
 fn first_dim(lists: &[Bound<'_, PyAny>], what: &str) -> PyResult<usize> {
     let first = lists
         .first()
-        .ok_or_else(|| points_error(format!("{what} must not be empty")))?;
+        .ok_or_else(|| PointsError::new_err(format!("{what} must not be empty")))?;
     check_dim(
         PointsArray::extract(first, &format!("{what}[0]"))?.dim(),
         what,
@@ -84,17 +84,19 @@ impl PyCoonsSurface {
                     match name.as_str() {
                         "spline" => CurveFit::CubicSpline,
                         _ => {
-                            return Err(option_error(format!(
+                            return Err(OptionError::new_err(format!(
                                 "unknown fit {name:?} (expected 'spline' or ('ll', order))"
                             )))
                         }
                     }
                 } else {
-                    let (name, order): (String, i64) = f
-                        .extract()
-                        .map_err(|_| option_error("fit must be 'spline' or ('ll', order)"))?;
+                    let (name, order): (String, i64) = f.extract().map_err(|_| {
+                        OptionError::new_err("fit must be 'spline' or ('ll', order)")
+                    })?;
                     if name != "ll" {
-                        return Err(option_error("fit must be 'spline' or ('ll', order)"));
+                        return Err(OptionError::new_err(
+                            "fit must be 'spline' or ('ll', order)",
+                        ));
                     }
                     CurveFit::Ll(count(order, "order")?)
                 }
@@ -108,7 +110,7 @@ impl PyCoonsSurface {
             "composite",
         ];
         if !known.contains(&kind) {
-            return Err(option_error(format!(
+            return Err(OptionError::new_err(format!(
                 "unknown kind {kind:?} (expected one of {known:?})"
             )));
         }
@@ -119,7 +121,7 @@ impl PyCoonsSurface {
             let derivs = match (&u_derivs, &v_derivs) {
                 (Some(du), Some(dv)) => Some((point_lists::<D>(du, "u_derivs")?, point_lists::<D>(dv, "v_derivs")?)),
                 (None, None) => None,
-                _ => return Err(option_error("give both u_derivs and v_derivs, or neither")),
+                _ => return Err(OptionError::new_err("give both u_derivs and v_derivs, or neither")),
             };
             let surface = py.detach(|| -> karkas::Result<CoonsSurface<D>> {
                 let network = PointNetwork::new(&v, &u, fit, crossing_tolerance)?;

@@ -10,7 +10,7 @@ use crate::convert::{
     as_points, as_points_mut, by_dim, check_dim, count, grid_to_array, maybe_detach, output_array,
     points_to_array, write_flat, GridArray, PointsArray,
 };
-use crate::errors::{library_error, points_error};
+use crate::errors::{library_error, PointsError};
 
 /// A discrete spline of either dimension.
 enum AnySpline {
@@ -199,7 +199,7 @@ impl PyTubeSurface {
         let b = GridArray::extract(across, "across")?;
         let dim = check_dim(a.dim(), "along")?;
         if b.dim() != dim {
-            return Err(points_error(format!(
+            return Err(PointsError::new_err(format!(
                 "along has {dim} coordinates per point, across {}",
                 b.dim()
             )));

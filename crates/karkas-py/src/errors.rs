@@ -142,24 +142,3 @@ pub fn file_error(e: karkas_io::IoError) -> PyErr {
     };
     PyErr::from(std::io::Error::new(kind, e.to_string()))
 }
-
-/// A `KarkasError` raised by the bindings themselves (e.g. a bad `out` array).
-pub fn karkas_error(message: impl Into<String>) -> PyErr {
-    KarkasError::new_err(message.into())
-}
-
-/// A `PointsError` raised by the bindings (an array of the wrong shape or dimension).
-pub fn points_error(message: impl Into<String>) -> PyErr {
-    PointsError::new_err(message.into())
-}
-
-/// A `KnotsError` raised by the bindings.
-pub fn knots_error(message: impl Into<String>) -> PyErr {
-    KnotsError::new_err(message.into())
-}
-
-/// An `OptionError` raised by the bindings (an unknown name, a negative count, options that
-/// exclude each other).
-pub fn option_error(message: impl Into<String>) -> PyErr {
-    OptionError::new_err(message.into())
-}

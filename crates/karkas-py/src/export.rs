@@ -11,13 +11,13 @@ use karkas_io::write::{write_curve_csv, write_surface_csv};
 use pyo3::prelude::*;
 
 use crate::convert::{as_points, by_dim, check_dim, extract_vector, GridArray, PointsArray};
-use crate::errors::{file_error, points_error};
+use crate::errors::{file_error, PointsError};
 
 /// A (nu, nv, 3) grid of points.
 fn grid3(grid: &Bound<'_, PyAny>) -> PyResult<(usize, usize, Vec<Point3>)> {
     let g = GridArray::extract(grid, "grid")?;
     if g.dim() != 3 {
-        return Err(points_error(format!(
+        return Err(PointsError::new_err(format!(
             "grid must have 3 coordinates per point (got {})",
             g.dim()
         )));

@@ -11,7 +11,7 @@ use crate::convert::{
     as_points, by_dim, check_dim, count, extract_vector, vector_to_array, FlatPoints, PointsArray,
 };
 use crate::curve::PyCurve;
-use crate::errors::{knots_error, library_error, option_error};
+use crate::errors::{library_error, KnotsError, OptionError};
 use crate::wrapper::{CurveImpl, Wrapped};
 
 /// A C^1 cubic Hermite spline (a cubic spline of defect 2) on [0, 1], as returned by
@@ -106,7 +106,9 @@ pub fn fit_curve(
             Ok(n) => {
                 let n = count(n, "knots")?;
                 if n < 2 {
-                    return Err(knots_error(format!("knots must be at least 2 (got {n})")));
+                    return Err(KnotsError::new_err(format!(
+                        "knots must be at least 2 (got {n})"
+                    )));
                 }
                 Some(fit::uniform_knots(n))
             }
@@ -114,10 +116,12 @@ pub fn fit_curve(
         },
     };
     let target = match (knots, tolerance) {
-        (Some(_), Some(_)) => return Err(option_error("give knots or tolerance, not both")),
+        (Some(_), Some(_)) => {
+            return Err(OptionError::new_err("give knots or tolerance, not both"))
+        }
         (Some(knots), None) => Target::Knots(knots),
         (None, Some(tolerance)) => Target::Tolerance(tolerance),
-        (None, None) => return Err(option_error("give the knots or a tolerance")),
+        (None, None) => return Err(OptionError::new_err("give the knots or a tolerance")),
     };
     let mut options = FitOptions {
         pin_ends,

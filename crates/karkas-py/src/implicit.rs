@@ -13,7 +13,7 @@ use pyo3::types::PyDict;
 use crate::convert::{
     count, grid_to_array, maybe_detach, point3, points3, points_to_array, vector_to_array,
 };
-use crate::errors::{library_error, option_error};
+use crate::errors::{library_error, OptionError};
 
 /// An implicit surface F(x, y, z) = 0 given as an expression, e.g. "x^2 + y^2 - 4" (exact
 /// first and second derivatives, by symbolic differentiation).
@@ -114,12 +114,12 @@ impl PyImplicitSurface {
             "turned-u" => NetDirections::TurnedU { angle },
             "plane-sections" => NetDirections::PlaneSections {
                 plane_normal: point3(
-                    &plane_normal.ok_or_else(|| option_error("'plane-sections' needs plane_normal"))?,
+                    &plane_normal.ok_or_else(|| OptionError::new_err("'plane-sections' needs plane_normal"))?,
                     "plane_normal",
                 )?,
             },
             other => {
-                return Err(option_error(format!(
+                return Err(OptionError::new_err(format!(
                     "unknown directions {other:?} (expected 'principal', 'turned', 'turned-u' or 'plane-sections')"
                 )))
             }

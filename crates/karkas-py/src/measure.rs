@@ -5,7 +5,7 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use crate::convert::points3;
-use crate::errors::{library_error, points_error};
+use crate::errors::{library_error, PointsError};
 use crate::implicit::PyImplicitSurface;
 use crate::surface::PySurface;
 
@@ -55,7 +55,7 @@ pub fn hausdorff_to_implicit<'py>(
 ) -> PyResult<Bound<'py, PyDict>> {
     let s = surface.get();
     if s.inner.dim() != 3 {
-        return Err(points_error("the surface must be 3-D"));
+        return Err(PointsError::new_err("the surface must be 3-D"));
     }
     let patch = points3(patch, "patch")?;
     let inner = &s.inner;

@@ -15,7 +15,7 @@ use crate::convert::{
     FlatPoints, GridArray, PointsArray,
 };
 use crate::curve::PyCurve;
-use crate::errors::{library_error, option_error};
+use crate::errors::{library_error, OptionError};
 use crate::surface::PySurface;
 use crate::wrapper::{CurveImpl, SurfaceImpl, Wrapped, WrappedSurface};
 
@@ -27,7 +27,7 @@ pub fn parse_parameterization(name: &str) -> PyResult<CurveParameterization> {
         "uniform" => Ok(CurveParameterization::Uniform),
         "chord" | "chord-length" | "chordlength" => Ok(CurveParameterization::ChordLength),
         "centripetal" => Ok(CurveParameterization::Centripetal),
-        _ => Err(option_error(format!(
+        _ => Err(OptionError::new_err(format!(
             "unknown parameterization {name:?} (expected 'uniform', 'chord' or 'centripetal')"
         ))),
     }
@@ -40,17 +40,17 @@ fn parse_ends<const D: usize>(bc: &Bound<'_, PyAny>) -> PyResult<SplineEnds<D>> 
             "not-a-knot" => Ok(SplineEnds::NotAKnot),
             "natural" => Ok(SplineEnds::Natural),
             "periodic" => Ok(SplineEnds::Periodic),
-            _ => Err(option_error(format!(
+            _ => Err(OptionError::new_err(format!(
                 "unknown bc {name:?} (expected 'not-a-knot', 'natural', 'periodic' or \
                  ('clamped', start_derivative, end_derivative))"
             ))),
         };
     }
     let (name, start, end): (String, Vec<f64>, Vec<f64>) = bc.extract().map_err(|_| {
-        option_error("bc must be a name or ('clamped', start_derivative, end_derivative)")
+        OptionError::new_err("bc must be a name or ('clamped', start_derivative, end_derivative)")
     })?;
     if name != "clamped" || start.len() != D || end.len() != D {
-        return Err(option_error(format!(
+        return Err(OptionError::new_err(format!(
             "bc must be ('clamped', start, end) with {D} coordinates each"
         )));
     }
@@ -157,7 +157,7 @@ pub fn parse_grid_parameterization(name: &str) -> PyResult<GridParameterization>
         "chord" => Ok(GridParameterization::default()),
         "averaged-chord" => Ok(GridParameterization::AveragedChord),
         "centripetal" => Ok(GridParameterization::Centripetal),
-        _ => Err(option_error(format!(
+        _ => Err(OptionError::new_err(format!(
             "unknown parameterization {name:?} (expected 'uniform', 'chord', 'averaged-chord' or 'centripetal')"
         ))),
     }

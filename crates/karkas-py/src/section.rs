@@ -4,8 +4,9 @@
 use numpy::PyArrayDyn;
 use pyo3::prelude::*;
 
-use crate::convert::{as_points, by_dim, points_to_array, py_bool};
-use crate::wrapper::FlatSection;
+use karkas::section::SectionCurve;
+
+use crate::convert::{as_points, by_dim, flatten, points_to_array, py_bool};
 
 /// One connected piece of a plane section: a polyline on the surface.
 #[pyclass(module = "karkas", name = "SectionCurve", frozen)]
@@ -19,6 +20,19 @@ pub struct PySectionCurve {
     /// The polyline's length (the closing chord included when closed).
     #[pyo3(get)]
     length: f64,
+}
+
+impl PySectionCurve {
+    /// The Python object of a piece of a section.
+    pub fn of<const D: usize>(curve: &SectionCurve<D>) -> Self {
+        PySectionCurve {
+            points: flatten(&curve.points).to_vec(),
+            params: curve.params.iter().flat_map(|&(u, v)| [u, v]).collect(),
+            dim: D,
+            closed: curve.closed,
+            length: curve.length(),
+        }
+    }
 }
 
 #[pymethods]
@@ -48,19 +62,4 @@ impl PySectionCurve {
             self.length
         )
     }
-}
-
-/// The Python objects of a section's pieces.
-pub fn section_curves(section: FlatSection, dim: usize) -> Vec<PySectionCurve> {
-    section
-        .curves
-        .into_iter()
-        .map(|c| PySectionCurve {
-            points: c.points,
-            params: c.params,
-            dim,
-            closed: c.closed,
-            length: c.length,
-        })
-        .collect()
 }

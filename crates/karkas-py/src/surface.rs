@@ -10,8 +10,8 @@ use numpy::PyArrayDyn;
 use pyo3::prelude::*;
 
 use crate::convert::{maybe_detach, output_array, uniform, write_flat, Params};
-use crate::errors::{karkas_error, library_error, option_error};
-use crate::section::{section_curves, PySectionCurve};
+use crate::errors::{library_error, KarkasError, OptionError};
+use crate::section::PySectionCurve;
 use crate::wrapper::SurfaceImpl;
 
 /// Base class of every karkas surface.
@@ -50,7 +50,7 @@ impl PySurface {
         let d = self.inner.dim();
         let shape: Vec<usize> = if grid {
             if su.len() > 1 || sv.len() > 1 {
-                return Err(karkas_error(
+                return Err(KarkasError::new_err(
                     "with grid=True, u and v must be floats or 1-D arrays",
                 ));
             }
@@ -60,7 +60,7 @@ impl PySurface {
             s
         } else {
             if su != sv {
-                return Err(karkas_error(format!(
+                return Err(KarkasError::new_err(format!(
                     "with grid=False, u and v must have one shape (got {su:?} and {sv:?})"
                 )));
             }
@@ -149,7 +149,7 @@ impl PySurface {
     ) -> PyResult<Vec<PySectionCurve>> {
         let d = self.inner.dim();
         if normal.len() != d {
-            return Err(option_error(format!(
+            return Err(OptionError::new_err(format!(
                 "normal must have {d} coordinates (got {})",
                 normal.len()
             )));
@@ -160,10 +160,8 @@ impl PySurface {
             ..SectionOptions::default()
         };
         let inner = &self.inner;
-        let section = py
-            .detach(|| inner.section(&normal, offset, &options))
-            .map_err(library_error)?;
-        Ok(section_curves(section, d))
+        py.detach(|| inner.section(&normal, offset, &options))
+            .map_err(library_error)
     }
 
     /// The u domain (a, b).

@@ -11,7 +11,8 @@ use karkas::measure::{hausdorff_surface_implicit, Hausdorff};
 use karkas::section::{plane_section, Plane, SectionOptions};
 use karkas::{PiecewiseCurve, Point, Point3, Surface};
 
-use crate::convert::{as_points_mut, flatten};
+use crate::convert::as_points_mut;
+use crate::section::PySectionCurve;
 
 /// A karkas curve of either dimension, evaluated on flat buffers.
 pub trait CurveImpl: Send + Sync {
@@ -82,7 +83,7 @@ pub trait SurfaceImpl: Send + Sync {
         normal: &[f64],
         offset: f64,
         options: &SectionOptions,
-    ) -> karkas::Result<FlatSection>;
+    ) -> karkas::Result<Vec<PySectionCurve>>;
     /// The two-sided Hausdorff distance to the patch of an implicit surface (3-D only).
     fn hausdorff_implicit(
         &self,
@@ -90,26 +91,6 @@ pub trait SurfaceImpl: Send + Sync {
         patch: &[Point3],
         samples: (usize, usize),
     ) -> karkas::Result<Hausdorff>;
-}
-
-/// One piece of a section with dimension-free coordinates.
-pub struct FlatCurve {
-    /// The points, `dim` numbers each.
-    pub points: Vec<f64>,
-    /// The surface parameters `(u, v)` of the points, flat.
-    pub params: Vec<f64>,
-    /// True when the last point joins the first.
-    pub closed: bool,
-    /// The polyline's length (the closing chord included when closed).
-    pub length: f64,
-}
-
-/// A section with dimension-free coordinates.
-pub struct FlatSection {
-    /// The pieces.
-    pub curves: Vec<FlatCurve>,
-    /// The library's warnings, as text.
-    pub warnings: Vec<String>,
 }
 
 /// A surface of dimension `D` seen as one in 3-D (used only when `D == 3`: the coordinates
@@ -183,23 +164,11 @@ where
         normal: &[f64],
         offset: f64,
         options: &SectionOptions,
-    ) -> karkas::Result<FlatSection> {
+    ) -> karkas::Result<Vec<PySectionCurve>> {
         let mut n = Point::<D>::ZERO;
         n.0.copy_from_slice(normal);
         let section = plane_section(&self.0, &Plane::new(n, offset)?, options)?;
-        Ok(FlatSection {
-            curves: section
-                .curves
-                .iter()
-                .map(|c| FlatCurve {
-                    points: flatten(&c.points).to_vec(),
-                    params: c.params.iter().flat_map(|&(u, v)| [u, v]).collect(),
-                    closed: c.closed,
-                    length: c.length(),
-                })
-                .collect(),
-            warnings: section.warnings.iter().map(|w| format!("{w:?}")).collect(),
-        })
+        Ok(section.curves.iter().map(PySectionCurve::of).collect())
     }
     fn hausdorff_implicit(
         &self,
