@@ -26,52 +26,67 @@ pyo3::create_exception!(
     karkas,
     KarkasError,
     PyValueError,
-    "An error of karkas: input a curve or surface cannot be built from, or a method that \
-     could not finish. A subclass of ValueError; the typed subclasses (PointsError, \
-     KnotsError, OptionError, IncompatibleDataError, ConvergenceError, ExpressionError) say \
-     which kind of mistake it is. The message is the library's, naming the offending input."
+    "An error of karkas: bad input, or a method that could not finish.\n\
+     \n\
+     A subclass of ValueError. The message is the library's and names the\n\
+     offending input. The subclasses PointsError, KnotsError, OptionError,\n\
+     IncompatibleDataError, ConvergenceError and ExpressionError say which\n\
+     kind of mistake it is; other errors are KarkasError itself. File errors\n\
+     of the exports are OSError, not KarkasError."
 );
 pyo3::create_exception!(
     karkas,
     PointsError,
     KarkasError,
-    "Points, grids or skeleton curves that cannot be used: too few, a non-finite coordinate, \
+    "Points that cannot be used.\n\
+     \n\
+     Too few points, grid points or skeleton curves, a non-finite coordinate,\n\
      coinciding neighbours, or an array of the wrong shape or dimension."
 );
 pyo3::create_exception!(
     karkas,
     KnotsError,
     KarkasError,
-    "Knots (parameters) that are not finite and strictly increasing, too close together, \
-     outside their range, or too few."
+    "Knots that cannot be used.\n\
+     \n\
+     Knots (parameters) that are not finite and strictly increasing, too close\n\
+     together, outside their range, or too few."
 );
 pyo3::create_exception!(
     karkas,
     OptionError,
     KarkasError,
-    "An order, step, tolerance or other option outside its allowed range, an unknown name \
-     (end condition, parameterization, kind, ...), or options that exclude each other."
+    "An option outside what is allowed.\n\
+     \n\
+     An order, step, tolerance or other option outside its range, an unknown\n\
+     name (end condition, parameterization, kind, ...), or options that exclude\n\
+     each other."
 );
 pyo3::create_exception!(
     karkas,
     IncompatibleDataError,
     KarkasError,
-    "Input parts that contradict each other: curves of a network or a tube skeleton that do \
-     not meet where they must, or prescribed sums that cannot all hold."
+    "Input parts that contradict each other.\n\
+     \n\
+     Curves of a network or of a tube skeleton that do not meet where they must,\n\
+     or prescribed row and column sums that cannot all hold."
 );
 pyo3::create_exception!(
     karkas,
     ConvergenceError,
     KarkasError,
-    "A numerical method that could not finish: a singular linear system, a projection or a \
-     continuation that did not converge, a singular point of an implicit surface."
+    "A numerical method that could not finish.\n\
+     \n\
+     A singular linear system, a projection or a continuation that did not\n\
+     converge, or a singular point of an implicit surface."
 );
 pyo3::create_exception!(
     karkas,
     ExpressionError,
     KarkasError,
-    "An expression of an implicit surface that does not parse; the message gives the \
-     character position."
+    "An implicit-surface expression that does not parse.\n\
+     \n\
+     The message gives the character position of the problem."
 );
 
 /// Adds the exception classes to the module `m`.
