@@ -170,7 +170,8 @@ enum AnyTube {
     D3(TubeSurface<3>),
 }
 
-/// A closed tube through a skeleton of closed discrete curves (formula (3) of Malozemov, Khorokhonov and Chashnikov).
+/// A closed tube through a skeleton of closed discrete curves (formula (3) of Malozemov,
+/// Khorokhonov and Chashnikov).
 ///
 /// TubeSurface(along, across, n1, n2, r1=3, r2=3): along (m1, N2, d) are m1 closed curves of
 /// N2 = m2 n2 samples, across (m2, N1, d) are m2 closed curves of N1 = m1 n1 samples, with
