@@ -13,6 +13,36 @@ Floats = NDArray[np.float64]
 Params = Union[float, ArrayLike]
 Bc = Union[str, Tuple[str, ArrayLike, ArrayLike]]
 
+class KarkasError(ValueError):
+    """An error of karkas: bad input, or a method that could not finish.
+
+    The message is the library's and names the offending input. The subclasses say which kind
+    of mistake it is; other errors are KarkasError itself. File errors of the exports are
+    OSError (FileNotFoundError, PermissionError, ...), not KarkasError."""
+
+class PointsError(KarkasError):
+    """Too few points, grid points or skeleton curves, a non-finite coordinate, coinciding
+    neighbours, or an array of the wrong shape or dimension."""
+
+class KnotsError(KarkasError):
+    """Knots (parameters) that are not finite and strictly increasing, too close together,
+    outside their range, or too few."""
+
+class OptionError(KarkasError):
+    """An order, step, tolerance or other option outside its range, an unknown name (end
+    condition, parameterization, kind, ...), or options that exclude each other."""
+
+class IncompatibleDataError(KarkasError):
+    """Curves of a network or of a tube skeleton that do not meet where they must, or
+    prescribed row and column sums that cannot all hold."""
+
+class ConvergenceError(KarkasError):
+    """A singular linear system, a projection or a continuation that did not converge, or a
+    singular point of an implicit surface."""
+
+class ExpressionError(KarkasError):
+    """An implicit-surface expression that does not parse (the message gives the position)."""
+
 class Curve:
     """Base class of every curve: c(t) -> points, c.derivative(t, k)."""
 

@@ -1,4 +1,4 @@
-//! NumPy arrays to karkas points and grids and back, and karkas errors to Python exceptions.
+//! NumPy arrays to karkas points and grids and back, and Python arguments to counts.
 //!
 //! Input arrays are read in place when they are C-contiguous float64 (anything else array-like
 //! is converted once by NumPy). Output arrays are written in place: a flat `&mut [f64]` of a
@@ -8,27 +8,35 @@
 
 use std::borrow::Cow;
 
-use karkas::{Grid, Point};
+use karkas::{Grid, Point, Point3};
 use numpy::{
     AllowTypeChange, PyArrayDyn, PyArrayLike1, PyArrayLike2, PyArrayLike3, PyArrayLikeDyn,
     PyArrayMethods, PyUntypedArrayMethods,
 };
-use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
+
+use crate::errors::{library_error, KarkasError, KnotsError, OptionError, PointsError};
 
 /// Evaluations of at least this many points run with the GIL released (below it the release
 /// costs more than it frees).
 pub const DETACH_ABOVE: usize = 4096;
 
-/// A karkas error as a Python `ValueError` carrying the library's message.
-pub fn value_error(e: karkas::Error) -> PyErr {
-    PyValueError::new_err(e.to_string())
+/// Runs `$body` with `$D` bound to the constant dimension `$d` (2 or 3; checked before).
+macro_rules! by_dim {
+    ($d:expr, $D:ident => $body:expr) => {
+        match $d {
+            2 => {
+                const $D: usize = 2;
+                $body
+            }
+            _ => {
+                const $D: usize = 3;
+                $body
+            }
+        }
+    };
 }
-
-/// A Python `ValueError` with `message`.
-pub fn invalid(message: impl Into<String>) -> PyErr {
-    PyValueError::new_err(message.into())
-}
+pub(crate) use by_dim;
 
 /// Runs `f` with the GIL released when `work` is large.
 pub fn maybe_detach<T: Send, F: FnOnce() -> T + Send>(py: Python<'_>, work: usize, f: F) -> T {
@@ -48,7 +56,7 @@ impl<'py> PointsArray<'py> {
     /// Reads `obj` (anything `numpy.asarray` accepts) as a 2-D float64 array.
     pub fn extract(obj: &Bound<'py, PyAny>, what: &str) -> PyResult<Self> {
         let array: PyArrayLike2<'py, f64, AllowTypeChange> = obj.extract().map_err(|_| {
-            invalid(format!(
+            PointsError::new_err(format!(
                 "{what} must be a 2-D float array of shape (n, d) with d in {{2, 3}}"
             ))
         })?;
@@ -78,7 +86,7 @@ impl<'py> PointsArray<'py> {
 pub fn check_dim(d: usize, what: &str) -> PyResult<usize> {
     match d {
         2 | 3 => Ok(d),
-        _ => Err(invalid(format!(
+        _ => Err(PointsError::new_err(format!(
             "{what} must have 2 or 3 coordinates per point (got {d})"
         ))),
     }
@@ -108,7 +116,7 @@ impl<'py> GridArray<'py> {
     /// Reads `obj` as a 3-D float64 array.
     pub fn extract(obj: &Bound<'py, PyAny>, what: &str) -> PyResult<Self> {
         let array: PyArrayLike3<'py, f64, AllowTypeChange> = obj.extract().map_err(|_| {
-            invalid(format!(
+            PointsError::new_err(format!(
                 "{what} must be a 3-D float array of shape (nu, nv, d) with d in {{2, 3}}"
             ))
         })?;
@@ -128,15 +136,28 @@ impl<'py> GridArray<'py> {
             Err(_) => self.array.as_array().iter().copied().collect(),
         };
         let points: Vec<Point<D>> = as_points::<D>(&flat).to_vec();
-        Grid::from_row_major(shape[0], shape[1], points).map_err(value_error)
+        Grid::from_row_major(shape[0], shape[1], points).map_err(library_error)
     }
+}
+
+/// `n` uniformly spaced parameters over `(a, b)`, ends included.
+pub fn uniform((a, b): (f64, f64), n: usize) -> Vec<f64> {
+    (0..n)
+        .map(|i| {
+            if n == 1 {
+                a
+            } else {
+                a + (b - a) * i as f64 / (n - 1) as f64
+            }
+        })
+        .collect()
 }
 
 /// A 1-D float64 array of parameters (or knots).
 pub fn extract_vector(obj: &Bound<'_, PyAny>, what: &str) -> PyResult<Vec<f64>> {
     let array: PyArrayLike1<'_, f64, AllowTypeChange> = obj
         .extract()
-        .map_err(|_| invalid(format!("{what} must be a 1-D float array")))?;
+        .map_err(|_| KnotsError::new_err(format!("{what} must be a 1-D float array")))?;
     Ok(match array.as_slice() {
         Ok(s) => s.to_vec(),
         Err(_) => array.as_array().iter().copied().collect(),
@@ -159,9 +180,9 @@ impl<'py> Params<'py> {
                 return Ok(Params::Scalar(t));
             }
         }
-        let array: PyArrayLikeDyn<'py, f64, AllowTypeChange> = obj
-            .extract()
-            .map_err(|_| invalid(format!("{what} must be a float or an array of floats")))?;
+        let array: PyArrayLikeDyn<'py, f64, AllowTypeChange> = obj.extract().map_err(|_| {
+            KarkasError::new_err(format!("{what} must be a float or an array of floats"))
+        })?;
         Ok(Params::Array(array))
     }
 
@@ -197,16 +218,16 @@ pub fn output_array<'py>(
     };
     let array = out
         .cast_into::<PyArrayDyn<f64>>()
-        .map_err(|_| invalid("out must be a float64 numpy.ndarray"))?;
+        .map_err(|_| KarkasError::new_err("out must be a float64 numpy.ndarray"))?;
     if array.shape() != shape {
-        return Err(invalid(format!(
+        return Err(KarkasError::new_err(format!(
             "out has shape {:?}, expected {:?}",
             array.shape(),
             shape
         )));
     }
     if !array.is_c_contiguous() {
-        return Err(invalid("out must be C-contiguous"));
+        return Err(KarkasError::new_err("out must be C-contiguous"));
     }
     Ok(array)
 }
@@ -217,13 +238,13 @@ pub fn write_flat<R>(
     write: impl FnOnce(&mut [f64]) -> R,
 ) -> PyResult<R> {
     let mut rw = array.try_readwrite().map_err(|e| {
-        invalid(format!(
+        KarkasError::new_err(format!(
             "out cannot be written ({e}): is it read-only or does it share memory with the input?"
         ))
     })?;
     let flat = rw
         .as_slice_mut()
-        .map_err(|_| invalid("out must be C-contiguous"))?;
+        .map_err(|_| KarkasError::new_err("out must be C-contiguous"))?;
     Ok(write(flat))
 }
 
@@ -252,4 +273,65 @@ pub fn grid_to_array<'py, const D: usize>(
 /// A new 1-D float64 array holding `values`.
 pub fn vector_to_array<'py>(py: Python<'py>, values: &[f64]) -> Bound<'py, PyArrayDyn<f64>> {
     numpy::PyArray1::from_slice(py, values).to_dyn().clone()
+}
+
+/// A non-negative Python integer as a count, or an `OptionError` naming it.
+pub fn count(value: i64, name: &str) -> PyResult<usize> {
+    usize::try_from(value)
+        .map_err(|_| OptionError::new_err(format!("{name} must be non-negative (got {value})")))
+}
+
+/// `True`/`False` as Python spells them.
+pub fn py_bool(b: bool) -> &'static str {
+    if b {
+        "True"
+    } else {
+        "False"
+    }
+}
+
+/// Flat coordinates and dimension kept for attributes such as `control_points`.
+#[derive(Clone)]
+pub struct FlatPoints {
+    /// The coordinates, `dim` numbers a point.
+    pub coords: Vec<f64>,
+    /// The dimension `d`.
+    pub dim: usize,
+}
+
+impl FlatPoints {
+    /// The points of dimension `D`, flattened.
+    pub fn of<const D: usize>(points: &[Point<D>]) -> Self {
+        FlatPoints {
+            coords: flatten(points).to_vec(),
+            dim: D,
+        }
+    }
+
+    /// A new `(n, d)` array.
+    pub fn to_array<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        by_dim!(self.dim, D => points_to_array::<D>(py, as_points::<D>(&self.coords)))
+    }
+}
+
+/// A 3-D point from a sequence of 3 numbers.
+pub fn point3(p: &[f64], what: &str) -> PyResult<Point3> {
+    match p {
+        [x, y, z] => Ok(Point3::new([*x, *y, *z])),
+        _ => Err(PointsError::new_err(format!(
+            "{what} must have 3 coordinates"
+        ))),
+    }
+}
+
+/// (n, 3) points.
+pub fn points3(obj: &Bound<'_, PyAny>, what: &str) -> PyResult<Vec<Point3>> {
+    let pts = PointsArray::extract(obj, what)?;
+    if pts.dim() != 3 {
+        return Err(PointsError::new_err(format!(
+            "{what} must have 3 coordinates per point (got {})",
+            pts.dim()
+        )));
+    }
+    Ok(as_points::<3>(&pts.flat()).to_vec())
 }

@@ -1,66 +1,15 @@
 //! The Python base class `Curve`: vectorized evaluation of any karkas curve in 2-D or 3-D.
 //!
 //! Every concrete curve class (`LLCurve`, `CubicSpline`, `HermiteSpline`, ...) extends it and
-//! hands it a [`CurveImpl`]: the curve behind a dimension-free interface that evaluates whole
-//! parameter arrays into flat output buffers (one dynamic call per batch, the library's
-//! `eval_into` inside).
+//! hands it a [`CurveImpl`].
 
 use std::sync::Arc;
 
-use karkas::PiecewiseCurve;
 use numpy::PyArrayDyn;
 use pyo3::prelude::*;
 
-use crate::convert::{as_points_mut, maybe_detach, output_array, write_flat, Params};
-
-/// A karkas curve of either dimension, evaluated on flat buffers.
-pub trait CurveImpl: Send + Sync {
-    /// The dimension `d` (2 or 3).
-    fn dim(&self) -> usize;
-    /// The parameter domain `(a, b)`.
-    fn domain(&self) -> (f64, f64);
-    /// True for a closed curve (evaluation wraps by the period).
-    fn closed(&self) -> bool;
-    /// The parameters where the pieces meet, ends included.
-    fn breakpoints(&self) -> Vec<f64>;
-    /// The order of continuity at the breakpoints.
-    fn continuity(&self) -> usize;
-    /// Writes the `k`-th derivative (0: the point) at every `ts[i]` into `out[d i..d i + d]`.
-    fn eval_flat(&self, ts: &[f64], k: usize, out: &mut [f64]);
-}
-
-/// A karkas curve of dimension `D` behind [`CurveImpl`].
-pub struct Wrapped<C, const D: usize>(pub C);
-
-impl<C, const D: usize> CurveImpl for Wrapped<C, D>
-where
-    C: PiecewiseCurve<D> + Send + Sync,
-{
-    fn dim(&self) -> usize {
-        D
-    }
-    fn domain(&self) -> (f64, f64) {
-        let d = self.0.domain();
-        (d.start, d.end)
-    }
-    fn closed(&self) -> bool {
-        self.0.is_closed()
-    }
-    fn breakpoints(&self) -> Vec<f64> {
-        self.0.breakpoints()
-    }
-    fn continuity(&self) -> usize {
-        self.0.continuity()
-    }
-    fn eval_flat(&self, ts: &[f64], k: usize, out: &mut [f64]) {
-        let out = as_points_mut::<D>(out);
-        if k == 0 {
-            self.0.eval_into(ts, out);
-        } else {
-            self.0.deriv_into(ts, k, out);
-        }
-    }
-}
+use crate::convert::{maybe_detach, output_array, uniform, vector_to_array, write_flat, Params};
+use crate::wrapper::CurveImpl;
 
 /// Base class of every karkas curve.
 ///
@@ -129,16 +78,7 @@ impl PyCurve {
 
     /// c.sample(n): `n` points at uniformly spaced parameters over the domain, shape (n, d).
     fn sample<'py>(&self, py: Python<'py>, n: usize) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-        let (a, b) = self.inner.domain();
-        let ts: Vec<f64> = (0..n)
-            .map(|i| {
-                if n == 1 {
-                    a
-                } else {
-                    a + (b - a) * i as f64 / (n - 1) as f64
-                }
-            })
-            .collect();
+        let ts = uniform(self.inner.domain(), n);
         let array = PyArrayDyn::<f64>::zeros(py, &[n, self.inner.dim()][..], false);
         let inner = &self.inner;
         write_flat(&array, |flat| {
@@ -168,7 +108,7 @@ impl PyCurve {
     /// The parameters where the polynomial pieces meet, ends included.
     #[getter]
     fn breakpoints<'py>(&self, py: Python<'py>) -> Bound<'py, PyArrayDyn<f64>> {
-        crate::convert::vector_to_array(py, &self.inner.breakpoints())
+        vector_to_array(py, &self.inner.breakpoints())
     }
 
     /// The order of continuity at the breakpoints (C^k).

@@ -1,5 +1,6 @@
 //! Exports through karkas-io: OBJ and binary STL meshes of sampled surfaces, CSV of curve and
-//! surface samples. Files are written atomically (nothing is left behind on failure).
+//! surface samples. Files are written atomically (nothing is left behind on failure); a file
+//! that cannot be written raises `OSError`.
 
 use std::path::PathBuf;
 
@@ -7,21 +8,16 @@ use karkas::Point3;
 use karkas_io::obj::write_surface_obj;
 use karkas_io::stl::write_surface_stl;
 use karkas_io::write::{write_curve_csv, write_surface_csv};
-use pyo3::exceptions::PyOSError;
 use pyo3::prelude::*;
 
-use crate::convert::{as_points, check_dim, extract_vector, invalid, GridArray, PointsArray};
-use crate::curves::by_dim;
-
-fn os_error(e: karkas_io::IoError) -> PyErr {
-    PyOSError::new_err(e.to_string())
-}
+use crate::convert::{as_points, by_dim, check_dim, extract_vector, GridArray, PointsArray};
+use crate::errors::{file_error, PointsError};
 
 /// A (nu, nv, 3) grid of points.
 fn grid3(grid: &Bound<'_, PyAny>) -> PyResult<(usize, usize, Vec<Point3>)> {
     let g = GridArray::extract(grid, "grid")?;
     if g.dim() != 3 {
-        return Err(invalid(format!(
+        return Err(PointsError::new_err(format!(
             "grid must have 3 coordinates per point (got {})",
             g.dim()
         )));
@@ -36,7 +32,7 @@ fn grid3(grid: &Bound<'_, PyAny>) -> PyResult<(usize, usize, Vec<Point3>)> {
 pub fn export_obj(py: Python<'_>, path: PathBuf, grid: &Bound<'_, PyAny>) -> PyResult<()> {
     let (nu, nv, points) = grid3(grid)?;
     py.detach(|| write_surface_obj(&path, nu, nv, &points))
-        .map_err(os_error)
+        .map_err(file_error)
 }
 
 /// export_stl(path, grid): writes a sampled surface (nu, nv, 3) as a binary STL mesh.
@@ -44,7 +40,7 @@ pub fn export_obj(py: Python<'_>, path: PathBuf, grid: &Bound<'_, PyAny>) -> PyR
 pub fn export_stl(py: Python<'_>, path: PathBuf, grid: &Bound<'_, PyAny>) -> PyResult<()> {
     let (nu, nv, points) = grid3(grid)?;
     py.detach(|| write_surface_stl(&path, nu, nv, &points))
-        .map_err(os_error)
+        .map_err(file_error)
 }
 
 /// export_curve_csv(path, t, points): writes curve samples as CSV with header t,x,y or
@@ -62,7 +58,7 @@ pub fn export_curve_csv(
     let flat = pts.flat();
     by_dim!(dim, D => {
         let p = as_points::<D>(&flat);
-        py.detach(|| write_curve_csv(&path, &ts, p)).map_err(os_error)
+        py.detach(|| write_curve_csv(&path, &ts, p)).map_err(file_error)
     })
 }
 
@@ -79,5 +75,5 @@ pub fn export_surface_csv(
     let (us, vs) = (extract_vector(u, "u")?, extract_vector(v, "v")?);
     let (_, _, points) = grid3(grid)?;
     py.detach(|| write_surface_csv(&path, &us, &vs, &points))
-        .map_err(os_error)
+        .map_err(file_error)
 }

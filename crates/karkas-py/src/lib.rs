@@ -3,16 +3,28 @@
 //! Built by maturin into the Python module `karkas` (see `pyproject.toml`). Points are float64
 //! arrays of shape `(n, d)`, grids `(nu, nv, d)`, `d` in {2, 3}. Evaluation writes straight
 //! into the output array (`out=`) with the GIL released for large batches; construction with
-//! the GIL released too. Bad input raises `ValueError` with the library's message.
+//! the GIL released too. Bad input raises `karkas.KarkasError` (a `ValueError`) or one of its
+//! typed subclasses, with the library's message (see [`errors`]).
+//!
+//! One file per library module (`ll`, `param`, `fit`, `dps`, `coons`, `implicit`, `section`,
+//! `measure`) plus `export` (karkas-io); the base classes `Curve` and `Surface` in `curve` and
+//! `surface` over the dimension-free interfaces of `wrapper`; arrays in `convert`; exceptions
+//! in `errors`.
 
 mod convert;
+mod coons;
 mod curve;
-mod curves;
-mod discrete;
+mod dps;
+mod errors;
 mod export;
-mod extras;
+mod fit;
+mod implicit;
+mod ll;
+mod measure;
+mod param;
+mod section;
 mod surface;
-mod surfaces;
+mod wrapper;
 
 use pyo3::prelude::*;
 
@@ -30,24 +42,25 @@ static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 #[pymodule(name = "karkas")]
 fn karkas_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    errors::register(m)?;
     m.add_class::<curve::PyCurve>()?;
-    m.add_class::<curves::PyLlCurve>()?;
-    m.add_class::<curves::PyCubicSpline>()?;
-    m.add_class::<curves::PyHermiteSpline>()?;
-    m.add_function(wrap_pyfunction!(curves::fit_curve, m)?)?;
+    m.add_class::<ll::PyLlCurve>()?;
+    m.add_class::<param::PyCubicSpline>()?;
+    m.add_class::<fit::PyHermiteSpline>()?;
+    m.add_function(wrap_pyfunction!(fit::fit_curve, m)?)?;
     m.add_class::<surface::PySurface>()?;
-    m.add_class::<surfaces::PyLlSurface>()?;
-    m.add_class::<surfaces::PyBicubicSurface>()?;
-    m.add_class::<discrete::PyDiscreteSpline>()?;
-    m.add_class::<discrete::PyTubeSurface>()?;
-    m.add_class::<extras::PyCoonsSurface>()?;
-    m.add_class::<extras::PySectionCurve>()?;
-    m.add_class::<extras::PyImplicitSurface>()?;
-    m.add_function(wrap_pyfunction!(extras::hausdorff, m)?)?;
-    m.add_function(wrap_pyfunction!(extras::hausdorff_to_implicit, m)?)?;
-    m.add_function(wrap_pyfunction!(extras::vary, m)?)?;
-    m.add_function(wrap_pyfunction!(extras::curve_parameters, m)?)?;
-    m.add_function(wrap_pyfunction!(extras::grid_parameters, m)?)?;
+    m.add_class::<ll::PyLlSurface>()?;
+    m.add_class::<param::PyBicubicSurface>()?;
+    m.add_class::<dps::PyDiscreteSpline>()?;
+    m.add_class::<dps::PyTubeSurface>()?;
+    m.add_class::<coons::PyCoonsSurface>()?;
+    m.add_class::<section::PySectionCurve>()?;
+    m.add_class::<implicit::PyImplicitSurface>()?;
+    m.add_function(wrap_pyfunction!(measure::hausdorff, m)?)?;
+    m.add_function(wrap_pyfunction!(measure::hausdorff_to_implicit, m)?)?;
+    m.add_function(wrap_pyfunction!(ll::vary, m)?)?;
+    m.add_function(wrap_pyfunction!(param::curve_parameters, m)?)?;
+    m.add_function(wrap_pyfunction!(param::grid_parameters, m)?)?;
     m.add_function(wrap_pyfunction!(export::export_obj, m)?)?;
     m.add_function(wrap_pyfunction!(export::export_stl, m)?)?;
     m.add_function(wrap_pyfunction!(export::export_curve_csv, m)?)?;

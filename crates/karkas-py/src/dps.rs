@@ -7,10 +7,10 @@ use numpy::PyArrayDyn;
 use pyo3::prelude::*;
 
 use crate::convert::{
-    as_points, as_points_mut, check_dim, grid_to_array, maybe_detach, output_array,
-    points_to_array, value_error, write_flat, GridArray, PointsArray,
+    as_points, as_points_mut, by_dim, check_dim, count, grid_to_array, maybe_detach, output_array,
+    points_to_array, write_flat, GridArray, PointsArray,
 };
-use crate::curves::{by_dim, count};
+use crate::errors::{library_error, PointsError};
 
 /// A discrete spline of either dimension.
 enum AnySpline {
@@ -52,7 +52,7 @@ impl PyDiscreteSpline {
                     DiscreteSpline::<D>::from_poles(p, order, n)
                 }
             })
-            .map_err(value_error)?;
+            .map_err(library_error)?;
             wrap_spline(s)
         });
         Ok(PyDiscreteSpline {
@@ -170,7 +170,8 @@ enum AnyTube {
     D3(TubeSurface<3>),
 }
 
-/// A closed tube through a skeleton of closed discrete curves (formula (3) of the seed).
+/// A closed tube through a skeleton of closed discrete curves (formula (3) of Malozemov,
+/// Khorokhonov and Chashnikov).
 ///
 /// TubeSurface(along, across, n1, n2, r1=3, r2=3): along (m1, N2, d) are m1 closed curves of
 /// N2 = m2 n2 samples, across (m2, N1, d) are m2 closed curves of N1 = m1 n1 samples, with
@@ -199,7 +200,7 @@ impl PyTubeSurface {
         let b = GridArray::extract(across, "across")?;
         let dim = check_dim(a.dim(), "along")?;
         if b.dim() != dim {
-            return Err(crate::convert::invalid(format!(
+            return Err(PointsError::new_err(format!(
                 "along has {dim} coordinates per point, across {}",
                 b.dim()
             )));
@@ -213,7 +214,7 @@ impl PyTubeSurface {
         let tube = by_dim!(dim, D => {
             let (ga, gb): (Grid<Point<D>>, Grid<Point<D>>) = (a.grid::<D>()?, b.grid::<D>()?);
             let t = maybe_detach(py, ga.as_slice().len(), || TubeSurface::<D>::new(&ga, &gb, n1, n2, r1, r2))
-                .map_err(value_error)?;
+                .map_err(library_error)?;
             wrap_tube(t)
         });
         Ok(PyTubeSurface { tube })

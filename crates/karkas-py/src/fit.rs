@@ -1,0 +1,176 @@
+//! Fitting measured points (Kuznetsov, Filatov): `fit_curve` and the Python class
+//! `HermiteSpline` it returns.
+
+use std::sync::Arc;
+
+use karkas::fit::{self, FitOptions, HermiteSpline};
+use numpy::PyArrayDyn;
+use pyo3::prelude::*;
+
+use crate::convert::{
+    as_points, by_dim, check_dim, count, extract_vector, vector_to_array, FlatPoints, PointsArray,
+};
+use crate::curve::PyCurve;
+use crate::errors::{library_error, KnotsError, OptionError};
+use crate::wrapper::{CurveImpl, Wrapped};
+
+/// A C^1 cubic Hermite spline (a cubic spline of defect 2) on [0, 1], as returned by
+/// fit_curve: values and derivatives at its knots.
+#[pyclass(extends = PyCurve, module = "karkas", name = "HermiteSpline", frozen)]
+pub struct PyHermiteSpline {
+    knots: Vec<f64>,
+    values: FlatPoints,
+    derivatives: FlatPoints,
+    /// The largest distance of a fitted point from the curve.
+    #[pyo3(get)]
+    max_distance: f64,
+    /// The root-mean-square distance of the fitted points from the curve.
+    #[pyo3(get)]
+    rms_distance: f64,
+    /// f = sum delta_L |J_L|^2, the weighted sum of squared second-derivative jumps.
+    #[pyo3(get)]
+    jump_sum: f64,
+    /// For a fit by tolerance: whether every point is within it (None otherwise).
+    #[pyo3(get)]
+    tolerance_met: Option<bool>,
+    parameters: Vec<f64>,
+    distances: Vec<f64>,
+}
+
+#[pymethods]
+impl PyHermiteSpline {
+    /// The knots 0 = T_1 < ... < T_N = 1.
+    #[getter]
+    fn knots<'py>(&self, py: Python<'py>) -> Bound<'py, PyArrayDyn<f64>> {
+        vector_to_array(py, &self.knots)
+    }
+
+    /// The values R_L at the knots, (N, d).
+    #[getter]
+    fn values<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        self.values.to_array(py)
+    }
+
+    /// The derivatives H_L at the knots, (N, d).
+    #[getter]
+    fn derivatives<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        self.derivatives.to_array(py)
+    }
+
+    /// The foot parameter of every fitted point, (n,).
+    #[getter]
+    fn parameters<'py>(&self, py: Python<'py>) -> Bound<'py, PyArrayDyn<f64>> {
+        vector_to_array(py, &self.parameters)
+    }
+
+    /// The distance of every fitted point from the curve, (n,).
+    #[getter]
+    fn distances<'py>(&self, py: Python<'py>) -> Bound<'py, PyArrayDyn<f64>> {
+        vector_to_array(py, &self.distances)
+    }
+}
+
+/// What a fit is asked for.
+enum Target {
+    /// The knots of the spline.
+    Knots(Vec<f64>),
+    /// The largest distance allowed: knots are added until every point is within it.
+    Tolerance(f64),
+}
+
+/// fit_curve(points, knots=None, tolerance=None, eps=None, pin_ends=False, corners=None,
+/// fairness=None) -> HermiteSpline
+///
+/// Fits measured points (n, d) with a C^1 cubic Hermite spline on [0, 1], minimizing the sum of
+/// squared foot-point distances with the sum of squared second-derivative jumps bounded by eps
+/// (None: no bound). knots: an int (that many uniform knots) or an increasing array from 0 to
+/// 1; tolerance: knots are added until every point is within it. Give knots or tolerance.
+#[pyfunction]
+#[pyo3(signature = (points, knots = None, tolerance = None, eps = None, pin_ends = false, corners = None, fairness = None))]
+#[allow(clippy::too_many_arguments)]
+pub fn fit_curve(
+    py: Python<'_>,
+    points: &Bound<'_, PyAny>,
+    knots: Option<&Bound<'_, PyAny>>,
+    tolerance: Option<f64>,
+    eps: Option<f64>,
+    pin_ends: bool,
+    corners: Option<Vec<f64>>,
+    fairness: Option<f64>,
+) -> PyResult<Py<PyHermiteSpline>> {
+    let pts = PointsArray::extract(points, "points")?;
+    let dim = check_dim(pts.dim(), "points")?;
+    let knots: Option<Vec<f64>> = match knots {
+        None => None,
+        Some(k) => match k.extract::<i64>() {
+            Ok(n) => {
+                let n = count(n, "knots")?;
+                if n < 2 {
+                    return Err(KnotsError::new_err(format!(
+                        "knots must be at least 2 (got {n})"
+                    )));
+                }
+                Some(fit::uniform_knots(n))
+            }
+            Err(_) => Some(extract_vector(k, "knots")?),
+        },
+    };
+    let target = match (knots, tolerance) {
+        (Some(_), Some(_)) => {
+            return Err(OptionError::new_err("give knots or tolerance, not both"))
+        }
+        (Some(knots), None) => Target::Knots(knots),
+        (None, Some(tolerance)) => Target::Tolerance(tolerance),
+        (None, None) => return Err(OptionError::new_err("give the knots or a tolerance")),
+    };
+    let mut options = FitOptions {
+        pin_ends,
+        corners: corners.unwrap_or_default(),
+        ..FitOptions::default()
+    };
+    if let Some(eps) = eps {
+        options.eps = eps;
+    }
+    if let Some(fairness) = fairness {
+        options.fairness = fairness;
+    }
+    let flat = pts.flat();
+    let (inner, sub): (Arc<dyn CurveImpl>, PyHermiteSpline) = by_dim!(dim, D => {
+        let p = as_points::<D>(&flat);
+        let (result, met) = py
+            .detach(|| -> karkas::Result<(fit::CurveFit<D>, Option<bool>)> {
+                match &target {
+                    Target::Knots(knots) => Ok((fit::fit_curve(p, knots, &options)?, None)),
+                    Target::Tolerance(tol) => {
+                        let a = fit::fit_curve_adaptive(p, *tol, &options)?;
+                        Ok((a.fit, Some(a.tolerance_met)))
+                    }
+                }
+            })
+            .map_err(library_error)?;
+        let spline: HermiteSpline<D> = result.spline.clone();
+        let sub = PyHermiteSpline {
+            knots: spline.knots().to_vec(),
+            values: FlatPoints::of(spline.values()),
+            derivatives: FlatPoints::of(spline.derivatives()),
+            max_distance: result.max_distance(),
+            rms_distance: result.rms_distance(),
+            jump_sum: result.jump_sum,
+            tolerance_met: met,
+            parameters: result.parameters.clone(),
+            distances: result.distances.clone(),
+        };
+        (Arc::new(Wrapped::<_, D>(spline)) as Arc<dyn CurveImpl>, sub)
+    });
+    let description = format!(
+        "<karkas.HermiteSpline fit of {} points in {dim}-D, {} knots, max_distance={:.3e}, rms_distance={:.3e}",
+        pts.len(),
+        sub.knots.len(),
+        sub.max_distance,
+        sub.rms_distance
+    );
+    Py::new(
+        py,
+        PyClassInitializer::from(PyCurve::new(inner, description)).add_subclass(sub),
+    )
+}

@@ -1,0 +1,65 @@
+//! Plane sections of surfaces: the Python class `SectionCurve`, one connected piece of a
+//! section (the method of the library's `section` module; `Surface.section` returns them).
+
+use numpy::PyArrayDyn;
+use pyo3::prelude::*;
+
+use karkas::section::SectionCurve;
+
+use crate::convert::{as_points, by_dim, flatten, points_to_array, py_bool};
+
+/// One connected piece of a plane section: a polyline on the surface.
+#[pyclass(module = "karkas", name = "SectionCurve", frozen)]
+pub struct PySectionCurve {
+    points: Vec<f64>,
+    params: Vec<f64>,
+    dim: usize,
+    /// True when the last point joins the first (which is not repeated).
+    #[pyo3(get)]
+    closed: bool,
+    /// The polyline's length (the closing chord included when closed).
+    #[pyo3(get)]
+    length: f64,
+}
+
+impl PySectionCurve {
+    /// The Python object of a piece of a section.
+    pub fn of<const D: usize>(curve: &SectionCurve<D>) -> Self {
+        PySectionCurve {
+            points: flatten(&curve.points).to_vec(),
+            params: curve.params.iter().flat_map(|&(u, v)| [u, v]).collect(),
+            dim: D,
+            closed: curve.closed,
+            length: curve.length(),
+        }
+    }
+}
+
+#[pymethods]
+impl PySectionCurve {
+    /// The points, (n, d); each is the surface at its params.
+    #[getter]
+    fn points<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        by_dim!(self.dim, D => points_to_array::<D>(py, as_points::<D>(&self.points)))
+    }
+
+    /// The surface parameters (u, v) of the points, (n, 2).
+    #[getter]
+    fn params<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        points_to_array::<2>(py, as_points::<2>(&self.params))
+    }
+
+    fn __len__(&self) -> usize {
+        self.params.len() / 2
+    }
+
+    fn __repr__(&self) -> String {
+        format!(
+            "<karkas.SectionCurve {} points in {}-D, closed={}, length={}>",
+            self.params.len() / 2,
+            self.dim,
+            py_bool(self.closed),
+            self.length
+        )
+    }
+}

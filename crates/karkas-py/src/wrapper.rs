@@ -1,0 +1,191 @@
+//! The dimension-free interfaces behind the base classes `Curve` and `Surface`.
+//!
+//! A karkas curve or surface has its dimension `D` as a type parameter; Python objects do not.
+//! [`Wrapped`] and [`WrappedSurface`] put a library object of either dimension behind
+//! [`CurveImpl`] and [`SurfaceImpl`], which evaluate whole parameter arrays into flat output
+//! buffers (one dynamic call per batch, the library's `eval_into` inside). Every concrete class
+//! hands its base class one of these.
+
+use karkas::implicit::ExpressionSurface;
+use karkas::measure::{hausdorff_surface_implicit, Hausdorff};
+use karkas::section::{plane_section, Plane, SectionOptions};
+use karkas::{PiecewiseCurve, Point, Point3, Surface};
+
+use crate::convert::as_points_mut;
+use crate::section::PySectionCurve;
+
+/// A karkas curve of either dimension, evaluated on flat buffers.
+pub trait CurveImpl: Send + Sync {
+    /// The dimension `d` (2 or 3).
+    fn dim(&self) -> usize;
+    /// The parameter domain `(a, b)`.
+    fn domain(&self) -> (f64, f64);
+    /// True for a closed curve (evaluation wraps by the period).
+    fn closed(&self) -> bool;
+    /// The parameters where the pieces meet, ends included.
+    fn breakpoints(&self) -> Vec<f64>;
+    /// The order of continuity at the breakpoints.
+    fn continuity(&self) -> usize;
+    /// Writes the `k`-th derivative (0: the point) at every `ts[i]` into `out[d i..d i + d]`.
+    fn eval_flat(&self, ts: &[f64], k: usize, out: &mut [f64]);
+}
+
+/// A karkas curve of dimension `D` behind [`CurveImpl`].
+pub struct Wrapped<C, const D: usize>(pub C);
+
+impl<C, const D: usize> CurveImpl for Wrapped<C, D>
+where
+    C: PiecewiseCurve<D> + Send + Sync,
+{
+    fn dim(&self) -> usize {
+        D
+    }
+    fn domain(&self) -> (f64, f64) {
+        let d = self.0.domain();
+        (d.start, d.end)
+    }
+    fn closed(&self) -> bool {
+        self.0.is_closed()
+    }
+    fn breakpoints(&self) -> Vec<f64> {
+        self.0.breakpoints()
+    }
+    fn continuity(&self) -> usize {
+        self.0.continuity()
+    }
+    fn eval_flat(&self, ts: &[f64], k: usize, out: &mut [f64]) {
+        let out = as_points_mut::<D>(out);
+        if k == 0 {
+            self.0.eval_into(ts, out);
+        } else {
+            self.0.deriv_into(ts, k, out);
+        }
+    }
+}
+/// A karkas surface of either dimension, evaluated on flat buffers.
+pub trait SurfaceImpl: Send + Sync {
+    /// The dimension `d` (2 or 3).
+    fn dim(&self) -> usize;
+    /// The `u` domain.
+    fn domain_u(&self) -> (f64, f64);
+    /// The `v` domain.
+    fn domain_v(&self) -> (f64, f64);
+    /// Closed in `u`, in `v`.
+    fn closed(&self) -> (bool, bool);
+    /// The derivative `(ku, kv)` ((0, 0): the point) on the grid `us x vs`, row-major with `u`
+    /// outer, into `out`.
+    fn grid_flat(&self, us: &[f64], vs: &[f64], ku: usize, kv: usize, out: &mut [f64]);
+    /// The derivative `(ku, kv)` at the pairs `(us[i], vs[i])` into `out`.
+    fn points_flat(&self, us: &[f64], vs: &[f64], ku: usize, kv: usize, out: &mut [f64]);
+    /// The section by the plane `normal . x = offset` (`normal.len() == dim`).
+    fn section(
+        &self,
+        normal: &[f64],
+        offset: f64,
+        options: &SectionOptions,
+    ) -> karkas::Result<Vec<PySectionCurve>>;
+    /// The two-sided Hausdorff distance to the patch of an implicit surface (3-D only).
+    fn hausdorff_implicit(
+        &self,
+        implicit: &ExpressionSurface,
+        patch: &[Point3],
+        samples: (usize, usize),
+    ) -> karkas::Result<Hausdorff>;
+}
+
+/// A surface of dimension `D` seen as one in 3-D (used only when `D == 3`: the coordinates
+/// are copied, missing ones are zero).
+struct Lift<'a, S, const D: usize>(&'a S);
+
+fn lift<const D: usize>(p: Point<D>) -> Point3 {
+    let mut q = Point3::ZERO;
+    for (a, b) in q.0.iter_mut().zip(p.0) {
+        *a = b;
+    }
+    q
+}
+
+impl<S: Surface<D>, const D: usize> Surface<3> for Lift<'_, S, D> {
+    fn domain_u(&self) -> karkas::Interval {
+        self.0.domain_u()
+    }
+    fn domain_v(&self) -> karkas::Interval {
+        self.0.domain_v()
+    }
+    fn is_closed_u(&self) -> bool {
+        self.0.is_closed_u()
+    }
+    fn is_closed_v(&self) -> bool {
+        self.0.is_closed_v()
+    }
+    fn eval(&self, u: f64, v: f64) -> Point3 {
+        lift(self.0.eval(u, v))
+    }
+    fn deriv(&self, u: f64, v: f64, ku: usize, kv: usize) -> Point3 {
+        lift(self.0.deriv(u, v, ku, kv))
+    }
+}
+
+/// A karkas surface of dimension `D` behind [`SurfaceImpl`].
+pub struct WrappedSurface<S, const D: usize>(pub S);
+
+impl<S, const D: usize> SurfaceImpl for WrappedSurface<S, D>
+where
+    S: Surface<D> + Send + Sync,
+{
+    fn dim(&self) -> usize {
+        D
+    }
+    fn domain_u(&self) -> (f64, f64) {
+        let d = self.0.domain_u();
+        (d.start, d.end)
+    }
+    fn domain_v(&self) -> (f64, f64) {
+        let d = self.0.domain_v();
+        (d.start, d.end)
+    }
+    fn closed(&self) -> (bool, bool) {
+        (self.0.is_closed_u(), self.0.is_closed_v())
+    }
+    fn grid_flat(&self, us: &[f64], vs: &[f64], ku: usize, kv: usize, out: &mut [f64]) {
+        let out: &mut [Point<D>] = as_points_mut(out);
+        if ku == 0 && kv == 0 {
+            self.0.eval_grid_into(us, vs, out);
+            return;
+        }
+        for (row, &u) in out.chunks_exact_mut(vs.len().max(1)).zip(us) {
+            for (p, &v) in row.iter_mut().zip(vs) {
+                *p = self.0.deriv(u, v, ku, kv);
+            }
+        }
+    }
+    fn section(
+        &self,
+        normal: &[f64],
+        offset: f64,
+        options: &SectionOptions,
+    ) -> karkas::Result<Vec<PySectionCurve>> {
+        let mut n = Point::<D>::ZERO;
+        n.0.copy_from_slice(normal);
+        let section = plane_section(&self.0, &Plane::new(n, offset)?, options)?;
+        Ok(section.curves.iter().map(PySectionCurve::of).collect())
+    }
+    fn hausdorff_implicit(
+        &self,
+        implicit: &ExpressionSurface,
+        patch: &[Point3],
+        samples: (usize, usize),
+    ) -> karkas::Result<Hausdorff> {
+        hausdorff_surface_implicit(&Lift(&self.0), implicit, patch, samples)
+    }
+    fn points_flat(&self, us: &[f64], vs: &[f64], ku: usize, kv: usize, out: &mut [f64]) {
+        let out: &mut [Point<D>] = as_points_mut(out);
+        for ((p, &u), &v) in out.iter_mut().zip(us).zip(vs) {
+            *p = if ku == 0 && kv == 0 {
+                self.0.eval(u, v)
+            } else {
+                self.0.deriv(u, v, ku, kv)
+            };
+        }
+    }
+}
