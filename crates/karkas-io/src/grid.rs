@@ -102,7 +102,7 @@ pub(crate) fn parse_indexed(
     for ((i, j), (_, p)) in cells {
         points[i * cols + j] = p;
     }
-    Grid::from_row_major(rows, cols, points).map_err(|e| data_error(path, e.to_string()))
+    Grid::from_row_major(rows, cols, points).map_err(|source| IoError::geometry(path, source))
 }
 
 /// The error for the first cell missing in row-major order of a grid with `cols` columns and

@@ -22,7 +22,7 @@ use karkas::{Grid, Point3};
 use serde_json::{json, Value};
 
 use crate::error::IoError;
-use crate::mesh::TriangleMesh;
+use crate::mesh::triangle_mesh::TriangleMesh;
 use crate::write::write_atomic;
 
 /// The vendored three.js release (npm package version).

@@ -66,11 +66,11 @@ pub fn write_curve_picture(
 ) -> Result<(), IoError> {
     let rendered = render_curve_svg_with(plot, overlay);
     if png {
-        let svg = rendered.map_err(|message| IoError::Write {
+        let svg = rendered.map_err(|message| IoError::Picture {
             path: path.to_path_buf(),
-            source: std::io::Error::other(message),
+            message,
         })?;
-        crate::png::write_svg_as_png(path, &svg)
+        crate::picture::png::write_svg_as_png(path, &svg)
     } else {
         write_rendered(path, rendered)
     }
@@ -323,11 +323,11 @@ fn render_chart(
 }
 
 /// Writes a rendered picture to `path` atomically; a rendering error becomes an
-/// [`IoError::Write`] naming `path`, and nothing is written.
+/// [`IoError::Picture`] naming `path`, and nothing is written.
 fn write_rendered(path: &Path, rendered: Result<String, String>) -> Result<(), IoError> {
-    let svg = rendered.map_err(|message| IoError::Write {
+    let svg = rendered.map_err(|message| IoError::Picture {
         path: path.to_path_buf(),
-        source: std::io::Error::other(message),
+        message,
     })?;
     write_atomic(path, |out| out.write_all(svg.as_bytes()))
 }

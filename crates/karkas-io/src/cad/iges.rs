@@ -17,7 +17,7 @@ use std::path::Path;
 use karkas::bspline::{BSplineCurve, BSplineSurface};
 use karkas::{Curve, Surface};
 
-use crate::cad::{real, CadEntity};
+use crate::cad::entity::{real, CadEntity};
 use crate::error::IoError;
 use crate::write::write_atomic;
 

@@ -21,7 +21,7 @@ use std::path::Path;
 use karkas::bspline::{BSplineCurve, BSplineSurface};
 use karkas::{Point, Surface};
 
-use crate::cad::{knot_runs, real, CadEntity};
+use crate::cad::entity::{knot_runs, real, CadEntity};
 use crate::error::IoError;
 use crate::write::write_atomic;
 

@@ -6,6 +6,8 @@ use karkas::Point;
 use karkas_io::grid::{parse_grid, read_grid};
 use karkas_io::IoError;
 
+use crate::util::scratch;
+
 /// A 2 x 3 frame in row-major order, point (i, j) = (i, j, i + 10 j).
 const ORDERED: &str = "i,j,x,y,z
 0,0,0,0,0
@@ -44,8 +46,7 @@ fn shuffled_rows_and_columns_give_the_same_grid() {
 1,0,0,foo,1,1
 20,2,2,foo,0,0
 ";
-    let dir = tempfile::tempdir().unwrap();
-    let path = dir.path().join("shuffled.csv");
+    let (_dir, path) = scratch("shuffled.csv");
     std::fs::write(&path, shuffled).unwrap();
     assert_eq!(read_grid(&path).unwrap(), ordered);
 }

@@ -20,7 +20,7 @@ use std::path::Path;
 use karkas::{Point2, Point3};
 
 use crate::error::IoError;
-use crate::png::write_svg_as_png;
+use crate::picture::png::write_svg_as_png;
 use crate::write::write_atomic;
 
 /// Width of the drawing area in pixels.
