@@ -4,7 +4,7 @@
 
 use anyhow::{bail, Result};
 use karkas::{Curve, Grid, Point, Point2, Point3};
-use karkas_io::mesh_io::write_surface_mesh;
+use karkas_io::mesh::{write_surface_mesh, MeshOptions};
 use karkas_io::scene::{write_scene_png, write_scene_svg, Scene, SceneCurves, SceneMesh, View};
 use karkas_io::svg::{write_curve_picture, CurveOverlay, CurvePlot};
 use karkas_io::viewer::{write_viewer_html, ViewerCurve, ViewerScene, ViewerSurface};
@@ -69,7 +69,7 @@ pub fn write_surface(
             write_viewer_html(output, &scene)?;
         }
         OutputFormat::Csv => bail!("internal: CSV is written by the command"),
-        mesh => write_surface_mesh(output, mesh, samples)?,
+        _ => write_surface_mesh(output, samples, &MeshOptions::default())?,
     }
     Ok(())
 }
