@@ -17,12 +17,12 @@
 //! Writing (always atomically, see [`write::write_atomic`]):
 //! - [`write`](mod@write): sampled curves and surfaces, discrete curves, grids, indexed grids
 //!   and sections as CSV;
-//! - [`picture`]: [`svg`](picture::svg) pictures of a planar curve over its input points, of a
+//! - [`picture`]: [`svg`] pictures of a planar curve over its input points, of a
 //!   discrete curve, and of wireframes; a shaded surface in space with curves on it
-//!   ([`scene`](picture::scene)); any of these rendered to PNG ([`png`](picture::png));
+//!   ([`scene`]); any of these rendered to PNG ([`png`]);
 //! - [`mesh`]: the triangle mesh every mesh format takes and one file per format, each
-//!   writing and reading it: [`obj`](mesh::obj), [`stl`](mesh::stl), [`ply`](mesh::ply),
-//!   [`vtk`](mesh::vtk) (legacy VTK and XML structured grids), [`glb`](mesh::glb) (binary
+//!   writing and reading it: [`obj`], [`stl`], [`ply`],
+//!   [`vtk`] (legacy VTK and XML structured grids), [`glb`] (binary
 //!   glTF); [`mesh::write_mesh`] and [`mesh::read_mesh`] choose the format by extension;
 //! - [`viewer`]: a self-contained HTML page showing surfaces and curves in 3-D.
 //! - [`cad`]: exact B-spline curves and surfaces ([`cad::CadEntity`], from

@@ -1,4 +1,4 @@
-//! What the CAD writers ([`step`](super::step), [`iges`](super::iges)) write: exact B-spline
+//! What the CAD writers (the `step` and `iges` modules) write: exact B-spline
 //! curves and surfaces of karkas (see [`karkas::bspline`]), in 3-D, and the number and knot
 //! formatting both formats share.
 

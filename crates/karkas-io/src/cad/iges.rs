@@ -217,7 +217,7 @@ pub fn iges_text(entities: &[CadEntity<'_>], name: &str) -> String {
 }
 
 /// Writes `entities` to the IGES file `path` (atomically; see
-/// [`write_atomic`](crate::write::write_atomic)).
+/// [`write_atomic`]).
 pub fn write_iges(path: &Path, entities: &[CadEntity<'_>]) -> Result<(), IoError> {
     let name = path
         .file_stem()

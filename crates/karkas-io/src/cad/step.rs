@@ -225,7 +225,7 @@ pub fn step_text(entities: &[CadEntity<'_>], name: &str) -> String {
 }
 
 /// Writes `entities` to the STEP file `path` (atomically; see
-/// [`write_atomic`](crate::write::write_atomic)). The product is named after the file stem.
+/// [`write_atomic`]). The product is named after the file stem.
 pub fn write_step(path: &Path, entities: &[CadEntity<'_>]) -> Result<(), IoError> {
     let name = path
         .file_stem()

@@ -1,6 +1,6 @@
 //! What can be wrong with a triangle mesh or a sample grid handed to a mesh writer, or with a
-//! mesh read from a file: the checks of [`TriangleMesh::validate`](super::TriangleMesh::validate)
-//! and of the grid and size limits of the formats.
+//! mesh read from a file: the checks of `TriangleMesh::validate` and the grid and size limits
+//! of the formats.
 
 /// Why a mesh (or a sample grid) cannot be written, or why a mesh read from a file is unusable.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]

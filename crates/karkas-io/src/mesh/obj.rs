@@ -4,8 +4,8 @@
 //! text lines, so it is written and parsed by hand rather than through a crate.
 //!
 //! Writing: `v` lines for the points, `vn` lines for one normal per point (see
-//! [`super::normals`]) and `f a//a b//b c//c` lines for the triangles (see
-//! [`super::triangulate`] for a sample grid), all counter-clockwise seen from the side the
+//! `mesh/normals.rs`) and `f a//a b//b c//c` lines for the triangles (see
+//! `mesh/triangulate.rs` for a sample grid), all counter-clockwise seen from the side the
 //! normals point to. The first line is a comment: `# karkas surface, NU x NV samples` for a
 //! sample grid, `# karkas mesh, N vertices, M triangles` for a general mesh. The seam points of
 //! a closed surface are written twice (no welding).
@@ -25,15 +25,14 @@ use karkas::Point3;
 
 use crate::error::{data_error, IoError, Location};
 use crate::lines::{parse_coordinate, strip_bom};
-use crate::mesh::error::MeshError;
 use crate::mesh::normals::grid_normals;
 use crate::mesh::triangle_mesh::TriangleMesh;
-use crate::mesh::triangulate::grid_triangles;
+use crate::mesh::triangulate::{check_grid, grid_triangles};
 use crate::write::write_atomic;
 
 /// Writes the `nu x nv` sample grid `points` (row-major, `u` outer) as an OBJ mesh at `path`,
 /// atomically. A `points.len()` other than `nu * nv` is an [`IoError::InvalidMesh`]
-/// ([`MeshError::PointCount`]), nothing written.
+/// ([`MeshError::PointCount`](crate::mesh::error::MeshError::PointCount)), nothing written.
 pub fn write_surface_obj(
     path: &Path,
     nu: usize,
@@ -49,7 +48,7 @@ pub fn write_surface_obj(
 
 /// Writes the OBJ text of the `nu x nv` sample grid `points` into `out`.
 ///
-/// Fails with [`io::ErrorKind::InvalidInput`] (carrying [`MeshError::PointCount`]) when
+/// Fails with [`io::ErrorKind::InvalidInput`] (carrying [`MeshError::PointCount`](crate::mesh::error::MeshError::PointCount)) when
 /// `points.len() != nu * nv`.
 pub fn render_surface_obj(
     nu: usize,
@@ -113,19 +112,6 @@ fn render_body(
         writeln!(out, "f {p}//{p} {q}//{q} {r}//{r}")?;
     }
     Ok(())
-}
-
-/// [`MeshError::PointCount`] unless `points == nu * nv`.
-pub(crate) fn check_grid(nu: usize, nv: usize, points: usize) -> Result<(), MeshError> {
-    if nu.checked_mul(nv) == Some(points) {
-        Ok(())
-    } else {
-        Err(MeshError::PointCount {
-            points,
-            rows: nu,
-            cols: nv,
-        })
-    }
 }
 
 /// The mesh of OBJ `text` (see the module docs); `path` names the file in errors.

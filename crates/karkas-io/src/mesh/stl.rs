@@ -6,8 +6,8 @@
 //! (`solid` / `facet normal` / `outer loop` / `vertex` lines) is written directly since
 //! `stl_io` writes binary only.
 //!
-//! Facet normals are the triangles' own (see [`super::normals`], zero when degenerate). A sample
-//! grid is triangulated as in [`super::triangulate`]; its triangles are produced one at a time
+//! Facet normals are the triangles' own (see `mesh/normals.rs`, zero when degenerate). A sample
+//! grid is triangulated as in `mesh/triangulate.rs`; its triangles are produced one at a time
 //! as they are written, so no copy of the mesh is held in memory. A closed surface is passed
 //! with its first row and column repeated at the end, so the cells cover the seam; the repeated
 //! points are exact copies, and the mesh is closed in the sense STL knows (its edges meet at
@@ -24,9 +24,8 @@ use stl_io::{Normal, Triangle, Vertex};
 use crate::error::{data_error, IoError};
 use crate::mesh::error::MeshError;
 use crate::mesh::normals::triangle_normal;
-use crate::mesh::obj::check_grid;
 use crate::mesh::triangle_mesh::TriangleMesh;
-use crate::mesh::triangulate::grid_triangles;
+use crate::mesh::triangulate::{check_grid, grid_triangles};
 use crate::write::write_atomic;
 
 /// Writes the `nu x nv` sample grid `points` (row-major, `u` outer) as a binary STL mesh at

@@ -8,6 +8,8 @@
 //!
 //! The triangles are produced on demand (O(1) memory); there are `2 (nu-1)(nv-1)` of them.
 
+use crate::mesh::error::MeshError;
+
 /// The triangles of the `nu x nv` sample grid as triples of 0-based row-major sample indices,
 /// produced on demand (see the module docs).
 pub(crate) fn grid_triangles(nu: usize, nv: usize) -> impl ExactSizeIterator<Item = [usize; 3]> {
@@ -23,6 +25,19 @@ pub(crate) fn grid_triangles(nu: usize, nv: usize) -> impl ExactSizeIterator<Ite
             [index(a, b), index(a + 1, b + 1), index(a, b + 1)]
         }
     })
+}
+
+/// [`MeshError::PointCount`] unless `points == nu * nv`.
+pub(crate) fn check_grid(nu: usize, nv: usize, points: usize) -> Result<(), MeshError> {
+    if nu.checked_mul(nv) == Some(points) {
+        Ok(())
+    } else {
+        Err(MeshError::PointCount {
+            points,
+            rows: nu,
+            cols: nv,
+        })
+    }
 }
 
 #[cfg(test)]

@@ -4,6 +4,7 @@
 mod errors;
 mod grid;
 mod indexed_csv;
+mod mesh;
 mod network;
 mod obj;
 mod points;
