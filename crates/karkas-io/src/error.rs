@@ -8,6 +8,7 @@ use std::fmt;
 use std::path::{Path, PathBuf};
 
 use crate::mesh::error::MeshError;
+use crate::picture::error::PictureError;
 
 /// Anything that went wrong reading or writing a file.
 #[derive(Debug, thiserror::Error)]
@@ -120,12 +121,12 @@ pub enum IoError {
         points: usize,
     },
     /// A picture could not be drawn or rendered; nothing is written.
-    #[error("cannot write {}: {message}", .path.display())]
+    #[error("cannot write {}: {source}", .path.display())]
     Picture {
         /// The destination file.
         path: PathBuf,
         /// What the drawing or rendering library reported.
-        message: String,
+        source: PictureError,
     },
     /// The output file name has an extension no writer of the command handles.
     #[error("{}: unknown output extension (use one of: {allowed})", .path.display())]

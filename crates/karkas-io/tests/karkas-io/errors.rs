@@ -106,3 +106,19 @@ fn undecodable_stl_keeps_the_decoder_error() {
     assert!(e.to_string().contains("not a readable STL file"), "{e}");
     assert!(chain_has::<std::io::Error>(&e));
 }
+
+#[test]
+fn picture_errors_carry_the_renderer_error() {
+    let (_dir, path) = scratch("p.png");
+    let e = karkas_io::png::write_svg_as_png(&path, "not svg").unwrap_err();
+    assert!(matches!(e, IoError::Picture { .. }), "{e:?}");
+    assert!(e.to_string().starts_with("cannot write "), "{e}");
+    let picture = e.source().unwrap();
+    assert!(matches!(
+        picture.downcast_ref::<karkas_io::picture::PictureError>(),
+        Some(karkas_io::picture::PictureError::Svg(_))
+    ));
+    // The renderer's own error is one step further down the chain.
+    assert!(picture.source().is_some());
+    assert!(!path.exists());
+}
