@@ -20,6 +20,7 @@ use std::path::Path;
 use karkas::{Point2, Point3};
 
 use crate::error::IoError;
+use crate::mesh::normals::cross;
 use crate::picture::png::write_svg_as_png;
 use crate::write::write_atomic;
 
@@ -263,14 +264,6 @@ fn mesh_cells(rows: usize, cols: usize, points: &[Point3], camera: &Camera) -> V
     }
     cells.sort_by(|a, b| a.depth.total_cmp(&b.depth));
     cells
-}
-
-fn cross(a: Point3, b: Point3) -> Point3 {
-    Point3::new([
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ])
 }
 
 /// The cells as filled polygons (stroked in their own colour, so that no seams show).
