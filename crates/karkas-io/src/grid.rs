@@ -16,7 +16,7 @@ use std::path::Path;
 use karkas::{Grid, Point, Point3};
 
 use crate::error::{data_error, IoError, Location};
-use crate::lines::{csv_rows, is_number, parse_coordinate, read_text, strip_bom, Row};
+use crate::lines::{csv_rows, header_columns, parse_coordinate, read_text, strip_bom, Row};
 
 /// The names of a file of indexed points `a,b,x,y,z`, and how its errors name a cell.
 pub(crate) struct IndexedLayout {
@@ -152,28 +152,7 @@ impl GridColumns {
         path: &Path,
         layout: &IndexedLayout,
     ) -> Result<GridColumns, IoError> {
-        let at = Location::new(path, header.line);
-        let expected = layout.header;
-        if header.fields.iter().all(|f| is_number(f)) {
-            return Err(at.error(format!("missing header: expected the columns {expected}")));
-        }
-        let mut index = [0; 5];
-        for (slot, name) in index.iter_mut().zip(layout.names) {
-            let mut found = header
-                .fields
-                .iter()
-                .enumerate()
-                .filter(|(_, f)| f.eq_ignore_ascii_case(name))
-                .map(|(k, _)| k);
-            *slot = found.next().ok_or_else(|| {
-                at.error(format!(
-                    "the header has no column '{name}' (expected {expected})"
-                ))
-            })?;
-            if found.next().is_some() {
-                return Err(at.error(format!("the header names column '{name}' twice")));
-            }
-        }
+        let index = header_columns(header, path, layout.names, layout.header)?;
         Ok(GridColumns {
             index,
             names: layout.names,

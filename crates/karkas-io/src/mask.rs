@@ -12,7 +12,7 @@ use std::path::Path;
 use karkas::Grid;
 
 use crate::error::{data_error, IoError, Location};
-use crate::lines::{csv_rows, is_number, read_text, strip_bom};
+use crate::lines::{csv_rows, header_columns, read_text, strip_bom};
 
 /// Reads the mask file at `path` for a `rows x cols` grid: `true` for every listed cell.
 pub fn read_cell_mask(path: &Path, rows: usize, cols: usize) -> Result<Grid<bool>, IoError> {
@@ -33,26 +33,7 @@ pub fn parse_cell_mask(
             "empty mask file: expected a header line i,j",
         ));
     };
-    let at = Location::new(path, header.line);
-    if header.fields.iter().all(|f| is_number(f)) {
-        return Err(at.error("missing header: expected the columns i,j"));
-    }
-    let column = |name: &str| {
-        let mut found = header
-            .fields
-            .iter()
-            .enumerate()
-            .filter(|(_, f)| f.eq_ignore_ascii_case(name))
-            .map(|(k, _)| k);
-        let first = found
-            .next()
-            .ok_or_else(|| at.error(format!("the header has no column '{name}' (expected i,j)")))?;
-        if found.next().is_some() {
-            return Err(at.error(format!("the header names column '{name}' twice")));
-        }
-        Ok(first)
-    };
-    let (ci, cj) = (column("i")?, column("j")?);
+    let [ci, cj] = header_columns(header, path, ["i", "j"], "i,j")?;
     let mut mask = Grid::from_fn(rows, cols, |_, _| false);
     let mut first_line = Grid::from_fn(rows, cols, |_, _| 0usize);
     for row in data {

@@ -444,8 +444,8 @@ fn write_legend(svg: &mut String, groups: &[SceneCurves<'_>], baseline: f64) {
     }
 }
 
-/// `text` with the XML special characters escaped.
-fn escape(text: &str) -> String {
+/// `text` with the XML (and HTML) special characters escaped.
+pub(crate) fn escape(text: &str) -> String {
     text.replace('&', "&amp;")
         .replace('<', "&lt;")
         .replace('>', "&gt;")
