@@ -5,6 +5,9 @@
 use karkas::bspline::{BSplineCurve, BSplineSurface};
 use karkas::Point;
 
+use crate::error::IoError;
+use crate::write::write_atomic;
+
 /// One geometric item of a CAD file.
 #[derive(Clone, Copy, Debug)]
 pub enum CadEntity<'a> {
@@ -48,6 +51,21 @@ pub enum CadError {
     /// The library refused the curve in space.
     #[error("{0}")]
     Geometry(#[source] karkas::Error),
+}
+
+/// Writes the CAD file `path` atomically with the text `render(entities, name)`, `name` being
+/// the file stem (`karkas` when it has none).
+pub(crate) fn write_named(
+    path: &std::path::Path,
+    entities: &[CadEntity<'_>],
+    render: fn(&[CadEntity<'_>], &str) -> String,
+) -> Result<(), IoError> {
+    let name = path
+        .file_stem()
+        .and_then(|s| s.to_str())
+        .unwrap_or("karkas");
+    let text = render(entities, name);
+    write_atomic(path, |out| out.write_all(text.as_bytes()))
 }
 
 /// A real number with 17 significant digits (round-trips every `f64`) and an exponent, with
