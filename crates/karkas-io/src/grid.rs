@@ -15,8 +15,10 @@ use std::path::Path;
 
 use karkas::{Grid, Point, Point3};
 
-use crate::error::{data_error, IoError, Location};
-use crate::lines::{csv_rows, header_columns, parse_coordinate, read_text, strip_bom, Row};
+use crate::error::{data_error, IoError};
+use crate::lines::{
+    csv_rows, header_columns, parse_coordinate, read_text, row_location, strip_bom, Row,
+};
 
 /// The names of a file of indexed points `a,b,x,y,z`, and how its errors name a cell.
 pub(crate) struct IndexedLayout {
@@ -162,14 +164,7 @@ impl GridColumns {
 
     /// The cell and point of a data row.
     fn read(&self, row: &Row, path: &Path) -> Result<(usize, usize, Point3), IoError> {
-        let at = Location::new(path, row.line);
-        if row.fields.len() != self.width {
-            return Err(at.error(format!(
-                "expected {} fields, found {}",
-                self.width,
-                row.fields.len()
-            )));
-        }
+        let at = row_location(row, path, self.width)?;
         let field = |k: usize| row.fields[self.index[k]].as_str();
         let grid_index = |k: usize| {
             field(k).parse::<usize>().map_err(|_| {

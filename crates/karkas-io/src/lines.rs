@@ -257,6 +257,23 @@ pub(crate) fn header_columns<const N: usize>(
     Ok(index)
 }
 
+/// The location of `row` in `path`, or a parse error there when the row has not `width`
+/// fields (as many as the header).
+pub(crate) fn row_location<'a>(
+    row: &Row,
+    path: &'a Path,
+    width: usize,
+) -> Result<Location<'a>, IoError> {
+    let at = Location::new(path, row.line);
+    if row.fields.len() != width {
+        return Err(at.error(format!(
+            "expected {width} fields, found {}",
+            row.fields.len()
+        )));
+    }
+    Ok(at)
+}
+
 /// A finite coordinate from `field` of column `column` (1-based), or a parse error at `at`.
 pub(crate) fn parse_coordinate(
     field: &str,

@@ -13,7 +13,9 @@ use std::path::Path;
 use karkas::{Point, Point3};
 
 use crate::error::{data_error, IoError, Location};
-use crate::lines::{csv_rows, header_columns, parse_coordinate, read_text, strip_bom, Row};
+use crate::lines::{
+    csv_rows, header_columns, parse_coordinate, read_text, row_location, strip_bom, Row,
+};
 
 /// The column names of a curve-family file.
 const NAMES: [&str; 4] = ["curve", "x", "y", "z"];
@@ -106,14 +108,7 @@ impl Columns {
     }
 
     fn read(&self, row: &Row, path: &Path) -> Result<(usize, Point3), IoError> {
-        let at = Location::new(path, row.line);
-        if row.fields.len() != self.width {
-            return Err(at.error(format!(
-                "expected {} fields, found {}",
-                self.width,
-                row.fields.len()
-            )));
-        }
+        let at = row_location(row, path, self.width)?;
         let field = |k: usize| row.fields[self.index[k]].as_str();
         let id = field(0).parse::<usize>().map_err(|_| {
             at.error(format!(
