@@ -7,6 +7,9 @@
 use std::fmt;
 use std::path::{Path, PathBuf};
 
+use crate::mesh::error::MeshError;
+use crate::picture::error::PictureError;
+
 /// Anything that went wrong reading or writing a file.
 #[derive(Debug, thiserror::Error)]
 #[non_exhaustive]
@@ -73,6 +76,58 @@ pub enum IoError {
         /// What is wrong with the sample.
         message: String,
     },
+    /// The data read from the file is refused by the geometry library (e.g. a grid it cannot
+    /// hold); the library's error is the source.
+    #[error(transparent)]
+    Geometry(Box<GeometryError>),
+    /// The file is not readable as the format its name says (the decoder's error is the
+    /// source).
+    #[error("{}: not a readable {format} file: {source}", .path.display())]
+    Decode {
+        /// The file.
+        path: PathBuf,
+        /// The format, like `"STL"`.
+        format: &'static str,
+        /// What the decoder reported.
+        source: std::io::Error,
+    },
+    /// A mesh (or sample grid) handed to a mesh writer fails its checks; nothing is written.
+    #[error("cannot write {}: {source}", .path.display())]
+    InvalidMesh {
+        /// The destination file.
+        path: PathBuf,
+        /// What is wrong with the mesh.
+        source: MeshError,
+    },
+    /// A mesh read from the file fails the checks of a mesh (e.g. a face names a vertex the
+    /// file does not have).
+    #[error("{}: {source}", .path.display())]
+    MalformedMesh {
+        /// The file.
+        path: PathBuf,
+        /// What is wrong with the mesh.
+        source: MeshError,
+    },
+    /// The columns handed to a CSV writer differ in length; nothing is written.
+    #[error("cannot write {}: {parameters} {what} for {points} points", .path.display())]
+    LengthMismatch {
+        /// The destination file.
+        path: PathBuf,
+        /// What the parameters are, like `"parameters"` or `"u x v parameters"`.
+        what: &'static str,
+        /// The number of parameters (or parameter pairs).
+        parameters: usize,
+        /// The number of points.
+        points: usize,
+    },
+    /// A picture could not be drawn or rendered; nothing is written.
+    #[error("cannot write {}: {source}", .path.display())]
+    Picture {
+        /// The destination file.
+        path: PathBuf,
+        /// What the drawing or rendering library reported.
+        source: PictureError,
+    },
     /// The output file name has an extension no writer of the command handles.
     #[error("{}: unknown output extension (use one of: {allowed})", .path.display())]
     UnknownExtension {
@@ -81,6 +136,27 @@ pub enum IoError {
         /// The accepted extensions, like `".csv, .svg"`.
         allowed: String,
     },
+}
+
+/// What [`IoError::Geometry`] holds: the file and the error of the geometry library (its
+/// source), boxed so that every `Result<_, IoError>` stays small.
+#[derive(Debug, thiserror::Error)]
+#[error("{}: {source}", .path.display())]
+pub struct GeometryError {
+    /// The file.
+    pub path: PathBuf,
+    /// What the library reported.
+    pub source: karkas::Error,
+}
+
+impl IoError {
+    /// An [`IoError::Geometry`]: the library refused what `path` holds.
+    pub fn geometry(path: &Path, source: karkas::Error) -> IoError {
+        IoError::Geometry(Box::new(GeometryError {
+            path: path.to_path_buf(),
+            source,
+        }))
+    }
 }
 
 /// A 1-based line of a named file: where a parse error points.

@@ -8,15 +8,17 @@
 //! skipped as in the other formats).
 //!
 //! The same layout with other index names holds the skeleton curves of a tube
-//! ([`crate::skeleton`]); the parser here serves both.
+//! (the `skeleton` module); the parser here serves both.
 
 use std::collections::HashMap;
 use std::path::Path;
 
 use karkas::{Grid, Point, Point3};
 
-use crate::error::{data_error, IoError, Location};
-use crate::lines::{csv_rows, is_number, parse_coordinate, read_text, strip_bom, Row};
+use crate::error::{data_error, IoError};
+use crate::lines::{
+    csv_rows, header_columns, parse_coordinate, read_text, row_location, strip_bom, Row,
+};
 
 /// The names of a file of indexed points `a,b,x,y,z`, and how its errors name a cell.
 pub(crate) struct IndexedLayout {
@@ -102,7 +104,7 @@ pub(crate) fn parse_indexed(
     for ((i, j), (_, p)) in cells {
         points[i * cols + j] = p;
     }
-    Grid::from_row_major(rows, cols, points).map_err(|e| data_error(path, e.to_string()))
+    Grid::from_row_major(rows, cols, points).map_err(|source| IoError::geometry(path, source))
 }
 
 /// The error for the first cell missing in row-major order of a grid with `cols` columns and
@@ -152,28 +154,7 @@ impl GridColumns {
         path: &Path,
         layout: &IndexedLayout,
     ) -> Result<GridColumns, IoError> {
-        let at = Location::new(path, header.line);
-        let expected = layout.header;
-        if header.fields.iter().all(|f| is_number(f)) {
-            return Err(at.error(format!("missing header: expected the columns {expected}")));
-        }
-        let mut index = [0; 5];
-        for (slot, name) in index.iter_mut().zip(layout.names) {
-            let mut found = header
-                .fields
-                .iter()
-                .enumerate()
-                .filter(|(_, f)| f.eq_ignore_ascii_case(name))
-                .map(|(k, _)| k);
-            *slot = found.next().ok_or_else(|| {
-                at.error(format!(
-                    "the header has no column '{name}' (expected {expected})"
-                ))
-            })?;
-            if found.next().is_some() {
-                return Err(at.error(format!("the header names column '{name}' twice")));
-            }
-        }
+        let index = header_columns(header, path, layout.names, layout.header)?;
         Ok(GridColumns {
             index,
             names: layout.names,
@@ -183,14 +164,7 @@ impl GridColumns {
 
     /// The cell and point of a data row.
     fn read(&self, row: &Row, path: &Path) -> Result<(usize, usize, Point3), IoError> {
-        let at = Location::new(path, row.line);
-        if row.fields.len() != self.width {
-            return Err(at.error(format!(
-                "expected {} fields, found {}",
-                self.width,
-                row.fields.len()
-            )));
-        }
+        let at = row_location(row, path, self.width)?;
         let field = |k: usize| row.fields[self.index[k]].as_str();
         let grid_index = |k: usize| {
             field(k).parse::<usize>().map_err(|_| {
@@ -230,18 +204,5 @@ mod tests {
             .unwrap_err()
             .to_string();
         assert_eq!(e, "g.csv: grid cell (i=1, j=0): missing");
-    }
-
-    #[test]
-    fn written_grids_read_back_exactly() {
-        let dir = tempfile::tempdir().unwrap();
-        let path = dir.path().join("g.csv");
-        let grid = Grid::from_fn(2, 3, |i, j| {
-            Point([0.1 * i as f64, 1.0 / 3.0 + j as f64, -2e-17])
-        });
-        crate::write::write_grid_csv(&path, &grid).unwrap();
-        assert_eq!(read_grid(&path).unwrap(), grid);
-        let text = std::fs::read_to_string(&path).unwrap();
-        assert!(text.starts_with("i,j,x,y,z\n0,0,0,0.3333333333333333,-0.00000000000000002\n"));
     }
 }

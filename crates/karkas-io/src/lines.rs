@@ -223,6 +223,57 @@ pub(crate) fn open_buffered(path: &Path) -> Result<std::io::BufReader<std::fs::F
         })
 }
 
+/// The 0-based positions of the columns `names` in the header row `header` of `path` (names
+/// matched case-insensitively, other columns ignored); `expected` lists the columns for the
+/// messages. Errors: a header of numbers only (no header), a column missing, a column named
+/// twice.
+pub(crate) fn header_columns<const N: usize>(
+    header: &Row,
+    path: &Path,
+    names: [&str; N],
+    expected: &str,
+) -> Result<[usize; N], IoError> {
+    let at = Location::new(path, header.line);
+    if header.fields.iter().all(|f| is_number(f)) {
+        return Err(at.error(format!("missing header: expected the columns {expected}")));
+    }
+    let mut index = [0; N];
+    for (slot, name) in index.iter_mut().zip(names) {
+        let mut found = header
+            .fields
+            .iter()
+            .enumerate()
+            .filter(|(_, f)| f.eq_ignore_ascii_case(name))
+            .map(|(k, _)| k);
+        *slot = found.next().ok_or_else(|| {
+            at.error(format!(
+                "the header has no column '{name}' (expected {expected})"
+            ))
+        })?;
+        if found.next().is_some() {
+            return Err(at.error(format!("the header names column '{name}' twice")));
+        }
+    }
+    Ok(index)
+}
+
+/// The location of `row` in `path`, or a parse error there when the row has not `width`
+/// fields (as many as the header).
+pub(crate) fn row_location<'a>(
+    row: &Row,
+    path: &'a Path,
+    width: usize,
+) -> Result<Location<'a>, IoError> {
+    let at = Location::new(path, row.line);
+    if row.fields.len() != width {
+        return Err(at.error(format!(
+            "expected {width} fields, found {}",
+            row.fields.len()
+        )));
+    }
+    Ok(at)
+}
+
 /// A finite coordinate from `field` of column `column` (1-based), or a parse error at `at`.
 pub(crate) fn parse_coordinate(
     field: &str,

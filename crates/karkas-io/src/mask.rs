@@ -11,8 +11,8 @@ use std::path::Path;
 
 use karkas::Grid;
 
-use crate::error::{data_error, IoError, Location};
-use crate::lines::{csv_rows, is_number, read_text, strip_bom};
+use crate::error::{data_error, IoError};
+use crate::lines::{csv_rows, header_columns, read_text, row_location, strip_bom};
 
 /// Reads the mask file at `path` for a `rows x cols` grid: `true` for every listed cell.
 pub fn read_cell_mask(path: &Path, rows: usize, cols: usize) -> Result<Grid<bool>, IoError> {
@@ -33,37 +33,11 @@ pub fn parse_cell_mask(
             "empty mask file: expected a header line i,j",
         ));
     };
-    let at = Location::new(path, header.line);
-    if header.fields.iter().all(|f| is_number(f)) {
-        return Err(at.error("missing header: expected the columns i,j"));
-    }
-    let column = |name: &str| {
-        let mut found = header
-            .fields
-            .iter()
-            .enumerate()
-            .filter(|(_, f)| f.eq_ignore_ascii_case(name))
-            .map(|(k, _)| k);
-        let first = found
-            .next()
-            .ok_or_else(|| at.error(format!("the header has no column '{name}' (expected i,j)")))?;
-        if found.next().is_some() {
-            return Err(at.error(format!("the header names column '{name}' twice")));
-        }
-        Ok(first)
-    };
-    let (ci, cj) = (column("i")?, column("j")?);
+    let [ci, cj] = header_columns(header, path, ["i", "j"], "i,j")?;
     let mut mask = Grid::from_fn(rows, cols, |_, _| false);
     let mut first_line = Grid::from_fn(rows, cols, |_, _| 0usize);
     for row in data {
-        let at = Location::new(path, row.line);
-        if row.fields.len() != header.fields.len() {
-            return Err(at.error(format!(
-                "expected {} fields, found {}",
-                header.fields.len(),
-                row.fields.len()
-            )));
-        }
+        let at = row_location(row, path, header.fields.len())?;
         let index = |k: usize, name: &str, limit: usize| {
             let field = &row.fields[k];
             let value: usize = field.parse().map_err(|_| {

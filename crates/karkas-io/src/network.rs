@@ -13,7 +13,9 @@ use std::path::Path;
 use karkas::{Point, Point3};
 
 use crate::error::{data_error, IoError, Location};
-use crate::lines::{csv_rows, is_number, parse_coordinate, read_text, strip_bom, Row};
+use crate::lines::{
+    csv_rows, header_columns, parse_coordinate, read_text, row_location, strip_bom, Row,
+};
 
 /// The column names of a curve-family file.
 const NAMES: [&str; 4] = ["curve", "x", "y", "z"];
@@ -98,27 +100,7 @@ struct Columns {
 
 impl Columns {
     fn from_header(header: &Row, path: &Path) -> Result<Columns, IoError> {
-        let at = Location::new(path, header.line);
-        if header.fields.iter().all(|f| is_number(f)) {
-            return Err(at.error("missing header: expected the columns curve,x,y,z"));
-        }
-        let mut index = [0; 4];
-        for (slot, name) in index.iter_mut().zip(NAMES) {
-            let mut found = header
-                .fields
-                .iter()
-                .enumerate()
-                .filter(|(_, f)| f.eq_ignore_ascii_case(name))
-                .map(|(k, _)| k);
-            *slot = found.next().ok_or_else(|| {
-                at.error(format!(
-                    "the header has no column '{name}' (expected curve,x,y,z)"
-                ))
-            })?;
-            if found.next().is_some() {
-                return Err(at.error(format!("the header names column '{name}' twice")));
-            }
-        }
+        let index = header_columns(header, path, NAMES, "curve,x,y,z")?;
         Ok(Columns {
             index,
             width: header.fields.len(),
@@ -126,14 +108,7 @@ impl Columns {
     }
 
     fn read(&self, row: &Row, path: &Path) -> Result<(usize, Point3), IoError> {
-        let at = Location::new(path, row.line);
-        if row.fields.len() != self.width {
-            return Err(at.error(format!(
-                "expected {} fields, found {}",
-                self.width,
-                row.fields.len()
-            )));
-        }
+        let at = row_location(row, path, self.width)?;
         let field = |k: usize| row.fields[self.index[k]].as_str();
         let id = field(0).parse::<usize>().map_err(|_| {
             at.error(format!(

@@ -22,7 +22,8 @@ use karkas::{Grid, Point3};
 use serde_json::{json, Value};
 
 use crate::error::IoError;
-use crate::mesh::TriangleMesh;
+use crate::mesh::triangle_mesh::TriangleMesh;
+use crate::picture::scene::escape;
 use crate::write::write_atomic;
 
 /// The vendored three.js release (npm package version).
@@ -91,7 +92,7 @@ pub fn render_viewer_html(scene: &ViewerScene) -> String {
     let centre = scene_centre(scene);
     let data = scene_json(scene, centre).to_string().replace("</", "<\\/");
     let b64 = |s: &str| base64::engine::general_purpose::STANDARD.encode(s.as_bytes());
-    let title = escape_html(if scene.title.is_empty() {
+    let title = escape(if scene.title.is_empty() {
         "karkas"
     } else {
         &scene.title
@@ -245,14 +246,6 @@ fn floats(points: &[Point3], centre: Point3) -> Value {
         }
     }
     Value::String(base64::engine::general_purpose::STANDARD.encode(bytes))
-}
-
-/// `text` with the HTML special characters escaped.
-fn escape_html(text: &str) -> String {
-    text.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
-        .replace('"', "&quot;")
 }
 
 #[cfg(test)]

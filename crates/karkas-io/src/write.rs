@@ -56,7 +56,7 @@ pub fn write_atomic(
 /// Writes curve samples as CSV: header `t,x,y` (`D = 2`) or `t,x,y,z` (`D = 3`), one row per
 /// sample `(ts[k], points[k])`. Other dimensions name the coordinates `x1, x2, ...`.
 ///
-/// `ts` and `points` must have the same length, else [`IoError::Write`] (nothing is written).
+/// `ts` and `points` must have the same length, else [`IoError::LengthMismatch`] (nothing is written).
 pub fn write_curve_csv<const D: usize>(
     path: &Path,
     ts: &[f64],
@@ -77,7 +77,7 @@ pub fn write_curve_csv<const D: usize>(
 /// Writes surface samples as CSV: header `u,v,x,y,z`, rows in row-major order of the sample
 /// grid (`u` outer, `v` inner): `points[a * vs.len() + b]` is the point at `(us[a], vs[b])`.
 ///
-/// `points.len()` must be `us.len() * vs.len()`, else [`IoError::Write`] (nothing is written).
+/// `points.len()` must be `us.len() * vs.len()`, else [`IoError::LengthMismatch`] (nothing is written).
 pub fn write_surface_csv(
     path: &Path,
     us: &[f64],
@@ -177,17 +177,21 @@ fn coordinate_names(dim: usize) -> Vec<String> {
     }
 }
 
-/// [`IoError::Write`] unless `parameters == points`.
-fn check_len(path: &Path, what: &str, parameters: usize, points: usize) -> Result<(), IoError> {
+/// [`IoError::LengthMismatch`] unless `parameters == points`.
+fn check_len(
+    path: &Path,
+    what: &'static str,
+    parameters: usize,
+    points: usize,
+) -> Result<(), IoError> {
     if parameters == points {
         return Ok(());
     }
-    Err(IoError::Write {
+    Err(IoError::LengthMismatch {
         path: path.to_path_buf(),
-        source: io::Error::new(
-            io::ErrorKind::InvalidInput,
-            format!("{parameters} {what} for {points} points"),
-        ),
+        what,
+        parameters,
+        points,
     })
 }
 

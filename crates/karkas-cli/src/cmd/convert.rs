@@ -18,8 +18,9 @@ use anyhow::{bail, Context, Result};
 use clap::Args;
 use karkas::{Grid, Point3};
 use karkas_io::mesh::TriangleMesh;
-use karkas_io::mesh_io::{read_mesh, read_surface_samples, write_mesh};
+use karkas_io::mesh::{read_mesh, write_mesh, MeshOptions};
 use karkas_io::points::{read_curve_points, CurvePoints};
+use karkas_io::samples::read_surface_samples;
 use karkas_io::svg::CurveOverlay;
 use karkas_io::viewer::{write_viewer_html, ViewerMesh, ViewerScene};
 use karkas_io::write::write_grid_csv;
@@ -144,11 +145,7 @@ fn write_any_mesh(
             };
             write_viewer_html(output, &scene)?;
         }
-        OutputFormat::Stl if ascii => karkas_io::stl::write_mesh_stl(output, mesh, true)?,
-        OutputFormat::Ply if ascii => {
-            karkas_io::ply::write_mesh_ply(output, mesh, karkas_io::ply::PlyEncoding::Ascii)?
-        }
-        _ => write_mesh(output, format, mesh)?,
+        _ => write_mesh(output, mesh, &MeshOptions { ascii })?,
     }
     Ok(())
 }

@@ -6,7 +6,7 @@ use super::memory::check_memory;
 use super::samples::report_samples;
 use anyhow::{bail, Result};
 use karkas::{Grid, Point3, Surface};
-use karkas_io::mesh_io::write_surface_mesh;
+use karkas_io::mesh::{write_surface_mesh, MeshOptions};
 use karkas_io::obj::write_surface_obj;
 use karkas_io::scene::{write_scene_png, write_scene_svg, Scene, SceneCurves, SceneMesh, View};
 use karkas_io::viewer::{write_viewer_html, ViewerScene, ViewerSurface};
@@ -104,7 +104,7 @@ pub fn write_surface(
             write_viewer_html(output, &scene)?;
         }
         OutputFormat::Csv => bail!("internal: CSV is written by the command"),
-        mesh => write_surface_mesh(output, mesh, samples)?,
+        _ => write_surface_mesh(output, samples, &MeshOptions::default())?,
     }
     Ok(())
 }

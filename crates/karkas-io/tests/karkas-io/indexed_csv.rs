@@ -7,10 +7,11 @@ use karkas::{Grid, Point};
 use karkas_io::skeleton::read_along_curves;
 use karkas_io::write::{write_discrete_curve_csv, write_indexed_grid_csv};
 
+use crate::util::scratch;
+
 #[test]
 fn discrete_curve_csv_is_indexed_from_zero() {
-    let dir = tempfile::tempdir().unwrap();
-    let path = dir.path().join("c.csv");
+    let (_dir, path) = scratch("c.csv");
     write_discrete_curve_csv(&path, &[Point([0.5, -1.0]), Point([0.1, 2.0])]).unwrap();
     assert_eq!(
         std::fs::read_to_string(&path).unwrap(),
@@ -25,8 +26,7 @@ fn discrete_curve_csv_is_indexed_from_zero() {
 
 #[test]
 fn indexed_grid_csv_is_row_major_and_reads_back() {
-    let dir = tempfile::tempdir().unwrap();
-    let path = dir.path().join("f.csv");
+    let (_dir, path) = scratch("f.csv");
     let grid = Grid::from_fn(2, 3, |i, q| Point([i as f64, q as f64, 1.0 / 3.0]));
     write_indexed_grid_csv(&path, ["p", "q"], &grid).unwrap();
     let text = std::fs::read_to_string(&path).unwrap();

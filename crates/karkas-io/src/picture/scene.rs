@@ -20,7 +20,8 @@ use std::path::Path;
 use karkas::{Point2, Point3};
 
 use crate::error::IoError;
-use crate::png::write_svg_as_png;
+use crate::mesh::normals::cross;
+use crate::picture::png::write_svg_as_png;
 use crate::write::write_atomic;
 
 /// Width of the drawing area in pixels.
@@ -265,14 +266,6 @@ fn mesh_cells(rows: usize, cols: usize, points: &[Point3], camera: &Camera) -> V
     cells
 }
 
-fn cross(a: Point3, b: Point3) -> Point3 {
-    Point3::new([
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ])
-}
-
 /// The cells as filled polygons (stroked in their own colour, so that no seams show).
 fn write_cells(svg: &mut String, cells: &[Cell]) {
     svg.push_str(r#"<g stroke-width="0.6" stroke-linejoin="round">"#);
@@ -451,8 +444,8 @@ fn write_legend(svg: &mut String, groups: &[SceneCurves<'_>], baseline: f64) {
     }
 }
 
-/// `text` with the XML special characters escaped.
-fn escape(text: &str) -> String {
+/// `text` with the XML (and HTML) special characters escaped.
+pub(crate) fn escape(text: &str) -> String {
     text.replace('&', "&amp;")
         .replace('<', "&lt;")
         .replace('>', "&gt;")

@@ -6,6 +6,8 @@ use karkas::Point;
 use karkas_io::skeleton::{parse_across_curves, parse_along_curves, read_along_curves};
 use karkas_io::IoError;
 
+use crate::util::scratch;
+
 /// Two curves along, three samples each: f_i(q) = (i, q, i + 10 q).
 const ALONG: &str = "i,q,x,y,z
 0,0,0,0,0
@@ -28,8 +30,7 @@ fn curves_are_rows_in_any_order() {
     assert_eq!((g.rows(), g.cols()), (2, 3));
     assert_eq!(*g.get(1, 2), Point([1.0, 2.0, 21.0]));
     let shuffled = "# across\nZ,p,J,x,y\n21,2,1,1,2\n0,0,0,0,0\n20,2,0,0,2\n1,0,1,1,0\n10,1,0,0,1\n11,1,1,1,1\n";
-    let dir = tempfile::tempdir().unwrap();
-    let path = dir.path().join("g.csv");
+    let (_dir, path) = scratch("g.csv");
     std::fs::write(&path, ALONG).unwrap();
     assert_eq!(read_along_curves(&path).unwrap(), g);
     assert_eq!(

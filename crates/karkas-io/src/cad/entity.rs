@@ -1,8 +1,12 @@
-//! What the CAD writers ([`step`](crate::step), [`iges`](crate::iges)) write: exact B-spline
-//! curves and surfaces of karkas (see [`karkas::bspline`]), in 3-D.
+//! What the CAD writers (the `step` and `iges` modules) write: exact B-spline
+//! curves and surfaces of karkas (see [`karkas::bspline`]), in 3-D, and the number and knot
+//! formatting both formats share.
 
 use karkas::bspline::{BSplineCurve, BSplineSurface};
 use karkas::Point;
+
+use crate::error::IoError;
+use crate::write::write_atomic;
 
 /// One geometric item of a CAD file.
 #[derive(Clone, Copy, Debug)]
@@ -18,22 +22,50 @@ pub enum CadEntity<'a> {
 /// A curve of dimension `D <= 3` in 3-D space (missing coordinates 0: a planar curve lies
 /// in the plane `z = 0`), with the same degree and knots.
 ///
-/// Errors: `D > 3` ([`karkas::Error::DimensionTooHigh`]).
-pub fn curve_in_space<const D: usize>(curve: &BSplineCurve<D>) -> karkas::Result<BSplineCurve<3>> {
+/// Errors: `D > 3` ([`CadError::TooManyDimensions`]); the library refusing the curve
+/// ([`CadError::Geometry`]).
+pub fn curve_in_space<const D: usize>(
+    curve: &BSplineCurve<D>,
+) -> Result<BSplineCurve<3>, CadError> {
     if D > 3 {
-        return Err(karkas::Error::DimensionTooHigh {
-            what: "a curve",
-            target: "a CAD file",
-            dimension: D,
-            max: 3,
-        });
+        return Err(CadError::TooManyDimensions { dimensions: D });
     }
     let control = curve
         .control_points()
         .iter()
         .map(|p| Point(core::array::from_fn(|c| if c < D { p[c] } else { 0.0 })))
         .collect();
-    BSplineCurve::new(curve.degree(), curve.knots().to_vec(), control)
+    BSplineCurve::new(curve.degree(), curve.knots().to_vec(), control).map_err(CadError::Geometry)
+}
+
+/// Why a curve cannot be placed in a CAD file.
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum CadError {
+    /// The curve has more than three coordinates.
+    #[error("a curve in {dimensions} dimensions cannot be written to a CAD file (at most 3)")]
+    TooManyDimensions {
+        /// Its number of coordinates.
+        dimensions: usize,
+    },
+    /// The library refused the curve in space.
+    #[error("{0}")]
+    Geometry(#[source] karkas::Error),
+}
+
+/// Writes the CAD file `path` atomically with the text `render(entities, name)`, `name` being
+/// the file stem (`karkas` when it has none).
+pub(crate) fn write_named(
+    path: &std::path::Path,
+    entities: &[CadEntity<'_>],
+    render: fn(&[CadEntity<'_>], &str) -> String,
+) -> Result<(), IoError> {
+    let name = path
+        .file_stem()
+        .and_then(|s| s.to_str())
+        .unwrap_or("karkas");
+    let text = render(entities, name);
+    write_atomic(path, |out| out.write_all(text.as_bytes()))
 }
 
 /// A real number with 17 significant digits (round-trips every `f64`) and an exponent, with

@@ -2,9 +2,11 @@
 
 use std::path::Path;
 
-use karkas::Point;
+use karkas::{Grid, Point};
 use karkas_io::grid::{parse_grid, read_grid};
 use karkas_io::IoError;
+
+use crate::util::scratch;
 
 /// A 2 x 3 frame in row-major order, point (i, j) = (i, j, i + 10 j).
 const ORDERED: &str = "i,j,x,y,z
@@ -44,8 +46,7 @@ fn shuffled_rows_and_columns_give_the_same_grid() {
 1,0,0,foo,1,1
 20,2,2,foo,0,0
 ";
-    let dir = tempfile::tempdir().unwrap();
-    let path = dir.path().join("shuffled.csv");
+    let (_dir, path) = scratch("shuffled.csv");
     std::fs::write(&path, shuffled).unwrap();
     assert_eq!(read_grid(&path).unwrap(), ordered);
 }
@@ -120,4 +121,16 @@ fn empty_grid_is_a_data_error() {
     for text in ["", "i,j,x,y,z\n", "# nothing\n"] {
         assert!(matches!(cell_error(text), IoError::Data { .. }));
     }
+}
+
+#[test]
+fn written_grids_read_back_exactly() {
+    let (_dir, path) = scratch("g.csv");
+    let grid = Grid::from_fn(2, 3, |i, j| {
+        Point([0.1 * i as f64, 1.0 / 3.0 + j as f64, -2e-17])
+    });
+    karkas_io::write::write_grid_csv(&path, &grid).unwrap();
+    assert_eq!(read_grid(&path).unwrap(), grid);
+    let text = std::fs::read_to_string(&path).unwrap();
+    assert!(text.starts_with("i,j,x,y,z\n0,0,0,0.3333333333333333,-0.00000000000000002\n"));
 }

@@ -15,15 +15,13 @@
 //! writing these entities takes a page.
 
 use std::fmt::Write as _;
-use std::io::{self, Write};
 use std::path::Path;
 
 use karkas::bspline::{BSplineCurve, BSplineSurface};
 use karkas::{Point, Surface};
 
-use crate::cad::{knot_runs, real, CadEntity};
+use crate::cad::entity::{knot_runs, real, write_named, CadEntity};
 use crate::error::IoError;
-use crate::write::write_atomic;
 
 /// The entity instances of a STEP data section, numbered from 1.
 struct Data {
@@ -227,14 +225,7 @@ pub fn step_text(entities: &[CadEntity<'_>], name: &str) -> String {
 /// Writes `entities` to the STEP file `path` (atomically; see
 /// [`write_atomic`](crate::write::write_atomic)). The product is named after the file stem.
 pub fn write_step(path: &Path, entities: &[CadEntity<'_>]) -> Result<(), IoError> {
-    let name = path
-        .file_stem()
-        .and_then(|s| s.to_str())
-        .unwrap_or("karkas");
-    let text = step_text(entities, name);
-    write_atomic(path, |out: &mut dyn Write| -> io::Result<()> {
-        out.write_all(text.as_bytes())
-    })
+    write_named(path, entities, step_text)
 }
 
 #[cfg(test)]

@@ -11,6 +11,8 @@ use karkas_io::write::{
 };
 use karkas_io::IoError;
 
+use crate::util::scratch;
+
 /// Values whose decimal form is easy to get wrong.
 const AWKWARD: [f64; 8] = [
     0.1,
@@ -69,8 +71,7 @@ fn curve_csv_round_trip_is_bit_exact() {
 
 #[test]
 fn surface_csv_is_row_major_u_outer() {
-    let dir = tempfile::tempdir().unwrap();
-    let path = dir.path().join("s.csv");
+    let (_dir, path) = scratch("s.csv");
     let (us, vs) = ([0.0, 1.0], [0.0, 0.5, 1.0]);
     let points: Vec<Point3> = us
         .iter()
@@ -86,19 +87,17 @@ fn surface_csv_is_row_major_u_outer() {
 
 #[test]
 fn mismatched_lengths_write_nothing() {
-    let dir = tempfile::tempdir().unwrap();
-    let path = dir.path().join("bad.csv");
+    let (dir, path) = scratch("bad.csv");
     let e = write_curve_csv(&path, &[0.0], &[Point([0.0, 0.0]), Point([1.0, 1.0])]).unwrap_err();
-    assert!(matches!(e, IoError::Write { .. }), "{e:?}");
+    assert!(matches!(e, IoError::LengthMismatch { .. }), "{e:?}");
     let e = write_surface_csv(&path, &[0.0, 1.0], &[0.0], &[Point([0.0; 3])]).unwrap_err();
-    assert!(matches!(e, IoError::Write { .. }), "{e:?}");
+    assert!(matches!(e, IoError::LengthMismatch { .. }), "{e:?}");
     assert!(entries(dir.path()).is_empty());
 }
 
 #[test]
 fn failed_fill_leaves_destination_and_no_temp_file() {
-    let dir = tempfile::tempdir().unwrap();
-    let path = dir.path().join("out.csv");
+    let (dir, path) = scratch("out.csv");
     std::fs::write(&path, b"previous content\n").unwrap();
     let e = write_atomic(&path, |out| {
         out.write_all(b"half of the new")?;
@@ -118,8 +117,7 @@ fn failed_fill_leaves_destination_and_no_temp_file() {
 
 #[test]
 fn missing_directory_is_a_write_error() {
-    let dir = tempfile::tempdir().unwrap();
-    let path = dir.path().join("no/such/dir/out.csv");
+    let (_dir, path) = scratch("no/such/dir/out.csv");
     let e = write_curve_csv(&path, &[0.0], &[Point([0.0, 0.0])]).unwrap_err();
     match &e {
         IoError::Write { path: p, .. } => assert_eq!(p, &path),
@@ -132,8 +130,7 @@ fn missing_directory_is_a_write_error() {
 #[test]
 fn existing_permissions_are_kept() {
     use std::os::unix::fs::PermissionsExt;
-    let dir = tempfile::tempdir().unwrap();
-    let path = dir.path().join("out.csv");
+    let (_dir, path) = scratch("out.csv");
     std::fs::write(&path, b"old").unwrap();
     std::fs::set_permissions(&path, std::fs::Permissions::from_mode(0o640)).unwrap();
     write_atomic(&path, |out| out.write_all(b"new")).unwrap();

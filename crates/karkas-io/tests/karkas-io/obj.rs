@@ -4,6 +4,8 @@ use karkas::{Point, Point3};
 use karkas_io::obj::{render_surface_obj, write_surface_obj};
 use karkas_io::IoError;
 
+use crate::util::scratch;
+
 /// The flat grid z = 0 with x = a along u and y = b along v.
 fn flat(nu: usize, nv: usize) -> Vec<Point3> {
     (0..nu)
@@ -93,10 +95,9 @@ fn degenerate_normal_is_written_as_z() {
 fn wrong_point_count_is_rejected() {
     let mut out = Vec::new();
     assert!(render_surface_obj(3, 4, &flat(3, 3), &mut out).is_err());
-    let dir = tempfile::tempdir().unwrap();
-    let path = dir.path().join("m.obj");
+    let (_dir, path) = scratch("m.obj");
     let e = write_surface_obj(&path, 3, 4, &flat(3, 3)).unwrap_err();
-    assert!(matches!(e, IoError::Write { .. }), "{e:?}");
+    assert!(matches!(e, IoError::InvalidMesh { .. }), "{e:?}");
     assert!(!path.exists());
     write_surface_obj(&path, 3, 3, &flat(3, 3)).unwrap();
     assert!(std::fs::read_to_string(&path).unwrap().contains("f 1//1"));

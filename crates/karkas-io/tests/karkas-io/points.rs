@@ -7,6 +7,8 @@ use karkas_io::airfoil::parse_airfoil;
 use karkas_io::points::{parse_curve_points, read_curve_points, CurvePoints};
 use karkas_io::IoError;
 
+use crate::util::scratch;
+
 fn planar(text: &str, name: &str) -> Vec<Point2> {
     match parse_curve_points(text, Path::new(name)) {
         Ok(CurvePoints::Planar(p)) => p,
@@ -221,8 +223,7 @@ fn header_without_x_and_y_is_an_error() {
 
 #[test]
 fn missing_file_is_an_open_error() {
-    let dir = tempfile::tempdir().unwrap();
-    let path = dir.path().join("absent.csv");
+    let (_dir, path) = scratch("absent.csv");
     let e = read_curve_points(&path).unwrap_err();
     assert!(matches!(e, IoError::Open { .. }), "{e:?}");
     assert!(e.to_string().starts_with("cannot read "), "{e}");

@@ -11,15 +11,13 @@
 //! Hand-written: no maintained Rust crate writes IGES without a whole CAD kernel.
 
 use std::fmt::Write as _;
-use std::io::{self, Write};
 use std::path::Path;
 
 use karkas::bspline::{BSplineCurve, BSplineSurface};
 use karkas::{Curve, Surface};
 
-use crate::cad::{real, CadEntity};
+use crate::cad::entity::{real, write_named, CadEntity};
 use crate::error::IoError;
-use crate::write::write_atomic;
 
 /// Columns of data in a parameter line.
 const P_WIDTH: usize = 64;
@@ -219,14 +217,7 @@ pub fn iges_text(entities: &[CadEntity<'_>], name: &str) -> String {
 /// Writes `entities` to the IGES file `path` (atomically; see
 /// [`write_atomic`](crate::write::write_atomic)).
 pub fn write_iges(path: &Path, entities: &[CadEntity<'_>]) -> Result<(), IoError> {
-    let name = path
-        .file_stem()
-        .and_then(|s| s.to_str())
-        .unwrap_or("karkas");
-    let text = iges_text(entities, name);
-    write_atomic(path, |out: &mut dyn Write| -> io::Result<()> {
-        out.write_all(text.as_bytes())
-    })
+    write_named(path, entities, iges_text)
 }
 
 #[cfg(test)]

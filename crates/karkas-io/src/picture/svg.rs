@@ -19,6 +19,7 @@ use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
 
 use crate::error::IoError;
+use crate::picture::error::PictureError;
 use crate::write::write_atomic;
 
 /// Width of the picture in pixels.
@@ -66,27 +67,27 @@ pub fn write_curve_picture(
 ) -> Result<(), IoError> {
     let rendered = render_curve_svg_with(plot, overlay);
     if png {
-        let svg = rendered.map_err(|message| IoError::Write {
+        let svg = rendered.map_err(|source| IoError::Picture {
             path: path.to_path_buf(),
-            source: std::io::Error::other(message),
+            source,
         })?;
-        crate::png::write_svg_as_png(path, &svg)
+        crate::picture::png::write_svg_as_png(path, &svg)
     } else {
         write_rendered(path, rendered)
     }
 }
 
-/// Draws `plot` into an SVG document in memory; the error is the drawing library's message.
-pub fn render_curve_svg(plot: &CurvePlot<'_>) -> Result<String, String> {
+/// Draws `plot` into an SVG document in memory; the error carries the drawing library's.
+pub fn render_curve_svg(plot: &CurvePlot<'_>) -> Result<String, PictureError> {
     render_curve_svg_with(plot, &CurveOverlay::default())
 }
 
 /// Draws `plot` with `overlay` into an SVG document in memory (the frame takes in the comb's
-/// tips, so nothing is clipped); the error is the drawing library's message.
+/// tips, so nothing is clipped); the error carries the drawing library's.
 pub fn render_curve_svg_with(
     plot: &CurvePlot<'_>,
     overlay: &CurveOverlay<'_>,
-) -> Result<String, String> {
+) -> Result<String, PictureError> {
     let overlays: Vec<Point2> = overlay
         .comb
         .iter()
@@ -103,44 +104,32 @@ pub fn render_curve_svg_with(
             polygon.push(polygon[0]);
         }
         let grey = RGBColor(150, 150, 150);
-        chart
-            .draw_series(LineSeries::new(polygon, grey.stroke_width(1)))
-            .map_err(|e| e.to_string())?;
+        chart.draw_series(LineSeries::new(polygon, grey.stroke_width(1)))?;
         let teeth = RGBColor(120, 170, 120).stroke_width(1);
         for tooth in overlay
             .comb
             .iter()
             .filter(|t| t.iter().all(|p| p.is_finite()))
         {
-            chart
-                .draw_series(LineSeries::new(tooth.map(|p| (p[0], p[1])), teeth))
-                .map_err(|e| e.to_string())?;
+            chart.draw_series(LineSeries::new(tooth.map(|p| (p[0], p[1])), teeth))?;
         }
         if !overlay.comb.is_empty() {
             let tips = overlay.comb.iter().map(|t| t[1]).filter(|p| p.is_finite());
-            chart
-                .draw_series(LineSeries::new(
-                    tips.map(|p| (p[0], p[1])),
-                    RGBColor(40, 140, 40).stroke_width(1),
-                ))
-                .map_err(|e| e.to_string())?;
+            chart.draw_series(LineSeries::new(
+                tips.map(|p| (p[0], p[1])),
+                RGBColor(40, 140, 40).stroke_width(1),
+            ))?;
         }
-        chart
-            .draw_series(LineSeries::new(finite(plot.curve), BLUE.stroke_width(2)))
-            .map_err(|e| e.to_string())?;
+        chart.draw_series(LineSeries::new(finite(plot.curve), BLUE.stroke_width(2)))?;
         let whisker = RGBColor(230, 120, 0).stroke_width(2);
         for w in overlay
             .whiskers
             .iter()
             .filter(|t| t.iter().all(|p| p.is_finite()))
         {
-            chart
-                .draw_series(LineSeries::new(w.map(|p| (p[0], p[1])), whisker))
-                .map_err(|e| e.to_string())?;
+            chart.draw_series(LineSeries::new(w.map(|p| (p[0], p[1])), whisker))?;
         }
-        chart
-            .draw_series(finite(plot.input).map(|p| Circle::new(p, 3, RED.filled())))
-            .map_err(|e| e.to_string())?;
+        chart.draw_series(finite(plot.input).map(|p| Circle::new(p, 3, RED.filled())))?;
         Ok(())
     })
 }
@@ -164,8 +153,8 @@ pub fn write_discrete_curve_svg(path: &Path, plot: &DiscreteCurvePlot<'_>) -> Re
     write_rendered(path, render_discrete_curve_svg(plot))
 }
 
-/// Draws `plot` into an SVG document in memory; the error is the drawing library's message.
-pub fn render_discrete_curve_svg(plot: &DiscreteCurvePlot<'_>) -> Result<String, String> {
+/// Draws `plot` into an SVG document in memory; the error carries the drawing library's.
+pub fn render_discrete_curve_svg(plot: &DiscreteCurvePlot<'_>) -> Result<String, PictureError> {
     if !plot.dots {
         let mut closed: Vec<Point2> = plot.values.to_vec();
         if let Some(&first) = plot.values.first() {
@@ -185,15 +174,9 @@ pub fn render_discrete_curve_svg(plot: &DiscreteCurvePlot<'_>) -> Result<String,
             polygon.push(polygon[0]);
         }
         let grey = RGBColor(150, 150, 150);
-        chart
-            .draw_series(LineSeries::new(polygon, grey.stroke_width(1)))
-            .map_err(|e| e.to_string())?;
-        chart
-            .draw_series(finite(plot.values).map(|p| Circle::new(p, 2, BLUE.filled())))
-            .map_err(|e| e.to_string())?;
-        chart
-            .draw_series(finite(plot.input).map(|p| Circle::new(p, 4, RED.filled())))
-            .map_err(|e| e.to_string())?;
+        chart.draw_series(LineSeries::new(polygon, grey.stroke_width(1)))?;
+        chart.draw_series(finite(plot.values).map(|p| Circle::new(p, 2, BLUE.filled())))?;
+        chart.draw_series(finite(plot.input).map(|p| Circle::new(p, 4, RED.filled())))?;
         Ok(())
     })
 }
@@ -226,8 +209,8 @@ pub fn write_lines_svg(path: &Path, plot: &LinesPlot<'_>) -> Result<(), IoError>
     write_rendered(path, render_lines_svg(plot))
 }
 
-/// Draws `plot` into an SVG document in memory; the error is the drawing library's message.
-pub fn render_lines_svg(plot: &LinesPlot<'_>) -> Result<String, String> {
+/// Draws `plot` into an SVG document in memory; the error carries the drawing library's.
+pub fn render_lines_svg(plot: &LinesPlot<'_>) -> Result<String, PictureError> {
     let all = plot
         .groups
         .iter()
@@ -239,9 +222,7 @@ pub fn render_lines_svg(plot: &LinesPlot<'_>) -> Result<String, String> {
             let (r, g, b) = group.rgb;
             let style = RGBColor(r, g, b).stroke_width(group.width);
             for line in group.lines {
-                chart
-                    .draw_series(LineSeries::new(finite(line), style))
-                    .map_err(|e| e.to_string())?;
+                chart.draw_series(LineSeries::new(finite(line), style))?;
             }
         }
         Ok(())
@@ -266,24 +247,18 @@ pub fn write_fit_svg(path: &Path, plot: &FitPlot<'_>) -> Result<(), IoError> {
     write_rendered(path, render_fit_svg(plot))
 }
 
-/// Draws `plot` into an SVG document in memory; the error is the drawing library's message.
-pub fn render_fit_svg(plot: &FitPlot<'_>) -> Result<String, String> {
+/// Draws `plot` into an SVG document in memory; the error carries the drawing library's.
+pub fn render_fit_svg(plot: &FitPlot<'_>) -> Result<String, PictureError> {
     let points = finite(plot.curve).chain(finite(plot.points));
     render_chart(plot.title, ("x", "y"), points, |chart| {
-        chart
-            .draw_series(LineSeries::new(finite(plot.curve), BLUE.stroke_width(2)))
-            .map_err(|e| e.to_string())?;
+        chart.draw_series(LineSeries::new(finite(plot.curve), BLUE.stroke_width(2)))?;
         let whisker = RGBColor(230, 120, 0).stroke_width(1);
         for (p, f) in plot.points.iter().zip(plot.feet) {
             if p.is_finite() && f.is_finite() {
-                chart
-                    .draw_series(LineSeries::new([(p[0], p[1]), (f[0], f[1])], whisker))
-                    .map_err(|e| e.to_string())?;
+                chart.draw_series(LineSeries::new([(p[0], p[1]), (f[0], f[1])], whisker))?;
             }
         }
-        chart
-            .draw_series(finite(plot.points).map(|p| Circle::new(p, 3, RED.filled())))
-            .map_err(|e| e.to_string())?;
+        chart.draw_series(finite(plot.points).map(|p| Circle::new(p, 3, RED.filled())))?;
         Ok(())
     })
 }
@@ -298,36 +273,33 @@ fn render_chart(
     title: &str,
     axes: (&str, &str),
     points: impl Iterator<Item = (f64, f64)>,
-    draw: impl FnOnce(&mut Chart<'_, '_>) -> Result<(), String>,
-) -> Result<String, String> {
+    draw: impl FnOnce(&mut Chart<'_, '_>) -> Result<(), PictureError>,
+) -> Result<String, PictureError> {
     let frame = Frame::new(title, points)?;
     let mut svg = String::new();
     {
         let root = SVGBackend::with_string(&mut svg, (WIDTH, frame.height)).into_drawing_area();
-        root.fill(&WHITE).map_err(|e| e.to_string())?;
-        let mut chart = chart_builder(&root, title)
-            .build_cartesian_2d(frame.x, frame.y)
-            .map_err(|e| e.to_string())?;
+        root.fill(&WHITE)?;
+        let mut chart = chart_builder(&root, title).build_cartesian_2d(frame.x, frame.y)?;
         chart
             .configure_mesh()
             .x_desc(axes.0)
             .y_desc(axes.1)
             .label_style(("sans-serif", 15))
             .axis_desc_style(("sans-serif", 18))
-            .draw()
-            .map_err(|e| e.to_string())?;
+            .draw()?;
         draw(&mut chart)?;
-        root.present().map_err(|e| e.to_string())?;
+        root.present()?;
     }
     Ok(svg)
 }
 
 /// Writes a rendered picture to `path` atomically; a rendering error becomes an
-/// [`IoError::Write`] naming `path`, and nothing is written.
-fn write_rendered(path: &Path, rendered: Result<String, String>) -> Result<(), IoError> {
-    let svg = rendered.map_err(|message| IoError::Write {
+/// [`IoError::Picture`] naming `path`, and nothing is written.
+fn write_rendered(path: &Path, rendered: Result<String, PictureError>) -> Result<(), IoError> {
+    let svg = rendered.map_err(|source| IoError::Picture {
         path: path.to_path_buf(),
-        source: std::io::Error::other(message),
+        source,
     })?;
     write_atomic(path, |out| out.write_all(svg.as_bytes()))
 }
@@ -364,7 +336,10 @@ pub(crate) struct Frame {
 
 impl Frame {
     /// The frame of a picture titled `title` showing `points`.
-    pub fn new(title: &str, points: impl Iterator<Item = (f64, f64)>) -> Result<Frame, String> {
+    pub fn new(
+        title: &str,
+        points: impl Iterator<Item = (f64, f64)>,
+    ) -> Result<Frame, PictureError> {
         let (x, y) = padded_bounds(points);
         let (x_len, y_len) = (x.end - x.start, y.end - y.start);
         // Everything but the plotting area (caption, labels, margins) has a fixed size: measure
@@ -386,12 +361,10 @@ impl Frame {
 }
 
 /// Size in pixels of the plotting area of a picture `height` pixels high.
-fn plotting_area(title: &str, height: u32) -> Result<(u32, u32), String> {
+fn plotting_area(title: &str, height: u32) -> Result<(u32, u32), PictureError> {
     let mut scratch = String::new();
     let root = SVGBackend::with_string(&mut scratch, (WIDTH, height)).into_drawing_area();
-    let chart = chart_builder(&root, title)
-        .build_cartesian_2d(0.0..1.0, 0.0..1.0)
-        .map_err(|e| e.to_string())?;
+    let chart = chart_builder(&root, title).build_cartesian_2d(0.0..1.0, 0.0..1.0)?;
     Ok(chart.plotting_area().dim_in_pixel())
 }
 

@@ -18,26 +18,44 @@ use std::path::Path;
 use serde_json::json;
 
 use crate::error::IoError;
-use crate::mesh::TriangleMesh;
+use crate::mesh::error::MeshError;
+use crate::mesh::triangle_mesh::TriangleMesh;
 use crate::write::write_atomic;
 
 /// Writes `mesh` as binary glTF at `path`, atomically. A mesh failing
-/// [`TriangleMesh::validate`] or too large for 32-bit glTF lengths is an [`IoError::Write`].
+/// [`TriangleMesh::validate`] or too large for 32-bit glTF lengths
+/// ([`MeshError::TooLargeForGltf`]) is an [`IoError::InvalidMesh`], nothing written.
 pub fn write_mesh_glb(path: &Path, mesh: &TriangleMesh) -> Result<(), IoError> {
-    crate::mesh_check(path, mesh)?;
+    mesh.check_writable(path)?;
+    buffer_lengths(mesh).map_err(|source| IoError::InvalidMesh {
+        path: path.to_path_buf(),
+        source,
+    })?;
     write_atomic(path, |out| render_mesh_glb(mesh, out))
 }
 
-/// Writes the `.glb` bytes of `mesh` into `out` (the mesh is assumed valid).
+/// The byte lengths of the vertex and index buffers of `mesh` and of the whole binary chunk;
+/// [`MeshError::TooLargeForGltf`] when they overflow.
+fn buffer_lengths(mesh: &TriangleMesh) -> Result<(usize, usize, usize), MeshError> {
+    let vertex_bytes = mesh.positions.len().checked_mul(12);
+    let index_bytes = mesh.triangles.len().checked_mul(12);
+    let (Some(vertex_bytes), Some(index_bytes)) = (vertex_bytes, index_bytes) else {
+        return Err(MeshError::TooLargeForGltf);
+    };
+    let bin_len = vertex_bytes
+        .checked_mul(2)
+        .and_then(|v| v.checked_add(index_bytes))
+        .ok_or(MeshError::TooLargeForGltf)?;
+    Ok((vertex_bytes, index_bytes, bin_len))
+}
+
+/// Writes the `.glb` bytes of `mesh` into `out` (the mesh is assumed valid; one too large for
+/// glTF is [`io::ErrorKind::InvalidInput`] carrying [`MeshError::TooLargeForGltf`]).
 pub fn render_mesh_glb(mesh: &TriangleMesh, out: &mut dyn Write) -> io::Result<()> {
     let n = mesh.positions.len();
     let m = mesh.triangles.len();
-    let too_large = || io::Error::new(io::ErrorKind::InvalidInput, "mesh too large for glTF");
-    let vertex_bytes = n.checked_mul(12).ok_or_else(too_large)?;
-    let index_bytes = m.checked_mul(12).ok_or_else(too_large)?;
-    let bin_len = (2 * vertex_bytes)
-        .checked_add(index_bytes)
-        .ok_or_else(too_large)?;
+    let too_large = || io::Error::new(io::ErrorKind::InvalidInput, MeshError::TooLargeForGltf);
+    let (vertex_bytes, index_bytes, bin_len) = buffer_lengths(mesh).map_err(|_| too_large())?;
     let (mut lo, mut hi) = ([f32::INFINITY; 3], [f32::NEG_INFINITY; 3]);
     for p in &mesh.positions {
         for c in 0..3 {

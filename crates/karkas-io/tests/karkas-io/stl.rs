@@ -5,6 +5,8 @@ use karkas::{Point, Point3};
 use karkas_io::stl::write_surface_stl;
 use karkas_io::IoError;
 
+use crate::util::scratch;
+
 /// Little-endian `f32`s.
 fn floats(values: &[f32]) -> Vec<u8> {
     values.iter().flat_map(|v| v.to_le_bytes()).collect()
@@ -19,8 +21,7 @@ fn one_cell_gives_the_expected_bytes() {
         Point([1.0, 0.0, 1.0]),
         Point([1.0, 2.0, 1.0]),
     ];
-    let dir = tempfile::tempdir().unwrap();
-    let path = dir.path().join("cell.stl");
+    let (_dir, path) = scratch("cell.stl");
     write_surface_stl(&path, 2, 2, &points).unwrap();
     let bytes = std::fs::read(&path).unwrap();
 
@@ -51,8 +52,7 @@ fn a_closed_grid_round_trips_as_a_closed_mesh() {
             })
         })
         .collect();
-    let dir = tempfile::tempdir().unwrap();
-    let path = dir.path().join("cyl.stl");
+    let (_dir, path) = scratch("cyl.stl");
     write_surface_stl(&path, nu, nv, &points).unwrap();
     let mut file = std::fs::File::open(&path).unwrap();
     let mesh = stl_io::read_stl(&mut file).unwrap();
@@ -81,10 +81,9 @@ fn a_closed_grid_round_trips_as_a_closed_mesh() {
 
 #[test]
 fn wrong_point_count_writes_nothing() {
-    let dir = tempfile::tempdir().unwrap();
-    let path = dir.path().join("bad.stl");
+    let (_dir, path) = scratch("bad.stl");
     let e = write_surface_stl(&path, 3, 3, &[Point3::ZERO; 8]).unwrap_err();
-    assert!(matches!(e, IoError::Write { .. }));
+    assert!(matches!(e, IoError::InvalidMesh { .. }));
     assert!(
         e.to_string().contains("8 points do not form a 3 x 3 grid"),
         "{e}"

@@ -22,27 +22,26 @@ use std::io::{self, Write};
 use std::path::Path;
 
 use crate::error::IoError;
-use crate::mesh::TriangleMesh;
+use crate::mesh::error::MeshError;
+use crate::mesh::triangle_mesh::TriangleMesh;
 use crate::write::write_atomic;
 
 /// Writes `mesh` as a legacy VTK file at `path`, atomically: a structured grid when the mesh
 /// has a grid shape, an unstructured grid of triangles otherwise.
 pub fn write_mesh_vtk(path: &Path, mesh: &TriangleMesh) -> Result<(), IoError> {
-    crate::mesh_check(path, mesh)?;
+    mesh.check_writable(path)?;
     write_atomic(path, |out| render_mesh_vtk(mesh, out))
 }
 
 /// Writes the sampled surface `mesh` as an XML structured grid (`.vts`) at `path`, atomically.
-/// A mesh without a grid shape is an [`IoError::Write`] and nothing is written.
+/// A mesh without a grid shape is an [`IoError::InvalidMesh`] ([`MeshError::NotStructured`])
+/// and nothing is written.
 pub fn write_mesh_vts(path: &Path, mesh: &TriangleMesh) -> Result<(), IoError> {
-    crate::mesh_check(path, mesh)?;
+    mesh.check_writable(path)?;
     if mesh.grid.is_none() {
-        return Err(IoError::Write {
+        return Err(IoError::InvalidMesh {
             path: path.to_path_buf(),
-            source: io::Error::new(
-                io::ErrorKind::InvalidInput,
-                "a .vts structured grid needs a sampled surface grid, not a general triangle mesh (use .vtk)",
-            ),
+            source: MeshError::NotStructured,
         });
     }
     write_atomic(path, |out| render_mesh_vts(mesh, out))
@@ -81,12 +80,12 @@ pub fn render_mesh_vtk(mesh: &TriangleMesh, out: &mut dyn Write) -> io::Result<(
 }
 
 /// Writes the XML structured grid text of the grid-shaped `mesh` into `out`; a mesh without a
-/// grid shape is [`io::ErrorKind::InvalidInput`].
+/// grid shape is [`io::ErrorKind::InvalidInput`] carrying [`MeshError::NotStructured`].
 pub fn render_mesh_vts(mesh: &TriangleMesh, out: &mut dyn Write) -> io::Result<()> {
     let Some((nu, nv)) = mesh.grid else {
         return Err(io::Error::new(
             io::ErrorKind::InvalidInput,
-            "not a structured grid",
+            MeshError::NotStructured,
         ));
     };
     let extent = format!("0 {} 0 {} 0 0", nv.saturating_sub(1), nu.saturating_sub(1));

@@ -3,6 +3,8 @@
 use karkas::{Point, Point2};
 use karkas_io::svg::{render_curve_svg, write_curve_svg, CurvePlot};
 
+use crate::util::scratch;
+
 /// The value of attribute `name` in `tag` (text from `<` to `>`).
 fn attribute<'a>(tag: &'a str, name: &str) -> Option<&'a str> {
     let start = tag.find(&format!(" {name}=\""))? + name.len() + 3;
@@ -101,8 +103,7 @@ fn wide_and_tall_shapes_keep_their_aspect() {
 
 #[test]
 fn picture_is_written_to_file() {
-    let dir = tempfile::tempdir().unwrap();
-    let path = dir.path().join("c.svg");
+    let (dir, path) = scratch("c.svg");
     let curve = ellipse(1.0, 1.0, 50);
     let plot = CurvePlot {
         title: "file",

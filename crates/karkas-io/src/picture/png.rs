@@ -13,6 +13,7 @@ use resvg::tiny_skia::{Pixmap, Transform};
 use resvg::usvg::{fontdb, Options, Tree};
 
 use crate::error::IoError;
+use crate::picture::error::PictureError;
 use crate::write::write_atomic;
 
 /// The family name of the compiled-in font.
@@ -36,35 +37,37 @@ fn fonts() -> Arc<fontdb::Database> {
 }
 
 /// Renders the SVG document `svg` to PNG bytes at its own size (`scale` times larger: 2 for
-/// a sharp picture on high-density screens); the error is the renderer's message.
-pub fn render_png(svg: &str, scale: f32) -> Result<Vec<u8>, String> {
+/// a sharp picture on high-density screens); the error carries the renderer's.
+pub fn render_png(svg: &str, scale: f32) -> Result<Vec<u8>, PictureError> {
     let options = Options {
         font_family: FONT_FAMILY.to_owned(),
         fontdb: fonts(),
         ..Options::default()
     };
-    let tree = Tree::from_str(svg, &options).map_err(|e| e.to_string())?;
+    let tree = Tree::from_str(svg, &options)?;
     let size = tree.size();
     let (width, height) = (
         (size.width() * scale).ceil() as u32,
         (size.height() * scale).ceil() as u32,
     );
-    let mut pixmap = Pixmap::new(width.max(1), height.max(1))
-        .ok_or_else(|| format!("cannot make a {width} x {height} picture"))?;
+    let mut pixmap =
+        Pixmap::new(width.max(1), height.max(1)).ok_or(PictureError::Size { width, height })?;
     pixmap.fill(resvg::tiny_skia::Color::WHITE);
     resvg::render(
         &tree,
         Transform::from_scale(scale, scale),
         &mut pixmap.as_mut(),
     );
-    pixmap.encode_png().map_err(|e| e.to_string())
+    pixmap
+        .encode_png()
+        .map_err(|e| PictureError::Encode(Box::new(e)))
 }
 
 /// Renders `svg` (at twice its size) and writes the PNG to `path`, atomically.
 pub fn write_svg_as_png(path: &Path, svg: &str) -> Result<(), IoError> {
-    let png = render_png(svg, 2.0).map_err(|message| IoError::Write {
+    let png = render_png(svg, 2.0).map_err(|source| IoError::Picture {
         path: path.to_path_buf(),
-        source: std::io::Error::other(message),
+        source,
     })?;
     write_atomic(path, |out| out.write_all(&png))
 }

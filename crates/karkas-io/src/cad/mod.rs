@@ -1,0 +1,8 @@
+//! Exact B-spline geometry for CAD programs: [`step`] (STEP AP214) and [`iges`] (IGES 5.3,
+//! entities 126 and 128), both writing the [`CadEntity`] items of [`entity`].
+
+pub mod entity;
+pub mod iges;
+pub mod step;
+
+pub use entity::{curve_in_space, CadEntity, CadError};

@@ -1,0 +1,25 @@
+//! Triangle meshes: the mesh type, its normals and the triangulation of a sample grid (once,
+//! for every format), one file per format that both writes and reads it, and one entry
+//! choosing the format by the file's extension.
+//!
+//! - [`TriangleMesh`]: the mesh every writer takes, from a sampled surface grid
+//!   ([`TriangleMesh::from_grid`]) or read from a file; [`MeshError`] says what is wrong with
+//!   one.
+//! - [`write_mesh`] / [`read_mesh`] ([`MeshOptions`]): any format by extension.
+//! - [`obj`] (Wavefront OBJ), [`stl`] (binary and ASCII STL), [`ply`] (Stanford PLY),
+//!   [`vtk`] (legacy VTK and XML structured grids `.vts`), [`glb`] (binary glTF 2.0).
+
+mod any_format;
+pub(crate) mod error;
+pub mod glb;
+pub(crate) mod normals;
+pub mod obj;
+pub mod ply;
+pub mod stl;
+pub(crate) mod triangle_mesh;
+pub(crate) mod triangulate;
+pub mod vtk;
+
+pub use any_format::{read_mesh, write_mesh, write_surface_mesh, MeshOptions};
+pub use error::MeshError;
+pub use triangle_mesh::TriangleMesh;

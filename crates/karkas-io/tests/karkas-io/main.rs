@@ -1,0 +1,16 @@
+//! The integration tests of karkas-io, one binary: one module per reader or writer, shared
+//! helpers in [`util`].
+
+mod errors;
+mod grid;
+mod indexed_csv;
+mod mesh;
+mod network;
+mod obj;
+mod points;
+mod robustness;
+mod skeleton;
+mod stl;
+mod svg;
+mod util;
+mod write;
