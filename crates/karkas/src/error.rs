@@ -150,14 +150,6 @@ pub enum Error {
         /// The length given.
         got: usize,
     },
-    /// Spline knots that are not finite and strictly increasing
-    /// (e.g. [`CubicSpline::new`](crate::param::CubicSpline::new) with `knots[index] <=
-    /// knots[index - 1]`).
-    #[error("knot {index} is not finite and greater than the knot before it")]
-    KnotsNotIncreasing {
-        /// Index of the first offending knot.
-        index: usize,
-    },
     /// Two consecutive points coincide, so chord-length (or centripetal) parameters do not
     /// increase ([`curve_parameters`](crate::param::curve_parameters)).
     #[error("points {first} and {second} coincide: the parameters would not increase")]
@@ -316,9 +308,13 @@ pub enum Error {
         /// What is wrong.
         problem: String,
     },
-    /// A knot that is not finite, out of order, too close to its neighbour or outside the
-    /// allowed range ([`HermiteSpline::new`](crate::fit::HermiteSpline::new),
-    /// [`FitOptions::knots`](crate::fit::FitOptions), [`fit_curve`](crate::fit::fit_curve)).
+    /// A knot (or node, or parameter of a point) that is not finite, out of order, too close
+    /// to its neighbour or outside the allowed range: the one error of the one knot validator
+    /// [`check_knots`](crate::core::knots::check_knots), whichever method was given the knots
+    /// (e.g. [`CubicSpline::new`](crate::param::CubicSpline::new),
+    /// [`HermiteSpline::new`](crate::fit::HermiteSpline::new),
+    /// [`fit_curve`](crate::fit::fit_curve),
+    /// [`SplineBlending::new`](crate::coons::SplineBlending::new)).
     #[error("knot {index} ({value}) is invalid: {reason}")]
     InvalidKnot {
         /// Index of the knot (0-based).
@@ -348,6 +344,24 @@ pub enum Error {
         what: &'static str,
         /// Why it cannot be.
         reason: String,
+    },
+    /// Periodic data whose last value (point, grid line) does not repeat the first (e.g.
+    /// [`CubicSpline::new`](crate::param::CubicSpline::new) with periodic ends).
+    #[error("{what} needs its last {item} to repeat the first")]
+    OpenPeriodicData {
+        /// What was being built.
+        what: &'static str,
+        /// What must repeat: `"value"`, `"point"`, `"grid line"`.
+        item: &'static str,
+    },
+    /// End conditions a method does not support (e.g. clamped ends for
+    /// [`SplineBlending`](crate::coons::SplineBlending), whose functions blend values only).
+    #[error("{what} does not support {ends} ends")]
+    UnsupportedEnds {
+        /// What was being built.
+        what: &'static str,
+        /// The end conditions given.
+        ends: &'static str,
     },
 }
 

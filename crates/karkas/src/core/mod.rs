@@ -4,6 +4,7 @@
 mod curve;
 mod grid;
 mod interval;
+pub mod knots;
 pub(crate) mod parallel;
 mod point;
 mod sampling;
@@ -12,6 +13,7 @@ mod surface;
 pub use curve::{Curve, PiecewiseCurve, Side};
 pub use grid::Grid;
 pub use interval::Interval;
+pub use knots::Knots;
 pub use point::{Point, Point2, Point3};
 pub use sampling::uniform_into;
 pub use surface::{ParameterLine, PiecewiseSurface, Surface};
