@@ -7,9 +7,9 @@
 
 use std::sync::Arc;
 
-use super::blending::check_nodes;
 use super::curves::{AffineCurve, Along, CurveRef, SurfaceCrossDerivative};
 use super::CoonsSurface;
+use crate::core::knots::check_knots as check_nodes;
 use crate::core::Interval;
 use crate::{Error, Result};
 
