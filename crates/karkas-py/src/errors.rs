@@ -154,8 +154,8 @@ fn kind(e: &karkas::Error) -> Kind {
         | E::TooFewNetworkCurves { .. }
         | E::SkeletonLength { .. }
         | E::NonFiniteSkeletonPoint { .. }
-        | E::DimensionTooHigh { .. } => Kind::Points,
-        E::KnotsNotIncreasing { .. } | E::InvalidKnot { .. } => Kind::Knots,
+        | E::OpenPeriodicData { .. } => Kind::Points,
+        E::InvalidKnot { .. } => Kind::Knots,
         E::InvalidOrder { .. }
         | E::InvalidStep { .. }
         | E::PeriodTooLarge { .. }
@@ -163,6 +163,7 @@ fn kind(e: &karkas::Error) -> Kind {
         | E::InvalidDomain { .. }
         | E::InvalidPeriod { .. }
         | E::EmptyBlendingFamily { .. }
+        | E::UnsupportedEnds { .. }
         | E::InvalidPlane { .. } => Kind::Option,
         E::IncompatibleSkeleton { .. }
         | E::IncompatibleCurves { .. }

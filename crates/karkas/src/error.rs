@@ -212,14 +212,6 @@ pub enum Error {
         /// The length given.
         got: usize,
     },
-    /// Spline knots that are not finite and strictly increasing
-    /// (e.g. [`CubicSpline::new`](crate::param::CubicSpline::new) with `knots[index] <=
-    /// knots[index - 1]`).
-    #[error("knot {index} is not finite and greater than the knot before it")]
-    KnotsNotIncreasing {
-        /// Index of the first offending knot.
-        index: usize,
-    },
     /// Two consecutive points coincide, so chord-length (or centripetal) parameters do not
     /// increase ([`curve_parameters`](crate::param::curve_parameters)).
     #[error("points {first} and {second} coincide: the parameters would not increase")]
@@ -367,9 +359,13 @@ pub enum Error {
         /// What is wrong.
         problem: String,
     },
-    /// A knot that is not finite, out of order, too close to its neighbour or outside the
-    /// allowed range ([`HermiteSpline::new`](crate::fit::HermiteSpline::new),
-    /// [`FitOptions::knots`](crate::fit::FitOptions), [`fit_curve`](crate::fit::fit_curve)).
+    /// A knot (or node, or parameter of a point) that is not finite, out of order, too close
+    /// to its neighbour or outside the allowed range: the one error of the one knot validator
+    /// [`check_knots`](crate::core::knots::check_knots), whichever method was given the knots
+    /// (e.g. [`CubicSpline::new`](crate::param::CubicSpline::new),
+    /// [`HermiteSpline::new`](crate::fit::HermiteSpline::new),
+    /// [`fit_curve`](crate::fit::fit_curve),
+    /// [`SplineBlending::new`](crate::coons::SplineBlending::new)).
     #[error("knot {index} ({value}) is invalid: {reason}")]
     InvalidKnot {
         /// Index of the knot (0-based).
@@ -522,19 +518,6 @@ pub enum Error {
         /// Index of the curve (0-based).
         curve: usize,
     },
-    /// Data in more dimensions than a format or method handles (e.g. a 4-D curve written to
-    /// a CAD file).
-    #[error("{what} in {dimension} dimensions cannot be written to {target} (at most {max})")]
-    DimensionTooHigh {
-        /// What was to be written, e.g. `"a curve"`.
-        what: &'static str,
-        /// Where, e.g. `"a CAD file"`.
-        target: &'static str,
-        /// The dimension of the data.
-        dimension: usize,
-        /// The highest dimension allowed.
-        max: usize,
-    },
     /// A curve or surface whose exact B-spline form cannot be built: data that are not known
     /// piecewise polynomials, or a degree too high to convert without losing digits
     /// ([`ToBSplineSurface::to_bspline`](crate::bspline::ToBSplineSurface) of a Coons surface).
@@ -545,11 +528,24 @@ pub enum Error {
         /// Why it cannot be.
         reason: String,
     },
-    /// An invalid argument described only in words. Being replaced by the typed variants
-    /// above: the cubic-spline, knot and Hermite modules still produce it until they are
-    /// rebuilt on one spline core, and it is then removed. New code must not use it.
-    #[error("{0}")]
-    InvalidInput(String),
+    /// Periodic data whose last value (point, grid line) does not repeat the first (e.g.
+    /// [`CubicSpline::new`](crate::param::CubicSpline::new) with periodic ends).
+    #[error("{what} needs its last {item} to repeat the first")]
+    OpenPeriodicData {
+        /// What was being built.
+        what: &'static str,
+        /// What must repeat: `"value"`, `"point"`, `"grid line"`.
+        item: &'static str,
+    },
+    /// End conditions a method does not support (e.g. clamped ends for
+    /// [`SplineBlending`](crate::coons::SplineBlending), whose functions blend values only).
+    #[error("{what} does not support {ends} ends")]
+    UnsupportedEnds {
+        /// What was being built.
+        what: &'static str,
+        /// The end conditions given.
+        ends: &'static str,
+    },
 }
 
 /// `Result` with [`Error`].

@@ -49,6 +49,7 @@ pub mod measure;
 pub mod param;
 pub mod section;
 pub mod solve;
+pub mod spline;
 
 pub use crate::core::{
     Curve, Grid, Interval, ParameterLine, PiecewiseCurve, PiecewiseSurface, Point, Point2, Point3,

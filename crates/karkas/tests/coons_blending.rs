@@ -643,7 +643,7 @@ const CURVE_PERIODIC: [[[f64; 3]; 4]; 2] = [
 
 #[test]
 fn spline_curves_match_scipy() {
-    use karkas::coons::CubicSplineCurve;
+    use karkas::param::CubicSpline;
     use karkas::{Curve, Point3};
     let x = [0.0, 0.7, 1.5, 2.0, 3.1, 4.0];
     let ts = [0.3, 1.2, 2.5, 3.9];
@@ -651,7 +651,7 @@ fn spline_curves_match_scipy() {
         .iter()
         .map(|&t: &f64| Point3::new([(1.3 * t).sin(), t * t, t.cos()]))
         .collect();
-    let check = |curve: &CubicSplineCurve<3>, table: &[[[f64; 3]; 4]], what: &str| {
+    let check = |curve: &CubicSpline<3>, table: &[[[f64; 3]; 4]], what: &str| {
         for (k, rows) in table.iter().enumerate() {
             for (t, row) in ts.iter().zip(rows) {
                 let got = curve.deriv(*t, k);
@@ -663,11 +663,11 @@ fn spline_curves_match_scipy() {
             }
         }
     };
-    let nak = CubicSplineCurve::new(&pts, &x, SplineEnds::NotAKnot).unwrap();
+    let nak = CubicSpline::new(&x, &pts, SplineEnds::NotAKnot).unwrap();
     check(&nak, &CURVE_NOT_A_KNOT, "not-a-knot");
-    let natural = CubicSplineCurve::new(&pts, &x, SplineEnds::Natural).unwrap();
+    let natural = CubicSpline::new(&x, &pts, SplineEnds::Natural).unwrap();
     check(&natural, &CURVE_NATURAL, "natural");
-    let three = CubicSplineCurve::new(&pts[..3], &x[..3], SplineEnds::NotAKnot).unwrap();
+    let three = CubicSpline::new(&x[..3], &pts[..3], SplineEnds::NotAKnot).unwrap();
     assert!(
         three
             .eval(0.3)
@@ -681,12 +681,12 @@ fn spline_curves_match_scipy() {
             < 1e-12
     );
     pts[5] = pts[0];
-    let periodic = CubicSplineCurve::new(&pts, &x, SplineEnds::Periodic).unwrap();
+    let periodic = CubicSpline::new(&x, &pts, SplineEnds::Periodic).unwrap();
     check(&periodic, &CURVE_PERIODIC, "periodic");
     assert!(periodic.is_closed());
     assert!(periodic.eval(0.3 + 4.0).distance(periodic.eval(0.3)) < 1e-12);
     // A periodic curve must repeat its first point.
     pts[5][0] += 0.1;
-    assert!(CubicSplineCurve::new(&pts, &x, SplineEnds::Periodic).is_err());
-    assert!(CubicSplineCurve::new(&pts[..2], &x[..3], SplineEnds::Natural).is_err());
+    assert!(CubicSpline::new(&x, &pts, SplineEnds::Periodic).is_err());
+    assert!(CubicSpline::new(&x[..3], &pts[..2], SplineEnds::Natural).is_err());
 }

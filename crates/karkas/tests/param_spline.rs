@@ -370,7 +370,11 @@ fn bad_input_is_an_error() {
     knots[3] = knots[2];
     assert_eq!(
         CubicSpline::new(&knots, &ys, SplineEnds::NotAKnot),
-        Err(Error::KnotsNotIncreasing { index: 3 })
+        Err(Error::InvalidKnot {
+            index: 3,
+            value: knots[3],
+            reason: "not greater than the knot before it (knots must increase)"
+        })
     );
     knots[3] = f64::NAN;
     assert!(CubicSpline::new(&knots, &ys, SplineEnds::Natural).is_err());

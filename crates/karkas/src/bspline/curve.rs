@@ -1,5 +1,6 @@
 //! B-spline curves: degree, clamped knot vector, control points, de Boor evaluation.
 
+use crate::core::knots::check_order;
 use crate::core::{Curve, Interval};
 use crate::{Error, Point, Result};
 
@@ -43,18 +44,14 @@ pub(crate) fn check_knots(degree: usize, knots: &[f64], count: usize) -> Result<
         });
     }
     if knots.len() != count + degree + 1 {
-        return Err(Error::InvalidInput(format!(
-            "a B-spline of degree {degree} with {count} control points needs {} knots, got {}",
-            count + degree + 1,
-            knots.len()
-        )));
+        return Err(Error::CountMismatch {
+            what: "knots of a B-spline (control points + degree + 1)",
+            expected: count + degree + 1,
+            got: knots.len(),
+        });
     }
-    if let Some(k) = knots.iter().position(|k| !k.is_finite()) {
-        return Err(invalid(k, "knots must be finite"));
-    }
-    if let Some(k) = knots.windows(2).position(|w| w[1] < w[0]) {
-        return Err(invalid(k + 1, "knots must not decrease"));
-    }
+    // Finite and nondecreasing (knots repeat in a B-spline's knot vector).
+    check_order(knots, false)?;
     let (first, last) = (knots[0], knots[knots.len() - 1]);
     if knots[..=degree].iter().any(|&k| k != first) {
         return Err(invalid(

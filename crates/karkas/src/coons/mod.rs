@@ -65,7 +65,7 @@
 //! crossing and the condition: never a silently wrong surface.
 //!
 //! **Curves from points.** [`PointNetwork`] turns point lists into a network: interpolating
-//! cubic-spline curves ([`CubicSplineCurve`], or LL curves of seed 000), crossings found as
+//! cubic-spline curves ([`CubicSpline`](crate::param::CubicSpline), or LL curves of seed 000), crossings found as
 //! shared points, node values from the crossing parameters (see its docs for every rule).
 //!
 //! **Cost.** Building: `O(m n)` functional evaluations for the check. A point: `O(m + n)`
@@ -89,7 +89,6 @@ mod instances;
 mod network;
 mod points;
 mod polyline;
-mod spline_curve;
 mod surface;
 mod warp;
 
@@ -105,5 +104,4 @@ pub use instances::DERIVED_CROSS_ENDS;
 pub use network::{CrossDerivatives, CurveNetwork, NetworkAxis};
 pub use points::{CurveFit, PointNetwork};
 pub use polyline::PolylineCurve;
-pub use spline_curve::CubicSplineCurve;
 pub use surface::{CoonsSurface, FamilyRef, DEFAULT_TOLERANCE};

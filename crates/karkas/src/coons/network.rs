@@ -7,10 +7,10 @@
 
 use std::sync::Arc;
 
-use super::blending::check_nodes;
 use super::cross_derivative::{Along, SurfaceCrossDerivative};
 use super::curves::{AffineCurve, CurveRef};
 use super::CoonsSurface;
+use crate::core::knots::check_knots as check_nodes;
 use crate::core::Interval;
 use crate::{Error, Result};
 

@@ -6,10 +6,10 @@ use std::collections::HashMap;
 use super::blending::SplineEnds;
 use super::curves::CurveRef;
 use super::network::{CrossDerivatives, CurveNetwork, NetworkAxis};
-use super::spline_curve::CubicSplineCurve;
 use super::warp::{Warp, WarpedCurve};
 use crate::core::Interval;
 use crate::ll::{interpolation_controls, LlCurve, LlKernel};
+use crate::param::CubicSpline;
 use crate::{Error, Point, Result};
 use std::sync::Arc;
 
@@ -378,7 +378,10 @@ impl Parameterization {
                 } else {
                     SplineEnds::NotAKnot
                 };
-                let curve = CubicSplineCurve::uniform(&control, ends)?;
+                // Uniform parameters k / (K - 1) from 0 to 1.
+                let last = (control.len().max(2) - 1) as f64;
+                let params: Vec<f64> = (0..control.len()).map(|k| k as f64 / last).collect();
+                let curve = CubicSpline::new(&params, &control, ends)?;
                 Arc::new(WarpedCurve::new(curve, self.domain, self.warp.clone()))
             }
             CurveFit::Ll(order) => {

@@ -1,6 +1,7 @@
 //! Sampled curves as polylines: the plainest boundary data a Coons surface can take.
 
-use super::blending::{check_nodes, locate};
+use super::blending::locate;
+use crate::core::knots::check_knots as check_nodes;
 use crate::core::{Curve, Interval, PiecewiseCurve, Side};
 use crate::{Error, Point, Result};
 

@@ -4,6 +4,7 @@
 mod curve;
 mod grid;
 mod interval;
+pub mod knots;
 pub(crate) mod parallel;
 mod pieces;
 mod point;
@@ -13,6 +14,7 @@ mod surface;
 pub use curve::{Curve, PiecewiseCurve, Side};
 pub use grid::Grid;
 pub use interval::Interval;
+pub use knots::Knots;
 pub use pieces::PolynomialPieces;
 pub use point::{Point, Point2, Point3};
 pub use sampling::uniform_into;

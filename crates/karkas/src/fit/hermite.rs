@@ -22,8 +22,10 @@
 //!
 //! Evaluation is `O(log N)` (binary search of the piece) plus `O(D)`.
 
+use crate::core::knots::{check_knots, locate};
 use crate::core::parallel::for_each_chunk;
 use crate::core::{Curve, Interval, PiecewiseCurve, Side};
+pub(crate) use crate::spline::hermite_basis;
 use crate::{Error, Point, Result};
 
 /// A C^1 piecewise cubic curve in R^D given by values and derivatives at its knots.
@@ -34,38 +36,6 @@ pub struct HermiteSpline<const D: usize> {
     knots: Vec<f64>,
     values: Vec<Point<D>>,
     derivatives: Vec<Point<D>>,
-}
-
-/// The four Hermite basis functions of a piece of length `h` at local `s`, differentiated `k`
-/// times with respect to `t`, in the order `[R_k, H_k, R_{k+1}, H_{k+1}]`. Zero for `k > 3`.
-#[inline]
-pub(crate) fn hermite_basis(s: f64, h: f64, k: usize) -> [f64; 4] {
-    let s2 = s * s;
-    match k {
-        0 => {
-            let v1 = s2 * (3.0 - 2.0 * s);
-            [
-                1.0 - v1,
-                h * s * (1.0 - s) * (1.0 - s),
-                v1,
-                -h * s2 * (1.0 - s),
-            ]
-        }
-        1 => {
-            let d = 6.0 * s * (1.0 - s) / h;
-            [-d, 1.0 - 4.0 * s + 3.0 * s2, d, 3.0 * s2 - 2.0 * s]
-        }
-        2 => {
-            let d = (12.0 * s - 6.0) / (h * h);
-            [d, (6.0 * s - 4.0) / h, -d, (6.0 * s - 2.0) / h]
-        }
-        3 => {
-            let h2 = h * h;
-            let d = 12.0 / (h2 * h);
-            [d, 6.0 / h2, -d, 6.0 / h2]
-        }
-        _ => [0.0; 4],
-    }
 }
 
 /// The coefficients of `J_L` (formula (2) of seed 003) on
@@ -100,34 +70,6 @@ pub(crate) fn bending_gram(h: f64) -> [[f64; 4]; 4] {
     ]
 }
 
-/// Checks that `knots` are finite and strictly increasing, at least two of them.
-fn check_increasing(knots: &[f64]) -> Result<()> {
-    if knots.len() < 2 {
-        return Err(Error::TooFewPoints {
-            what: "a Hermite spline (knots)",
-            needed: 2,
-            got: knots.len(),
-        });
-    }
-    for (index, &value) in knots.iter().enumerate() {
-        if !value.is_finite() {
-            return Err(Error::InvalidKnot {
-                index,
-                value,
-                reason: "not a finite number",
-            });
-        }
-        if index > 0 && value <= knots[index - 1] {
-            return Err(Error::InvalidKnot {
-                index,
-                value,
-                reason: "not greater than the knot before it",
-            });
-        }
-    }
-    Ok(())
-}
-
 impl<const D: usize> HermiteSpline<D> {
     /// The spline with `values[L]` and `derivatives[L]` at `knots[L]`.
     ///
@@ -135,14 +77,21 @@ impl<const D: usize> HermiteSpline<D> {
     /// ([`Error::InvalidKnot`]); `values` or `derivatives` of another length than `knots`;
     /// a non-finite value or derivative.
     pub fn new(knots: Vec<f64>, values: Vec<Point<D>>, derivatives: Vec<Point<D>>) -> Result<Self> {
-        check_increasing(&knots)?;
-        if values.len() != knots.len() || derivatives.len() != knots.len() {
-            return Err(Error::InvalidInput(format!(
-                "a Hermite spline on {} knots needs as many values and derivatives, got {} and {}",
-                knots.len(),
-                values.len(),
-                derivatives.len()
-            )));
+        check_knots(&knots, 2, "a Hermite spline (knots)")?;
+        for (what, got) in [
+            ("values of a Hermite spline (one per knot)", values.len()),
+            (
+                "derivatives of a Hermite spline (one per knot)",
+                derivatives.len(),
+            ),
+        ] {
+            if got != knots.len() {
+                return Err(Error::CountMismatch {
+                    what,
+                    expected: knots.len(),
+                    got,
+                });
+            }
         }
         if let Some(index) = values
             .iter()
@@ -201,11 +150,7 @@ impl<const D: usize> HermiteSpline<D> {
     /// is outside the domain).
     #[inline]
     pub fn locate(&self, t: f64) -> (usize, f64) {
-        let last = self.pieces() - 1;
-        // Number of inner knots <= t: the piece index.
-        let inner = &self.knots[1..self.knots.len() - 1];
-        let k = inner.partition_point(|&knot| knot <= t).min(last);
-        (k, self.local(k, t))
+        locate(&self.knots, false, t, Side::Above)
     }
 
     /// Local coordinate of `t` on piece `k`.

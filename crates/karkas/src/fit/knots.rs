@@ -5,50 +5,62 @@
 //! (the seed's starting point), optionally uniform or centripetal (square roots of the
 //! chords), which the multi-start check uses.
 
+use crate::core::knots;
 use crate::{Error, Point, Result};
 
 /// The smallest allowed distance between two knots of a fit (in the parameter, whose range
 /// is `[0, 1]`). The seed's own grid has knots `0.004` apart.
 pub const MIN_KNOT_SPACING: f64 = 1e-6;
 
-/// Checks a knot grid for a fit: finite, `T_1 = 0`, `T_N = 1`, strictly increasing, at
-/// least [`MIN_KNOT_SPACING`] apart, at least two knots.
+/// Checks a knot grid for a fit: the rules of every knot sequence
+/// ([`crate::core::knots::check_knots`]: finite, strictly increasing, at least two), and the
+/// fit's own: `T_1 = 0`, `T_N = 1`, every knot in `[0, 1]` and at least [`MIN_KNOT_SPACING`]
+/// from the one before it.
 ///
 /// Errors: [`Error::TooFewPoints`] for fewer than two knots, [`Error::InvalidKnot`] naming
-/// the first offending knot otherwise.
+/// the first offending knot otherwise (at one knot, a range rule before the order, the order
+/// before the spacing).
 pub fn check_knots(knots: &[f64]) -> Result<()> {
-    if knots.len() < 2 {
-        return Err(Error::TooFewPoints {
-            what: "a fit (knots)",
-            needed: 2,
-            got: knots.len(),
-        });
-    }
-    for (index, &value) in knots.iter().enumerate() {
+    let offence = |result: Result<()>| match result {
+        Err(Error::InvalidKnot { index, reason, .. }) => Ok(Some((index, reason))),
+        Err(other) => Err(other),
+        Ok(()) => Ok(None),
+    };
+    let order = offence(knots::check_knots(knots, 2, "a fit (knots)"))?;
+    let gap = offence(knots::check_min_gap(
+        knots,
+        MIN_KNOT_SPACING,
+        "closer than 1e-6 to the knot before it",
+    ))?;
+    let last = knots.len() - 1;
+    let range = knots.iter().enumerate().find_map(|(index, &value)| {
         let reason = if !value.is_finite() {
-            Some("not a finite number")
+            return None;
         } else if !(0.0..=1.0).contains(&value) {
-            Some("outside [0, 1]")
+            "outside [0, 1]"
         } else if index == 0 && value != 0.0 {
-            Some("the first knot must be 0")
-        } else if index + 1 == knots.len() && value != 1.0 {
-            Some("the last knot must be 1")
-        } else if index > 0 && value <= knots[index - 1] {
-            Some("not greater than the knot before it (knots must increase)")
-        } else if index > 0 && value - knots[index - 1] < MIN_KNOT_SPACING {
-            Some("closer than 1e-6 to the knot before it")
+            "the first knot must be 0"
+        } else if index == last && value != 1.0 {
+            "the last knot must be 1"
         } else {
-            None
+            return None;
         };
-        if let Some(reason) = reason {
-            return Err(Error::InvalidKnot {
-                index,
-                value,
-                reason,
-            });
-        }
+        Some((index, reason))
+    });
+    // The first offending knot; at one knot the rules in the order above.
+    let first = [range, order, gap]
+        .into_iter()
+        .enumerate()
+        .filter_map(|(rank, found)| found.map(|(index, reason)| (index, rank, reason)))
+        .min_by_key(|&(index, rank, _)| (index, rank));
+    match first {
+        None => Ok(()),
+        Some((index, _, reason)) => Err(Error::InvalidKnot {
+            index,
+            value: knots[index],
+            reason,
+        }),
     }
-    Ok(())
 }
 
 /// `n >= 2` uniformly spaced knots from 0 to 1 (the last exactly 1).

@@ -1,4 +1,5 @@
-//! Bicubic interpolation of a grid in Hermite form (seed 004, (3.3)–(3.13); METHODS.md §5).
+//! Bicubic interpolation of a grid in Hermite form (Kuznetsov and Filatov, (3.3)–(3.13); the
+//! 1-D splines are those of [`crate::spline`]).
 //!
 //! On the cell `[u_i, u_{i+1}] x [v_j, v_{j+1}]` the surface is `W = phi(s)^T F phi(t)` (3.6)
 //! with the Hermite basis `phi` of (3.7), (3.9) and the 4 x 4 matrix (3.8) of node values
@@ -19,11 +20,12 @@
 //! once (`O(M)`), then costs 4 multiply-adds per point; the `v` weights of every sample
 //! column are computed once per call.
 
-use super::knots::{check_knots, locate};
 use super::parameterization::{grid_parameters, GridParameterization};
-use super::slopes::{hermite_weights, SlopeSystem, SplineEnds};
+use super::spline::check_parameters;
+use crate::core::knots::locate;
 use crate::core::parallel::{for_each_row_block, PARALLEL_THRESHOLD};
 use crate::core::{Grid, Interval, PiecewiseSurface, Side, Surface};
+use crate::spline::{hermite_basis, SlopeSystem, SplineEnds};
 use crate::{Error, Point, Result};
 use rayon::prelude::*;
 
@@ -69,8 +71,8 @@ impl<const D: usize> BicubicSurface<D> {
         let grid = close_grid(grid, closed_u, closed_v)?;
         let (us, vs) = grid_parameters(&grid, parameterization)?;
         // Parameters spanning many orders of magnitude (a far outlier) are refused here.
-        check_knots(&us)?;
-        check_knots(&vs)?;
+        check_parameters(&us)?;
+        check_parameters(&vs)?;
         Self::build(grid, us, vs, closed_u, closed_v)
     }
 
@@ -78,9 +80,9 @@ impl<const D: usize> BicubicSurface<D> {
     /// `knots_v.len() == cols`). In a closed direction the last row (column) must repeat the
     /// first.
     ///
-    /// Errors: as [`new`](Self::new), plus knots that do not fit the grid or do not increase
-    /// ([`Error::KnotsNotIncreasing`]), a closed direction whose last line does not repeat the
-    /// first.
+    /// Errors: as [`new`](Self::new), plus knots that do not fit the grid
+    /// ([`Error::CountMismatch`]) or do not increase ([`Error::InvalidKnot`]), a closed
+    /// direction whose last line does not repeat the first ([`Error::OpenPeriodicData`]).
     pub fn from_knots(
         grid: &Grid<Point<D>>,
         knots_u: &[f64],
@@ -89,22 +91,26 @@ impl<const D: usize> BicubicSurface<D> {
         closed_v: bool,
     ) -> Result<Self> {
         validate(grid)?;
-        if knots_u.len() != grid.rows() || knots_v.len() != grid.cols() {
-            return Err(Error::InvalidInput(format!(
-                "{} x {} knots for a {} x {} grid",
-                knots_u.len(),
-                knots_v.len(),
-                grid.rows(),
-                grid.cols()
-            )));
+        for (what, knots, expected) in [
+            ("knots in u (one per grid row)", knots_u, grid.rows()),
+            ("knots in v (one per grid column)", knots_v, grid.cols()),
+        ] {
+            if knots.len() != expected {
+                return Err(Error::CountMismatch {
+                    what,
+                    expected,
+                    got: knots.len(),
+                });
+            }
         }
-        check_knots(knots_u)?;
-        check_knots(knots_v)?;
+        check_parameters(knots_u)?;
+        check_parameters(knots_v)?;
         let closed = close_grid(grid, closed_u, closed_v)?;
         if closed.rows() != grid.rows() || closed.cols() != grid.cols() {
-            return Err(Error::InvalidInput(
-                "a closed direction needs its last grid line to repeat the first".into(),
-            ));
+            return Err(Error::OpenPeriodicData {
+                what: "a closed direction",
+                item: "grid line",
+            });
         }
         Self::build(
             closed,
@@ -272,6 +278,14 @@ fn solve_columns<const D: usize>(system: &SlopeSystem, grid: &Grid<Point<D>>) ->
         }
     });
     ru
+}
+
+/// The Hermite weights of [`hermite_basis`] in the order `[y_k, y_{k+1}, m_k, m_{k+1}]`
+/// (values first, as the rows of (3.8)).
+#[inline]
+fn hermite_weights(s: f64, h: f64, k: usize) -> [f64; 4] {
+    let [v0, d0, v1, d1] = hermite_basis(s, h, k);
+    [v0, v1, d0, d1]
 }
 
 /// Columns per parallel block of [`solve_columns`].

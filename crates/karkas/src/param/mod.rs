@@ -32,14 +32,12 @@
 
 mod bicubic;
 mod bspline;
-mod knots;
 mod parameterization;
-mod slopes;
 mod spline;
 
+pub use crate::spline::SplineEnds;
 pub use bicubic::BicubicSurface;
 pub use parameterization::{
     curve_parameters, grid_parameters, CurveParameterization, GridParameterization,
 };
-pub use slopes::SplineEnds;
 pub use spline::CubicSpline;

@@ -1,17 +1,18 @@
-//! 1-D cubic interpolating splines on arbitrary increasing knots (seed 004, (3.6)–(3.12);
-//! METHODS.md §5).
+//! 1-D cubic interpolating splines on arbitrary increasing knots (Kuznetsov and Filatov,
+//! (3.6)–(3.12); the method is described in [`crate::spline`]).
 //!
 //! A [`CubicSpline`] stores the knots, the values and the node slopes (Hermite form); the
-//! slopes come from one `O(n)` tridiagonal solve for the chosen [`SplineEnds`]. Guarantees:
+//! slopes come from one `O(n)` tridiagonal solve of [`crate::spline`] for the chosen
+//! [`SplineEnds`]. Guarantees:
 //! passes through every point at its knot; `C^2` everywhere (`C^2` across the seam when
 //! periodic); not-a-knot reproduces every cubic polynomial exactly. Evaluation is `O(log n)`
 //! (binary search for the piece) plus a handful of multiply-adds.
 
-use super::knots::{check_knots, locate};
 use super::parameterization::{curve_parameters, CurveParameterization};
-use super::slopes::{hermite_weights, not_a_knot_slopes, SlopeSystem, SplineEnds};
+use crate::core::knots::{check_knots, check_min_gap, Knots};
 use crate::core::parallel::for_each_chunk;
 use crate::core::{Curve, Interval, PiecewiseCurve, Side};
+use crate::spline::{hermite_basis, not_a_knot_slopes, SlopeSystem, SplineEnds};
 use crate::{Error, Point, Result};
 
 /// A cubic interpolating spline `t -> P(t)` in R^D on knots `t_0 < .. < t_{n-1}`.
@@ -20,7 +21,7 @@ use crate::{Error, Point, Result};
 /// piece (as SciPy's `CubicSpline` does) and a periodic one wraps by its period.
 #[derive(Clone, Debug, PartialEq)]
 pub struct CubicSpline<const D: usize> {
-    knots: Vec<f64>,
+    knots: Knots,
     values: Vec<Point<D>>,
     slopes: Vec<Point<D>>,
     periodic: bool,
@@ -29,10 +30,11 @@ pub struct CubicSpline<const D: usize> {
 impl<const D: usize> CubicSpline<D> {
     /// The cubic spline through `(knots[k], values[k])` with end conditions `ends`.
     ///
-    /// Errors: fewer than 2 points (3 when periodic), lengths that differ, knots not finite
-    /// and strictly increasing ([`Error::KnotsNotIncreasing`]), a non-finite value, and for
-    /// periodic ends a last value that does not repeat the first (relative tolerance
-    /// `1e-12`).
+    /// Errors: fewer than 2 points (3 when periodic), lengths that differ
+    /// ([`Error::CountMismatch`]), knots not finite and strictly increasing or closer than
+    /// `1e-12` of their span ([`Error::InvalidKnot`]), a non-finite value or clamped end
+    /// derivative, and for periodic ends a last value that does not repeat the first
+    /// (relative tolerance `1e-12`, [`Error::OpenPeriodicData`]).
     pub fn new(knots: &[f64], values: &[Point<D>], ends: SplineEnds<D>) -> Result<Self> {
         Self::from_owned(knots.to_vec(), values.to_vec(), ends)
     }
@@ -50,29 +52,33 @@ impl<const D: usize> CubicSpline<D> {
             });
         }
         if values.len() != n {
-            return Err(Error::InvalidInput(format!(
-                "{n} knots for {} values",
-                values.len()
-            )));
+            return Err(Error::CountMismatch {
+                what: "knots of a cubic spline (one per value)",
+                expected: values.len(),
+                got: n,
+            });
         }
-        check_knots(&knots)?;
+        check_parameters(&knots)?;
         if let Some(index) = values.iter().position(|p| !p.is_finite()) {
             return Err(Error::NonFinitePoint { index });
         }
         if let SplineEnds::Clamped { start, end } = ends {
-            if !start.is_finite() || !end.is_finite() {
-                return Err(Error::InvalidInput(
-                    "the clamped end derivatives must be finite".into(),
-                ));
+            if let Some(&value) = start.0.iter().chain(&end.0).find(|x| !x.is_finite()) {
+                return Err(Error::InvalidSetting {
+                    name: "clamped end derivative",
+                    value,
+                    reason: "the clamped end derivatives must be finite",
+                });
             }
         }
         let mut values = values;
         if periodic {
             let scale = values.iter().fold(1.0f64, |m, p| m.max(p.max_abs()));
             if (values[n - 1] - values[0]).max_abs() > 1e-12 * scale {
-                return Err(Error::InvalidInput(
-                    "a periodic spline needs its last value to repeat the first".into(),
-                ));
+                return Err(Error::OpenPeriodicData {
+                    what: "a periodic spline",
+                    item: "value",
+                });
             }
             values[n - 1] = values[0];
         }
@@ -87,7 +93,7 @@ impl<const D: usize> CubicSpline<D> {
             SlopeSystem::new(&knots, &ends)?.solve(&values, &mut slopes, 1, clamped);
         }
         Ok(CubicSpline {
-            knots,
+            knots: Knots::from_checked(knots),
             values,
             slopes,
             periodic,
@@ -134,11 +140,11 @@ impl<const D: usize> CubicSpline<D> {
 
     #[inline]
     fn locate(&self, t: f64, side: Side) -> (usize, f64) {
-        locate(&self.knots, self.periodic, t, side)
+        self.knots.locate(t, self.periodic, side)
     }
 
     /// The piece of `t` (already wrapped when periodic), trying `hint` and the piece after it
-    /// before searching: the same piece as [`locate`] with [`Side::Above`].
+    /// before searching: the same piece as [`Knots::locate`] with [`Side::Above`].
     #[inline]
     fn piece_from(&self, t: f64, hint: usize) -> usize {
         let last = self.knots.len() - 2;
@@ -172,17 +178,17 @@ impl<const D: usize> CubicSpline<D> {
     #[inline]
     fn deriv_on_piece(&self, (k, s): (usize, f64), order: usize) -> Point<D> {
         let h = self.knots[k + 1] - self.knots[k];
-        let w = hermite_weights(s, h, order);
+        let w = hermite_basis(s, h, order);
         self.values[k] * w[0]
-            + self.values[k + 1] * w[1]
-            + self.slopes[k] * w[2]
+            + self.values[k + 1] * w[2]
+            + self.slopes[k] * w[1]
             + self.slopes[k + 1] * w[3]
     }
 }
 
 impl<const D: usize> Curve<D> for CubicSpline<D> {
     fn domain(&self) -> Interval {
-        Interval::new(self.knots[0], self.knots[self.knots.len() - 1])
+        self.knots.domain()
     }
 
     fn is_closed(&self) -> bool {
@@ -200,7 +206,7 @@ impl<const D: usize> Curve<D> for CubicSpline<D> {
     fn polynomial_pieces(&self) -> Option<crate::bspline::PolynomialPieces> {
         Some(crate::bspline::PolynomialPieces::uniform_continuity(
             3,
-            self.knots.clone(),
+            self.knots.to_vec(),
             2,
         ))
     }
@@ -225,7 +231,7 @@ impl<const D: usize> Curve<D> for CubicSpline<D> {
 
 impl<const D: usize> PiecewiseCurve<D> for CubicSpline<D> {
     fn breakpoints(&self) -> Vec<f64> {
-        self.knots.clone()
+        self.knots.to_vec()
     }
 
     fn continuity(&self) -> usize {
@@ -235,6 +241,22 @@ impl<const D: usize> PiecewiseCurve<D> for CubicSpline<D> {
     fn deriv_on_side(&self, t: f64, k: usize, side: Side) -> Point<D> {
         self.deriv_on_piece(self.locate(t, side), k)
     }
+}
+
+/// The smallest gap between consecutive parameters, as a part of their whole span: closer
+/// knots make slopes overflow and the system singular.
+const MIN_RELATIVE_KNOT_GAP: f64 = 1e-12;
+
+/// Fails unless `knots` (at least 2) are finite, strictly increasing, and no gap is below
+/// [`MIN_RELATIVE_KNOT_GAP`] of their span ([`Error::InvalidKnot`]).
+pub(super) fn check_parameters(knots: &[f64]) -> Result<()> {
+    check_knots(knots, 2, "a cubic spline (knots)")?;
+    let span = knots[knots.len() - 1] - knots[0];
+    check_min_gap(
+        knots,
+        MIN_RELATIVE_KNOT_GAP * span,
+        "closer than 1e-12 of the knot span to the knot before it",
+    )
 }
 
 #[cfg(test)]

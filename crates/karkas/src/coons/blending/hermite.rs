@@ -1,47 +1,13 @@
 //! Cubic Hermite blending: the bicubic Coons family (seed 001, formulas (1)–(3)) and its
 //! piecewise version on a node set, the composite Coons family (formulas (15)–(18)).
 
-use super::{check_nodes, locate, powi, reduce, BlendingFamily};
+use super::{locate, powi, reduce, BlendingFamily};
 use crate::coons::Functional;
+use crate::core::knots::check_knots;
 use crate::core::Interval;
+use crate::spline::hermite_cubic;
 use crate::Result;
 use core::ops::Range;
-
-/// The `k`-th derivative (in `s`) of the cubic Hermite polynomials of the seed's (3) at `s`,
-/// in the seed's order: `H_1 = 2s^3 - 3s^2 + 1` (value 1 at 0), `H_2 = s^3 - 2s^2 + s`
-/// (derivative 1 at 0), `H_3 = s^3 - s^2` (derivative 1 at 1), `H_4 = -2s^3 + 3s^2` (value 1
-/// at 1). Zero for `k >= 4`.
-pub fn hermite_cubic(s: f64, k: usize) -> [f64; 4] {
-    match k {
-        0 => {
-            let s2 = s * s;
-            let s3 = s2 * s;
-            [
-                2.0 * s3 - 3.0 * s2 + 1.0,
-                s3 - 2.0 * s2 + s,
-                s3 - s2,
-                -2.0 * s3 + 3.0 * s2,
-            ]
-        }
-        1 => {
-            let s2 = s * s;
-            [
-                6.0 * s2 - 6.0 * s,
-                3.0 * s2 - 4.0 * s + 1.0,
-                3.0 * s2 - 2.0 * s,
-                -6.0 * s2 + 6.0 * s,
-            ]
-        }
-        2 => [
-            12.0 * s - 6.0,
-            6.0 * s - 4.0,
-            6.0 * s - 2.0,
-            -12.0 * s + 6.0,
-        ],
-        3 => [12.0, 6.0, 6.0, -12.0],
-        _ => [0.0; 4],
-    }
-}
 
 /// The bicubic Coons family on an interval `[a, b]` (seed 001, (1)–(3)): functionals
 /// `f(a), f'(a), f'(b), f(b)` (the seed's order) and the cubic Hermite polynomials scaled to
@@ -56,7 +22,7 @@ pub struct CubicHermiteBlending {
 impl CubicHermiteBlending {
     /// The family on `[a, b]`; fails unless `a < b` are finite.
     pub fn new(a: f64, b: f64) -> Result<Self> {
-        check_nodes(&[a, b], 2, "a cubic Hermite blending family")?;
+        check_knots(&[a, b], 2, "a cubic Hermite blending family")?;
         Ok(CubicHermiteBlending {
             domain: Interval::new(a, b),
             functionals: [
@@ -127,7 +93,7 @@ impl PiecewiseHermiteBlending {
     /// The family on `nodes` (at least two, finite, strictly increasing): `2 * nodes.len()`
     /// functions.
     pub fn new(nodes: &[f64]) -> Result<Self> {
-        check_nodes(nodes, 2, "a piecewise Hermite blending family")?;
+        check_knots(nodes, 2, "a piecewise Hermite blending family")?;
         let functionals = nodes
             .iter()
             .flat_map(|&at| {
@@ -189,39 +155,5 @@ impl BlendingFamily for PiecewiseHermiteBlending {
         out[2 * l + 2] = w[3] * scale;
         out[2 * l + 3] = w[2] * h * scale;
         2 * l..2 * l + 4
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn hermite_conditions_of_the_seed() {
-        // (2): H_1(0)=1, H_2'(0)=1, H_3'(1)=1, H_4(1)=1, all other conditions zero.
-        let (v0, d0, d1, v1) = (
-            hermite_cubic(0.0, 0),
-            hermite_cubic(0.0, 1),
-            hermite_cubic(1.0, 1),
-            hermite_cubic(1.0, 0),
-        );
-        assert_eq!(v0, [1.0, 0.0, 0.0, 0.0]);
-        assert_eq!(d0, [0.0, 1.0, 0.0, 0.0]);
-        assert_eq!(d1, [0.0, 0.0, 1.0, 0.0]);
-        assert_eq!(v1, [0.0, 0.0, 0.0, 1.0]);
-    }
-
-    #[test]
-    fn derivatives_match_differences() {
-        for k in 0..4 {
-            for s in [0.1, 0.37, 0.8] {
-                let e = 1e-6;
-                let (a, b) = (hermite_cubic(s - e, k), hermite_cubic(s + e, k));
-                let d = hermite_cubic(s, k + 1);
-                for c in 0..4 {
-                    assert!(((b[c] - a[c]) / (2.0 * e) - d[c]).abs() < 1e-6);
-                }
-            }
-        }
     }
 }

@@ -1,8 +1,9 @@
 //! Lagrange blending: the Gordon surface family (seed 001, §3 case 3) and, on two nodes, the
 //! bilinear Coons family (§3 case 1).
 
-use super::{check_nodes, reduce, BlendingFamily};
+use super::{reduce, BlendingFamily};
 use crate::coons::Functional;
+use crate::core::knots::check_knots;
 use crate::core::Interval;
 use crate::Result;
 use core::ops::Range;
@@ -26,7 +27,7 @@ pub struct LagrangeBlending {
 impl LagrangeBlending {
     /// The family on `nodes` (at least two, finite, strictly increasing).
     pub fn new(nodes: &[f64]) -> Result<Self> {
-        check_nodes(nodes, 2, "a Lagrange blending family")?;
+        check_knots(nodes, 2, "a Lagrange blending family")?;
         let inverse_denominators = nodes
             .iter()
             .enumerate()

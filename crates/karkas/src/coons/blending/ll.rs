@@ -7,6 +7,7 @@
 
 use super::{reduce, BlendingFamily};
 use crate::coons::Functional;
+use crate::core::knots::check_knots;
 use crate::core::{Curve, Interval};
 use crate::ll::{interpolation_controls, LlCurve, LlKernel};
 use crate::{Error, Point, Result};
@@ -40,11 +41,8 @@ impl LlBlending {
                 got: count,
             });
         }
-        if !(start.is_finite() && end.is_finite() && start < end) {
-            return Err(Error::InvalidInput(format!(
-                "an LL blending family needs a finite interval start < end, got [{start}, {end}]"
-            )));
-        }
+        // The interval [start, end] as two knots: finite, start < end.
+        check_knots(&[start, end], 2, "an LL blending family (interval)")?;
         let kernel = LlKernel::new(order)?;
         let steps = if closed { count } else { count - 1 };
         let cardinals = (0..count)

@@ -19,15 +19,15 @@ mod lagrange;
 mod ll;
 mod spline;
 
-pub use hermite::{hermite_cubic, CubicHermiteBlending, PiecewiseHermiteBlending};
+pub use crate::spline::hermite_cubic;
+pub use crate::spline::SplineEnds;
+pub use hermite::{CubicHermiteBlending, PiecewiseHermiteBlending};
 pub use lagrange::LagrangeBlending;
 pub use ll::LlBlending;
-pub(crate) use spline::SplineSystem;
-pub use spline::{SplineBlending, SplineEnds};
+pub use spline::SplineBlending;
 
 use super::Functional;
-use crate::core::Interval;
-use crate::{Error, Result};
+use crate::core::{knots, Interval, Side};
 use core::fmt::Debug;
 use core::ops::Range;
 
@@ -85,40 +85,10 @@ pub(crate) fn reduce(domain: Interval, periodic: bool, t: f64) -> f64 {
 
 /// The piece `l` of ascending `nodes` (at least two) holding `t`, `0 <= l <= nodes.len() - 2`,
 /// and the local coordinate `s = (t - nodes[l]) / (nodes[l+1] - nodes[l])`. A node belongs to
-/// the piece above it, the last node to the last piece.
+/// the piece above it, the last node to the last piece ([`knots::locate`]).
 #[inline]
 pub(crate) fn locate(nodes: &[f64], t: f64) -> (usize, f64) {
-    let last = nodes.len() - 2;
-    let l = nodes
-        .partition_point(|&x| x <= t)
-        .saturating_sub(1)
-        .min(last);
-    (l, (t - nodes[l]) / (nodes[l + 1] - nodes[l]))
-}
-
-/// Checks that `nodes` are finite and strictly increasing, at least `needed` of them.
-pub(crate) fn check_nodes(nodes: &[f64], needed: usize, what: &'static str) -> Result<()> {
-    if nodes.len() < needed {
-        return Err(Error::TooFewPoints {
-            what,
-            needed,
-            got: nodes.len(),
-        });
-    }
-    if let Some(k) = nodes.iter().position(|x| !x.is_finite()) {
-        return Err(Error::InvalidInput(format!(
-            "{what}: node {k} is not a finite number"
-        )));
-    }
-    if let Some(k) = nodes.windows(2).position(|w| w[1] <= w[0]) {
-        return Err(Error::InvalidInput(format!(
-            "{what}: nodes must increase strictly, but node {} ({}) does not exceed node {k} ({})",
-            k + 1,
-            nodes[k + 1],
-            nodes[k]
-        )));
-    }
-    Ok(())
+    knots::locate(nodes, false, t, Side::Above)
 }
 
 /// `x^n` by repeated multiplication (small `n`).

@@ -1,62 +1,25 @@
-//! The 1-D cubic spline in Hermite form: node slopes from the end conditions (seed 004,
-//! (3.10)–(3.12); METHODS.md §5), and the Hermite basis.
+//! The node slopes of a cubic interpolating spline, factored once: [`SlopeSystem`].
 //!
-//! With knots `t_0 < .. < t_{n-1}`, steps `h_k = t_{k+1} - t_k`, divided differences
-//! `delta_k = (y_{k+1} - y_k) / h_k`, `lambda_i = h_i / (h_{i-1} + h_i)`, `mu_i = 1 - lambda_i`
-//! and the three-point derivative `y'_i = lambda_i delta_{i-1} + mu_i delta_i`, C^2 continuity
-//! at an inner knot reads
-//!
-//! `lambda_i m_{i-1} + 2 m_i + mu_i m_{i+1} = 3 y'_i`.
-//!
-//! Not-a-knot ends (the third derivative is continuous at `t_1` and `t_{n-2}`) give
-//! `m_0 = (g^2 - 1) m_1 + g^2 m_2 + 2 (delta_0 - g^2 delta_1)` with `g = h_0 / h_1` ((3.11);
-//! likewise (3.12) at the other end). Eliminating `m_0` from the row of `t_1` leaves the
-//! diagonally dominant row `(1 + g) m_1 + g m_2 = y'_1 + 2 g delta_1` of (3.10), so the
-//! unknowns `m_1..m_{n-2}` solve a tridiagonal system without pivoting in `O(n)`, and the end
-//! slopes follow. (The OCR of (3.10) garbles the indices of `gamma_N`; re-derived here.)
-//! Natural ends (`2 m_0 + m_1 = 3 delta_0`), clamped ends (given slopes) and periodic ends
-//! (a cyclic tridiagonal system, Sherman–Morrison) complete the set. The results agree with
-//! any standard cubic spline of the same end conditions (tests against SciPy's
-//! `CubicSpline`).
-//!
-//! The matrix depends on the knots only, so [`SlopeSystem`] factors it once (Thomas
-//! algorithm, plus the Sherman–Morrison vector when periodic) and then solves any number of
-//! lines of values: a bicubic surface solves all its columns in one sweep over contiguous
-//! grid rows. Written here rather than on [`crate::solve`] because the factorization is
-//! shared by all lines and the right-hand sides are formed on the fly from the values.
+//! The rows (the C^2 conditions and the end conditions, see the [module docs](super)) depend
+//! on the knots only, so the system is factored once (Thomas algorithm, plus the
+//! Sherman–Morrison vector when periodic) and then solves any number of lines of values: a
+//! bicubic surface solves all its columns in one sweep over contiguous grid rows. The
+//! right-hand sides are formed on the fly from the values.
+
+use super::SplineEnds;
 
 use crate::{Error, Point, Result};
 
-/// The end conditions of a 1-D cubic spline.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum SplineEnds<const D: usize> {
-    /// The third derivative is continuous at the second and the second-to-last knots (the
-    /// seed's (3.10)–(3.12)). With 3 points the spline is the parabola through them, with 2 the
-    /// segment.
-    NotAKnot,
-    /// Zero second derivative at both ends.
-    Natural,
-    /// Given first derivatives at the two ends.
-    Clamped {
-        /// `P'(t_0)`.
-        start: Point<D>,
-        /// `P'(t_{n-1})`.
-        end: Point<D>,
-    },
-    /// Periodic: the last value repeats the first and the curve is `C^2` across the seam.
-    Periodic,
-}
-
 /// Three weighted values `sum w y_k` (an end slope's value part).
-type Taps = [(usize, f64); 3];
+pub(super) type Taps = [(usize, f64); 3];
 
 /// The weights of `y_{c-1}, y_c, y_{c+1}` in the right-hand side of the row of unknown `c`
 /// (`c - 1` wraps to `p - 1` in a periodic system; a weight beyond the ends is zero).
-type Weights = [f64; 3];
+pub(super) type Weights = [f64; 3];
 
 /// How the slopes follow from the solved unknowns.
 #[derive(Clone, Debug, PartialEq)]
-enum Shape {
+pub(super) enum Shape {
     /// `n == 2` (not-a-knot): both slopes are `delta_0`; `h` is the knot step.
     Segment { h: f64 },
     /// `n == 3` (not-a-knot): the parabola; the middle slope is the three-point derivative
@@ -72,6 +35,8 @@ enum Shape {
     /// `factor = (y_0 + ratio y_{p-1}) / denom` (Sherman–Morrison).
     Cyclic {
         z: Vec<f64>,
+        /// `B^-T v` for the transposed solve.
+        zt: Vec<f64>,
         ratio: f64,
         denom: f64,
         corner_bottom: f64,
@@ -110,16 +75,16 @@ impl Rows {
 /// The slope equations of a cubic spline on fixed knots, factored once.
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct SlopeSystem {
-    n: usize,
-    shape: Shape,
+    pub(super) n: usize,
+    pub(super) shape: Shape,
     /// Right-hand side of every unknown's row.
-    rhs: Vec<Weights>,
+    pub(super) rhs: Vec<Weights>,
     /// `p - 1` for a periodic system (the wrapped neighbour of unknown 0).
-    wrap: Option<usize>,
+    pub(super) wrap: Option<usize>,
     /// Thomas factorization: sub-diagonal, inverse pivots, scaled super-diagonal.
-    lower: Vec<f64>,
-    inv_pivot: Vec<f64>,
-    upper_prime: Vec<f64>,
+    pub(super) lower: Vec<f64>,
+    pub(super) inv_pivot: Vec<f64>,
+    pub(super) upper_prime: Vec<f64>,
 }
 
 impl SlopeSystem {
@@ -243,6 +208,7 @@ impl SlopeSystem {
                     rows.diag[p - 1] -= corner_bottom * corner_top / gamma;
                     Shape::Cyclic {
                         z: Vec::new(), // filled once B is factored
+                        zt: Vec::new(),
                         ratio: corner_top / gamma,
                         denom: 0.0,
                         corner_bottom,
@@ -299,8 +265,14 @@ impl SlopeSystem {
                     pivot: denom,
                 });
             }
+            // B^T zt = v with v = (1, 0, .., ratio).
+            let mut zt = vec![0.0; p];
+            zt[0] = 1.0;
+            zt[p - 1] += ratio;
+            system.sweep_transposed(&mut zt);
             system.shape = Shape::Cyclic {
                 z,
+                zt,
                 ratio,
                 denom,
                 corner_bottom,
@@ -452,133 +424,6 @@ impl SlopeSystem {
     }
 }
 
-/// The slopes of one line of not-a-knot values (`n = knots.len() >= 4`) in a single pass:
-/// the same rows, factorization and sweeps as [`SlopeSystem`] with `width = 1`, in the same
-/// floating-point order (bitwise equal results), but formed on the fly from the knots, so
-/// that the only scratch memory is the scaled super-diagonal. `O(n)`.
-///
-/// Fails with [`Error::SingularSystem`] where [`SlopeSystem::new`] would.
-pub(crate) fn not_a_knot_slopes<const D: usize>(
-    knots: &[f64],
-    values: &[Point<D>],
-    slopes: &mut [Point<D>],
-) -> Result<()> {
-    let n = knots.len();
-    debug_assert!(n >= 4 && values.len() == n && slopes.len() == n);
-    let step = |k: usize| knots[k + 1] - knots[k];
-    let (h0, h1) = (step(0), step(1));
-    let (hl, hm) = (step(n - 2), step(n - 3));
-    let (gs, ge) = (h0 / h1, hl / hm);
-    let len = n - 2;
-    let mut upper_prime = vec![0.0; len];
-    let mut previous = 0.0;
-    let mut hp = h0;
-    for (r, up_r) in upper_prime.iter_mut().enumerate() {
-        let k = r + 1;
-        let hc = step(k);
-        let lambda = hc / (hp + hc);
-        let mu = 1.0 - lambda;
-        let (lower, diag, upper, weights) = if k == 1 {
-            let w = mu + 2.0 * gs;
-            (
-                0.0,
-                1.0 + gs,
-                gs,
-                [-lambda / h0, lambda / h0 - w / h1, w / h1],
-            )
-        } else if k == n - 2 {
-            let w = lambda + 2.0 * ge;
-            (ge, 1.0 + ge, 0.0, [-w / hm, w / hm - mu / hl, mu / hl])
-        } else {
-            let weights = [
-                -3.0 * lambda / hp,
-                3.0 * lambda / hp - 3.0 * mu / hc,
-                3.0 * mu / hc,
-            ];
-            (lambda, 2.0, mu, weights)
-        };
-        let pivot = diag - lower * previous;
-        if pivot.abs() <= 1e-300 || !pivot.is_finite() {
-            return Err(Error::SingularSystem { row: r, pivot });
-        }
-        let inv_pivot = 1.0 / pivot;
-        let up = upper * inv_pivot;
-        *up_r = up;
-        previous = up;
-        let rhs = values[k - 1] * weights[0] + values[k] * weights[1] + values[k + 1] * weights[2];
-        slopes[k] = if r == 0 {
-            rhs * inv_pivot
-        } else {
-            rhs.add_scaled(-lower, slopes[k - 1]) * inv_pivot
-        };
-        hp = hc;
-    }
-    for r in (0..len - 1).rev() {
-        let next = slopes[r + 2];
-        slopes[r + 1] = slopes[r + 1].add_scaled(-upper_prime[r], next);
-    }
-    // The not-a-knot end slopes (3.11), (3.12) from the solved ones.
-    let (gs2, ge2) = (gs * gs, ge * ge);
-    let combine = |taps: [(usize, f64); 3]| {
-        taps.iter()
-            .fold(Point::ZERO, |s, &(k, w)| s.add_scaled(w, values[k]))
-    };
-    let start = [
-        (0, -2.0 / h0),
-        (1, 2.0 / h0 + 2.0 * gs2 / h1),
-        (2, -2.0 * gs2 / h1),
-    ];
-    let end = [
-        (n - 1, 2.0 / hl),
-        (n - 2, -2.0 / hl - 2.0 * ge2 / hm),
-        (n - 3, 2.0 * ge2 / hm),
-    ];
-    slopes[0] = (slopes[1] * (gs2 - 1.0) + slopes[2] * gs2) + combine(start);
-    slopes[n - 1] = (slopes[n - 2] * (ge2 - 1.0) + slopes[n - 3] * ge2) + combine(end);
-    Ok(())
-}
-
-/// Weights of `[y_k, y_{k+1}, m_k, m_{k+1}]` in the `order`-th derivative (per unit of the
-/// parameter) of the cubic Hermite segment of length `h` at local coordinate `s` in `[0, 1]`
-/// ((3.7): `phi_1 = (1-s)^2 (1+2s)`, `phi_2 = s^2 (3-2s)`, `phi_3 = s (1-s)^2`,
-/// `phi_4 = -s^2 (1-s)`, slopes weighted by `h`).
-#[inline]
-pub(crate) fn hermite_weights(s: f64, h: f64, order: usize) -> [f64; 4] {
-    let s2 = s * s;
-    let (w, scale) = match order {
-        0 => (
-            [
-                1.0 - s2 * (3.0 - 2.0 * s),
-                s2 * (3.0 - 2.0 * s),
-                s * (1.0 - s) * (1.0 - s),
-                s2 * (s - 1.0),
-            ],
-            1.0,
-        ),
-        1 => (
-            [
-                6.0 * s * (s - 1.0),
-                6.0 * s * (1.0 - s),
-                1.0 - 4.0 * s + 3.0 * s2,
-                s * (3.0 * s - 2.0),
-            ],
-            1.0 / h,
-        ),
-        2 => (
-            [12.0 * s - 6.0, 6.0 - 12.0 * s, 6.0 * s - 4.0, 6.0 * s - 2.0],
-            1.0 / (h * h),
-        ),
-        3 => ([12.0, -12.0, 6.0, 6.0], 1.0 / (h * h * h)),
-        _ => return [0.0; 4],
-    };
-    [
-        w[0] * scale,
-        w[1] * scale,
-        w[2] * scale * h,
-        w[3] * scale * h,
-    ]
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -644,53 +489,5 @@ mod tests {
                 }
             }
         }
-    }
-
-    #[test]
-    fn one_pass_not_a_knot_equals_the_factored_system_bitwise() {
-        for n in [4usize, 5, 6, 17, 200] {
-            let knots: Vec<f64> = (0..n)
-                .map(|k| k as f64 + 0.6 * ((k * k) as f64 * 0.37).sin())
-                .collect();
-            let values: Vec<Point<3>> = (0..n)
-                .map(|k| {
-                    let f = k as f64;
-                    Point([(1.3 * f).sin(), (0.7 * f).cos() * f, 1e-3 * f * f])
-                })
-                .collect();
-            let mut expect = vec![Point::ZERO; n];
-            SlopeSystem::new(&knots, &SplineEnds::<3>::NotAKnot)
-                .unwrap()
-                .solve(&values, &mut expect, 1, None);
-            let mut got = vec![Point::ZERO; n];
-            not_a_knot_slopes(&knots, &values, &mut got).unwrap();
-            for (g, e) in got.iter().zip(&expect) {
-                for c in 0..3 {
-                    assert_eq!(g[c].to_bits(), e[c].to_bits(), "n={n}: {g:?} vs {e:?}");
-                }
-            }
-        }
-    }
-
-    #[test]
-    fn hermite_weights_are_derivatives_of_each_other() {
-        let h = 0.7;
-        let eps = 1e-6;
-        for order in 0..3 {
-            for s in [0.1, 0.5, 0.8] {
-                let a = hermite_weights(s + eps, h, order);
-                let b = hermite_weights(s - eps, h, order);
-                let d = hermite_weights(s, h, order + 1);
-                for k in 0..4 {
-                    let fd = (a[k] - b[k]) / (2.0 * eps * h);
-                    assert!(
-                        (fd - d[k]).abs() < 1e-6,
-                        "order {order} k {k}: {fd} vs {}",
-                        d[k]
-                    );
-                }
-            }
-        }
-        assert_eq!(hermite_weights(0.3, 1.0, 4), [0.0; 4]);
     }
 }
