@@ -41,7 +41,7 @@ def spiral(s):
 
 def naca2412(beta):
     """NACA 2412, closed trailing edge; beta in [0, 2 pi]: x = (1 + cos beta) / 2, upper
-    surface first (the formulas of crates/karkas/tests/fit_common/mod.rs)."""
+    surface first (the formulas of crates/karkas/tests/karkas/fit_reference.rs)."""
     m, p, t = 0.02, 0.4, 0.12
     x = 0.5 * (1 + np.cos(beta))
     yt = 5 * t * (0.2969 * np.sqrt(x) - 0.1260 * x - 0.3516 * x**2 + 0.2843 * x**3 - 0.1036 * x**4)

@@ -2,9 +2,8 @@
 //! convex hull of three consecutive points, interpolation, periodicity, batch evaluation.
 //! Fixed seed and case count, so CI runs are reproducible.
 
-mod common;
-
-use common::{assert_near, RefCurve};
+use crate::common::{assert_near, linspace, max_abs};
+use crate::ll_reference::RefCurve;
 use karkas::ll::{LlCurve, LlSurface};
 use karkas::{Curve, Grid, Point, Surface};
 use proptest::prelude::*;
@@ -71,9 +70,9 @@ fn check_affine<const D: usize>(
     let a = build(pts, l, closed, interp);
     let b = build(&moved, l, closed, interp);
     assert_eq!(a.axis(), b.axis());
-    let scale = common::max_abs(&moved) + 100.0;
+    let scale = max_abs(&moved) + 100.0;
     let d = a.domain();
-    for t in common::linspace(d.start, d.end, 41) {
+    for t in linspace(d.start, d.end, 41) {
         let want = apply(m, a.eval(t), true);
         assert_near(b.eval(t), want, 1e-11 * scale, "curve of moved points");
         let want = apply(m, a.deriv(t, 1), false);
@@ -118,7 +117,7 @@ proptest! {
         for i in 1..=r.k() {
             let (a, b, e) = (r.ext[i - 1], r.ext[i], r.ext[i + 1]);
             let area = cross(b - a, e - a);
-            for xi in common::linspace(0.0, 1.0, 21) {
+            for xi in linspace(0.0, 1.0, 21) {
                 let t = r.param(i, xi);
                 if !c.domain().contains(t) {
                     continue;
@@ -153,7 +152,7 @@ proptest! {
         let c = LlCurve::new(&pts, l, closed).unwrap();
         let r = RefCurve::new(&pts, l, closed);
         for i in 1..=r.k() {
-            for xi in common::linspace(0.0, 1.0, 17) {
+            for xi in linspace(0.0, 1.0, 17) {
                 let t = r.param(i, xi);
                 if !c.domain().contains(t) || (c.is_closed() && t >= c.domain().end) {
                     continue;
@@ -172,7 +171,7 @@ proptest! {
         pts in points::<3>(3, 16), l in 1usize..=12, closed in any::<bool>(),
     ) {
         let c = LlCurve::interpolating(&pts, l, closed).unwrap();
-        let tol = 1e-11 * common::max_abs(&pts);
+        let tol = 1e-11 * max_abs(&pts);
         for (i, p) in pts.iter().enumerate() {
             assert_near(c.eval(c.axis().node(i + 1)), *p, tol, "interpolated point");
         }
@@ -185,7 +184,7 @@ proptest! {
     ) {
         let c = build(&pts, l, true, interp);
         let per = c.period().unwrap();
-        let scale = common::max_abs(c.control_points());
+        let scale = max_abs(c.control_points());
         assert_near(c.eval(t + m as f64 * per), c.eval(t), 1e-12 * scale, "P(t + m period)");
         let s1 = scale * c.axis().scale() * 4.0;
         assert_near(c.deriv(t + m as f64 * per, 1), c.deriv(t, 1), 1e-11 * s1, "P'");
@@ -204,7 +203,7 @@ proptest! {
         ts.extend(karkas::PiecewiseCurve::breakpoints(&c));
         let mut out = vec![Point::ZERO; ts.len()];
         c.eval_into(&ts, &mut out);
-        let tol = 1e-13 * common::max_abs(&pts);
+        let tol = 1e-13 * max_abs(&pts);
         for (p, &t) in out.iter().zip(&ts) {
             assert_near(*p, c.eval(t), tol, "eval_into");
         }
@@ -218,7 +217,7 @@ proptest! {
     ) {
         let g = Grid::from_fn(rows, cols, |i, j| Point(vals[i * 6 + j]));
         let moved = Grid::from_fn(rows, cols, |i, j| apply(&m, *g.get(i, j), true));
-        let scale = common::max_abs(moved.as_slice()) + 100.0;
+        let scale = max_abs(moved.as_slice()) + 100.0;
         for interp in [false, true] {
             let (a, b) = if interp {
                 (LlSurface::interpolating(&g, l, cu, cv).unwrap(),
@@ -227,8 +226,8 @@ proptest! {
                 (LlSurface::new(&g, l, cu, cv).unwrap(), LlSurface::new(&moved, l, cu, cv).unwrap())
             };
             let (du, dv) = (a.domain_u(), a.domain_v());
-            for u in common::linspace(du.start, du.end, 7) {
-                for v in common::linspace(dv.start, dv.end, 7) {
+            for u in linspace(du.start, du.end, 7) {
+                for v in linspace(dv.start, dv.end, 7) {
                     let want = apply(&m, a.eval(u, v), true);
                     assert_near(b.eval(u, v), want, 1e-11 * scale, "surface of moved grid");
                 }

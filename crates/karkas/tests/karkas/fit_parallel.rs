@@ -2,9 +2,7 @@
 //! result does not depend on the number of threads (bitwise), and it is still a fit whose
 //! foot points are local minimizers of the distance.
 
-mod fit_common;
-
-use fit_common::noisy_spiral;
+use crate::fit_reference::noisy_spiral;
 use karkas::fit::{fit_curve, uniform_knots, CurveFit, FitOptions};
 use karkas::{Curve, Point2};
 

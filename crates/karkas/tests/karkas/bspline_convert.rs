@@ -9,14 +9,11 @@ use karkas::param::{BicubicSurface, CubicSpline, SplineEnds};
 use karkas::{Curve, Error, Grid, Point, Point3, Surface};
 use proptest::prelude::*;
 
+use crate::common::linspace;
+
 /// The largest coordinate magnitude of `points` (at least 1e-300).
 fn size<const D: usize>(points: &[Point<D>]) -> f64 {
     points.iter().map(|p| p.norm()).fold(1e-300, f64::max)
-}
-
-/// Parameters spread over `[a, b]`, ends included, avoiding nothing.
-fn params(a: f64, b: f64, n: usize) -> Vec<f64> {
-    (0..=n).map(|k| a + (b - a) * k as f64 / n as f64).collect()
 }
 
 /// Parameters strictly inside the pieces of `breaks` (derivatives may jump at breaks).
@@ -47,7 +44,7 @@ fn compare_curves<const D: usize>(
     let d = original.domain();
     assert!((bspline.domain().start - d.start).abs() <= 1e-15 * d.length().max(1.0));
     assert!((bspline.domain().end - d.end).abs() <= 1e-15 * d.length().max(1.0));
-    for t in params(d.start, d.end, 97) {
+    for t in linspace(d.start, d.end, 98) {
         let err = original.eval(t).distance(bspline.eval(t));
         assert!(err <= 1e-12 * data_size, "t {t}: value error {err:e}");
     }
@@ -72,8 +69,8 @@ fn compare_surfaces<const D: usize>(
     rate: f64,
 ) {
     let (du, dv) = (original.domain_u(), original.domain_v());
-    for u in params(du.start, du.end, 23) {
-        for v in params(dv.start, dv.end, 19) {
+    for u in linspace(du.start, du.end, 24) {
+        for v in linspace(dv.start, dv.end, 20) {
             let err = original.eval(u, v).distance(bspline.eval(u, v));
             assert!(err <= 1e-12 * data_size, "({u}, {v}): value error {err:e}");
         }
@@ -124,7 +121,7 @@ fn kernel_bernstein_form_reproduces_h() {
         assert_eq!(m[0], 2 * order + 1);
         assert_eq!(*m.last().unwrap(), 2 * order + 1);
         assert!(m[1..m.len() - 1].iter().all(|&k| k == order), "{m:?}");
-        for xi in params(0.0, 1.0, 40) {
+        for xi in linspace(0.0, 1.0, 41) {
             let t = (xi + 1.5) / 5.0; // segment 2 of K = 4 nodes
             let expected = kernel.h(xi) / 2.0;
             let got = b.eval(t)[0];
@@ -158,7 +155,7 @@ fn bspline_evaluation_matches_cox_de_boor_basis() {
         .map(|i| Point([(i as f64).sin() * 3.0, (i * i) as f64 * 0.1]))
         .collect();
     let c = BSplineCurve::new(3, knots.clone(), control.clone()).unwrap();
-    for t in params(0.0, 1.0, 50) {
+    for t in linspace(0.0, 1.0, 51) {
         let expected = control
             .iter()
             .enumerate()

@@ -2,9 +2,7 @@
 //! `h` summed from its definition, `h'` as the incomplete beta sum, `h^(j)` from the exact
 //! monomial coefficients of `h`).
 
-mod common;
-
-use common::{binom, RefKernel, Q};
+use crate::ll_reference::{binom, RefKernel, Q};
 use karkas::ll::{LlKernel, MAX_ORDER};
 use karkas::Error;
 

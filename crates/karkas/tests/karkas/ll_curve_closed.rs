@@ -1,10 +1,9 @@
 //! Closed LL curves (METHODS.md §1.2): closing rule, `r_0 = r_{K-1}`, `r_{K+1} = r_2`,
 //! periodicity, smoothness across the seam, C^L joins and node deviation.
 
-mod common;
-
-use common::{
-    assert_near, check_curve_borders, deriv_tol, linspace, loop2, loop3, RefCurve, RefKernel,
+use crate::common::{assert_near, linspace, max_abs};
+use crate::ll_reference::{
+    check_curve_borders, deriv_tol, loop2, loop3, wavy2, RefCurve, RefKernel,
 };
 use karkas::ll::LlCurve;
 use karkas::{Curve, Point};
@@ -98,12 +97,7 @@ fn node_deviation_uses_the_periodic_neighbours() {
             // r_0 = r_{K-1} (the last distinct point), r_{K+1} = r_2.
             let d_i = pts[(i + n - 1) % n] + pts[(i + 1) % n] - pts[i] * 2.0;
             let got = c.eval(c.axis().node(i + 1)) - pts[i];
-            assert_near(
-                got,
-                d_i * d_l,
-                1e-13 * common::max_abs(&pts),
-                "node deviation",
-            );
+            assert_near(got, d_i * d_l, 1e-13 * max_abs(&pts), "node deviation");
         }
         // Node K is node 1 again.
         let k = c.axis().nodes();
@@ -144,10 +138,7 @@ fn closed_curves_are_periodic() {
 #[test]
 fn the_seam_is_smooth() {
     for l in ORDERS {
-        for (pts, what) in [
-            (loop2(8), "loop"),
-            (common::wavy2(6), "open polygon closed"),
-        ] {
+        for (pts, what) in [(loop2(8), "loop"), (wavy2(6), "open polygon closed")] {
             let c = LlCurve::new(&pts, l, true).unwrap();
             let r = RefCurve::new(&pts, l, true);
             let d = c.domain();

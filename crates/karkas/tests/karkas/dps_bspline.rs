@@ -2,9 +2,8 @@
 //! the `O(r N)` moving-sum evaluation against the seed's convolution definition, partition of
 //! unity, non-negativity, symmetry, the convex hull, periodicity, and the input errors.
 
-mod dps_reference;
-
-use dps_reference::{bspline_by_convolution, hat, spline_by_definition, Rng};
+use crate::common::Rng;
+use crate::dps_reference::{bspline_by_convolution, hat, spline_by_definition};
 use karkas::dps::{discrete_bspline, DiscreteSpline, MAX_ORDER};
 use karkas::{Error, Point};
 use proptest::prelude::*;

@@ -3,12 +3,11 @@
 //! (C^1, interpolated curves and cross-derivatives), closed directions, and the
 //! compatibility errors of (8) / (11).
 
-mod coons_common;
-
 use std::sync::Arc;
 
-use coons_common::{
-    assert_close, exact_cross, iso, linspace, network, tube, wavy_sheet, Analytic, Dir,
+use crate::common::linspace;
+use crate::coons_reference::{
+    assert_close, exact_cross, iso, network, tube, wavy_sheet, Analytic, Dir, Term, F1,
 };
 use karkas::coons::{CoonsSurface, CrossDerivatives, CurveNetwork, NetworkAxis, SplineEnds};
 use karkas::{Error, Interval, Point3, Surface};
@@ -226,11 +225,11 @@ fn incompatible_values_are_an_error_naming_the_pair() {
     let moved = Arc::new(Analytic {
         terms: {
             let mut t = wavy_sheet().terms;
-            t.push(coons_common::Term {
+            t.push(Term {
                 coord: 2,
                 coefficient: 1e-3,
-                fu: coons_common::F1::One,
-                fv: coons_common::F1::One,
+                fu: F1::One,
+                fv: F1::One,
             });
             t
         },

@@ -3,9 +3,8 @@
 //! with the (L+1)-th partial jumping, interpolated grid corners, periodic closed directions,
 //! grid evaluation.
 
-mod common;
-
-use common::{assert_near, linspace, surface_grid, with_repeats, RefSurface};
+use crate::common::{assert_near, linspace};
+use crate::ll_reference::{surface_grid, with_repeats, RefKernel, RefSurface};
 use karkas::ll::{LlCurve, LlSurface};
 use karkas::{Curve, Grid, PiecewiseSurface, Point, Side, Surface};
 
@@ -103,7 +102,7 @@ fn formula_19(r: [Point<3>; 9], d: f64) -> Point<3> {
 #[test]
 fn nodes_follow_formula_19() {
     for l in ORDERS.chain([30, 64]) {
-        let d = common::RefKernel::new(l).d_l;
+        let d = RefKernel::new(l).d_l;
         for (cu, cv) in CLOSINGS {
             let g = surface_grid(6, 7, cu, cv);
             let s = LlSurface::new(&g, l, cu, cv).unwrap();

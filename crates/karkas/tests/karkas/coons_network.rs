@@ -2,9 +2,8 @@
 //! values, reparameterization of unevenly sampled curves, closed families rotated to their
 //! seam, cross-derivative data, and every network error.
 
-mod coons_common;
-
-use coons_common::{linspace, tube, wavy_sheet, Analytic};
+use crate::common::linspace;
+use crate::coons_reference::{tube, wavy_sheet, Analytic};
 use karkas::coons::{CoonsSurface, CurveFit, PointNetwork, SplineEnds};
 use karkas::{Error, Point3, Surface};
 

@@ -2,9 +2,8 @@
 //! surface (conditions (2)), tensor-product discrete splines are reproduced exactly, and bad
 //! skeletons are errors naming what is wrong.
 
-mod dps_reference;
-
-use dps_reference::{bspline_by_convolution, Rng};
+use crate::common::Rng;
+use crate::dps_reference::bspline_by_convolution;
 use karkas::dps::{compatibility_residual, TubeSurface, COMPATIBILITY_TOLERANCE};
 use karkas::{Error, Grid, Point, Point3};
 use std::f64::consts::TAU;

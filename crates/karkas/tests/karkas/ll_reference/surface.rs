@@ -1,6 +1,7 @@
 //! The reference LL surface of METHODS.md §1.3 and its test grids.
 
-use super::{extend, max_abs, RefKernel};
+use super::{extend, RefKernel};
+use crate::common::max_abs;
 use karkas::{Grid, Point};
 
 // ------------------------------------------------------------------------------------------

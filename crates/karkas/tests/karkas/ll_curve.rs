@@ -1,11 +1,8 @@
 //! Open LL curves (METHODS.md §1.2): parameters, agreement with the definition, C^L joins,
 //! node deviation (5), end points, no oscillation, monotonicity, straight segments.
 
-mod common;
-
-use common::{
-    assert_near, check_curve_borders, deriv_tol, linspace, wavy2, wavy3, RefCurve, RefKernel,
-};
+use crate::common::{assert_near, linspace, max_abs};
+use crate::ll_reference::{check_curve_borders, deriv_tol, wavy2, wavy3, RefCurve, RefKernel};
 use karkas::ll::LlCurve;
 use karkas::{Curve, PiecewiseCurve, Point, Side};
 
@@ -119,7 +116,7 @@ fn check_node_deviation<const D: usize>(pts: &[Point<D>], l: usize) {
     let k = pts.len();
     let r0 = pts[0] * 2.0 - pts[1];
     let rk1 = pts[k - 1] * 2.0 - pts[k - 2];
-    let scale = common::max_abs(pts);
+    let scale = max_abs(pts);
     for i in 1..=k {
         let prev = if i == 1 { r0 } else { pts[i - 2] };
         let next = if i == k { rk1 } else { pts[i] };
@@ -150,7 +147,7 @@ fn open_curves_pass_through_their_end_points() {
             let pts = wavy3(n);
             let c = LlCurve::new(&pts, l, false).unwrap();
             let d = c.domain();
-            let tol = 1e-14 * common::max_abs(&pts);
+            let tol = 1e-14 * max_abs(&pts);
             assert_near(c.eval(d.start), pts[0], tol, "start");
             assert_near(c.eval(d.end), pts[n - 1], tol, "end");
             // Interior nodes are not interpolated (the data are generic).

@@ -2,11 +2,8 @@
 //! point at its node, its control polygon solves (6) (checked against a dense solve), and it
 //! keeps the C^L joins.
 
-mod common;
-
-use common::{
-    assert_near, check_curve_borders, dense_solve, loop2, loop3, wavy2, wavy3, RefCurve, RefKernel,
-};
+use crate::common::{assert_near, dense_solve, linspace, max_abs};
+use crate::ll_reference::{check_curve_borders, loop2, loop3, wavy2, wavy3, RefCurve, RefKernel};
 use karkas::ll::{interpolation_controls, LlCurve};
 use karkas::{Curve, Point};
 
@@ -37,7 +34,7 @@ fn dense_controls<const D: usize>(p: &[Point<D>], d: f64, closed: bool) -> Vec<P
 fn check_passes_through<const D: usize>(pts: &[Point<D>], closed: bool) {
     for l in ORDERS.chain([20, 64]) {
         let c = LlCurve::interpolating(pts, l, closed).unwrap();
-        let tol = 1e-12 * common::max_abs(pts);
+        let tol = 1e-12 * max_abs(pts);
         for (i, p) in pts.iter().enumerate() {
             let t = c.axis().node(i + 1);
             assert_near(c.eval(t), *p, tol, &format!("node {}, L = {l}", i + 1));
@@ -72,7 +69,7 @@ fn control_points_solve_system_6() {
             let pts = wavy3(n);
             let c = LlCurve::interpolating(&pts, l, false).unwrap();
             let want = dense_controls(&pts, d, false);
-            let tol = 1e-12 * common::max_abs(&pts);
+            let tol = 1e-12 * max_abs(&pts);
             for (i, (got, w)) in c.control_points().iter().zip(&want).enumerate() {
                 assert_near(
                     *got,
@@ -121,7 +118,7 @@ fn interpolating_curve_is_the_ll_curve_of_its_controls() {
             let ctrl = c.control_points().to_vec();
             let r = RefCurve::new(&ctrl, l, closed);
             let d = c.domain();
-            for t in common::linspace(d.start, d.end, 201) {
+            for t in linspace(d.start, d.end, 201) {
                 let what = format!("L = {l}, closed = {closed}, t = {t}");
                 assert_near(c.eval(t), r.at(t, 0), 1e-13 * r.size(), &what);
             }
@@ -144,7 +141,7 @@ fn closing_rule_holds_for_the_interpolating_variant() {
         let a = LlCurve::interpolating(&pts, l, true).unwrap();
         let b = LlCurve::interpolating(&repeated, l, true).unwrap();
         assert_eq!(a.control_points(), b.control_points());
-        for t in common::linspace(0.0, 1.0, 101) {
+        for t in linspace(0.0, 1.0, 101) {
             assert_eq!(a.eval(t), b.eval(t));
         }
     }

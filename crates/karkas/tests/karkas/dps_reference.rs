@@ -1,8 +1,6 @@
 //! Slow, independent references for the discrete periodic spline tests: the B-spline by the
-//! seed's definition (explicit hat, cyclic convolution), a dense linear solver, the roughness
-//! `sum ||Delta^r x||^2`, and a fixed-seed random generator.
-
-#![allow(dead_code)]
+//! seed's definition (explicit hat, cyclic convolution) and the roughness
+//! `sum ||Delta^r x||^2`.
 
 use karkas::Point;
 
@@ -53,33 +51,6 @@ pub fn spline_by_definition<const D: usize>(
         .collect()
 }
 
-/// Solves the dense system `a x = b` by Gaussian elimination with partial pivoting (in place).
-pub fn dense_solve(mut a: Vec<Vec<f64>>, mut b: Vec<f64>) -> Vec<f64> {
-    let size = b.len();
-    for col in 0..size {
-        let pivot = (col..size)
-            .max_by(|&x, &y| a[x][col].abs().total_cmp(&a[y][col].abs()))
-            .unwrap();
-        a.swap(col, pivot);
-        b.swap(col, pivot);
-        let (upper, lower) = a.split_at_mut(col + 1);
-        let pivot_row = &upper[col];
-        for (offset, row) in lower.iter_mut().enumerate() {
-            let f = row[col] / pivot_row[col];
-            for (x, p) in row[col..].iter_mut().zip(&pivot_row[col..]) {
-                *x -= f * p;
-            }
-            b[col + 1 + offset] -= f * b[col];
-        }
-    }
-    let mut x = vec![0.0; size];
-    for row in (0..size).rev() {
-        let s: f64 = (row + 1..size).map(|k| a[row][k] * x[k]).sum();
-        x[row] = (b[row] - s) / a[row][row];
-    }
-    x
-}
-
 /// The periodic forward difference of order `r`: `(Delta^r x)(j)`.
 pub fn difference<const D: usize>(x: &[Point<D>], r: usize) -> Vec<Point<D>> {
     let mut d = x.to_vec();
@@ -104,34 +75,4 @@ pub fn roughness_gradient<const D: usize>(x: &[Point<D>], r: usize) -> Vec<Point
         d = (0..len).map(|j| d[(j + len - 1) % len] - d[j]).collect();
     }
     d
-}
-
-/// A small xorshift generator with a fixed seed: reproducible "random" data without a
-/// dependency.
-pub struct Rng(u64);
-
-impl Rng {
-    pub fn new(seed: u64) -> Rng {
-        Rng(seed.max(1))
-    }
-
-    /// Uniform in `[-1, 1)`.
-    pub fn next(&mut self) -> f64 {
-        self.0 ^= self.0 << 13;
-        self.0 ^= self.0 >> 7;
-        self.0 ^= self.0 << 17;
-        (self.0 >> 11) as f64 / (1u64 << 52) as f64 - 1.0
-    }
-
-    pub fn point<const D: usize>(&mut self) -> Point<D> {
-        let mut p = Point::ZERO;
-        for c in 0..D {
-            p[c] = self.next();
-        }
-        p
-    }
-
-    pub fn points<const D: usize>(&mut self, count: usize) -> Vec<Point<D>> {
-        (0..count).map(|_| self.point()).collect()
-    }
 }

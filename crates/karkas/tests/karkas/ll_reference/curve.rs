@@ -1,6 +1,7 @@
 //! The reference LL curve of METHODS.md §1.2 and the shared border checks.
 
-use super::{assert_near, max_abs, RefKernel};
+use super::RefKernel;
+use crate::common::{assert_near, max_abs};
 use karkas::ll::LlCurve;
 use karkas::{PiecewiseCurve, Point, Side};
 
@@ -13,7 +14,6 @@ pub struct RefCurve<const D: usize> {
     pub kernel: RefKernel,
     /// `r_0..r_{K+1}`.
     pub ext: Vec<Point<D>>,
-    pub closed: bool,
 }
 
 impl<const D: usize> RefCurve<D> {
@@ -27,7 +27,6 @@ impl<const D: usize> RefCurve<D> {
         RefCurve {
             kernel: RefKernel::new(l),
             ext: extend(&r, closed),
-            closed,
         }
     }
 

@@ -2,10 +2,9 @@
 //! DFT formula against a direct solve of the circulant system, the nodes, the extremal
 //! property, and convergence of order 2 to the periodic cubic interpolating spline.
 
-mod dps_reference;
-
-use dps_reference::{
-    bspline_by_convolution, dense_solve, roughness, roughness_gradient, spline_by_definition, Rng,
+use crate::common::{dense_solve_vector, max_abs, Rng};
+use crate::dps_reference::{
+    bspline_by_convolution, roughness, roughness_gradient, spline_by_definition,
 };
 use karkas::dps::{DiscreteSpline, InterpolationPlan};
 use karkas::{Error, Point};
@@ -23,7 +22,7 @@ fn poles_by_direct_solve<const D: usize>(nodes: &[Point<D>], r: usize, n: usize)
         .collect();
     let mut poles = vec![Point::ZERO; m];
     for c in 0..D {
-        let x = dense_solve(matrix.clone(), nodes.iter().map(|z| z[c]).collect());
+        let x = dense_solve_vector(matrix.clone(), nodes.iter().map(|z| z[c]).collect());
         for (a, v) in poles.iter_mut().zip(x) {
             a[c] = v;
         }
@@ -39,7 +38,7 @@ fn dft_formula_agrees_with_a_direct_circulant_solve() {
             let nodes: Vec<Point<3>> = rng.points(m);
             let fast = DiscreteSpline::interpolating(&nodes, r, n).unwrap();
             let slow = poles_by_direct_solve(&nodes, r, n);
-            let scale = slow.iter().fold(1.0f64, |s, p| s.max(p.max_abs()));
+            let scale = max_abs(&slow);
             for (p, (a, b)) in fast.poles().iter().zip(&slow).enumerate() {
                 assert!(
                     a.distance(*b) < 1e-13 * scale,
@@ -166,7 +165,7 @@ fn periodic_cubic(z: &[f64], t: f64) -> f64 {
         a[l][(l + 1) % m] += 1.0;
         b[l] = 6.0 * (z[(l + 1) % m] - 2.0 * z[l] + z[(l + m - 1) % m]);
     }
-    let moments = dense_solve(a, b);
+    let moments = dense_solve_vector(a, b);
     let l = (t.floor() as usize) % m;
     let u = t - t.floor();
     let next = (l + 1) % m;
@@ -228,7 +227,7 @@ proptest! {
         let spline = DiscreteSpline::interpolating(&nodes, r, n).unwrap();
         let values = spline.to_values();
         // The poles may be large for high orders (ill-conditioning); the nodes still match.
-        let scale = spline.poles().iter().fold(1.0f64, |s, p| s.max(p.max_abs()));
+        let scale = max_abs(spline.poles());
         for (l, z) in nodes.iter().enumerate() {
             prop_assert!(values[l * n].distance(*z) < 1e-13 * scale, "l={l}");
         }

@@ -3,12 +3,11 @@
 //! the span of the blending functions, grid evaluation, curve types (LL curves, polylines),
 //! parameters outside the domain.
 
-mod coons_common;
-
 use std::sync::Arc;
 
-use coons_common::{
-    assert_close, cubic_in_u, exact_cross, iso, linspace, network, wavy_sheet, Analytic, Dir,
+use crate::common::linspace;
+use crate::coons_reference::{
+    assert_close, cubic_in_u, exact_cross, iso, network, torus, wavy_sheet, Analytic, Dir,
 };
 use karkas::coons::{
     curve_ref, CoonsSurface, CubicHermiteBlending, CurveNetwork, CurveRef, FamilyRef,
@@ -148,7 +147,7 @@ fn proposition_1_for_the_boolean_sum_over_every_family_pair() {
 
 #[test]
 fn proposition_1_for_periodic_families() {
-    let s = Arc::new(coons_common::torus());
+    let s = Arc::new(torus());
     let tau = std::f64::consts::TAU;
     let u: FamilyRef = Arc::new(
         SplineBlending::new(&[0.0, 1.0, 2.5, 4.0, 5.0, tau], SplineEnds::Periodic).unwrap(),
@@ -305,7 +304,7 @@ fn surfaces_in_the_span_of_the_blending_are_reproduced() {
 fn grid_evaluation_equals_pointwise_evaluation() {
     let (s, u_axis, v_axis, net) = sheet_network();
     let cross = exact_cross(&s, &u_axis, &v_axis);
-    let torus = Arc::new(coons_common::torus());
+    let torus = Arc::new(torus());
     let tau = std::f64::consts::TAU;
     let closed_u = NetworkAxis::closed(vec![0.0, 1.3, 2.9, 4.4], tau).unwrap();
     let closed_v = NetworkAxis::closed(vec![0.0, 2.0, 3.5, 5.0, 5.6], tau).unwrap();

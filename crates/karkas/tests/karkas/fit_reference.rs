@@ -1,30 +1,9 @@
-//! Helpers shared by the fit tests: data with known truth, a seeded random source, and slow
-//! independent references (Bezier evaluation of Hermite pieces, dense least squares).
-#![allow(dead_code, clippy::needless_range_loop)]
+//! The reference of the fit tests: data with known truth and slow independent references
+//! (Bezier evaluation of Hermite pieces, dense least squares).
+#![allow(clippy::needless_range_loop)]
 
+use crate::common::{dense_solve_vector, Rng};
 use karkas::Point2;
-
-/// A xorshift generator with a fixed seed (no dependency, reproducible).
-pub struct Rng(u64);
-
-impl Rng {
-    pub fn new(seed: u64) -> Self {
-        Rng(seed.max(1))
-    }
-    /// Uniform in [0, 1).
-    pub fn uniform(&mut self) -> f64 {
-        self.0 ^= self.0 << 13;
-        self.0 ^= self.0 >> 7;
-        self.0 ^= self.0 << 17;
-        (self.0 >> 11) as f64 / (1u64 << 53) as f64
-    }
-    /// Standard normal (Box–Muller).
-    pub fn normal(&mut self) -> f64 {
-        let u = self.uniform().max(1e-300);
-        let v = self.uniform();
-        (-2.0 * u.ln()).sqrt() * (2.0 * std::f64::consts::PI * v).cos()
-    }
-}
 
 /// A point of the NACA 4-digit section `m p t` (camber m, its position p, thickness t, as
 /// fractions of the chord), closed trailing edge, at `beta in [0, 2 pi]`: x = (1 + cos beta)/2,
@@ -71,17 +50,6 @@ pub fn polyline_distance(line: &[Point2], q: Point2, from: usize, to: usize) -> 
     best
 }
 
-/// The larger of the two one-sided maximum distances between polylines `a` and `b`, each
-/// point searched against the whole of the other (slow, plain).
-pub fn hausdorff(a: &[Point2], b: &[Point2]) -> f64 {
-    let one = |x: &[Point2], y: &[Point2]| {
-        x.iter()
-            .map(|&q| polyline_distance(y, q, 0, y.len()).0)
-            .fold(0.0f64, f64::max)
-    };
-    one(a, b).max(one(b, a))
-}
-
 /// The Hermite piece on `[t0, t1]` with end values `r0, r1` and derivatives `h0, h1`,
 /// evaluated at `t` through its Bezier form and de Casteljau (independent of the library's
 /// power-basis formulas).
@@ -110,31 +78,6 @@ pub fn hermite_piece(
     c[0]
 }
 
-/// Solves the dense square system `a x = b` by Gaussian elimination with partial pivoting.
-pub fn solve_dense(mut a: Vec<Vec<f64>>, mut b: Vec<f64>) -> Vec<f64> {
-    let n = b.len();
-    for c in 0..n {
-        let p = (c..n)
-            .max_by(|&i, &j| a[i][c].abs().total_cmp(&a[j][c].abs()))
-            .unwrap();
-        a.swap(c, p);
-        b.swap(c, p);
-        for r in c + 1..n {
-            let f = a[r][c] / a[c][c];
-            for k in c..n {
-                a[r][k] -= f * a[c][k];
-            }
-            b[r] -= f * b[c];
-        }
-    }
-    let mut x = vec![0.0; n];
-    for r in (0..n).rev() {
-        let s: f64 = (r + 1..n).map(|k| a[r][k] * x[k]).sum();
-        x[r] = (b[r] - s) / a[r][r];
-    }
-    x
-}
-
 /// Dense least squares `min |A x - b|` by the normal equations (small, well-scaled problems).
 pub fn least_squares(rows: &[Vec<f64>], rhs: &[f64]) -> Vec<f64> {
     let n = rows[0].len();
@@ -148,7 +91,7 @@ pub fn least_squares(rows: &[Vec<f64>], rhs: &[f64]) -> Vec<f64> {
             }
         }
     }
-    solve_dense(a, b)
+    dense_solve_vector(a, b)
 }
 
 /// The cubic C^2 spline basis on `knots` (truncated powers, centred at 1/2 for conditioning):

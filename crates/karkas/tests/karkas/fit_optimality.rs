@@ -4,9 +4,8 @@
 //! coefficients vanishes, the jump bound holds (and is active), and other starting
 //! parameterizations find nothing lower. The fits iterate to convergence (`settle_tolerance: 0`).
 
-mod fit_common;
-
-use fit_common::{hermite_piece, noisy_spiral};
+use crate::common::Rng;
+use crate::fit_reference::{hermite_piece, noisy_spiral};
 use karkas::fit::{fit_curve, CurveFit, FitOptions, PenaltyRule, StartParameters};
 use karkas::{Curve, Point2};
 
@@ -201,7 +200,7 @@ fn other_starting_parameterizations_find_nothing_lower() {
     let base = options(eps);
     let reference = bounded_objective(&fit_curve(&points, &KNOTS, &base).unwrap());
     let n = points.len();
-    let mut rng = fit_common::Rng::new(99);
+    let mut rng = Rng::new(99);
     let mut jittered: Vec<f64> = (0..n).map(|i| i as f64 / (n - 1) as f64).collect();
     for t in jittered[1..n - 1].iter_mut() {
         *t += 0.4 / (n - 1) as f64 * (rng.uniform() - 0.5);

@@ -6,9 +6,8 @@
 //! small and fall as knots are added while the data support them (at most one knot per four
 //! points; with noise, until the noise dominates). Run with `--nocapture` for the table.
 
-mod fit_common;
-
-use fit_common::{naca, polyline_distance, Rng};
+use crate::common::Rng;
+use crate::fit_reference::{naca, polyline_distance};
 use karkas::fit::{fit_curve, uniform_knots, FitOptions};
 use karkas::{Curve, Point2};
 use std::f64::consts::PI;

@@ -1,9 +1,8 @@
 //! The interpolating LL surface (METHODS.md §1.3): it passes through every grid point, and
 //! its separable row-then-column solve equals a dense solve of the full 2-D system.
 
-mod common;
-
-use common::{assert_near, dense_solve, linspace, surface_grid, with_repeats, RefSurface};
+use crate::common::{assert_near, dense_solve, linspace, max_abs};
+use crate::ll_reference::{surface_grid, with_repeats, RefSurface};
 use karkas::ll::LlSurface;
 use karkas::{Grid, Point, Surface};
 
@@ -18,7 +17,7 @@ fn interpolating_surface_passes_through_every_grid_point() {
                 for l in (1..=12).chain([40, 64]) {
                     let s = LlSurface::interpolating(&g, l, cu, cv).unwrap();
                     let (au, av) = (s.axis_u(), s.axis_v());
-                    let scale = common::max_abs(g.as_slice());
+                    let scale = max_abs(g.as_slice());
                     for i in 0..g.rows() {
                         for j in 0..g.cols() {
                             let p = s.eval(au.node(i + 1), av.node(j + 1));
@@ -86,7 +85,7 @@ fn separable_solve_equals_the_dense_2d_solve() {
             for l in [1, 2, 5, 12] {
                 let s = LlSurface::interpolating(&g, l, cu, cv).unwrap();
                 let want = dense_controls(&g, l, cu, cv);
-                let tol = 1e-12 * common::max_abs(g.as_slice());
+                let tol = 1e-12 * max_abs(g.as_slice());
                 let (kx, ky) = (s.axis_u().nodes(), s.axis_v().nodes());
                 for i in 0..kx {
                     for j in 0..ky {

@@ -3,9 +3,8 @@
 //! The references are dense least-squares solves written here (truncated-power C^2 basis,
 //! Bezier-form Hermite basis).
 
-mod fit_common;
-
-use fit_common::{c2_basis, hermite_piece, least_squares, noisy_spiral, solve_dense};
+use crate::common::dense_solve_vector;
+use crate::fit_reference::{c2_basis, hermite_piece, least_squares, noisy_spiral};
 use karkas::fit::{fit_curve, FitOptions, PenaltyRule};
 use karkas::{Curve, Point2};
 
@@ -247,7 +246,7 @@ fn the_bending_term_is_the_integral_of_the_squared_second_derivative() {
                 }
             }
         }
-        let coef = solve_dense(normal, rhs);
+        let coef = dense_solve_vector(normal, rhs);
         for l in 0..KNOTS.len() {
             let (v, d) = (fit.spline.values()[l][c], fit.spline.derivatives()[l][c]);
             assert!((v - coef[2 * l]).abs() < 1e-9, "value {l}, coordinate {c}");

@@ -2,8 +2,6 @@
 //! every order, their parameter lines as curves (the independent source of network data and
 //! of expected values), and comparisons.
 
-#![allow(dead_code)]
-
 use std::f64::consts::PI;
 use std::sync::Arc;
 
@@ -236,13 +234,6 @@ pub fn exact_cross(
             .map(|&v| iso(s, Dir::U, v, 1, du, u_axis.is_closed()))
             .collect(),
     }
-}
-
-/// `n` values from `a` to `b`, ends included.
-pub fn linspace(a: f64, b: f64, n: usize) -> Vec<f64> {
-    (0..n)
-        .map(|k| a + (b - a) * k as f64 / (n - 1) as f64)
-        .collect()
 }
 
 /// Asserts `|a - b| <= tol` (Euclidean), with a message.

@@ -1,0 +1,35 @@
+//! The integration tests of the karkas library, in one binary (one build and one link for
+//! all of them): a module per capability, and the independent references they compare
+//! against as shared modules.
+
+mod common;
+mod coons_reference;
+mod dps_reference;
+mod fit_reference;
+mod ll_reference;
+
+mod bspline_convert;
+mod coons_blending;
+mod coons_composite;
+mod coons_network;
+mod coons_surface;
+mod dps_bspline;
+mod dps_interpolation;
+mod dps_tube;
+mod fit_limits;
+mod fit_naca;
+mod fit_optimality;
+mod fit_parallel;
+mod ll_curve;
+mod ll_curve_closed;
+mod ll_curve_interp;
+mod ll_errors;
+mod ll_kernel;
+mod ll_properties;
+mod ll_surface;
+mod ll_surface_interp;
+mod param_bicubic;
+mod param_spline;
+mod robust_properties;
+mod sections;
+mod variation;
