@@ -1,4 +1,4 @@
-//! Discrete periodic spline benchmarks (seed 002): interpolation with m = 10^6 nodes and
+//! Discrete periodic spline benchmarks (Malozemov et al.): interpolation with m = 10^6 nodes and
 //! evaluation of N = 10^7 values, orders 2 and 4, points in R^3.
 //!
 //! Run: `cargo bench -p karkas-bench --bench dps`.

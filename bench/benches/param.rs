@@ -1,4 +1,4 @@
-//! Parameterization and bicubic interpolation benchmarks (seed 004).
+//! Parameterization and bicubic interpolation benchmarks (Kuznetsov and Filatov).
 //!
 //! Run: `cargo bench -p karkas-bench --bench param`.
 

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Checks the report of `karkas demo`: every example is there, every file it names exists,
-and the cylinder row of seed 004 lands in 0.008..0.013 (the paper prints 0.011).
+and the cylinder row of Kuznetsov and Filatov's table lands in 0.008..0.013 (the paper prints 0.011).
 
 Usage: python3 tests/demo/check_report.py DEMO_DIR
 """

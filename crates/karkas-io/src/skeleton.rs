@@ -1,4 +1,4 @@
-//! The skeleton curves of a tube (seed 002, §4–5): two CSV files of indexed points.
+//! The skeleton curves of a tube (Malozemov et al.'s §4–5): two CSV files of indexed points.
 //!
 //! - Curves along the tube, `f_i(q)`: header `i,q,x,y,z`, curve `i` in `0..m1`, sample `q` in
 //!   `0..N2`;

@@ -125,7 +125,7 @@ pub enum Error {
     },
     /// A discrete periodic spline with a step `n` below 2 between its nodes
     /// (e.g. [`DiscreteSpline::from_poles`](crate::dps::DiscreteSpline::from_poles) with
-    /// `n = 1`; the seed asks for `n >= 2`).
+    /// `n = 1`; the paper asks for `n >= 2`).
     #[error("the step n between nodes must be at least 2, got {step}")]
     InvalidStep {
         /// The step given.
@@ -321,7 +321,7 @@ pub enum Error {
         columns_change: f64,
     },
     /// Boundary data of a Coons surface that violates the compatibility conditions (8) / (11)
-    /// of seed 001: two curves, one of each family, disagree where they meet (a point, or a
+    /// of Chashnikov: two curves, one of each family, disagree where they meet (a point, or a
     /// derivative there) by more than the tolerance. Produced by every constructor of
     /// [`CoonsSurface`](crate::coons::CoonsSurface) (e.g.
     /// [`CoonsSurface::gordon`](crate::coons::CoonsSurface::gordon)).

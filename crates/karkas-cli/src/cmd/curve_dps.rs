@@ -1,5 +1,5 @@
 //! `karkas curve dps`: a closed discrete curve, the discrete periodic spline through (or with
-//! poles at) the input points (seed 002, METHODS.md §3).
+//! poles at) the input points (Malozemov et al., docs/methods.md §3).
 
 use crate::args::{check_dps_order, check_dps_step};
 use crate::input::curve_points;

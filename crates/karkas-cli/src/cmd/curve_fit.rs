@@ -1,5 +1,5 @@
 //! `karkas curve fit`: a C^1 cubic Hermite spline fitted to measured points with bounded
-//! second-derivative jumps (seed 003, METHODS.md §4).
+//! second-derivative jumps (Pavlov, docs/methods.md §4).
 
 use crate::args::{CombOption, CurveSamples};
 use crate::output::cad::write_cad_curve;
@@ -35,7 +35,7 @@ pub struct CurveFitArgs {
     /// Place knots automatically until every point is within TOL of the curve.
     #[arg(long, value_name = "TOL")]
     tolerance: Option<f64>,
-    /// Bound on the sum of squared second-derivative jumps (the seed's J_L) at the inner
+    /// Bound on the sum of squared second-derivative jumps (Pavlov's J_L) at the inner
     /// knots [default: none, the unconstrained C^1 fit].
     #[arg(long, value_name = "E")]
     eps: Option<f64>,

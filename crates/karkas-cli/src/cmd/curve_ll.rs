@@ -1,4 +1,4 @@
-//! `karkas curve ll`: the LL curve of an ordered point list (seed 000, METHODS.md §1.2).
+//! `karkas curve ll`: the LL curve of an ordered point list (Aulchenko et al., docs/methods.md §1.2).
 
 use crate::args::{check_ll_order, CombOption, CurveSamples};
 use crate::input::curve_points;

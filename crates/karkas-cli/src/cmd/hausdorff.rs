@@ -1,5 +1,5 @@
 //! `karkas hausdorff`: the two-sided Hausdorff distance between two point sets, or between a
-//! point set and an implicit surface (seed 004, formula (3.14); METHODS.md §5).
+//! point set and an implicit surface (Kuznetsov and Filatov, formula (3.14); docs/methods.md §5).
 
 use anyhow::{bail, Context, Result};
 use clap::Args;

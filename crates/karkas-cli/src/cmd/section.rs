@@ -1,4 +1,4 @@
-//! `karkas section`: plane sections of a surface built from a grid (seed 000, METHODS.md §1.4).
+//! `karkas section`: plane sections of a surface built from a grid (Aulchenko et al., docs/methods.md §1.4).
 //!
 //! The planes come from `--plane nx,ny,nz,c` (the plane `nx x + ny y + nz z = c`) and the
 //! shorthands `--x X`, `--y Y`, `--z Z` (each repeatable, each taking a comma list). Sections
@@ -19,7 +19,7 @@ use std::path::PathBuf;
 /// The surface methods a section can be taken of.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 pub enum SurfaceMethod {
-    /// LL-approximation (seed 000), as `karkas surface ll` builds it.
+    /// LL-approximation (Aulchenko et al.), as `karkas surface ll` builds it.
     Ll,
 }
 

@@ -1,5 +1,5 @@
 //! `karkas surface bicubic`: the bicubic interpolant of a grid of points with chosen
-//! parameters (seed 004, METHODS.md §5).
+//! parameters (Kuznetsov and Filatov, docs/methods.md §5).
 
 use crate::args::{ClosedUv, GridInput, GridSamples};
 use crate::input::grid_points;
@@ -18,7 +18,7 @@ use std::path::PathBuf;
 pub enum ParamKind {
     /// u_i = i, v_j = j.
     Uniform,
-    /// Chord lengths along the row and the column through node (0, 0) (the seed's rule).
+    /// Chord lengths along the row and the column through node (0, 0) (Kuznetsov and Filatov's rule).
     Chord,
     /// Chord lengths averaged over all rows and columns.
     Averaged,

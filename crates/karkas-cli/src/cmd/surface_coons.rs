@@ -1,5 +1,5 @@
 //! `karkas surface coons`: Coons, Gordon and composite Coons surfaces through a network of
-//! curves given as point lists (seed 001, METHODS.md §2).
+//! curves given as point lists (Chashnikov, docs/methods.md §2).
 //!
 //! The curves are interpolated and parameterized by `karkas::coons::PointNetwork` (not-a-knot
 //! cubic splines in the point-index parameter, warped so that the crossings sit at common

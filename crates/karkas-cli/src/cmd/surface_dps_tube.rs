@@ -1,5 +1,5 @@
 //! `karkas surface dps-tube`: a closed tube through a skeleton of curves along and across it,
-//! by formula (3) of seed 002 (METHODS.md §3).
+//! by formula (3) of Malozemov et al. (docs/methods.md §3).
 
 use crate::args::{check_dps_order, check_dps_step};
 use crate::output::cad::refuse_cad_for_discrete;

@@ -1,5 +1,5 @@
 //! `karkas surface implicit`: a grid of nodes on an implicit surface, traced along its lines
-//! of curvature (or a net turned by an angle) by continuation (seed 004, METHODS.md §5).
+//! of curvature (or a net turned by an angle) by continuation (Kuznetsov and Filatov, docs/methods.md §5).
 
 use crate::args::{parse_finite, parse_finite_list, parse_pair_with, parse_whole};
 use anyhow::{bail, Context, Result};

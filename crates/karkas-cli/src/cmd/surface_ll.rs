@@ -1,4 +1,4 @@
-//! `karkas surface ll`: the LL surface of a grid of points (seed 000, METHODS.md §1.3).
+//! `karkas surface ll`: the LL surface of a grid of points (Aulchenko et al., docs/methods.md §1.3).
 
 use crate::args::{GridInput, GridSamples, LlSurfaceOptions};
 use crate::input::grid_points;

@@ -1,4 +1,4 @@
-//! `karkas vary`: the surface variation method (seed 000, formulas (24)–(33); METHODS.md §1.5).
+//! `karkas vary`: the surface variation method (Aulchenko et al., formulas (24)–(33); docs/methods.md §1.5).
 //!
 //! One coordinate of a grid is varied through new row sums, column sums and total, with the
 //! cells listed in a mask file kept fixed; the other coordinates are copied.

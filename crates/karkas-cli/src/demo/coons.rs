@@ -1,4 +1,4 @@
-//! Seed 001 (generalized Coons surfaces): the two-by-two-patch network of the seed's figure 3
+//! Chashnikov (generalized Coons surfaces): the two-by-two-patch network of the paper's figure 3
 //! and a 7 x 5 fuselage network, each from a closed-form reference body. Lagrange against
 //! spline Gordon surfaces side by side, the composite Coons surfaces as meshes, and the
 //! distance of every surface to its body (foot-point projection onto the closed form).
@@ -45,7 +45,7 @@ fn network_of(body: Body, u_axis: &NetworkAxis, v_axis: &NetworkAxis) -> Result<
 
 pub fn figure_3(out: &Output) -> Result<Vec<Finding>> {
     let body = figure_3_sheet();
-    let axis = NetworkAxis::uniform(3, false)?; // the seed's nodes 0, 1, 2 (m = n = 2)
+    let axis = NetworkAxis::uniform(3, false)?; // the paper's nodes 0, 1, 2 (m = n = 2)
     let net = network_of(body, &axis, &axis)?;
     let exact = CrossDerivatives {
         v_curves: (0..3)
@@ -91,13 +91,13 @@ pub fn figure_3(out: &Output) -> Result<Vec<Finding>> {
         .collect();
     write_panels(
         &out.file("coons-fig3-gordon-vs-spline.svg"),
-        "Seed 001 fig. 3 network: Lagrange Gordon | natural-spline Gordon | composite Coons",
+        "Chashnikov's fig. 3 network: Lagrange Gordon | natural-spline Gordon | composite Coons",
         &pictures,
     )?;
     write_mesh(
         out,
         "coons-fig3-composite",
-        "Seed 001 fig. 3 network: composite Coons surface",
+        "Chashnikov's fig. 3 network: composite Coons surface",
         &composite,
         81,
         81,
@@ -197,13 +197,13 @@ pub fn fuselage_network(out: &Output) -> Result<Vec<Finding>> {
     let below = wireframe(&spline, 49, 21, Point2::new([0.0, -3.6]), body_view);
     write_panels(
         &out.file("fuselage-gordon-vs-spline.svg"),
-        "Seed 001, 7 frames x 5 stringers: Lagrange Gordon (top), spline Gordon (bottom)",
+        "Chashnikov, 7 frames x 5 stringers: Lagrange Gordon (top), spline Gordon (bottom)",
         &[above, below],
     )?;
     write_mesh(
         out,
         "fuselage-composite",
-        "Seed 001, 7 frames x 5 stringers: composite Coons surface",
+        "Chashnikov, 7 frames x 5 stringers: composite Coons surface",
         &composite,
         145,
         73,

@@ -1,4 +1,4 @@
-//! The reference bodies of the seed 001 examples and their curve networks: the seed prints
+//! The reference bodies of Chashnikov's examples and their curve networks: the paper prints
 //! only pictures, so the data are made here from closed-form surfaces, which also give the
 //! exact body every surface is measured against.
 
@@ -88,7 +88,7 @@ pub fn body_line(body: Body, along: Along, at: f64, across: usize) -> CurveRef<3
     })
 }
 
-/// The sheet of the seed's figure 3 over `[0, 2] x [0, 2]` (nodes at the integers, m = n = 2):
+/// The sheet of the paper's figure 3 over `[0, 2] x [0, 2]` (nodes at the integers, m = n = 2):
 /// a doubly curved bump, sheared in the plane, so that no blending family reproduces it.
 pub fn figure_3_sheet() -> Body {
     fn shape(u: f64, v: f64) -> Point3 {

@@ -1,4 +1,4 @@
-//! The data of the seed 000 examples (METHODS.md §1.6), made here because the paper prints
+//! The data of Aulchenko et al.'s examples (docs/methods.md §1.6), made here because the paper prints
 //! only pictures: a closed contour of 53 points and an aircraft-like body of 15 sections of
 //! 31 points. The repository ships the same data as `data/contour-53.csv` and
 //! `data/aircraft-15x31.csv` (a test keeps them identical to these generators).

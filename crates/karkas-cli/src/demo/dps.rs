@@ -1,5 +1,5 @@
-//! Seed 002 (discrete periodic splines): the five-petal curve (s = 2, r = 2, m = 20, n = 16)
-//! and the knotted tube (m1 = 2, n1 = 5, m2 = 3, n2 = 40), METHODS.md §3.
+//! Malozemov et al. (discrete periodic splines): the five-petal curve (s = 2, r = 2, m = 20, n = 16)
+//! and the knotted tube (m1 = 2, n1 = 5, m2 = 3, n2 = 40), docs/methods.md §3.
 //!
 //! The paper prints only pictures, so the data are made here: the poles of the five-petal
 //! curve are 20 samples of the (2, 5) torus-knot diagram (radius `1 + 0.7 cos 5t` at angle
@@ -92,7 +92,8 @@ pub fn five_petals(out: &Output) -> Result<Vec<Finding>> {
     let spline = DiscreteSpline::from_poles(&poles, PETAL_ORDER, PETAL_STEP)?;
     let values = spline.to_values();
     write_discrete_curve_csv(&out.file("five-petal-r2.csv"), &values)?;
-    let title = "Seed 002, fig. 1: 20 poles and the 320 values of the order-2 spline (n = 16)";
+    let title =
+        "Malozemov et al.'s fig. 1: 20 poles and the 320 values of the order-2 spline (n = 16)";
     write_discrete_curve_svg(
         &out.file("five-petal-poles.svg"),
         &DiscreteCurvePlot {
@@ -105,7 +106,7 @@ pub fn five_petals(out: &Output) -> Result<Vec<Finding>> {
     write_discrete_curve_svg(
         &out.file("five-petal-r2.svg"),
         &DiscreteCurvePlot {
-            title: "Seed 002, fig. 2: the five-petal curve (neighbouring values joined)",
+            title: "Malozemov et al.'s fig. 2: the five-petal curve (neighbouring values joined)",
             values: &values,
             dots: false,
             input: &poles,
@@ -118,7 +119,7 @@ pub fn five_petals(out: &Output) -> Result<Vec<Finding>> {
     write_discrete_curve_svg(
         &out.file("five-petal-interpolating.svg"),
         &DiscreteCurvePlot {
-            title: "Seed 002: the order-2 spline through the same 20 points (nodes)",
+            title: "Malozemov et al.: the order-2 spline through the same 20 points (nodes)",
             values: &through_values,
             dots: false,
             input: &poles,
@@ -227,7 +228,7 @@ pub fn knot(out: &Output) -> Result<Vec<Finding>> {
     write_viewer(
         out,
         "knot-tube.html",
-        "Seed 002: the knotted tube, 2 x 5 curves along, 3 x 40 rings across",
+        "Malozemov et al.: the knotted tube, 2 x 5 curves along, 3 x 40 rings across",
         (closed.rows(), closed.cols()),
         closed.as_slice(),
         None,
@@ -269,7 +270,8 @@ pub fn knot(out: &Output) -> Result<Vec<Finding>> {
     write_lines_svg(
         &out.file("knot-skeleton.svg"),
         &LinesPlot {
-            title: "Seed 002, fig. 3: the skeleton, 2 curves along (red) and 3 across (blue)",
+            title:
+                "Malozemov et al.'s fig. 3: the skeleton, 2 curves along (red) and 3 across (blue)",
             axes: ("view x", "view y"),
             groups: &skeleton_groups(2),
         },
@@ -288,7 +290,7 @@ pub fn knot(out: &Output) -> Result<Vec<Finding>> {
     write_lines_svg(
         &out.file("knot-tube-wireframe.svg"),
         &LinesPlot {
-            title: "Seed 002: the knotted tube by formula (3), wireframe, skeleton in bold",
+            title: "Malozemov et al.: the knotted tube by formula (3), wireframe, skeleton in bold",
             axes: ("view x", "view y"),
             groups: &[
                 LineGroup {
@@ -323,7 +325,7 @@ pub fn knot(out: &Output) -> Result<Vec<Finding>> {
     write_scene_svg(
         &out.file("knot-tube.svg"),
         &Scene {
-            title: "Seed 002, fig. 4: the knotted tube by formula (3), skeleton in bold",
+            title: "Malozemov et al.'s fig. 4: the knotted tube by formula (3), skeleton in bold",
             mesh: SceneMesh {
                 rows: closed.rows(),
                 cols: closed.cols(),

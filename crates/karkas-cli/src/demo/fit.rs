@@ -1,5 +1,5 @@
-//! Seed 003 (fitting with bounded second-derivative jumps): the paper's hydrofoil, knots
-//! (0, 0.445, 0.449, 0.587, 1), eps = 0.01 (METHODS.md §4). The paper's deviations are printed
+//! Pavlov (fitting with bounded second-derivative jumps): the paper's hydrofoil, knots
+//! (0, 0.445, 0.449, 0.587, 1), eps = 0.01 (docs/methods.md §4). The paper's deviations are printed
 //! beside ours as context: its printed coordinates carry transcription errors.
 
 use super::common::{Finding, Output};
@@ -9,7 +9,7 @@ use karkas::{Curve, Point, Point2};
 use karkas_io::svg::{write_fit_svg, FitPlot};
 use karkas_io::write::{write_atomic, write_curve_csv};
 
-/// The seed's table: x, y and the paper's deviation dR (also in data/hydrofoil-profile.csv).
+/// The paper's table: x, y and the paper's deviation dR (also in data/hydrofoil-profile.csv).
 const HYDROFOIL: [(f64, f64, f64); 20] = [
     (94.80, 78.50, 0.45),
     (71.10, 52.60, 0.19),
@@ -50,7 +50,7 @@ pub fn run(out: &Output) -> Result<Vec<Finding>> {
             ..Default::default()
         },
     )
-    .context("hydrofoil fit, seed's penalty")?;
+    .context("hydrofoil fit, Pavlov's penalty")?;
     let active = fit_curve(
         &points,
         &KNOTS,
@@ -100,7 +100,7 @@ pub fn run(out: &Output) -> Result<Vec<Finding>> {
     write_fit_svg(
         &out.file("hydrofoil-fit.svg"),
         &FitPlot {
-            title: "Seed 003: hydrofoil, defect-2 cubic spline, eps = 0.01",
+            title: "Pavlov: hydrofoil, defect-2 cubic spline, eps = 0.01",
             curve: &samples,
             points: &points,
             feet: &feet,
@@ -115,7 +115,7 @@ pub fn run(out: &Output) -> Result<Vec<Finding>> {
         .paper(0.71),
         Finding::new(
             example,
-            "max deviation, seed's p = H(q*)/eps",
+            "max deviation, Pavlov's p = H(q*)/eps",
             seed.max_distance(),
         ),
         Finding::new(
@@ -124,7 +124,7 @@ pub fn run(out: &Output) -> Result<Vec<Finding>> {
             active.jump_sum,
         ),
         Finding::new(example, "penalty p (bound active)", active.penalty),
-        Finding::new(example, "seed's p = H(q*)/eps", seed.penalty),
+        Finding::new(example, "Pavlov's p = H(q*)/eps", seed.penalty),
     ];
     findings.extend(per_point);
     Ok(findings)

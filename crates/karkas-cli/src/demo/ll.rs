@@ -1,5 +1,5 @@
-//! Seed 000 (LL-approximation): the 53-point contour with L = 5 and the aircraft-like surface
-//! with 15 sections x = const and 11 sections y = const, hidden lines removed (METHODS.md
+//! Aulchenko et al. (LL-approximation): the 53-point contour with L = 5 and the aircraft-like surface
+//! with 15 sections x = const and 11 sections y = const, hidden lines removed (docs/methods.md
 //! §1.4, §1.6).
 
 use super::common::{write_viewer, Finding, Output};
@@ -38,7 +38,7 @@ pub fn contour(out: &Output) -> Result<Vec<Finding>> {
     write_curve_svg(
         &out.file("contour-ll5.svg"),
         &CurvePlot {
-            title: "Seed 000: LL curve, L = 5, through a 53-point contour",
+            title: "Aulchenko et al.: LL curve, L = 5, through a 53-point contour",
             curve: &samples,
             input: &points,
             closed_input: true,
@@ -48,7 +48,7 @@ pub fn contour(out: &Output) -> Result<Vec<Finding>> {
     write_curve_svg(
         &out.file("contour-ll5-interpolating.svg"),
         &CurvePlot {
-            title: "Seed 000: interpolating LL curve, L = 5",
+            title: "Aulchenko et al.: interpolating LL curve, L = 5",
             curve: &interp_samples,
             input: &points,
             closed_input: true,
@@ -166,7 +166,7 @@ pub fn aircraft(out: &Output) -> Result<Vec<Finding>> {
     surface.sample_grid_into(&mut us, &mut vs, &mut mesh);
     write_surface_obj(&out.file("aircraft-ll5.obj"), nu, nv, &mesh)?;
     let scene = Scene {
-        title: "Seed 000: LL surface, L = 5, of the aircraft-like body (right half): \
+        title: "Aulchenko et al.: LL surface, L = 5, of the aircraft-like body (right half): \
                 15 sections x = const, 11 sections y = const",
         mesh: SceneMesh {
             rows: nu,
@@ -193,7 +193,7 @@ pub fn aircraft(out: &Output) -> Result<Vec<Finding>> {
     write_viewer(
         out,
         "aircraft-ll5.html",
-        "Seed 000: LL surface, L = 5, of the aircraft-like body, with its sections",
+        "Aulchenko et al.: LL surface, L = 5, of the aircraft-like body, with its sections",
         (nu, nv),
         &mesh,
         Some(grid.clone()),
@@ -210,7 +210,7 @@ pub fn aircraft(out: &Output) -> Result<Vec<Finding>> {
     write_lines_svg(
         &out.file("aircraft-ll5-sections.svg"),
         &LinesPlot {
-            title: "Seed 000: the 15 sections x = const (body plan, y-z)",
+            title: "Aulchenko et al.: the 15 sections x = const (body plan, y-z)",
             axes: ("y", "z"),
             groups: &[LineGroup {
                 lines: &body_plan,

@@ -102,7 +102,7 @@ const STEPS: [Step; 8] = [
         title: "The hydrofoil profile (20 points), knots (0, 0.445, 0.449, 0.587, 1), \
                 eps = 0.01",
         note: Some(
-            "The printed coordinates carry transcription errors (METHODS.md §4): with these \
+            "The printed coordinates carry transcription errors (docs/methods.md §4): with these \
              points and knots a careful fit lands above the paper's deviations; the method \
              is judged on NACA sections with known truth in the test suite.",
         ),
@@ -114,7 +114,7 @@ const STEPS: [Step; 8] = [
         title: "Cylinder and one-sheet hyperboloid, 5 x 9 frames along the lines of curvature \
                 and turned away from them: Hausdorff errors of the bicubic interpolant",
         note: Some(
-            "The paper does not say exactly how its turned frames were laid (METHODS.md §5), \
+            "The paper does not say exactly how its turned frames were laid (docs/methods.md §5), \
              so the turned rows are comparable in trend, not figure; the rows along the \
              lines of curvature are the paper's construction.",
         ),
@@ -137,10 +137,9 @@ pub fn run(args: &DemoArgs) -> Result<()> {
     bar.set_prefix("demo");
     let mut outcomes = Vec::with_capacity(STEPS.len());
     for step in &STEPS {
-        bar.set_message(format!("seed {}: {}", step.seed, step.id));
+        bar.set_message(step.id);
         let begun = Instant::now();
-        let findings = (step.run)(&out)
-            .with_context(|| format!("example {} (seed {})", step.id, step.seed))?;
+        let findings = (step.run)(&out).with_context(|| format!("example {}", step.id))?;
         outcomes.push(ExampleOutcome {
             id: step.id,
             seed: step.seed,

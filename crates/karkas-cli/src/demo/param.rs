@@ -1,5 +1,5 @@
-//! Seed 004 (parameterization and bicubic interpolation): the table of Hausdorff errors of
-//! frames laid along the lines of curvature or turned away from them (METHODS.md §5), with
+//! Kuznetsov and Filatov (parameterization and bicubic interpolation): the table of Hausdorff errors of
+//! frames laid along the lines of curvature or turned away from them (docs/methods.md §5), with
 //! the paper's figures beside ours. Writes every frame's nodes (grid CSV) and interpolant
 //! (OBJ mesh).
 
@@ -12,7 +12,7 @@ use karkas_io::obj::write_surface_obj;
 use karkas_io::scene::{write_scene_svg, Scene, SceneCurves, SceneMesh, View};
 use karkas_io::write::write_grid_csv;
 
-/// Runs the seven rows of the seed's table and the extra helix frame into `out`.
+/// Runs the seven rows of the paper's table and the extra helix frame into `out`.
 pub fn run(out: &Output) -> Result<Vec<Finding>> {
     let mut findings = Vec::new();
     for row in seed_experiments()
@@ -36,7 +36,7 @@ fn slug(label: &str) -> String {
 fn experiment(out: &Output, row: &SeedExperiment) -> Result<Finding> {
     let outcome = row
         .run()
-        .with_context(|| format!("seed 004, {}", row.label))?;
+        .with_context(|| format!("Kuznetsov and Filatov, {}", row.label))?;
     let name = slug(row.label);
     write_grid_csv(&out.file(format!("{name}-nodes.csv")), &outcome.nodes)?;
     let (nu, nv) = (41, 121);
@@ -52,7 +52,7 @@ fn experiment(out: &Output, row: &SeedExperiment) -> Result<Finding> {
         out,
         &format!("{name}.html"),
         &format!(
-            "Seed 004: {}, bicubic interpolant of the 5 x 9 frame",
+            "Kuznetsov and Filatov: {}, bicubic interpolant of the 5 x 9 frame",
             row.label
         ),
         (nu, nv),
@@ -61,7 +61,7 @@ fn experiment(out: &Output, row: &SeedExperiment) -> Result<Finding> {
         vec![("parameter lines through the nodes", frame.clone())],
     )?;
     let title = format!(
-        "Seed 004: {}, bicubic interpolant of the 5 x 9 frame, Hausdorff error {:.4}",
+        "Kuznetsov and Filatov: {}, bicubic interpolant of the 5 x 9 frame, Hausdorff error {:.4}",
         row.label, outcome.error.distance
     );
     write_scene_svg(

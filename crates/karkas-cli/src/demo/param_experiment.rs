@@ -1,13 +1,13 @@
-//! The experiments of seed 004 (section 3, examples 3.1 and 3.2; METHODS.md §5): node frames
+//! The experiments of Kuznetsov and Filatov (section 3, examples 3.1 and 3.2; docs/methods.md §5): node frames
 //! of a cylinder and a hyperboloid laid along the lines of curvature or turned away from
-//! them, interpolated bicubically with the seed's chord-length parameters and not-a-knot
+//! them, interpolated bicubically with the paper's chord-length parameters and not-a-knot
 //! ends, and measured by the two-sided Hausdorff distance to the exact surface patch.
 //!
 //! Layout (the paper gives counts and angles; the rest is chosen here and stated):
 //!
 //! - every frame has 5 nodes along `u` (the spine, traced from the start node) and 9 around
 //!   (`v`, a closed line: the 9th node repeats the first, as in the paper's "first = last");
-//!   both directions are interpolated with open not-a-knot ends, as the seed does (its 40
+//!   both directions are interpolated with open not-a-knot ends, as the paper does (its 40
 //!   distinct points);
 //! - cylinder `x^2 + y^2 = 1`, start `(1, 0, 0)`: lines of curvature are the generators
 //!   (`u`, step 0.5, so `z` in `[0, 2]`) and the circles;
@@ -41,7 +41,7 @@ const PATCH_REFINEMENT: usize = 4;
 /// Samples of the interpolant in the Hausdorff distance.
 const SAMPLES: (usize, usize) = (64, 160);
 
-/// Which surface of the seed an experiment uses.
+/// Which surface of the paper an experiment uses.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum SeedSurface {
     /// `x^2 + y^2 = 1`.
@@ -50,7 +50,7 @@ pub enum SeedSurface {
     Hyperboloid,
 }
 
-/// One row of the seed's table of errors.
+/// One row of the paper's table of errors.
 #[derive(Clone, Debug, PartialEq)]
 pub struct SeedExperiment {
     /// What the frame is.
@@ -122,7 +122,7 @@ fn meridian_length() -> f64 {
     (f(-0.5) + f(0.5) + inner) * h / 3.0
 }
 
-/// The seven rows of the seed's table: cylinder (lines of curvature; both axes turned by 30°
+/// The seven rows of the paper's table: cylinder (lines of curvature; both axes turned by 30°
 /// and 45°; the generator turned by 30° and 45°) and hyperboloid (lines of curvature; the
 /// meridian turned by 68°), with the paper's errors.
 pub fn seed_experiments() -> Vec<SeedExperiment> {
@@ -216,7 +216,7 @@ pub fn helix_experiment() -> SeedExperiment {
     }
 }
 
-/// The table of seed 004 (examples 3.1, 3.2): frames along the lines of curvature beat turned
+/// The table of Kuznetsov and Filatov (examples 3.1, 3.2): frames along the lines of curvature beat turned
 /// frames, and the cylinder's principal frame lands near the paper's 0.011.
 #[cfg(test)]
 mod tests {

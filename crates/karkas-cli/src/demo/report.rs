@@ -31,7 +31,7 @@ pub struct ExampleOutcome {
     pub files: Vec<String>,
 }
 
-/// The papers, by seed number: the section titles of METHODS.md.
+/// The papers, by seed number: the section titles of docs/methods.md.
 const PAPERS: [(&str, &str); 5] = [
     (
         "000",
@@ -308,17 +308,13 @@ pub fn render_html(outcomes: &[ExampleOutcome], seconds: f64) -> String {
     for (seed, title) in PAPERS {
         let _ = writeln!(
             html,
-            "<li><a href=\"#seed-{seed}\">Seed {seed}: {}</a></li>",
+            "<li><a href=\"#seed-{seed}\">{}</a></li>",
             escape(title)
         );
     }
     html.push_str("</ul>\n");
     for (seed, title) in PAPERS {
-        let _ = writeln!(
-            html,
-            "<h2 id=\"seed-{seed}\">Seed {seed}: {}</h2>",
-            escape(title)
-        );
+        let _ = writeln!(html, "<h2 id=\"seed-{seed}\">{}</h2>", escape(title));
         for o in outcomes.iter().filter(|o| o.seed == seed) {
             example_html(&mut html, o);
         }

@@ -58,7 +58,7 @@ fn write_cad(entities: &[CadEntity<'_>], format: OutputFormat, output: &Path) ->
     Ok(())
 }
 
-/// Refuses STEP and IGES for the discrete periodic splines: they are point sets (METHODS.md
+/// Refuses STEP and IGES for the discrete periodic splines: they are point sets (docs/methods.md
 /// §3, §6), with no exact piecewise polynomial form to export.
 pub fn refuse_cad_for_discrete(output: &Path) -> Result<()> {
     if OutputFormat::from_path(output, &OutputFormat::CAD).is_ok() {

@@ -1,5 +1,5 @@
 //! `karkas demo`: the report lists every example of the five papers, the cylinder row of
-//! seed 004 lands where the paper's figure is, and every file the report names exists.
+//! Kuznetsov and Filatov's table lands where the paper's figure is, and every file the report names exists.
 
 use crate::common::{karkas, s, stderr, temp_dir};
 use serde_json::Value;
@@ -49,7 +49,7 @@ fn demo_writes_a_complete_report() {
         );
     }
 
-    // Seed 004's table: the cylinder frame along the lines of curvature, paper 0.011.
+    // Kuznetsov and Filatov's table: the cylinder frame along the lines of curvature, paper 0.011.
     let cylinder = examples
         .iter()
         .flat_map(|e| e["rows"].as_array().unwrap())
@@ -67,7 +67,7 @@ fn demo_writes_a_complete_report() {
         .flat_map(|e| e["rows"].as_array().unwrap())
         .filter(|r| r["paper"].is_number())
         .count();
-    // Seed 004: 7 table entries; seed 003: 20 per-point deviations and their maximum.
+    // Kuznetsov and Filatov: 7 table entries; Pavlov: 20 per-point deviations and their maximum.
     assert_eq!(paper_rows, 7 + 21);
 
     let html = std::fs::read_to_string(out.join("index.html")).unwrap();

@@ -1,5 +1,5 @@
 //! Exact B-spline form of every piecewise polynomial curve and surface of karkas
-//! (METHODS.md §6): how they leave the program for CAD (STEP and IGES B-spline entities)
+//! (docs/methods.md §6): how they leave the program for CAD (STEP and IGES B-spline entities)
 //! without approximation.
 //!
 //! [`BSplineCurve`] and [`BSplineSurface`] are non-rational B-splines with clamped knot

@@ -1,8 +1,8 @@
-//! Linear functionals on functions of one parameter (seed 001, formulas (1), (5), (15)).
+//! Linear functionals on functions of one parameter (Chashnikov, formulas (1), (5), (15)).
 //!
 //! A Coons-type surface is defined by what each blending direction "measures" of a function:
 //! its value at a point, a derivative at a point, and so on. The same functional applies to a
-//! vector-valued curve (coordinate by coordinate, the seed's `\vec L`) and to a scalar blending
+//! vector-valued curve (coordinate by coordinate, the paper's `\vec L`) and to a scalar blending
 //! function.
 
 use crate::{Curve, Point};

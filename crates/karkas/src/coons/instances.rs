@@ -1,4 +1,4 @@
-//! The classical surfaces as instances of the Boolean sum (seed 001, §3 cases 1–3 and §5).
+//! The classical surfaces as instances of the Boolean sum (Chashnikov's §3 cases 1–3 and §5).
 
 use std::sync::Arc;
 
@@ -16,7 +16,7 @@ use crate::{Error, Result};
 pub const DERIVED_CROSS_ENDS: SplineEnds = SplineEnds::NotAKnot;
 
 impl<const D: usize> CoonsSurface<D> {
-    /// The bilinear Coons surface (seed 001, §3 case 1) of a network of two v-curves (at
+    /// The bilinear Coons surface (Chashnikov's §3 case 1) of a network of two v-curves (at
     /// `u_0`, `u_1`) and two u-curves (at `v_0`, `v_1`), both directions open: the Boolean sum
     /// with `L f = f(u_0), f(u_1)` and `H = 1 - x, x` on `[u_0, u_1]` (same in `v`).
     ///
@@ -40,9 +40,9 @@ impl<const D: usize> CoonsSurface<D> {
         )
     }
 
-    /// The bicubic Coons surface (seed 001, §3 case 2) of a two-by-two network with the
+    /// The bicubic Coons surface (Chashnikov's §3 case 2) of a two-by-two network with the
     /// cross-derivatives on its four borders: `L f = f(u_0), f'(u_0), f'(u_1), f(u_1)` (the
-    /// seed's order (1)) and the cubic Hermite polynomials (3) on `[u_0, u_1]`; the v-curves
+    /// paper's order (1)) and the cubic Hermite polynomials (3) on `[u_0, u_1]`; the v-curves
     /// family is `a_0, A_0, A_1, a_1` (same in `v`).
     ///
     /// `cross` gives `A_0, A_1` (`dS/du` along the v-curves) and `B_0, B_1` (`dS/dv` along the
@@ -63,7 +63,7 @@ impl<const D: usize> CoonsSurface<D> {
         let (da, db) = (&cross.v_curves, &cross.u_curves);
         let u: FamilyRef = Arc::new(CubicHermiteBlending::new(u0, u1)?);
         let v: FamilyRef = Arc::new(CubicHermiteBlending::new(v0, v1)?);
-        // Seed (1): value, derivative, derivative, value.
+        // Formula (1): value, derivative, derivative, value.
         let order = |k: usize| [(0, false), (0, true), (1, true), (1, false)][k];
         let name = |curve: &str, k: usize| {
             let (i, derivative) = order(k);
@@ -87,7 +87,7 @@ impl<const D: usize> CoonsSurface<D> {
         )
     }
 
-    /// The Gordon surface (seed 001, §3 case 3): values at the nodes, Lagrange blending in both
+    /// The Gordon surface (Chashnikov's §3 case 3): values at the nodes, Lagrange blending in both
     /// directions. In a closed direction the first curve is repeated one period on (Lagrange
     /// polynomials are not periodic: the surface closes with a `C^0` seam).
     ///
@@ -146,7 +146,7 @@ impl<const D: usize> CoonsSurface<D> {
         )
     }
 
-    /// The composite Coons surface of seed 001 §4–5 on a network with cross-derivative curves:
+    /// The composite Coons surface of Chashnikov's §4–5 on a network with cross-derivative curves:
     /// the Boolean sum with the piecewise Hermite families (15)–(18) on the node values
     /// (generalised to uneven nodes, see [`PiecewiseHermiteBlending`]); the v-curve family is
     /// `a_0, A_0, a_1, A_1, ...`. By Proposition 2 it equals the patch-by-patch composite

@@ -1,5 +1,5 @@
-//! Generalized Coons, Gordon and composite Coons surfaces (seed 001: Chashnikov, "Composite
-//! and generalized Coons surfaces"; METHODS.md §2).
+//! Generalized Coons, Gordon and composite Coons surfaces (Chashnikov, "Composite
+//! and generalized Coons surfaces"; docs/methods.md §2).
 //!
 //! **The operator.** For each parameter direction a [`BlendingFamily`]: linear functionals
 //! `L_i` ([`Functional`]: the value at a point, a derivative at a point, ...) and functions
@@ -15,9 +15,9 @@
 //!
 //! **The instances**, each a constructor over a [`CurveNetwork`] (v-curves `a_i` along `v` at
 //! `u = u_i`, u-curves `b_j` along `u` at `v = v_j`):
-//! - [`CoonsSurface::bilinear`] (§3 case 1), [`CoonsSurface::bicubic`] (§3 case 2, with
+//! - [`CoonsSurface::bilinear`] (Chashnikov's §3 case 1), [`CoonsSurface::bicubic`] (Chashnikov's §3 case 2, with
 //!   cross-derivatives on the four borders);
-//! - [`CoonsSurface::gordon`]: Lagrange blending (§3 case 3); oscillates with many curves;
+//! - [`CoonsSurface::gordon`]: Lagrange blending (Chashnikov's §3 case 3); oscillates with many curves;
 //! - [`CoonsSurface::gordon_spline`]: cubic-spline cardinal blending (natural or not-a-knot;
 //!   periodic in a closed direction), what CAD kernels use for curve networks;
 //! - [`CoonsSurface::composite`]: the composite Coons surface with cross-derivative curves
@@ -65,7 +65,7 @@
 //! crossing and the condition: never a silently wrong surface.
 //!
 //! **Curves from points.** [`PointNetwork`] turns point lists into a network: interpolating
-//! cubic-spline curves ([`CubicSpline`](crate::param::CubicSpline), or LL curves of seed 000), crossings found as
+//! cubic-spline curves ([`CubicSpline`](crate::param::CubicSpline), or LL curves of Aulchenko et al.), crossings found as
 //! shared points, node values from the crossing parameters (see its docs for every rule).
 //!
 //! **Cost.** Building: `O(m n)` functional evaluations for the check. A point: `O(m + n)`

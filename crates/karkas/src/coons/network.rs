@@ -1,7 +1,7 @@
-//! Curve networks: the input of Gordon and composite Coons surfaces (seed 001, §4).
+//! Curve networks: the input of Gordon and composite Coons surfaces (Chashnikov's §4).
 //!
-//! A network has *v-curves* `a_i(v)` (each runs along `v` on the line `u = u_i`, the seed's
-//! `a_i(beta)`) and *u-curves* `b_j(u)` (along `u` on `v = v_j`, the seed's `b_j(alpha)`),
+//! A network has *v-curves* `a_i(v)` (each runs along `v` on the line `u = u_i`, the paper's
+//! `a_i(beta)`) and *u-curves* `b_j(u)` (along `u` on `v = v_j`, the paper's `b_j(alpha)`),
 //! crossing at `a_i(v_j) = b_j(u_i)`. The node values `u_i`, `v_j` are given by a
 //! [`NetworkAxis`] per direction; a closed direction (a fuselage's frames, say) is periodic.
 
@@ -51,7 +51,7 @@ impl NetworkAxis {
         })
     }
 
-    /// The seed's integer nodes `0, 1, ..., count - 1` (open, `count >= 2`) or, closed, the
+    /// The paper's integer nodes `0, 1, ..., count - 1` (open, `count >= 2`) or, closed, the
     /// same with period `count` (`count >= 3`).
     pub fn uniform(count: usize, closed: bool) -> Result<Self> {
         let nodes: Vec<f64> = (0..count).map(|i| i as f64).collect();
@@ -206,7 +206,7 @@ impl<const D: usize> CurveNetwork<D> {
     }
 }
 
-/// Cross-derivative curves of a network (the seed's `A_i`, `B_j` of (11)): `v_curves[i]` is
+/// Cross-derivative curves of a network (the paper's `A_i`, `B_j` of (11)): `v_curves[i]` is
 /// `A_i(v) = dS/du` along v-curve `i`, `u_curves[j]` is `B_j(u) = dS/dv` along u-curve `j`,
 /// both per unit of the network's parameters.
 #[derive(Clone)]

@@ -20,7 +20,7 @@ pub enum CurveFit {
     /// A not-a-knot cubic spline, periodic when the curve is closed.
     #[default]
     CubicSpline,
-    /// The interpolating LL curve of this order (seed 000).
+    /// The interpolating LL curve of this order (Aulchenko et al.).
     Ll(usize),
 }
 
@@ -49,7 +49,7 @@ struct Parameterization {
 /// How the curves are interpolated ([`CurveFit`]): by default a not-a-knot cubic spline
 /// (periodic when closed) in the point-index parameter. Polylines would not do: bicubic and
 /// composite Coons surfaces need the curves' tangents at the crossings, and the composite
-/// surface is `C^1` only over `C^1` curves. The interpolating LL curve of order 3 (seed 000)
+/// surface is `C^1` only over `C^1` curves. The interpolating LL curve of order 3 (Aulchenko et al.)
 /// is offered too ([`CurveFit::Ll`]), but its tangents are only first-order accurate at open
 /// ends (its end extension makes the curvature vanish there: a tangent error of 0.16 on a
 /// 21-point sample of `sin 2t` where the spline's is below `1e-3`), so cross-derivative data

@@ -1,4 +1,4 @@
-//! The generalized Coons surface: the Boolean sum (9) of seed 001 over any two blending
+//! The generalized Coons surface: the Boolean sum (9) of Chashnikov over any two blending
 //! families and curve families, with the compatibility check (8).
 
 use std::sync::Arc;
@@ -18,7 +18,7 @@ pub const DEFAULT_TOLERANCE: f64 = 1e-6;
 /// Points sampled per curve to measure the model size.
 const SIZE_SAMPLES: usize = 9;
 
-/// A generalized Coons surface (seed 001, formula (9)):
+/// A generalized Coons surface (Chashnikov, formula (9)):
 ///
 /// ```text
 /// c(u,v) = sum_i H^u_i(u) f_i(v) + sum_j H^v_j(v) g_j(u) - sum_i sum_j H^u_i(u) H^v_j(v) L^u_i(g_j)

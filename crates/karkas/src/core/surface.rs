@@ -42,7 +42,7 @@ pub trait Surface<const D: usize> {
 
     /// The level set `{(u, v) : normal . P(u, v) = level}`, when this surface knows it to be
     /// made of whole parameter lines: the fast path of plane sections for a surface whose `x`
-    /// depends on `u` only (seed 000, formula (21)). The lines are listed in increasing
+    /// depends on `u` only (Aulchenko et al., formula (21)). The lines are listed in increasing
     /// parameter; an empty list means the level is never reached.
     ///
     /// `None` (the default) when the surface cannot tell, or when it lies in the level set

@@ -1,4 +1,4 @@
-//! Interpolation by a discrete periodic spline (seed 002, §2, problem (1); METHODS.md §3):
+//! Interpolation by a discrete periodic spline (Malozemov et al.'s §2, problem (1); docs/methods.md §3):
 //! the poles `a_p` with `S_r(l n) = z(l)`, `l` in `0..m`.
 //!
 //! The system `sum_p a_p Q_r((l - p) n) = z(l)` is circulant, so the discrete Fourier transform

@@ -1,11 +1,11 @@
 //! Discrete periodic splines with vector coefficients: closed discrete curves and tube
-//! surfaces (seed 002: Malozemov, Khorokhonov, Chashnikov; METHODS.md §3).
+//! surfaces (Malozemov, Khorokhonov, Chashnikov; docs/methods.md §3).
 //!
 //! A discrete `N`-periodic spline of order `r` (`N = m n`, `m, n >= 2`) is
 //! `S_r(j) = sum_{p<m} a_p Q_r(j - p n)`, `j` in `0..N`, with vector poles `a_p` in R^D and the
 //! discrete periodic B-spline `Q_r`: the hat `Q_1` of half-width `n`, and
 //! `Q_v = (1/n) Q_1 (*) Q_{v-1}` (cyclic convolution). Order `r` behaves like a spline of degree
-//! `2r - 1`. Such splines are point sets, not functions of a real parameter (METHODS.md §6): they
+//! `2r - 1`. Such splines are point sets, not functions of a real parameter (docs/methods.md §6): they
 //! export as closed polylines and meshes, and do not implement [`Curve`](crate::Curve).
 //!
 //! - [`discrete_bspline`]: `Q_r` on `0..N`;

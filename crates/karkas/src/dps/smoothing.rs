@@ -1,4 +1,4 @@
-//! The evaluation recurrence of seed 002, §1 (METHODS.md §3): `S_1` is the broken line through
+//! The evaluation recurrence of Malozemov et al.'s §1 (docs/methods.md §3): `S_1` is the broken line through
 //! the poles, and `S_v = (1/n) Q_1 (*) S_{v-1}` (cyclic convolution) raises the order by one.
 //!
 //! The hat `Q_1` is a box convolved with a box: with `b(j) = 1` for `j` in `0..n-1`,

@@ -1,5 +1,5 @@
-//! Discrete periodic splines with vector poles: closed discrete curves in R^D (seed 002, §1 and
-//! §3; METHODS.md §3).
+//! Discrete periodic splines with vector poles: closed discrete curves in R^D (Malozemov et al.'s §1 and
+//! §3; docs/methods.md §3).
 
 use super::interpolation::InterpolationPlan;
 use super::period::check_period;
@@ -10,7 +10,7 @@ use crate::{Error, Point, Result};
 /// `S_r(j) = sum_{p=0}^{m-1} a_p Q_r(j - p n)`, `N = m n`.
 ///
 /// It is a point set, the `N` values `S_r(0..N)`: joined by segments they make a closed
-/// polygon, the discrete curve of the seed. For every `j` the weights `Q_r(j - p n)` are
+/// polygon, the discrete curve of the paper. For every `j` the weights `Q_r(j - p n)` are
 /// non-negative and sum to 1, so each value is a convex combination of the poles and the curve
 /// lies in their convex hull. Order `r` is the discrete analogue of a spline of degree
 /// `2r - 1` (`r = 2` is "cubic").
@@ -53,11 +53,11 @@ impl<const D: usize> DiscreteSpline<D> {
     }
 
     /// The spline of order `order` and step `n` through `nodes`: `S_r(l n) = nodes[l]` for
-    /// `l` in `0..m` (problem (1) of the seed, solved by the DFT formula in `O(m log m + N)`,
+    /// `l` in `0..m` (problem (1) of the paper, solved by the DFT formula in `O(m log m + N)`,
     /// see [`InterpolationPlan`]).
     ///
     /// Among all `N`-periodic sequences `x` with `x(l n) = nodes[l]` it has the least
-    /// `sum_j ||Delta^r x(j)||^2` (the extremal property of the seed).
+    /// `sum_j ||Delta^r x(j)||^2` (the extremal property of the paper).
     ///
     /// Errors: as [`from_poles`](Self::from_poles).
     pub fn interpolating(nodes: &[Point<D>], order: usize, n: usize) -> Result<Self> {
@@ -89,7 +89,7 @@ impl<const D: usize> DiscreteSpline<D> {
 
     /// Writes the values `S_r(0), ..., S_r(N - 1)` into `out`.
     ///
-    /// `O(r N)` by the recurrence of the seed with moving sums (see the module docs); besides
+    /// `O(r N)` by the recurrence of the paper with moving sums (see the module docs); besides
     /// `out` it uses one scratch buffer of `n - 1` points.
     ///
     /// # Panics

@@ -1,5 +1,5 @@
-//! Closed tube surfaces from two families of skeleton curves (seed 002, §4–5, formula (3);
-//! METHODS.md §3).
+//! Closed tube surfaces from two families of skeleton curves (Malozemov et al.'s §4–5, formula (3);
+//! docs/methods.md §3).
 //!
 //! Skeleton: curves `f_i`, `i < m1`, running along the tube, each sampled at `q` in `0..N2`,
 //! and curves `g_j`, `j < m2`, running across it, each sampled at `p` in `0..N1`, with

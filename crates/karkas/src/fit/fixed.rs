@@ -1,9 +1,9 @@
-//! The least-squares spline for parameters held fixed: the alternation step of seed 003.
+//! The least-squares spline for parameters held fixed: the alternation step of Pavlov.
 //!
 //! With every `t_i` held, `F = sum_i |R(t_i) - r_i|^2 + p sum_L delta_L |J_L|^2 + lambda S` is
 //! a linear least-squares problem in the coefficients, the same for every coordinate: rows
 //! `A_i` (the four Hermite basis values at `t_i`), `sqrt(p delta_L)` times the coefficients of
-//! `J_L` (formula (2) of the seed), and two rows per piece for the bending energy
+//! `J_L` (formula (2) of the paper), and two rows per piece for the bending energy
 //! (`S = h |R''(mid)|^2 + h^3 |R'''|^2 / 12` on a piece). The unknowns are ordered
 //! `R_0, H_0, R_1, H_1, ...`, so every row lies within 6 consecutive columns; the rows are
 //! added piece by piece (points grouped by a counting sort) to the banded Givens solver

@@ -1,4 +1,4 @@
-//! C^1 cubic Hermite splines: cubic splines of defect 2 (seed 003; METHODS.md §4).
+//! C^1 cubic Hermite splines: cubic splines of defect 2 (Pavlov; docs/methods.md §4).
 //!
 //! On knots `T_0 < ... < T_{N-1}` the spline stores a value `R_L` and a derivative `H_L` at
 //! every knot. On piece `k` (`[T_k, T_{k+1}]`, length `h`, local `s = (t - T_k)/h`):
@@ -7,8 +7,8 @@
 //! R(t) = R_k (1-s)^2 (1+2s) + R_{k+1} s^2 (3-2s) + H_k h s (1-s)^2 - H_{k+1} h s^2 (1-s)
 //! ```
 //!
-//! (the seed prints `- h_L` in `F_0` where `+ h_L` is meant). Value and first derivative are
-//! continuous at the knots; the second derivative jumps, and the seed measures the jump at an
+//! (the paper prints `- h_L` in `F_0` where `+ h_L` is meant). Value and first derivative are
+//! continuous at the knots; the second derivative jumps, and the paper measures the jump at an
 //! inner knot by its formula (2):
 //!
 //! ```text
@@ -38,7 +38,7 @@ pub struct HermiteSpline<const D: usize> {
     derivatives: Vec<Point<D>>,
 }
 
-/// The coefficients of `J_L` (formula (2) of seed 003) on
+/// The coefficients of `J_L` (formula (2) of Pavlov) on
 /// `[R_{L-1}, H_{L-1}, R_L, H_L, R_{L+1}, H_{L+1}]`, for knots with `h_l = T_L - T_{L-1}` and
 /// `h_r = T_{L+1} - T_L`.
 #[inline]
@@ -180,7 +180,7 @@ impl<const D: usize> HermiteSpline<D> {
         self.deriv_on_piece(l, 0.0, 2) - self.deriv_on_piece(l - 1, 1.0, 2)
     }
 
-    /// The seed's jump measure `J_L` at inner knot `L` (formula (2) of seed 003; see the
+    /// The paper's jump measure `J_L` at inner knot `L` (formula (2) of Pavlov; see the
     /// module docs): the second-derivative jump times `-h_L h_{L+1} / (2 (h_L + h_{L+1}))`.
     ///
     /// # Panics

@@ -1,15 +1,15 @@
 //! Knot grids and starting parameters of the fit.
 //!
-//! The seed's grid is `0 = T_1 < ... < T_N = 1`; the data points get parameters
+//! The paper's grid is `0 = T_1 < ... < T_N = 1`; the data points get parameters
 //! `0 = t_1 <= ... <= t_n = 1`, by default in proportion to the cumulative chord length
-//! (the seed's starting point), optionally uniform or centripetal (square roots of the
+//! (the paper's starting point), optionally uniform or centripetal (square roots of the
 //! chords), which the multi-start check uses.
 
 use crate::core::knots;
 use crate::{Error, Point, Result};
 
 /// The smallest allowed distance between two knots of a fit (in the parameter, whose range
-/// is `[0, 1]`). The seed's own grid has knots `0.004` apart.
+/// is `[0, 1]`). The paper's own grid has knots `0.004` apart.
 pub const MIN_KNOT_SPACING: f64 = 1e-6;
 
 /// Checks a knot grid for a fit: the rules of every knot sequence
@@ -80,7 +80,7 @@ pub fn uniform_knots(n: usize) -> Vec<f64> {
 /// How the data points get their starting parameters.
 #[derive(Clone, Debug, PartialEq, Default)]
 pub enum StartParameters {
-    /// In proportion to cumulative chord length (the seed's choice).
+    /// In proportion to cumulative chord length (the paper's choice).
     #[default]
     ChordLength,
     /// Centripetal: in proportion to cumulative square roots of the chords.

@@ -1,21 +1,21 @@
 //! Fitting measured points with cubic splines of defect 2 whose second-derivative jumps are
-//! bounded (seed 003: N. N. Pavlov, "On the approximation of space curves by cubic parametric
-//! splines"; METHODS.md §4).
+//! bounded (N. N. Pavlov, "On the approximation of space curves by cubic parametric
+//! splines"; docs/methods.md §4).
 //!
 //! Measured contours are noisy and unevenly spread; a C^1 cubic Hermite spline
 //! ([`HermiteSpline`]: values `R_L` and derivatives `H_L` at knots `0 = T_1 < ... < T_N = 1`)
 //! follows them with few knots, and bounding `f(q) = sum_L delta_L |J_L|^2 <= eps` (the
-//! jumps `J_L` of the second derivative, formula (2) of the seed) keeps it from bending
+//! jumps `J_L` of the second derivative, formula (2) of the paper) keeps it from bending
 //! sharply where the data are thin; `delta_L = 0` keeps a chosen knot a corner.
 //!
 //! - [`fit_curve`]: the fit on given knots. Minimizes `H(q) = sum_i min_t |R(t) - r_i|^2`
 //!   (foot-point distances) plus a small bending term `lambda int |R''|^2 dt`
-//!   ([`FitOptions::fairness`]) subject to the bound, by the seed's penalty method (`p` from
-//!   the seed's bound `p >= H(q*)/eps`, raised until the bound holds, or chosen so that the
+//!   ([`FitOptions::fairness`]) subject to the bound, by the paper's penalty method (`p` from
+//!   the paper's bound `p >= H(q*)/eps`, raised until the bound holds, or chosen so that the
 //!   bound is active, see [`PenaltyRule`]); for each `p`, Newton's method on the coefficients
 //!   with the foot-point parameters eliminated (Gauss–Newton on both jointly, the diagonal
 //!   parameter block solved out, curvature terms kept; banded), safeguarded by
-//!   Levenberg–Marquardt damping and by the seed's alternation of a banded least-squares
+//!   Levenberg–Marquardt damping and by the paper's alternation of a banded least-squares
 //!   solve with the projection of every point onto the curve; chord-length start; the ends
 //!   optionally pinned to the first and last points ([`FitOptions::pin_ends`]).
 //! - [`fit_curve_adaptive`]: knots placed automatically (uniform in chord length, then

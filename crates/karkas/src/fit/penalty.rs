@@ -1,20 +1,20 @@
-//! The fit on given knots: the penalty method of seed 003 around the inner solver.
+//! The fit on given knots: the penalty method of Pavlov around the inner solver.
 //!
 //! Minimize `H(q) + lambda S(q)` (the sum of squared foot-point distances plus the small
 //! bending term of [`FitOptions::fairness`]) subject to `f(q) = sum_L delta_L |J_L|^2 <= eps`:
 //!
 //! 1. the unconstrained fit `q_H` (`p = 0`) is found first, from the least-squares fit at the
-//!    starting parameters: when `f(q_H) <= eps` it is the answer (the seed's "the problem
+//!    starting parameters: when `f(q_H) <= eps` it is the answer (the paper's "the problem
 //!    reduces to finding `q_H`");
 //! 2. otherwise `q*` is the fit on the knots `{0, corners, 1}` only, which has no jump at any
-//!    knot with `delta_L = 1` (so `f(q*) = 0`), and the seed's bound is
+//!    knot with `delta_L = 1` (so `f(q*) = 0`), and the paper's bound is
 //!    `p* = (H + lambda S)(q*) / eps` (proved for global minimizers of `H + lambda S + p f`);
 //!    with [`PenaltyRule::SeedBound`] `p = p*`, multiplied by 10 until `f(q_p) <= eps` holds
 //!    for the minimizer found;
 //! 3. with [`PenaltyRule::ActiveBound`] (the default) `p` is chosen so that `f(q_p)` meets
 //!    `eps` to a relative [`FitOptions::eps_tolerance`]: that `q_p` satisfies the optimality
 //!    conditions of the constrained problem (`grad (H + lambda S) + p grad f = 0`, `f = eps`,
-//!    `p` its multiplier), so its `H + lambda S` is the lowest the bound allows; the seed's
+//!    `p` its multiplier), so its `H + lambda S` is the lowest the bound allows; the paper's
 //!    `p*` over-penalizes, and its fit can lie farther from the points than `eps` requires.
 //!    The search for `p` rides on the Newton iteration: every step takes the `p` for which
 //!    the jump sum after the step meets the bound (a scalar search costing banded
@@ -24,7 +24,7 @@
 //!    approximately: the fit is then polished at `p` held (a few Newton steps to a
 //!    stationary point of `H + lambda S + p f`), `p` moved by secant steps on `ln f` against
 //!    `ln p` until `f` lands in the tolerance again (usually one to three). Should the
-//!    iteration end outside the tolerance (iteration cap), the seed's rule takes over from
+//!    iteration end outside the tolerance (iteration cap), the paper's rule takes over from
 //!    the `p` found.
 //!
 //! Every `q_p` is found by [`Solver::minimize`], warm-started from the previous one.
@@ -37,7 +37,7 @@ use super::problem::{Problem, State};
 use super::solver::{Penalty, Solver, Stop};
 use crate::{Curve, Error, Point, Result};
 
-/// Iterations spent on the feasible reference `q*` of the seed's bound.
+/// Iterations spent on the feasible reference `q*` of the paper's bound.
 const REFERENCE_ITERATIONS: usize = 5;
 /// Minimizations at a held `p` that polish the active bound's fit, at most.
 const POLISH_STEPS: usize = 8;
@@ -50,11 +50,11 @@ pub const DEFAULT_SETTLE_TOLERANCE: f64 = 1e-2;
 /// How the penalty `p` is chosen.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum PenaltyRule {
-    /// Lower `p` from the seed's bound until the constraint is active (`f` within
+    /// Lower `p` from the paper's bound until the constraint is active (`f` within
     /// [`FitOptions::eps_tolerance`] of `eps`): the solution of the constrained problem.
     #[default]
     ActiveBound,
-    /// The seed's rule: `p = H(q*) / eps`, times 10 until `f <= eps`.
+    /// The paper's rule: `p = H(q*) / eps`, times 10 until `f <= eps`.
     SeedBound,
 }
 
@@ -138,7 +138,7 @@ pub struct CurveFit<const D: usize> {
     pub jump_sum: f64,
     /// The penalty `p` of the final minimization (0 for the unconstrained fit).
     pub penalty: f64,
-    /// The seed's bound `H(q*) / eps` (0 when no penalty was needed).
+    /// The paper's bound `H(q*) / eps` (0 when no penalty was needed).
     pub seed_bound: f64,
     /// `delta_L` per knot (0 at the ends and at corners).
     pub weights: Vec<f64>,
@@ -328,7 +328,7 @@ pub(crate) fn fit_checked<const D: usize>(
         }
     }
 
-    // 2. The seed's bound from a feasible q*: the fit on the knots {0, corners, 1}.
+    // 2. The paper's bound from a feasible q*: the fit on the knots {0, corners, 1}.
     let mut coarse: Vec<f64> = knots
         .iter()
         .zip(weights)
@@ -355,7 +355,7 @@ pub(crate) fn fit_checked<const D: usize>(
     solver.solve_fixed(&mut state, p)?;
     solver.project(&mut state);
     if options.penalty == PenaltyRule::ActiveBound {
-        // 3. The active bound, from the fit at the seed's p* (stiff, so that the foot points
+        // 3. The active bound, from the fit at the paper's p* (stiff, so that the foot points
         // settle on a smooth curve first): p is then chosen at every Newton step.
         let settle = Stop {
             tolerance: stop.tolerance.max(DEFAULT_SETTLE_TOLERANCE),
@@ -403,7 +403,7 @@ pub(crate) fn fit_checked<const D: usize>(
         // Not settled in the window (iteration cap): hold the p found, raised if need be.
         p = found.max(f64::MIN_POSITIVE);
     }
-    // The seed's rule: p = p*, times 10 until the bound holds.
+    // The paper's rule: p = p*, times 10 until the bound holds.
     for _ in 0..=40 {
         iterations += solver.minimize(&mut state, Penalty::Fixed(p), stop)?.0;
         if f_of(&state) <= eps {

@@ -17,7 +17,7 @@
 //!   the actual to the predicted decrease; each damping is tried with the exact model, then
 //!   with the safe one (the safe one first once an exact step failed where the safe one
 //!   succeeded: near the minimum the exact model's steps slide the points along the curve
-//!   and are refused, each at the cost of a projection). When no damped step succeeds, the seed's alternation step (the
+//!   and are refused, each at the cost of a projection). When no damped step succeeds, the paper's alternation step (the
 //!   least-squares spline with the parameters held, [`solve_fixed`], then projection) is taken
 //!   instead; it never increases `F`. Near the minimum, where `F` no longer changes in
 //!   floating point, a step is taken when it shrinks the gradient.
@@ -30,7 +30,7 @@
 //!   many iterations, while the shape and the distances have settled.
 //!
 //! The first and last points keep `t = 0` and `t = 1`: they anchor the ends of the curve
-//! (the seed minimizes over the `t_i` of the inner points only).
+//! (the paper minimizes over the `t_i` of the inner points only).
 //!
 //! Each iteration is `O(n D^2)` for `n` points in R^D plus `O(N D^3)` for `N` knots, and
 //! allocates nothing: every buffer lives in the [`Solver`].
@@ -194,7 +194,7 @@ impl<'a, const D: usize> Solver<'a, D> {
         }
     }
 
-    /// The seed's alternation step into `self.trial`: the least-squares spline for the
+    /// The paper's alternation step into `self.trial`: the least-squares spline for the
     /// parameters of `state`, then projection; returns its `F` (infinite when the solve
     /// fails).
     fn alternation_into_trial(&mut self, state: &State<D>, p: f64) -> f64 {

@@ -1,5 +1,5 @@
 //! Implicit surfaces `F(x, y, z) = 0`: curvature and node grids traced by continuation
-//! (seed 004: Kuznetsov, Filatov; METHODS.md §5).
+//! (Kuznetsov, Filatov; docs/methods.md §5).
 //!
 //! - [`ImplicitSurface`]: `F`, its gradient and Hessian; built in: [`Cylinder`],
 //!   [`Hyperboloid`], [`Sphere`]; from a typed expression: [`ExpressionSurface`] (parsed and
@@ -9,7 +9,7 @@
 //!   [`project_onto`] / [`closest_point_on`]: Newton's projection onto `F = 0`;
 //! - [`trace_net`]: a grid of nodes on the net of lines of curvature, or on a net turned by
 //!   an angle (one or both families) or of plane sections, traced by predictor-corrector
-//!   continuation with arc-length steps: the node sets of the seed's experiments.
+//!   continuation with arc-length steps: the node sets of the paper's experiments.
 //!
 //! ```
 //! use karkas::implicit::{trace_net, Cylinder, NetDirections, NetSpec};

@@ -1,8 +1,8 @@
-//! Grids of nodes on nets of lines traced over an implicit surface by continuation (seed 004,
-//! section 2 and the experiments of section 3; METHODS.md §5).
+//! Grids of nodes on nets of lines traced over an implicit surface by continuation (Kuznetsov and Filatov,
+//! section 2 and the experiments of section 3; docs/methods.md §5).
 //!
 //! By Theorem 2.1 the best parameters of `F = 0` are arc lengths along two orthogonal
-//! directions, and the seed takes the principal directions: the node grid is then a net of
+//! directions, and the paper takes the principal directions: the node grid is then a net of
 //! lines of curvature spaced by arc length. A line is traced from a node as the solution of
 //! `dx/ds = d(x)` for a unit tangent field `d` (a principal direction, or one turned by an
 //! angle): each node step of arc length `h` is split into [`NetSpec::substeps`] classical

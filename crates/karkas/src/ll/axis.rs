@@ -1,4 +1,4 @@
-//! The uniform parameter grid of one LL direction (seed 000, §1; METHODS.md §1.2).
+//! The uniform parameter grid of one LL direction (Aulchenko et al.; docs/methods.md §1.2).
 //!
 //! With `K` nodes, `Delta = 1/(K+1)` and node `i` (1-based) sits at `t_i = i Delta`. Segment
 //! `i` covers `t` in `[t_i - Delta/2, t_i + Delta/2]` with the local coordinate

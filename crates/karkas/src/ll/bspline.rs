@@ -90,7 +90,7 @@ fn ll_knots(kernel: &LlKernel, axis: NodeAxis) -> (usize, Vec<f64>, Vec<f64>) {
 }
 
 /// LL curves: degree `2L`, knots at the segment borders with multiplicity `L` (the curve is
-/// `C^L` there, METHODS.md §6), over the working domain `[1/(K+1), K/(K+1)]`. A closed curve
+/// `C^L` there, docs/methods.md §6), over the working domain `[1/(K+1), K/(K+1)]`. A closed curve
 /// is exported over its one period as a clamped curve whose ends coincide.
 impl<const D: usize> ToBSplineCurve<D> for LlCurve<D> {
     fn to_bspline(&self) -> Result<BSplineCurve<D>> {

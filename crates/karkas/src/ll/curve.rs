@@ -1,4 +1,4 @@
-//! LL curves (seed 000, formulas (3)–(6); METHODS.md §1.2).
+//! LL curves (Aulchenko et al., formulas (3)–(6); docs/methods.md §1.2).
 //!
 //! An LL curve of order `L` through the support polygon `r_1..r_K` is, on segment `i`,
 //! `P_i(xi) = c_-(xi) r_{i-1} + c_0(xi) r_i + c_+(xi) r_{i+1}`, with the kernel weights of

@@ -1,5 +1,5 @@
-//! Preparing the support polygon of an LL curve or surface (seed 000, formulas (3), (20);
-//! METHODS.md §1.2–1.3): validation, closing, and the extra end points `r_0`, `r_{K+1}`.
+//! Preparing the support polygon of an LL curve or surface (Aulchenko et al., formulas (3), (20);
+//! docs/methods.md §1.2–1.3): validation, closing, and the extra end points `r_0`, `r_{K+1}`.
 
 use crate::{Error, Point, Result};
 

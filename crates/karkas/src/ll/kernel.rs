@@ -1,4 +1,4 @@
-//! The LL kernel `h` of order `L` (seed 000, formulas (4), (5), (9); METHODS.md §1.1).
+//! The LL kernel `h` of order `L` (Aulchenko et al., formulas (4), (5), (9); docs/methods.md §1.1).
 //!
 //! ```text
 //! eps_k = C(L+k, k) / (L+k)                    k = 0..L

@@ -1,4 +1,4 @@
-//! The fast path of plane sections of LL surfaces (seed 000, formula (21); METHODS.md §1.4).
+//! The fast path of plane sections of LL surfaces (Aulchenko et al., formula (21); docs/methods.md §1.4).
 //!
 //! When the grid is laid out as in the paper, `x` depends on the row only (`x_ij = x_i`), and
 //! so does every linear function `n . r_ij` that is constant along each row. The LL surface

@@ -1,5 +1,5 @@
-//! LL-approximation of curves and surfaces (seed 000: Aulchenko, Latypov, Nikulichev;
-//! METHODS.md §1).
+//! LL-approximation of curves and surfaces (Aulchenko, Latypov, Nikulichev;
+//! docs/methods.md §1).
 //!
 //! A uniform parameter grid, one polynomial segment of degree `2L` per input point, joined
 //! with `C^L` continuity. The approximating scheme is oscillation-free and monotone (it bends

@@ -1,4 +1,4 @@
-//! The interpolating variant of LL approximation (seed 000, system (6); METHODS.md §1.2).
+//! The interpolating variant of LL approximation (Aulchenko et al., system (6); docs/methods.md §1.2).
 //!
 //! The LL curve through control points `r` passes at node `i` through
 //! `d_L r_{i-1} + (1 - 2 d_L) r_i + d_L r_{i+1}`. To make it pass through given points

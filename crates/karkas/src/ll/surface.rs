@@ -1,4 +1,4 @@
-//! LL surfaces (seed 000, formulas (11)–(20); METHODS.md §1.3).
+//! LL surfaces (Aulchenko et al., formulas (11)–(20); docs/methods.md §1.3).
 //!
 //! The tensor product of the curve scheme: on the cell around node `(i, j)`,
 //! `P(xi, eta) = sum_{a,b in {-,0,+}} c_a(xi) c_b(eta) r_{i+a, j+b}`. Rows and columns are

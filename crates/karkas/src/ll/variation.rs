@@ -1,4 +1,4 @@
-//! The surface variation method (seed 000, formulas (24)–(33); METHODS.md §1.5).
+//! The surface variation method (Aulchenko et al., formulas (24)–(33); docs/methods.md §1.5).
 //!
 //! A surface is varied through a few numbers instead of all its grid points: for one
 //! coordinate matrix `r_ij` (`n x m`, e.g. the `z` of every grid point) the user prescribes new

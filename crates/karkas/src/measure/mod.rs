@@ -1,5 +1,5 @@
-//! Distances between surfaces and point sets: the two-sided Hausdorff distance (seed 004,
-//! formula (3.14); METHODS.md §5), the error measure of the seed's experiments.
+//! Distances between surfaces and point sets: the two-sided Hausdorff distance (Kuznetsov and Filatov,
+//! formula (3.14); docs/methods.md §5), the error measure of the paper's experiments.
 //!
 //! `Delta(E, F) = max( max_{P in E} min_{Q in F} |P - Q|, max_{P in F} min_{Q in E} |P - Q| )`.
 //!

@@ -4,7 +4,7 @@
 //! On the cell `[u_i, u_{i+1}] x [v_j, v_{j+1}]` the surface is `W = phi(s)^T F phi(t)` (3.6)
 //! with the Hermite basis `phi` of (3.7), (3.9) and the 4 x 4 matrix (3.8) of node values
 //! `r`, u-slopes `r_u`, v-slopes `r_v` and twists `r_uv` at the four corners. The unknown
-//! derivatives come from `2N + M` one-dimensional spline solves (the seed's three steps):
+//! derivatives come from `2N + M` one-dimensional spline solves (the paper's three steps):
 //!
 //! 1. a spline in `u` along every column `v = v_j` gives `r_u` (M solves);
 //! 2. a spline in `v` along every row `u = u_i` gives `r_v` (N solves);
@@ -121,7 +121,7 @@ impl<const D: usize> BicubicSurface<D> {
         )
     }
 
-    /// The three steps of the seed: `2N + M` spline solves.
+    /// The three steps of the paper: `2N + M` spline solves.
     fn build(
         grid: Grid<Point<D>>,
         knots_u: Vec<f64>,

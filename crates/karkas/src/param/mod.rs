@@ -1,21 +1,21 @@
-//! Parameterization and cubic / bicubic spline interpolation (seed 004: Kuznetsov, Filatov,
-//! "Parametrization of surfaces by the continuation method"; METHODS.md §5).
+//! Parameterization and cubic / bicubic spline interpolation (Kuznetsov, Filatov,
+//! "Parametrization of surfaces by the continuation method"; docs/methods.md §5).
 //!
 //! Points measured on a curve or a surface become a smooth curve or surface only after
-//! parameters are chosen, and the seed shows that the choice decides the error. This module
-//! has the seed's pipeline for point data:
+//! parameters are chosen, and the paper shows that the choice decides the error. This module
+//! has the paper's pipeline for point data:
 //!
 //! - [`curve_parameters`], [`grid_parameters`]: uniform, chord-length (along two grid lines
-//!   through an origin node, the seed's rule, or averaged over all lines) and centripetal
+//!   through an origin node, the paper's rule, or averaged over all lines) and centripetal
 //!   parameters, `O(n)` / `O(N M)`;
 //! - [`CubicSpline`]: 1-D cubic interpolating splines on any increasing knots with
-//!   not-a-knot (the seed's (3.10)–(3.12)), natural, clamped or periodic ends; one `O(n)`
+//!   not-a-knot (the paper's (3.10)–(3.12)), natural, clamped or periodic ends; one `O(n)`
 //!   tridiagonal solve;
 //! - [`BicubicSurface`]: the bicubic interpolant of a grid in Hermite form (3.6)–(3.9), its
-//!   node derivatives found by the seed's three steps of `2N + M` spline solves, `O(N M)`;
+//!   node derivatives found by the paper's three steps of `2N + M` spline solves, `O(N M)`;
 //!   not-a-knot ends, periodic in a closed direction.
 //!
-//! The seed's table of errors (frames from [`crate::implicit`], measured with
+//! The paper's table of errors (frames from [`crate::implicit`], measured with
 //! [`crate::measure`]) is an experiment built on this module: the CLI's `demo` runs it.
 //!
 //! ```

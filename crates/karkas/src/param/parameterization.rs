@@ -1,11 +1,11 @@
-//! Parameter values for ordered points and for grids of points (seed 004, section 3;
-//! METHODS.md §5, "Point grids").
+//! Parameter values for ordered points and for grids of points (Kuznetsov and Filatov, section 3;
+//! docs/methods.md §5, "Point grids").
 //!
 //! A curve or surface through given points needs a parameter value at every point, and the
 //! choice decides the shape between the points. For a curve through `p_0..p_{n-1}`:
 //!
 //! - uniform: `t_k = k`;
-//! - chord length: `t_k - t_{k-1} = |p_k - p_{k-1}|` (the seed's choice: close to the best,
+//! - chord length: `t_k - t_{k-1} = |p_k - p_{k-1}|` (the paper's choice: close to the best,
 //!   arc-length parameters of Theorem 2.1);
 //! - centripetal: `t_k - t_{k-1} = |p_k - p_{k-1}|^(1/2)`.
 //!
@@ -13,7 +13,7 @@
 //! `v_j` serve every line:
 //!
 //! - [`GridParameterization::Uniform`]: `u_i = i`, `v_j = j`;
-//! - [`GridParameterization::Chord`]: the seed's rule: an origin node `(i*, j*)` gets
+//! - [`GridParameterization::Chord`]: the paper's rule: an origin node `(i*, j*)` gets
 //!   `(u, v) = (0, 0)`, and `u_i` (`v_j`) is the signed cumulative chord length along the grid
 //!   line `j = j*` (`i = i*`) through it;
 //! - [`GridParameterization::AveragedChord`]: the step `u_i - u_{i-1}` is the mean over all
@@ -32,7 +32,7 @@ use crate::{Error, Point, Result};
 pub enum CurveParameterization {
     /// `t_k = k`.
     Uniform,
-    /// Cumulative chord length (the seed's choice).
+    /// Cumulative chord length (the paper's choice).
     #[default]
     ChordLength,
     /// Cumulative square root of the chord length.
@@ -44,7 +44,7 @@ pub enum CurveParameterization {
 pub enum GridParameterization {
     /// `u_i = i`, `v_j = j`.
     Uniform,
-    /// Chord lengths along the two grid lines through the origin node (the seed's rule):
+    /// Chord lengths along the two grid lines through the origin node (Kuznetsov and Filatov's rule):
     /// `u` along column `origin_col`, `v` along row `origin_row`, zero at the origin node.
     Chord {
         /// `i*`: the row through the origin node (its chords give `v`).
@@ -59,7 +59,7 @@ pub enum GridParameterization {
 }
 
 impl Default for GridParameterization {
-    /// The seed's rule with the origin at node `(0, 0)`.
+    /// The paper's rule with the origin at node `(0, 0)`.
     fn default() -> Self {
         GridParameterization::Chord {
             origin_row: 0,

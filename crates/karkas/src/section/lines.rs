@@ -1,4 +1,4 @@
-//! The fast path of sections (seed 000, formula (21)): when the surface reports its level set
+//! The fast path of sections (Aulchenko et al., formula (21)): when the surface reports its level set
 //! as whole parameter lines, each line is sampled into a polyline, finely enough that no chord
 //! strays from the line by more than the tolerance.
 //!

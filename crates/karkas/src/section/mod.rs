@@ -1,4 +1,4 @@
-//! Plane sections and isolines of surfaces (seed 000, formulas (21)–(23); METHODS.md §1.4).
+//! Plane sections and isolines of surfaces (Aulchenko et al., formulas (21)–(23); docs/methods.md §1.4).
 //!
 //! Engineers cut a surface into sections: stations `x = const` of a fuselage, waterlines
 //! `z = const`, buttocks `y = const`, or any plane `n . p = c`. This module cuts **any**

@@ -37,7 +37,7 @@ pub struct Section<const D: usize> {
     /// What went wrong while tracing: the curves are then valid but may stop short.
     pub warnings: Vec<SectionWarning>,
     /// True when the section was found as whole parameter lines by the surface itself (the
-    /// paper's fast path, seed 000 formula (21)) instead of being traced.
+    /// paper's fast path, Aulchenko et al.'s formula (21)) instead of being traced.
     pub fast_path: bool,
 }
 

@@ -1,5 +1,5 @@
 //! Predictor-corrector continuation of a level curve `F(u, v) = f(P(u, v)) = 0` in the
-//! parameter plane (seed 000, formulas (22)–(23); METHODS.md §1.4).
+//! parameter plane (Aulchenko et al., formulas (22)–(23); docs/methods.md §1.4).
 //!
 //! The paper integrates the arc-length ODE (23), `du/dl = F_v / |grad F|`,
 //! `dv/dl = -F_u / |grad F|`, and warns that it is often stiff. Continuation avoids the

@@ -6,7 +6,7 @@
 //! solves a banded system with vector-valued right-hand sides in place without allocating
 //! dense matrices; the routines are short and tested against dense solves.
 //!
-//! The spline fits of seed 003 lead to banded least-squares problems, solved by Givens
+//! The spline fits of Pavlov lead to banded least-squares problems, solved by Givens
 //! rotations in [`BandedLeastSquares`], and to banded symmetric positive definite Newton
 //! systems, solved by Cholesky factorization in [`BandedSpd`] (see their docs for why no
 //! crate is used).

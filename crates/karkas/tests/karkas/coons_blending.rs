@@ -1,4 +1,4 @@
-//! Blending families of seed 001 (METHODS.md §2): the duality `L_i(H_j) = delta_ij` for every
+//! Blending families of Chashnikov (docs/methods.md §2): the duality `L_i(H_j) = delta_ij` for every
 //! family, the cubic-spline cardinal functions against SciPy, derivatives against differences,
 //! periodicity, partition of unity where it must hold, locality of the piecewise Hermite family.
 
@@ -511,7 +511,7 @@ fn periodic_families_repeat_with_their_period() {
 
 #[test]
 fn piecewise_hermite_is_local_and_matches_the_seed() {
-    // Seed (17) with integer nodes: H_{2i}(u) = H_1(u - i) on [i, i+1], H_4(u - i + 1) on
+    // Formula (17) with integer nodes: H_{2i}(u) = H_1(u - i) on [i, i+1], H_4(u - i + 1) on
     // [i-1, i]; H_{2i+1}(u) = H_2(u - i), H_3(u - i + 1).
     let nodes = [0.0, 1.0, 2.0, 3.0];
     let family = PiecewiseHermiteBlending::new(&nodes).unwrap();

@@ -1,5 +1,5 @@
-//! Composite Coons surfaces (seed 001 §4–5): Proposition 2 against the patch-by-patch
-//! surface (13) written here from the seed's formulas (4) and (12), the properties (14)
+//! Composite Coons surfaces (Chashnikov's §4–5): Proposition 2 against the patch-by-patch
+//! surface (13) written here from the paper's formulas (4) and (12), the properties (14)
 //! (C^1, interpolated curves and cross-derivatives), closed directions, and the
 //! compatibility errors of (8) / (11).
 
@@ -12,7 +12,7 @@ use crate::coons_reference::{
 use karkas::coons::{CoonsSurface, CrossDerivatives, CurveNetwork, NetworkAxis, SplineEnds};
 use karkas::{Error, Interval, Point3, Surface};
 
-/// The cubic Hermite polynomials of the seed's (3), written out again.
+/// The cubic Hermite polynomials of the paper's (3), written out again.
 fn hermite(x: f64) -> [f64; 4] {
     [
         2.0 * x * x * x - 3.0 * x * x + 1.0,
@@ -25,7 +25,7 @@ fn hermite(x: f64) -> [f64; 4] {
 /// The patch-by-patch composite Coons surface (13) of the network of `s` on the nodes, with
 /// the exact cross-derivatives `A_i = s_u(u_i, .)`, `B_j = s_v(., v_j)`. On the patch
 /// `[u_i, u_{i+1}] x [v_j, v_{j+1}]` the bicubic Coons surface (4) of the boundary curves (12)
-/// in the local parameters `x, y` in `[0, 1]` (derivatives per unit of `x`, `y`: the seed's
+/// in the local parameters `x, y` in `[0, 1]` (derivatives per unit of `x`, `y`: the paper's
 /// integer nodes have `h = 1`).
 fn patch_by_patch(s: &Analytic, us: &[f64], vs: &[f64], alpha: f64, beta: f64) -> Point3 {
     let piece = |nodes: &[f64], t: f64| {
@@ -71,7 +71,7 @@ fn patch_by_patch(s: &Analytic, us: &[f64], vs: &[f64], alpha: f64, beta: f64) -
 #[test]
 fn proposition_2_generalized_equals_patch_by_patch() {
     let s = Arc::new(wavy_sheet());
-    // The seed's integer nodes (m = 3, n = 2), then uneven ones.
+    // The paper's integer nodes (m = 3, n = 2), then uneven ones.
     let cases = [
         (vec![0.0, 1.0, 2.0, 3.0], vec![0.0, 1.0, 2.0]),
         (vec![0.0, 0.4, 1.5, 1.9, 3.0], vec![-0.5, 0.3, 0.6, 2.0]),

@@ -1,4 +1,4 @@
-//! Generalized Coons surfaces (seed 001, METHODS.md §2): Proposition 1 for every instance and
+//! Generalized Coons surfaces (Chashnikov, docs/methods.md §2): Proposition 1 for every instance and
 //! for the generic Boolean sum over every blending family, exact reproduction of surfaces in
 //! the span of the blending functions, grid evaluation, curve types (LL curves, polylines),
 //! parameters outside the domain.
@@ -196,7 +196,7 @@ fn proposition_1_for_every_instance() {
     let cross2 = exact_cross(&s, &u2, &v2);
     let bicubic = CoonsSurface::bicubic(&net2, Some(&cross2), DEFAULT_TOLERANCE).unwrap();
     check_against_surface(&bicubic, &s, tol, "bicubic");
-    // The seed's order of the bicubic functionals: value, derivative, derivative, value.
+    // The paper's order of the bicubic functionals: value, derivative, derivative, value.
     let orders: Vec<(f64, usize)> = bicubic
         .u_family()
         .functionals()

@@ -1,5 +1,5 @@
-//! The discrete periodic B-spline `Q_r` and spline evaluation (seed 002, §1; METHODS.md §3):
-//! the `O(r N)` moving-sum evaluation against the seed's convolution definition, partition of
+//! The discrete periodic B-spline `Q_r` and spline evaluation (Malozemov et al.'s §1; docs/methods.md §3):
+//! the `O(r N)` moving-sum evaluation against the paper's convolution definition, partition of
 //! unity, non-negativity, symmetry, the convex hull, periodicity, and the input errors.
 
 use crate::common::Rng;

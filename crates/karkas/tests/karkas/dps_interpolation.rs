@@ -1,4 +1,4 @@
-//! Interpolation by discrete periodic splines (seed 002, §2, problem (1); METHODS.md §3): the
+//! Interpolation by discrete periodic splines (Malozemov et al.'s §2, problem (1); docs/methods.md §3): the
 //! DFT formula against a direct solve of the circulant system, the nodes, the extremal
 //! property, and convergence of order 2 to the periodic cubic interpolating spline.
 

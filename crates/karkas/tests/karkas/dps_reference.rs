@@ -1,10 +1,10 @@
 //! Slow, independent references for the discrete periodic spline tests: the B-spline by the
-//! seed's definition (explicit hat, cyclic convolution) and the roughness
+//! paper's definition (explicit hat, cyclic convolution) and the roughness
 //! `sum ||Delta^r x||^2`.
 
 use karkas::Point;
 
-/// `Q_1(j)`, `j` in `0..N`, exactly as printed in seed 002, §1.
+/// `Q_1(j)`, `j` in `0..N`, exactly as printed in Malozemov et al.'s §1.
 pub fn hat(m: usize, n: usize, j: usize) -> f64 {
     let (jf, nf, mf) = (j as f64, n as f64, m as f64);
     let big_n = m * n;

@@ -1,4 +1,4 @@
-//! Tube surfaces by formula (3) of seed 002 (§4–5; METHODS.md §3): the skeleton lies on the
+//! Tube surfaces by formula (3) of Malozemov et al. (the paper's §4–5; docs/methods.md §3): the skeleton lies on the
 //! surface (conditions (2)), tensor-product discrete splines are reproduced exactly, and bad
 //! skeletons are errors naming what is wrong.
 

@@ -1,4 +1,4 @@
-//! The two limits of the fit (issue acceptance, METHODS.md §4): `eps -> 0` tends to the C^2
+//! The two limits of the fit (issue acceptance, docs/methods.md §4): `eps -> 0` tends to the C^2
 //! least-squares cubic spline on the same knots, a large `eps` is the unconstrained C^1 fit.
 //! The references are dense least-squares solves written here (truncated-power C^2 basis,
 //! Bezier-form Hermite basis).

@@ -1,4 +1,4 @@
-//! The fit's result is a verified optimum (issue acceptance, METHODS.md §4): every inner foot
+//! The fit's result is a verified optimum (issue acceptance, docs/methods.md §4): every inner foot
 //! point is a local minimizer of the distance, the gradient of `H + p f + lambda S` (with the
 //! small bending term `S = int |R''|^2` of `FitOptions::fairness`) with respect to the spline
 //! coefficients vanishes, the jump bound holds (and is active), and other starting
@@ -68,7 +68,7 @@ fn bezier_eval(fit: &CurveFit<2>, values: &[Point2], derivs: &[Point2], t: f64) 
 }
 
 /// The second-derivative jumps at the inner knots from Bezier control points, scaled to the
-/// seed's J_L: jump * (-h_L h_{L+1} / (2 (h_L + h_{L+1}))).
+/// paper's J_L: jump * (-h_L h_{L+1} / (2 (h_L + h_{L+1}))).
 fn seed_jumps(knots: &[f64], values: &[Point2], derivs: &[Point2]) -> Vec<Point2> {
     (1..knots.len() - 1)
         .map(|l| {
@@ -139,7 +139,7 @@ fn gradient_of_the_penalized_objective_vanishes() {
     let jumps = seed_jumps(&knots, &values, &derivs);
     let bends = second_derivatives(&knots, &values, &derivs);
     assert!(fit.bending_weight > 0.0);
-    // The seed's formula agrees with the library's J_L.
+    // The paper's formula agrees with the library's J_L.
     for (l, j) in jumps.iter().enumerate() {
         assert!(j.distance(fit.spline.jump_measure(l + 1)) < 1e-9 * (1.0 + j.norm()));
     }

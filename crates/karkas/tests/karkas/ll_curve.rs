@@ -1,4 +1,4 @@
-//! Open LL curves (METHODS.md §1.2): parameters, agreement with the definition, C^L joins,
+//! Open LL curves (docs/methods.md §1.2): parameters, agreement with the definition, C^L joins,
 //! node deviation (5), end points, no oscillation, monotonicity, straight segments.
 
 use crate::common::{assert_near, linspace, max_abs};

@@ -1,4 +1,4 @@
-//! Closed LL curves (METHODS.md §1.2): closing rule, `r_0 = r_{K-1}`, `r_{K+1} = r_2`,
+//! Closed LL curves (docs/methods.md §1.2): closing rule, `r_0 = r_{K-1}`, `r_{K+1} = r_2`,
 //! periodicity, smoothness across the seam, C^L joins and node deviation.
 
 use crate::common::{assert_near, linspace, max_abs};

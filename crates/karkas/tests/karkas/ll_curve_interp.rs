@@ -1,4 +1,4 @@
-//! The interpolating LL curve (METHODS.md §1.2, system (6)): it passes through every input
+//! The interpolating LL curve (docs/methods.md §1.2, system (6)): it passes through every input
 //! point at its node, its control polygon solves (6) (checked against a dense solve), and it
 //! keeps the C^L joins.
 

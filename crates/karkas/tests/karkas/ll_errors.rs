@@ -1,5 +1,5 @@
 //! Invalid input to LL curves and surfaces is an error that names the problem
-//! (METHODS.md §1.2–1.3: K >= 3, finite points, L >= 1).
+//! (docs/methods.md §1.2–1.3: K >= 3, finite points, L >= 1).
 
 use karkas::ll::{LlCurve, LlSurface, MAX_ORDER};
 use karkas::{Error, Grid, Point};

@@ -1,4 +1,4 @@
-//! The LL kernel `h` (METHODS.md §1.1), against the reference of `common` (exact binomials,
+//! The LL kernel `h` (docs/methods.md §1.1), against the reference of `common` (exact binomials,
 //! `h` summed from its definition, `h'` as the incomplete beta sum, `h^(j)` from the exact
 //! monomial coefficients of `h`).
 
@@ -332,7 +332,7 @@ fn d_l_approaches_its_asymptote_monotonically() {
         prev = q;
     }
     assert!((1.0 - ratio(64)).abs() < 0.01);
-    // The seed's 1/(2 sqrt(pi L)) is off by the factor 2 noted in METHODS.md.
+    // The paper's 1/(2 sqrt(pi L)) is off by the factor 2 noted in docs/methods.md.
     let seed = LlKernel::new(64).unwrap().d_l() * 2.0 * (pi * 64.0).sqrt();
     assert!((seed - 0.5).abs() < 0.01);
 }

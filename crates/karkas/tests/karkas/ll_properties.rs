@@ -1,4 +1,4 @@
-//! Property tests of LL curves and surfaces (METHODS.md §1.2–1.3): affine invariance, the
+//! Property tests of LL curves and surfaces (docs/methods.md §1.2–1.3): affine invariance, the
 //! convex hull of three consecutive points, interpolation, periodicity, batch evaluation.
 //! Fixed seed and case count, so CI runs are reproducible.
 

@@ -1,4 +1,4 @@
-//! LL surfaces (METHODS.md §1.3): the tensor-product definition, formula (19) at the nodes,
+//! LL surfaces (docs/methods.md §1.3): the tensor-product definition, formula (19) at the nodes,
 //! the corner rule of (20), lines u = const / v = const are LL curves, C^L across cell borders
 //! with the (L+1)-th partial jumping, interpolated grid corners, periodic closed directions,
 //! grid evaluation.

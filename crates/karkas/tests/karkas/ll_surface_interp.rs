@@ -1,4 +1,4 @@
-//! The interpolating LL surface (METHODS.md §1.3): it passes through every grid point, and
+//! The interpolating LL surface (docs/methods.md §1.3): it passes through every grid point, and
 //! its separable row-then-column solve equals a dense solve of the full 2-D system.
 
 use crate::common::{assert_near, dense_solve, linspace, max_abs};

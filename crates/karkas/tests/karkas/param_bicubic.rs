@@ -1,4 +1,4 @@
-//! Bicubic interpolation (seed 004, (3.3)–(3.13)): against SciPy, node reproduction, C^2
+//! Bicubic interpolation (Kuznetsov and Filatov, (3.3)–(3.13)): against SciPy, node reproduction, C^2
 //! continuity across every patch border, periodic seams, grid evaluation.
 
 use karkas::param::{BicubicSurface, GridParameterization};

@@ -1,4 +1,4 @@
-//! Plane sections and isolines (METHODS.md §1.4): every point on the plane and on the surface,
+//! Plane sections and isolines (docs/methods.md §1.4): every point on the plane and on the surface,
 //! the expected pieces on known surfaces (closed when they should be), nothing for a plane that
 //! misses, termination at saddles and tangencies, and the fast path against the traced one.
 

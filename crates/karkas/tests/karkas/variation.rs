@@ -1,4 +1,4 @@
-//! The surface variation method (METHODS.md §1.5, seed 000 formulas (24)–(33)): sums met,
+//! The surface variation method (docs/methods.md §1.5, Aulchenko et al.'s formulas (24)–(33)): sums met,
 //! fixed entries kept, free entries moved by the least-squares minimum (checked against a
 //! dense KKT solve written here), clear errors for sums that cannot be met, and the finite
 //! penalty S tending to the exact solution.

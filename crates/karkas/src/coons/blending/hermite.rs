@@ -1,4 +1,4 @@
-//! Cubic Hermite blending: the bicubic Coons family (seed 001, formulas (1)–(3)) and its
+//! Cubic Hermite blending: the bicubic Coons family (Chashnikov, formulas (1)–(3)) and its
 //! piecewise version on a node set, the composite Coons family (formulas (15)–(18)).
 
 use super::{locate, powi, reduce, BlendingFamily};
@@ -9,8 +9,8 @@ use crate::spline::hermite_cubic;
 use crate::Result;
 use core::ops::Range;
 
-/// The bicubic Coons family on an interval `[a, b]` (seed 001, (1)–(3)): functionals
-/// `f(a), f'(a), f'(b), f(b)` (the seed's order) and the cubic Hermite polynomials scaled to
+/// The bicubic Coons family on an interval `[a, b]` (Chashnikov, (1)–(3)): functionals
+/// `f(a), f'(a), f'(b), f(b)` (the paper's order) and the cubic Hermite polynomials scaled to
 /// the interval, `H_1(s), h H_2(s), h H_3(s), H_4(s)` with `s = (t - a)/h`, `h = b - a` (the
 /// factor `h` makes the derivative functionals return 1 per unit of `t`).
 #[derive(Clone, Debug, PartialEq)]
@@ -73,7 +73,7 @@ impl BlendingFamily for CubicHermiteBlending {
     }
 }
 
-/// The composite Coons family on nodes `u_0 < ... < u_m` (seed 001, (15)–(18)), generalised
+/// The composite Coons family on nodes `u_0 < ... < u_m` (Chashnikov, (15)–(18)), generalised
 /// to uneven nodes: functionals `L_{2i} f = f(u_i)`, `L_{2i+1} f = f'(u_i)`, and functions
 ///
 /// ```text
@@ -81,7 +81,7 @@ impl BlendingFamily for CubicHermiteBlending {
 /// H_{2i+1}(t) = h_i H_2((t - u_i)/h_i)        on [u_i, u_{i+1}],   h_{i-1} H_3((t - u_{i-1})/h_{i-1})  on [u_{i-1}, u_i]
 /// ```
 ///
-/// (`h_i = u_{i+1} - u_i`), zero elsewhere. With the seed's integer nodes `u_i = i` this is
+/// (`h_i = u_{i+1} - u_i`), zero elsewhere. With the paper's integer nodes `u_i = i` this is
 /// exactly (17)–(18). The functions are `C^1`; at any parameter at most four are nonzero.
 #[derive(Clone, Debug, PartialEq)]
 pub struct PiecewiseHermiteBlending {
@@ -148,7 +148,7 @@ impl BlendingFamily for PiecewiseHermiteBlending {
         let h = self.nodes[l + 1] - self.nodes[l];
         let w = hermite_cubic(s, k);
         let scale = powi(h, k).recip();
-        // Seed (17): on [u_l, u_{l+1}] the nonzero functions are H_{2l} = H_1, H_{2l+1} = h H_2,
+        // Formula (17): on [u_l, u_{l+1}] the nonzero functions are H_{2l} = H_1, H_{2l+1} = h H_2,
         // H_{2l+2} = H_4, H_{2l+3} = h H_3.
         out[2 * l] = w[0] * scale;
         out[2 * l + 1] = w[1] * h * scale;

@@ -1,5 +1,5 @@
-//! Lagrange blending: the Gordon surface family (seed 001, §3 case 3) and, on two nodes, the
-//! bilinear Coons family (§3 case 1).
+//! Lagrange blending: the Gordon surface family (Chashnikov's §3 case 3) and, on two nodes, the
+//! bilinear Coons family (Chashnikov's §3 case 1).
 
 use super::{reduce, BlendingFamily};
 use crate::coons::Functional;

@@ -1,7 +1,7 @@
-//! LL interpolating blending (seed 000 inside seed 001's Boolean sum, METHODS.md §2).
+//! LL interpolating blending (the LL scheme of Aulchenko et al. inside Chashnikov's Boolean sum, docs/methods.md §2).
 //!
 //! The cardinal functions of the interpolating LL scheme of order `L`: `C_j` is the
-//! interpolating LL curve (METHODS.md §1.2) through the scalar values `delta_jk` at uniform
+//! interpolating LL curve (docs/methods.md §1.2) through the scalar values `delta_jk` at uniform
 //! nodes. It is `C^L` and local in its support polygon, but the interpolating prefilter
 //! spreads every `C_j` (with geometrically decaying tails) over the whole range.
 

@@ -1,5 +1,5 @@
 //! Blending families: functions `H_1..H_m` of one parameter paired with functionals
-//! `L_1..L_m` such that `L_i(H_j) = delta_ij` (seed 001, formulas (2), (5), (16)–(18)).
+//! `L_1..L_m` such that `L_i(H_j) = delta_ij` (Chashnikov, formulas (2), (5), (16)–(18)).
 //!
 //! A family is what one parameter direction of a Coons-type surface needs: the functionals say
 //! which data of a curve family the surface reproduces, the functions blend the data in between.
@@ -12,7 +12,7 @@
 //! | [`CubicHermiteBlending`] | value, derivative, derivative, value at the two ends | the cubic Hermite polynomials (3) | `O(1)` |
 //! | [`PiecewiseHermiteBlending`] | value and derivative at every node | (17)–(18), 4 nonzero at any parameter | `O(m)` to write, 4 nonzero |
 //! | [`SplineBlending`] | values at nodes | cubic-spline cardinal functions: natural, not-a-knot or periodic | `O(m)`: one tridiagonal solve |
-//! | [`LlBlending`] | values at uniform nodes | LL interpolating cardinal functions (seed 000) | `O(m)` |
+//! | [`LlBlending`] | values at uniform nodes | LL interpolating cardinal functions (Aulchenko et al.) | `O(m)` |
 
 mod hermite;
 mod lagrange;
@@ -32,7 +32,7 @@ use core::fmt::Debug;
 use core::ops::Range;
 
 /// A family of blending functions `H_0..H_{m-1}` of one parameter and the functionals
-/// `L_0..L_{m-1}` they are dual to: `L_i(H_j) = delta_ij` (the seed's (5)).
+/// `L_0..L_{m-1}` they are dual to: `L_i(H_j) = delta_ij` (the paper's (5)).
 ///
 /// Implementations evaluate every function of the family at one parameter at a time, which is
 /// what a surface needs per sample line; they never allocate per point.

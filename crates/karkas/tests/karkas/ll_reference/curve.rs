@@ -1,4 +1,4 @@
-//! The reference LL curve of METHODS.md §1.2 and the shared border checks.
+//! The reference LL curve of docs/methods.md §1.2 and the shared border checks.
 
 use super::RefKernel;
 use crate::common::{assert_near, max_abs};
@@ -118,7 +118,7 @@ pub fn deriv_tol<const D: usize>(r: &RefCurve<D>, k: usize) -> f64 {
 }
 
 /// At every interior segment border of `c`: derivatives of order 0..=L agree from both sides
-/// (METHODS.md §1.2 "continuity up to order L"), and the (L+1)-th jumps by exactly the
+/// (docs/methods.md §1.2 "continuity up to order L"), and the (L+1)-th jumps by exactly the
 /// reference amount `P_i^(L+1)(0) - P_{i-1}^(L+1)(1)`, which must be large (so that this
 /// check would notice a curve that is smoother than claimed, or a wrong kernel).
 pub fn check_curve_borders<const D: usize>(c: &LlCurve<D>, r: &RefCurve<D>, what: &str) {

@@ -1,4 +1,4 @@
-//! The reference kernel of METHODS.md §1.1: exact binomials and rationals, double-double
+//! The reference kernel of docs/methods.md §1.1: exact binomials and rationals, double-double
 //! evaluation of the exact monomial coefficients.
 
 // ------------------------------------------------------------------------------------------
@@ -114,7 +114,7 @@ fn dd_from_int(n: i128) -> Dd {
 // Reference kernel (§1.1)
 // ------------------------------------------------------------------------------------------
 
-/// The kernel of order L computed from the definitions of METHODS.md §1.1.
+/// The kernel of order L computed from the definitions of docs/methods.md §1.1.
 pub struct RefKernel {
     pub l: usize,
     /// `eps_k`, k = 0..L (f64 from exact integers).

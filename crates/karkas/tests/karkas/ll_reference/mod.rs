@@ -1,5 +1,5 @@
 //! The reference of the LL tests: an independent implementation of the kernel, curves and
-//! surfaces of METHODS.md §1.1–1.3 (written from the spec, not from the library) and
+//! surfaces of docs/methods.md §1.1–1.3 (written from the spec, not from the library) and
 //! deterministic test data.
 //!
 //! Every figure a test compares against is computed here from the definitions: binomials

@@ -1,4 +1,4 @@
-//! The reference LL surface of METHODS.md §1.3 and its test grids.
+//! The reference LL surface of docs/methods.md §1.3 and its test grids.
 
 use super::{extend, RefKernel};
 use crate::common::max_abs;
