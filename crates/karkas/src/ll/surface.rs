@@ -49,9 +49,7 @@ impl<const D: usize> LlSurface<D> {
         closed_u: bool,
         closed_v: bool,
     ) -> Result<Self> {
-        let kernel = LlKernel::new(order)?;
-        let control = Self::support_grid(grid, closed_u, closed_v)?;
-        Ok(Self::from_control(kernel, control, closed_u, closed_v))
+        Self::build(grid, order, (closed_u, closed_v), false)
     }
 
     /// The interpolating LL surface: passes through every grid point at its node. Solves the
@@ -63,39 +61,43 @@ impl<const D: usize> LlSurface<D> {
         closed_u: bool,
         closed_v: bool,
     ) -> Result<Self> {
-        let kernel = LlKernel::new(order)?;
-        let mut control = Self::support_grid(grid, closed_u, closed_v)?;
-        let (kx, ky) = (control.rows(), control.cols());
-        let d_l = kernel.d_l();
-        for i in 0..kx {
-            let row = &mut control.as_mut_slice()[i * ky..(i + 1) * ky];
-            interpolation_controls(row, d_l, closed_v)?;
-        }
-        let mut column = vec![Point::ZERO; kx];
-        for j in 0..ky {
-            for (i, c) in column.iter_mut().enumerate() {
-                *c = *control.get(i, j);
-            }
-            interpolation_controls(&mut column, d_l, closed_u)?;
-            for (i, c) in column.iter().enumerate() {
-                *control.get_mut(i, j) = *c;
-            }
-        }
-        Ok(Self::from_control(kernel, control, closed_u, closed_v))
+        Self::build(grid, order, (closed_u, closed_v), true)
     }
 
-    /// Validates and closes the input grid.
-    fn support_grid(
+    /// Validates and closes the input grid, solves for the interpolating controls when
+    /// `interpolate`, and extends.
+    fn build(
         grid: &Grid<Point<D>>,
-        closed_u: bool,
-        closed_v: bool,
-    ) -> Result<Grid<Point<D>>> {
+        order: usize,
+        (closed_u, closed_v): (bool, bool),
+        interpolate: bool,
+    ) -> Result<Self> {
+        let kernel = LlKernel::new(order)?;
         grid.check_points(3, "an LL surface (in each grid direction)")?;
-        grid.closed(
+        let mut control = grid.closed(
             closed_u,
             closed_v,
             "a closed direction of an LL surface (distinct rows or columns)",
-        )
+        )?;
+        if interpolate {
+            let (kx, ky) = (control.rows(), control.cols());
+            let d_l = kernel.d_l();
+            for i in 0..kx {
+                let row = &mut control.as_mut_slice()[i * ky..(i + 1) * ky];
+                interpolation_controls(row, d_l, closed_v)?;
+            }
+            let mut column = vec![Point::ZERO; kx];
+            for j in 0..ky {
+                for (i, c) in column.iter_mut().enumerate() {
+                    *c = *control.get(i, j);
+                }
+                interpolation_controls(&mut column, d_l, closed_u)?;
+                for (i, c) in column.iter().enumerate() {
+                    *control.get_mut(i, j) = *c;
+                }
+            }
+        }
+        Ok(Self::from_control(kernel, control, closed_u, closed_v))
     }
 
     /// Builds the surface from a ready control grid (closed directions already repeat).
