@@ -548,5 +548,20 @@ pub enum Error {
     },
 }
 
+impl Error {
+    /// Checks every `(what, expected, got)` count, failing with [`Error::CountMismatch`] on the
+    /// first that differs.
+    pub(crate) fn check_counts(counts: &[(&'static str, usize, usize)]) -> Result<()> {
+        match counts.iter().find(|(_, expected, got)| got != expected) {
+            Some(&(what, expected, got)) => Err(Error::CountMismatch {
+                what,
+                expected,
+                got,
+            }),
+            None => Ok(()),
+        }
+    }
+}
+
 /// `Result` with [`Error`].
 pub type Result<T> = core::result::Result<T, Error>;

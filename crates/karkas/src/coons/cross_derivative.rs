@@ -86,11 +86,7 @@ impl<const D: usize> Curve<D> for SurfaceCrossDerivative<D> {
     }
 
     fn deriv_into(&self, ts: &[f64], k: usize, out: &mut [Point<D>]) {
-        assert_eq!(
-            ts.len(),
-            out.len(),
-            "parameter and output buffers differ in length"
-        );
+        crate::core::assert_buffer_len(ts.len(), out.len());
         match self.along {
             Along::U => self.surface.deriv_grid_into(ts, &[self.at], k, 1, out),
             Along::V => self.surface.deriv_grid_into(&[self.at], ts, 1, k, out),

@@ -88,11 +88,7 @@ impl<const D: usize> Curve<D> for AffineCurve<D> {
     }
 
     fn eval_into(&self, ts: &[f64], out: &mut [Point<D>]) {
-        assert_eq!(
-            ts.len(),
-            out.len(),
-            "parameter and output buffers differ in length"
-        );
+        crate::core::assert_buffer_len(ts.len(), out.len());
         // Map in chunks so the inner curve's batch evaluation is used.
         const CHUNK: usize = 256;
         let mut own = [0.0; CHUNK];

@@ -254,15 +254,7 @@ fn cross_or_derived<const D: usize>(
                     c.u_curves.len(),
                 ),
             ];
-            for (what, expected, got) in counts {
-                if got != expected {
-                    return Err(Error::CountMismatch {
-                        what,
-                        expected,
-                        got,
-                    });
-                }
-            }
+            Error::check_counts(&counts)?;
             Ok(c.clone())
         }
         None => {

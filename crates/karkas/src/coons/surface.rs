@@ -133,15 +133,7 @@ impl<const D: usize> CoonsSurface<D> {
             ("v-curves (one per u-blending function)", m, v_curves.len()),
             ("u-curves (one per v-blending function)", n, u_curves.len()),
         ];
-        for (what, expected, got) in counts {
-            if got != expected {
-                return Err(Error::CountMismatch {
-                    what,
-                    expected,
-                    got,
-                });
-            }
-        }
+        Error::check_counts(&counts)?;
         if !(tolerance.is_finite() && tolerance >= 0.0) {
             return Err(Error::InvalidSetting {
                 name: "tolerance",
@@ -260,11 +252,7 @@ impl<const D: usize> CoonsSurface<D> {
         kv: usize,
         out: &mut [Point<D>],
     ) {
-        assert_eq!(
-            out.len(),
-            us.len() * vs.len(),
-            "output buffer does not fit the grid"
-        );
+        crate::core::assert_grid_len(us.len(), vs.len(), out.len());
         let (m, n) = (self.v_curves.len(), self.u_curves.len());
         let (nu, nv) = (us.len(), vs.len());
         if nu == 0 || nv == 0 {

@@ -186,11 +186,7 @@ impl<const D: usize, C: Curve<D>> Curve<D> for WarpedCurve<D, C> {
     }
 
     fn eval_into(&self, vs: &[f64], out: &mut [Point<D>]) {
-        assert_eq!(
-            vs.len(),
-            out.len(),
-            "parameter and output buffers differ in length"
-        );
+        crate::core::assert_buffer_len(vs.len(), out.len());
         const CHUNK: usize = 256;
         let mut own = [0.0; CHUNK];
         let mut weights = vec![0.0; self.weights_len()];

@@ -48,11 +48,7 @@ pub trait Curve<const D: usize> {
     /// # Panics
     /// When `ts.len() != out.len()`.
     fn eval_into(&self, ts: &[f64], out: &mut [Point<D>]) {
-        assert_eq!(
-            ts.len(),
-            out.len(),
-            "parameter and output buffers differ in length"
-        );
+        super::assert_buffer_len(ts.len(), out.len());
         for (p, &t) in out.iter_mut().zip(ts) {
             *p = self.eval(t);
         }
@@ -63,11 +59,7 @@ pub trait Curve<const D: usize> {
     /// # Panics
     /// When `ts.len() != out.len()`.
     fn deriv_into(&self, ts: &[f64], k: usize, out: &mut [Point<D>]) {
-        assert_eq!(
-            ts.len(),
-            out.len(),
-            "parameter and output buffers differ in length"
-        );
+        super::assert_buffer_len(ts.len(), out.len());
         for (p, &t) in out.iter_mut().zip(ts) {
             *p = self.deriv(t, k);
         }

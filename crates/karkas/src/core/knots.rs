@@ -138,6 +138,25 @@ pub fn locate(knots: &[f64], closed: bool, t: f64, side: Side) -> (usize, f64) {
     (k, (t - knots[k]) / (knots[k + 1] - knots[k]))
 }
 
+/// The piece of increasing `knots` holding `t` (as [`locate`] on an open domain), trying
+/// `hint` and its neighbours before a binary search (for parameters that move little between
+/// calls).
+#[inline]
+pub(crate) fn piece_near(knots: &[f64], t: f64, hint: usize) -> usize {
+    let last = knots.len() - 2;
+    let inside = |k: usize| (k == 0 || t >= knots[k]) && (k == last || t < knots[k + 1]);
+    if hint <= last && inside(hint) {
+        return hint;
+    }
+    if hint < last && inside(hint + 1) {
+        return hint + 1;
+    }
+    if hint >= 1 && hint <= last + 1 && inside(hint - 1) {
+        return hint - 1;
+    }
+    locate(knots, false, t, Side::Above).0
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

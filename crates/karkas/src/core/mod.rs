@@ -3,6 +3,7 @@
 
 mod curve;
 mod grid;
+mod grid_points;
 mod interval;
 pub mod knots;
 pub(crate) mod parallel;
@@ -18,4 +19,5 @@ pub use knots::Knots;
 pub use pieces::PolynomialPieces;
 pub use point::{Point, Point2, Point3};
 pub use sampling::uniform_into;
+pub(crate) use sampling::{assert_buffer_len, assert_grid_len};
 pub use surface::{ParameterLine, PiecewiseSurface, Surface};

@@ -11,6 +11,20 @@ pub fn uniform_into(domain: Interval, out: &mut [f64]) {
     }
 }
 
+/// Panics unless an output buffer of `out` points matches `ts` parameters.
+#[track_caller]
+#[inline]
+pub(crate) fn assert_buffer_len(ts: usize, out: usize) {
+    assert_eq!(ts, out, "parameter and output buffers differ in length");
+}
+
+/// Panics unless an output buffer of `out` points holds the grid `us x vs`.
+#[track_caller]
+#[inline]
+pub(crate) fn assert_grid_len(us: usize, vs: usize, out: usize) {
+    assert_eq!(out, us * vs, "output buffer does not fit the grid");
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -28,11 +28,7 @@ pub trait Surface<const D: usize> {
     /// # Panics
     /// When `out.len() != us.len() * vs.len()`.
     fn eval_grid_into(&self, us: &[f64], vs: &[f64], out: &mut [Point<D>]) {
-        assert_eq!(
-            out.len(),
-            us.len() * vs.len(),
-            "output buffer does not fit the grid"
-        );
+        super::assert_grid_len(us.len(), vs.len(), out.len());
         for (a, &u) in us.iter().enumerate() {
             for (b, &v) in vs.iter().enumerate() {
                 out[a * vs.len() + b] = self.eval(u, v);

@@ -234,19 +234,7 @@ impl<const D: usize> HermiteSpline<D> {
     /// parameters that move little between calls).
     #[inline]
     pub(crate) fn piece_near(&self, t: f64, hint: usize) -> usize {
-        let last = self.pieces() - 1;
-        let inside =
-            |k: usize| (k == 0 || t >= self.knots[k]) && (k == last || t < self.knots[k + 1]);
-        if hint <= last && inside(hint) {
-            return hint;
-        }
-        if hint < last && inside(hint + 1) {
-            return hint + 1;
-        }
-        if hint >= 1 && hint <= last + 1 && inside(hint - 1) {
-            return hint - 1;
-        }
-        self.locate(t).0
+        crate::core::knots::piece_near(&self.knots, t, hint)
     }
 
     /// The same curve with one more knot at `t` (strictly inside a piece): the value and
@@ -300,11 +288,7 @@ impl<const D: usize> Curve<D> for HermiteSpline<D> {
     }
 
     fn eval_into(&self, ts: &[f64], out: &mut [Point<D>]) {
-        assert_eq!(
-            ts.len(),
-            out.len(),
-            "parameter and output buffers differ in length"
-        );
+        crate::core::assert_buffer_len(ts.len(), out.len());
         // Sorted parameters are the common case: try the previous piece first. Large
         // batches run in parallel chunks.
         for_each_chunk(ts, out, |ts, out| {

@@ -52,20 +52,7 @@ impl<const D: usize> PowerForm<D> {
     /// [`HermiteSpline::locate`] for the conventions).
     #[inline]
     pub fn piece_near(&self, t: f64, hint: usize) -> usize {
-        let last = self.coef.len() - 1;
-        let knots = &self.knots;
-        let inside = |k: usize| (k == 0 || t >= knots[k]) && (k == last || t < knots[k + 1]);
-        if hint <= last && inside(hint) {
-            return hint;
-        }
-        if hint < last && inside(hint + 1) {
-            return hint + 1;
-        }
-        if hint >= 1 && hint <= last + 1 && inside(hint - 1) {
-            return hint - 1;
-        }
-        let inner = &knots[1..knots.len() - 1];
-        inner.partition_point(|&knot| knot <= t).min(last)
+        crate::core::knots::piece_near(&self.knots, t, hint)
     }
 
     /// The point, first and second derivative (per unit `t`) of piece `k` at `t`.

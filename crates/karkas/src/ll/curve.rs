@@ -239,11 +239,7 @@ impl<const D: usize> Curve<D> for LlCurve<D> {
     }
 
     fn eval_into(&self, ts: &[f64], out: &mut [Point<D>]) {
-        assert_eq!(
-            ts.len(),
-            out.len(),
-            "parameter and output buffers differ in length"
-        );
+        crate::core::assert_buffer_len(ts.len(), out.len());
         // Large batches run in parallel chunks (multiples of the kernel's 256).
         for_each_chunk(ts, out, |ts, out| match self.kernel.order() {
             1 => self.eval_batch::<1>(ts, out),

@@ -14,12 +14,12 @@
 
 use super::axis::NodeAxis;
 use super::curve::LlCurve;
-use super::frame::{close, coincide, extend, model_scale};
+use super::frame::extend;
 use super::kernel::{pow_n, LlKernel};
 use super::prefilter::interpolation_controls;
 use crate::core::parallel::for_each_row_block;
 use crate::core::{Grid, Interval, ParameterLine, PiecewiseSurface, Side, Surface};
-use crate::{Error, Point, Result};
+use crate::{Point, Result};
 
 /// An LL surface of order `L` over a grid `r_ij`, `i = 1..Kx` (parameter `u`, rows),
 /// `j = 1..Ky` (parameter `v`, columns), each direction open or closed.
@@ -49,9 +49,7 @@ impl<const D: usize> LlSurface<D> {
         closed_u: bool,
         closed_v: bool,
     ) -> Result<Self> {
-        let kernel = LlKernel::new(order)?;
-        let control = Self::support_grid(grid, closed_u, closed_v)?;
-        Ok(Self::from_control(kernel, control, closed_u, closed_v))
+        Self::build(grid, order, (closed_u, closed_v), false)
     }
 
     /// The interpolating LL surface: passes through every grid point at its node. Solves the
@@ -63,71 +61,43 @@ impl<const D: usize> LlSurface<D> {
         closed_u: bool,
         closed_v: bool,
     ) -> Result<Self> {
+        Self::build(grid, order, (closed_u, closed_v), true)
+    }
+
+    /// Validates and closes the input grid, solves for the interpolating controls when
+    /// `interpolate`, and extends.
+    fn build(
+        grid: &Grid<Point<D>>,
+        order: usize,
+        (closed_u, closed_v): (bool, bool),
+        interpolate: bool,
+    ) -> Result<Self> {
         let kernel = LlKernel::new(order)?;
-        let mut control = Self::support_grid(grid, closed_u, closed_v)?;
-        let (kx, ky) = (control.rows(), control.cols());
-        let d_l = kernel.d_l();
-        for i in 0..kx {
-            let row = &mut control.as_mut_slice()[i * ky..(i + 1) * ky];
-            interpolation_controls(row, d_l, closed_v)?;
-        }
-        let mut column = vec![Point::ZERO; kx];
-        for j in 0..ky {
-            for (i, c) in column.iter_mut().enumerate() {
-                *c = *control.get(i, j);
+        grid.check_points(3, "an LL surface (in each grid direction)")?;
+        let mut control = grid.closed(
+            closed_u,
+            closed_v,
+            "a closed direction of an LL surface (distinct rows or columns)",
+        )?;
+        if interpolate {
+            let (kx, ky) = (control.rows(), control.cols());
+            let d_l = kernel.d_l();
+            for i in 0..kx {
+                let row = &mut control.as_mut_slice()[i * ky..(i + 1) * ky];
+                interpolation_controls(row, d_l, closed_v)?;
             }
-            interpolation_controls(&mut column, d_l, closed_u)?;
-            for (i, c) in column.iter().enumerate() {
-                *control.get_mut(i, j) = *c;
+            let mut column = vec![Point::ZERO; kx];
+            for j in 0..ky {
+                for (i, c) in column.iter_mut().enumerate() {
+                    *c = *control.get(i, j);
+                }
+                interpolation_controls(&mut column, d_l, closed_u)?;
+                for (i, c) in column.iter().enumerate() {
+                    *control.get_mut(i, j) = *c;
+                }
             }
         }
         Ok(Self::from_control(kernel, control, closed_u, closed_v))
-    }
-
-    /// Validates and closes the input grid.
-    fn support_grid(
-        grid: &Grid<Point<D>>,
-        closed_u: bool,
-        closed_v: bool,
-    ) -> Result<Grid<Point<D>>> {
-        let (rows, cols) = (grid.rows(), grid.cols());
-        if rows < 3 || cols < 3 {
-            return Err(Error::TooFewPoints {
-                what: "an LL surface (in each grid direction)",
-                needed: 3,
-                got: rows.min(cols),
-            });
-        }
-        if let Some(k) = grid.as_slice().iter().position(|p| !p.is_finite()) {
-            return Err(Error::NonFiniteCell {
-                row: k / cols,
-                col: k % cols,
-            });
-        }
-        let scale = model_scale(grid.as_slice());
-        let mut lines: Vec<Vec<Point<D>>> = (0..rows).map(|i| grid.row(i).to_vec()).collect();
-        if closed_v {
-            let repeats = lines.iter().all(|r| coincide(r[0], r[cols - 1], scale));
-            for r in &mut lines {
-                close(r, repeats);
-            }
-        }
-        if closed_u {
-            let repeats = lines[0]
-                .iter()
-                .zip(&lines[rows - 1])
-                .all(|(a, b)| coincide(*a, *b, scale));
-            close(&mut lines, repeats);
-        }
-        let (kx, ky) = (lines.len(), lines[0].len());
-        if (closed_u && kx < 4) || (closed_v && ky < 4) {
-            return Err(Error::TooFewPoints {
-                what: "a closed direction of an LL surface (distinct rows or columns)",
-                needed: 3,
-                got: if closed_u && kx < 4 { kx - 1 } else { ky - 1 },
-            });
-        }
-        Grid::from_row_major(kx, ky, lines.concat())
     }
 
     /// Builds the surface from a ready control grid (closed directions already repeat).
@@ -287,11 +257,7 @@ impl<const D: usize> Surface<D> for LlSurface<D> {
     }
 
     fn eval_grid_into(&self, us: &[f64], vs: &[f64], out: &mut [Point<D>]) {
-        assert_eq!(
-            out.len(),
-            us.len() * vs.len(),
-            "output buffer does not fit the grid"
-        );
+        crate::core::assert_grid_len(us.len(), vs.len(), out.len());
         let columns: Vec<(usize, [f64; 3])> = vs
             .iter()
             .map(|&v| {

@@ -237,18 +237,10 @@ fn check_input(
             len: fixed.rows() * fixed.cols(),
         });
     }
-    for (what, expected, got) in [
+    Error::check_counts(&[
         ("row sums (one per row)", n, targets.rows.len()),
         ("column sums (one per column)", m, targets.columns.len()),
-    ] {
-        if got != expected {
-            return Err(Error::CountMismatch {
-                what,
-                expected,
-                got,
-            });
-        }
-    }
+    ])?;
     if let Some(k) = matrix.as_slice().iter().position(|r| !r.is_finite()) {
         return Err(Error::NonFiniteCell {
             row: k / m,

@@ -67,8 +67,8 @@ impl<const D: usize> BicubicSurface<D> {
         closed_u: bool,
         closed_v: bool,
     ) -> Result<Self> {
-        validate(grid)?;
-        let grid = close_grid(grid, closed_u, closed_v)?;
+        grid.check_points(2, WHAT)?;
+        let grid = grid.closed(closed_u, closed_v, WHAT_CLOSED)?;
         let (us, vs) = grid_parameters(&grid, parameterization)?;
         // Parameters spanning many orders of magnitude (a far outlier) are refused here.
         check_parameters(&us)?;
@@ -90,22 +90,18 @@ impl<const D: usize> BicubicSurface<D> {
         closed_u: bool,
         closed_v: bool,
     ) -> Result<Self> {
-        validate(grid)?;
-        for (what, knots, expected) in [
-            ("knots in u (one per grid row)", knots_u, grid.rows()),
-            ("knots in v (one per grid column)", knots_v, grid.cols()),
-        ] {
-            if knots.len() != expected {
-                return Err(Error::CountMismatch {
-                    what,
-                    expected,
-                    got: knots.len(),
-                });
-            }
-        }
+        grid.check_points(2, WHAT)?;
+        Error::check_counts(&[
+            ("knots in u (one per grid row)", grid.rows(), knots_u.len()),
+            (
+                "knots in v (one per grid column)",
+                grid.cols(),
+                knots_v.len(),
+            ),
+        ])?;
         check_parameters(knots_u)?;
         check_parameters(knots_v)?;
-        let closed = close_grid(grid, closed_u, closed_v)?;
+        let closed = grid.closed(closed_u, closed_v, WHAT_CLOSED)?;
         if closed.rows() != grid.rows() || closed.cols() != grid.cols() {
             return Err(Error::OpenPeriodicData {
                 what: "a closed direction",
@@ -246,7 +242,6 @@ impl<const D: usize> BicubicSurface<D> {
     }
 }
 
-/// At least 2 x 2 points, all finite.
 /// The `u`-slopes of every column of `grid` (step 1). Large grids are solved in blocks of
 /// columns in parallel: each block is gathered into a contiguous buffer, solved there (the
 /// same arithmetic per column as one solve over all columns) and copied back.
@@ -288,75 +283,12 @@ fn hermite_weights(s: f64, h: f64, k: usize) -> [f64; 4] {
     [v0, v1, d0, d1]
 }
 
+/// The input named in the errors of a grid too small (in total, in a closed direction).
+const WHAT: &str = "a bicubic surface (in each grid direction)";
+const WHAT_CLOSED: &str = "a closed direction of a bicubic surface (distinct grid lines)";
+
 /// Columns per parallel block of [`solve_columns`].
 const COLUMN_BLOCK: usize = 32;
-
-fn validate<const D: usize>(grid: &Grid<Point<D>>) -> Result<()> {
-    let (rows, cols) = (grid.rows(), grid.cols());
-    if rows < 2 || cols < 2 {
-        return Err(Error::TooFewPoints {
-            what: "a bicubic surface (in each grid direction)",
-            needed: 2,
-            got: rows.min(cols),
-        });
-    }
-    if let Some(k) = grid.as_slice().iter().position(|p| !p.is_finite()) {
-        return Err(Error::NonFiniteCell {
-            row: k / cols,
-            col: k % cols,
-        });
-    }
-    Ok(())
-}
-
-/// Closes the grid in the closed directions: a last line that repeats the first becomes an
-/// exact copy of it, otherwise the first line is appended.
-fn close_grid<const D: usize>(
-    grid: &Grid<Point<D>>,
-    closed_u: bool,
-    closed_v: bool,
-) -> Result<Grid<Point<D>>> {
-    if !closed_u && !closed_v {
-        return Ok(grid.clone());
-    }
-    let (rows, cols) = (grid.rows(), grid.cols());
-    let scale = grid
-        .as_slice()
-        .iter()
-        .fold(1.0f64, |m, p| m.max(p.max_abs()));
-    let same = |a: &Point<D>, b: &Point<D>| (*a - *b).max_abs() <= 1e-12 * scale;
-    let mut lines: Vec<Vec<Point<D>>> = (0..rows).map(|i| grid.row(i).to_vec()).collect();
-    if closed_v {
-        let repeats = lines.iter().all(|r| same(&r[0], &r[cols - 1]));
-        for r in &mut lines {
-            if repeats {
-                r[cols - 1] = r[0];
-            } else {
-                r.push(r[0]);
-            }
-        }
-    }
-    if closed_u {
-        let repeats = lines[0]
-            .iter()
-            .zip(&lines[rows - 1])
-            .all(|(a, b)| same(a, b));
-        if repeats {
-            lines[rows - 1] = lines[0].clone();
-        } else {
-            lines.push(lines[0].clone());
-        }
-    }
-    let (n, m) = (lines.len(), lines[0].len());
-    if (closed_u && n < 4) || (closed_v && m < 4) {
-        return Err(Error::TooFewPoints {
-            what: "a closed direction of a bicubic surface (distinct grid lines)",
-            needed: 3,
-            got: if closed_u && n < 4 { n - 1 } else { m - 1 },
-        });
-    }
-    Grid::from_row_major(n, m, lines.concat())
-}
 
 impl<const D: usize> Surface<D> for BicubicSurface<D> {
     fn domain_u(&self) -> Interval {
@@ -389,11 +321,7 @@ impl<const D: usize> Surface<D> for BicubicSurface<D> {
     }
 
     fn eval_grid_into(&self, us: &[f64], vs: &[f64], out: &mut [Point<D>]) {
-        assert_eq!(
-            out.len(),
-            us.len() * vs.len(),
-            "output buffer does not fit the grid"
-        );
+        crate::core::assert_grid_len(us.len(), vs.len(), out.len());
         let columns: Vec<(usize, [f64; 4])> = vs
             .iter()
             .map(|&v| {

@@ -115,20 +115,8 @@ pub fn grid_parameters<const D: usize>(
     grid: &Grid<Point<D>>,
     kind: GridParameterization,
 ) -> Result<(Vec<f64>, Vec<f64>)> {
+    grid.check_points(2, "a grid parameterization (in each grid direction)")?;
     let (rows, cols) = (grid.rows(), grid.cols());
-    if rows < 2 || cols < 2 {
-        return Err(Error::TooFewPoints {
-            what: "a grid parameterization (in each grid direction)",
-            needed: 2,
-            got: rows.min(cols),
-        });
-    }
-    if let Some(k) = grid.as_slice().iter().position(|p| !p.is_finite()) {
-        return Err(Error::NonFiniteCell {
-            row: k / cols,
-            col: k % cols,
-        });
-    }
     let u_steps: Vec<f64>;
     let v_steps: Vec<f64>;
     let mut origin = (0, 0);

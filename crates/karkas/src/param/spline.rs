@@ -220,11 +220,7 @@ impl<const D: usize> Curve<D> for CubicSpline<D> {
     /// Equal to [`deriv`](Curve::deriv) at every parameter; in parallel above a size
     /// threshold, `O(1)` per parameter when they are sorted.
     fn deriv_into(&self, ts: &[f64], k: usize, out: &mut [Point<D>]) {
-        assert_eq!(
-            ts.len(),
-            out.len(),
-            "parameter and output buffers differ in length"
-        );
+        crate::core::assert_buffer_len(ts.len(), out.len());
         for_each_chunk(ts, out, |t, o| self.deriv_batch(t, k, o));
     }
 }
