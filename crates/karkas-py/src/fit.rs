@@ -8,7 +8,7 @@ use numpy::PyArrayDyn;
 use pyo3::prelude::*;
 
 use crate::convert::{
-    as_points, by_dim, check_dim, count, extract_vector, vector_to_array, FlatPoints, PointsArray,
+    as_points, by_dim, count, extract_vector, vector_to_array, FlatPoints, PointsArray,
 };
 use crate::curve::PyCurve;
 use crate::errors::{library_error, KnotsError, OptionError};
@@ -98,8 +98,7 @@ pub fn fit_curve(
     corners: Option<Vec<f64>>,
     fairness: Option<f64>,
 ) -> PyResult<Py<PyHermiteSpline>> {
-    let pts = PointsArray::extract(points, "points")?;
-    let dim = check_dim(pts.dim(), "points")?;
+    let (pts, dim) = PointsArray::extract_checked(points, "points")?;
     let knots: Option<Vec<f64>> = match knots {
         None => None,
         Some(k) => match k.extract::<i64>() {

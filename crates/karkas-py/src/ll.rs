@@ -9,7 +9,7 @@ use numpy::{AllowTypeChange, PyArrayDyn, PyArrayLike2, PyUntypedArrayMethods};
 use pyo3::prelude::*;
 
 use crate::convert::{
-    as_points, by_dim, check_dim, count, maybe_detach, py_bool, write_flat, FlatPoints, GridArray,
+    as_points, by_dim, count, maybe_detach, py_bool, variant, write_flat, FlatPoints, GridArray,
     PointsArray,
 };
 use crate::curve::PyCurve;
@@ -38,8 +38,7 @@ impl PyLlCurve {
         closed: bool,
         interpolating: bool,
     ) -> PyResult<PyClassInitializer<Self>> {
-        let pts = PointsArray::extract(points, "points")?;
-        let dim = check_dim(pts.dim(), "points")?;
+        let (pts, dim) = PointsArray::extract_checked(points, "points")?;
         let order = count(order, "order")?;
         let flat = pts.flat();
         let n = pts.len();
@@ -56,9 +55,9 @@ impl PyLlCurve {
             let control = FlatPoints::of(curve.control_points());
             (Arc::new(Wrapped::<_, D>(curve)), control)
         });
-        let kind = if interpolating { "interpolating " } else { "" };
         let description = format!(
-            "<karkas.LLCurve {kind}order={order}, closed={}, {n} points in {dim}-D",
+            "<karkas.LLCurve {}order={order}, closed={}, {n} points in {dim}-D",
+            variant(interpolating),
             py_bool(closed)
         );
         Ok(
@@ -137,8 +136,7 @@ impl PyLlSurface {
         closed_v: bool,
         interpolating: bool,
     ) -> PyResult<PyClassInitializer<Self>> {
-        let g = GridArray::extract(grid, "grid")?;
-        let dim = check_dim(g.dim(), "grid")?;
+        let (g, dim) = GridArray::extract_checked(grid, "grid")?;
         let order = count(order, "order")?;
         let (rows, cols, inner): (usize, usize, Arc<dyn SurfaceImpl>) = by_dim!(dim, D => {
             let grid = g.grid::<D>()?;
@@ -152,9 +150,9 @@ impl PyLlSurface {
             .map_err(library_error)?;
             (grid.rows(), grid.cols(), Arc::new(WrappedSurface::<_, D>(surface)))
         });
-        let kind = if interpolating { "interpolating " } else { "" };
         let description = format!(
-            "<karkas.LLSurface {kind}order={order}, closed_u={}, closed_v={}, {rows}x{cols} grid in {dim}-D",
+            "<karkas.LLSurface {}order={order}, closed_u={}, closed_v={}, {rows}x{cols} grid in {dim}-D",
+            variant(interpolating),
             py_bool(closed_u),
             py_bool(closed_v)
         );

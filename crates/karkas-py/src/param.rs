@@ -11,8 +11,8 @@ use numpy::PyArrayDyn;
 use pyo3::prelude::*;
 
 use crate::convert::{
-    as_points, by_dim, check_dim, extract_vector, maybe_detach, py_bool, vector_to_array,
-    FlatPoints, GridArray, PointsArray,
+    as_points, by_dim, extract_vector, maybe_detach, py_bool, vector_to_array, FlatPoints,
+    GridArray, PointsArray,
 };
 use crate::curve::PyCurve;
 use crate::errors::{library_error, OptionError};
@@ -87,8 +87,7 @@ impl PyCubicSpline {
         parameterization: &str,
         bc: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<PyClassInitializer<Self>> {
-        let pts = PointsArray::extract(points, "points")?;
-        let dim = check_dim(pts.dim(), "points")?;
+        let (pts, dim) = PointsArray::extract_checked(points, "points")?;
         let rule = parse_parameterization(parameterization)?;
         let knots = t.map(|t| extract_vector(t, "t")).transpose()?;
         let flat = pts.flat();
@@ -192,8 +191,7 @@ impl PyBicubicSurface {
         closed_u: bool,
         closed_v: bool,
     ) -> PyResult<PyClassInitializer<Self>> {
-        let g = GridArray::extract(grid, "grid")?;
-        let dim = check_dim(g.dim(), "grid")?;
+        let (g, dim) = GridArray::extract_checked(grid, "grid")?;
         let (label, parameters) = match how {
             Ok(name) => (
                 name.to_string(),
@@ -281,8 +279,7 @@ pub fn curve_parameters<'py>(
     parameterization: &str,
 ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
     let rule = parse_parameterization(parameterization)?;
-    let pts = PointsArray::extract(points, "points")?;
-    let dim = check_dim(pts.dim(), "points")?;
+    let (pts, dim) = PointsArray::extract_checked(points, "points")?;
     let flat = pts.flat();
     let t = by_dim!(dim, D => param_curve(as_points::<D>(&flat), rule)).map_err(library_error)?;
     Ok(vector_to_array(py, &t))
@@ -298,8 +295,7 @@ pub fn grid_parameters<'py>(
     parameterization: &str,
 ) -> PyResult<(Array<'py>, Array<'py>)> {
     let rule = parse_grid_parameterization(parameterization)?;
-    let g = GridArray::extract(grid, "grid")?;
-    let dim = check_dim(g.dim(), "grid")?;
+    let (g, dim) = GridArray::extract_checked(grid, "grid")?;
     let (u, v) = by_dim!(dim, D => param_grid(&g.grid::<D>()?, rule)).map_err(library_error)?;
     Ok((vector_to_array(py, &u), vector_to_array(py, &v)))
 }
