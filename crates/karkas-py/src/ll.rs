@@ -25,7 +25,11 @@ use crate::wrapper::{CurveImpl, SurfaceImpl, Wrapped, WrappedSurface};
 /// last points; use LLCurve.interpolate for a curve through every point.
 #[pyclass(extends = PyCurve, module = "karkas", name = "LLCurve", frozen)]
 pub struct PyLlCurve {
+    /// The order L (the curve is C^L).
+    #[pyo3(get)]
     order: usize,
+    /// True for the interpolating variant.
+    #[pyo3(get)]
     interpolating: bool,
     control: FlatPoints,
 }
@@ -96,18 +100,6 @@ impl PyLlCurve {
         Py::new(py, Self::build(py, points, order, closed, true)?)
     }
 
-    /// The order L (the curve is C^L).
-    #[getter]
-    fn order(&self) -> usize {
-        self.order
-    }
-
-    /// True for the interpolating variant.
-    #[getter]
-    fn interpolating(&self) -> bool {
-        self.interpolating
-    }
-
     /// The control polygon r_1..r_K (closed curves repeat the first point at the end), (K, d).
     #[getter]
     fn control_points<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
@@ -123,7 +115,11 @@ impl PyLlCurve {
 /// every grid point.
 #[pyclass(extends = PySurface, module = "karkas", name = "LLSurface", frozen)]
 pub struct PyLlSurface {
+    /// The order L (the surface is C^L).
+    #[pyo3(get)]
     order: usize,
+    /// True for the interpolating variant.
+    #[pyo3(get)]
     interpolating: bool,
 }
 
@@ -193,18 +189,6 @@ impl PyLlSurface {
         closed_v: bool,
     ) -> PyResult<Py<Self>> {
         Py::new(py, Self::build(py, grid, order, closed_u, closed_v, true)?)
-    }
-
-    /// The order L (the surface is C^L).
-    #[getter]
-    fn order(&self) -> usize {
-        self.order
-    }
-
-    /// True for the interpolating variant.
-    #[getter]
-    fn interpolating(&self) -> bool {
-        self.interpolating
     }
 }
 
