@@ -361,6 +361,32 @@ impl FlatPoints {
     }
 }
 
+impl<'py> IntoPyObject<'py> for &FlatPoints {
+    type Target = PyArrayDyn<f64>;
+    type Output = Bound<'py, PyArrayDyn<f64>>;
+    type Error = PyErr;
+
+    /// A new `(n, d)` array, as [`FlatPoints::to_array`] gives.
+    fn into_pyobject(self, py: Python<'py>) -> PyResult<Self::Output> {
+        self.to_array(py)
+    }
+}
+
+/// Numbers kept for an attribute such as `knots`, handed to Python as a new 1-D float64 array.
+#[derive(Clone)]
+pub struct Numbers(pub Vec<f64>);
+
+impl<'py> IntoPyObject<'py> for &Numbers {
+    type Target = PyArrayDyn<f64>;
+    type Output = Bound<'py, PyArrayDyn<f64>>;
+    type Error = std::convert::Infallible;
+
+    /// A new 1-D array, as [`vector_to_array`] gives.
+    fn into_pyobject(self, py: Python<'py>) -> Result<Self::Output, Self::Error> {
+        Ok(vector_to_array(py, &self.0))
+    }
+}
+
 /// A 3-D point from a sequence of 3 numbers.
 pub fn point3(p: &[f64], what: &str) -> PyResult<Point3> {
     match p {

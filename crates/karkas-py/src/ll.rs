@@ -31,6 +31,8 @@ pub struct PyLlCurve {
     /// True for the interpolating variant.
     #[pyo3(get)]
     interpolating: bool,
+    /// The control polygon r_1..r_K (closed curves repeat the first point at the end), (K, d).
+    #[pyo3(get, name = "control_points")]
     control: FlatPoints,
 }
 
@@ -98,12 +100,6 @@ impl PyLlCurve {
         closed: bool,
     ) -> PyResult<Py<Self>> {
         Py::new(py, Self::build(py, points, order, closed, true)?)
-    }
-
-    /// The control polygon r_1..r_K (closed curves repeat the first point at the end), (K, d).
-    #[getter]
-    fn control_points<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-        self.control.to_array(py)
     }
 }
 

@@ -12,7 +12,7 @@ use pyo3::prelude::*;
 
 use crate::convert::{
     as_points, by_dim, extract_vector, maybe_detach, py_bool, vector_to_array, FlatPoints,
-    GridArray, PointsArray,
+    GridArray, Numbers, PointsArray,
 };
 use crate::curve::PyCurve;
 use crate::errors::{library_error, OptionError};
@@ -71,8 +71,14 @@ fn parse_ends<const D: usize>(bc: &Bound<'_, PyAny>) -> PyResult<SplineEnds<D>> 
 /// ('clamped', start_derivative, end_derivative).
 #[pyclass(extends = PyCurve, module = "karkas", name = "CubicSpline", frozen)]
 pub struct PyCubicSpline {
-    knots: Vec<f64>,
+    /// The knots t_0 < ... < t_{n-1}.
+    #[pyo3(get)]
+    knots: Numbers,
+    /// The interpolated values P(t_k), (n, d).
+    #[pyo3(get)]
     values: FlatPoints,
+    /// The node slopes P'(t_k), (n, d).
+    #[pyo3(get)]
     slopes: FlatPoints,
 }
 
@@ -110,7 +116,7 @@ impl PyCubicSpline {
                 SplineEnds::Clamped { .. } => "clamped",
             };
             let sub = PyCubicSpline {
-                knots: spline.knots().to_vec(),
+                knots: Numbers(spline.knots().to_vec()),
                 values: FlatPoints::of(spline.values()),
                 slopes: FlatPoints::of(spline.slopes()),
             };
@@ -125,27 +131,9 @@ impl PyCubicSpline {
         };
         let description = format!(
             "<karkas.CubicSpline bc='{bc_name}', parameterization='{params}', {} knots in {dim}-D",
-            sub.knots.len()
+            sub.knots.0.len()
         );
         Ok(PyClassInitializer::from(PyCurve::new(inner, description)).add_subclass(sub))
-    }
-
-    /// The knots t_0 < ... < t_{n-1}.
-    #[getter]
-    fn knots<'py>(&self, py: Python<'py>) -> Bound<'py, PyArrayDyn<f64>> {
-        vector_to_array(py, &self.knots)
-    }
-
-    /// The interpolated values P(t_k), (n, d).
-    #[getter]
-    fn values<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-        self.values.to_array(py)
-    }
-
-    /// The node slopes P'(t_k), (n, d).
-    #[getter]
-    fn slopes<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-        self.slopes.to_array(py)
     }
 }
 
@@ -179,8 +167,12 @@ enum GridParameters {
 /// takes the parameters instead.
 #[pyclass(extends = PySurface, module = "karkas", name = "BicubicSurface", frozen)]
 pub struct PyBicubicSurface {
-    knots_u: Vec<f64>,
-    knots_v: Vec<f64>,
+    /// The u parameters of the grid rows (a closed direction includes the closing step).
+    #[pyo3(get)]
+    knots_u: Numbers,
+    /// The v parameters of the grid columns.
+    #[pyo3(get)]
+    knots_v: Numbers,
 }
 
 impl PyBicubicSurface {
@@ -207,8 +199,8 @@ impl PyBicubicSurface {
             })
             .map_err(library_error)?;
             let sub = PyBicubicSurface {
-                knots_u: surface.knots_u().to_vec(),
-                knots_v: surface.knots_v().to_vec(),
+                knots_u: Numbers(surface.knots_u().to_vec()),
+                knots_v: Numbers(surface.knots_v().to_vec()),
             };
             (sub, Arc::new(WrappedSurface::<_, D>(surface)), grid.rows(), grid.cols())
         });
@@ -254,18 +246,6 @@ impl PyBicubicSurface {
             py,
             Self::build(py, grid, Err((ku, kv)), closed_u, closed_v)?,
         )
-    }
-
-    /// The u parameters of the grid rows (a closed direction includes the closing step).
-    #[getter]
-    fn knots_u<'py>(&self, py: Python<'py>) -> Bound<'py, PyArrayDyn<f64>> {
-        vector_to_array(py, &self.knots_u)
-    }
-
-    /// The v parameters of the grid columns.
-    #[getter]
-    fn knots_v<'py>(&self, py: Python<'py>) -> Bound<'py, PyArrayDyn<f64>> {
-        vector_to_array(py, &self.knots_v)
     }
 }
 
