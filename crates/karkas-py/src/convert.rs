@@ -9,9 +9,10 @@
 use std::borrow::Cow;
 
 use karkas::{Grid, Point, Point3};
+use numpy::ndarray::{Dimension, Ix2, Ix3};
 use numpy::{
-    AllowTypeChange, PyArrayDyn, PyArrayLike1, PyArrayLike2, PyArrayLike3, PyArrayLikeDyn,
-    PyArrayMethods, PyUntypedArrayMethods,
+    AllowTypeChange, PyArrayDyn, PyArrayLike, PyArrayLike1, PyArrayLikeDyn, PyArrayMethods,
+    PyReadonlyArray, PyUntypedArrayMethods,
 };
 use pyo3::prelude::*;
 
@@ -38,6 +39,40 @@ macro_rules! by_dim {
 }
 pub(crate) use by_dim;
 
+/// A library object of either dimension kept by a Python object: `A` is its 2-D type, `B` its
+/// 3-D type.
+pub enum ByDim<A, B> {
+    /// The 2-D object.
+    D2(A),
+    /// The 3-D object.
+    D3(B),
+}
+
+impl<A: 'static, B: 'static> ByDim<A, B> {
+    /// `value`, built for a constant dimension `D` (2 or 3), by its type.
+    pub fn of<T: 'static>(value: T) -> Self {
+        let any: Box<dyn std::any::Any> = Box::new(value);
+        match any.downcast::<A>() {
+            Ok(a) => ByDim::D2(*a),
+            Err(any) => match any.downcast::<B>() {
+                Ok(b) => ByDim::D3(*b),
+                Err(_) => unreachable!("objects are built in 2-D or 3-D only"),
+            },
+        }
+    }
+}
+
+/// Runs `$body` with `$x` bound to the object inside `$value`, a [`ByDim`].
+macro_rules! each {
+    ($value:expr, $x:ident => $body:expr) => {
+        match $value {
+            $crate::convert::ByDim::D2($x) => $body,
+            $crate::convert::ByDim::D3($x) => $body,
+        }
+    };
+}
+pub(crate) use each;
+
 /// Runs `f` with the GIL released when `work` is large.
 pub fn maybe_detach<T: Send, F: FnOnce() -> T + Send>(py: Python<'_>, work: usize, f: F) -> T {
     if work >= DETACH_ABOVE {
@@ -47,38 +82,70 @@ pub fn maybe_detach<T: Send, F: FnOnce() -> T + Send>(py: Python<'_>, work: usiz
     }
 }
 
-/// Points of a float64 array of shape `(n, d)`, borrowed when contiguous.
-pub struct PointsArray<'py> {
-    array: PyArrayLike2<'py, f64, AllowTypeChange>,
+/// Coordinates in a float64 array whose last axis holds the `d` coordinates of a point:
+/// points `(n, d)` ([`PointsArray`]) or a grid `(nu, nv, d)` ([`GridArray`]).
+pub struct CoordArray<'py, Dm: Dimension> {
+    array: PyArrayLike<'py, f64, Dm, AllowTypeChange>,
 }
 
-impl<'py> PointsArray<'py> {
-    /// Reads `obj` (anything `numpy.asarray` accepts) as a 2-D float64 array.
+/// Points of a float64 array of shape `(n, d)`, borrowed when contiguous.
+pub type PointsArray<'py> = CoordArray<'py, Ix2>;
+
+/// A grid of points of shape `(nu, nv, d)`.
+pub type GridArray<'py> = CoordArray<'py, Ix3>;
+
+impl<'py, Dm: Dimension + 'py> CoordArray<'py, Dm> {
+    /// Reads `obj` (anything `numpy.asarray` accepts) as a float64 array of this rank.
     pub fn extract(obj: &Bound<'py, PyAny>, what: &str) -> PyResult<Self> {
-        let array: PyArrayLike2<'py, f64, AllowTypeChange> = obj.extract().map_err(|_| {
-            PointsError::new_err(format!(
-                "{what} must be a 2-D float array of shape (n, d) with d in {{2, 3}}"
-            ))
+        let shape = match Dm::NDIM {
+            Some(2) => "a 2-D float array of shape (n, d)",
+            _ => "a 3-D float array of shape (nu, nv, d)",
+        };
+        let array = obj.extract().map_err(|_| {
+            PointsError::new_err(format!("{what} must be {shape} with d in {{2, 3}}"))
         })?;
-        Ok(PointsArray { array })
+        Ok(CoordArray { array })
     }
 
-    /// The dimension `d` (the number of columns).
+    /// Reads `obj` as [`Self::extract`] does, with its dimension checked by [`check_dim`].
+    pub fn extract_checked(obj: &Bound<'py, PyAny>, what: &str) -> PyResult<(Self, usize)> {
+        let array = Self::extract(obj, what)?;
+        let dim = check_dim(array.dim(), what)?;
+        Ok((array, dim))
+    }
+
+    /// The dimension `d` (the length of the last axis).
     pub fn dim(&self) -> usize {
-        self.array.shape()[1]
-    }
-
-    /// The number of points.
-    pub fn len(&self) -> usize {
-        self.array.shape()[0]
+        self.array.shape().last().copied().unwrap_or(0)
     }
 
     /// The coordinates as a flat row-major slice (copied only when not contiguous).
     pub fn flat(&self) -> Cow<'_, [f64]> {
-        match self.array.as_slice() {
-            Ok(s) => Cow::Borrowed(s),
-            Err(_) => Cow::Owned(self.array.as_array().iter().copied().collect()),
-        }
+        flat_of(&self.array)
+    }
+}
+
+impl PointsArray<'_> {
+    /// The number of points.
+    pub fn len(&self) -> usize {
+        self.array.shape()[0]
+    }
+}
+
+impl GridArray<'_> {
+    /// The grid (rows along `u`) as karkas points.
+    pub fn grid<const D: usize>(&self) -> PyResult<Grid<Point<D>>> {
+        let shape = self.array.shape();
+        let points: Vec<Point<D>> = as_points::<D>(&self.flat()).to_vec();
+        Grid::from_row_major(shape[0], shape[1], points).map_err(library_error)
+    }
+}
+
+/// The contents of `array` as a flat row-major slice (copied only when not contiguous).
+fn flat_of<'a, Dm: Dimension>(array: &'a PyReadonlyArray<'_, f64, Dm>) -> Cow<'a, [f64]> {
+    match array.as_slice() {
+        Ok(s) => Cow::Borrowed(s),
+        Err(_) => Cow::Owned(array.as_array().iter().copied().collect()),
     }
 }
 
@@ -90,6 +157,16 @@ pub fn check_dim(d: usize, what: &str) -> PyResult<usize> {
             "{what} must have 2 or 3 coordinates per point (got {d})"
         ))),
     }
+}
+
+/// Checks that `what` has 3 coordinates per point (`d` of them).
+pub fn check_dim3(d: usize, what: &str) -> PyResult<()> {
+    if d == 3 {
+        return Ok(());
+    }
+    Err(PointsError::new_err(format!(
+        "{what} must have 3 coordinates per point (got {d})"
+    )))
 }
 
 /// A flat slice of `D * n` numbers as `n` points.
@@ -105,39 +182,6 @@ pub fn as_points_mut<const D: usize>(flat: &mut [f64]) -> &mut [Point<D>] {
 /// Points as a flat slice of `D * n` numbers.
 pub fn flatten<const D: usize>(points: &[Point<D>]) -> &[f64] {
     bytemuck::cast_slice(points)
-}
-
-/// A grid of points of shape `(nu, nv, d)`.
-pub struct GridArray<'py> {
-    array: PyArrayLike3<'py, f64, AllowTypeChange>,
-}
-
-impl<'py> GridArray<'py> {
-    /// Reads `obj` as a 3-D float64 array.
-    pub fn extract(obj: &Bound<'py, PyAny>, what: &str) -> PyResult<Self> {
-        let array: PyArrayLike3<'py, f64, AllowTypeChange> = obj.extract().map_err(|_| {
-            PointsError::new_err(format!(
-                "{what} must be a 3-D float array of shape (nu, nv, d) with d in {{2, 3}}"
-            ))
-        })?;
-        Ok(GridArray { array })
-    }
-
-    /// The dimension `d`.
-    pub fn dim(&self) -> usize {
-        self.array.shape()[2]
-    }
-
-    /// The grid (rows along `u`) as karkas points.
-    pub fn grid<const D: usize>(&self) -> PyResult<Grid<Point<D>>> {
-        let shape = self.array.shape();
-        let flat: Vec<f64> = match self.array.as_slice() {
-            Ok(s) => s.to_vec(),
-            Err(_) => self.array.as_array().iter().copied().collect(),
-        };
-        let points: Vec<Point<D>> = as_points::<D>(&flat).to_vec();
-        Grid::from_row_major(shape[0], shape[1], points).map_err(library_error)
-    }
 }
 
 /// `n` uniformly spaced parameters over `(a, b)`, ends included.
@@ -158,10 +202,7 @@ pub fn extract_vector(obj: &Bound<'_, PyAny>, what: &str) -> PyResult<Vec<f64>> 
     let array: PyArrayLike1<'_, f64, AllowTypeChange> = obj
         .extract()
         .map_err(|_| KnotsError::new_err(format!("{what} must be a 1-D float array")))?;
-    Ok(match array.as_slice() {
-        Ok(s) => s.to_vec(),
-        Err(_) => array.as_array().iter().copied().collect(),
-    })
+    Ok(flat_of(&array).into_owned())
 }
 
 /// Parameters given as a scalar or an array of any shape.
@@ -198,10 +239,7 @@ impl<'py> Params<'py> {
     pub fn flat(&self) -> Cow<'_, [f64]> {
         match self {
             Params::Scalar(t) => Cow::Owned(vec![*t]),
-            Params::Array(a) => match a.as_slice() {
-                Ok(s) => Cow::Borrowed(s),
-                Err(_) => Cow::Owned(a.as_array().iter().copied().collect()),
-            },
+            Params::Array(a) => flat_of(a),
         }
     }
 }
@@ -290,6 +328,15 @@ pub fn py_bool(b: bool) -> &'static str {
     }
 }
 
+/// `"interpolating "` for the interpolating variant of a class, `""` otherwise (for `repr`).
+pub fn variant(interpolating: bool) -> &'static str {
+    if interpolating {
+        "interpolating "
+    } else {
+        ""
+    }
+}
+
 /// Flat coordinates and dimension kept for attributes such as `control_points`.
 #[derive(Clone)]
 pub struct FlatPoints {
@@ -314,6 +361,32 @@ impl FlatPoints {
     }
 }
 
+impl<'py> IntoPyObject<'py> for &FlatPoints {
+    type Target = PyArrayDyn<f64>;
+    type Output = Bound<'py, PyArrayDyn<f64>>;
+    type Error = PyErr;
+
+    /// A new `(n, d)` array, as [`FlatPoints::to_array`] gives.
+    fn into_pyobject(self, py: Python<'py>) -> PyResult<Self::Output> {
+        self.to_array(py)
+    }
+}
+
+/// Numbers kept for an attribute such as `knots`, handed to Python as a new 1-D float64 array.
+#[derive(Clone)]
+pub struct Numbers(pub Vec<f64>);
+
+impl<'py> IntoPyObject<'py> for &Numbers {
+    type Target = PyArrayDyn<f64>;
+    type Output = Bound<'py, PyArrayDyn<f64>>;
+    type Error = std::convert::Infallible;
+
+    /// A new 1-D array, as [`vector_to_array`] gives.
+    fn into_pyobject(self, py: Python<'py>) -> Result<Self::Output, Self::Error> {
+        Ok(vector_to_array(py, &self.0))
+    }
+}
+
 /// A 3-D point from a sequence of 3 numbers.
 pub fn point3(p: &[f64], what: &str) -> PyResult<Point3> {
     match p {
@@ -327,11 +400,6 @@ pub fn point3(p: &[f64], what: &str) -> PyResult<Point3> {
 /// (n, 3) points.
 pub fn points3(obj: &Bound<'_, PyAny>, what: &str) -> PyResult<Vec<Point3>> {
     let pts = PointsArray::extract(obj, what)?;
-    if pts.dim() != 3 {
-        return Err(PointsError::new_err(format!(
-            "{what} must have 3 coordinates per point (got {})",
-            pts.dim()
-        )));
-    }
+    check_dim3(pts.dim(), what)?;
     Ok(as_points::<3>(&pts.flat()).to_vec())
 }

@@ -30,8 +30,24 @@ impl PyCurve {
     pub fn new(inner: Arc<dyn CurveImpl>, description: String) -> Self {
         PyCurve { inner, description }
     }
+}
 
-    fn evaluate<'py>(
+#[pymethods]
+impl PyCurve {
+    /// c(t, out=None): the curve at `t` (float -> (d,), array -> t.shape + (d,)).
+    #[pyo3(signature = (t, out = None))]
+    fn __call__<'py>(
+        &self,
+        py: Python<'py>,
+        t: &Bound<'py, PyAny>,
+        out: Option<Bound<'py, PyAny>>,
+    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        self.derivative(py, t, 0, out)
+    }
+
+    /// c.derivative(t, k=1, out=None): the k-th derivative with respect to the parameter.
+    #[pyo3(signature = (t, k = 1, out = None))]
+    fn derivative<'py>(
         &self,
         py: Python<'py>,
         t: &Bound<'py, PyAny>,
@@ -48,32 +64,6 @@ impl PyCurve {
             maybe_detach(py, ts.len(), || inner.eval_flat(&ts, k, flat))
         })?;
         Ok(array)
-    }
-}
-
-#[pymethods]
-impl PyCurve {
-    /// c(t, out=None): the curve at `t` (float -> (d,), array -> t.shape + (d,)).
-    #[pyo3(signature = (t, out = None))]
-    fn __call__<'py>(
-        &self,
-        py: Python<'py>,
-        t: &Bound<'py, PyAny>,
-        out: Option<Bound<'py, PyAny>>,
-    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-        self.evaluate(py, t, 0, out)
-    }
-
-    /// c.derivative(t, k=1, out=None): the k-th derivative with respect to the parameter.
-    #[pyo3(signature = (t, k = 1, out = None))]
-    fn derivative<'py>(
-        &self,
-        py: Python<'py>,
-        t: &Bound<'py, PyAny>,
-        k: usize,
-        out: Option<Bound<'py, PyAny>>,
-    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-        self.evaluate(py, t, k, out)
     }
 
     /// c.sample(n): `n` points at uniformly spaced parameters over the domain, shape (n, d).

@@ -7,16 +7,18 @@ use numpy::PyArrayDyn;
 use pyo3::prelude::*;
 
 use crate::convert::{
-    as_points, as_points_mut, by_dim, check_dim, count, grid_to_array, maybe_detach, output_array,
-    points_to_array, write_flat, GridArray, PointsArray,
+    as_points, as_points_mut, by_dim, check_dim, count, each, grid_to_array, maybe_detach,
+    output_array, points_to_array, variant, write_flat, ByDim, GridArray, PointsArray,
 };
 use crate::errors::{library_error, PointsError};
 
-/// A discrete spline of either dimension.
-enum AnySpline {
-    D2(DiscreteSpline<2>),
-    D3(DiscreteSpline<3>),
+/// The dimension `D` of points.
+fn point_dim<const D: usize>(_: &[Point<D>]) -> usize {
+    D
 }
+
+/// A discrete spline of either dimension.
+type AnySpline = ByDim<DiscreteSpline<2>, DiscreteSpline<3>>;
 
 /// A closed discrete curve: the N = m n periodic values of a discrete spline of order r with m
 /// poles (or through m nodes) and n values per pole.
@@ -39,8 +41,7 @@ impl PyDiscreteSpline {
         interpolating: bool,
     ) -> PyResult<Self> {
         let what = if interpolating { "nodes" } else { "poles" };
-        let pts = PointsArray::extract(points, what)?;
-        let dim = check_dim(pts.dim(), what)?;
+        let (pts, dim) = PointsArray::extract_checked(points, what)?;
         let (order, n) = (count(order, "order")?, count(n, "n")?);
         let flat = pts.flat();
         let spline = by_dim!(dim, D => {
@@ -53,7 +54,7 @@ impl PyDiscreteSpline {
                 }
             })
             .map_err(library_error)?;
-            wrap_spline(s)
+            AnySpline::of(s)
         });
         Ok(PyDiscreteSpline {
             spline,
@@ -62,22 +63,7 @@ impl PyDiscreteSpline {
     }
 
     fn parts(&self) -> (usize, usize, usize, usize) {
-        match &self.spline {
-            AnySpline::D2(s) => (2, s.poles().len(), s.order(), s.step()),
-            AnySpline::D3(s) => (3, s.poles().len(), s.order(), s.step()),
-        }
-    }
-}
-
-/// Puts a spline of dimension `D` (2 or 3) into [`AnySpline`].
-fn wrap_spline<const D: usize>(s: DiscreteSpline<D>) -> AnySpline {
-    let any: Box<dyn std::any::Any> = Box::new(s);
-    match any.downcast::<DiscreteSpline<2>>() {
-        Ok(s) => AnySpline::D2(*s),
-        Err(any) => match any.downcast::<DiscreteSpline<3>>() {
-            Ok(s) => AnySpline::D3(*s),
-            Err(_) => unreachable!("discrete splines are built in 2-D or 3-D only"),
-        },
+        each!(&self.spline, s => (point_dim(s.poles()), s.poles().len(), s.order(), s.step()))
     }
 }
 
@@ -108,10 +94,11 @@ impl PyDiscreteSpline {
         let (dim, m, _, n) = self.parts();
         let array = output_array(py, out, &[m * n, dim])?;
         write_flat(&array, |flat| {
-            maybe_detach(py, m * n, || match &self.spline {
-                AnySpline::D2(s) => s.values(as_points_mut::<2>(flat)),
-                AnySpline::D3(s) => s.values(as_points_mut::<3>(flat)),
-            })
+            maybe_detach(
+                py,
+                m * n,
+                || each!(&self.spline, s => s.values(as_points_mut(flat))),
+            )
         })?;
         Ok(array)
     }
@@ -119,10 +106,7 @@ impl PyDiscreteSpline {
     /// The poles a_0..a_{m-1}, (m, d).
     #[getter]
     fn poles<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-        match &self.spline {
-            AnySpline::D2(s) => points_to_array(py, s.poles()),
-            AnySpline::D3(s) => points_to_array(py, s.poles()),
-        }
+        each!(&self.spline, s => points_to_array(py, s.poles()))
     }
 
     /// The order r.
@@ -152,23 +136,16 @@ impl PyDiscreteSpline {
 
     fn __repr__(&self) -> String {
         let (dim, m, order, n) = self.parts();
-        let kind = if self.interpolating {
-            "interpolating "
-        } else {
-            ""
-        };
         format!(
-            "<karkas.DiscreteSpline {kind}order={order}, n={n}, {m} poles in {dim}-D, period={}>",
+            "<karkas.DiscreteSpline {}order={order}, n={n}, {m} poles in {dim}-D, period={}>",
+            variant(self.interpolating),
             m * n
         )
     }
 }
 
 /// A tube of either dimension.
-enum AnyTube {
-    D2(TubeSurface<2>),
-    D3(TubeSurface<3>),
-}
+type AnyTube = ByDim<TubeSurface<2>, TubeSurface<3>>;
 
 /// A closed tube through a skeleton of closed discrete curves (formula (3) of Malozemov,
 /// Khorokhonov and Chashnikov).
@@ -215,46 +192,25 @@ impl PyTubeSurface {
             let (ga, gb): (Grid<Point<D>>, Grid<Point<D>>) = (a.grid::<D>()?, b.grid::<D>()?);
             let t = maybe_detach(py, ga.as_slice().len(), || TubeSurface::<D>::new(&ga, &gb, n1, n2, r1, r2))
                 .map_err(library_error)?;
-            wrap_tube(t)
+            AnyTube::of(t)
         });
         Ok(PyTubeSurface { tube })
     }
 
     /// The values c(p, q), shape (N1, N2, d).
     fn values<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-        match &self.tube {
-            AnyTube::D2(t) => grid_to_array(py, t.values()),
-            AnyTube::D3(t) => grid_to_array(py, t.values()),
-        }
+        each!(&self.tube, t => grid_to_array(py, t.values()))
     }
 
     /// The values with the first row and column repeated at the end, (N1+1, N2+1, d).
     fn closed_grid<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-        match &self.tube {
-            AnyTube::D2(t) => grid_to_array(py, &t.closed_grid()),
-            AnyTube::D3(t) => grid_to_array(py, &t.closed_grid()),
-        }
+        each!(&self.tube, t => grid_to_array(py, &t.closed_grid()))
     }
 
     fn __repr__(&self) -> String {
-        let (dim, (p1, p2), (s1, s2), (o1, o2)) = match &self.tube {
-            AnyTube::D2(t) => (2, t.periods(), t.steps(), t.orders()),
-            AnyTube::D3(t) => (3, t.periods(), t.steps(), t.orders()),
-        };
+        let (dim, (p1, p2), (s1, s2), (o1, o2)) = each!(&self.tube, t => (point_dim(t.values().as_slice()), t.periods(), t.steps(), t.orders()));
         format!(
             "<karkas.TubeSurface {p1}x{p2} values in {dim}-D, steps=({s1}, {s2}), orders=({o1}, {o2})>"
         )
-    }
-}
-
-/// Puts a tube of dimension `D` into [`AnyTube`].
-fn wrap_tube<const D: usize>(t: TubeSurface<D>) -> AnyTube {
-    let any: Box<dyn std::any::Any> = Box::new(t);
-    match any.downcast::<TubeSurface<2>>() {
-        Ok(t) => AnyTube::D2(*t),
-        Err(any) => match any.downcast::<TubeSurface<3>>() {
-            Ok(t) => AnyTube::D3(*t),
-            Err(_) => unreachable!("tubes are built in 2-D or 3-D only"),
-        },
     }
 }

@@ -10,18 +10,13 @@ use karkas_io::stl::write_surface_stl;
 use karkas_io::write::{write_curve_csv, write_surface_csv};
 use pyo3::prelude::*;
 
-use crate::convert::{as_points, by_dim, check_dim, extract_vector, GridArray, PointsArray};
-use crate::errors::{file_error, PointsError};
+use crate::convert::{as_points, by_dim, check_dim3, extract_vector, GridArray, PointsArray};
+use crate::errors::file_error;
 
 /// A (nu, nv, 3) grid of points.
 fn grid3(grid: &Bound<'_, PyAny>) -> PyResult<(usize, usize, Vec<Point3>)> {
     let g = GridArray::extract(grid, "grid")?;
-    if g.dim() != 3 {
-        return Err(PointsError::new_err(format!(
-            "grid must have 3 coordinates per point (got {})",
-            g.dim()
-        )));
-    }
+    check_dim3(g.dim(), "grid")?;
     let grid = g.grid::<3>()?;
     Ok((grid.rows(), grid.cols(), grid.into_vec()))
 }
@@ -53,8 +48,7 @@ pub fn export_curve_csv(
     points: &Bound<'_, PyAny>,
 ) -> PyResult<()> {
     let ts = extract_vector(t, "t")?;
-    let pts = PointsArray::extract(points, "points")?;
-    let dim = check_dim(pts.dim(), "points")?;
+    let (pts, dim) = PointsArray::extract_checked(points, "points")?;
     let flat = pts.flat();
     by_dim!(dim, D => {
         let p = as_points::<D>(&flat);

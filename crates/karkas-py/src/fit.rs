@@ -4,12 +4,9 @@
 use std::sync::Arc;
 
 use karkas::fit::{self, FitOptions, HermiteSpline};
-use numpy::PyArrayDyn;
 use pyo3::prelude::*;
 
-use crate::convert::{
-    as_points, by_dim, check_dim, count, extract_vector, vector_to_array, FlatPoints, PointsArray,
-};
+use crate::convert::{as_points, by_dim, count, extract_vector, FlatPoints, Numbers, PointsArray};
 use crate::curve::PyCurve;
 use crate::errors::{library_error, KnotsError, OptionError};
 use crate::wrapper::{CurveImpl, Wrapped};
@@ -18,8 +15,14 @@ use crate::wrapper::{CurveImpl, Wrapped};
 /// fit_curve: values and derivatives at its knots.
 #[pyclass(extends = PyCurve, module = "karkas", name = "HermiteSpline", frozen)]
 pub struct PyHermiteSpline {
-    knots: Vec<f64>,
+    /// The knots 0 = T_1 < ... < T_N = 1.
+    #[pyo3(get)]
+    knots: Numbers,
+    /// The values R_L at the knots, (N, d).
+    #[pyo3(get)]
     values: FlatPoints,
+    /// The derivatives H_L at the knots, (N, d).
+    #[pyo3(get)]
     derivatives: FlatPoints,
     /// The largest distance of a fitted point from the curve.
     #[pyo3(get)]
@@ -33,41 +36,12 @@ pub struct PyHermiteSpline {
     /// For a fit by tolerance: whether every point is within it (None otherwise).
     #[pyo3(get)]
     tolerance_met: Option<bool>,
-    parameters: Vec<f64>,
-    distances: Vec<f64>,
-}
-
-#[pymethods]
-impl PyHermiteSpline {
-    /// The knots 0 = T_1 < ... < T_N = 1.
-    #[getter]
-    fn knots<'py>(&self, py: Python<'py>) -> Bound<'py, PyArrayDyn<f64>> {
-        vector_to_array(py, &self.knots)
-    }
-
-    /// The values R_L at the knots, (N, d).
-    #[getter]
-    fn values<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-        self.values.to_array(py)
-    }
-
-    /// The derivatives H_L at the knots, (N, d).
-    #[getter]
-    fn derivatives<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-        self.derivatives.to_array(py)
-    }
-
     /// The foot parameter of every fitted point, (n,).
-    #[getter]
-    fn parameters<'py>(&self, py: Python<'py>) -> Bound<'py, PyArrayDyn<f64>> {
-        vector_to_array(py, &self.parameters)
-    }
-
+    #[pyo3(get)]
+    parameters: Numbers,
     /// The distance of every fitted point from the curve, (n,).
-    #[getter]
-    fn distances<'py>(&self, py: Python<'py>) -> Bound<'py, PyArrayDyn<f64>> {
-        vector_to_array(py, &self.distances)
-    }
+    #[pyo3(get)]
+    distances: Numbers,
 }
 
 /// What a fit is asked for.
@@ -98,8 +72,7 @@ pub fn fit_curve(
     corners: Option<Vec<f64>>,
     fairness: Option<f64>,
 ) -> PyResult<Py<PyHermiteSpline>> {
-    let pts = PointsArray::extract(points, "points")?;
-    let dim = check_dim(pts.dim(), "points")?;
+    let (pts, dim) = PointsArray::extract_checked(points, "points")?;
     let knots: Option<Vec<f64>> = match knots {
         None => None,
         Some(k) => match k.extract::<i64>() {
@@ -150,22 +123,22 @@ pub fn fit_curve(
             .map_err(library_error)?;
         let spline: HermiteSpline<D> = result.spline.clone();
         let sub = PyHermiteSpline {
-            knots: spline.knots().to_vec(),
+            knots: Numbers(spline.knots().to_vec()),
             values: FlatPoints::of(spline.values()),
             derivatives: FlatPoints::of(spline.derivatives()),
             max_distance: result.max_distance(),
             rms_distance: result.rms_distance(),
             jump_sum: result.jump_sum,
             tolerance_met: met,
-            parameters: result.parameters.clone(),
-            distances: result.distances.clone(),
+            parameters: Numbers(result.parameters.clone()),
+            distances: Numbers(result.distances.clone()),
         };
         (Arc::new(Wrapped::<_, D>(spline)) as Arc<dyn CurveImpl>, sub)
     });
     let description = format!(
         "<karkas.HermiteSpline fit of {} points in {dim}-D, {} knots, max_distance={:.3e}, rms_distance={:.3e}",
         pts.len(),
-        sub.knots.len(),
+        sub.knots.0.len(),
         sub.max_distance,
         sub.rms_distance
     );

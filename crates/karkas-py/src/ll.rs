@@ -9,7 +9,7 @@ use numpy::{AllowTypeChange, PyArrayDyn, PyArrayLike2, PyUntypedArrayMethods};
 use pyo3::prelude::*;
 
 use crate::convert::{
-    as_points, by_dim, check_dim, count, maybe_detach, py_bool, write_flat, FlatPoints, GridArray,
+    as_points, by_dim, count, maybe_detach, py_bool, variant, write_flat, FlatPoints, GridArray,
     PointsArray,
 };
 use crate::curve::PyCurve;
@@ -25,8 +25,14 @@ use crate::wrapper::{CurveImpl, SurfaceImpl, Wrapped, WrappedSurface};
 /// last points; use LLCurve.interpolate for a curve through every point.
 #[pyclass(extends = PyCurve, module = "karkas", name = "LLCurve", frozen)]
 pub struct PyLlCurve {
+    /// The order L (the curve is C^L).
+    #[pyo3(get)]
     order: usize,
+    /// True for the interpolating variant.
+    #[pyo3(get)]
     interpolating: bool,
+    /// The control polygon r_1..r_K (closed curves repeat the first point at the end), (K, d).
+    #[pyo3(get, name = "control_points")]
     control: FlatPoints,
 }
 
@@ -38,8 +44,7 @@ impl PyLlCurve {
         closed: bool,
         interpolating: bool,
     ) -> PyResult<PyClassInitializer<Self>> {
-        let pts = PointsArray::extract(points, "points")?;
-        let dim = check_dim(pts.dim(), "points")?;
+        let (pts, dim) = PointsArray::extract_checked(points, "points")?;
         let order = count(order, "order")?;
         let flat = pts.flat();
         let n = pts.len();
@@ -56,9 +61,9 @@ impl PyLlCurve {
             let control = FlatPoints::of(curve.control_points());
             (Arc::new(Wrapped::<_, D>(curve)), control)
         });
-        let kind = if interpolating { "interpolating " } else { "" };
         let description = format!(
-            "<karkas.LLCurve {kind}order={order}, closed={}, {n} points in {dim}-D",
+            "<karkas.LLCurve {}order={order}, closed={}, {n} points in {dim}-D",
+            variant(interpolating),
             py_bool(closed)
         );
         Ok(
@@ -96,24 +101,6 @@ impl PyLlCurve {
     ) -> PyResult<Py<Self>> {
         Py::new(py, Self::build(py, points, order, closed, true)?)
     }
-
-    /// The order L (the curve is C^L).
-    #[getter]
-    fn order(&self) -> usize {
-        self.order
-    }
-
-    /// True for the interpolating variant.
-    #[getter]
-    fn interpolating(&self) -> bool {
-        self.interpolating
-    }
-
-    /// The control polygon r_1..r_K (closed curves repeat the first point at the end), (K, d).
-    #[getter]
-    fn control_points<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-        self.control.to_array(py)
-    }
 }
 
 /// The LL approximation of a grid of points: a C^L surface that never oscillates more than its
@@ -124,7 +111,11 @@ impl PyLlCurve {
 /// every grid point.
 #[pyclass(extends = PySurface, module = "karkas", name = "LLSurface", frozen)]
 pub struct PyLlSurface {
+    /// The order L (the surface is C^L).
+    #[pyo3(get)]
     order: usize,
+    /// True for the interpolating variant.
+    #[pyo3(get)]
     interpolating: bool,
 }
 
@@ -137,8 +128,7 @@ impl PyLlSurface {
         closed_v: bool,
         interpolating: bool,
     ) -> PyResult<PyClassInitializer<Self>> {
-        let g = GridArray::extract(grid, "grid")?;
-        let dim = check_dim(g.dim(), "grid")?;
+        let (g, dim) = GridArray::extract_checked(grid, "grid")?;
         let order = count(order, "order")?;
         let (rows, cols, inner): (usize, usize, Arc<dyn SurfaceImpl>) = by_dim!(dim, D => {
             let grid = g.grid::<D>()?;
@@ -152,9 +142,9 @@ impl PyLlSurface {
             .map_err(library_error)?;
             (grid.rows(), grid.cols(), Arc::new(WrappedSurface::<_, D>(surface)))
         });
-        let kind = if interpolating { "interpolating " } else { "" };
         let description = format!(
-            "<karkas.LLSurface {kind}order={order}, closed_u={}, closed_v={}, {rows}x{cols} grid in {dim}-D",
+            "<karkas.LLSurface {}order={order}, closed_u={}, closed_v={}, {rows}x{cols} grid in {dim}-D",
+            variant(interpolating),
             py_bool(closed_u),
             py_bool(closed_v)
         );
@@ -195,18 +185,6 @@ impl PyLlSurface {
         closed_v: bool,
     ) -> PyResult<Py<Self>> {
         Py::new(py, Self::build(py, grid, order, closed_u, closed_v, true)?)
-    }
-
-    /// The order L (the surface is C^L).
-    #[getter]
-    fn order(&self) -> usize {
-        self.order
-    }
-
-    /// True for the interpolating variant.
-    #[getter]
-    fn interpolating(&self) -> bool {
-        self.interpolating
     }
 }
 

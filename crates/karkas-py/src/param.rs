@@ -11,8 +11,8 @@ use numpy::PyArrayDyn;
 use pyo3::prelude::*;
 
 use crate::convert::{
-    as_points, by_dim, check_dim, extract_vector, maybe_detach, py_bool, vector_to_array,
-    FlatPoints, GridArray, PointsArray,
+    as_points, by_dim, extract_vector, maybe_detach, py_bool, vector_to_array, FlatPoints,
+    GridArray, Numbers, PointsArray,
 };
 use crate::curve::PyCurve;
 use crate::errors::{library_error, OptionError};
@@ -71,8 +71,14 @@ fn parse_ends<const D: usize>(bc: &Bound<'_, PyAny>) -> PyResult<SplineEnds<D>> 
 /// ('clamped', start_derivative, end_derivative).
 #[pyclass(extends = PyCurve, module = "karkas", name = "CubicSpline", frozen)]
 pub struct PyCubicSpline {
-    knots: Vec<f64>,
+    /// The knots t_0 < ... < t_{n-1}.
+    #[pyo3(get)]
+    knots: Numbers,
+    /// The interpolated values P(t_k), (n, d).
+    #[pyo3(get)]
     values: FlatPoints,
+    /// The node slopes P'(t_k), (n, d).
+    #[pyo3(get)]
     slopes: FlatPoints,
 }
 
@@ -87,8 +93,7 @@ impl PyCubicSpline {
         parameterization: &str,
         bc: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<PyClassInitializer<Self>> {
-        let pts = PointsArray::extract(points, "points")?;
-        let dim = check_dim(pts.dim(), "points")?;
+        let (pts, dim) = PointsArray::extract_checked(points, "points")?;
         let rule = parse_parameterization(parameterization)?;
         let knots = t.map(|t| extract_vector(t, "t")).transpose()?;
         let flat = pts.flat();
@@ -111,7 +116,7 @@ impl PyCubicSpline {
                 SplineEnds::Clamped { .. } => "clamped",
             };
             let sub = PyCubicSpline {
-                knots: spline.knots().to_vec(),
+                knots: Numbers(spline.knots().to_vec()),
                 values: FlatPoints::of(spline.values()),
                 slopes: FlatPoints::of(spline.slopes()),
             };
@@ -126,27 +131,9 @@ impl PyCubicSpline {
         };
         let description = format!(
             "<karkas.CubicSpline bc='{bc_name}', parameterization='{params}', {} knots in {dim}-D",
-            sub.knots.len()
+            sub.knots.0.len()
         );
         Ok(PyClassInitializer::from(PyCurve::new(inner, description)).add_subclass(sub))
-    }
-
-    /// The knots t_0 < ... < t_{n-1}.
-    #[getter]
-    fn knots<'py>(&self, py: Python<'py>) -> Bound<'py, PyArrayDyn<f64>> {
-        vector_to_array(py, &self.knots)
-    }
-
-    /// The interpolated values P(t_k), (n, d).
-    #[getter]
-    fn values<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-        self.values.to_array(py)
-    }
-
-    /// The node slopes P'(t_k), (n, d).
-    #[getter]
-    fn slopes<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-        self.slopes.to_array(py)
     }
 }
 
@@ -180,8 +167,12 @@ enum GridParameters {
 /// takes the parameters instead.
 #[pyclass(extends = PySurface, module = "karkas", name = "BicubicSurface", frozen)]
 pub struct PyBicubicSurface {
-    knots_u: Vec<f64>,
-    knots_v: Vec<f64>,
+    /// The u parameters of the grid rows (a closed direction includes the closing step).
+    #[pyo3(get)]
+    knots_u: Numbers,
+    /// The v parameters of the grid columns.
+    #[pyo3(get)]
+    knots_v: Numbers,
 }
 
 impl PyBicubicSurface {
@@ -192,8 +183,7 @@ impl PyBicubicSurface {
         closed_u: bool,
         closed_v: bool,
     ) -> PyResult<PyClassInitializer<Self>> {
-        let g = GridArray::extract(grid, "grid")?;
-        let dim = check_dim(g.dim(), "grid")?;
+        let (g, dim) = GridArray::extract_checked(grid, "grid")?;
         let (label, parameters) = match how {
             Ok(name) => (
                 name.to_string(),
@@ -209,8 +199,8 @@ impl PyBicubicSurface {
             })
             .map_err(library_error)?;
             let sub = PyBicubicSurface {
-                knots_u: surface.knots_u().to_vec(),
-                knots_v: surface.knots_v().to_vec(),
+                knots_u: Numbers(surface.knots_u().to_vec()),
+                knots_v: Numbers(surface.knots_v().to_vec()),
             };
             (sub, Arc::new(WrappedSurface::<_, D>(surface)), grid.rows(), grid.cols())
         });
@@ -257,18 +247,6 @@ impl PyBicubicSurface {
             Self::build(py, grid, Err((ku, kv)), closed_u, closed_v)?,
         )
     }
-
-    /// The u parameters of the grid rows (a closed direction includes the closing step).
-    #[getter]
-    fn knots_u<'py>(&self, py: Python<'py>) -> Bound<'py, PyArrayDyn<f64>> {
-        vector_to_array(py, &self.knots_u)
-    }
-
-    /// The v parameters of the grid columns.
-    #[getter]
-    fn knots_v<'py>(&self, py: Python<'py>) -> Bound<'py, PyArrayDyn<f64>> {
-        vector_to_array(py, &self.knots_v)
-    }
 }
 
 /// curve_parameters(points, parameterization="chord") -> (n,): the parameters of points
@@ -281,8 +259,7 @@ pub fn curve_parameters<'py>(
     parameterization: &str,
 ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
     let rule = parse_parameterization(parameterization)?;
-    let pts = PointsArray::extract(points, "points")?;
-    let dim = check_dim(pts.dim(), "points")?;
+    let (pts, dim) = PointsArray::extract_checked(points, "points")?;
     let flat = pts.flat();
     let t = by_dim!(dim, D => param_curve(as_points::<D>(&flat), rule)).map_err(library_error)?;
     Ok(vector_to_array(py, &t))
@@ -298,8 +275,7 @@ pub fn grid_parameters<'py>(
     parameterization: &str,
 ) -> PyResult<(Array<'py>, Array<'py>)> {
     let rule = parse_grid_parameterization(parameterization)?;
-    let g = GridArray::extract(grid, "grid")?;
-    let dim = check_dim(g.dim(), "grid")?;
+    let (g, dim) = GridArray::extract_checked(grid, "grid")?;
     let (u, v) = by_dim!(dim, D => param_grid(&g.grid::<D>()?, rule)).map_err(library_error)?;
     Ok((vector_to_array(py, &u), vector_to_array(py, &v)))
 }

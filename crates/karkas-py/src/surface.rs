@@ -32,9 +32,28 @@ impl PySurface {
     pub fn new(inner: Arc<dyn SurfaceImpl>, description: String) -> Self {
         PySurface { inner, description }
     }
+}
 
+#[pymethods]
+impl PySurface {
+    /// S(u, v, grid=True, out=None): points of the surface.
+    #[pyo3(signature = (u, v, grid = true, out = None))]
+    fn __call__<'py>(
+        &self,
+        py: Python<'py>,
+        u: &Bound<'py, PyAny>,
+        v: &Bound<'py, PyAny>,
+        grid: bool,
+        out: Option<Bound<'py, PyAny>>,
+    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        self.derivative(py, u, v, 0, 0, grid, out)
+    }
+
+    /// S.derivative(u, v, ku=1, kv=0, grid=True, out=None): the partial derivative
+    /// d^(ku+kv) S / du^ku dv^kv.
+    #[pyo3(signature = (u, v, ku = 1, kv = 0, grid = true, out = None))]
     #[allow(clippy::too_many_arguments)]
-    fn evaluate<'py>(
+    fn derivative<'py>(
         &self,
         py: Python<'py>,
         u: &Bound<'py, PyAny>,
@@ -82,39 +101,6 @@ impl PySurface {
             })
         })?;
         Ok(array)
-    }
-}
-
-#[pymethods]
-impl PySurface {
-    /// S(u, v, grid=True, out=None): points of the surface.
-    #[pyo3(signature = (u, v, grid = true, out = None))]
-    fn __call__<'py>(
-        &self,
-        py: Python<'py>,
-        u: &Bound<'py, PyAny>,
-        v: &Bound<'py, PyAny>,
-        grid: bool,
-        out: Option<Bound<'py, PyAny>>,
-    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-        self.evaluate(py, u, v, 0, 0, grid, out)
-    }
-
-    /// S.derivative(u, v, ku=1, kv=0, grid=True, out=None): the partial derivative
-    /// d^(ku+kv) S / du^ku dv^kv.
-    #[pyo3(signature = (u, v, ku = 1, kv = 0, grid = true, out = None))]
-    #[allow(clippy::too_many_arguments)]
-    fn derivative<'py>(
-        &self,
-        py: Python<'py>,
-        u: &Bound<'py, PyAny>,
-        v: &Bound<'py, PyAny>,
-        ku: usize,
-        kv: usize,
-        grid: bool,
-        out: Option<Bound<'py, PyAny>>,
-    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-        self.evaluate(py, u, v, ku, kv, grid, out)
     }
 
     /// S.sample(nu, nv): the points at nu x nv uniformly spaced parameters, (nu, nv, d).

@@ -9,7 +9,7 @@
 use karkas::implicit::ExpressionSurface;
 use karkas::measure::{hausdorff_surface_implicit, Hausdorff};
 use karkas::section::{plane_section, Plane, SectionOptions};
-use karkas::{PiecewiseCurve, Point, Point3, Surface};
+use karkas::{Interval, PiecewiseCurve, Point, Point3, Surface};
 
 use crate::convert::as_points_mut;
 use crate::section::PySectionCurve;
@@ -30,6 +30,11 @@ pub trait CurveImpl: Send + Sync {
     fn eval_flat(&self, ts: &[f64], k: usize, out: &mut [f64]);
 }
 
+/// The ends `(a, b)` of an interval.
+fn ends(interval: Interval) -> (f64, f64) {
+    (interval.start, interval.end)
+}
+
 /// A karkas curve of dimension `D` behind [`CurveImpl`].
 pub struct Wrapped<C, const D: usize>(pub C);
 
@@ -41,8 +46,7 @@ where
         D
     }
     fn domain(&self) -> (f64, f64) {
-        let d = self.0.domain();
-        (d.start, d.end)
+        ends(self.0.domain())
     }
     fn closed(&self) -> bool {
         self.0.is_closed()
@@ -106,10 +110,10 @@ fn lift<const D: usize>(p: Point<D>) -> Point3 {
 }
 
 impl<S: Surface<D>, const D: usize> Surface<3> for Lift<'_, S, D> {
-    fn domain_u(&self) -> karkas::Interval {
+    fn domain_u(&self) -> Interval {
         self.0.domain_u()
     }
-    fn domain_v(&self) -> karkas::Interval {
+    fn domain_v(&self) -> Interval {
         self.0.domain_v()
     }
     fn is_closed_u(&self) -> bool {
@@ -137,12 +141,10 @@ where
         D
     }
     fn domain_u(&self) -> (f64, f64) {
-        let d = self.0.domain_u();
-        (d.start, d.end)
+        ends(self.0.domain_u())
     }
     fn domain_v(&self) -> (f64, f64) {
-        let d = self.0.domain_v();
-        (d.start, d.end)
+        ends(self.0.domain_v())
     }
     fn closed(&self) -> (bool, bool) {
         (self.0.is_closed_u(), self.0.is_closed_v())
