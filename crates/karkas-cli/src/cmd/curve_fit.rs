@@ -7,6 +7,7 @@ use crate::output::curve::write_curve_figure;
 use crate::output::formats::EXACT_CURVE_FORMATS;
 use crate::output::overwrite::ensure_distinct;
 use crate::output::samples::default_curve_samples;
+use crate::output::samples::sample_curve;
 use anyhow::{bail, Context, Result};
 use clap::Args;
 use karkas::fit::{check_knots, fit_curve, fit_curve_adaptive, CurveFit, FitOptions};
@@ -125,9 +126,7 @@ fn fit_and_write<const D: usize>(
     let n = args
         .samples
         .or_else(|| default_curve_samples(2 * fit.spline.pieces()));
-    let mut ts = vec![0.0; n];
-    let mut samples = vec![Point::ZERO; n];
-    fit.spline.sample_into(&mut ts, &mut samples);
+    let (ts, samples) = sample_curve(&fit.spline, n);
     if let Some(report) = &args.report {
         write_atomic(report, |w| {
             writeln!(w, "point,t,distance")?;

@@ -7,6 +7,7 @@ use crate::output::curve::write_curve_figure;
 use crate::output::formats::EXACT_CURVE_FORMATS;
 use crate::output::memory::check_memory;
 use crate::output::overwrite::ensure_distinct;
+use crate::output::samples::sample_curve;
 use crate::output::samples::{default_curve_samples, report_samples, MAX_SAMPLES};
 use anyhow::{Context, Result};
 use clap::Args;
@@ -81,9 +82,7 @@ fn build_and_write<const D: usize>(
         &format!("curve ll: {n} samples"),
         (n as u128) * (8 + 8 * D as u128),
     )?;
-    let mut ts = vec![0.0; n];
-    let mut samples = vec![Point::ZERO; n];
-    curve.sample_into(&mut ts, &mut samples);
+    let (ts, samples) = sample_curve(&curve, n);
     match format {
         OutputFormat::Csv => write_curve_csv(&args.output, &ts, &samples)?,
         _ => {

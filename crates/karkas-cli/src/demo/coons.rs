@@ -8,6 +8,7 @@ use super::coons_data::{
     body_line, curve_family_csv, figure_3_sheet, fuselage, fuselage_point_lists, Body,
     FUSELAGE_STATIONS, FUSELAGE_STRINGERS,
 };
+use crate::output::samples::sample_surface;
 use anyhow::Result;
 use karkas::coons::{
     Along, CoonsSurface, CrossDerivatives, CurveFit, CurveNetwork, NetworkAxis, PointNetwork,
@@ -248,10 +249,7 @@ fn write_mesh(
     nu: usize,
     nv: usize,
 ) -> Result<()> {
-    let mut us = vec![0.0; nu];
-    let mut vs = vec![0.0; nv];
-    let mut mesh = vec![Point3::ZERO; nu * nv];
-    surface.sample_grid_into(&mut us, &mut vs, &mut mesh);
+    let (_, _, mesh) = sample_surface(surface, nu, nv);
     write_surface_obj(&out.file(format!("{stem}.obj")), nu, nv, &mesh)?;
     write_viewer(
         out,
