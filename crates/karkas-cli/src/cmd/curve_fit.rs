@@ -4,7 +4,7 @@
 use crate::args::{CombOption, CurveSamples};
 use crate::input::{run_on_curve_points, CurveJob};
 use crate::output::cad::write_cad_curve;
-use crate::output::curve::write_curve_figure;
+use crate::output::curve::write_sampled_curve;
 use crate::output::formats::EXACT_CURVE_FORMATS;
 use crate::output::overwrite::ensure_distinct;
 use crate::output::samples::default_curve_samples;
@@ -13,8 +13,7 @@ use anyhow::{bail, Context, Result};
 use clap::Args;
 use karkas::fit::{check_knots, fit_curve, fit_curve_adaptive, CurveFit, FitOptions};
 use karkas::{Curve, Point, Point2};
-use karkas_io::svg::CurveOverlay;
-use karkas_io::write::{write_atomic, write_curve_csv};
+use karkas_io::write::write_atomic;
 use karkas_io::OutputFormat;
 use std::path::PathBuf;
 use std::time::Instant;
@@ -134,40 +133,25 @@ impl CurveJob for (&CurveFitArgs, OutputFormat) {
         if format.is_cad() {
             return write_cad_curve(&fit.spline, format, &args.output, args.input.display());
         }
-        match format {
-            OutputFormat::Csv => write_curve_csv(&args.output, &ts, &samples)?,
-            _ => {
-                let whiskers: Vec<[Point2; 2]> = fit
-                    .parameters
-                    .iter()
-                    .zip(points)
-                    .map(|(&t, p)| {
-                        let f = fit.spline.eval(t);
-                        [Point2::new([p[0], p[1]]), Point2::new([f[0], f[1]])]
-                    })
-                    .collect();
-                let comb = args.comb.teeth(&fit.spline, &ts);
-                let title = format!(
-                    "defect-2 cubic spline fit, {} knots, {} points, max deviation {:.3e}",
-                    fit.spline.knots().len(),
-                    points.len(),
-                    fit.max_distance()
-                );
-                let overlay = CurveOverlay {
-                    comb: &comb,
-                    whiskers: &whiskers,
-                };
-                write_curve_figure(
-                    &args.output,
-                    format,
-                    &title,
-                    &samples,
-                    points,
-                    false,
-                    &overlay,
-                )?;
-            }
-        }
+        let whiskers: Vec<[Point2; 2]> = fit
+            .parameters
+            .iter()
+            .zip(points)
+            .map(|(&t, p)| {
+                let f = fit.spline.eval(t);
+                [Point2::new([p[0], p[1]]), Point2::new([f[0], f[1]])]
+            })
+            .collect();
+        let comb = args.comb.teeth(&fit.spline, &ts);
+        let title = format!(
+            "defect-2 cubic spline fit, {} knots, {} points, max deviation {:.3e}",
+            fit.spline.knots().len(),
+            points.len(),
+            fit.max_distance()
+        );
+        let (output, overlay) = (&args.output, (&comb[..], &whiskers[..]));
+        let samples = (&ts[..], &samples[..]);
+        write_sampled_curve(output, format, &title, samples, points, false, overlay)?;
         eprintln!(
             "karkas: wrote {} ({n} samples); {} knots, max deviation {:.6e}, rms {:.6e}, f = {:.6e}, p = {:.6e}, fitted in {:.1} ms",
             args.output.display(),

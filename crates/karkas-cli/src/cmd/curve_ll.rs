@@ -3,7 +3,7 @@
 use crate::args::{check_ll_order, CombOption, CurveSamples};
 use crate::input::{curve_points, run_on_curve_points, CurveJob};
 use crate::output::cad::write_cad_curve;
-use crate::output::curve::write_curve_figure;
+use crate::output::curve::write_sampled_curve;
 use crate::output::formats::EXACT_CURVE_FORMATS;
 use crate::output::memory::check_memory;
 use crate::output::overwrite::ensure_distinct;
@@ -13,8 +13,6 @@ use anyhow::{Context, Result};
 use clap::Args;
 use karkas::ll::LlCurve;
 use karkas::{Curve, Point, Point2};
-use karkas_io::svg::CurveOverlay;
-use karkas_io::write::write_curve_csv;
 use karkas_io::OutputFormat;
 use std::path::PathBuf;
 
@@ -77,40 +75,33 @@ impl CurveJob for (&CurveLlArgs, OutputFormat) {
             (n as u128) * (8 + 8 * D as u128),
         )?;
         let (ts, samples) = sample_curve(&curve, n);
-        match format {
-            OutputFormat::Csv => write_curve_csv(&args.output, &ts, &samples)?,
-            _ => {
-                let variant = if args.interpolate {
-                    "interpolating "
-                } else {
-                    ""
-                };
-                let title = format!(
-                    "{variant}LL curve, L = {}, {} points",
-                    args.order,
-                    points.len()
-                );
-                let comb = args.comb.teeth(&curve, &ts);
-                let whiskers = if args.whiskers {
-                    node_whiskers(&curve, points)
-                } else {
-                    Vec::new()
-                };
-                let overlay = CurveOverlay {
-                    comb: &comb,
-                    whiskers: &whiskers,
-                };
-                write_curve_figure(
-                    &args.output,
-                    format,
-                    &title,
-                    &samples,
-                    points,
-                    args.closed,
-                    &overlay,
-                )?;
-            }
-        }
+        let variant = if args.interpolate {
+            "interpolating "
+        } else {
+            ""
+        };
+        let title = format!(
+            "{variant}LL curve, L = {}, {} points",
+            args.order,
+            points.len()
+        );
+        let comb = args.comb.teeth(&curve, &ts);
+        let whiskers = if args.whiskers {
+            node_whiskers(&curve, points)
+        } else {
+            Vec::new()
+        };
+        let (output, overlay) = (&args.output, (&comb[..], &whiskers[..]));
+        let samples = (&ts[..], &samples[..]);
+        write_sampled_curve(
+            output,
+            format,
+            &title,
+            samples,
+            points,
+            args.closed,
+            overlay,
+        )?;
         report_samples(&args.output, n);
         Ok(())
     }
