@@ -2,7 +2,7 @@
 //! with 15 sections x = const and 11 sections y = const, hidden lines removed (METHODS.md
 //! §1.4, §1.6).
 
-use super::common::{write_viewer, Finding, Output};
+use super::common::{write_text, write_viewer, Finding, Output};
 use super::data::{aircraft_15x31, contour_53, contour_csv, grid_csv};
 use crate::output::samples::{sample_curve, sample_surface};
 use anyhow::Result;
@@ -12,15 +12,9 @@ use karkas::{Curve, Point2, Point3, Surface};
 use karkas_io::obj::write_surface_obj;
 use karkas_io::scene::{write_scene_png, write_scene_svg, Scene, SceneCurves, SceneMesh, View};
 use karkas_io::svg::{write_curve_svg, write_lines_svg, CurvePlot, LineGroup, LinesPlot};
-use karkas_io::write::{write_atomic, write_curve_csv};
-use std::path::Path;
+use karkas_io::write::write_curve_csv;
 
 const ORDER: usize = 5;
-
-fn write_text(path: &Path, text: &str) -> Result<()> {
-    write_atomic(path, |w| w.write_all(text.as_bytes()))?;
-    Ok(())
-}
 
 pub fn contour(out: &Output) -> Result<Vec<Finding>> {
     let points = contour_53();
