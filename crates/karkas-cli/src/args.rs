@@ -6,7 +6,8 @@
 //! keeps the group and overrides the help text with `#[command(mut_arg(..))]`.
 
 use crate::output::curve::curvature_comb;
-use crate::output::samples::{default_surface_samples, MAX_SAMPLES};
+use crate::output::overwrite::ensure_distinct;
+use crate::output::samples::MAX_SAMPLES;
 use anyhow::{bail, Context, Result};
 use clap::Args;
 use karkas::dps::MAX_ORDER;
@@ -74,18 +75,10 @@ pub struct GridInput {
 }
 
 impl GridInput {
-    /// Reads the grid.
-    pub fn read(&self) -> Result<Grid<Point3>> {
+    /// Reads the grid, after refusing an `output` that would overwrite it.
+    pub fn read_for(&self, output: &Path) -> Result<Grid<Point3>> {
+        ensure_distinct(&self.input, output)?;
         Ok(read_grid(&self.input)?)
-    }
-
-    /// The default samples of a surface over `grid`: [`default_surface_samples`] in each
-    /// direction.
-    pub fn default_samples(grid: &Grid<Point3>) -> (usize, usize) {
-        (
-            default_surface_samples(grid.rows()),
-            default_surface_samples(grid.cols()),
-        )
     }
 }
 

@@ -3,6 +3,7 @@
 
 use anyhow::{bail, Result};
 use karkas::Point;
+use karkas_io::points::{read_curve_points, CurvePoints};
 use std::path::Path;
 
 /// Where the points lie, as far as building a curve or surface goes.
@@ -47,6 +48,20 @@ fn spread<const D: usize>(points: &[Point<D>]) -> Spread {
         Spread::Surface
     } else {
         Spread::OneLine
+    }
+}
+
+/// A command's work on the points of a curve, in the plane or in space.
+pub trait CurveJob {
+    /// Does the work on `points`.
+    fn run<const D: usize>(&self, points: &[Point<D>]) -> Result<()>;
+}
+
+/// Reads the curve points of `input` and runs `job` on them in their dimension.
+pub fn run_on_curve_points(input: &Path, job: &impl CurveJob) -> Result<()> {
+    match read_curve_points(input)? {
+        CurvePoints::Planar(points) => job.run(&points),
+        CurvePoints::Spatial(points) => job.run(&points),
     }
 }
 

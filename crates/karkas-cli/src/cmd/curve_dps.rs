@@ -2,7 +2,7 @@
 //! poles at) the input points (Malozemov et al., docs/methods.md §3).
 
 use crate::args::{check_dps_order, check_dps_step};
-use crate::input::curve_points;
+use crate::input::{curve_points, run_on_curve_points, CurveJob};
 use crate::output::cad::refuse_cad_for_discrete;
 use crate::output::curve::{project, to_space, write_curve_html};
 use crate::output::formats::CURVE_FORMATS;
@@ -13,7 +13,6 @@ use clap::Args;
 use karkas::dps::DiscreteSpline;
 use karkas::{Error, Point};
 use karkas_io::png::write_svg_as_png;
-use karkas_io::points::{read_curve_points, CurvePoints};
 use karkas_io::svg::{render_discrete_curve_svg, write_discrete_curve_svg, DiscreteCurvePlot};
 use karkas_io::write::write_discrete_curve_csv;
 use karkas_io::OutputFormat;
@@ -48,74 +47,70 @@ pub fn run(args: &CurveDpsArgs) -> Result<()> {
     check_dps_order("--order", args.order)?;
     check_dps_step("--n", args.step)?;
     ensure_distinct(&args.input, &args.output)?;
-    match read_curve_points(&args.input)? {
-        CurvePoints::Planar(points) => build_and_write(args, format, &points),
-        CurvePoints::Spatial(points) => build_and_write(args, format, &points),
-    }
+    run_on_curve_points(&args.input, &(args, format))
 }
 
-fn build_and_write<const D: usize>(
-    args: &CurveDpsArgs,
-    format: OutputFormat,
-    points: &[Point<D>],
-) -> Result<()> {
-    curve_points(&args.input, points)?;
-    let m = points.len();
-    let period = m.saturating_mul(args.step);
-    if period > MAX_SAMPLES {
-        bail!(
-            "--n: {m} points x {} = {period} values, more than the {MAX_SAMPLES} that can be written",
-            args.step
-        );
-    }
-    let build = if args.poles {
-        DiscreteSpline::from_poles
-    } else {
-        DiscreteSpline::interpolating
-    };
-    let spline = build(points, args.order, args.step).map_err(|e| {
-        let at = match e {
-            Error::InvalidOrder { .. } => "--order".to_owned(),
-            Error::InvalidStep { .. } | Error::PeriodTooLarge { .. } => "--n".to_owned(),
-            _ => args.input.display().to_string(),
+impl CurveJob for (&CurveDpsArgs, OutputFormat) {
+    fn run<const D: usize>(&self, points: &[Point<D>]) -> Result<()> {
+        let (args, format) = *self;
+        curve_points(&args.input, points)?;
+        let m = points.len();
+        let period = m.saturating_mul(args.step);
+        if period > MAX_SAMPLES {
+            bail!(
+                "--n: {m} points x {} = {period} values, more than the {MAX_SAMPLES} that can be written",
+                args.step
+            );
+        }
+        let build = if args.poles {
+            DiscreteSpline::from_poles
+        } else {
+            DiscreteSpline::interpolating
         };
-        anyhow::Error::new(e).context(at)
-    })?;
-    let mut values = vec![Point::ZERO; period];
-    spline.values(&mut values);
-    match format {
-        OutputFormat::Svg | OutputFormat::Png => {
-            let title = format!(
-                "discrete periodic spline, order {}, {m} {}, n = {} ({period} values){}",
-                args.order,
-                if args.poles { "poles" } else { "nodes" },
-                args.step,
-                if D > 2 { ", x-y projection" } else { "" }
-            );
-            let plot = DiscreteCurvePlot {
-                title: &title,
-                values: &project(&values),
-                dots: false,
-                input: &project(points),
+        let spline = build(points, args.order, args.step).map_err(|e| {
+            let at = match e {
+                Error::InvalidOrder { .. } => "--order".to_owned(),
+                Error::InvalidStep { .. } | Error::PeriodTooLarge { .. } => "--n".to_owned(),
+                _ => args.input.display().to_string(),
             };
-            if format == OutputFormat::Png {
-                let svg = render_discrete_curve_svg(&plot).map_err(anyhow::Error::msg)?;
-                write_svg_as_png(&args.output, &svg)?;
-            } else {
-                write_discrete_curve_svg(&args.output, &plot)?;
+            anyhow::Error::new(e).context(at)
+        })?;
+        let mut values = vec![Point::ZERO; period];
+        spline.values(&mut values);
+        match format {
+            OutputFormat::Svg | OutputFormat::Png => {
+                let title = format!(
+                    "discrete periodic spline, order {}, {m} {}, n = {} ({period} values){}",
+                    args.order,
+                    if args.poles { "poles" } else { "nodes" },
+                    args.step,
+                    if D > 2 { ", x-y projection" } else { "" }
+                );
+                let plot = DiscreteCurvePlot {
+                    title: &title,
+                    values: &project(&values),
+                    dots: false,
+                    input: &project(points),
+                };
+                if format == OutputFormat::Png {
+                    let svg = render_discrete_curve_svg(&plot).map_err(anyhow::Error::msg)?;
+                    write_svg_as_png(&args.output, &svg)?;
+                } else {
+                    write_discrete_curve_svg(&args.output, &plot)?;
+                }
             }
+            OutputFormat::Html => {
+                let title = format!(
+                    "discrete periodic spline, order {}, n = {} ({period} values)",
+                    args.order, args.step
+                );
+                let mut closed = to_space(&values);
+                closed.extend(closed.first().copied());
+                write_curve_html(&args.output, &title, &closed, &to_space(points))?;
+            }
+            _ => write_discrete_curve_csv(&args.output, &values)?,
         }
-        OutputFormat::Html => {
-            let title = format!(
-                "discrete periodic spline, order {}, n = {} ({period} values)",
-                args.order, args.step
-            );
-            let mut closed = to_space(&values);
-            closed.extend(closed.first().copied());
-            write_curve_html(&args.output, &title, &closed, &to_space(points))?;
-        }
-        _ => write_discrete_curve_csv(&args.output, &values)?,
+        report_samples(&args.output, period);
+        Ok(())
     }
-    report_samples(&args.output, period);
-    Ok(())
 }

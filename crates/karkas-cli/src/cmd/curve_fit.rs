@@ -2,18 +2,18 @@
 //! second-derivative jumps (Pavlov, docs/methods.md §4).
 
 use crate::args::{CombOption, CurveSamples};
+use crate::input::{run_on_curve_points, CurveJob};
 use crate::output::cad::write_cad_curve;
-use crate::output::curve::write_curve_figure;
+use crate::output::curve::write_sampled_curve;
 use crate::output::formats::EXACT_CURVE_FORMATS;
 use crate::output::overwrite::ensure_distinct;
 use crate::output::samples::default_curve_samples;
+use crate::output::samples::sample_curve;
 use anyhow::{bail, Context, Result};
 use clap::Args;
 use karkas::fit::{check_knots, fit_curve, fit_curve_adaptive, CurveFit, FitOptions};
 use karkas::{Curve, Point, Point2};
-use karkas_io::points::{read_curve_points, CurvePoints};
-use karkas_io::svg::CurveOverlay;
-use karkas_io::write::{write_atomic, write_curve_csv};
+use karkas_io::write::write_atomic;
 use karkas_io::OutputFormat;
 use std::path::PathBuf;
 use std::time::Instant;
@@ -87,102 +87,81 @@ pub fn run(args: &CurveFitArgs) -> Result<()> {
             bail!("--report: must differ from the output file");
         }
     }
-    match read_curve_points(&args.input)? {
-        CurvePoints::Planar(points) => fit_and_write(args, format, &points),
-        CurvePoints::Spatial(points) => fit_and_write(args, format, &points),
-    }
+    run_on_curve_points(&args.input, &(args, format))
 }
 
-fn fit_and_write<const D: usize>(
-    args: &CurveFitArgs,
-    format: OutputFormat,
-    points: &[Point<D>],
-) -> Result<()> {
-    let options = FitOptions {
-        eps: args.eps.unwrap_or(f64::INFINITY),
-        corners: args.corners.clone(),
-        pin_ends: args.pin_ends,
-        ..Default::default()
-    };
-    let input = || args.input.display().to_string();
-    let started = Instant::now();
-    let fit: CurveFit<D> = match (&args.knots, args.tolerance) {
-        (Some(knots), _) => fit_curve(points, knots, &options).with_context(input)?,
-        (None, Some(tol)) => {
-            let adaptive = fit_curve_adaptive(points, tol, &options).with_context(input)?;
-            if !adaptive.tolerance_met {
-                eprintln!(
-                    "karkas: warning: tolerance {tol} not met (largest deviation {:.6}) with {} knots",
-                    adaptive.fit.max_distance(),
-                    adaptive.fit.spline.knots().len()
-                );
+impl CurveJob for (&CurveFitArgs, OutputFormat) {
+    fn run<const D: usize>(&self, points: &[Point<D>]) -> Result<()> {
+        let (args, format) = *self;
+        let options = FitOptions {
+            eps: args.eps.unwrap_or(f64::INFINITY),
+            corners: args.corners.clone(),
+            pin_ends: args.pin_ends,
+            ..Default::default()
+        };
+        let input = || args.input.display().to_string();
+        let started = Instant::now();
+        let fit: CurveFit<D> = match (&args.knots, args.tolerance) {
+            (Some(knots), _) => fit_curve(points, knots, &options).with_context(input)?,
+            (None, Some(tol)) => {
+                let adaptive = fit_curve_adaptive(points, tol, &options).with_context(input)?;
+                if !adaptive.tolerance_met {
+                    eprintln!(
+                        "karkas: warning: tolerance {tol} not met (largest deviation {:.6}) with {} knots",
+                        adaptive.fit.max_distance(),
+                        adaptive.fit.spline.knots().len()
+                    );
+                }
+                adaptive.fit
             }
-            adaptive.fit
+            (None, None) => bail!("give --knots or --tolerance"),
+        };
+        let fit_time = started.elapsed();
+        let n = args
+            .samples
+            .or_else(|| default_curve_samples(2 * fit.spline.pieces()));
+        let (ts, samples) = sample_curve(&fit.spline, n);
+        if let Some(report) = &args.report {
+            write_atomic(report, |w| {
+                writeln!(w, "point,t,distance")?;
+                for (i, (t, d)) in fit.parameters.iter().zip(&fit.distances).enumerate() {
+                    writeln!(w, "{},{t},{d}", i + 1)?;
+                }
+                Ok(())
+            })?;
         }
-        (None, None) => bail!("give --knots or --tolerance"),
-    };
-    let fit_time = started.elapsed();
-    let n = args
-        .samples
-        .or_else(|| default_curve_samples(2 * fit.spline.pieces()));
-    let mut ts = vec![0.0; n];
-    let mut samples = vec![Point::ZERO; n];
-    fit.spline.sample_into(&mut ts, &mut samples);
-    if let Some(report) = &args.report {
-        write_atomic(report, |w| {
-            writeln!(w, "point,t,distance")?;
-            for (i, (t, d)) in fit.parameters.iter().zip(&fit.distances).enumerate() {
-                writeln!(w, "{},{t},{d}", i + 1)?;
-            }
-            Ok(())
-        })?;
-    }
-    if format.is_cad() {
-        return write_cad_curve(&fit.spline, format, &args.output, args.input.display());
-    }
-    match format {
-        OutputFormat::Csv => write_curve_csv(&args.output, &ts, &samples)?,
-        _ => {
-            let whiskers: Vec<[Point2; 2]> = fit
-                .parameters
-                .iter()
-                .zip(points)
-                .map(|(&t, p)| {
-                    let f = fit.spline.eval(t);
-                    [Point2::new([p[0], p[1]]), Point2::new([f[0], f[1]])]
-                })
-                .collect();
-            let comb = args.comb.teeth(&fit.spline, &ts);
-            let title = format!(
-                "defect-2 cubic spline fit, {} knots, {} points, max deviation {:.3e}",
-                fit.spline.knots().len(),
-                points.len(),
-                fit.max_distance()
-            );
-            let overlay = CurveOverlay {
-                comb: &comb,
-                whiskers: &whiskers,
-            };
-            write_curve_figure(
-                &args.output,
-                format,
-                &title,
-                &samples,
-                points,
-                false,
-                &overlay,
-            )?;
+        if format.is_cad() {
+            return write_cad_curve(&fit.spline, format, &args.output, args.input.display());
         }
+        let whiskers: Vec<[Point2; 2]> = fit
+            .parameters
+            .iter()
+            .zip(points)
+            .map(|(&t, p)| {
+                let f = fit.spline.eval(t);
+                [Point2::new([p[0], p[1]]), Point2::new([f[0], f[1]])]
+            })
+            .collect();
+        let comb = args.comb.teeth(&fit.spline, &ts);
+        let title = format!(
+            "defect-2 cubic spline fit, {} knots, {} points, max deviation {:.3e}",
+            fit.spline.knots().len(),
+            points.len(),
+            fit.max_distance()
+        );
+        let (output, overlay) = (&args.output, (&comb[..], &whiskers[..]));
+        let samples = (&ts[..], &samples[..]);
+        write_sampled_curve(output, format, &title, samples, points, false, overlay)?;
+        eprintln!(
+            "karkas: wrote {} ({n} samples); {} knots, max deviation {:.6e}, rms {:.6e}, f = {:.6e}, p = {:.6e}, fitted in {:.1} ms",
+            args.output.display(),
+            fit.spline.knots().len(),
+            fit.max_distance(),
+            fit.rms_distance(),
+            fit.jump_sum,
+            fit.penalty,
+            fit_time.as_secs_f64() * 1e3
+        );
+        Ok(())
     }
-    eprintln!(
-        "karkas: wrote {} ({n} samples); {} knots, max deviation {:.6e}, rms {:.6e}, f = {:.6e}, p = {:.6e}, fitted in {:.1} ms",
-        args.output.display(),
-        fit.spline.knots().len(),
-        fit.max_distance(),
-        fit.rms_distance(),
-        fit.jump_sum,
-        fit.penalty,
-        fit_time.as_secs_f64() * 1e3
-    );
-    Ok(())
 }

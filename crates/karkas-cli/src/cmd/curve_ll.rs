@@ -1,20 +1,18 @@
 //! `karkas curve ll`: the LL curve of an ordered point list (Aulchenko et al., docs/methods.md §1.2).
 
 use crate::args::{check_ll_order, CombOption, CurveSamples};
-use crate::input::curve_points;
+use crate::input::{curve_points, run_on_curve_points, CurveJob};
 use crate::output::cad::write_cad_curve;
-use crate::output::curve::write_curve_figure;
+use crate::output::curve::write_sampled_curve;
 use crate::output::formats::EXACT_CURVE_FORMATS;
 use crate::output::memory::check_memory;
 use crate::output::overwrite::ensure_distinct;
+use crate::output::samples::sample_curve;
 use crate::output::samples::{default_curve_samples, report_samples, MAX_SAMPLES};
 use anyhow::{Context, Result};
 use clap::Args;
 use karkas::ll::LlCurve;
 use karkas::{Curve, Point, Point2};
-use karkas_io::points::{read_curve_points, CurvePoints};
-use karkas_io::svg::CurveOverlay;
-use karkas_io::write::write_curve_csv;
 use karkas_io::OutputFormat;
 use std::path::PathBuf;
 
@@ -52,74 +50,61 @@ pub fn run(args: &CurveLlArgs) -> Result<()> {
     check_ll_order(args.order)?;
     args.samples.check()?;
     ensure_distinct(&args.input, &args.output)?;
-    match read_curve_points(&args.input)? {
-        CurvePoints::Planar(points) => build_and_write(args, format, &points),
-        CurvePoints::Spatial(points) => build_and_write(args, format, &points),
-    }
+    run_on_curve_points(&args.input, &(args, format))
 }
 
-fn build_and_write<const D: usize>(
-    args: &CurveLlArgs,
-    format: OutputFormat,
-    points: &[Point<D>],
-) -> Result<()> {
-    let build = if args.interpolate {
-        LlCurve::interpolating
-    } else {
-        LlCurve::new
-    };
-    curve_points(&args.input, points)?;
-    let curve =
-        build(points, args.order, args.closed).with_context(|| args.input.display().to_string())?;
-    if format.is_cad() {
-        return write_cad_curve(&curve, format, &args.output, args.input.display());
-    }
-    let n = args
-        .samples
-        .or_else(|| default_curve_samples(points.len()).min(MAX_SAMPLES));
-    check_memory(
-        &format!("curve ll: {n} samples"),
-        (n as u128) * (8 + 8 * D as u128),
-    )?;
-    let mut ts = vec![0.0; n];
-    let mut samples = vec![Point::ZERO; n];
-    curve.sample_into(&mut ts, &mut samples);
-    match format {
-        OutputFormat::Csv => write_curve_csv(&args.output, &ts, &samples)?,
-        _ => {
-            let variant = if args.interpolate {
-                "interpolating "
-            } else {
-                ""
-            };
-            let title = format!(
-                "{variant}LL curve, L = {}, {} points",
-                args.order,
-                points.len()
-            );
-            let comb = args.comb.teeth(&curve, &ts);
-            let whiskers = if args.whiskers {
-                node_whiskers(&curve, points)
-            } else {
-                Vec::new()
-            };
-            let overlay = CurveOverlay {
-                comb: &comb,
-                whiskers: &whiskers,
-            };
-            write_curve_figure(
-                &args.output,
-                format,
-                &title,
-                &samples,
-                points,
-                args.closed,
-                &overlay,
-            )?;
+impl CurveJob for (&CurveLlArgs, OutputFormat) {
+    fn run<const D: usize>(&self, points: &[Point<D>]) -> Result<()> {
+        let (args, format) = *self;
+        let build = if args.interpolate {
+            LlCurve::interpolating
+        } else {
+            LlCurve::new
+        };
+        curve_points(&args.input, points)?;
+        let curve = build(points, args.order, args.closed)
+            .with_context(|| args.input.display().to_string())?;
+        if format.is_cad() {
+            return write_cad_curve(&curve, format, &args.output, args.input.display());
         }
+        let n = args
+            .samples
+            .or_else(|| default_curve_samples(points.len()).min(MAX_SAMPLES));
+        check_memory(
+            &format!("curve ll: {n} samples"),
+            (n as u128) * (8 + 8 * D as u128),
+        )?;
+        let (ts, samples) = sample_curve(&curve, n);
+        let variant = if args.interpolate {
+            "interpolating "
+        } else {
+            ""
+        };
+        let title = format!(
+            "{variant}LL curve, L = {}, {} points",
+            args.order,
+            points.len()
+        );
+        let comb = args.comb.teeth(&curve, &ts);
+        let whiskers = if args.whiskers {
+            node_whiskers(&curve, points)
+        } else {
+            Vec::new()
+        };
+        let (output, overlay) = (&args.output, (&comb[..], &whiskers[..]));
+        let samples = (&ts[..], &samples[..]);
+        write_sampled_curve(
+            output,
+            format,
+            &title,
+            samples,
+            points,
+            args.closed,
+            overlay,
+        )?;
+        report_samples(&args.output, n);
+        Ok(())
     }
-    report_samples(&args.output, n);
-    Ok(())
 }
 
 /// Whiskers from every input point (x-y projection) to the curve at its node: point `i`

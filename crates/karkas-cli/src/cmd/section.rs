@@ -6,11 +6,11 @@
 //! then the `--x` values, the `--y` values, the `--z` values.
 
 use crate::args::{parse_finite_list, parse_pair_with, parse_whole, GridInput, LlSurfaceOptions};
-use crate::output::overwrite::ensure_distinct;
+use crate::output::samples::sample_surface;
 use anyhow::{bail, Context, Result};
 use clap::{Args, ValueEnum};
 use karkas::section::{Plane, Section, SectionOptions, Sectioner, MAX_CELLS};
-use karkas::{Point3, Surface};
+use karkas::Point3;
 use karkas_io::scene::{write_scene_png, write_scene_svg, Scene, SceneCurves, SceneMesh, View};
 use karkas_io::write::write_sections_csv;
 use karkas_io::OutputFormat;
@@ -109,8 +109,7 @@ pub fn run(args: &SectionArgs) -> Result<()> {
         }
     }
     let cuts = planes(args)?;
-    ensure_distinct(&args.grid.input, &args.output)?;
-    let grid = args.grid.read()?;
+    let grid = args.grid.read_for(&args.output)?;
     let surface = args.ll.build(&grid, &args.grid.input)?;
     let default_cells = |lines: usize| (2 * lines).clamp(16, MAX_CELLS);
     let options = SectionOptions {
@@ -140,10 +139,7 @@ pub fn run(args: &SectionArgs) -> Result<()> {
         OutputFormat::Csv => write_sections_csv(&args.output, &lines)?,
         _ => {
             let (nu, nv) = (mesh_samples(grid.rows()), mesh_samples(grid.cols()));
-            let mut us = vec![0.0; nu];
-            let mut vs = vec![0.0; nv];
-            let mut mesh = vec![Point3::ZERO; nu * nv];
-            surface.sample_grid_into(&mut us, &mut vs, &mut mesh);
+            let (_, _, mesh) = sample_surface(&surface, nu, nv);
             let labels: Vec<String> = groups
                 .iter()
                 .zip(GROUPS)

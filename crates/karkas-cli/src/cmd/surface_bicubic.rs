@@ -3,10 +3,8 @@
 
 use crate::args::{ClosedUv, GridInput, GridSamples};
 use crate::input::grid_points;
-use crate::output::cad::write_cad_surface;
 use crate::output::formats::EXACT_SURFACE_FORMATS;
-use crate::output::overwrite::ensure_distinct;
-use crate::output::surface::write_sampled_surface;
+use crate::output::surface::write_grid_surface;
 use anyhow::{Context, Result};
 use clap::{Args, ValueEnum};
 use karkas::param::{BicubicSurface, GridParameterization};
@@ -65,23 +63,19 @@ pub struct SurfaceBicubicArgs {
 pub fn run(args: &SurfaceBicubicArgs) -> Result<()> {
     let format = OutputFormat::from_path(&args.output, &EXACT_SURFACE_FORMATS)?;
     args.samples.check()?;
-    ensure_distinct(&args.grid.input, &args.output)?;
-    let grid = args.grid.read()?;
+    let grid = args.grid.read_for(&args.output)?;
     grid_points(&args.grid.input, grid.as_slice())?;
     let (closed_u, closed_v) = (args.closed.closed_u, args.closed.closed_v);
     let surface = BicubicSurface::new(&grid, args.param.to_library(), closed_u, closed_v)
         .with_context(|| args.grid.input.display().to_string())?;
-    if format.is_cad() {
-        return write_cad_surface(&surface, format, &args.output, args.grid.input.display());
-    }
-    let (nu, nv) = args.samples.or_else(|| GridInput::default_samples(&grid));
     let title = format!("bicubic surface, {} x {} grid", grid.rows(), grid.cols());
-    write_sampled_surface(
+    let input = (args.grid.input.as_path(), &grid);
+    write_grid_surface(
         &surface,
-        (nu, nv),
         format,
         &args.output,
+        input,
+        args.samples.samples,
         &title,
-        Some(&grid),
     )
 }

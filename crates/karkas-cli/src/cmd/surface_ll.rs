@@ -2,10 +2,8 @@
 
 use crate::args::{GridInput, GridSamples, LlSurfaceOptions};
 use crate::input::grid_points;
-use crate::output::cad::write_cad_surface;
 use crate::output::formats::EXACT_SURFACE_FORMATS;
-use crate::output::overwrite::ensure_distinct;
-use crate::output::surface::write_sampled_surface;
+use crate::output::surface::write_grid_surface;
 use anyhow::Result;
 use clap::Args;
 use karkas_io::OutputFormat;
@@ -32,26 +30,22 @@ pub fn run(args: &SurfaceLlArgs) -> Result<()> {
     let format = OutputFormat::from_path(&args.output, &EXACT_SURFACE_FORMATS)?;
     args.ll.check()?;
     args.samples.check()?;
-    ensure_distinct(&args.grid.input, &args.output)?;
-    let grid = args.grid.read()?;
+    let grid = args.grid.read_for(&args.output)?;
     grid_points(&args.grid.input, grid.as_slice())?;
     let surface = args.ll.build(&grid, &args.grid.input)?;
-    if format.is_cad() {
-        return write_cad_surface(&surface, format, &args.output, args.grid.input.display());
-    }
-    let (nu, nv) = args.samples.or_else(|| GridInput::default_samples(&grid));
     let title = format!(
         "LL surface, L = {}, {} x {} grid",
         args.ll.order,
         grid.rows(),
         grid.cols()
     );
-    write_sampled_surface(
+    let input = (args.grid.input.as_path(), &grid);
+    write_grid_surface(
         &surface,
-        (nu, nv),
         format,
         &args.output,
+        input,
+        args.samples.samples,
         &title,
-        Some(&grid),
     )
 }

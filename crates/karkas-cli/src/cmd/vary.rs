@@ -92,11 +92,11 @@ pub fn run(args: &VaryArgs) -> Result<()> {
             bail!("{name}: '{v}' is not a finite number");
         }
     }
-    ensure_distinct(&args.grid.input, &args.output)?;
     if let Some(mask) = &args.fixed {
+        // The same message as for the grid, which names only the output.
         ensure_distinct(mask, &args.output)?;
     }
-    let grid = args.grid.read()?;
+    let grid = args.grid.read_for(&args.output)?;
     let (n, m) = (grid.rows(), grid.cols());
     let axis = args.coord as usize;
     let matrix = Grid::from_fn(n, m, |i, j| grid.get(i, j)[axis]);

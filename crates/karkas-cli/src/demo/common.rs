@@ -5,6 +5,7 @@ use crate::output::surface::isoparametric_lines;
 use anyhow::{Context, Result};
 use karkas::{Grid, Point3};
 use karkas_io::viewer::{write_viewer_html, ViewerCurve, ViewerScene, ViewerSurface};
+use karkas_io::write::write_atomic;
 use std::cell::RefCell;
 use std::path::{Path, PathBuf};
 
@@ -80,6 +81,12 @@ impl Output {
         names.dedup();
         names
     }
+}
+
+/// Writes `text` to the file at `path`.
+pub fn write_text(path: &Path, text: &str) -> Result<()> {
+    write_atomic(path, |w| w.write_all(text.as_bytes()))?;
+    Ok(())
 }
 
 /// Writes the 3-D viewer page `name` of a surface sampled `rows x cols` (row-major), with

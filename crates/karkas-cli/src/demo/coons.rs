@@ -3,11 +3,12 @@
 //! spline Gordon surfaces side by side, the composite Coons surfaces as meshes, and the
 //! distance of every surface to its body (foot-point projection onto the closed form).
 
-use super::common::{write_viewer, Finding, Output};
+use super::common::{write_text, write_viewer, Finding, Output};
 use super::coons_data::{
     body_line, curve_family_csv, figure_3_sheet, fuselage, fuselage_point_lists, Body,
     FUSELAGE_STATIONS, FUSELAGE_STRINGERS,
 };
+use crate::output::samples::sample_surface;
 use anyhow::Result;
 use karkas::coons::{
     Along, CoonsSurface, CrossDerivatives, CurveFit, CurveNetwork, NetworkAxis, PointNetwork,
@@ -16,7 +17,6 @@ use karkas::coons::{
 use karkas::{Point2, Point3, Surface};
 use karkas_io::obj::write_surface_obj;
 use karkas_io::svg::{write_lines_svg, LineGroup, LinesPlot};
-use karkas_io::write::write_atomic;
 use std::f64::consts::TAU;
 use std::path::Path;
 
@@ -73,14 +73,7 @@ pub fn figure_3(out: &Output) -> Result<Vec<Finding>> {
     };
     let u_lists: Vec<_> = (0..3).map(|j| sample(Along::U, j as f64)).collect();
     let v_lists: Vec<_> = (0..3).map(|i| sample(Along::V, i as f64)).collect();
-    write_text(
-        &out.file("coons-fig3-u-curves.csv"),
-        &curve_family_csv(&u_lists),
-    )?;
-    write_text(
-        &out.file("coons-fig3-v-curves.csv"),
-        &curve_family_csv(&v_lists),
-    )?;
+    write_network(out, "coons-fig3", &u_lists, &v_lists)?;
 
     let panels = [&lagrange, &natural, &composite];
     let width = 11.0;
@@ -174,14 +167,7 @@ pub fn fuselage_network(out: &Output) -> Result<Vec<Finding>> {
 
     // The same network as point lists, through the command line's path.
     let (frames, stringers) = fuselage_point_lists();
-    write_text(
-        &out.file("fuselage-u-curves.csv"),
-        &curve_family_csv(&stringers),
-    )?;
-    write_text(
-        &out.file("fuselage-v-curves.csv"),
-        &curve_family_csv(&frames),
-    )?;
+    write_network(out, "fuselage", &stringers, &frames)?;
     let points = PointNetwork::new(&frames, &stringers, CurveFit::CubicSpline, 1e-6)?;
     let from_points =
         CoonsSurface::gordon_spline(points.network(), SplineEnds::NotAKnot, DEFAULT_TOLERANCE)?;
@@ -234,9 +220,16 @@ pub fn fuselage_network(out: &Output) -> Result<Vec<Finding>> {
     Ok(findings)
 }
 
-fn write_text(path: &Path, text: &str) -> Result<()> {
-    write_atomic(path, |w| w.write_all(text.as_bytes()))?;
-    Ok(())
+/// Writes the curves of a network as `{stem}-u-curves.csv` and `{stem}-v-curves.csv`.
+fn write_network(out: &Output, stem: &str, u: &[Vec<Point3>], v: &[Vec<Point3>]) -> Result<()> {
+    write_text(
+        &out.file(format!("{stem}-u-curves.csv")),
+        &curve_family_csv(u),
+    )?;
+    write_text(
+        &out.file(format!("{stem}-v-curves.csv")),
+        &curve_family_csv(v),
+    )
 }
 
 /// Writes the OBJ mesh `{stem}.obj` and the viewer page `{stem}.html` of `surface`.
@@ -248,10 +241,7 @@ fn write_mesh(
     nu: usize,
     nv: usize,
 ) -> Result<()> {
-    let mut us = vec![0.0; nu];
-    let mut vs = vec![0.0; nv];
-    let mut mesh = vec![Point3::ZERO; nu * nv];
-    surface.sample_grid_into(&mut us, &mut vs, &mut mesh);
+    let (_, _, mesh) = sample_surface(surface, nu, nv);
     write_surface_obj(&out.file(format!("{stem}.obj")), nu, nv, &mesh)?;
     write_viewer(
         out,

@@ -3,9 +3,10 @@
 //! beside ours as context: its printed coordinates carry transcription errors.
 
 use super::common::{Finding, Output};
+use crate::output::samples::sample_curve;
 use anyhow::{Context, Result};
 use karkas::fit::{fit_curve, FitOptions, PenaltyRule};
-use karkas::{Curve, Point, Point2};
+use karkas::{Curve, Point2};
 use karkas_io::svg::{write_fit_svg, FitPlot};
 use karkas_io::write::{write_atomic, write_curve_csv};
 
@@ -88,9 +89,7 @@ pub fn run(out: &Output) -> Result<Vec<Finding>> {
         w.write_all(table.as_bytes())
     })?;
     let n = 1000;
-    let mut ts = vec![0.0; n];
-    let mut samples = vec![Point::ZERO; n];
-    active.spline.sample_into(&mut ts, &mut samples);
+    let (ts, samples) = sample_curve(&active.spline, n);
     write_curve_csv(&out.file("hydrofoil-fit.csv"), &ts, &samples)?;
     let feet: Vec<Point2> = active
         .parameters

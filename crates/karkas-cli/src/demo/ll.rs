@@ -2,38 +2,26 @@
 //! with 15 sections x = const and 11 sections y = const, hidden lines removed (docs/methods.md
 //! §1.4, §1.6).
 
-use super::common::{write_viewer, Finding, Output};
+use super::common::{write_text, write_viewer, Finding, Output};
 use super::data::{aircraft_15x31, contour_53, contour_csv, grid_csv};
+use crate::output::samples::{sample_curve, sample_surface};
 use anyhow::Result;
 use karkas::ll::{LlCurve, LlSurface};
 use karkas::section::{Plane, Section, SectionOptions, Sectioner};
-use karkas::{Curve, Point, Point2, Point3, Surface};
+use karkas::{Curve, Point2, Point3, Surface};
 use karkas_io::obj::write_surface_obj;
 use karkas_io::scene::{write_scene_png, write_scene_svg, Scene, SceneCurves, SceneMesh, View};
 use karkas_io::svg::{write_curve_svg, write_lines_svg, CurvePlot, LineGroup, LinesPlot};
-use karkas_io::write::{write_atomic, write_curve_csv};
-use std::path::Path;
+use karkas_io::write::write_curve_csv;
 
 const ORDER: usize = 5;
-
-fn write_text(path: &Path, text: &str) -> Result<()> {
-    write_atomic(path, |w| w.write_all(text.as_bytes()))?;
-    Ok(())
-}
-
-fn sample<const D: usize>(curve: &LlCurve<D>, n: usize) -> (Vec<f64>, Vec<Point<D>>) {
-    let mut ts = vec![0.0; n];
-    let mut pts = vec![Point::ZERO; n];
-    curve.sample_into(&mut ts, &mut pts);
-    (ts, pts)
-}
 
 pub fn contour(out: &Output) -> Result<Vec<Finding>> {
     let points = contour_53();
     write_text(&out.file("contour-53.csv"), &contour_csv(&points))?;
     let approx = LlCurve::new(&points, ORDER, true)?;
     let interp = LlCurve::interpolating(&points, ORDER, true)?;
-    let (ts, samples) = sample(&approx, 2000);
+    let (ts, samples) = sample_curve(&approx, 2000);
     write_curve_csv(&out.file("contour-ll5.csv"), &ts, &samples)?;
     write_curve_svg(
         &out.file("contour-ll5.svg"),
@@ -44,7 +32,7 @@ pub fn contour(out: &Output) -> Result<Vec<Finding>> {
             closed_input: true,
         },
     )?;
-    let (_, interp_samples) = sample(&interp, 2000);
+    let (_, interp_samples) = sample_curve(&interp, 2000);
     write_curve_svg(
         &out.file("contour-ll5-interpolating.svg"),
         &CurvePlot {
@@ -160,10 +148,7 @@ pub fn aircraft(out: &Output) -> Result<Vec<Finding>> {
         buttocks.extend(cut(1, y)?);
     }
     let (nu, nv) = (141, 121);
-    let mut us = vec![0.0; nu];
-    let mut vs = vec![0.0; nv];
-    let mut mesh = vec![Point3::ZERO; nu * nv];
-    surface.sample_grid_into(&mut us, &mut vs, &mut mesh);
+    let (_, _, mesh) = sample_surface(&surface, nu, nv);
     write_surface_obj(&out.file("aircraft-ll5.obj"), nu, nv, &mesh)?;
     let scene = Scene {
         title: "Aulchenko et al.: LL surface, L = 5, of the aircraft-like body (right half): \

@@ -5,6 +5,7 @@
 
 use super::common::{write_viewer, Finding, Output};
 use super::param_experiment::{helix_experiment, seed_experiments, SeedExperiment};
+use crate::output::samples::sample_surface;
 use anyhow::{Context, Result};
 use karkas::param::BicubicSurface;
 use karkas::{Point3, Surface};
@@ -40,12 +41,7 @@ fn experiment(out: &Output, row: &SeedExperiment) -> Result<Finding> {
     let name = slug(row.label);
     write_grid_csv(&out.file(format!("{name}-nodes.csv")), &outcome.nodes)?;
     let (nu, nv) = (41, 121);
-    let mut us = vec![0.0; nu];
-    let mut vs = vec![0.0; nv];
-    let mut mesh = vec![Point3::ZERO; nu * nv];
-    outcome
-        .surface
-        .sample_grid_into(&mut us, &mut vs, &mut mesh);
+    let (_, _, mesh) = sample_surface(&outcome.surface, nu, nv);
     write_surface_obj(&out.file(format!("{name}.obj")), nu, nv, &mesh)?;
     let frame = frame_lines(&outcome.surface);
     write_viewer(

@@ -304,15 +304,14 @@ pub fn render_html(outcomes: &[ExampleOutcome], seconds: f64) -> String {
          The numbers are also in <a href=\"report.json\">report.json</a>.</p>",
         env!("CARGO_PKG_VERSION")
     );
-    html.push_str("<ul>\n");
-    for (seed, title) in PAPERS {
-        let _ = writeln!(
-            html,
-            "<li><a href=\"#seed-{seed}\">{}</a></li>",
-            escape(title)
-        );
-    }
-    html.push_str("</ul>\n");
+    let contents: String = PAPERS
+        .iter()
+        .map(|(seed, title)| {
+            let title = escape(title);
+            format!("<li><a href=\"#seed-{seed}\">{title}</a></li>\n")
+        })
+        .collect();
+    let _ = write!(html, "<ul>\n{contents}</ul>\n");
     for (seed, title) in PAPERS {
         let _ = writeln!(html, "<h2 id=\"seed-{seed}\">{}</h2>", escape(title));
         for o in outcomes.iter().filter(|o| o.seed == seed) {

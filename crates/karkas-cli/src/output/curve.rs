@@ -5,11 +5,30 @@ use anyhow::{bail, Result};
 use karkas::{Curve, Point, Point2, Point3};
 use karkas_io::svg::{write_curve_picture, CurveOverlay, CurvePlot};
 use karkas_io::viewer::{write_viewer_html, ViewerCurve, ViewerScene};
+use karkas_io::write::write_curve_csv;
 use karkas_io::OutputFormat;
 use std::path::Path;
 
 /// The most teeth a curvature comb gets.
 const COMB_TEETH: usize = 300;
+
+/// Writes the samples `ts`, `curve` of a curve in `format`: the `t,x,y[,z]` CSV, else as
+/// [`write_curve_figure`] does with the curvature comb and whiskers `overlay`.
+pub fn write_sampled_curve<const D: usize>(
+    output: &Path,
+    format: OutputFormat,
+    title: &str,
+    (ts, curve): (&[f64], &[Point<D>]),
+    input: &[Point<D>],
+    closed_input: bool,
+    (comb, whiskers): (&[[Point2; 2]], &[[Point2; 2]]),
+) -> Result<()> {
+    if format == OutputFormat::Csv {
+        return Ok(write_curve_csv(output, ts, curve)?);
+    }
+    let overlay = CurveOverlay { comb, whiskers };
+    write_curve_figure(output, format, title, curve, input, closed_input, &overlay)
+}
 
 /// Writes a curve picture (`.svg`, `.png`: x-y projection, equal axis scales) or the viewer
 /// page (`.html`, in space) of the samples `curve` over the `input` points.

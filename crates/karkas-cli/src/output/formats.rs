@@ -12,37 +12,28 @@ pub const CURVE_FORMATS: [OutputFormat; 4] = [
 
 /// Every format a sampled surface can be written in: the sampled CSV, meshes, pictures and
 /// the viewer page.
-pub const SURFACE_FORMATS: [OutputFormat; 10] = [
-    OutputFormat::Csv,
-    OutputFormat::Obj,
-    OutputFormat::Stl,
-    OutputFormat::Ply,
-    OutputFormat::Vtk,
-    OutputFormat::Vts,
-    OutputFormat::Glb,
-    OutputFormat::Svg,
-    OutputFormat::Png,
-    OutputFormat::Html,
-];
+pub const SURFACE_FORMATS: [OutputFormat; 10] = concat(
+    concat::<1, 6, 7>([OutputFormat::Csv], OutputFormat::MESHES),
+    [OutputFormat::Svg, OutputFormat::Png, OutputFormat::Html],
+);
 
 /// [`CURVE_FORMATS`] and the exact B-spline curve as STEP or IGES, for the commands whose
 /// curve is a piecewise polynomial.
-pub const EXACT_CURVE_FORMATS: [OutputFormat; 6] = with_cad(CURVE_FORMATS);
+pub const EXACT_CURVE_FORMATS: [OutputFormat; 6] = concat(CURVE_FORMATS, OutputFormat::CAD);
 
 /// [`SURFACE_FORMATS`] and the exact B-spline surface as STEP or IGES.
-pub const EXACT_SURFACE_FORMATS: [OutputFormat; 12] = with_cad(SURFACE_FORMATS);
+pub const EXACT_SURFACE_FORMATS: [OutputFormat; 12] = concat(SURFACE_FORMATS, OutputFormat::CAD);
 
-/// `formats` followed by [`OutputFormat::CAD`] (`M` must be `N + 2`).
-const fn with_cad<const N: usize, const M: usize>(formats: [OutputFormat; N]) -> [OutputFormat; M] {
-    assert!(M == N + OutputFormat::CAD.len());
+/// `first` followed by `second` (`M` must be `N + K`).
+const fn concat<const N: usize, const K: usize, const M: usize>(
+    first: [OutputFormat; N],
+    second: [OutputFormat; K],
+) -> [OutputFormat; M] {
+    assert!(M == N + K);
     let mut all = [OutputFormat::Csv; M];
     let mut k = 0;
     while k < M {
-        all[k] = if k < N {
-            formats[k]
-        } else {
-            OutputFormat::CAD[k - N]
-        };
+        all[k] = if k < N { first[k] } else { second[k - N] };
         k += 1;
     }
     all

@@ -1,5 +1,6 @@
 //! How many samples a command writes: the defaults, the cap, and the line that reports them.
 
+use karkas::{Curve, Point, Point3, Surface};
 use std::path::Path;
 
 /// The largest number of samples one command writes (a guard against a mistyped count
@@ -14,6 +15,26 @@ pub fn default_curve_samples(k: usize) -> usize {
 /// The default number of surface samples along a direction with `k` grid lines.
 pub fn default_surface_samples(k: usize) -> usize {
     (4 * k).max(50)
+}
+
+/// `n` samples of `curve`, uniform over its domain, ends included: the parameters and points.
+pub fn sample_curve<const D: usize>(curve: &impl Curve<D>, n: usize) -> (Vec<f64>, Vec<Point<D>>) {
+    let (mut ts, mut points) = (vec![0.0; n], vec![Point::ZERO; n]);
+    curve.sample_into(&mut ts, &mut points);
+    (ts, points)
+}
+
+/// `nu x nv` samples of `surface`, uniform over its domain, ends included: the parameters
+/// `u`, `v` and the points (row-major, `u` outer).
+pub fn sample_surface(
+    surface: &impl Surface<3>,
+    nu: usize,
+    nv: usize,
+) -> (Vec<f64>, Vec<f64>, Vec<Point3>) {
+    let (mut us, mut vs) = (vec![0.0; nu], vec![0.0; nv]);
+    let mut points = vec![Point3::ZERO; nu * nv];
+    surface.sample_grid_into(&mut us, &mut vs, &mut points);
+    (us, vs, points)
 }
 
 /// Prints what was written: `karkas: wrote OUTPUT (N samples)`.

@@ -2,9 +2,11 @@
 //! .glb`), pictures (`.svg .png`: the shaded surface with isoparametric lines, hidden parts
 //! removed) and the 3-D viewer page (`.html`).
 
+use super::cad::write_cad_surface;
 use super::memory::check_memory;
-use super::samples::report_samples;
+use super::samples::{default_surface_samples, report_samples, sample_surface};
 use anyhow::{bail, Result};
+use karkas::bspline::ToBSplineSurface;
 use karkas::{Grid, Point3, Surface};
 use karkas_io::mesh::{write_surface_mesh, MeshOptions};
 use karkas_io::obj::write_surface_obj;
@@ -39,10 +41,7 @@ pub fn write_sampled_surface(
         &format!("{}: {nu} x {nv} samples", output.display()),
         (nu as u128) * (nv as u128) * 24 + (nu as u128 + nv as u128) * 8,
     )?;
-    let mut us = vec![0.0; nu];
-    let mut vs = vec![0.0; nv];
-    let mut samples = vec![Point3::ZERO; nu * nv];
-    surface.sample_grid_into(&mut us, &mut vs, &mut samples);
+    let (us, vs, samples) = sample_surface(surface, nu, nv);
     match format {
         OutputFormat::Obj => write_surface_obj(output, nu, nv, &samples)?,
         OutputFormat::Csv => write_surface_csv(output, &us, &vs, &samples)?,
@@ -53,6 +52,27 @@ pub fn write_sampled_surface(
     }
     report_samples(output, nu * nv);
     Ok(())
+}
+
+/// Writes a surface built from `grid` (read from `input`, which errors name) in the format of
+/// `output`: its exact B-spline form as STEP or IGES, else `samples` (default
+/// [`default_surface_samples`] per grid line) as [`write_sampled_surface`] writes them.
+pub fn write_grid_surface(
+    surface: &(impl Surface<3> + ToBSplineSurface<3>),
+    format: OutputFormat,
+    output: &Path,
+    (input, grid): (&Path, &Grid<Point3>),
+    samples: Option<(usize, usize)>,
+    title: &str,
+) -> Result<()> {
+    if format.is_cad() {
+        return write_cad_surface(surface, format, output, input.display());
+    }
+    let samples = samples.unwrap_or((
+        default_surface_samples(grid.rows()),
+        default_surface_samples(grid.cols()),
+    ));
+    write_sampled_surface(surface, samples, format, output, title, Some(grid))
 }
 
 /// Writes the sampled surface `samples` (row-major, `u` outer) at `output` in `format`, which
