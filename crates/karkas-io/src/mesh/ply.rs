@@ -374,10 +374,7 @@ pub fn parse_ply(bytes: &[u8], path: &Path) -> Result<TriangleMesh, IoError> {
 
 /// Reads the PLY file `path` as a mesh.
 pub fn read_ply(path: &Path) -> Result<TriangleMesh, IoError> {
-    let bytes = std::fs::read(path).map_err(|source| IoError::Open {
-        path: path.to_path_buf(),
-        source,
-    })?;
+    let bytes = std::fs::read(path).map_err(IoError::open(path))?;
     parse_ply(&bytes, path)
 }
 

@@ -67,10 +67,7 @@ pub fn write_curve_picture(
 ) -> Result<(), IoError> {
     let rendered = render_curve_svg_with(plot, overlay);
     if png {
-        let svg = rendered.map_err(|source| IoError::Picture {
-            path: path.to_path_buf(),
-            source,
-        })?;
+        let svg = rendered.map_err(IoError::picture(path))?;
         crate::picture::png::write_svg_as_png(path, &svg)
     } else {
         write_rendered(path, rendered)
@@ -297,10 +294,7 @@ fn render_chart(
 /// Writes a rendered picture to `path` atomically; a rendering error becomes an
 /// [`IoError::Picture`] naming `path`, and nothing is written.
 fn write_rendered(path: &Path, rendered: Result<String, PictureError>) -> Result<(), IoError> {
-    let svg = rendered.map_err(|source| IoError::Picture {
-        path: path.to_path_buf(),
-        source,
-    })?;
+    let svg = rendered.map_err(IoError::picture(path))?;
     write_atomic(path, |out| out.write_all(svg.as_bytes()))
 }
 
