@@ -157,6 +157,30 @@ impl IoError {
             source,
         }))
     }
+
+    /// For `map_err`: an [`IoError::Open`] of `path`.
+    pub(crate) fn open(path: &Path) -> impl Fn(std::io::Error) -> IoError + '_ {
+        |source| IoError::Open {
+            path: path.to_path_buf(),
+            source,
+        }
+    }
+
+    /// For `map_err`: an [`IoError::InvalidMesh`] for the destination `path`.
+    pub(crate) fn invalid_mesh(path: &Path) -> impl Fn(MeshError) -> IoError + '_ {
+        |source| IoError::InvalidMesh {
+            path: path.to_path_buf(),
+            source,
+        }
+    }
+
+    /// For `map_err`: an [`IoError::Picture`] for the destination `path`.
+    pub(crate) fn picture(path: &Path) -> impl Fn(PictureError) -> IoError + '_ {
+        |source| IoError::Picture {
+            path: path.to_path_buf(),
+            source,
+        }
+    }
 }
 
 /// A 1-based line of a named file: where a parse error points.

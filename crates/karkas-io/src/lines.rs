@@ -19,10 +19,7 @@ pub(crate) struct Row {
 
 /// Reads a whole text file, as [`IoError::Open`] on failure (non-UTF-8 text included).
 pub(crate) fn read_text(path: &Path) -> Result<String, IoError> {
-    std::fs::read_to_string(path).map_err(|source| IoError::Open {
-        path: path.to_path_buf(),
-        source,
-    })
+    std::fs::read_to_string(path).map_err(IoError::open(path))
 }
 
 /// `text` without a leading byte-order mark (spreadsheets like to write one).
@@ -159,10 +156,7 @@ impl<'p, R: std::io::BufRead> RowReader<'p, R> {
             let read = self
                 .reader
                 .read_line(&mut self.buf)
-                .map_err(|source| IoError::Open {
-                    path: self.path.to_path_buf(),
-                    source,
-                })?;
+                .map_err(IoError::open(self.path))?;
             if read == 0 {
                 return Ok(None);
             }
@@ -217,10 +211,7 @@ impl<'p, R: std::io::BufRead> RowReader<'p, R> {
 pub(crate) fn open_buffered(path: &Path) -> Result<std::io::BufReader<std::fs::File>, IoError> {
     std::fs::File::open(path)
         .map(|f| std::io::BufReader::with_capacity(1 << 16, f))
-        .map_err(|source| IoError::Open {
-            path: path.to_path_buf(),
-            source,
-        })
+        .map_err(IoError::open(path))
 }
 
 /// The 0-based positions of the columns `names` in the header row `header` of `path` (names

@@ -54,10 +54,7 @@ pub fn write_surface_mesh(
     grid: &Grid<Point3>,
     options: &MeshOptions,
 ) -> Result<(), IoError> {
-    let mesh = TriangleMesh::from_grid(grid).map_err(|source| IoError::InvalidMesh {
-        path: path.to_path_buf(),
-        source,
-    })?;
+    let mesh = TriangleMesh::from_grid(grid).map_err(IoError::invalid_mesh(path))?;
     write_mesh(path, &mesh, options)
 }
 

@@ -27,10 +27,7 @@ use crate::write::write_atomic;
 /// ([`MeshError::TooLargeForGltf`]) is an [`IoError::InvalidMesh`], nothing written.
 pub fn write_mesh_glb(path: &Path, mesh: &TriangleMesh) -> Result<(), IoError> {
     mesh.check_writable(path)?;
-    buffer_lengths(mesh).map_err(|source| IoError::InvalidMesh {
-        path: path.to_path_buf(),
-        source,
-    })?;
+    buffer_lengths(mesh).map_err(IoError::invalid_mesh(path))?;
     write_atomic(path, |out| render_mesh_glb(mesh, out))
 }
 

@@ -39,10 +39,7 @@ pub fn write_surface_obj(
     nv: usize,
     points: &[Point3],
 ) -> Result<(), IoError> {
-    check_grid(nu, nv, points.len()).map_err(|source| IoError::InvalidMesh {
-        path: path.to_path_buf(),
-        source,
-    })?;
+    check_grid(nu, nv, points.len()).map_err(IoError::invalid_mesh(path))?;
     write_atomic(path, |out| render_surface_obj(nu, nv, points, out))
 }
 

@@ -268,16 +268,17 @@ pub fn parse_ply(bytes: &[u8], path: &Path) -> Result<TriangleMesh, IoError> {
         at: 0,
         tokens: text.split_ascii_whitespace(),
     };
-    let truncated = |what: &str| {
-        data_error(
-            path,
-            format!("the PLY body ends early or is malformed in element '{what}'"),
-        )
-    };
     let mut positions = Vec::new();
     let mut normals = Vec::new();
     let mut triangles = Vec::new();
     for element in &elements {
+        let truncated = || {
+            let what = &element.name;
+            data_error(
+                path,
+                format!("the PLY body ends early or is malformed in element '{what}'"),
+            )
+        };
         let find = |n: &str| element.properties.iter().position(|p| p.name == n);
         let xyz = [find("x"), find("y"), find("z")];
         let nxyz = [find("nx"), find("ny"), find("nz")];
@@ -297,24 +298,15 @@ pub fn parse_ply(bytes: &[u8], path: &Path) -> Result<TriangleMesh, IoError> {
             let mut face_list = None;
             for (k, property) in element.properties.iter().enumerate() {
                 match property.list_count {
-                    None => {
-                        values[k] = body
-                            .value(property.scalar)
-                            .ok_or_else(|| truncated(&element.name))?
-                    }
+                    None => values[k] = body.value(property.scalar).ok_or_else(truncated)?,
                     Some(count_type) => {
-                        let count = body
-                            .value(count_type)
-                            .ok_or_else(|| truncated(&element.name))?;
+                        let count = body.value(count_type).ok_or_else(truncated)?;
                         if !(0.0..=1e6).contains(&count) {
-                            return Err(truncated(&element.name));
+                            return Err(truncated());
                         }
                         list.clear();
                         for _ in 0..count as usize {
-                            list.push(
-                                body.value(property.scalar)
-                                    .ok_or_else(|| truncated(&element.name))?,
-                            );
+                            list.push(body.value(property.scalar).ok_or_else(truncated)?);
                         }
                         if is_face
                             && (property.name == "vertex_indices"
@@ -374,10 +366,7 @@ pub fn parse_ply(bytes: &[u8], path: &Path) -> Result<TriangleMesh, IoError> {
 
 /// Reads the PLY file `path` as a mesh.
 pub fn read_ply(path: &Path) -> Result<TriangleMesh, IoError> {
-    let bytes = std::fs::read(path).map_err(|source| IoError::Open {
-        path: path.to_path_buf(),
-        source,
-    })?;
+    let bytes = std::fs::read(path).map_err(IoError::open(path))?;
     parse_ply(&bytes, path)
 }
 

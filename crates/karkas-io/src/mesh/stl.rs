@@ -47,10 +47,7 @@ pub fn write_surface_stl(
             Err(_) => Err(MeshError::TooManyTriangles { triangles }),
         }
     });
-    checked.map_err(|source| IoError::InvalidMesh {
-        path: path.to_path_buf(),
-        source,
-    })?;
+    checked.map_err(IoError::invalid_mesh(path))?;
     let triangles = grid_triangles(nu, nv).map(|t| triangle(t.map(|k| points[k])));
     write_atomic(path, |out| stl_io::write_stl(&mut &mut *out, triangles))
 }
@@ -97,10 +94,7 @@ pub fn render_mesh_stl_ascii(mesh: &TriangleMesh, out: &mut dyn io::Write) -> io
 
 /// Reads the STL file `path` (binary or ASCII) as a mesh without normals.
 pub fn read_stl(path: &Path) -> Result<TriangleMesh, IoError> {
-    let file = std::fs::File::open(path).map_err(|source| IoError::Open {
-        path: path.to_path_buf(),
-        source,
-    })?;
+    let file = std::fs::File::open(path).map_err(IoError::open(path))?;
     let mut reader = std::io::BufReader::new(file);
     let indexed = stl_io::read_stl(&mut reader).map_err(|source| IoError::Decode {
         path: path.to_path_buf(),

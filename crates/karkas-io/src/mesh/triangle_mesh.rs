@@ -113,10 +113,7 @@ impl TriangleMesh {
     /// [`TriangleMesh::validate`] for a writer of `path`: [`IoError::InvalidMesh`] when a
     /// check fails.
     pub(crate) fn check_writable(&self, path: &Path) -> Result<(), IoError> {
-        self.validate().map_err(|source| IoError::InvalidMesh {
-            path: path.to_path_buf(),
-            source,
-        })
+        self.validate().map_err(IoError::invalid_mesh(path))
     }
 
     /// [`TriangleMesh::validate`] for a mesh read from `path`: [`IoError::MalformedMesh`] when

@@ -39,10 +39,7 @@ pub fn write_mesh_vtk(path: &Path, mesh: &TriangleMesh) -> Result<(), IoError> {
 pub fn write_mesh_vts(path: &Path, mesh: &TriangleMesh) -> Result<(), IoError> {
     mesh.check_writable(path)?;
     if mesh.grid.is_none() {
-        return Err(IoError::InvalidMesh {
-            path: path.to_path_buf(),
-            source: MeshError::NotStructured,
-        });
+        return Err(IoError::invalid_mesh(path)(MeshError::NotStructured));
     }
     write_atomic(path, |out| render_mesh_vts(mesh, out))
 }

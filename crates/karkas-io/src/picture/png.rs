@@ -65,10 +65,7 @@ pub fn render_png(svg: &str, scale: f32) -> Result<Vec<u8>, PictureError> {
 
 /// Renders `svg` (at twice its size) and writes the PNG to `path`, atomically.
 pub fn write_svg_as_png(path: &Path, svg: &str) -> Result<(), IoError> {
-    let png = render_png(svg, 2.0).map_err(|source| IoError::Picture {
-        path: path.to_path_buf(),
-        source,
-    })?;
+    let png = render_png(svg, 2.0).map_err(IoError::picture(path))?;
     write_atomic(path, |out| out.write_all(&png))
 }
 

@@ -315,30 +315,14 @@ impl DepthBuffer {
         if area.abs() < 1e-12 {
             return;
         }
-        let x0 = t
-            .iter()
-            .map(|p| p.0)
-            .fold(f64::INFINITY, f64::min)
-            .floor()
-            .max(0.0) as usize;
-        let y0 = t
-            .iter()
-            .map(|p| p.1)
-            .fold(f64::INFINITY, f64::min)
-            .floor()
-            .max(0.0) as usize;
-        let x1 = (t
-            .iter()
-            .map(|p| p.0)
-            .fold(f64::NEG_INFINITY, f64::max)
-            .ceil() as usize)
-            .min(self.width);
-        let y1 = (t
-            .iter()
-            .map(|p| p.1)
-            .fold(f64::NEG_INFINITY, f64::max)
-            .ceil() as usize)
-            .min(self.height);
+        let (xs, ys) = (t.map(|p| p.0), t.map(|p| p.1));
+        let low =
+            |v: [f64; 3]| v.into_iter().fold(f64::INFINITY, f64::min).floor().max(0.0) as usize;
+        let high = |v: [f64; 3], limit: usize| {
+            (v.into_iter().fold(f64::NEG_INFINITY, f64::max).ceil() as usize).min(limit)
+        };
+        let (x0, y0) = (low(xs), low(ys));
+        let (x1, y1) = (high(xs, self.width), high(ys, self.height));
         for y in y0..y1 {
             for x in x0..x1 {
                 let (px, py) = (x as f64 + 0.5, y as f64 + 0.5);

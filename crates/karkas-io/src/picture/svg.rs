@@ -67,10 +67,7 @@ pub fn write_curve_picture(
 ) -> Result<(), IoError> {
     let rendered = render_curve_svg_with(plot, overlay);
     if png {
-        let svg = rendered.map_err(|source| IoError::Picture {
-            path: path.to_path_buf(),
-            source,
-        })?;
+        let svg = rendered.map_err(IoError::picture(path))?;
         crate::picture::png::write_svg_as_png(path, &svg)
     } else {
         write_rendered(path, rendered)
@@ -106,12 +103,8 @@ pub fn render_curve_svg_with(
         let grey = RGBColor(150, 150, 150);
         chart.draw_series(LineSeries::new(polygon, grey.stroke_width(1)))?;
         let teeth = RGBColor(120, 170, 120).stroke_width(1);
-        for tooth in overlay
-            .comb
-            .iter()
-            .filter(|t| t.iter().all(|p| p.is_finite()))
-        {
-            chart.draw_series(LineSeries::new(tooth.map(|p| (p[0], p[1])), teeth))?;
+        for tooth in finite_segments(overlay.comb) {
+            chart.draw_series(LineSeries::new(tooth, teeth))?;
         }
         if !overlay.comb.is_empty() {
             let tips = overlay.comb.iter().map(|t| t[1]).filter(|p| p.is_finite());
@@ -122,12 +115,8 @@ pub fn render_curve_svg_with(
         }
         chart.draw_series(LineSeries::new(finite(plot.curve), BLUE.stroke_width(2)))?;
         let whisker = RGBColor(230, 120, 0).stroke_width(2);
-        for w in overlay
-            .whiskers
-            .iter()
-            .filter(|t| t.iter().all(|p| p.is_finite()))
-        {
-            chart.draw_series(LineSeries::new(w.map(|p| (p[0], p[1])), whisker))?;
+        for w in finite_segments(overlay.whiskers) {
+            chart.draw_series(LineSeries::new(w, whisker))?;
         }
         chart.draw_series(finite(plot.input).map(|p| Circle::new(p, 3, RED.filled())))?;
         Ok(())
@@ -297,10 +286,7 @@ fn render_chart(
 /// Writes a rendered picture to `path` atomically; a rendering error becomes an
 /// [`IoError::Picture`] naming `path`, and nothing is written.
 fn write_rendered(path: &Path, rendered: Result<String, PictureError>) -> Result<(), IoError> {
-    let svg = rendered.map_err(|source| IoError::Picture {
-        path: path.to_path_buf(),
-        source,
-    })?;
+    let svg = rendered.map_err(IoError::picture(path))?;
     write_atomic(path, |out| out.write_all(svg.as_bytes()))
 }
 
@@ -324,6 +310,15 @@ pub(crate) fn finite(points: &[Point2]) -> impl Iterator<Item = (f64, f64)> + '_
         .iter()
         .filter(|p| p.is_finite())
         .map(|p| (p[0], p[1]))
+}
+
+/// The segments of `segments` with both ends finite, as plot coordinates.
+fn finite_segments(segments: &[[Point2; 2]]) -> impl Iterator<Item = [(f64, f64); 2]> + '_ {
+    let finite = |t: &&[Point2; 2]| t.iter().all(|p| p.is_finite());
+    segments
+        .iter()
+        .filter(finite)
+        .map(|t| t.map(|p| (p[0], p[1])))
 }
 
 /// Picture height and plot ranges with equal axis scales.
