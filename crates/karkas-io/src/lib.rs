@@ -3,7 +3,7 @@
 //! Files in and out of [`karkas`]: the library itself does no I/O, this crate reads the point
 //! frames a user hands over and writes the sampled results.
 //!
-//! Reading:
+//! Reading (every input opened once, `-` for standard input, bounded as [`input`] says):
 //! - [`points`]: an ordered list of curve points from CSV, whitespace-separated columns or an
 //!   airfoil `.dat` ([`airfoil`]), chosen by content;
 //! - [`grid`]: a surface frame as CSV rows `i,j,x,y,z`;
@@ -41,6 +41,7 @@ pub mod cad;
 pub mod error;
 pub mod format;
 pub mod grid;
+pub mod input;
 pub mod mask;
 pub mod mesh;
 pub mod network;

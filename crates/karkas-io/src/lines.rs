@@ -7,6 +7,7 @@
 use std::path::Path;
 
 use crate::error::{IoError, Location};
+use crate::input::{not_utf8_message, read_line_bytes};
 
 /// One non-blank line of a file, split into fields.
 #[derive(Clone, Debug, PartialEq)]
@@ -17,9 +18,10 @@ pub(crate) struct Row {
     pub fields: Vec<String>,
 }
 
-/// Reads a whole text file, as [`IoError::Open`] on failure (non-UTF-8 text included).
+/// Reads a whole text file (`-`: standard input) with the bounds of [`crate::input`]: lines
+/// at most 1 MiB, no NUL bytes, UTF-8, the size within the memory cap.
 pub(crate) fn read_text(path: &Path) -> Result<String, IoError> {
-    std::fs::read_to_string(path).map_err(IoError::open(path))
+    crate::input::read_text(path)
 }
 
 /// `text` without a leading byte-order mark (spreadsheets like to write one).
@@ -124,6 +126,7 @@ pub(crate) fn csv_rows(text: &str, path: &Path) -> Result<Vec<Row>, IoError> {
 pub(crate) struct RowReader<'p, R> {
     reader: R,
     path: &'p Path,
+    bytes: Vec<u8>,
     buf: String,
     line: usize,
     fields: Vec<String>,
@@ -135,6 +138,7 @@ impl<'p, R: std::io::BufRead> RowReader<'p, R> {
         RowReader {
             reader,
             path,
+            bytes: Vec::new(),
             buf: String::new(),
             line: 0,
             fields: Vec::new(),
@@ -153,14 +157,14 @@ impl<'p, R: std::io::BufRead> RowReader<'p, R> {
     fn advance(&mut self) -> Result<Option<(usize, std::ops::Range<usize>)>, IoError> {
         loop {
             self.buf.clear();
-            let read = self
-                .reader
-                .read_line(&mut self.buf)
-                .map_err(IoError::open(self.path))?;
-            if read == 0 {
+            if !read_line_bytes(&mut self.reader, self.path, &mut self.bytes, self.line + 1)? {
                 return Ok(None);
             }
             self.line += 1;
+            match std::str::from_utf8(&self.bytes) {
+                Ok(text) => self.buf.push_str(text),
+                Err(_) => return Err(Location::new(self.path, self.line).error(not_utf8_message())),
+            }
             let skip = if self.line == 1 {
                 self.buf.len() - strip_bom(&self.buf).len()
             } else {
@@ -207,11 +211,9 @@ impl<'p, R: std::io::BufRead> RowReader<'p, R> {
     }
 }
 
-/// Opens `path` for buffered reading, as [`IoError::Open`] on failure.
-pub(crate) fn open_buffered(path: &Path) -> Result<std::io::BufReader<std::fs::File>, IoError> {
-    std::fs::File::open(path)
-        .map(|f| std::io::BufReader::with_capacity(1 << 16, f))
-        .map_err(IoError::open(path))
+/// Opens `path` (`-`: standard input) for one buffered pass, as [`IoError::Open`] on failure.
+pub(crate) fn open_buffered(path: &Path) -> Result<crate::input::Input, IoError> {
+    crate::input::Input::open(path)
 }
 
 /// The 0-based positions of the columns `names` in the header row `header` of `path` (names

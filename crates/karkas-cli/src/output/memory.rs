@@ -21,8 +21,10 @@ pub fn set_max_memory(option: Option<u64>) -> Result<()> {
             Err(_) => DEFAULT_MAX_MEMORY,
         },
     };
-    // Set once per process; a second call keeps the first value.
+    // Set once per process; a second call keeps the first value. The readers keep what they
+    // read within the same cap.
     let _ = MAX_MEMORY.set(cap);
+    karkas_io::input::set_max_input_bytes(*MAX_MEMORY.get().unwrap_or(&cap));
     Ok(())
 }
 
