@@ -76,6 +76,15 @@ pub fn read_curve_points(path: &Path) -> Result<CurvePoints, IoError> {
     points_from_rows(RowReader::new(open_buffered(path)?, path), csv, path)
 }
 
+/// Reads the curve points of the file at `path` as one flat array of coordinates, point after
+/// point, and the dimension (2 or 3): the layout NumPy takes without a copy.
+pub fn read_curve_coordinates(path: &Path) -> Result<(Vec<f64>, usize), IoError> {
+    Ok(match read_curve_points(path)? {
+        CurvePoints::Planar(p) => (p.iter().flat_map(|q| q.0).collect(), 2),
+        CurvePoints::Spatial(p) => (p.iter().flat_map(|q| q.0).collect(), 3),
+    })
+}
+
 /// Reads curve points from `text` already in memory; `path` names the file in error messages
 /// and its extension (`.dat`) takes part in recognising the format.
 pub fn parse_curve_points(text: &str, path: &Path) -> Result<CurvePoints, IoError> {
