@@ -145,7 +145,14 @@ fn write_any_mesh(
             };
             write_viewer_html(output, &scene)?;
         }
-        _ => write_mesh(output, mesh, &MeshOptions { ascii })?,
+        _ => write_mesh(
+            output,
+            mesh,
+            &MeshOptions {
+                ascii,
+                ..MeshOptions::default()
+            },
+        )?,
     }
     Ok(())
 }

@@ -7,6 +7,8 @@
 //! binary chunk. The `gltf-json` crate would only replace the `json!` literal below with typed
 //! structs, at the price of its dependency tree.
 //!
+//! The seam of a closed sample grid is welded (see `mesh/shared_vertices.rs`).
+//!
 //! Binary chunk: positions (`f32` VEC3, with the `min`/`max` glTF requires), normals (`f32`
 //! VEC3, unit length, from the mesh or averaged over the faces) and indices (`u32` SCALAR).
 //! glTF is `f32` by definition, so coordinates lose precision beyond 7 digits; the mesh is
@@ -19,6 +21,7 @@ use serde_json::json;
 
 use crate::error::IoError;
 use crate::mesh::error::MeshError;
+use crate::mesh::shared_vertices::SharedVertices;
 use crate::mesh::triangle_mesh::TriangleMesh;
 use crate::write::write_atomic;
 
@@ -27,15 +30,15 @@ use crate::write::write_atomic;
 /// ([`MeshError::TooLargeForGltf`]) is an [`IoError::InvalidMesh`], nothing written.
 pub fn write_mesh_glb(path: &Path, mesh: &TriangleMesh) -> Result<(), IoError> {
     mesh.check_writable(path)?;
-    buffer_lengths(mesh).map_err(IoError::invalid_mesh(path))?;
+    buffer_lengths(&SharedVertices::of(mesh)).map_err(IoError::invalid_mesh(path))?;
     write_atomic(path, |out| render_mesh_glb(mesh, out))
 }
 
 /// The byte lengths of the vertex and index buffers of `mesh` and of the whole binary chunk;
 /// [`MeshError::TooLargeForGltf`] when they overflow.
-fn buffer_lengths(mesh: &TriangleMesh) -> Result<(usize, usize, usize), MeshError> {
-    let vertex_bytes = mesh.positions.len().checked_mul(12);
-    let index_bytes = mesh.triangles.len().checked_mul(12);
+fn buffer_lengths(mesh: &SharedVertices) -> Result<(usize, usize, usize), MeshError> {
+    let vertex_bytes = mesh.vertex_count().checked_mul(12);
+    let index_bytes = mesh.triangle_count().checked_mul(12);
     let (Some(vertex_bytes), Some(index_bytes)) = (vertex_bytes, index_bytes) else {
         return Err(MeshError::TooLargeForGltf);
     };
@@ -49,12 +52,13 @@ fn buffer_lengths(mesh: &TriangleMesh) -> Result<(usize, usize, usize), MeshErro
 /// Writes the `.glb` bytes of `mesh` into `out` (the mesh is assumed valid; one too large for
 /// glTF is [`io::ErrorKind::InvalidInput`] carrying [`MeshError::TooLargeForGltf`]).
 pub fn render_mesh_glb(mesh: &TriangleMesh, out: &mut dyn Write) -> io::Result<()> {
-    let n = mesh.positions.len();
-    let m = mesh.triangles.len();
+    let mesh = SharedVertices::of(mesh);
+    let n = mesh.vertex_count();
+    let m = mesh.triangle_count();
     let too_large = || io::Error::new(io::ErrorKind::InvalidInput, MeshError::TooLargeForGltf);
-    let (vertex_bytes, index_bytes, bin_len) = buffer_lengths(mesh).map_err(|_| too_large())?;
+    let (vertex_bytes, index_bytes, bin_len) = buffer_lengths(&mesh).map_err(|_| too_large())?;
     let (mut lo, mut hi) = ([f32::INFINITY; 3], [f32::NEG_INFINITY; 3]);
-    for p in &mesh.positions {
+    for p in mesh.positions() {
         for c in 0..3 {
             lo[c] = lo[c].min(p[c] as f32);
             hi[c] = hi[c].max(p[c] as f32);
@@ -110,17 +114,17 @@ pub fn render_mesh_glb(mesh: &TriangleMesh, out: &mut dyn Write) -> io::Result<(
     out.write_all(&json_bytes)?;
     out.write_all(&(bin_len as u32).to_le_bytes())?;
     out.write_all(b"BIN\0")?;
-    for p in &mesh.positions {
+    for p in mesh.positions() {
         for c in 0..3 {
             out.write_all(&(p[c] as f32).to_le_bytes())?;
         }
     }
-    for p in mesh.vertex_normals() {
+    for p in mesh.normals() {
         for c in 0..3 {
             out.write_all(&(p[c] as f32).to_le_bytes())?;
         }
     }
-    for t in &mesh.triangles {
+    for t in mesh.triangles() {
         for k in t {
             out.write_all(&k.to_le_bytes())?;
         }

@@ -5,7 +5,8 @@
 //! - [`TriangleMesh`]: the mesh every writer takes, from a sampled surface grid
 //!   ([`TriangleMesh::from_grid`]) or read from a file; [`MeshError`] says what is wrong with
 //!   one.
-//! - [`write_mesh`] / [`read_mesh`] ([`MeshOptions`]): any format by extension.
+//! - [`write_mesh`] / [`read_mesh`] ([`MeshOptions`]): any format by extension, standard
+//!   input by content ([`sniff_mesh_format`]).
 //! - [`obj`] (Wavefront OBJ), [`stl`] (binary and ASCII STL), [`ply`] (Stanford PLY),
 //!   [`vtk`] (legacy VTK and XML structured grids `.vts`), [`glb`] (binary glTF 2.0).
 
@@ -15,11 +16,17 @@ pub mod glb;
 pub(crate) mod normals;
 pub mod obj;
 pub mod ply;
+mod ply_read;
+pub(crate) mod shared_vertices;
 pub mod stl;
+mod stl_read;
 pub(crate) mod triangle_mesh;
 pub(crate) mod triangulate;
 pub mod vtk;
 
-pub use any_format::{read_mesh, write_mesh, write_surface_mesh, MeshOptions};
+pub use any_format::{
+    read_mesh, read_mesh_from, sniff_mesh_format, write_mesh, write_surface_mesh, MeshFormat,
+    MeshOptions, SNIFF_BYTES,
+};
 pub use error::MeshError;
 pub use triangle_mesh::TriangleMesh;

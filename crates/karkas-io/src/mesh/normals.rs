@@ -14,6 +14,8 @@
 
 use karkas::Point3;
 
+use crate::mesh::triangulate::GridSeams;
+
 /// The cross product `p x q`.
 pub(crate) fn cross(p: Point3, q: Point3) -> Point3 {
     Point3::new([
@@ -85,13 +87,12 @@ struct SampleGrid<'a> {
 }
 
 impl<'a> SampleGrid<'a> {
-    /// The grid of `nu x nv` `points` (`points.len() == nu * nv`), its seams detected.
+    /// The grid of `nu x nv` `points` (`points.len() == nu * nv`), its seams detected
+    /// ([`GridSeams::detect`]).
     fn new(nu: usize, nv: usize, points: &'a [Point3]) -> Self {
-        let scale = points.iter().fold(0.0_f64, |s, p| s.max(p.max_abs()));
-        let tolerance = 1e-12 * scale.max(1.0);
-        let at = |a: usize, b: usize| points[a * nv + b];
-        let closed_u = nu >= 3 && (0..nv).all(|b| at(0, b).distance(at(nu - 1, b)) <= tolerance);
-        let closed_v = nv >= 3 && (0..nu).all(|a| at(a, 0).distance(at(a, nv - 1)) <= tolerance);
+        let GridSeams {
+            closed_u, closed_v, ..
+        } = GridSeams::detect(nu, nv, points);
         SampleGrid {
             nu,
             nv,

@@ -7,31 +7,45 @@
 //! `mesh/normals.rs`) and `f a//a b//b c//c` lines for the triangles (see
 //! `mesh/triangulate.rs` for a sample grid), all counter-clockwise seen from the side the
 //! normals point to. The first line is a comment: `# karkas surface, NU x NV samples` for a
-//! sample grid, `# karkas mesh, N vertices, M triangles` for a general mesh. The seam points of
-//! a closed surface are written twice (no welding).
+//! sample grid, `# karkas mesh, N vertices, M triangles` for a general mesh. The seam of a
+//! closed sample grid (its last row or column repeating the first) is welded: the repeated
+//! samples are not written and the triangles along the seam share the first row's (column's)
+//! vertices (the comment then says `closed in u` / `closed in v`), so the mesh is closed for
+//! mesh tools.
 //!
-//! Reading:
-//! - as a mesh ([`parse_obj_mesh`]): `v` and `f` lines (`f` corners as `a`, `a/b`, `a//c` or
-//!   `a/b/c`, negative indices counting back from the last vertex; polygons split into fans);
-//!   `vn` normals are kept when every corner of every face uses the normal of the same index as
-//!   its vertex (as karkas writes them), otherwise normals are recomputed;
-//! - as a point set ([`parse_obj_vertices`]): only the `v x y z [w]` lines (faces, normals and
-//!   texture coordinates are not needed to measure distances and are skipped).
+//! Reading, one line at a time (each line bounded, see [`crate::input`]; what is kept is
+//! charged against the memory cap as it grows):
+//! - as a mesh ([`read_obj_mesh`], [`parse_obj_mesh`]): `v` and `f` lines. A `v` line holds
+//!   `x y z`, `x y z w` or `x y z r g b` (the vertex colours some scanners and MeshLab write,
+//!   also `x y z r g b a`): the position is `x y z` as written. `w` is the weight of a
+//!   rational curve's control point in the OBJ specification, not a homogeneous coordinate,
+//!   so it is not divided out (as Blender, meshio and trimesh read it). `f` corners are `a`,
+//!   `a/b`, `a//c` or `a/b/c`, negative indices counting back from the last vertex. A face of
+//!   n > 3 corners (quads, n-gons) becomes the n - 2 triangles of the fan from its first
+//!   corner: right for the convex polygons exporters write (a concave polygon would need its
+//!   own triangulation, which OBJ files do not carry). `vn` normals are kept when every corner
+//!   of every face uses the normal of the same index as its vertex (as karkas writes them),
+//!   otherwise normals are recomputed. Lines of other kinds (`vt`, `vp`, `l`, `p`, `g`, `o`,
+//!   `s`, `usemtl`, `mtllib`, curves and surfaces) are skipped;
+//! - as a point set ([`parse_obj_vertices`]): only the `v` lines (faces, normals and texture
+//!   coordinates are not needed to measure distances and are skipped).
 
-use std::io::{self, Write};
+use std::io::{self, BufRead, Write};
 use std::path::Path;
 
 use karkas::Point3;
 
 use crate::error::{data_error, IoError, Location};
-use crate::lines::{parse_coordinate, strip_bom};
+use crate::input::{check_held, excerpt, not_utf8_message, read_line_bytes, Input};
 use crate::mesh::normals::grid_normals;
+use crate::mesh::shared_vertices::SharedVertices;
 use crate::mesh::triangle_mesh::TriangleMesh;
-use crate::mesh::triangulate::{check_grid, grid_triangles};
+use crate::mesh::triangulate::{check_grid, GridSeams};
 use crate::write::write_atomic;
 
 /// Writes the `nu x nv` sample grid `points` (row-major, `u` outer) as an OBJ mesh at `path`,
-/// atomically. A `points.len()` other than `nu * nv` is an [`IoError::InvalidMesh`]
+/// atomically, its seams welded (see the module docs). A `points.len()` other than `nu * nv`
+/// is an [`IoError::InvalidMesh`]
 /// ([`MeshError::PointCount`](crate::mesh::error::MeshError::PointCount)), nothing written.
 pub fn write_surface_obj(
     path: &Path,
@@ -43,7 +57,7 @@ pub fn write_surface_obj(
     write_atomic(path, |out| render_surface_obj(nu, nv, points, out))
 }
 
-/// Writes the OBJ text of the `nu x nv` sample grid `points` into `out`.
+/// Writes the OBJ text of the `nu x nv` sample grid `points` into `out`, its seams welded.
 ///
 /// Fails with [`io::ErrorKind::InvalidInput`] (carrying [`MeshError::PointCount`](crate::mesh::error::MeshError::PointCount)) when
 /// `points.len() != nu * nv`.
@@ -54,12 +68,28 @@ pub fn render_surface_obj(
     out: &mut dyn Write,
 ) -> io::Result<()> {
     check_grid(nu, nv, points.len()).map_err(|e| io::Error::new(io::ErrorKind::InvalidInput, e))?;
-    writeln!(out, "# karkas surface, {nu} x {nv} samples")?;
-    render_body(
-        points,
-        grid_normals(nu, nv, points),
-        grid_triangles(nu, nv),
-        out,
+    let seams = GridSeams::detect(nu, nv, points);
+    writeln!(out, "{}", surface_comment(seams))?;
+    let kept = move |k: &usize| !seams.welds() || seams.is_kept(*k);
+    let positions = (0..points.len()).filter(kept).map(|k| points[k]);
+    let normals = grid_normals(nu, nv, points)
+        .enumerate()
+        .filter(|(k, _)| kept(k))
+        .map(|(_, n)| n);
+    render_body(positions, normals, seams.triangles(), out)
+}
+
+/// The first line of the OBJ file of a sample grid.
+fn surface_comment(seams: GridSeams) -> String {
+    let closed = match (seams.closed_u, seams.closed_v) {
+        (false, false) => "",
+        (true, false) => ", closed in u (seam welded)",
+        (false, true) => ", closed in v (seam welded)",
+        (true, true) => ", closed in u and v (seams welded)",
+    };
+    format!(
+        "# karkas surface, {} x {} samples{closed}",
+        seams.nu, seams.nv
     )
 }
 
@@ -71,10 +101,12 @@ pub fn write_mesh_obj(path: &Path, mesh: &TriangleMesh) -> Result<(), IoError> {
     write_atomic(path, |out| render_mesh_obj(mesh, out))
 }
 
-/// Writes the OBJ text of `mesh` into `out` (the mesh is assumed valid).
+/// Writes the OBJ text of `mesh` into `out` (the mesh is assumed valid; the seams of a
+/// grid-shaped mesh are welded).
 pub fn render_mesh_obj(mesh: &TriangleMesh, out: &mut dyn Write) -> io::Result<()> {
+    let shared = SharedVertices::of(mesh);
     match mesh.grid {
-        Some((nu, nv)) => writeln!(out, "# karkas surface, {nu} x {nv} samples")?,
+        Some(_) => writeln!(out, "{}", surface_comment(shared.seams()))?,
         None => writeln!(
             out,
             "# karkas mesh, {} vertices, {} triangles",
@@ -82,18 +114,13 @@ pub fn render_mesh_obj(mesh: &TriangleMesh, out: &mut dyn Write) -> io::Result<(
             mesh.triangles.len()
         )?,
     }
-    let triangles = mesh.triangles.iter().map(|t| t.map(|k| k as usize));
-    render_body(
-        &mesh.positions,
-        mesh.vertex_normals().into_iter(),
-        triangles,
-        out,
-    )
+    let triangles = shared.triangles().map(|t| t.map(|k| k as usize));
+    render_body(shared.positions(), shared.normals(), triangles, out)
 }
 
 /// The `v`, `vn` and `f` lines of a mesh (0-based `triangles`, written 1-based).
 fn render_body(
-    positions: &[Point3],
+    positions: impl Iterator<Item = Point3>,
     normals: impl Iterator<Item = Point3>,
     triangles: impl Iterator<Item = [usize; 3]>,
     out: &mut dyn Write,
@@ -111,29 +138,38 @@ fn render_body(
     Ok(())
 }
 
+/// Reads the OBJ mesh of `input` (see the module docs), one line at a time.
+pub fn read_obj_mesh(input: &mut Input) -> Result<TriangleMesh, IoError> {
+    let name = input.name.clone();
+    obj_mesh(input, &name)
+}
+
 /// The mesh of OBJ `text` (see the module docs); `path` names the file in errors.
 pub fn parse_obj_mesh(text: &str, path: &Path) -> Result<TriangleMesh, IoError> {
+    obj_mesh(&mut text.as_bytes(), path)
+}
+
+/// The bytes a mesh of these sizes keeps (positions, normals, index triples).
+fn held(positions: usize, normals: usize, triangles: usize) -> u128 {
+    (positions as u128 + normals as u128) * 24 + triangles as u128 * 12
+}
+
+/// The mesh of the OBJ lines of `reader`, named `name` in errors.
+fn obj_mesh<R: BufRead + ?Sized>(reader: &mut R, name: &Path) -> Result<TriangleMesh, IoError> {
     let mut positions = Vec::new();
     let mut normals = Vec::new();
-    let mut triangles = Vec::new();
+    let mut triangles: Vec<[u32; 3]> = Vec::new();
     let mut normals_match = true;
-    for (k, line) in strip_bom(text).lines().enumerate() {
-        let line = line.split('#').next().unwrap_or("");
-        let mut fields = line.split_whitespace();
-        let at = Location::new(path, k + 1);
+    let mut corners = Vec::new();
+    let mut lines = ObjLines::new(reader, name);
+    while let Some((line, text)) = lines.next()? {
+        let at = Location::new(name, line);
+        let mut fields = text.split_whitespace();
         match fields.next() {
-            Some(kind @ ("v" | "vn")) => {
-                let p = vector(fields, at, |found| {
-                    format!("'{kind}' needs 3 coordinates, found {found}")
-                })?;
-                if kind == "v" {
-                    positions.push(p);
-                } else {
-                    normals.push(p);
-                }
-            }
+            Some("v") => positions.push(vertex(fields, at)?),
+            Some("vn") => normals.push(normal(fields, at)?),
             Some("f") => {
-                let mut corners = Vec::new();
+                corners.clear();
                 for corner in fields {
                     let mut parts = corner.split('/');
                     let v = obj_index(parts.next().unwrap_or(""), positions.len(), at)?;
@@ -157,11 +193,12 @@ pub fn parse_obj_mesh(text: &str, path: &Path) -> Result<TriangleMesh, IoError> 
                     triangles.push([corners[0], corners[w], corners[w + 1]]);
                 }
             }
-            _ => {}
+            _ => continue,
         }
+        check_held(name, held(positions.len(), normals.len(), triangles.len()))?;
     }
     if positions.is_empty() {
-        return Err(no_vertices(path));
+        return Err(no_vertices(name));
     }
     if !(normals_match && normals.len() == positions.len()) {
         normals.clear();
@@ -177,16 +214,13 @@ pub fn parse_obj_mesh(text: &str, path: &Path) -> Result<TriangleMesh, IoError> 
 /// The vertices (`v` lines) of OBJ `text`; `path` names the file in errors.
 pub fn parse_obj_vertices(text: &str, path: &Path) -> Result<Vec<Point3>, IoError> {
     let mut points = Vec::new();
-    for (k, line) in strip_bom(text).lines().enumerate() {
-        let line = line.split('#').next().unwrap_or("");
-        let mut fields = line.split_whitespace();
-        if fields.next() != Some("v") {
-            continue;
+    let mut bytes = text.as_bytes();
+    let mut lines = ObjLines::new(&mut bytes, path);
+    while let Some((line, text)) = lines.next()? {
+        let mut fields = text.split_whitespace();
+        if fields.next() == Some("v") {
+            points.push(vertex(fields, Location::new(path, line))?);
         }
-        let at = Location::new(path, k + 1);
-        points.push(vector(fields, at, |found| {
-            format!("a vertex needs 3 coordinates (x y z [w]), found {found}")
-        })?);
     }
     if points.is_empty() {
         return Err(no_vertices(path));
@@ -194,34 +228,107 @@ pub fn parse_obj_vertices(text: &str, path: &Path) -> Result<Vec<Point3>, IoErro
     Ok(points)
 }
 
+/// The lines of an OBJ file, each bounded (see [`read_line_bytes`]), its comment (`# ...`)
+/// and a leading byte-order mark removed.
+struct ObjLines<'a, R: BufRead + ?Sized> {
+    reader: &'a mut R,
+    name: &'a Path,
+    bytes: Vec<u8>,
+    line: usize,
+}
+
+impl<'a, R: BufRead + ?Sized> ObjLines<'a, R> {
+    fn new(reader: &'a mut R, name: &'a Path) -> Self {
+        ObjLines {
+            reader,
+            name,
+            bytes: Vec::new(),
+            line: 0,
+        }
+    }
+
+    /// The next line's number and content, `None` at the end.
+    fn next(&mut self) -> Result<Option<(usize, &str)>, IoError> {
+        self.line += 1;
+        if !read_line_bytes(self.reader, self.name, &mut self.bytes, self.line)? {
+            return Ok(None);
+        }
+        let text = std::str::from_utf8(&self.bytes)
+            .map_err(|_| Location::new(self.name, self.line).error(not_utf8_message()))?;
+        let text = if self.line == 1 {
+            text.trim_start_matches('\u{feff}')
+        } else {
+            text
+        };
+        Ok(Some((self.line, text.split('#').next().unwrap_or(""))))
+    }
+}
+
 /// The error for a file without `v` lines.
 fn no_vertices(path: &Path) -> IoError {
     data_error(path, "no vertices ('v x y z' lines) found")
 }
 
-/// The first three of the 3 or 4 numbers `fields` of a `v` or `vn` line at `at`; `miscount`
-/// words the error for another count.
-fn vector<'a>(
-    fields: impl Iterator<Item = &'a str>,
-    at: Location<'_>,
-    miscount: impl Fn(usize) -> String,
-) -> Result<Point3, IoError> {
-    let coords: Vec<&str> = fields.collect();
-    if !(3..=4).contains(&coords.len()) {
-        return Err(at.error(miscount(coords.len())));
+/// One number of a `v` or `vn` line at `at`, `column` its 1-based field (the keyword is 1).
+fn number(field: &str, column: usize, at: Location<'_>) -> Result<f64, IoError> {
+    match field.parse::<f64>() {
+        Ok(v) if v.is_finite() => Ok(v),
+        Ok(_) => Err(at.error(format!(
+            "non-finite value '{}' in column {column}",
+            excerpt(field)
+        ))),
+        Err(_) => Err(at.error(format!(
+            "'{}' is not a number (column {column})",
+            excerpt(field)
+        ))),
     }
+}
+
+/// The position of a `v` line's numbers `fields` at `at`: `x y z`, `x y z w`, `x y z r g b`
+/// or `x y z r g b a` (see the module docs); every field must be a finite number.
+fn vertex<'a>(fields: impl Iterator<Item = &'a str>, at: Location<'_>) -> Result<Point3, IoError> {
     let mut p = Point3::ZERO;
-    for c in 0..3 {
-        p[c] = parse_coordinate(coords[c], c + 2, at)?;
+    let mut count = 0;
+    for (k, field) in fields.enumerate() {
+        let value = number(field, k + 2, at)?;
+        if k < 3 {
+            p[k] = value;
+        }
+        count += 1;
     }
-    Ok(p)
+    match count {
+        3 | 4 | 6 | 7 => Ok(p),
+        0..=2 => Err(at.error(format!(
+            "a vertex needs 3 coordinates (x y z [w]), found {count}"
+        ))),
+        _ => Err(at.error(format!(
+            "a vertex is x y z, x y z w or x y z r g b [a]: found {count} numbers"
+        ))),
+    }
+}
+
+/// The normal of a `vn` line's numbers `fields` at `at` (3 numbers; a fourth is ignored).
+fn normal<'a>(fields: impl Iterator<Item = &'a str>, at: Location<'_>) -> Result<Point3, IoError> {
+    let mut n = Point3::ZERO;
+    let mut count = 0;
+    for (k, field) in fields.enumerate() {
+        let value = number(field, k + 2, at)?;
+        if k < 3 {
+            n[k] = value;
+        }
+        count += 1;
+    }
+    if !(3..=4).contains(&count) {
+        return Err(at.error(format!("'vn' needs 3 coordinates, found {count}")));
+    }
+    Ok(n)
 }
 
 /// The 0-based index of an OBJ index field (1-based, or negative from the end) among `count`.
 fn obj_index(field: &str, count: usize, at: Location<'_>) -> Result<u32, IoError> {
     let value: i64 = field
         .parse()
-        .map_err(|_| at.error(format!("'{field}' is not a vertex index")))?;
+        .map_err(|_| at.error(format!("'{}' is not a vertex index", excerpt(field))))?;
     let index = if value > 0 {
         value - 1
     } else {

@@ -1,7 +1,7 @@
 //! STL meshes, written (binary or ASCII) and read (either).
 //!
-//! STL is what 3-D printers and most CAD and mesh tools take in. Binary files are written and
-//! every file is read with the `stl_io` crate (binary STL: an 80-byte header, the triangle
+//! STL is what 3-D printers and most CAD and mesh tools take in. Binary files are written
+//! with the `stl_io` crate (binary STL: an 80-byte header, the triangle
 //! count, and one 50-byte record per triangle: facet normal, three vertices, all `f32`); ASCII
 //! (`solid` / `facet normal` / `outer loop` / `vertex` lines) is written directly since
 //! `stl_io` writes binary only.
@@ -13,7 +13,7 @@
 //! points are exact copies, and the mesh is closed in the sense STL knows (its edges meet at
 //! equal vertex coordinates).
 //!
-//! Reading merges equal corners into one vertex (as `stl_io` does); the mesh has no normals.
+//! Reading (binary or ASCII, from a file or standard input) is in `mesh/stl_read.rs`.
 
 use std::io;
 use std::path::Path;
@@ -21,12 +21,14 @@ use std::path::Path;
 use karkas::Point3;
 use stl_io::{Normal, Triangle, Vertex};
 
-use crate::error::{data_error, IoError};
+use crate::error::IoError;
 use crate::mesh::error::MeshError;
 use crate::mesh::normals::triangle_normal;
 use crate::mesh::triangle_mesh::TriangleMesh;
 use crate::mesh::triangulate::{check_grid, grid_triangles};
 use crate::write::write_atomic;
+
+pub use crate::mesh::stl_read::{parse_stl, read_stl, read_stl_from};
 
 /// Writes the `nu x nv` sample grid `points` (row-major, `u` outer) as a binary STL mesh at
 /// `path`, atomically.
@@ -90,37 +92,6 @@ pub fn render_mesh_stl_ascii(mesh: &TriangleMesh, out: &mut dyn io::Write) -> io
         writeln!(out, "  endloop\nendfacet")?;
     }
     writeln!(out, "endsolid karkas")
-}
-
-/// Reads the STL file `path` (binary or ASCII) as a mesh without normals.
-pub fn read_stl(path: &Path) -> Result<TriangleMesh, IoError> {
-    let file = std::fs::File::open(path).map_err(IoError::open(path))?;
-    let mut reader = std::io::BufReader::new(file);
-    let indexed = stl_io::read_stl(&mut reader).map_err(|source| IoError::Decode {
-        path: path.to_path_buf(),
-        format: "STL",
-        source,
-    })?;
-    let positions: Vec<Point3> = indexed
-        .vertices
-        .iter()
-        .map(|v| Point3::new([v[0] as f64, v[1] as f64, v[2] as f64]))
-        .collect();
-    if !positions.iter().all(|p| p.is_finite()) {
-        return Err(data_error(path, "a vertex is not finite"));
-    }
-    let triangles = indexed
-        .faces
-        .iter()
-        .map(|f| f.vertices.map(|k| k as u32))
-        .collect();
-    TriangleMesh {
-        positions,
-        normals: Vec::new(),
-        triangles,
-        grid: None,
-    }
-    .checked_read(path)
 }
 
 #[cfg(test)]

@@ -53,6 +53,35 @@ impl TriangleMesh {
         })
     }
 
+    /// Turns the mesh over: the triangles' winding is reversed and the normals negated, so
+    /// the other side of the surface faces out. A grid-shaped mesh stays one: each row of
+    /// samples is reversed (the `v` direction runs backwards), which reverses every triangle
+    /// of [`TriangleMesh::from_grid`] and keeps structured formats consistent.
+    pub fn flip_orientation(&mut self) {
+        for n in &mut self.normals {
+            *n = -*n;
+        }
+        match self.grid {
+            Some((rows, cols))
+                if cols > 0
+                    && rows.checked_mul(cols) == Some(self.positions.len())
+                    && self.triangles.len() == grid_triangles(rows, cols).len() =>
+            {
+                self.positions
+                    .chunks_mut(cols)
+                    .for_each(<[Point3]>::reverse);
+                if self.normals.len() == self.positions.len() {
+                    self.normals.chunks_mut(cols).for_each(<[Point3]>::reverse);
+                }
+            }
+            _ => {
+                for t in &mut self.triangles {
+                    t.swap(1, 2);
+                }
+            }
+        }
+    }
+
     /// The unit normal of triangle `t` (`(b - a) x (c - a)` normalised; zero when degenerate
     /// or an index is out of range).
     pub fn face_normal(&self, t: [u32; 3]) -> Point3 {
@@ -154,6 +183,31 @@ mod tests {
         }
         assert_eq!(mesh.triangles[0], [0, 4, 5]);
         assert_eq!(mesh.triangles[1], [0, 5, 1]);
+    }
+
+    #[test]
+    fn flipping_reverses_winding_and_normals() {
+        let grid = Grid::from_fn(3, 4, |a, b| Point3::new([a as f64, b as f64, 0.0]));
+        let mut mesh = TriangleMesh::from_grid(&grid).unwrap();
+        mesh.flip_orientation();
+        mesh.validate().unwrap();
+        let down = Point3::new([0.0, 0.0, -1.0]);
+        assert!(mesh.normals.iter().all(|n| *n == down));
+        assert!(mesh.triangles.iter().all(|t| mesh.face_normal(*t) == down));
+        // Row 0 runs backwards now; the grid shape is kept.
+        assert_eq!(mesh.positions[0], Point3::new([0.0, 3.0, 0.0]));
+        assert_eq!(mesh.grid, Some((3, 4)));
+        // A general mesh: corners swapped.
+        let mut general = TriangleMesh {
+            grid: None,
+            ..TriangleMesh::from_grid(&grid).unwrap()
+        };
+        general.flip_orientation();
+        assert_eq!(general.triangles[0], [0, 5, 4]);
+        assert!(general
+            .triangles
+            .iter()
+            .all(|t| general.face_normal(*t) == down));
     }
 
     #[test]

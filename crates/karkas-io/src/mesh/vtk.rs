@@ -10,9 +10,10 @@
 //!   (`CELLS`, `CELL_TYPES 5`; meshio reads this dataset but not `POLYDATA`); a structured grid
 //!   cannot hold it, so `.vts` refuses it.
 //!
-//! The normals are point data `VECTORS Normals` in the legacy file (the legacy `NORMALS`
-//! keyword would be equivalent for ParaView, but common readers such as meshio reject it) and
-//! the `Normals` array of the XML file.
+//! The normals are point data `NORMALS Normals float` in the legacy file (the attribute VTK
+//! and ParaView shade with; meshio 5 does not know the keyword, see
+//! `tests/mesh/check_meshes.py`) and the `Normals` array of the XML file. Both keep the full
+//! sample grid: a structured grid has no shared-vertex seam to weld.
 //!
 //! Both are ASCII text with shortest round-trip decimals (exact values). They are written
 //! directly: the `vtkio` crate covers the same ground but pulls a large dependency tree for a
@@ -69,9 +70,9 @@ pub fn render_mesh_vtk(mesh: &TriangleMesh, out: &mut dyn Write) -> io::Result<(
             writeln!(out, "5")?;
         }
     }
-    writeln!(out, "POINT_DATA {n}\nVECTORS Normals double")?;
+    writeln!(out, "POINT_DATA {n}\nNORMALS Normals float")?;
     for p in mesh.vertex_normals() {
-        writeln!(out, "{} {} {}", p[0], p[1], p[2])?;
+        writeln!(out, "{} {} {}", p[0] as f32, p[1] as f32, p[2] as f32)?;
     }
     Ok(())
 }
@@ -130,7 +131,7 @@ mod tests {
         let expected = "# vtk DataFile Version 3.0\nkarkas mesh\nASCII\n\
             DATASET STRUCTURED_GRID\nDIMENSIONS 3 2 1\nPOINTS 6 double\n\
             0 0 0\n1 0 0\n2 0 0\n0 1 0\n1 1 0\n2 1 0\n\
-            POINT_DATA 6\nVECTORS Normals double\n";
+            POINT_DATA 6\nNORMALS Normals float\n";
         assert!(text.starts_with(expected), "{text}");
         // d/du = +y, d/dv = +x: the normal is -z at every point.
         assert_eq!(text.matches("\n0 0 -1").count(), 6);

@@ -18,7 +18,10 @@ fn extension_chooses_the_writer() {
     let mesh = TriangleMesh::from_grid(&grid).unwrap();
     let file = |name: &str| dir.path().join(name);
     for ascii in [false, true] {
-        let options = MeshOptions { ascii };
+        let options = MeshOptions {
+            ascii,
+            ..MeshOptions::default()
+        };
         for ext in ["obj", "stl", "ply", "vtk", "vts", "glb"] {
             let path = file(&format!("m.{ext}"));
             write_mesh(&path, &mesh, &options).unwrap();
