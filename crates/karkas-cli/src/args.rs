@@ -14,6 +14,8 @@ use karkas::dps::MAX_ORDER;
 use karkas::ll::{LlKernel, LlSurface};
 use karkas::{Curve, Grid, Point2, Point3};
 use karkas_io::grid::read_grid;
+use karkas_io::mesh::MeshOptions;
+use karkas_io::OutputFormat;
 use std::path::{Path, PathBuf};
 
 /// `--samples N` of the curve commands.
@@ -121,6 +123,37 @@ impl LlSurfaceOptions {
         };
         build(grid, self.order, self.closed.closed_u, self.closed.closed_v)
             .with_context(|| input.display().to_string())
+    }
+}
+
+/// `--flip-normals` of the commands that write a surface mesh.
+#[derive(Debug, Args)]
+pub struct MeshOutput {
+    /// Meshes (.obj .stl .ply .vtk .vts .glb): turn the mesh over, reversing the triangles'
+    /// winding and the normals (for a surface whose normals point inwards).
+    #[arg(long)]
+    pub flip_normals: bool,
+}
+
+impl MeshOutput {
+    /// Refuses `--flip-normals` for an output in `format` that is not a mesh.
+    pub fn check(&self, format: OutputFormat) -> Result<()> {
+        if self.flip_normals && !OutputFormat::MESHES.contains(&format) {
+            bail!(
+                "--flip-normals: only meshes (.obj .stl .ply .vtk .vts .glb) have normals to \
+                 flip, not .{}",
+                format.extension()
+            );
+        }
+        Ok(())
+    }
+
+    /// The mesh writer's options: these, text STL and PLY when `ascii`.
+    pub fn options(&self, ascii: bool) -> MeshOptions {
+        MeshOptions {
+            ascii,
+            flip_normals: self.flip_normals,
+        }
     }
 }
 

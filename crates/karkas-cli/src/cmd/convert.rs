@@ -10,6 +10,7 @@
 //! Outputs: a mesh to `.obj .stl .ply .vtk .glb .html`; a grid to those and `.vts .svg .png`
 //! and `.csv` (`i,j,x,y,z`); a curve to `.svg .png .html`. Any other pair is refused.
 
+use crate::args::MeshOutput;
 use crate::output::curve::{to_space, write_curve_figure};
 use crate::output::formats::SURFACE_FORMATS;
 use crate::output::overwrite::ensure_distinct;
@@ -39,6 +40,8 @@ pub struct ConvertArgs {
     /// Write .stl and .ply as ASCII instead of binary.
     #[arg(long)]
     ascii: bool,
+    #[command(flatten)]
+    mesh: MeshOutput,
 }
 
 /// What the input holds.
@@ -65,6 +68,7 @@ const CURVE_OUT: [OutputFormat; 3] = [OutputFormat::Svg, OutputFormat::Png, Outp
 pub fn run(args: &ConvertArgs) -> Result<()> {
     // Every format some input converts to: the grid's, which include the others.
     let format = OutputFormat::from_path(&args.output, &GRID_OUT)?;
+    args.mesh.check(format)?;
     ensure_distinct(&args.input, &args.output)?;
     let input = read_input(&args.input)?;
     let (kind, allowed): (&str, &[OutputFormat]) = match &input {
@@ -88,10 +92,12 @@ pub fn run(args: &ConvertArgs) -> Result<()> {
         .input
         .file_name()
         .map_or_else(String::new, |n| n.to_string_lossy().into_owned());
+    let options = args.mesh.options(args.ascii);
     let count = match input {
         Input::Mesh(mesh) => {
-            write_any_mesh(&args.output, format, &mesh, args.ascii, &title)?;
-            mesh.positions.len()
+            let count = mesh.positions.len();
+            write_any_mesh(&args.output, format, mesh, &options, &title)?;
+            count
         }
         Input::Grid(grid, is_frame) => {
             let net = is_frame.then_some(&grid);
@@ -101,9 +107,9 @@ pub fn run(args: &ConvertArgs) -> Result<()> {
                     let mesh = TriangleMesh::from_grid(&grid)
                         .map_err(anyhow::Error::msg)
                         .with_context(|| args.input.display().to_string())?;
-                    write_any_mesh(&args.output, format, &mesh, true, &title)?;
+                    write_any_mesh(&args.output, format, mesh, &options, &title)?;
                 }
-                _ => write_surface(&args.output, format, &grid, &title, net)?,
+                _ => write_surface(&args.output, format, &grid, &title, net, &options)?,
             }
             grid.rows() * grid.cols()
         }
@@ -125,34 +131,37 @@ pub fn run(args: &ConvertArgs) -> Result<()> {
     Ok(())
 }
 
-/// Writes a mesh in a mesh format or as the viewer page.
+/// Writes a mesh in a mesh format (turned over in place when `options` say so) or as the
+/// viewer page.
 fn write_any_mesh(
     output: &Path,
     format: OutputFormat,
-    mesh: &TriangleMesh,
-    ascii: bool,
+    mut mesh: TriangleMesh,
+    options: &MeshOptions,
     title: &str,
 ) -> Result<()> {
+    if options.flip_normals {
+        mesh.flip_orientation();
+    }
     match format {
         OutputFormat::Html => {
             let scene = ViewerScene {
                 title: title.to_owned(),
                 meshes: vec![ViewerMesh {
                     name: title.to_owned(),
-                    mesh: mesh.clone(),
+                    mesh,
                 }],
                 ..ViewerScene::default()
             };
             write_viewer_html(output, &scene)?;
         }
-        _ => write_mesh(
-            output,
-            mesh,
-            &MeshOptions {
-                ascii,
-                ..MeshOptions::default()
-            },
-        )?,
+        _ => {
+            let options = MeshOptions {
+                flip_normals: false,
+                ..*options
+            };
+            write_mesh(output, &mesh, &options)?
+        }
     }
     Ok(())
 }

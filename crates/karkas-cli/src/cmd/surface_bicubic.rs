@@ -1,7 +1,7 @@
 //! `karkas surface bicubic`: the bicubic interpolant of a grid of points with chosen
 //! parameters (Kuznetsov and Filatov, docs/methods.md §5).
 
-use crate::args::{ClosedUv, GridInput, GridSamples};
+use crate::args::{MeshOutput, ClosedUv, GridInput, GridSamples};
 use crate::input::grid_points;
 use crate::output::formats::EXACT_SURFACE_FORMATS;
 use crate::output::surface::write_grid_surface;
@@ -52,6 +52,8 @@ pub struct SurfaceBicubicArgs {
     samples: GridSamples,
     #[command(flatten)]
     grid: GridInput,
+    #[command(flatten)]
+    mesh: MeshOutput,
     /// Output file: .csv (u,v,x,y,z in the chosen parameters), a mesh (.obj .stl .ply .vtk .vts .glb), a picture
     /// (.svg .png) a 3-D viewer page (.html), or the
     /// exact B-spline surface as .step/.stp or .iges/.igs.
@@ -63,6 +65,7 @@ pub struct SurfaceBicubicArgs {
 pub fn run(args: &SurfaceBicubicArgs) -> Result<()> {
     let format = OutputFormat::from_path(&args.output, &EXACT_SURFACE_FORMATS)?;
     args.samples.check()?;
+    args.mesh.check(format)?;
     let grid = args.grid.read_for(&args.output)?;
     grid_points(&args.grid.input, grid.as_slice())?;
     let (closed_u, closed_v) = (args.closed.closed_u, args.closed.closed_v);
@@ -77,5 +80,6 @@ pub fn run(args: &SurfaceBicubicArgs) -> Result<()> {
         input,
         args.samples.samples,
         &title,
+        &args.mesh.options(false),
     )
 }

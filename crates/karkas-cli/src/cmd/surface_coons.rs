@@ -5,7 +5,7 @@
 //! cubic splines in the point-index parameter, warped so that the crossings sit at common
 //! node values in `[0, 1]`); the surface's parameters `u`, `v` are those node values.
 
-use crate::args::GridSamples;
+use crate::args::{GridSamples, MeshOutput};
 use crate::output::cad::write_cad_surface;
 use crate::output::formats::EXACT_SURFACE_FORMATS;
 use crate::output::overwrite::ensure_distinct;
@@ -73,6 +73,8 @@ pub struct SurfaceCoonsArgs {
     v_derivs: Option<PathBuf>,
     #[command(flatten)]
     samples: GridSamples,
+    #[command(flatten)]
+    mesh: MeshOutput,
     /// Output file: .csv (u,v,x,y,z), a mesh (.obj .stl .ply .vtk .vts .glb), a picture
     /// (.svg .png) a 3-D viewer page (.html), or the
     /// exact B-spline surface as .step/.stp or .iges/.igs.
@@ -84,6 +86,7 @@ pub struct SurfaceCoonsArgs {
 pub fn run(args: &SurfaceCoonsArgs) -> Result<()> {
     let format = OutputFormat::from_path(&args.output, &EXACT_SURFACE_FORMATS)?;
     args.samples.check()?;
+    args.mesh.check(format)?;
     if args.u_derivs.is_some() != args.v_derivs.is_some() {
         bail!("--u-derivs and --v-derivs go together: give both or neither");
     }
@@ -144,6 +147,7 @@ pub fn run(args: &SurfaceCoonsArgs) -> Result<()> {
         &args.output,
         "karkas surface",
         None,
+        &args.mesh.options(false),
     )
 }
 

@@ -1,7 +1,7 @@
 //! `karkas surface dps-tube`: a closed tube through a skeleton of curves along and across it,
 //! by formula (3) of Malozemov et al. (docs/methods.md §3).
 
-use crate::args::{check_dps_order, check_dps_step};
+use crate::args::{check_dps_order, check_dps_step, MeshOutput};
 use crate::output::cad::refuse_cad_for_discrete;
 use crate::output::formats::SURFACE_FORMATS;
 use crate::output::overwrite::ensure_distinct;
@@ -39,6 +39,8 @@ pub struct SurfaceDpsTubeArgs {
     /// Spline order along the tube (in q).
     #[arg(long = "r2", value_name = "R2", default_value_t = 2)]
     r2: usize,
+    #[command(flatten)]
+    mesh: MeshOutput,
     /// Output file: .csv (p,q,x,y,z), a closed mesh (.obj .stl .ply .vtk .vts .glb), a
     /// picture (.svg .png) or a 3-D viewer page (.html).
     #[arg(short, long)]
@@ -49,6 +51,7 @@ pub struct SurfaceDpsTubeArgs {
 pub fn run(args: &SurfaceDpsTubeArgs) -> Result<()> {
     refuse_cad_for_discrete(&args.output)?;
     let format = OutputFormat::from_path(&args.output, &SURFACE_FORMATS)?;
+    args.mesh.check(format)?;
     check_dps_order("--r1", args.r1)?;
     check_dps_order("--r2", args.r2)?;
     check_dps_step("--n1", args.n1)?;
@@ -88,7 +91,8 @@ pub fn run(args: &SurfaceDpsTubeArgs) -> Result<()> {
                 "discrete periodic tube, {big_n1} x {big_n2} values, orders {} and {}",
                 args.r1, args.r2
             );
-            write_surface(&args.output, format, &tube.closed_grid(), &title, None)?;
+            let mesh = args.mesh.options(false);
+            write_surface(&args.output, format, &tube.closed_grid(), &title, None, &mesh)?;
         }
     }
     report_samples(&args.output, big_n1 * big_n2);

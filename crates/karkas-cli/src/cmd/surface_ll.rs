@@ -1,6 +1,6 @@
 //! `karkas surface ll`: the LL surface of a grid of points (Aulchenko et al., docs/methods.md §1.3).
 
-use crate::args::{GridInput, GridSamples, LlSurfaceOptions};
+use crate::args::{MeshOutput, GridInput, GridSamples, LlSurfaceOptions};
 use crate::input::grid_points;
 use crate::output::formats::EXACT_SURFACE_FORMATS;
 use crate::output::surface::write_grid_surface;
@@ -18,6 +18,8 @@ pub struct SurfaceLlArgs {
     samples: GridSamples,
     #[command(flatten)]
     grid: GridInput,
+    #[command(flatten)]
+    mesh: MeshOutput,
     /// Output file: .csv (u,v,x,y,z), a mesh (.obj .stl .ply .vtk .vts .glb), a picture
     /// (.svg .png) a 3-D viewer page (.html), or the
     /// exact B-spline surface as .step/.stp or .iges/.igs.
@@ -30,6 +32,7 @@ pub fn run(args: &SurfaceLlArgs) -> Result<()> {
     let format = OutputFormat::from_path(&args.output, &EXACT_SURFACE_FORMATS)?;
     args.ll.check()?;
     args.samples.check()?;
+    args.mesh.check(format)?;
     let grid = args.grid.read_for(&args.output)?;
     grid_points(&args.grid.input, grid.as_slice())?;
     let surface = args.ll.build(&grid, &args.grid.input)?;
@@ -47,5 +50,6 @@ pub fn run(args: &SurfaceLlArgs) -> Result<()> {
         input,
         args.samples.samples,
         &title,
+        &args.mesh.options(false),
     )
 }

@@ -28,7 +28,8 @@ pub const DEFAULT_VIEW: View = View {
 /// Samples `surface` on a uniform `nu x nv` grid over its whole domain and writes the samples
 /// to `output` as a `u,v,x,y,z` CSV or any mesh, picture or page format of
 /// [`super::formats::SURFACE_FORMATS`], by `format`; then reports what was written. `title`
-/// captions pictures and the page; `net` (the input grid) is shown on the page.
+/// captions pictures and the page; `net` (the input grid) is shown on the page; `mesh` says
+/// how meshes are written.
 pub fn write_sampled_surface(
     surface: &impl Surface<3>,
     (nu, nv): (usize, usize),
@@ -36,18 +37,25 @@ pub fn write_sampled_surface(
     output: &Path,
     title: &str,
     net: Option<&Grid<Point3>>,
+    mesh: &MeshOptions,
 ) -> Result<()> {
     check_memory(
         &format!("{}: {nu} x {nv} samples", output.display()),
         (nu as u128) * (nv as u128) * 24 + (nu as u128 + nv as u128) * 8,
     )?;
-    let (us, vs, samples) = sample_surface(surface, nu, nv);
+    let (us, vs, mut samples) = sample_surface(surface, nu, nv);
     match format {
-        OutputFormat::Obj => write_surface_obj(output, nu, nv, &samples)?,
+        OutputFormat::Obj => {
+            if mesh.flip_normals && nv > 0 {
+                // Turned over in place: each row backwards, as `flip_orientation` does.
+                samples.chunks_mut(nv).for_each(<[Point3]>::reverse);
+            }
+            write_surface_obj(output, nu, nv, &samples)?
+        }
         OutputFormat::Csv => write_surface_csv(output, &us, &vs, &samples)?,
         _ => {
             let grid = Grid::from_row_major(nu, nv, samples)?;
-            write_surface(output, format, &grid, title, net)?;
+            write_surface(output, format, &grid, title, net, mesh)?;
         }
     }
     report_samples(output, nu * nv);
@@ -64,6 +72,7 @@ pub fn write_grid_surface(
     (input, grid): (&Path, &Grid<Point3>),
     samples: Option<(usize, usize)>,
     title: &str,
+    mesh: &MeshOptions,
 ) -> Result<()> {
     if format.is_cad() {
         return write_cad_surface(surface, format, output, input.display());
@@ -72,18 +81,20 @@ pub fn write_grid_surface(
         default_surface_samples(grid.rows()),
         default_surface_samples(grid.cols()),
     ));
-    write_sampled_surface(surface, samples, format, output, title, Some(grid))
+    write_sampled_surface(surface, samples, format, output, title, Some(grid), mesh)
 }
 
 /// Writes the sampled surface `samples` (row-major, `u` outer) at `output` in `format`, which
 /// is any of [`super::formats::SURFACE_FORMATS`] but CSV. `title` captions pictures and the
-/// page; `net` (the input grid or control net) is shown on the page.
+/// page; `net` (the input grid or control net) is shown on the page; `mesh` says how meshes
+/// are written.
 pub fn write_surface(
     output: &Path,
     format: OutputFormat,
     samples: &Grid<Point3>,
     title: &str,
     net: Option<&Grid<Point3>>,
+    mesh: &MeshOptions,
 ) -> Result<()> {
     match format {
         OutputFormat::Svg | OutputFormat::Png => {
@@ -124,7 +135,7 @@ pub fn write_surface(
             write_viewer_html(output, &scene)?;
         }
         OutputFormat::Csv => bail!("internal: CSV is written by the command"),
-        _ => write_surface_mesh(output, samples, &MeshOptions::default())?,
+        _ => write_surface_mesh(output, samples, mesh)?,
     }
     Ok(())
 }

@@ -297,10 +297,11 @@ fn tube_csv_obj_and_stl() {
     ]);
     assert!(o.status.success(), "{}", stderr(&o));
     let mesh = std::fs::read_to_string(&obj).unwrap();
-    // The closed grid: (N1 + 1) x (N2 + 1) vertices, 2 N1 N2 triangles.
+    // The closed grid, (N1 + 1) x (N2 + 1) samples, with both seams welded: N1 x N2
+    // vertices, 2 N1 N2 triangles.
     assert_eq!(
         mesh.lines().filter(|l| l.starts_with("v ")).count(),
-        13 * 21
+        12 * 20
     );
     assert_eq!(
         mesh.lines().filter(|l| l.starts_with("f ")).count(),
