@@ -5,6 +5,7 @@ mod errors;
 mod grid;
 mod indexed_csv;
 mod mesh;
+mod mesh_files;
 mod network;
 mod obj;
 mod points;
