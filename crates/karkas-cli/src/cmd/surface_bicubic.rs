@@ -1,7 +1,7 @@
 //! `karkas surface bicubic`: the bicubic interpolant of a grid of points with chosen
 //! parameters (Kuznetsov and Filatov, docs/methods.md §5).
 
-use crate::args::{MeshOutput, ClosedUv, GridInput, GridSamples};
+use crate::args::{ClosedUv, GridInput, GridSamples, MeshOutput};
 use crate::input::grid_points;
 use crate::output::formats::EXACT_SURFACE_FORMATS;
 use crate::output::surface::write_grid_surface;

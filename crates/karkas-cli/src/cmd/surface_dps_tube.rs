@@ -92,7 +92,14 @@ pub fn run(args: &SurfaceDpsTubeArgs) -> Result<()> {
                 args.r1, args.r2
             );
             let mesh = args.mesh.options(false);
-            write_surface(&args.output, format, &tube.closed_grid(), &title, None, &mesh)?;
+            write_surface(
+                &args.output,
+                format,
+                &tube.closed_grid(),
+                &title,
+                None,
+                &mesh,
+            )?;
         }
     }
     report_samples(&args.output, big_n1 * big_n2);

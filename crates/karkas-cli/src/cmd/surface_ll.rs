@@ -1,6 +1,6 @@
 //! `karkas surface ll`: the LL surface of a grid of points (Aulchenko et al., docs/methods.md §1.3).
 
-use crate::args::{MeshOutput, GridInput, GridSamples, LlSurfaceOptions};
+use crate::args::{GridInput, GridSamples, LlSurfaceOptions, MeshOutput};
 use crate::input::grid_points;
 use crate::output::formats::EXACT_SURFACE_FORMATS;
 use crate::output::surface::write_grid_surface;
