@@ -9,6 +9,7 @@
 //!
 //! Outputs: a mesh to `.obj .stl .ply .vtk .glb .html`; a grid to those and `.vts .svg .png`
 //! and `.csv` (`i,j,x,y,z`); a curve to `.svg .png .html`. Any other pair is refused.
+//! `--flip-normals` turns a mesh output over (reversed winding and normals).
 
 use crate::args::MeshOutput;
 use crate::output::curve::{to_space, write_curve_figure};

@@ -283,6 +283,39 @@ fn damaged_and_foreign_mesh_files_are_refused_in_one_line() {
         &out,
         None,
     );
+    // A PLY count its body cannot hold.
+    let huge_ply = write(
+        dir.path(),
+        "huge.ply",
+        "ply\nformat binary_little_endian 1.0\nelement vertex 1000000000\nproperty float x\n\
+         property float y\nproperty float z\nend_header\n\0\0\0\0",
+    );
+    assert_rejected(
+        &["convert", s(&huge_ply), s(&out)],
+        "huge.ply: the PLY header declares 1000000000 'vertex' elements, more than its body of 4 bytes can hold",
+        &out,
+        None,
+    );
+    // A damaged ASCII STL line and an OBJ vertex of five numbers, named by their lines.
+    let bad_stl = write(
+        dir.path(),
+        "bad.stl",
+        "solid\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 x 0\n",
+    );
+    assert_rejected(
+        &["convert", s(&bad_stl), s(&out)],
+        "bad.stl: not a readable STL file: line 5: 'x' is not a finite number",
+        &out,
+        None,
+    );
+    let bad_obj = write(dir.path(), "bad.obj", "v 0 0 0\nv 1 0 0 0.5 0.5\n");
+    let ply_out = dir.path().join("out.ply");
+    assert_rejected(
+        &["convert", s(&bad_obj), s(&ply_out)],
+        "bad.obj:2: a vertex is x y z, x y z w or x y z r g b [a]: found 5 numbers",
+        &ply_out,
+        None,
+    );
     // A mesh larger than the memory cap.
     let mut big = vec![b' '; 80];
     big.extend_from_slice(&30_000u32.to_le_bytes());

@@ -4,7 +4,8 @@
 //! A sampled surface (`nu x nv` points, row-major, `u` outer) becomes the mesh of its grid: one
 //! vertex per sample, one normal per vertex and two triangles per grid cell (see
 //! `mesh/normals.rs` and `mesh/triangulate.rs`). The grid shape is kept, so writers of
-//! structured formats (VTK structured grids) can use it.
+//! structured formats (VTK structured grids) can use it, and writers of formats with shared
+//! vertices (OBJ, PLY, glTF) weld the seam of a closed grid (`mesh/shared_vertices.rs`).
 //!
 //! Memory: `nu nv` positions and normals and `2 (nu-1)(nv-1)` index triples, O(nu nv).
 
