@@ -1,27 +1,30 @@
-//! Reading STL meshes, binary or ASCII, from a file or standard input.
+//! Reading STL meshes, binary or ASCII, from a file or standard input, in one pass.
 //!
-//! The input is read whole ([`Input::read_bytes`], within the memory cap), then:
-//! - binary when its size is exactly `84 + 50 n` bytes for the count `n` at bytes 80..84,
-//!   even when its 80-byte header starts with `solid` (some exporters write that);
-//! - otherwise ASCII when it starts with `solid` (after a byte-order mark or blanks): a bare
-//!   `solid`, `solid<TAB>name`, CRLF line ends and several solids one after the other are all
-//!   read, every solid's facets into the one mesh; keywords in any letter case; the facet
-//!   normals are not used; a facet loop of more than 3 vertices becomes the fan of triangles
-//!   from its first vertex;
-//! - otherwise binary, trailing bytes after the counted triangles ignored; a count the file
-//!   is too short for is refused before anything is allocated.
+//! The first 84 bytes decide:
+//! - a header that does not start with `solid` is binary: the triangle records are read one
+//!   at a time, as many as the count at bytes 80..84 says (trailing bytes are not read); an
+//!   input that ends before them is refused, saying how many bytes the count needs;
+//! - a header that starts with `solid` (after a byte-order mark or blanks) is binary when the
+//!   input is exactly `84 + 50 n` bytes for that count `n` (some exporters start binary
+//!   headers with `solid`): those bytes are read, when the memory cap allows them, and one
+//!   more to see the end;
+//! - otherwise it is ASCII, read line by line (each line bounded): a bare `solid`,
+//!   `solid<TAB>name`, CRLF line ends and several solids one after the other are all read,
+//!   every solid's facets into the one mesh; keywords in any letter case; the facet normals
+//!   are not used; a facet loop of more than 3 vertices becomes the fan of triangles from its
+//!   first vertex.
 //!
 //! Equal corners are merged into one vertex (by their exact coordinates, `-0` equal to `0`),
 //! so the mesh has shared vertices like the other formats; it has no normals. What the mesh
-//! will keep is charged against the memory cap ([`check_held`]) before it is allocated
-//! (binary) or as it grows (ASCII).
+//! keeps is charged against the memory cap ([`check_held`]) as it grows, and nothing is
+//! allocated from the header's count beyond a small first capacity.
 //!
 //! Hand-written: `stl_io` decides binary against ASCII by the first five bytes only (so a
 //! bare `solid` line or CRLF ends fail with "failed to fill whole buffer"), reads only the
-//! first solid, and reads from a seekable file.
+//! first solid, and needs a seekable file.
 
 use std::collections::HashMap;
-use std::io;
+use std::io::{self, BufRead, Cursor, Read};
 use std::path::Path;
 
 use karkas::Point3;
@@ -37,6 +40,8 @@ const RECORD: usize = 50;
 /// The bytes a mesh keeps per triangle at most while it is read: three new vertices (24
 /// bytes each and about 40 in the merging table) and one index triple.
 const HELD_PER_TRIANGLE: u128 = 3 * (24 + 40) + 12;
+/// The triangles between two checks of what a binary read keeps.
+const CHECK_EVERY: u64 = 4096;
 
 /// Reads the STL file `path` (`-`: standard input; binary or ASCII) as a mesh without
 /// normals.
@@ -44,53 +49,83 @@ pub fn read_stl(path: &Path) -> Result<TriangleMesh, IoError> {
     read_stl_from(&mut Input::open(path)?)
 }
 
-/// Reads the STL mesh of `input` (see the module docs).
-pub fn read_stl_from(input: &mut Input) -> Result<TriangleMesh, IoError> {
-    let bytes = input.read_bytes()?;
-    parse_stl(&bytes, &input.name)
-}
-
 /// The mesh of the STL file `bytes` (see the module docs); `path` names it in errors.
 pub fn parse_stl(bytes: &[u8], path: &Path) -> Result<TriangleMesh, IoError> {
-    let declared = bytes
+    read_stl_from(&mut Input::from_reader(path, Cursor::new(bytes.to_vec())))
+}
+
+/// Reads the STL mesh of `input` (see the module docs).
+pub fn read_stl_from(input: &mut Input) -> Result<TriangleMesh, IoError> {
+    let name = input.name.clone();
+    let path = name.as_path();
+    let head = read_up_to(input, HEADER as u64, path)?;
+    let declared = head
         .get(80..HEADER)
         .map(|b| u32::from_le_bytes([b[0], b[1], b[2], b[3]]) as u64);
-    let size = bytes.len() as u64;
-    let exact = declared.is_some_and(|n| HEADER as u64 + RECORD as u64 * n == size);
-    if !exact && starts_with_solid(bytes) {
-        return parse_ascii(bytes, path, declared);
+    let head_is_binary = head.contains(&0);
+    if starts_with_solid(&head) {
+        let Some(n) = declared else {
+            return parse_ascii(&mut Cursor::new(head).chain(input), path, None);
+        };
+        let body = RECORD as u64 * n;
+        if check_held(path, body as u128 + n as u128 * HELD_PER_TRIANGLE).is_err() {
+            let hint = head_is_binary.then_some(n);
+            return parse_ascii(&mut Cursor::new(head).chain(input), path, hint);
+        }
+        let records = read_up_to(input, body + 1, path)?;
+        if records.len() as u64 == body {
+            return read_binary(&mut records.as_slice(), n, path);
+        }
+        let hint = (head_is_binary || records.contains(&0)).then_some(n);
+        let bytes = [head, records].concat();
+        return parse_ascii(&mut Cursor::new(bytes).chain(input), path, hint);
     }
     let Some(n) = declared else {
         return Err(decode(
             path,
             format!(
-                "{size} bytes: too short for a binary STL (84 bytes at least) and not an \
-                 ASCII STL (no 'solid' line)"
+                "{} bytes: too short for a binary STL (84 bytes at least) and not an ASCII \
+                 STL (no 'solid' line)",
+                head.len()
             ),
         ));
     };
-    let needed = HEADER as u64 + RECORD as u64 * n;
-    if needed > size {
-        return Err(decode(
-            path,
-            format!(
-                "the binary header counts {n} triangles, which need {needed} bytes, but the \
-                 input has {size}"
-            ),
-        ));
-    }
-    check_held(path, size as u128 + n as u128 * HELD_PER_TRIANGLE)?;
-    let mut mesh = MergedMesh::with_capacity(n as usize);
-    for (k, record) in bytes[HEADER..needed as usize]
-        .chunks_exact(RECORD)
-        .enumerate()
-    {
+    read_binary(input, n, path)
+}
+
+/// Up to `limit` bytes of `reader` (fewer at its end).
+fn read_up_to(reader: &mut impl Read, limit: u64, path: &Path) -> Result<Vec<u8>, IoError> {
+    let mut bytes = Vec::new();
+    reader
+        .take(limit)
+        .read_to_end(&mut bytes)
+        .map_err(IoError::open(path))?;
+    Ok(bytes)
+}
+
+/// The `n` binary triangle records of `reader` (after the 84-byte header).
+fn read_binary(reader: &mut impl Read, n: u64, path: &Path) -> Result<TriangleMesh, IoError> {
+    let mut mesh = MergedMesh::with_capacity(n.min(1 << 16) as usize);
+    let mut record = [0u8; RECORD];
+    for k in 0..n {
+        let got = fill(reader, &mut record).map_err(IoError::open(path))?;
+        if got < RECORD {
+            let needed = HEADER as u64 + RECORD as u64 * n;
+            let size = HEADER as u64 + RECORD as u64 * k + got as u64;
+            return Err(decode(
+                path,
+                format!(
+                    "the binary header counts {n} triangles, which need {needed} bytes, but \
+                     the input has {size}"
+                ),
+            ));
+        }
         let value = |i: usize| {
             let at = 12 + 4 * i;
-            f32::from_le_bytes([record[at], record[at + 1], record[at + 2], record[at + 3]]) as f64
+            let b = [record[at], record[at + 1], record[at + 2], record[at + 3]];
+            f32::from_le_bytes(b) as f64
         };
-        let corners =
-            [0, 1, 2].map(|c| Point3::new([value(3 * c), value(3 * c + 1), value(3 * c + 2)]));
+        let corners = [0, 1, 2].map(|c| Point3::new([0, 1, 2].map(|x| value(3 * c + x))));
         if !corners.iter().all(|p| p.is_finite()) {
             return Err(data_error(
                 path,
@@ -98,20 +133,34 @@ pub fn parse_stl(bytes: &[u8], path: &Path) -> Result<TriangleMesh, IoError> {
             ));
         }
         mesh.push_polygon(&corners, path)?;
+        if k % CHECK_EVERY == 0 {
+            check_held(path, mesh.held())?;
+        }
     }
+    check_held(path, mesh.held())?;
     mesh.finish(path)
+}
+
+/// Fills `buf` from `reader`; the number of bytes read, fewer than `buf.len()` only at the
+/// end of the input.
+fn fill(reader: &mut impl Read, buf: &mut [u8]) -> io::Result<usize> {
+    let mut got = 0;
+    while got < buf.len() {
+        match reader.read(&mut buf[got..]) {
+            Ok(0) => break,
+            Ok(k) => got += k,
+            Err(e) if e.kind() == io::ErrorKind::Interrupted => {}
+            Err(e) => return Err(e),
+        }
+    }
+    Ok(got)
 }
 
 /// True when `bytes` start with `solid` (any case), after a byte-order mark and blanks.
 fn starts_with_solid(bytes: &[u8]) -> bool {
     let bytes = bytes.strip_prefix(b"\xef\xbb\xbf").unwrap_or(bytes);
-    let start = bytes
-        .iter()
-        .position(|b| !b.is_ascii_whitespace())
-        .unwrap_or(bytes.len());
-    bytes[start..]
-        .get(..5)
-        .is_some_and(|w| w.eq_ignore_ascii_case(b"solid"))
+    let start = bytes.trim_ascii_start();
+    start.len() >= 5 && start[..5].eq_ignore_ascii_case(b"solid")
 }
 
 /// An [`IoError::Decode`] of an STL file saying `message`.
@@ -123,33 +172,32 @@ fn decode(path: &Path, message: impl Into<String>) -> IoError {
     }
 }
 
-/// The mesh of an ASCII STL (see the module docs); `declared` is the binary count the
-/// bytes 80..84 would hold, for the message about a damaged binary file.
-fn parse_ascii(bytes: &[u8], path: &Path, declared: Option<u64>) -> Result<TriangleMesh, IoError> {
-    let mut reader = bytes;
+/// The mesh of the ASCII STL lines of `reader` (see the module docs). `damaged_binary` is
+/// the count of a binary header whose bytes were seen: binary data in the lines is then
+/// reported as a damaged binary STL.
+fn parse_ascii<R: BufRead + ?Sized>(
+    reader: &mut R,
+    path: &Path,
+    damaged_binary: Option<u64>,
+) -> Result<TriangleMesh, IoError> {
     let mut buf = Vec::new();
     let mut mesh = MergedMesh::with_capacity(0);
     let mut facet: Option<Vec<Point3>> = None;
     let mut line = 0;
     loop {
         line += 1;
-        let more = read_line_bytes(&mut reader, path, &mut buf, line).map_err(|e| {
-            match (
-                declared,
-                buf.contains(&0) || bytes[..bytes.len().min(HEADER)].contains(&0),
-            ) {
-                (Some(n), true) => decode(
+        let more =
+            read_line_bytes(reader, path, &mut buf, line).map_err(|e| match damaged_binary {
+                Some(n) => decode(
                     path,
                     format!(
-                        "it starts with 'solid' but holds binary data, and its {} bytes are not \
-                         84 + 50 x {n} for the {n} triangles its binary header counts (a \
-                         damaged binary STL)",
-                        bytes.len()
-                    ),
+                    "it starts with 'solid' but holds binary data, and its size is not 84 + 50 \
+                     x {n} bytes for the {n} triangles its binary header counts (a damaged \
+                     binary STL)"
                 ),
-                _ => e,
-            }
-        })?;
+                ),
+                None => e,
+            })?;
         if !more {
             break;
         }
@@ -207,7 +255,7 @@ fn parse_ascii(bytes: &[u8], path: &Path, declared: Option<u64>) -> Result<Trian
                     )));
                 }
                 mesh.push_polygon(&corners, path)?;
-                check_held(path, bytes.len() as u128 + mesh.held())?;
+                check_held(path, mesh.held())?;
             }
             _ => {
                 return Err(at(format!(

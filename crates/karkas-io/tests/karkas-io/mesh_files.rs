@@ -432,3 +432,17 @@ fn meshes_are_turned_over_on_request() {
         ]
     );
 }
+
+#[test]
+fn endless_binary_input_is_refused_at_once() {
+    // Zeros: a binary header counting no triangles; the rest is never read.
+    let zeros = std::io::BufReader::new(std::io::repeat(0));
+    let input = Input::from_reader("<stdin>", zeros);
+    let e = read_mesh_from(input, None).unwrap_err();
+    assert_eq!(e.to_string(), "<stdin>: the mesh has no faces");
+    // 0xff bytes: 4294967295 triangles counted, the first one not finite.
+    let ones = std::io::BufReader::new(std::io::repeat(0xff));
+    let input = Input::from_reader("<stdin>", ones);
+    let e = read_mesh_from(input, None).unwrap_err();
+    assert_eq!(e.to_string(), "<stdin>: triangle 0: a vertex is not finite");
+}
