@@ -143,16 +143,20 @@ pub fn parse_ply(bytes: &[u8], path: &Path) -> Result<TriangleMesh, IoError> {
 /// Reads the header of a PLY file from `reader` up to its `end_header` line.
 fn read_header<R: BufRead + ?Sized>(reader: &mut R, path: &Path) -> Result<Header, IoError> {
     let mut buf = Vec::new();
-    let not_ply =
-        |first: &str| data_error(path, format!("not a PLY file: the first line is '{first}'"));
+    let not_ply = |what: &str| data_error(path, format!("not a PLY file: {what}"));
     match read_line_bytes(reader, path, &mut buf, 1) {
         Ok(true) => {}
-        Ok(false) => return Err(data_error(path, "not a PLY file: the input is empty")),
-        Err(_) => return Err(not_ply("binary data")),
+        Ok(false) => return Err(not_ply("the input is empty")),
+        Err(_) => {
+            return Err(not_ply(
+                "the first line is binary data or longer than 1 MiB",
+            ))
+        }
     }
     let first = String::from_utf8_lossy(&buf);
     if first.trim() != "ply" {
-        return Err(not_ply(&excerpt(first.trim_end_matches(['\r', '\n']))));
+        let first = excerpt(first.trim_end_matches(['\r', '\n']));
+        return Err(not_ply(&format!("the first line is '{first}'")));
     }
     let mut format = None;
     let mut elements: Vec<Element> = Vec::new();

@@ -446,3 +446,12 @@ fn endless_binary_input_is_refused_at_once() {
     let e = read_mesh_from(input, None).unwrap_err();
     assert_eq!(e.to_string(), "<stdin>: triangle 0: a vertex is not finite");
 }
+
+#[test]
+fn binary_data_is_not_a_ply_file() {
+    let e = read_bytes_as("zero.ply", &[0u8; 64]).unwrap_err();
+    assert!(
+        e.ends_with("zero.ply: not a PLY file: the first line is binary data or longer than 1 MiB"),
+        "{e}"
+    );
+}
