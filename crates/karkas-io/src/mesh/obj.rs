@@ -14,7 +14,8 @@
 //! mesh tools.
 //!
 //! Reading, one line at a time (each line bounded, see [`crate::input`]; what is kept is
-//! charged against the memory cap as it grows):
+//! charged against the memory cap as it grows; a line that is not UTF-8 is refused only when
+//! it is one of the lines read, so names in another encoding pass):
 //! - as a mesh ([`read_obj_mesh`], [`parse_obj_mesh`]): `v` and `f` lines. A `v` line holds
 //!   `x y z`, `x y z w` or `x y z r g b` (the vertex colours some scanners and MeshLab write,
 //!   also `x y z r g b a`): the position is `x y z` as written. `w` is the weight of a
@@ -253,8 +254,18 @@ impl<'a, R: BufRead + ?Sized> ObjLines<'a, R> {
         if !read_line_bytes(self.reader, self.name, &mut self.bytes, self.line)? {
             return Ok(None);
         }
-        let text = std::str::from_utf8(&self.bytes)
-            .map_err(|_| Location::new(self.name, self.line).error(not_utf8_message()))?;
+        let Ok(text) = std::str::from_utf8(&self.bytes) else {
+            // Names (`o`, `g`, `usemtl`, comments) in another encoding are skipped like the
+            // rest of their lines; the lines read are plain ASCII.
+            let keyword = self
+                .bytes
+                .split(u8::is_ascii_whitespace)
+                .find(|w| !w.is_empty());
+            if matches!(keyword, Some(b"v" | b"vn" | b"f")) {
+                return Err(Location::new(self.name, self.line).error(not_utf8_message()));
+            }
+            return Ok(Some((self.line, "")));
+        };
         let text = if self.line == 1 {
             text.trim_start_matches('\u{feff}')
         } else {

@@ -10,8 +10,8 @@
 //!   more to see the end;
 //! - otherwise it is ASCII, read line by line (each line bounded): a bare `solid`,
 //!   `solid<TAB>name`, CRLF line ends and several solids one after the other are all read,
-//!   every solid's facets into the one mesh; keywords in any letter case; the facet normals
-//!   are not used; a facet loop of more than 3 vertices becomes the fan of triangles from its
+//!   every solid's facets into the one mesh; keywords in any letter case; solid names in any
+//!   encoding; the facet normals are not used; a facet loop of more than 3 vertices becomes the fan of triangles from its
 //!   first vertex.
 //!
 //! Equal corners are merged into one vertex (by their exact coordinates, `-0` equal to `0`),
@@ -201,8 +201,9 @@ fn parse_ascii<R: BufRead + ?Sized>(
         if !more {
             break;
         }
-        let text = std::str::from_utf8(&buf)
-            .map_err(|_| decode(path, format!("line {line}: not text")))?;
+        // Solid names in another encoding than UTF-8 are common; only keywords and numbers
+        // are read.
+        let text = String::from_utf8_lossy(&buf);
         let text = text.trim_start_matches('\u{feff}');
         let mut words = text.split_ascii_whitespace();
         let Some(keyword) = words.next() else {

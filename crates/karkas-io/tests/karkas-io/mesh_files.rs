@@ -47,7 +47,10 @@ fn ascii_stl_with_a_bare_solid_line_tabs_and_crlf() {
         "solid\tpart 7\r\n{}ENDSOLID\tpart 7\r\n",
         facet([A, B, D], "\r\n").replace("vertex", "VERTEX")
     );
-    let mesh = read_bytes_as("crlf.stl", crlf.as_bytes()).unwrap();
+    let mut crlf = crlf.into_bytes();
+    // A solid name in Latin-1 ("Bauteil \u{fc}"), as older CAD tools write it.
+    crlf.splice(11..11, *b" Bauteil \xfc");
+    let mesh = read_bytes_as("crlf.stl", &crlf).unwrap();
     assert_eq!((mesh.positions.len(), mesh.triangles.len()), (3, 1));
     assert_eq!(mesh.positions[2], Point3::new(D));
     // A file of nothing but one line `solid` has no faces.
@@ -155,6 +158,14 @@ fn obj_with_colours_w_polygons_and_other_lines() {
         mesh.normals.is_empty(),
         "the normals do not follow the vertices"
     );
+    // A group name in Latin-1 is skipped; a vertex line that is not UTF-8 is not.
+    let latin = b"g Fl\xfcgel\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    assert_eq!(
+        read_bytes_as("latin.obj", latin).unwrap().triangles.len(),
+        1
+    );
+    let e = read_bytes_as("bad.obj", b"v 0 0 0\xff\n").unwrap_err();
+    assert!(e.ends_with("bad.obj:1: not UTF-8 text (binary data, or a file saved in another encoding: save it as UTF-8)"), "{e}");
     let e = read_bytes_as("five.obj", b"v 1 2 3 4 5\n").unwrap_err();
     assert!(
         e.ends_with("five.obj:1: a vertex is x y z, x y z w or x y z r g b [a]: found 5 numbers"),
