@@ -319,7 +319,13 @@ fn damaged_and_foreign_mesh_files_are_refused_in_one_line() {
     // A mesh larger than the memory cap.
     let mut big = vec![b' '; 80];
     big.extend_from_slice(&30_000u32.to_le_bytes());
-    big.resize(84 + 50 * 30_000, 0);
+    for k in 0..30_000u32 {
+        big.extend_from_slice(&[0; 12]);
+        for c in 0..9u32 {
+            big.extend_from_slice(&((9 * k + c) as f32).to_le_bytes());
+        }
+        big.extend_from_slice(&[0, 0]);
+    }
     let big_path = dir.path().join("big.stl");
     std::fs::write(&big_path, &big).unwrap();
     assert_rejected(
