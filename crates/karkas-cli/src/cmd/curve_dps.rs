@@ -8,6 +8,7 @@ use crate::output::curve::{project, to_space, write_curve_html};
 use crate::output::formats::CURVE_FORMATS;
 use crate::output::overwrite::ensure_distinct;
 use crate::output::samples::{report_samples, MAX_SAMPLES};
+use crate::output::target::output_format;
 use anyhow::{bail, Result};
 use clap::Args;
 use karkas::dps::DiscreteSpline;
@@ -43,7 +44,7 @@ pub struct CurveDpsArgs {
 /// Runs `karkas curve dps`.
 pub fn run(args: &CurveDpsArgs) -> Result<()> {
     refuse_cad_for_discrete(&args.output)?;
-    let format = OutputFormat::from_path(&args.output, &CURVE_FORMATS)?;
+    let format = output_format(&args.output, &CURVE_FORMATS)?;
     check_dps_order("--order", args.order)?;
     check_dps_step("--n", args.step)?;
     ensure_distinct(&args.input, &args.output)?;

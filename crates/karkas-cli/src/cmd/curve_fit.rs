@@ -9,6 +9,7 @@ use crate::output::formats::EXACT_CURVE_FORMATS;
 use crate::output::overwrite::ensure_distinct;
 use crate::output::samples::default_curve_samples;
 use crate::output::samples::sample_curve;
+use crate::output::target::{output_format, shown};
 use anyhow::{bail, Context, Result};
 use clap::Args;
 use karkas::fit::{check_knots, fit_curve, fit_curve_adaptive, CurveFit, FitOptions};
@@ -62,7 +63,7 @@ pub struct CurveFitArgs {
 
 /// Runs `karkas curve fit`.
 pub fn run(args: &CurveFitArgs) -> Result<()> {
-    let format = OutputFormat::from_path(&args.output, &EXACT_CURVE_FORMATS)?;
+    let format = output_format(&args.output, &EXACT_CURVE_FORMATS)?;
     if let Some(knots) = &args.knots {
         check_knots(knots).context("--knots")?;
     }
@@ -154,7 +155,7 @@ impl CurveJob for (&CurveFitArgs, OutputFormat) {
         write_sampled_curve(output, format, &title, samples, points, false, overlay)?;
         eprintln!(
             "karkas: wrote {} ({n} samples); {} knots, max deviation {:.6e}, rms {:.6e}, f = {:.6e}, p = {:.6e}, fitted in {:.1} ms",
-            args.output.display(),
+            shown(&args.output).display(),
             fit.spline.knots().len(),
             fit.max_distance(),
             fit.rms_distance(),

@@ -9,6 +9,7 @@ use crate::output::memory::check_memory;
 use crate::output::overwrite::ensure_distinct;
 use crate::output::samples::sample_curve;
 use crate::output::samples::{default_curve_samples, report_samples, MAX_SAMPLES};
+use crate::output::target::output_format;
 use anyhow::{Context, Result};
 use clap::Args;
 use karkas::ll::LlCurve;
@@ -46,7 +47,7 @@ pub struct CurveLlArgs {
 
 /// Runs `karkas curve ll`.
 pub fn run(args: &CurveLlArgs) -> Result<()> {
-    let format = OutputFormat::from_path(&args.output, &EXACT_CURVE_FORMATS)?;
+    let format = output_format(&args.output, &EXACT_CURVE_FORMATS)?;
     check_ll_order(args.order)?;
     args.samples.check()?;
     ensure_distinct(&args.input, &args.output)?;

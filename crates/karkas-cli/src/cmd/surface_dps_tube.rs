@@ -7,6 +7,7 @@ use crate::output::formats::SURFACE_FORMATS;
 use crate::output::overwrite::ensure_distinct;
 use crate::output::samples::{report_samples, MAX_SAMPLES};
 use crate::output::surface::write_surface;
+use crate::output::target::output_format;
 use anyhow::{bail, Result};
 use clap::Args;
 use karkas::dps::TubeSurface;
@@ -48,7 +49,7 @@ pub struct SurfaceDpsTubeArgs {
 /// Runs `karkas surface dps-tube`.
 pub fn run(args: &SurfaceDpsTubeArgs) -> Result<()> {
     refuse_cad_for_discrete(&args.output)?;
-    let format = OutputFormat::from_path(&args.output, &SURFACE_FORMATS)?;
+    let format = output_format(&args.output, &SURFACE_FORMATS)?;
     check_dps_order("--r1", args.r1)?;
     check_dps_order("--r2", args.r2)?;
     check_dps_step("--n1", args.n1)?;

@@ -30,7 +30,19 @@ pub struct MeshOptions {
 /// failing [`TriangleMesh::validate`] (or, for `.vts`, without a grid shape) an
 /// [`IoError::InvalidMesh`]; nothing is written then.
 pub fn write_mesh(path: &Path, mesh: &TriangleMesh, options: &MeshOptions) -> Result<(), IoError> {
-    match OutputFormat::from_path(path, &OutputFormat::MESHES)? {
+    let format = OutputFormat::from_path(path, &OutputFormat::MESHES)?;
+    write_mesh_as(format, path, mesh, options)
+}
+
+/// Writes `mesh` at `path` (`-`: standard output) in `format`, whatever the extension of
+/// `path`, as [`write_mesh`] does; a `format` that is not a mesh format writes binary glTF.
+pub fn write_mesh_as(
+    format: OutputFormat,
+    path: &Path,
+    mesh: &TriangleMesh,
+    options: &MeshOptions,
+) -> Result<(), IoError> {
+    match format {
         OutputFormat::Obj => write_mesh_obj(path, mesh),
         OutputFormat::Stl => write_mesh_stl(path, mesh, options.ascii),
         OutputFormat::Ply => {
@@ -54,8 +66,19 @@ pub fn write_surface_mesh(
     grid: &Grid<Point3>,
     options: &MeshOptions,
 ) -> Result<(), IoError> {
+    let format = OutputFormat::from_path(path, &OutputFormat::MESHES)?;
+    write_surface_mesh_as(format, path, grid, options)
+}
+
+/// Writes the sampled surface `grid` as a mesh in `format` (see [`write_mesh_as`]).
+pub fn write_surface_mesh_as(
+    format: OutputFormat,
+    path: &Path,
+    grid: &Grid<Point3>,
+    options: &MeshOptions,
+) -> Result<(), IoError> {
     let mesh = TriangleMesh::from_grid(grid).map_err(IoError::invalid_mesh(path))?;
-    write_mesh(path, &mesh, options)
+    write_mesh_as(format, path, &mesh, options)
 }
 
 /// Reads the triangle mesh of `path` by its extension: `.obj`, `.stl` or `.ply`. A mesh

@@ -20,6 +20,8 @@ pub(crate) mod triangle_mesh;
 pub(crate) mod triangulate;
 pub mod vtk;
 
-pub use any_format::{read_mesh, write_mesh, write_surface_mesh, MeshOptions};
+pub use any_format::{
+    read_mesh, write_mesh, write_mesh_as, write_surface_mesh, write_surface_mesh_as, MeshOptions,
+};
 pub use error::MeshError;
 pub use triangle_mesh::TriangleMesh;
