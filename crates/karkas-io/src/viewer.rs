@@ -97,7 +97,7 @@ pub const PAGE_POINT: u128 = 150;
 /// bundled scripts (three times: text, base64, page) and [`PAGE_SURFACE_SAMPLE`] and the
 /// like per item shown.
 pub fn page_bytes(scene: &ViewerScene) -> u128 {
-    let scripts = 3 * (THREE_JS.len() + ORBIT_CONTROLS_JS.len() + PAGE_SCRIPT.len()) as u128;
+    let scripts = page_scripts_bytes();
     let n = |k: usize| k as u128;
     let mut bytes = scripts + n(scene.points.len()) * PAGE_POINT;
     for s in &scene.surfaces {
@@ -114,6 +114,11 @@ pub fn page_bytes(scene: &ViewerScene) -> u128 {
             + n(m.mesh.triangles.len()) * PAGE_MESH_TRIANGLE;
     }
     bytes
+}
+
+/// What the scripts bundled into every page take while it is built (text, base64, page).
+pub fn page_scripts_bytes() -> u128 {
+    3 * (THREE_JS.len() + ORBIT_CONTROLS_JS.len() + PAGE_SCRIPT.len()) as u128
 }
 
 /// Writes the viewer page of `scene` at `path`, atomically; refuses (before building it) a
