@@ -535,3 +535,37 @@ fn a_killed_write_leaves_only_an_obviously_stale_file() {
         assert!(!dir.path().join(&name).exists());
     }
 }
+
+#[test]
+fn a_binary_format_is_refused_on_a_terminal() {
+    let dir = temp_dir();
+    let p = points(dir.path());
+    // Standard output a pseudo-terminal, as in an interactive shell.
+    let script = "import os, pty, subprocess, sys\n\
+                  m, t = pty.openpty()\n\
+                  r = subprocess.run(sys.argv[1:], stdout=t, stderr=subprocess.PIPE)\n\
+                  os.close(t)\n\
+                  sys.stderr.write(r.stderr.decode())\n\
+                  print(r.returncode)\n";
+    let run = |format: &str| {
+        let o = Command::new("python3")
+            .arg("-c")
+            .arg(script)
+            .arg(env!("CARGO_BIN_EXE_karkas"))
+            .args(["curve", "ll", s(&p), "-o", "-", "--format", format])
+            .env_remove("KARKAS_MAX_MEMORY")
+            .output()
+            .expect("python3 runs");
+        (stdout(&o).trim().to_owned(), stderr(&o))
+    };
+    let (code, err) = run("png");
+    assert_eq!(code, "2");
+    assert_eq!(
+        err,
+        "karkas: error: <stdout>: png is binary and standard output is a terminal (redirect it \
+         to a file or a pipe)\n"
+    );
+    // Text goes to the terminal.
+    let (code, err) = run("csv");
+    assert_eq!(code, "0", "{err}");
+}
