@@ -4,8 +4,9 @@
 use crate::args::{CombOption, CurveSamples};
 use crate::input::{run_on_curve_points, CurveJob};
 use crate::output::cad::write_cad_curve;
-use crate::output::curve::write_sampled_curve;
+use crate::output::curve::{curve_output_bytes, write_sampled_curve};
 use crate::output::formats::EXACT_CURVE_FORMATS;
+use crate::output::memory::check_memory;
 use crate::output::overwrite::ensure_distinct;
 use crate::output::samples::default_curve_samples;
 use crate::output::samples::sample_curve;
@@ -121,6 +122,10 @@ impl CurveJob for (&CurveFitArgs, OutputFormat) {
         let n = args
             .samples
             .or_else(|| default_curve_samples(2 * fit.spline.pieces()));
+        check_memory(
+            &format!("curve fit: {n} samples"),
+            curve_output_bytes::<D>(format, n + points.len()),
+        )?;
         let (ts, samples) = sample_curve(&fit.spline, n);
         if let Some(report) = &args.report {
             write_atomic(report, |w| {

@@ -3,7 +3,7 @@
 use crate::args::{check_ll_order, CombOption, CurveSamples};
 use crate::input::{curve_points, run_on_curve_points, CurveJob};
 use crate::output::cad::write_cad_curve;
-use crate::output::curve::write_sampled_curve;
+use crate::output::curve::{curve_output_bytes, write_sampled_curve};
 use crate::output::formats::EXACT_CURVE_FORMATS;
 use crate::output::memory::check_memory;
 use crate::output::overwrite::ensure_distinct;
@@ -73,7 +73,7 @@ impl CurveJob for (&CurveLlArgs, OutputFormat) {
             .or_else(|| default_curve_samples(points.len()).min(MAX_SAMPLES));
         check_memory(
             &format!("curve ll: {n} samples"),
-            (n as u128) * (8 + 8 * D as u128),
+            curve_output_bytes::<D>(format, n + points.len()),
         )?;
         let (ts, samples) = sample_curve(&curve, n);
         let variant = if args.interpolate {

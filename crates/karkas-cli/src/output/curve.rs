@@ -75,6 +75,12 @@ pub fn write_curve_figure<const D: usize>(
     }
 }
 
+/// What `points` samples of a curve (held as `Point<D>` with their parameters) take written in
+/// `format`: checked by the commands before they sample.
+pub fn curve_output_bytes<const D: usize>(format: OutputFormat, points: usize) -> u128 {
+    figure_bytes::<D>(format, points, &CurveOverlay::default())
+}
+
 /// What drawing `points` points of a curve and its input (held as `Point<D>`, with their
 /// parameters) in `format` takes: the points and their copies in space or in the plane, and
 /// the picture or the page as their writers estimate them.

@@ -309,6 +309,23 @@ fn the_memory_cap_holds_for_pictures_pages_and_meshes() {
             let what = format!("curve {out} under {cap_arg}");
             assert_within(&what, cap, peak_memory(dir.path(), &args));
         }
+        for out in ["d.svg", "d.csv"] {
+            let args = [
+                "--max-memory",
+                &cap_arg,
+                "curve",
+                "dps",
+                "--order",
+                "2",
+                "--n",
+                "1000000",
+                s(&p),
+                "-o",
+                out,
+            ];
+            let what = format!("curve dps {out} under {cap_arg}");
+            assert_within(&what, cap, peak_memory(dir.path(), &args));
+        }
     }
     // The refusal comes before any work: the big PNG is refused at once under 16M.
     let (code, err, _) = peak_memory(
