@@ -7,7 +7,7 @@
 //! and by the picture and page writers of `karkas-io` before they start.
 
 use anyhow::{bail, Context, Result};
-use karkas_io::picture::budget;
+use karkas_io::picture::budget::{self, human_bytes};
 use karkas_io::viewer::{PAGE_POINT, PAGE_SURFACE_SAMPLE};
 use karkas_io::OutputFormat;
 use std::sync::OnceLock;
@@ -76,8 +76,8 @@ pub fn check_memory(request: &str, bytes: u128) -> Result<()> {
         bail!(
             "{request} would need {} of memory, above the cap of {} (raise it with --max-memory \
              or KARKAS_MAX_MEMORY, or ask for fewer samples)",
-            human(bytes),
-            human(u128::from(cap))
+            human_bytes(bytes),
+            human_bytes(u128::from(cap))
         );
     }
     Ok(())
@@ -114,22 +114,6 @@ pub fn mesh_output_bytes(vertices: usize, triangles: usize) -> u128 {
     vertices as u128 * MESH_PER_VERTEX + triangles as u128 * MESH_PER_TRIANGLE
 }
 
-/// `bytes` in the largest binary unit that keeps it at least 1.
-fn human(bytes: u128) -> String {
-    let units = ["B", "KiB", "MiB", "GiB", "TiB"];
-    let mut value = bytes as f64;
-    let mut unit = 0;
-    while value >= 1024.0 && unit + 1 < units.len() {
-        value /= 1024.0;
-        unit += 1;
-    }
-    if unit == 0 {
-        format!("{bytes} B")
-    } else {
-        format!("{value:.1} {}", units[unit])
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -145,7 +129,7 @@ mod tests {
         assert!(parse_size("12X").is_err());
         assert!(parse_size("lots").is_err());
         assert!(parse_size("99999999999T").is_err());
-        assert_eq!(human(3 << 29), "1.5 GiB");
-        assert_eq!(human(10), "10 B");
+        assert_eq!(human_bytes(3 << 29), "1.5 GiB");
+        assert_eq!(human_bytes(10), "10 B");
     }
 }
