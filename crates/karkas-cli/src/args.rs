@@ -6,6 +6,7 @@
 //! keeps the group and overrides the help text with `#[command(mut_arg(..))]`.
 
 use crate::output::curve::curvature_comb;
+use crate::output::formats::ALL_FORMATS;
 use crate::output::overwrite::ensure_distinct;
 use crate::output::samples::MAX_SAMPLES;
 use anyhow::{bail, Context, Result};
@@ -242,6 +243,24 @@ pub fn parse_finite_list<const N: usize>(text: &str, expected: &str) -> Result<[
     Ok(out)
 }
 
+/// Parses the name of an output format for `--format`: an extension without the dot (`csv`,
+/// `svg`, `png`, `html`, `obj`, `stl`, `ply`, `vtk`, `vts`, `glb`, `step`/`stp`, `iges`/`igs`),
+/// in any case.
+pub fn parse_format(text: &str) -> Result<OutputFormat, String> {
+    let name = text.trim();
+    let known = |f: &OutputFormat| {
+        name.eq_ignore_ascii_case(f.extension())
+            || f.alias().is_some_and(|a| name.eq_ignore_ascii_case(a))
+    };
+    ALL_FORMATS.iter().copied().find(known).ok_or_else(|| {
+        let names: Vec<&str> = ALL_FORMATS.iter().map(|f| f.extension()).collect();
+        format!(
+            "'{name}' is not an output format (one of {})",
+            names.join(", ")
+        )
+    })
+}
+
 /// Parses one sample count (at least 2).
 pub fn parse_count(text: &str) -> Result<usize, String> {
     let n = parse_whole(text)?;
@@ -261,6 +280,9 @@ mod tests {
         assert!(parse_pair("10").is_err());
         assert!(parse_pair("1,5").is_err());
         assert!(parse_count("x").is_err());
+        assert_eq!(parse_format("PNG"), Ok(OutputFormat::Png));
+        assert_eq!(parse_format("stp"), Ok(OutputFormat::Step));
+        assert!(parse_format("docx").is_err());
         assert_eq!(parse_finite(" -2.5 "), Ok(-2.5));
         assert!(parse_finite("inf").is_err());
         assert_eq!(parse_finite_list::<2>("1, 2", "A,B"), Ok([1.0, 2.0]));

@@ -3,7 +3,8 @@
 //! A thin layer over the `karkas` and `karkas-io` crates: one file per command in `cmd/`, the
 //! option groups they share in `args`, the checks of input frames in `input`, and every way a
 //! result leaves the program (files, reports, the error line) in `output/`.
-//! Exit codes: 0 on success, 2 on any error (bad arguments, bad or unreadable input, an
+//! Exit codes: 0 on success (also when the reader of standard output closes it early), 2 on
+//! any error (bad arguments, bad or unreadable input, an
 //! output that cannot be written); the message is one line on standard error naming the file
 //! and the line or grid cell at fault. No output file is created or changed on error.
 
@@ -33,6 +34,11 @@ struct Cli {
     /// environment variable KARKAS_MAX_MEMORY); larger requests fail before any work.
     #[arg(long, global = true, value_name = "SIZE", value_parser = output::memory::parse_size)]
     max_memory: Option<u64>,
+    /// The format of the output: csv, svg, png, html, obj, stl, ply, vtk, vts, glb, step, iges
+    /// (each command writes some). Needed for another format than CSV on standard output
+    /// (-o -); wins over the output file's extension.
+    #[arg(long, global = true, value_name = "FORMAT", value_parser = args::parse_format)]
+    format: Option<karkas_io::OutputFormat>,
 }
 
 #[derive(Debug, Subcommand)]
@@ -87,6 +93,11 @@ fn main() -> ExitCode {
         eprintln!("karkas: error: {}", output::message::error_line(&e));
         return ExitCode::from(2);
     }
+    if cli.format.is_some() && matches!(cli.command, Command::Hausdorff(_) | Command::Demo(_)) {
+        eprintln!("karkas: error: --format: this command writes no output file");
+        return ExitCode::from(2);
+    }
+    output::target::set_requested_format(cli.format);
     let result = match cli.command {
         Command::Curve(c) => c.run(),
         Command::Surface(c) => c.run(),
@@ -98,6 +109,9 @@ fn main() -> ExitCode {
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
+        // The reader of standard output went away (`karkas ... -o - | head`): what it wanted
+        // was written, like a tool killed by SIGPIPE but without a message.
+        Err(e) if output::message::is_broken_pipe(&e) => ExitCode::SUCCESS,
         Err(e) => {
             eprintln!("karkas: error: {}", output::message::error_line(&e));
             ExitCode::from(2)

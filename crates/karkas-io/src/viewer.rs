@@ -23,6 +23,7 @@ use serde_json::{json, Value};
 
 use crate::error::IoError;
 use crate::mesh::triangle_mesh::TriangleMesh;
+use crate::picture::budget::check_output_memory;
 use crate::picture::scene::escape;
 use crate::write::write_atomic;
 
@@ -81,8 +82,49 @@ pub struct ViewerMesh {
     pub mesh: TriangleMesh,
 }
 
-/// Writes the viewer page of `scene` at `path`, atomically.
+/// Bytes per surface sample while a page is built: the triangle mesh of the grid (position,
+/// normal, two triangles), its `f32`/`u32` arrays, their base64 text and the copies of the
+/// scene's JSON and of the page (measured on the release build, rounded up).
+pub const PAGE_SURFACE_SAMPLE: u128 = 480;
+/// Bytes per vertex of a mesh shown on a page (its normal computed, arrays, text).
+pub const PAGE_MESH_VERTEX: u128 = 300;
+/// Bytes per triangle of a mesh shown on a page.
+pub const PAGE_MESH_TRIANGLE: u128 = 150;
+/// Bytes per point of a curve, an isoline, a control net or the input points on a page.
+pub const PAGE_POINT: u128 = 150;
+
+/// What building and writing the page of `scene` takes in memory, the scene included: the
+/// bundled scripts (three times: text, base64, page) and [`PAGE_SURFACE_SAMPLE`] and the
+/// like per item shown.
+pub fn page_bytes(scene: &ViewerScene) -> u128 {
+    let scripts = page_scripts_bytes();
+    let n = |k: usize| k as u128;
+    let mut bytes = scripts + n(scene.points.len()) * PAGE_POINT;
+    for s in &scene.surfaces {
+        let net = s.control_net.as_ref().map_or(0, |g| g.rows() * g.cols());
+        let isolines: usize = s.isolines.iter().map(Vec::len).sum();
+        bytes += n(s.samples.rows() * s.samples.cols()) * PAGE_SURFACE_SAMPLE
+            + n(2 * net + isolines) * PAGE_POINT;
+    }
+    for c in &scene.curves {
+        bytes += n(c.points.len()) * PAGE_POINT;
+    }
+    for m in &scene.meshes {
+        bytes += n(m.mesh.positions.len()) * PAGE_MESH_VERTEX
+            + n(m.mesh.triangles.len()) * PAGE_MESH_TRIANGLE;
+    }
+    bytes
+}
+
+/// What the scripts bundled into every page take while it is built (text, base64, page).
+pub fn page_scripts_bytes() -> u128 {
+    3 * (THREE_JS.len() + ORBIT_CONTROLS_JS.len() + PAGE_SCRIPT.len()) as u128
+}
+
+/// Writes the viewer page of `scene` at `path`, atomically; refuses (before building it) a
+/// page that would take more memory than the cap ([`page_bytes`]).
 pub fn write_viewer_html(path: &Path, scene: &ViewerScene) -> Result<(), IoError> {
+    check_output_memory(path, "the viewer page", page_bytes(scene))?;
     let page = render_viewer_html(scene);
     write_atomic(path, |out| out.write_all(page.as_bytes()))
 }

@@ -1,56 +1,237 @@
-//! Writing output files atomically, and the CSV writers of sampled curves and surfaces.
+//! Writing output files atomically (or to standard output), and the CSV writers of sampled
+//! curves and surfaces.
 //!
 //! Every output goes through [`write_atomic`]: the content is written to a temporary file in
 //! the destination's directory and renamed over the destination only when complete, so a
-//! failed or interrupted run never leaves a truncated file or destroys the previous one.
+//! failed or interrupted run never leaves a truncated file or destroys the previous one. The
+//! path `-` means standard output, written as the content is produced.
+//!
+//! The temporary file is named after the destination and the writing process,
+//! `.NAME.karkas-tmp-PID-N`: a file left by a killed run is obviously stale, and the next write
+//! to the same destination removes those whose process is gone (on systems with `/proc`). The
+//! name is hand-made rather than `tempfile`'s random one for this reason, and so that no
+//! message ever names it: errors name only the destination.
 //!
 //! CSV is written with the `csv` crate. Numbers use Rust's shortest round-trip formatting of
 //! `f64` (`{}`), so a file read back gives bit-identical values.
 
 use std::fmt::Write as _;
+use std::fs::{File, OpenOptions};
 use std::io::{self, BufWriter, Write};
-use std::path::Path;
+use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicUsize, Ordering};
 
 use karkas::{Grid, Point, Point3};
 
 use crate::error::IoError;
 
-/// Writes `path` atomically with the bytes `fill` produces.
+/// The output path that means standard output.
+pub const STDOUT: &str = "-";
+
+/// How standard output is named in messages.
+pub const STDOUT_NAME: &str = "<stdout>";
+
+/// What marks a temporary file of [`write_atomic`], between the destination's name and the
+/// writer's process id.
+const TEMP_MARK: &str = ".karkas-tmp-";
+
+/// The longest part of a destination's name kept in its temporary file's name (file names
+/// are limited to 255 bytes on most file systems).
+const TEMP_NAME_BYTES: usize = 200;
+
+/// True when the output `path` means standard output (`-`).
+pub fn is_stdout(path: &Path) -> bool {
+    path.as_os_str() == STDOUT
+}
+
+/// The name of the output `path` in messages: the path itself, or [`STDOUT_NAME`] for `-`.
+pub fn output_name(path: &Path) -> PathBuf {
+    if is_stdout(path) {
+        PathBuf::from(STDOUT_NAME)
+    } else {
+        path.to_path_buf()
+    }
+}
+
+/// Writes `path` atomically with the bytes `fill` produces; `-` writes to standard output.
 ///
 /// `fill` writes into a buffered temporary file created in the directory of `path` (the
 /// current directory for a bare file name); on success the file is renamed over `path`. On any
 /// error, from `fill` or from the file system, the destination is left untouched, the temporary
-/// file is removed, and the error is an [`IoError::Write`] naming `path`. An existing
-/// destination keeps its permissions; a new one gets the usual ones for a new file.
+/// file is removed, and the error is an [`IoError::Write`] naming `path` (never the temporary
+/// file). An existing destination keeps its permissions; a new one gets the usual ones for a
+/// new file. Temporary files of earlier runs that were killed while writing `path` are removed
+/// first.
+///
+/// To standard output the bytes go out as they are produced (a pipe cannot be replaced
+/// atomically); a reader that closes the pipe early makes the error's source
+/// [`io::ErrorKind::BrokenPipe`].
 pub fn write_atomic(
     path: &Path,
     fill: impl FnOnce(&mut dyn Write) -> io::Result<()>,
 ) -> Result<(), IoError> {
-    let error = |source| IoError::Write {
+    if is_stdout(path) {
+        return write_stdout(fill);
+    }
+    let error = |source: io::Error| IoError::Write {
         path: path.to_path_buf(),
-        source,
+        source: without_paths(source),
     };
     let dir = match path.parent() {
         Some(p) if !p.as_os_str().is_empty() => p,
         _ => Path::new("."),
     };
-    let mut builder = tempfile::Builder::new();
-    builder.prefix(".karkas-").suffix(".tmp");
-    #[cfg(unix)]
-    {
-        use std::os::unix::fs::PermissionsExt;
-        let mode = std::fs::metadata(path).map_or(0o666, |m| m.permissions().mode() & 0o7777);
-        builder.permissions(std::fs::Permissions::from_mode(mode));
-    }
-    let mut temp = builder.tempfile_in(dir).map_err(error)?;
-    {
-        let mut out = BufWriter::new(temp.as_file_mut());
-        fill(&mut out).map_err(error)?;
-        out.flush().map_err(error)?;
-    }
-    temp.as_file().sync_all().map_err(error)?;
-    temp.persist(path).map_err(|e| error(e.error))?;
+    let stem = temp_stem(path);
+    remove_stale(dir, &stem);
+    let (file, temp) = create_temp(dir, &stem, path).map_err(error)?;
+    let guard = TempGuard(Some(temp));
+    let mut out = BufWriter::with_capacity(1 << 16, file);
+    fill(&mut out).map_err(error)?;
+    let file = out.into_inner().map_err(|e| error(e.into_error()))?;
+    file.sync_all().map_err(error)?;
+    drop(file);
+    let temp = guard.0.as_deref().unwrap_or(path);
+    std::fs::rename(temp, path).map_err(error)?;
+    guard.persisted();
     Ok(())
+}
+
+/// Writes what `fill` produces to standard output. A reader that went away makes the error's
+/// source a plain [`io::ErrorKind::BrokenPipe`], however `fill` wrapped it.
+fn write_stdout(fill: impl FnOnce(&mut dyn Write) -> io::Result<()>) -> Result<(), IoError> {
+    let stdout = io::stdout();
+    let mut out = PipeSink {
+        inner: BufWriter::with_capacity(1 << 16, stdout.lock()),
+        broken: false,
+    };
+    let result = fill(&mut out).and_then(|()| out.flush());
+    result.map_err(|source| IoError::Write {
+        path: PathBuf::from(STDOUT_NAME),
+        source: if out.broken {
+            io::Error::from(io::ErrorKind::BrokenPipe)
+        } else {
+            source
+        },
+    })
+}
+
+/// Standard output, remembering whether its reader went away.
+struct PipeSink<W: Write> {
+    inner: W,
+    broken: bool,
+}
+
+impl<W: Write> PipeSink<W> {
+    fn note<T>(&mut self, result: io::Result<T>) -> io::Result<T> {
+        if let Err(e) = &result {
+            self.broken |= e.kind() == io::ErrorKind::BrokenPipe;
+        }
+        result
+    }
+}
+
+impl<W: Write> Write for PipeSink<W> {
+    fn write(&mut self, buf: &[u8]) -> io::Result<usize> {
+        let result = self.inner.write(buf);
+        self.note(result)
+    }
+
+    fn flush(&mut self) -> io::Result<()> {
+        let result = self.inner.flush();
+        self.note(result)
+    }
+}
+
+/// The name of the temporary files of `path` without the process id: `.NAME.karkas-tmp-`.
+fn temp_stem(path: &Path) -> String {
+    let name = path
+        .file_name()
+        .map_or_else(|| "output".into(), |n| n.to_string_lossy());
+    let mut cut = name.len().min(TEMP_NAME_BYTES);
+    while !name.is_char_boundary(cut) {
+        cut -= 1;
+    }
+    format!(".{}{TEMP_MARK}", &name[..cut])
+}
+
+/// Creates a new temporary file `STEM PID-N` in `dir`, with the permissions of the existing
+/// destination `path` if any.
+fn create_temp(dir: &Path, stem: &str, path: &Path) -> io::Result<(File, PathBuf)> {
+    static COUNTER: AtomicUsize = AtomicUsize::new(0);
+    let existing = std::fs::metadata(path).ok().map(|m| m.permissions());
+    loop {
+        let n = COUNTER.fetch_add(1, Ordering::Relaxed);
+        let temp = dir.join(format!("{stem}{}-{n}", std::process::id()));
+        let mut options = OpenOptions::new();
+        options.write(true).create_new(true);
+        match options.open(&temp) {
+            Ok(file) => {
+                if let Some(permissions) = &existing {
+                    if let Err(e) = file.set_permissions(permissions.clone()) {
+                        let _ = std::fs::remove_file(&temp);
+                        return Err(e);
+                    }
+                }
+                return Ok((file, temp));
+            }
+            // Left by an earlier process with the same id: try the next number.
+            Err(e) if e.kind() == io::ErrorKind::AlreadyExists && n < 1 << 20 => continue,
+            Err(e) => return Err(e),
+        }
+    }
+}
+
+/// Removes the temporary files `STEM PID-N` in `dir` whose process is gone: left by a run
+/// killed while writing the same destination. Only where `/proc` tells which processes live;
+/// any failure leaves the files (they are named as stale).
+fn remove_stale(dir: &Path, stem: &str) {
+    let proc = Path::new("/proc");
+    if !proc.join("self").exists() {
+        return;
+    }
+    let Ok(entries) = std::fs::read_dir(dir) else {
+        return;
+    };
+    for entry in entries.flatten() {
+        let name = entry.file_name();
+        let Some(rest) = name.to_str().and_then(|n| n.strip_prefix(stem)) else {
+            continue;
+        };
+        let Some((pid, n)) = rest.split_once('-') else {
+            continue;
+        };
+        let numeric = |s: &str| !s.is_empty() && s.bytes().all(|b| b.is_ascii_digit());
+        if numeric(pid) && numeric(n) && !proc.join(pid).exists() {
+            let _ = std::fs::remove_file(entry.path());
+        }
+    }
+}
+
+/// Removes the temporary file on drop unless [`TempGuard::persisted`] was called.
+struct TempGuard(Option<PathBuf>);
+
+impl TempGuard {
+    /// The temporary file has been renamed over the destination: nothing to remove.
+    fn persisted(mut self) {
+        self.0 = None;
+    }
+}
+
+impl Drop for TempGuard {
+    fn drop(&mut self) {
+        if let Some(temp) = self.0.take() {
+            let _ = std::fs::remove_file(temp);
+        }
+    }
+}
+
+/// The operating system's error without any path it carries (a temporary file's name must
+/// not reach a message): its kind and text as the system reports them.
+fn without_paths(e: io::Error) -> io::Error {
+    match e.raw_os_error() {
+        Some(code) => io::Error::from_raw_os_error(code),
+        None => e,
+    }
 }
 
 /// Writes curve samples as CSV: header `t,x,y` (`D = 2`) or `t,x,y,z` (`D = 3`), one row per

@@ -14,13 +14,15 @@
 use crate::args::MeshOutput;
 use crate::output::curve::{to_space, write_curve_figure};
 use crate::output::formats::SURFACE_FORMATS;
+use crate::output::memory::{check_memory, mesh_output_bytes, surface_output_bytes};
 use crate::output::overwrite::ensure_distinct;
 use crate::output::surface::write_surface;
+use crate::output::target::{output_format, shown};
 use anyhow::{bail, Context, Result};
 use clap::Args;
 use karkas::{Grid, Point3};
 use karkas_io::mesh::TriangleMesh;
-use karkas_io::mesh::{read_mesh, write_mesh, MeshOptions};
+use karkas_io::mesh::{read_mesh, write_mesh_as, MeshOptions};
 use karkas_io::points::{read_curve_points, CurvePoints};
 use karkas_io::samples::read_surface_samples;
 use karkas_io::svg::CurveOverlay;
@@ -68,7 +70,7 @@ const CURVE_OUT: [OutputFormat; 3] = [OutputFormat::Svg, OutputFormat::Png, Outp
 /// Runs `karkas convert`.
 pub fn run(args: &ConvertArgs) -> Result<()> {
     // Every format some input converts to: the grid's, which include the others.
-    let format = OutputFormat::from_path(&args.output, &GRID_OUT)?;
+    let format = output_format(&args.output, &GRID_OUT)?;
     args.mesh.check(format)?;
     ensure_distinct(&args.input, &args.output)?;
     let input = read_input(&args.input)?;
@@ -89,6 +91,14 @@ pub fn run(args: &ConvertArgs) -> Result<()> {
             list.join(", ")
         );
     }
+    check_memory(
+        &format!("convert {}", args.input.display()),
+        match &input {
+            Input::Mesh(mesh) => mesh_output_bytes(mesh.positions.len(), mesh.triangles.len()),
+            Input::Grid(grid, _) => surface_output_bytes(format, grid.rows(), grid.cols()),
+            Input::Curve(points, _) => points.len() as u128 * 48,
+        },
+    )?;
     let title = args
         .input
         .file_name()
@@ -128,7 +138,10 @@ pub fn run(args: &ConvertArgs) -> Result<()> {
             points.len()
         }
     };
-    eprintln!("karkas: wrote {} ({count} points)", args.output.display());
+    eprintln!(
+        "karkas: wrote {} ({count} points)",
+        shown(&args.output).display()
+    );
     Ok(())
 }
 
@@ -161,7 +174,7 @@ fn write_any_mesh(
                 flip_normals: false,
                 ..*options
             };
-            write_mesh(output, &mesh, &options)?
+            write_mesh_as(format, output, &mesh, &options)?
         }
     }
     Ok(())
@@ -192,14 +205,26 @@ fn read_input(path: &Path) -> Result<Input> {
 
 /// The lower-case fields of the first content line of a CSV file with a header (a line with
 /// a field that is not a number); `None` when there is none or the file cannot be read (the
-/// reader that follows reports that).
+/// reader that follows reports that). Reads only up to that line, each line bounded, so a
+/// huge file costs nothing here; standard input, read once, is not looked at.
 fn csv_header(path: &Path) -> Option<Vec<String>> {
-    let text = std::fs::read_to_string(path).ok()?;
-    let line = text
-        .trim_start_matches('\u{feff}')
-        .lines()
-        .map(|l| l.split('#').next().unwrap_or("").trim())
-        .find(|l| !l.is_empty())?;
+    if karkas_io::input::is_stdin(path) {
+        return None;
+    }
+    let mut input = karkas_io::input::Input::open(path).ok()?;
+    let (mut bytes, mut text) = (Vec::new(), String::new());
+    let mut number = 0;
+    let line = loop {
+        number += 1;
+        if !input.read_line(&mut bytes, &mut text, number).ok()? {
+            return None;
+        }
+        let line = text.trim_start_matches('\u{feff}');
+        let line = line.split('#').next().unwrap_or("").trim();
+        if !line.is_empty() {
+            break line.to_owned();
+        }
+    };
     let fields: Vec<String> = line
         .split(',')
         .map(|f| f.trim().to_ascii_lowercase())

@@ -4,10 +4,12 @@
 use crate::args::{check_dps_order, check_dps_step};
 use crate::input::{curve_points, run_on_curve_points, CurveJob};
 use crate::output::cad::refuse_cad_for_discrete;
-use crate::output::curve::{project, to_space, write_curve_html};
+use crate::output::curve::{curve_output_bytes, project, to_space, write_curve_html};
 use crate::output::formats::CURVE_FORMATS;
+use crate::output::memory::check_memory;
 use crate::output::overwrite::ensure_distinct;
 use crate::output::samples::{report_samples, MAX_SAMPLES};
+use crate::output::target::output_format;
 use anyhow::{bail, Result};
 use clap::Args;
 use karkas::dps::DiscreteSpline;
@@ -43,7 +45,7 @@ pub struct CurveDpsArgs {
 /// Runs `karkas curve dps`.
 pub fn run(args: &CurveDpsArgs) -> Result<()> {
     refuse_cad_for_discrete(&args.output)?;
-    let format = OutputFormat::from_path(&args.output, &CURVE_FORMATS)?;
+    let format = output_format(&args.output, &CURVE_FORMATS)?;
     check_dps_order("--order", args.order)?;
     check_dps_step("--n", args.step)?;
     ensure_distinct(&args.input, &args.output)?;
@@ -62,6 +64,11 @@ impl CurveJob for (&CurveDpsArgs, OutputFormat) {
                 args.step
             );
         }
+        // The values, and as much again for the spline's work.
+        check_memory(
+            &format!("curve dps: {period} values"),
+            curve_output_bytes::<D>(format, period + m) + period as u128 * 8 * D as u128,
+        )?;
         let build = if args.poles {
             DiscreteSpline::from_poles
         } else {

@@ -4,11 +4,13 @@
 use crate::args::{CombOption, CurveSamples};
 use crate::input::{run_on_curve_points, CurveJob};
 use crate::output::cad::write_cad_curve;
-use crate::output::curve::write_sampled_curve;
+use crate::output::curve::{curve_output_bytes, write_sampled_curve};
 use crate::output::formats::EXACT_CURVE_FORMATS;
+use crate::output::memory::check_memory;
 use crate::output::overwrite::ensure_distinct;
 use crate::output::samples::default_curve_samples;
 use crate::output::samples::sample_curve;
+use crate::output::target::{output_format, shown};
 use anyhow::{bail, Context, Result};
 use clap::Args;
 use karkas::fit::{check_knots, fit_curve, fit_curve_adaptive, CurveFit, FitOptions};
@@ -62,7 +64,7 @@ pub struct CurveFitArgs {
 
 /// Runs `karkas curve fit`.
 pub fn run(args: &CurveFitArgs) -> Result<()> {
-    let format = OutputFormat::from_path(&args.output, &EXACT_CURVE_FORMATS)?;
+    let format = output_format(&args.output, &EXACT_CURVE_FORMATS)?;
     if let Some(knots) = &args.knots {
         check_knots(knots).context("--knots")?;
     }
@@ -120,6 +122,10 @@ impl CurveJob for (&CurveFitArgs, OutputFormat) {
         let n = args
             .samples
             .or_else(|| default_curve_samples(2 * fit.spline.pieces()));
+        check_memory(
+            &format!("curve fit: {n} samples"),
+            curve_output_bytes::<D>(format, n + points.len()),
+        )?;
         let (ts, samples) = sample_curve(&fit.spline, n);
         if let Some(report) = &args.report {
             write_atomic(report, |w| {
@@ -154,7 +160,7 @@ impl CurveJob for (&CurveFitArgs, OutputFormat) {
         write_sampled_curve(output, format, &title, samples, points, false, overlay)?;
         eprintln!(
             "karkas: wrote {} ({n} samples); {} knots, max deviation {:.6e}, rms {:.6e}, f = {:.6e}, p = {:.6e}, fitted in {:.1} ms",
-            args.output.display(),
+            shown(&args.output).display(),
             fit.spline.knots().len(),
             fit.max_distance(),
             fit.rms_distance(),

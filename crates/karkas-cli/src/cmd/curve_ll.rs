@@ -3,12 +3,13 @@
 use crate::args::{check_ll_order, CombOption, CurveSamples};
 use crate::input::{curve_points, run_on_curve_points, CurveJob};
 use crate::output::cad::write_cad_curve;
-use crate::output::curve::write_sampled_curve;
+use crate::output::curve::{curve_output_bytes, write_sampled_curve};
 use crate::output::formats::EXACT_CURVE_FORMATS;
 use crate::output::memory::check_memory;
 use crate::output::overwrite::ensure_distinct;
 use crate::output::samples::sample_curve;
 use crate::output::samples::{default_curve_samples, report_samples, MAX_SAMPLES};
+use crate::output::target::output_format;
 use anyhow::{Context, Result};
 use clap::Args;
 use karkas::ll::LlCurve;
@@ -46,7 +47,7 @@ pub struct CurveLlArgs {
 
 /// Runs `karkas curve ll`.
 pub fn run(args: &CurveLlArgs) -> Result<()> {
-    let format = OutputFormat::from_path(&args.output, &EXACT_CURVE_FORMATS)?;
+    let format = output_format(&args.output, &EXACT_CURVE_FORMATS)?;
     check_ll_order(args.order)?;
     args.samples.check()?;
     ensure_distinct(&args.input, &args.output)?;
@@ -72,7 +73,7 @@ impl CurveJob for (&CurveLlArgs, OutputFormat) {
             .or_else(|| default_curve_samples(points.len()).min(MAX_SAMPLES));
         check_memory(
             &format!("curve ll: {n} samples"),
-            (n as u128) * (8 + 8 * D as u128),
+            curve_output_bytes::<D>(format, n + points.len()),
         )?;
         let (ts, samples) = sample_curve(&curve, n);
         let variant = if args.interpolate {

@@ -7,6 +7,7 @@
 
 use crate::args::{parse_finite_list, parse_pair_with, parse_whole, GridInput, LlSurfaceOptions};
 use crate::output::samples::sample_surface;
+use crate::output::target::{output_format, shown};
 use anyhow::{bail, Context, Result};
 use clap::{Args, ValueEnum};
 use karkas::section::{Plane, Section, SectionOptions, Sectioner, MAX_CELLS};
@@ -98,7 +99,7 @@ const GROUPS: [(&str, (u8, u8, u8)); 4] = [
 
 /// Runs `karkas section`.
 pub fn run(args: &SectionArgs) -> Result<()> {
-    let format = OutputFormat::from_path(
+    let format = output_format(
         &args.output,
         &[OutputFormat::Csv, OutputFormat::Svg, OutputFormat::Png],
     )?;
@@ -191,7 +192,7 @@ pub fn run(args: &SectionArgs) -> Result<()> {
     }
     eprintln!(
         "karkas: wrote {} ({} section pieces from {} planes)",
-        args.output.display(),
+        shown(&args.output).display(),
         lines.len(),
         cuts.len()
     );

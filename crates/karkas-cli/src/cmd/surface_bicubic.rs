@@ -5,10 +5,10 @@ use crate::args::{ClosedUv, GridInput, GridSamples, MeshOutput};
 use crate::input::grid_points;
 use crate::output::formats::EXACT_SURFACE_FORMATS;
 use crate::output::surface::write_grid_surface;
+use crate::output::target::output_format;
 use anyhow::{Context, Result};
 use clap::{Args, ValueEnum};
 use karkas::param::{BicubicSurface, GridParameterization};
-use karkas_io::OutputFormat;
 use std::path::PathBuf;
 
 /// The parameterizations of `--param`.
@@ -63,7 +63,7 @@ pub struct SurfaceBicubicArgs {
 
 /// Runs `karkas surface bicubic`.
 pub fn run(args: &SurfaceBicubicArgs) -> Result<()> {
-    let format = OutputFormat::from_path(&args.output, &EXACT_SURFACE_FORMATS)?;
+    let format = output_format(&args.output, &EXACT_SURFACE_FORMATS)?;
     args.samples.check()?;
     args.mesh.check(format)?;
     let grid = args.grid.read_for(&args.output)?;

@@ -11,12 +11,12 @@ use crate::output::formats::EXACT_SURFACE_FORMATS;
 use crate::output::overwrite::ensure_distinct;
 use crate::output::samples::default_surface_samples;
 use crate::output::surface::write_sampled_surface;
+use crate::output::target::output_format;
 use anyhow::{anyhow, bail, Context, Result};
 use clap::{Args, ValueEnum};
 use karkas::coons::{CoonsSurface, CrossDerivatives, CurveFit, PointNetwork, SplineEnds};
 use karkas::Error;
 use karkas_io::network::{read_curve_family, CurveFamily};
-use karkas_io::OutputFormat;
 use std::path::{Path, PathBuf};
 
 /// How far apart (relative to the model size) a point of a u-curve and a point of a v-curve
@@ -84,7 +84,7 @@ pub struct SurfaceCoonsArgs {
 
 /// Runs `karkas surface coons`.
 pub fn run(args: &SurfaceCoonsArgs) -> Result<()> {
-    let format = OutputFormat::from_path(&args.output, &EXACT_SURFACE_FORMATS)?;
+    let format = output_format(&args.output, &EXACT_SURFACE_FORMATS)?;
     args.samples.check()?;
     args.mesh.check(format)?;
     if args.u_derivs.is_some() != args.v_derivs.is_some() {

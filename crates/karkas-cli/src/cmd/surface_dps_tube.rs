@@ -4,9 +4,11 @@
 use crate::args::{check_dps_order, check_dps_step, MeshOutput};
 use crate::output::cad::refuse_cad_for_discrete;
 use crate::output::formats::SURFACE_FORMATS;
+use crate::output::memory::{check_memory, surface_output_bytes};
 use crate::output::overwrite::ensure_distinct;
 use crate::output::samples::{report_samples, MAX_SAMPLES};
 use crate::output::surface::write_surface;
+use crate::output::target::output_format;
 use anyhow::{bail, Result};
 use clap::Args;
 use karkas::dps::TubeSurface;
@@ -50,7 +52,7 @@ pub struct SurfaceDpsTubeArgs {
 /// Runs `karkas surface dps-tube`.
 pub fn run(args: &SurfaceDpsTubeArgs) -> Result<()> {
     refuse_cad_for_discrete(&args.output)?;
-    let format = OutputFormat::from_path(&args.output, &SURFACE_FORMATS)?;
+    let format = output_format(&args.output, &SURFACE_FORMATS)?;
     args.mesh.check(format)?;
     check_dps_order("--r1", args.r1)?;
     check_dps_order("--r2", args.r2)?;
@@ -69,6 +71,11 @@ pub fn run(args: &SurfaceDpsTubeArgs) -> Result<()> {
             "--n1, --n2: {big_n1} x {big_n2} values, more than the {MAX_SAMPLES} that can be written"
         );
     }
+    // The tube's values and their output.
+    check_memory(
+        &format!("surface dps-tube: {big_n1} x {big_n2} values"),
+        surface_output_bytes(format, big_n1, big_n2) + big_n1 as u128 * big_n2 as u128 * 24,
+    )?;
     let (f, g) = (args.along.display(), args.across.display());
     let tube =
         TubeSurface::new(&along, &across, args.n1, args.n2, args.r1, args.r2).map_err(|e| {

@@ -2,6 +2,7 @@
 //! of curvature (or a net turned by an angle) by continuation (Kuznetsov and Filatov, docs/methods.md §5).
 
 use crate::args::{parse_finite, parse_finite_list, parse_pair_with, parse_whole};
+use crate::output::target::{output_format, shown};
 use anyhow::{bail, Context, Result};
 use clap::Args;
 use karkas::implicit::{trace_net, ExpressionSurface, NetDirections, NetSpec};
@@ -50,7 +51,7 @@ pub struct SurfaceImplicitArgs {
 
 /// Runs `karkas surface implicit`.
 pub fn run(args: &SurfaceImplicitArgs) -> Result<()> {
-    OutputFormat::from_path(&args.output, &[OutputFormat::Csv])?;
+    output_format(&args.output, &[OutputFormat::Csv])?;
     let (nu, nv) = args.nodes;
     if nu.saturating_mul(nv) > MAX_NODES {
         bail!("--nodes: at most {MAX_NODES} nodes can be traced");
@@ -77,7 +78,7 @@ pub fn run(args: &SurfaceImplicitArgs) -> Result<()> {
     write_grid_csv(&args.output, &grid)?;
     eprintln!(
         "karkas: wrote {} ({nu} x {nv} nodes)",
-        args.output.display()
+        shown(&args.output).display()
     );
     Ok(())
 }

@@ -4,9 +4,9 @@ use crate::args::{GridInput, GridSamples, LlSurfaceOptions, MeshOutput};
 use crate::input::grid_points;
 use crate::output::formats::EXACT_SURFACE_FORMATS;
 use crate::output::surface::write_grid_surface;
+use crate::output::target::output_format;
 use anyhow::Result;
 use clap::Args;
-use karkas_io::OutputFormat;
 use std::path::PathBuf;
 
 /// Arguments of `karkas surface ll`.
@@ -29,7 +29,7 @@ pub struct SurfaceLlArgs {
 
 /// Runs `karkas surface ll`.
 pub fn run(args: &SurfaceLlArgs) -> Result<()> {
-    let format = OutputFormat::from_path(&args.output, &EXACT_SURFACE_FORMATS)?;
+    let format = output_format(&args.output, &EXACT_SURFACE_FORMATS)?;
     args.ll.check()?;
     args.samples.check()?;
     args.mesh.check(format)?;

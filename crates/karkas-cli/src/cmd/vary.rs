@@ -5,6 +5,7 @@
 
 use crate::args::GridInput;
 use crate::output::overwrite::ensure_distinct;
+use crate::output::target::output_format;
 use anyhow::{bail, Context, Result};
 use clap::{Args, ValueEnum};
 use karkas::ll::{vary, FixedEntries, SumTargets, VariationOptions};
@@ -76,7 +77,7 @@ pub struct VaryArgs {
 
 /// Runs `karkas vary`.
 pub fn run(args: &VaryArgs) -> Result<()> {
-    OutputFormat::from_path(&args.output, &[OutputFormat::Csv])?;
+    output_format(&args.output, &[OutputFormat::Csv])?;
     if let Some(s) = args.penalty {
         if !(s.is_finite() && s > 0.0) {
             bail!("--penalty: the penalty S must be a positive number, got {s}");
@@ -175,6 +176,6 @@ fn report(output: &Path, n: usize, m: usize, coord: Coordinate, largest: f64) {
     };
     eprintln!(
         "karkas: wrote {} ({name} of the {n} x {m} grid varied; largest change {largest:.6e})",
-        output.display()
+        crate::output::target::shown(output).display()
     );
 }

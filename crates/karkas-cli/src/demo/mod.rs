@@ -122,8 +122,15 @@ const STEPS: [Step; 8] = [
     },
 ];
 
-/// Runs every example, writes the report and prints the summary.
+/// The memory the demo needs at most: its largest picture (the aircraft rendered to PNG, its
+/// pixels and renderer's tree) with the data of its examples, measured on the release build
+/// (the aircraft picture is estimated at 73 MiB) and rounded up.
+const DEMO_MEMORY: u128 = 80 << 20;
+
+/// Runs every example, writes the report and prints the summary; refuses at once, before any
+/// file is written, when the memory cap is below [`DEMO_MEMORY`].
 pub fn run(args: &DemoArgs) -> Result<()> {
+    crate::output::memory::check_memory("demo", DEMO_MEMORY)?;
     let started = Instant::now();
     std::fs::create_dir_all(&args.out)
         .with_context(|| format!("cannot create the folder {}", args.out.display()))?;

@@ -22,7 +22,7 @@ pub fn write_cad_curve<const D: usize>(
     write_cad(&[CadEntity::Curve(&spatial)], format, output)?;
     eprintln!(
         "karkas: wrote {} (B-spline curve of degree {}, {} control points)",
-        output.display(),
+        super::target::shown(output).display(),
         spatial.degree(),
         spatial.control_points().len()
     );
@@ -41,7 +41,7 @@ pub fn write_cad_surface(
     let grid = bspline.control_points();
     eprintln!(
         "karkas: wrote {} (B-spline surface of degree {}x{}, {}x{} control points)",
-        output.display(),
+        super::target::shown(output).display(),
         bspline.degree_u(),
         bspline.degree_v(),
         grid.rows(),
@@ -61,11 +61,15 @@ fn write_cad(entities: &[CadEntity<'_>], format: OutputFormat, output: &Path) ->
 /// Refuses STEP and IGES for the discrete periodic splines: they are point sets (docs/methods.md
 /// §3, §6), with no exact piecewise polynomial form to export.
 pub fn refuse_cad_for_discrete(output: &Path) -> Result<()> {
-    if OutputFormat::from_path(output, &OutputFormat::CAD).is_ok() {
+    let cad = match super::target::requested_format() {
+        Some(format) => format.is_cad(),
+        None => OutputFormat::from_path(output, &OutputFormat::CAD).is_ok(),
+    };
+    if cad {
         bail!(
             "{}: discrete periodic splines are point sets, not piecewise polynomials: they have no \
              exact STEP/IGES form (write .csv, .obj or .stl and convert the points)",
-            output.display()
+            super::target::shown(output).display()
         );
     }
     Ok(())

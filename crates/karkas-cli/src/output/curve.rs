@@ -1,9 +1,13 @@
 //! A sampled curve as a picture (`.svg`, `.png`: x-y projection, with an optional curvature
 //! comb and whiskers) or the 3-D viewer page (`.html`).
 
+use super::memory::check_memory;
+use super::target::shown;
 use anyhow::{bail, Result};
 use karkas::{Curve, Point, Point2, Point3};
+use karkas_io::picture::budget;
 use karkas_io::svg::{write_curve_picture, CurveOverlay, CurvePlot};
+use karkas_io::viewer::PAGE_POINT;
 use karkas_io::viewer::{write_viewer_html, ViewerCurve, ViewerScene};
 use karkas_io::write::write_curve_csv;
 use karkas_io::OutputFormat;
@@ -41,6 +45,15 @@ pub fn write_curve_figure<const D: usize>(
     closed_input: bool,
     overlay: &CurveOverlay<'_>,
 ) -> Result<()> {
+    check_memory(
+        &format!(
+            "{}: a curve of {} points as {}",
+            shown(output).display(),
+            curve.len(),
+            format.extension()
+        ),
+        figure_bytes::<D>(format, curve.len() + input.len(), overlay),
+    )?;
     match format {
         OutputFormat::Html => write_curve_html(output, title, &to_space(curve), &to_space(input)),
         OutputFormat::Svg | OutputFormat::Png => {
@@ -59,6 +72,35 @@ pub fn write_curve_figure<const D: usize>(
             Ok(())
         }
         _ => bail!("internal: {} is not a curve picture", output.display()),
+    }
+}
+
+/// What `points` samples of a curve (held as `Point<D>` with their parameters) take written in
+/// `format`: checked by the commands before they sample.
+pub fn curve_output_bytes<const D: usize>(format: OutputFormat, points: usize) -> u128 {
+    figure_bytes::<D>(format, points, &CurveOverlay::default())
+}
+
+/// What drawing `points` points of a curve and its input (held as `Point<D>`, with their
+/// parameters) in `format` takes: the points and their copies in space or in the plane, and
+/// the picture or the page as their writers estimate them.
+fn figure_bytes<const D: usize>(
+    format: OutputFormat,
+    points: usize,
+    overlay: &CurveOverlay<'_>,
+) -> u128 {
+    let n = points as u128;
+    let held = n * (8 + 8 * D as u128);
+    let marks = 2 * (overlay.comb.len() + overlay.whiskers.len());
+    match format {
+        // Copies in space for the scene, and the scene's own.
+        OutputFormat::Html => {
+            held + n * 48 + n * PAGE_POINT + karkas_io::viewer::page_scripts_bytes()
+        }
+        OutputFormat::Png | OutputFormat::Svg => {
+            held + n * 16 + budget::chart_bytes(points + marks, format == OutputFormat::Png)
+        }
+        _ => held,
     }
 }
 

@@ -1,7 +1,15 @@
 //! The memory a request's output will take, against the cap of `--max-memory` /
 //! `KARKAS_MAX_MEMORY`: checked before any work, so that a mistyped count fails at once.
+//!
+//! The cap covers the whole request: what the readers keep (they check it as they read), the
+//! samples, and what each output format builds on the way out (a picture's text, the
+//! renderer's tree and pixels, a page's arrays and text, a mesh's triangles), estimated here
+//! and by the picture and page writers of `karkas-io` before they start.
 
 use anyhow::{bail, Context, Result};
+use karkas_io::picture::budget::{self, human_bytes};
+use karkas_io::viewer::{PAGE_POINT, PAGE_SURFACE_SAMPLE};
+use karkas_io::OutputFormat;
 use std::sync::OnceLock;
 
 /// The default memory cap for one request's output buffers: 2 GiB.
@@ -68,27 +76,42 @@ pub fn check_memory(request: &str, bytes: u128) -> Result<()> {
         bail!(
             "{request} would need {} of memory, above the cap of {} (raise it with --max-memory \
              or KARKAS_MAX_MEMORY, or ask for fewer samples)",
-            human(bytes),
-            human(u128::from(cap))
+            human_bytes(bytes),
+            human_bytes(u128::from(cap))
         );
     }
     Ok(())
 }
 
-/// `bytes` in the largest binary unit that keeps it at least 1.
-fn human(bytes: u128) -> String {
-    let units = ["B", "KiB", "MiB", "GiB", "TiB"];
-    let mut value = bytes as f64;
-    let mut unit = 0;
-    while value >= 1024.0 && unit + 1 < units.len() {
-        value /= 1024.0;
-        unit += 1;
+/// Bytes per sample of a surface written as a mesh (besides the sample itself): the triangle
+/// mesh of the grid (position, normal, two triangles) and the writer's arrays (measured on
+/// the release build for STL, PLY, VTK and glTF, rounded up).
+const MESH_PER_SAMPLE: u128 = 130;
+/// Bytes per vertex and per triangle of a mesh held and written in a mesh format.
+const MESH_PER_VERTEX: u128 = 96;
+const MESH_PER_TRIANGLE: u128 = 72;
+
+/// What writing `rows x cols` surface samples (held as 24-byte points) in `format` takes,
+/// the samples included: a picture and the page as their writers estimate them, a mesh its
+/// triangles and arrays, CSV and OBJ (streamed) only the samples.
+pub fn surface_output_bytes(format: OutputFormat, rows: usize, cols: usize) -> u128 {
+    let samples = rows as u128 * cols as u128;
+    // The isoparametric lines drawn over pictures and pages.
+    let isolines = 11 * (rows + cols);
+    match format {
+        OutputFormat::Svg | OutputFormat::Png => {
+            budget::scene_bytes(rows, cols, isolines, format == OutputFormat::Png)
+        }
+        OutputFormat::Html => samples * (24 + PAGE_SURFACE_SAMPLE) + isolines as u128 * PAGE_POINT,
+        OutputFormat::Csv | OutputFormat::Obj => samples * 24,
+        _ => samples * (24 + MESH_PER_SAMPLE),
     }
-    if unit == 0 {
-        format!("{bytes} B")
-    } else {
-        format!("{value:.1} {}", units[unit])
-    }
+}
+
+/// What holding and writing a triangle mesh of `vertices` and `triangles` in a mesh format
+/// takes.
+pub fn mesh_output_bytes(vertices: usize, triangles: usize) -> u128 {
+    vertices as u128 * MESH_PER_VERTEX + triangles as u128 * MESH_PER_TRIANGLE
 }
 
 #[cfg(test)]
@@ -106,7 +129,7 @@ mod tests {
         assert!(parse_size("12X").is_err());
         assert!(parse_size("lots").is_err());
         assert!(parse_size("99999999999T").is_err());
-        assert_eq!(human(3 << 29), "1.5 GiB");
-        assert_eq!(human(10), "10 B");
+        assert_eq!(human_bytes(3 << 29), "1.5 GiB");
+        assert_eq!(human_bytes(10), "10 B");
     }
 }

@@ -1,4 +1,4 @@
-//! The ways results leave the program: files in every format (sampled curves and surfaces,
+//! The ways results leave the program: files in every format or standard output (sampled curves and surfaces,
 //! the exact B-spline forms as STEP or IGES), the caps on what one request may write, the
 //! lines that report what was written, and the one-line error message.
 
@@ -10,3 +10,4 @@ pub mod message;
 pub mod overwrite;
 pub mod samples;
 pub mod surface;
+pub mod target;

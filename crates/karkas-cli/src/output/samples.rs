@@ -39,7 +39,10 @@ pub fn sample_surface(
 
 /// Prints what was written: `karkas: wrote OUTPUT (N samples)`.
 pub fn report_samples(output: &Path, samples: usize) {
-    eprintln!("karkas: wrote {} ({samples} samples)", output.display());
+    eprintln!(
+        "karkas: wrote {} ({samples} samples)",
+        super::target::shown(output).display()
+    );
 }
 
 #[cfg(test)]

@@ -3,12 +3,13 @@
 //! removed) and the 3-D viewer page (`.html`).
 
 use super::cad::write_cad_surface;
-use super::memory::check_memory;
+use super::memory::{check_memory, surface_output_bytes};
 use super::samples::{default_surface_samples, report_samples, sample_surface};
+use super::target::shown;
 use anyhow::{bail, Result};
 use karkas::bspline::ToBSplineSurface;
 use karkas::{Grid, Point3, Surface};
-use karkas_io::mesh::{write_surface_mesh, MeshOptions};
+use karkas_io::mesh::{write_surface_mesh_as, MeshOptions};
 use karkas_io::obj::write_surface_obj;
 use karkas_io::scene::{write_scene_png, write_scene_svg, Scene, SceneCurves, SceneMesh, View};
 use karkas_io::viewer::{write_viewer_html, ViewerScene, ViewerSurface};
@@ -40,8 +41,12 @@ pub fn write_sampled_surface(
     mesh: &MeshOptions,
 ) -> Result<()> {
     check_memory(
-        &format!("{}: {nu} x {nv} samples", output.display()),
-        (nu as u128) * (nv as u128) * 24 + (nu as u128 + nv as u128) * 8,
+        &format!(
+            "{}: {nu} x {nv} samples as {}",
+            shown(output).display(),
+            format.extension()
+        ),
+        surface_output_bytes(format, nu, nv) + (nu as u128 + nv as u128) * 8,
     )?;
     let (us, vs, mut samples) = sample_surface(surface, nu, nv);
     match format {
@@ -135,7 +140,7 @@ pub fn write_surface(
             write_viewer_html(output, &scene)?;
         }
         OutputFormat::Csv => bail!("internal: CSV is written by the command"),
-        _ => write_surface_mesh(output, samples, mesh)?,
+        _ => write_surface_mesh_as(format, output, samples, mesh)?,
     }
     Ok(())
 }

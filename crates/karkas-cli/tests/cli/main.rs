@@ -12,6 +12,7 @@ mod dps;
 mod export;
 mod hausdorff;
 mod meshes;
+mod output_bounds;
 mod section;
 mod surface_bicubic;
 mod surface_coons;

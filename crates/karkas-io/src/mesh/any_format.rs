@@ -49,6 +49,19 @@ pub enum MeshFormat {
 /// [`IoError::InvalidMesh`]; nothing is written then. With [`MeshOptions::flip_normals`] a
 /// turned-over copy of the mesh is written.
 pub fn write_mesh(path: &Path, mesh: &TriangleMesh, options: &MeshOptions) -> Result<(), IoError> {
+    let format = OutputFormat::from_path(path, &OutputFormat::MESHES)?;
+    write_mesh_as(format, path, mesh, options)
+}
+
+/// Writes `mesh` at `path` (`-`: standard output) in `format`, whatever the extension of
+/// `path`, as [`write_mesh`] does (turned over with [`MeshOptions::flip_normals`]); a `format`
+/// that is not a mesh format writes binary glTF.
+pub fn write_mesh_as(
+    format: OutputFormat,
+    path: &Path,
+    mesh: &TriangleMesh,
+    options: &MeshOptions,
+) -> Result<(), IoError> {
     let mesh = if options.flip_normals {
         let mut flipped = mesh.clone();
         flipped.flip_orientation();
@@ -57,7 +70,7 @@ pub fn write_mesh(path: &Path, mesh: &TriangleMesh, options: &MeshOptions) -> Re
         Cow::Borrowed(mesh)
     };
     let mesh = mesh.as_ref();
-    match OutputFormat::from_path(path, &OutputFormat::MESHES)? {
+    match format {
         OutputFormat::Obj => write_mesh_obj(path, mesh),
         OutputFormat::Stl => write_mesh_stl(path, mesh, options.ascii),
         OutputFormat::Ply => {
@@ -82,6 +95,18 @@ pub fn write_surface_mesh(
     grid: &Grid<Point3>,
     options: &MeshOptions,
 ) -> Result<(), IoError> {
+    let format = OutputFormat::from_path(path, &OutputFormat::MESHES)?;
+    write_surface_mesh_as(format, path, grid, options)
+}
+
+/// Writes the sampled surface `grid` as a mesh in `format` (see [`write_mesh_as`]; the seam of
+/// a closed grid is welded in OBJ, PLY and glTF).
+pub fn write_surface_mesh_as(
+    format: OutputFormat,
+    path: &Path,
+    grid: &Grid<Point3>,
+    options: &MeshOptions,
+) -> Result<(), IoError> {
     let mut mesh = TriangleMesh::from_grid(grid).map_err(IoError::invalid_mesh(path))?;
     if options.flip_normals {
         mesh.flip_orientation();
@@ -90,7 +115,7 @@ pub fn write_surface_mesh(
         flip_normals: false,
         ..*options
     };
-    write_mesh(path, &mesh, &options)
+    write_mesh_as(format, path, &mesh, &options)
 }
 
 /// Reads the triangle mesh of `path` by its extension: `.obj`, `.stl` or `.ply`; `-` reads

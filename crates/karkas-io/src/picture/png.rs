@@ -13,6 +13,7 @@ use resvg::tiny_skia::{Pixmap, Transform};
 use resvg::usvg::{fontdb, Options, Tree};
 
 use crate::error::IoError;
+use crate::picture::budget;
 use crate::picture::error::PictureError;
 use crate::write::write_atomic;
 
@@ -64,7 +65,10 @@ pub fn render_png(svg: &str, scale: f32) -> Result<Vec<u8>, PictureError> {
 }
 
 /// Renders `svg` (at twice its size) and writes the PNG to `path`, atomically.
+/// Refuses (before rendering) a document whose rendering would take more memory than the cap
+/// ([`budget::png_bytes`]).
 pub fn write_svg_as_png(path: &Path, svg: &str) -> Result<(), IoError> {
+    budget::check_output_memory(path, "the PNG picture", budget::png_bytes(svg.len()))?;
     let png = render_png(svg, 2.0).map_err(IoError::picture(path))?;
     write_atomic(path, |out| out.write_all(&png))
 }

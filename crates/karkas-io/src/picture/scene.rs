@@ -21,6 +21,7 @@ use karkas::{Point2, Point3};
 
 use crate::error::IoError;
 use crate::mesh::normals::cross;
+use crate::picture::budget;
 use crate::picture::png::write_svg_as_png;
 use crate::write::write_atomic;
 
@@ -96,13 +97,27 @@ pub struct Scene<'a> {
 
 /// Draws `scene` and writes it to `path` as SVG, atomically.
 pub fn write_scene_svg(path: &Path, scene: &Scene<'_>) -> Result<(), IoError> {
+    check_scene(path, scene, false)?;
     let svg = render_scene_svg(scene);
     write_atomic(path, |out| out.write_all(svg.as_bytes()))
 }
 
 /// Draws `scene` and writes it to `path` as PNG, atomically.
 pub fn write_scene_png(path: &Path, scene: &Scene<'_>) -> Result<(), IoError> {
+    check_scene(path, scene, true)?;
     write_svg_as_png(path, &render_scene_svg(scene))
+}
+
+/// Refuses, before drawing, a scene whose picture would take more memory than the cap.
+fn check_scene(path: &Path, scene: &Scene<'_>, png: bool) -> Result<(), IoError> {
+    let curve_points = scene
+        .curves
+        .iter()
+        .flat_map(|c| c.lines.iter())
+        .map(Vec::len)
+        .sum();
+    let bytes = budget::scene_bytes(scene.mesh.rows, scene.mesh.cols, curve_points, png);
+    budget::check_output_memory(path, "the picture", bytes)
 }
 
 /// Maps model points to picture pixels.

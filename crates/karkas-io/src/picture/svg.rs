@@ -19,6 +19,7 @@ use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
 
 use crate::error::IoError;
+use crate::picture::budget;
 use crate::picture::error::PictureError;
 use crate::write::write_atomic;
 
@@ -65,6 +66,9 @@ pub fn write_curve_picture(
     overlay: &CurveOverlay<'_>,
     png: bool,
 ) -> Result<(), IoError> {
+    let points =
+        plot.curve.len() + plot.input.len() + 2 * (overlay.comb.len() + overlay.whiskers.len());
+    budget::check_output_memory(path, "the picture", budget::chart_bytes(points, png))?;
     let rendered = render_curve_svg_with(plot, overlay);
     if png {
         let svg = rendered.map_err(IoError::picture(path))?;

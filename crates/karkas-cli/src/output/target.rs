@@ -1,0 +1,78 @@
+//! Where a result goes and in which format: the output path's extension, or `--format`, and
+//! `-` for standard output.
+//!
+//! `-o -` writes to standard output, CSV unless `--format` names another format. `--format`
+//! also wins over the extension of a file output (`-o result.txt --format csv`). Every format
+//! a command writes may go to standard output, binary ones too (a pipe carries bytes), except
+//! to a terminal, where a binary format is refused.
+
+use anyhow::{bail, Result};
+use karkas_io::write::{is_stdout, output_name};
+use karkas_io::OutputFormat;
+use std::io::IsTerminal;
+use std::path::Path;
+use std::sync::OnceLock;
+
+/// The format of `--format`, set once from the command line.
+static REQUESTED: OnceLock<Option<OutputFormat>> = OnceLock::new();
+
+/// Sets the format asked for with `--format` (none: by the output's extension).
+pub fn set_requested_format(format: Option<OutputFormat>) {
+    let _ = REQUESTED.set(format);
+}
+
+/// The format asked for with `--format`, if any.
+pub fn requested_format() -> Option<OutputFormat> {
+    REQUESTED.get().copied().flatten()
+}
+
+/// The format `output` is written in, one of `allowed`: `--format` if given, else CSV for
+/// standard output (`-`), else by the extension. Refuses a format the command cannot write,
+/// and a binary format to a terminal.
+pub fn output_format(output: &Path, allowed: &[OutputFormat]) -> Result<OutputFormat> {
+    let format = match requested_format() {
+        Some(format) if allowed.contains(&format) => format,
+        Some(format) => bail!(
+            "--format {}: this command writes {}",
+            format.extension(),
+            names(allowed)
+        ),
+        None if is_stdout(output) => {
+            if !allowed.contains(&OutputFormat::Csv) {
+                bail!(
+                    "-o -: standard output needs --format (one of {})",
+                    names(allowed)
+                );
+            }
+            OutputFormat::Csv
+        }
+        None => OutputFormat::from_path(output, allowed)?,
+    };
+    if is_stdout(output) && is_binary(format) && std::io::stdout().is_terminal() {
+        bail!(
+            "{}: {} is binary and standard output is a terminal (redirect it to a file or a pipe)",
+            output_name(output).display(),
+            format.extension()
+        );
+    }
+    Ok(format)
+}
+
+/// True for the formats written as bytes rather than text (STL and PLY by default).
+fn is_binary(format: OutputFormat) -> bool {
+    matches!(
+        format,
+        OutputFormat::Png | OutputFormat::Stl | OutputFormat::Ply | OutputFormat::Glb
+    )
+}
+
+/// The names of `formats` for messages: `csv, svg, png`.
+fn names(formats: &[OutputFormat]) -> String {
+    let names: Vec<&str> = formats.iter().map(|f| f.extension()).collect();
+    names.join(", ")
+}
+
+/// The name of `output` in the lines that report what was written: the path, or `<stdout>`.
+pub fn shown(output: &Path) -> std::path::PathBuf {
+    output_name(output)
+}
