@@ -2,11 +2,11 @@
 the command line reads them, with the command line's messages."""
 
 import errno
-import math
+import faulthandler
 import os
 import pathlib
-import shutil
 import subprocess
+import threading
 
 import numpy as np
 import pytest
@@ -369,6 +369,40 @@ def test_the_readers_have_signatures_and_stubs():
         assert f.__doc__.startswith(f.__name__ + "(")
         assert f"def {f.__name__}(" in stubs
     assert "class FileFormatError(KarkasError)" in stubs
+
+
+@pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="needs named pipes")
+def test_a_pipe_is_read_in_one_pass_with_the_gil_released(tmp_path):
+    """A reader blocked on a named pipe leaves the interpreter to other threads (the writer
+    here), and reads what arrives in one pass."""
+    fifo = tmp_path / "frame.csv"
+    os.mkfifo(fifo)
+    result = {}
+
+    def read():
+        try:
+            result["grid"] = karkas.read_grid(fifo)
+        except Exception as e:  # reported below
+            result["error"] = e
+
+    # Were the GIL held while the reader waits for a writer, this test would hang: end the
+    # process with a traceback instead.
+    faulthandler.dump_traceback_later(120, exit=True)
+    try:
+        reader = threading.Thread(target=read, daemon=True)
+        reader.start()
+        with open(fifo, "w") as f:
+            f.write("i,j,x,y,z\n0,0,0,0,0\n0,1,0,1,0\n1,0,1,0,0\n1,1,1,1,1\n")
+        reader.join(60)
+        if reader.is_alive():  # a second open of the pipe: let it finish, then fail
+            with open(fifo, "w"):
+                pass
+            reader.join(60)
+            pytest.fail("the reader opened the pipe twice")
+    finally:
+        faulthandler.cancel_dump_traceback_later()
+    assert "error" not in result, result.get("error")
+    np.testing.assert_array_equal(result["grid"][1, 1], [1, 1, 1])
 
 
 # --- the same messages as the command line --------------------------------------------------
