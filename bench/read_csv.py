@@ -123,12 +123,19 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--n", type=int, default=10_000_000, help="points (default 10^7)")
     ap.add_argument("--rounds", type=int, default=3, help="timed rounds (default 3)")
-    ap.add_argument("--dir", default=os.path.join(tempfile.gettempdir(), "karkas-read-bench"),
-                    help="folder of the CSV files, reused between runs")
+    ap.add_argument(
+        "--dir",
+        default=os.path.join(tempfile.gettempdir(), "karkas-read-bench"),
+        help="folder of the CSV files, reused between runs",
+    )
     ap.add_argument("--threads", type=int, help="RAYON_NUM_THREADS for karkas")
     ap.add_argument("--skip-loadtxt", action="store_true", help="leave numpy.loadtxt out")
-    ap.add_argument("--loadtxt-rows", type=int, default=1_000_000,
-                    help="time numpy.loadtxt on at most this many rows, scaled (default 10^6)")
+    ap.add_argument(
+        "--loadtxt-rows",
+        type=int,
+        default=1_000_000,
+        help="time numpy.loadtxt on at most this many rows, scaled (default 10^6)",
+    )
     ap.add_argument("--no-memory", action="store_true", help="skip the peak-memory runs")
     args = ap.parse_args()
 
@@ -150,10 +157,15 @@ def main():
         print(f"wrote {path} in {time.perf_counter() - t0:.1f} s")
     size = os.path.getsize(path)
     points_bytes = args.n * 3 * 8
-    print(f"file: {path}, {args.n} points, {size / 1e6:.0f} MB; the points: {points_bytes / 1e6:.0f} MB")
-    print(f"karkas {karkas.__version__}, numpy {np.__version__}, pandas {pd.__version__}, "
-          f"python {sys.version.split()[0]}, {os.cpu_count()} CPUs, "
-          f"RAYON_NUM_THREADS={env.get('RAYON_NUM_THREADS', 'unset')}")
+    print(
+        f"file: {path}, {args.n} points, {size / 1e6:.0f} MB; "
+        f"the points: {points_bytes / 1e6:.0f} MB"
+    )
+    print(
+        f"karkas {karkas.__version__}, numpy {np.__version__}, pandas {pd.__version__}, "
+        f"python {sys.version.split()[0]}, {os.cpu_count()} CPUs, "
+        f"RAYON_NUM_THREADS={env.get('RAYON_NUM_THREADS', 'unset')}"
+    )
 
     funcs = readers(args.skip_loadtxt)
     files = {name: path for name in funcs}
@@ -164,7 +176,10 @@ def main():
             first_rows(path, subset, args.loadtxt_rows)
         files["numpy.loadtxt"] = subset
         scale["numpy.loadtxt"] = args.n / args.loadtxt_rows
-        print(f"numpy.loadtxt: timed on the first {args.loadtxt_rows} rows, scaled x{scale['numpy.loadtxt']:g}")
+        print(
+            f"numpy.loadtxt: timed on the first {args.loadtxt_rows} rows, "
+            f"scaled x{scale['numpy.loadtxt']:g}"
+        )
 
     # Equal results first.
     reference = funcs["karkas.read_curve"](path)
@@ -198,8 +213,10 @@ def main():
     for name, ts in times.items():
         m = statistics.median(ts)
         note = " (scaled)" if scale[name] != 1.0 else ""
-        print(f"{name:32} {m:9.2f} {args.n / m / 1e6:10.2f} {size / m / 1e6:7.0f} "
-              f"{m / pandas_median:9.2f}x{note}")
+        print(
+            f"{name:32} {m:9.2f} {args.n / m / 1e6:10.2f} {size / m / 1e6:7.0f} "
+            f"{m / pandas_median:9.2f}x{note}"
+        )
 
     if args.no_memory:
         return

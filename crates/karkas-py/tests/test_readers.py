@@ -70,7 +70,9 @@ def test_curve_csv_round_trip_is_exact(tmp_path, wavy3d):
 
 def test_a_large_curve_file_reads_into_one_array(tmp_path, rng):
     points = rng.standard_normal((20000, 3))
-    np.savetxt(tmp_path / "big.csv", points, fmt="%.17g", delimiter=",", header="x,y,z", comments="")
+    np.savetxt(
+        tmp_path / "big.csv", points, fmt="%.17g", delimiter=",", header="x,y,z", comments=""
+    )
     np.testing.assert_array_equal(karkas.read_curve(tmp_path / "big.csv"), points)
 
 
@@ -100,11 +102,20 @@ def test_a_lednicer_airfoil_reads_in_selig_order(tmp_path):
         "\n"
         " 0.0000000 0.0000000\n 0.2500000 0.0800000\n 0.6000000 0.0600000\n 1.0000000 0.0010000\n"
         "\n"
-        " 0.0000000 0.0000000\n 0.2500000 -0.0300000\n 0.6000000 -0.0200000\n 1.0000000 -0.0010000\n"
+        " 0.0000000 0.0000000\n 0.2500000 -0.0300000\n"
+        " 0.6000000 -0.0200000\n 1.0000000 -0.0010000\n"
     )
     name, points = karkas.read_airfoil(write(tmp_path / "cts.dat", text))
     assert name == "CAMBERED TEST SECTION"
-    expected = [[1, 0.001], [0.6, 0.06], [0.25, 0.08], [0, 0], [0.25, -0.03], [0.6, -0.02], [1, -0.001]]
+    expected = [
+        [1, 0.001],
+        [0.6, 0.06],
+        [0.25, 0.08],
+        [0, 0],
+        [0.25, -0.03],
+        [0.6, -0.02],
+        [1, -0.001],
+    ]
     np.testing.assert_array_equal(points, expected)
 
 
@@ -275,7 +286,13 @@ def test_a_file_that_is_not_a_mesh_is_refused(tmp_path):
 
 # --- errors ---------------------------------------------------------------------------------
 
-READERS = [karkas.read_curve, karkas.read_airfoil, karkas.read_grid, karkas.read_network, karkas.read_mesh]
+READERS = [
+    karkas.read_curve,
+    karkas.read_airfoil,
+    karkas.read_grid,
+    karkas.read_network,
+    karkas.read_mesh,
+]
 
 
 @pytest.mark.parametrize("reader", READERS, ids=lambda r: r.__name__)
@@ -325,7 +342,10 @@ def test_binary_garbage_is_refused_at_its_line(tmp_path, reader):
     p.write_bytes(garbage)
     with pytest.raises(karkas.FileFormatError) as e:
         reader(p)
-    assert str(e.value) == f"{p}:3: binary data (a NUL byte): expected a text file, one line per record"
+    assert (
+        str(e.value)
+        == f"{p}:3: binary data (a NUL byte): expected a text file, one line per record"
+    )
 
 
 def test_text_that_is_not_utf8_is_refused_at_its_line(tmp_path):
@@ -345,7 +365,10 @@ def test_an_endless_line_is_refused_after_one_mib(tmp_path):
 
 
 def test_the_memory_cap_bounds_what_a_read_keeps(tmp_path):
-    p = write(tmp_path / "g.csv", "i,j,x,y,z\n" + "".join(f"{i},{j},{i},{j},0\n" for i in range(3) for j in range(3)))
+    p = write(
+        tmp_path / "g.csv",
+        "i,j,x,y,z\n" + "".join(f"{i},{j},{i},{j},0\n" for i in range(3) for j in range(3)),
+    )
     assert karkas.max_input_bytes() == 2 << 30
     try:
         karkas.set_max_input_bytes(64)
@@ -426,18 +449,44 @@ def karkas_cli():
 
 
 BAD_FILES = [
-    (karkas.read_curve, "pts.csv", "x,y\n0,0\n1,abc\n2,0\n", ["curve", "ll", "pts.csv", "-o", "out.csv"]),
-    (karkas.read_curve, "pts.csv", "x,y\n0,0\n1,nan\n2,0\n", ["curve", "ll", "pts.csv", "-o", "out.csv"]),
+    (
+        karkas.read_curve,
+        "pts.csv",
+        "x,y\n0,0\n1,abc\n2,0\n",
+        ["curve", "ll", "pts.csv", "-o", "out.csv"],
+    ),
+    (
+        karkas.read_curve,
+        "pts.csv",
+        "x,y\n0,0\n1,nan\n2,0\n",
+        ["curve", "ll", "pts.csv", "-o", "out.csv"],
+    ),
     (karkas.read_curve, "pts.csv", "a,b\n0,0\n", ["curve", "ll", "pts.csv", "-o", "out.csv"]),
     (karkas.read_curve, "pts.csv", "", ["curve", "ll", "pts.csv", "-o", "out.csv"]),
     (karkas.read_curve, "none.csv", None, ["curve", "ll", "none.csv", "-o", "out.csv"]),
-    (karkas.read_grid, "g.csv", "i,j,x,y,z\nzero,1,0,1,0\n", ["surface", "ll", "g.csv", "-o", "out.csv"]),
+    (
+        karkas.read_grid,
+        "g.csv",
+        "i,j,x,y,z\nzero,1,0,1,0\n",
+        ["surface", "ll", "g.csv", "-o", "out.csv"],
+    ),
     (karkas.read_grid, "g.csv", "i,j,x,y\n0,0,0,0\n", ["surface", "ll", "g.csv", "-o", "out.csv"]),
     (
         karkas.read_network,
         "u.csv",
         "curve,x,y,z\n0,0,0,0\n2,1,0,0\n",
-        ["surface", "coons", "--kind", "bilinear", "--u-curves", "u.csv", "--v-curves", "u.csv", "-o", "out.csv"],
+        [
+            "surface",
+            "coons",
+            "--kind",
+            "bilinear",
+            "--u-curves",
+            "u.csv",
+            "--v-curves",
+            "u.csv",
+            "-o",
+            "out.csv",
+        ],
     ),
     (karkas.read_mesh, "m.obj", "v 0 0 0\nv 1 0\n", ["convert", "m.obj", "out.stl"]),
     (karkas.read_mesh, "m.stl", "solid x\nendsolid x\n", ["convert", "m.stl", "out.obj"]),
