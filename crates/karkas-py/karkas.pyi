@@ -17,8 +17,8 @@ class KarkasError(ValueError):
     """An error of karkas: bad input, or a method that could not finish.
 
     The message is the library's and names the offending input. The subclasses say which kind
-    of mistake it is; other errors are KarkasError itself. File errors of the exports are
-    OSError (FileNotFoundError, PermissionError, ...), not KarkasError."""
+    of mistake it is; other errors are KarkasError itself. A file that cannot be opened, read
+    or written is OSError (FileNotFoundError, PermissionError, ...), not KarkasError."""
 
 class PointsError(KarkasError):
     """Too few points, grid points or skeleton curves, a non-finite coordinate, coinciding
@@ -42,6 +42,11 @@ class ConvergenceError(KarkasError):
 
 class ExpressionError(KarkasError):
     """An implicit-surface expression that does not parse (the message gives the position)."""
+
+class FileFormatError(KarkasError):
+    """A file whose content the readers cannot read, with the command line's message naming the
+    file and the line or grid cell: a malformed number, a missing column or cell, binary data,
+    a line longer than 1 MiB, or an input larger than the memory cap (set_max_input_bytes)."""
 
 class Curve:
     """Base class of every curve: c(t) -> points, c.derivative(t, k)."""
@@ -311,3 +316,35 @@ def export_curve_csv(path: Union[str, "os.PathLike[str]"], t: ArrayLike, points:
 def export_surface_csv(
     path: Union[str, "os.PathLike[str]"], u: ArrayLike, v: ArrayLike, grid: ArrayLike
 ) -> None: ...
+
+FilePath = Union[str, "os.PathLike[str]"]
+
+def read_curve(path: FilePath) -> Floats:
+    """The ordered points of a curve file, (n, d) with d 2 or 3, as the command line's curve
+    commands read it: CSV (an optional header naming x, y and optionally z), whitespace
+    columns, or an airfoil .dat (Selig or Lednicer).
+
+    Raises OSError (FileNotFoundError, PermissionError, IsADirectoryError) when the file
+    cannot be opened, FileFormatError ("file:line: ...") when its content cannot be read."""
+
+def read_airfoil(path: FilePath) -> Tuple[str, Floats]:
+    """An airfoil .dat file (Selig or Lednicer): its name line and its contour (n, 2) in Selig
+    order (trailing edge, upper surface, leading edge, lower surface, trailing edge)."""
+
+def read_grid(path: FilePath) -> Floats:
+    """A surface frame, CSV rows i,j,x,y,z, as an (m, n, 3) array: grid[i, j] is cell (i, j)."""
+
+def read_network(path: FilePath) -> list[Floats]:
+    """One family of curves of a curve network, CSV rows curve,x,y,z: one (k, 3) array per
+    curve, in the order of the curve numbers (0, 1, ...)."""
+
+def read_mesh(path: FilePath) -> Tuple[Floats, NDArray[np.int64]]:
+    """A triangle mesh (.obj, .stl binary or ASCII, .ply, by extension): vertices (n, 3)
+    float64 and faces (m, 3) int64 indexing the vertices from 0."""
+
+def set_max_input_bytes(nbytes: int) -> None:
+    """The most memory one read may keep, in bytes, for every reader of the process (default
+    2 GiB, as the command line's --max-memory); a larger input raises FileFormatError."""
+
+def max_input_bytes() -> int:
+    """The most memory one read may keep, in bytes (see set_max_input_bytes)."""

@@ -12,12 +12,13 @@
 //!     ├── OptionError             an order, step, option or name outside what is allowed
 //!     ├── IncompatibleDataError   input parts that contradict each other
 //!     ├── ConvergenceError        a numerical method that could not finish
-//!     └── ExpressionError         an implicit-surface expression that does not parse
+//!     ├── ExpressionError         an implicit-surface expression that does not parse
+//!     └── FileFormatError         a file whose content the readers cannot read
 //! ```
 //!
-//! File errors of the exports are not karkas errors: they are `OSError` (its subclass for the
-//! operating system's error kind, e.g. `FileNotFoundError`), as Python's own `open` raises, so
-//! that `except ValueError` never swallows a full disk or a missing directory.
+//! File errors of the readers and exports are not karkas errors: they are `OSError` (its
+//! subclass for the operating system's error kind, e.g. `FileNotFoundError`), as Python's own
+//! `open` raises, so that `except ValueError` never swallows a full disk or a missing file.
 
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
@@ -30,9 +31,10 @@ pyo3::create_exception!(
      \n\
      A subclass of ValueError. The message is the library's and names the\n\
      offending input. The subclasses PointsError, KnotsError, OptionError,\n\
-     IncompatibleDataError, ConvergenceError and ExpressionError say which\n\
-     kind of mistake it is; other errors are KarkasError itself. File errors\n\
-     of the exports are OSError, not KarkasError."
+     IncompatibleDataError, ConvergenceError, ExpressionError and\n\
+     FileFormatError say which kind of mistake it is; other errors are\n\
+     KarkasError itself. A file that cannot be opened, read or written is\n\
+     OSError, not KarkasError."
 );
 pyo3::create_exception!(
     karkas,
@@ -89,6 +91,19 @@ pyo3::create_exception!(
      The message gives the character position of the problem."
 );
 
+pyo3::create_exception!(
+    karkas,
+    FileFormatError,
+    KarkasError,
+    "A file whose content cannot be read.\n\
+     \n\
+     Raised by the readers (read_curve, read_airfoil, read_grid, read_network,\n\
+     read_mesh) with the command line's message, which names the file and the\n\
+     line or grid cell: a malformed number, a missing column or cell, binary\n\
+     data, a line longer than 1 MiB, or an input larger than the memory cap\n\
+     (set_max_input_bytes). A file that cannot be opened is OSError instead."
+);
+
 /// Adds the exception classes to the module `m`.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     let py = m.py();
@@ -102,6 +117,7 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     )?;
     m.add("ConvergenceError", py.get_type::<ConvergenceError>())?;
     m.add("ExpressionError", py.get_type::<ExpressionError>())?;
+    m.add("FileFormatError", py.get_type::<FileFormatError>())?;
     Ok(())
 }
 

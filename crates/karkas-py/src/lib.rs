@@ -7,9 +7,9 @@
 //! typed subclasses, with the library's message (see [`errors`]).
 //!
 //! One file per library module (`ll`, `param`, `fit`, `dps`, `coons`, `implicit`, `section`,
-//! `measure`) plus `export` (karkas-io); the base classes `Curve` and `Surface` in `curve` and
-//! `surface` over the dimension-free interfaces of `wrapper`; arrays in `convert`; exceptions
-//! in `errors`.
+//! `measure`) plus `export` and `read` (karkas-io's writers and readers); the base classes
+//! `Curve` and `Surface` in `curve` and `surface` over the dimension-free interfaces of
+//! `wrapper`; arrays in `convert`; exceptions in `errors`.
 
 mod convert;
 mod coons;
@@ -22,6 +22,7 @@ mod implicit;
 mod ll;
 mod measure;
 mod param;
+mod read;
 mod section;
 mod surface;
 mod wrapper;
@@ -65,6 +66,13 @@ fn karkas_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(export::export_stl, m)?)?;
     m.add_function(wrap_pyfunction!(export::export_curve_csv, m)?)?;
     m.add_function(wrap_pyfunction!(export::export_surface_csv, m)?)?;
+    m.add_function(wrap_pyfunction!(read::read_curve, m)?)?;
+    m.add_function(wrap_pyfunction!(read::read_airfoil, m)?)?;
+    m.add_function(wrap_pyfunction!(read::read_grid, m)?)?;
+    m.add_function(wrap_pyfunction!(read::read_network, m)?)?;
+    m.add_function(wrap_pyfunction!(read::read_mesh, m)?)?;
+    m.add_function(wrap_pyfunction!(read::set_max_input_bytes, m)?)?;
+    m.add_function(wrap_pyfunction!(read::max_input_bytes, m)?)?;
     let names: Vec<String> = m
         .dict()
         .keys()

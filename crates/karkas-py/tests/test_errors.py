@@ -12,6 +12,7 @@ SUBCLASSES = [
     karkas.IncompatibleDataError,
     karkas.ConvergenceError,
     karkas.ExpressionError,
+    karkas.FileFormatError,
 ]
 
 

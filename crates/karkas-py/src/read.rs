@@ -1,0 +1,247 @@
+//! The readers of karkas-io as Python functions returning NumPy arrays: curve points, airfoils,
+//! surface frames, curve networks and triangle meshes, read as the command line reads them.
+//!
+//! - Arrays are built from the readers' own vectors without a copy (a `Vec<f64>` becomes the
+//!   array's memory; `Vec<Point3>` is reinterpreted as `Vec<f64>` by `bytemuck`), so a read
+//!   holds the points once. Mesh faces are converted from `u32` to `int64`, one copy.
+//! - Files are read with the GIL released.
+//! - A path is a path: `-` is a file named `-` here, not standard input as on the command line
+//!   (a Python caller has `sys.stdin` for that).
+//! - Errors: a file that cannot be opened or read raises the `OSError` subclass of the
+//!   operating system's error (`FileNotFoundError`, `PermissionError`, `IsADirectoryError`)
+//!   with `errno`, `strerror` and `filename` set, as Python's `open` does; content that cannot
+//!   be read raises `karkas.FileFormatError` with exactly the command line's message (file,
+//!   line, what is wrong).
+//! - What a read keeps is bounded by karkas-io's process-wide cap ([`set_max_input_bytes`],
+//!   2 GiB by default), as the command line's `--max-memory`.
+
+use std::path::{Path, PathBuf};
+
+use karkas::Point;
+use karkas_io::IoError;
+use numpy::{PyArray1, PyArray2, PyArray3, PyArrayMethods};
+use pyo3::exceptions::PyOSError;
+use pyo3::prelude::*;
+
+use crate::errors::{FileFormatError, OptionError};
+
+/// read_curve(path) -> (n, d) float64 array: the ordered points of a curve file, as the
+/// command line's `curve` commands read them: CSV (an optional header naming x, y and
+/// optionally z), whitespace-separated columns, or an airfoil .dat (Selig or Lednicer); d is 2
+/// or 3 as the file says.
+///
+/// Raises FileNotFoundError, PermissionError, IsADirectoryError (OSError) when the file cannot
+/// be opened, karkas.FileFormatError (with the command line's message, "file:line: ...") when
+/// its content cannot be read.
+#[pyfunction]
+#[pyo3(text_signature = "(path)")]
+pub fn read_curve(py: Python<'_>, path: PathBuf) -> PyResult<Bound<'_, PyArray2<f64>>> {
+    let path = file_path(path)?;
+    let (flat, dim) = py
+        .detach(|| karkas_io::points::read_curve_coordinates(&path))
+        .map_err(read_error)?;
+    let rows = flat.len() / dim.max(1);
+    PyArray1::from_vec(py, flat).reshape([rows, dim])
+}
+
+/// read_airfoil(path) -> (name, (n, 2) float64 array): an airfoil .dat file, Selig or Lednicer
+/// layout; the name line trimmed, the contour in Selig order (trailing edge, upper surface,
+/// leading edge, lower surface, trailing edge).
+///
+/// Raises OSError when the file cannot be opened, karkas.FileFormatError when its content is
+/// not an airfoil.
+#[pyfunction]
+#[pyo3(text_signature = "(path)")]
+pub fn read_airfoil(py: Python<'_>, path: PathBuf) -> PyResult<(String, Bound<'_, PyArray2<f64>>)> {
+    let path = file_path(path)?;
+    let airfoil = py
+        .detach(|| {
+            let text = karkas_io::input::read_text(&path)?;
+            karkas_io::airfoil::parse_airfoil(&text, &path)
+        })
+        .map_err(read_error)?;
+    let points = points_array(py, airfoil.points)?;
+    Ok((airfoil.name, points))
+}
+
+/// read_grid(path) -> (m, n, 3) float64 array: a surface frame, CSV rows i,j,x,y,z (a header
+/// naming the columns, rows in any order, every cell of the m x n grid given once), as the
+/// command line's `surface` commands read it; grid[i, j] is the point of cell (i, j).
+///
+/// Raises OSError when the file cannot be opened, karkas.FileFormatError when its content
+/// cannot be read (the message names the line or the grid cell).
+#[pyfunction]
+#[pyo3(text_signature = "(path)")]
+pub fn read_grid(py: Python<'_>, path: PathBuf) -> PyResult<Bound<'_, PyArray3<f64>>> {
+    let path = file_path(path)?;
+    let grid = py
+        .detach(|| karkas_io::grid::read_grid(&path))
+        .map_err(read_error)?;
+    let (rows, cols) = (grid.rows(), grid.cols());
+    PyArray1::from_vec(py, flat_points(grid.into_vec())).reshape([rows, cols, 3])
+}
+
+/// read_network(path) -> list of (k, 3) float64 arrays: one family of curves of a curve
+/// network, CSV rows curve,x,y,z (a header naming the columns; curves numbered from 0 without
+/// gaps, each curve's points together, in file order), as `surface coons` reads it; item c is
+/// curve c.
+///
+/// Raises OSError when the file cannot be opened, karkas.FileFormatError when its content
+/// cannot be read.
+#[pyfunction]
+#[pyo3(text_signature = "(path)")]
+pub fn read_network(py: Python<'_>, path: PathBuf) -> PyResult<Vec<Bound<'_, PyArray2<f64>>>> {
+    let path = file_path(path)?;
+    let family = py
+        .detach(|| karkas_io::network::read_curve_family(&path))
+        .map_err(read_error)?;
+    family
+        .curves
+        .into_iter()
+        .map(|curve| points_array(py, curve))
+        .collect()
+}
+
+/// read_mesh(path) -> (vertices (n, 3) float64, faces (m, 3) int64): a triangle mesh, .obj,
+/// .stl (binary or ASCII) or .ply by the file's extension, as `convert` reads it; faces index
+/// the vertices from 0.
+///
+/// Raises OSError when the file cannot be opened, karkas.FileFormatError when its content
+/// cannot be read or it has no faces.
+#[pyfunction]
+#[pyo3(text_signature = "(path)")]
+pub fn read_mesh(py: Python<'_>, path: PathBuf) -> PyResult<MeshArrays<'_>> {
+    let path = file_path(path)?;
+    let mesh = py
+        .detach(|| karkas_io::mesh::read_mesh(&path))
+        .map_err(read_error)?;
+    let faces: Vec<i64> = mesh
+        .triangles
+        .iter()
+        .flat_map(|t| t.map(i64::from))
+        .collect();
+    let m = mesh.triangles.len();
+    let vertices = points_array(py, mesh.positions)?;
+    let faces = PyArray1::from_vec(py, faces).reshape([m, 3])?;
+    Ok((vertices, faces))
+}
+
+/// The vertices `(n, 3)` and faces `(m, 3)` of a mesh.
+type MeshArrays<'py> = (Bound<'py, PyArray2<f64>>, Bound<'py, PyArray2<i64>>);
+
+/// set_max_input_bytes(nbytes): the most memory one read may keep (the points it returns, or
+/// the text of a file read whole), in bytes, for every reader of the process (default 2 GiB,
+/// the command line's --max-memory). A larger input raises karkas.FileFormatError instead of
+/// exhausting the machine.
+#[pyfunction]
+#[pyo3(text_signature = "(nbytes)")]
+pub fn set_max_input_bytes(nbytes: i128) -> PyResult<()> {
+    let bytes = u64::try_from(nbytes)
+        .ok()
+        .filter(|&b| b > 0)
+        .ok_or_else(|| {
+            OptionError::new_err(format!(
+                "nbytes must be a positive number of bytes below 2^64 (got {nbytes})"
+            ))
+        })?;
+    karkas_io::input::set_max_input_bytes(bytes);
+    Ok(())
+}
+
+/// max_input_bytes() -> int: the most memory one read may keep, in bytes (see
+/// set_max_input_bytes).
+#[pyfunction]
+#[pyo3(text_signature = "()")]
+pub fn max_input_bytes() -> u64 {
+    karkas_io::input::max_input_bytes()
+}
+
+/// The path to read: `-` names the file `./-` (the readers would take it for standard
+/// input). A directory is refused here as `IsADirectoryError`, the error Python's `open`
+/// gives, before any reader sees it.
+fn file_path(path: PathBuf) -> PyResult<PathBuf> {
+    let path = if karkas_io::input::is_stdin(&path) {
+        Path::new(".").join(&path)
+    } else {
+        path
+    };
+    if std::fs::metadata(&path).is_ok_and(|m| m.is_dir()) {
+        return Err(PyOSError::new_err((
+            EISDIR,
+            "Is a directory",
+            os_name(&path),
+        )));
+    }
+    Ok(path)
+}
+
+/// The error number Python maps to `IsADirectoryError` (`errno.EISDIR`, 21 on every platform
+/// Python supports).
+const EISDIR: i32 = 21;
+
+/// `path` as Python's `filename` attribute takes it (`str`, undecodable bytes escaped).
+fn os_name(path: &Path) -> std::ffi::OsString {
+    path.as_os_str().to_os_string()
+}
+
+/// A read error as the Python exception of its kind: an open or read failure of the operating
+/// system as `OSError` (see [`os_error`]), anything else as `karkas.FileFormatError` with the
+/// command line's one-line message.
+fn read_error(e: IoError) -> PyErr {
+    match &e {
+        IoError::Open { path, source } => os_error(path, source),
+        _ => FileFormatError::new_err(error_line(&e)),
+    }
+}
+
+/// `OSError(errno, strerror, filename)`, which Python turns into the subclass of the error
+/// number (`FileNotFoundError`, `PermissionError`, ...), as its own `open` raises; an error
+/// without a number keeps its kind's subclass and carries karkas-io's message.
+fn os_error(path: &Path, source: &std::io::Error) -> PyErr {
+    match source.raw_os_error() {
+        Some(errno) => {
+            let text = source.to_string();
+            let suffix = format!(" (os error {errno})");
+            let strerror = text.strip_suffix(&suffix).unwrap_or(&text).to_owned();
+            PyOSError::new_err((errno, strerror, os_name(path)))
+        }
+        None => PyErr::from(std::io::Error::new(
+            source.kind(),
+            format!("cannot read {}: {source}", path.display()),
+        )),
+    }
+}
+
+/// The message of `error` as the command line prints it (after `karkas: error: `): its text,
+/// then each cause whose text is not already in the line, joined by `": "`.
+fn error_line(error: &(dyn std::error::Error + 'static)) -> String {
+    let mut line = String::new();
+    let mut cause = Some(error);
+    while let Some(e) = cause {
+        let text = e.to_string();
+        if !text.is_empty() && !line.contains(&text) {
+            if !line.is_empty() {
+                line.push_str(": ");
+            }
+            line.push_str(&text);
+        }
+        cause = e.source();
+    }
+    line
+}
+
+/// Points as a flat coordinate vector: the same memory reinterpreted (a `Point<D>` is
+/// `[f64; D]`, so the cast cannot fail; were it refused, the coordinates are copied).
+fn flat_points<const D: usize>(points: Vec<Point<D>>) -> Vec<f64> {
+    bytemuck::allocation::try_cast_vec(points)
+        .unwrap_or_else(|(_, points)| points.iter().flat_map(|p| p.0).collect())
+}
+
+/// An `(n, D)` float64 array owning the memory of `points` (no copy).
+fn points_array<const D: usize>(
+    py: Python<'_>,
+    points: Vec<Point<D>>,
+) -> PyResult<Bound<'_, PyArray2<f64>>> {
+    let n = points.len();
+    PyArray1::from_vec(py, flat_points(points)).reshape([n, D])
+}
