@@ -16,6 +16,7 @@ if ! python3 -m pip --version >/dev/null 2>&1; then
 fi
 cargo build --release -p karkas-cli --quiet
 
+python3 tests/corpus/run_corpus.py --self-test
 python3 tests/corpus/fetch_corpus.py --dest "$cache"
 echo "corpus: fetched at $((SECONDS - start))s"
 python3 tests/corpus/run_corpus.py --karkas target/release/karkas --dir "$cache/files" \

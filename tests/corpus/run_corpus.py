@@ -183,30 +183,28 @@ def load_list(path: Path) -> tuple[list[Entry], list[str]]:
 
 def judge(outcome: Outcome, entry: Entry | None, cap: int) -> str | None:
     """Why this run fails, or None when it passes."""
-    run, status = outcome.run, outcome.status
-    where = f"{run.file} [{run.command}]"
+    status = outcome.status
     if status is None:
-        return f"{where}: timed out"
+        return "timed out"
     if "panicked" in outcome.stderr:
-        return f"{where}: panicked (exit {status}): {outcome.error}"
+        return f"panicked (exit {status}): {outcome.error}"
     if outcome.rss > cap + RSS_OVERHEAD:
-        return (f"{where}: peak memory {outcome.rss >> 20} MiB over the cap "
+        return (f"peak memory {outcome.rss >> 20} MiB over the cap "
                 f"{cap >> 20} MiB + {RSS_OVERHEAD >> 20} MiB")
     if status == 0:
         if entry is not None:
-            return f"{where}: listed as refused (line {entry.line}) but read"
+            return f"listed as refused (line {entry.line}) but read"
         return None
     if status != 2:
-        return f"{where}: exit status {status} (a crash?): {outcome.error}"
+        return f"exit status {status} (a crash?): {outcome.error}"
     if not outcome.error.startswith("karkas: error:"):
-        return f"{where}: exit 2 without a 'karkas: error:' line: {outcome.error}"
+        return f"exit 2 without a 'karkas: error:' line: {outcome.error}"
     if entry is None:
-        return f"{where}: refused, not listed: {outcome.error}"
+        return f"refused, not listed: {outcome.error}"
     if entry.expected not in outcome.error:
-        return f"{where}: refused with another error than listed (line {entry.line}): " \
-               f"{outcome.error}"
+        return f"refused with another error than listed (line {entry.line}): {outcome.error}"
     if not entry.why or entry.why.upper().startswith("TODO"):
-        return f"{where}: listed without a reason (line {entry.line})"
+        return f"listed without a reason (line {entry.line})"
     return None
 
 
@@ -246,19 +244,66 @@ def write_update(path: Path, outcomes: list[Outcome], old: list[Entry]) -> int:
     return len(lines)
 
 
+def self_test() -> int:
+    """The pass/fail rules on made-up outcomes: each rule must be able to fail."""
+    run = Run("src/a.dat", "airfoil", "curve ll")
+    err = "karkas: error: /c/src/a.dat:2: '......' is not a number (column 2)"
+    listed = Entry(run.file, ALL, "'......' is not a number", "placeholders", 4)
+    cap = 1 << 30
+
+    def out(status, error="", stderr=None, rss=10 << 20):
+        return Outcome(run, status, 0.1, rss, error, error if stderr is None else stderr)
+
+    cases = [
+        ("read, not listed", out(0), None, True),
+        ("read, listed", out(0), listed, False),
+        ("refused, listed, message matches", out(2, err), listed, True),
+        ("refused, not listed", out(2, err), None, False),
+        ("refused, listed, another message", out(2, err.replace("......", "x")), listed, False),
+        ("refused, listed without a reason", out(2, err),
+         Entry(run.file, ALL, "is not a number", "TODO", 4), False),
+        ("panic with exit 2", out(2, err, "thread 'main' panicked at src/x.rs"), listed, False),
+        ("crash (signal)", out(-11, ""), None, False),
+        ("exit 1", out(1, "Error: x"), None, False),
+        ("exit 2 without an error line", out(2, "error: unexpected argument"), listed, False),
+        ("timeout", out(None), None, False),
+        ("peak memory over the cap", out(0, rss=cap + RSS_OVERHEAD + 1), None, False),
+        ("peak memory at the cap + overhead", out(0, rss=cap + RSS_OVERHEAD), None, True),
+    ]
+    failed = 0
+    for name, outcome, entry, passes in cases:
+        verdict = judge(outcome, entry, cap)
+        if (verdict is None) != passes:
+            failed += 1
+            print(f"self-test: {name}: expected {'pass' if passes else 'fail'}, got {verdict}")
+    draft = draft_expected(Outcome(run, 2, 0.1, 0, err, err))
+    if draft != "2: '......' is not a number (column 2)":
+        failed += 1
+        print(f"self-test: draft_expected gave {draft!r}")
+    print(f"self-test: {len(cases) + 1 - failed} passed, {failed} failed")
+    return 1 if failed else 0
+
+
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--karkas", required=True, help="the karkas binary")
-    parser.add_argument("--dir", type=Path, required=True, help="the corpus folder")
+    parser.add_argument("--karkas", help="the karkas binary")
+    parser.add_argument("--dir", type=Path, help="the corpus folder")
     parser.add_argument("--refusals", type=Path, default=HERE / "expected_refusals.txt")
     parser.add_argument("--jobs", type=int, default=2)
     parser.add_argument("--timeout", type=float, default=60.0, help="seconds per run")
     parser.add_argument("--max-memory", default="1G", help="passed to every run")
     parser.add_argument("--tolerance", default="1e-3", help="curve fit --tolerance")
     parser.add_argument("--results", type=Path, help="write every run as TSV here")
+    parser.add_argument("--show", type=int, default=100, help="failure lines printed at most")
+    parser.add_argument("--self-test", action="store_true",
+                        help="check the pass/fail rules on made-up runs and stop")
     parser.add_argument("--update", action="store_true",
                         help="rewrite --refusals from the current refusals (reasons kept)")
     args = parser.parse_args()
+    if args.self_test:
+        return self_test()
+    if args.karkas is None or args.dir is None:
+        parser.error("--karkas and --dir are required")
     cap = parse_size(args.max_memory)
     args.karkas = str(Path(args.karkas).resolve())
     root = args.dir.resolve()
@@ -301,7 +346,8 @@ def main() -> int:
             problems.append(f"{args.refusals.name}:{e.line}: {e.file}: no command "
                             f"'{e.command}' runs on a {kind_of[e.file]} file")
 
-    failures = list(problems)
+    # One failure line per file and reason, naming the commands it holds for.
+    grouped: dict[tuple[str, str], list[str]] = {}
     passed = 0
     for o in outcomes:
         entry = by_key.get((o.run.file, o.run.command)) or by_key.get((o.run.file, ALL))
@@ -309,7 +355,9 @@ def main() -> int:
         if why is None:
             passed += 1
         else:
-            failures.append(why)
+            grouped.setdefault((o.run.file, why), []).append(o.run.command)
+    failures = list(problems) + [f"{file} [{', '.join(commands)}]: {why}"
+                                 for (file, why), commands in grouped.items()]
 
     # Counts: files per source and kind, read (every command exit 0), refused (listed).
     refused_files = {o.run.file for o in outcomes if o.status == 2}
@@ -329,10 +377,10 @@ def main() -> int:
     print(f"corpus: {len(runs)} runs in {elapsed:.1f} s on {args.jobs} workers; slowest "
           f"{slowest.seconds:.2f} s ({slowest.run.file} [{slowest.run.command}]); largest peak "
           f"memory {largest.rss >> 20} MiB ({largest.run.file} [{largest.run.command}])")
-    for why in failures[:200]:
+    for why in failures[:args.show]:
         print(f"FAIL {why}")
-    if len(failures) > 200:
-        print(f"FAIL ... and {len(failures) - 200} more")
+    if len(failures) > args.show:
+        print(f"FAIL ... and {len(failures) - args.show} more (all runs: --results FILE)")
     print(f"corpus: {passed} passed, {len(runs) - passed + len(problems)} failed")
     return 0 if not failures else 1
 
