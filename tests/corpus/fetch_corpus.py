@@ -138,7 +138,11 @@ SOURCES: tuple[Source, ...] = (
         "meshio==5.3.5",
         "meshio-5.3.5.tar.gz",
         "f21f01abd9f29ba06ea119304b3d39e610421cfe93b9dd23362834919f87586d",
-        ("meshio-5.3.5/tests/meshes/*.obj", "meshio-5.3.5/tests/meshes/*.ply", "meshio-5.3.5/tests/meshes/*.stl"),
+        (
+            "meshio-5.3.5/tests/meshes/*.obj",
+            "meshio-5.3.5/tests/meshes/*.ply",
+            "meshio-5.3.5/tests/meshes/*.stl",
+        ),
         ("--no-binary=:all:",),
         note="the OBJ and PLY test meshes of the sdist",
     ),
@@ -148,7 +152,11 @@ SOURCES: tuple[Source, ...] = (
         "assimp-testmodels=5.2.5~ds0-1",
         "assimp-testmodels_5.2.5~ds0-1_all.deb",
         "526f326186000cd6f631ea806128548a7d3d391abd8149fddc5c4c8513e80b8a",
-        ("usr/share/assimp/models/*.obj", "usr/share/assimp/models/*.stl", "usr/share/assimp/models/*.ply"),
+        (
+            "usr/share/assimp/models/*.obj",
+            "usr/share/assimp/models/*.stl",
+            "usr/share/assimp/models/*.ply",
+        ),
         note="Open Asset Import Library's test models, including its folder of invalid files",
     ),
     Source(

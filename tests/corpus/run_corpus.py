@@ -16,16 +16,17 @@ prusa-slicer). Files are classed by extension:
     mesh (.stl .obj .ply)   karkas convert IN out.obj
                             karkas convert IN out.ply
 
-Every run gets --max-memory (default 1G) and a timeout (default 60 s); runs go in parallel
-(default 2 at a time). A run passes when
+Every run gets --max-memory (default 1G), a limit of 60 s of CPU time (--timeout; CPU time,
+so that a machine busy with other work does not fail a run) and is killed as hung after four
+times that on the wall clock; runs go in parallel (default 2 at a time). A run passes when
   - it exits 0 and its (file, command) is not listed (a fit that misses its tolerance warns
     and still exits 0, which passes), or
   - it exits 2 with a `karkas: error:` line and no panic, its (file, command) is listed, and
     the error line contains the listed substring;
 and fails otherwise: an unlisted refusal, a listed file that is read (the list stays honest),
-any other exit status (a crash, a signal, a panic), a timeout, or a peak resident memory above
-the cap plus 64 MiB. A listed entry whose file is not in the corpus, and an entry without a
-reason, fail too.
+any other exit status (a crash, a signal, a panic), a run over its CPU or wall-clock limit, or a
+peak resident memory above the cap plus 64 MiB. A listed entry whose file is not in the corpus,
+and an entry without a reason, fail too.
 
 expected_refusals.txt holds one refusal a line, tab-separated:
 
@@ -83,11 +84,12 @@ class Run:
 @dataclass
 class Outcome:
     run: Run
-    status: int | None  # exit code; negative for a signal; None for a timeout
-    seconds: float
+    status: int | None  # exit code; negative for a signal; None when killed as hung
+    seconds: float  # wall-clock
     rss: int  # peak resident set size in bytes
     error: str  # the error line (or the last line of stderr)
     stderr: str
+    cpu: float = 0.0  # user + system seconds
 
 
 @dataclass
@@ -137,7 +139,8 @@ def error_line(stderr: str) -> str:
 
 
 def execute(run: Run, root: Path, work: Path, args) -> Outcome:
-    """One karkas run with a timeout; its peak memory comes from wait4's resource usage."""
+    """One karkas run, killed after the wall-clock limit; its CPU time and peak memory come
+    from wait4's resource usage."""
     with tempfile.TemporaryDirectory(dir=work) as tmp:
         out_dir = Path(tmp)
         err_path = out_dir / "stderr"
@@ -152,7 +155,7 @@ def execute(run: Run, root: Path, work: Path, args) -> Outcome:
             timed_out.set()
             proc.kill()
 
-        timer = threading.Timer(args.timeout, kill)
+        timer = threading.Timer(args.wall_timeout, kill)
         timer.start()
         try:
             _, wait_status, usage = os.wait4(proc.pid, 0)
@@ -161,8 +164,9 @@ def execute(run: Run, root: Path, work: Path, args) -> Outcome:
         proc.returncode = os.waitstatus_to_exitcode(wait_status)
         seconds = time.monotonic() - start
         stderr = err_path.read_bytes().decode("utf-8", "replace")
-    status = None if timed_out.is_set() and seconds >= args.timeout else proc.returncode
-    return Outcome(run, status, seconds, usage.ru_maxrss * 1024, error_line(stderr), stderr)
+    status = None if timed_out.is_set() and seconds >= args.wall_timeout else proc.returncode
+    return Outcome(run, status, seconds, usage.ru_maxrss * 1024, error_line(stderr), stderr,
+                   usage.ru_utime + usage.ru_stime)
 
 
 def load_list(path: Path) -> tuple[list[Entry], list[str]]:
@@ -181,11 +185,13 @@ def load_list(path: Path) -> tuple[list[Entry], list[str]]:
     return entries, problems
 
 
-def judge(outcome: Outcome, entry: Entry | None, cap: int) -> str | None:
+def judge(outcome: Outcome, entry: Entry | None, cap: int, cpu_limit: float) -> str | None:
     """Why this run fails, or None when it passes."""
     status = outcome.status
     if status is None:
-        return "timed out"
+        return f"killed after {outcome.seconds:.0f} s (wall clock): it hangs"
+    if outcome.cpu > cpu_limit:
+        return f"took {outcome.cpu:.1f} s of CPU, over the {cpu_limit:g} s limit"
     if "panicked" in outcome.stderr:
         return f"panicked (exit {status}): {outcome.error}"
     if outcome.rss > cap + RSS_OVERHEAD:
@@ -251,8 +257,8 @@ def self_test() -> int:
     listed = Entry(run.file, ALL, "'......' is not a number", "placeholders", 4)
     cap = 1 << 30
 
-    def out(status, error="", stderr=None, rss=10 << 20):
-        return Outcome(run, status, 0.1, rss, error, error if stderr is None else stderr)
+    def out(status, error="", stderr=None, rss=10 << 20, cpu=0.1):
+        return Outcome(run, status, 0.1, rss, error, error if stderr is None else stderr, cpu)
 
     cases = [
         ("read, not listed", out(0), None, True),
@@ -266,13 +272,14 @@ def self_test() -> int:
         ("crash (signal)", out(-11, ""), None, False),
         ("exit 1", out(1, "Error: x"), None, False),
         ("exit 2 without an error line", out(2, "error: unexpected argument"), listed, False),
-        ("timeout", out(None), None, False),
+        ("killed as hung", out(None), None, False),
+        ("over the CPU limit", out(0, cpu=60.5), None, False),
         ("peak memory over the cap", out(0, rss=cap + RSS_OVERHEAD + 1), None, False),
         ("peak memory at the cap + overhead", out(0, rss=cap + RSS_OVERHEAD), None, True),
     ]
     failed = 0
     for name, outcome, entry, passes in cases:
-        verdict = judge(outcome, entry, cap)
+        verdict = judge(outcome, entry, cap, 60.0)
         if (verdict is None) != passes:
             failed += 1
             print(f"self-test: {name}: expected {'pass' if passes else 'fail'}, got {verdict}")
@@ -290,7 +297,11 @@ def main() -> int:
     parser.add_argument("--dir", type=Path, help="the corpus folder")
     parser.add_argument("--refusals", type=Path, default=HERE / "expected_refusals.txt")
     parser.add_argument("--jobs", type=int, default=2)
-    parser.add_argument("--timeout", type=float, default=60.0, help="seconds per run")
+    parser.add_argument("--timeout", type=float, default=60.0,
+                        help="CPU seconds a run may take (CPU, so a busy machine does not fail it)")
+    parser.add_argument("--wall-timeout", type=float,
+                        help="wall-clock seconds before a run is killed as hung "
+                             "(default 4x --timeout)")
     parser.add_argument("--max-memory", default="1G", help="passed to every run")
     parser.add_argument("--tolerance", default="1e-3", help="curve fit --tolerance")
     parser.add_argument("--results", type=Path, help="write every run as TSV here")
@@ -305,6 +316,8 @@ def main() -> int:
     if args.karkas is None or args.dir is None:
         parser.error("--karkas and --dir are required")
     cap = parse_size(args.max_memory)
+    if args.wall_timeout is None:
+        args.wall_timeout = 4 * args.timeout
     args.karkas = str(Path(args.karkas).resolve())
     root = args.dir.resolve()
 
@@ -321,10 +334,10 @@ def main() -> int:
 
     if args.results:
         with args.results.open("w", encoding="utf-8") as out:
-            out.write("file\tkind\tcommand\tstatus\tseconds\trss_mib\terror\n")
+            out.write("file\tkind\tcommand\tstatus\tseconds\tcpu_seconds\trss_mib\terror\n")
             for o in outcomes:
                 out.write(f"{o.run.file}\t{o.run.kind}\t{o.run.command}\t{o.status}\t"
-                          f"{o.seconds:.3f}\t{o.rss / (1 << 20):.1f}\t"
+                          f"{o.seconds:.3f}\t{o.cpu:.3f}\t{o.rss / (1 << 20):.1f}\t"
                           f"{o.error.replace(chr(9), ' ')}\n")
 
     entries, problems = load_list(args.refusals)
@@ -351,7 +364,7 @@ def main() -> int:
     passed = 0
     for o in outcomes:
         entry = by_key.get((o.run.file, o.run.command)) or by_key.get((o.run.file, ALL))
-        why = judge(o, entry, cap)
+        why = judge(o, entry, cap, args.timeout)
         if why is None:
             passed += 1
         else:
@@ -372,10 +385,10 @@ def main() -> int:
         rows = [v for (s, k), v in table.items() if k == kind]
         read, refused = sum(r for r, _ in rows), sum(x for _, x in rows)
         print(f"{'all':<20} {kind:<8} {read + refused:>6} {read:>6} {refused:>8}")
-    slowest = max(outcomes, key=lambda o: o.seconds)
+    slowest = max(outcomes, key=lambda o: o.cpu)
     largest = max(outcomes, key=lambda o: o.rss)
     print(f"corpus: {len(runs)} runs in {elapsed:.1f} s on {args.jobs} workers; slowest "
-          f"{slowest.seconds:.2f} s ({slowest.run.file} [{slowest.run.command}]); largest peak "
+          f"{slowest.cpu:.2f} s CPU ({slowest.run.file} [{slowest.run.command}]); largest peak "
           f"memory {largest.rss >> 20} MiB ({largest.run.file} [{largest.run.command}])")
     for why in failures[:args.show]:
         print(f"FAIL {why}")
