@@ -24,9 +24,9 @@ times that on the wall clock; runs go in parallel (default 2 at a time). A run p
   - it exits 2 with a `karkas: error:` line and no panic, its (file, command) is listed, and
     the error line contains the listed substring;
 and fails otherwise: an unlisted refusal, a listed file that is read (the list stays honest),
-any other exit status (a crash, a signal, a panic), a run over its CPU or wall-clock limit, or a
-peak resident memory above the cap plus 64 MiB. A listed entry whose file is not in the corpus,
-and an entry without a reason, fail too.
+an exit 0 with no or an empty output file, any other exit status (a crash, a signal, a panic),
+a run over its CPU or wall-clock limit, or a peak resident memory above the cap plus 64 MiB.
+A listed entry whose file is not in the corpus, and an entry without a reason, fail too.
 
 expected_refusals.txt holds one refusal a line, tab-separated:
 
@@ -90,6 +90,7 @@ class Outcome:
     error: str  # the error line (or the last line of stderr)
     stderr: str
     cpu: float = 0.0  # user + system seconds
+    wrote: bool = True  # the output file exists and is not empty
 
 
 @dataclass
@@ -164,9 +165,11 @@ def execute(run: Run, root: Path, work: Path, args) -> Outcome:
         proc.returncode = os.waitstatus_to_exitcode(wait_status)
         seconds = time.monotonic() - start
         stderr = err_path.read_bytes().decode("utf-8", "replace")
+        output = Path(argv[argv.index("-o") + 1] if "-o" in argv else argv[3])
+        wrote = output.exists() and output.stat().st_size > 0
     status = None if timed_out.is_set() and seconds >= args.wall_timeout else proc.returncode
     return Outcome(run, status, seconds, usage.ru_maxrss * 1024, error_line(stderr), stderr,
-                   usage.ru_utime + usage.ru_stime)
+                   usage.ru_utime + usage.ru_stime, wrote)
 
 
 def load_list(path: Path) -> tuple[list[Entry], list[str]]:
@@ -200,6 +203,8 @@ def judge(outcome: Outcome, entry: Entry | None, cap: int, cpu_limit: float) -> 
     if status == 0:
         if entry is not None:
             return f"listed as refused (line {entry.line}) but read"
+        if not outcome.wrote:
+            return "exit 0 but no output written"
         return None
     if status != 2:
         return f"exit status {status} (a crash?): {outcome.error}"
@@ -257,12 +262,14 @@ def self_test() -> int:
     listed = Entry(run.file, ALL, "'......' is not a number", "placeholders", 4)
     cap = 1 << 30
 
-    def out(status, error="", stderr=None, rss=10 << 20, cpu=0.1):
-        return Outcome(run, status, 0.1, rss, error, error if stderr is None else stderr, cpu)
+    def out(status, error="", stderr=None, rss=10 << 20, cpu=0.1, wrote=True):
+        return Outcome(run, status, 0.1, rss, error, error if stderr is None else stderr, cpu,
+                       wrote)
 
     cases = [
         ("read, not listed", out(0), None, True),
         ("read, listed", out(0), listed, False),
+        ("exit 0, nothing written", out(0, wrote=False), None, False),
         ("refused, listed, message matches", out(2, err), listed, True),
         ("refused, not listed", out(2, err), None, False),
         ("refused, listed, another message", out(2, err.replace("......", "x")), listed, False),
