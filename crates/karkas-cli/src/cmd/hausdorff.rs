@@ -55,9 +55,15 @@ pub fn run(args: &HausdorffArgs) -> Result<()> {
         }
     };
     let a_name = a_path.display().to_string();
-    println!("hausdorff {}", h.distance);
-    print_direction("A -> B", &h.forward);
-    print_direction("B -> A", &h.backward);
+    let lines = format!(
+        "hausdorff {}\n{}\n{}\n",
+        h.distance,
+        direction_line("A -> B", &h.forward),
+        direction_line("B -> A", &h.backward)
+    );
+    // Written as one result, an error (a closed pipe) returned rather than a panic.
+    std::io::Write::write_all(&mut std::io::stdout().lock(), lines.as_bytes())
+        .context("cannot write to standard output")?;
     let b_points = b_count.map_or_else(String::new, |n| format!(" ({n} points)"));
     eprintln!(
         "karkas: A = {a_name} ({} points), B = {b_name}{b_points}",
@@ -67,12 +73,12 @@ pub fn run(args: &HausdorffArgs) -> Result<()> {
 }
 
 /// One line: the directed distance, the point where it is attained and its nearest point.
-fn print_direction(label: &str, d: &DirectedDistance) {
+fn direction_line(label: &str, d: &DirectedDistance) -> String {
     let p = |q: &Point3| format!("{},{},{}", q[0], q[1], q[2]);
-    println!(
+    format!(
         "{label} {} at {} nearest {}",
         d.distance,
         p(&d.from),
         p(&d.to)
-    );
+    )
 }

@@ -163,12 +163,19 @@ pub fn run(args: &DemoArgs) -> Result<()> {
     report::write_json(&out.file("report.json"), &outcomes, seconds)?;
     report::write_html(&out.file("index.html"), &outcomes, seconds)?;
     bar.finish_and_clear();
-    print_summary(&outcomes, &args.out, started.elapsed().as_secs_f64());
+    let summary = summary(&outcomes, &args.out, started.elapsed().as_secs_f64());
+    // An error (a closed pipe) is returned rather than a panic.
+    std::io::Write::write_all(&mut std::io::stdout().lock(), summary.as_bytes())
+        .context("cannot write to standard output")?;
     Ok(())
 }
 
-fn print_summary(outcomes: &[ExampleOutcome], out: &Path, seconds: f64) {
-    println!(
+/// The table of findings and the closing line printed after the run.
+fn summary(outcomes: &[ExampleOutcome], out: &Path, seconds: f64) -> String {
+    use std::fmt::Write;
+    let mut text = String::new();
+    let _ = writeln!(
+        text,
         "{:<40} {:<52} {:>11} {:>8} {:>7}",
         "example", "measure", "karkas", "paper", "ratio"
     );
@@ -180,15 +187,18 @@ fn print_summary(outcomes: &[ExampleOutcome], out: &Path, seconds: f64) {
             Some(p) => (format!("{p}"), format!("{:.2}", f.value / p)),
             None => (String::new(), String::new()),
         };
-        println!(
+        let _ = writeln!(
+            text,
             "{:<40} {:<52} {:>11.3e} {:>8} {:>7}",
             f.example, f.measure, f.value, paper, ratio
         );
     }
     let files: usize = outcomes.iter().map(|o| o.files.len()).sum();
-    println!(
+    let _ = writeln!(
+        text,
         "{} examples, {files} files; report: {}; {seconds:.2} s",
         outcomes.len(),
         out.join("index.html").display()
     );
+    text
 }
