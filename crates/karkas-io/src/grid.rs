@@ -16,6 +16,7 @@ use std::path::Path;
 use karkas::{Grid, Point, Point3};
 
 use crate::error::{data_error, IoError};
+use crate::input::excerpt;
 use crate::lines::{
     csv_rows, header_columns, parse_coordinate, read_text, row_location, strip_bom, Row,
 };
@@ -170,7 +171,7 @@ impl GridColumns {
             field(k).parse::<usize>().map_err(|_| {
                 at.error(format!(
                     "'{}' is not a non-negative integer (column {}, '{}')",
-                    field(k),
+                    excerpt(field(k)),
                     self.index[k] + 1,
                     self.names[k]
                 ))

@@ -12,6 +12,7 @@ use std::path::Path;
 use karkas::Grid;
 
 use crate::error::{data_error, IoError};
+use crate::input::excerpt;
 use crate::lines::{csv_rows, header_columns, read_text, row_location, strip_bom};
 
 /// Reads the mask file at `path` for a `rows x cols` grid: `true` for every listed cell.
@@ -42,7 +43,8 @@ pub fn parse_cell_mask(
             let field = &row.fields[k];
             let value: usize = field.parse().map_err(|_| {
                 at.error(format!(
-                    "'{field}' is not a non-negative integer (column {}, '{name}')",
+                    "'{}' is not a non-negative integer (column {}, '{name}')",
+                    excerpt(field),
                     k + 1
                 ))
             })?;

@@ -13,6 +13,7 @@ use std::path::Path;
 use karkas::{Point, Point3};
 
 use crate::error::{data_error, IoError, Location};
+use crate::input::excerpt;
 use crate::lines::{
     csv_rows, header_columns, parse_coordinate, read_text, row_location, strip_bom, Row,
 };
@@ -113,7 +114,7 @@ impl Columns {
         let id = field(0).parse::<usize>().map_err(|_| {
             at.error(format!(
                 "'{}' is not a curve number (a non-negative integer, column {})",
-                field(0),
+                excerpt(field(0)),
                 self.index[0] + 1
             ))
         })?;

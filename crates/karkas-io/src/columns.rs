@@ -1,0 +1,352 @@
+//! Column files of curve points (CSV or whitespace-separated), read in one streaming pass.
+//!
+//! The first content line decides the layout: a header (any field not a number; it must name
+//! `x` and `y`, and `z` makes the points spatial) or the first data row (two columns are
+//! planar points, three spatial ones). Then every line is one of:
+//!
+//! - blank or a `#` comment: skipped;
+//! - a data row: as many fields as the first row, the coordinate columns numbers;
+//! - a damaged row, refused naming its line: its first field is or looks like a number
+//!   ([`looks_numeric`]: `0.5`, `......`, `(0.0022)`), or it has the data's number of fields
+//!   with a number among them;
+//! - otherwise a note: the data end there, and the rest of the file is notes (a source URL,
+//!   a table of properties), ignored, except that a data row after the notes is refused.
+//!
+//! Speed: a plain row (no double quote) is split in place and its coordinates parsed with
+//! the standard library's `f64` parser (Eisel-Lemire, as fast as the `fast-float` crates on
+//! these inputs), with no allocation per row or field; only a row that fails this path is
+//! split into owned fields to be classified or reported. Memory: the points themselves
+//! ([`crate::store`]), one line, and nothing per skipped line except its bytes counted
+//! against the memory cap (so an endless stream of comments or notes ends too).
+
+use std::io::BufRead;
+use std::path::Path;
+
+use crate::error::{data_error, IoError, Location};
+use crate::input::{check_held, excerpt};
+use crate::lines::{
+    first_token, is_number, looks_numeric, parse_coordinate, split_fields, strip_comment,
+    LineReader,
+};
+use crate::store::{Growth, Store};
+
+/// Which fields of a row hold x, y and (for spatial points) z, 0-based.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct Columns {
+    /// The field of x.
+    pub x: usize,
+    /// The field of y.
+    pub y: usize,
+    /// The field of z, for spatial points.
+    pub z: Option<usize>,
+}
+
+impl Columns {
+    /// The columns named `x`, `y` and optionally `z` (case-insensitive) in a header; `None`
+    /// unless both `x` and `y` are there.
+    pub fn from_header(fields: &[String]) -> Option<Columns> {
+        let find = |name: &str| fields.iter().position(|f| f.eq_ignore_ascii_case(name));
+        Some(Columns {
+            x: find("x")?,
+            y: find("y")?,
+            z: find("z"),
+        })
+    }
+}
+
+/// The points of a column file, planar or spatial, in the stores `A` and `B`.
+pub(crate) enum Either<A, B> {
+    /// Two coordinates per point.
+    Planar(A),
+    /// Three coordinates per point.
+    Spatial(B),
+}
+
+/// How the rows of a column file are laid out, as its first content line says.
+pub(crate) struct Layout {
+    /// Fields split at commas (else at whitespace).
+    pub csv: bool,
+    /// The number of fields of every data row.
+    pub width: usize,
+    /// Where the coordinates are.
+    pub columns: Columns,
+    /// The first data row (its line and content), when the first line was not a header.
+    pub first_row: Option<(usize, String)>,
+}
+
+impl Layout {
+    /// The layout given by the first content line `content` (line `line`) of `name`.
+    pub fn from_first_line(content: &str, line: usize, name: &Path) -> Result<Layout, IoError> {
+        let at = Location::new(name, line);
+        let csv = content.contains(',');
+        let fields = split_fields(content, csv, at)?;
+        let width = fields.len();
+        if !fields.iter().all(|f| is_number(f)) {
+            let columns = Columns::from_header(&fields).ok_or_else(|| {
+                at.error(format!(
+                    "the header '{}' names no 'x' and 'y' columns",
+                    excerpt(&fields.join(","))
+                ))
+            })?;
+            if let Some(name) = duplicated_name(&fields) {
+                return Err(at.error(format!("the header names column '{name}' twice")));
+            }
+            return Ok(Layout {
+                csv,
+                width,
+                columns,
+                first_row: None,
+            });
+        }
+        let z = match width {
+            2 => None,
+            3 => Some(2),
+            n => {
+                return Err(at.error(format!(
+                    "expected 2 columns (x y) or 3 columns (x y z), found {n}"
+                )))
+            }
+        };
+        Ok(Layout {
+            csv,
+            width,
+            columns: Columns { x: 0, y: 1, z },
+            first_row: Some((line, content.to_owned())),
+        })
+    }
+}
+
+/// Reads the rest of a column file in `layout` from `lines` into the store for its
+/// dimension; `size` is the input's size when known (see [`Growth`]).
+pub(crate) fn read_columns<R: BufRead, A: Store<2>, B: Store<3>>(
+    lines: &mut LineReader<'_, R>,
+    layout: Layout,
+    size: Option<u64>,
+) -> Result<Either<A, B>, IoError> {
+    let Columns { x, y, z } = layout.columns;
+    Ok(match z {
+        None => Either::Planar(collect(lines, &layout, [x, y], size)?),
+        Some(z) => Either::Spatial(collect(lines, &layout, [x, y, z], size)?),
+    })
+}
+
+/// What a line that is not a plain data row turned out to be.
+enum Slow<const D: usize> {
+    /// Nothing (all fields empty): skipped.
+    Blank,
+    /// A data row after all.
+    Point([f64; D]),
+    /// The first note.
+    Note,
+}
+
+/// The points of the data rows, coordinate `k` from field `columns[k]`.
+fn collect<R: BufRead, const D: usize, S: Store<D>>(
+    lines: &mut LineReader<'_, R>,
+    layout: &Layout,
+    columns: [usize; D],
+    size: Option<u64>,
+) -> Result<S, IoError> {
+    let name = lines.name();
+    let growth = Growth { size };
+    // slot[k]: which coordinate field k holds, or D for none.
+    let mut slot = vec![D; layout.width];
+    for (c, &k) in columns.iter().enumerate() {
+        slot[k] = c;
+    }
+    let mut store = S::default();
+    let push = |store: &mut S, p: [f64; D], consumed: u64| -> Result<(), IoError> {
+        if store.len() == store.capacity() {
+            growth.grow(store, consumed, name)?;
+        }
+        store.push(p);
+        Ok(())
+    };
+    if let Some((line, content)) = &layout.first_row {
+        let p = slow_row(content, *line, layout, &slot, name)?;
+        if let Slow::Point(p) = p {
+            push(&mut store, p, lines.consumed())?;
+        }
+    }
+    let mut skipped: u128 = 0;
+    let mut notes: Option<(usize, String)> = None;
+    while let Some((line, text)) = lines.next_line()? {
+        let content = strip_comment(text).trim();
+        if content.is_empty() {
+            skipped += text.len() as u128 + 1;
+            if skipped > 1 << 16 {
+                check_held(name, skipped + held_bytes::<D, S>(&store))?;
+            }
+            continue;
+        }
+        if notes.is_none() {
+            if let Some(p) = fast_row(content, layout, &slot) {
+                let consumed = lines.consumed();
+                push(&mut store, p, consumed)?;
+                continue;
+            }
+        }
+        let at = Location::new(name, line);
+        match (&notes, slow_row(content, line, layout, &slot, name)?) {
+            (_, Slow::Blank) => {}
+            (None, Slow::Point(p)) => {
+                let consumed = lines.consumed();
+                push(&mut store, p, consumed)?;
+            }
+            (None, Slow::Note) => notes = Some((line, excerpt(content))),
+            (Some((first, note)), Slow::Point(_)) => {
+                return Err(at.error(format!(
+                    "a data row after the notes that begin on line {first} ('{note}'): notes \
+                     may only follow the data (remove them or start them with '#')"
+                )))
+            }
+            (Some(_), Slow::Note) => {
+                skipped += text.len() as u128 + 1;
+                check_held(name, skipped + held_bytes::<D, S>(&store))?;
+            }
+        }
+    }
+    if store.len() == 0 {
+        return Err(data_error(name, "no points found"));
+    }
+    Ok(store)
+}
+
+/// The bytes the points of `store` take.
+fn held_bytes<const D: usize, S: Store<D>>(store: &S) -> u128 {
+    (store.len() * D * std::mem::size_of::<f64>()) as u128
+}
+
+/// The point of a plain data row: `layout.width` fields split at commas or whitespace (no
+/// double quote), its coordinate fields finite numbers; `None` for anything else.
+#[inline]
+fn fast_row<const D: usize>(content: &str, layout: &Layout, slot: &[usize]) -> Option<[f64; D]> {
+    let mut p = [0.0; D];
+    let mut count = 0;
+    let mut take = |field: &str| -> Option<()> {
+        let s = *slot.get(count)?;
+        count += 1;
+        if s < D {
+            let v: f64 = field.parse().ok()?;
+            if !v.is_finite() {
+                return None;
+            }
+            p[s] = v;
+        }
+        Some(())
+    };
+    if layout.csv {
+        if content.contains('"') {
+            return None;
+        }
+        for field in content.split(',') {
+            take(field.trim_ascii())?;
+        }
+    } else {
+        for field in content.split_ascii_whitespace() {
+            take(field)?;
+        }
+    }
+    (count == layout.width).then_some(p)
+}
+
+/// Classifies a line that is not a plain data row (see the [module docs](self)): a point, a
+/// note, nothing, or the error of a damaged row.
+fn slow_row<const D: usize>(
+    content: &str,
+    line: usize,
+    layout: &Layout,
+    slot: &[usize],
+    name: &Path,
+) -> Result<Slow<D>, IoError> {
+    let at = Location::new(name, line);
+    let fields = split_fields(content, layout.csv, at)?;
+    if fields.iter().all(String::is_empty) {
+        return Ok(Slow::Blank);
+    }
+    let width = layout.width;
+    let shaped = fields.len() == width;
+    let numeric_first = first_token(content).is_some_and(looks_numeric);
+    let note = !numeric_first && !(shaped && fields.iter().any(|f| is_number(f)));
+    let is_row = shaped
+        && fields
+            .iter()
+            .zip(slot)
+            .all(|(f, &s)| s == D || is_number(f));
+    if note && !is_row {
+        return Ok(Slow::Note);
+    }
+    if !shaped {
+        return Err(at.error(format!("expected {width} fields, found {}", fields.len())));
+    }
+    let mut p = [0.0; D];
+    for (k, (field, &s)) in fields.iter().zip(slot).enumerate() {
+        if s < D {
+            p[s] = parse_coordinate(field, k + 1, at)?;
+        }
+    }
+    Ok(Slow::Point(p))
+}
+
+/// A coordinate column name (`x`, `y`, `z`) that a header gives twice, if any.
+fn duplicated_name(fields: &[String]) -> Option<&'static str> {
+    ["x", "y", "z"].into_iter().find(|name| {
+        fields
+            .iter()
+            .filter(|f| f.eq_ignore_ascii_case(name))
+            .count()
+            > 1
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn header_columns_are_found_by_name() {
+        let h = |s: &str| s.split(',').map(str::to_owned).collect::<Vec<_>>();
+        assert_eq!(
+            Columns::from_header(&h("t,X,y")),
+            Some(Columns {
+                x: 1,
+                y: 2,
+                z: None
+            })
+        );
+        assert_eq!(
+            Columns::from_header(&h("z,y,x")),
+            Some(Columns {
+                x: 2,
+                y: 1,
+                z: Some(0)
+            })
+        );
+        assert_eq!(Columns::from_header(&h("a,b")), None);
+        assert_eq!(duplicated_name(&h("x,y,x")), Some("x"));
+    }
+
+    #[test]
+    fn plain_rows_take_the_fast_path() {
+        let layout = Layout {
+            csv: true,
+            width: 3,
+            columns: Columns {
+                x: 1,
+                y: 2,
+                z: None,
+            },
+            first_row: None,
+        };
+        let slot = [2, 0, 1];
+        assert_eq!(
+            fast_row::<2>("7, 1.5 ,-2e3", &layout, &slot),
+            Some([1.5, -2e3])
+        );
+        assert_eq!(fast_row::<2>("a,1,2", &layout, &slot), Some([1.0, 2.0]));
+        assert_eq!(fast_row::<2>("1,2", &layout, &slot), None);
+        assert_eq!(fast_row::<2>("1,2,3,4", &layout, &slot), None);
+        assert_eq!(fast_row::<2>("1,nan,3", &layout, &slot), None);
+        assert_eq!(fast_row::<2>("\"1\",2,3", &layout, &slot), None);
+    }
+}
