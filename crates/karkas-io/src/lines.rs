@@ -90,18 +90,26 @@ pub(crate) fn csv_rows(text: &str, path: &Path) -> Result<Vec<Row>, IoError> {
     Ok(rows)
 }
 
-/// A reader of the lines of one input in one pass, each line read into a reused buffer with
-/// the bounds of [`crate::input`] (at most 1 MiB, no NUL byte, UTF-8): memory is one line,
-/// whatever the length of the input.
+/// A reader of the lines of one input in one pass, with the bounds of [`crate::input`] (at
+/// most 1 MiB, no NUL byte, UTF-8): memory is one line, whatever the length of the input.
 ///
 /// Lines are returned without their end of line (`\n` or `\r\n`), a byte-order mark at the
 /// start of the first line removed, with their 1-based physical number.
+///
+/// Speed: a line that lies whole in the reader's buffer is handed out in place
+/// ([`LineReader::next_raw`]), found with `memchr`, not copied; a reader that can check its
+/// bytes itself (a number parser accepts only ASCII) skips the NUL and UTF-8 checks for the
+/// lines it accepts and calls [`check_line`] on the others. Other lines (across the
+/// buffer's end) are read with [`read_line_bytes`].
 pub(crate) struct LineReader<'p, R> {
     reader: R,
     name: &'p Path,
     bytes: Vec<u8>,
     line: usize,
     consumed: u64,
+    /// Bytes of the current line still to be consumed from `reader` (a line handed out in
+    /// place).
+    pending: usize,
 }
 
 impl<'p, R: std::io::BufRead> LineReader<'p, R> {
@@ -113,6 +121,7 @@ impl<'p, R: std::io::BufRead> LineReader<'p, R> {
             bytes: Vec::new(),
             line: 0,
             consumed: 0,
+            pending: 0,
         }
     }
 
@@ -126,25 +135,64 @@ impl<'p, R: std::io::BufRead> LineReader<'p, R> {
         self.consumed
     }
 
-    /// The next line and its 1-based number; `None` at the end of the input.
-    pub fn next_line(&mut self) -> Result<Option<(usize, &str)>, IoError> {
-        if !read_line_bytes(&mut self.reader, self.name, &mut self.bytes, self.line + 1)? {
+    /// The next line as bytes, end of line included, NUL bytes and UTF-8 not yet checked
+    /// (see [`check_line`]), and its 1-based number; `None` at the end of the input.
+    pub fn next_raw(&mut self) -> Result<Option<(usize, &[u8])>, IoError> {
+        if self.pending > 0 {
+            self.reader.consume(self.pending);
+            self.pending = 0;
+        }
+        let line = self.line + 1;
+        let in_place = loop {
+            match self.reader.fill_buf() {
+                Ok(buf) => break memchr::memchr(b'\n', buf).map(|k| k + 1),
+                Err(e) if e.kind() == std::io::ErrorKind::Interrupted => continue,
+                Err(e) => return Err(IoError::open(self.name)(e)),
+            }
+        };
+        if let Some(len) = in_place {
+            self.line = line;
+            self.consumed += len as u64;
+            self.pending = len;
+            let buf = self.reader.fill_buf().map_err(IoError::open(self.name))?;
+            return Ok(Some((line, &buf[..len])));
+        }
+        if !read_line_bytes(&mut self.reader, self.name, &mut self.bytes, line)? {
             return Ok(None);
         }
-        self.line += 1;
+        self.line = line;
         self.consumed += self.bytes.len() as u64;
-        let Ok(text) = std::str::from_utf8(&self.bytes) else {
-            return Err(Location::new(self.name, self.line).error(not_utf8_message()));
-        };
-        let text = text.strip_suffix('\n').unwrap_or(text);
-        let text = text.strip_suffix('\r').unwrap_or(text);
-        let text = if self.line == 1 {
-            strip_bom(text)
-        } else {
-            text
-        };
-        Ok(Some((self.line, text)))
+        Ok(Some((line, &self.bytes)))
     }
+
+    /// The next line and its 1-based number; `None` at the end of the input.
+    pub fn next_line(&mut self) -> Result<Option<(usize, &str)>, IoError> {
+        let name = self.name;
+        let Some((line, bytes)) = self.next_raw()? else {
+            return Ok(None);
+        };
+        Ok(Some((line, check_line(name, line, bytes)?)))
+    }
+}
+
+/// Line `line`'s `bytes` (from [`LineReader::next_raw`]) of the input `name` as text without
+/// its end of line, or the error of a line holding a NUL byte or not UTF-8. The byte-order
+/// mark of line 1 is removed.
+pub(crate) fn check_line<'b>(
+    name: &Path,
+    line: usize,
+    bytes: &'b [u8],
+) -> Result<&'b str, IoError> {
+    let at = Location::new(name, line);
+    if memchr::memchr(0, bytes).is_some() {
+        return Err(at.error("binary data (a NUL byte): expected a text file, one line per record"));
+    }
+    let Ok(text) = std::str::from_utf8(bytes) else {
+        return Err(at.error(not_utf8_message()));
+    };
+    let text = text.strip_suffix('\n').unwrap_or(text);
+    let text = text.strip_suffix('\r').unwrap_or(text);
+    Ok(if line == 1 { strip_bom(text) } else { text })
 }
 
 /// The fields of a line's `content` (comment already stripped): split at commas (`csv`,
