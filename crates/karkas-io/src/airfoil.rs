@@ -11,8 +11,8 @@
 //! - the first line that is neither blank nor starts with `#` is the name, taken whole
 //!   (commas, `#` and all);
 //! - further text lines before the first pair are skipped (a second title, a source), and so
-//!   is a line of exactly four numbers right after the name (the domain line of MSES and
-//!   TASOPT files, `xmin xmax ymin ymax`);
+//!   is one line of exactly four numbers (the domain line of MSES and TASOPT files,
+//!   `xmin xmax ymin ymax`, right after the name);
 //! - the data are the pairs `x y` that follow (whitespace-separated; `#` starts a comment),
 //!   blank lines between them allowed;
 //! - the data end at the first line that is not a pair: that line and the rest of the file
@@ -40,9 +40,10 @@ use std::path::Path;
 use karkas::{Point, Point2};
 
 use crate::error::{data_error, IoError, Location};
-use crate::input::{check_held, excerpt};
+use crate::input::excerpt;
 use crate::lines::{
-    first_token, is_number, looks_numeric, parse_coordinate, strip_comment, LineReader,
+    check_held_at, first_token, is_number, looks_numeric, parse_coordinate, strip_comment,
+    LineReader,
 };
 
 /// An airfoil read from a `.dat` file.
@@ -76,7 +77,7 @@ pub(crate) fn read_airfoil_lines<R: BufRead>(
         reader.feed(line, text)?;
         if line % 4096 == 0 {
             // Skipped lines are charged too, so that endless notes end.
-            check_held(lines.name(), u128::from(lines.consumed()))?;
+            check_held_at(lines.name(), line, u128::from(lines.consumed()))?;
         }
     }
     reader.finish()
@@ -87,8 +88,7 @@ pub(crate) fn read_airfoil_lines<R: BufRead>(
 enum Stage {
     /// Before the name line.
     Name,
-    /// After the name, before the first pair; `true` until a content line has been seen (the
-    /// place of a domain line).
+    /// After the name, before the first pair; `true` until a domain line has been skipped.
     Preamble(bool),
     /// Among the pairs.
     Data,
@@ -146,16 +146,16 @@ impl<'p> AirfoilReader<'p> {
         let pair = fields.len() == 2 && fields.iter().all(|f| is_number(f));
         match &self.stage {
             Stage::Name => {}
-            Stage::Preamble(first) => {
-                let first = *first;
-                self.stage = Stage::Preamble(false);
+            Stage::Preamble(domain_allowed) => {
                 if pair {
                     self.first_pair_line = line;
                     self.stage = Stage::Data;
                     return self.push(&fields, at);
                 }
-                let domain = first && fields.len() == 4 && fields.iter().all(|f| is_number(f));
-                if !domain && first_token(content).is_some_and(looks_numeric) {
+                let domain = fields.len() == 4 && fields.iter().all(|f| is_number(f));
+                if domain && *domain_allowed {
+                    self.stage = Stage::Preamble(false);
+                } else if first_token(content).is_some_and(looks_numeric) {
                     return Err(pair_error(&fields, at));
                 }
             }
@@ -193,7 +193,7 @@ impl<'p> AirfoilReader<'p> {
         }
         self.points.push(p);
         if self.points.len() % (1 << 16) == 0 {
-            check_held(self.path, (self.points.len() * 16) as u128)?;
+            check_held_at(self.path, at.line, (self.points.len() * 16) as u128)?;
         }
         Ok(())
     }

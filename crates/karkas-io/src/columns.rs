@@ -23,10 +23,10 @@ use std::io::BufRead;
 use std::path::Path;
 
 use crate::error::{data_error, IoError, Location};
-use crate::input::{check_held, excerpt};
+use crate::input::excerpt;
 use crate::lines::{
-    check_line, first_token, is_number, looks_numeric, parse_coordinate, split_fields,
-    strip_comment, LineReader,
+    check_held_at, check_line, first_token, is_number, looks_numeric, parse_coordinate,
+    split_fields, strip_comment, LineReader,
 };
 use crate::store::{Growth, Store};
 
@@ -155,9 +155,9 @@ fn collect<R: BufRead, const D: usize, S: Store<D>>(
         slot[k] = c;
     }
     let mut store = S::default();
-    let push = |store: &mut S, p: [f64; D], consumed: u64| -> Result<(), IoError> {
+    let push = |store: &mut S, p: [f64; D], consumed: u64, line: usize| -> Result<(), IoError> {
         if store.len() == store.capacity() {
-            growth.grow(store, consumed, name)?;
+            growth.grow(store, consumed, Location::new(name, line))?;
         }
         store.push(p);
         Ok(())
@@ -165,7 +165,7 @@ fn collect<R: BufRead, const D: usize, S: Store<D>>(
     if let Some((line, content)) = &layout.first_row {
         let p = slow_row(content, *line, layout, &slot, name)?;
         if let Slow::Point(p) = p {
-            push(&mut store, p, lines.consumed())?;
+            push(&mut store, p, lines.consumed(), *line)?;
         }
     }
     let mut skipped: u128 = 0;
@@ -177,7 +177,7 @@ fn collect<R: BufRead, const D: usize, S: Store<D>>(
         };
         if notes.is_none() {
             if let Some(p) = fast_row(bytes, layout, &slot) {
-                push(&mut store, p, consumed + bytes.len() as u64)?;
+                push(&mut store, p, consumed + bytes.len() as u64, line)?;
                 continue;
             }
         }
@@ -186,14 +186,14 @@ fn collect<R: BufRead, const D: usize, S: Store<D>>(
         if content.is_empty() {
             skipped += text.len() as u128 + 1;
             if skipped > 1 << 16 {
-                check_held(name, skipped + held_bytes::<D, S>(&store))?;
+                check_held_at(name, line, skipped + held_bytes::<D, S>(&store))?;
             }
             continue;
         }
         let at = Location::new(name, line);
         match (&notes, slow_row(content, line, layout, &slot, name)?) {
             (_, Slow::Blank) => {}
-            (None, Slow::Point(p)) => push(&mut store, p, consumed + bytes.len() as u64)?,
+            (None, Slow::Point(p)) => push(&mut store, p, consumed + bytes.len() as u64, line)?,
             (None, Slow::Note) => notes = Some((line, excerpt(content))),
             (Some((first, note)), Slow::Point(_)) => {
                 return Err(at.error(format!(
@@ -203,7 +203,7 @@ fn collect<R: BufRead, const D: usize, S: Store<D>>(
             }
             (Some(_), Slow::Note) => {
                 skipped += text.len() as u128 + 1;
-                check_held(name, skipped + held_bytes::<D, S>(&store))?;
+                check_held_at(name, line, skipped + held_bytes::<D, S>(&store))?;
             }
         }
     }
@@ -401,13 +401,42 @@ mod tests {
     #[test]
     fn the_fast_parser_accepts_what_the_standard_one_does() {
         let fields = [
-            "1", "-1.5", "+2", "1e5", "1E-5", ".5", "5.", "1e", "e5", "--1", "+-1", "1.2.3", "0x10",
-            "1_0", " 1", "1 ", "", ".", "-", "1e+", "1e400", "1e-400", "00012", "1d5", "١",
-            "0.30000000000000004", "123456789012345678901234567890", "inf", "NaN", "1,5",
+            "1",
+            "-1.5",
+            "+2",
+            "1e5",
+            "1E-5",
+            ".5",
+            "5.",
+            "1e",
+            "e5",
+            "--1",
+            "+-1",
+            "1.2.3",
+            "0x10",
+            "1_0",
+            " 1",
+            "1 ",
+            "",
+            ".",
+            "-",
+            "1e+",
+            "1e400",
+            "1e-400",
+            "00012",
+            "1d5",
+            "١",
+            "0.30000000000000004",
+            "123456789012345678901234567890",
+            "inf",
+            "NaN",
+            "1,5",
         ];
         for f in fields {
             let std = f.parse::<f64>().ok().filter(|v| v.is_finite());
-            let fast = fast_float2::parse::<f64, _>(f.as_bytes()).ok().filter(|v| v.is_finite());
+            let fast = fast_float2::parse::<f64, _>(f.as_bytes())
+                .ok()
+                .filter(|v| v.is_finite());
             assert_eq!(std, fast, "{f:?}");
         }
     }

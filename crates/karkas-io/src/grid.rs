@@ -16,6 +16,7 @@ use std::path::Path;
 use karkas::{Grid, Point, Point3};
 
 use crate::error::{data_error, IoError};
+use crate::input::display_name;
 use crate::input::excerpt;
 use crate::lines::{
     csv_rows, header_columns, parse_coordinate, read_text, row_location, strip_bom, Row,
@@ -46,9 +47,9 @@ const GRID: IndexedLayout = IndexedLayout {
     },
 };
 
-/// Reads the surface frame of the grid CSV file at `path`.
+/// Reads the surface frame of the grid CSV file at `path` (`-`: standard input).
 pub fn read_grid(path: &Path) -> Result<Grid<Point3>, IoError> {
-    parse_grid(&read_text(path)?, path)
+    parse_grid(&read_text(path)?, &display_name(path))
 }
 
 /// Reads a surface frame from grid CSV `text` already in memory; `path` names the file in

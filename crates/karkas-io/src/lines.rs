@@ -195,6 +195,15 @@ pub(crate) fn check_line<'b>(
     Ok(if line == 1 { strip_bom(text) } else { text })
 }
 
+/// [`crate::input::check_held`] for a reader at line `line` of `name`: the cap's error names
+/// the line where the input outgrew it.
+pub(crate) fn check_held_at(name: &Path, line: usize, bytes: u128) -> Result<(), IoError> {
+    crate::input::check_held(name, bytes).map_err(|e| match e {
+        IoError::Data { message, .. } => Location::new(name, line).error(message),
+        other => other,
+    })
+}
+
 /// The fields of a line's `content` (comment already stripped): split at commas (`csv`,
 /// trimmed; a line with a double quote is read with the `csv` crate, so quoted fields work as
 /// in [`csv_rows`]) or at whitespace. `at` locates a malformed quoted line.

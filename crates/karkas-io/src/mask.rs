@@ -12,12 +12,14 @@ use std::path::Path;
 use karkas::Grid;
 
 use crate::error::{data_error, IoError};
+use crate::input::display_name;
 use crate::input::excerpt;
 use crate::lines::{csv_rows, header_columns, read_text, row_location, strip_bom};
 
-/// Reads the mask file at `path` for a `rows x cols` grid: `true` for every listed cell.
+/// Reads the mask file at `path` (`-`: standard input) for a `rows x cols` grid: `true` for
+/// every listed cell.
 pub fn read_cell_mask(path: &Path, rows: usize, cols: usize) -> Result<Grid<bool>, IoError> {
-    parse_cell_mask(&read_text(path)?, path, rows, cols)
+    parse_cell_mask(&read_text(path)?, &display_name(path), rows, cols)
 }
 
 /// Reads a cell mask from `text` already in memory; `path` names the file in messages.

@@ -30,7 +30,9 @@ use crate::airfoil::AirfoilReader;
 use crate::columns::{read_columns, Either, Layout};
 use crate::error::{IoError, Location};
 use crate::input::{display_name, excerpt, Input};
-use crate::lines::{first_token, is_number, looks_numeric, strip_comment, LineReader};
+use crate::lines::{
+    check_held_at, first_token, is_number, looks_numeric, strip_comment, LineReader,
+};
 use crate::store::{input_size, Flat, Store};
 
 /// An ordered list of curve points, planar or spatial as the file says.
@@ -120,6 +122,10 @@ fn read_any<R: BufRead, A: Store<2>, B: Store<3>>(
         if !content.is_empty() {
             break (line, content.to_owned(), text.trim().to_owned());
         }
+        if line % 4096 == 0 {
+            // Skipped lines count against the cap, so that an endless stream of them ends.
+            check_held_at(name, line, u128::from(lines.consumed()))?;
+        }
     };
     let (line, content, whole) = first;
     if !first_line_is_a_name(&content) {
@@ -148,7 +154,7 @@ fn read_any<R: BufRead, A: Store<2>, B: Store<3>>(
         }
         airfoil.feed(next, text)?;
         if next % 4096 == 0 {
-            crate::input::check_held(name, u128::from(lines.consumed()))?;
+            check_held_at(name, next, u128::from(lines.consumed()))?;
         }
     }
     let points = airfoil.finish()?.points;

@@ -19,7 +19,9 @@ use std::path::Path;
 use karkas::Point;
 
 use crate::error::IoError;
-use crate::input::{check_held, max_input_bytes};
+use crate::error::Location;
+use crate::input::max_input_bytes;
+use crate::lines::check_held_at;
 
 /// A growable list of points of dimension `D`.
 pub(crate) trait Store<const D: usize>: Default {
@@ -77,16 +79,16 @@ pub(crate) struct Growth {
 impl Growth {
     /// Makes room for at least one more point in `store` of dimension `D`, given that
     /// `consumed` bytes of the input are read; fails when the points would exceed the memory
-    /// cap. Call it when the store is full.
+    /// cap, naming the place `at`. Call it when the store is full.
     pub fn grow<const D: usize, S: Store<D>>(
         &self,
         store: &mut S,
         consumed: u64,
-        name: &Path,
+        at: Location<'_>,
     ) -> Result<(), IoError> {
         let len = store.len();
         let point_bytes = (D * std::mem::size_of::<f64>()) as u128;
-        check_held(name, (len as u128 + 1) * point_bytes)?;
+        check_held_at(at.path, at.line, (len as u128 + 1) * point_bytes)?;
         let limit =
             usize::try_from(u128::from(max_input_bytes()) / point_bytes + 1).unwrap_or(usize::MAX);
         let estimate = match self.size {
@@ -131,17 +133,21 @@ mod tests {
         let growth = Growth {
             size: Some(100_000),
         };
-        growth.grow(&mut points, 0, Path::new("p")).unwrap();
+        growth
+            .grow(&mut points, 0, Location::new(Path::new("p"), 1))
+            .unwrap();
         assert_eq!(points.capacity(), 1024);
         for _ in 0..1024 {
             Store::push(&mut points, [0.0, 0.0]);
         }
         // 1024 points in 10 000 bytes: 10 240 in the whole input, 3 % more reserved.
-        growth.grow(&mut points, 10_000, Path::new("p")).unwrap();
+        growth
+            .grow(&mut points, 10_000, Location::new(Path::new("p"), 1))
+            .unwrap();
         assert_eq!(points.capacity(), 10_563);
         let mut flat = Flat::default();
         Growth { size: None }
-            .grow::<3, _>(&mut flat, 0, Path::new("p"))
+            .grow::<3, _>(&mut flat, 0, Location::new(Path::new("p"), 1))
             .unwrap();
         assert_eq!(Store::<3>::capacity(&flat), 1024);
     }

@@ -17,10 +17,12 @@ use crate::output::surface::write_surface;
 use anyhow::{bail, Context, Result};
 use clap::Args;
 use karkas::{Grid, Point3};
+use karkas_io::grid::parse_grid;
+use karkas_io::input::{display_name, read_text};
 use karkas_io::mesh::TriangleMesh;
 use karkas_io::mesh::{read_mesh, write_mesh, MeshOptions};
-use karkas_io::points::{read_curve_points, CurvePoints};
-use karkas_io::samples::read_surface_samples;
+use karkas_io::points::{parse_curve_points, CurvePoints};
+use karkas_io::samples::parse_surface_samples;
 use karkas_io::svg::CurveOverlay;
 use karkas_io::viewer::{write_viewer_html, ViewerMesh, ViewerScene};
 use karkas_io::write::write_grid_csv;
@@ -150,7 +152,8 @@ fn write_any_mesh(
     Ok(())
 }
 
-/// Reads `path` as a mesh, a grid or a curve (see the module docs).
+/// Reads `path` as a mesh, a grid or a curve (see the module docs). A text input (`-`:
+/// standard input) is read once: its header decides which reader parses the text.
 fn read_input(path: &Path) -> Result<Input> {
     let ext = path
         .extension()
@@ -159,25 +162,25 @@ fn read_input(path: &Path) -> Result<Input> {
     if matches!(ext.as_deref(), Some("obj" | "stl" | "ply")) {
         return Ok(Input::Mesh(read_mesh(path)?));
     }
-    match csv_header(path).as_deref() {
+    let text = read_text(path)?;
+    let name = display_name(path);
+    match csv_header(&text).as_deref() {
         Some(h) if h.contains(&"i".to_owned()) && h.contains(&"j".to_owned()) => {
-            Ok(Input::Grid(karkas_io::grid::read_grid(path)?, true))
+            Ok(Input::Grid(parse_grid(&text, &name)?, true))
         }
         Some(h) if h.contains(&"u".to_owned()) && h.contains(&"v".to_owned()) => {
-            Ok(Input::Grid(read_surface_samples(path)?, false))
+            Ok(Input::Grid(parse_surface_samples(&text, &name)?, false))
         }
-        _ => Ok(match read_curve_points(path)? {
+        _ => Ok(match parse_curve_points(&text, &name)? {
             CurvePoints::Planar(points) => Input::Curve(to_space(&points), true),
             CurvePoints::Spatial(points) => Input::Curve(points, false),
         }),
     }
 }
 
-/// The lower-case fields of the first content line of a CSV file with a header (a line with
-/// a field that is not a number); `None` when there is none or the file cannot be read (the
-/// reader that follows reports that).
-fn csv_header(path: &Path) -> Option<Vec<String>> {
-    let text = std::fs::read_to_string(path).ok()?;
+/// The lower-case fields of the first content line of CSV `text` with a header (a line with
+/// a field that is not a number); `None` when there is none.
+fn csv_header(text: &str) -> Option<Vec<String>> {
     let line = text
         .trim_start_matches('\u{feff}')
         .lines()
