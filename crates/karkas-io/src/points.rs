@@ -141,9 +141,9 @@ fn read_any<R: BufRead, A: Store<2>, B: Store<3>>(
     let mut decided = is_dat;
     while let Some((next, text)) = lines.next_line()? {
         if !decided {
-            let content = strip_comment(text).trim();
-            if first_token(content).is_some_and(looks_numeric) {
-                if content.contains(',') {
+            let row = strip_comment(text).trim();
+            if first_token(row).is_some_and(looks_numeric) {
+                if row.contains(',') {
                     return Err(Location::new(name, line).error(format!(
                         "the header '{}' names no 'x' and 'y' columns",
                         excerpt(&content)

@@ -8,6 +8,7 @@ mod mesh;
 mod network;
 mod obj;
 mod points;
+mod reading;
 mod robustness;
 mod skeleton;
 mod stl;
