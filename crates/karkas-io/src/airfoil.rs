@@ -75,7 +75,7 @@ pub(crate) fn read_airfoil_lines<R: BufRead>(
     let mut reader = AirfoilReader::new(lines.name());
     while let Some((line, text)) = lines.next_line()? {
         reader.feed(line, text)?;
-        if line % 4096 == 0 {
+        if line.is_multiple_of(4096) {
             // Skipped lines are charged too, so that endless notes end.
             check_held_at(lines.name(), line, u128::from(lines.consumed()))?;
         }
@@ -192,7 +192,7 @@ impl<'p> AirfoilReader<'p> {
             }
         }
         self.points.push(p);
-        if self.points.len() % (1 << 16) == 0 {
+        if self.points.len().is_multiple_of(1 << 16) {
             check_held_at(self.path, at.line, (self.points.len() * 16) as u128)?;
         }
         Ok(())

@@ -299,7 +299,7 @@ fn slow_row<const D: usize>(
     let width = layout.width;
     let shaped = fields.len() == width;
     let numeric_first = first_token(content).is_some_and(looks_numeric);
-    let note = !numeric_first && !(shaped && fields.iter().any(|f| is_number(f)));
+    let note = !(numeric_first || (shaped && fields.iter().any(|f| is_number(f))));
     let is_row = shaped
         && fields
             .iter()

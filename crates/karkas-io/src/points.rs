@@ -122,7 +122,7 @@ fn read_any<R: BufRead, A: Store<2>, B: Store<3>>(
         if !content.is_empty() {
             break (line, content.to_owned(), text.trim().to_owned());
         }
-        if line % 4096 == 0 {
+        if line.is_multiple_of(4096) {
             // Skipped lines count against the cap, so that an endless stream of them ends.
             check_held_at(name, line, u128::from(lines.consumed()))?;
         }
@@ -153,7 +153,7 @@ fn read_any<R: BufRead, A: Store<2>, B: Store<3>>(
             }
         }
         airfoil.feed(next, text)?;
-        if next % 4096 == 0 {
+        if next.is_multiple_of(4096) {
             check_held_at(name, next, u128::from(lines.consumed()))?;
         }
     }

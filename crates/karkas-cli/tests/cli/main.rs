@@ -11,6 +11,7 @@ mod demo_report;
 mod dps;
 mod export;
 mod hausdorff;
+mod reading;
 mod section;
 mod surface_bicubic;
 mod surface_coons;
