@@ -23,7 +23,7 @@ use std::io::BufRead;
 use std::path::Path;
 
 use crate::error::{data_error, IoError, Location};
-use crate::input::excerpt;
+use crate::input::{excerpt, MAX_LINE_BYTES};
 use crate::lines::{
     check_held_at, check_line, first_token, is_number, looks_numeric, parse_coordinate,
     split_fields, strip_comment, LineReader,
@@ -170,40 +170,58 @@ fn collect<R: BufRead, const D: usize, S: Store<D>>(
     }
     let mut skipped: u128 = 0;
     let mut notes: Option<(usize, String)> = None;
-    loop {
+    let mut block = Vec::new();
+    let mut line = lines.line();
+    while lines.read_block(&mut block, BLOCK_BYTES, line + 1)? {
         let consumed = lines.consumed();
-        let Some((line, bytes)) = lines.next_raw()? else {
-            break;
-        };
         if notes.is_none() {
-            if let Some(p) = fast_row(bytes, layout, &slot) {
-                push(&mut store, p, consumed + bytes.len() as u64, line)?;
+            if let Some(halves) = fast_block::<D>(&block, layout, &slot) {
+                for p in halves.into_iter().flatten() {
+                    line += 1;
+                    push(&mut store, p, consumed, line)?;
+                }
                 continue;
             }
         }
-        let text = check_line(name, line, bytes)?;
-        let content = strip_comment(text).trim();
-        if content.is_empty() {
-            skipped += text.len() as u128 + 1;
-            if skipped > 1 << 16 {
-                check_held_at(name, line, skipped + held_bytes::<D, S>(&store))?;
+        for bytes in block.split_inclusive(|&b| b == b'\n') {
+            line += 1;
+            if bytes.len() > MAX_LINE_BYTES + 1 {
+                return Err(Location::new(name, line).error(format!(
+                    "line longer than {} MiB: not a text file of records, or a file without \
+                     line breaks",
+                    MAX_LINE_BYTES >> 20
+                )));
             }
-            continue;
-        }
-        let at = Location::new(name, line);
-        match (&notes, slow_row(content, line, layout, &slot, name)?) {
-            (_, Slow::Blank) => {}
-            (None, Slow::Point(p)) => push(&mut store, p, consumed + bytes.len() as u64, line)?,
-            (None, Slow::Note) => notes = Some((line, excerpt(content))),
-            (Some((first, note)), Slow::Point(_)) => {
-                return Err(at.error(format!(
-                    "a data row after the notes that begin on line {first} ('{note}'): notes \
-                     may only follow the data (remove them or start them with '#')"
-                )))
+            if notes.is_none() {
+                if let Some(p) = fast_row(bytes, layout, &slot) {
+                    push(&mut store, p, consumed, line)?;
+                    continue;
+                }
             }
-            (Some(_), Slow::Note) => {
+            let text = check_line(name, line, bytes)?;
+            let content = strip_comment(text).trim();
+            if content.is_empty() {
                 skipped += text.len() as u128 + 1;
-                check_held_at(name, line, skipped + held_bytes::<D, S>(&store))?;
+                if skipped > 1 << 16 {
+                    check_held_at(name, line, skipped + held_bytes::<D, S>(&store))?;
+                }
+                continue;
+            }
+            let at = Location::new(name, line);
+            match (&notes, slow_row(content, line, layout, &slot, name)?) {
+                (_, Slow::Blank) => {}
+                (None, Slow::Point(p)) => push(&mut store, p, consumed, line)?,
+                (None, Slow::Note) => notes = Some((line, excerpt(content))),
+                (Some((first, note)), Slow::Point(_)) => {
+                    return Err(at.error(format!(
+                        "a data row after the notes that begin on line {first} ('{note}'): notes \
+                         may only follow the data (remove them or start them with '#')"
+                    )))
+                }
+                (Some(_), Slow::Note) => {
+                    skipped += text.len() as u128 + 1;
+                    check_held_at(name, line, skipped + held_bytes::<D, S>(&store))?;
+                }
             }
         }
     }
@@ -211,6 +229,48 @@ fn collect<R: BufRead, const D: usize, S: Store<D>>(
         return Err(data_error(name, "no points found"));
     }
     Ok(store)
+}
+
+/// How many bytes of whole lines are parsed at a time.
+const BLOCK_BYTES: usize = 1 << 22;
+
+/// The points of a block of lines that are all plain data rows (see [`fast_row`]), parsed in
+/// two halves on two threads; `None` when any line is not (the caller then reads the block
+/// line by line).
+fn fast_block<const D: usize>(
+    block: &[u8],
+    layout: &Layout,
+    slot: &[usize],
+) -> Option<[Vec<[f64; D]>; 2]> {
+    let middle = memchr::memchr(b'\n', &block[block.len() / 2..])
+        .map_or(block.len(), |k| block.len() / 2 + k + 1);
+    let (first, second) = block.split_at(middle);
+    let (a, b) = rayon::join(
+        || fast_lines(first, layout, slot),
+        || fast_lines(second, layout, slot),
+    );
+    Some([a?, b?])
+}
+
+/// The points of `bytes`, lines that are all plain data rows; `None` when one is not.
+fn fast_lines<const D: usize>(
+    bytes: &[u8],
+    layout: &Layout,
+    slot: &[usize],
+) -> Option<Vec<[f64; D]>> {
+    let mut points = Vec::with_capacity(bytes.len() / (8 * D + 1) + 1);
+    let mut start = 0;
+    let ends = memchr::memchr_iter(b'\n', bytes).map(|k| k + 1);
+    for end in ends.chain((bytes.len() > 0 && bytes.last() != Some(&b'\n')).then_some(bytes.len()))
+    {
+        let line = &bytes[start..end];
+        if line.len() > MAX_LINE_BYTES {
+            return None;
+        }
+        points.push(fast_row(line, layout, slot)?);
+        start = end;
+    }
+    Some(points)
 }
 
 /// The bytes the points of `store` take.

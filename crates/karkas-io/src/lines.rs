@@ -110,6 +110,8 @@ pub(crate) struct LineReader<'p, R> {
     /// Bytes of the current line still to be consumed from `reader` (a line handed out in
     /// place).
     pending: usize,
+    /// The start of a line after the last block ([`LineReader::read_block`]).
+    carry: Vec<u8>,
 }
 
 impl<'p, R: std::io::BufRead> LineReader<'p, R> {
@@ -122,12 +124,71 @@ impl<'p, R: std::io::BufRead> LineReader<'p, R> {
             line: 0,
             consumed: 0,
             pending: 0,
+            carry: Vec::new(),
         }
     }
 
     /// The name of the input in errors.
     pub fn name(&self) -> &'p Path {
         self.name
+    }
+
+    /// The number of the last line read (0 before the first).
+    pub fn line(&self) -> usize {
+        self.line
+    }
+
+    /// Reads whole lines into `block` (cleared first), at least `target` bytes of them when
+    /// the input has that many: the bytes after the last line break wait in the reader for
+    /// the next call, except at the end of the input. `Ok(false)` at the end of the input.
+    /// `line` is the number of the block's first line, for the error of a line longer than
+    /// [`crate::input::MAX_LINE_BYTES`]. The reader counts no lines from here on: the caller
+    /// does (and checks what [`LineReader::next_raw`] checks).
+    pub fn read_block(
+        &mut self,
+        block: &mut Vec<u8>,
+        target: usize,
+        line: usize,
+    ) -> Result<bool, IoError> {
+        if self.pending > 0 {
+            self.reader.consume(self.pending);
+            self.pending = 0;
+        }
+        block.clear();
+        block.append(&mut self.carry);
+        let mut end = false;
+        while block.len() < target {
+            let start = block.len();
+            block.resize(target.max(start + (1 << 16)), 0);
+            let read = loop {
+                match self.reader.read(&mut block[start..]) {
+                    Ok(n) => break n,
+                    Err(e) if e.kind() == std::io::ErrorKind::Interrupted => continue,
+                    Err(e) => return Err(IoError::open(self.name)(e)),
+                }
+            };
+            block.truncate(start + read);
+            self.consumed += read as u64;
+            if read == 0 {
+                end = true;
+                break;
+            }
+        }
+        if !end {
+            match memchr::memrchr(b'\n', block) {
+                Some(k) => self.carry.extend_from_slice(&block[k + 1..]),
+                None => {
+                    return Err(Location::new(self.name, line).error(format!(
+                        "line longer than {} MiB: not a text file of records, or a file without \
+                         line breaks",
+                        crate::input::MAX_LINE_BYTES >> 20
+                    )))
+                }
+            }
+            let keep = block.len() - self.carry.len();
+            block.truncate(keep);
+        }
+        Ok(!block.is_empty())
     }
 
     /// How many bytes have been read so far.

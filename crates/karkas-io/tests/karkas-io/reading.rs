@@ -220,3 +220,29 @@ fn hostile_bytes_are_refused_with_their_line() {
         "{e}"
     );
 }
+
+#[test]
+fn line_numbers_hold_across_large_blocks() {
+    let (_dir, path) = scratch("numbers.txt");
+    let mut text = String::from("x y\n");
+    for k in 0..300_000 {
+        text.push_str(&format!("{k} {}\n", k % 7));
+        if k == 200_000 {
+            text.push_str("# a comment\n\n");
+        }
+    }
+    // Line 1 is the header, rows start on line 2, two extra lines after row 200 000.
+    text.push_str("1 x\n");
+    std::fs::write(&path, &text).unwrap();
+    let e = read_curve_points(&path).unwrap_err().to_string();
+    let name = path.display().to_string();
+    assert_eq!(e, format!("{name}:300004: 'x' is not a number (column 2)"));
+    // A line longer than 1 MiB among the data, even one of blanks, is refused.
+    let long = format!("x y\n0 0\n1{}2\n", " ".repeat(2 << 20));
+    std::fs::write(&path, long).unwrap();
+    let e = read_curve_points(&path).unwrap_err().to_string();
+    assert!(
+        e.starts_with(&format!("{name}:3: line longer than 1 MiB")),
+        "{e}"
+    );
+}
