@@ -12,7 +12,7 @@
 //! - otherwise a note: the data end there, and the rest of the file is notes (a source URL,
 //!   a table of properties), ignored, except that a data row after the notes is refused.
 //!
-//! Speed: the input is read in blocks of 4 MiB of whole lines; a block of plain rows (no
+//! Speed: the input is read in blocks of 1 MiB of whole lines; a block of plain rows (no
 //! comment, no double quote, nothing but the data's fields) is split in two halves parsed on
 //! two threads, each row split in place and its coordinates parsed with `fast-float2`
 //! (correctly rounded, as `str::parse`, which the tests compare it with), with no allocation
@@ -161,7 +161,7 @@ fn collect<R: BufRead, const D: usize, S: Store<D>>(
     let mut store = S::default();
     let push = |store: &mut S, p: [f64; D], consumed: u64, line: usize| -> Result<(), IoError> {
         if store.len() == store.capacity() {
-            growth.grow(store, consumed, Location::new(name, line))?;
+            growth.grow(store, 1, consumed, Location::new(name, line))?;
         }
         store.push(p);
         Ok(())
@@ -177,18 +177,25 @@ fn collect<R: BufRead, const D: usize, S: Store<D>>(
     let mut block = Vec::new();
     let mut line = lines.line();
     while lines.read_block(&mut block, BLOCK_BYTES, line + 1)? {
-        let consumed = lines.consumed();
+        let after = lines.consumed();
         if notes.is_none() {
             if let Some(halves) = fast_block::<D>(&block, layout, &slot) {
-                for p in halves.into_iter().flatten() {
-                    line += 1;
-                    push(&mut store, p, consumed, line)?;
+                let count = halves[0].len() + halves[1].len();
+                if store.capacity() - store.len() < count {
+                    let at = Location::new(name, line + count);
+                    growth.grow(&mut store, count, after, at)?;
                 }
+                for p in halves.into_iter().flatten() {
+                    store.push(p);
+                }
+                line += count;
                 continue;
             }
         }
+        let mut consumed = after - block.len() as u64;
         for bytes in block.split_inclusive(|&b| b == b'\n') {
             line += 1;
+            consumed += bytes.len() as u64;
             if bytes.len() > MAX_LINE_BYTES + 1 {
                 return Err(Location::new(name, line).error(format!(
                     "line longer than {} MiB: not a text file of records, or a file without \
@@ -236,7 +243,7 @@ fn collect<R: BufRead, const D: usize, S: Store<D>>(
 }
 
 /// How many bytes of whole lines are parsed at a time.
-const BLOCK_BYTES: usize = 1 << 22;
+const BLOCK_BYTES: usize = 1 << 20;
 
 /// The points of a block of lines that are all plain data rows (see [`fast_row`]), parsed in
 /// two halves on two threads; `None` when any line is not (the caller then reads the block

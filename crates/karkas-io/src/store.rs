@@ -77,33 +77,35 @@ pub(crate) struct Growth {
 }
 
 impl Growth {
-    /// Makes room for at least one more point in `store` of dimension `D`, given that
-    /// `consumed` bytes of the input are read; fails when the points would exceed the memory
-    /// cap, naming the place `at`. Call it when the store is full.
+    /// Makes room for `additional` more points in `store` of dimension `D`, given that the
+    /// points up to those take the first `consumed` bytes of the input; fails when the points
+    /// would exceed the memory cap, naming the place `at`.
     pub fn grow<const D: usize, S: Store<D>>(
         &self,
         store: &mut S,
+        additional: usize,
         consumed: u64,
         at: Location<'_>,
     ) -> Result<(), IoError> {
         let len = store.len();
+        let needed = len.saturating_add(additional);
         let point_bytes = (D * std::mem::size_of::<f64>()) as u128;
-        check_held_at(at.path, at.line, (len as u128 + 1) * point_bytes)?;
+        check_held_at(at.path, at.line, needed as u128 * point_bytes)?;
         let limit =
             usize::try_from(u128::from(max_input_bytes()) / point_bytes + 1).unwrap_or(usize::MAX);
         let estimate = match self.size {
-            Some(size) if len >= 1024 && consumed > 0 && size > consumed => {
-                let total = len as f64 * size as f64 / consumed as f64;
+            Some(size) if needed >= 1024 && consumed > 0 && size > consumed => {
+                let total = needed as f64 * size as f64 / consumed as f64;
                 (total * 1.03) as usize + 16
             }
             _ => 0,
         };
-        let wanted = if estimate > len {
+        let wanted = if estimate > needed {
             estimate
         } else {
-            len.saturating_mul(2).max(1024)
+            needed.max(len.saturating_mul(2)).max(1024)
         };
-        let new_capacity = wanted.min(limit).max(len + 1);
+        let new_capacity = wanted.min(limit).max(needed);
         store.reserve_exact(new_capacity - len);
         Ok(())
     }
@@ -134,20 +136,32 @@ mod tests {
             size: Some(100_000),
         };
         growth
-            .grow(&mut points, 0, Location::new(Path::new("p"), 1))
+            .grow(&mut points, 1, 0, Location::new(Path::new("p"), 1))
             .unwrap();
         assert_eq!(points.capacity(), 1024);
         for _ in 0..1024 {
             Store::push(&mut points, [0.0, 0.0]);
         }
-        // 1024 points in 10 000 bytes: 10 240 in the whole input, 3 % more reserved.
+        // 1025 points in 10 000 bytes: 10 250 in the whole input, 3 % more reserved.
         growth
-            .grow(&mut points, 10_000, Location::new(Path::new("p"), 1))
+            .grow(&mut points, 1, 10_000, Location::new(Path::new("p"), 1))
             .unwrap();
-        assert_eq!(points.capacity(), 10_563);
+        assert_eq!(points.capacity(), 10_573);
+        // More than the cap allows: refused, naming the line.
+        let e = growth
+            .grow(
+                &mut points,
+                usize::MAX / 2,
+                10_000,
+                Location::new(Path::new("p"), 7),
+            )
+            .unwrap_err();
+        assert!(e
+            .to_string()
+            .starts_with("p:7: the input needs more than the memory cap"));
         let mut flat = Flat::default();
         Growth { size: None }
-            .grow::<3, _>(&mut flat, 0, Location::new(Path::new("p"), 1))
+            .grow::<3, _>(&mut flat, 1, 0, Location::new(Path::new("p"), 1))
             .unwrap();
         assert_eq!(Store::<3>::capacity(&flat), 1024);
     }
