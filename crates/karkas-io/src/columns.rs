@@ -176,17 +176,22 @@ fn collect<R: BufRead, const D: usize, S: Store<D>>(
     let mut notes: Option<(usize, String)> = None;
     let mut block = Vec::new();
     let mut line = lines.line();
-    while lines.read_block(&mut block, BLOCK_BYTES, line + 1)? {
+    loop {
+        let len = lines.read_block(&mut block, BLOCK_BYTES, line + 1)?;
+        if len == 0 {
+            break;
+        }
+        let block = &block[..len];
         let after = lines.consumed();
         if notes.is_none() {
-            if let Some(halves) = fast_block::<D>(&block, layout, &slot) {
+            if let Some(halves) = fast_block::<D>(block, layout, &slot) {
                 let count = halves[0].len() + halves[1].len();
                 if store.capacity() - store.len() < count {
                     let at = Location::new(name, line + count);
                     growth.grow(&mut store, count, after, at)?;
                 }
-                for p in halves.into_iter().flatten() {
-                    store.push(p);
+                for half in &halves {
+                    store.extend_from(half);
                 }
                 line += count;
                 continue;
@@ -299,58 +304,58 @@ fn held_bytes<const D: usize, S: Store<D>>(store: &S) -> u128 {
 #[inline]
 fn fast_row<const D: usize>(bytes: &[u8], layout: &Layout, slot: &[usize]) -> Option<[f64; D]> {
     let mut p = [0.0; D];
+    let n = bytes.len();
+    let blank = |b: u8| matches!(b, b' ' | b'\t' | b'\r' | b'\n');
+    // A coordinate is parsed where it starts (the parser finds its end); the byte after it
+    // must end the field. Other fields are skipped to their separator.
+    let end_of_field = |b: u8| {
+        if layout.csv {
+            b == b','
+        } else {
+            blank(b)
+        }
+    };
+    let mut k = 0;
     let mut count = 0;
-    let mut take = |start: usize, end: usize| -> Option<()> {
+    loop {
+        while k < n && blank(bytes[k]) {
+            k += 1;
+        }
+        if k == n && (!layout.csv || count > 0) {
+            break;
+        }
         let s = *slot.get(count)?;
         count += 1;
         if s < D {
-            let v: f64 = fast_float2::parse(&bytes[start..end]).ok()?;
-            if !v.is_finite() {
+            let (v, used): (f64, usize) = fast_float2::parse_partial(&bytes[k..]).ok()?;
+            if used == 0 || !v.is_finite() {
                 return None;
             }
             p[s] = v;
-        }
-        Some(())
-    };
-    let blank = |b: u8| matches!(b, b' ' | b'\t' | b'\r' | b'\n');
-    let mut k = 0;
-    let n = bytes.len();
-    if layout.csv {
-        loop {
-            while k < n && blank(bytes[k]) {
+            k += used;
+            while k < n && blank(bytes[k]) && layout.csv {
                 k += 1;
             }
-            let start = k;
-            while k < n && !matches!(bytes[k], b',' | b'#' | b'"') {
+            if k < n && !end_of_field(bytes[k]) {
+                return None;
+            }
+        } else {
+            while k < n && !end_of_field(bytes[k]) {
+                if matches!(bytes[k], b'#' | b'"') {
+                    return None;
+                }
                 k += 1;
-            }
-            let mut end = k;
-            while end > start && blank(bytes[end - 1]) {
-                end -= 1;
-            }
-            take(start, end)?;
-            match bytes.get(k) {
-                None => break,
-                Some(b',') => k += 1,
-                Some(_) => return None,
             }
         }
-    } else {
-        loop {
-            while k < n && blank(bytes[k]) {
-                k += 1;
-            }
+        if layout.csv {
             if k == n {
                 break;
             }
-            let start = k;
-            while k < n && !blank(bytes[k]) && bytes[k] != b'#' {
-                k += 1;
-            }
-            if bytes.get(k) == Some(&b'#') {
+            k += 1;
+            if k == n {
+                // A comma at the end: one more (empty) field.
                 return None;
             }
-            take(start, k)?;
         }
     }
     (count == layout.width).then_some(p)

@@ -138,57 +138,57 @@ impl<'p, R: std::io::BufRead> LineReader<'p, R> {
         self.line
     }
 
-    /// Reads whole lines into `block` (cleared first), at least `target` bytes of them when
-    /// the input has that many: the bytes after the last line break wait in the reader for
-    /// the next call, except at the end of the input. `Ok(false)` at the end of the input.
-    /// `line` is the number of the block's first line, for the error of a line longer than
-    /// [`crate::input::MAX_LINE_BYTES`]. The reader counts no lines from here on: the caller
-    /// does (and checks what [`LineReader::next_raw`] checks).
+    /// Reads whole lines into `block[..len]` and returns `len`: at least `target` bytes of
+    /// lines when the input has that many; 0 at the end of the input. The bytes after the last
+    /// line break wait for the next call, except at the end of the input. `block` is kept
+    /// `target` bytes long between calls, so it is zeroed once, not per block. `line` is the
+    /// number of the block's first line, for the error of a line longer than `target`. The
+    /// reader counts no lines from here on: the caller does (and checks what
+    /// [`LineReader::next_raw`] checks).
     pub fn read_block(
         &mut self,
         block: &mut Vec<u8>,
         target: usize,
         line: usize,
-    ) -> Result<bool, IoError> {
+    ) -> Result<usize, IoError> {
         if self.pending > 0 {
             self.reader.consume(self.pending);
             self.pending = 0;
         }
-        block.clear();
-        block.append(&mut self.carry);
+        if block.len() < target {
+            block.resize(target, 0);
+        }
+        let mut len = self.carry.len();
+        block[..len].copy_from_slice(&self.carry);
+        self.carry.clear();
         let mut end = false;
-        while block.len() < target {
-            let start = block.len();
-            block.resize(target.max(start + (1 << 16)), 0);
+        while len < target {
             let read = loop {
-                match self.reader.read(&mut block[start..]) {
+                match self.reader.read(&mut block[len..target]) {
                     Ok(n) => break n,
                     Err(e) if e.kind() == std::io::ErrorKind::Interrupted => continue,
                     Err(e) => return Err(IoError::open(self.name)(e)),
                 }
             };
-            block.truncate(start + read);
-            self.consumed += read as u64;
             if read == 0 {
                 end = true;
                 break;
             }
+            len += read;
+            self.consumed += read as u64;
         }
         if !end {
-            match memchr::memrchr(b'\n', block) {
-                Some(k) => self.carry.extend_from_slice(&block[k + 1..]),
-                None => {
-                    return Err(Location::new(self.name, line).error(format!(
-                        "line longer than {} MiB: not a text file of records, or a file without \
-                         line breaks",
-                        crate::input::MAX_LINE_BYTES >> 20
-                    )))
-                }
-            }
-            let keep = block.len() - self.carry.len();
-            block.truncate(keep);
+            let Some(k) = memchr::memrchr(b'\n', &block[..len]) else {
+                return Err(Location::new(self.name, line).error(format!(
+                    "line longer than {} MiB: not a text file of records, or a file without \
+                     line breaks",
+                    crate::input::MAX_LINE_BYTES >> 20
+                )));
+            };
+            self.carry.extend_from_slice(&block[k + 1..len]);
+            len = k + 1;
         }
-        Ok(!block.is_empty())
+        Ok(len)
     }
 
     /// How many bytes have been read so far.

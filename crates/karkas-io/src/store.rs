@@ -27,6 +27,8 @@ use crate::lines::check_held_at;
 pub(crate) trait Store<const D: usize>: Default {
     /// Appends a point.
     fn push(&mut self, p: [f64; D]);
+    /// Appends points.
+    fn extend_from(&mut self, points: &[[f64; D]]);
     /// The number of points.
     fn len(&self) -> usize;
     /// How many points fit without reallocating.
@@ -38,6 +40,9 @@ pub(crate) trait Store<const D: usize>: Default {
 impl<const D: usize> Store<D> for Vec<Point<D>> {
     fn push(&mut self, p: [f64; D]) {
         Vec::push(self, Point(p));
+    }
+    fn extend_from(&mut self, points: &[[f64; D]]) {
+        self.extend(points.iter().map(|&p| Point(p)));
     }
     fn len(&self) -> usize {
         Vec::len(self)
@@ -57,6 +62,9 @@ pub(crate) struct Flat(pub Vec<f64>);
 impl<const D: usize> Store<D> for Flat {
     fn push(&mut self, p: [f64; D]) {
         self.0.extend_from_slice(&p);
+    }
+    fn extend_from(&mut self, points: &[[f64; D]]) {
+        self.0.extend_from_slice(points.as_flattened());
     }
     fn len(&self) -> usize {
         self.0.len() / D
