@@ -12,11 +12,12 @@
 //! - otherwise a note: the data end there, and the rest of the file is notes (a source URL,
 //!   a table of properties), ignored, except that a data row after the notes is refused.
 //!
-//! Speed: the input is read in blocks of 1 MiB of whole lines; a block of plain rows (no
-//! comment, no double quote, nothing but the data's fields) is split in two halves parsed on
-//! two threads, each row split in place and its coordinates parsed with `fast-float2`
-//! (correctly rounded, as `str::parse`, which the tests compare it with), with no allocation
-//! per row or field. Any other block is read line by line, each line tried the same way and
+//! Speed: the input is read in blocks of 1 MiB of whole lines, the next block read on a
+//! thread of its own while the current one is parsed; a block of plain rows (no comment, no
+//! double quote, nothing but the data's fields) is split in two halves parsed on two threads,
+//! each coordinate parsed where it starts with `fast-float2` (correctly rounded, as
+//! `str::parse`; a test compares the two paths on random rows), with no allocation per row or
+//! field. Any other block is read line by line, each line tried the same way and
 //! otherwise split into owned fields to be classified or reported, so line numbers and
 //! messages are those of a line-by-line read. Memory: the points themselves
 //! ([`crate::store`]), a block and one half's points, and nothing per skipped line except
@@ -30,7 +31,7 @@ use crate::error::{data_error, IoError, Location};
 use crate::input::{excerpt, MAX_LINE_BYTES};
 use crate::lines::{
     check_held_at, check_line, first_token, is_number, looks_numeric, parse_coordinate,
-    split_fields, strip_comment, LineReader,
+    split_fields, strip_comment, too_long, Block, LineReader,
 };
 use crate::store::{Growth, Store};
 
@@ -122,7 +123,7 @@ impl Layout {
 
 /// Reads the rest of a column file in `layout` from `lines` into the store for its
 /// dimension; `size` is the input's size when known (see [`Growth`]).
-pub(crate) fn read_columns<R: BufRead, A: Store<2>, B: Store<3>>(
+pub(crate) fn read_columns<R: BufRead + Send, A: Store<2>, B: Store<3>>(
     lines: &mut LineReader<'_, R>,
     layout: Layout,
     size: Option<u64>,
@@ -145,7 +146,7 @@ enum Slow<const D: usize> {
 }
 
 /// The points of the data rows, coordinate `k` from field `columns[k]`.
-fn collect<R: BufRead, const D: usize, S: Store<D>>(
+fn collect<R: BufRead + Send, const D: usize, S: Store<D>>(
     lines: &mut LineReader<'_, R>,
     layout: &Layout,
     columns: [usize; D],
@@ -174,39 +175,58 @@ fn collect<R: BufRead, const D: usize, S: Store<D>>(
     }
     let mut skipped: u128 = 0;
     let mut notes: Option<(usize, String)> = None;
-    let mut block = Vec::new();
     let mut line = lines.line();
+    let mut after = lines.consumed();
+    // Two blocks: one parsed while the next is read on another thread.
+    let mut blocks = [Vec::new(), Vec::new()];
+    let mut next = lines.read_block(&mut blocks[0], BLOCK_BYTES)?;
+    let mut current = 0;
     loop {
-        let len = lines.read_block(&mut block, BLOCK_BYTES, line + 1)?;
-        if len == 0 {
-            break;
-        }
-        let block = &block[..len];
-        let after = lines.consumed();
-        if notes.is_none() {
-            if let Some(halves) = fast_block::<D>(block, layout, &slot) {
-                let count = halves[0].len() + halves[1].len();
-                if store.capacity() - store.len() < count {
-                    let at = Location::new(name, line + count);
-                    growth.grow(&mut store, count, after, at)?;
-                }
-                for half in &halves {
-                    store.extend_from(half);
-                }
-                line += count;
-                continue;
+        let len = match next {
+            Block::TooLong => return Err(too_long(name, line + 1)),
+            Block::Lines(0) => break,
+            Block::Lines(len) => len,
+        };
+        let [first, second] = &mut blocks;
+        let (block, spare) = if current == 0 {
+            (&first[..len], second)
+        } else {
+            (&second[..len], first)
+        };
+        current = 1 - current;
+        after += len as u64;
+        let try_fast = notes.is_none();
+        let (fast, read) = std::thread::scope(|scope| {
+            let reader = scope.spawn(|| lines.read_block(spare, BLOCK_BYTES));
+            let fast = if try_fast {
+                fast_block::<D>(block, layout, &slot)
+            } else {
+                None
+            };
+            (fast, reader.join())
+        });
+        next = match read {
+            Ok(read) => read?,
+            Err(panic) => std::panic::resume_unwind(panic),
+        };
+        if let Some(halves) = fast {
+            let count = halves[0].len() + halves[1].len();
+            if store.capacity() - store.len() < count {
+                let at = Location::new(name, line + count);
+                growth.grow(&mut store, count, after, at)?;
             }
+            for half in &halves {
+                store.extend_from(half);
+            }
+            line += count;
+            continue;
         }
         let mut consumed = after - block.len() as u64;
         for bytes in block.split_inclusive(|&b| b == b'\n') {
             line += 1;
             consumed += bytes.len() as u64;
             if bytes.len() > MAX_LINE_BYTES + 1 {
-                return Err(Location::new(name, line).error(format!(
-                    "line longer than {} MiB: not a text file of records, or a file without \
-                     line breaks",
-                    MAX_LINE_BYTES >> 20
-                )));
+                return Err(too_long(name, line));
             }
             if notes.is_none() {
                 if let Some(p) = fast_row(bytes, layout, &slot) {

@@ -7,7 +7,7 @@
 use std::path::Path;
 
 use crate::error::{IoError, Location};
-use crate::input::{excerpt, not_utf8_message, read_line_bytes};
+use crate::input::{excerpt, not_utf8_message, read_line_bytes, MAX_LINE_BYTES};
 
 /// One non-blank line of a file, split into fields.
 #[derive(Clone, Debug, PartialEq)]
@@ -138,19 +138,13 @@ impl<'p, R: std::io::BufRead> LineReader<'p, R> {
         self.line
     }
 
-    /// Reads whole lines into `block[..len]` and returns `len`: at least `target` bytes of
-    /// lines when the input has that many; 0 at the end of the input. The bytes after the last
-    /// line break wait for the next call, except at the end of the input. `block` is kept
-    /// `target` bytes long between calls, so it is zeroed once, not per block. `line` is the
-    /// number of the block's first line, for the error of a line longer than `target`. The
-    /// reader counts no lines from here on: the caller does (and checks what
-    /// [`LineReader::next_raw`] checks).
-    pub fn read_block(
-        &mut self,
-        block: &mut Vec<u8>,
-        target: usize,
-        line: usize,
-    ) -> Result<usize, IoError> {
+    /// Reads whole lines into `block[..len]`: at least `target` bytes of lines when the
+    /// input has that many; [`Block::Lines`]`(0)` at the end of the input, [`Block::TooLong`]
+    /// when `target` bytes hold no line break. The bytes after the last line break wait for
+    /// the next call, except at the end of the input. `block` is kept `target` bytes long
+    /// between calls, so it is zeroed once, not per block. The reader counts no lines from
+    /// here on: the caller does (and checks what [`LineReader::next_raw`] checks).
+    pub fn read_block(&mut self, block: &mut Vec<u8>, target: usize) -> Result<Block, IoError> {
         if self.pending > 0 {
             self.reader.consume(self.pending);
             self.pending = 0;
@@ -179,16 +173,12 @@ impl<'p, R: std::io::BufRead> LineReader<'p, R> {
         }
         if !end {
             let Some(k) = memchr::memrchr(b'\n', &block[..len]) else {
-                return Err(Location::new(self.name, line).error(format!(
-                    "line longer than {} MiB: not a text file of records, or a file without \
-                     line breaks",
-                    crate::input::MAX_LINE_BYTES >> 20
-                )));
+                return Ok(Block::TooLong);
             };
             self.carry.extend_from_slice(&block[k + 1..len]);
             len = k + 1;
         }
-        Ok(len)
+        Ok(Block::Lines(len))
     }
 
     /// How many bytes have been read so far.
@@ -263,6 +253,23 @@ pub(crate) fn check_held_at(name: &Path, line: usize, bytes: u128) -> Result<(),
         IoError::Data { message, .. } => Location::new(name, line).error(message),
         other => other,
     })
+}
+
+/// What [`LineReader::read_block`] read.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Block {
+    /// Whole lines, this many bytes of them (0: the end of the input).
+    Lines(usize),
+    /// A line longer than a block.
+    TooLong,
+}
+
+/// The error of line `line` of `name` when it is longer than [`MAX_LINE_BYTES`].
+pub(crate) fn too_long(name: &Path, line: usize) -> IoError {
+    Location::new(name, line).error(format!(
+        "line longer than {} MiB: not a text file of records, or a file without line breaks",
+        MAX_LINE_BYTES >> 20
+    ))
 }
 
 /// The fields of a line's `content` (comment already stripped): split at commas (`csv`,

@@ -108,7 +108,7 @@ pub fn parse_curve_points(text: &str, path: &Path) -> Result<CurvePoints, IoErro
 
 /// Reads the points of `lines` (the input `path`, of `size` bytes when known) into the store
 /// of their dimension.
-fn read_any<R: BufRead, A: Store<2>, B: Store<3>>(
+fn read_any<R: BufRead + Send, A: Store<2>, B: Store<3>>(
     lines: &mut LineReader<'_, R>,
     path: &Path,
     size: Option<u64>,
