@@ -12,15 +12,15 @@
 //! - otherwise a note: the data end there, and the rest of the file is notes (a source URL,
 //!   a table of properties), ignored, except that a data row after the notes is refused.
 //!
-//! Speed: the input is read in blocks of 1 MiB of whole lines, the next block read on a
-//! thread of its own while the current one is parsed; a block of plain rows (no comment, no
-//! double quote, nothing but the data's fields) is split in two halves parsed on two threads,
+//! Speed: the input is read in blocks of whole lines (1 MiB per thread), the next block read
+//! on a thread of its own while the current one is parsed; a block of plain rows (no comment,
+//! no double quote, nothing but the data's fields) is split in pieces parsed in parallel,
 //! each coordinate parsed where it starts with `fast-float2` (correctly rounded, as
 //! `str::parse`; a test compares the two paths on random rows), with no allocation per row or
 //! field. Any other block is read line by line, each line tried the same way and
 //! otherwise split into owned fields to be classified or reported, so line numbers and
 //! messages are those of a line-by-line read. Memory: the points themselves
-//! ([`crate::store`]), a block and one half's points, and nothing per skipped line except
+//! ([`crate::store`]), two blocks and one block's points, and nothing per skipped line except
 //! its bytes counted against the memory cap (so an endless stream of comments or notes ends
 //! too).
 
@@ -179,7 +179,9 @@ fn collect<R: BufRead + Send, const D: usize, S: Store<D>>(
     let mut after = lines.consumed();
     // Two blocks: one parsed while the next is read on another thread.
     let mut blocks = [Vec::new(), Vec::new()];
-    let mut next = lines.read_block(&mut blocks[0], BLOCK_BYTES)?;
+    // 1 MiB of whole lines per thread parsing them.
+    let block_bytes = rayon::current_num_threads().clamp(1, MAX_PIECES) << 20;
+    let mut next = lines.read_block(&mut blocks[0], block_bytes)?;
     let mut current = 0;
     loop {
         let len = match next {
@@ -197,7 +199,7 @@ fn collect<R: BufRead + Send, const D: usize, S: Store<D>>(
         after += len as u64;
         let try_fast = notes.is_none();
         let (fast, read) = std::thread::scope(|scope| {
-            let reader = scope.spawn(|| lines.read_block(spare, BLOCK_BYTES));
+            let reader = scope.spawn(|| lines.read_block(spare, block_bytes));
             let fast = if try_fast {
                 fast_block::<D>(block, layout, &slot)
             } else {
@@ -209,14 +211,14 @@ fn collect<R: BufRead + Send, const D: usize, S: Store<D>>(
             Ok(read) => read?,
             Err(panic) => std::panic::resume_unwind(panic),
         };
-        if let Some(halves) = fast {
-            let count = halves[0].len() + halves[1].len();
+        if let Some(pieces) = fast {
+            let count = pieces.iter().map(Vec::len).sum();
             if store.capacity() - store.len() < count {
                 let at = Location::new(name, line + count);
                 growth.grow(&mut store, count, after, at)?;
             }
-            for half in &halves {
-                store.extend_from(half);
+            for piece in &pieces {
+                store.extend_from(piece);
             }
             line += count;
             continue;
@@ -267,25 +269,30 @@ fn collect<R: BufRead + Send, const D: usize, S: Store<D>>(
     Ok(store)
 }
 
-/// How many bytes of whole lines are parsed at a time.
-const BLOCK_BYTES: usize = 1 << 20;
+/// The most pieces a block is parsed in, in parallel.
+const MAX_PIECES: usize = 16;
 
 /// The points of a block of lines that are all plain data rows (see [`fast_row`]), parsed in
-/// two halves on two threads; `None` when any line is not (the caller then reads the block
-/// line by line).
+/// as many pieces as there are threads, in parallel; `None` when any line is not (the caller
+/// then reads the block line by line).
 fn fast_block<const D: usize>(
     block: &[u8],
     layout: &Layout,
     slot: &[usize],
-) -> Option<[Vec<[f64; D]>; 2]> {
-    let middle = memchr::memchr(b'\n', &block[block.len() / 2..])
-        .map_or(block.len(), |k| block.len() / 2 + k + 1);
-    let (first, second) = block.split_at(middle);
-    let (a, b) = rayon::join(
-        || fast_lines(first, layout, slot),
-        || fast_lines(second, layout, slot),
-    );
-    Some([a?, b?])
+) -> Option<Vec<Vec<[f64; D]>>> {
+    use rayon::prelude::*;
+    let pieces = rayon::current_num_threads().clamp(1, MAX_PIECES);
+    let mut bounds = vec![0];
+    for k in 1..pieces {
+        let from = (block.len() * k / pieces).max(*bounds.last()?);
+        let cut = memchr::memchr(b'\n', &block[from..]).map_or(block.len(), |e| from + e + 1);
+        bounds.push(cut);
+    }
+    bounds.push(block.len());
+    bounds
+        .par_windows(2)
+        .map(|w| fast_lines(&block[w[0]..w[1]], layout, slot))
+        .collect()
 }
 
 /// The points of `bytes`, lines that are all plain data rows; `None` when one is not.
