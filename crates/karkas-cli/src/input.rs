@@ -1,10 +1,34 @@
-//! Checks of the input points every command makes before building: a frame whose points all
-//! lie at one place (or, for a surface, on one line) has nothing to build.
+//! Reading the inputs, and the checks of the input points every command makes before
+//! building: a frame whose points all lie at one place (or, for a surface, on one line) has
+//! nothing to build.
+//!
+//! Every input path may be `-`, standard input (named `<stdin>` in messages); a command with
+//! several inputs refuses `-` for more than one of them ([`one_standard_input`]).
 
 use anyhow::{bail, Result};
 use karkas::Point;
+use karkas_io::input::{display_name, is_stdin};
 use karkas_io::points::{read_curve_points, CurvePoints};
 use std::path::Path;
+
+/// Refuses standard input (`-`) for more than one of a command's `inputs` (the options or
+/// arguments as the user named them, and their paths): it can be read only once.
+pub fn one_standard_input(inputs: &[(&str, &Path)]) -> Result<()> {
+    let named: Vec<&str> = inputs
+        .iter()
+        .filter(|(_, p)| is_stdin(p))
+        .map(|(what, _)| *what)
+        .collect();
+    if named.len() > 1 {
+        let all = if named.len() == 2 { "both" } else { "all" };
+        bail!(
+            "{} {all} name standard input ('-'), which can be read only once: save all but one \
+             to files",
+            named.join(" and ")
+        );
+    }
+    Ok(())
+}
 
 /// Where the points lie, as far as building a curve or surface goes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -70,7 +94,7 @@ pub fn curve_points<const D: usize>(input: &Path, points: &[Point<D>]) -> Result
     if points.len() > 1 && spread(points) == Spread::OnePoint {
         bail!(
             "{}: all {} points coincide (at {}): there is no curve to build",
-            input.display(),
+            display_name(input).display(),
             points.len(),
             coordinates(points[0])
         );
@@ -84,13 +108,13 @@ pub fn grid_points<const D: usize>(input: &Path, points: &[Point<D>]) -> Result<
         match spread(points) {
             Spread::OnePoint => bail!(
                 "{}: all {} grid points coincide (at {}): there is no surface to build",
-                input.display(),
+                display_name(input).display(),
                 points.len(),
                 coordinates(points[0])
             ),
             Spread::OneLine => bail!(
                 "{}: all {} grid points lie on one straight line: there is no surface to build",
-                input.display(),
+                display_name(input).display(),
                 points.len()
             ),
             Spread::Surface => {}
@@ -122,5 +146,17 @@ mod tests {
             .collect();
         assert_eq!(spread(&tiny), Spread::Surface);
         assert_eq!(spread::<3>(&[]), Spread::OnePoint);
+    }
+
+    #[test]
+    fn standard_input_is_read_once() {
+        let p = Path::new;
+        assert!(one_standard_input(&[("A", p("-")), ("B", p("b.csv"))]).is_ok());
+        let e = one_standard_input(&[("A", p("-")), ("B", p("-"))]).unwrap_err();
+        assert!(
+            e.to_string()
+                .starts_with("A and B both name standard input"),
+            "{e}"
+        );
     }
 }

@@ -1,4 +1,5 @@
-//! Airfoil coordinate files (`.dat`) in the two layouts of the UIUC airfoil database.
+//! Airfoil coordinate files (`.dat`) in the two layouts of the UIUC airfoil database, read
+//! as a careful person reads the files found in the wild.
 //!
 //! - **Selig**: a name line, then `x y` rows from the trailing edge over the upper surface to
 //!   the leading edge and back along the lower surface to the trailing edge.
@@ -6,19 +7,44 @@
 //!   then the upper surface from leading to trailing edge, then the lower surface from leading
 //!   to trailing edge. Blank lines usually separate the blocks, but only the counts are trusted.
 //!
-//! The layouts are told apart by the first numeric line: two integral numbers both at least 2
-//! are Lednicer counts; a Selig point has `x <= 1` on a unit chord. Both are returned in Selig
+//! What is read:
+//! - the first line that is neither blank nor starts with `#` is the name, taken whole
+//!   (commas, `#` and all);
+//! - further text lines before the first pair are skipped (a second title, a source), and so
+//!   is one line of exactly four numbers (the domain line of MSES and TASOPT files,
+//!   `xmin xmax ymin ymax`, right after the name);
+//! - the data are the pairs `x y` that follow (whitespace-separated; `#` starts a comment),
+//!   blank lines between them allowed;
+//! - the data end at the first line that is not a pair: that line and the rest of the file
+//!   are notes (a URL, `Thickness: 7.99%`, a table of coefficients, `ZZ`), ignored;
+//! - refused, naming the line: a would-be pair that is damaged (a line whose first field is
+//!   or looks like a number, `0.5 abc`, `......`, `(0.0022)`; among the data also two fields
+//!   one of which is a number, `x 0.5`), and a pair after the notes.
+//!
+//! The whole input counts against the memory cap ([`crate::input::max_input_bytes`]), notes
+//! included, so an endless stream ends with the cap's error.
+//!
+//! The layouts are told apart by the first pair: two integral numbers both at least 2 are
+//! Lednicer counts; a Selig point has `x <= 1` on a unit chord. Both are returned in Selig
 //! order, one closed-looking loop, which is what a curve through the points wants.
+//!
+//! The reader takes one line at a time ([`AirfoilReader`]), so a file is read in one pass
+//! and only its points are kept.
 //!
 //! Hand-written: no crate reads these files, and the format is a few lines of whitespace
 //! columns.
 
+use std::io::BufRead;
 use std::path::Path;
 
 use karkas::{Point, Point2};
 
 use crate::error::{data_error, IoError, Location};
-use crate::lines::{is_number, parse_coordinate, strip_bom, whitespace_rows, Row};
+use crate::input::excerpt;
+use crate::lines::{
+    check_held_at, first_token, is_number, looks_numeric, parse_coordinate, strip_comment,
+    LineReader,
+};
 
 /// An airfoil read from a `.dat` file.
 #[derive(Clone, Debug, PartialEq)]
@@ -32,93 +58,218 @@ pub struct Airfoil {
 
 /// Reads an airfoil from `text` in either layout; `path` names the file in error messages.
 pub fn parse_airfoil(text: &str, path: &Path) -> Result<Airfoil, IoError> {
-    let text = strip_bom(text);
-    // The name line is taken whole (a name may contain '#'); only lines that start with '#'
-    // before it are comments.
-    let Some((name_index, name_line)) = text
-        .lines()
-        .enumerate()
-        .map(|(k, l)| (k, l.trim()))
-        .find(|(_, l)| !l.is_empty() && !l.starts_with('#'))
-    else {
-        return Err(data_error(path, "no points found"));
-    };
-    if name_line.split_whitespace().all(is_number) {
-        return Err(Location::new(path, name_index + 1)
-            .error("expected the airfoil name line, found numbers"));
-    }
-    let mut rows = whitespace_rows(text);
-    rows.retain(|r| r.line > name_index + 1);
-    let points = rows
-        .iter()
-        .map(|row| point(row, path))
-        .collect::<Result<Vec<_>, _>>()?;
-    let Some(&first) = points.first() else {
-        return Err(data_error(path, "no points found"));
-    };
-    let points = match lednicer_counts(first) {
-        Some((upper, lower)) => lednicer_to_selig(&points[1..], upper, lower, &rows, path)?,
-        None => points,
-    };
-    Ok(Airfoil {
-        name: name_line.to_owned(),
-        points,
-    })
+    read_airfoil_lines(&mut LineReader::new(text.as_bytes(), path))
 }
 
-/// The point of a row of exactly two finite numbers.
-fn point(row: &Row, path: &Path) -> Result<Point2, IoError> {
-    let at = Location::new(path, row.line);
-    if row.fields.len() != 2 {
-        return Err(at.error(format!(
-            "expected 2 fields (x y), found {}",
-            row.fields.len()
-        )));
+/// Reads an airfoil from the file at `path` (`-`: standard input) in one pass.
+pub fn read_airfoil(path: &Path) -> Result<Airfoil, IoError> {
+    let name = crate::input::display_name(path);
+    let input = crate::input::Input::open(path)?;
+    read_airfoil_lines(&mut LineReader::new(input, &name))
+}
+
+/// Reads an airfoil from the remaining lines of `lines`.
+pub(crate) fn read_airfoil_lines<R: BufRead>(
+    lines: &mut LineReader<'_, R>,
+) -> Result<Airfoil, IoError> {
+    let mut reader = AirfoilReader::new(lines.name());
+    while let Some((line, text)) = lines.next_line()? {
+        reader.feed(line, text)?;
+        if line.is_multiple_of(4096) {
+            // Skipped lines are charged too, so that endless notes end.
+            check_held_at(lines.name(), line, u128::from(lines.consumed()))?;
+        }
     }
-    Ok(Point([
-        parse_coordinate(&row.fields[0], 1, at)?,
-        parse_coordinate(&row.fields[1], 2, at)?,
-    ]))
+    reader.finish()
+}
+
+/// Where the reader is in the file.
+#[derive(Clone, Debug, PartialEq)]
+enum Stage {
+    /// Before the name line.
+    Name,
+    /// After the name, before the first pair; `true` until a domain line has been skipped.
+    Preamble(bool),
+    /// Among the pairs.
+    Data,
+    /// In the notes that began on a line, quoted.
+    Notes(usize, String),
+}
+
+/// An airfoil read line by line: [`AirfoilReader::feed`] every line, then
+/// [`AirfoilReader::finish`].
+#[derive(Clone, Debug)]
+pub(crate) struct AirfoilReader<'p> {
+    path: &'p Path,
+    stage: Stage,
+    name: String,
+    points: Vec<Point2>,
+    /// The line of the first pair (the counts of a Lednicer file).
+    first_pair_line: usize,
+    /// The lines of the pairs just after as many as Lednicer counts announce, if any.
+    extra_line: Option<usize>,
+}
+
+impl<'p> AirfoilReader<'p> {
+    /// A reader of the file `path` (named in errors).
+    pub fn new(path: &'p Path) -> Self {
+        AirfoilReader {
+            path,
+            stage: Stage::Name,
+            name: String::new(),
+            points: Vec::new(),
+            first_pair_line: 0,
+            extra_line: None,
+        }
+    }
+
+    /// Takes line number `line`, `text` (without its end of line).
+    pub fn feed(&mut self, line: usize, text: &str) -> Result<(), IoError> {
+        let at = Location::new(self.path, line);
+        if self.stage == Stage::Name {
+            let trimmed = text.trim();
+            if trimmed.is_empty() || trimmed.starts_with('#') {
+                return Ok(());
+            }
+            if trimmed.split_whitespace().all(is_number) {
+                return Err(at.error("expected the airfoil name line, found numbers"));
+            }
+            self.name = trimmed.to_owned();
+            self.stage = Stage::Preamble(true);
+            return Ok(());
+        }
+        let content = strip_comment(text).trim();
+        if content.is_empty() {
+            return Ok(());
+        }
+        let fields: Vec<&str> = content.split_whitespace().collect();
+        let pair = fields.len() == 2 && fields.iter().all(|f| is_number(f));
+        match &self.stage {
+            Stage::Name => {}
+            Stage::Preamble(domain_allowed) => {
+                if pair {
+                    self.first_pair_line = line;
+                    self.stage = Stage::Data;
+                    return self.push(&fields, at);
+                }
+                let domain = fields.len() == 4 && fields.iter().all(|f| is_number(f));
+                if domain && *domain_allowed {
+                    self.stage = Stage::Preamble(false);
+                } else if first_token(content).is_some_and(looks_numeric) {
+                    return Err(pair_error(&fields, at));
+                }
+            }
+            Stage::Data => {
+                if pair {
+                    return self.push(&fields, at);
+                }
+                if damaged(&fields) {
+                    return Err(pair_error(&fields, at));
+                }
+                self.stage = Stage::Notes(line, excerpt(content));
+            }
+            Stage::Notes(first, note) => {
+                if pair {
+                    return Err(at.error(format!(
+                        "a point after the notes that begin on line {first} ('{note}'): notes \
+                         may only follow the coordinates (remove them or start them with '#')"
+                    )));
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Appends the pair `fields` at `at`.
+    fn push(&mut self, fields: &[&str], at: Location<'_>) -> Result<(), IoError> {
+        let p = Point([
+            parse_coordinate(fields[0], 1, at)?,
+            parse_coordinate(fields[1], 2, at)?,
+        ]);
+        if let Some((upper, lower)) = self.points.first().and_then(|&c| lednicer_counts(c)) {
+            if self.points.len() == upper.saturating_add(lower) + 1 && self.extra_line.is_none() {
+                self.extra_line = Some(at.line);
+            }
+        }
+        self.points.push(p);
+        if self.points.len().is_multiple_of(1 << 16) {
+            check_held_at(self.path, at.line, (self.points.len() * 16) as u128)?;
+        }
+        Ok(())
+    }
+
+    /// The airfoil read, in Selig order.
+    pub fn finish(self) -> Result<Airfoil, IoError> {
+        let Some(&first) = self.points.first() else {
+            return Err(data_error(self.path, "no points found"));
+        };
+        let points = match lednicer_counts(first) {
+            Some((upper, lower)) => self.lednicer_to_selig(upper, lower)?,
+            None => self.points,
+        };
+        Ok(Airfoil {
+            name: self.name,
+            points,
+        })
+    }
+
+    /// Reorders Lednicer surfaces (the points after the count line) into Selig order,
+    /// checking the counts.
+    fn lednicer_to_selig(&self, upper: usize, lower: usize) -> Result<Vec<Point2>, IoError> {
+        let points = &self.points[1..];
+        let count_line = self.first_pair_line;
+        let expected = upper.saturating_add(lower);
+        if points.len() < expected {
+            return Err(data_error(
+                self.path,
+                format!(
+                    "the counts on line {count_line} announce {upper} upper + {lower} lower = \
+                     {expected} points, but only {} follow",
+                    points.len()
+                ),
+            ));
+        }
+        if points.len() > expected {
+            let extra_line = self.extra_line.unwrap_or(0);
+            return Err(Location::new(self.path, extra_line).error(format!(
+                "more points than the {upper} upper + {lower} lower announced on line {count_line}"
+            )));
+        }
+        let (upper, lower) = points.split_at(upper);
+        let mut selig: Vec<Point2> = upper.iter().rev().copied().collect();
+        let skip = usize::from(lower.first() == upper.first());
+        selig.extend_from_slice(&lower[skip..]);
+        Ok(selig)
+    }
+}
+
+/// True when a line that is not a pair was meant to be one: its first field is or looks like
+/// a number, or it has two fields, one a number.
+fn damaged(fields: &[&str]) -> bool {
+    fields
+        .first()
+        .and_then(|f| first_token(f))
+        .is_some_and(looks_numeric)
+        || (fields.len() == 2 && fields.iter().any(|f| is_number(f)))
+}
+
+/// The error of a damaged pair: the field that is not a number, or the count of fields.
+fn pair_error(fields: &[&str], at: Location<'_>) -> IoError {
+    if fields.len() != 2 {
+        return at.error(format!("expected 2 fields (x y), found {}", fields.len()));
+    }
+    for (k, field) in fields.iter().enumerate() {
+        if let Err(e) = parse_coordinate(field, k + 1, at) {
+            return e;
+        }
+    }
+    at.error("expected 2 fields (x y)")
 }
 
 /// The two surface point counts when `p` reads as a Lednicer count line.
 fn lednicer_counts(p: Point2) -> Option<(usize, usize)> {
     let count = |v: f64| (v >= 2.0 && v.fract() == 0.0).then_some(v as usize);
     Some((count(p[0])?, count(p[1])?))
-}
-
-/// Reorders Lednicer surfaces (`points` after the count line, `rows[0]` being that line) into
-/// Selig order, checking the counts.
-fn lednicer_to_selig(
-    points: &[Point2],
-    upper: usize,
-    lower: usize,
-    rows: &[Row],
-    path: &Path,
-) -> Result<Vec<Point2>, IoError> {
-    let count_line = rows.first().map_or(0, |r| r.line);
-    let expected = upper.saturating_add(lower);
-    if points.len() < expected {
-        return Err(data_error(
-            path,
-            format!(
-                "the counts on line {count_line} announce {upper} upper + {lower} lower = \
-                 {expected} points, but only {} follow",
-                points.len()
-            ),
-        ));
-    }
-    if points.len() > expected {
-        let extra_line = rows.get(expected + 1).map_or(0, |r| r.line);
-        return Err(Location::new(path, extra_line).error(format!(
-            "more points than the {upper} upper + {lower} lower announced on line {count_line}"
-        )));
-    }
-    let (upper, lower) = points.split_at(upper);
-    let mut selig: Vec<Point2> = upper.iter().rev().copied().collect();
-    let skip = usize::from(lower.first() == upper.first());
-    selig.extend_from_slice(&lower[skip..]);
-    Ok(selig)
 }
 
 #[cfg(test)]

@@ -16,6 +16,8 @@ use std::path::Path;
 use karkas::{Grid, Point, Point3};
 
 use crate::error::{data_error, IoError};
+use crate::input::display_name;
+use crate::input::excerpt;
 use crate::lines::{
     csv_rows, header_columns, parse_coordinate, read_text, row_location, strip_bom, Row,
 };
@@ -45,9 +47,9 @@ const GRID: IndexedLayout = IndexedLayout {
     },
 };
 
-/// Reads the surface frame of the grid CSV file at `path`.
+/// Reads the surface frame of the grid CSV file at `path` (`-`: standard input).
 pub fn read_grid(path: &Path) -> Result<Grid<Point3>, IoError> {
-    parse_grid(&read_text(path)?, path)
+    parse_grid(&read_text(path)?, &display_name(path))
 }
 
 /// Reads a surface frame from grid CSV `text` already in memory; `path` names the file in
@@ -170,7 +172,7 @@ impl GridColumns {
             field(k).parse::<usize>().map_err(|_| {
                 at.error(format!(
                     "'{}' is not a non-negative integer (column {}, '{}')",
-                    field(k),
+                    excerpt(field(k)),
                     self.index[k] + 1,
                     self.names[k]
                 ))

@@ -54,9 +54,9 @@ pub fn check_held(path: &Path, bytes: u128) -> Result<(), IoError> {
         return Err(data_error(
             path,
             format!(
-                "the input needs more than the memory cap of {} bytes (raise it with \
-                 --max-memory or KARKAS_MAX_MEMORY)",
-                cap
+                "the input needs more than the memory cap of {cap} bytes (raise it with \
+                 --max-memory or KARKAS_MAX_MEMORY on the command line, \
+                 karkas.set_max_input_bytes in Python)"
             ),
         ));
     }

@@ -53,7 +53,9 @@ pub mod skeleton;
 pub mod viewer;
 pub mod write;
 
+mod columns;
 mod lines;
+mod store;
 
 pub use cad::{iges, step};
 pub use error::{GeometryError, IoError, Location};

@@ -7,7 +7,7 @@
 use std::path::Path;
 
 use crate::error::{IoError, Location};
-use crate::input::{not_utf8_message, read_line_bytes};
+use crate::input::{excerpt, not_utf8_message, read_line_bytes, MAX_LINE_BYTES};
 
 /// One non-blank line of a file, split into fields.
 #[derive(Clone, Debug, PartialEq)]
@@ -43,32 +43,6 @@ pub(crate) fn is_number(field: &str) -> bool {
     field.trim().parse::<f64>().is_ok()
 }
 
-/// The first line that is neither blank nor only a comment, with its 1-based number and the
-/// comment stripped.
-pub(crate) fn first_content_line(text: &str) -> Option<(usize, &str)> {
-    text.lines()
-        .enumerate()
-        .map(|(k, l)| (k + 1, strip_comment(l).trim()))
-        .find(|(_, l)| !l.is_empty())
-}
-
-/// Non-blank lines split at whitespace, comments stripped.
-pub(crate) fn whitespace_rows(text: &str) -> Vec<Row> {
-    text.lines()
-        .enumerate()
-        .filter_map(|(k, l)| {
-            let fields: Vec<String> = strip_comment(l)
-                .split_whitespace()
-                .map(str::to_owned)
-                .collect();
-            (!fields.is_empty()).then_some(Row {
-                line: k + 1,
-                fields,
-            })
-        })
-        .collect()
-}
-
 /// Non-blank lines read as comma-separated records with the `csv` crate, comments stripped,
 /// fields trimmed, rows allowed to differ in length (the callers report ragged rows themselves,
 /// with a clearer message).
@@ -102,7 +76,7 @@ pub(crate) fn csv_rows(text: &str, path: &Path) -> Result<Vec<Row>, IoError> {
     for record in reader.records() {
         let record = record.map_err(|e| {
             let line = e.position().map_or(1, |p| line_at(p.byte() as usize));
-            Location::new(path, line).error(format!("malformed CSV: {e}"))
+            Location::new(path, line).error(format!("malformed CSV: {}", excerpt(&e.to_string())))
         })?;
         if record.iter().all(str::is_empty) {
             continue;
@@ -116,104 +90,231 @@ pub(crate) fn csv_rows(text: &str, path: &Path) -> Result<Vec<Row>, IoError> {
     Ok(rows)
 }
 
-/// A streaming reader of rows: one line at a time into a reused buffer, so a file of any
-/// length is read in memory proportional to its longest line (plus what the caller keeps).
+/// A reader of the lines of one input in one pass, with the bounds of [`crate::input`] (at
+/// most 1 MiB, no NUL byte, UTF-8): memory is one line, whatever the length of the input.
 ///
-/// Lines follow the shared conventions: `#` comments stripped, blank lines skipped, a
-/// byte-order mark at the start ignored, 1-based physical line numbers. Fields are split at
-/// whitespace, or at commas (trimmed; a line with a double quote is read with the `csv`
-/// crate, so quoted fields work as in [`csv_rows`]).
-pub(crate) struct RowReader<'p, R> {
+/// Lines are returned without their end of line (`\n` or `\r\n`), a byte-order mark at the
+/// start of the first line removed, with their 1-based physical number.
+///
+/// Speed: a line that lies whole in the reader's buffer is handed out in place
+/// ([`LineReader::next_raw`]), found with `memchr`, not copied; a reader that can check its
+/// bytes itself (a number parser accepts only ASCII) skips the NUL and UTF-8 checks for the
+/// lines it accepts and calls [`check_line`] on the others. Other lines (across the
+/// buffer's end) are read with [`read_line_bytes`].
+pub(crate) struct LineReader<'p, R> {
     reader: R,
-    path: &'p Path,
+    name: &'p Path,
     bytes: Vec<u8>,
-    buf: String,
     line: usize,
-    fields: Vec<String>,
+    consumed: u64,
+    /// Bytes of the current line still to be consumed from `reader` (a line handed out in
+    /// place).
+    pending: usize,
+    /// The start of a line after the last block ([`LineReader::read_block`]).
+    carry: Vec<u8>,
 }
 
-impl<'p, R: std::io::BufRead> RowReader<'p, R> {
-    /// Rows of `reader`; `path` names the file in errors.
-    pub fn new(reader: R, path: &'p Path) -> Self {
-        RowReader {
+impl<'p, R: std::io::BufRead> LineReader<'p, R> {
+    /// The lines of `reader`; `name` names the input in errors.
+    pub fn new(reader: R, name: &'p Path) -> Self {
+        LineReader {
             reader,
-            path,
+            name,
             bytes: Vec::new(),
-            buf: String::new(),
             line: 0,
-            fields: Vec::new(),
+            consumed: 0,
+            pending: 0,
+            carry: Vec::new(),
         }
     }
 
-    /// The next line that is neither blank nor only a comment: its 1-based number and its
-    /// content, comment stripped and trimmed; `None` at the end of the input.
-    pub fn next_content_line(&mut self) -> Result<Option<(usize, &str)>, IoError> {
-        Ok(self
-            .advance()?
-            .map(|(line, range)| (line, &self.buf[range])))
+    /// The name of the input in errors.
+    pub fn name(&self) -> &'p Path {
+        self.name
     }
 
-    /// Reads up to the next content line; its number and where its content is in `buf`.
-    fn advance(&mut self) -> Result<Option<(usize, std::ops::Range<usize>)>, IoError> {
-        loop {
-            self.buf.clear();
-            if !read_line_bytes(&mut self.reader, self.path, &mut self.bytes, self.line + 1)? {
-                return Ok(None);
-            }
-            self.line += 1;
-            match std::str::from_utf8(&self.bytes) {
-                Ok(text) => self.buf.push_str(text),
-                Err(_) => return Err(Location::new(self.path, self.line).error(not_utf8_message())),
-            }
-            let skip = if self.line == 1 {
-                self.buf.len() - strip_bom(&self.buf).len()
-            } else {
-                0
+    /// The number of the last line read (0 before the first).
+    pub fn line(&self) -> usize {
+        self.line
+    }
+
+    /// Reads whole lines into `block[..len]`: at least `target` bytes of lines when the
+    /// input has that many; [`Block::Lines`]`(0)` at the end of the input, [`Block::TooLong`]
+    /// when `target` bytes hold no line break. The bytes after the last line break wait for
+    /// the next call, except at the end of the input. `block` is kept `target` bytes long
+    /// between calls, so it is zeroed once, not per block. The reader counts no lines from
+    /// here on: the caller does (and checks what [`LineReader::next_raw`] checks).
+    pub fn read_block(&mut self, block: &mut Vec<u8>, target: usize) -> Result<Block, IoError> {
+        if self.pending > 0 {
+            self.reader.consume(self.pending);
+            self.pending = 0;
+        }
+        if block.len() < target {
+            block.resize(target, 0);
+        }
+        let mut len = self.carry.len();
+        block[..len].copy_from_slice(&self.carry);
+        self.carry.clear();
+        let mut end = false;
+        while len < target {
+            let read = loop {
+                match self.reader.read(&mut block[len..target]) {
+                    Ok(n) => break n,
+                    Err(e) if e.kind() == std::io::ErrorKind::Interrupted => continue,
+                    Err(e) => return Err(IoError::open(self.name)(e)),
+                }
             };
-            let content = strip_comment(&self.buf[skip..]).trim();
-            if !content.is_empty() {
-                let start = content.as_ptr() as usize - self.buf.as_ptr() as usize;
-                return Ok(Some((self.line, start..start + content.len())));
+            if read == 0 {
+                end = true;
+                break;
             }
+            len += read;
+            self.consumed += read as u64;
         }
+        if !end {
+            let Some(k) = memchr::memrchr(b'\n', &block[..len]) else {
+                return Ok(Block::TooLong);
+            };
+            self.carry.extend_from_slice(&block[k + 1..len]);
+            len = k + 1;
+        }
+        Ok(Block::Lines(len))
     }
 
-    /// The next non-empty row of fields, split at commas (`csv`) or whitespace.
-    pub fn next_row(&mut self, csv: bool) -> Result<Option<(usize, &[String])>, IoError> {
-        loop {
-            let path = self.path;
-            let Some((line, range)) = self.advance()? else {
-                return Ok(None);
-            };
-            let content = &self.buf[range];
-            let fields = &mut self.fields;
-            fields.clear();
-            if !csv {
-                fields.extend(content.split_whitespace().map(str::to_owned));
-            } else if content.contains('"') {
-                let mut reader = csv::ReaderBuilder::new()
-                    .has_headers(false)
-                    .flexible(true)
-                    .trim(csv::Trim::All)
-                    .from_reader(content.as_bytes());
-                let mut record = csv::StringRecord::new();
-                reader
-                    .read_record(&mut record)
-                    .map_err(|e| Location::new(path, line).error(format!("malformed CSV: {e}")))?;
-                fields.extend(record.iter().map(str::to_owned));
-            } else {
-                fields.extend(content.split(',').map(|f| f.trim().to_owned()));
-            }
-            if self.fields.iter().any(|f| !f.is_empty()) {
-                return Ok(Some((line, &self.fields)));
-            }
+    /// How many bytes have been read so far.
+    pub fn consumed(&self) -> u64 {
+        self.consumed
+    }
+
+    /// The next line as bytes, end of line included, NUL bytes and UTF-8 not yet checked
+    /// (see [`check_line`]), and its 1-based number; `None` at the end of the input.
+    pub fn next_raw(&mut self) -> Result<Option<(usize, &[u8])>, IoError> {
+        if self.pending > 0 {
+            self.reader.consume(self.pending);
+            self.pending = 0;
         }
+        let line = self.line + 1;
+        let in_place = loop {
+            match self.reader.fill_buf() {
+                Ok(buf) => break memchr::memchr(b'\n', buf).map(|k| k + 1),
+                Err(e) if e.kind() == std::io::ErrorKind::Interrupted => continue,
+                Err(e) => return Err(IoError::open(self.name)(e)),
+            }
+        };
+        if let Some(len) = in_place {
+            self.line = line;
+            self.consumed += len as u64;
+            self.pending = len;
+            let buf = self.reader.fill_buf().map_err(IoError::open(self.name))?;
+            return Ok(Some((line, &buf[..len])));
+        }
+        if !read_line_bytes(&mut self.reader, self.name, &mut self.bytes, line)? {
+            return Ok(None);
+        }
+        self.line = line;
+        self.consumed += self.bytes.len() as u64;
+        Ok(Some((line, &self.bytes)))
+    }
+
+    /// The next line and its 1-based number; `None` at the end of the input.
+    pub fn next_line(&mut self) -> Result<Option<(usize, &str)>, IoError> {
+        let name = self.name;
+        let Some((line, bytes)) = self.next_raw()? else {
+            return Ok(None);
+        };
+        Ok(Some((line, check_line(name, line, bytes)?)))
     }
 }
 
-/// Opens `path` (`-`: standard input) for one buffered pass, as [`IoError::Open`] on failure.
-pub(crate) fn open_buffered(path: &Path) -> Result<crate::input::Input, IoError> {
-    crate::input::Input::open(path)
+/// Line `line`'s `bytes` (from [`LineReader::next_raw`]) of the input `name` as text without
+/// its end of line, or the error of a line holding a NUL byte or not UTF-8. The byte-order
+/// mark of line 1 is removed.
+pub(crate) fn check_line<'b>(
+    name: &Path,
+    line: usize,
+    bytes: &'b [u8],
+) -> Result<&'b str, IoError> {
+    let at = Location::new(name, line);
+    if memchr::memchr(0, bytes).is_some() {
+        return Err(at.error("binary data (a NUL byte): expected a text file, one line per record"));
+    }
+    let Ok(text) = std::str::from_utf8(bytes) else {
+        return Err(at.error(not_utf8_message()));
+    };
+    let text = text.strip_suffix('\n').unwrap_or(text);
+    let text = text.strip_suffix('\r').unwrap_or(text);
+    Ok(if line == 1 { strip_bom(text) } else { text })
+}
+
+/// [`crate::input::check_held`] for a reader at line `line` of `name`: the cap's error names
+/// the line where the input outgrew it.
+pub(crate) fn check_held_at(name: &Path, line: usize, bytes: u128) -> Result<(), IoError> {
+    crate::input::check_held(name, bytes).map_err(|e| match e {
+        IoError::Data { message, .. } => Location::new(name, line).error(message),
+        other => other,
+    })
+}
+
+/// What [`LineReader::read_block`] read.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Block {
+    /// Whole lines, this many bytes of them (0: the end of the input).
+    Lines(usize),
+    /// A line longer than a block.
+    TooLong,
+}
+
+/// The error of line `line` of `name` when it is longer than [`MAX_LINE_BYTES`].
+pub(crate) fn too_long(name: &Path, line: usize) -> IoError {
+    Location::new(name, line).error(format!(
+        "line longer than {} MiB: not a text file of records, or a file without line breaks",
+        MAX_LINE_BYTES >> 20
+    ))
+}
+
+/// The fields of a line's `content` (comment already stripped): split at commas (`csv`,
+/// trimmed; a line with a double quote is read with the `csv` crate, so quoted fields work as
+/// in [`csv_rows`]) or at whitespace. `at` locates a malformed quoted line.
+pub(crate) fn split_fields(
+    content: &str,
+    csv: bool,
+    at: Location<'_>,
+) -> Result<Vec<String>, IoError> {
+    if !csv {
+        return Ok(content.split_whitespace().map(str::to_owned).collect());
+    }
+    if !content.contains('"') {
+        return Ok(content.split(',').map(|f| f.trim().to_owned()).collect());
+    }
+    let mut reader = csv::ReaderBuilder::new()
+        .has_headers(false)
+        .flexible(true)
+        .trim(csv::Trim::All)
+        .from_reader(content.as_bytes());
+    let mut record = csv::StringRecord::new();
+    reader
+        .read_record(&mut record)
+        .map_err(|e| at.error(format!("malformed CSV: {}", excerpt(&e.to_string()))))?;
+    Ok(record.iter().map(str::to_owned).collect())
+}
+
+/// The first field of `content` split at whitespace or commas: what tells a row (damaged or
+/// not) from text.
+pub(crate) fn first_token(content: &str) -> Option<&str> {
+    content
+        .split(|c: char| c == ',' || c.is_whitespace())
+        .find(|f| !f.is_empty())
+}
+
+/// True when `field` is a number or looks like one meant to be: only digits, signs, points,
+/// exponent letters and parentheses, with a digit or a point (`0.5`, `......`, `(0.0022)`).
+/// A line starting with such a field is a data row, damaged or not, never a note.
+pub(crate) fn looks_numeric(field: &str) -> bool {
+    is_number(field)
+        || (field.bytes().any(|b| b.is_ascii_digit() || b == b'.')
+            && field
+                .bytes()
+                .all(|b| b.is_ascii_digit() || b"+-.eE()".contains(&b)))
 }
 
 /// The 0-based positions of the columns `names` in the header row `header` of `path` (names
@@ -275,8 +376,14 @@ pub(crate) fn parse_coordinate(
 ) -> Result<f64, IoError> {
     match field.trim().parse::<f64>() {
         Ok(v) if v.is_finite() => Ok(v),
-        Ok(_) => Err(at.error(format!("non-finite value '{field}' in column {column}"))),
-        Err(_) => Err(at.error(format!("'{field}' is not a number (column {column})"))),
+        Ok(_) => Err(at.error(format!(
+            "non-finite value '{}' in column {column}",
+            excerpt(field)
+        ))),
+        Err(_) => Err(at.error(format!(
+            "'{}' is not a number (column {column})",
+            excerpt(field)
+        ))),
     }
 }
 
@@ -286,16 +393,30 @@ mod tests {
 
     #[test]
     fn rows_keep_physical_line_numbers() {
-        let text = "# c\n\n1 2 # x\n  \n3\t4\n";
-        let rows = whitespace_rows(text);
-        assert_eq!(rows.len(), 2);
-        assert_eq!((rows[0].line, rows[1].line), (3, 5));
-        assert_eq!(rows[1].fields, ["3", "4"]);
         let rows = csv_rows("# c\n\nx, y # names\n , \n1,2\n", Path::new("a")).unwrap();
         assert_eq!(rows.len(), 2);
         assert_eq!((rows[0].line, rows[1].line), (3, 5));
         assert_eq!(rows[0].fields, ["x", "y"]);
-        assert_eq!(first_content_line(text), Some((3, "1 2")));
+    }
+
+    #[test]
+    fn lines_come_without_their_ends_and_the_mark() {
+        let mut lines = LineReader::new(&b"\xef\xbb\xbfa b\r\n\n3 4"[..], Path::new("f"));
+        assert_eq!(lines.next_line().unwrap(), Some((1, "a b")));
+        assert_eq!(lines.next_line().unwrap(), Some((2, "")));
+        assert_eq!(lines.next_line().unwrap(), Some((3, "3 4")));
+        assert_eq!(lines.next_line().unwrap(), None);
+        assert_eq!(lines.consumed(), 12);
+    }
+
+    #[test]
+    fn numbers_and_placeholders_look_numeric() {
+        for f in ["0.5", "-1e-3", "......", "(0.0022)", "nan", "1.2.3"] {
+            assert!(looks_numeric(f), "{f}");
+        }
+        for f in ["ZZ", "Thickness:", "7.99%", "http://x", "e", "-"] {
+            assert!(!looks_numeric(f), "{f}");
+        }
     }
 
     #[test]

@@ -12,11 +12,14 @@ use std::path::Path;
 use karkas::Grid;
 
 use crate::error::{data_error, IoError};
+use crate::input::display_name;
+use crate::input::excerpt;
 use crate::lines::{csv_rows, header_columns, read_text, row_location, strip_bom};
 
-/// Reads the mask file at `path` for a `rows x cols` grid: `true` for every listed cell.
+/// Reads the mask file at `path` (`-`: standard input) for a `rows x cols` grid: `true` for
+/// every listed cell.
 pub fn read_cell_mask(path: &Path, rows: usize, cols: usize) -> Result<Grid<bool>, IoError> {
-    parse_cell_mask(&read_text(path)?, path, rows, cols)
+    parse_cell_mask(&read_text(path)?, &display_name(path), rows, cols)
 }
 
 /// Reads a cell mask from `text` already in memory; `path` names the file in messages.
@@ -42,7 +45,8 @@ pub fn parse_cell_mask(
             let field = &row.fields[k];
             let value: usize = field.parse().map_err(|_| {
                 at.error(format!(
-                    "'{field}' is not a non-negative integer (column {}, '{name}')",
+                    "'{}' is not a non-negative integer (column {}, '{name}')",
+                    excerpt(field),
                     k + 1
                 ))
             })?;

@@ -13,6 +13,8 @@ use std::path::Path;
 use karkas::{Point, Point3};
 
 use crate::error::{data_error, IoError, Location};
+use crate::input::display_name;
+use crate::input::excerpt;
 use crate::lines::{
     csv_rows, header_columns, parse_coordinate, read_text, row_location, strip_bom, Row,
 };
@@ -29,9 +31,9 @@ pub struct CurveFamily {
     pub first_lines: Vec<usize>,
 }
 
-/// Reads the curve family of the CSV file at `path`.
+/// Reads the curve family of the CSV file at `path` (`-`: standard input).
 pub fn read_curve_family(path: &Path) -> Result<CurveFamily, IoError> {
-    parse_curve_family(&read_text(path)?, path)
+    parse_curve_family(&read_text(path)?, &display_name(path))
 }
 
 /// Reads a curve family from CSV `text` already in memory; `path` names the file in error
@@ -113,7 +115,7 @@ impl Columns {
         let id = field(0).parse::<usize>().map_err(|_| {
             at.error(format!(
                 "'{}' is not a curve number (a non-negative integer, column {})",
-                field(0),
+                excerpt(field(0)),
                 self.index[0] + 1
             ))
         })?;

@@ -1,31 +1,39 @@
 //! Reading an ordered list of curve points.
 //!
 //! The user's points come in whatever a spreadsheet, a script or an airfoil database produced,
-//! so the format is recognised from the content rather than trusted from the extension:
+//! so the format is recognised from the content rather than trusted from the extension. The
+//! first content line (neither blank nor a `#` comment) decides:
 //!
-//! - an airfoil `.dat` (Selig or Lednicer, see [`crate::airfoil`]): a `.dat` file, or any file
-//!   without commas, whose first line is a name rather than numbers (or a column header
-//!   naming `x` and `y`);
-//! - CSV, read with the `csv` crate, when the first data line contains a comma;
-//! - otherwise whitespace-separated columns (hand-split: there is nothing to a whitespace split
-//!   that a crate would add).
+//! - numbers: the first row of a column file, CSV when it holds a comma, else whitespace
+//!   columns; two columns are planar points, three spatial ones;
+//! - a header naming `x` and `y` (an optional `z` makes the points spatial): a column file
+//!   whose columns are then taken by name, so the `t,x,y[,z]` files of
+//!   [`crate::write::write_curve_csv`] read back as points;
+//! - anything else is a name, and the file an airfoil ([`crate::airfoil`]: Selig or
+//!   Lednicer), whatever the extension and even with a comma in the name, when its data lines
+//!   are whitespace pairs (or the file is a `.dat`); followed by comma-separated rows it is
+//!   a CSV header that names no `x` and `y` columns, an error.
 //!
-//! In the two column formats `#` starts a comment and blank lines are skipped. The first line
-//! may be a header (it is one when any of its fields is not a number); a header must name an
-//! `x` and a `y` column (an optional `z` makes the points spatial), which are then taken by name,
-//! so the `t,x,y[,z]` files of [`crate::write::write_curve_csv`] read back as points. Without a
-//! header, two columns are planar points and three are spatial ones.
+//! Column files follow the rules of [`crate::columns`]: `#` comments and blank lines
+//! skipped, notes after the data ignored, damaged rows refused naming their line.
+//!
+//! Every input is opened once and read in one pass ([`crate::input::Input`]; `-` is standard
+//! input, named `<stdin>` in messages), so pipes, FIFOs and `<(...)` work. Memory is the
+//! points themselves plus one line ([`crate::store`]), charged against the memory cap.
 
 use std::io::BufRead;
 use std::path::Path;
 
-use karkas::{Point, Point2, Point3};
+use karkas::{Point2, Point3};
 
-use crate::airfoil::parse_airfoil;
-use crate::error::{data_error, IoError, Location};
+use crate::airfoil::AirfoilReader;
+use crate::columns::{read_columns, Either, Layout};
+use crate::error::{IoError, Location};
+use crate::input::{display_name, excerpt, Input};
 use crate::lines::{
-    first_content_line, is_number, open_buffered, parse_coordinate, read_text, strip_bom, RowReader,
+    check_held_at, first_token, is_number, looks_numeric, strip_comment, LineReader,
 };
+use crate::store::{input_size, Flat, Store};
 
 /// An ordered list of curve points, planar or spatial as the file says.
 #[derive(Clone, Debug, PartialEq)]
@@ -59,192 +67,118 @@ impl CurvePoints {
     }
 }
 
-/// Reads the curve points of the file at `path` (see the [module docs](self) for the formats).
-///
-/// Column files are streamed line by line: memory is the points themselves (16 or 24 bytes
-/// each) plus one line. Only a file whose first line is a name (an airfoil `.dat`, small by
-/// nature) is read whole.
+/// Reads the curve points of the file at `path` (`-`: standard input; see the
+/// [module docs](self) for the formats), in one pass.
 pub fn read_curve_points(path: &Path) -> Result<CurvePoints, IoError> {
-    let mut rows = RowReader::new(open_buffered(path)?, path);
-    let Some((_, first)) = rows.next_content_line()? else {
-        return Err(data_error(path, "no points found"));
-    };
-    if first_line_is_a_name(first) {
-        return parse_curve_points(&read_text(path)?, path);
-    }
-    let csv = first.contains(',');
-    points_from_rows(RowReader::new(open_buffered(path)?, path), csv, path)
+    let name = display_name(path);
+    let mut lines = LineReader::new(Input::open(path)?, &name);
+    Ok(
+        match read_any::<_, Vec<Point2>, Vec<Point3>>(&mut lines, path, input_size(path))? {
+            Either::Planar(p) => CurvePoints::Planar(p),
+            Either::Spatial(p) => CurvePoints::Spatial(p),
+        },
+    )
 }
 
-/// Reads the curve points of the file at `path` as one flat array of coordinates, point after
-/// point, and the dimension (2 or 3): the layout NumPy takes without a copy.
+/// Reads the curve points of the file at `path` (`-`: standard input) as one flat array of
+/// coordinates, point after point, and the dimension (2 or 3): the layout NumPy takes without
+/// a copy. Column files are parsed straight into the array.
 pub fn read_curve_coordinates(path: &Path) -> Result<(Vec<f64>, usize), IoError> {
-    Ok(match read_curve_points(path)? {
-        CurvePoints::Planar(p) => (p.iter().flat_map(|q| q.0).collect(), 2),
-        CurvePoints::Spatial(p) => (p.iter().flat_map(|q| q.0).collect(), 3),
-    })
+    let name = display_name(path);
+    let mut lines = LineReader::new(Input::open(path)?, &name);
+    Ok(
+        match read_any::<_, Flat, Flat>(&mut lines, path, input_size(path))? {
+            Either::Planar(p) => (p.0, 2),
+            Either::Spatial(p) => (p.0, 3),
+        },
+    )
 }
 
 /// Reads curve points from `text` already in memory; `path` names the file in error messages
 /// and its extension (`.dat`) takes part in recognising the format.
 pub fn parse_curve_points(text: &str, path: &Path) -> Result<CurvePoints, IoError> {
-    let text = strip_bom(text);
-    let Some((_, first)) = first_content_line(text) else {
-        return Err(data_error(path, "no points found"));
+    let mut lines = LineReader::new(text.as_bytes(), path);
+    Ok(
+        match read_any::<_, Vec<Point2>, Vec<Point3>>(&mut lines, path, Some(text.len() as u64))? {
+            Either::Planar(p) => CurvePoints::Planar(p),
+            Either::Spatial(p) => CurvePoints::Spatial(p),
+        },
+    )
+}
+
+/// Reads the points of `lines` (the input `path`, of `size` bytes when known) into the store
+/// of their dimension.
+fn read_any<R: BufRead + Send, A: Store<2>, B: Store<3>>(
+    lines: &mut LineReader<'_, R>,
+    path: &Path,
+    size: Option<u64>,
+) -> Result<Either<A, B>, IoError> {
+    let name = lines.name();
+    let first = loop {
+        let Some((line, text)) = lines.next_line()? else {
+            return Err(crate::error::data_error(name, "no points found"));
+        };
+        let content = strip_comment(text).trim();
+        if !content.is_empty() {
+            break (line, content.to_owned(), text.trim().to_owned());
+        }
+        if line.is_multiple_of(4096) {
+            // Skipped lines count against the cap, so that an endless stream of them ends.
+            check_held_at(name, line, u128::from(lines.consumed()))?;
+        }
     };
-    if looks_like_airfoil(text, first, path) {
-        return Ok(CurvePoints::Planar(parse_airfoil(text, path)?.points));
+    let (line, content, whole) = first;
+    if !first_line_is_a_name(&content) {
+        let layout = Layout::from_first_line(&content, line, name)?;
+        return read_columns(lines, layout, size);
     }
-    let csv = first.contains(',');
-    points_from_rows(RowReader::new(text.as_bytes(), path), csv, path)
-}
-
-/// True when the first content line is neither numbers, nor comma-separated, nor a column
-/// header naming `x` and `y`: the name line of an airfoil (or a mistake).
-fn first_line_is_a_name(first: &str) -> bool {
-    if first.contains(',') || first.split_whitespace().all(is_number) {
-        return false;
-    }
-    let fields: Vec<String> = first.split_whitespace().map(str::to_owned).collect();
-    Columns::from_header(&fields).is_none()
-}
-
-/// True when the file should be read as an airfoil `.dat`: its first line is a name (not
-/// numbers, not a column header naming `x` and `y`) and it is either a `.dat` or has no comma.
-fn looks_like_airfoil(text: &str, first: &str, path: &Path) -> bool {
+    // A name: an airfoil, unless comma-separated rows follow (a CSV header without x and y).
     let is_dat = path
         .extension()
         .is_some_and(|e| e.eq_ignore_ascii_case("dat"));
-    first_line_is_a_name(first) && (is_dat || !text.contains(','))
-}
-
-/// Which fields of a row hold x, y and (for spatial points) z, 0-based.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-struct Columns {
-    x: usize,
-    y: usize,
-    z: Option<usize>,
-}
-
-impl Columns {
-    /// The columns named `x`, `y` and optionally `z` (case-insensitive) in a header; `None`
-    /// unless both `x` and `y` are there.
-    fn from_header(fields: &[String]) -> Option<Columns> {
-        let find = |name: &str| fields.iter().position(|f| f.eq_ignore_ascii_case(name));
-        Some(Columns {
-            x: find("x")?,
-            y: find("y")?,
-            z: find("z"),
-        })
-    }
-}
-
-/// The points of a stream of rows: an optional header, then data rows of equal length.
-fn points_from_rows<R: BufRead>(
-    mut rows: RowReader<'_, R>,
-    csv: bool,
-    path: &Path,
-) -> Result<CurvePoints, IoError> {
-    let at = |line| Location::new(path, line);
-    let Some((first_line, first)) = rows.next_row(csv)? else {
-        return Err(data_error(path, "no points found"));
-    };
-    let width = first.len();
-    let has_header = !first.iter().all(|f| is_number(f));
-    let columns = if has_header {
-        let columns = Columns::from_header(first).ok_or_else(|| {
-            at(first_line).error(format!(
-                "the header '{}' names no 'x' and 'y' columns",
-                first.join(",")
-            ))
-        })?;
-        if let Some(name) = duplicated_name(first) {
-            return Err(at(first_line).error(format!("the header names column '{name}' twice")));
-        }
-        columns
-    } else {
-        match width {
-            2 => Columns {
-                x: 0,
-                y: 1,
-                z: None,
-            },
-            3 => Columns {
-                x: 0,
-                y: 1,
-                z: Some(2),
-            },
-            n => {
-                return Err(at(first_line).error(format!(
-                    "expected 2 columns (x y) or 3 columns (x y z), found {n}"
-                )))
+    let mut airfoil = AirfoilReader::new(name);
+    airfoil.feed(line, &whole)?;
+    let mut decided = is_dat;
+    while let Some((next, text)) = lines.next_line()? {
+        if !decided {
+            let row = strip_comment(text).trim();
+            if first_token(row).is_some_and(looks_numeric) {
+                if row.contains(',') {
+                    return Err(Location::new(name, line).error(format!(
+                        "the header '{}' names no 'x' and 'y' columns",
+                        excerpt(&content)
+                    )));
+                }
+                decided = true;
             }
         }
-    };
-    let first_data = if has_header {
-        None
+        airfoil.feed(next, text)?;
+        if next.is_multiple_of(4096) {
+            check_held_at(name, next, u128::from(lines.consumed()))?;
+        }
+    }
+    let points = airfoil.finish()?.points;
+    let mut store = A::default();
+    store.reserve_exact(points.len());
+    for p in points {
+        store.push(p.0);
+    }
+    Ok(Either::Planar(store))
+}
+
+/// True when the first content line is neither numbers nor a column header naming `x` and
+/// `y` (split at commas when it holds one, else at whitespace): the name line of an airfoil
+/// (or a mistake).
+fn first_line_is_a_name(first: &str) -> bool {
+    let fields: Vec<String> = if first.contains(',') {
+        first.split(',').map(|f| f.trim().to_owned()).collect()
     } else {
-        Some((first_line, first.to_vec()))
+        first.split_whitespace().map(str::to_owned).collect()
     };
-    match columns.z {
-        None => collect_points(rows, csv, first_data, width, [columns.x, columns.y], path)
-            .map(CurvePoints::Planar),
-        Some(z) => collect_points(
-            rows,
-            csv,
-            first_data,
-            width,
-            [columns.x, columns.y, z],
-            path,
-        )
-        .map(CurvePoints::Spatial),
+    if fields.iter().all(|f| is_number(f)) {
+        return false;
     }
-}
-
-/// The points of the data rows (`first`, if the first row was data, then the rest of
-/// `rows`), coordinate `k` from field `columns[k]`; every row `width` fields long.
-fn collect_points<R: BufRead, const D: usize>(
-    mut rows: RowReader<'_, R>,
-    csv: bool,
-    first: Option<(usize, Vec<String>)>,
-    width: usize,
-    columns: [usize; D],
-    path: &Path,
-) -> Result<Vec<Point<D>>, IoError> {
-    let mut points = Vec::new();
-    let mut push = |line: usize, fields: &[String]| -> Result<(), IoError> {
-        let at = Location::new(path, line);
-        if fields.len() != width {
-            return Err(at.error(format!("expected {width} fields, found {}", fields.len())));
-        }
-        let mut p = [0.0; D];
-        for (c, &k) in p.iter_mut().zip(&columns) {
-            *c = parse_coordinate(&fields[k], k + 1, at)?;
-        }
-        points.push(Point(p));
-        Ok(())
-    };
-    if let Some((line, fields)) = first {
-        push(line, &fields)?;
-    }
-    while let Some((line, fields)) = rows.next_row(csv)? {
-        push(line, fields)?;
-    }
-    if points.is_empty() {
-        return Err(data_error(path, "no points found"));
-    }
-    Ok(points)
-}
-
-/// A coordinate column name (`x`, `y`, `z`) that a header gives twice, if any.
-fn duplicated_name(fields: &[String]) -> Option<&'static str> {
-    ["x", "y", "z"].into_iter().find(|name| {
-        fields
-            .iter()
-            .filter(|f| f.eq_ignore_ascii_case(name))
-            .count()
-            > 1
-    })
+    crate::columns::Columns::from_header(&fields).is_none()
 }
 
 #[cfg(test)]
@@ -252,31 +186,17 @@ mod tests {
     use super::*;
 
     #[test]
-    fn header_columns_are_found_by_name() {
-        let h = |s: &str| s.split(',').map(str::to_owned).collect::<Vec<_>>();
-        assert_eq!(
-            Columns::from_header(&h("t,X,y")),
-            Some(Columns {
-                x: 1,
-                y: 2,
-                z: None
-            })
-        );
-        assert_eq!(
-            Columns::from_header(&h("z,y,x")),
-            Some(Columns {
-                x: 2,
-                y: 1,
-                z: Some(0)
-            })
-        );
-        assert_eq!(Columns::from_header(&h("a,b")), None);
-        assert_eq!(duplicated_name(&h("x,y,x")), Some("x"));
-    }
-
-    #[test]
     fn dimension_and_length() {
         let p = parse_curve_points("1 2 3\n4 5 6\n", Path::new("p.txt")).unwrap();
         assert_eq!((p.dim(), p.len(), p.is_empty()), (3, 2, false));
+    }
+
+    #[test]
+    fn names_and_headers_are_told_apart() {
+        assert!(first_line_is_a_name("NACA 63,3-418"));
+        assert!(first_line_is_a_name("a,b"));
+        assert!(!first_line_is_a_name("t, X ,y"));
+        assert!(!first_line_is_a_name("x y z"));
+        assert!(!first_line_is_a_name("1,2"));
     }
 }

@@ -10,24 +10,24 @@ use std::path::Path;
 use karkas::Point3;
 
 use crate::error::{data_error, IoError};
+use crate::input::display_name;
 use crate::lines::read_text;
 pub use crate::mesh::obj::parse_obj_vertices;
-use crate::points::{parse_curve_points, CurvePoints};
+use crate::points::{read_curve_points, CurvePoints};
 
 /// Reads the points of `path`: OBJ vertices for `.obj`, otherwise CSV/whitespace columns
-/// with `x`, `y`, `z` (see [`crate::points`]).
+/// with `x`, `y`, `z` (see [`crate::points`]), read in one pass; `-` is standard input.
 pub fn read_point_set(path: &Path) -> Result<Vec<Point3>, IoError> {
-    let text = read_text(path)?;
     let is_obj = path
         .extension()
         .is_some_and(|e| e.eq_ignore_ascii_case("obj"));
     if is_obj {
-        return parse_obj_vertices(&text, path);
+        return parse_obj_vertices(&read_text(path)?, path);
     }
-    match parse_curve_points(&text, path)? {
+    match read_curve_points(path)? {
         CurvePoints::Spatial(points) => Ok(points),
         CurvePoints::Planar(_) => Err(data_error(
-            path,
+            &display_name(path),
             "the points have two coordinates; a point set in space needs x, y, z",
         )),
     }

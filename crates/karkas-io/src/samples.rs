@@ -9,12 +9,14 @@ use std::path::Path;
 use karkas::{Grid, Point3};
 
 use crate::error::{data_error, IoError, Location};
+use crate::input::display_name;
 use crate::lines::{csv_rows, parse_coordinate, read_text, strip_bom};
 
-/// Reads a sampled surface CSV (header `u,v,x,y,z`, `u` outer, as the surface commands write
-/// it) back into its grid: the rows of one `u` value form one grid row.
+/// Reads a sampled surface CSV file (`-`: standard input; header `u,v,x,y,z`, `u` outer, as
+/// the surface commands write it) back into its grid: the rows of one `u` value form one grid
+/// row.
 pub fn read_surface_samples(path: &Path) -> Result<Grid<Point3>, IoError> {
-    parse_surface_samples(&read_text(path)?, path)
+    parse_surface_samples(&read_text(path)?, &display_name(path))
 }
 
 /// Reads a sampled surface from CSV `text` (see [`read_surface_samples`]).

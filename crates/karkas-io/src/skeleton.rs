@@ -16,6 +16,7 @@ use karkas::{Grid, Point3};
 
 use crate::error::IoError;
 use crate::grid::{parse_indexed, IndexedLayout};
+use crate::input::display_name;
 use crate::lines::read_text;
 
 /// The layout of a file of curves along a tube.
@@ -55,9 +56,10 @@ fn sample_error(
     }
 }
 
-/// Reads the curves along a tube (`i,q,x,y,z`) from `path`: row `i` of the grid is `f_i`.
+/// Reads the curves along a tube (`i,q,x,y,z`) from `path` (`-`: standard input): row `i`
+/// of the grid is `f_i`.
 pub fn read_along_curves(path: &Path) -> Result<Grid<Point3>, IoError> {
-    parse_along_curves(&read_text(path)?, path)
+    parse_along_curves(&read_text(path)?, &display_name(path))
 }
 
 /// Reads curves along a tube from `text` already in memory; `path` names it in errors.
@@ -65,9 +67,10 @@ pub fn parse_along_curves(text: &str, path: &Path) -> Result<Grid<Point3>, IoErr
     parse_indexed(text, path, &ALONG)
 }
 
-/// Reads the curves across a tube (`j,p,x,y,z`) from `path`: row `j` of the grid is `g_j`.
+/// Reads the curves across a tube (`j,p,x,y,z`) from `path` (`-`: standard input): row `j`
+/// of the grid is `g_j`.
 pub fn read_across_curves(path: &Path) -> Result<Grid<Point3>, IoError> {
-    parse_across_curves(&read_text(path)?, path)
+    parse_across_curves(&read_text(path)?, &display_name(path))
 }
 
 /// Reads curves across a tube from `text` already in memory; `path` names it in errors.

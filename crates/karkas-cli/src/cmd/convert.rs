@@ -21,10 +21,12 @@ use crate::output::target::{output_format, shown};
 use anyhow::{bail, Context, Result};
 use clap::Args;
 use karkas::{Grid, Point3};
+use karkas_io::grid::parse_grid;
+use karkas_io::input::{display_name, Input as Source};
 use karkas_io::mesh::TriangleMesh;
-use karkas_io::mesh::{read_mesh, write_mesh_as, MeshOptions};
-use karkas_io::points::{read_curve_points, CurvePoints};
-use karkas_io::samples::read_surface_samples;
+use karkas_io::mesh::{read_mesh, read_mesh_from, write_mesh_as, MeshOptions};
+use karkas_io::points::{parse_curve_points, CurvePoints};
+use karkas_io::samples::parse_surface_samples;
 use karkas_io::svg::CurveOverlay;
 use karkas_io::viewer::{write_viewer_html, ViewerMesh, ViewerScene};
 use karkas_io::write::write_grid_csv;
@@ -180,7 +182,8 @@ fn write_any_mesh(
     Ok(())
 }
 
-/// Reads `path` as a mesh, a grid or a curve (see the module docs).
+/// Reads `path` as a mesh, a grid or a curve (see the module docs). A text input (`-`:
+/// standard input) is read once: its header decides which reader parses the text.
 fn read_input(path: &Path) -> Result<Input> {
     let ext = path
         .extension()
@@ -189,42 +192,61 @@ fn read_input(path: &Path) -> Result<Input> {
     if matches!(ext.as_deref(), Some("obj" | "stl" | "ply")) {
         return Ok(Input::Mesh(read_mesh(path)?));
     }
-    match csv_header(path).as_deref() {
+    let mut input = Source::open(path)?;
+    if karkas_io::input::is_stdin(path) && looks_like_a_mesh(&mut input)? {
+        return Ok(Input::Mesh(read_mesh_from(input, None)?));
+    }
+    let text = input.read_text()?;
+    let name = display_name(path);
+    match csv_header(&text).as_deref() {
         Some(h) if h.contains(&"i".to_owned()) && h.contains(&"j".to_owned()) => {
-            Ok(Input::Grid(karkas_io::grid::read_grid(path)?, true))
+            Ok(Input::Grid(parse_grid(&text, &name)?, true))
         }
         Some(h) if h.contains(&"u".to_owned()) && h.contains(&"v".to_owned()) => {
-            Ok(Input::Grid(read_surface_samples(path)?, false))
+            Ok(Input::Grid(parse_surface_samples(&text, &name)?, false))
         }
-        _ => Ok(match read_curve_points(path)? {
+        _ => Ok(match parse_curve_points(&text, &name)? {
             CurvePoints::Planar(points) => Input::Curve(to_space(&points), true),
             CurvePoints::Spatial(points) => Input::Curve(points, false),
         }),
     }
 }
 
-/// The lower-case fields of the first content line of a CSV file with a header (a line with
-/// a field that is not a number); `None` when there is none or the file cannot be read (the
-/// reader that follows reports that). Reads only up to that line, each line bounded, so a
-/// huge file costs nothing here; standard input, read once, is not looked at.
-fn csv_header(path: &Path) -> Option<Vec<String>> {
-    if karkas_io::input::is_stdin(path) {
-        return None;
-    }
-    let mut input = karkas_io::input::Input::open(path).ok()?;
-    let (mut bytes, mut text) = (Vec::new(), String::new());
-    let mut number = 0;
-    let line = loop {
-        number += 1;
-        if !input.read_line(&mut bytes, &mut text, number).ok()? {
-            return None;
+/// True when the first bytes of standard input (looked at, not consumed) are a mesh: a first
+/// line `ply` or `solid ...`, binary data, or a first content line that is an OBJ statement
+/// (`v`, `vn`, `vt`, `f`, `o`, `g`, `s`, `mtllib`, `usemtl`). Files are told by extension.
+fn looks_like_a_mesh(input: &mut Source) -> Result<bool> {
+    use std::io::BufRead;
+    let name = input.name.clone();
+    let prefix = input
+        .fill_buf()
+        .with_context(|| format!("cannot read {}", name.display()))?;
+    let prefix = &prefix[..prefix.len().min(karkas_io::mesh::SNIFF_BYTES)];
+    Ok(match karkas_io::mesh::sniff_mesh_format(prefix) {
+        karkas_io::mesh::MeshFormat::Obj => {
+            let text = String::from_utf8_lossy(prefix);
+            let first = text
+                .lines()
+                .map(|l| l.split('#').next().unwrap_or("").trim())
+                .find(|l| !l.is_empty());
+            first
+                .and_then(|l| l.split_whitespace().next())
+                .is_some_and(|k| {
+                    ["v", "vn", "vt", "f", "o", "g", "s", "mtllib", "usemtl"].contains(&k)
+                })
         }
-        let line = text.trim_start_matches('\u{feff}');
-        let line = line.split('#').next().unwrap_or("").trim();
-        if !line.is_empty() {
-            break line.to_owned();
-        }
-    };
+        _ => true,
+    })
+}
+
+/// The lower-case fields of the first content line of CSV `text` with a header (a line with
+/// a field that is not a number); `None` when there is none.
+fn csv_header(text: &str) -> Option<Vec<String>> {
+    let line = text
+        .trim_start_matches('\u{feff}')
+        .lines()
+        .map(|l| l.split('#').next().unwrap_or("").trim())
+        .find(|l| !l.is_empty())?;
     let fields: Vec<String> = line
         .split(',')
         .map(|f| f.trim().to_ascii_lowercase())

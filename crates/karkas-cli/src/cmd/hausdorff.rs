@@ -8,7 +8,10 @@ use karkas::measure::{
     distance_to_implicit, hausdorff_sets, DirectedDistance, Hausdorff, PointCloud,
 };
 use karkas::Point3;
+use karkas_io::input::display_name;
 use karkas_io::pointset::read_point_set;
+
+use crate::input::one_standard_input;
 use std::path::PathBuf;
 
 /// Arguments of `karkas hausdorff`.
@@ -26,6 +29,9 @@ pub struct HausdorffArgs {
 /// Runs `karkas hausdorff`.
 pub fn run(args: &HausdorffArgs) -> Result<()> {
     let a_path = &args.inputs[0];
+    if let Some(b_path) = args.inputs.get(1) {
+        one_standard_input(&[("A", a_path), ("B", b_path)])?;
+    }
     let a = read_point_set(a_path)?;
     let (h, b_name, b_count) = match (&args.expr, args.inputs.get(1)) {
         (Some(_), Some(_)) => bail!("give either two files or one file and --expr, not both"),
@@ -33,11 +39,11 @@ pub fn run(args: &HausdorffArgs) -> Result<()> {
         (None, Some(b_path)) => {
             let b = read_point_set(b_path)?;
             let h = hausdorff_sets(&a, &b)?;
-            (h, b_path.display().to_string(), Some(b.len()))
+            (h, display_name(b_path).display().to_string(), Some(b.len()))
         }
         (Some(expr), None) => {
             let surface = ExpressionSurface::parse(expr).context("--expr")?;
-            let a_name = || a_path.display().to_string();
+            let a_name = || display_name(a_path).display().to_string();
             let forward = distance_to_implicit(&a, &surface).with_context(a_name)?;
             // The implicit side is the patch A covers: the closest points of A's points.
             let feet: Vec<Point3> = a
@@ -54,7 +60,7 @@ pub fn run(args: &HausdorffArgs) -> Result<()> {
             )
         }
     };
-    let a_name = a_path.display().to_string();
+    let a_name = display_name(a_path).display().to_string();
     let lines = format!(
         "hausdorff {}\n{}\n{}\n",
         h.distance,

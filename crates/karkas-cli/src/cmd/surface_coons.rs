@@ -6,6 +6,7 @@
 //! node values in `[0, 1]`); the surface's parameters `u`, `v` are those node values.
 
 use crate::args::{GridSamples, MeshOutput};
+use crate::input::one_standard_input;
 use crate::output::cad::write_cad_surface;
 use crate::output::formats::EXACT_SURFACE_FORMATS;
 use crate::output::overwrite::ensure_distinct;
@@ -94,6 +95,13 @@ pub fn run(args: &SurfaceCoonsArgs) -> Result<()> {
     if with_derivs && !matches!(args.kind, Kind::Bicubic | Kind::Composite) {
         bail!("--u-derivs and --v-derivs are used only by --kind bicubic and composite");
     }
+    let mut named = vec![
+        ("--u-curves", args.u_curves.as_path()),
+        ("--v-curves", &args.v_curves),
+    ];
+    named.extend(args.u_derivs.as_deref().map(|p| ("--u-derivs", p)));
+    named.extend(args.v_derivs.as_deref().map(|p| ("--v-derivs", p)));
+    one_standard_input(&named)?;
     let inputs = [&args.u_curves, &args.v_curves]
         .into_iter()
         .chain(args.u_derivs.as_ref())

@@ -2,6 +2,7 @@
 //! by formula (3) of Malozemov et al. (docs/methods.md §3).
 
 use crate::args::{check_dps_order, check_dps_step, MeshOutput};
+use crate::input::one_standard_input;
 use crate::output::cad::refuse_cad_for_discrete;
 use crate::output::formats::SURFACE_FORMATS;
 use crate::output::memory::{check_memory, surface_output_bytes};
@@ -58,6 +59,7 @@ pub fn run(args: &SurfaceDpsTubeArgs) -> Result<()> {
     check_dps_order("--r2", args.r2)?;
     check_dps_step("--n1", args.n1)?;
     check_dps_step("--n2", args.n2)?;
+    one_standard_input(&[("--along", &args.along), ("--across", &args.across)])?;
     ensure_distinct(&args.along, &args.output)?;
     ensure_distinct(&args.across, &args.output)?;
     let along = read_along_curves(&args.along)?;

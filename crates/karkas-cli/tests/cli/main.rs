@@ -13,6 +13,7 @@ mod export;
 mod hausdorff;
 mod meshes;
 mod output_bounds;
+mod reading;
 mod section;
 mod surface_bicubic;
 mod surface_coons;

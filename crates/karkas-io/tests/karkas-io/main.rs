@@ -9,6 +9,7 @@ mod mesh_files;
 mod network;
 mod obj;
 mod points;
+mod reading;
 mod robustness;
 mod skeleton;
 mod stl;
