@@ -18,8 +18,10 @@
 //! - the data end at the first line that is not a pair: that line and the rest of the file
 //!   are notes (a URL, `Thickness: 7.99%`, a table of coefficients, `ZZ`), ignored;
 //! - refused, naming the line: a would-be pair that is damaged (a line whose first field is
-//!   or looks like a number, `0.5 abc`, `......`, `(0.0022)`; among the data also two fields
-//!   one of which is a number, `x 0.5`), and a pair after the notes.
+//!   or looks like a number, `0.5 abc`, `......`, `(0.0022)`, `0.5 0.1 0.2`; among the data
+//!   also two fields one of which is a number, `x 0.5`), and a pair after the notes; a line
+//!   of three or more fields that starts with a number but holds words (a date,
+//!   `20 nov 2005`) is a note.
 //!
 //! The whole input counts against the memory cap ([`crate::input::max_input_bytes`]), notes
 //! included, so an endless stream ends with the cap's error.
@@ -243,13 +245,13 @@ impl<'p> AirfoilReader<'p> {
     }
 }
 
-/// True when a line that is not a pair was meant to be one: its first field is or looks like
-/// a number, or it has two fields, one a number.
+/// True when a line that is not a pair was meant to be one: it has at most two fields, or
+/// only fields that look like numbers, and its first field is or looks like a number; or it
+/// has two fields, one a number. A longer line of words that starts with a number (a date,
+/// `20 nov 2005`) is a note.
 fn damaged(fields: &[&str]) -> bool {
-    fields
-        .first()
-        .and_then(|f| first_token(f))
-        .is_some_and(looks_numeric)
+    let numeric = |f: &&str| first_token(f).is_some_and(looks_numeric);
+    (fields.first().is_some_and(numeric) && (fields.len() <= 2 || fields.iter().all(numeric)))
         || (fields.len() == 2 && fields.iter().any(|f| is_number(f)))
 }
 
@@ -296,5 +298,24 @@ mod tests {
             .unwrap_err()
             .to_string();
         assert!(e.starts_with("a.dat:8: more points"), "{e}");
+    }
+
+    #[test]
+    fn a_note_may_start_with_a_number_but_a_row_of_numbers_is_data() {
+        let pairs = "1 0\n0.5 0.05\n0 0\n0.5 -0.05\n1 0\n";
+        let text = format!("FOIL\n{pairs}\n20 nov 2005\nsee http://x\n");
+        let foil = parse_airfoil(&text, Path::new("a.dat")).unwrap();
+        assert_eq!(foil.points.len(), 5);
+        for (row, message) in [
+            ("0.5 0.1 0.2", "expected 2 fields (x y), found 3"),
+            ("0.7", "expected 2 fields (x y), found 1"),
+            ("0.7 x", "'x' is not a number (column 2)"),
+        ] {
+            let text = format!("FOIL\n{pairs}{row}\n");
+            let e = parse_airfoil(&text, Path::new("a.dat"))
+                .unwrap_err()
+                .to_string();
+            assert_eq!(e, format!("a.dat:7: {message}"));
+        }
     }
 }

@@ -3,7 +3,8 @@
 //! The header is read line by line (each line bounded, the whole header at most
 //! [`MAX_HEADER_BYTES`]); its first line must be `ply` (otherwise: "not a PLY file: the first
 //! line is '...'"). Accepted: `format ascii|binary_little_endian|binary_big_endian 1.0`,
-//! `comment` and `obj_info` lines, `element NAME COUNT`, scalar properties of every PLY type
+//! `comment` and `obj_info` lines (and any other line, a comment without its keyword as some
+//! exporters wrote), `element NAME COUNT`, scalar properties of every PLY type
 //! under both spellings (`char uchar short ushort int uint float double` and `int8 uint8 int16
 //! uint16 int32 uint32 float32 float64`) and list properties `property list COUNT_TYPE
 //! ITEM_TYPE NAME` with any of those types.
@@ -214,7 +215,9 @@ fn read_header<R: BufRead + ?Sized>(reader: &mut R, path: &Path) -> Result<Heade
                 };
                 element.properties.push(property);
             }
-            _ => return Err(at.error(format!("unknown PLY header line '{}'", quoted()))),
+            // Any other line is a comment without its keyword (Blender 2.4 wrote such lines);
+            // a misspelt element or property shows as a body that does not match the header.
+            _ => {}
         }
     }
     let format = format.ok_or_else(|| data_error(path, "the PLY header has no 'format' line"))?;

@@ -5,9 +5,10 @@
 //!   at a time, as many as the count at bytes 80..84 says (trailing bytes are not read); an
 //!   input that ends before them is refused, saying how many bytes the count needs;
 //! - a header that starts with `solid` (after a byte-order mark or blanks) is binary when the
-//!   input is exactly `84 + 50 n` bytes for that count `n` (some exporters start binary
-//!   headers with `solid`): those bytes are read, when the memory cap allows them, and one
-//!   more to see the end;
+//!   input is exactly `84 + 50 n` bytes for that count `n`, or longer and holding binary data
+//!   (a NUL byte; trailing bytes then ignored): some exporters start binary headers with
+//!   `solid`. Those bytes are read, when the memory cap allows them, and one more to see the
+//!   end;
 //! - otherwise it is ASCII, read line by line (each line bounded): a bare `solid`,
 //!   `solid<TAB>name`, CRLF line ends and several solids one after the other are all read,
 //!   every solid's facets into the one mesh; keywords in any letter case; solid names in any
@@ -73,10 +74,13 @@ pub fn read_stl_from(input: &mut Input) -> Result<TriangleMesh, IoError> {
             return parse_ascii(&mut Cursor::new(head).chain(input), path, hint);
         }
         let records = read_up_to(input, body + 1, path)?;
-        if records.len() as u64 == body {
+        let binary = head_is_binary || records.contains(&0);
+        // Exactly the counted records, or more of them with binary data (trailing bytes after
+        // the records, as some exporters write, are ignored as for other binary headers).
+        if records.len() as u64 == body || (records.len() as u64 > body && binary) {
             return read_binary(&mut records.as_slice(), n, path);
         }
-        let hint = (head_is_binary || records.contains(&0)).then_some(n);
+        let hint = binary.then_some(n);
         let bytes = [head, records].concat();
         return parse_ascii(&mut Cursor::new(bytes).chain(input), path, hint);
     }

@@ -98,6 +98,10 @@ fn binary_stl_under_a_solid_header_is_binary_by_its_size() {
     let mut padded = binary_stl(b"binary", &[t]);
     padded.extend_from_slice(b"\0\0\0\0");
     assert_eq!(read_bytes_as("p.stl", &padded).unwrap().triangles.len(), 1);
+    // Under a `solid` header too, when the records hold binary data (a trailing byte).
+    let mut padded = binary_stl(b"solid exported with a trailing byte", &[t, u]);
+    padded.push(b'\n');
+    assert_eq!(read_bytes_as("q.stl", &padded).unwrap().triangles.len(), 2);
     // A count the file is too short for is refused before anything is allocated.
     let mut huge = binary_stl(b"binary", &[t]);
     huge[80..84].copy_from_slice(&u32::MAX.to_le_bytes());
@@ -465,4 +469,15 @@ fn binary_data_is_not_a_ply_file() {
         e.ends_with("zero.ply: not a PLY file: the first line is binary data or longer than 1 MiB"),
         "{e}"
     );
+}
+
+#[test]
+fn a_ply_header_line_without_its_comment_keyword_is_skipped() {
+    let text = "ply\nformat ascii 1.0\ncomment Created by Blender\n\
+                Created by Blender3D 247 - www.blender.org, source file:\n\
+                element vertex 3\nproperty float x\nproperty float y\nproperty float z\n\
+                element face 1\nproperty list uchar uint vertex_indices\nend_header\n\
+                0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+    let mesh = read_bytes_as("wuson.ply", text.as_bytes()).unwrap();
+    assert_eq!((mesh.positions.len(), mesh.triangles.len()), (3, 1));
 }
