@@ -38,6 +38,7 @@ use karkas::Point3;
 
 use crate::error::{data_error, IoError, Location};
 use crate::input::{check_held, excerpt, not_utf8_message, read_line_bytes, Input};
+use crate::lines::parse_coordinate;
 use crate::mesh::normals::grid_normals;
 use crate::mesh::shared_vertices::SharedVertices;
 use crate::mesh::triangle_mesh::TriangleMesh;
@@ -280,20 +281,6 @@ fn no_vertices(path: &Path) -> IoError {
     data_error(path, "no vertices ('v x y z' lines) found")
 }
 
-/// One number of a `v` or `vn` line at `at`, `column` its 1-based field (the keyword is 1).
-fn number(field: &str, column: usize, at: Location<'_>) -> Result<f64, IoError> {
-    match field.parse::<f64>() {
-        Ok(v) if v.is_finite() => Ok(v),
-        Ok(_) => Err(at.error(format!(
-            "non-finite value '{}' in column {column}",
-            excerpt(field)
-        ))),
-        Err(_) => Err(at.error(format!(
-            "'{}' is not a number (column {column})",
-            excerpt(field)
-        ))),
-    }
-}
 
 /// The position of a `v` line's numbers `fields` at `at`: `x y z`, `x y z w`, `x y z r g b`
 /// or `x y z r g b a` (see the module docs); every field must be a finite number.
@@ -301,7 +288,7 @@ fn vertex<'a>(fields: impl Iterator<Item = &'a str>, at: Location<'_>) -> Result
     let mut p = Point3::ZERO;
     let mut count = 0;
     for (k, field) in fields.enumerate() {
-        let value = number(field, k + 2, at)?;
+        let value = parse_coordinate(field, k + 2, at)?;
         if k < 3 {
             p[k] = value;
         }
@@ -323,7 +310,7 @@ fn normal<'a>(fields: impl Iterator<Item = &'a str>, at: Location<'_>) -> Result
     let mut n = Point3::ZERO;
     let mut count = 0;
     for (k, field) in fields.enumerate() {
-        let value = number(field, k + 2, at)?;
+        let value = parse_coordinate(field, k + 2, at)?;
         if k < 3 {
             n[k] = value;
         }
