@@ -509,3 +509,79 @@ def test_messages_are_the_command_lines(tmp_path, monkeypatch, reader, name, tex
         assert e.value.filename == name and e.value.strerror in run.stderr
     else:
         assert run.stderr == f"karkas: error: {e.value}\n"
+
+
+# --- files as other tools write them ---------------------------------------------------------
+
+
+PAIRS = "1 0\n0.5 0.05\n0 0\n0.5 -0.05\n1 0\n"
+CONTOUR = np.array([[1, 0], [0.5, 0.05], [0, 0], [0.5, -0.05], [1, 0]])
+
+
+@pytest.mark.parametrize(
+    "name,text",
+    [
+        ("notes.dat", f"MY FOIL\n{PAIRS}\nsource: http://x\nThickness: 7.99%\nZZ\n"),
+        ("notes-at-once.dat", f"MY FOIL\n{PAIRS}20 nov 2005\n"),
+        ("comma.dat", f"NACA 63,3-418\n{PAIRS}"),
+        ("comma.txt", f"NACA 63,3-418\n{PAIRS}"),
+        ("preamble.dat", f"ORNITHOPTER\nOrnithopter airfoil\n{PAIRS}"),
+        ("mses.dat", f"TASOPT SECTION\n-2.0 3.0 -2.0 2.0\n{PAIRS}"),
+        ("blocks.dat", "FOIL\n1 0\n0.5 0.05\n\n0 0\n\n0.5 -0.05\n1 0\n"),
+    ],
+)
+def test_airfoils_as_found_are_read(tmp_path, name, text):
+    got_name, points = karkas.read_airfoil(write(tmp_path / name, text))
+    assert got_name == text.splitlines()[0]
+    np.testing.assert_array_equal(points, CONTOUR)
+    np.testing.assert_array_equal(karkas.read_curve(tmp_path / name), CONTOUR)
+
+
+@pytest.mark.parametrize(
+    "text,message",
+    [
+        (f"FOIL\n1 0\n0.0 ......\n{PAIRS}", ":3: '......' is not a number (column 2)"),
+        ("FOIL\n1 0\n1.0 (0.0022)\n", ":3: '(0.0022)' is not a number (column 2)"),
+        (f"FOIL\n{PAIRS}ZZ\n0.3 0.1\n", ":8: a point after the notes that begin on line 7"),
+    ],
+)
+def test_damaged_airfoils_are_refused_naming_the_line(tmp_path, text, message):
+    p = write(tmp_path / "a.dat", text)
+    with pytest.raises(karkas.FileFormatError) as e:
+        karkas.read_airfoil(p)
+    assert str(e.value).startswith(f"{p}{message}")
+
+
+def facet(a, b, c, eol):
+    corners = "".join(f"      vertex {p[0]} {p[1]} {p[2]}{eol}" for p in (a, b, c))
+    return f"  facet normal 0 0 1{eol}    outer loop{eol}{corners}    endloop{eol}  endfacet{eol}"
+
+
+def test_meshes_from_other_tools_are_read(tmp_path):
+    o, x, y, xy = (0, 0, 0), (1, 0, 0), (0, 1, 0), (1, 1, 0)
+    # A bare `solid`, CRLF ends, then a second solid `solid<TAB>name`: both solids read.
+    stl = (
+        "solid\r\n" + facet(o, x, xy, "\r\n") + "endsolid\r\n"
+        "solid\tlid\r\n" + facet(o, xy, y, "\r\n") + "endsolid\tlid\r\n"
+    )
+    vertices, faces = karkas.read_mesh(write(tmp_path / "two.stl", stl))
+    assert (vertices.shape, faces.shape) == ((4, 3), (2, 3))
+    # OBJ vertex colours and a quad with texture and normal indices.
+    obj = "mtllib m.mtl\nv 0 0 0 1 0 0\nv 1 0 0 0 1 0\nv 1 1 0 0 0 1\nv 0 1 0 1 1 1\n" \
+        "vt 0 0\nvn 0 0 1\ng quad\nusemtl red\nf 1/1/1 2/1/1 3/1/1 4/1/1\n"
+    vertices, faces = karkas.read_mesh(write(tmp_path / "scan.obj", obj))
+    np.testing.assert_array_equal(vertices, [o, x, xy, y])
+    assert faces.shape == (2, 3)
+    # PLY with float32/uint8 type names, comments, colours and a list property on the face.
+    ply = (
+        "ply\nformat ascii 1.0\ncomment made by a scanner\nobj_info sample\n"
+        "element vertex 4\nproperty float32 x\nproperty float32 y\nproperty float32 z\n"
+        "property uint8 red\nelement face 1\nproperty list uint8 int32 vertex_indices\n"
+        "property list uchar float texcoord\nend_header\n"
+        "0 0 0 255\n1 0 0 0\n1 1 0 9\n0 1 0 7\n4 0 1 2 3 2 0.5 0.5\n"
+    )
+    vertices, faces = karkas.read_mesh(write(tmp_path / "scan.ply", ply))
+    np.testing.assert_array_equal(vertices, [o, x, xy, y])
+    assert faces.shape == (2, 3)
+    with pytest.raises(karkas.FileFormatError, match="not a PLY file: the first line is 'solid x'"):
+        karkas.read_mesh(write(tmp_path / "fake.ply", "solid x\n"))

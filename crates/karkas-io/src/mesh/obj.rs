@@ -281,7 +281,6 @@ fn no_vertices(path: &Path) -> IoError {
     data_error(path, "no vertices ('v x y z' lines) found")
 }
 
-
 /// The position of a `v` line's numbers `fields` at `at`: `x y z`, `x y z w`, `x y z r g b`
 /// or `x y z r g b a` (see the module docs); every field must be a finite number.
 fn vertex<'a>(fields: impl Iterator<Item = &'a str>, at: Location<'_>) -> Result<Point3, IoError> {
