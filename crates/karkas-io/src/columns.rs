@@ -295,7 +295,8 @@ fn fast_block<const D: usize>(
         .collect()
 }
 
-/// The points of `bytes`, lines that are all plain data rows; `None` when one is not.
+/// The points of `bytes`, lines that are all plain data rows; `None` when one is not. One
+/// walk over the bytes: each row is parsed from where the previous one ended.
 fn fast_lines<const D: usize>(
     bytes: &[u8],
     layout: &Layout,
@@ -303,18 +304,13 @@ fn fast_lines<const D: usize>(
 ) -> Option<Vec<[f64; D]>> {
     let mut points = Vec::with_capacity(bytes.len() / (8 * D + 1) + 1);
     let mut start = 0;
-    let ends = memchr::memchr_iter(b'\n', bytes).map(|k| k + 1);
-    let last = bytes
-        .last()
-        .is_some_and(|&b| b != b'\n')
-        .then_some(bytes.len());
-    for end in ends.chain(last) {
-        let line = &bytes[start..end];
-        if line.len() > MAX_LINE_BYTES {
+    while start < bytes.len() {
+        let (p, len) = fast_row_at(&bytes[start..], layout, slot)?;
+        if len > MAX_LINE_BYTES {
             return None;
         }
-        points.push(fast_row(line, layout, slot)?);
-        start = end;
+        points.push(p);
+        start += len;
     }
     Some(points)
 }
@@ -326,29 +322,41 @@ fn held_bytes<const D: usize, S: Store<D>>(store: &S) -> u128 {
 
 /// The point of a plain data row: `layout.width` fields split at commas or whitespace, its
 /// coordinate fields finite numbers; `None` for anything else (a comment, a double quote, a
-/// field that is not a number), which [`slow_row`] then reads. One scan of the bytes finds
-/// the fields.
+/// field that is not a number), which [`slow_row`] then reads.
 #[inline]
-fn fast_row<const D: usize>(bytes: &[u8], layout: &Layout, slot: &[usize]) -> Option<[f64; D]> {
+fn fast_row<const D: usize>(line: &[u8], layout: &Layout, slot: &[usize]) -> Option<[f64; D]> {
+    fast_row_at(line, layout, slot)
+        .filter(|&(_, len)| len == line.len())
+        .map(|(p, _)| p)
+}
+
+/// The point of the plain data row (see [`fast_row`]) that `bytes` start with, and the length
+/// of that row with its end of line (`\n`, or the end of `bytes`). One scan of the bytes finds
+/// the fields; a coordinate is parsed where it starts (the parser finds its end, and never
+/// reads past the end of its line), and the byte after it must end the field.
+#[inline]
+fn fast_row_at<const D: usize>(
+    bytes: &[u8],
+    layout: &Layout,
+    slot: &[usize],
+) -> Option<([f64; D], usize)> {
     let mut p = [0.0; D];
     let n = bytes.len();
-    let blank = |b: u8| matches!(b, b' ' | b'\t' | b'\r' | b'\n');
-    // A coordinate is parsed where it starts (the parser finds its end); the byte after it
-    // must end the field. Other fields are skipped to their separator.
-    let end_of_field = |b: u8| {
-        if layout.csv {
-            b == b','
-        } else {
-            blank(b)
+    let csv = layout.csv;
+    let blank = |b: u8| matches!(b, b' ' | b'\t' | b'\r');
+    // The end of a field: its separator or the end of the line.
+    let end_of_field = |b: u8| b == b'\n' || if csv { b == b',' } else { blank(b) };
+    let skip_blanks = |mut k: usize| {
+        while k < n && blank(bytes[k]) {
+            k += 1;
         }
+        k
     };
     let mut k = 0;
     let mut count = 0;
     loop {
-        while k < n && blank(bytes[k]) {
-            k += 1;
-        }
-        if k == n && (!layout.csv || count > 0) {
+        k = skip_blanks(k);
+        if (k == n || bytes[k] == b'\n') && (!csv || count > 0) {
             break;
         }
         let s = *slot.get(count)?;
@@ -360,8 +368,8 @@ fn fast_row<const D: usize>(bytes: &[u8], layout: &Layout, slot: &[usize]) -> Op
             }
             p[s] = v;
             k += used;
-            while k < n && blank(bytes[k]) && layout.csv {
-                k += 1;
+            if csv {
+                k = skip_blanks(k);
             }
             if k < n && !end_of_field(bytes[k]) {
                 return None;
@@ -374,21 +382,19 @@ fn fast_row<const D: usize>(bytes: &[u8], layout: &Layout, slot: &[usize]) -> Op
                 k += 1;
             }
         }
-        if layout.csv {
-            if k == n {
+        if csv {
+            if k == n || bytes[k] == b'\n' {
                 break;
             }
-            k += 1;
-            while k < n && blank(bytes[k]) {
-                k += 1;
-            }
-            if k == n {
+            k = skip_blanks(k + 1);
+            if k == n || bytes[k] == b'\n' {
                 // A comma at the end: one more (empty) field.
                 return None;
             }
         }
     }
-    (count == layout.width).then_some(p)
+    // Here `k` is at the end of the line: its `\n` or the end of `bytes`.
+    (count == layout.width).then_some((p, (k + 1).min(n)))
 }
 
 /// Classifies a line that is not a plain data row (see the [module docs](self)): a point, a
