@@ -33,6 +33,7 @@ use crate::lines::{
     check_held_at, check_line, first_token, is_number, looks_numeric, parse_coordinate,
     split_fields, strip_comment, too_long, Block, LineReader,
 };
+use crate::plain_decimal;
 use crate::store::{Growth, Store};
 
 /// Which fields of a row hold x, y and (for spatial points) z, 0-based.
@@ -362,7 +363,11 @@ fn fast_row_at<const D: usize>(
         let s = *slot.get(count)?;
         count += 1;
         if s < D {
-            let (v, used): (f64, usize) = fast_float2::parse_partial(&bytes[k..]).ok()?;
+            let rest = &bytes[k..];
+            let (v, used): (f64, usize) = match plain_decimal::parse(rest) {
+                Some(plain) => plain,
+                None => fast_float2::parse_partial(rest).ok()?,
+            };
             if used == 0 || !v.is_finite() {
                 return None;
             }

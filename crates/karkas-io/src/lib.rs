@@ -55,6 +55,7 @@ pub mod write;
 
 mod columns;
 mod lines;
+mod plain_decimal;
 mod store;
 
 pub use cad::{iges, step};
