@@ -602,4 +602,78 @@ mod tests {
         }
         assert!(agreed > 100, "{agreed}");
     }
+
+    #[test]
+    fn rows_within_a_block_agree_with_the_careful_path() {
+        // Rows of long numbers, followed by another row: the parser sees the bytes after
+        // each number, as it does inside a block.
+        const ALPHABET: &[u8] = b"0123456789012345678901234567890123456789.,-+e #\t\"x ";
+        let mut state: u64 = 0x853c_49e6_748f_ea9b;
+        let mut next = move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state
+        };
+        let mut agreed = 0;
+        for k in 0..40_000 {
+            let csv = k % 2 == 0;
+            let len = (next() % 60) as usize;
+            let mut line: String = (0..len)
+                .map(|_| ALPHABET[(next() % ALPHABET.len() as u64) as usize] as char)
+                .collect();
+            if k % 4 < 2 {
+                // Two numbers of up to 22 digits, a sign and a point or not.
+                let mut number = || {
+                    let digits = 1 + (next() % 22) as usize;
+                    let mut text: String = (0..digits)
+                        .map(|_| char::from(b'0' + (next() % 10) as u8))
+                        .collect();
+                    let point = (next() % (digits as u64 + 2)) as usize;
+                    if point <= digits {
+                        text.insert(point, '.');
+                    }
+                    match next() % 3 {
+                        0 => format!("-{text}"),
+                        1 => format!(" {text}"),
+                        _ => text,
+                    }
+                };
+                let (a, b) = (number(), number());
+                line = if csv {
+                    format!("{a},{b}")
+                } else {
+                    format!("{a} {b}")
+                };
+            }
+            let block = format!("{line}\n{}\n", if csv { "1,2" } else { "1 2" });
+            let layout = Layout {
+                csv,
+                width: 2,
+                columns: Columns {
+                    x: 0,
+                    y: 1,
+                    z: None,
+                },
+                first_row: None,
+            };
+            let Some(points) = fast_lines::<2>(block.as_bytes(), &layout, &[0, 1]) else {
+                continue;
+            };
+            assert_eq!(points.len(), 2, "{line:?}");
+            assert_eq!(points[1], [1.0, 2.0], "{line:?}");
+            let content = strip_comment(&line).trim();
+            let at = Location::new(Path::new("r"), 1);
+            let fields = split_fields(content, csv, at).unwrap();
+            assert_eq!(fields.len(), 2, "{line:?}");
+            let careful = [0, 1].map(|c| parse_coordinate(&fields[c], c + 1, at).unwrap());
+            assert_eq!(
+                points[0].map(f64::to_bits),
+                careful.map(f64::to_bits),
+                "{line:?}"
+            );
+            agreed += 1;
+        }
+        assert!(agreed > 10_000, "{agreed}");
+    }
 }
