@@ -15,9 +15,10 @@
 //! Speed: the input is read in blocks of whole lines (1 MiB per thread), the next block read
 //! on a thread of its own while the current one is parsed; a block of plain rows (no comment,
 //! no double quote, nothing but the data's fields) is split in pieces parsed in parallel,
-//! each coordinate parsed where it starts with `fast-float2` (correctly rounded, as
-//! `str::parse`; a test compares the two paths on random rows), with no allocation per row or
-//! field. Any other block is read line by line, each line tried the same way and
+//! each walked once, row after row, and each coordinate parsed where it starts: a plain
+//! decimal by [`crate::plain_decimal`], any other number by `fast-float2` (both correctly
+//! rounded, as `str::parse`; tests compare the fast and careful paths on random rows), with no
+//! allocation per row or field. Any other block is read line by line, each line tried the same way and
 //! otherwise split into owned fields to be classified or reported, so line numbers and
 //! messages are those of a line-by-line read. Memory: the points themselves
 //! ([`crate::store`]), two blocks and one block's points, and nothing per skipped line except
