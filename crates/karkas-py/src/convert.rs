@@ -141,11 +141,15 @@ impl GridArray<'_> {
     }
 }
 
-/// The contents of `array` as a flat row-major slice (copied only when not contiguous).
+/// The contents of `array` as a flat row-major slice: borrowed when the array is C-contiguous,
+/// otherwise (Fortran order, strided views) copied in row-major order. NumPy's `as_slice`
+/// accepts a Fortran-ordered array too, whose memory is column-major: reading that as
+/// row-major would silently permute the coordinates.
 fn flat_of<'a, Dm: Dimension>(array: &'a PyReadonlyArray<'_, f64, Dm>) -> Cow<'a, [f64]> {
-    match array.as_slice() {
-        Ok(s) => Cow::Borrowed(s),
-        Err(_) => Cow::Owned(array.as_array().iter().copied().collect()),
+    let view = array.as_array();
+    match view.to_slice() {
+        Some(s) => Cow::Borrowed(s),
+        None => Cow::Owned(view.iter().copied().collect()),
     }
 }
 
@@ -280,6 +284,11 @@ pub fn write_flat<R>(
             "out cannot be written ({e}): is it read-only or does it share memory with the input?"
         ))
     })?;
+    if !rw.is_c_contiguous() {
+        // A Fortran-ordered `out` is contiguous too, but column-major: refuse it rather than
+        // fill it in the wrong order.
+        return Err(KarkasError::new_err("out must be C-contiguous"));
+    }
     let flat = rw
         .as_slice_mut()
         .map_err(|_| KarkasError::new_err("out must be C-contiguous"))?;
