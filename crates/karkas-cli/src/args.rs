@@ -6,7 +6,6 @@
 //! keeps the group and overrides the help text with `#[command(mut_arg(..))]`.
 
 use crate::output::curve::curvature_comb;
-use crate::output::formats::ALL_FORMATS;
 use crate::output::overwrite::ensure_distinct;
 use crate::output::samples::MAX_SAMPLES;
 use anyhow::{bail, Context, Result};
@@ -252,13 +251,17 @@ pub fn parse_format(text: &str) -> Result<OutputFormat, String> {
         name.eq_ignore_ascii_case(f.extension())
             || f.alias().is_some_and(|a| name.eq_ignore_ascii_case(a))
     };
-    ALL_FORMATS.iter().copied().find(known).ok_or_else(|| {
-        let names: Vec<&str> = ALL_FORMATS.iter().map(|f| f.extension()).collect();
-        format!(
-            "'{name}' is not an output format (one of {})",
-            names.join(", ")
-        )
-    })
+    OutputFormat::ALL
+        .iter()
+        .copied()
+        .find(known)
+        .ok_or_else(|| {
+            let names: Vec<&str> = OutputFormat::ALL.iter().map(|f| f.extension()).collect();
+            format!(
+                "'{name}' is not an output format (one of {})",
+                names.join(", ")
+            )
+        })
 }
 
 /// Parses one sample count (at least 2).

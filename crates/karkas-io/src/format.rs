@@ -38,7 +38,7 @@ pub enum OutputFormat {
 
 impl OutputFormat {
     /// All formats, in the order they are listed in messages.
-    const ALL: [OutputFormat; 12] = [
+    pub const ALL: [OutputFormat; 12] = [
         OutputFormat::Csv,
         OutputFormat::Svg,
         OutputFormat::Obj,

@@ -212,31 +212,15 @@ fn read_input(path: &Path) -> Result<Input> {
     }
 }
 
-/// True when the first bytes of standard input (looked at, not consumed) are a mesh: a first
-/// line `ply` or `solid ...`, binary data, or a first content line that is an OBJ statement
-/// (`v`, `vn`, `vt`, `f`, `o`, `g`, `s`, `mtllib`, `usemtl`). Files are told by extension.
+/// True when the first bytes of standard input (looked at, not consumed) are a mesh
+/// ([`karkas_io::mesh::is_mesh_prefix`]). Files are told by extension.
 fn looks_like_a_mesh(input: &mut Source) -> Result<bool> {
     use std::io::BufRead;
     let name = input.name.clone();
     let prefix = input
         .fill_buf()
         .with_context(|| format!("cannot read {}", name.display()))?;
-    let prefix = &prefix[..prefix.len().min(karkas_io::mesh::SNIFF_BYTES)];
-    Ok(match karkas_io::mesh::sniff_mesh_format(prefix) {
-        karkas_io::mesh::MeshFormat::Obj => {
-            let text = String::from_utf8_lossy(prefix);
-            let first = text
-                .lines()
-                .map(|l| l.split('#').next().unwrap_or("").trim())
-                .find(|l| !l.is_empty());
-            first
-                .and_then(|l| l.split_whitespace().next())
-                .is_some_and(|k| {
-                    ["v", "vn", "vt", "f", "o", "g", "s", "mtllib", "usemtl"].contains(&k)
-                })
-        }
-        _ => true,
-    })
+    Ok(karkas_io::mesh::is_mesh_prefix(prefix))
 }
 
 /// The lower-case fields of the first content line of CSV `text` with a header (a line with

@@ -2,22 +2,6 @@
 
 use karkas_io::OutputFormat;
 
-/// Every output format, in the order `--format` lists them.
-pub const ALL_FORMATS: [OutputFormat; 12] = [
-    OutputFormat::Csv,
-    OutputFormat::Svg,
-    OutputFormat::Png,
-    OutputFormat::Html,
-    OutputFormat::Obj,
-    OutputFormat::Stl,
-    OutputFormat::Ply,
-    OutputFormat::Vtk,
-    OutputFormat::Vts,
-    OutputFormat::Glb,
-    OutputFormat::Step,
-    OutputFormat::Iges,
-];
-
 /// The formats of a sampled curve.
 pub const CURVE_FORMATS: [OutputFormat; 4] = [
     OutputFormat::Csv,

@@ -207,9 +207,37 @@ pub fn sniff_mesh_format(prefix: &[u8]) -> MeshFormat {
     }
 }
 
+/// True when the first bytes `prefix` of an input of unknown kind are a mesh rather than
+/// point or grid text: PLY or STL by [`sniff_mesh_format`] (binary data included), or text
+/// whose first content line is an OBJ statement (`v`, `vn`, `vt`, `f`, `o`, `g`, `s`,
+/// `mtllib`, `usemtl`). Only the first [`SNIFF_BYTES`] are looked at.
+pub fn is_mesh_prefix(prefix: &[u8]) -> bool {
+    let prefix = &prefix[..prefix.len().min(SNIFF_BYTES)];
+    if sniff_mesh_format(prefix) != MeshFormat::Obj {
+        return true;
+    }
+    let text = String::from_utf8_lossy(prefix);
+    text.lines()
+        .map(|l| l.split('#').next().unwrap_or("").trim())
+        .find(|l| !l.is_empty())
+        .and_then(|l| l.split_whitespace().next())
+        .is_some_and(|k| ["v", "vn", "vt", "f", "o", "g", "s", "mtllib", "usemtl"].contains(&k))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn mesh_prefixes_are_told_from_points_and_grids() {
+        assert!(is_mesh_prefix(b"ply\nformat ascii 1.0\n"));
+        assert!(is_mesh_prefix(b"solid part\n"));
+        assert!(is_mesh_prefix(b"\x00\x01binary"));
+        assert!(is_mesh_prefix(b"# Blender\nmtllib a.mtl\nv 0 0 0\n"));
+        assert!(!is_mesh_prefix(b"x,y\n0,0\n1,1\n"));
+        assert!(!is_mesh_prefix(b"i,j,x,y,z\n0,0,0,0,0\n"));
+        assert!(!is_mesh_prefix(b"NACA 0012\n1 0\n"));
+    }
 
     #[test]
     fn content_tells_the_format() {

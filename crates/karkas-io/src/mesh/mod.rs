@@ -25,8 +25,8 @@ pub(crate) mod triangulate;
 pub mod vtk;
 
 pub use any_format::{
-    read_mesh, read_mesh_from, sniff_mesh_format, write_mesh, write_mesh_as, write_surface_mesh,
-    write_surface_mesh_as, MeshFormat, MeshOptions, SNIFF_BYTES,
+    is_mesh_prefix, read_mesh, read_mesh_from, sniff_mesh_format, write_mesh, write_mesh_as,
+    write_surface_mesh, write_surface_mesh_as, MeshFormat, MeshOptions, SNIFF_BYTES,
 };
 pub use error::MeshError;
 pub use triangle_mesh::TriangleMesh;
