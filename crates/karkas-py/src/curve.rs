@@ -3,69 +3,58 @@
 //! Every concrete curve class (`LLCurve`, `CubicSpline`, `HermiteSpline`, ...) extends it and
 //! hands it a [`CurveImpl`].
 
-use std::sync::Arc;
+use std::sync::{Arc, OnceLock};
 
 use numpy::PyArrayDyn;
 use pyo3::prelude::*;
 
-use crate::convert::{maybe_detach, output_array, uniform, vector_to_array, write_flat, Params};
+use crate::bspline_form::FlatBSpline;
+use crate::convert::{maybe_detach, uniform, vector_to_array, write_flat};
 use crate::wrapper::CurveImpl;
 
 /// Base class of every karkas curve.
 ///
-/// Calling a curve evaluates it: `c(t)` with a float `t` gives an array of shape `(d,)`, with an
-/// array of any shape an array of shape `t.shape + (d,)`. `out=` takes a preallocated
-/// C-contiguous float64 array of that shape and writes into it without allocating (it is
-/// returned). Parameters outside the domain are clamped (open curves, except cubic splines,
-/// which extend their end pieces) or wrapped (closed curves).
+/// Calling a curve evaluates it, as SciPy's ``BSpline``: ``c(t, nu=0, out=None,
+/// extrapolate=None)`` with a float ``t`` gives an array of shape ``(d,)``, with an array of any
+/// shape an array of shape ``t.shape + (d,)``; ``nu`` is the order of the derivative with
+/// respect to the parameter. ``out=`` takes a preallocated C-contiguous float64 array of that
+/// shape and writes into it without allocating (it is returned). ``c.derivative(nu)`` is the
+/// derivative as a curve object, ``c.to_bspline()`` the exact B-spline form ``(t, c, k)``.
+///
+/// Parameters outside the domain (the same rule for every curve class): a closed curve wraps
+/// them by its period; an open curve continues its end polynomial pieces when
+/// ``extrapolate`` is None or True (SciPy's ``BSpline`` rule, the values of
+/// ``scipy.interpolate.BSpline(*c.to_bspline())``) and gives NaN when ``extrapolate=False``.
 #[pyclass(subclass, module = "karkas", name = "Curve", frozen)]
 pub struct PyCurve {
     pub inner: Arc<dyn CurveImpl>,
     /// What the object is, for `repr` (e.g. `LLCurve(order=5, closed=False, points=53, dim=2)`).
     pub description: String,
+    /// The exact B-spline form, built on first use (by `to_bspline` or by an evaluation
+    /// outside the domain).
+    pub bspline: OnceLock<karkas::Result<Arc<FlatBSpline>>>,
 }
 
 impl PyCurve {
     /// The base part of a curve object.
     pub fn new(inner: Arc<dyn CurveImpl>, description: String) -> Self {
-        PyCurve { inner, description }
+        PyCurve {
+            inner,
+            description,
+            bspline: OnceLock::new(),
+        }
+    }
+
+    /// The exact B-spline form (built once).
+    pub fn bspline(&self) -> karkas::Result<Arc<FlatBSpline>> {
+        self.bspline
+            .get_or_init(|| self.inner.to_bspline().map(Arc::new))
+            .clone()
     }
 }
 
 #[pymethods]
 impl PyCurve {
-    /// c(t, out=None): the curve at `t` (float -> (d,), array -> t.shape + (d,)).
-    #[pyo3(signature = (t, out = None))]
-    fn __call__<'py>(
-        &self,
-        py: Python<'py>,
-        t: &Bound<'py, PyAny>,
-        out: Option<Bound<'py, PyAny>>,
-    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-        self.derivative(py, t, 0, out)
-    }
-
-    /// c.derivative(t, k=1, out=None): the k-th derivative with respect to the parameter.
-    #[pyo3(signature = (t, k = 1, out = None))]
-    fn derivative<'py>(
-        &self,
-        py: Python<'py>,
-        t: &Bound<'py, PyAny>,
-        k: usize,
-        out: Option<Bound<'py, PyAny>>,
-    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-        let params = Params::extract(t, "t")?;
-        let mut shape = params.shape();
-        shape.push(self.inner.dim());
-        let array = output_array(py, out, &shape)?;
-        let ts = params.flat();
-        let inner = &self.inner;
-        write_flat(&array, |flat| {
-            maybe_detach(py, ts.len(), || inner.eval_flat(&ts, k, flat))
-        })?;
-        Ok(array)
-    }
-
     /// c.sample(n): `n` points at uniformly spaced parameters over the domain, shape (n, d).
     fn sample<'py>(&self, py: Python<'py>, n: usize) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
         let ts = uniform(self.inner.domain(), n);

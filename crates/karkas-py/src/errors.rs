@@ -93,6 +93,18 @@ pyo3::create_exception!(
 
 pyo3::create_exception!(
     karkas,
+    NoBSplineFormError,
+    KarkasError,
+    "An object with no exact B-spline form.\n\
+     \n\
+     Raised by to_bspline for a surface that is not a piecewise polynomial of its\n\
+     parameters (e.g. a Coons surface over data that are not), and by an evaluation\n\
+     of such a surface outside its domain with extrapolate=None or True (the end\n\
+     pieces cannot be continued; extrapolate=False gives NaN there)."
+);
+
+pyo3::create_exception!(
+    karkas,
     FileFormatError,
     KarkasError,
     "A file whose content cannot be read.\n\
@@ -118,6 +130,7 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("ConvergenceError", py.get_type::<ConvergenceError>())?;
     m.add("ExpressionError", py.get_type::<ExpressionError>())?;
     m.add("FileFormatError", py.get_type::<FileFormatError>())?;
+    m.add("NoBSplineFormError", py.get_type::<NoBSplineFormError>())?;
     Ok(())
 }
 
@@ -134,6 +147,7 @@ pub fn library_error(e: karkas::Error) -> PyErr {
         Kind::Incompatible => IncompatibleDataError::new_err(message),
         Kind::Convergence => ConvergenceError::new_err(message),
         Kind::Expression => ExpressionError::new_err(message),
+        Kind::NoBSplineForm => NoBSplineFormError::new_err(message),
         Kind::Other => KarkasError::new_err(message),
     }
 }
@@ -146,6 +160,7 @@ enum Kind {
     Incompatible,
     Convergence,
     Expression,
+    NoBSplineForm,
     Other,
 }
 
@@ -197,6 +212,7 @@ fn kind(e: &karkas::Error) -> Kind {
         | E::SingularPoint { .. }
         | E::ContinuationFailed { .. } => Kind::Convergence,
         E::ExpressionParse { .. } => Kind::Expression,
+        E::NotExactlyConvertible { .. } => Kind::NoBSplineForm,
         _ => Kind::Other,
     }
 }

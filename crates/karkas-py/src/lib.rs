@@ -11,9 +11,11 @@
 //! `Curve` and `Surface` in `curve` and `surface` over the dimension-free interfaces of
 //! `wrapper`; arrays in `convert`; exceptions in `errors`.
 
+mod bspline_form;
 mod convert;
 mod coons;
 mod curve;
+mod curve_eval;
 mod dps;
 mod errors;
 mod export;
@@ -25,6 +27,7 @@ mod param;
 mod read;
 mod section;
 mod surface;
+mod surface_eval;
 mod wrapper;
 
 use pyo3::prelude::*;
@@ -38,18 +41,21 @@ static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 /// karkas: smooth parametric curves and surfaces from point frames.
 ///
 /// Curves (LLCurve, CubicSpline, HermiteSpline from fit_curve, ...) are called like SciPy's
-/// spline objects: c(t) -> points, c.derivative(t, k); surfaces S(u, v, grid=True). Arrays are
+/// spline objects: c(t, nu=0) -> points or derivatives, c.derivative(nu) -> a curve,
+/// c.to_bspline() -> (t, c, k); surfaces S(u, v, du=0, dv=0, grid=True). Arrays are
 /// float64, points (n, d), grids (nu, nv, d), d in {2, 3}.
 #[pymodule(name = "karkas")]
 fn karkas_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     errors::register(m)?;
     m.add_class::<curve::PyCurve>()?;
+    m.add_class::<curve_eval::PyCurveDerivative>()?;
     m.add_class::<ll::PyLlCurve>()?;
     m.add_class::<param::PyCubicSpline>()?;
     m.add_class::<fit::PyHermiteSpline>()?;
     m.add_function(wrap_pyfunction!(fit::fit_curve, m)?)?;
     m.add_class::<surface::PySurface>()?;
+    m.add_class::<surface_eval::PySurfaceDerivative>()?;
     m.add_class::<ll::PyLlSurface>()?;
     m.add_class::<param::PyBicubicSurface>()?;
     m.add_class::<dps::PyDiscreteSpline>()?;

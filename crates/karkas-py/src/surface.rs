@@ -3,106 +3,63 @@
 //! Every concrete surface class (`LLSurface`, `BicubicSurface`, `CoonsSurface`) extends it and
 //! hands it a [`SurfaceImpl`].
 
-use std::sync::Arc;
+use std::sync::{Arc, OnceLock};
 
 use karkas::section::SectionOptions;
 use numpy::PyArrayDyn;
 use pyo3::prelude::*;
 
-use crate::convert::{maybe_detach, output_array, uniform, write_flat, Params};
-use crate::errors::{library_error, KarkasError, OptionError};
+use crate::bspline_form::FlatBSplineSurface;
+use crate::convert::{maybe_detach, uniform, write_flat};
+use crate::errors::{library_error, OptionError};
 use crate::section::PySectionCurve;
 use crate::wrapper::SurfaceImpl;
 
 /// Base class of every karkas surface.
 ///
-/// S(u, v, grid=True, out=None): with grid=True, u (mu,) and v (mv,) give the points of the
-/// grid u x v, shape (mu, mv, d) (u outer, as SciPy's RectBivariateSpline); with grid=False,
-/// u and v of one shape give the points (u[i], v[i]), shape u.shape + (d,). Floats work too.
-/// out= takes a preallocated C-contiguous float64 array of the result's shape.
+/// ``S(u, v, du=0, dv=0, grid=True, out=None, extrapolate=None)`` (SciPy's
+/// ``RectBivariateSpline`` names, ``dx``/``dy`` as ``du``/``dv``): with grid=True, u (mu,) and
+/// v (mv,) give the partial derivative ``d^(du+dv) S / du^du dv^dv`` (``(0, 0)``: the points)
+/// on the grid u x v, shape (mu, mv, d) (u outer); with grid=False, u and v of one shape give
+/// it at the pairs (u[i], v[i]), shape u.shape + (d,). Floats work too. out= takes a
+/// preallocated C-contiguous float64 array of the result's shape. ``S.derivative(du, dv)`` is
+/// the derivative as a surface object, ``S.to_bspline()`` the exact B-spline form
+/// ``((tu, tv), c, (ku, kv))`` for ``scipy.interpolate.NdBSpline``.
+///
+/// Parameters outside the domain, per direction (the same rule for every surface class): a
+/// closed direction wraps by its period; an open one continues the end polynomial pieces when
+/// ``extrapolate`` is None or True (the values of ``NdBSpline(*S.to_bspline())``) and gives
+/// NaN when ``extrapolate=False``.
 #[pyclass(subclass, module = "karkas", name = "Surface", frozen)]
 pub struct PySurface {
     pub inner: Arc<dyn SurfaceImpl>,
     /// What the object is, for `repr`.
     pub description: String,
+    /// The exact B-spline form, built on first use (by `to_bspline` or by an evaluation
+    /// outside the domain).
+    pub bspline: OnceLock<karkas::Result<Arc<FlatBSplineSurface>>>,
 }
 
 impl PySurface {
     /// The base part of a surface object.
     pub fn new(inner: Arc<dyn SurfaceImpl>, description: String) -> Self {
-        PySurface { inner, description }
+        PySurface {
+            inner,
+            description,
+            bspline: OnceLock::new(),
+        }
+    }
+
+    /// The exact B-spline form (built once).
+    pub fn bspline(&self) -> karkas::Result<Arc<FlatBSplineSurface>> {
+        self.bspline
+            .get_or_init(|| self.inner.to_bspline().map(Arc::new))
+            .clone()
     }
 }
 
 #[pymethods]
 impl PySurface {
-    /// S(u, v, grid=True, out=None): points of the surface.
-    #[pyo3(signature = (u, v, grid = true, out = None))]
-    fn __call__<'py>(
-        &self,
-        py: Python<'py>,
-        u: &Bound<'py, PyAny>,
-        v: &Bound<'py, PyAny>,
-        grid: bool,
-        out: Option<Bound<'py, PyAny>>,
-    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-        self.derivative(py, u, v, 0, 0, grid, out)
-    }
-
-    /// S.derivative(u, v, ku=1, kv=0, grid=True, out=None): the partial derivative
-    /// d^(ku+kv) S / du^ku dv^kv.
-    #[pyo3(signature = (u, v, ku = 1, kv = 0, grid = true, out = None))]
-    #[allow(clippy::too_many_arguments)]
-    fn derivative<'py>(
-        &self,
-        py: Python<'py>,
-        u: &Bound<'py, PyAny>,
-        v: &Bound<'py, PyAny>,
-        ku: usize,
-        kv: usize,
-        grid: bool,
-        out: Option<Bound<'py, PyAny>>,
-    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-        let pu = Params::extract(u, "u")?;
-        let pv = Params::extract(v, "v")?;
-        let (su, sv) = (pu.shape(), pv.shape());
-        let d = self.inner.dim();
-        let shape: Vec<usize> = if grid {
-            if su.len() > 1 || sv.len() > 1 {
-                return Err(KarkasError::new_err(
-                    "with grid=True, u and v must be floats or 1-D arrays",
-                ));
-            }
-            let mut s = su.clone();
-            s.extend(&sv);
-            s.push(d);
-            s
-        } else {
-            if su != sv {
-                return Err(KarkasError::new_err(format!(
-                    "with grid=False, u and v must have one shape (got {su:?} and {sv:?})"
-                )));
-            }
-            let mut s = su.clone();
-            s.push(d);
-            s
-        };
-        let array = output_array(py, out, &shape)?;
-        let (us, vs) = (pu.flat(), pv.flat());
-        let inner = &self.inner;
-        let work = if grid { us.len() * vs.len() } else { us.len() };
-        write_flat(&array, |flat| {
-            maybe_detach(py, work, || {
-                if grid {
-                    inner.grid_flat(&us, &vs, ku, kv, flat)
-                } else {
-                    inner.points_flat(&us, &vs, ku, kv, flat)
-                }
-            })
-        })?;
-        Ok(array)
-    }
-
     /// S.sample(nu, nv): the points at nu x nv uniformly spaced parameters, (nu, nv, d).
     fn sample<'py>(
         &self,

@@ -6,11 +6,13 @@
 //! buffers (one dynamic call per batch, the library's `eval_into` inside). Every concrete class
 //! hands its base class one of these.
 
+use karkas::bspline::{ToBSplineCurve, ToBSplineSurface};
 use karkas::implicit::ExpressionSurface;
 use karkas::measure::{hausdorff_surface_implicit, Hausdorff};
 use karkas::section::{plane_section, Plane, SectionOptions};
 use karkas::{Interval, PiecewiseCurve, Point, Point3, Surface};
 
+use crate::bspline_form::{FlatBSpline, FlatBSplineSurface};
 use crate::convert::as_points_mut;
 use crate::section::PySectionCurve;
 
@@ -28,6 +30,9 @@ pub trait CurveImpl: Send + Sync {
     fn continuity(&self) -> usize;
     /// Writes the `k`-th derivative (0: the point) at every `ts[i]` into `out[d i..d i + d]`.
     fn eval_flat(&self, ts: &[f64], k: usize, out: &mut [f64]);
+    /// The exact B-spline form over the domain (one period, clamped, for a closed curve), or
+    /// the library's reason why there is none.
+    fn to_bspline(&self) -> karkas::Result<FlatBSpline>;
 }
 
 /// The ends `(a, b)` of an interval.
@@ -40,8 +45,11 @@ pub struct Wrapped<C, const D: usize>(pub C);
 
 impl<C, const D: usize> CurveImpl for Wrapped<C, D>
 where
-    C: PiecewiseCurve<D> + Send + Sync,
+    C: PiecewiseCurve<D> + ToBSplineCurve<D> + Send + Sync,
 {
+    fn to_bspline(&self) -> karkas::Result<FlatBSpline> {
+        Ok(FlatBSpline::of(&self.0.to_bspline()?))
+    }
     fn dim(&self) -> usize {
         D
     }
@@ -81,6 +89,9 @@ pub trait SurfaceImpl: Send + Sync {
     fn grid_flat(&self, us: &[f64], vs: &[f64], ku: usize, kv: usize, out: &mut [f64]);
     /// The derivative `(ku, kv)` at the pairs `(us[i], vs[i])` into `out`.
     fn points_flat(&self, us: &[f64], vs: &[f64], ku: usize, kv: usize, out: &mut [f64]);
+    /// The exact B-spline form over the domain (closed directions over one period, clamped),
+    /// or the library's reason why there is none.
+    fn to_bspline(&self) -> karkas::Result<FlatBSplineSurface>;
     /// The section by the plane `normal . x = offset` (`normal.len() == dim`).
     fn section(
         &self,
@@ -135,8 +146,11 @@ pub struct WrappedSurface<S, const D: usize>(pub S);
 
 impl<S, const D: usize> SurfaceImpl for WrappedSurface<S, D>
 where
-    S: Surface<D> + Send + Sync,
+    S: Surface<D> + ToBSplineSurface<D> + Send + Sync,
 {
+    fn to_bspline(&self) -> karkas::Result<FlatBSplineSurface> {
+        Ok(FlatBSplineSurface::of(&self.0.to_bspline()?))
+    }
     fn dim(&self) -> usize {
         D
     }
