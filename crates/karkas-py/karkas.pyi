@@ -1,7 +1,7 @@
 """Type stubs of the karkas Python package (built from crates/karkas-py)."""
 
 import os
-from typing import Optional, Sequence, Tuple, Union
+from typing import Any, Optional, Sequence, Tuple, Union
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -48,13 +48,28 @@ class FileFormatError(KarkasError):
     file and the line or grid cell: a malformed number, a missing column or cell, binary data,
     a line longer than 1 MiB, or an input larger than the memory cap (set_max_input_bytes)."""
 
-class Curve:
-    """Base class of every curve: c(t) -> points, c.derivative(t, k)."""
+class NoBSplineFormError(KarkasError):
+    """An object with no exact B-spline form (to_bspline, or an evaluation outside the domain
+    of a surface that is not a piecewise polynomial, with extrapolate None or True)."""
 
-    def __call__(self, t: Params, out: Optional[Floats] = None) -> Floats:
-        """The curve at t: float -> (d,), array -> t.shape + (d,); out= is written and returned."""
-    def derivative(self, t: Params, k: int = 1, out: Optional[Floats] = None) -> Floats:
-        """The k-th derivative with respect to the parameter (same shapes as calling)."""
+class Curve:
+    """Base class of every curve: c(t, nu=0, out=None, extrapolate=None) -> points or
+    derivatives. Outside the domain a closed curve wraps by its period; an open curve continues
+    its end polynomial pieces (extrapolate None or True) or gives NaN (extrapolate=False)."""
+
+    def __call__(
+        self,
+        t: Params,
+        nu: int = 0,
+        out: Optional[Floats] = None,
+        extrapolate: Optional[bool] = None,
+    ) -> Floats:
+        """The nu-th derivative at t: float -> (d,), array -> t.shape + (d,); out= is written
+        and returned."""
+    def derivative(self, nu: int = 1) -> "CurveDerivative":
+        """The nu-th derivative as a curve object."""
+    def to_bspline(self) -> Tuple[Floats, Floats, int]:
+        """The exact B-spline form (t, c, k) for scipy.interpolate.BSpline."""
     def sample(self, n: int) -> Floats:
         """n points at uniformly spaced parameters over the domain, (n, d)."""
     @property
@@ -67,6 +82,15 @@ class Curve:
     def breakpoints(self) -> Floats: ...
     @property
     def continuity(self) -> int: ...
+
+class CurveDerivative(Curve):
+    """The nu-th derivative of a curve as a curve (Curve.derivative)."""
+
+    @property
+    def parent(self) -> Curve: ...
+    @property
+    def nu(self) -> int: ...
+    def __reduce__(self) -> Tuple[Any, Tuple[int]]: ...
 
 class LLCurve(Curve):
     """The LL approximation of a support polygon (points (n, d), d in {2, 3})."""
@@ -131,21 +155,28 @@ def fit_curve(
     """Fits points (n, d) with a C^1 cubic Hermite spline; give knots (count or array) or tolerance."""
 
 class Surface:
-    """Base class of every surface: S(u, v, grid=True) -> points."""
+    """Base class of every surface: S(u, v, du=0, dv=0, grid=True, out=None,
+    extrapolate=None) -> points or partial derivatives. Outside the domain, per direction: a
+    closed one wraps by its period; an open one continues the end polynomial pieces
+    (extrapolate None or True) or gives NaN (extrapolate=False)."""
 
     def __call__(
-        self, u: Params, v: Params, grid: bool = True, out: Optional[Floats] = None
-    ) -> Floats:
-        """grid=True: (mu, mv, d) on u x v; grid=False: u.shape + (d,) at the pairs (u, v)."""
-    def derivative(
         self,
         u: Params,
         v: Params,
-        ku: int = 1,
-        kv: int = 0,
+        du: int = 0,
+        dv: int = 0,
         grid: bool = True,
         out: Optional[Floats] = None,
-    ) -> Floats: ...
+        extrapolate: Optional[bool] = None,
+    ) -> Floats:
+        """grid=True: (mu, mv, d) on u x v; grid=False: u.shape + (d,) at the pairs (u, v)."""
+    def derivative(self, du: int = 1, dv: int = 0) -> "SurfaceDerivative":
+        """The partial derivative d^(du+dv) S / du^du dv^dv as a surface object."""
+    def to_bspline(
+        self,
+    ) -> Tuple[Tuple[Floats, Floats], Floats, Tuple[int, int]]:
+        """The exact B-spline form ((tu, tv), c (nu, nv, d), (ku, kv)) for NdBSpline."""
     def sample(self, nu: int, nv: int) -> Floats: ...
     def section(
         self,
@@ -165,6 +196,17 @@ class Surface:
     def closed_u(self) -> bool: ...
     @property
     def closed_v(self) -> bool: ...
+
+class SurfaceDerivative(Surface):
+    """A partial derivative of a surface as a surface (Surface.derivative)."""
+
+    @property
+    def parent(self) -> Surface: ...
+    @property
+    def du(self) -> int: ...
+    @property
+    def dv(self) -> int: ...
+    def __reduce__(self) -> Tuple[Any, Tuple[int, int]]: ...
 
 class LLSurface(Surface):
     """The LL approximation of a grid (nu, nv, d)."""

@@ -29,7 +29,7 @@ def test_bicubic_matches_rect_bivariate_spline_on_given_knots(rng):
         np.testing.assert_allclose(got[..., c], ref(us, vs), rtol=0, atol=1e-11)
         for ku_, kv_ in [(1, 0), (0, 1), (1, 1), (2, 0)]:
             np.testing.assert_allclose(
-                S.derivative(us, vs, ku=ku_, kv=kv_)[..., c],
+                S(us, vs, du=ku_, dv=kv_)[..., c],
                 ref(us, vs, dx=ku_, dy=kv_),
                 rtol=1e-8,
                 atol=1e-8,
@@ -89,7 +89,7 @@ def test_ll_surface_grid_matches_pointwise_and_out():
     h = 1e-6
     fd = (S(us + h, vs) - S(us - h, vs)) / (2 * h)
     inner = slice(2, -2)
-    np.testing.assert_allclose(S.derivative(us, vs, ku=1)[inner], fd[inner], rtol=1e-5, atol=1e-5)
+    np.testing.assert_allclose(S(us, vs, du=1)[inner], fd[inner], rtol=1e-5, atol=1e-5)
     assert S.sample(5, 6).shape == (5, 6, 3)
 
 
