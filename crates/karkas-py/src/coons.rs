@@ -54,6 +54,13 @@ fn first_dim(lists: &[Bound<'_, PyAny>], what: &str) -> PyResult<usize> {
 /// u_derivs / v_derivs: dS/dv along the u-curves and dS/du along the v-curves (one vector per
 /// point) for 'bicubic' and 'composite'. A family whose curves repeat their first point at the
 /// end is closed.
+///
+/// Outside the domain (the rule of every surface class, per direction): a closed direction
+/// wraps the parameter by its period; an open one continues the end polynomial pieces when
+/// ``extrapolate`` is None or True (the values of ``NdBSpline(*S.to_bspline())``) and gives
+/// NaN when ``extrapolate=False``.
+/// A surface over data that are not piecewise polynomials raises NoBSplineFormError
+/// there instead (it has no end pieces to continue).
 #[pyclass(extends = PySurface, module = "karkas", name = "CoonsSurface", frozen)]
 pub struct PyCoonsSurface {
     /// The kind of surface.

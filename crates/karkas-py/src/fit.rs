@@ -13,6 +13,11 @@ use crate::wrapper::{CurveImpl, Wrapped};
 
 /// A C^1 cubic Hermite spline (a cubic spline of defect 2) on [0, 1], as returned by
 /// fit_curve: values and derivatives at its knots.
+///
+/// Outside the domain (the rule of every curve class): a closed curve wraps the parameter by
+/// its period; an open curve continues its end polynomial pieces when ``extrapolate`` is None
+/// or True (SciPy's ``BSpline`` default; the values of ``BSpline(*c.to_bspline())``) and gives
+/// NaN when ``extrapolate=False``.
 #[pyclass(extends = PyCurve, module = "karkas", name = "HermiteSpline", frozen)]
 pub struct PyHermiteSpline {
     /// The knots 0 = T_1 < ... < T_N = 1.

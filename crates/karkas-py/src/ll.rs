@@ -23,6 +23,11 @@ use crate::wrapper::{CurveImpl, SurfaceImpl, Wrapped, WrappedSurface};
 /// LLCurve(points, order=5, closed=False): points (n, d), d in {2, 3}. Node i sits at
 /// t = i/(K+1); the domain is [1/(K+1), K/(K+1)]. An open curve passes through its first and
 /// last points; use LLCurve.interpolate for a curve through every point.
+///
+/// Outside the domain (the rule of every curve class): a closed curve wraps the parameter by
+/// its period; an open curve continues its end polynomial pieces when ``extrapolate`` is None
+/// or True (SciPy's ``BSpline`` default; the values of ``BSpline(*c.to_bspline())``) and gives
+/// NaN when ``extrapolate=False``.
 #[pyclass(extends = PyCurve, module = "karkas", name = "LLCurve", frozen)]
 pub struct PyLlCurve {
     /// The order L (the curve is C^L).
@@ -109,6 +114,11 @@ impl PyLlCurve {
 /// LLSurface(grid, order=5, closed_u=False, closed_v=False): grid (nu, nv, d), rows along u.
 /// Node (i, j) sits at (i/(Ku+1), j/(Kv+1)). Use LLSurface.interpolate for a surface through
 /// every grid point.
+///
+/// Outside the domain (the rule of every surface class, per direction): a closed direction
+/// wraps the parameter by its period; an open one continues the end polynomial pieces when
+/// ``extrapolate`` is None or True (the values of ``NdBSpline(*S.to_bspline())``) and gives
+/// NaN when ``extrapolate=False``.
 #[pyclass(extends = PySurface, module = "karkas", name = "LLSurface", frozen)]
 pub struct PyLlSurface {
     /// The order L (the surface is C^L).

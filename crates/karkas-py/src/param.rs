@@ -69,6 +69,11 @@ fn parse_ends<const D: usize>(bc: &Bound<'_, PyAny>) -> PyResult<SplineEnds<D>> 
 /// ('uniform', 'chord', 'centripetal'; starting at 0). bc: 'not-a-knot', 'natural', 'periodic'
 /// (closes the curve: the first point is appended unless the last repeats it) or
 /// ('clamped', start_derivative, end_derivative).
+///
+/// Outside the domain (the rule of every curve class): a closed curve wraps the parameter by
+/// its period; an open curve continues its end polynomial pieces when ``extrapolate`` is None
+/// or True (SciPy's ``BSpline`` default; the values of ``BSpline(*c.to_bspline())``) and gives
+/// NaN when ``extrapolate=False``.
 #[pyclass(extends = PyCurve, module = "karkas", name = "CubicSpline", frozen)]
 pub struct PyCubicSpline {
     /// The knots t_0 < ... < t_{n-1}.
@@ -165,6 +170,11 @@ enum GridParameters {
 /// (nu, nv, d). parameterization: 'uniform', 'chord' (chord lengths along the first row and
 /// column), 'averaged-chord', 'centripetal'. BicubicSurface.from_knots(grid, knots_u, knots_v)
 /// takes the parameters instead.
+///
+/// Outside the domain (the rule of every surface class, per direction): a closed direction
+/// wraps the parameter by its period; an open one continues the end polynomial pieces when
+/// ``extrapolate`` is None or True (the values of ``NdBSpline(*S.to_bspline())``) and gives
+/// NaN when ``extrapolate=False``.
 #[pyclass(extends = PySurface, module = "karkas", name = "BicubicSurface", frozen)]
 pub struct PyBicubicSurface {
     /// The u parameters of the grid rows (a closed direction includes the closing step).
