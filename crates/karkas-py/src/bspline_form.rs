@@ -47,7 +47,8 @@ impl FlatBSpline {
     /// The `nu`-th derivative as a B-spline (degree `max(k - nu, 0)`; zero beyond the degree).
     pub fn derivative(&self, nu: usize) -> Self {
         let mut b = self.clone();
-        for _ in 0..nu {
+        // Past degree + 1 steps every coefficient is zero already.
+        for _ in 0..nu.min(self.degree + 1) {
             b = b.differentiated();
         }
         b

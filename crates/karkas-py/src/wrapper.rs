@@ -6,7 +6,7 @@
 //! buffers (one dynamic call per batch, the library's `eval_into` inside). Every concrete class
 //! hands its base class one of these.
 
-use karkas::bspline::{ToBSplineCurve, ToBSplineSurface};
+use karkas::bspline::{ToBSplineCurve, ToBSplineSurface, MAX_DEGREE};
 use karkas::implicit::ExpressionSurface;
 use karkas::measure::{hausdorff_surface_implicit, Hausdorff};
 use karkas::section::{plane_section, Plane, SectionOptions};
@@ -66,6 +66,11 @@ where
         self.0.continuity()
     }
     fn eval_flat(&self, ts: &[f64], k: usize, out: &mut [f64]) {
+        if k > MAX_DEGREE {
+            // Beyond every piece's degree (and where the library's factorials overflow).
+            out.fill(0.0);
+            return;
+        }
         let out = as_points_mut::<D>(out);
         if k == 0 {
             self.0.eval_into(ts, out);
@@ -164,6 +169,10 @@ where
         (self.0.is_closed_u(), self.0.is_closed_v())
     }
     fn grid_flat(&self, us: &[f64], vs: &[f64], ku: usize, kv: usize, out: &mut [f64]) {
+        if ku > MAX_DEGREE || kv > MAX_DEGREE {
+            out.fill(0.0);
+            return;
+        }
         let out: &mut [Point<D>] = as_points_mut(out);
         if ku == 0 && kv == 0 {
             self.0.eval_grid_into(us, vs, out);
@@ -195,6 +204,10 @@ where
         hausdorff_surface_implicit(&Lift(&self.0), implicit, patch, samples)
     }
     fn points_flat(&self, us: &[f64], vs: &[f64], ku: usize, kv: usize, out: &mut [f64]) {
+        if ku > MAX_DEGREE || kv > MAX_DEGREE {
+            out.fill(0.0);
+            return;
+        }
         let out: &mut [Point<D>] = as_points_mut(out);
         for ((p, &u), &v) in out.iter_mut().zip(us).zip(vs) {
             *p = if ku == 0 && kv == 0 {

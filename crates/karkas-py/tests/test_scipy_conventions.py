@@ -288,3 +288,25 @@ def test_surfaces_no_longer_clamp():
     us = np.linspace(a - 0.05, a, 4)
     pts = S(us, 0.5)
     assert len(np.unique(pts.round(12), axis=0)) == 4
+
+
+def test_orders_beyond_the_degree_are_zero_everywhere(wavy3d):
+    rng = np.random.default_rng(5)
+    for c in (karkas.LLCurve(wavy3d, order=3), karkas.CubicSpline(wavy3d)):
+        a, b = c.domain
+        ts = np.array([a - 0.1, 0.5 * (a + b), b + 0.1])
+        for nu in (7, 200, 10**6):
+            np.testing.assert_array_equal(c(ts, nu), 0.0)
+            np.testing.assert_array_equal(c.derivative(nu)(ts), 0.0)
+        t, coefs, k = c.derivative(10**6).to_bspline()
+        assert k == 0 and not coefs.any()
+    for S in (karkas.LLSurface(rng.normal(size=(5, 6, 3))), karkas.BicubicSurface(rng.normal(size=(5, 6, 3)))):
+        us = np.array([-0.1, 0.5, 1.1])
+        np.testing.assert_array_equal(S(us, us, 10**6, 0), 0.0)
+        np.testing.assert_array_equal(S(us, us, 0, 300, grid=False), 0.0)
+
+
+def test_extrapolate_must_be_a_bool(wavy3d):
+    c = karkas.CubicSpline(wavy3d)
+    with pytest.raises(TypeError):
+        c(0.5, extrapolate="periodic")
