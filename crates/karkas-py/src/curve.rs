@@ -11,13 +11,57 @@ use pyo3::prelude::*;
 use crate::convert::{maybe_detach, output_array, uniform, vector_to_array, write_flat, Params};
 use crate::wrapper::CurveImpl;
 
-/// Base class of every karkas curve.
+/// Base class of every karkas curve: a parametric curve in 2-D or 3-D, called like SciPy's
+/// splines.
 ///
-/// Calling a curve evaluates it: `c(t)` with a float `t` gives an array of shape `(d,)`, with an
-/// array of any shape an array of shape `t.shape + (d,)`. `out=` takes a preallocated
-/// C-contiguous float64 array of that shape and writes into it without allocating (it is
-/// returned). Parameters outside the domain are clamped (open curves, except cubic splines,
-/// which extend their end pieces) or wrapped (closed curves).
+/// Curves are made by the subclasses (``LLCurve``, ``CubicSpline``, ``fit_curve``'s
+/// ``HermiteSpline``, ...); ``Curve`` itself has no constructor. ``isinstance(c,
+/// karkas.Curve)`` tells any karkas curve.
+///
+/// Calling a curve, ``c(t, nu=0, out=None, extrapolate=None)``, evaluates it or its
+/// ``nu``-th derivative with respect to the parameter.
+///
+/// Parameters
+/// ----------
+/// t : float or array_like
+///     The parameters. A float gives an array of shape ``(d,)``, an array of any shape an
+///     array of shape ``t.shape + (d,)``.
+/// nu : int, optional
+///     The order of the derivative (0: the points).
+/// out : numpy.ndarray, optional
+///     A C-contiguous float64 array of the result's shape, written without allocating and
+///     returned.
+/// extrapolate : bool, optional
+///     Parameters outside the domain: a closed curve wraps them by its period; an open curve
+///     continues its end polynomial pieces when ``extrapolate`` is None or True (SciPy's
+///     rule) and gives NaN when it is False.
+///
+/// Returns
+/// -------
+/// numpy.ndarray
+///     float64, shape ``t.shape + (d,)`` (``out`` when given).
+///
+/// Raises
+/// ------
+/// TypeError
+///     ``t`` is not a number or an array of numbers; ``out`` is not a C-contiguous float64
+///     array.
+/// ValueError
+///     ``out`` has the wrong shape.
+///
+/// Examples
+/// --------
+/// >>> c = karkas.CubicSpline([[0.0, 0.0], [1.0, 1.0], [2.0, 0.0], [3.0, 1.0]],
+/// ...                        parameterization="uniform")
+/// >>> isinstance(c, karkas.Curve)
+/// True
+/// >>> c(1.0)
+/// array([1., 1.])
+/// >>> c(np.linspace(0.0, 3.0, 7)).shape
+/// (7, 2)
+/// >>> out = np.empty((4, 2))
+/// >>> c(np.arange(4.0), out=out) is out
+/// True
 #[pyclass(subclass, module = "karkas", name = "Curve", frozen)]
 pub struct PyCurve {
     pub inner: Arc<dyn CurveImpl>,
@@ -34,7 +78,7 @@ impl PyCurve {
 
 #[pymethods]
 impl PyCurve {
-    /// c(t, out=None): the curve at `t` (float -> (d,), array -> t.shape + (d,)).
+    /// The curve at ``t`` (see the class docstring).
     #[pyo3(signature = (t, out = None))]
     fn __call__<'py>(
         &self,
@@ -45,7 +89,36 @@ impl PyCurve {
         self.derivative(py, t, 0, out)
     }
 
-    /// c.derivative(t, k=1, out=None): the k-th derivative with respect to the parameter.
+    /// The ``k``-th derivative with respect to the parameter at ``t``.
+    ///
+    /// Parameters
+    /// ----------
+    /// t : float or array_like
+    ///     The parameters (as for calling the curve).
+    /// k : int, optional
+    ///     The order of the derivative.
+    /// out : numpy.ndarray, optional
+    ///     A C-contiguous float64 array of the result's shape, written and returned.
+    ///
+    /// Returns
+    /// -------
+    /// numpy.ndarray
+    ///     float64, shape ``t.shape + (d,)``.
+    ///
+    /// Raises
+    /// ------
+    /// TypeError
+    ///     ``t`` is not a number or an array of numbers, or ``out`` is not a C-contiguous
+    ///     float64 array.
+    /// ValueError
+    ///     ``out`` has the wrong shape.
+    ///
+    /// Examples
+    /// --------
+    /// >>> c = karkas.CubicSpline([[0.0, 0.0], [1.0, 0.0], [2.0, 0.0], [3.0, 0.0]],
+    /// ...                        parameterization="uniform")
+    /// >>> c.derivative(1.5)
+    /// array([1., 0.])
     #[pyo3(signature = (t, k = 1, out = None))]
     fn derivative<'py>(
         &self,
@@ -66,7 +139,34 @@ impl PyCurve {
         Ok(array)
     }
 
-    /// c.sample(n): `n` points at uniformly spaced parameters over the domain, shape (n, d).
+    /// ``n`` points at uniformly spaced parameters over the domain, ends included.
+    ///
+    /// Parameters
+    /// ----------
+    /// n : int
+    ///     The number of points.
+    ///
+    /// Returns
+    /// -------
+    /// numpy.ndarray
+    ///     float64, shape ``(n, d)``: the curve at ``np.linspace(a, b, n)``, ``(a, b) =
+    ///     c.domain``.
+    ///
+    /// Raises
+    /// ------
+    /// OverflowError
+    ///     ``n`` is negative.
+    /// MemoryError
+    ///     The result does not fit in memory.
+    ///
+    /// Examples
+    /// --------
+    /// >>> c = karkas.LLCurve([[0.0, 0.0], [1.0, 2.0], [2.0, 0.0], [3.0, 2.0]], order=3)
+    /// >>> p = c.sample(5)
+    /// >>> p.shape
+    /// (5, 2)
+    /// >>> bool(np.allclose(p, c(np.linspace(*c.domain, 5))))
+    /// True
     fn sample<'py>(&self, py: Python<'py>, n: usize) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
         let ts = uniform(self.inner.domain(), n);
         let array = PyArrayDyn::<f64>::zeros(py, &[n, self.inner.dim()][..], false);
@@ -77,31 +177,31 @@ impl PyCurve {
         Ok(array)
     }
 
-    /// The parameter domain (a, b).
+    /// The parameter domain ``(a, b)``: where the curve is defined by its pieces.
     #[getter]
     fn domain(&self) -> (f64, f64) {
         self.inner.domain()
     }
 
-    /// The dimension d (2 or 3).
+    /// The dimension ``d`` of the points (2 or 3).
     #[getter]
     fn dim(&self) -> usize {
         self.inner.dim()
     }
 
-    /// True when the curve is closed (evaluation wraps by the period).
+    /// True when the curve is closed (parameters wrap by the period ``b - a``).
     #[getter]
     fn closed(&self) -> bool {
         self.inner.closed()
     }
 
-    /// The parameters where the polynomial pieces meet, ends included.
+    /// The parameters where the polynomial pieces meet, ends included, float64 ``(m,)``.
     #[getter]
     fn breakpoints<'py>(&self, py: Python<'py>) -> Bound<'py, PyArrayDyn<f64>> {
         vector_to_array(py, &self.inner.breakpoints())
     }
 
-    /// The order of continuity at the breakpoints (C^k).
+    /// The order of continuity ``k`` at the breakpoints (the curve is C^k).
     #[getter]
     fn continuity(&self) -> usize {
         self.inner.continuity()
