@@ -11,6 +11,18 @@ matplotlib; optional: geomdl (`pip install geomdl`), Open CASCADE (`pip install 
 
     python3 bench/compare.py            # full sizes (several minutes)
     python3 bench/compare.py --quick    # small sizes, a smoke run (well under a minute)
+    python3 bench/compare.py --overhead # only the call overhead on one point (seconds)
+    python3 bench/compare.py --python-vs-rust [--run-rust]  # only 10^7 points, Python vs Rust
+
+Besides the jobs, two checks of the Python binding itself (both in every full run):
+
+- the call overhead on ONE point: a karkas CubicSpline, SciPy's BSpline (make_interp_spline)
+  and SciPy's CubicSpline on the same data, their values checked equal first, timed
+  interleaved in rounds (each round calls each tool in turn, the order rotating), medians per
+  call; the goal is karkas within 2x of BSpline;
+- 10^7 points of an LL curve from Python (`c(t, out=)`) against the same job in Rust, the
+  Criterion benchmark ll_curve_eval_L5_3d_1e7/sorted/1000 of bench/benches/ll.rs (its median,
+  read from target/criterion; --run-rust runs it first); the goal is Python within 1.1x.
 """
 
 import argparse
@@ -18,6 +30,7 @@ import json
 import os
 import platform
 import statistics
+import subprocess
 import sys
 import time
 
@@ -577,6 +590,94 @@ def bicubic_eval_job(sizes, grid_n):
 
 
 # ---------------------------------------------------------------------------------------------
+# The binding's own costs
+
+
+def one_point_overhead(rounds, calls):
+    """Median seconds per call of evaluating ONE point, karkas against SciPy, interleaved.
+
+    The same 1000-point 3-D interpolant three ways: karkas CubicSpline (chord parameters,
+    not-a-knot), SciPy BSpline from make_interp_spline (the same cubic: not-a-knot is its default
+    for k=3) and SciPy CubicSpline. Their values at the point are checked equal (1e-12) before
+    any timing. Each round times `calls` calls of each tool in turn, the order rotating from
+    round to round, so that drift of the machine hits every tool alike.
+    """
+    pts = open_curve(1000)
+    t = chord_parameters(pts)
+    x = float(0.37 * t[-1])
+    tools = {
+        "karkas CubicSpline c(x)": karkas.CubicSpline(pts, t=t, bc="not-a-knot"),
+        "SciPy BSpline bs(x)": make_interp_spline(t, pts, k=3),
+        "SciPy CubicSpline cs(x)": CubicSpline(t, pts, bc_type="not-a-knot", axis=0),
+    }
+    reference = tools["SciPy CubicSpline cs(x)"](x)
+    for name, f in tools.items():
+        value = f(x)
+        if value.shape != reference.shape or not np.allclose(value, reference, rtol=0, atol=1e-12):
+            raise AssertionError(f"{name} gives {value}, SciPy CubicSpline {reference}")
+    names = list(tools)
+    samples = {name: [] for name in names}
+    for r in range(rounds):
+        for name in names[r % len(names):] + names[: r % len(names)]:
+            f = tools[name]
+            t0 = time.perf_counter()
+            for _ in range(calls):
+                f(x)
+            samples[name].append((time.perf_counter() - t0) / calls)
+    medians = {name: statistics.median(v) for name, v in samples.items()}
+    print(f"\n== call overhead on one point ({rounds} rounds x {calls} calls, interleaved)")
+    for name, m in medians.items():
+        print(f"   {name:34s} {m * 1e9:9.0f} ns per call")
+    ratio = medians["karkas CubicSpline c(x)"] / medians["SciPy BSpline bs(x)"]
+    print(f"   karkas / BSpline: {ratio:.2f} (goal: at most 2)")
+    return {"rounds": rounds, "calls": calls, "median_s": medians, "karkas_over_bspline": ratio}
+
+
+RUST_1E7 = "ll_curve_eval_L5_3d_1e7/sorted/1000"
+
+
+def ll_polygon(k):
+    """The wavy 3-D polygon of bench/benches/ll.rs (point i at s = 0.01 i)."""
+    s = np.arange(k) * 0.01
+    return np.column_stack(
+        [np.cos(s) * (1.0 + 0.3 * np.sin(7.0 * s)), np.sin(s), 0.2 * np.cos(3.0 * s)]
+    )
+
+
+def python_vs_rust(runs, run_rust):
+    """10^7 points of an LL curve (order 5, 1000 points, 3-D) from Python with out= against
+    the Rust benchmark of the same job (its Criterion median)."""
+    root = os.path.dirname(HERE)
+    if run_rust:
+        subprocess.run(
+            ["cargo", "bench", "-p", "karkas-bench", "--bench", "ll", "--", "ll_curve_eval_L5_3d_1e7"],
+            cwd=root,
+            check=True,
+        )
+    n = 10_000_000
+    curve = karkas.LLCurve(ll_polygon(1000), order=5)
+    a, b = curve.domain
+    ts = np.linspace(a, b, n)
+    out = np.empty((n, 3))
+    curve(ts, out=out)  # first touch of the buffer's pages
+    py, _ = timed(lambda: curve(ts, out=out), runs)
+    print("\n== 10^7 points of an LL curve (L=5, 1000 points, 3-D), out=")
+    print(f"   Python c(t, out=)                  {py * 1e3:9.2f} ms (median of {runs})")
+    result = {"python_s": py, "rust_s": None, "python_over_rust": None}
+    estimates = os.path.join(root, "target", "criterion", *RUST_1E7.split("/"), "new", "estimates.json")
+    if os.path.exists(estimates):
+        with open(estimates) as f:
+            rust = json.load(f)["median"]["point_estimate"] * 1e-9
+        result.update(rust_s=rust, python_over_rust=py / rust)
+        print(f"   Rust eval_into (Criterion median)  {rust * 1e3:9.2f} ms")
+        print(f"   Python / Rust: {py / rust:.3f} (goal: at most 1.1)")
+    else:
+        print(f"   no Rust figure: run with --run-rust, or `cargo bench -p karkas-bench --bench ll "
+              f"-- ll_curve_eval_L5_3d_1e7` first")
+    return result
+
+
+# ---------------------------------------------------------------------------------------------
 
 
 def plot(job, path):
@@ -606,11 +707,26 @@ def main():
     ap.add_argument("--quick", action="store_true", help="small sizes: a smoke run")
     ap.add_argument("--repeats", type=int, default=None, help="runs per measurement (median)")
     ap.add_argument("--jobs", default=None, help="comma-separated job names to run")
+    ap.add_argument("--overhead", action="store_true", help="only the one-point call overhead")
+    ap.add_argument("--rounds", type=int, default=15, help="rounds of the one-point overhead")
+    ap.add_argument("--calls", type=int, default=20_000, help="calls per tool and round")
+    ap.add_argument(
+        "--python-vs-rust", action="store_true", help="only 10^7 points from Python against Rust"
+    )
+    ap.add_argument(
+        "--run-rust", action="store_true", help="run the Rust benchmark first (cargo bench)"
+    )
     ap.add_argument("--out", default=os.path.join(HERE, "results.json"))
     ap.add_argument("--plots", default=os.path.join(HERE, "plots"))
     args = ap.parse_args()
     quick = args.quick
     repeats = args.repeats or (3 if quick else 5)
+    if args.overhead or args.python_vs_rust:
+        if args.overhead:
+            one_point_overhead(args.rounds, args.calls)
+        if args.python_vs_rust:
+            python_vs_rust(args.repeats or 15, args.run_rust)
+        return
 
     if quick:
         jobs = [
@@ -639,6 +755,12 @@ def main():
     t0 = time.perf_counter()
     for job in jobs:
         job.run(repeats)
+    binding = None
+    if not args.jobs:
+        binding = {
+            "one_point_overhead": one_point_overhead(args.rounds, args.calls),
+            "python_vs_rust_1e7": python_vs_rust(repeats if quick else 15, args.run_rust),
+        }
 
     os.makedirs(args.plots, exist_ok=True)
     results = {
@@ -656,6 +778,7 @@ def main():
         "quick": quick,
         "repeats": repeats,
         "jobs": {},
+        "binding": binding,
     }
     print("\n== ratios peer / karkas at the largest common size (> 1: karkas faster)")
     for job in jobs:

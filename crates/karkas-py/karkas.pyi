@@ -1,17 +1,67 @@
-"""Type stubs of the karkas Python package (built from crates/karkas-py)."""
+"""Type stubs of the karkas Python package (built from crates/karkas-py).
+
+Checked against the built module in CI by ``python -m mypy.stubtest karkas`` (allowlist:
+stubtest-allowlist.txt). The docstrings of the module itself are the reference; these are
+summaries.
+"""
 
 import os
 from typing import Any, Optional, Sequence, Tuple, Union
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
+from typing_extensions import Self, TypeAlias, disjoint_base, final
 
 __version__: str
-__all__: list[str]
+__all__ = [
+    "SurfaceDerivative",
+    "NoBSplineFormError",
+    "CurveDerivative",
+    "BicubicSurface",
+    "ConvergenceError",
+    "CoonsSurface",
+    "CubicSpline",
+    "Curve",
+    "DiscreteSpline",
+    "ExpressionError",
+    "FileFormatError",
+    "HermiteSpline",
+    "ImplicitSurface",
+    "IncompatibleDataError",
+    "KarkasError",
+    "KnotsError",
+    "LLCurve",
+    "LLSurface",
+    "OptionError",
+    "PointsError",
+    "SectionCurve",
+    "Surface",
+    "TubeSurface",
+    "__version__",
+    "curve_parameters",
+    "export_curve_csv",
+    "export_obj",
+    "export_stl",
+    "export_surface_csv",
+    "fit_curve",
+    "grid_parameters",
+    "hausdorff",
+    "hausdorff_to_implicit",
+    "max_input_bytes",
+    "read_airfoil",
+    "read_curve",
+    "read_grid",
+    "read_mesh",
+    "read_network",
+    "set_max_input_bytes",
+    "vary",
+]
 
-Floats = NDArray[np.float64]
-Params = Union[float, ArrayLike]
-Bc = Union[str, Tuple[str, ArrayLike, ArrayLike]]
+# Stub-only aliases (private: not names of the module).
+_Floats: TypeAlias = NDArray[np.float64]
+_Params: TypeAlias = Union[float, ArrayLike]
+_Bc: TypeAlias = Union[str, Tuple[str, ArrayLike, ArrayLike]]
+_FilePath: TypeAlias = Union[str, "os.PathLike[str]"]
 
 class KarkasError(ValueError):
     """An error of karkas: bad input, or a method that could not finish.
@@ -52,6 +102,7 @@ class NoBSplineFormError(KarkasError):
     """An object with no exact B-spline form (to_bspline, or an evaluation outside the domain
     of a surface that is not a piecewise polynomial, with extrapolate None or True)."""
 
+@disjoint_base
 class Curve:
     """Base class of every curve: c(t, nu=0, out=None, extrapolate=None) -> points or
     derivatives. Outside the domain a closed curve wraps by its period; an open curve continues
@@ -59,18 +110,18 @@ class Curve:
 
     def __call__(
         self,
-        t: Params,
+        t: _Params,
         nu: int = 0,
-        out: Optional[Floats] = None,
+        out: Optional[_Floats] = None,
         extrapolate: Optional[bool] = None,
-    ) -> Floats:
+    ) -> _Floats:
         """The nu-th derivative at t: float -> (d,), array -> t.shape + (d,); out= is written
         and returned."""
     def derivative(self, nu: int = 1) -> "CurveDerivative":
         """The nu-th derivative as a curve object."""
-    def to_bspline(self) -> Tuple[Floats, Floats, int]:
+    def to_bspline(self) -> Tuple[_Floats, _Floats, int]:
         """The exact B-spline form (t, c, k) for scipy.interpolate.BSpline."""
-    def sample(self, n: int) -> Floats:
+    def sample(self, n: int) -> _Floats:
         """n points at uniformly spaced parameters over the domain, (n, d)."""
     @property
     def domain(self) -> Tuple[float, float]: ...
@@ -79,10 +130,11 @@ class Curve:
     @property
     def closed(self) -> bool: ...
     @property
-    def breakpoints(self) -> Floats: ...
+    def breakpoints(self) -> _Floats: ...
     @property
     def continuity(self) -> int: ...
 
+@final
 class CurveDerivative(Curve):
     """The nu-th derivative of a curve as a curve (Curve.derivative)."""
 
@@ -92,56 +144,61 @@ class CurveDerivative(Curve):
     def nu(self) -> int: ...
     def __reduce__(self) -> Tuple[Any, Tuple[int]]: ...
 
+@final
 class LLCurve(Curve):
     """The LL approximation of a support polygon (points (n, d), d in {2, 3})."""
 
-    def __init__(self, points: ArrayLike, order: int = 5, closed: bool = False) -> None: ...
+    def __new__(cls, points: ArrayLike, order: int = 5, closed: bool = False) -> Self: ...
     @staticmethod
-    def interpolate(points: ArrayLike, order: int = 5, closed: bool = False) -> "LLCurve":
+    def interpolate(points: ArrayLike, order: int = 5, closed: bool = False) -> LLCurve:
         """The interpolating LL curve: through every point at t_i = i/(K+1)."""
     @property
     def order(self) -> int: ...
     @property
     def interpolating(self) -> bool: ...
     @property
-    def control_points(self) -> Floats: ...
+    def control_points(self) -> _Floats: ...
 
+@final
 class CubicSpline(Curve):
     """A C^2 cubic interpolating spline through points (n, d)."""
 
-    def __init__(
-        self,
+    def __new__(
+        cls,
         points: ArrayLike,
         t: Optional[ArrayLike] = None,
         parameterization: str = "chord",
-        bc: Optional[Bc] = None,
-    ) -> None:
-        """bc: 'not-a-knot' (default), 'natural', 'periodic' or ('clamped', d0, d1);
-        parameterization: 'uniform', 'chord', 'centripetal' (ignored when t is given)."""
+        bc: Optional[_Bc] = None,
+    ) -> Self: ...
     @property
-    def knots(self) -> Floats: ...
+    def knots(self) -> _Floats: ...
     @property
-    def values(self) -> Floats: ...
+    def values(self) -> _Floats: ...
     @property
-    def slopes(self) -> Floats: ...
+    def slopes(self) -> _Floats: ...
 
+@final
 class HermiteSpline(Curve):
-    """A C^1 cubic Hermite spline on [0, 1], the result of fit_curve."""
+    """A C^1 cubic Hermite spline on [0, 1], the result of fit_curve (no constructor)."""
 
-    max_distance: float
-    rms_distance: float
-    jump_sum: float
-    tolerance_met: Optional[bool]
     @property
-    def knots(self) -> Floats: ...
+    def knots(self) -> _Floats: ...
     @property
-    def values(self) -> Floats: ...
+    def values(self) -> _Floats: ...
     @property
-    def derivatives(self) -> Floats: ...
+    def derivatives(self) -> _Floats: ...
     @property
-    def parameters(self) -> Floats: ...
+    def max_distance(self) -> float: ...
     @property
-    def distances(self) -> Floats: ...
+    def rms_distance(self) -> float: ...
+    @property
+    def jump_sum(self) -> float: ...
+    @property
+    def tolerance_met(self) -> Optional[bool]: ...
+    @property
+    def parameters(self) -> _Floats: ...
+    @property
+    def distances(self) -> _Floats: ...
 
 def fit_curve(
     points: ArrayLike,
@@ -154,6 +211,7 @@ def fit_curve(
 ) -> HermiteSpline:
     """Fits points (n, d) with a C^1 cubic Hermite spline; give knots (count or array) or tolerance."""
 
+@disjoint_base
 class Surface:
     """Base class of every surface: S(u, v, du=0, dv=0, grid=True, out=None,
     extrapolate=None) -> points or partial derivatives. Outside the domain, per direction: a
@@ -162,29 +220,29 @@ class Surface:
 
     def __call__(
         self,
-        u: Params,
-        v: Params,
+        u: _Params,
+        v: _Params,
         du: int = 0,
         dv: int = 0,
         grid: bool = True,
-        out: Optional[Floats] = None,
+        out: Optional[_Floats] = None,
         extrapolate: Optional[bool] = None,
-    ) -> Floats:
+    ) -> _Floats:
         """grid=True: (mu, mv, d) on u x v; grid=False: u.shape + (d,) at the pairs (u, v)."""
     def derivative(self, du: int = 1, dv: int = 0) -> "SurfaceDerivative":
         """The partial derivative d^(du+dv) S / du^du dv^dv as a surface object."""
     def to_bspline(
         self,
-    ) -> Tuple[Tuple[Floats, Floats], Floats, Tuple[int, int]]:
+    ) -> Tuple[Tuple[_Floats, _Floats], _Floats, Tuple[int, int]]:
         """The exact B-spline form ((tu, tv), c (nu, nv, d), (ku, kv)) for NdBSpline."""
-    def sample(self, nu: int, nv: int) -> Floats: ...
+    def sample(self, nu: int, nv: int) -> _Floats: ...
     def section(
         self,
         normal: Sequence[float],
         offset: float,
         tolerance: Optional[float] = None,
         cells: Tuple[int, int] = (64, 64),
-    ) -> "list[SectionCurve]":
+    ) -> list[SectionCurve]:
         """Where the plane normal . x = offset cuts the surface, as polylines on it."""
     @property
     def domain_u(self) -> Tuple[float, float]: ...
@@ -197,6 +255,7 @@ class Surface:
     @property
     def closed_v(self) -> bool: ...
 
+@final
 class SurfaceDerivative(Surface):
     """A partial derivative of a surface as a surface (Surface.derivative)."""
 
@@ -208,32 +267,33 @@ class SurfaceDerivative(Surface):
     def dv(self) -> int: ...
     def __reduce__(self) -> Tuple[Any, Tuple[int, int]]: ...
 
+@final
 class LLSurface(Surface):
     """The LL approximation of a grid (nu, nv, d)."""
 
-    def __init__(
-        self, grid: ArrayLike, order: int = 5, closed_u: bool = False, closed_v: bool = False
-    ) -> None: ...
+    def __new__(
+        cls, grid: ArrayLike, order: int = 5, closed_u: bool = False, closed_v: bool = False
+    ) -> Self: ...
     @staticmethod
     def interpolate(
         grid: ArrayLike, order: int = 5, closed_u: bool = False, closed_v: bool = False
-    ) -> "LLSurface": ...
+    ) -> LLSurface: ...
     @property
     def order(self) -> int: ...
     @property
     def interpolating(self) -> bool: ...
 
+@final
 class BicubicSurface(Surface):
     """Bicubic (C^2, not-a-knot or periodic) interpolation of a grid (nu, nv, d)."""
 
-    def __init__(
-        self,
+    def __new__(
+        cls,
         grid: ArrayLike,
         parameterization: str = "chord",
         closed_u: bool = False,
         closed_v: bool = False,
-    ) -> None:
-        """parameterization: 'uniform', 'chord', 'averaged-chord', 'centripetal'."""
+    ) -> Self: ...
     @staticmethod
     def from_knots(
         grid: ArrayLike,
@@ -241,22 +301,23 @@ class BicubicSurface(Surface):
         knots_v: ArrayLike,
         closed_u: bool = False,
         closed_v: bool = False,
-    ) -> "BicubicSurface": ...
+    ) -> BicubicSurface: ...
     @property
-    def knots_u(self) -> Floats: ...
+    def knots_u(self) -> _Floats: ...
     @property
-    def knots_v(self) -> Floats: ...
+    def knots_v(self) -> _Floats: ...
 
+@final
 class DiscreteSpline:
     """A closed discrete curve: N = m n periodic values of a discrete spline of order r."""
 
-    def __init__(self, poles: ArrayLike, order: int = 3, n: int = 10) -> None: ...
+    def __new__(cls, poles: ArrayLike, order: int = 3, n: int = 10) -> Self: ...
     @staticmethod
-    def interpolate(nodes: ArrayLike, order: int = 3, n: int = 10) -> "DiscreteSpline": ...
-    def values(self, out: Optional[Floats] = None) -> Floats:
+    def interpolate(nodes: ArrayLike, order: int = 3, n: int = 10) -> DiscreteSpline: ...
+    def values(self, out: Optional[_Floats] = None) -> _Floats:
         """The N values, (m n, d)."""
     @property
-    def poles(self) -> Floats: ...
+    def poles(self) -> _Floats: ...
     @property
     def order(self) -> int: ...
     @property
@@ -266,36 +327,40 @@ class DiscreteSpline:
     @property
     def dim(self) -> int: ...
 
+@final
 class TubeSurface:
     """A closed tube through a skeleton of closed discrete curves."""
 
-    def __init__(
-        self, along: ArrayLike, across: ArrayLike, n1: int, n2: int, r1: int = 3, r2: int = 3
-    ) -> None: ...
-    def values(self) -> Floats:
+    def __new__(
+        cls, along: ArrayLike, across: ArrayLike, n1: int, n2: int, r1: int = 3, r2: int = 3
+    ) -> Self: ...
+    def values(self) -> _Floats:
         """c(p, q), (N1, N2, d)."""
-    def closed_grid(self) -> Floats:
+    def closed_grid(self) -> _Floats:
         """The values with the seams repeated, (N1 + 1, N2 + 1, d)."""
 
+@final
 class SectionCurve:
-    """One connected piece of a plane section: a polyline on the surface."""
+    """One connected piece of a plane section: a polyline on the surface (no constructor)."""
 
-    closed: bool
-    length: float
     @property
-    def points(self) -> Floats:
+    def closed(self) -> bool: ...
+    @property
+    def length(self) -> float: ...
+    @property
+    def points(self) -> _Floats:
         """(n, d)."""
     @property
-    def params(self) -> Floats:
+    def params(self) -> _Floats:
         """The surface parameters (u, v) of the points, (n, 2)."""
     def __len__(self) -> int: ...
 
+@final
 class CoonsSurface(Surface):
     """Generalized Coons surfaces over a network of curves given by points."""
 
-    kind: str
-    def __init__(
-        self,
+    def __new__(
+        cls,
         v_curves: Sequence[ArrayLike],
         u_curves: Sequence[ArrayLike],
         kind: str = "gordon-spline",
@@ -304,18 +369,21 @@ class CoonsSurface(Surface):
         fit: Union[None, str, Tuple[str, int]] = None,
         crossing_tolerance: float = 1e-6,
         tolerance: float = 1e-4,
-    ) -> None:
+    ) -> Self:
         """kind: 'bilinear', 'bicubic', 'gordon', 'gordon-spline', 'composite'."""
+    @property
+    def kind(self) -> str: ...
 
+@final
 class ImplicitSurface:
     """An implicit surface F(x, y, z) = 0 given as an expression."""
 
-    def __init__(self, expression: str) -> None: ...
+    def __new__(cls, expression: str) -> Self: ...
     @property
     def expression(self) -> str: ...
-    def value(self, points: ArrayLike) -> Floats: ...
-    def gradient(self, points: ArrayLike) -> Floats: ...
-    def project(self, points: ArrayLike) -> Floats: ...
+    def value(self, points: ArrayLike) -> _Floats: ...
+    def gradient(self, points: ArrayLike) -> _Floats: ...
+    def project(self, points: ArrayLike) -> _Floats: ...
     def curvatures(self, point: Sequence[float]) -> dict:
         """normal, k1, k2, d1, d2, gaussian, mean."""
     def trace_net(
@@ -328,7 +396,7 @@ class ImplicitSurface:
         plane_normal: Optional[Sequence[float]] = None,
         closed_v: bool = False,
         substeps: int = 32,
-    ) -> Floats:
+    ) -> _Floats:
         """A node grid (nu, nv, 3) on F = 0 along lines of curvature (or turned nets)."""
 
 def hausdorff(a: ArrayLike, b: ArrayLike) -> dict:
@@ -347,21 +415,17 @@ def vary(
     fixed: Optional[ArrayLike] = None,
     penalty: Optional[float] = None,
     scale_with_total: bool = False,
-) -> Floats:
+) -> _Floats:
     """The least change of matrix with the given row and column sums (LL surface variation)."""
 
-def curve_parameters(points: ArrayLike, parameterization: str = "chord") -> Floats: ...
-def grid_parameters(grid: ArrayLike, parameterization: str = "chord") -> Tuple[Floats, Floats]: ...
-def export_obj(path: Union[str, "os.PathLike[str]"], grid: ArrayLike) -> None: ...
-def export_stl(path: Union[str, "os.PathLike[str]"], grid: ArrayLike) -> None: ...
-def export_curve_csv(path: Union[str, "os.PathLike[str]"], t: ArrayLike, points: ArrayLike) -> None: ...
-def export_surface_csv(
-    path: Union[str, "os.PathLike[str]"], u: ArrayLike, v: ArrayLike, grid: ArrayLike
-) -> None: ...
+def curve_parameters(points: ArrayLike, parameterization: str = "chord") -> _Floats: ...
+def grid_parameters(grid: ArrayLike, parameterization: str = "chord") -> Tuple[_Floats, _Floats]: ...
+def export_obj(path: _FilePath, grid: ArrayLike) -> None: ...
+def export_stl(path: _FilePath, grid: ArrayLike) -> None: ...
+def export_curve_csv(path: _FilePath, t: ArrayLike, points: ArrayLike) -> None: ...
+def export_surface_csv(path: _FilePath, u: ArrayLike, v: ArrayLike, grid: ArrayLike) -> None: ...
 
-FilePath = Union[str, "os.PathLike[str]"]
-
-def read_curve(path: FilePath) -> Floats:
+def read_curve(path: _FilePath) -> _Floats:
     """The ordered points of a curve file, (n, d) with d 2 or 3, as the command line's curve
     commands read it: CSV (an optional header naming x, y and optionally z), whitespace
     columns, or an airfoil .dat (Selig or Lednicer).
@@ -369,18 +433,18 @@ def read_curve(path: FilePath) -> Floats:
     Raises OSError (FileNotFoundError, PermissionError, IsADirectoryError) when the file
     cannot be opened, FileFormatError ("file:line: ...") when its content cannot be read."""
 
-def read_airfoil(path: FilePath) -> Tuple[str, Floats]:
+def read_airfoil(path: _FilePath) -> Tuple[str, _Floats]:
     """An airfoil .dat file (Selig or Lednicer): its name line and its contour (n, 2) in Selig
     order (trailing edge, upper surface, leading edge, lower surface, trailing edge)."""
 
-def read_grid(path: FilePath) -> Floats:
+def read_grid(path: _FilePath) -> _Floats:
     """A surface frame, CSV rows i,j,x,y,z, as an (m, n, 3) array: grid[i, j] is cell (i, j)."""
 
-def read_network(path: FilePath) -> list[Floats]:
+def read_network(path: _FilePath) -> list[_Floats]:
     """One family of curves of a curve network, CSV rows curve,x,y,z: one (k, 3) array per
     curve, in the order of the curve numbers (0, 1, ...)."""
 
-def read_mesh(path: FilePath) -> Tuple[Floats, NDArray[np.int64]]:
+def read_mesh(path: _FilePath) -> Tuple[_Floats, NDArray[np.int64]]:
     """A triangle mesh (.obj, .stl binary or ASCII, .ply, by extension): vertices (n, 3)
     float64 and faces (m, 3) int64 indexing the vertices from 0."""
 

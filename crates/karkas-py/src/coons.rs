@@ -45,25 +45,60 @@ fn first_dim(lists: &[Bound<'_, PyAny>], what: &str) -> PyResult<usize> {
 
 /// Generalized Coons surfaces (Chashnikov) over a network of curves given by points.
 ///
-/// CoonsSurface(v_curves, u_curves, kind="gordon-spline", u_derivs=None, v_derivs=None,
-/// fit="spline", crossing_tolerance=1e-6, tolerance=1e-4): v_curves run along v (listed by
-/// increasing u), u_curves along u (by increasing v); each a (k, d) array, interpolated by a
-/// not-a-knot cubic spline (fit="spline") or an interpolating LL curve (fit=("ll", order)).
-/// kind: 'bilinear' and 'bicubic' (two curves a family), 'gordon' (Lagrange blending),
-/// 'gordon-spline' (cubic-spline blending), 'composite' (C^1 piecewise bicubic).
-/// u_derivs / v_derivs: dS/dv along the u-curves and dS/du along the v-curves (one vector per
-/// point) for 'bicubic' and 'composite'. A family whose curves repeat their first point at the
-/// end is closed.
+/// Each curve of the network is a ``(k, d)`` array of points, interpolated by a not-a-knot
+/// cubic spline (``fit='spline'``) or an interpolating LL curve (``fit=('ll', order)``); the
+/// surface spans the network. A family whose curves repeat their first point at the end is
+/// closed. Calling the surface is described in ``Surface``.
 ///
-/// Outside the domain (the rule of every surface class, per direction): a closed direction
-/// wraps the parameter by its period; an open one continues the end polynomial pieces when
-/// ``extrapolate`` is None or True (the values of ``NdBSpline(*S.to_bspline())``) and gives
-/// NaN when ``extrapolate=False``.
-/// A surface over data that are not piecewise polynomials raises NoBSplineFormError
-/// there instead (it has no end pieces to continue).
+/// Parameters
+/// ----------
+/// v_curves : sequence of array_like
+///     The curves along ``v``, listed by increasing ``u``.
+/// u_curves : sequence of array_like
+///     The curves along ``u``, listed by increasing ``v``; every one crosses every curve of
+///     ``v_curves``.
+/// kind : str, optional
+///     ``'bilinear'`` and ``'bicubic'`` (two curves a family), ``'gordon'`` (Lagrange
+///     blending), ``'gordon-spline'`` (cubic-spline blending) or ``'composite'`` (C^1
+///     piecewise bicubic).
+/// u_derivs, v_derivs : sequence of array_like, optional
+///     For ``'bicubic'`` and ``'composite'``: dS/dv along the u-curves and dS/du along the
+///     v-curves, one vector per point (give both or neither).
+/// fit : str or tuple, optional
+///     How a curve is made from its points: ``'spline'`` (when None) or ``('ll', order)``.
+/// crossing_tolerance : float, optional
+///     How far apart two curves may pass and still count as crossing.
+/// tolerance : float, optional
+///     The tolerance of the network's compatibility checks.
+///
+/// Raises
+/// ------
+/// PointsError
+///     An empty family, a curve of too few points, or a wrong shape or dimension.
+/// IncompatibleDataError
+///     Curves that do not cross where they must.
+/// OptionError
+///     An unknown ``kind`` or ``fit``, or derivatives for one family only.
+///
+/// Examples
+/// --------
+/// A bilinear patch over four straight edges:
+///
+/// >>> s = np.linspace(0.0, 1.0, 5)
+/// >>> line = lambda a, b: np.outer(1 - s, a) + np.outer(s, b)
+/// >>> v_curves = [line([0, 0, 0], [0, 1, 0]), line([1, 0, 1], [1, 1, 1])]
+/// >>> u_curves = [line([0, 0, 0], [1, 0, 1]), line([0, 1, 0], [1, 1, 1])]
+/// >>> S = karkas.CoonsSurface(v_curves=v_curves, u_curves=u_curves, kind="bilinear")
+/// >>> S.kind
+/// 'bilinear'
+/// >>> a, b = S.domain_u
+/// >>> c, d = S.domain_v
+/// >>> np.round(S((a + b) / 2, (c + d) / 2), 6)
+/// array([0.5, 0.5, 0.5])
 #[pyclass(extends = PySurface, module = "karkas", name = "CoonsSurface", frozen)]
 pub struct PyCoonsSurface {
-    /// The kind of surface.
+    /// The kind of surface (``'bilinear'``, ``'bicubic'``, ``'gordon'``, ``'gordon-spline'``
+    /// or ``'composite'``).
     #[pyo3(get)]
     kind: String,
 }

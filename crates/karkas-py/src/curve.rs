@@ -12,19 +12,57 @@ use crate::bspline_form::FlatBSpline;
 use crate::convert::{maybe_detach, uniform, vector_to_array, write_flat};
 use crate::wrapper::CurveImpl;
 
-/// Base class of every karkas curve.
+/// Base class of every karkas curve: a parametric curve in 2-D or 3-D, called like SciPy's
+/// splines.
 ///
-/// Calling a curve evaluates it, as SciPy's ``BSpline``: ``c(t, nu=0, out=None,
-/// extrapolate=None)`` with a float ``t`` gives an array of shape ``(d,)``, with an array of any
-/// shape an array of shape ``t.shape + (d,)``; ``nu`` is the order of the derivative with
-/// respect to the parameter. ``out=`` takes a preallocated C-contiguous float64 array of that
-/// shape and writes into it without allocating (it is returned). ``c.derivative(nu)`` is the
-/// derivative as a curve object, ``c.to_bspline()`` the exact B-spline form ``(t, c, k)``.
+/// Curves are made by the subclasses (``LLCurve``, ``CubicSpline``, ``fit_curve``'s
+/// ``HermiteSpline``, ...); ``Curve`` itself has no constructor. ``isinstance(c,
+/// karkas.Curve)`` tells any karkas curve.
 ///
-/// Parameters outside the domain (the same rule for every curve class): a closed curve wraps
-/// them by its period; an open curve continues its end polynomial pieces when
-/// ``extrapolate`` is None or True (SciPy's ``BSpline`` rule, the values of
-/// ``scipy.interpolate.BSpline(*c.to_bspline())``) and gives NaN when ``extrapolate=False``.
+/// Calling a curve, ``c(t, nu=0, out=None, extrapolate=None)``, evaluates it or its
+/// ``nu``-th derivative with respect to the parameter.
+///
+/// Parameters
+/// ----------
+/// t : float or array_like
+///     The parameters. A float gives an array of shape ``(d,)``, an array of any shape an
+///     array of shape ``t.shape + (d,)``.
+/// nu : int, optional
+///     The order of the derivative (0: the points).
+/// out : numpy.ndarray, optional
+///     A C-contiguous float64 array of the result's shape, written without allocating and
+///     returned.
+/// extrapolate : bool, optional
+///     Parameters outside the domain: a closed curve wraps them by its period; an open curve
+///     continues its end polynomial pieces when ``extrapolate`` is None or True (SciPy's
+///     rule) and gives NaN when it is False.
+///
+/// Returns
+/// -------
+/// numpy.ndarray
+///     float64, shape ``t.shape + (d,)`` (``out`` when given).
+///
+/// Raises
+/// ------
+/// TypeError
+///     ``t`` is not a number or an array of numbers; ``out`` is not a C-contiguous float64
+///     array.
+/// ValueError
+///     ``out`` has the wrong shape.
+///
+/// Examples
+/// --------
+/// >>> c = karkas.CubicSpline([[0.0, 0.0], [1.0, 1.0], [2.0, 0.0], [3.0, 1.0]],
+/// ...                        parameterization="uniform")
+/// >>> isinstance(c, karkas.Curve)
+/// True
+/// >>> c(1.0)
+/// array([1., 1.])
+/// >>> c(np.linspace(0.0, 3.0, 7)).shape
+/// (7, 2)
+/// >>> out = np.empty((4, 2))
+/// >>> c(np.arange(4.0), out=out) is out
+/// True
 #[pyclass(subclass, module = "karkas", name = "Curve", frozen)]
 pub struct PyCurve {
     pub inner: Arc<dyn CurveImpl>,
@@ -55,7 +93,34 @@ impl PyCurve {
 
 #[pymethods]
 impl PyCurve {
-    /// c.sample(n): `n` points at uniformly spaced parameters over the domain, shape (n, d).
+    /// ``n`` points at uniformly spaced parameters over the domain, ends included.
+    ///
+    /// Parameters
+    /// ----------
+    /// n : int
+    ///     The number of points.
+    ///
+    /// Returns
+    /// -------
+    /// numpy.ndarray
+    ///     float64, shape ``(n, d)``: the curve at ``np.linspace(a, b, n)``, ``(a, b) =
+    ///     c.domain``.
+    ///
+    /// Raises
+    /// ------
+    /// OverflowError
+    ///     ``n`` is negative.
+    /// MemoryError
+    ///     The result does not fit in memory.
+    ///
+    /// Examples
+    /// --------
+    /// >>> c = karkas.LLCurve([[0.0, 0.0], [1.0, 2.0], [2.0, 0.0], [3.0, 2.0]], order=3)
+    /// >>> p = c.sample(5)
+    /// >>> p.shape
+    /// (5, 2)
+    /// >>> bool(np.allclose(p, c(np.linspace(*c.domain, 5))))
+    /// True
     fn sample<'py>(&self, py: Python<'py>, n: usize) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
         let ts = uniform(self.inner.domain(), n);
         let array = PyArrayDyn::<f64>::zeros(py, &[n, self.inner.dim()][..], false);
@@ -66,31 +131,31 @@ impl PyCurve {
         Ok(array)
     }
 
-    /// The parameter domain (a, b).
+    /// The parameter domain ``(a, b)``: where the curve is defined by its pieces.
     #[getter]
     fn domain(&self) -> (f64, f64) {
         self.inner.domain()
     }
 
-    /// The dimension d (2 or 3).
+    /// The dimension ``d`` of the points (2 or 3).
     #[getter]
     fn dim(&self) -> usize {
         self.inner.dim()
     }
 
-    /// True when the curve is closed (evaluation wraps by the period).
+    /// True when the curve is closed (parameters wrap by the period ``b - a``).
     #[getter]
     fn closed(&self) -> bool {
         self.inner.closed()
     }
 
-    /// The parameters where the polynomial pieces meet, ends included.
+    /// The parameters where the polynomial pieces meet, ends included, float64 ``(m,)``.
     #[getter]
     fn breakpoints<'py>(&self, py: Python<'py>) -> Bound<'py, PyArrayDyn<f64>> {
         vector_to_array(py, &self.inner.breakpoints())
     }
 
-    /// The order of continuity at the breakpoints (C^k).
+    /// The order of continuity ``k`` at the breakpoints (the curve is C^k).
     #[getter]
     fn continuity(&self) -> usize {
         self.inner.continuity()

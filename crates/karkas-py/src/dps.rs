@@ -20,12 +20,35 @@ fn point_dim<const D: usize>(_: &[Point<D>]) -> usize {
 /// A discrete spline of either dimension.
 type AnySpline = ByDim<DiscreteSpline<2>, DiscreteSpline<3>>;
 
-/// A closed discrete curve: the N = m n periodic values of a discrete spline of order r with m
-/// poles (or through m nodes) and n values per pole.
+/// A closed discrete curve: the ``N = m n`` periodic values of a discrete spline of order ``r``
+/// with ``m`` poles and ``n`` values per pole (Malozemov, Khorokhonov, Chashnikov).
 ///
-/// DiscreteSpline(poles, order=3, n=10): from poles (m, d).
-/// DiscreteSpline.interpolate(nodes, order=3, n=10): through the nodes, S(l n) = nodes[l].
-/// values(out=None) -> (m n, d).
+/// ``DiscreteSpline.interpolate`` makes one through given nodes instead.
+///
+/// Parameters
+/// ----------
+/// poles : array_like
+///     The poles ``a_0 .. a_{m-1}``, shape ``(m, d)``, ``d`` in {2, 3}, taken cyclically.
+/// order : int, optional
+///     The order ``r >= 1`` (larger is smoother).
+/// n : int, optional
+///     The values per pole (the step), at least 1.
+///
+/// Raises
+/// ------
+/// PointsError
+///     Too few poles, a non-finite coordinate, or a wrong shape.
+/// OptionError
+///     ``order`` or ``n`` is out of range.
+///
+/// Examples
+/// --------
+/// >>> a = np.linspace(0.0, 2.0 * np.pi, 4, endpoint=False)
+/// >>> s = karkas.DiscreteSpline(np.column_stack([np.cos(a), np.sin(a)]), order=2, n=5)
+/// >>> s.period, s.order, s.n, s.dim
+/// (20, 2, 5, 2)
+/// >>> s.values().shape
+/// (20, 2)
 #[pyclass(module = "karkas", name = "DiscreteSpline", frozen)]
 pub struct PyDiscreteSpline {
     spline: AnySpline,
@@ -75,16 +98,72 @@ impl PyDiscreteSpline {
         Self::build(py, poles, order, n, false)
     }
 
-    /// DiscreteSpline.interpolate(nodes, order=3, n=10): the spline through nodes (m, d) at
-    /// j = l n (solved by the DFT in O(m log m + N)); among all N-periodic sequences through
-    /// the nodes it has the least sum of squared r-th differences.
+    /// The discrete spline through given nodes: ``S(l n) = nodes[l]``.
+    ///
+    /// Solved by the DFT in O(m log m + N); among all N-periodic sequences through the nodes it
+    /// has the least sum of squared ``r``-th differences.
+    ///
+    /// Parameters
+    /// ----------
+    /// nodes : array_like
+    ///     The nodes, shape ``(m, d)``, ``d`` in {2, 3}, taken cyclically.
+    /// order : int, optional
+    ///     The order ``r >= 1``.
+    /// n : int, optional
+    ///     The values per node (the step), at least 1.
+    ///
+    /// Returns
+    /// -------
+    /// DiscreteSpline
+    ///     The spline; its ``values()[::n]`` are the nodes.
+    ///
+    /// Raises
+    /// ------
+    /// PointsError
+    ///     Too few nodes, a non-finite coordinate, or a wrong shape.
+    /// OptionError
+    ///     ``order`` or ``n`` is out of range.
+    ///
+    /// Examples
+    /// --------
+    /// >>> a = np.linspace(0.0, 2.0 * np.pi, 5, endpoint=False)
+    /// >>> nodes = np.column_stack([np.cos(a), np.sin(a)])
+    /// >>> s = karkas.DiscreteSpline.interpolate(nodes, order=3, n=4)
+    /// >>> bool(np.allclose(s.values()[::4], nodes))
+    /// True
     #[staticmethod]
     #[pyo3(signature = (nodes, order = 3, n = 10))]
     fn interpolate(py: Python<'_>, nodes: &Bound<'_, PyAny>, order: i64, n: i64) -> PyResult<Self> {
         Self::build(py, nodes, order, n, true)
     }
 
-    /// values(out=None): the N = m n values S(0), ..., S(N-1), shape (N, d).
+    /// The ``N = m n`` values ``S(0), ..., S(N-1)`` of one period.
+    ///
+    /// Parameters
+    /// ----------
+    /// out : numpy.ndarray, optional
+    ///     A C-contiguous float64 array of shape ``(N, d)``, written and returned.
+    ///
+    /// Returns
+    /// -------
+    /// numpy.ndarray
+    ///     float64, shape ``(N, d)``.
+    ///
+    /// Raises
+    /// ------
+    /// TypeError
+    ///     ``out`` is not a C-contiguous float64 array.
+    /// ValueError
+    ///     ``out`` has the wrong shape.
+    ///
+    /// Examples
+    /// --------
+    /// >>> s = karkas.DiscreteSpline([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]], order=2, n=3)
+    /// >>> out = np.empty((12, 2))
+    /// >>> s.values(out=out) is out
+    /// True
+    /// >>> bool(np.allclose(out.mean(axis=0), [0.5, 0.5]))
+    /// True
     #[pyo3(signature = (out = None))]
     fn values<'py>(
         &self,
@@ -103,32 +182,33 @@ impl PyDiscreteSpline {
         Ok(array)
     }
 
-    /// The poles a_0..a_{m-1}, (m, d).
+    /// The poles ``a_0 .. a_{m-1}``, float64 ``(m, d)`` (for an interpolating spline, the
+    /// poles solved for).
     #[getter]
     fn poles<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
         each!(&self.spline, s => points_to_array(py, s.poles()))
     }
 
-    /// The order r.
+    /// The order ``r``.
     #[getter]
     fn order(&self) -> usize {
         self.parts().2
     }
 
-    /// The step n (values per pole).
+    /// The step ``n`` (values per pole).
     #[getter]
     fn n(&self) -> usize {
         self.parts().3
     }
 
-    /// The period N = m n (the number of values).
+    /// The period ``N = m n`` (the number of values).
     #[getter]
     fn period(&self) -> usize {
         let (_, m, _, n) = self.parts();
         m * n
     }
 
-    /// The dimension d.
+    /// The dimension ``d`` of the values (2 or 3).
     #[getter]
     fn dim(&self) -> usize {
         self.parts().0
@@ -150,10 +230,44 @@ type AnyTube = ByDim<TubeSurface<2>, TubeSurface<3>>;
 /// A closed tube through a skeleton of closed discrete curves (formula (3) of Malozemov,
 /// Khorokhonov and Chashnikov).
 ///
-/// TubeSurface(along, across, n1, n2, r1=3, r2=3): along (m1, N2, d) are m1 closed curves of
-/// N2 = m2 n2 samples, across (m2, N1, d) are m2 closed curves of N1 = m1 n1 samples, with
-/// along[i][j n2] == across[j][i n1]. values() -> (N1, N2, d); closed_grid() -> (N1+1, N2+1, d)
-/// with the seams repeated, for meshing.
+/// The skeleton is two families of closed discrete curves that cross:
+/// ``along[i][j n2] == across[j][i n1]``.
+///
+/// Parameters
+/// ----------
+/// along : array_like
+///     ``m1`` closed curves of ``N2 = m2 n2`` samples each, shape ``(m1, N2, d)``.
+/// across : array_like
+///     ``m2`` closed curves of ``N1 = m1 n1`` samples each, shape ``(m2, N1, d)``.
+/// n1, n2 : int
+///     The steps: samples per skeleton curve across, along.
+/// r1, r2 : int, optional
+///     The orders of the discrete splines in the two directions.
+///
+/// Raises
+/// ------
+/// PointsError
+///     Arrays of the wrong shape or dimension, or a non-finite coordinate.
+/// IncompatibleDataError
+///     The skeleton curves do not meet where they must.
+/// OptionError
+///     A step or order out of range.
+///
+/// Examples
+/// --------
+/// A torus from 3 circles along and 4 across, 4 samples per skeleton step:
+///
+/// >>> def torus(p, q):
+/// ...     return np.stack([(2 + np.cos(q)) * np.cos(p), (2 + np.cos(q)) * np.sin(p),
+/// ...                      np.sin(q) + 0 * p], axis=-1)
+/// >>> m1, m2, n1, n2 = 3, 4, 4, 4
+/// >>> p = 2 * np.pi * np.arange(m1 * n1) / (m1 * n1)
+/// >>> q = 2 * np.pi * np.arange(m2 * n2) / (m2 * n2)
+/// >>> along = torus(p[::n1, None], q[None, :])
+/// >>> across = torus(p[None, :], q[::n2, None])
+/// >>> tube = karkas.TubeSurface(along, across, n1, n2, r1=2, r2=2)
+/// >>> tube.values().shape, tube.closed_grid().shape
+/// ((12, 16, 3), (13, 17, 3))
 #[pyclass(module = "karkas", name = "TubeSurface", frozen)]
 pub struct PyTubeSurface {
     tube: AnyTube,
@@ -197,12 +311,53 @@ impl PyTubeSurface {
         Ok(PyTubeSurface { tube })
     }
 
-    /// The values c(p, q), shape (N1, N2, d).
+    /// The values ``c(p, q)`` of one period in each direction.
+    ///
+    /// Returns
+    /// -------
+    /// numpy.ndarray
+    ///     float64, shape ``(N1, N2, d)``.
+    ///
+    /// Examples
+    /// --------
+    /// >>> def torus(p, q):
+    /// ...     return np.stack([(2 + np.cos(q)) * np.cos(p), (2 + np.cos(q)) * np.sin(p),
+    /// ...                      np.sin(q) + 0 * p], axis=-1)
+    /// >>> p = 2 * np.pi * np.arange(12) / 12
+    /// >>> q = 2 * np.pi * np.arange(16) / 16
+    /// >>> tube = karkas.TubeSurface(torus(p[::4, None], q[None, :]),
+    /// ...                           torus(p[None, :], q[::4, None]), 4, 4, r1=2, r2=2)
+    /// >>> v = tube.values()
+    /// >>> v.shape
+    /// (12, 16, 3)
+    /// >>> bool(np.allclose(v[::4, ::4], torus(p[::4, None], q[None, ::4])))
+    /// True
     fn values<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
         each!(&self.tube, t => grid_to_array(py, t.values()))
     }
 
-    /// The values with the first row and column repeated at the end, (N1+1, N2+1, d).
+    /// The values with the first row and column repeated at the end, for meshing a closed
+    /// surface.
+    ///
+    /// Returns
+    /// -------
+    /// numpy.ndarray
+    ///     float64, shape ``(N1 + 1, N2 + 1, d)``; ``g[-1] == g[0]`` and ``g[:, -1] == g[:, 0]``.
+    ///
+    /// Examples
+    /// --------
+    /// >>> def torus(p, q):
+    /// ...     return np.stack([(2 + np.cos(q)) * np.cos(p), (2 + np.cos(q)) * np.sin(p),
+    /// ...                      np.sin(q) + 0 * p], axis=-1)
+    /// >>> p = 2 * np.pi * np.arange(12) / 12
+    /// >>> q = 2 * np.pi * np.arange(16) / 16
+    /// >>> tube = karkas.TubeSurface(torus(p[::4, None], q[None, :]),
+    /// ...                           torus(p[None, :], q[::4, None]), 4, 4, r1=2, r2=2)
+    /// >>> g = tube.closed_grid()
+    /// >>> g.shape
+    /// (13, 17, 3)
+    /// >>> bool(np.array_equal(g[-1], g[0]) and np.array_equal(g[:, -1], g[:, 0]))
+    /// True
     fn closed_grid<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
         each!(&self.tube, t => grid_to_array(py, &t.closed_grid()))
     }

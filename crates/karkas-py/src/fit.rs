@@ -11,13 +11,19 @@ use crate::curve::PyCurve;
 use crate::errors::{library_error, KnotsError, OptionError};
 use crate::wrapper::{CurveImpl, Wrapped};
 
-/// A C^1 cubic Hermite spline (a cubic spline of defect 2) on [0, 1], as returned by
-/// fit_curve: values and derivatives at its knots.
+/// A C^1 cubic Hermite spline (a cubic spline of defect 2) on [0, 1]: the result of
+/// ``fit_curve``, with its values and derivatives at its knots and the fit's figures.
 ///
-/// Outside the domain (the rule of every curve class): a closed curve wraps the parameter by
-/// its period; an open curve continues its end polynomial pieces when ``extrapolate`` is None
-/// or True (SciPy's ``BSpline`` default; the values of ``BSpline(*c.to_bspline())``) and gives
-/// NaN when ``extrapolate=False``.
+/// Made by ``fit_curve`` only (no constructor). Calling the curve is described in ``Curve``.
+///
+/// Examples
+/// --------
+/// >>> s = np.linspace(0.0, 1.0, 50)
+/// >>> f = karkas.fit_curve(np.column_stack([s, s * s]), knots=5)
+/// >>> f.domain, f.knots.shape, f.values.shape, f.derivatives.shape
+/// ((0.0, 1.0), (5,), (5, 2), (5, 2))
+/// >>> f.max_distance < 1e-3, f.parameters.shape, f.distances.shape
+/// (True, (50,), (50,))
 #[pyclass(extends = PyCurve, module = "karkas", name = "HermiteSpline", frozen)]
 pub struct PyHermiteSpline {
     /// The knots 0 = T_1 < ... < T_N = 1.
@@ -57,13 +63,56 @@ enum Target {
     Tolerance(f64),
 }
 
-/// fit_curve(points, knots=None, tolerance=None, eps=None, pin_ends=False, corners=None,
-/// fairness=None) -> HermiteSpline
+/// Fits measured points with a C^1 cubic Hermite spline on [0, 1] (Kuznetsov, Filatov).
 ///
-/// Fits measured points (n, d) with a C^1 cubic Hermite spline on [0, 1], minimizing the sum of
-/// squared foot-point distances with the sum of squared second-derivative jumps bounded by eps
-/// (None: no bound). knots: an int (that many uniform knots) or an increasing array from 0 to
-/// 1; tolerance: knots are added until every point is within it. Give knots or tolerance.
+/// Minimizes the sum of squared foot-point distances, the sum of squared second-derivative
+/// jumps at the knots bounded by ``eps``. Give ``knots`` or ``tolerance``.
+///
+/// Parameters
+/// ----------
+/// points : array_like
+///     The measured points in their order along the curve, shape ``(n, d)``, ``d`` in {2, 3}.
+/// knots : int or array_like, optional
+///     An int: that many uniformly spaced knots (at least 2); an array: the knots, strictly
+///     increasing from 0 to 1.
+/// tolerance : float, optional
+///     Instead of ``knots``: knots are added until every point is within this distance of
+///     the curve (see ``tolerance_met`` of the result).
+/// eps : float, optional
+///     The bound on the sum of squared second-derivative jumps; None: no bound.
+/// pin_ends : bool, optional
+///     Make the curve pass through the first and last points.
+/// corners : sequence of float, optional
+///     Knots where the curve may turn a corner (no smoothness asked there).
+/// fairness : float, optional
+///     The weight of the smoothness term against the distances.
+///
+/// Returns
+/// -------
+/// HermiteSpline
+///     The fitted curve, with ``max_distance``, ``rms_distance``, ``parameters`` and
+///     ``distances`` of the fit.
+///
+/// Raises
+/// ------
+/// PointsError
+///     Too few points, a non-finite coordinate, or a wrong shape.
+/// KnotsError
+///     Knots not strictly increasing from 0 to 1, or fewer than 2.
+/// OptionError
+///     Both or neither of ``knots`` and ``tolerance``, or an option out of range.
+///
+/// Examples
+/// --------
+/// >>> s = np.linspace(0.0, 1.0, 50)
+/// >>> f = karkas.fit_curve(np.column_stack([s, s * s]), knots=5)
+/// >>> f.knots
+/// array([0.  , 0.25, 0.5 , 0.75, 1.  ])
+/// >>> bool(f.max_distance < 1e-3)
+/// True
+/// >>> g = karkas.fit_curve(np.column_stack([s, np.sin(6 * s)]), tolerance=1e-3)
+/// >>> g.tolerance_met
+/// True
 #[pyfunction]
 #[pyo3(signature = (points, knots = None, tolerance = None, eps = None, pin_ends = false, corners = None, fairness = None))]
 #[allow(clippy::too_many_arguments)]

@@ -15,11 +15,27 @@ use crate::convert::{
 };
 use crate::errors::{library_error, OptionError};
 
-/// An implicit surface F(x, y, z) = 0 given as an expression, e.g. "x^2 + y^2 - 4" (exact
-/// first and second derivatives, by symbolic differentiation).
+/// An implicit surface ``F(x, y, z) = 0`` given as an expression, with exact first and second
+/// derivatives (by symbolic differentiation).
 ///
-/// ImplicitSurface(expression): value(points), gradient(points), project(points) (closest
-/// points on F = 0), curvatures(point), trace_net(...) (a node grid along lines of curvature).
+/// Parameters
+/// ----------
+/// expression : str
+///     ``F`` in ``x``, ``y``, ``z``: numbers, ``+ - * / ^``, parentheses and the usual
+///     functions (``sin``, ``cos``, ``exp``, ``sqrt``, ...), e.g. ``"x^2 + y^2 - 4"``.
+///
+/// Raises
+/// ------
+/// ExpressionError
+///     The expression does not parse (the message gives the position).
+///
+/// Examples
+/// --------
+/// >>> sphere = karkas.ImplicitSurface("x^2 + y^2 + z^2 - 4")
+/// >>> sphere.expression
+/// 'x^2 + y^2 + z^2 - 4'
+/// >>> sphere.value([[2.0, 0.0, 0.0], [0.0, 0.0, 0.0]])
+/// array([ 0., -4.])
 #[pyclass(module = "karkas", name = "ImplicitSurface", frozen)]
 pub struct PyImplicitSurface {
     /// The parsed expression.
@@ -35,7 +51,27 @@ impl PyImplicitSurface {
         })
     }
 
-    /// F at the points (n, 3) -> (n,).
+    /// ``F`` at points.
+    ///
+    /// Parameters
+    /// ----------
+    /// points : array_like
+    ///     Shape ``(n, 3)``.
+    ///
+    /// Returns
+    /// -------
+    /// numpy.ndarray
+    ///     float64, shape ``(n,)``.
+    ///
+    /// Raises
+    /// ------
+    /// PointsError
+    ///     Not an ``(n, 3)`` array of finite numbers.
+    ///
+    /// Examples
+    /// --------
+    /// >>> karkas.ImplicitSurface("x^2 + y^2 - 4").value([[1.0, 1.0, 5.0]])
+    /// array([-2.])
     fn value<'py>(
         &self,
         py: Python<'py>,
@@ -46,7 +82,27 @@ impl PyImplicitSurface {
         Ok(vector_to_array(py, &values))
     }
 
-    /// grad F at the points (n, 3) -> (n, 3).
+    /// The gradient of ``F`` at points.
+    ///
+    /// Parameters
+    /// ----------
+    /// points : array_like
+    ///     Shape ``(n, 3)``.
+    ///
+    /// Returns
+    /// -------
+    /// numpy.ndarray
+    ///     float64, shape ``(n, 3)``.
+    ///
+    /// Raises
+    /// ------
+    /// PointsError
+    ///     Not an ``(n, 3)`` array of finite numbers.
+    ///
+    /// Examples
+    /// --------
+    /// >>> karkas.ImplicitSurface("x^2 + y^2 - 4").gradient([[1.0, 2.0, 5.0]])
+    /// array([[2., 4., 0.]])
     fn gradient<'py>(
         &self,
         py: Python<'py>,
@@ -57,7 +113,31 @@ impl PyImplicitSurface {
         points_to_array(py, &g)
     }
 
-    /// The closest point on F = 0 of every point (n, 3) -> (n, 3).
+    /// The closest point on ``F = 0`` of every point.
+    ///
+    /// Parameters
+    /// ----------
+    /// points : array_like
+    ///     Shape ``(n, 3)``.
+    ///
+    /// Returns
+    /// -------
+    /// numpy.ndarray
+    ///     float64, shape ``(n, 3)``: the foot points on the surface.
+    ///
+    /// Raises
+    /// ------
+    /// PointsError
+    ///     Not an ``(n, 3)`` array of finite numbers.
+    /// ConvergenceError
+    ///     The projection of a point did not converge (e.g. at a singular point of ``F``).
+    ///
+    /// Examples
+    /// --------
+    /// >>> sphere = karkas.ImplicitSurface("x^2 + y^2 + z^2 - 4")
+    /// >>> np.round(sphere.project([[3.0, 0.0, 0.0], [0.0, 1.0, 0.0]]), 6)
+    /// array([[2., 0., 0.],
+    ///        [0., 2., 0.]])
     fn project<'py>(
         &self,
         py: Python<'py>,
@@ -74,8 +154,34 @@ impl PyImplicitSurface {
         points_to_array(py, &feet)
     }
 
-    /// The curvature frame at a point on the surface: a dict with normal, k1 >= k2 (principal
-    /// curvatures), their directions d1, d2, gaussian and mean curvature.
+    /// The curvature frame at a point on the surface.
+    ///
+    /// Parameters
+    /// ----------
+    /// point : sequence of float
+    ///     A point on ``F = 0`` (3 coordinates).
+    ///
+    /// Returns
+    /// -------
+    /// dict
+    ///     ``normal`` (unit, along the gradient), ``k1 >= k2`` (the principal curvatures),
+    ///     ``d1``, ``d2`` (their unit directions), ``gaussian`` and ``mean`` curvature.
+    ///
+    /// Raises
+    /// ------
+    /// PointsError
+    ///     Not 3 finite coordinates.
+    /// ConvergenceError
+    ///     A singular point (zero gradient).
+    ///
+    /// Examples
+    /// --------
+    /// >>> cylinder = karkas.ImplicitSurface("x^2 + y^2 - 4")
+    /// >>> f = cylinder.curvatures([2.0, 0.0, 0.0])
+    /// >>> sorted(f)
+    /// ['d1', 'd2', 'gaussian', 'k1', 'k2', 'mean', 'normal']
+    /// >>> round(abs(f["k1"]) + abs(f["k2"]), 6), abs(f["gaussian"]) < 1e-12
+    /// (0.5, True)
     fn curvatures<'py>(&self, py: Python<'py>, point: Vec<f64>) -> PyResult<Bound<'py, PyDict>> {
         let f = SurfaceFrame::at(&self.surface, point3(&point, "point")?).map_err(library_error)?;
         let d = PyDict::new(py);
@@ -89,11 +195,49 @@ impl PyImplicitSurface {
         Ok(d)
     }
 
-    /// trace_net(start, nodes, steps, directions="principal", angle=0.0, plane_normal=None,
-    /// closed_v=False, substeps=32) -> (nu, nv, 3): a node grid on F = 0 from start (projected
-    /// first) along two direction fields: 'principal' (lines of curvature), 'turned' (both
-    /// turned by angle), 'turned-u' (u lines turned), 'plane-sections' (v lines in planes
-    /// normal to plane_normal). nodes = (nu, nv); steps = arc lengths between nodes.
+    /// A node grid on ``F = 0`` traced along two direction fields.
+    ///
+    /// Parameters
+    /// ----------
+    /// start : sequence of float
+    ///     The first node (3 coordinates), projected onto the surface first.
+    /// nodes : tuple of int
+    ///     ``(nu, nv)``, the grid's size.
+    /// steps : tuple of float
+    ///     The arc lengths between neighbouring nodes along ``u`` and along ``v``.
+    /// directions : str, optional
+    ///     ``'principal'`` (lines of curvature), ``'turned'`` (both fields turned by
+    ///     ``angle``), ``'turned-u'`` (the ``u`` lines turned) or ``'plane-sections'`` (``v``
+    ///     lines in planes normal to ``plane_normal``).
+    /// angle : float, optional
+    ///     The turn in radians for ``'turned'`` and ``'turned-u'``.
+    /// plane_normal : sequence of float, optional
+    ///     The normal of the planes for ``'plane-sections'``.
+    /// closed_v : bool, optional
+    ///     The ``v`` lines close on themselves (around a tube).
+    /// substeps : int, optional
+    ///     Integration steps between two nodes.
+    ///
+    /// Returns
+    /// -------
+    /// numpy.ndarray
+    ///     float64, shape ``(nu, nv, 3)``: the nodes, on the surface.
+    ///
+    /// Raises
+    /// ------
+    /// OptionError
+    ///     An unknown ``directions``, a missing ``plane_normal``, or a count out of range.
+    /// ConvergenceError
+    ///     The tracing met an umbilic or singular point, or did not converge.
+    ///
+    /// Examples
+    /// --------
+    /// >>> cylinder = karkas.ImplicitSurface("x^2 + y^2 - 4")
+    /// >>> net = cylinder.trace_net([2.0, 0.0, 0.0], nodes=(3, 4), steps=(0.5, 0.5))
+    /// >>> net.shape
+    /// (3, 4, 3)
+    /// >>> bool(np.allclose(cylinder.value(net.reshape(-1, 3)), 0.0, atol=1e-8))
+    /// True
     #[pyo3(signature = (start, nodes, steps, directions = "principal", angle = 0.0, plane_normal = None, closed_v = false, substeps = 32))]
     #[allow(clippy::too_many_arguments)]
     fn trace_net<'py>(
@@ -139,7 +283,7 @@ impl PyImplicitSurface {
         grid_to_array(py, &grid)
     }
 
-    /// The expression as given.
+    /// The expression ``F`` as given.
     #[getter]
     fn expression(&self) -> &str {
         self.surface.text()

@@ -40,10 +40,22 @@ static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
 /// karkas: smooth parametric curves and surfaces from point frames.
 ///
-/// Curves (LLCurve, CubicSpline, HermiteSpline from fit_curve, ...) are called like SciPy's
-/// spline objects: c(t, nu=0) -> points or derivatives, c.derivative(nu) -> a curve,
-/// c.to_bspline() -> (t, c, k); surfaces S(u, v, du=0, dv=0, grid=True). Arrays are
-/// float64, points (n, d), grids (nu, nv, d), d in {2, 3}.
+/// Curves (``LLCurve``, ``CubicSpline``, ``HermiteSpline`` from ``fit_curve``, ...) are
+/// ``Curve`` objects, called like SciPy's splines: ``c(t, nu=0, out=None,
+/// extrapolate=None)``; surfaces (``LLSurface``, ``BicubicSurface``, ``CoonsSurface``) are
+/// ``Surface`` objects, ``S(u, v, grid=True)``. Arrays are float64: points ``(n, d)``, grids
+/// ``(nu, nv, d)``, ``d`` in {2, 3}; any real dtype and any memory layout is accepted. Bad
+/// input raises ``KarkasError`` (a ``ValueError``) or one of its typed subclasses.
+///
+/// Examples
+/// --------
+/// >>> pts = np.array([[0.0, 0.0], [1.0, 1.0], [2.0, 0.0], [3.0, 1.0]])
+/// >>> c = karkas.CubicSpline(pts, parameterization="uniform")
+/// >>> c(np.array([0.0, 3.0]))
+/// array([[0., 0.],
+///        [3., 1.]])
+/// >>> issubclass(karkas.KarkasError, ValueError)
+/// True
 #[pymodule(name = "karkas")]
 fn karkas_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;

@@ -20,14 +20,40 @@ use crate::wrapper::{CurveImpl, SurfaceImpl, Wrapped, WrappedSurface};
 /// The LL approximation of a support polygon (Aulchenko, Latypov, Nikulichev): a C^L curve
 /// that never oscillates more than its polygon.
 ///
-/// LLCurve(points, order=5, closed=False): points (n, d), d in {2, 3}. Node i sits at
-/// t = i/(K+1); the domain is [1/(K+1), K/(K+1)]. An open curve passes through its first and
-/// last points; use LLCurve.interpolate for a curve through every point.
+/// Node ``i`` of the ``K`` polygon points sits at ``t = i/(K+1)``; the domain is
+/// ``[1/(K+1), K/(K+1)]``. An open curve passes through its first and last points and
+/// approximates the others; ``LLCurve.interpolate`` gives a curve through every point.
+/// Calling the curve is described in ``Curve``.
 ///
-/// Outside the domain (the rule of every curve class): a closed curve wraps the parameter by
-/// its period; an open curve continues its end polynomial pieces when ``extrapolate`` is None
-/// or True (SciPy's ``BSpline`` default; the values of ``BSpline(*c.to_bspline())``) and gives
-/// NaN when ``extrapolate=False``.
+/// Parameters
+/// ----------
+/// points : array_like
+///     The support polygon, shape ``(n, d)``, ``d`` in {2, 3}; any real dtype, any layout.
+/// order : int, optional
+///     The order ``L >= 1``: the curve is C^L and its pieces have degree ``2L``.
+/// closed : bool, optional
+///     A closed curve through the polygon taken cyclically (the first point is not repeated
+///     at the end).
+///
+/// Raises
+/// ------
+/// PointsError
+///     Too few points, a non-finite coordinate, or an array that is not ``(n, 2)`` or
+///     ``(n, 3)``.
+/// OptionError
+///     ``order`` is out of range.
+///
+/// Examples
+/// --------
+/// >>> pts = np.array([[0.0, 0.0], [1.0, 2.0], [2.0, 0.0], [3.0, 2.0], [4.0, 0.0]])
+/// >>> c = karkas.LLCurve(pts, order=3)
+/// >>> a, b = c.domain
+/// >>> bool(np.isclose(a, 1 / 6)), bool(np.isclose(b, 5 / 6))
+/// (True, True)
+/// >>> bool(np.allclose(c(a), pts[0])), bool(np.allclose(c(b), pts[-1]))
+/// (True, True)
+/// >>> c.order, c.interpolating, c.control_points.shape
+/// (3, False, (5, 2))
 #[pyclass(extends = PyCurve, module = "karkas", name = "LLCurve", frozen)]
 pub struct PyLlCurve {
     /// The order L (the curve is C^L).
@@ -94,8 +120,40 @@ impl PyLlCurve {
         Self::build(py, points, order, closed, false)
     }
 
-    /// LLCurve.interpolate(points, order=5, closed=False): the interpolating LL curve, through
-    /// every point at its node t_i = i/(K+1) (an O(K) banded solve).
+    /// The interpolating LL curve: through every point at its node ``t_i = i/(K+1)``.
+    ///
+    /// The control polygon is found by an O(K) banded solve, so that the LL curve of it passes
+    /// through the given points.
+    ///
+    /// Parameters
+    /// ----------
+    /// points : array_like
+    ///     The points to pass through, shape ``(n, d)``, ``d`` in {2, 3}.
+    /// order : int, optional
+    ///     The order ``L >= 1`` (the curve is C^L).
+    /// closed : bool, optional
+    ///     A closed curve through the points taken cyclically.
+    ///
+    /// Returns
+    /// -------
+    /// LLCurve
+    ///     The curve, with ``interpolating`` True.
+    ///
+    /// Raises
+    /// ------
+    /// PointsError
+    ///     Too few points, a non-finite coordinate, or a wrong shape.
+    /// OptionError
+    ///     ``order`` is out of range.
+    /// ConvergenceError
+    ///     The linear system is singular.
+    ///
+    /// Examples
+    /// --------
+    /// >>> pts = np.array([[0.0, 0.0], [1.0, 2.0], [2.0, 0.0], [3.0, 2.0], [4.0, 0.0]])
+    /// >>> c = karkas.LLCurve.interpolate(pts, order=3)
+    /// >>> bool(np.allclose(c(np.arange(1, 6) / 6), pts))
+    /// True
     #[staticmethod]
     #[pyo3(signature = (points, order = 5, closed = false))]
     fn interpolate(
@@ -109,16 +167,40 @@ impl PyLlCurve {
 }
 
 /// The LL approximation of a grid of points: a C^L surface that never oscillates more than its
-/// grid (the tensor product of LL curves).
+/// grid (the tensor product of LL curves, Aulchenko, Latypov, Nikulichev).
 ///
-/// LLSurface(grid, order=5, closed_u=False, closed_v=False): grid (nu, nv, d), rows along u.
-/// Node (i, j) sits at (i/(Ku+1), j/(Kv+1)). Use LLSurface.interpolate for a surface through
-/// every grid point.
+/// Node ``(i, j)`` sits at ``(i/(Ku+1), j/(Kv+1))``. ``LLSurface.interpolate`` gives a surface
+/// through every grid point. Calling the surface is described in ``Surface``.
 ///
-/// Outside the domain (the rule of every surface class, per direction): a closed direction
-/// wraps the parameter by its period; an open one continues the end polynomial pieces when
-/// ``extrapolate`` is None or True (the values of ``NdBSpline(*S.to_bspline())``) and gives
-/// NaN when ``extrapolate=False``.
+/// Parameters
+/// ----------
+/// grid : array_like
+///     The grid, shape ``(nu, nv, d)``, ``d`` in {2, 3}; ``grid[i]`` is the ``i``-th row,
+///     along ``v``.
+/// order : int, optional
+///     The order ``L >= 1`` (the surface is C^L).
+/// closed_u, closed_v : bool, optional
+///     Closed in ``u`` (the rows taken cyclically), in ``v`` (the columns taken cyclically).
+///
+/// Raises
+/// ------
+/// PointsError
+///     Too few grid points, a non-finite coordinate, or an array that is not
+///     ``(nu, nv, 2)`` or ``(nu, nv, 3)``.
+/// OptionError
+///     ``order`` is out of range.
+///
+/// Examples
+/// --------
+/// >>> grid = np.array([[[i, j, (i - 2) * (j - 2)] for j in range(5)] for i in range(5)], float)
+/// >>> S = karkas.LLSurface(grid, order=3)
+/// >>> a, b = S.domain_u
+/// >>> bool(np.isclose(a, 1 / 6)), S.domain_v == S.domain_u
+/// (True, True)
+/// >>> bool(np.allclose(S(a, a), grid[0, 0]))
+/// True
+/// >>> S.sample(4, 6).shape
+/// (4, 6, 3)
 #[pyclass(extends = PySurface, module = "karkas", name = "LLSurface", frozen)]
 pub struct PyLlSurface {
     /// The order L (the surface is C^L).
@@ -183,8 +265,38 @@ impl PyLlSurface {
         Self::build(py, grid, order, closed_u, closed_v, false)
     }
 
-    /// LLSurface.interpolate(grid, order=5, closed_u=False, closed_v=False): the interpolating
-    /// LL surface, through every grid point at its node.
+    /// The interpolating LL surface: through every grid point at its node.
+    ///
+    /// Parameters
+    /// ----------
+    /// grid : array_like
+    ///     The grid, shape ``(nu, nv, d)``, ``d`` in {2, 3}.
+    /// order : int, optional
+    ///     The order ``L >= 1`` (the surface is C^L).
+    /// closed_u, closed_v : bool, optional
+    ///     Closed in ``u``, in ``v``.
+    ///
+    /// Returns
+    /// -------
+    /// LLSurface
+    ///     The surface, with ``interpolating`` True.
+    ///
+    /// Raises
+    /// ------
+    /// PointsError
+    ///     Too few grid points, a non-finite coordinate, or a wrong shape.
+    /// OptionError
+    ///     ``order`` is out of range.
+    /// ConvergenceError
+    ///     The linear system is singular.
+    ///
+    /// Examples
+    /// --------
+    /// >>> grid = np.array([[[i, j, (i - 2) * (j - 2)] for j in range(5)] for i in range(5)], float)
+    /// >>> S = karkas.LLSurface.interpolate(grid, order=3)
+    /// >>> nodes = np.arange(1, 6) / 6
+    /// >>> bool(np.allclose(S(nodes, nodes), grid))
+    /// True
     #[staticmethod]
     #[pyo3(signature = (grid, order = 5, closed_u = false, closed_v = false))]
     fn interpolate(
@@ -198,10 +310,43 @@ impl PyLlSurface {
     }
 }
 
-/// vary(matrix, row_sums, column_sums, fixed=None, penalty=None, scale_with_total=False) ->
-/// (n, m): the LL paper's surface variation: the least change of matrix (n, m) whose row and
-/// column sums become the given ones, entries where fixed (bool (n, m)) is true held exactly
-/// (or at penalty times the cost).
+/// The LL paper's surface variation: the least change of a matrix that gives it prescribed row
+/// and column sums.
+///
+/// Parameters
+/// ----------
+/// matrix : array_like
+///     The matrix ``Z``, shape ``(n, m)``.
+/// row_sums : sequence of float
+///     The ``n`` row sums the result must have.
+/// column_sums : sequence of float
+///     The ``m`` column sums the result must have (they must add up to the same total as
+///     ``row_sums``).
+/// fixed : array_like of bool, optional
+///     Shape ``(n, m)``: entries held (exactly, or at ``penalty`` times the cost of a change).
+/// penalty : float, optional
+///     None: fixed entries do not change; a number: changing them costs that many times more.
+/// scale_with_total : bool, optional
+///     Weigh each change by the entry's size relative to the total.
+///
+/// Returns
+/// -------
+/// numpy.ndarray
+///     float64, shape ``(n, m)``: the varied matrix.
+///
+/// Raises
+/// ------
+/// IncompatibleDataError
+///     The sums cannot all hold (different totals, or fixed entries that forbid them).
+/// PointsError
+///     Shapes that do not match.
+///
+/// Examples
+/// --------
+/// >>> z = np.ones((2, 3))
+/// >>> w = karkas.vary(z, row_sums=[4.0, 2.0], column_sums=[2.0, 2.0, 2.0])
+/// >>> w.sum(axis=1), w.sum(axis=0)
+/// (array([4., 2.]), array([2., 2., 2.]))
 #[pyfunction]
 #[pyo3(signature = (matrix, row_sums, column_sums, fixed = None, penalty = None, scale_with_total = false))]
 pub fn vary<'py>(

@@ -26,8 +26,38 @@ fn hausdorff_dict<'py>(py: Python<'py>, h: &Hausdorff) -> PyResult<Bound<'py, Py
     Ok(out)
 }
 
-/// hausdorff(a, b) -> dict: the two-sided Hausdorff distance between point sets a (n, 3) and
-/// b (m, 3) (k-d tree, O((n + m) log)), with where each one-sided distance is attained.
+/// The two-sided Hausdorff distance between two point sets, and where it is attained.
+///
+/// Nearest neighbours by a k-d tree, O((n + m) log(n + m)).
+///
+/// Parameters
+/// ----------
+/// a : array_like
+///     The first set, shape ``(n, 3)``.
+/// b : array_like
+///     The second set, shape ``(m, 3)``.
+///
+/// Returns
+/// -------
+/// dict
+///     ``distance`` (the larger of the two one-sided distances), ``forward`` (from ``a`` to
+///     ``b``) and ``backward`` (from ``b`` to ``a``), each a dict with its ``distance`` and the
+///     points ``from`` and ``to`` where it is attained.
+///
+/// Raises
+/// ------
+/// PointsError
+///     An empty set, a non-finite coordinate, or not an ``(n, 3)`` array.
+///
+/// Examples
+/// --------
+/// >>> a = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0]]
+/// >>> b = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [1.0, 2.0, 0.0]]
+/// >>> h = karkas.hausdorff(a, b)
+/// >>> h["distance"], h["forward"]["distance"], h["backward"]["distance"]
+/// (2.0, 0.0, 2.0)
+/// >>> h["backward"]["from"], h["backward"]["to"]
+/// ([1.0, 2.0, 0.0], [1.0, 0.0, 0.0])
 #[pyfunction]
 pub fn hausdorff<'py>(
     py: Python<'py>,
@@ -41,11 +71,44 @@ pub fn hausdorff<'py>(
     hausdorff_dict(py, &h)
 }
 
-/// hausdorff_to_implicit(surface, implicit, patch, samples=(50, 50)) -> dict: the two-sided
-/// Hausdorff distance between a 3-D surface (sampled on samples) and the patch of an implicit
-/// surface given by points on it (patch (n, 3)).
+/// The two-sided Hausdorff distance between a 3-D surface and a patch of an implicit surface.
+///
+/// Parameters
+/// ----------
+/// surface : Surface
+///     A 3-D karkas surface, sampled on a ``samples`` grid.
+/// implicit : ImplicitSurface
+///     The implicit surface.
+/// patch : array_like
+///     Points on the implicit surface, ``(n, 3)``, that delimit the patch compared.
+/// samples : tuple of int, optional
+///     The ``(nu, nv)`` samples of ``surface``.
+///
+/// Returns
+/// -------
+/// dict
+///     As ``hausdorff``: ``distance``, ``forward`` (surface to implicit) and ``backward``,
+///     each with its ``distance``, ``from`` and ``to``.
+///
+/// Raises
+/// ------
+/// PointsError
+///     The surface is not 3-D, or ``patch`` is not an ``(n, 3)`` array of finite numbers.
+/// ConvergenceError
+///     A projection onto the implicit surface did not converge.
+///
+/// Examples
+/// --------
+/// >>> grid = np.array([[[i, j, 1.0] for j in range(3)] for i in range(3)])
+/// >>> S = karkas.BicubicSurface(grid, parameterization="uniform")
+/// >>> plane = karkas.ImplicitSurface("z")
+/// >>> patch = grid.reshape(-1, 3) * [1, 1, 0]
+/// >>> h = karkas.hausdorff_to_implicit(S, plane, patch, samples=(5, 5))
+/// >>> round(h["distance"], 6)
+/// 1.0
 #[pyfunction]
 #[pyo3(signature = (surface, implicit, patch, samples = (50, 50)))]
+#[pyo3(text_signature = "(surface, implicit, patch, samples=(50, 50))")]
 pub fn hausdorff_to_implicit<'py>(
     py: Python<'py>,
     surface: &Bound<'py, PySurface>,

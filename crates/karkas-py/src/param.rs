@@ -61,19 +61,51 @@ fn parse_ends<const D: usize>(bc: &Bound<'_, PyAny>) -> PyResult<SplineEnds<D>> 
     Ok(SplineEnds::Clamped { start: s, end: e })
 }
 
-/// A cubic interpolating spline through points (C^2), as SciPy's CubicSpline but for
-/// parametric curves.
+/// A cubic interpolating spline through points (C^2), SciPy's ``CubicSpline`` for parametric
+/// curves (Kuznetsov, Filatov).
 ///
-/// CubicSpline(points, t=None, parameterization="chord", bc="not-a-knot"): points (n, d);
-/// t (n,) strictly increasing parameters, or computed from the points by parameterization
-/// ('uniform', 'chord', 'centripetal'; starting at 0). bc: 'not-a-knot', 'natural', 'periodic'
-/// (closes the curve: the first point is appended unless the last repeats it) or
-/// ('clamped', start_derivative, end_derivative).
+/// The curve passes through ``points[k]`` at ``t[k]``; its domain is ``(t[0], t[-1])``.
+/// Calling the curve is described in ``Curve``.
 ///
-/// Outside the domain (the rule of every curve class): a closed curve wraps the parameter by
-/// its period; an open curve continues its end polynomial pieces when ``extrapolate`` is None
-/// or True (SciPy's ``BSpline`` default; the values of ``BSpline(*c.to_bspline())``) and gives
-/// NaN when ``extrapolate=False``.
+/// Parameters
+/// ----------
+/// points : array_like
+///     The points, shape ``(n, d)``, ``d`` in {2, 3}.
+/// t : array_like, optional
+///     Strictly increasing parameters ``(n,)``; None: computed from the points by
+///     ``parameterization``, starting at 0.
+/// parameterization : str, optional
+///     ``'uniform'`` (0, 1, 2, ...), ``'chord'`` (chord lengths) or ``'centripetal'``
+///     (square roots of chord lengths); ignored when ``t`` is given.
+/// bc : str or tuple, optional
+///     The end conditions: ``'not-a-knot'`` (when None), ``'natural'``, ``'periodic'`` (closes
+///     the curve: the first point is appended unless the last repeats it) or
+///     ``('clamped', start_derivative, end_derivative)``.
+///
+/// Raises
+/// ------
+/// PointsError
+///     Too few points, a non-finite coordinate, coinciding neighbours, or a wrong shape.
+/// KnotsError
+///     ``t`` is not finite and strictly increasing, or not one per point.
+/// OptionError
+///     An unknown ``parameterization`` or ``bc``.
+///
+/// Examples
+/// --------
+/// >>> pts = np.array([[0.0, 0.0], [1.0, 1.0], [2.0, 0.0], [3.0, 1.0]])
+/// >>> c = karkas.CubicSpline(pts, t=[0.0, 1.0, 2.0, 3.0])
+/// >>> c.domain
+/// (0.0, 3.0)
+/// >>> bool(np.allclose(c(c.knots), pts))
+/// True
+///
+/// It equals SciPy's interpolant on the same parameters:
+///
+/// >>> from scipy.interpolate import CubicSpline
+/// >>> s = np.linspace(0.0, 3.0, 11)
+/// >>> bool(np.allclose(c(s), CubicSpline([0.0, 1.0, 2.0, 3.0], pts)(s), atol=1e-12))
+/// True
 #[pyclass(extends = PyCurve, module = "karkas", name = "CubicSpline", frozen)]
 pub struct PyCubicSpline {
     /// The knots t_0 < ... < t_{n-1}.
@@ -166,15 +198,36 @@ enum GridParameters {
 /// Bicubic interpolation of a grid of points (Kuznetsov, Filatov): a C^2 surface through every
 /// grid point, on parameters computed from the grid.
 ///
-/// BicubicSurface(grid, parameterization="chord", closed_u=False, closed_v=False): grid
-/// (nu, nv, d). parameterization: 'uniform', 'chord' (chord lengths along the first row and
-/// column), 'averaged-chord', 'centripetal'. BicubicSurface.from_knots(grid, knots_u, knots_v)
-/// takes the parameters instead.
+/// Not-a-knot ends in an open direction, periodic in a closed one.
+/// ``BicubicSurface.from_knots`` takes the parameters instead. Calling the surface is
+/// described in ``Surface``.
 ///
-/// Outside the domain (the rule of every surface class, per direction): a closed direction
-/// wraps the parameter by its period; an open one continues the end polynomial pieces when
-/// ``extrapolate`` is None or True (the values of ``NdBSpline(*S.to_bspline())``) and gives
-/// NaN when ``extrapolate=False``.
+/// Parameters
+/// ----------
+/// grid : array_like
+///     The grid, shape ``(nu, nv, d)``, ``d`` in {2, 3}.
+/// parameterization : str, optional
+///     ``'uniform'``, ``'chord'`` (chord lengths along the first column for ``u`` and the
+///     first row for ``v``), ``'averaged-chord'`` (averaged over all rows and columns) or
+///     ``'centripetal'``.
+/// closed_u, closed_v : bool, optional
+///     Closed (periodic) in ``u``, in ``v``.
+///
+/// Raises
+/// ------
+/// PointsError
+///     Too few grid points, a non-finite coordinate, coinciding neighbours, or a wrong shape.
+/// OptionError
+///     An unknown ``parameterization``.
+///
+/// Examples
+/// --------
+/// >>> grid = np.array([[[i, j, i * j] for j in range(4)] for i in range(3)], float)
+/// >>> S = karkas.BicubicSurface(grid, parameterization="uniform")
+/// >>> S.knots_u, S.knots_v
+/// (array([0., 1., 2.]), array([0., 1., 2., 3.]))
+/// >>> bool(np.allclose(S(S.knots_u, S.knots_v), grid))
+/// True
 #[pyclass(extends = PySurface, module = "karkas", name = "BicubicSurface", frozen)]
 pub struct PyBicubicSurface {
     /// The u parameters of the grid rows (a closed direction includes the closing step).
@@ -237,9 +290,38 @@ impl PyBicubicSurface {
         Self::build(py, grid, Ok(parameterization), closed_u, closed_v)
     }
 
-    /// BicubicSurface.from_knots(grid, knots_u, knots_v, closed_u=False, closed_v=False): the
-    /// bicubic interpolant on given parameters (knots_u (nu,), knots_v (nv,), increasing; a
-    /// closed direction's last grid line must repeat its first).
+    /// The bicubic interpolant of a grid on given parameters.
+    ///
+    /// Parameters
+    /// ----------
+    /// grid : array_like
+    ///     The grid, shape ``(nu, nv, d)``, ``d`` in {2, 3}; a closed direction's last grid
+    ///     line must repeat its first.
+    /// knots_u : array_like
+    ///     The ``u`` parameters of the rows, ``(nu,)``, strictly increasing.
+    /// knots_v : array_like
+    ///     The ``v`` parameters of the columns, ``(nv,)``, strictly increasing.
+    /// closed_u, closed_v : bool, optional
+    ///     Closed (periodic) in ``u``, in ``v``.
+    ///
+    /// Returns
+    /// -------
+    /// BicubicSurface
+    ///     The surface through ``grid[i, j]`` at ``(knots_u[i], knots_v[j])``.
+    ///
+    /// Raises
+    /// ------
+    /// PointsError
+    ///     Too few grid points, a non-finite coordinate, or a wrong shape.
+    /// KnotsError
+    ///     Knots not finite and strictly increasing, or not one per grid line.
+    ///
+    /// Examples
+    /// --------
+    /// >>> grid = np.array([[[i, j, i * j] for j in range(4)] for i in range(3)], float)
+    /// >>> S = karkas.BicubicSurface.from_knots(grid, [0.0, 0.5, 1.0], [0.0, 1.0, 2.0, 4.0])
+    /// >>> bool(np.allclose(S(0.5, 4.0), grid[1, 3]))
+    /// True
     #[staticmethod]
     #[pyo3(signature = (grid, knots_u, knots_v, closed_u = false, closed_v = false))]
     fn from_knots(
@@ -259,8 +341,35 @@ impl PyBicubicSurface {
     }
 }
 
-/// curve_parameters(points, parameterization="chord") -> (n,): the parameters of points
-/// (n, d) starting at 0: 'uniform', 'chord' or 'centripetal'.
+/// The parameters of a list of points, starting at 0, as ``CubicSpline`` computes them.
+///
+/// Parameters
+/// ----------
+/// points : array_like
+///     The points, shape ``(n, d)``, ``d`` in {2, 3}.
+/// parameterization : str, optional
+///     ``'uniform'`` (0, 1, 2, ...), ``'chord'`` (cumulative chord lengths) or
+///     ``'centripetal'`` (cumulative square roots of chord lengths).
+///
+/// Returns
+/// -------
+/// numpy.ndarray
+///     float64, shape ``(n,)``.
+///
+/// Raises
+/// ------
+/// PointsError
+///     Too few points, a non-finite coordinate, coinciding neighbours, or a wrong shape.
+/// OptionError
+///     An unknown ``parameterization``.
+///
+/// Examples
+/// --------
+/// >>> pts = [[0.0, 0.0], [3.0, 4.0], [3.0, 5.0]]
+/// >>> karkas.curve_parameters(pts, "chord")
+/// array([0., 5., 6.])
+/// >>> karkas.curve_parameters(pts, "uniform")
+/// array([0., 1., 2.])
 #[pyfunction]
 #[pyo3(signature = (points, parameterization = "chord"))]
 pub fn curve_parameters<'py>(
@@ -275,8 +384,35 @@ pub fn curve_parameters<'py>(
     Ok(vector_to_array(py, &t))
 }
 
-/// grid_parameters(grid, parameterization="chord") -> (u (nu,), v (nv,)): the parameters of
-/// a grid (nu, nv, d): 'uniform', 'chord', 'averaged-chord' or 'centripetal'.
+/// The parameters of a grid of points, as ``BicubicSurface`` computes them.
+///
+/// Parameters
+/// ----------
+/// grid : array_like
+///     The grid, shape ``(nu, nv, d)``, ``d`` in {2, 3}.
+/// parameterization : str, optional
+///     ``'uniform'``, ``'chord'`` (chord lengths along the first column for ``u`` and the
+///     first row for ``v``), ``'averaged-chord'`` or ``'centripetal'``.
+///
+/// Returns
+/// -------
+/// u : numpy.ndarray
+///     float64, shape ``(nu,)``, the parameters of the rows, from 0.
+/// v : numpy.ndarray
+///     float64, shape ``(nv,)``, the parameters of the columns, from 0.
+///
+/// Raises
+/// ------
+/// PointsError
+///     Too few grid points, a non-finite coordinate, coinciding neighbours, or a wrong shape.
+/// OptionError
+///     An unknown ``parameterization``.
+///
+/// Examples
+/// --------
+/// >>> grid = np.array([[[2.0 * i, 3.0 * j] for j in range(3)] for i in range(2)])
+/// >>> karkas.grid_parameters(grid, "chord")
+/// (array([0., 2.]), array([0., 3., 6.]))
 #[pyfunction]
 #[pyo3(signature = (grid, parameterization = "chord"))]
 pub fn grid_parameters<'py>(

@@ -25,14 +25,36 @@ use pyo3::prelude::*;
 
 use crate::errors::{FileFormatError, OptionError};
 
-/// read_curve(path) -> (n, d) float64 array: the ordered points of a curve file, as the
-/// command line's `curve` commands read them: CSV (an optional header naming x, y and
-/// optionally z), whitespace-separated columns, or an airfoil .dat (Selig or Lednicer); d is 2
-/// or 3 as the file says.
+/// Reads the ordered points of a curve file, as the command line's ``curve`` commands do.
 ///
-/// Raises FileNotFoundError, PermissionError, IsADirectoryError (OSError) when the file cannot
-/// be opened, karkas.FileFormatError (with the command line's message, "file:line: ...") when
-/// its content cannot be read.
+/// CSV (an optional header naming ``x``, ``y`` and optionally ``z``), whitespace-separated
+/// columns, or an airfoil .dat (Selig or Lednicer).
+///
+/// Parameters
+/// ----------
+/// path : str or os.PathLike
+///     The file (``-`` is a file named ``-``, not standard input).
+///
+/// Returns
+/// -------
+/// numpy.ndarray
+///     float64, shape ``(n, d)``, ``d`` 2 or 3 as the file says.
+///
+/// Raises
+/// ------
+/// OSError
+///     The file cannot be opened or read (``FileNotFoundError``, ``PermissionError``,
+///     ``IsADirectoryError``, ...), with ``errno``, ``strerror`` and ``filename`` set.
+/// FileFormatError
+///     The content cannot be read (the command line's message, ``file:line: ...``).
+///
+/// Examples
+/// --------
+/// >>> _ = open("c.csv", "w").write("x,y\n0,0\n1,2\n2,1\n")
+/// >>> karkas.read_curve("c.csv")
+/// array([[0., 0.],
+///        [1., 2.],
+///        [2., 1.]])
 #[pyfunction]
 #[pyo3(text_signature = "(path)")]
 pub fn read_curve(py: Python<'_>, path: PathBuf) -> PyResult<Bound<'_, PyArray2<f64>>> {
@@ -44,12 +66,35 @@ pub fn read_curve(py: Python<'_>, path: PathBuf) -> PyResult<Bound<'_, PyArray2<
     PyArray1::from_vec(py, flat).reshape([rows, dim])
 }
 
-/// read_airfoil(path) -> (name, (n, 2) float64 array): an airfoil .dat file, Selig or Lednicer
-/// layout; the name line trimmed, the contour in Selig order (trailing edge, upper surface,
-/// leading edge, lower surface, trailing edge).
+/// Reads an airfoil .dat file, Selig or Lednicer layout.
 ///
-/// Raises OSError when the file cannot be opened, karkas.FileFormatError when its content is
-/// not an airfoil.
+/// Parameters
+/// ----------
+/// path : str or os.PathLike
+///     The file.
+///
+/// Returns
+/// -------
+/// name : str
+///     The name line, trimmed.
+/// points : numpy.ndarray
+///     float64, shape ``(n, 2)``: the contour in Selig order (trailing edge, upper surface,
+///     leading edge, lower surface, trailing edge).
+///
+/// Raises
+/// ------
+/// OSError
+///     The file cannot be opened or read (``FileNotFoundError``, ``PermissionError``,
+///     ``IsADirectoryError``, ...), with ``errno``, ``strerror`` and ``filename`` set.
+/// FileFormatError
+///     The content is not an airfoil.
+///
+/// Examples
+/// --------
+/// >>> _ = open("wing.dat", "w").write("WING\n1 0\n0.5 0.1\n0 0\n0.5 -0.1\n1 0\n")
+/// >>> name, points = karkas.read_airfoil("wing.dat")
+/// >>> name, points.shape
+/// ('WING', (5, 2))
 #[pyfunction]
 #[pyo3(text_signature = "(path)")]
 pub fn read_airfoil(py: Python<'_>, path: PathBuf) -> PyResult<(String, Bound<'_, PyArray2<f64>>)> {
@@ -64,12 +109,37 @@ pub fn read_airfoil(py: Python<'_>, path: PathBuf) -> PyResult<(String, Bound<'_
     Ok((airfoil.name, points))
 }
 
-/// read_grid(path) -> (m, n, 3) float64 array: a surface frame, CSV rows i,j,x,y,z (a header
-/// naming the columns, rows in any order, every cell of the m x n grid given once), as the
-/// command line's `surface` commands read it; grid[i, j] is the point of cell (i, j).
+/// Reads a surface frame, CSV rows ``i,j,x,y,z``, as the command line's ``surface`` commands
+/// do.
 ///
-/// Raises OSError when the file cannot be opened, karkas.FileFormatError when its content
-/// cannot be read (the message names the line or the grid cell).
+/// A header names the columns; rows may come in any order; every cell of the ``m x n`` grid
+/// is given once.
+///
+/// Parameters
+/// ----------
+/// path : str or os.PathLike
+///     The file.
+///
+/// Returns
+/// -------
+/// numpy.ndarray
+///     float64, shape ``(m, n, 3)``; ``grid[i, j]`` is the point of cell ``(i, j)``.
+///
+/// Raises
+/// ------
+/// OSError
+///     The file cannot be opened or read (``FileNotFoundError``, ``PermissionError``,
+///     ``IsADirectoryError``, ...), with ``errno``, ``strerror`` and ``filename`` set.
+/// FileFormatError
+///     The content cannot be read (the message names the line or the grid cell).
+///
+/// Examples
+/// --------
+/// >>> rows = ["i,j,x,y,z"] + [f"{i},{j},{i},{j},{i * j}" for i in range(2) for j in range(3)]
+/// >>> _ = open("grid.csv", "w").write("\n".join(rows) + "\n")
+/// >>> g = karkas.read_grid("grid.csv")
+/// >>> g.shape, g[1, 2]
+/// ((2, 3, 3), array([1., 2., 2.]))
 #[pyfunction]
 #[pyo3(text_signature = "(path)")]
 pub fn read_grid(py: Python<'_>, path: PathBuf) -> PyResult<Bound<'_, PyArray3<f64>>> {
@@ -81,13 +151,36 @@ pub fn read_grid(py: Python<'_>, path: PathBuf) -> PyResult<Bound<'_, PyArray3<f
     PyArray1::from_vec(py, flat_points(grid.into_vec())).reshape([rows, cols, 3])
 }
 
-/// read_network(path) -> list of (k, 3) float64 arrays: one family of curves of a curve
-/// network, CSV rows curve,x,y,z (a header naming the columns; curves numbered from 0 without
-/// gaps, each curve's points together, in file order), as `surface coons` reads it; item c is
-/// curve c.
+/// Reads one family of curves of a curve network, CSV rows ``curve,x,y,z``, as ``surface
+/// coons`` does.
 ///
-/// Raises OSError when the file cannot be opened, karkas.FileFormatError when its content
-/// cannot be read.
+/// A header names the columns; curves are numbered from 0 without gaps, each curve's points
+/// together, in their order along the curve.
+///
+/// Parameters
+/// ----------
+/// path : str or os.PathLike
+///     The file.
+///
+/// Returns
+/// -------
+/// list of numpy.ndarray
+///     Item ``c`` is curve ``c``, float64 ``(k, 3)``.
+///
+/// Raises
+/// ------
+/// OSError
+///     The file cannot be opened or read (``FileNotFoundError``, ``PermissionError``,
+///     ``IsADirectoryError``, ...), with ``errno``, ``strerror`` and ``filename`` set.
+/// FileFormatError
+///     The content cannot be read.
+///
+/// Examples
+/// --------
+/// >>> text = "curve,x,y,z\n0,0,0,0\n0,0,1,0\n1,1,0,0\n1,1,1,0\n1,1,2,0\n"
+/// >>> _ = open("v.csv", "w").write(text)
+/// >>> [c.shape for c in karkas.read_network("v.csv")]
+/// [(2, 3), (3, 3)]
 #[pyfunction]
 #[pyo3(text_signature = "(path)")]
 pub fn read_network(py: Python<'_>, path: PathBuf) -> PyResult<Vec<Bound<'_, PyArray2<f64>>>> {
@@ -102,12 +195,36 @@ pub fn read_network(py: Python<'_>, path: PathBuf) -> PyResult<Vec<Bound<'_, PyA
         .collect()
 }
 
-/// read_mesh(path) -> (vertices (n, 3) float64, faces (m, 3) int64): a triangle mesh, .obj,
-/// .stl (binary or ASCII) or .ply by the file's extension, as `convert` reads it; faces index
-/// the vertices from 0.
+/// Reads a triangle mesh: .obj, .stl (binary or ASCII) or .ply by the file's extension, as
+/// ``convert`` does.
 ///
-/// Raises OSError when the file cannot be opened, karkas.FileFormatError when its content
-/// cannot be read or it has no faces.
+/// Parameters
+/// ----------
+/// path : str or os.PathLike
+///     The file.
+///
+/// Returns
+/// -------
+/// vertices : numpy.ndarray
+///     float64, shape ``(n, 3)``.
+/// faces : numpy.ndarray
+///     int64, shape ``(m, 3)``, indexing ``vertices`` from 0.
+///
+/// Raises
+/// ------
+/// OSError
+///     The file cannot be opened or read (``FileNotFoundError``, ``PermissionError``,
+///     ``IsADirectoryError``, ...), with ``errno``, ``strerror`` and ``filename`` set.
+/// FileFormatError
+///     The content cannot be read, or the mesh has no faces.
+///
+/// Examples
+/// --------
+/// >>> grid = np.array([[[i, j, 0.0] for j in range(3)] for i in range(2)])
+/// >>> karkas.export_obj("patch.obj", grid)
+/// >>> vertices, faces = karkas.read_mesh("patch.obj")
+/// >>> vertices.shape, faces.shape, faces.dtype
+/// ((6, 3), (4, 3), dtype('int64'))
 #[pyfunction]
 #[pyo3(text_signature = "(path)")]
 pub fn read_mesh(py: Python<'_>, path: PathBuf) -> PyResult<MeshArrays<'_>> {
@@ -129,10 +246,36 @@ pub fn read_mesh(py: Python<'_>, path: PathBuf) -> PyResult<MeshArrays<'_>> {
 /// The vertices `(n, 3)` and faces `(m, 3)` of a mesh.
 type MeshArrays<'py> = (Bound<'py, PyArray2<f64>>, Bound<'py, PyArray2<i64>>);
 
-/// set_max_input_bytes(nbytes): the most memory one read may keep (the points it returns, or
-/// the text of a file read whole), in bytes, for every reader of the process (default 2 GiB,
-/// the command line's --max-memory). A larger input raises karkas.FileFormatError instead of
-/// exhausting the machine.
+/// Sets the most memory one read may keep, in bytes, for every reader of the process.
+///
+/// What a read keeps is the points it returns, or the text of a file read whole. The default
+/// is 2 GiB, as the command line's ``--max-memory``. A larger input raises
+/// ``FileFormatError`` instead of exhausting the machine.
+///
+/// Parameters
+/// ----------
+/// nbytes : int
+///     The cap, positive and below 2^64.
+///
+/// Returns
+/// -------
+/// None
+///
+/// Raises
+/// ------
+/// OptionError
+///     ``nbytes`` is not positive or too large.
+///
+/// Examples
+/// --------
+/// >>> old = karkas.max_input_bytes()
+/// >>> karkas.set_max_input_bytes(10)
+/// >>> _ = open("c.csv", "w").write("x,y\n0,0\n1,2\n2,1\n")
+/// >>> karkas.read_curve("c.csv")
+/// Traceback (most recent call last):
+/// ...
+/// karkas.FileFormatError: ...
+/// >>> karkas.set_max_input_bytes(old)
 #[pyfunction]
 #[pyo3(text_signature = "(nbytes)")]
 pub fn set_max_input_bytes(nbytes: i128) -> PyResult<()> {
@@ -148,8 +291,17 @@ pub fn set_max_input_bytes(nbytes: i128) -> PyResult<()> {
     Ok(())
 }
 
-/// max_input_bytes() -> int: the most memory one read may keep, in bytes (see
-/// set_max_input_bytes).
+/// The most memory one read may keep, in bytes (see ``set_max_input_bytes``).
+///
+/// Returns
+/// -------
+/// int
+///     The cap in bytes (2 GiB unless set).
+///
+/// Examples
+/// --------
+/// >>> karkas.max_input_bytes() >= 1
+/// True
 #[pyfunction]
 #[pyo3(text_signature = "()")]
 pub fn max_input_bytes() -> u64 {

@@ -9,6 +9,20 @@ use karkas::section::SectionCurve;
 use crate::convert::{as_points, by_dim, flatten, points_to_array, py_bool};
 
 /// One connected piece of a plane section: a polyline on the surface.
+///
+/// Returned by ``Surface.section`` (no constructor). ``len(piece)`` is its number of points.
+///
+/// Examples
+/// --------
+/// >>> grid = np.array([[[i, j, 0.0] for j in range(4)] for i in range(4)])
+/// >>> S = karkas.BicubicSurface(grid, parameterization="uniform")
+/// >>> (piece,) = S.section([0.0, 1.0, 0.0], 1.5)
+/// >>> piece.closed, round(piece.length, 6)
+/// (False, 3.0)
+/// >>> len(piece) == len(piece.points) == len(piece.params)
+/// True
+/// >>> bool(np.allclose(S(piece.params[:, 0], piece.params[:, 1], grid=False), piece.points))
+/// True
 #[pyclass(module = "karkas", name = "SectionCurve", frozen)]
 pub struct PySectionCurve {
     points: Vec<f64>,
@@ -37,13 +51,13 @@ impl PySectionCurve {
 
 #[pymethods]
 impl PySectionCurve {
-    /// The points, (n, d); each is the surface at its params.
+    /// The points, float64 ``(n, d)``; each is the surface at its ``params``.
     #[getter]
     fn points<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
         by_dim!(self.dim, D => points_to_array::<D>(py, as_points::<D>(&self.points)))
     }
 
-    /// The surface parameters (u, v) of the points, (n, 2).
+    /// The surface parameters ``(u, v)`` of the points, float64 ``(n, 2)``.
     #[getter]
     fn params<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
         points_to_array::<2>(py, as_points::<2>(&self.params))

@@ -15,21 +15,61 @@ use crate::errors::{library_error, OptionError};
 use crate::section::PySectionCurve;
 use crate::wrapper::SurfaceImpl;
 
-/// Base class of every karkas surface.
+/// Base class of every karkas surface: a parametric surface in 2-D or 3-D, called like SciPy's
+/// RectBivariateSpline.
 ///
-/// ``S(u, v, du=0, dv=0, grid=True, out=None, extrapolate=None)`` (SciPy's
-/// ``RectBivariateSpline`` names, ``dx``/``dy`` as ``du``/``dv``): with grid=True, u (mu,) and
-/// v (mv,) give the partial derivative ``d^(du+dv) S / du^du dv^dv`` (``(0, 0)``: the points)
-/// on the grid u x v, shape (mu, mv, d) (u outer); with grid=False, u and v of one shape give
-/// it at the pairs (u[i], v[i]), shape u.shape + (d,). Floats work too. out= takes a
-/// preallocated C-contiguous float64 array of the result's shape. ``S.derivative(du, dv)`` is
-/// the derivative as a surface object, ``S.to_bspline()`` the exact B-spline form
-/// ``((tu, tv), c, (ku, kv))`` for ``scipy.interpolate.NdBSpline``.
+/// Surfaces are made by the subclasses (``LLSurface``, ``BicubicSurface``,
+/// ``CoonsSurface``); ``Surface`` itself has no constructor.
 ///
-/// Parameters outside the domain, per direction (the same rule for every surface class): a
-/// closed direction wraps by its period; an open one continues the end polynomial pieces when
-/// ``extrapolate`` is None or True (the values of ``NdBSpline(*S.to_bspline())``) and gives
-/// NaN when ``extrapolate=False``.
+/// Calling a surface, ``S(u, v, du=0, dv=0, grid=True, out=None, extrapolate=None)``,
+/// evaluates it or its partial derivative ``d^(du+dv) S / du^du dv^dv``.
+///
+/// Parameters
+/// ----------
+/// u, v : float or array_like
+///     The parameters. With ``grid=True``, floats or 1-D arrays ``(mu,)`` and ``(mv,)``: the
+///     grid ``u x v``, ``u`` outer; with ``grid=False``, arrays of one shape: the pairs
+///     ``(u[i], v[i])``.
+/// du, dv : int, optional
+///     The orders of the partial derivative in ``u`` and ``v`` (0, 0: the points).
+/// grid : bool, optional
+///     Evaluate on the grid ``u x v`` (True) or at the pairs (False).
+/// out : numpy.ndarray, optional
+///     A C-contiguous float64 array of the result's shape, written without allocating and
+///     returned.
+/// extrapolate : bool, optional
+///     Parameters outside a direction's domain: a closed direction wraps them by its period;
+///     an open one continues its end pieces when ``extrapolate`` is None or True and gives
+///     NaN when it is False.
+///
+/// Returns
+/// -------
+/// numpy.ndarray
+///     float64, shape ``(mu, mv, d)`` with ``grid=True`` (a float counts as no axis),
+///     ``u.shape + (d,)`` with ``grid=False``.
+///
+/// Raises
+/// ------
+/// TypeError
+///     ``u`` or ``v`` is not a number or an array of numbers; ``out`` is not a C-contiguous
+///     float64 array.
+/// ValueError
+///     ``u`` and ``v`` of different shapes with ``grid=False``, arrays of more than one axis
+///     with ``grid=True``, or ``out`` of the wrong shape.
+///
+/// Examples
+/// --------
+/// >>> grid = np.array([[[i, j, i * j] for j in range(4)] for i in range(3)], float)
+/// >>> S = karkas.BicubicSurface(grid, parameterization="uniform")
+/// >>> isinstance(S, karkas.Surface)
+/// True
+/// >>> S(1.0, 2.0)
+/// array([1., 2., 2.])
+/// >>> S(np.linspace(0, 2, 5), np.linspace(0, 3, 7)).shape
+/// (5, 7, 3)
+/// >>> S([0.0, 2.0], [0.0, 3.0], grid=False)
+/// array([[0., 0., 0.],
+///        [2., 3., 6.]])
 #[pyclass(subclass, module = "karkas", name = "Surface", frozen)]
 pub struct PySurface {
     pub inner: Arc<dyn SurfaceImpl>,
@@ -77,11 +117,49 @@ impl PySurface {
         Ok(array)
     }
 
-    /// S.section(normal, offset, tolerance=None, cells=(64, 64)) -> list[SectionCurve]: where
-    /// the plane normal . x = offset cuts the surface, as polylines on it (chord error at most
-    /// tolerance; default 1e-4 of the bounding box diagonal). Pieces smaller than a cell of the
-    /// cells grid may be missed.
+    /// Where the plane ``normal . x = offset`` cuts the surface, as polylines on it.
+    ///
+    /// The cut is found on a ``cells`` grid of the parameter domain and traced by a
+    /// predictor-corrector continuation; pieces smaller than a cell may be missed.
+    ///
+    /// Parameters
+    /// ----------
+    /// normal : sequence of float
+    ///     The plane's normal, ``d`` coordinates (need not be a unit vector).
+    /// offset : float
+    ///     The plane is ``normal . x = offset``.
+    /// tolerance : float, optional
+    ///     The largest chord error of the polylines; None: 1e-4 of the diagonal of the
+    ///     surface's bounding box.
+    /// cells : tuple of int, optional
+    ///     The ``(nu, nv)`` cells of the search grid (64 x 64 when not given).
+    ///
+    /// Returns
+    /// -------
+    /// list of SectionCurve
+    ///     The connected pieces of the section (empty when the plane misses the surface).
+    ///
+    /// Raises
+    /// ------
+    /// OptionError
+    ///     ``normal`` has the wrong number of coordinates or is zero, or ``tolerance`` or
+    ///     ``cells`` is out of range.
+    /// ConvergenceError
+    ///     The continuation could not follow the section.
+    ///
+    /// Examples
+    /// --------
+    /// >>> grid = np.array([[[i, j, i * j] for j in range(4)] for i in range(3)], float)
+    /// >>> S = karkas.BicubicSurface(grid, parameterization="uniform")
+    /// >>> pieces = S.section([1.0, 0.0, 0.0], 1.0)
+    /// >>> len(pieces)
+    /// 1
+    /// >>> bool(np.allclose(pieces[0].points[:, 0], 1.0))
+    /// True
+    /// >>> round(pieces[0].length, 6)
+    /// 4.242641
     #[pyo3(signature = (normal, offset, tolerance = None, cells = (64, 64)))]
+    #[pyo3(text_signature = "($self, normal, offset, tolerance=None, cells=(64, 64))")]
     fn section(
         &self,
         py: Python<'_>,
@@ -107,31 +185,31 @@ impl PySurface {
             .map_err(library_error)
     }
 
-    /// The u domain (a, b).
+    /// The ``u`` domain ``(a, b)``.
     #[getter]
     fn domain_u(&self) -> (f64, f64) {
         self.inner.domain_u()
     }
 
-    /// The v domain (a, b).
+    /// The ``v`` domain ``(a, b)``.
     #[getter]
     fn domain_v(&self) -> (f64, f64) {
         self.inner.domain_v()
     }
 
-    /// The dimension d (2 or 3).
+    /// The dimension ``d`` of the points (2 or 3).
     #[getter]
     fn dim(&self) -> usize {
         self.inner.dim()
     }
 
-    /// True when closed in u.
+    /// True when the surface is closed in ``u`` (``u`` wraps by its period).
     #[getter]
     fn closed_u(&self) -> bool {
         self.inner.closed().0
     }
 
-    /// True when closed in v.
+    /// True when the surface is closed in ``v`` (``v`` wraps by its period).
     #[getter]
     fn closed_v(&self) -> bool {
         self.inner.closed().1
