@@ -50,6 +50,11 @@ fn first_dim(lists: &[Bound<'_, PyAny>], what: &str) -> PyResult<usize> {
 /// surface spans the network. A family whose curves repeat their first point at the end is
 /// closed. Calling the surface is described in ``Surface``.
 ///
+/// Outside the domain (the rule of every surface class, per direction): a closed direction
+/// wraps the parameter by its period; an open one continues the end polynomial pieces when
+/// ``extrapolate`` is None or True (the values of ``NdBSpline(*S.to_bspline())``) and gives
+/// NaN when ``extrapolate=False``.
+///
 /// Parameters
 /// ----------
 /// v_curves : sequence of array_like

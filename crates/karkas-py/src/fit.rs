@@ -16,6 +16,11 @@ use crate::wrapper::{CurveImpl, Wrapped};
 ///
 /// Made by ``fit_curve`` only (no constructor). Calling the curve is described in ``Curve``.
 ///
+/// Outside the domain (the rule of every curve class): a closed curve wraps the parameter by
+/// its period; an open curve continues its end polynomial pieces when ``extrapolate`` is None
+/// or True (SciPy's ``BSpline`` default; the values of ``BSpline(*c.to_bspline())``) and gives
+/// NaN when ``extrapolate=False``.
+///
 /// Examples
 /// --------
 /// >>> s = np.linspace(0.0, 1.0, 50)

@@ -25,6 +25,11 @@ use crate::wrapper::{CurveImpl, SurfaceImpl, Wrapped, WrappedSurface};
 /// approximates the others; ``LLCurve.interpolate`` gives a curve through every point.
 /// Calling the curve is described in ``Curve``.
 ///
+/// Outside the domain (the rule of every curve class): a closed curve wraps the parameter by
+/// its period; an open curve continues its end polynomial pieces when ``extrapolate`` is None
+/// or True (SciPy's ``BSpline`` default; the values of ``BSpline(*c.to_bspline())``) and gives
+/// NaN when ``extrapolate=False``.
+///
 /// Parameters
 /// ----------
 /// points : array_like
@@ -171,6 +176,11 @@ impl PyLlCurve {
 ///
 /// Node ``(i, j)`` sits at ``(i/(Ku+1), j/(Kv+1))``. ``LLSurface.interpolate`` gives a surface
 /// through every grid point. Calling the surface is described in ``Surface``.
+///
+/// Outside the domain (the rule of every surface class, per direction): a closed direction
+/// wraps the parameter by its period; an open one continues the end polynomial pieces when
+/// ``extrapolate`` is None or True (the values of ``NdBSpline(*S.to_bspline())``) and gives
+/// NaN when ``extrapolate=False``.
 ///
 /// Parameters
 /// ----------

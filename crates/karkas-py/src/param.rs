@@ -67,6 +67,11 @@ fn parse_ends<const D: usize>(bc: &Bound<'_, PyAny>) -> PyResult<SplineEnds<D>> 
 /// The curve passes through ``points[k]`` at ``t[k]``; its domain is ``(t[0], t[-1])``.
 /// Calling the curve is described in ``Curve``.
 ///
+/// Outside the domain (the rule of every curve class): a closed curve wraps the parameter by
+/// its period; an open curve continues its end polynomial pieces when ``extrapolate`` is None
+/// or True (SciPy's ``BSpline`` default; the values of ``BSpline(*c.to_bspline())``) and gives
+/// NaN when ``extrapolate=False``.
+///
 /// Parameters
 /// ----------
 /// points : array_like
@@ -201,6 +206,11 @@ enum GridParameters {
 /// Not-a-knot ends in an open direction, periodic in a closed one.
 /// ``BicubicSurface.from_knots`` takes the parameters instead. Calling the surface is
 /// described in ``Surface``.
+///
+/// Outside the domain (the rule of every surface class, per direction): a closed direction
+/// wraps the parameter by its period; an open one continues the end polynomial pieces when
+/// ``extrapolate`` is None or True (the values of ``NdBSpline(*S.to_bspline())``) and gives
+/// NaN when ``extrapolate=False``.
 ///
 /// Parameters
 /// ----------

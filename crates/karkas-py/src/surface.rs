@@ -100,7 +100,34 @@ impl PySurface {
 
 #[pymethods]
 impl PySurface {
-    /// S.sample(nu, nv): the points at nu x nv uniformly spaced parameters, (nu, nv, d).
+    /// The points at ``nu x nv`` uniformly spaced parameters over the domain, ends included.
+    ///
+    /// Parameters
+    /// ----------
+    /// nu, nv : int
+    ///     The numbers of parameters in ``u`` and in ``v``.
+    ///
+    /// Returns
+    /// -------
+    /// numpy.ndarray
+    ///     float64, shape ``(nu, nv, d)``: the surface on ``np.linspace(*S.domain_u, nu) x
+    ///     np.linspace(*S.domain_v, nv)``.
+    ///
+    /// Raises
+    /// ------
+    /// OverflowError
+    ///     ``nu`` or ``nv`` is negative.
+    /// MemoryError
+    ///     The result does not fit in memory.
+    ///
+    /// Examples
+    /// --------
+    /// >>> grid = np.array([[[i, j, i * j] for j in range(4)] for i in range(3)], float)
+    /// >>> S = karkas.BicubicSurface(grid, parameterization="uniform")
+    /// >>> S.sample(3, 4).shape
+    /// (3, 4, 3)
+    /// >>> bool(np.allclose(S.sample(3, 4), grid))
+    /// True
     fn sample<'py>(
         &self,
         py: Python<'py>,
