@@ -11,12 +11,14 @@
 //! `Curve` and `Surface` in `curve` and `surface` over the dimension-free interfaces of
 //! `wrapper`; arrays in `convert`; exceptions in `errors`.
 
+mod adapters;
 mod convert;
 mod coons;
 mod curve;
 mod dps;
 mod errors;
 mod export;
+mod export_any;
 mod fit;
 mod implicit;
 mod ll;
@@ -62,6 +64,7 @@ fn karkas_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(ll::vary, m)?)?;
     m.add_function(wrap_pyfunction!(param::curve_parameters, m)?)?;
     m.add_function(wrap_pyfunction!(param::grid_parameters, m)?)?;
+    m.add_function(wrap_pyfunction!(export_any::export, m)?)?;
     m.add_function(wrap_pyfunction!(export::export_obj, m)?)?;
     m.add_function(wrap_pyfunction!(export::export_stl, m)?)?;
     m.add_function(wrap_pyfunction!(export::export_curve_csv, m)?)?;
