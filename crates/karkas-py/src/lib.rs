@@ -25,6 +25,8 @@ mod ll;
 mod measure;
 mod param;
 mod read;
+mod read_more;
+mod repr_html;
 mod section;
 mod surface;
 mod wrapper;
@@ -74,6 +76,10 @@ fn karkas_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(read::read_grid, m)?)?;
     m.add_function(wrap_pyfunction!(read::read_network, m)?)?;
     m.add_function(wrap_pyfunction!(read::read_mesh, m)?)?;
+    m.add_function(wrap_pyfunction!(read_more::read_skeleton, m)?)?;
+    m.add_function(wrap_pyfunction!(read_more::read_point_set, m)?)?;
+    m.add_function(wrap_pyfunction!(read_more::read_surface_samples, m)?)?;
+    m.add_function(wrap_pyfunction!(read_more::read_mask, m)?)?;
     m.add_function(wrap_pyfunction!(read::set_max_input_bytes, m)?)?;
     m.add_function(wrap_pyfunction!(read::max_input_bytes, m)?)?;
     let names: Vec<String> = m
