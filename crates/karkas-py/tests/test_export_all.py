@@ -281,3 +281,214 @@ def test_repr_html_of_a_surface_embeds_the_viewer():
     assert html.startswith("<iframe") and "srcdoc=" in html
     assert "three" in html and "<script" in html.replace("&lt;script", "<script")
     assert len(html) < 5_000_000
+
+
+# --- STEP and IGES: read back in Open CASCADE -------------------------------------------------
+
+def _occ_shape(path):
+    OCP = pytest.importorskip("OCP")  # noqa: F841
+    from OCP.IFSelect import IFSelect_RetDone
+    from OCP.IGESControl import IGESControl_Reader
+    from OCP.STEPControl import STEPControl_Reader
+
+    reader = STEPControl_Reader() if str(path).endswith(".step") else IGESControl_Reader()
+    assert reader.ReadFile(str(path)) == IFSelect_RetDone
+    reader.TransferRoots()
+    return reader.OneShape()
+
+
+def _occ_items(shape, kind):
+    from OCP.TopExp import TopExp_Explorer
+
+    explorer, items = TopExp_Explorer(shape, kind), []
+    while explorer.More():
+        items.append(explorer.Current())
+        explorer.Next()
+    return items
+
+
+def occ_curve(path):
+    from OCP.BRep import BRep_Tool
+    from OCP.TopAbs import TopAbs_EDGE
+    from OCP.TopoDS import TopoDS
+
+    (edge,) = _occ_items(_occ_shape(path), TopAbs_EDGE)
+    curve = BRep_Tool.Curve_s(TopoDS.Edge(edge), 0.0, 1.0)
+    return lambda ts: np.array([[(p := curve.Value(t)).X(), p.Y(), p.Z()] for t in ts])
+
+
+def occ_surface(path):
+    from OCP.BRep import BRep_Tool
+    from OCP.TopAbs import TopAbs_FACE
+    from OCP.TopoDS import TopoDS
+
+    (face,) = _occ_items(_occ_shape(path), TopAbs_FACE)
+    surface = BRep_Tool.Surface_s(TopoDS.Face(face))
+    return lambda u, v: np.array([[(p := surface.Value(a, b)).X(), p.Y(), p.Z()] for a, b in zip(u, v)])
+
+
+@pytest.mark.parametrize("ext", ["step", "iges"])
+@pytest.mark.parametrize("dim", [2, 3])
+def test_scipy_bspline_curve_reads_back_in_open_cascade(tmp_path, ext, dim):
+    si = pytest.importorskip("scipy.interpolate")
+    pts = POINTS3[:, :dim]
+    b = si.make_interp_spline(np.linspace(0.0, 1.0, len(pts)), pts, k=3)
+    karkas.export(b, tmp_path / f"b.{ext}")
+    ts = np.linspace(0.0, 1.0, 41)
+    expected = np.column_stack([b(ts), np.zeros((len(ts), 3 - dim))])
+    np.testing.assert_allclose(occ_curve(tmp_path / f"b.{ext}")(ts), expected, rtol=0, atol=1e-9)
+
+
+@pytest.mark.parametrize("ext", ["step", "iges"])
+def test_scipy_bspline_surface_reads_back_in_open_cascade(tmp_path, ext):
+    si = pytest.importorskip("scipy.interpolate")
+    if not hasattr(si, "NdBSpline"):
+        pytest.skip("SciPy without NdBSpline")
+    tu = np.r_[[0.0] * 4, 0.5, [1.0] * 4]
+    tv = np.r_[[0.0] * 3, 0.3, 0.6, [1.0] * 3]
+    rng = np.random.default_rng(1)
+    c = rng.random((5, 5, 3))
+    s = si.NdBSpline((tu, tv), c, (3, 2))
+    karkas.export(s, tmp_path / f"s.{ext}")
+    u, v = rng.random(30), rng.random(30)
+    np.testing.assert_allclose(occ_surface(tmp_path / f"s.{ext}")(u, v), s(np.column_stack([u, v])), rtol=0, atol=1e-9)
+
+
+def test_scipy_bspline_only_as_cad(tmp_path):
+    si = pytest.importorskip("scipy.interpolate")
+    b = si.make_interp_spline(np.linspace(0.0, 1.0, len(POINTS2)), POINTS2, k=3)
+    with pytest.raises(karkas.OptionError):
+        karkas.export(b, tmp_path / "b.csv")
+
+
+needs_exact_form = pytest.mark.skipif(
+    not hasattr(karkas.Curve, "to_bspline"), reason="curves without to_bspline() in this build"
+)
+
+
+@needs_cli
+@needs_exact_form
+@pytest.mark.parametrize("ext", ["step", "iges"])
+def test_ll_curve_cad_matches_cli_and_open_cascade(tmp_path, ext):
+    src = tmp_path / "points.csv"
+    write_points(src, POINTS3)
+    run_cli("curve", "ll", src, "-o", tmp_path / f"cli.{ext}")
+    c = karkas.LLCurve(POINTS3, order=3)
+    karkas.export(c, tmp_path / f"py.{ext}")
+    # The product is named after the file: write the same name to compare.
+    (tmp_path / "py").mkdir()
+    karkas.export(c, tmp_path / "py" / f"cli.{ext}")
+    same_bytes(tmp_path / f"cli.{ext}", tmp_path / "py" / f"cli.{ext}")
+    a, b = c.domain
+    ts = np.linspace(a, b, 41)
+    np.testing.assert_allclose(occ_curve(tmp_path / f"py.{ext}")(ts), c(ts), rtol=0, atol=1e-9)
+
+
+@needs_cli
+@needs_exact_form
+@pytest.mark.parametrize("ext", ["step", "iges"])
+def test_ll_surface_cad_matches_cli(tmp_path, ext):
+    src = tmp_path / "grid.csv"
+    write_grid(src, GRID)
+    run_cli("surface", "ll", src, "-o", tmp_path / f"cli.{ext}")
+    (tmp_path / "py").mkdir()
+    karkas.export(karkas.LLSurface(GRID, order=3), tmp_path / "py" / f"cli.{ext}")
+    same_bytes(tmp_path / f"cli.{ext}", tmp_path / "py" / f"cli.{ext}")
+
+
+def test_curve_without_exact_form_is_refused(tmp_path):
+    if hasattr(karkas.Curve, "to_bspline"):
+        pytest.skip("every curve class has an exact form in this build")
+    with pytest.raises(karkas.OptionError, match="STEP/IGES"):
+        karkas.export(karkas.LLCurve(POINTS2), tmp_path / "c.step")
+    assert not (tmp_path / "c.step").exists()
+
+
+# --- readers ------------------------------------------------------------------------------------
+
+def test_read_surface_samples_reads_what_export_writes(tmp_path):
+    S = karkas.LLSurface(GRID, order=3)
+    karkas.export(S, tmp_path / "s.csv", samples=(6, 7))
+    g = karkas.read_surface_samples(tmp_path / "s.csv")
+    u = np.linspace(*S.domain_u, 6)
+    v = np.linspace(*S.domain_v, 7)
+    np.testing.assert_allclose(g, S(u, v), rtol=0, atol=1e-12)
+
+
+def test_read_point_set_of_obj_and_csv(tmp_path):
+    karkas.export(GRID, tmp_path / "g.obj")
+    pts = karkas.read_point_set(tmp_path / "g.obj")
+    np.testing.assert_allclose(pts, GRID.reshape(-1, 3), rtol=0, atol=1e-12)
+    write_grid(tmp_path / "g.csv", GRID)
+    np.testing.assert_array_equal(karkas.read_point_set(tmp_path / "g.csv"), GRID.reshape(-1, 3))
+
+
+def test_read_skeleton_and_tube_export(tmp_path):
+    # Two circles along a torus-like tube and their crossings, sampled 4 x 3.
+    m1, m2, n1, n2 = 3, 4, 4, 3
+    N1, N2 = m1 * n1, m2 * n2
+    R, r = 3.0, 1.0
+
+    def point(p, q):
+        a, b = 2 * np.pi * p / N1, 2 * np.pi * q / N2
+        return [(R + r * np.cos(b)) * np.cos(a), (R + r * np.cos(b)) * np.sin(a), r * np.sin(b)]
+
+    with open(tmp_path / "along.csv", "w") as f:
+        f.write("i,q,x,y,z\n")
+        for i in range(m1):
+            for q in range(N2):
+                f.write("{},{},{!r},{!r},{!r}\n".format(i, q, *map(float, point(i * n1, q))))
+    with open(tmp_path / "across.csv", "w") as f:
+        f.write("j,p,x,y,z\n")
+        for j in range(m2):
+            for p in range(N1):
+                f.write("{},{},{!r},{!r},{!r}\n".format(j, p, *map(float, point(p, j * n2))))
+    along = karkas.read_skeleton(tmp_path / "along.csv")
+    across = karkas.read_skeleton(tmp_path / "across.csv", across=True)
+    assert along.shape == (m1, N2, 3) and across.shape == (m2, N1, 3)
+    np.testing.assert_allclose(along[1, 5], point(n1, 5), rtol=0, atol=1e-15)
+    tube = karkas.TubeSurface(along, across, n1, n2, 2, 2)
+    for ext in ["csv", "obj", "html"]:
+        out = tmp_path / f"cli.{ext}"
+        if CLI is not None:
+            run_cli("surface", "dps-tube", "--along", tmp_path / "along.csv", "--across", tmp_path / "across.csv",
+                    "--n1", n1, "--n2", n2, "--r1", 2, "--r2", 2, "-o", out)
+            title = f"discrete periodic tube, {N1} x {N2} values, orders 2 and 2"
+            karkas.export(tube, tmp_path / f"py.{ext}", title=title)
+            same_bytes(out, tmp_path / f"py.{ext}")
+    with pytest.raises(karkas.OptionError, match="no exact STEP/IGES form"):
+        karkas.export(tube, tmp_path / "t.iges")
+
+
+def test_read_mask(tmp_path):
+    (tmp_path / "m.csv").write_text("i,j\n0,2\n1,1\n")
+    m = karkas.read_mask(tmp_path / "m.csv", 2, 3)
+    assert m.dtype == bool and m.tolist() == [[False, False, True], [False, True, False]]
+    with pytest.raises(karkas.FileFormatError):
+        karkas.read_mask(tmp_path / "m.csv", 1, 1)
+
+
+# --- the examples of the docstrings run -------------------------------------------------------
+
+@pytest.mark.parametrize(
+    "name",
+    ["export", "read_skeleton", "read_point_set", "read_surface_samples", "read_mask"],
+)
+def test_docstring_examples(name):
+    import doctest
+
+    finder = doctest.DocTestFinder()
+    runner = doctest.DocTestRunner()
+    for test in finder.find(getattr(karkas, name), name, globs={}):
+        runner.run(test)
+    assert runner.failures == 0
+
+
+def test_repr_html_docstring_examples():
+    import doctest
+
+    runner = doctest.DocTestRunner()
+    for cls in (karkas.Curve, karkas.Surface):
+        for test in doctest.DocTestFinder().find(cls._repr_html_, "_repr_html_", globs={}):
+            runner.run(test)
+    assert runner.failures == 0
