@@ -7,7 +7,7 @@
 
 use std::path::{Path, PathBuf};
 
-use karkas::bspline::{BSplineCurve, BSplineSurface};
+use karkas::bspline::BSplineCurve;
 use karkas::{Grid, Point, Point3};
 use karkas_io::export::cad::{write_cad_curve, write_cad_surface, NO_EXACT_FORM};
 use karkas_io::export::curve::{
@@ -24,6 +24,7 @@ use karkas_io::mesh::{MeshOptions, TriangleMesh};
 use karkas_io::svg::CurveOverlay;
 use karkas_io::write::write_indexed_grid_csv;
 use karkas_io::{IoError, OutputFormat};
+use numpy::PyReadonlyArray2;
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::PyTuple;
@@ -33,10 +34,11 @@ use crate::convert::{as_points, by_dim, check_dim, GridArray, PointsArray};
 use crate::curve::PyCurve;
 use crate::dps::{PyDiscreteSpline, PyTubeSurface};
 use crate::errors::{file_error, library_error, KarkasError, OptionError};
+use crate::export_cad::{bspline_curve, bspline_surface, export_scipy_spline};
 use crate::surface::PySurface;
 
 /// What the options of [`export`] say about a drawing and a mesh.
-struct Options {
+pub struct Options {
     format: Option<String>,
     samples: Option<(usize, usize)>,
     title: Option<String>,
@@ -163,7 +165,7 @@ pub fn export(
 
 /// The format of `path` among `allowed`: `options.format` by name, else the extension; STEP
 /// and IGES asked of a kind without them are refused with `no_exact`.
-fn choose(
+pub fn choose(
     path: &Path,
     options: &Options,
     allowed: &[OutputFormat],
@@ -214,7 +216,7 @@ fn named(name: &str) -> PyResult<OutputFormat> {
 }
 
 /// A write error of karkas-io as the Python exception of its kind.
-fn write_error(e: IoError) -> PyErr {
+pub fn write_error(e: IoError) -> PyErr {
     match e {
         IoError::Write { .. } | IoError::Open { .. } => file_error(e),
         IoError::UnknownExtension { .. } => OptionError::new_err(e.to_string()),
@@ -261,14 +263,14 @@ fn flat_points(obj: &Bound<'_, PyAny>) -> PyResult<(Vec<f64>, usize)> {
 }
 
 /// `obj` as a float64 NumPy array (lists, tuples and other arrays converted).
-fn numpy_array<'py>(obj: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+pub fn numpy_array<'py>(obj: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
     obj.py()
         .import("numpy")?
         .call_method1("ascontiguousarray", (obj, "float64"))
 }
 
 /// A `(nu, nv, 3)` grid (a 2-D grid in `z = 0`).
-fn grid3(obj: &Bound<'_, PyAny>) -> PyResult<Grid<Point3>> {
+pub fn grid3(obj: &Bound<'_, PyAny>) -> PyResult<Grid<Point3>> {
     let array = numpy_array(obj)?;
     let (g, dim) = GridArray::extract_checked(&array, "grid")?;
     by_dim!(dim, D => Ok(lift_grid(&g.grid::<D>()?)))
@@ -337,63 +339,6 @@ fn export_curve(
     })
 }
 
-/// The exact B-spline form `(t, c, k)` of `obj` by its `to_bspline()`, the control points
-/// flat; objects without one are refused with `no_exact`.
-fn bspline_curve(
-    obj: &Bound<'_, PyAny>,
-    no_exact: &str,
-) -> PyResult<(Vec<f64>, Vec<f64>, usize, usize)> {
-    if !obj.hasattr("to_bspline")? {
-        return Err(OptionError::new_err(format!("STEP/IGES: {no_exact}")));
-    }
-    let (t, c, k): (Bound<'_, PyAny>, Bound<'_, PyAny>, usize) =
-        obj.call_method0("to_bspline")?.extract()?;
-    curve_form(&t, &c, k)
-}
-
-/// The knots, the flat control points (`len(t) - k - 1` of them: SciPy's convention allows
-/// trailing unused coefficients), the degree and the dimension of the B-spline `(t, c, k)`.
-fn curve_form(
-    t: &Bound<'_, PyAny>,
-    c: &Bound<'_, PyAny>,
-    k: usize,
-) -> PyResult<(Vec<f64>, Vec<f64>, usize, usize)> {
-    let knots: Vec<f64> = numpy_array(t)?.call_method0("tolist")?.extract()?;
-    let c = numpy_array(c)?;
-    let (pts, dim) = PointsArray::extract_checked(&c, "control points")?;
-    let mut control = pts.flat().into_owned();
-    let count = knots.len().saturating_sub(k + 1);
-    control.truncate(count * dim);
-    Ok((knots, control, k, dim))
-}
-
-/// A SciPy B-spline: `scipy.interpolate.BSpline` (coefficients `(n, d)`, `d` in {2, 3}) or
-/// `NdBSpline` of two variables (coefficients `(nu, nv, 3)`), written exactly as STEP or IGES.
-fn export_scipy_spline(
-    py: Python<'_>,
-    obj: &Bound<'_, PyAny>,
-    path: &Path,
-    options: &Options,
-) -> PyResult<()> {
-    let only = "a SciPy B-spline is written as STEP or IGES only";
-    let format = choose(path, options, &OutputFormat::CAD, only)?;
-    let (t, c, k) = (obj.getattr("t")?, obj.getattr("c")?, obj.getattr("k")?);
-    if let Ok((tu, tv)) = t.extract::<(Bound<'_, PyAny>, Bound<'_, PyAny>)>() {
-        let (ku, kv): (usize, usize) = k.extract()?;
-        let b = surface_form((&tu, &tv), &c, (ku, kv))?;
-        return py
-            .detach(|| write_cad_surface(&b, format, path))
-            .map_err(write_error);
-    }
-    let (knots, control, degree, dim) = curve_form(&t, &c, k.extract()?)?;
-    by_dim!(dim, D => {
-        let b = BSplineCurve::<D>::new(degree, knots, as_points::<D>(&control).to_vec())
-            .map_err(library_error)?;
-        py.detach(|| write_cad_curve(&b, format, path, path).map(|_| ()))
-            .map_err(write_error)
-    })
-}
-
 /// A surface: sampled (CSV, meshes, pictures, page) or its exact B-spline form.
 fn export_surface(
     py: Python<'_>,
@@ -426,42 +371,6 @@ fn export_surface(
     let view = SurfaceView(&*surface.inner);
     py.detach(|| write_sampled_surface(&view, counts, format, path, &drawing))
         .map_err(write_error)
-}
-
-/// The exact B-spline surface of `obj` by its `to_bspline()`: `((tu, tv), c, (ku, kv))`.
-fn bspline_surface(obj: &Bound<'_, PyAny>, no_exact: &str) -> PyResult<BSplineSurface<3>> {
-    if !obj.hasattr("to_bspline")? {
-        return Err(OptionError::new_err(format!("STEP/IGES: {no_exact}")));
-    }
-    type Form<'py> = (
-        (Bound<'py, PyAny>, Bound<'py, PyAny>),
-        Bound<'py, PyAny>,
-        (usize, usize),
-    );
-    let ((tu, tv), c, k): Form<'_> = obj.call_method0("to_bspline")?.extract()?;
-    surface_form((&tu, &tv), &c, k)
-}
-
-/// The B-spline surface of knots `(tu, tv)`, coefficients `c` `(nu, nv, 3)` (trailing unused
-/// ones dropped) and degrees `(ku, kv)`.
-fn surface_form(
-    (tu, tv): (&Bound<'_, PyAny>, &Bound<'_, PyAny>),
-    c: &Bound<'_, PyAny>,
-    (ku, kv): (usize, usize),
-) -> PyResult<BSplineSurface<3>> {
-    let tu: Vec<f64> = numpy_array(tu)?.call_method0("tolist")?.extract()?;
-    let tv: Vec<f64> = numpy_array(tv)?.call_method0("tolist")?.extract()?;
-    let (nu, nv) = (
-        tu.len().saturating_sub(ku + 1),
-        tv.len().saturating_sub(kv + 1),
-    );
-    let c = numpy_array(c)?;
-    let sliced = c.get_item((
-        pyo3::types::PySlice::new(c.py(), 0, nu as isize, 1),
-        pyo3::types::PySlice::new(c.py(), 0, nv as isize, 1),
-    ))?;
-    let control = grid3(&sliced)?;
-    BSplineSurface::new((ku, tu), (kv, tv), control).map_err(library_error)
 }
 
 /// A discrete periodic spline: its values as CSV, a picture or the page; no exact form.
@@ -579,19 +488,25 @@ fn export_mesh(
     let flat = pts.flat().into_owned();
     let positions: Vec<Point3> =
         by_dim!(dim, D => as_points::<D>(&flat).iter().map(lift).collect());
-    let faces: Vec<Vec<i64>> = py
+    let faces = py
         .import("numpy")?
-        .call_method1("asarray", (tuple.get_item(1)?, "int64"))?
-        .call_method0("tolist")?
+        .call_method1("ascontiguousarray", (tuple.get_item(1)?, "int64"))?;
+    let faces: PyReadonlyArray2<'_, i64> = faces
         .extract()
         .map_err(|_| PyTypeError::new_err("faces must be an (m, 3) integer array"))?;
-    let mut triangles = Vec::with_capacity(faces.len());
-    for (k, f) in faces.iter().enumerate() {
-        let ok = f.len() == 3 && f.iter().all(|&i| i >= 0 && (i as usize) < positions.len());
-        if !ok {
+    let faces = faces.as_array();
+    if faces.ncols() != 3 {
+        return Err(PyTypeError::new_err(
+            "faces must be an (m, 3) integer array",
+        ));
+    }
+    let n = positions.len().min(u32::MAX as usize) as i64;
+    let mut triangles = Vec::with_capacity(faces.nrows());
+    for (k, f) in faces.rows().into_iter().enumerate() {
+        if f.iter().any(|&i| !(0..n).contains(&i)) {
             return Err(OptionError::new_err(format!(
-                "faces[{k}] = {f:?}: three vertex indices below {} expected",
-                positions.len()
+                "faces[{k}] = {f}: vertex indices from 0 to {} expected",
+                n - 1
             )));
         }
         triangles.push([f[0] as u32, f[1] as u32, f[2] as u32]);

@@ -19,6 +19,7 @@ mod dps;
 mod errors;
 mod export;
 mod export_any;
+mod export_cad;
 mod fit;
 mod implicit;
 mod ll;

@@ -492,3 +492,15 @@ def test_repr_html_docstring_examples():
         for test in doctest.DocTestFinder().find(cls._repr_html_, "_repr_html_", globs={}):
             runner.run(test)
     assert runner.failures == 0
+
+
+def test_mesh_tuple_with_bad_faces_is_refused(tmp_path):
+    v = np.array([[0.0, 0, 0], [1, 0, 0], [0, 1, 0]])
+    with pytest.raises(karkas.OptionError, match="faces"):
+        karkas.export((v, np.array([[0, 1, 3]])), tmp_path / "m.obj")
+    with pytest.raises(TypeError):
+        karkas.export((v, np.array([[0, 1]])), tmp_path / "m.obj")
+    karkas.export((v, np.array([[0, 1, 2]])), tmp_path / "m.obj")
+    v2, f2 = karkas.read_mesh(tmp_path / "m.obj")
+    np.testing.assert_array_equal(v2, v)
+    assert f2.tolist() == [[0, 1, 2]]
