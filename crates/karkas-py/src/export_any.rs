@@ -234,7 +234,7 @@ fn title_of(obj: &Bound<'_, PyAny>, options: &Options) -> PyResult<String> {
 }
 
 /// `samples=`: a count, or a pair of counts (a single count for both directions of a
-/// surface), each at most [`MAX_SAMPLES`] in all.
+/// surface), each from 2 to [`MAX_SAMPLES`] (a surface checks `nu * nv` too).
 fn sample_counts(obj: &Bound<'_, PyAny>) -> PyResult<(usize, usize)> {
     let (a, b) = match obj.extract::<usize>() {
         Ok(n) => (n, n),
@@ -242,14 +242,14 @@ fn sample_counts(obj: &Bound<'_, PyAny>) -> PyResult<(usize, usize)> {
             OptionError::new_err("samples must be a positive count or a pair of counts")
         })?,
     };
-    if a < 2 || b < 2 || a.saturating_mul(b) > MAX_SAMPLES.saturating_mul(MAX_SAMPLES) {
+    if a < 2 || b < 2 {
         return Err(OptionError::new_err(format!(
             "samples must be at least 2, got {a}, {b}"
         )));
     }
     if a > MAX_SAMPLES || b > MAX_SAMPLES {
         return Err(OptionError::new_err(format!(
-            "samples: at most {MAX_SAMPLES}, got {a}, {b}"
+            "samples: at most {MAX_SAMPLES} samples can be written"
         )));
     }
     Ok((a, b))
@@ -354,6 +354,14 @@ fn export_surface(
         return py
             .detach(|| write_cad_surface(&b, format, path))
             .map_err(write_error);
+    }
+    if options
+        .samples
+        .is_some_and(|(nu, nv)| nu.saturating_mul(nv) > MAX_SAMPLES)
+    {
+        return Err(OptionError::new_err(format!(
+            "samples: at most {MAX_SAMPLES} samples can be written"
+        )));
     }
     let title = title_of(obj, options)?;
     let counts = options.samples.unwrap_or_else(|| match &options.net {

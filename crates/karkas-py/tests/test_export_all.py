@@ -504,3 +504,15 @@ def test_mesh_tuple_with_bad_faces_is_refused(tmp_path):
     v2, f2 = karkas.read_mesh(tmp_path / "m.obj")
     np.testing.assert_array_equal(v2, v)
     assert f2.tolist() == [[0, 1, 2]]
+
+
+def test_sample_counts_are_checked(tmp_path):
+    c = karkas.LLCurve(POINTS2, order=3)
+    S = karkas.LLSurface(GRID, order=3)
+    with pytest.raises(karkas.OptionError, match="at least 2"):
+        karkas.export(c, tmp_path / "c.csv", samples=1)
+    with pytest.raises(karkas.OptionError, match="at most"):
+        karkas.export(S, tmp_path / "s.csv", samples=(100_000, 100_000))
+    with pytest.raises(karkas.OptionError):
+        karkas.export(c, tmp_path / "c.csv", samples="many")
+    assert list(tmp_path.iterdir()) == []
