@@ -14,6 +14,11 @@ from typing_extensions import Self, TypeAlias, disjoint_base, final
 
 __version__: str
 __all__ = [
+    "read_surface_samples",
+    "read_skeleton",
+    "read_point_set",
+    "read_mask",
+    "export",
     "SurfaceDerivative",
     "NoBSplineFormError",
     "CurveDerivative",
@@ -108,6 +113,8 @@ class Curve:
     derivatives. Outside the domain a closed curve wraps by its period; an open curve continues
     its end polynomial pieces (extrapolate None or True) or gives NaN (extrapolate=False)."""
 
+    def _repr_html_(self) -> str:
+        """The SVG picture with the curvature comb, for Jupyter."""
     def __call__(
         self,
         t: _Params,
@@ -217,6 +224,9 @@ class Surface:
     extrapolate=None) -> points or partial derivatives. Outside the domain, per direction: a
     closed one wraps by its period; an open one continues the end polynomial pieces
     (extrapolate None or True) or gives NaN (extrapolate=False)."""
+
+    def _repr_html_(self) -> str:
+        """The 3-D viewer page in an <iframe srcdoc>, for Jupyter."""
 
     def __call__(
         self,
@@ -447,6 +457,37 @@ def read_network(path: _FilePath) -> list[_Floats]:
 def read_mesh(path: _FilePath) -> Tuple[_Floats, NDArray[np.int64]]:
     """A triangle mesh (.obj, .stl binary or ASCII, .ply, by extension): vertices (n, 3)
     float64 and faces (m, 3) int64 indexing the vertices from 0."""
+
+def read_skeleton(path: FilePath, across: bool = False) -> _Floats:
+    """The skeleton curves of a tube, CSV rows i,q,x,y,z (along) or j,p,x,y,z (across=True),
+    as an (m, N, 3) array: one row per curve."""
+
+def read_point_set(path: FilePath) -> _Floats:
+    """A point set (n, 3): the vertices of an .obj file or the x,y,z columns of a CSV file."""
+
+def read_surface_samples(path: FilePath) -> _Floats:
+    """The samples of a surface, CSV rows u,v,x,y,z, as an (nu, nv, 3) array."""
+
+def read_mask(path: FilePath, rows: int, cols: int) -> NDArray[np.bool_]:
+    """A cell mask, CSV rows i,j, as a (rows, cols) bool array."""
+
+def export(
+    obj: object,
+    path: FilePath,
+    *,
+    format: Optional[str] = None,
+    samples: Union[None, int, Tuple[int, int]] = None,
+    title: Optional[str] = None,
+    points: Optional[ArrayLike] = None,
+    closed_points: bool = False,
+    net: Optional[ArrayLike] = None,
+    comb: bool = False,
+    ascii: bool = False,
+    flip_normals: bool = False,
+) -> "os.PathLike[str]":
+    """Writes a curve, surface, discrete spline, tube, point list (n, d), grid (nu, nv, 3),
+    mesh (vertices, faces) or SciPy B-spline in the format of the path's extension (or
+    format=), as the command line writes the same result; returns the path."""
 
 def set_max_input_bytes(nbytes: int) -> None:
     """The most memory one read may keep, in bytes, for every reader of the process (default

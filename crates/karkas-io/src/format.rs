@@ -86,6 +86,19 @@ impl OutputFormat {
             })
     }
 
+    /// `self` if it is one of `allowed`, else [`IoError::UnknownExtension`] for `path` listing
+    /// the allowed extensions: a format asked for by name that the result cannot be written in.
+    pub fn allowed_for(self, path: &Path, allowed: &[OutputFormat]) -> Result<Self, IoError> {
+        if allowed.contains(&self) {
+            Ok(self)
+        } else {
+            Err(IoError::UnknownExtension {
+                path: path.to_path_buf(),
+                allowed: allowed_list(allowed),
+            })
+        }
+    }
+
     /// The file extension, without the dot: `"csv"`, `"svg"`, `"obj"`, `"stl"`, `"png"`,
     /// `"ply"`, `"vtk"`, `"vts"`, `"glb"` or `"html"`.
     pub fn extension(self) -> &'static str {

@@ -39,6 +39,7 @@
 pub mod airfoil;
 pub mod cad;
 pub mod error;
+pub mod export;
 pub mod format;
 pub mod grid;
 pub mod input;

@@ -12,6 +12,7 @@
 //! `wrapper`; arrays in `convert`; exceptions in `errors`.
 
 mod bspline_form;
+mod adapters;
 mod convert;
 mod coons;
 mod curve;
@@ -19,12 +20,16 @@ mod curve_eval;
 mod dps;
 mod errors;
 mod export;
+mod export_any;
+mod export_cad;
 mod fit;
 mod implicit;
 mod ll;
 mod measure;
 mod param;
 mod read;
+mod read_more;
+mod repr_html;
 mod section;
 mod surface;
 mod surface_eval;
@@ -80,6 +85,7 @@ fn karkas_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(ll::vary, m)?)?;
     m.add_function(wrap_pyfunction!(param::curve_parameters, m)?)?;
     m.add_function(wrap_pyfunction!(param::grid_parameters, m)?)?;
+    m.add_function(wrap_pyfunction!(export_any::export, m)?)?;
     m.add_function(wrap_pyfunction!(export::export_obj, m)?)?;
     m.add_function(wrap_pyfunction!(export::export_stl, m)?)?;
     m.add_function(wrap_pyfunction!(export::export_curve_csv, m)?)?;
@@ -89,6 +95,10 @@ fn karkas_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(read::read_grid, m)?)?;
     m.add_function(wrap_pyfunction!(read::read_network, m)?)?;
     m.add_function(wrap_pyfunction!(read::read_mesh, m)?)?;
+    m.add_function(wrap_pyfunction!(read_more::read_skeleton, m)?)?;
+    m.add_function(wrap_pyfunction!(read_more::read_point_set, m)?)?;
+    m.add_function(wrap_pyfunction!(read_more::read_surface_samples, m)?)?;
+    m.add_function(wrap_pyfunction!(read_more::read_mask, m)?)?;
     m.add_function(wrap_pyfunction!(read::set_max_input_bytes, m)?)?;
     m.add_function(wrap_pyfunction!(read::max_input_bytes, m)?)?;
     let names: Vec<String> = m

@@ -311,7 +311,7 @@ pub fn max_input_bytes() -> u64 {
 /// The path to read: `-` names the file `./-` (the readers would take it for standard
 /// input). A directory is refused here as `IsADirectoryError`, the error Python's `open`
 /// gives, before any reader sees it.
-fn file_path(path: PathBuf) -> PyResult<PathBuf> {
+pub(crate) fn file_path(path: PathBuf) -> PyResult<PathBuf> {
     let path = if karkas_io::input::is_stdin(&path) {
         Path::new(".").join(&path)
     } else {
@@ -339,7 +339,7 @@ fn os_name(path: &Path) -> std::ffi::OsString {
 /// A read error as the Python exception of its kind: an open or read failure of the operating
 /// system as `OSError` (see [`os_error`]), anything else as `karkas.FileFormatError` with the
 /// command line's one-line message.
-fn read_error(e: IoError) -> PyErr {
+pub(crate) fn read_error(e: IoError) -> PyErr {
     match &e {
         IoError::Open { path, source } => os_error(path, source),
         _ => FileFormatError::new_err(error_line(&e)),
@@ -384,13 +384,13 @@ fn error_line(error: &(dyn std::error::Error + 'static)) -> String {
 
 /// Points as a flat coordinate vector: the same memory reinterpreted (a `Point<D>` is
 /// `[f64; D]`, so the cast cannot fail; were it refused, the coordinates are copied).
-fn flat_points<const D: usize>(points: Vec<Point<D>>) -> Vec<f64> {
+pub(crate) fn flat_points<const D: usize>(points: Vec<Point<D>>) -> Vec<f64> {
     bytemuck::allocation::try_cast_vec(points)
         .unwrap_or_else(|(_, points)| points.iter().flat_map(|p| p.0).collect())
 }
 
 /// An `(n, D)` float64 array owning the memory of `points` (no copy).
-fn points_array<const D: usize>(
+pub(crate) fn points_array<const D: usize>(
     py: Python<'_>,
     points: Vec<Point<D>>,
 ) -> PyResult<Bound<'_, PyArray2<f64>>> {

@@ -21,14 +21,14 @@ use crate::output::target::{output_format, shown};
 use anyhow::{bail, Context, Result};
 use clap::Args;
 use karkas::{Grid, Point3};
+use karkas_io::export::mesh::write_triangle_mesh;
 use karkas_io::grid::parse_grid;
 use karkas_io::input::{display_name, Input as Source};
 use karkas_io::mesh::TriangleMesh;
-use karkas_io::mesh::{read_mesh, read_mesh_from, write_mesh_as, MeshOptions};
+use karkas_io::mesh::{read_mesh, read_mesh_from, MeshOptions};
 use karkas_io::points::{parse_curve_points, CurvePoints};
 use karkas_io::samples::parse_surface_samples;
 use karkas_io::svg::CurveOverlay;
-use karkas_io::viewer::{write_viewer_html, ViewerMesh, ViewerScene};
 use karkas_io::write::write_grid_csv;
 use karkas_io::OutputFormat;
 use std::path::{Path, PathBuf};
@@ -152,34 +152,11 @@ pub fn run(args: &ConvertArgs) -> Result<()> {
 fn write_any_mesh(
     output: &Path,
     format: OutputFormat,
-    mut mesh: TriangleMesh,
+    mesh: TriangleMesh,
     options: &MeshOptions,
     title: &str,
 ) -> Result<()> {
-    if options.flip_normals {
-        mesh.flip_orientation();
-    }
-    match format {
-        OutputFormat::Html => {
-            let scene = ViewerScene {
-                title: title.to_owned(),
-                meshes: vec![ViewerMesh {
-                    name: title.to_owned(),
-                    mesh,
-                }],
-                ..ViewerScene::default()
-            };
-            write_viewer_html(output, &scene)?;
-        }
-        _ => {
-            let options = MeshOptions {
-                flip_normals: false,
-                ..*options
-            };
-            write_mesh_as(format, output, &mesh, &options)?
-        }
-    }
-    Ok(())
+    Ok(write_triangle_mesh(output, format, mesh, options, title)?)
 }
 
 /// Reads `path` as a mesh, a grid or a curve (see the module docs). A text input (`-`:

@@ -4,7 +4,7 @@
 use crate::args::{check_dps_order, check_dps_step};
 use crate::input::{curve_points, run_on_curve_points, CurveJob};
 use crate::output::cad::refuse_cad_for_discrete;
-use crate::output::curve::{curve_output_bytes, project, to_space, write_curve_html};
+use crate::output::curve::curve_output_bytes;
 use crate::output::formats::CURVE_FORMATS;
 use crate::output::memory::check_memory;
 use crate::output::overwrite::ensure_distinct;
@@ -14,9 +14,7 @@ use anyhow::{bail, Result};
 use clap::Args;
 use karkas::dps::DiscreteSpline;
 use karkas::{Error, Point};
-use karkas_io::png::write_svg_as_png;
-use karkas_io::svg::{render_discrete_curve_svg, write_discrete_curve_svg, DiscreteCurvePlot};
-use karkas_io::write::write_discrete_curve_csv;
+use karkas_io::export::curve::{write_discrete_curve, DiscreteTitles};
 use karkas_io::OutputFormat;
 use std::path::PathBuf;
 
@@ -84,39 +82,22 @@ impl CurveJob for (&CurveDpsArgs, OutputFormat) {
         })?;
         let mut values = vec![Point::ZERO; period];
         spline.values(&mut values);
-        match format {
-            OutputFormat::Svg | OutputFormat::Png => {
-                let title = format!(
-                    "discrete periodic spline, order {}, {m} {}, n = {} ({period} values){}",
-                    args.order,
-                    if args.poles { "poles" } else { "nodes" },
-                    args.step,
-                    if D > 2 { ", x-y projection" } else { "" }
-                );
-                let plot = DiscreteCurvePlot {
-                    title: &title,
-                    values: &project(&values),
-                    dots: false,
-                    input: &project(points),
-                };
-                if format == OutputFormat::Png {
-                    let svg = render_discrete_curve_svg(&plot).map_err(anyhow::Error::msg)?;
-                    write_svg_as_png(&args.output, &svg)?;
-                } else {
-                    write_discrete_curve_svg(&args.output, &plot)?;
-                }
-            }
-            OutputFormat::Html => {
-                let title = format!(
-                    "discrete periodic spline, order {}, n = {} ({period} values)",
-                    args.order, args.step
-                );
-                let mut closed = to_space(&values);
-                closed.extend(closed.first().copied());
-                write_curve_html(&args.output, &title, &closed, &to_space(points))?;
-            }
-            _ => write_discrete_curve_csv(&args.output, &values)?,
-        }
+        let picture = format!(
+            "discrete periodic spline, order {}, {m} {}, n = {} ({period} values){}",
+            args.order,
+            if args.poles { "poles" } else { "nodes" },
+            args.step,
+            if D > 2 { ", x-y projection" } else { "" }
+        );
+        let page = format!(
+            "discrete periodic spline, order {}, n = {} ({period} values)",
+            args.order, args.step
+        );
+        let titles = DiscreteTitles {
+            picture: &picture,
+            page: &page,
+        };
+        write_discrete_curve(&args.output, format, &values, points, &titles)?;
         report_samples(&args.output, period);
         Ok(())
     }

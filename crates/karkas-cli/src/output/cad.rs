@@ -3,9 +3,7 @@
 
 use anyhow::{bail, Context, Result};
 use karkas::bspline::{ToBSplineCurve, ToBSplineSurface};
-use karkas_io::cad::{curve_in_space, CadEntity};
-use karkas_io::iges::write_iges;
-use karkas_io::step::write_step;
+use karkas_io::export::cad::NO_EXACT_FORM;
 use karkas_io::OutputFormat;
 use std::path::Path;
 
@@ -17,9 +15,10 @@ pub fn write_cad_curve<const D: usize>(
     output: &Path,
     what: impl std::fmt::Display,
 ) -> Result<()> {
-    let bspline = curve.to_bspline().with_context(|| what.to_string())?;
-    let spatial = curve_in_space(&bspline).with_context(|| what.to_string())?;
-    write_cad(&[CadEntity::Curve(&spatial)], format, output)?;
+    let what = what.to_string();
+    let bspline = curve.to_bspline().with_context(|| what.clone())?;
+    let spatial =
+        karkas_io::export::cad::write_cad_curve(&bspline, format, output, Path::new(&what))?;
     eprintln!(
         "karkas: wrote {} (B-spline curve of degree {}, {} control points)",
         super::target::shown(output).display(),
@@ -37,7 +36,7 @@ pub fn write_cad_surface(
     what: impl std::fmt::Display,
 ) -> Result<()> {
     let bspline = surface.to_bspline().with_context(|| what.to_string())?;
-    write_cad(&[CadEntity::Surface(&bspline)], format, output)?;
+    karkas_io::export::cad::write_cad_surface(&bspline, format, output)?;
     let grid = bspline.control_points();
     eprintln!(
         "karkas: wrote {} (B-spline surface of degree {}x{}, {}x{} control points)",
@@ -50,14 +49,6 @@ pub fn write_cad_surface(
     Ok(())
 }
 
-fn write_cad(entities: &[CadEntity<'_>], format: OutputFormat, output: &Path) -> Result<()> {
-    match format {
-        OutputFormat::Iges => write_iges(output, entities)?,
-        _ => write_step(output, entities)?,
-    }
-    Ok(())
-}
-
 /// Refuses STEP and IGES for the discrete periodic splines: they are point sets (docs/methods.md
 /// §3, §6), with no exact piecewise polynomial form to export.
 pub fn refuse_cad_for_discrete(output: &Path) -> Result<()> {
@@ -67,8 +58,7 @@ pub fn refuse_cad_for_discrete(output: &Path) -> Result<()> {
     };
     if cad {
         bail!(
-            "{}: discrete periodic splines are point sets, not piecewise polynomials: they have no \
-             exact STEP/IGES form (write .csv, .obj or .stl and convert the points)",
+            "{}: {NO_EXACT_FORM}",
             super::target::shown(output).display()
         );
     }

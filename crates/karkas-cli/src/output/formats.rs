@@ -1,40 +1,6 @@
-//! The output formats of each kind of result, by extension.
+//! The output formats of each kind of result, by extension (karkas-io's lists, shared with
+//! the Python package).
 
-use karkas_io::OutputFormat;
-
-/// The formats of a sampled curve.
-pub const CURVE_FORMATS: [OutputFormat; 4] = [
-    OutputFormat::Csv,
-    OutputFormat::Svg,
-    OutputFormat::Png,
-    OutputFormat::Html,
-];
-
-/// Every format a sampled surface can be written in: the sampled CSV, meshes, pictures and
-/// the viewer page.
-pub const SURFACE_FORMATS: [OutputFormat; 10] = concat(
-    concat::<1, 6, 7>([OutputFormat::Csv], OutputFormat::MESHES),
-    [OutputFormat::Svg, OutputFormat::Png, OutputFormat::Html],
-);
-
-/// [`CURVE_FORMATS`] and the exact B-spline curve as STEP or IGES, for the commands whose
-/// curve is a piecewise polynomial.
-pub const EXACT_CURVE_FORMATS: [OutputFormat; 6] = concat(CURVE_FORMATS, OutputFormat::CAD);
-
-/// [`SURFACE_FORMATS`] and the exact B-spline surface as STEP or IGES.
-pub const EXACT_SURFACE_FORMATS: [OutputFormat; 12] = concat(SURFACE_FORMATS, OutputFormat::CAD);
-
-/// `first` followed by `second` (`M` must be `N + K`).
-const fn concat<const N: usize, const K: usize, const M: usize>(
-    first: [OutputFormat; N],
-    second: [OutputFormat; K],
-) -> [OutputFormat; M] {
-    assert!(M == N + K);
-    let mut all = [OutputFormat::Csv; M];
-    let mut k = 0;
-    while k < M {
-        all[k] = if k < N { first[k] } else { second[k - N] };
-        k += 1;
-    }
-    all
-}
+pub use karkas_io::export::formats::{
+    CURVE_FORMATS, EXACT_CURVE_FORMATS, EXACT_SURFACE_FORMATS, SURFACE_FORMATS,
+};

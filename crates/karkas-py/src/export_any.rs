@@ -1,0 +1,543 @@
+//! `karkas.export(obj, path, ...)`: any curve, surface, discrete periodic spline or tube, point
+//! list, grid or triangle mesh written in every format the command line writes for that kind
+//! of result, the format chosen by the extension as the command line chooses it (or by
+//! `format=`). The writing itself is karkas-io's ([`karkas_io::export`]), the command line's
+//! own, so that the files are the same byte for byte; every file is written atomically (an
+//! error leaves an existing file as it was).
+
+use std::path::{Path, PathBuf};
+
+use karkas::bspline::BSplineCurve;
+use karkas::{Grid, Point, Point3};
+use karkas_io::export::cad::{write_cad_curve, write_cad_surface, NO_EXACT_FORM};
+use karkas_io::export::curve::{
+    write_curve, write_curve_figure, write_discrete_curve, CurveDrawing, DiscreteTitles,
+};
+use karkas_io::export::formats::{
+    CURVE_FORMATS, EXACT_CURVE_FORMATS, EXACT_SURFACE_FORMATS, MESH_FORMATS, POINTS_FORMATS,
+    SURFACE_FORMATS,
+};
+use karkas_io::export::mesh::write_triangle_mesh;
+use karkas_io::export::samples::{default_curve_samples, default_surface_samples, MAX_SAMPLES};
+use karkas_io::export::surface::{write_sampled_surface, write_surface, SurfaceDrawing};
+use karkas_io::mesh::{MeshOptions, TriangleMesh};
+use karkas_io::svg::CurveOverlay;
+use karkas_io::write::write_indexed_grid_csv;
+use karkas_io::{IoError, OutputFormat};
+use numpy::PyReadonlyArray2;
+use pyo3::exceptions::PyTypeError;
+use pyo3::prelude::*;
+use pyo3::types::PyTuple;
+
+use crate::adapters::{CurveView, SurfaceView};
+use crate::convert::{as_points, by_dim, check_dim, GridArray, PointsArray};
+use crate::curve::PyCurve;
+use crate::dps::{PyDiscreteSpline, PyTubeSurface};
+use crate::errors::{file_error, library_error, KarkasError, OptionError};
+use crate::export_cad::{bspline_curve, bspline_surface, export_scipy_spline};
+use crate::surface::PySurface;
+
+/// What the options of [`export`] say about a drawing and a mesh.
+pub struct Options {
+    format: Option<String>,
+    samples: Option<(usize, usize)>,
+    title: Option<String>,
+    points: Option<(Vec<f64>, usize)>,
+    closed_points: bool,
+    net: Option<Grid<Point3>>,
+    comb: bool,
+    mesh: MeshOptions,
+}
+
+/// Writes `obj` to `path` in the format of its extension (or `format`), as the command line
+/// writes the same result.
+///
+/// Parameters
+/// ----------
+/// obj : Curve, Surface, DiscreteSpline, TubeSurface, array_like or tuple
+///     A curve (any `Curve`: CSV ``t,x,y[,z]``, SVG, PNG, HTML, STEP, IGES), a surface (any
+///     `Surface`: CSV ``u,v,x,y,z``, OBJ, STL, PLY, VTK, VTS, GLB, SVG, PNG, HTML, STEP,
+///     IGES), a `DiscreteSpline` (its values: CSV, SVG, PNG, HTML), a `TubeSurface` (CSV of
+///     its values, meshes, pictures, HTML), a point list ``(n, d)`` (SVG, PNG, HTML), a grid
+///     ``(nu, nv, 3)`` (CSV ``i,j,x,y,z``, meshes, pictures, HTML) or a triangle mesh
+///     ``(vertices (n, 3), faces (m, 3))`` as `read_mesh` returns it (OBJ, STL, PLY, VTK, GLB,
+///     HTML).
+/// path : str or os.PathLike
+///     The file to write; its extension names the format (``.stp``, ``.igs`` too).
+/// format : str, optional
+///     The format by name (``"csv"``, ``"step"``, ...), whatever the extension.
+/// samples : int or (int, int), optional
+///     Samples of a curve (default 10 per point of `points`, else per piece, at least 200)
+///     or of a surface per direction (default 4 per line of `net`, at least 50).
+/// title : str, optional
+///     The caption of pictures and of the viewer page (default: the object's repr).
+/// points : array_like, optional
+///     Input points ``(n, d)`` drawn over a curve in pictures and on the page.
+/// closed_points : bool, default False
+///     Draw `points` as a closed polygon.
+/// net : array_like, optional
+///     An input grid or control net ``(nu, nv, 3)`` shown on the viewer page of a surface.
+/// comb : bool, default False
+///     Draw the curvature comb in curve pictures (the command line's ``--comb``).
+/// ascii : bool, default False
+///     Write STL and PLY as text instead of binary.
+/// flip_normals : bool, default False
+///     Turn meshes over (reverse the triangles' winding and the normals).
+///
+/// Returns
+/// -------
+/// pathlib.Path
+///     The path written.
+///
+/// Raises
+/// ------
+/// karkas.OptionError
+///     The extension or `format` is not one the object can be written in; STEP or IGES for an
+///     object without an exact piecewise polynomial form (discrete periodic splines, point
+///     lists, grids, meshes); `flip_normals` for a format that is not a mesh.
+/// TypeError
+///     `obj` is none of the kinds above.
+/// OSError
+///     The file cannot be written (an existing file is left as it was).
+///
+/// Examples
+/// --------
+/// >>> import os, tempfile, numpy as np, karkas
+/// >>> c = karkas.LLCurve(np.array([[0., 0.], [1., 1.], [2., 0.], [3., 1.]]))
+/// >>> d = tempfile.mkdtemp()
+/// >>> karkas.export(c, os.path.join(d, "c.csv"), samples=5).name
+/// 'c.csv'
+/// >>> open(os.path.join(d, "c.csv")).readline().strip()
+/// 't,x,y'
+#[pyfunction]
+#[pyo3(signature = (obj, path, *, format = None, samples = None, title = None, points = None, closed_points = false, net = None, comb = false, ascii = false, flip_normals = false))]
+#[pyo3(
+    text_signature = "(obj, path, *, format=None, samples=None, title=None, points=None, closed_points=False, net=None, comb=False, ascii=False, flip_normals=False)"
+)]
+#[allow(clippy::too_many_arguments)]
+pub fn export(
+    py: Python<'_>,
+    obj: &Bound<'_, PyAny>,
+    path: PathBuf,
+    format: Option<String>,
+    samples: Option<&Bound<'_, PyAny>>,
+    title: Option<String>,
+    points: Option<&Bound<'_, PyAny>>,
+    closed_points: bool,
+    net: Option<&Bound<'_, PyAny>>,
+    comb: bool,
+    ascii: bool,
+    flip_normals: bool,
+) -> PyResult<PathBuf> {
+    let options = Options {
+        format,
+        samples: samples.map(sample_counts).transpose()?,
+        title,
+        points: points.map(flat_points).transpose()?,
+        closed_points,
+        net: net.map(grid3).transpose()?,
+        comb,
+        mesh: MeshOptions {
+            ascii,
+            flip_normals,
+        },
+    };
+    if let Ok(curve) = obj.cast::<PyCurve>() {
+        export_curve(py, obj, curve.get(), &path, &options)?;
+    } else if let Ok(surface) = obj.cast::<PySurface>() {
+        export_surface(py, obj, surface.get(), &path, &options)?;
+    } else if obj.cast::<PyDiscreteSpline>().is_ok() {
+        export_discrete(py, obj, &path, &options)?;
+    } else if obj.cast::<PyTubeSurface>().is_ok() {
+        export_tube(py, obj, &path, &options)?;
+    } else if ["t", "c", "k"]
+        .iter()
+        .all(|a| obj.hasattr(*a).unwrap_or(false))
+    {
+        export_scipy_spline(py, obj, &path, &options)?;
+    } else if let Ok(tuple) = obj.cast::<PyTuple>() {
+        export_mesh(py, tuple, &path, &options)?;
+    } else {
+        export_array(py, obj, &path, &options)?;
+    }
+    Ok(path)
+}
+
+/// The format of `path` among `allowed`: `options.format` by name, else the extension; STEP
+/// and IGES asked of a kind without them are refused with `no_exact`.
+pub fn choose(
+    path: &Path,
+    options: &Options,
+    allowed: &[OutputFormat],
+    no_exact: &str,
+) -> PyResult<OutputFormat> {
+    let format = match &options.format {
+        Some(name) => named(name)?,
+        None => {
+            let all = OutputFormat::ALL;
+            OutputFormat::from_path(path, &all).map_err(|e| OptionError::new_err(e.to_string()))?
+        }
+    };
+    if format.is_cad() && !allowed.contains(&format) {
+        return Err(OptionError::new_err(format!(
+            "{}: {no_exact}",
+            path.display()
+        )));
+    }
+    let format = format
+        .allowed_for(path, allowed)
+        .map_err(|e| OptionError::new_err(e.to_string()))?;
+    if options.mesh.flip_normals && !OutputFormat::MESHES.contains(&format) {
+        return Err(OptionError::new_err(format!(
+            "flip_normals: only meshes (.obj .stl .ply .vtk .vts .glb) have normals to flip, \
+             not .{}",
+            format.extension()
+        )));
+    }
+    Ok(format)
+}
+
+/// The format named `name` (an extension, with or without its dot, or its alias).
+fn named(name: &str) -> PyResult<OutputFormat> {
+    let name = name.trim_start_matches('.');
+    OutputFormat::ALL
+        .into_iter()
+        .find(|f| {
+            name.eq_ignore_ascii_case(f.extension())
+                || f.alias().is_some_and(|a| name.eq_ignore_ascii_case(a))
+        })
+        .ok_or_else(|| {
+            let names: Vec<&str> = OutputFormat::ALL.iter().map(|f| f.extension()).collect();
+            OptionError::new_err(format!(
+                "format {name:?}: unknown (one of {})",
+                names.join(", ")
+            ))
+        })
+}
+
+/// A write error of karkas-io as the Python exception of its kind.
+pub fn write_error(e: IoError) -> PyErr {
+    match e {
+        IoError::Write { .. } | IoError::Open { .. } => file_error(e),
+        IoError::UnknownExtension { .. } => OptionError::new_err(e.to_string()),
+        IoError::Geometry(g) => library_error(g.source),
+        other => KarkasError::new_err(other.to_string()),
+    }
+}
+
+/// The caption: `options.title`, else the object's repr.
+fn title_of(obj: &Bound<'_, PyAny>, options: &Options) -> PyResult<String> {
+    match &options.title {
+        Some(t) => Ok(t.clone()),
+        None => Ok(obj.repr()?.to_string()),
+    }
+}
+
+/// `samples=`: a count, or a pair of counts (a single count for both directions of a
+/// surface), each from 2 to [`MAX_SAMPLES`] (a surface checks `nu * nv` too).
+fn sample_counts(obj: &Bound<'_, PyAny>) -> PyResult<(usize, usize)> {
+    let (a, b) = match obj.extract::<usize>() {
+        Ok(n) => (n, n),
+        Err(_) => obj.extract::<(usize, usize)>().map_err(|_| {
+            OptionError::new_err("samples must be a positive count or a pair of counts")
+        })?,
+    };
+    if a < 2 || b < 2 {
+        return Err(OptionError::new_err(format!(
+            "samples must be at least 2, got {a}, {b}"
+        )));
+    }
+    if a > MAX_SAMPLES || b > MAX_SAMPLES {
+        return Err(OptionError::new_err(format!(
+            "samples: at most {MAX_SAMPLES} samples can be written"
+        )));
+    }
+    Ok((a, b))
+}
+
+/// `points=`: the flat coordinates and the dimension.
+fn flat_points(obj: &Bound<'_, PyAny>) -> PyResult<(Vec<f64>, usize)> {
+    let array = numpy_array(obj)?;
+    let (pts, dim) = PointsArray::extract_checked(&array, "points")?;
+    Ok((pts.flat().into_owned(), dim))
+}
+
+/// `obj` as a float64 NumPy array (lists, tuples and other arrays converted).
+pub fn numpy_array<'py>(obj: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+    obj.py()
+        .import("numpy")?
+        .call_method1("ascontiguousarray", (obj, "float64"))
+}
+
+/// A `(nu, nv, 3)` grid (a 2-D grid in `z = 0`).
+pub fn grid3(obj: &Bound<'_, PyAny>) -> PyResult<Grid<Point3>> {
+    let array = numpy_array(obj)?;
+    let (g, dim) = GridArray::extract_checked(&array, "grid")?;
+    by_dim!(dim, D => Ok(lift_grid(&g.grid::<D>()?)))
+}
+
+/// Points of any dimension in space (`z = 0` for planar ones).
+fn lift<const D: usize>(p: &Point<D>) -> Point3 {
+    let mut q = Point3::ZERO;
+    q.0[..D].copy_from_slice(&p.0);
+    q
+}
+
+/// A grid of any dimension in space.
+fn lift_grid<const D: usize>(g: &Grid<Point<D>>) -> Grid<Point3> {
+    Grid::from_fn(g.rows(), g.cols(), |i, j| lift(g.get(i, j)))
+}
+
+/// A curve: sampled (CSV, pictures, page) or its exact B-spline form (STEP, IGES).
+fn export_curve(
+    py: Python<'_>,
+    obj: &Bound<'_, PyAny>,
+    curve: &PyCurve,
+    path: &Path,
+    options: &Options,
+) -> PyResult<()> {
+    let no_exact = "this curve has no exact piecewise polynomial form";
+    let format = choose(path, options, &EXACT_CURVE_FORMATS, no_exact)?;
+    let dim = curve.inner.dim();
+    if format.is_cad() {
+        let (knots, control, degree, cdim) = bspline_curve(obj, no_exact)?;
+        return by_dim!(cdim, D => {
+            let b = BSplineCurve::<D>::new(degree, knots, as_points::<D>(&control).to_vec())
+                .map_err(library_error)?;
+            py.detach(|| write_cad_curve(&b, format, path, path).map(|_| ()))
+                .map_err(write_error)
+        });
+    }
+    let title = title_of(obj, options)?;
+    let input = match &options.points {
+        Some((flat, d)) if *d != dim => {
+            return Err(OptionError::new_err(format!(
+                "points have {d} coordinates, the curve {dim}"
+            )))
+        }
+        Some((flat, _)) => flat.clone(),
+        None => Vec::new(),
+    };
+    let n = match options.samples {
+        Some((n, _)) => n,
+        None => default_curve_samples(if input.is_empty() {
+            curve.inner.breakpoints().len().saturating_sub(1)
+        } else {
+            input.len() / dim
+        }),
+    };
+    let inner = &*curve.inner;
+    by_dim!(dim, D => {
+        let drawing = CurveDrawing {
+            title: &title,
+            input: as_points::<D>(&input),
+            closed_input: options.closed_points,
+            comb: options.comb,
+        };
+        py.detach(|| write_curve(&CurveView::<D>(inner), n, format, path, &drawing))
+            .map_err(write_error)
+    })
+}
+
+/// A surface: sampled (CSV, meshes, pictures, page) or its exact B-spline form.
+fn export_surface(
+    py: Python<'_>,
+    obj: &Bound<'_, PyAny>,
+    surface: &PySurface,
+    path: &Path,
+    options: &Options,
+) -> PyResult<()> {
+    let no_exact = "this surface has no exact piecewise polynomial form";
+    let format = choose(path, options, &EXACT_SURFACE_FORMATS, no_exact)?;
+    if format.is_cad() {
+        let b = bspline_surface(obj, no_exact)?;
+        return py
+            .detach(|| write_cad_surface(&b, format, path))
+            .map_err(write_error);
+    }
+    if options
+        .samples
+        .is_some_and(|(nu, nv)| nu.saturating_mul(nv) > MAX_SAMPLES)
+    {
+        return Err(OptionError::new_err(format!(
+            "samples: at most {MAX_SAMPLES} samples can be written"
+        )));
+    }
+    let title = title_of(obj, options)?;
+    let counts = options.samples.unwrap_or_else(|| match &options.net {
+        Some(net) => (
+            default_surface_samples(net.rows()),
+            default_surface_samples(net.cols()),
+        ),
+        None => (default_surface_samples(0), default_surface_samples(0)),
+    });
+    let drawing = SurfaceDrawing {
+        title: &title,
+        net: options.net.as_ref(),
+        mesh: options.mesh,
+    };
+    let view = SurfaceView(&*surface.inner);
+    py.detach(|| write_sampled_surface(&view, counts, format, path, &drawing))
+        .map_err(write_error)
+}
+
+/// A discrete periodic spline: its values as CSV, a picture or the page; no exact form.
+fn export_discrete(
+    py: Python<'_>,
+    obj: &Bound<'_, PyAny>,
+    path: &Path,
+    options: &Options,
+) -> PyResult<()> {
+    let format = choose(path, options, &CURVE_FORMATS, NO_EXACT_FORM)?;
+    let values = numpy_array(&obj.call_method0("values")?)?;
+    let (pts, dim) = PointsArray::extract_checked(&values, "values")?;
+    let flat = pts.flat().into_owned();
+    let title = title_of(obj, options)?;
+    let input = match &options.points {
+        Some((p, d)) if *d == dim => p.clone(),
+        Some((_, d)) => {
+            return Err(OptionError::new_err(format!(
+                "points have {d} coordinates, the spline {dim}"
+            )))
+        }
+        None => Vec::new(),
+    };
+    let titles = DiscreteTitles {
+        picture: &title,
+        page: &title,
+    };
+    by_dim!(dim, D => py
+        .detach(|| write_discrete_curve(path, format, as_points::<D>(&flat), as_points::<D>(&input), &titles))
+        .map_err(write_error))
+}
+
+/// A discrete periodic tube: the CSV of its values `p,q,x,y,z`, or its closed grid as a mesh,
+/// picture or page; no exact form.
+fn export_tube(
+    py: Python<'_>,
+    obj: &Bound<'_, PyAny>,
+    path: &Path,
+    options: &Options,
+) -> PyResult<()> {
+    let format = choose(path, options, &SURFACE_FORMATS, NO_EXACT_FORM)?;
+    let title = title_of(obj, options)?;
+    if format == OutputFormat::Csv {
+        let values = grid3(&obj.call_method0("values")?)?;
+        return py
+            .detach(|| write_indexed_grid_csv(path, ["p", "q"], &values))
+            .map_err(write_error);
+    }
+    let grid = grid3(&obj.call_method0("closed_grid")?)?;
+    let drawing = SurfaceDrawing {
+        title: &title,
+        net: None,
+        mesh: options.mesh,
+    };
+    py.detach(|| write_surface(path, format, &grid, &drawing))
+        .map_err(write_error)
+}
+
+/// A point list `(n, d)` (drawn as a curve) or a grid `(nu, nv, 3)` (a frame: the page shows
+/// it as the net), as `karkas convert` writes them.
+fn export_array(
+    py: Python<'_>,
+    obj: &Bound<'_, PyAny>,
+    path: &Path,
+    options: &Options,
+) -> PyResult<()> {
+    let not_polynomial = "points and grids have no exact B-spline form";
+    let array = numpy_array(obj).map_err(|_| not_exportable(obj))?;
+    let ndim: usize = array.getattr("ndim")?.extract()?;
+    let title = options.title.clone().unwrap_or_default();
+    match ndim {
+        2 => {
+            let format = choose(path, options, &POINTS_FORMATS, not_polynomial)?;
+            let (pts, dim) = PointsArray::extract_checked(&array, "points")?;
+            let flat = pts.flat().into_owned();
+            let overlay = CurveOverlay::default();
+            by_dim!(dim, D => py
+                .detach(|| write_curve_figure(path, format, &title, as_points::<D>(&flat), &[], false, &overlay))
+                .map_err(write_error))
+        }
+        3 => {
+            let format = choose(path, options, &SURFACE_FORMATS, not_polynomial)?;
+            let grid = grid3(&array)?;
+            let drawing = SurfaceDrawing {
+                title: &title,
+                net: Some(options.net.as_ref().unwrap_or(&grid)),
+                mesh: options.mesh,
+            };
+            py.detach(|| write_surface(path, format, &grid, &drawing))
+                .map_err(write_error)
+        }
+        _ => Err(not_exportable(obj)),
+    }
+}
+
+/// A triangle mesh `(vertices (n, 3), faces (m, 3))`, as `read_mesh` returns it.
+fn export_mesh(
+    py: Python<'_>,
+    tuple: &Bound<'_, PyTuple>,
+    path: &Path,
+    options: &Options,
+) -> PyResult<()> {
+    if tuple.len() != 2 {
+        return Err(not_exportable(tuple.as_any()));
+    }
+    let format = choose(
+        path,
+        options,
+        &MESH_FORMATS,
+        "meshes have no exact B-spline form",
+    )?;
+    let vertices = numpy_array(&tuple.get_item(0)?)?;
+    let (pts, dim) = PointsArray::extract_checked(&vertices, "vertices")?;
+    check_dim(dim, "vertices")?;
+    let flat = pts.flat().into_owned();
+    let positions: Vec<Point3> =
+        by_dim!(dim, D => as_points::<D>(&flat).iter().map(lift).collect());
+    let faces = py
+        .import("numpy")?
+        .call_method1("ascontiguousarray", (tuple.get_item(1)?, "int64"))?;
+    let faces: PyReadonlyArray2<'_, i64> = faces
+        .extract()
+        .map_err(|_| PyTypeError::new_err("faces must be an (m, 3) integer array"))?;
+    let faces = faces.as_array();
+    if faces.ncols() != 3 {
+        return Err(PyTypeError::new_err(
+            "faces must be an (m, 3) integer array",
+        ));
+    }
+    let n = positions.len().min(u32::MAX as usize) as i64;
+    let mut triangles = Vec::with_capacity(faces.nrows());
+    for (k, f) in faces.rows().into_iter().enumerate() {
+        if f.iter().any(|&i| !(0..n).contains(&i)) {
+            return Err(OptionError::new_err(format!(
+                "faces[{k}] = {f}: vertex indices from 0 to {} expected",
+                n - 1
+            )));
+        }
+        triangles.push([f[0] as u32, f[1] as u32, f[2] as u32]);
+    }
+    let mesh = TriangleMesh {
+        positions,
+        normals: Vec::new(),
+        triangles,
+        grid: None,
+    };
+    let title = options.title.clone().unwrap_or_default();
+    py.detach(|| write_triangle_mesh(path, format, mesh, &options.mesh, &title))
+        .map_err(write_error)
+}
+
+/// The `TypeError` for an object [`export`] cannot write.
+fn not_exportable(obj: &Bound<'_, PyAny>) -> PyErr {
+    let kind = obj
+        .get_type()
+        .name()
+        .map_or_else(|_| "?".to_owned(), |n| n.to_string());
+    PyTypeError::new_err(format!(
+        "export: cannot write a {kind} (a Curve, Surface, DiscreteSpline, TubeSurface, points \
+         (n, d), grid (nu, nv, 3) or mesh (vertices, faces) is expected)"
+    ))
+}
