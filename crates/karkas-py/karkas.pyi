@@ -458,22 +458,22 @@ def read_mesh(path: _FilePath) -> Tuple[_Floats, NDArray[np.int64]]:
     """A triangle mesh (.obj, .stl binary or ASCII, .ply, by extension): vertices (n, 3)
     float64 and faces (m, 3) int64 indexing the vertices from 0."""
 
-def read_skeleton(path: FilePath, across: bool = False) -> _Floats:
+def read_skeleton(path: _FilePath, across: bool = False) -> _Floats:
     """The skeleton curves of a tube, CSV rows i,q,x,y,z (along) or j,p,x,y,z (across=True),
     as an (m, N, 3) array: one row per curve."""
 
-def read_point_set(path: FilePath) -> _Floats:
+def read_point_set(path: _FilePath) -> _Floats:
     """A point set (n, 3): the vertices of an .obj file or the x,y,z columns of a CSV file."""
 
-def read_surface_samples(path: FilePath) -> _Floats:
+def read_surface_samples(path: _FilePath) -> _Floats:
     """The samples of a surface, CSV rows u,v,x,y,z, as an (nu, nv, 3) array."""
 
-def read_mask(path: FilePath, rows: int, cols: int) -> NDArray[np.bool_]:
+def read_mask(path: _FilePath, rows: int, cols: int) -> NDArray[np.bool_]:
     """A cell mask, CSV rows i,j, as a (rows, cols) bool array."""
 
 def export(
     obj: object,
-    path: FilePath,
+    path: _FilePath,
     *,
     format: Optional[str] = None,
     samples: Union[None, int, Tuple[int, int]] = None,
