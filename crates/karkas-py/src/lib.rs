@@ -18,6 +18,7 @@ mod dps;
 mod errors;
 mod export;
 mod fit;
+mod geometry;
 mod implicit;
 mod ll;
 mod measure;
