@@ -1,7 +1,7 @@
 """Type stubs of the karkas Python package (built from crates/karkas-py)."""
 
 import os
-from typing import Optional, Sequence, Tuple, Union
+from typing import Literal, Optional, Sequence, Tuple, Union, overload
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -57,6 +57,20 @@ class Curve:
         """The k-th derivative with respect to the parameter (same shapes as calling)."""
     def sample(self, n: int) -> Floats:
         """n points at uniformly spaced parameters over the domain, (n, d)."""
+    def arc_length(
+        self, t0: Optional[float] = None, t1: Optional[Params] = None, tol: float = 1e-10
+    ) -> Union[float, Floats]:
+        """Length from t0 to t1 (domain ends by default) to tol; float, or an array of t1's shape."""
+    def inverse_arc_length(
+        self, s: Params, t0: Optional[float] = None, tol: float = 1e-10
+    ) -> Union[float, Floats]:
+        """The parameter reached after walking s from t0 (stops at an open curve's end)."""
+    def curvature(self, t: Params) -> Union[float, Floats]:
+        """Curvature: signed in 2-D (positive counter-clockwise), non-negative in 3-D."""
+    def torsion(self, t: Params) -> Union[float, Floats]:
+        """Torsion of a 3-D curve (KarkasError in 2-D)."""
+    def project(self, points: ArrayLike, tol: float = 0.0) -> Tuple[Floats, Floats, Floats]:
+        """Globally nearest points: (t (n,), distance (n,), foot (n, d))."""
     @property
     def domain(self) -> Tuple[float, float]: ...
     @property
@@ -147,6 +161,24 @@ class Surface:
         out: Optional[Floats] = None,
     ) -> Floats: ...
     def sample(self, nu: int, nv: int) -> Floats: ...
+    def normal(self, u: Params, v: Params, grid: bool = False) -> Floats:
+        """Unit normals S_u x S_v / |S_u x S_v|, shape (..., 3)."""
+    @overload
+    def principal_curvatures(
+        self, u: Params, v: Params, grid: bool = False, directions: Literal[False] = False
+    ) -> Tuple[Union[float, Floats], Union[float, Floats]]: ...
+    @overload
+    def principal_curvatures(
+        self, u: Params, v: Params, grid: bool = False, *, directions: Literal[True]
+    ) -> Tuple[Union[float, Floats], Union[float, Floats], Floats, Floats]: ...
+    @overload
+    def principal_curvatures(
+        self, u: Params, v: Params, grid: bool, directions: Literal[True]
+    ) -> Tuple[Union[float, Floats], Union[float, Floats], Floats, Floats]: ...
+    def project(
+        self, points: ArrayLike, cells: Tuple[int, int] = (64, 64), tol: float = 0.0
+    ) -> Tuple[Floats, Floats, Floats, Floats]:
+        """Globally nearest points: (u (n,), v (n,), distance (n,), foot (n, d))."""
     def section(
         self,
         normal: Sequence[float],

@@ -240,7 +240,8 @@ impl PyCurve {
     ///
     /// Examples
     /// --------
-    /// , 4.0], [6.0, 8.0]], t=[0.0, 1.0, 2.0])
+    /// >>> import karkas
+    /// >>> c = karkas.CubicSpline([[0.0, 0.0], [3.0, 4.0], [6.0, 8.0]], t=[0.0, 1.0, 2.0])
     /// >>> round(c.arc_length(), 12)
     /// 10.0
     #[pyo3(signature = (t0 = None, t1 = None, tol = 1e-10))]
@@ -348,8 +349,8 @@ impl PyCurve {
     /// --------
     /// >>> import numpy as np, karkas
     /// >>> s = np.linspace(0, 2 * np.pi, 200)
-    /// >>> c = karkas.CubicSpline(s, np.c_[2 * np.cos(s), 2 * np.sin(s)], bc_type="periodic")
-    /// >>> bool(abs(c.curvature(1.0) - 0.5) < 1e-6)
+    /// >>> c = karkas.CubicSpline(np.c_[2 * np.cos(s), 2 * np.sin(s)], t=s, bc="periodic")
+    /// >>> bool(abs(c.curvature(1.0) - 0.5) < 1e-4)
     /// True
     fn curvature<'py>(
         &self,

@@ -279,6 +279,36 @@ impl<'a, S: Surface<D> + ?Sized, const D: usize> SurfaceProjector<'a, S, D> {
             let Some((mut step_u, mut step_v)) = step else {
                 break;
             };
+            // Projected Newton: a parameter held at an end of an open direction by a step
+            // pointing out of the domain stays there, and the other one takes the 1-D
+            // Newton step of the restricted problem.
+            let pushed = |t: f64, step: f64, d: Interval, closed: bool| {
+                !closed && ((t <= d.start && step < 0.0) || (t >= d.end && step > 0.0))
+            };
+            let one_d = |g: f64, h: f64, e: f64| {
+                if h > 0.0 {
+                    -g / h
+                } else if e > 0.0 {
+                    -g / e
+                } else {
+                    0.0
+                }
+            };
+            match (
+                pushed(u, step_u, du, self.closed.0),
+                pushed(v, step_v, dv, self.closed.1),
+            ) {
+                (true, true) => break,
+                (true, false) => {
+                    step_u = 0.0;
+                    step_v = one_d(g[1], full[2], gauss[2]);
+                }
+                (false, true) => {
+                    step_v = 0.0;
+                    step_u = one_d(g[0], full[0], gauss[0]);
+                }
+                (false, false) => {}
+            }
             if !(step_u.is_finite() && step_v.is_finite()) {
                 break;
             }
