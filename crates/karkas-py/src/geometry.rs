@@ -653,6 +653,7 @@ impl PySurface {
     /// >>> foot.round(12).tolist(), dist.round(12).tolist()
     /// ([[1.5, 2.0, 0.0]], [3.0])
     #[pyo3(signature = (points, cells = (64, 64), tol = 0.0))]
+    #[pyo3(text_signature = "(self, points, cells=(64, 64), tol=0.0)")]
     #[allow(clippy::type_complexity)]
     fn project<'py>(
         &self,
