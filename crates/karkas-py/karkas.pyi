@@ -6,7 +6,7 @@ summaries.
 """
 
 import os
-from typing import Any, Optional, Sequence, Tuple, Union
+from typing import Any, Literal, Optional, Sequence, Tuple, Union, overload
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -130,6 +130,20 @@ class Curve:
         """The exact B-spline form (t, c, k) for scipy.interpolate.BSpline."""
     def sample(self, n: int) -> _Floats:
         """n points at uniformly spaced parameters over the domain, (n, d)."""
+    def arc_length(
+        self, t0: Optional[float] = None, t1: Optional[_Params] = None, tol: float = 1e-10
+    ) -> Union[float, _Floats]:
+        """Length from t0 to t1 (domain ends by default) to tol; float, or an array of t1's shape."""
+    def inverse_arc_length(
+        self, s: _Params, t0: Optional[float] = None, tol: float = 1e-10
+    ) -> Union[float, _Floats]:
+        """The parameter reached after walking s from t0 (stops at an open curve's end)."""
+    def curvature(self, t: _Params) -> Union[float, _Floats]:
+        """Curvature: signed in 2-D (positive counter-clockwise), non-negative in 3-D."""
+    def torsion(self, t: _Params) -> Union[float, _Floats]:
+        """Torsion of a 3-D curve (KarkasError in 2-D)."""
+    def project(self, points: ArrayLike, tol: float = 0.0) -> Tuple[_Floats, _Floats, _Floats]:
+        """Globally nearest points: (t (n,), distance (n,), foot (n, d))."""
     @property
     def domain(self) -> Tuple[float, float]: ...
     @property
@@ -246,6 +260,24 @@ class Surface:
     ) -> Tuple[Tuple[_Floats, _Floats], _Floats, Tuple[int, int]]:
         """The exact B-spline form ((tu, tv), c (nu, nv, d), (ku, kv)) for NdBSpline."""
     def sample(self, nu: int, nv: int) -> _Floats: ...
+    def normal(self, u: _Params, v: _Params, grid: bool = False) -> _Floats:
+        """Unit normals S_u x S_v / |S_u x S_v|, shape (..., 3)."""
+    @overload
+    def principal_curvatures(
+        self, u: _Params, v: _Params, grid: bool = False, directions: Literal[False] = False
+    ) -> Tuple[Union[float, _Floats], Union[float, _Floats]]: ...
+    @overload
+    def principal_curvatures(
+        self, u: _Params, v: _Params, grid: bool = False, *, directions: Literal[True]
+    ) -> Tuple[Union[float, _Floats], Union[float, _Floats], _Floats, _Floats]: ...
+    @overload
+    def principal_curvatures(
+        self, u: _Params, v: _Params, grid: bool, directions: Literal[True]
+    ) -> Tuple[Union[float, _Floats], Union[float, _Floats], _Floats, _Floats]: ...
+    def project(
+        self, points: ArrayLike, cells: Tuple[int, int] = (64, 64), tol: float = 0.0
+    ) -> Tuple[_Floats, _Floats, _Floats, _Floats]:
+        """Globally nearest points: (u (n,), v (n,), distance (n,), foot (n, d))."""
     def section(
         self,
         normal: Sequence[float],

@@ -7,7 +7,8 @@
 //! typed subclasses, with the library's message (see [`errors`]).
 //!
 //! One file per library module (`ll`, `param`, `fit`, `dps`, `coons`, `implicit`, `section`,
-//! `measure`) plus `export` and `read` (karkas-io's writers and readers); the base classes
+//! `measure`) plus `export` and `read` (karkas-io's writers and readers) and `geometry` (arc
+//! length, curvature, normals and projection on the base classes); the base classes
 //! `Curve` and `Surface` in `curve` and `surface` over the dimension-free interfaces of
 //! `wrapper`; arrays in `convert`; exceptions in `errors`.
 
@@ -23,6 +24,7 @@ mod export;
 mod export_any;
 mod export_cad;
 mod fit;
+mod geometry;
 mod implicit;
 mod ll;
 mod measure;

@@ -17,7 +17,7 @@ use crate::convert::as_points_mut;
 use crate::section::PySectionCurve;
 
 /// A karkas curve of either dimension, evaluated on flat buffers.
-pub trait CurveImpl: Send + Sync {
+pub trait CurveImpl: crate::geometry::CurveGeometryImpl + Send + Sync {
     /// The dimension `d` (2 or 3).
     fn dim(&self) -> usize;
     /// The parameter domain `(a, b)`.
@@ -80,7 +80,7 @@ where
     }
 }
 /// A karkas surface of either dimension, evaluated on flat buffers.
-pub trait SurfaceImpl: Send + Sync {
+pub trait SurfaceImpl: crate::geometry::SurfaceGeometryImpl + Send + Sync {
     /// The dimension `d` (2 or 3).
     fn dim(&self) -> usize;
     /// The `u` domain.
@@ -115,9 +115,9 @@ pub trait SurfaceImpl: Send + Sync {
 
 /// A surface of dimension `D` seen as one in 3-D (used only when `D == 3`: the coordinates
 /// are copied, missing ones are zero).
-struct Lift<'a, S, const D: usize>(&'a S);
+pub(crate) struct Lift<'a, S, const D: usize>(pub(crate) &'a S);
 
-fn lift<const D: usize>(p: Point<D>) -> Point3 {
+pub(crate) fn lift<const D: usize>(p: Point<D>) -> Point3 {
     let mut q = Point3::ZERO;
     for (a, b) in q.0.iter_mut().zip(p.0) {
         *a = b;

@@ -23,6 +23,8 @@
 //!   grids traced along lines of curvature (or turned nets) by continuation;
 //! - [`bspline`]: exact B-spline form of every piecewise polynomial curve and surface (for
 //!   CAD export);
+//! - [`geometry`]: arc length and its inverse, curvature and torsion of curves, normals and
+//!   principal curvatures of surfaces, and global closest points on curves and surfaces;
 //! - [`measure`]: the two-sided Hausdorff distance between surfaces and point sets.
 //! - [`fit`]: fitting measured points with C^1 cubic Hermite splines (cubic splines of defect
 //!   2) whose second-derivative jumps are bounded (Pavlov).
@@ -43,6 +45,7 @@ pub mod core;
 pub mod dps;
 mod error;
 pub mod fit;
+pub mod geometry;
 pub mod implicit;
 pub mod ll;
 pub mod measure;

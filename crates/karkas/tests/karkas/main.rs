@@ -20,6 +20,7 @@ mod fit_limits;
 mod fit_naca;
 mod fit_optimality;
 mod fit_parallel;
+mod geometry;
 mod ll_curve;
 mod ll_curve_closed;
 mod ll_curve_interp;

@@ -1,0 +1,690 @@
+//! Curve and surface geometry on the base classes: arc length and its inverse, curvature and
+//! torsion, projection of points onto curves; unit normals, principal curvatures and
+//! projection of points onto surfaces (the library's [`karkas::geometry`]).
+
+use karkas::geometry::{self, CurveProjector, PrincipalCurvatures, SurfaceProjector};
+use karkas::{Curve, Interval, PiecewiseCurve, Point3, Surface};
+use numpy::PyArrayDyn;
+use pyo3::prelude::*;
+use pyo3::types::PyFloat;
+
+use crate::convert::{as_points, as_points_mut, maybe_detach, Params, PointsArray};
+use crate::curve::PyCurve;
+use crate::errors::{library_error, KarkasError, OptionError, PointsError};
+use crate::surface::PySurface;
+use crate::wrapper::{lift, Lift, Wrapped, WrappedSurface};
+
+/// The geometry of a curve of either dimension on flat buffers.
+pub trait CurveGeometryImpl {
+    /// The arc length from `t0` to every `t1s[i]` into `out[i]`, each to `tol`.
+    fn arc_lengths(&self, t0: f64, t1s: &[f64], tol: f64, out: &mut [f64]);
+    /// The parameter after walking `lengths[i]` from `t0`, into `out[i]`.
+    fn inverse_arc_lengths(&self, t0: f64, lengths: &[f64], tol: f64, out: &mut [f64]);
+    /// The curvature at every `ts[i]` into `out[i]`.
+    fn curvatures(&self, ts: &[f64], out: &mut [f64]);
+    /// The torsion at every `ts[i]` into `out[i]` (3-D only: false otherwise).
+    fn torsions(&self, ts: &[f64], out: &mut [f64]) -> bool;
+    /// The nearest points to the flat points `qs` (`dim` coordinates each): parameters,
+    /// distances, and foot points (flat).
+    fn project(
+        &self,
+        qs: &[f64],
+        tol: f64,
+        t: &mut [f64],
+        distance: &mut [f64],
+        foot: &mut [f64],
+    ) -> karkas::Result<()>;
+}
+
+/// A curve of dimension `D <= 3` seen as one in 3-D (missing coordinates zero).
+struct CurveLift<'a, C, const D: usize>(&'a C);
+
+impl<C: Curve<D>, const D: usize> Curve<3> for CurveLift<'_, C, D> {
+    fn domain(&self) -> Interval {
+        self.0.domain()
+    }
+    fn is_closed(&self) -> bool {
+        self.0.is_closed()
+    }
+    fn eval(&self, t: f64) -> Point3 {
+        lift(self.0.eval(t))
+    }
+    fn deriv(&self, t: f64, k: usize) -> Point3 {
+        lift(self.0.deriv(t, k))
+    }
+}
+
+impl<C, const D: usize> CurveGeometryImpl for Wrapped<C, D>
+where
+    C: PiecewiseCurve<D> + Send + Sync,
+{
+    fn arc_lengths(&self, t0: f64, t1s: &[f64], tol: f64, out: &mut [f64]) {
+        for (o, &t1) in out.iter_mut().zip(t1s) {
+            *o = self.0.arc_length(t0, t1, tol);
+        }
+    }
+    fn inverse_arc_lengths(&self, t0: f64, lengths: &[f64], tol: f64, out: &mut [f64]) {
+        for (o, &s) in out.iter_mut().zip(lengths) {
+            *o = self.0.inverse_arc_length(t0, s, tol);
+        }
+    }
+    fn curvatures(&self, ts: &[f64], out: &mut [f64]) {
+        for (o, &t) in out.iter_mut().zip(ts) {
+            *o = self.0.curvature(t);
+        }
+    }
+    fn torsions(&self, ts: &[f64], out: &mut [f64]) -> bool {
+        if D != 3 {
+            return false;
+        }
+        let lifted = CurveLift(&self.0);
+        for (o, &t) in out.iter_mut().zip(ts) {
+            *o = geometry::torsion(&lifted, t);
+        }
+        true
+    }
+    fn project(
+        &self,
+        qs: &[f64],
+        tol: f64,
+        t: &mut [f64],
+        distance: &mut [f64],
+        foot: &mut [f64],
+    ) -> karkas::Result<()> {
+        let projector = CurveProjector::new(&self.0, tol)?;
+        let found = projector.nearest_all(as_points::<D>(qs));
+        let foot = as_points_mut::<D>(foot);
+        for (i, n) in found.iter().enumerate() {
+            t[i] = n.t;
+            distance[i] = n.distance;
+            foot[i] = n.point;
+        }
+        Ok(())
+    }
+}
+
+/// The geometry of a surface of either dimension on flat buffers (parameters as pairs).
+pub trait SurfaceGeometryImpl {
+    /// The unit normal at every `(us[i], vs[i])` into `out[3 i..3 i + 3]`.
+    fn normals(&self, us: &[f64], vs: &[f64], out: &mut [f64]);
+    /// The principal curvatures and directions at every `(us[i], vs[i])`.
+    fn principal(&self, us: &[f64], vs: &[f64]) -> Vec<PrincipalCurvatures>;
+    /// The nearest points to the flat points `qs`: `u`, `v`, distances, foot points.
+    #[allow(clippy::too_many_arguments)]
+    fn project(
+        &self,
+        qs: &[f64],
+        cells: (usize, usize),
+        tol: f64,
+        u: &mut [f64],
+        v: &mut [f64],
+        distance: &mut [f64],
+        foot: &mut [f64],
+    ) -> karkas::Result<()>;
+}
+
+impl<S, const D: usize> SurfaceGeometryImpl for WrappedSurface<S, D>
+where
+    S: Surface<D> + Send + Sync,
+{
+    fn normals(&self, us: &[f64], vs: &[f64], out: &mut [f64]) {
+        let lifted = Lift(&self.0);
+        let out = as_points_mut::<3>(out);
+        for ((o, &u), &v) in out.iter_mut().zip(us).zip(vs) {
+            *o = geometry::normal(&lifted, u, v);
+        }
+    }
+    fn principal(&self, us: &[f64], vs: &[f64]) -> Vec<PrincipalCurvatures> {
+        let lifted = Lift(&self.0);
+        us.iter()
+            .zip(vs)
+            .map(|(&u, &v)| geometry::principal_curvatures(&lifted, u, v))
+            .collect()
+    }
+    fn project(
+        &self,
+        qs: &[f64],
+        cells: (usize, usize),
+        tol: f64,
+        u: &mut [f64],
+        v: &mut [f64],
+        distance: &mut [f64],
+        foot: &mut [f64],
+    ) -> karkas::Result<()> {
+        let projector = SurfaceProjector::new(&self.0, cells, tol)?;
+        let found = projector.nearest_all(as_points::<D>(qs));
+        let foot = as_points_mut::<D>(foot);
+        for (i, n) in found.iter().enumerate() {
+            u[i] = n.u;
+            v[i] = n.v;
+            distance[i] = n.distance;
+            foot[i] = n.point;
+        }
+        Ok(())
+    }
+}
+
+/// A float for a scalar parameter, else an array of the parameters' shape.
+fn scalar_or_array<'py>(
+    py: Python<'py>,
+    scalar: bool,
+    shape: &[usize],
+    values: &[f64],
+) -> PyResult<Bound<'py, PyAny>> {
+    if scalar {
+        return Ok(PyFloat::new(py, values[0]).into_any());
+    }
+    Ok(array_of(py, shape, values)?.into_any())
+}
+
+/// A new float64 array of `shape` holding `values` (row-major).
+fn array_of<'py>(
+    py: Python<'py>,
+    shape: &[usize],
+    values: &[f64],
+) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+    let array = PyArrayDyn::<f64>::zeros(py, shape, false);
+    crate::convert::write_flat(&array, |flat| flat.copy_from_slice(values))?;
+    Ok(array)
+}
+
+/// A tolerance that must be a non-negative number.
+fn check_tol(tol: f64) -> PyResult<f64> {
+    if tol.is_nan() || tol < 0.0 {
+        return Err(OptionError::new_err(format!(
+            "tol must be a non-negative number (got {tol})"
+        )));
+    }
+    Ok(tol)
+}
+
+/// Points `(n, d)` of the object's dimension `d`, flat.
+fn query_points(points: &Bound<'_, PyAny>, dim: usize) -> PyResult<(Vec<f64>, usize)> {
+    let array = PointsArray::extract(points, "points")?;
+    if array.dim() != dim {
+        return Err(PointsError::new_err(format!(
+            "points must have {dim} coordinates like the object (got {})",
+            array.dim()
+        )));
+    }
+    let n = array.len();
+    Ok((array.flat().into_owned(), n))
+}
+
+#[pymethods]
+impl PyCurve {
+    /// Arc length of the curve.
+    ///
+    /// ``c.arc_length(t0=None, t1=None, tol=1e-10)`` is the length from ``t0`` to ``t1``
+    /// (negative when ``t1 < t0``), computed by adaptive Gauss-Legendre quadrature of the
+    /// speed on every polynomial piece, split at the breakpoints.
+    ///
+    /// Parameters
+    /// ----------
+    /// t0 : float, optional
+    ///     Start parameter; the domain start by default.
+    /// t1 : float or array_like, optional
+    ///     End parameter(s); the domain end by default.
+    /// tol : float, optional
+    ///     Absolute accuracy of each length (in the curve's units).
+    ///
+    /// Returns
+    /// -------
+    /// float or ndarray
+    ///     The length, or an array of ``t1``'s shape.
+    ///
+    /// Raises
+    /// ------
+    /// OptionError
+    ///     When ``tol`` is negative or NaN.
+    ///
+    /// Examples
+    /// --------
+    /// >>> import karkas
+    /// >>> c = karkas.CubicSpline([[0.0, 0.0], [3.0, 4.0], [6.0, 8.0]], t=[0.0, 1.0, 2.0])
+    /// >>> round(c.arc_length(), 12)
+    /// 10.0
+    #[pyo3(signature = (t0 = None, t1 = None, tol = 1e-10))]
+    fn arc_length<'py>(
+        &self,
+        py: Python<'py>,
+        t0: Option<f64>,
+        t1: Option<&Bound<'py, PyAny>>,
+        tol: f64,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let tol = check_tol(tol)?;
+        let (a, b) = self.inner.domain();
+        let t0 = t0.unwrap_or(a);
+        let (scalar, shape, t1s) = match t1 {
+            None => (true, Vec::new(), vec![b]),
+            Some(obj) => {
+                let p = Params::extract(obj, "t1")?;
+                (
+                    matches!(p, Params::Scalar(_)),
+                    p.shape(),
+                    p.flat().into_owned(),
+                )
+            }
+        };
+        let mut out = vec![0.0; t1s.len()];
+        let inner = &self.inner;
+        maybe_detach(py, 64 * t1s.len(), || {
+            inner.arc_lengths(t0, &t1s, tol, &mut out)
+        });
+        scalar_or_array(py, scalar, &shape, &out)
+    }
+
+    /// Parameter reached after a given arc length.
+    ///
+    /// ``c.inverse_arc_length(s, t0=None, tol=1e-10)`` walks ``s`` along the curve from
+    /// ``t0`` (backwards when ``s < 0``) and returns the parameter reached, with
+    /// ``|c.arc_length(t0, t) - s| <= tol``. An open curve stops at its domain end; a closed
+    /// one goes round and the parameter is wrapped into the domain.
+    ///
+    /// Parameters
+    /// ----------
+    /// s : float or array_like
+    ///     Length(s) to walk.
+    /// t0 : float, optional
+    ///     Start parameter; the domain start by default.
+    /// tol : float, optional
+    ///     Absolute accuracy of the walked length.
+    ///
+    /// Returns
+    /// -------
+    /// float or ndarray
+    ///     The parameter(s), of ``s``'s shape.
+    ///
+    /// Raises
+    /// ------
+    /// OptionError
+    ///     When ``tol`` is negative or NaN.
+    ///
+    /// Examples
+    /// --------
+    /// >>> import karkas
+    /// >>> c = karkas.CubicSpline([[0.0, 0.0], [3.0, 4.0], [6.0, 8.0]], t=[0.0, 1.0, 2.0])
+    /// >>> round(c.inverse_arc_length(5.0), 9)
+    /// 1.0
+    #[pyo3(signature = (s, t0 = None, tol = 1e-10))]
+    fn inverse_arc_length<'py>(
+        &self,
+        py: Python<'py>,
+        s: &Bound<'py, PyAny>,
+        t0: Option<f64>,
+        tol: f64,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let tol = check_tol(tol)?;
+        let t0 = t0.unwrap_or(self.inner.domain().0);
+        let p = Params::extract(s, "s")?;
+        let (scalar, shape, lengths) = (
+            matches!(p, Params::Scalar(_)),
+            p.shape(),
+            p.flat().into_owned(),
+        );
+        let mut out = vec![0.0; lengths.len()];
+        let inner = &self.inner;
+        maybe_detach(py, 256 * lengths.len(), || {
+            inner.inverse_arc_lengths(t0, &lengths, tol, &mut out)
+        });
+        scalar_or_array(py, scalar, &shape, &out)
+    }
+
+    /// Curvature of the curve.
+    ///
+    /// Signed in 2-D (positive where the curve turns counter-clockwise), non-negative in 3-D:
+    /// ``(x' y'' - y' x'') / |c'|^3`` and ``|c' x c''| / |c'|^3``; NaN where ``c' = 0``.
+    ///
+    /// Parameters
+    /// ----------
+    /// t : float or array_like
+    ///     Parameter(s).
+    ///
+    /// Returns
+    /// -------
+    /// float or ndarray
+    ///     The curvature, of ``t``'s shape.
+    ///
+    /// Examples
+    /// --------
+    /// >>> import numpy as np, karkas
+    /// >>> s = np.linspace(0, 2 * np.pi, 200)
+    /// >>> c = karkas.CubicSpline(np.c_[2 * np.cos(s), 2 * np.sin(s)], t=s, bc="periodic")
+    /// >>> bool(abs(c.curvature(1.0) - 0.5) < 1e-4)
+    /// True
+    fn curvature<'py>(
+        &self,
+        py: Python<'py>,
+        t: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let p = Params::extract(t, "t")?;
+        let ts = p.flat().into_owned();
+        let mut out = vec![0.0; ts.len()];
+        let inner = &self.inner;
+        maybe_detach(py, ts.len(), || inner.curvatures(&ts, &mut out));
+        scalar_or_array(py, matches!(p, Params::Scalar(_)), &p.shape(), &out)
+    }
+
+    /// Torsion of a space curve.
+    ///
+    /// ``(c' x c'') . c''' / |c' x c''|^2``: positive where the curve winds like a
+    /// right-handed helix; NaN where ``c' x c'' = 0`` (straight stretches).
+    ///
+    /// Parameters
+    /// ----------
+    /// t : float or array_like
+    ///     Parameter(s).
+    ///
+    /// Returns
+    /// -------
+    /// float or ndarray
+    ///     The torsion, of ``t``'s shape.
+    ///
+    /// Raises
+    /// ------
+    /// KarkasError
+    ///     For a 2-D curve.
+    ///
+    /// Examples
+    /// --------
+    /// >>> import numpy as np, karkas
+    /// >>> s = np.linspace(0, 4 * np.pi, 400)
+    /// >>> c = karkas.CubicSpline(np.c_[np.cos(s), np.sin(s), s], t=s)
+    /// >>> bool(abs(c.torsion(5.0) - 0.5) < 1e-4)
+    /// True
+    fn torsion<'py>(&self, py: Python<'py>, t: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+        if self.inner.dim() != 3 {
+            return Err(KarkasError::new_err(
+                "torsion is defined for curves in 3-D only (this curve is 2-D)",
+            ));
+        }
+        let p = Params::extract(t, "t")?;
+        let ts = p.flat().into_owned();
+        let mut out = vec![0.0; ts.len()];
+        let inner = &self.inner;
+        maybe_detach(py, ts.len(), || inner.torsions(&ts, &mut out));
+        scalar_or_array(py, matches!(p, Params::Scalar(_)), &p.shape(), &out)
+    }
+
+    /// Nearest points of the curve (orthogonal projection).
+    ///
+    /// For every point, the globally nearest point of the curve: candidates from a sampled
+    /// polyline in a k-d tree, refined by safeguarded Newton. Parameters stay in the domain
+    /// (an open curve's end may be the foot; a closed curve's parameter is wrapped).
+    ///
+    /// Parameters
+    /// ----------
+    /// points : array_like, shape (n, d)
+    ///     The points, of the curve's dimension.
+    /// tol : float, optional
+    ///     Tolerance on the foot parameters (0: full precision).
+    ///
+    /// Returns
+    /// -------
+    /// t : ndarray, shape (n,)
+    ///     Parameters of the foot points.
+    /// distance : ndarray, shape (n,)
+    ///     Distances to the curve.
+    /// foot : ndarray, shape (n, d)
+    ///     The foot points ``c(t)``.
+    ///
+    /// Raises
+    /// ------
+    /// PointsError
+    ///     When ``points`` is not (n, d) with the curve's d.
+    ///
+    /// Examples
+    /// --------
+    /// >>> import karkas
+    /// >>> c = karkas.CubicSpline([[0.0, 0.0], [1.0, 0.0], [2.0, 0.0]], t=[0.0, 1.0, 2.0])
+    /// >>> t, dist, foot = c.project([[0.5, 2.0]])
+    /// >>> float(t[0]), float(dist[0])
+    /// (0.5, 2.0)
+    #[pyo3(signature = (points, tol = 0.0))]
+    #[allow(clippy::type_complexity)]
+    fn project<'py>(
+        &self,
+        py: Python<'py>,
+        points: &Bound<'py, PyAny>,
+        tol: f64,
+    ) -> PyResult<(
+        Bound<'py, PyArrayDyn<f64>>,
+        Bound<'py, PyArrayDyn<f64>>,
+        Bound<'py, PyArrayDyn<f64>>,
+    )> {
+        let tol = check_tol(tol)?;
+        let d = self.inner.dim();
+        let (qs, n) = query_points(points, d)?;
+        let (mut t, mut dist, mut foot) = (vec![0.0; n], vec![0.0; n], vec![0.0; n * d]);
+        let inner = &self.inner;
+        py.detach(|| inner.project(&qs, tol, &mut t, &mut dist, &mut foot))
+            .map_err(library_error)?;
+        Ok((
+            array_of(py, &[n], &t)?,
+            array_of(py, &[n], &dist)?,
+            array_of(py, &[n, d], &foot)?,
+        ))
+    }
+}
+
+/// The parameter pairs of `(u, v, grid)` and the result's leading shape.
+fn parameter_pairs(
+    u: &Bound<'_, PyAny>,
+    v: &Bound<'_, PyAny>,
+    grid: bool,
+) -> PyResult<(Vec<f64>, Vec<f64>, Vec<usize>)> {
+    let (pu, pv) = (Params::extract(u, "u")?, Params::extract(v, "v")?);
+    let (su, sv) = (pu.shape(), pv.shape());
+    let (fu, fv) = (pu.flat(), pv.flat());
+    if grid {
+        if su.len() > 1 || sv.len() > 1 {
+            return Err(KarkasError::new_err(
+                "with grid=True, u and v must be floats or 1-D arrays",
+            ));
+        }
+        let mut us = Vec::with_capacity(fu.len() * fv.len());
+        let mut vs = Vec::with_capacity(fu.len() * fv.len());
+        for &a in fu.iter() {
+            for &b in fv.iter() {
+                us.push(a);
+                vs.push(b);
+            }
+        }
+        let mut shape = su;
+        shape.extend(sv);
+        Ok((us, vs, shape))
+    } else {
+        if su != sv {
+            return Err(KarkasError::new_err(format!(
+                "with grid=False, u and v must have one shape (got {su:?} and {sv:?})"
+            )));
+        }
+        Ok((fu.into_owned(), fv.into_owned(), su))
+    }
+}
+
+#[pymethods]
+impl PySurface {
+    /// Unit normals of the surface.
+    ///
+    /// ``S_u x S_v / |S_u x S_v|`` (a 2-D surface is seen in the plane z = 0); NaN where the
+    /// surface is singular.
+    ///
+    /// Parameters
+    /// ----------
+    /// u, v : float or array_like
+    ///     Parameters: pairs ``(u[i], v[i])`` of one shape (grid=False), or the grid
+    ///     ``u x v`` of two 1-D arrays (grid=True).
+    /// grid : bool, optional
+    ///     As in evaluation; False by default.
+    ///
+    /// Returns
+    /// -------
+    /// ndarray
+    ///     Shape ``u.shape + (3,)`` (grid=False) or ``(len(u), len(v), 3)``.
+    ///
+    /// Raises
+    /// ------
+    /// KarkasError
+    ///     When the shapes of u and v do not fit ``grid``.
+    ///
+    /// Examples
+    /// --------
+    /// >>> import numpy as np, karkas
+    /// >>> g = np.zeros((4, 4, 3)); g[..., 0], g[..., 1] = np.meshgrid(range(4), range(4), indexing="ij")
+    /// >>> S = karkas.BicubicSurface(g)
+    /// >>> S.normal(0.5, 0.5).round(12).tolist()
+    /// [0.0, 0.0, 1.0]
+    #[pyo3(signature = (u, v, grid = false))]
+    fn normal<'py>(
+        &self,
+        py: Python<'py>,
+        u: &Bound<'py, PyAny>,
+        v: &Bound<'py, PyAny>,
+        grid: bool,
+    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        let (us, vs, mut shape) = parameter_pairs(u, v, grid)?;
+        let mut out = vec![0.0; 3 * us.len()];
+        let inner = &self.inner;
+        maybe_detach(py, us.len(), || inner.normals(&us, &vs, &mut out));
+        shape.push(3);
+        array_of(py, &shape, &out)
+    }
+
+    /// Principal curvatures (and directions) of the surface.
+    ///
+    /// From the first and second fundamental forms, signed with respect to the unit normal
+    /// ``S.normal(u, v)`` (positive where the surface bends towards it: a sphere with its
+    /// outward normal has ``k1 = k2 = -1/r``); ``k1 >= k2``. NaN where the surface is
+    /// singular.
+    ///
+    /// Parameters
+    /// ----------
+    /// u, v : float or array_like
+    ///     Parameters, as in ``normal``.
+    /// grid : bool, optional
+    ///     As in evaluation; False by default.
+    /// directions : bool, optional
+    ///     Also return the unit principal directions.
+    ///
+    /// Returns
+    /// -------
+    /// k1, k2 : float or ndarray
+    ///     The larger and the smaller curvature, of the parameters' shape.
+    /// d1, d2 : ndarray
+    ///     Only with ``directions=True``: the unit tangent directions of k1 and k2, shape
+    ///     ``(..., 3)``, with ``d1 x d2 = normal``.
+    ///
+    /// Examples
+    /// --------
+    /// >>> import numpy as np, karkas
+    /// >>> g = np.zeros((4, 4, 3)); g[..., 0], g[..., 1] = np.meshgrid(range(4), range(4), indexing="ij")
+    /// >>> k1, k2 = karkas.BicubicSurface(g).principal_curvatures(0.5, 0.5)
+    /// >>> float(k1), float(k2)
+    /// (0.0, 0.0)
+    #[pyo3(signature = (u, v, grid = false, directions = false))]
+    fn principal_curvatures<'py>(
+        &self,
+        py: Python<'py>,
+        u: &Bound<'py, PyAny>,
+        v: &Bound<'py, PyAny>,
+        grid: bool,
+        directions: bool,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let scalar = !grid
+            && Params::extract(u, "u").is_ok_and(|p| matches!(p, Params::Scalar(_)))
+            && Params::extract(v, "v").is_ok_and(|p| matches!(p, Params::Scalar(_)));
+        let (us, vs, shape) = parameter_pairs(u, v, grid)?;
+        let inner = &self.inner;
+        let found = maybe_detach(py, us.len(), || inner.principal(&us, &vs));
+        let k1: Vec<f64> = found.iter().map(|p| p.k1).collect();
+        let k2: Vec<f64> = found.iter().map(|p| p.k2).collect();
+        let (k1, k2) = (
+            scalar_or_array(py, scalar, &shape, &k1)?,
+            scalar_or_array(py, scalar, &shape, &k2)?,
+        );
+        if !directions {
+            return Ok((k1, k2).into_pyobject(py)?.into_any());
+        }
+        let flat = |f: fn(&PrincipalCurvatures) -> Point3| -> Vec<f64> {
+            found.iter().flat_map(|p| f(p).0).collect()
+        };
+        let mut dshape = shape.clone();
+        dshape.push(3);
+        let d1 = array_of(py, &dshape, &flat(|p| p.dir1))?;
+        let d2 = array_of(py, &dshape, &flat(|p| p.dir2))?;
+        Ok((k1, k2, d1, d2).into_pyobject(py)?.into_any())
+    }
+
+    /// Nearest points of the surface (orthogonal projection).
+    ///
+    /// For every point, the globally nearest point of the surface: candidates from a
+    /// ``cells[0] x cells[1]`` grid of samples in a k-d tree, refined by Newton's method.
+    /// Parameters stay in the domain (clamped in an open direction, wrapped in a closed one).
+    ///
+    /// Parameters
+    /// ----------
+    /// points : array_like, shape (n, d)
+    ///     The points, of the surface's dimension.
+    /// cells : (int, int), optional
+    ///     The sampling grid in (u, v); more cells for wavy surfaces.
+    /// tol : float, optional
+    ///     Tolerance on the foot parameters (0: full precision).
+    ///
+    /// Returns
+    /// -------
+    /// u, v : ndarray, shape (n,)
+    ///     Parameters of the foot points.
+    /// distance : ndarray, shape (n,)
+    ///     Distances to the surface.
+    /// foot : ndarray, shape (n, d)
+    ///     The foot points ``S(u, v)``.
+    ///
+    /// Raises
+    /// ------
+    /// PointsError
+    ///     When ``points`` is not (n, d) with the surface's d.
+    ///
+    /// Examples
+    /// --------
+    /// >>> import numpy as np, karkas
+    /// >>> g = np.zeros((4, 4, 3)); g[..., 0], g[..., 1] = np.meshgrid(range(4), range(4), indexing="ij")
+    /// >>> u, v, dist, foot = karkas.BicubicSurface(g).project([[1.5, 2.0, 3.0]])
+    /// >>> foot.round(12).tolist(), dist.round(12).tolist()
+    /// ([[1.5, 2.0, 0.0]], [3.0])
+    #[pyo3(signature = (points, cells = (64, 64), tol = 0.0))]
+    #[pyo3(text_signature = "(self, points, cells=(64, 64), tol=0.0)")]
+    #[allow(clippy::type_complexity)]
+    fn project<'py>(
+        &self,
+        py: Python<'py>,
+        points: &Bound<'py, PyAny>,
+        cells: (usize, usize),
+        tol: f64,
+    ) -> PyResult<(
+        Bound<'py, PyArrayDyn<f64>>,
+        Bound<'py, PyArrayDyn<f64>>,
+        Bound<'py, PyArrayDyn<f64>>,
+        Bound<'py, PyArrayDyn<f64>>,
+    )> {
+        let tol = check_tol(tol)?;
+        if cells.0 == 0 || cells.1 == 0 || cells.0.saturating_mul(cells.1) > 1 << 24 {
+            return Err(OptionError::new_err(format!(
+                "cells must be two positive counts with a product at most 2^24 (got {cells:?})"
+            )));
+        }
+        let d = self.inner.dim();
+        let (qs, n) = query_points(points, d)?;
+        let (mut u, mut v, mut dist, mut foot) =
+            (vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n * d]);
+        let inner = &self.inner;
+        py.detach(|| inner.project(&qs, cells, tol, &mut u, &mut v, &mut dist, &mut foot))
+            .map_err(library_error)?;
+        Ok((
+            array_of(py, &[n], &u)?,
+            array_of(py, &[n], &v)?,
+            array_of(py, &[n], &dist)?,
+            array_of(py, &[n, d], &foot)?,
+        ))
+    }
+}

@@ -1,0 +1,289 @@
+//! The point of a curve nearest to a given point, found globally.
+//!
+//! The curve is sampled into a polyline (a few vertices per polynomial piece) whose vertices
+//! go into a k-d tree (the `kiddo` crate), and the arc length `ℓ_j` of every polyline segment
+//! is measured. For a query `q`, the nearest vertex gives an upper bound `d_0` on the
+//! distance; every curve point within `d_0` of `q` lies within `ℓ_j / 2` of a vertex of its
+//! segment, so only segments with a vertex within `d_0 + max ℓ_j / 2` can hold the nearest
+//! point. Each such segment `[a, b]` (nearest first, skipped once it cannot beat the best
+//! so far) is searched for a minimum of `|P(t) - q|^2 / 2`: where
+//! `g(t) = (P(t) - q) . P'(t)` changes sign from negative to positive, the root is found by
+//! Newton's method on `g` (`g' = |P'|^2 + (P - q) . P''`) safeguarded by bisection; its ends
+//! are candidates too. This is global up to minima hidden inside one segment with no sign
+//! change of `g` across it, which the sampling density makes negligible.
+//!
+//! Parameters stay in the domain: clamped on an open curve (the foot may be an end), wrapped
+//! on a closed one. Ties (a point at the centre of a circle) resolve to the smallest
+//! candidate segment index.
+
+use kiddo::immutable::float::kdtree::ImmutableKdTree;
+use kiddo::SquaredEuclidean;
+use rayon::prelude::*;
+
+use super::arc_length::arc_length;
+use crate::core::Curve;
+use crate::{Error, Point, Result};
+
+/// Polyline segments per polynomial piece (at least; more for high degrees).
+const SEGMENTS_PER_PIECE: usize = 4;
+/// Polyline segments when the curve does not tell its pieces.
+const SEGMENTS_UNKNOWN: usize = 256;
+/// The fewest and most polyline segments.
+const MIN_SEGMENTS: usize = 64;
+const MAX_SEGMENTS: usize = 1 << 18;
+/// Most Newton or bisection steps per candidate segment.
+const MAX_STEPS: usize = 100;
+/// Batches at least this large are projected in parallel.
+const PARALLEL_BATCH: usize = 256;
+
+/// The point of a curve nearest to a query point (kurbo's `Nearest`, with the foot point).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CurveNearest<const D: usize> {
+    /// The parameter of the foot point (in the domain).
+    pub t: f64,
+    /// The distance from the query point to the curve.
+    pub distance: f64,
+    /// The foot point `P(t)`.
+    pub point: Point<D>,
+}
+
+impl<const D: usize> CurveNearest<D> {
+    /// The result for a query that has no nearest point (a NaN or infinite coordinate).
+    pub const UNDEFINED: Self = CurveNearest {
+        t: f64::NAN,
+        distance: f64::NAN,
+        point: Point([f64::NAN; D]),
+    };
+}
+
+/// A curve prepared for nearest-point queries: a sampled polyline in a k-d tree.
+///
+/// Building costs `O(n log n)` for `n` polyline vertices (a few per piece); a query then
+/// costs a tree search and a few Newton steps per candidate segment.
+///
+/// ```
+/// use karkas::geometry::CurveProjector;
+/// use karkas::{ll::LlCurve, Point};
+/// let pts = [Point([0.0, 0.0]), Point([1.0, 0.0]), Point([2.0, 0.0]), Point([3.0, 0.0])];
+/// let line = LlCurve::new(&pts, 3, false).unwrap();
+/// let projector = CurveProjector::new(&line, 1e-12).unwrap();
+/// let near = projector.nearest(Point([1.5, 2.0]));
+/// assert!((near.distance - 2.0).abs() < 1e-12);
+/// assert!((near.point[0] - 1.5).abs() < 1e-12);
+/// ```
+pub struct CurveProjector<'a, C: ?Sized, const D: usize> {
+    curve: &'a C,
+    /// Vertex parameters `t_0 < .. < t_n` (`t_n` the domain end; on a closed curve vertex
+    /// `n` is vertex 0 and is not in the tree).
+    params: Vec<f64>,
+    points: Vec<Point<D>>,
+    tree: ImmutableKdTree<f64, u64, D, 32>,
+    /// The largest half arc length of a segment (with a safety margin).
+    reach: f64,
+    accuracy: f64,
+    closed: bool,
+}
+
+impl<'a, C: Curve<D> + ?Sized, const D: usize> CurveProjector<'a, C, D> {
+    /// Samples `curve` and builds the tree. `accuracy` is the tolerance on the foot
+    /// parameter (Newton stops when its step is below it; the distance is then exact to about
+    /// `|P'| accuracy` squared over the distance); non-positive asks for full precision.
+    ///
+    /// Errors: a non-finite domain or a sample of the curve that is not finite
+    /// ([`Error::NonFiniteArgument`]).
+    pub fn new(curve: &'a C, accuracy: f64) -> Result<Self> {
+        let domain = curve.domain();
+        if !domain.start.is_finite() || !domain.end.is_finite() {
+            return Err(Error::NonFiniteArgument {
+                what: "the curve's domain",
+            });
+        }
+        let closed = curve.is_closed() && domain.length() > 0.0;
+        let mut params = sample_parameters(curve);
+        if domain.length() <= 0.0 {
+            params = vec![domain.start, domain.end];
+        }
+        let points: Vec<Point<D>> = params.iter().map(|&t| curve.eval(t)).collect();
+        if points.iter().any(|p| !p.is_finite()) {
+            return Err(Error::NonFiniteArgument {
+                what: "a sample of the curve",
+            });
+        }
+        let mut reach: f64 = 0.0;
+        for (w, p) in params.windows(2).zip(points.windows(2)) {
+            let chord = p[0].distance(p[1]);
+            let length = arc_length(curve, w[0], w[1], 1e-3 * chord + 1e-300);
+            reach = reach.max(length.max(chord));
+        }
+        let reach = 0.5 * reach * (1.0 + 1e-6) + 1e-12 * (reach + points[0].max_abs());
+        let in_tree = if closed {
+            points.len() - 1
+        } else {
+            points.len()
+        };
+        let coords: Vec<[f64; D]> = points[..in_tree].iter().map(|p| p.0).collect();
+        Ok(CurveProjector {
+            curve,
+            tree: ImmutableKdTree::new_from_slice(&coords),
+            params,
+            points,
+            reach,
+            accuracy: accuracy.max(0.0),
+            closed,
+        })
+    }
+
+    /// The nearest point of the curve to `q` ([`CurveNearest::UNDEFINED`] for a non-finite
+    /// `q`).
+    pub fn nearest(&self, q: Point<D>) -> CurveNearest<D> {
+        if !q.is_finite() {
+            return CurveNearest::UNDEFINED;
+        }
+        let segments = self.params.len() - 1;
+        let vertices = if self.closed { segments } else { segments + 1 };
+        let first =
+            (self.tree.nearest_one::<SquaredEuclidean>(&q.0).item as usize).min(vertices - 1);
+        let mut best = CurveNearest {
+            t: self.params[first],
+            distance: self.points[first].distance(q),
+            point: self.points[first],
+        };
+        let radius = best.distance + self.reach;
+        let mut candidates: Vec<(f64, usize)> = Vec::new();
+        for found in self
+            .tree
+            .within_unsorted::<SquaredEuclidean>(&q.0, radius * radius)
+        {
+            let i = (found.item as usize).min(vertices - 1);
+            let d = found.distance.sqrt();
+            if i < segments {
+                candidates.push((d, i));
+            }
+            if i > 0 {
+                candidates.push((d, i - 1));
+            } else if self.closed {
+                candidates.push((d, segments - 1));
+            }
+        }
+        candidates.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+        let mut seen = vec![false; segments];
+        for (d, j) in candidates {
+            if seen[j] {
+                continue;
+            }
+            seen[j] = true;
+            if d - self.reach > best.distance {
+                break;
+            }
+            let found = self.search_segment(q, j);
+            if found.distance < best.distance {
+                best = found;
+            }
+        }
+        if self.closed {
+            best.t = self.curve.domain().wrap(best.t);
+        }
+        best
+    }
+
+    /// The nearest points to every point of `qs` (in parallel for large batches).
+    pub fn nearest_all(&self, qs: &[Point<D>]) -> Vec<CurveNearest<D>>
+    where
+        C: Sync,
+    {
+        if qs.len() < PARALLEL_BATCH {
+            qs.iter().map(|&q| self.nearest(q)).collect()
+        } else {
+            qs.par_iter().map(|&q| self.nearest(q)).collect()
+        }
+    }
+
+    /// The best of the ends of segment `j` and the minimum of the squared distance inside it.
+    fn search_segment(&self, q: Point<D>, j: usize) -> CurveNearest<D> {
+        let (a, b) = (self.params[j], self.params[j + 1]);
+        let (pa, pb) = (self.points[j], self.points[j + 1]);
+        let mut best = if pa.distance_sq(q) <= pb.distance_sq(q) {
+            self.result(a, pa, q)
+        } else {
+            self.result(b, pb, q)
+        };
+        let g = |t: f64, p: Point<D>| (p - q).dot(self.curve.deriv(t, 1));
+        let (ga, gb) = (g(a, pa), g(b, pb));
+        if ga < 0.0 && gb > 0.0 {
+            let t = self.newton_root(q, a, b);
+            let p = self.curve.eval(t);
+            if p.distance(q) < best.distance {
+                best = self.result(t, p, q);
+            }
+        }
+        best
+    }
+
+    /// The root of `g` in `(lo, hi)` with `g(lo) < 0 < g(hi)`: Newton safeguarded by bisection.
+    fn newton_root(&self, q: Point<D>, mut lo: f64, mut hi: f64) -> f64 {
+        let mut t = 0.5 * (lo + hi);
+        let floor = 4.0 * f64::EPSILON * (lo.abs().max(hi.abs()));
+        let tolerance = self.accuracy.max(floor);
+        for _ in 0..MAX_STEPS {
+            let r = self.curve.eval(t) - q;
+            let d1 = self.curve.deriv(t, 1);
+            let d2 = self.curve.deriv(t, 2);
+            let g = r.dot(d1);
+            if g == 0.0 {
+                return t;
+            }
+            if g < 0.0 {
+                lo = t;
+            } else {
+                hi = t;
+            }
+            let slope = d1.norm_sq() + r.dot(d2);
+            let newton = t - g / slope;
+            let next = if slope > 0.0 && newton > lo && newton < hi {
+                newton
+            } else {
+                0.5 * (lo + hi)
+            };
+            let step = (next - t).abs();
+            t = next;
+            if step <= tolerance || hi - lo <= floor {
+                break;
+            }
+        }
+        t
+    }
+
+    fn result(&self, t: f64, p: Point<D>, q: Point<D>) -> CurveNearest<D> {
+        CurveNearest {
+            t,
+            distance: p.distance(q),
+            point: p,
+        }
+    }
+}
+
+/// The vertex parameters of the polyline: a few per polynomial piece.
+fn sample_parameters<C: Curve<D> + ?Sized, const D: usize>(curve: &C) -> Vec<f64> {
+    let domain = curve.domain();
+    let (breaks, per_piece) = match curve.polynomial_pieces() {
+        Some(p) if p.breaks.len() >= 2 => {
+            let per = SEGMENTS_PER_PIECE.max(p.degree + 1);
+            (p.breaks, per)
+        }
+        _ => (vec![domain.start, domain.end], SEGMENTS_UNKNOWN),
+    };
+    let pieces = breaks.len() - 1;
+    let mut per_piece = per_piece.max(MIN_SEGMENTS.div_ceil(pieces));
+    if pieces * per_piece > MAX_SEGMENTS {
+        per_piece = (MAX_SEGMENTS / pieces).max(1);
+    }
+    let mut params = Vec::with_capacity(pieces * per_piece + 1);
+    for w in breaks.windows(2) {
+        for k in 0..per_piece {
+            params.push(w[0] + (w[1] - w[0]) * (k as f64 / per_piece as f64));
+        }
+    }
+    params.push(domain.end);
+    params[0] = domain.start;
+    params
+}

@@ -1,0 +1,32 @@
+//! Differential geometry of any [`Curve`](crate::Curve) and [`Surface`](crate::Surface):
+//! arc length and its inverse, curvature and torsion, unit normals and principal
+//! curvatures, and the closest point of a curve or surface to given points.
+//!
+//! - [`arc_length`]: `∫ |P'(t)| dt` by adaptive Gauss–Legendre quadrature on each polynomial
+//!   piece (split at the breakpoints, where `P'` may have kinks), to a stated absolute
+//!   accuracy; the inverse (the parameter reached after a given length) by safeguarded Newton
+//!   on the length function. The curve methods [`Curve::arc_length`](crate::Curve::arc_length)
+//!   and [`Curve::inverse_arc_length`](crate::Curve::inverse_arc_length) call these and may be
+//!   overridden where a closed form is faster.
+//! - [`curvature`]: the Frenet curvature (signed in 2-D) and torsion (3-D) from the first
+//!   three derivatives.
+//! - [`curve_nearest`]: the globally nearest point of a curve: candidates from a sampled
+//!   polyline in a k-d tree (the `kiddo` crate), refined by safeguarded Newton on
+//!   `(P(t) - q) . P'(t) = 0` per candidate segment.
+//! - [`surface_frame`]: the unit normal and the principal curvatures and directions from the
+//!   first and second fundamental forms.
+//! - [`surface_nearest`]: the globally nearest point of a surface, candidates from a sampled
+//!   grid in a k-d tree refined by Newton's method.
+
+pub mod arc_length;
+pub mod curvature;
+pub mod curve_nearest;
+mod quadrature;
+pub mod surface_frame;
+pub mod surface_nearest;
+
+pub use arc_length::{arc_length, inverse_arc_length};
+pub use curvature::{curvature, torsion};
+pub use curve_nearest::{CurveNearest, CurveProjector};
+pub use surface_frame::{normal, principal_curvatures, PrincipalCurvatures};
+pub use surface_nearest::{SurfaceNearest, SurfaceProjector};
