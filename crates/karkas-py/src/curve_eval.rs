@@ -52,9 +52,9 @@ pub fn extend_outside(
 }
 
 /// The `nu`-th derivative of a curve, as a curve.
-struct DerivativeCurve {
-    parent: Arc<dyn CurveImpl>,
-    nu: usize,
+pub(crate) struct DerivativeCurve {
+    pub(crate) parent: Arc<dyn CurveImpl>,
+    pub(crate) nu: usize,
 }
 
 impl CurveImpl for DerivativeCurve {

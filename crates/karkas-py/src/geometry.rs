@@ -345,6 +345,11 @@ impl PyCurve {
     /// float or ndarray
     ///     The curvature, of ``t``'s shape.
     ///
+    /// Raises
+    /// ------
+    /// TypeError
+    ///     ``t`` is not a number or an array of numbers.
+    ///
     /// Examples
     /// --------
     /// >>> import numpy as np, karkas
@@ -409,7 +414,7 @@ impl PyCurve {
     /// Nearest points of the curve (orthogonal projection).
     ///
     /// For every point, the globally nearest point of the curve: candidates from a sampled
-    /// polyline in a k-d tree, refined by safeguarded Newton. Parameters stay in the domain
+    /// polyline in a k-d tree, refined by safeguarded Newton. The foot parameters stay in the domain
     /// (an open curve's end may be the foot; a closed curve's parameter is wrapped).
     ///
     /// Parameters
@@ -575,6 +580,13 @@ impl PySurface {
     ///     Only with ``directions=True``: the unit tangent directions of k1 and k2, shape
     ///     ``(..., 3)``, with ``d1 x d2 = normal``.
     ///
+    /// Raises
+    /// ------
+    /// TypeError
+    ///     ``u`` or ``v`` is not a number or an array of numbers.
+    /// ValueError
+    ///     ``u`` and ``v`` of different shapes with ``grid=False``.
+    ///
     /// Examples
     /// --------
     /// >>> import numpy as np, karkas
@@ -620,7 +632,8 @@ impl PySurface {
     ///
     /// For every point, the globally nearest point of the surface: candidates from a
     /// ``cells[0] x cells[1]`` grid of samples in a k-d tree, refined by Newton's method.
-    /// Parameters stay in the domain (clamped in an open direction, wrapped in a closed one).
+    /// The foot parameters stay in the domain (clamped in an open direction, wrapped in a
+    /// closed one).
     ///
     /// Parameters
     /// ----------

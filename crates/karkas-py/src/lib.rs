@@ -12,12 +12,13 @@
 //! `Curve` and `Surface` in `curve` and `surface` over the dimension-free interfaces of
 //! `wrapper`; arrays in `convert`; exceptions in `errors`.
 
-mod bspline_form;
 mod adapters;
+mod bspline_form;
 mod convert;
 mod coons;
 mod curve;
 mod curve_eval;
+mod derivative_geometry;
 mod dps;
 mod errors;
 mod export;

@@ -100,10 +100,10 @@ impl Outside {
 }
 
 /// The partial derivative of a surface, as a surface.
-struct DerivativeSurface {
-    parent: Arc<dyn SurfaceImpl>,
-    du: usize,
-    dv: usize,
+pub(crate) struct DerivativeSurface {
+    pub(crate) parent: Arc<dyn SurfaceImpl>,
+    pub(crate) du: usize,
+    pub(crate) dv: usize,
 }
 
 /// The error of what a derivative surface does not do.

@@ -33,7 +33,7 @@ IDS = [f"{type(c).__name__}-{c.dim}d-{i}" for i, c in enumerate(CURVES)]
 
 
 def _speed(c):
-    return lambda t: float(np.linalg.norm(c.derivative(t, 1)))
+    return lambda t: float(np.linalg.norm(c(t, 1)))
 
 
 def _quad_length(c, a, b):
@@ -84,7 +84,7 @@ def test_inverse_arc_length_round_trip(c):
 def test_curvature_from_derivatives(c):
     a, b = c.domain
     t = np.linspace(a, b, 23)[1:-1] + 1e-3
-    d1, d2 = c.derivative(t, 1), c.derivative(t, 2)
+    d1, d2 = c(t, 1), c(t, 2)
     speed = np.linalg.norm(d1, axis=-1)
     if c.dim == 2:
         want = (d1[:, 0] * d2[:, 1] - d1[:, 1] * d2[:, 0]) / speed**3
@@ -124,7 +124,7 @@ def test_helix_torsion_and_curvature():
     np.testing.assert_allclose(helix.torsion(t), h / (r * r + h * h), rtol=1e-4)
     np.testing.assert_allclose(helix.curvature(t), r / (r * r + h * h), rtol=1e-4)
     # Against the derivatives.
-    d1, d2, d3 = (helix.derivative(t, k) for k in (1, 2, 3))
+    d1, d2, d3 = (helix(t, k) for k in (1, 2, 3))
     b = np.cross(d1, d2)
     want = np.einsum("ij,ij->i", b, d3) / np.einsum("ij,ij->i", b, b)
     np.testing.assert_allclose(helix.torsion(t), want, rtol=1e-10)
@@ -210,10 +210,10 @@ SURFACES = [_sphere_patch(), _wavy_surface()]
 
 def _shape_operator(S, u, v):
     """k1 >= k2 and the normal from the derivatives, by numpy.linalg."""
-    su, sv = S.derivative(u, v, 1, 0, grid=False), S.derivative(u, v, 0, 1, grid=False)
-    suu = S.derivative(u, v, 2, 0, grid=False)
-    suv = S.derivative(u, v, 1, 1, grid=False)
-    svv = S.derivative(u, v, 0, 2, grid=False)
+    su, sv = S(u, v, 1, 0, grid=False), S(u, v, 0, 1, grid=False)
+    suu = S(u, v, 2, 0, grid=False)
+    suv = S(u, v, 1, 1, grid=False)
+    svv = S(u, v, 0, 2, grid=False)
     n = np.cross(su, sv)
     n /= np.linalg.norm(n)
     first = np.array([[su @ su, su @ sv], [su @ sv, sv @ sv]])
@@ -286,3 +286,17 @@ def test_sphere_projection_closed_form():
     q = dirs * np.array([[3.0], [1.2], [2.5]])
     _, _, dist, _ = S.project(q)
     np.testing.assert_allclose(dist, [1.0, 0.8, 0.5], atol=1e-6)
+
+
+def test_derivative_objects_have_geometry_too():
+    # The hodograph of a circle of radius r traversed at unit angular speed is a circle of
+    # radius r: its length over one turn is 2 pi r and its curvature 1/r.
+    t = np.linspace(0.0, 2 * np.pi, 401)
+    pts = np.column_stack([2 * np.cos(t), 2 * np.sin(t)])
+    c = karkas.CubicSpline(pts, t=t, bc="periodic")
+    d = c.derivative()
+    assert d.arc_length() == pytest.approx(4 * np.pi, rel=1e-6)
+    assert np.allclose(d.curvature(np.linspace(0.5, 5.5, 7)), 0.5, rtol=1e-4)
+    t_near, distance, foot = d.project(np.array([[4.0, 0.0]]))
+    assert distance[0] == pytest.approx(2.0, rel=1e-6)
+    assert np.allclose(foot[0], [2.0, 0.0], atol=1e-5)
