@@ -2,11 +2,13 @@
 
 use std::sync::Arc;
 
-use karkas::coons::{CoonsSurface, CurveFit, PointNetwork};
+use karkas::coons::{
+    CoonsKind, CoonsSurface, CurveFit, PointNetwork, CROSSING_TOLERANCE, POINT_NETWORK_TOLERANCE,
+};
 use karkas::Point;
 use pyo3::prelude::*;
 
-use crate::convert::{as_points, by_dim, check_dim, count, PointsArray};
+use crate::convert::{as_points, by_dim, check_dim, count, FlatPoints, PointsArray};
 use crate::errors::{library_error, OptionError, PointsError};
 use crate::surface::PySurface;
 use crate::wrapper::{SurfaceImpl, WrappedSurface};
@@ -45,9 +47,10 @@ fn first_dim(lists: &[Bound<'_, PyAny>], what: &str) -> PyResult<usize> {
 
 /// Generalized Coons surfaces (Chashnikov) over a network of curves given by points.
 ///
-/// CoonsSurface(v_curves, u_curves, kind="gordon-spline", u_derivs=None, v_derivs=None,
-/// fit="spline", crossing_tolerance=1e-6, tolerance=1e-4): v_curves run along v (listed by
-/// increasing u), u_curves along u (by increasing v); each a (k, d) array, interpolated by a
+/// CoonsSurface(*, u_curves, v_curves, kind="gordon-spline", u_derivs=None, v_derivs=None,
+/// fit="spline", crossing_tolerance=1e-6, tolerance=1e-4): u_curves run along u (listed by
+/// increasing v), v_curves along v (by increasing u), the names of karkas surface coons's
+/// --u-curves and --v-curves (keywords only); each a (k, d) array, interpolated by a
 /// not-a-knot cubic spline (fit="spline") or an interpolating LL curve (fit=("ll", order)).
 /// kind: 'bilinear' and 'bicubic' (two curves a family), 'gordon' (Lagrange blending),
 /// 'gordon-spline' (cubic-spline blending), 'composite' (C^1 piecewise bicubic).
@@ -59,17 +62,49 @@ pub struct PyCoonsSurface {
     /// The kind of surface.
     #[pyo3(get)]
     kind: String,
+    /// What it was built from (for pickling).
+    pub(crate) input: CoonsInput,
+}
+
+/// The inputs of a Coons surface, for pickling.
+pub struct CoonsInput {
+    /// The u-curves and the v-curves.
+    pub curves: (Vec<FlatPoints>, Vec<FlatPoints>),
+    /// The cross-derivatives along the u-curves and along the v-curves.
+    pub derivs: Option<(Vec<FlatPoints>, Vec<FlatPoints>)>,
+    /// How the curves interpolate their points.
+    pub fit: CurveFit,
+    /// The crossing tolerance and the compatibility tolerance.
+    pub tolerances: (f64, f64),
+}
+
+/// The point arrays of a list (each (k, d)), copied.
+fn given(lists: &[Bound<'_, PyAny>], what: &str) -> PyResult<Vec<FlatPoints>> {
+    lists
+        .iter()
+        .enumerate()
+        .map(|(i, obj)| {
+            let pts = PointsArray::extract(obj, &format!("{what}[{i}]"))?;
+            Ok(FlatPoints {
+                coords: pts.flat().into_owned(),
+                dim: pts.dim(),
+            })
+        })
+        .collect()
 }
 
 #[pymethods]
 impl PyCoonsSurface {
     #[new]
-    #[pyo3(signature = (v_curves, u_curves, kind = "gordon-spline", u_derivs = None, v_derivs = None, fit = None, crossing_tolerance = 1e-6, tolerance = 1e-4))]
+    #[pyo3(signature = (*, u_curves, v_curves, kind = "gordon-spline", u_derivs = None, v_derivs = None, fit = None, crossing_tolerance = CROSSING_TOLERANCE, tolerance = POINT_NETWORK_TOLERANCE))]
+    #[pyo3(
+        text_signature = "(*, u_curves, v_curves, kind='gordon-spline', u_derivs=None, v_derivs=None, fit=None, crossing_tolerance=1e-06, tolerance=0.0001)"
+    )]
     #[allow(clippy::too_many_arguments)]
     fn py_new(
         py: Python<'_>,
-        v_curves: Vec<Bound<'_, PyAny>>,
         u_curves: Vec<Bound<'_, PyAny>>,
+        v_curves: Vec<Bound<'_, PyAny>>,
         kind: &str,
         u_derivs: Option<Vec<Bound<'_, PyAny>>>,
         v_derivs: Option<Vec<Bound<'_, PyAny>>>,
@@ -102,18 +137,16 @@ impl PyCoonsSurface {
                 }
             }
         };
-        let known = [
-            "bilinear",
-            "bicubic",
-            "gordon",
-            "gordon-spline",
-            "composite",
-        ];
-        if !known.contains(&kind) {
-            return Err(OptionError::new_err(format!(
-                "unknown kind {kind:?} (expected one of {known:?})"
-            )));
-        }
+        let kind: CoonsKind = kind.parse().map_err(library_error)?;
+        let input = CoonsInput {
+            curves: (given(&u_curves, "u_curves")?, given(&v_curves, "v_curves")?),
+            derivs: match (&u_derivs, &v_derivs) {
+                (Some(du), Some(dv)) => Some((given(du, "u_derivs")?, given(dv, "v_derivs")?)),
+                _ => None,
+            },
+            fit,
+            tolerances: (crossing_tolerance, tolerance),
+        };
         let dim = first_dim(&v_curves, "v_curves")?;
         let (inner, counts): (Arc<dyn SurfaceImpl>, (usize, usize)) = by_dim!(dim, D => {
             let v = point_lists::<D>(&v_curves, "v_curves")?;
@@ -129,30 +162,22 @@ impl PyCoonsSurface {
                     Some((du, dv)) => Some(network.cross_derivatives(dv, du)?),
                     None => None,
                 };
-                let net = network.network();
-                match kind {
-                    "bilinear" => CoonsSurface::bilinear(net, tolerance),
-                    "bicubic" => CoonsSurface::bicubic(net, cross.as_ref(), tolerance),
-                    "gordon" => CoonsSurface::gordon(net, tolerance),
-                    "composite" => CoonsSurface::composite(net, cross.as_ref(), tolerance),
-                    _ => CoonsSurface::gordon_spline(
-                        net,
-                        karkas::coons::SplineEnds::NotAKnot,
-                        tolerance,
-                    ),
-                }
+                kind.build(network.network(), cross.as_ref(), tolerance)
             })
             .map_err(library_error)?;
             (Arc::new(WrappedSurface::<_, D>(surface)) as Arc<dyn SurfaceImpl>, (v.len(), u.len()))
         });
         let description = format!(
-            "<karkas.CoonsSurface kind='{kind}', {} v-curves x {} u-curves in {dim}-D",
-            counts.0, counts.1
+            "<karkas.CoonsSurface kind='{}', {} u-curves x {} v-curves in {dim}-D",
+            kind.name(),
+            counts.1,
+            counts.0
         );
         Ok(
             PyClassInitializer::from(PySurface::new(inner, description)).add_subclass(
                 PyCoonsSurface {
-                    kind: kind.to_string(),
+                    kind: kind.name().to_string(),
+                    input,
                 },
             ),
         )

@@ -1,14 +1,14 @@
 //! Discrete periodic splines (Malozemov, Khorokhonov, Chashnikov): `DiscreteSpline` and
 //! `TubeSurface`.
 
-use karkas::dps::{DiscreteSpline, TubeSurface};
+use karkas::dps::{DiscreteSpline, TubeSurface, DEFAULT_ORDER, DEFAULT_STEP, DEFAULT_TUBE_ORDER};
 use karkas::{Grid, Point};
 use numpy::PyArrayDyn;
 use pyo3::prelude::*;
 
 use crate::convert::{
     as_points, as_points_mut, by_dim, check_dim, count, each, grid_to_array, maybe_detach,
-    output_array, points_to_array, variant, write_flat, ByDim, GridArray, PointsArray,
+    output_array, points_to_array, variant, write_flat, ByDim, FlatPoints, GridArray, PointsArray,
 };
 use crate::errors::{library_error, PointsError};
 
@@ -29,7 +29,9 @@ type AnySpline = ByDim<DiscreteSpline<2>, DiscreteSpline<3>>;
 #[pyclass(module = "karkas", name = "DiscreteSpline", frozen)]
 pub struct PyDiscreteSpline {
     spline: AnySpline,
-    interpolating: bool,
+    pub(crate) interpolating: bool,
+    /// The poles or nodes given (for pickling).
+    pub(crate) points: FlatPoints,
 }
 
 impl PyDiscreteSpline {
@@ -56,13 +58,19 @@ impl PyDiscreteSpline {
             .map_err(library_error)?;
             AnySpline::of(s)
         });
+        let points = FlatPoints {
+            coords: flat.into_owned(),
+            dim,
+        };
         Ok(PyDiscreteSpline {
             spline,
             interpolating,
+            points,
         })
     }
 
-    fn parts(&self) -> (usize, usize, usize, usize) {
+    /// The dimension, the number of poles, the order and the step.
+    pub(crate) fn parts(&self) -> (usize, usize, usize, usize) {
         each!(&self.spline, s => (point_dim(s.poles()), s.poles().len(), s.order(), s.step()))
     }
 }
@@ -70,7 +78,8 @@ impl PyDiscreteSpline {
 #[pymethods]
 impl PyDiscreteSpline {
     #[new]
-    #[pyo3(signature = (poles, order = 3, n = 10))]
+    #[pyo3(signature = (poles, order = DEFAULT_ORDER as i64, n = DEFAULT_STEP as i64))]
+    #[pyo3(text_signature = "(poles, order=3, n=10)")]
     fn py_new(py: Python<'_>, poles: &Bound<'_, PyAny>, order: i64, n: i64) -> PyResult<Self> {
         Self::build(py, poles, order, n, false)
     }
@@ -79,7 +88,8 @@ impl PyDiscreteSpline {
     /// j = l n (solved by the DFT in O(m log m + N)); among all N-periodic sequences through
     /// the nodes it has the least sum of squared r-th differences.
     #[staticmethod]
-    #[pyo3(signature = (nodes, order = 3, n = 10))]
+    #[pyo3(signature = (nodes, order = DEFAULT_ORDER as i64, n = DEFAULT_STEP as i64))]
+    #[pyo3(text_signature = "(nodes, order=3, n=10)")]
     fn interpolate(py: Python<'_>, nodes: &Bound<'_, PyAny>, order: i64, n: i64) -> PyResult<Self> {
         Self::build(py, nodes, order, n, true)
     }
@@ -150,19 +160,24 @@ type AnyTube = ByDim<TubeSurface<2>, TubeSurface<3>>;
 /// A closed tube through a skeleton of closed discrete curves (formula (3) of Malozemov,
 /// Khorokhonov and Chashnikov).
 ///
-/// TubeSurface(along, across, n1, n2, r1=3, r2=3): along (m1, N2, d) are m1 closed curves of
+/// TubeSurface(along, across, n1, n2, r1=2, r2=2) (the defaults of karkas surface dps-tube): along (m1, N2, d) are m1 closed curves of
 /// N2 = m2 n2 samples, across (m2, N1, d) are m2 closed curves of N1 = m1 n1 samples, with
 /// along[i][j n2] == across[j][i n1]. values() -> (N1, N2, d); closed_grid() -> (N1+1, N2+1, d)
 /// with the seams repeated, for meshing.
 #[pyclass(module = "karkas", name = "TubeSurface", frozen)]
 pub struct PyTubeSurface {
     tube: AnyTube,
+    /// The skeleton given, each as (row-major points, rows, columns) (for pickling).
+    pub(crate) skeleton: [(FlatPoints, usize, usize); 2],
+    /// n1, n2, r1, r2 as given (for pickling).
+    pub(crate) counts: [usize; 4],
 }
 
 #[pymethods]
 impl PyTubeSurface {
     #[new]
-    #[pyo3(signature = (along, across, n1, n2, r1 = 3, r2 = 3))]
+    #[pyo3(signature = (along, across, n1, n2, r1 = DEFAULT_TUBE_ORDER as i64, r2 = DEFAULT_TUBE_ORDER as i64))]
+    #[pyo3(text_signature = "(along, across, n1, n2, r1=2, r2=2)")]
     #[allow(clippy::too_many_arguments)]
     fn py_new(
         py: Python<'_>,
@@ -188,13 +203,23 @@ impl PyTubeSurface {
             count(r1, "r1")?,
             count(r2, "r2")?,
         );
+        let given = |g: &GridArray<'_>| -> (FlatPoints, usize, usize) {
+            let (rows, cols) = g.rows_cols();
+            let coords = g.flat().into_owned();
+            (FlatPoints { coords, dim }, rows, cols)
+        };
+        let skeleton = [given(&a), given(&b)];
         let tube = by_dim!(dim, D => {
             let (ga, gb): (Grid<Point<D>>, Grid<Point<D>>) = (a.grid::<D>()?, b.grid::<D>()?);
             let t = maybe_detach(py, ga.as_slice().len(), || TubeSurface::<D>::new(&ga, &gb, n1, n2, r1, r2))
                 .map_err(library_error)?;
             AnyTube::of(t)
         });
-        Ok(PyTubeSurface { tube })
+        Ok(PyTubeSurface {
+            tube,
+            skeleton,
+            counts: [n1, n2, r1, r2],
+        })
     }
 
     /// The values c(p, q), shape (N1, N2, d).

@@ -22,8 +22,10 @@ mod implicit;
 mod ll;
 mod measure;
 mod param;
+mod pickle;
 mod read;
 mod section;
+mod section_defaults;
 mod surface;
 mod wrapper;
 
@@ -73,12 +75,13 @@ fn karkas_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(read::read_mesh, m)?)?;
     m.add_function(wrap_pyfunction!(read::set_max_input_bytes, m)?)?;
     m.add_function(wrap_pyfunction!(read::max_input_bytes, m)?)?;
+    m.add_function(wrap_pyfunction!(pickle::restore, m)?)?;
     let names: Vec<String> = m
         .dict()
         .keys()
         .iter()
         .filter_map(|k| k.extract::<String>().ok())
-        .filter(|k| !k.starts_with('_') || k == "__version__")
+        .filter(|k| !k.starts_with('_') || k == "__version__" || k == "_restore")
         .collect();
     m.add("__all__", names)?;
     Ok(())

@@ -3,7 +3,9 @@
 
 use std::sync::Arc;
 
-use karkas::ll::{vary as ll_vary, FixedEntries, LlCurve, LlSurface, SumTargets, VariationOptions};
+use karkas::ll::{
+    vary as ll_vary, FixedEntries, LlCurve, LlSurface, SumTargets, VariationOptions, DEFAULT_ORDER,
+};
 use karkas::Grid;
 use numpy::{AllowTypeChange, PyArrayDyn, PyArrayLike2, PyUntypedArrayMethods};
 use pyo3::prelude::*;
@@ -20,20 +22,25 @@ use crate::wrapper::{CurveImpl, SurfaceImpl, Wrapped, WrappedSurface};
 /// The LL approximation of a support polygon (Aulchenko, Latypov, Nikulichev): a C^L curve
 /// that never oscillates more than its polygon.
 ///
-/// LLCurve(points, order=5, closed=False): points (n, d), d in {2, 3}. Node i sits at
-/// t = i/(K+1); the domain is [1/(K+1), K/(K+1)]. An open curve passes through its first and
-/// last points; use LLCurve.interpolate for a curve through every point.
+/// LLCurve(points, order=3, closed=False, interpolate=False): points (n, d), d in {2, 3}.
+/// Node i sits at t = i/(K+1); the domain is [1/(K+1), K/(K+1)]. An open curve passes through
+/// its first and last points; interpolate=True (or LLCurve.interpolate) gives the curve
+/// through every point. The defaults are the command line's (karkas curve ll).
 #[pyclass(extends = PyCurve, module = "karkas", name = "LLCurve", frozen)]
 pub struct PyLlCurve {
     /// The order L (the curve is C^L).
     #[pyo3(get)]
-    order: usize,
+    pub(crate) order: usize,
     /// True for the interpolating variant.
     #[pyo3(get)]
-    interpolating: bool,
+    pub(crate) interpolating: bool,
     /// The control polygon r_1..r_K (closed curves repeat the first point at the end), (K, d).
     #[pyo3(get, name = "control_points")]
     control: FlatPoints,
+    /// The points given (for pickling).
+    pub(crate) points: FlatPoints,
+    /// True for a closed curve (for pickling).
+    pub(crate) closed: bool,
 }
 
 impl PyLlCurve {
@@ -61,6 +68,10 @@ impl PyLlCurve {
             let control = FlatPoints::of(curve.control_points());
             (Arc::new(Wrapped::<_, D>(curve)), control)
         });
+        let points = FlatPoints {
+            coords: flat.into_owned(),
+            dim,
+        };
         let description = format!(
             "<karkas.LLCurve {}order={order}, closed={}, {n} points in {dim}-D",
             variant(interpolating),
@@ -71,6 +82,8 @@ impl PyLlCurve {
                 order,
                 interpolating,
                 control,
+                points,
+                closed,
             }),
         )
     }
@@ -79,20 +92,23 @@ impl PyLlCurve {
 #[pymethods]
 impl PyLlCurve {
     #[new]
-    #[pyo3(signature = (points, order = 5, closed = false))]
+    #[pyo3(signature = (points, order = DEFAULT_ORDER as i64, closed = false, interpolate = false))]
+    #[pyo3(text_signature = "(points, order=3, closed=False, interpolate=False)")]
     fn py_new(
         py: Python<'_>,
         points: &Bound<'_, PyAny>,
         order: i64,
         closed: bool,
+        interpolate: bool,
     ) -> PyResult<PyClassInitializer<Self>> {
-        Self::build(py, points, order, closed, false)
+        Self::build(py, points, order, closed, interpolate)
     }
 
-    /// LLCurve.interpolate(points, order=5, closed=False): the interpolating LL curve, through
+    /// LLCurve.interpolate(points, order=3, closed=False): the interpolating LL curve, through
     /// every point at its node t_i = i/(K+1) (an O(K) banded solve).
     #[staticmethod]
-    #[pyo3(signature = (points, order = 5, closed = false))]
+    #[pyo3(signature = (points, order = DEFAULT_ORDER as i64, closed = false))]
+    #[pyo3(text_signature = "(points, order=3, closed=False)")]
     fn interpolate(
         py: Python<'_>,
         points: &Bound<'_, PyAny>,
@@ -106,17 +122,24 @@ impl PyLlCurve {
 /// The LL approximation of a grid of points: a C^L surface that never oscillates more than its
 /// grid (the tensor product of LL curves).
 ///
-/// LLSurface(grid, order=5, closed_u=False, closed_v=False): grid (nu, nv, d), rows along u.
-/// Node (i, j) sits at (i/(Ku+1), j/(Kv+1)). Use LLSurface.interpolate for a surface through
-/// every grid point.
+/// LLSurface(grid, order=3, closed_u=False, closed_v=False, interpolate=False): grid
+/// (nu, nv, d), rows along u. Node (i, j) sits at (i/(Ku+1), j/(Kv+1)). interpolate=True (or
+/// LLSurface.interpolate) gives the surface through every grid point. The defaults are the
+/// command line's (karkas surface ll).
 #[pyclass(extends = PySurface, module = "karkas", name = "LLSurface", frozen)]
 pub struct PyLlSurface {
     /// The order L (the surface is C^L).
     #[pyo3(get)]
-    order: usize,
+    pub(crate) order: usize,
     /// True for the interpolating variant.
     #[pyo3(get)]
-    interpolating: bool,
+    pub(crate) interpolating: bool,
+    /// The grid given, row-major (for pickling and the default section cells).
+    pub(crate) grid: FlatPoints,
+    /// The grid's rows and columns.
+    pub(crate) shape: (usize, usize),
+    /// Closed in u, in v (for pickling).
+    pub(crate) closed: (bool, bool),
 }
 
 impl PyLlSurface {
@@ -142,6 +165,10 @@ impl PyLlSurface {
             .map_err(library_error)?;
             (grid.rows(), grid.cols(), Arc::new(WrappedSurface::<_, D>(surface)))
         });
+        let given = FlatPoints {
+            coords: g.flat().into_owned(),
+            dim,
+        };
         let description = format!(
             "<karkas.LLSurface {}order={order}, closed_u={}, closed_v={}, {rows}x{cols} grid in {dim}-D",
             variant(interpolating),
@@ -153,6 +180,9 @@ impl PyLlSurface {
                 PyLlSurface {
                     order,
                     interpolating,
+                    grid: given,
+                    shape: (rows, cols),
+                    closed: (closed_u, closed_v),
                 },
             ),
         )
@@ -162,21 +192,24 @@ impl PyLlSurface {
 #[pymethods]
 impl PyLlSurface {
     #[new]
-    #[pyo3(signature = (grid, order = 5, closed_u = false, closed_v = false))]
+    #[pyo3(signature = (grid, order = DEFAULT_ORDER as i64, closed_u = false, closed_v = false, interpolate = false))]
+    #[pyo3(text_signature = "(grid, order=3, closed_u=False, closed_v=False, interpolate=False)")]
     fn py_new(
         py: Python<'_>,
         grid: &Bound<'_, PyAny>,
         order: i64,
         closed_u: bool,
         closed_v: bool,
+        interpolate: bool,
     ) -> PyResult<PyClassInitializer<Self>> {
-        Self::build(py, grid, order, closed_u, closed_v, false)
+        Self::build(py, grid, order, closed_u, closed_v, interpolate)
     }
 
-    /// LLSurface.interpolate(grid, order=5, closed_u=False, closed_v=False): the interpolating
+    /// LLSurface.interpolate(grid, order=3, closed_u=False, closed_v=False): the interpolating
     /// LL surface, through every grid point at its node.
     #[staticmethod]
-    #[pyo3(signature = (grid, order = 5, closed_u = false, closed_v = false))]
+    #[pyo3(signature = (grid, order = DEFAULT_ORDER as i64, closed_u = false, closed_v = false))]
+    #[pyo3(text_signature = "(grid, order=3, closed_u=False, closed_v=False)")]
     fn interpolate(
         py: Python<'_>,
         grid: &Bound<'_, PyAny>,
