@@ -71,9 +71,13 @@ class Curve:
 class LLCurve(Curve):
     """The LL approximation of a support polygon (points (n, d), d in {2, 3})."""
 
-    def __init__(self, points: ArrayLike, order: int = 5, closed: bool = False) -> None: ...
+    def __init__(
+        self, points: ArrayLike, order: int = 3, closed: bool = False, interpolate: bool = False
+    ) -> None:
+        """The defaults are those of karkas curve ll."""
+    def __reduce__(self) -> Tuple[object, ...]: ...
     @staticmethod
-    def interpolate(points: ArrayLike, order: int = 5, closed: bool = False) -> "LLCurve":
+    def interpolate(points: ArrayLike, order: int = 3, closed: bool = False) -> "LLCurve":
         """The interpolating LL curve: through every point at t_i = i/(K+1)."""
     @property
     def order(self) -> int: ...
@@ -93,7 +97,9 @@ class CubicSpline(Curve):
         bc: Optional[Bc] = None,
     ) -> None:
         """bc: 'not-a-knot' (default), 'natural', 'periodic' or ('clamped', d0, d1);
-        parameterization: 'uniform', 'chord', 'centripetal' (ignored when t is given)."""
+        parameterization: 'uniform', 'chord' (also 'chord-length', 'chordlength'),
+        'centripetal' (ignored when t is given)."""
+    def __reduce__(self) -> Tuple[object, ...]: ...
     @property
     def knots(self) -> Floats: ...
     @property
@@ -108,6 +114,9 @@ class HermiteSpline(Curve):
     rms_distance: float
     jump_sum: float
     tolerance_met: Optional[bool]
+    def __init__(self, knots: ArrayLike, values: ArrayLike, derivatives: ArrayLike) -> None:
+        """The spline with these values and derivatives at the knots (no fit statistics)."""
+    def __reduce__(self) -> Tuple[object, ...]: ...
     @property
     def knots(self) -> Floats: ...
     @property
@@ -126,9 +135,10 @@ def fit_curve(
     eps: Optional[float] = None,
     pin_ends: bool = False,
     corners: Optional[Sequence[float]] = None,
-    fairness: Optional[float] = None,
+    fairness: float = 3e-11,
 ) -> HermiteSpline:
-    """Fits points (n, d) with a C^1 cubic Hermite spline; give knots (count or array) or tolerance."""
+    """Fits points (n, d) with a C^1 cubic Hermite spline; give knots (count or array) or
+    tolerance. The options and defaults are those of karkas curve fit."""
 
 class Surface:
     """Base class of every surface: S(u, v, grid=True) -> points."""
@@ -170,12 +180,27 @@ class LLSurface(Surface):
     """The LL approximation of a grid (nu, nv, d)."""
 
     def __init__(
-        self, grid: ArrayLike, order: int = 5, closed_u: bool = False, closed_v: bool = False
-    ) -> None: ...
+        self,
+        grid: ArrayLike,
+        order: int = 3,
+        closed_u: bool = False,
+        closed_v: bool = False,
+        interpolate: bool = False,
+    ) -> None:
+        """The defaults are those of karkas surface ll."""
+    def __reduce__(self) -> Tuple[object, ...]: ...
     @staticmethod
     def interpolate(
-        grid: ArrayLike, order: int = 5, closed_u: bool = False, closed_v: bool = False
+        grid: ArrayLike, order: int = 3, closed_u: bool = False, closed_v: bool = False
     ) -> "LLSurface": ...
+    def section(  # type: ignore[override]
+        self,
+        normal: Sequence[float],
+        offset: float,
+        tolerance: Optional[float] = None,
+        cells: Optional[Tuple[int, int]] = None,
+    ) -> "list[SectionCurve]":
+        """As Surface.section; cells=None: 2 per grid line, at least 16 (karkas section)."""
     @property
     def order(self) -> int: ...
     @property
@@ -191,7 +216,9 @@ class BicubicSurface(Surface):
         closed_u: bool = False,
         closed_v: bool = False,
     ) -> None:
-        """parameterization: 'uniform', 'chord', 'averaged-chord', 'centripetal'."""
+        """parameterization (karkas surface bicubic --param): 'uniform', 'chord', 'averaged'
+        (also 'averaged-chord'), 'centripetal'."""
+    def __reduce__(self) -> Tuple[object, ...]: ...
     @staticmethod
     def from_knots(
         grid: ArrayLike,
@@ -209,6 +236,7 @@ class DiscreteSpline:
     """A closed discrete curve: N = m n periodic values of a discrete spline of order r."""
 
     def __init__(self, poles: ArrayLike, order: int = 3, n: int = 10) -> None: ...
+    def __reduce__(self) -> Tuple[object, ...]: ...
     @staticmethod
     def interpolate(nodes: ArrayLike, order: int = 3, n: int = 10) -> "DiscreteSpline": ...
     def values(self, out: Optional[Floats] = None) -> Floats:
@@ -228,8 +256,10 @@ class TubeSurface:
     """A closed tube through a skeleton of closed discrete curves."""
 
     def __init__(
-        self, along: ArrayLike, across: ArrayLike, n1: int, n2: int, r1: int = 3, r2: int = 3
-    ) -> None: ...
+        self, along: ArrayLike, across: ArrayLike, n1: int, n2: int, r1: int = 2, r2: int = 2
+    ) -> None:
+        """The defaults are those of karkas surface dps-tube."""
+    def __reduce__(self) -> Tuple[object, ...]: ...
     def values(self) -> Floats:
         """c(p, q), (N1, N2, d)."""
     def closed_grid(self) -> Floats:
@@ -240,6 +270,7 @@ class SectionCurve:
 
     closed: bool
     length: float
+    def __reduce__(self) -> Tuple[object, ...]: ...
     @property
     def points(self) -> Floats:
         """(n, d)."""
@@ -254,8 +285,9 @@ class CoonsSurface(Surface):
     kind: str
     def __init__(
         self,
-        v_curves: Sequence[ArrayLike],
+        *,
         u_curves: Sequence[ArrayLike],
+        v_curves: Sequence[ArrayLike],
         kind: str = "gordon-spline",
         u_derivs: Optional[Sequence[ArrayLike]] = None,
         v_derivs: Optional[Sequence[ArrayLike]] = None,
@@ -263,12 +295,15 @@ class CoonsSurface(Surface):
         crossing_tolerance: float = 1e-6,
         tolerance: float = 1e-4,
     ) -> None:
-        """kind: 'bilinear', 'bicubic', 'gordon', 'gordon-spline', 'composite'."""
+        """kind: 'bilinear', 'bicubic', 'gordon', 'gordon-spline', 'composite'; u_curves and
+        v_curves by keyword, as karkas surface coons's --u-curves and --v-curves."""
+    def __reduce__(self) -> Tuple[object, ...]: ...
 
 class ImplicitSurface:
     """An implicit surface F(x, y, z) = 0 given as an expression."""
 
     def __init__(self, expression: str) -> None: ...
+    def __reduce__(self) -> Tuple[object, ...]: ...
     @property
     def expression(self) -> str: ...
     def value(self, points: ArrayLike) -> Floats: ...
@@ -345,6 +380,9 @@ def read_mesh(path: FilePath) -> Tuple[Floats, NDArray[np.int64]]:
 def set_max_input_bytes(nbytes: int) -> None:
     """The most memory one read may keep, in bytes, for every reader of the process (default
     2 GiB, as the command line's --max-memory); a larger input raises FileFormatError."""
+
+def _restore(name: str, args: Tuple[object, ...], kwargs: Optional[dict] = None) -> object:
+    """Unpickling: calls the karkas constructor name (e.g. 'DiscreteSpline.interpolate')."""
 
 def max_input_bytes() -> int:
     """The most memory one read may keep, in bytes (see set_max_input_bytes)."""
