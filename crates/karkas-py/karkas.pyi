@@ -315,17 +315,21 @@ class ImplicitSurface:
         self,
         start: Sequence[float],
         nodes: Tuple[int, int],
-        steps: Tuple[float, float],
+        steps: Optional[Tuple[float, float]] = None,
         directions: str = "principal",
         angle: float = 0.0,
         plane_normal: Optional[Sequence[float]] = None,
         closed_v: bool = False,
         substeps: int = 32,
+        *,
+        step: Union[None, float, Tuple[float, float]] = None,
+        turn: Optional[float] = None,
     ) -> Floats:
         """A node grid (nu, nv, 3) on F = 0 along lines of curvature (or turned nets)."""
 
-def hausdorff(a: ArrayLike, b: ArrayLike) -> dict:
-    """Two-sided Hausdorff distance of point sets (n, 3), (m, 3): distance, forward, backward."""
+def hausdorff(a: ArrayLike, b: Optional[ArrayLike] = None, expr: Optional[str] = None) -> dict:
+    """Two-sided Hausdorff distance of point sets (n, 3), (m, 3), or of a and the patch of
+    F = expr = 0 it covers: distance, forward, backward."""
 
 def hausdorff_to_implicit(
     surface: Surface,
@@ -340,6 +344,7 @@ def vary(
     fixed: Optional[ArrayLike] = None,
     penalty: Optional[float] = None,
     scale_with_total: bool = False,
+    total: Optional[float] = None,
 ) -> Floats:
     """The least change of matrix with the given row and column sums (LL surface variation)."""
 

@@ -94,20 +94,44 @@ impl PyImplicitSurface {
     /// first) along two direction fields: 'principal' (lines of curvature), 'turned' (both
     /// turned by angle), 'turned-u' (u lines turned), 'plane-sections' (v lines in planes
     /// normal to plane_normal). nodes = (nu, nv); steps = arc lengths between nodes.
-    #[pyo3(signature = (start, nodes, steps, directions = "principal", angle = 0.0, plane_normal = None, closed_v = false, substeps = 32))]
+    /// The command line's names work too (karkas surface implicit): step= (H or (HU, HV)) for
+    /// steps, turn= (degrees; 0 is 'principal') for directions='turned' with angle in radians.
+    #[pyo3(signature = (start, nodes, steps = None, directions = "principal", angle = 0.0, plane_normal = None, closed_v = false, substeps = 32, *, step = None, turn = None))]
     #[allow(clippy::too_many_arguments)]
     fn trace_net<'py>(
         &self,
         py: Python<'py>,
         start: Vec<f64>,
         nodes: (i64, i64),
-        steps: (f64, f64),
+        steps: Option<(f64, f64)>,
         directions: &str,
         angle: f64,
         plane_normal: Option<Vec<f64>>,
         closed_v: bool,
         substeps: i64,
+        step: Option<&Bound<'py, PyAny>>,
+        turn: Option<f64>,
     ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        let steps = match (steps, step) {
+            (Some(s), None) => s,
+            (None, Some(h)) => match h.extract::<f64>() {
+                Ok(h) => (h, h),
+                Err(_) => h.extract::<(f64, f64)>().map_err(|_| {
+                    OptionError::new_err("step must be a number H or a pair (HU, HV)")
+                })?,
+            },
+            _ => return Err(OptionError::new_err("give steps or step, one of them")),
+        };
+        let (directions, angle) = match turn {
+            None => (directions, angle),
+            Some(_) if directions != "principal" || angle != 0.0 => {
+                return Err(OptionError::new_err(
+                    "turn is the angle of directions='turned' in degrees: give turn, or directions and angle",
+                ))
+            }
+            Some(0.0) => ("principal", 0.0),
+            Some(t) => ("turned", t.to_radians()),
+        };
         let directions = match directions {
             "principal" => NetDirections::Principal,
             "turned" => NetDirections::Turned { angle },

@@ -4,7 +4,8 @@
 use std::sync::Arc;
 
 use karkas::ll::{
-    vary as ll_vary, FixedEntries, LlCurve, LlSurface, SumTargets, VariationOptions, DEFAULT_ORDER,
+    complete_sums, vary as ll_vary, FixedEntries, LlCurve, LlSurface, SumTargets, SumsProblem,
+    VariationOptions, DEFAULT_ORDER,
 };
 use karkas::Grid;
 use numpy::{AllowTypeChange, PyArrayDyn, PyArrayLike2, PyUntypedArrayMethods};
@@ -15,7 +16,7 @@ use crate::convert::{
     PointsArray,
 };
 use crate::curve::PyCurve;
-use crate::errors::library_error;
+use crate::errors::{library_error, OptionError};
 use crate::surface::PySurface;
 use crate::wrapper::{CurveImpl, SurfaceImpl, Wrapped, WrappedSurface};
 
@@ -221,12 +222,14 @@ impl PyLlSurface {
     }
 }
 
-/// vary(matrix, row_sums, column_sums, fixed=None, penalty=None, scale_with_total=False) ->
-/// (n, m): the LL paper's surface variation: the least change of matrix (n, m) whose row and
-/// column sums become the given ones, entries where fixed (bool (n, m)) is true held exactly
-/// (or at penalty times the cost).
+/// vary(matrix, row_sums, column_sums, fixed=None, penalty=None, scale_with_total=False,
+/// total=None) -> (n, m): the LL paper's surface variation: the least change of matrix (n, m)
+/// whose row and column sums become the given ones, entries where fixed (bool (n, m)) is true
+/// held exactly (or at penalty times the cost). With total (the new sum Q), row_sums and
+/// column_sums may leave out their last sum, which takes the rest (as karkas vary --total).
 #[pyfunction]
-#[pyo3(signature = (matrix, row_sums, column_sums, fixed = None, penalty = None, scale_with_total = false))]
+#[pyo3(signature = (matrix, row_sums, column_sums, fixed = None, penalty = None, scale_with_total = false, total = None))]
+#[allow(clippy::too_many_arguments)]
 pub fn vary<'py>(
     py: Python<'py>,
     matrix: PyArrayLike2<'py, f64, AllowTypeChange>,
@@ -235,8 +238,28 @@ pub fn vary<'py>(
     fixed: Option<PyArrayLike2<'py, bool, AllowTypeChange>>,
     penalty: Option<f64>,
     scale_with_total: bool,
+    total: Option<f64>,
 ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
     let (n, m) = (matrix.shape()[0], matrix.shape()[1]);
+    let complete = |name: &str, given: &[f64], lines: usize| {
+        complete_sums(given, lines, total).map_err(|problem| {
+            OptionError::new_err(match problem {
+                SumsProblem::TotalMismatch { lines, sum, total } => {
+                    format!("{name}: the {lines} sums add up to {sum}, not to total {total}")
+                }
+                SumsProblem::NoTotal { given, lines } => format!(
+                    "{name}: {given} sums given for {lines} lines; give all {lines}, or {} with total",
+                    lines - 1
+                ),
+                SumsProblem::WrongCount { given, lines } => format!(
+                    "{name}: {lines} sums are needed (or {} with total), got {given}",
+                    lines.saturating_sub(1)
+                ),
+            })
+        })
+    };
+    let row_sums = complete("row_sums", &row_sums, n)?;
+    let column_sums = complete("column_sums", &column_sums, m)?;
     let values: Vec<f64> = matrix.as_array().iter().copied().collect();
     let z = Grid::from_row_major(n, m, values).map_err(library_error)?;
     let fixed = match fixed {

@@ -278,11 +278,23 @@ def test_surface_implicit(tmp_path, turn):
     header, rows = read_csv(out)
     assert header == ["i", "j", "x", "y", "z"]
     directions = "principal" if turn == 0 else "turned"
-    grid = karkas.ImplicitSurface(expr).trace_net(
-        [1.2, 0.7, 0.3], (5, 6), (0.1, 0.15), directions=directions, angle=math.radians(turn)
-    )
+    surface = karkas.ImplicitSurface(expr)
+    grid = surface.trace_net([1.2, 0.7, 0.3], (5, 6), (0.1, 0.15), directions=directions, angle=math.radians(turn))
     i, j = rows[:, 0].astype(int), rows[:, 1].astype(int)
     close(rows[:, 2:], grid[i, j])
+    # The command line's names.
+    same = surface.trace_net([1.2, 0.7, 0.3], (5, 6), step=(0.1, 0.15), turn=turn)
+    close(rows[:, 2:], same[i, j])
+
+
+def test_surface_implicit_closed_v_and_one_step(tmp_path):
+    out = tmp_path / "out.csv"
+    expr = "x^2 + y^2 - 1 + 0*z"
+    cli("surface", "implicit", "--expr", expr, "--start", "1,0,0", "--nodes", "4,9", "--step", "0.2",
+        "--closed-v", "-o", out)
+    header, rows = read_csv(out)
+    grid = karkas.ImplicitSurface(expr).trace_net([1.0, 0, 0], (4, 9), step=0.2, closed_v=True)
+    close(rows[:, 2:], grid[rows[:, 0].astype(int), rows[:, 1].astype(int)])
 
 
 # ---------------------------------------------------------------- section, hausdorff, vary
@@ -310,6 +322,15 @@ def test_section(tmp_path, grid_file, options, tolerance, cells):
         assert math.isclose(block[-1, 1], piece.length, rel_tol=1e-12)
 
 
+def test_hausdorff_to_an_implicit_surface(tmp_path, wavy_file):
+    expr = "x^2 + y^2 + z^2/4 - 1"
+    lines = cli("hausdorff", wavy_file, "--expr", expr).splitlines()
+    h = karkas.hausdorff(karkas.read_curve(wavy_file), expr=expr)
+    assert float(lines[0].split()[1]) == h["distance"]
+    for line, side in zip(lines[1:], ("forward", "backward")):
+        assert float(line.split()[3]) == h[side]["distance"], line
+
+
 def test_hausdorff(tmp_path, wavy_file, grid_file):
     text = cli("hausdorff", wavy_file, grid_file)
     lines = text.splitlines()
@@ -326,8 +347,8 @@ def test_hausdorff(tmp_path, wavy_file, grid_file):
         close([float(x) for x in q.split(",")], h[side]["to"])
 
 
-@pytest.mark.parametrize("penalty", [None, 50.0])
-def test_vary(tmp_path, grid_file, penalty):
+@pytest.mark.parametrize("penalty, with_total, scale", [(None, False, False), (50.0, False, False), (None, True, True)])
+def test_vary(tmp_path, grid_file, penalty, with_total, scale):
     grid = karkas.read_grid(grid_file)
     z = grid[..., 2]
     n, m = z.shape
@@ -341,11 +362,16 @@ def test_vary(tmp_path, grid_file, penalty):
     out = tmp_path / "out.csv"
     extra = [] if penalty is None else ["--penalty", penalty]
     numbers = lambda xs: ",".join("%.17g" % x for x in xs)  # noqa: E731
+    kwargs = {}
+    if with_total:  # the last row and column sums left to the total
+        rows_sum, cols_sum = rows_sum[:-1], cols_sum[:-1]
+        extra += ["--total", "%.17g" % total, "--scale-with-total"]
+        kwargs = dict(total=float("%.17g" % total), scale_with_total=scale)
     cli("vary", grid_file, "--coord", "z", "--rows", numbers(rows_sum),
         "--cols", numbers(cols_sum), "--fixed", mask, "-o", out, *extra)
     header, rows = read_csv(out)
     assert header == ["i", "j", "x", "y", "z"]
-    varied = karkas.vary(z, rows_sum, cols_sum, fixed=fixed, penalty=penalty)
+    varied = karkas.vary(z, rows_sum, cols_sum, fixed=fixed, penalty=penalty, **kwargs)
     i, j = rows[:, 0].astype(int), rows[:, 1].astype(int)
     close(rows[:, 4], varied[i, j])
     close(rows[:, 2:4], grid[i, j, :2])
