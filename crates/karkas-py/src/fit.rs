@@ -13,6 +13,34 @@ use crate::wrapper::{CurveImpl, Wrapped};
 
 /// A C^1 cubic Hermite spline (a cubic spline of defect 2) on [0, 1], as returned by
 /// fit_curve: values and derivatives at its knots.
+///
+/// HermiteSpline(knots, values, derivatives) builds one with these values and first
+/// derivatives at the knots 0 = T_1 < ... < T_N = 1.
+///
+/// Parameters
+/// ----------
+/// knots : array_like, shape (N,)
+///     Strictly increasing, from 0 to 1.
+/// values, derivatives : array_like, shape (N, d)
+///     The points R_L and the derivatives H_L at the knots, d in {2, 3}.
+///
+/// Returns
+/// -------
+/// HermiteSpline
+///     A spline that is not a fit: max_distance, rms_distance and jump_sum are NaN,
+///     tolerance_met is None, parameters and distances are empty.
+///
+/// Raises
+/// ------
+/// KnotsError, PointsError
+///     For bad knots, or values and derivatives of the wrong shape.
+///
+/// Examples
+/// --------
+/// >>> import karkas
+/// >>> c = karkas.HermiteSpline([0.0, 1.0], [[0.0, 0.0], [1.0, 0.0]], [[1.0, 0.0], [1.0, 0.0]])
+/// >>> c(0.5).tolist()
+/// [0.5, 0.0]
 #[pyclass(extends = PyCurve, module = "karkas", name = "HermiteSpline", frozen)]
 pub struct PyHermiteSpline {
     /// The knots 0 = T_1 < ... < T_N = 1.
@@ -255,33 +283,7 @@ impl FitStats {
 
 #[pymethods]
 impl PyHermiteSpline {
-    /// HermiteSpline(knots, values, derivatives): the C^1 cubic Hermite spline with these
-    /// values and first derivatives at the knots 0 = T_1 < ... < T_N = 1.
-    ///
-    /// Parameters
-    /// ----------
-    /// knots : array_like, shape (N,)
-    ///     Strictly increasing, from 0 to 1.
-    /// values, derivatives : array_like, shape (N, d)
-    ///     The points R_L and the derivatives H_L at the knots, d in {2, 3}.
-    ///
-    /// Returns
-    /// -------
-    /// HermiteSpline
-    ///     A spline that is not a fit: max_distance, rms_distance and jump_sum are NaN,
-    ///     tolerance_met is None, parameters and distances are empty.
-    ///
-    /// Raises
-    /// ------
-    /// KnotsError, PointsError
-    ///     For bad knots, or values and derivatives of the wrong shape.
-    ///
-    /// Examples
-    /// --------
-    /// >>> import karkas
-    /// >>> c = karkas.HermiteSpline([0.0, 1.0], [[0.0, 0.0], [1.0, 0.0]], [[1.0, 0.0], [1.0, 0.0]])
-    /// >>> c(0.5).tolist()
-    /// [0.5, 0.0]
+    /// The spline of knots, values and derivatives, without fit statistics.
     #[new]
     fn py_new(
         py: Python<'_>,
