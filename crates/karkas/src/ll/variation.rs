@@ -475,3 +475,27 @@ impl Blocks {
         Ok(())
     }
 }
+
+#[cfg(test)]
+mod sums_tests {
+    use super::*;
+
+    #[test]
+    fn complete_sums_takes_all_or_all_but_the_last_with_the_total() {
+        assert_eq!(complete_sums(&[1.0, 2.0], 2, None), Ok(vec![1.0, 2.0]));
+        assert_eq!(complete_sums(&[1.0, 2.0], 2, Some(3.0)), Ok(vec![1.0, 2.0]));
+        assert_eq!(complete_sums(&[1.0], 2, Some(5.0)), Ok(vec![1.0, 4.0]));
+        assert_eq!(
+            complete_sums(&[1.0], 2, None),
+            Err(SumsProblem::NoTotal { given: 1, lines: 2 })
+        );
+        assert_eq!(
+            complete_sums(&[1.0], 3, Some(1.0)),
+            Err(SumsProblem::WrongCount { given: 1, lines: 3 })
+        );
+        assert!(matches!(
+            complete_sums(&[1.0, 2.0], 2, Some(4.0)),
+            Err(SumsProblem::TotalMismatch { lines: 2, .. })
+        ));
+    }
+}
