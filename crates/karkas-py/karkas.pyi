@@ -169,9 +169,13 @@ class CurveDerivative(Curve):
 class LLCurve(Curve):
     """The LL approximation of a support polygon (points (n, d), d in {2, 3})."""
 
-    def __new__(cls, points: ArrayLike, order: int = 5, closed: bool = False) -> Self: ...
+    def __new__(
+        cls, points: ArrayLike, order: int = 3, closed: bool = False, interpolate: bool = False
+    ) -> Self:
+        """The defaults are those of karkas curve ll."""
+    def __reduce__(self) -> Tuple[object, ...]: ...
     @staticmethod
-    def interpolate(points: ArrayLike, order: int = 5, closed: bool = False) -> LLCurve:
+    def interpolate(points: ArrayLike, order: int = 3, closed: bool = False) -> LLCurve:
         """The interpolating LL curve: through every point at t_i = i/(K+1)."""
     @property
     def order(self) -> int: ...
@@ -190,7 +194,11 @@ class CubicSpline(Curve):
         t: Optional[ArrayLike] = None,
         parameterization: str = "chord",
         bc: Optional[_Bc] = None,
-    ) -> Self: ...
+    ) -> Self:
+        """bc: 'not-a-knot' (default), 'natural', 'periodic' or ('clamped', d0, d1);
+        parameterization: 'uniform', 'chord' (also 'chord-length', 'chordlength'),
+        'centripetal' (ignored when t is given)."""
+    def __reduce__(self) -> Tuple[object, ...]: ...
     @property
     def knots(self) -> _Floats: ...
     @property
@@ -202,6 +210,9 @@ class CubicSpline(Curve):
 class HermiteSpline(Curve):
     """A C^1 cubic Hermite spline on [0, 1], the result of fit_curve (no constructor)."""
 
+    def __new__(cls, knots: ArrayLike, values: ArrayLike, derivatives: ArrayLike) -> Self:
+        """The spline with these values and derivatives at the knots (no fit statistics)."""
+    def __reduce__(self) -> Tuple[object, ...]: ...
     @property
     def knots(self) -> _Floats: ...
     @property
@@ -228,9 +239,10 @@ def fit_curve(
     eps: Optional[float] = None,
     pin_ends: bool = False,
     corners: Optional[Sequence[float]] = None,
-    fairness: Optional[float] = None,
+    fairness: float = 3e-11,
 ) -> HermiteSpline:
-    """Fits points (n, d) with a C^1 cubic Hermite spline; give knots (count or array) or tolerance."""
+    """Fits points (n, d) with a C^1 cubic Hermite spline; give knots (count or array) or
+    tolerance. The options and defaults are those of karkas curve fit."""
 
 @disjoint_base
 class Surface:
@@ -314,12 +326,27 @@ class LLSurface(Surface):
     """The LL approximation of a grid (nu, nv, d)."""
 
     def __new__(
-        cls, grid: ArrayLike, order: int = 5, closed_u: bool = False, closed_v: bool = False
-    ) -> Self: ...
+        cls,
+        grid: ArrayLike,
+        order: int = 3,
+        closed_u: bool = False,
+        closed_v: bool = False,
+        interpolate: bool = False,
+    ) -> Self:
+        """The defaults are those of karkas surface ll."""
+    def __reduce__(self) -> Tuple[object, ...]: ...
     @staticmethod
     def interpolate(
-        grid: ArrayLike, order: int = 5, closed_u: bool = False, closed_v: bool = False
+        grid: ArrayLike, order: int = 3, closed_u: bool = False, closed_v: bool = False
     ) -> LLSurface: ...
+    def section(  # type: ignore[override]
+        self,
+        normal: Sequence[float],
+        offset: float,
+        tolerance: Optional[float] = None,
+        cells: Optional[Tuple[int, int]] = None,
+    ) -> "list[SectionCurve]":
+        """As Surface.section; cells=None: 2 per grid line, at least 16 (karkas section)."""
     @property
     def order(self) -> int: ...
     @property
@@ -335,7 +362,10 @@ class BicubicSurface(Surface):
         parameterization: str = "chord",
         closed_u: bool = False,
         closed_v: bool = False,
-    ) -> Self: ...
+    ) -> Self:
+        """parameterization (karkas surface bicubic --param): 'uniform', 'chord', 'averaged'
+        (also 'averaged-chord'), 'centripetal'."""
+    def __reduce__(self) -> Tuple[object, ...]: ...
     @staticmethod
     def from_knots(
         grid: ArrayLike,
@@ -354,6 +384,7 @@ class DiscreteSpline:
     """A closed discrete curve: N = m n periodic values of a discrete spline of order r."""
 
     def __new__(cls, poles: ArrayLike, order: int = 3, n: int = 10) -> Self: ...
+    def __reduce__(self) -> Tuple[object, ...]: ...
     @staticmethod
     def interpolate(nodes: ArrayLike, order: int = 3, n: int = 10) -> DiscreteSpline: ...
     def values(self, out: Optional[_Floats] = None) -> _Floats:
@@ -374,8 +405,10 @@ class TubeSurface:
     """A closed tube through a skeleton of closed discrete curves."""
 
     def __new__(
-        cls, along: ArrayLike, across: ArrayLike, n1: int, n2: int, r1: int = 3, r2: int = 3
-    ) -> Self: ...
+        cls, along: ArrayLike, across: ArrayLike, n1: int, n2: int, r1: int = 2, r2: int = 2
+    ) -> Self:
+        """The defaults are those of karkas surface dps-tube."""
+    def __reduce__(self) -> Tuple[object, ...]: ...
     def values(self) -> _Floats:
         """c(p, q), (N1, N2, d)."""
     def closed_grid(self) -> _Floats:
@@ -385,6 +418,7 @@ class TubeSurface:
 class SectionCurve:
     """One connected piece of a plane section: a polyline on the surface (no constructor)."""
 
+    def __reduce__(self) -> Tuple[object, ...]: ...
     @property
     def closed(self) -> bool: ...
     @property
@@ -403,8 +437,9 @@ class CoonsSurface(Surface):
 
     def __new__(
         cls,
-        v_curves: Sequence[ArrayLike],
+        *,
         u_curves: Sequence[ArrayLike],
+        v_curves: Sequence[ArrayLike],
         kind: str = "gordon-spline",
         u_derivs: Optional[Sequence[ArrayLike]] = None,
         v_derivs: Optional[Sequence[ArrayLike]] = None,
@@ -412,7 +447,9 @@ class CoonsSurface(Surface):
         crossing_tolerance: float = 1e-6,
         tolerance: float = 1e-4,
     ) -> Self:
-        """kind: 'bilinear', 'bicubic', 'gordon', 'gordon-spline', 'composite'."""
+        """kind: 'bilinear', 'bicubic', 'gordon', 'gordon-spline', 'composite'; u_curves and
+        v_curves by keyword, as karkas surface coons's --u-curves and --v-curves."""
+    def __reduce__(self) -> Tuple[object, ...]: ...
     @property
     def kind(self) -> str: ...
 
@@ -421,6 +458,7 @@ class ImplicitSurface:
     """An implicit surface F(x, y, z) = 0 given as an expression."""
 
     def __new__(cls, expression: str) -> Self: ...
+    def __reduce__(self) -> Tuple[object, ...]: ...
     @property
     def expression(self) -> str: ...
     def value(self, points: ArrayLike) -> _Floats: ...
@@ -432,17 +470,21 @@ class ImplicitSurface:
         self,
         start: Sequence[float],
         nodes: Tuple[int, int],
-        steps: Tuple[float, float],
+        steps: Optional[Tuple[float, float]] = None,
         directions: str = "principal",
         angle: float = 0.0,
         plane_normal: Optional[Sequence[float]] = None,
         closed_v: bool = False,
         substeps: int = 32,
+        *,
+        step: Union[None, float, Tuple[float, float]] = None,
+        turn: Optional[float] = None,
     ) -> _Floats:
         """A node grid (nu, nv, 3) on F = 0 along lines of curvature (or turned nets)."""
 
-def hausdorff(a: ArrayLike, b: ArrayLike) -> dict:
-    """Two-sided Hausdorff distance of point sets (n, 3), (m, 3): distance, forward, backward."""
+def hausdorff(a: ArrayLike, b: Optional[ArrayLike] = None, expr: Optional[str] = None) -> dict:
+    """Two-sided Hausdorff distance of point sets (n, 3), (m, 3), or of a and the patch of
+    F = expr = 0 it covers: distance, forward, backward."""
 
 def hausdorff_to_implicit(
     surface: Surface,
@@ -457,6 +499,7 @@ def vary(
     fixed: Optional[ArrayLike] = None,
     penalty: Optional[float] = None,
     scale_with_total: bool = False,
+    total: Optional[float] = None,
 ) -> _Floats:
     """The least change of matrix with the given row and column sums (LL surface variation)."""
 
@@ -524,6 +567,9 @@ def export(
 def set_max_input_bytes(nbytes: int) -> None:
     """The most memory one read may keep, in bytes, for every reader of the process (default
     2 GiB, as the command line's --max-memory); a larger input raises FileFormatError."""
+
+def _restore(name: str, args: Tuple[object, ...], kwargs: Optional[dict] = None) -> object:
+    """Unpickling: calls the karkas constructor name (e.g. 'DiscreteSpline.interpolate')."""
 
 def max_input_bytes() -> int:
     """The most memory one read may keep, in bytes (see set_max_input_bytes)."""

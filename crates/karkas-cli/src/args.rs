@@ -99,7 +99,7 @@ pub struct ClosedUv {
 #[derive(Debug, Args)]
 pub struct LlSurfaceOptions {
     /// LL order L (at least 1): the surface is C^L in each variable.
-    #[arg(long, default_value_t = 3)]
+    #[arg(long, default_value_t = karkas::ll::DEFAULT_ORDER)]
     pub order: usize,
     #[command(flatten)]
     pub closed: ClosedUv,

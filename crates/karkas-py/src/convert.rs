@@ -133,6 +133,12 @@ impl PointsArray<'_> {
 }
 
 impl GridArray<'_> {
+    /// The rows and columns `(nu, nv)`.
+    pub fn rows_cols(&self) -> (usize, usize) {
+        let shape = self.array.shape();
+        (shape[0], shape[1])
+    }
+
     /// The grid (rows along `u`) as karkas points.
     pub fn grid<const D: usize>(&self) -> PyResult<Grid<Point<D>>> {
         let shape = self.array.shape();

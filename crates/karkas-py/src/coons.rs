@@ -2,11 +2,13 @@
 
 use std::sync::Arc;
 
-use karkas::coons::{CoonsSurface, CurveFit, PointNetwork};
+use karkas::coons::{
+    CoonsKind, CoonsSurface, CurveFit, PointNetwork, CROSSING_TOLERANCE, POINT_NETWORK_TOLERANCE,
+};
 use karkas::Point;
 use pyo3::prelude::*;
 
-use crate::convert::{as_points, by_dim, check_dim, count, PointsArray};
+use crate::convert::{as_points, by_dim, check_dim, count, FlatPoints, PointsArray};
 use crate::errors::{library_error, OptionError, PointsError};
 use crate::surface::PySurface;
 use crate::wrapper::{SurfaceImpl, WrappedSurface};
@@ -48,7 +50,8 @@ fn first_dim(lists: &[Bound<'_, PyAny>], what: &str) -> PyResult<usize> {
 /// Each curve of the network is a ``(k, d)`` array of points, interpolated by a not-a-knot
 /// cubic spline (``fit='spline'``) or an interpolating LL curve (``fit=('ll', order)``); the
 /// surface spans the network. A family whose curves repeat their first point at the end is
-/// closed. Calling the surface is described in ``Surface``.
+/// closed. Calling the surface is described in ``Surface``. Both families are keyword-only
+/// arguments, named as ``karkas surface coons``'s ``--u-curves`` and ``--v-curves``.
 ///
 /// Outside the domain (the rule of every surface class, per direction): a closed direction
 /// wraps the parameter by its period; an open one continues the end polynomial pieces when
@@ -106,17 +109,49 @@ pub struct PyCoonsSurface {
     /// or ``'composite'``).
     #[pyo3(get)]
     kind: String,
+    /// What it was built from (for pickling).
+    pub(crate) input: CoonsInput,
+}
+
+/// The inputs of a Coons surface, for pickling.
+pub struct CoonsInput {
+    /// The u-curves and the v-curves.
+    pub curves: (Vec<FlatPoints>, Vec<FlatPoints>),
+    /// The cross-derivatives along the u-curves and along the v-curves.
+    pub derivs: Option<(Vec<FlatPoints>, Vec<FlatPoints>)>,
+    /// How the curves interpolate their points.
+    pub fit: CurveFit,
+    /// The crossing tolerance and the compatibility tolerance.
+    pub tolerances: (f64, f64),
+}
+
+/// The point arrays of a list (each (k, d)), copied.
+fn given(lists: &[Bound<'_, PyAny>], what: &str) -> PyResult<Vec<FlatPoints>> {
+    lists
+        .iter()
+        .enumerate()
+        .map(|(i, obj)| {
+            let pts = PointsArray::extract(obj, &format!("{what}[{i}]"))?;
+            Ok(FlatPoints {
+                coords: pts.flat().into_owned(),
+                dim: pts.dim(),
+            })
+        })
+        .collect()
 }
 
 #[pymethods]
 impl PyCoonsSurface {
     #[new]
-    #[pyo3(signature = (v_curves, u_curves, kind = "gordon-spline", u_derivs = None, v_derivs = None, fit = None, crossing_tolerance = 1e-6, tolerance = 1e-4))]
+    #[pyo3(signature = (*, u_curves, v_curves, kind = "gordon-spline", u_derivs = None, v_derivs = None, fit = None, crossing_tolerance = CROSSING_TOLERANCE, tolerance = POINT_NETWORK_TOLERANCE))]
+    #[pyo3(
+        text_signature = "(*, u_curves, v_curves, kind='gordon-spline', u_derivs=None, v_derivs=None, fit=None, crossing_tolerance=1e-06, tolerance=0.0001)"
+    )]
     #[allow(clippy::too_many_arguments)]
     fn py_new(
         py: Python<'_>,
-        v_curves: Vec<Bound<'_, PyAny>>,
         u_curves: Vec<Bound<'_, PyAny>>,
+        v_curves: Vec<Bound<'_, PyAny>>,
         kind: &str,
         u_derivs: Option<Vec<Bound<'_, PyAny>>>,
         v_derivs: Option<Vec<Bound<'_, PyAny>>>,
@@ -149,18 +184,16 @@ impl PyCoonsSurface {
                 }
             }
         };
-        let known = [
-            "bilinear",
-            "bicubic",
-            "gordon",
-            "gordon-spline",
-            "composite",
-        ];
-        if !known.contains(&kind) {
-            return Err(OptionError::new_err(format!(
-                "unknown kind {kind:?} (expected one of {known:?})"
-            )));
-        }
+        let kind: CoonsKind = kind.parse().map_err(library_error)?;
+        let input = CoonsInput {
+            curves: (given(&u_curves, "u_curves")?, given(&v_curves, "v_curves")?),
+            derivs: match (&u_derivs, &v_derivs) {
+                (Some(du), Some(dv)) => Some((given(du, "u_derivs")?, given(dv, "v_derivs")?)),
+                _ => None,
+            },
+            fit,
+            tolerances: (crossing_tolerance, tolerance),
+        };
         let dim = first_dim(&v_curves, "v_curves")?;
         let (inner, counts): (Arc<dyn SurfaceImpl>, (usize, usize)) = by_dim!(dim, D => {
             let v = point_lists::<D>(&v_curves, "v_curves")?;
@@ -176,30 +209,22 @@ impl PyCoonsSurface {
                     Some((du, dv)) => Some(network.cross_derivatives(dv, du)?),
                     None => None,
                 };
-                let net = network.network();
-                match kind {
-                    "bilinear" => CoonsSurface::bilinear(net, tolerance),
-                    "bicubic" => CoonsSurface::bicubic(net, cross.as_ref(), tolerance),
-                    "gordon" => CoonsSurface::gordon(net, tolerance),
-                    "composite" => CoonsSurface::composite(net, cross.as_ref(), tolerance),
-                    _ => CoonsSurface::gordon_spline(
-                        net,
-                        karkas::coons::SplineEnds::NotAKnot,
-                        tolerance,
-                    ),
-                }
+                kind.build(network.network(), cross.as_ref(), tolerance)
             })
             .map_err(library_error)?;
             (Arc::new(WrappedSurface::<_, D>(surface)) as Arc<dyn SurfaceImpl>, (v.len(), u.len()))
         });
         let description = format!(
-            "<karkas.CoonsSurface kind='{kind}', {} v-curves x {} u-curves in {dim}-D",
-            counts.0, counts.1
+            "<karkas.CoonsSurface kind='{}', {} u-curves x {} v-curves in {dim}-D",
+            kind.name(),
+            counts.1,
+            counts.0
         );
         Ok(
             PyClassInitializer::from(PySurface::new(inner, description)).add_subclass(
                 PyCoonsSurface {
-                    kind: kind.to_string(),
+                    kind: kind.name().to_string(),
+                    input,
                 },
             ),
         )

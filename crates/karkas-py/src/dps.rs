@@ -1,14 +1,14 @@
 //! Discrete periodic splines (Malozemov, Khorokhonov, Chashnikov): `DiscreteSpline` and
 //! `TubeSurface`.
 
-use karkas::dps::{DiscreteSpline, TubeSurface};
+use karkas::dps::{DiscreteSpline, TubeSurface, DEFAULT_ORDER, DEFAULT_STEP, DEFAULT_TUBE_ORDER};
 use karkas::{Grid, Point};
 use numpy::PyArrayDyn;
 use pyo3::prelude::*;
 
 use crate::convert::{
     as_points, as_points_mut, by_dim, check_dim, count, each, grid_to_array, maybe_detach,
-    output_array, points_to_array, variant, write_flat, ByDim, GridArray, PointsArray,
+    output_array, points_to_array, variant, write_flat, ByDim, FlatPoints, GridArray, PointsArray,
 };
 use crate::errors::{library_error, PointsError};
 
@@ -52,7 +52,9 @@ type AnySpline = ByDim<DiscreteSpline<2>, DiscreteSpline<3>>;
 #[pyclass(module = "karkas", name = "DiscreteSpline", frozen)]
 pub struct PyDiscreteSpline {
     spline: AnySpline,
-    interpolating: bool,
+    pub(crate) interpolating: bool,
+    /// The poles or nodes given (for pickling).
+    pub(crate) points: FlatPoints,
 }
 
 impl PyDiscreteSpline {
@@ -79,13 +81,19 @@ impl PyDiscreteSpline {
             .map_err(library_error)?;
             AnySpline::of(s)
         });
+        let points = FlatPoints {
+            coords: flat.into_owned(),
+            dim,
+        };
         Ok(PyDiscreteSpline {
             spline,
             interpolating,
+            points,
         })
     }
 
-    fn parts(&self) -> (usize, usize, usize, usize) {
+    /// The dimension, the number of poles, the order and the step.
+    pub(crate) fn parts(&self) -> (usize, usize, usize, usize) {
         each!(&self.spline, s => (point_dim(s.poles()), s.poles().len(), s.order(), s.step()))
     }
 }
@@ -93,7 +101,8 @@ impl PyDiscreteSpline {
 #[pymethods]
 impl PyDiscreteSpline {
     #[new]
-    #[pyo3(signature = (poles, order = 3, n = 10))]
+    #[pyo3(signature = (poles, order = DEFAULT_ORDER as i64, n = DEFAULT_STEP as i64))]
+    #[pyo3(text_signature = "(poles, order=3, n=10)")]
     fn py_new(py: Python<'_>, poles: &Bound<'_, PyAny>, order: i64, n: i64) -> PyResult<Self> {
         Self::build(py, poles, order, n, false)
     }
@@ -132,7 +141,8 @@ impl PyDiscreteSpline {
     /// >>> bool(np.allclose(s.values()[::4], nodes))
     /// True
     #[staticmethod]
-    #[pyo3(signature = (nodes, order = 3, n = 10))]
+    #[pyo3(signature = (nodes, order = DEFAULT_ORDER as i64, n = DEFAULT_STEP as i64))]
+    #[pyo3(text_signature = "(nodes, order=3, n=10)")]
     fn interpolate(py: Python<'_>, nodes: &Bound<'_, PyAny>, order: i64, n: i64) -> PyResult<Self> {
         Self::build(py, nodes, order, n, true)
     }
@@ -242,7 +252,8 @@ type AnyTube = ByDim<TubeSurface<2>, TubeSurface<3>>;
 /// n1, n2 : int
 ///     The steps: samples per skeleton curve across, along.
 /// r1, r2 : int, optional
-///     The orders of the discrete splines in the two directions.
+///     The orders of the discrete splines in the two directions (default 2 each, as
+///     ``karkas surface dps-tube``).
 ///
 /// Raises
 /// ------
@@ -271,12 +282,17 @@ type AnyTube = ByDim<TubeSurface<2>, TubeSurface<3>>;
 #[pyclass(module = "karkas", name = "TubeSurface", frozen)]
 pub struct PyTubeSurface {
     tube: AnyTube,
+    /// The skeleton given, each as (row-major points, rows, columns) (for pickling).
+    pub(crate) skeleton: [(FlatPoints, usize, usize); 2],
+    /// n1, n2, r1, r2 as given (for pickling).
+    pub(crate) counts: [usize; 4],
 }
 
 #[pymethods]
 impl PyTubeSurface {
     #[new]
-    #[pyo3(signature = (along, across, n1, n2, r1 = 3, r2 = 3))]
+    #[pyo3(signature = (along, across, n1, n2, r1 = DEFAULT_TUBE_ORDER as i64, r2 = DEFAULT_TUBE_ORDER as i64))]
+    #[pyo3(text_signature = "(along, across, n1, n2, r1=2, r2=2)")]
     #[allow(clippy::too_many_arguments)]
     fn py_new(
         py: Python<'_>,
@@ -302,13 +318,23 @@ impl PyTubeSurface {
             count(r1, "r1")?,
             count(r2, "r2")?,
         );
+        let given = |g: &GridArray<'_>| -> (FlatPoints, usize, usize) {
+            let (rows, cols) = g.rows_cols();
+            let coords = g.flat().into_owned();
+            (FlatPoints { coords, dim }, rows, cols)
+        };
+        let skeleton = [given(&a), given(&b)];
         let tube = by_dim!(dim, D => {
             let (ga, gb): (Grid<Point<D>>, Grid<Point<D>>) = (a.grid::<D>()?, b.grid::<D>()?);
             let t = maybe_detach(py, ga.as_slice().len(), || TubeSurface::<D>::new(&ga, &gb, n1, n2, r1, r2))
                 .map_err(library_error)?;
             AnyTube::of(t)
         });
-        Ok(PyTubeSurface { tube })
+        Ok(PyTubeSurface {
+            tube,
+            skeleton,
+            counts: [n1, n2, r1, r2],
+        })
     }
 
     /// The values ``c(p, q)`` of one period in each direction.

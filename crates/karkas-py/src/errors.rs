@@ -195,7 +195,8 @@ fn kind(e: &karkas::Error) -> Kind {
         | E::InvalidPeriod { .. }
         | E::EmptyBlendingFamily { .. }
         | E::UnsupportedEnds { .. }
-        | E::InvalidPlane { .. } => Kind::Option,
+        | E::InvalidPlane { .. }
+        | E::UnknownName { .. } => Kind::Option,
         E::IncompatibleSkeleton { .. }
         | E::IncompatibleCurves { .. }
         | E::NetworkCrossing { .. }

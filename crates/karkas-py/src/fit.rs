@@ -3,10 +3,10 @@
 
 use std::sync::Arc;
 
-use karkas::fit::{self, FitOptions, HermiteSpline};
+use karkas::fit::{self, FitOptions, HermiteSpline, DEFAULT_FAIRNESS};
 use pyo3::prelude::*;
 
-use crate::convert::{as_points, by_dim, count, extract_vector, FlatPoints, Numbers, PointsArray};
+use crate::convert::{as_points, by_dim, extract_vector, FlatPoints, Numbers, PointsArray};
 use crate::curve::PyCurve;
 use crate::errors::{library_error, KnotsError, OptionError};
 use crate::wrapper::{CurveImpl, Wrapped};
@@ -14,15 +14,39 @@ use crate::wrapper::{CurveImpl, Wrapped};
 /// A C^1 cubic Hermite spline (a cubic spline of defect 2) on [0, 1]: the result of
 /// ``fit_curve``, with its values and derivatives at its knots and the fit's figures.
 ///
-/// Made by ``fit_curve`` only (no constructor). Calling the curve is described in ``Curve``.
+/// ``HermiteSpline(knots, values, derivatives)`` builds one with these values and first
+/// derivatives at the knots ``0 = T_1 < ... < T_N = 1``. Calling the curve is described in
+/// ``Curve``.
 ///
 /// Outside the domain (the rule of every curve class): a closed curve wraps the parameter by
 /// its period; an open curve continues its end polynomial pieces when ``extrapolate`` is None
 /// or True (SciPy's ``BSpline`` default; the values of ``BSpline(*c.to_bspline())``) and gives
 /// NaN when ``extrapolate=False``.
 ///
+/// Parameters
+/// ----------
+/// knots : array_like, shape (N,)
+///     Strictly increasing, from 0 to 1.
+/// values, derivatives : array_like, shape (N, d)
+///     The points R_L and the derivatives H_L at the knots, d in {2, 3}.
+///
+/// Returns
+/// -------
+/// HermiteSpline
+///     A spline that is not a fit: max_distance, rms_distance and jump_sum are NaN,
+///     tolerance_met is None, parameters and distances are empty.
+///
+/// Raises
+/// ------
+/// KnotsError, PointsError
+///     For bad knots, or values and derivatives of the wrong shape.
+///
 /// Examples
 /// --------
+/// >>> import karkas
+/// >>> c = karkas.HermiteSpline([0.0, 1.0], [[0.0, 0.0], [1.0, 0.0]], [[1.0, 0.0], [1.0, 0.0]])
+/// >>> c(0.5).tolist()
+/// [0.5, 0.0]
 /// >>> s = np.linspace(0.0, 1.0, 50)
 /// >>> f = karkas.fit_curve(np.column_stack([s, s * s]), knots=5)
 /// >>> f.domain, f.knots.shape, f.values.shape, f.derivatives.shape
@@ -90,7 +114,8 @@ enum Target {
 /// corners : sequence of float, optional
 ///     Knots where the curve may turn a corner (no smoothness asked there).
 /// fairness : float, optional
-///     The weight of the smoothness term against the distances.
+///     The weight rho of the bending energy that keeps the parameterization even (default
+///     3e-11, as ``karkas curve fit --fairness``).
 ///
 /// Returns
 /// -------
@@ -119,7 +144,10 @@ enum Target {
 /// >>> g.tolerance_met
 /// True
 #[pyfunction]
-#[pyo3(signature = (points, knots = None, tolerance = None, eps = None, pin_ends = false, corners = None, fairness = None))]
+#[pyo3(signature = (points, knots = None, tolerance = None, eps = None, pin_ends = false, corners = None, fairness = DEFAULT_FAIRNESS))]
+#[pyo3(
+    text_signature = "(points, knots=None, tolerance=None, eps=None, pin_ends=False, corners=None, fairness=3e-11)"
+)]
 #[allow(clippy::too_many_arguments)]
 pub fn fit_curve(
     py: Python<'_>,
@@ -129,20 +157,19 @@ pub fn fit_curve(
     eps: Option<f64>,
     pin_ends: bool,
     corners: Option<Vec<f64>>,
-    fairness: Option<f64>,
+    fairness: f64,
 ) -> PyResult<Py<PyHermiteSpline>> {
     let (pts, dim) = PointsArray::extract_checked(points, "points")?;
     let knots: Option<Vec<f64>> = match knots {
         None => None,
         Some(k) => match k.extract::<i64>() {
             Ok(n) => {
-                let n = count(n, "knots")?;
                 if n < 2 {
                     return Err(KnotsError::new_err(format!(
                         "knots must be at least 2 (got {n})"
                     )));
                 }
-                Some(fit::uniform_knots(n))
+                Some(fit::knots_from_list(&[n as f64]).map_err(library_error)?)
             }
             Err(_) => Some(extract_vector(k, "knots")?),
         },
@@ -158,13 +185,11 @@ pub fn fit_curve(
     let mut options = FitOptions {
         pin_ends,
         corners: corners.unwrap_or_default(),
+        fairness,
         ..FitOptions::default()
     };
     if let Some(eps) = eps {
         options.eps = eps;
-    }
-    if let Some(fairness) = fairness {
-        options.fairness = fairness;
     }
     let flat = pts.flat();
     let (inner, sub): (Arc<dyn CurveImpl>, PyHermiteSpline) = by_dim!(dim, D => {
@@ -194,15 +219,132 @@ pub fn fit_curve(
         };
         (Arc::new(Wrapped::<_, D>(spline)) as Arc<dyn CurveImpl>, sub)
     });
-    let description = format!(
-        "<karkas.HermiteSpline fit of {} points in {dim}-D, {} knots, max_distance={:.3e}, rms_distance={:.3e}",
-        pts.len(),
-        sub.knots.0.len(),
-        sub.max_distance,
-        sub.rms_distance
-    );
-    Py::new(
-        py,
-        PyClassInitializer::from(PyCurve::new(inner, description)).add_subclass(sub),
-    )
+    Py::new(py, sub.with_base(inner, dim))
+}
+
+impl PyHermiteSpline {
+    /// The object with its base part: the curve `inner` of dimension `dim`.
+    fn with_base(self, inner: Arc<dyn CurveImpl>, dim: usize) -> PyClassInitializer<Self> {
+        let description = if self.parameters.0.is_empty() {
+            format!(
+                "<karkas.HermiteSpline {} knots in {dim}-D",
+                self.knots.0.len()
+            )
+        } else {
+            format!(
+                "<karkas.HermiteSpline fit of {} points in {dim}-D, {} knots, max_distance={:.3e}, rms_distance={:.3e}",
+                self.parameters.0.len(),
+                self.knots.0.len(),
+                self.max_distance,
+                self.rms_distance
+            )
+        };
+        PyClassInitializer::from(PyCurve::new(inner, description)).add_subclass(self)
+    }
+
+    /// The spline of `knots` (N,), `values` and `derivatives` (N, d) with the statistics of
+    /// the fit that gave it (`stats`: NaN, None and empty arrays for none).
+    pub(crate) fn build(
+        py: Python<'_>,
+        knots: &Bound<'_, PyAny>,
+        values: &Bound<'_, PyAny>,
+        derivatives: &Bound<'_, PyAny>,
+        stats: FitStats,
+    ) -> PyResult<PyClassInitializer<Self>> {
+        let knots = extract_vector(knots, "knots")?;
+        let (vals, dim) = PointsArray::extract_checked(values, "values")?;
+        let (ders, ddim) = PointsArray::extract_checked(derivatives, "derivatives")?;
+        if ddim != dim {
+            return Err(OptionError::new_err(format!(
+                "values have {dim} coordinates per point, derivatives {ddim}"
+            )));
+        }
+        let (vf, df) = (vals.flat(), ders.flat());
+        let (inner, values, derivatives): (Arc<dyn CurveImpl>, FlatPoints, FlatPoints) = by_dim!(dim, D => {
+            let spline = py
+                .detach(|| {
+                    HermiteSpline::<D>::new(
+                        knots.clone(),
+                        as_points::<D>(&vf).to_vec(),
+                        as_points::<D>(&df).to_vec(),
+                    )
+                })
+                .map_err(library_error)?;
+            let (v, d) = (FlatPoints::of(spline.values()), FlatPoints::of(spline.derivatives()));
+            (Arc::new(Wrapped::<_, D>(spline)) as Arc<dyn CurveImpl>, v, d)
+        });
+        let sub = PyHermiteSpline {
+            knots: Numbers(knots),
+            values,
+            derivatives,
+            max_distance: stats.max_distance,
+            rms_distance: stats.rms_distance,
+            jump_sum: stats.jump_sum,
+            tolerance_met: stats.tolerance_met,
+            parameters: Numbers(stats.parameters),
+            distances: Numbers(stats.distances),
+        };
+        Ok(sub.with_base(inner, dim))
+    }
+
+    /// The statistics of the fit (for pickling).
+    pub(crate) fn stats(&self) -> FitStats {
+        FitStats {
+            max_distance: self.max_distance,
+            rms_distance: self.rms_distance,
+            jump_sum: self.jump_sum,
+            tolerance_met: self.tolerance_met,
+            parameters: self.parameters.0.clone(),
+            distances: self.distances.0.clone(),
+        }
+    }
+
+    /// The knots, values and derivatives (for pickling).
+    pub(crate) fn coefficients(&self) -> (&Numbers, &FlatPoints, &FlatPoints) {
+        (&self.knots, &self.values, &self.derivatives)
+    }
+}
+
+/// What a fit says about its spline besides the coefficients.
+pub struct FitStats {
+    /// The largest distance of a fitted point.
+    pub max_distance: f64,
+    /// The root-mean-square distance.
+    pub rms_distance: f64,
+    /// The weighted sum of squared second-derivative jumps.
+    pub jump_sum: f64,
+    /// For a fit by tolerance: whether it was met.
+    pub tolerance_met: Option<bool>,
+    /// The foot parameters of the fitted points.
+    pub parameters: Vec<f64>,
+    /// The distances of the fitted points.
+    pub distances: Vec<f64>,
+}
+
+impl FitStats {
+    /// No fit: NaN statistics, no points.
+    fn none() -> Self {
+        FitStats {
+            max_distance: f64::NAN,
+            rms_distance: f64::NAN,
+            jump_sum: f64::NAN,
+            tolerance_met: None,
+            parameters: Vec::new(),
+            distances: Vec::new(),
+        }
+    }
+}
+
+#[pymethods]
+impl PyHermiteSpline {
+    /// The spline of knots, values and derivatives, without fit statistics.
+    #[new]
+    fn py_new(
+        py: Python<'_>,
+        knots: &Bound<'_, PyAny>,
+        values: &Bound<'_, PyAny>,
+        derivatives: &Bound<'_, PyAny>,
+    ) -> PyResult<PyClassInitializer<Self>> {
+        Self::build(py, knots, values, derivatives, FitStats::none())
+    }
 }

@@ -203,8 +203,9 @@ impl PyImplicitSurface {
     ///     The first node (3 coordinates), projected onto the surface first.
     /// nodes : tuple of int
     ///     ``(nu, nv)``, the grid's size.
-    /// steps : tuple of float
-    ///     The arc lengths between neighbouring nodes along ``u`` and along ``v``.
+    /// steps : tuple of float, optional
+    ///     The arc lengths between neighbouring nodes along ``u`` and along ``v`` (or give
+    ///     ``step``).
     /// directions : str, optional
     ///     ``'principal'`` (lines of curvature), ``'turned'`` (both fields turned by
     ///     ``angle``), ``'turned-u'`` (the ``u`` lines turned) or ``'plane-sections'`` (``v``
@@ -217,6 +218,12 @@ impl PyImplicitSurface {
     ///     The ``v`` lines close on themselves (around a tube).
     /// substeps : int, optional
     ///     Integration steps between two nodes.
+    /// step : float or tuple of float, optional
+    ///     The command line's name (``karkas surface implicit --step``): ``H`` or ``(HU, HV)``,
+    ///     instead of ``steps``.
+    /// turn : float, optional
+    ///     The command line's ``--turn``, in degrees: ``directions='turned'`` with ``angle`` in
+    ///     radians (0 is ``'principal'``).
     ///
     /// Returns
     /// -------
@@ -238,20 +245,42 @@ impl PyImplicitSurface {
     /// (3, 4, 3)
     /// >>> bool(np.allclose(cylinder.value(net.reshape(-1, 3)), 0.0, atol=1e-8))
     /// True
-    #[pyo3(signature = (start, nodes, steps, directions = "principal", angle = 0.0, plane_normal = None, closed_v = false, substeps = 32))]
+    #[pyo3(signature = (start, nodes, steps = None, directions = "principal", angle = 0.0, plane_normal = None, closed_v = false, substeps = 32, *, step = None, turn = None))]
     #[allow(clippy::too_many_arguments)]
     fn trace_net<'py>(
         &self,
         py: Python<'py>,
         start: Vec<f64>,
         nodes: (i64, i64),
-        steps: (f64, f64),
+        steps: Option<(f64, f64)>,
         directions: &str,
         angle: f64,
         plane_normal: Option<Vec<f64>>,
         closed_v: bool,
         substeps: i64,
+        step: Option<&Bound<'py, PyAny>>,
+        turn: Option<f64>,
     ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        let steps = match (steps, step) {
+            (Some(s), None) => s,
+            (None, Some(h)) => match h.extract::<f64>() {
+                Ok(h) => (h, h),
+                Err(_) => h.extract::<(f64, f64)>().map_err(|_| {
+                    OptionError::new_err("step must be a number H or a pair (HU, HV)")
+                })?,
+            },
+            _ => return Err(OptionError::new_err("give steps or step, one of them")),
+        };
+        let (directions, angle) = match turn {
+            None => (directions, angle),
+            Some(_) if directions != "principal" || angle != 0.0 => {
+                return Err(OptionError::new_err(
+                    "turn is the angle of directions='turned' in degrees: give turn, or directions and angle",
+                ))
+            }
+            Some(0.0) => ("principal", 0.0),
+            Some(t) => ("turned", t.to_radians()),
+        };
         let directions = match directions {
             "principal" => NetDirections::Principal,
             "turned" => NetDirections::Turned { angle },

@@ -30,10 +30,12 @@ mod implicit;
 mod ll;
 mod measure;
 mod param;
+mod pickle;
 mod read;
 mod read_more;
 mod repr_html;
 mod section;
+mod section_defaults;
 mod surface;
 mod surface_eval;
 mod wrapper;
@@ -104,12 +106,13 @@ fn karkas_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(read_more::read_mask, m)?)?;
     m.add_function(wrap_pyfunction!(read::set_max_input_bytes, m)?)?;
     m.add_function(wrap_pyfunction!(read::max_input_bytes, m)?)?;
+    m.add_function(wrap_pyfunction!(pickle::restore, m)?)?;
     let names: Vec<String> = m
         .dict()
         .keys()
         .iter()
         .filter_map(|k| k.extract::<String>().ok())
-        .filter(|k| !k.starts_with('_') || k == "__version__")
+        .filter(|k| !k.starts_with('_') || k == "__version__" || k == "_restore")
         .collect();
     m.add("__all__", names)?;
     Ok(())

@@ -3,7 +3,10 @@
 
 use std::sync::Arc;
 
-use karkas::ll::{vary as ll_vary, FixedEntries, LlCurve, LlSurface, SumTargets, VariationOptions};
+use karkas::ll::{
+    complete_sums, vary as ll_vary, FixedEntries, LlCurve, LlSurface, SumTargets, SumsProblem,
+    VariationOptions, DEFAULT_ORDER,
+};
 use karkas::Grid;
 use numpy::{AllowTypeChange, PyArrayDyn, PyArrayLike2, PyUntypedArrayMethods};
 use pyo3::prelude::*;
@@ -13,7 +16,7 @@ use crate::convert::{
     PointsArray,
 };
 use crate::curve::PyCurve;
-use crate::errors::library_error;
+use crate::errors::{library_error, OptionError};
 use crate::surface::PySurface;
 use crate::wrapper::{CurveImpl, SurfaceImpl, Wrapped, WrappedSurface};
 
@@ -39,6 +42,8 @@ use crate::wrapper::{CurveImpl, SurfaceImpl, Wrapped, WrappedSurface};
 /// closed : bool, optional
 ///     A closed curve through the polygon taken cyclically (the first point is not repeated
 ///     at the end).
+/// interpolate : bool, optional
+///     The interpolating variant (as ``LLCurve.interpolate``): a curve through every point.
 ///
 /// Raises
 /// ------
@@ -63,13 +68,17 @@ use crate::wrapper::{CurveImpl, SurfaceImpl, Wrapped, WrappedSurface};
 pub struct PyLlCurve {
     /// The order L (the curve is C^L).
     #[pyo3(get)]
-    order: usize,
+    pub(crate) order: usize,
     /// True for the interpolating variant.
     #[pyo3(get)]
-    interpolating: bool,
+    pub(crate) interpolating: bool,
     /// The control polygon r_1..r_K (closed curves repeat the first point at the end), (K, d).
     #[pyo3(get, name = "control_points")]
     control: FlatPoints,
+    /// The points given (for pickling).
+    pub(crate) points: FlatPoints,
+    /// True for a closed curve (for pickling).
+    pub(crate) closed: bool,
 }
 
 impl PyLlCurve {
@@ -97,6 +106,10 @@ impl PyLlCurve {
             let control = FlatPoints::of(curve.control_points());
             (Arc::new(Wrapped::<_, D>(curve)), control)
         });
+        let points = FlatPoints {
+            coords: flat.into_owned(),
+            dim,
+        };
         let description = format!(
             "<karkas.LLCurve {}order={order}, closed={}, {n} points in {dim}-D",
             variant(interpolating),
@@ -107,6 +120,8 @@ impl PyLlCurve {
                 order,
                 interpolating,
                 control,
+                points,
+                closed,
             }),
         )
     }
@@ -115,14 +130,16 @@ impl PyLlCurve {
 #[pymethods]
 impl PyLlCurve {
     #[new]
-    #[pyo3(signature = (points, order = 5, closed = false))]
+    #[pyo3(signature = (points, order = DEFAULT_ORDER as i64, closed = false, interpolate = false))]
+    #[pyo3(text_signature = "(points, order=3, closed=False, interpolate=False)")]
     fn py_new(
         py: Python<'_>,
         points: &Bound<'_, PyAny>,
         order: i64,
         closed: bool,
+        interpolate: bool,
     ) -> PyResult<PyClassInitializer<Self>> {
-        Self::build(py, points, order, closed, false)
+        Self::build(py, points, order, closed, interpolate)
     }
 
     /// The interpolating LL curve: through every point at its node ``t_i = i/(K+1)``.
@@ -160,7 +177,8 @@ impl PyLlCurve {
     /// >>> bool(np.allclose(c(np.arange(1, 6) / 6), pts))
     /// True
     #[staticmethod]
-    #[pyo3(signature = (points, order = 5, closed = false))]
+    #[pyo3(signature = (points, order = DEFAULT_ORDER as i64, closed = false))]
+    #[pyo3(text_signature = "(points, order=3, closed=False)")]
     fn interpolate(
         py: Python<'_>,
         points: &Bound<'_, PyAny>,
@@ -191,6 +209,8 @@ impl PyLlCurve {
 ///     The order ``L >= 1`` (the surface is C^L).
 /// closed_u, closed_v : bool, optional
 ///     Closed in ``u`` (the rows taken cyclically), in ``v`` (the columns taken cyclically).
+/// interpolate : bool, optional
+///     The interpolating variant (as ``LLSurface.interpolate``): through every grid point.
 ///
 /// Raises
 /// ------
@@ -215,10 +235,16 @@ impl PyLlCurve {
 pub struct PyLlSurface {
     /// The order L (the surface is C^L).
     #[pyo3(get)]
-    order: usize,
+    pub(crate) order: usize,
     /// True for the interpolating variant.
     #[pyo3(get)]
-    interpolating: bool,
+    pub(crate) interpolating: bool,
+    /// The grid given, row-major (for pickling and the default section cells).
+    pub(crate) grid: FlatPoints,
+    /// The grid's rows and columns.
+    pub(crate) shape: (usize, usize),
+    /// Closed in u, in v (for pickling).
+    pub(crate) closed: (bool, bool),
 }
 
 impl PyLlSurface {
@@ -244,6 +270,10 @@ impl PyLlSurface {
             .map_err(library_error)?;
             (grid.rows(), grid.cols(), Arc::new(WrappedSurface::<_, D>(surface)))
         });
+        let given = FlatPoints {
+            coords: g.flat().into_owned(),
+            dim,
+        };
         let description = format!(
             "<karkas.LLSurface {}order={order}, closed_u={}, closed_v={}, {rows}x{cols} grid in {dim}-D",
             variant(interpolating),
@@ -255,6 +285,9 @@ impl PyLlSurface {
                 PyLlSurface {
                     order,
                     interpolating,
+                    grid: given,
+                    shape: (rows, cols),
+                    closed: (closed_u, closed_v),
                 },
             ),
         )
@@ -264,15 +297,17 @@ impl PyLlSurface {
 #[pymethods]
 impl PyLlSurface {
     #[new]
-    #[pyo3(signature = (grid, order = 5, closed_u = false, closed_v = false))]
+    #[pyo3(signature = (grid, order = DEFAULT_ORDER as i64, closed_u = false, closed_v = false, interpolate = false))]
+    #[pyo3(text_signature = "(grid, order=3, closed_u=False, closed_v=False, interpolate=False)")]
     fn py_new(
         py: Python<'_>,
         grid: &Bound<'_, PyAny>,
         order: i64,
         closed_u: bool,
         closed_v: bool,
+        interpolate: bool,
     ) -> PyResult<PyClassInitializer<Self>> {
-        Self::build(py, grid, order, closed_u, closed_v, false)
+        Self::build(py, grid, order, closed_u, closed_v, interpolate)
     }
 
     /// The interpolating LL surface: through every grid point at its node.
@@ -308,7 +343,8 @@ impl PyLlSurface {
     /// >>> bool(np.allclose(S(nodes, nodes), grid))
     /// True
     #[staticmethod]
-    #[pyo3(signature = (grid, order = 5, closed_u = false, closed_v = false))]
+    #[pyo3(signature = (grid, order = DEFAULT_ORDER as i64, closed_u = false, closed_v = false))]
+    #[pyo3(text_signature = "(grid, order=3, closed_u=False, closed_v=False)")]
     fn interpolate(
         py: Python<'_>,
         grid: &Bound<'_, PyAny>,
@@ -338,6 +374,9 @@ impl PyLlSurface {
 ///     None: fixed entries do not change; a number: changing them costs that many times more.
 /// scale_with_total : bool, optional
 ///     Weigh each change by the entry's size relative to the total.
+/// total : float, optional
+///     The new sum of all entries: ``row_sums`` and ``column_sums`` may then leave out their
+///     last sum, which takes the rest (as ``karkas vary --total``).
 ///
 /// Returns
 /// -------
@@ -358,7 +397,8 @@ impl PyLlSurface {
 /// >>> w.sum(axis=1), w.sum(axis=0)
 /// (array([4., 2.]), array([2., 2., 2.]))
 #[pyfunction]
-#[pyo3(signature = (matrix, row_sums, column_sums, fixed = None, penalty = None, scale_with_total = false))]
+#[pyo3(signature = (matrix, row_sums, column_sums, fixed = None, penalty = None, scale_with_total = false, total = None))]
+#[allow(clippy::too_many_arguments)]
 pub fn vary<'py>(
     py: Python<'py>,
     matrix: PyArrayLike2<'py, f64, AllowTypeChange>,
@@ -367,8 +407,28 @@ pub fn vary<'py>(
     fixed: Option<PyArrayLike2<'py, bool, AllowTypeChange>>,
     penalty: Option<f64>,
     scale_with_total: bool,
+    total: Option<f64>,
 ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
     let (n, m) = (matrix.shape()[0], matrix.shape()[1]);
+    let complete = |name: &str, given: &[f64], lines: usize| {
+        complete_sums(given, lines, total).map_err(|problem| {
+            OptionError::new_err(match problem {
+                SumsProblem::TotalMismatch { lines, sum, total } => {
+                    format!("{name}: the {lines} sums add up to {sum}, not to total {total}")
+                }
+                SumsProblem::NoTotal { given, lines } => format!(
+                    "{name}: {given} sums given for {lines} lines; give all {lines}, or {} with total",
+                    lines - 1
+                ),
+                SumsProblem::WrongCount { given, lines } => format!(
+                    "{name}: {lines} sums are needed (or {} with total), got {given}",
+                    lines.saturating_sub(1)
+                ),
+            })
+        })
+    };
+    let row_sums = complete("row_sums", &row_sums, n)?;
+    let column_sums = complete("column_sums", &column_sums, m)?;
     let values: Vec<f64> = matrix.as_array().iter().copied().collect();
     let z = Grid::from_row_major(n, m, values).map_err(library_error)?;
     let fixed = match fixed {

@@ -1,11 +1,12 @@
 //! Hausdorff distances between point sets, and between a surface and an implicit surface.
 
-use karkas::measure::{hausdorff_sets, DirectedDistance, Hausdorff};
+use karkas::implicit::ExpressionSurface;
+use karkas::measure::{hausdorff_points_implicit, hausdorff_sets, DirectedDistance, Hausdorff};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use crate::convert::points3;
-use crate::errors::{library_error, PointsError};
+use crate::errors::{library_error, OptionError, PointsError};
 use crate::implicit::PyImplicitSurface;
 use crate::surface::PySurface;
 
@@ -28,14 +29,19 @@ fn hausdorff_dict<'py>(py: Python<'py>, h: &Hausdorff) -> PyResult<Bound<'py, Py
 
 /// The two-sided Hausdorff distance between two point sets, and where it is attained.
 ///
-/// Nearest neighbours by a k-d tree, O((n + m) log(n + m)).
+/// Nearest neighbours by a k-d tree, O((n + m) log(n + m)). With ``expr`` instead of ``b``:
+/// the distance between ``a`` and the patch of the implicit surface ``expr = 0`` that ``a``
+/// covers, as ``karkas hausdorff A --expr EXPR``.
 ///
 /// Parameters
 /// ----------
 /// a : array_like
 ///     The first set, shape ``(n, 3)``.
-/// b : array_like
+/// b : array_like, optional
 ///     The second set, shape ``(m, 3)``.
+/// expr : str, optional
+///     Instead of ``b``: an implicit surface ``F(x, y, z) = 0``, written as for
+///     ``ImplicitSurface``.
 ///
 /// Returns
 /// -------
@@ -59,15 +65,26 @@ fn hausdorff_dict<'py>(py: Python<'py>, h: &Hausdorff) -> PyResult<Bound<'py, Py
 /// >>> h["backward"]["from"], h["backward"]["to"]
 /// ([1.0, 2.0, 0.0], [1.0, 0.0, 0.0])
 #[pyfunction]
+#[pyo3(signature = (a, b = None, expr = None))]
 pub fn hausdorff<'py>(
     py: Python<'py>,
     a: &Bound<'py, PyAny>,
-    b: &Bound<'py, PyAny>,
+    b: Option<&Bound<'py, PyAny>>,
+    expr: Option<&str>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let (a, b) = (points3(a, "a")?, points3(b, "b")?);
-    let h = py
-        .detach(|| hausdorff_sets(&a, &b))
-        .map_err(library_error)?;
+    let a = points3(a, "a")?;
+    let h = match (b, expr) {
+        (Some(b), None) => {
+            let b = points3(b, "b")?;
+            py.detach(|| hausdorff_sets(&a, &b))
+        }
+        (None, Some(expr)) => {
+            let surface = ExpressionSurface::parse(expr).map_err(library_error)?;
+            py.detach(|| hausdorff_points_implicit(&a, &surface))
+        }
+        _ => return Err(OptionError::new_err("give b or expr, not both")),
+    }
+    .map_err(library_error)?;
     hausdorff_dict(py, &h)
 }
 

@@ -22,15 +22,19 @@ use crate::wrapper::{CurveImpl, SurfaceImpl, Wrapped, WrappedSurface};
 /// A float64 array returned to Python.
 type Array<'py> = Bound<'py, PyArrayDyn<f64>>;
 
+/// The curve parameterization named `name` (the library's names, [`CurveParameterization::NAMES`]).
 pub fn parse_parameterization(name: &str) -> PyResult<CurveParameterization> {
-    match name {
-        "uniform" => Ok(CurveParameterization::Uniform),
-        "chord" | "chord-length" | "chordlength" => Ok(CurveParameterization::ChordLength),
-        "centripetal" => Ok(CurveParameterization::Centripetal),
-        _ => Err(OptionError::new_err(format!(
-            "unknown parameterization {name:?} (expected 'uniform', 'chord' or 'centripetal')"
-        ))),
-    }
+    name.parse().map_err(library_error)
+}
+
+/// The end conditions of a cubic spline as given, for pickling: a name, or the clamped
+/// derivatives.
+#[derive(Clone)]
+pub enum Ends {
+    /// 'not-a-knot', 'natural' or 'periodic'.
+    Named(&'static str),
+    /// ('clamped', start_derivative, end_derivative).
+    Clamped(Vec<f64>, Vec<f64>),
 }
 
 /// The end conditions named by `bc`.
@@ -122,12 +126,21 @@ pub struct PyCubicSpline {
     /// The node slopes P'(t_k), (n, d).
     #[pyo3(get)]
     slopes: FlatPoints,
+    /// The points given (for pickling).
+    pub(crate) points: FlatPoints,
+    /// The parameters given (None: computed by the parameterization).
+    pub(crate) t: Option<Vec<f64>>,
+    /// The parameterization's name as given.
+    pub(crate) parameterization: String,
+    /// The end conditions.
+    pub(crate) ends: Ends,
 }
 
 #[pymethods]
 impl PyCubicSpline {
     #[new]
-    #[pyo3(signature = (points, t = None, parameterization = "chord", bc = None))]
+    #[pyo3(signature = (points, t = None, parameterization = CurveParameterization::default().name(), bc = None))]
+    #[pyo3(text_signature = "(points, t=None, parameterization='chord', bc=None)")]
     fn py_new(
         py: Python<'_>,
         points: &Bound<'_, PyAny>,
@@ -151,16 +164,22 @@ impl PyCubicSpline {
                 None => CubicSpline::<D>::through(p, rule, ends),
             })
             .map_err(library_error)?;
-            let name = match ends {
-                SplineEnds::NotAKnot => "not-a-knot",
-                SplineEnds::Natural => "natural",
-                SplineEnds::Periodic => "periodic",
-                SplineEnds::Clamped { .. } => "clamped",
+            let (name, given_ends) = match ends {
+                SplineEnds::NotAKnot => ("not-a-knot", Ends::Named("not-a-knot")),
+                SplineEnds::Natural => ("natural", Ends::Named("natural")),
+                SplineEnds::Periodic => ("periodic", Ends::Named("periodic")),
+                SplineEnds::Clamped { start, end } => {
+                    ("clamped", Ends::Clamped(start.0.to_vec(), end.0.to_vec()))
+                }
             };
             let sub = PyCubicSpline {
                 knots: Numbers(spline.knots().to_vec()),
                 values: FlatPoints::of(spline.values()),
                 slopes: FlatPoints::of(spline.slopes()),
+                points: FlatPoints { coords: flat.to_vec(), dim },
+                t: knots.clone(),
+                parameterization: parameterization.to_string(),
+                ends: given_ends,
             };
             let inner: Arc<dyn CurveImpl> = Arc::new(Wrapped::<_, D>(spline));
             (name, (inner, sub))
@@ -179,25 +198,31 @@ impl PyCubicSpline {
     }
 }
 
-/// The grid parameterization named `name`.
+/// The grid parameterization named `name` (the library's names, [`GridParameterization::NAMES`],
+/// those of the command line's `--param` among them).
 pub fn parse_grid_parameterization(name: &str) -> PyResult<GridParameterization> {
-    match name {
-        "uniform" => Ok(GridParameterization::Uniform),
-        "chord" => Ok(GridParameterization::default()),
-        "averaged-chord" => Ok(GridParameterization::AveragedChord),
-        "centripetal" => Ok(GridParameterization::Centripetal),
-        _ => Err(OptionError::new_err(format!(
-            "unknown parameterization {name:?} (expected 'uniform', 'chord', 'averaged-chord' or 'centripetal')"
-        ))),
-    }
+    name.parse().map_err(library_error)
 }
 
 /// Where the parameters of a bicubic surface come from.
-enum GridParameters {
+#[derive(Clone)]
+pub enum GridParameters {
     /// Computed from the grid.
     Rule(GridParameterization),
     /// Given: the u parameters of the rows, the v parameters of the columns.
     Knots(Vec<f64>, Vec<f64>),
+}
+
+/// What a bicubic surface was built from, for pickling.
+pub struct BicubicInput {
+    /// The grid, row-major.
+    pub grid: FlatPoints,
+    /// Its rows and columns.
+    pub shape: (usize, usize),
+    /// The parameterization's name, or the knots given.
+    pub how: Result<String, (Vec<f64>, Vec<f64>)>,
+    /// Closed in u, in v.
+    pub closed: (bool, bool),
 }
 
 /// Bicubic interpolation of a grid of points (Kuznetsov, Filatov): a C^2 surface through every
@@ -218,8 +243,8 @@ enum GridParameters {
 ///     The grid, shape ``(nu, nv, d)``, ``d`` in {2, 3}.
 /// parameterization : str, optional
 ///     ``'uniform'``, ``'chord'`` (chord lengths along the first column for ``u`` and the
-///     first row for ``v``), ``'averaged-chord'`` (averaged over all rows and columns) or
-///     ``'centripetal'``.
+///     first row for ``v``), ``'averaged'`` or ``'averaged-chord'`` (averaged over all rows
+///     and columns) or ``'centripetal'``; the command line's ``--param`` names.
 /// closed_u, closed_v : bool, optional
 ///     Closed (periodic) in ``u``, in ``v``.
 ///
@@ -246,6 +271,8 @@ pub struct PyBicubicSurface {
     /// The v parameters of the grid columns.
     #[pyo3(get)]
     knots_v: Numbers,
+    /// What it was built from (for pickling).
+    pub(crate) input: BicubicInput,
 }
 
 impl PyBicubicSurface {
@@ -257,6 +284,15 @@ impl PyBicubicSurface {
         closed_v: bool,
     ) -> PyResult<PyClassInitializer<Self>> {
         let (g, dim) = GridArray::extract_checked(grid, "grid")?;
+        let input = BicubicInput {
+            grid: FlatPoints {
+                coords: g.flat().into_owned(),
+                dim,
+            },
+            shape: g.rows_cols(),
+            how: how.clone().map(str::to_string),
+            closed: (closed_u, closed_v),
+        };
         let (label, parameters) = match how {
             Ok(name) => (
                 name.to_string(),
@@ -274,6 +310,7 @@ impl PyBicubicSurface {
             let sub = PyBicubicSurface {
                 knots_u: Numbers(surface.knots_u().to_vec()),
                 knots_v: Numbers(surface.knots_v().to_vec()),
+                input,
             };
             (sub, Arc::new(WrappedSurface::<_, D>(surface)), grid.rows(), grid.cols())
         });
@@ -289,7 +326,8 @@ impl PyBicubicSurface {
 #[pymethods]
 impl PyBicubicSurface {
     #[new]
-    #[pyo3(signature = (grid, parameterization = "chord", closed_u = false, closed_v = false))]
+    #[pyo3(signature = (grid, parameterization = GridParameterization::DEFAULT_NAME, closed_u = false, closed_v = false))]
+    #[pyo3(text_signature = "(grid, parameterization='chord', closed_u=False, closed_v=False)")]
     fn py_new(
         py: Python<'_>,
         grid: &Bound<'_, PyAny>,

@@ -6,7 +6,8 @@ use pyo3::prelude::*;
 
 use karkas::section::SectionCurve;
 
-use crate::convert::{as_points, by_dim, flatten, points_to_array, py_bool};
+use crate::convert::{as_points, by_dim, flatten, points_to_array, py_bool, PointsArray};
+use crate::errors::PointsError;
 
 /// One connected piece of a plane section: a polyline on the surface.
 ///
@@ -30,10 +31,10 @@ pub struct PySectionCurve {
     dim: usize,
     /// True when the last point joins the first (which is not repeated).
     #[pyo3(get)]
-    closed: bool,
+    pub(crate) closed: bool,
     /// The polyline's length (the closing chord included when closed).
     #[pyo3(get)]
-    length: f64,
+    pub(crate) length: f64,
 }
 
 impl PySectionCurve {
@@ -46,6 +47,29 @@ impl PySectionCurve {
             closed: curve.closed,
             length: curve.length(),
         }
+    }
+
+    /// A piece from its points `(n, d)`, parameters `(n, 2)`, closedness and length.
+    pub fn from_parts(
+        points: &Bound<'_, PyAny>,
+        params: &Bound<'_, PyAny>,
+        closed: bool,
+        length: f64,
+    ) -> PyResult<Self> {
+        let (pts, dim) = PointsArray::extract_checked(points, "points")?;
+        let uv = PointsArray::extract(params, "params")?;
+        if uv.dim() != 2 || uv.len() != pts.len() {
+            return Err(PointsError::new_err(
+                "params must have shape (n, 2), one pair per point",
+            ));
+        }
+        Ok(PySectionCurve {
+            points: pts.flat().into_owned(),
+            params: uv.flat().into_owned(),
+            dim,
+            closed,
+            length,
+        })
     }
 }
 

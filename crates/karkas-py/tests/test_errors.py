@@ -56,7 +56,7 @@ def _crossing_missed():
         (karkas.OptionError, lambda: karkas.CubicSpline(np.eye(3), bc="quadratic"), "unknown bc"),
         (karkas.OptionError, lambda: karkas.DiscreteSpline(np.eye(3), n=1), "step"),
         (karkas.IncompatibleDataError, lambda: karkas.vary(np.eye(2), [1.0, 1.0], [1.0, 2.0]), "sums"),
-        (karkas.IncompatibleDataError, lambda: karkas.CoonsSurface(*_crossing_missed(), kind="bilinear"), "u-curve 1"),
+        (karkas.IncompatibleDataError, lambda: karkas.CoonsSurface(**dict(zip(("v_curves", "u_curves"), _crossing_missed())), kind="bilinear"), "u-curve 1"),
         (
             karkas.ConvergenceError,
             lambda: karkas.ImplicitSurface("x^2 + y^2 + z^2 + 1").project([[1.0, 2.0, 3.0]]),

@@ -19,7 +19,7 @@ def paraboloid_network(m=5, k=9):
 @pytest.mark.parametrize("kind", ["gordon-spline", "gordon", "composite"])
 def test_coons_surfaces_reproduce_a_paraboloid(kind):
     v, u = paraboloid_network()
-    S = karkas.CoonsSurface(v, u, kind=kind)
+    S = karkas.CoonsSurface(u_curves=u, v_curves=v, kind=kind)
     assert isinstance(S, karkas.Surface) and S.kind == kind
     P = S.sample(17, 13)
     tol = 1e-12 if kind.startswith("gordon") else 2e-2
@@ -36,7 +36,7 @@ def test_bilinear_coons_of_four_segments_is_the_bilinear_patch():
 
     v = [seg(corners[0], corners[2]), seg(corners[1], corners[3])]  # x = 0, x = 1
     u = [seg(corners[0], corners[1]), seg(corners[2], corners[3])]  # y = 0, y = 1
-    S = karkas.CoonsSurface(v, u, kind="bilinear")
+    S = karkas.CoonsSurface(u_curves=u, v_curves=v, kind="bilinear")
     P = S.sample(6, 7)
     x, y = P[..., 0], P[..., 1]
     z = (1 - x) * (1 - y) * 0.0 + x * (1 - y) * 1.0 + (1 - x) * y * 0.5 + x * y * 3.0
@@ -46,11 +46,11 @@ def test_bilinear_coons_of_four_segments_is_the_bilinear_patch():
 def test_coons_errors():
     v, u = paraboloid_network()
     with pytest.raises(ValueError, match="unknown kind"):
-        karkas.CoonsSurface(v, u, kind="hermite")
+        karkas.CoonsSurface(u_curves=u, v_curves=v, kind="hermite")
     with pytest.raises(ValueError):
-        karkas.CoonsSurface(v, [c + [0.0, 0.0, 1.0] for c in u])  # curves do not cross
+        karkas.CoonsSurface(u_curves=[c + [0.0, 0.0, 1.0] for c in u], v_curves=v)  # curves do not cross
     with pytest.raises(ValueError, match="both"):
-        karkas.CoonsSurface(v, u, kind="composite", u_derivs=u)
+        karkas.CoonsSurface(u_curves=u, v_curves=v, kind="composite", u_derivs=u)
 
 
 def test_plane_section_lies_on_the_plane_and_the_surface():

@@ -390,6 +390,17 @@ pub enum Error {
         /// Why it is not allowed.
         reason: &'static str,
     },
+    /// A name that is not one of those accepted (a parameterization, a Coons surface kind),
+    /// e.g. from [`GridParameterization::from_str`](crate::param::GridParameterization).
+    #[error("unknown {what} '{name}' (expected one of: {})", expected.join(", "))]
+    UnknownName {
+        /// What the name names.
+        what: &'static str,
+        /// The name given.
+        name: String,
+        /// The names accepted.
+        expected: &'static [&'static str],
+    },
     /// A closed direction of a curve network whose period does not pass its last node
     /// ([`NetworkAxis::closed`](crate::coons::NetworkAxis::closed)).
     #[error(

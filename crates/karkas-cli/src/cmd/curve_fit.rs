@@ -13,7 +13,9 @@ use crate::output::samples::sample_curve;
 use crate::output::target::{output_format, shown};
 use anyhow::{bail, Context, Result};
 use clap::Args;
-use karkas::fit::{check_knots, fit_curve, fit_curve_adaptive, CurveFit, FitOptions};
+use karkas::fit::{
+    fit_curve, fit_curve_adaptive, knots_from_list, CurveFit, FitOptions, DEFAULT_FAIRNESS,
+};
 use karkas::{Curve, Point, Point2};
 use karkas_io::write::write_atomic;
 use karkas_io::OutputFormat;
@@ -31,8 +33,14 @@ pub struct CurveFitArgs {
     /// Input points, in order along the curve: CSV or whitespace columns x,y[,z], or an
     /// airfoil .dat.
     input: PathBuf,
-    /// The knots 0 = T1 < T2 < ... < TN = 1, comma-separated.
-    #[arg(long, value_delimiter = ',', conflicts_with = "tolerance")]
+    /// The knots 0 = T1 < T2 < ... < TN = 1, comma-separated; or one whole number N: N
+    /// uniformly spaced knots.
+    #[arg(
+        long,
+        value_delimiter = ',',
+        conflicts_with = "tolerance",
+        value_name = "T1,...,TN|N"
+    )]
     knots: Option<Vec<f64>>,
     /// Place knots automatically until every point is within TOL of the curve.
     #[arg(long, value_name = "TOL")]
@@ -44,6 +52,10 @@ pub struct CurveFitArgs {
     /// An inner knot whose jump is left free (a corner); repeat for several.
     #[arg(long = "corner", value_name = "T")]
     corners: Vec<f64>,
+    /// Weight rho of the bending energy that keeps the parameterization even (lambda = rho n
+    /// for n points; 0 for none).
+    #[arg(long, value_name = "RHO", default_value_t = DEFAULT_FAIRNESS)]
+    fairness: f64,
     #[command(flatten)]
     samples: CurveSamples,
     /// Pin the ends of the curve to the first and last points (e.g. a profile closed at a
@@ -65,8 +77,12 @@ pub struct CurveFitArgs {
 /// Runs `karkas curve fit`.
 pub fn run(args: &CurveFitArgs) -> Result<()> {
     let format = output_format(&args.output, &EXACT_CURVE_FORMATS)?;
-    if let Some(knots) = &args.knots {
-        check_knots(knots).context("--knots")?;
+    let knots = match &args.knots {
+        Some(given) => Some(knots_from_list(given).context("--knots")?),
+        None => None,
+    };
+    if !(args.fairness.is_finite() && args.fairness >= 0.0) {
+        bail!("--fairness: must be a number >= 0, got {}", args.fairness);
     }
     if let Some(tol) = args.tolerance {
         if !(tol.is_finite() && tol > 0.0) {
@@ -89,21 +105,22 @@ pub fn run(args: &CurveFitArgs) -> Result<()> {
             bail!("--report: must differ from the output file");
         }
     }
-    run_on_curve_points(&args.input, &(args, format))
+    run_on_curve_points(&args.input, &(args, format, knots))
 }
 
-impl CurveJob for (&CurveFitArgs, OutputFormat) {
+impl CurveJob for (&CurveFitArgs, OutputFormat, Option<Vec<f64>>) {
     fn run<const D: usize>(&self, points: &[Point<D>]) -> Result<()> {
-        let (args, format) = *self;
+        let (args, format, knots) = (self.0, self.1, &self.2);
         let options = FitOptions {
             eps: args.eps.unwrap_or(f64::INFINITY),
             corners: args.corners.clone(),
             pin_ends: args.pin_ends,
+            fairness: args.fairness,
             ..Default::default()
         };
         let input = || args.input.display().to_string();
         let started = Instant::now();
-        let fit: CurveFit<D> = match (&args.knots, args.tolerance) {
+        let fit: CurveFit<D> = match (knots, args.tolerance) {
             (Some(knots), _) => fit_curve(points, knots, &options).with_context(input)?,
             (None, Some(tol)) => {
                 let adaptive = fit_curve_adaptive(points, tol, &options).with_context(input)?;

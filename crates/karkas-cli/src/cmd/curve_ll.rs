@@ -21,7 +21,7 @@ use std::path::PathBuf;
 #[derive(Debug, Args)]
 pub struct CurveLlArgs {
     /// LL order L (at least 1): the curve is C^L, made of polynomial pieces of degree 2L.
-    #[arg(long, default_value_t = 3)]
+    #[arg(long, default_value_t = karkas::ll::DEFAULT_ORDER)]
     order: usize,
     /// Close the curve (the last point is joined to the first unless it repeats it).
     #[arg(long)]

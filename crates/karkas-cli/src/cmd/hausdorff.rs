@@ -3,10 +3,8 @@
 
 use anyhow::{bail, Context, Result};
 use clap::Args;
-use karkas::implicit::{closest_point_on, ExpressionSurface};
-use karkas::measure::{
-    distance_to_implicit, hausdorff_sets, DirectedDistance, Hausdorff, PointCloud,
-};
+use karkas::implicit::ExpressionSurface;
+use karkas::measure::{hausdorff_points_implicit, hausdorff_sets, DirectedDistance};
 use karkas::Point3;
 use karkas_io::input::display_name;
 use karkas_io::pointset::read_point_set;
@@ -44,20 +42,9 @@ pub fn run(args: &HausdorffArgs) -> Result<()> {
         (Some(expr), None) => {
             let surface = ExpressionSurface::parse(expr).context("--expr")?;
             let a_name = || display_name(a_path).display().to_string();
-            let forward = distance_to_implicit(&a, &surface).with_context(a_name)?;
             // The implicit side is the patch A covers: the closest points of A's points.
-            let feet: Vec<Point3> = a
-                .iter()
-                .map(|&p| closest_point_on(&surface, p))
-                .collect::<karkas::Result<_>>()
-                .with_context(a_name)?;
-            let cloud = PointCloud::new(&a).with_context(a_name)?;
-            let backward = cloud.directed_from(&feet);
-            (
-                Hausdorff::new(forward, backward),
-                format!("F = 0 with F = {expr}"),
-                None,
-            )
+            let h = hausdorff_points_implicit(&a, &surface).with_context(a_name)?;
+            (h, format!("F = 0 with F = {expr}"), None)
         }
     };
     let a_name = display_name(a_path).display().to_string();

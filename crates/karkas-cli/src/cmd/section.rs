@@ -10,7 +10,7 @@ use crate::output::samples::sample_surface;
 use crate::output::target::{output_format, shown};
 use anyhow::{bail, Context, Result};
 use clap::{Args, ValueEnum};
-use karkas::section::{Plane, Section, SectionOptions, Sectioner, MAX_CELLS};
+use karkas::section::{cells_for_grid, Plane, Section, SectionOptions, Sectioner, MAX_CELLS};
 use karkas::Point3;
 use karkas_io::scene::{write_scene_png, write_scene_svg, Scene, SceneCurves, SceneMesh, View};
 use karkas_io::write::write_sections_csv;
@@ -112,12 +112,11 @@ pub fn run(args: &SectionArgs) -> Result<()> {
     let cuts = planes(args)?;
     let grid = args.grid.read_for(&args.output)?;
     let surface = args.ll.build(&grid, &args.grid.input)?;
-    let default_cells = |lines: usize| (2 * lines).clamp(16, MAX_CELLS);
     let options = SectionOptions {
         tolerance: args.tolerance,
         cells: args
             .cells
-            .unwrap_or((default_cells(grid.rows()), default_cells(grid.cols()))),
+            .unwrap_or_else(|| cells_for_grid(grid.rows(), grid.cols())),
         ..SectionOptions::default()
     };
     let sectioner = Sectioner::new(&surface, &options)?;

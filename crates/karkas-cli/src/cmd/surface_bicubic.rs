@@ -18,21 +18,19 @@ pub enum ParamKind {
     Uniform,
     /// Chord lengths along the row and the column through node (0, 0) (Kuznetsov and Filatov's rule).
     Chord,
-    /// Chord lengths averaged over all rows and columns.
+    /// Chord lengths averaged over all rows and columns (also spelled averaged-chord).
+    #[value(alias = "averaged-chord")]
     Averaged,
     /// Square roots of chord lengths averaged over all rows and columns.
     Centripetal,
 }
 
 impl ParamKind {
-    /// The library's parameterization.
+    /// The library's parameterization, by the library's parser of names (the one Python's
+    /// `parameterization=` uses).
     pub fn to_library(self) -> GridParameterization {
-        match self {
-            ParamKind::Uniform => GridParameterization::Uniform,
-            ParamKind::Chord => GridParameterization::default(),
-            ParamKind::Averaged => GridParameterization::AveragedChord,
-            ParamKind::Centripetal => GridParameterization::Centripetal,
-        }
+        let name = self.to_possible_value().map(|v| v.get_name().to_owned());
+        name.and_then(|n| n.parse().ok()).unwrap_or_default()
     }
 }
 
@@ -43,8 +41,10 @@ impl ParamKind {
      grid line in each direction, at least 50]"
 )))]
 pub struct SurfaceBicubicArgs {
-    /// Parameters of the grid nodes.
-    #[arg(long, value_enum, default_value_t = ParamKind::Chord)]
+    /// Parameters of the grid nodes (--parameterization is the same option, by Python's
+    /// name).
+    #[arg(long, value_enum, default_value_t = ParamKind::Chord,
+          visible_alias = "parameterization")]
     param: ParamKind,
     #[command(flatten)]
     closed: ClosedUv,
@@ -82,4 +82,33 @@ pub fn run(args: &SurfaceBicubicArgs) -> Result<()> {
         &title,
         &args.mesh.options(false),
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every name of `--param` is one of the library's, and means the same rule.
+    #[test]
+    fn param_names_are_the_library_names() {
+        let expected = [
+            (ParamKind::Uniform, GridParameterization::Uniform),
+            (ParamKind::Chord, GridParameterization::default()),
+            (ParamKind::Averaged, GridParameterization::AveragedChord),
+            (ParamKind::Centripetal, GridParameterization::Centripetal),
+        ];
+        for (kind, rule) in expected {
+            assert_eq!(kind.to_library(), rule);
+            let name = kind.to_possible_value().map(|v| v.get_name().to_owned());
+            assert!(GridParameterization::NAMES.contains(&name.as_deref().unwrap_or("")));
+        }
+        assert_eq!(
+            ParamKind::from_str("averaged-chord", false),
+            Ok(ParamKind::Averaged)
+        );
+        assert_eq!(
+            ParamKind::Chord.to_library().name(),
+            GridParameterization::DEFAULT_NAME
+        );
+    }
 }

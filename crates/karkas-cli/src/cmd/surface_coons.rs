@@ -15,19 +15,13 @@ use crate::output::surface::write_sampled_surface;
 use crate::output::target::output_format;
 use anyhow::{anyhow, bail, Context, Result};
 use clap::{Args, ValueEnum};
-use karkas::coons::{CoonsSurface, CrossDerivatives, CurveFit, PointNetwork, SplineEnds};
+use karkas::coons::{
+    CoonsKind, CoonsSurface, CrossDerivatives, CurveFit, PointNetwork, CROSSING_TOLERANCE,
+    POINT_NETWORK_TOLERANCE,
+};
 use karkas::Error;
 use karkas_io::network::{read_curve_family, CurveFamily};
 use std::path::{Path, PathBuf};
-
-/// How far apart (relative to the model size) a point of a u-curve and a point of a v-curve
-/// may be and still be their crossing.
-pub const CROSSING_TOLERANCE: f64 = 1e-6;
-
-/// The tolerance of the compatibility conditions (8) / (11), relative to the model size (per
-/// node spacing for derivatives): cross-derivative files are interpolated like the curves,
-/// so they agree with the curves' own tangents only to the interpolation error.
-pub const COMPATIBILITY_TOLERANCE: f64 = 1e-4;
 
 /// Which surface to build.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
@@ -159,21 +153,27 @@ pub fn run(args: &SurfaceCoonsArgs) -> Result<()> {
     )
 }
 
+impl Kind {
+    /// The library's kind of the same name (the names Python's `kind=` takes).
+    fn to_library(self) -> CoonsKind {
+        match self {
+            Kind::Bilinear => CoonsKind::Bilinear,
+            Kind::Bicubic => CoonsKind::Bicubic,
+            Kind::Gordon => CoonsKind::Gordon,
+            Kind::GordonSpline => CoonsKind::GordonSpline,
+            Kind::Composite => CoonsKind::Composite,
+        }
+    }
+}
+
 /// The surface of `kind` over the network.
 fn build(
     kind: Kind,
     network: &PointNetwork<3>,
     cross: Option<&CrossDerivatives<3>>,
 ) -> karkas::Result<CoonsSurface<3>> {
-    let net = network.network();
-    let tol = COMPATIBILITY_TOLERANCE;
-    match kind {
-        Kind::Bilinear => CoonsSurface::bilinear(net, tol),
-        Kind::Bicubic => CoonsSurface::bicubic(net, cross, tol),
-        Kind::Gordon => CoonsSurface::gordon(net, tol),
-        Kind::GordonSpline => CoonsSurface::gordon_spline(net, SplineEnds::NotAKnot, tol),
-        Kind::Composite => CoonsSurface::composite(net, cross, tol),
-    }
+    kind.to_library()
+        .build(network.network(), cross, POINT_NETWORK_TOLERANCE)
 }
 
 /// Reads a curve family, refusing curves too short to interpolate (named by their line).
@@ -232,6 +232,26 @@ impl Files<'_> {
                 self.u.display(),
                 self.v.display()
             )),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `--kind` takes exactly the library's names, each for the library's kind of that name.
+    #[test]
+    fn kind_names_are_the_library_names() {
+        let names: Vec<String> = Kind::value_variants()
+            .iter()
+            .filter_map(|k| k.to_possible_value())
+            .map(|v| v.get_name().to_owned())
+            .collect();
+        assert_eq!(names, CoonsKind::NAMES);
+        for kind in Kind::value_variants() {
+            let name = kind.to_possible_value().map(|v| v.get_name().to_owned());
+            assert_eq!(name.as_deref(), Some(kind.to_library().name()));
         }
     }
 }

@@ -12,7 +12,7 @@ use crate::output::surface::write_surface;
 use crate::output::target::output_format;
 use anyhow::{bail, Result};
 use clap::Args;
-use karkas::dps::TubeSurface;
+use karkas::dps::{TubeSurface, DEFAULT_TUBE_ORDER};
 use karkas::Error;
 use karkas_io::skeleton::{read_across_curves, read_along_curves};
 use karkas_io::write::write_indexed_grid_csv;
@@ -37,10 +37,10 @@ pub struct SurfaceDpsTubeArgs {
     #[arg(long = "n2", value_name = "N2")]
     n2: usize,
     /// Spline order around the tube (in p).
-    #[arg(long = "r1", value_name = "R1", default_value_t = 2)]
+    #[arg(long = "r1", value_name = "R1", default_value_t = DEFAULT_TUBE_ORDER)]
     r1: usize,
     /// Spline order along the tube (in q).
-    #[arg(long = "r2", value_name = "R2", default_value_t = 2)]
+    #[arg(long = "r2", value_name = "R2", default_value_t = DEFAULT_TUBE_ORDER)]
     r2: usize,
     #[command(flatten)]
     mesh: MeshOutput,

@@ -6,9 +6,9 @@
 use crate::args::GridInput;
 use crate::output::overwrite::ensure_distinct;
 use crate::output::target::output_format;
-use anyhow::{bail, Context, Result};
+use anyhow::{anyhow, bail, Context, Result};
 use clap::{Args, ValueEnum};
-use karkas::ll::{vary, FixedEntries, SumTargets, VariationOptions};
+use karkas::ll::{complete_sums, vary, FixedEntries, SumTargets, SumsProblem, VariationOptions};
 use karkas::{Grid, Point3};
 use karkas_io::mask::read_cell_mask;
 use karkas_io::write::write_grid_csv;
@@ -133,33 +133,19 @@ pub fn run(args: &VaryArgs) -> Result<()> {
 /// The complete row and column sums from the command line.
 fn targets(args: &VaryArgs, n: usize, m: usize) -> Result<SumTargets> {
     let complete = |name: &str, given: &[f64], count: usize| -> Result<Vec<f64>> {
-        let sum: f64 = given.iter().sum();
-        if given.len() == count {
-            if let Some(q) = args.total {
-                let magnitude = given.iter().map(|v| v.abs()).sum::<f64>() + q.abs();
-                if (sum - q).abs() > 1e-12 * magnitude {
-                    bail!("{name}: the {count} sums add up to {sum}, not to --total {q}");
-                }
+        complete_sums(given, count, args.total).map_err(|problem| match problem {
+            SumsProblem::TotalMismatch { lines, sum, total } => {
+                anyhow!("{name}: the {lines} sums add up to {sum}, not to --total {total}")
             }
-            return Ok(given.to_vec());
-        }
-        if given.len() + 1 == count {
-            let Some(q) = args.total else {
-                bail!(
-                    "{name}: {} sums given for {count} lines; give all {count}, or {} with --total",
-                    given.len(),
-                    count - 1
-                );
-            };
-            let mut all = given.to_vec();
-            all.push(q - sum);
-            return Ok(all);
-        }
-        bail!(
-            "{name}: the grid has {count} of them: give {count} sums (or {} with --total), got {}",
-            count - 1,
-            given.len()
-        )
+            SumsProblem::NoTotal { given, lines } => anyhow!(
+                "{name}: {given} sums given for {lines} lines; give all {lines}, or {} with --total",
+                lines - 1
+            ),
+            SumsProblem::WrongCount { given, lines } => anyhow!(
+                "{name}: the grid has {lines} of them: give {lines} sums (or {} with --total), got {given}",
+                lines.saturating_sub(1)
+            ),
+        })
     };
     Ok(SumTargets {
         rows: complete("--rows", &args.rows, n)?,

@@ -178,3 +178,51 @@ fn bad_knots_are_one_line_errors_with_exit_2_and_no_output() {
     assert_eq!(o.status.code(), Some(2));
     assert!(!out.exists());
 }
+
+/// `--knots N` (one whole number) is N uniform knots, as Python's `fit_curve(knots=N)`; a
+/// count below 2 or a fraction is refused.
+#[test]
+fn one_number_of_knots_is_a_count() {
+    let dir = temp_dir();
+    let input = write(dir.path(), "arc.csv", &arc());
+    let (by_count, by_list) = (dir.path().join("n.csv"), dir.path().join("l.csv"));
+    for (knots, out) in [("5", &by_count), ("0,0.25,0.5,0.75,1", &by_list)] {
+        let o = karkas(&["curve", "fit", s(&input), "--knots", knots, "-o", s(out)]);
+        assert!(o.status.success(), "{knots}: {}", stderr(&o));
+    }
+    let (a, b) = (
+        std::fs::read_to_string(&by_count).unwrap(),
+        std::fs::read_to_string(&by_list).unwrap(),
+    );
+    assert_eq!(a, b);
+    for bad in ["1", "2.5", "0"] {
+        let out = dir.path().join("bad.csv");
+        let o = karkas(&["curve", "fit", s(&input), "--knots", bad, "-o", s(&out)]);
+        assert_eq!(o.status.code(), Some(2), "{bad}");
+        assert!(stderr(&o).contains("--knots"), "{}", stderr(&o));
+        assert!(!out.exists());
+    }
+}
+
+/// `--fairness` is passed to the fit: 0 and the default give different curves, and a
+/// negative weight is refused.
+#[test]
+fn fairness_option() {
+    let dir = temp_dir();
+    let input = write(dir.path(), "arc.csv", &arc());
+    let (default, none) = (dir.path().join("d.csv"), dir.path().join("z.csv"));
+    let run = |extra: &[&str], out: &std::path::Path| {
+        let mut argv = vec!["curve", "fit", s(&input), "--knots", "6"];
+        argv.extend_from_slice(extra);
+        argv.extend(["-o", s(out)]);
+        karkas(&argv)
+    };
+    assert!(run(&[], &default).status.success());
+    assert!(run(&["--fairness", "0"], &none).status.success());
+    assert_ne!(
+        std::fs::read_to_string(&default).unwrap(),
+        std::fs::read_to_string(&none).unwrap()
+    );
+    let o = run(&["--fairness", "-1"], &dir.path().join("bad.csv"));
+    assert_eq!(o.status.code(), Some(2));
+}

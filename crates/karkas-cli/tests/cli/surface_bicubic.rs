@@ -163,3 +163,22 @@ fn bad_input_exits_2_with_one_line_and_no_output() {
     assert_eq!(o.status.code(), Some(2));
     assert!(!out.exists());
 }
+
+/// `--parameterization` is `--param` by Python's name, and `averaged-chord` (Python's
+/// spelling) is `averaged`.
+#[test]
+fn python_spellings_of_the_parameterization() {
+    let dir = temp_dir();
+    let input = write(dir.path(), "g.csv", &grid_text());
+    let (a, b) = (dir.path().join("a.csv"), dir.path().join("b.csv"));
+    let run = |option: &str, value: &str, out: &std::path::Path| {
+        karkas(&["surface", "bicubic", option, value, s(&input), "-o", s(out)])
+    };
+    assert!(run("--param", "averaged", &a).status.success());
+    let o = run("--parameterization", "averaged-chord", &b);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_eq!(
+        std::fs::read_to_string(&a).unwrap(),
+        std::fs::read_to_string(&b).unwrap()
+    );
+}

@@ -38,3 +38,13 @@ pub use tube::{compatibility_residual, TubeSurface, COMPATIBILITY_TOLERANCE};
 /// condition number about `(pi/2)^(2r) / 2` (`3e24` at 64), so higher orders only lose
 /// accuracy.
 pub const MAX_ORDER: usize = 64;
+
+/// The spline orders `r1`, `r2` of a [`TubeSurface`] when none are given (the command line's
+/// `--r1`, `--r2`, Python's `r1=`, `r2=`): order 2 behaves like a cubic in each direction.
+pub const DEFAULT_TUBE_ORDER: usize = 2;
+
+/// The order `r` of a [`DiscreteSpline`] when none is given (Python's `order=`).
+pub const DEFAULT_ORDER: usize = 3;
+
+/// The step `n` (values per point) of a [`DiscreteSpline`] when none is given (Python's `n=`).
+pub const DEFAULT_STEP: usize = 10;

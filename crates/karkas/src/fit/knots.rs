@@ -77,6 +77,34 @@ pub fn uniform_knots(n: usize) -> Vec<f64> {
         .collect()
 }
 
+/// The knots of a fit from what the user gave: one whole number `n` means `n` uniform knots
+/// ([`uniform_knots`]; `n` at least 2), several numbers are the knots themselves (checked by
+/// [`check_knots`]). The rule of the command line's `--knots` and of Python's `knots=`.
+///
+/// Errors: a single number that is not a whole number of at least 2
+/// ([`Error::InvalidSetting`]); knots that [`check_knots`] refuses.
+///
+/// ```
+/// use karkas::fit::knots_from_list;
+/// assert_eq!(knots_from_list(&[3.0]).unwrap(), vec![0.0, 0.5, 1.0]);
+/// assert_eq!(knots_from_list(&[0.0, 0.25, 1.0]).unwrap(), vec![0.0, 0.25, 1.0]);
+/// assert!(knots_from_list(&[1.0]).is_err());
+/// ```
+pub fn knots_from_list(values: &[f64]) -> Result<Vec<f64>> {
+    if let [n] = values {
+        if !(n.fract() == 0.0 && *n >= 2.0 && *n <= 1e9) {
+            return Err(Error::InvalidSetting {
+                name: "knots",
+                value: *n,
+                reason: "one number is a count of uniform knots: a whole number of at least 2",
+            });
+        }
+        return Ok(uniform_knots(*n as usize));
+    }
+    check_knots(values)?;
+    Ok(values.to_vec())
+}
+
 /// How the data points get their starting parameters.
 #[derive(Clone, Debug, PartialEq, Default)]
 pub enum StartParameters {

@@ -61,7 +61,10 @@ mod solver;
 
 pub use adaptive::{fit_curve_adaptive, AdaptiveFit};
 pub use hermite::HermiteSpline;
-pub use knots::{check_knots, start_parameters, uniform_knots, StartParameters, MIN_KNOT_SPACING};
+pub use knots::{
+    check_knots, knots_from_list, start_parameters, uniform_knots, StartParameters,
+    MIN_KNOT_SPACING,
+};
 pub use penalty::{
     fit_curve, CurveFit, FitOptions, PenaltyRule, DEFAULT_FAIRNESS, DEFAULT_SETTLE_TOLERANCE,
 };

@@ -32,4 +32,9 @@ pub use curve::LlCurve;
 pub use kernel::{LlKernel, MAX_ORDER};
 pub use prefilter::interpolation_controls;
 pub use surface::LlSurface;
-pub use variation::{vary, FixedEntries, SumTargets, VariationOptions};
+pub use variation::{complete_sums, vary, FixedEntries, SumTargets, SumsProblem, VariationOptions};
+
+/// The order `L` used when none is given (the command line's `--order`, Python's `order=`):
+/// `C^3` curves and surfaces of degree 6 pieces, smooth enough for curvature plots and
+/// close to the polygon.
+pub const DEFAULT_ORDER: usize = 3;

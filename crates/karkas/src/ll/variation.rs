@@ -94,6 +94,75 @@ impl SumTargets {
     }
 }
 
+/// Why the sums given for one direction do not make a complete list ([`complete_sums`]).
+#[derive(Clone, Debug, PartialEq)]
+pub enum SumsProblem {
+    /// One sum fewer than lines, and no total to give the last one.
+    NoTotal {
+        /// Sums given.
+        given: usize,
+        /// Lines of the grid in that direction.
+        lines: usize,
+    },
+    /// Neither one sum a line nor one fewer.
+    WrongCount {
+        /// Sums given.
+        given: usize,
+        /// Lines of the grid in that direction.
+        lines: usize,
+    },
+    /// A complete list whose sum is not the total (beyond `1e-12` of the magnitudes).
+    TotalMismatch {
+        /// Lines (and sums).
+        lines: usize,
+        /// The sum of the sums.
+        sum: f64,
+        /// The total given.
+        total: f64,
+    },
+}
+
+/// The complete list of `lines` sums of one direction from the sums `given` and the optional
+/// new `total` `Q` (the rule of the command line's `vary --rows/--cols/--total` and Python's
+/// `vary(..., total=)`): all `lines` sums (which must then add up to `total` when it is
+/// given, to `1e-12` of their magnitudes), or the first `lines - 1` and `total`, the last
+/// line taking the rest.
+pub fn complete_sums(
+    given: &[f64],
+    lines: usize,
+    total: Option<f64>,
+) -> core::result::Result<Vec<f64>, SumsProblem> {
+    let sum: f64 = given.iter().sum();
+    if given.len() == lines {
+        if let Some(q) = total {
+            let magnitude = given.iter().map(|v| v.abs()).sum::<f64>() + q.abs();
+            if (sum - q).abs() > 1e-12 * magnitude {
+                return Err(SumsProblem::TotalMismatch {
+                    lines,
+                    sum,
+                    total: q,
+                });
+            }
+        }
+        return Ok(given.to_vec());
+    }
+    if given.len() + 1 == lines {
+        let Some(q) = total else {
+            return Err(SumsProblem::NoTotal {
+                given: given.len(),
+                lines,
+            });
+        };
+        let mut all = given.to_vec();
+        all.push(q - sum);
+        return Ok(all);
+    }
+    Err(SumsProblem::WrongCount {
+        given: given.len(),
+        lines,
+    })
+}
+
 /// Varies `matrix` (`n x m`) so that its row and column sums become `targets`, changing the
 /// entries not marked in `fixed` as little as possible (least squares). Returns the varied
 /// matrix.
@@ -404,5 +473,29 @@ impl Blocks {
             }
         }
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod sums_tests {
+    use super::*;
+
+    #[test]
+    fn complete_sums_takes_all_or_all_but_the_last_with_the_total() {
+        assert_eq!(complete_sums(&[1.0, 2.0], 2, None), Ok(vec![1.0, 2.0]));
+        assert_eq!(complete_sums(&[1.0, 2.0], 2, Some(3.0)), Ok(vec![1.0, 2.0]));
+        assert_eq!(complete_sums(&[1.0], 2, Some(5.0)), Ok(vec![1.0, 4.0]));
+        assert_eq!(
+            complete_sums(&[1.0], 2, None),
+            Err(SumsProblem::NoTotal { given: 1, lines: 2 })
+        );
+        assert_eq!(
+            complete_sums(&[1.0], 3, Some(1.0)),
+            Err(SumsProblem::WrongCount { given: 1, lines: 3 })
+        );
+        assert!(matches!(
+            complete_sums(&[1.0, 2.0], 2, Some(4.0)),
+            Err(SumsProblem::TotalMismatch { lines: 2, .. })
+        ));
     }
 }

@@ -21,4 +21,6 @@ mod sets;
 mod surface;
 
 pub use sets::{hausdorff_sets, DirectedDistance, Hausdorff, PointCloud};
-pub use surface::{distance_to_implicit, hausdorff_surface_implicit, ClosestPoint};
+pub use surface::{
+    distance_to_implicit, hausdorff_points_implicit, hausdorff_surface_implicit, ClosestPoint,
+};

@@ -115,6 +115,25 @@ pub fn distance_to_implicit<I: ImplicitSurface + ?Sized>(
     Ok(worst)
 }
 
+/// The two-sided Hausdorff distance between a point set and the patch of `F = 0` it covers
+/// (the rule of the command line's `hausdorff FILE --expr` and Python's
+/// `hausdorff(a, expr=...)`): forward, [`distance_to_implicit`]; backward, from the closest
+/// points on `F = 0` of the points back to the set.
+///
+/// Errors: those of [`distance_to_implicit`].
+pub fn hausdorff_points_implicit<I: ImplicitSurface + ?Sized>(
+    points: &[Point3],
+    implicit: &I,
+) -> Result<Hausdorff> {
+    let forward = distance_to_implicit(points, implicit)?;
+    let feet: Vec<Point3> = points
+        .iter()
+        .map(|&p| closest_point_on(implicit, p))
+        .collect::<Result<_>>()?;
+    let backward = PointCloud::new(points)?.directed_from(&feet);
+    Ok(Hausdorff::new(forward, backward))
+}
+
 /// The two-sided Hausdorff distance between `surface` and the patch of `F = 0` given by the
 /// points `patch` (which should lie on `F = 0` and cover the patch densely).
 ///

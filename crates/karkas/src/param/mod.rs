@@ -32,6 +32,7 @@
 
 mod bicubic;
 mod bspline;
+mod names;
 mod parameterization;
 mod spline;
 

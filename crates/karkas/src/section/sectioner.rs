@@ -12,6 +12,14 @@ use crate::{Error, Result};
 /// The largest number of cells of the coarse grid in one direction.
 pub const MAX_CELLS: usize = 4096;
 
+/// The cells of a surface built from a grid of `rows x cols` points when none are given (the
+/// command line's `section --cells`, Python's `LLSurface.section(cells=None)`): 2 per grid
+/// line in each direction, at least 16, at most [`MAX_CELLS`].
+pub fn cells_for_grid(rows: usize, cols: usize) -> (usize, usize) {
+    let cells = |lines: usize| lines.saturating_mul(2).clamp(16, MAX_CELLS);
+    (cells(rows), cells(cols))
+}
+
 /// The default tolerance, as a fraction of the diagonal of the surface's bounding box.
 pub const DEFAULT_RELATIVE_TOLERANCE: f64 = 1e-4;
 
