@@ -14,6 +14,7 @@ from typing_extensions import Self, TypeAlias, disjoint_base, final
 
 __version__: str
 __all__ = [
+    "_restore",
     "read_surface_samples",
     "read_skeleton",
     "read_point_set",

@@ -139,7 +139,7 @@ def surfaces():
         "LLSurface-closed_v": karkas.LLSurface(tube_grid()[:, :-1], order=2, closed_v=True),
         "BicubicSurface": karkas.BicubicSurface(height_grid()),
         "BicubicSurface-closed_v": karkas.BicubicSurface(tube_grid(), closed_v=True),
-        "CoonsSurface": karkas.CoonsSurface(*network(4, 5), kind="gordon-spline"),
+        "CoonsSurface": karkas.CoonsSurface(**dict(zip(("v_curves", "u_curves"), network(4, 5))), kind="gordon-spline"),
     }
 
 
@@ -205,7 +205,7 @@ def test_surface_derivative_bspline_is_the_derivative():
 
 def test_a_surface_with_no_polynomial_form_raises_a_typed_error():
     # Lagrange blending of 15 curves: degree 14, above what converts exactly.
-    S = karkas.CoonsSurface(*network(15, 4), kind="gordon")
+    S = karkas.CoonsSurface(**dict(zip(("v_curves", "u_curves"), network(15, 4))), kind="gordon")
     with pytest.raises(karkas.NoBSplineFormError, match="no exact B-spline form"):
         S.to_bspline()
     assert issubclass(karkas.NoBSplineFormError, karkas.KarkasError)

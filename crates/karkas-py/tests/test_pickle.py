@@ -89,7 +89,7 @@ def evaluate(obj):
         a, b = obj.domain
         t = np.linspace(a - 0.1, b + 0.1, 57)
         out["points"] = obj(t)
-        out["d1"] = obj.derivative(t, 1)
+        out["d1"] = obj(t, 1)
         for name in ("order", "interpolating", "control_points", "knots", "values", "slopes",
                      "derivatives", "max_distance", "rms_distance", "jump_sum", "tolerance_met",
                      "parameters", "distances"):
@@ -99,7 +99,7 @@ def evaluate(obj):
         (a, b), (c, d) = obj.domain_u, obj.domain_v
         u, v = np.linspace(a, b, 9), np.linspace(c, d, 11)
         out["points"] = obj(u, v)
-        out["du"] = obj.derivative(u, v, 1, 0)
+        out["du"] = obj(u, v, 1, 0)
         for name in ("order", "interpolating", "knots_u", "knots_v", "kind"):
             if hasattr(obj, name):
                 out[name] = getattr(obj, name)
