@@ -7,6 +7,8 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 __version__: str
+# The memory cap in bytes for one request (None: no cap); read at every size check.
+max_memory: int | None
 __all__: list[str]
 
 Floats = NDArray[np.float64]

@@ -11,12 +11,16 @@ use std::borrow::Cow;
 use karkas::{Grid, Point, Point3};
 use numpy::ndarray::{Dimension, Ix2, Ix3};
 use numpy::{
-    AllowTypeChange, PyArrayDyn, PyArrayLike, PyArrayLike1, PyArrayLikeDyn, PyArrayMethods,
-    PyReadonlyArray, PyUntypedArrayMethods,
+    AllowTypeChange, PyArrayDescrMethods, PyArrayDyn, PyArrayLike, PyArrayLike1, PyArrayLikeDyn,
+    PyArrayMethods, PyReadonlyArray, PyUntypedArray, PyUntypedArrayMethods,
 };
+use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
+use pyo3::sync::PyOnceLock;
+use pyo3::types::{PyFloat, PyInt};
 
 use crate::errors::{library_error, KarkasError, KnotsError, OptionError, PointsError};
+use crate::limits::{new_array, shape_text, zeros};
 
 /// Evaluations of at least this many points run with the GIL released (below it the release
 /// costs more than it frees).
@@ -101,8 +105,12 @@ impl<'py, Dm: Dimension + 'py> CoordArray<'py, Dm> {
             Some(2) => "a 2-D float array of shape (n, d)",
             _ => "a 3-D float array of shape (nu, nv, d)",
         };
-        let array = obj.extract().map_err(|_| {
-            PointsError::new_err(format!("{what} must be {shape} with d in {{2, 3}}"))
+        let real = real_array(obj, what)?;
+        let array = real.extract().map_err(|_| {
+            PointsError::new_err(format!(
+                "{what} must be {shape} with d in {{2, 3}} (got shape {})",
+                shape_of(&real)
+            ))
         })?;
         Ok(CoordArray { array })
     }
@@ -133,6 +141,11 @@ impl PointsArray<'_> {
 }
 
 impl GridArray<'_> {
+    /// The number of columns (the second axis).
+    pub fn columns(&self) -> usize {
+        self.array.shape()[1]
+    }
+
     /// The grid (rows along `u`) as karkas points.
     pub fn grid<const D: usize>(&self) -> PyResult<Grid<Point<D>>> {
         let shape = self.array.shape();
@@ -151,6 +164,64 @@ fn flat_of<'a, Dm: Dimension>(array: &'a PyReadonlyArray<'_, f64, Dm>) -> Cow<'a
         Some(s) => Cow::Borrowed(s),
         None => Cow::Owned(view.iter().copied().collect()),
     }
+}
+
+/// `numpy.asarray`, looked up once.
+static NUMPY_ASARRAY: PyOnceLock<Py<PyAny>> = PyOnceLock::new();
+
+/// `obj` as a NumPy array of real numbers (`numpy.asarray(obj)`, any layout, not yet
+/// float64): booleans, integers and floats of any width are taken (and converted to float64
+/// by the caller); complex numbers raise `TypeError` rather than lose their imaginary part,
+/// and so do strings, dates, and objects that are not numbers. An exception raised by the
+/// object itself (its `__array__`, `__len__`, ...) propagates unchanged.
+pub fn real_array<'py>(obj: &Bound<'py, PyAny>, what: &str) -> PyResult<Bound<'py, PyAny>> {
+    let py = obj.py();
+    let asarray = NUMPY_ASARRAY.get_or_try_init(py, || -> PyResult<Py<PyAny>> {
+        Ok(py.import("numpy")?.getattr("asarray")?.unbind())
+    })?;
+    let array = if obj.cast::<PyUntypedArray>().is_ok() {
+        obj.clone()
+    } else {
+        asarray.bind(py).call1((obj,))?
+    };
+    let untyped = array.cast::<PyUntypedArray>()?;
+    let dtype = untyped.dtype();
+    let kind: u8 = dtype.kind();
+    match kind {
+        b'b' | b'i' | b'u' | b'f' => Ok(array),
+        b'O' => {
+            // Objects that are all numbers (e.g. a ragged-free list holding Decimal) convert;
+            // anything else is a wrong type, not a wrong value.
+            let converted = asarray.bind(py).call1((&array, "float64")).map_err(|_| {
+                PyTypeError::new_err(format!(
+                    "{what} must hold real numbers, not Python objects ({})",
+                    type_name(obj)
+                ))
+            })?;
+            Ok(converted)
+        }
+        b'c' => Err(PyTypeError::new_err(format!(
+            "{what} must be real, not complex (dtype {dtype}); pass .real or abs() explicitly"
+        ))),
+        _ => Err(PyTypeError::new_err(format!(
+            "{what} must hold real numbers (got dtype {dtype} from {})",
+            type_name(obj)
+        ))),
+    }
+}
+
+/// The type name of `obj`, for messages.
+pub fn type_name(obj: &Bound<'_, PyAny>) -> String {
+    obj.get_type()
+        .name()
+        .map_or_else(|_| "?".to_string(), |n| n.to_string())
+}
+
+/// The shape of an array as Python prints it.
+fn shape_of(array: &Bound<'_, PyAny>) -> String {
+    array
+        .cast::<PyUntypedArray>()
+        .map_or_else(|_| "?".to_string(), |a| shape_text(a.shape()))
 }
 
 /// The dimension of `d` columns, or a `ValueError` naming `what`.
@@ -203,9 +274,13 @@ pub fn uniform((a, b): (f64, f64), n: usize) -> Vec<f64> {
 
 /// A 1-D float64 array of parameters (or knots).
 pub fn extract_vector(obj: &Bound<'_, PyAny>, what: &str) -> PyResult<Vec<f64>> {
-    let array: PyArrayLike1<'_, f64, AllowTypeChange> = obj
-        .extract()
-        .map_err(|_| KnotsError::new_err(format!("{what} must be a 1-D float array")))?;
+    let real = real_array(obj, what)?;
+    let array: PyArrayLike1<'_, f64, AllowTypeChange> = real.extract().map_err(|_| {
+        KnotsError::new_err(format!(
+            "{what} must be a 1-D float array (got shape {})",
+            shape_of(&real)
+        ))
+    })?;
     Ok(flat_of(&array).into_owned())
 }
 
@@ -220,14 +295,19 @@ pub enum Params<'py> {
 impl<'py> Params<'py> {
     /// Reads `obj` as a Python number or an array of numbers.
     pub fn extract(obj: &Bound<'py, PyAny>, what: &str) -> PyResult<Self> {
-        if let Ok(t) = obj.extract::<f64>() {
-            if obj.cast::<numpy::PyUntypedArray>().is_err() {
+        if obj.is_exact_instance_of::<PyFloat>() || obj.is_exact_instance_of::<PyInt>() {
+            if let Ok(t) = obj.extract::<f64>() {
                 return Ok(Params::Scalar(t));
             }
         }
-        let array: PyArrayLikeDyn<'py, f64, AllowTypeChange> = obj.extract().map_err(|_| {
+        let real = real_array(obj, what)?;
+        let array: PyArrayLikeDyn<'py, f64, AllowTypeChange> = real.extract().map_err(|_| {
             KarkasError::new_err(format!("{what} must be a float or an array of floats"))
         })?;
+        if array.ndim() == 0 {
+            let t = array.as_array().iter().copied().next().unwrap_or(f64::NAN);
+            return Ok(Params::Scalar(t));
+        }
         Ok(Params::Array(array))
     }
 
@@ -248,28 +328,53 @@ impl<'py> Params<'py> {
     }
 }
 
-/// The output array of shape `shape`: `out` checked (float64, C-contiguous, writeable, that
-/// shape) or a new zeroed one.
+/// The output array of shape `shape`: `out` checked (a float64 `numpy.ndarray`, C-contiguous,
+/// writeable, that shape) or a new zeroed one, checked against `karkas.max_memory` first.
+///
+/// A wrong type or dtype of `out` raises `TypeError`; a wrong shape, a Fortran-ordered or
+/// strided `out` and a read-only one raise `KarkasError` (a `ValueError`).
 pub fn output_array<'py>(
     py: Python<'py>,
     out: Option<Bound<'py, PyAny>>,
     shape: &[usize],
 ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
     let Some(out) = out else {
-        return Ok(PyArrayDyn::<f64>::zeros(py, shape, false));
+        return new_array(
+            py,
+            shape,
+            &format!("a result of shape {}", shape_text(shape)),
+        );
     };
-    let array = out
-        .cast_into::<PyArrayDyn<f64>>()
-        .map_err(|_| KarkasError::new_err("out must be a float64 numpy.ndarray"))?;
-    if array.shape() != shape {
-        return Err(KarkasError::new_err(format!(
-            "out has shape {:?}, expected {:?}",
-            array.shape(),
-            shape
+    let untyped = out.cast::<PyUntypedArray>().map_err(|_| {
+        PyTypeError::new_err(format!(
+            "out must be a numpy.ndarray of float64, not {}",
+            type_name(&out)
+        ))
+    })?;
+    if !untyped.dtype().is_equiv_to(&numpy::dtype::<f64>(py)) {
+        return Err(PyTypeError::new_err(format!(
+            "out must have dtype float64, not {}",
+            untyped.dtype()
         )));
     }
-    if !array.is_c_contiguous() {
-        return Err(KarkasError::new_err("out must be C-contiguous"));
+    if untyped.shape() != shape {
+        return Err(KarkasError::new_err(format!(
+            "out has shape {}, expected {}",
+            shape_text(untyped.shape()),
+            shape_text(shape)
+        )));
+    }
+    if !untyped.is_c_contiguous() {
+        return Err(KarkasError::new_err(
+            "out must be C-contiguous (a Fortran-ordered or strided array would be filled \
+             in the wrong order); use numpy.empty(shape) or numpy.ascontiguousarray",
+        ));
+    }
+    let array = out
+        .cast_into::<PyArrayDyn<f64>>()
+        .map_err(|e| PyTypeError::new_err(format!("out must be a float64 numpy.ndarray ({e})")))?;
+    if !array.getattr("flags")?.getattr("writeable")?.extract::<bool>()? {
+        return Err(KarkasError::new_err("out is read-only"));
     }
     Ok(array)
 }
@@ -300,7 +405,7 @@ pub fn points_to_array<'py, const D: usize>(
     py: Python<'py>,
     points: &[Point<D>],
 ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-    let array = PyArrayDyn::<f64>::zeros(py, &[points.len(), D][..], false);
+    let array = zeros(py, &[points.len(), D])?;
     write_flat(&array, |flat| flat.copy_from_slice(flatten(points)))?;
     Ok(array)
 }
@@ -310,16 +415,21 @@ pub fn grid_to_array<'py, const D: usize>(
     py: Python<'py>,
     grid: &Grid<Point<D>>,
 ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-    let array = PyArrayDyn::<f64>::zeros(py, &[grid.rows(), grid.cols(), D][..], false);
+    let array = zeros(py, &[grid.rows(), grid.cols(), D])?;
     write_flat(&array, |flat| {
         flat.copy_from_slice(flatten(grid.as_slice()))
     })?;
     Ok(array)
 }
 
-/// A new 1-D float64 array holding `values`.
-pub fn vector_to_array<'py>(py: Python<'py>, values: &[f64]) -> Bound<'py, PyArrayDyn<f64>> {
-    numpy::PyArray1::from_slice(py, values).to_dyn().clone()
+/// A new 1-D float64 array holding `values` (NumPy's `MemoryError` if it cannot be made).
+pub fn vector_to_array<'py>(
+    py: Python<'py>,
+    values: &[f64],
+) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+    let array = zeros(py, &[values.len()])?;
+    write_flat(&array, |flat| flat.copy_from_slice(values))?;
+    Ok(array)
 }
 
 /// A non-negative Python integer as a count, or an `OptionError` naming it.
@@ -388,11 +498,11 @@ pub struct Numbers(pub Vec<f64>);
 impl<'py> IntoPyObject<'py> for &Numbers {
     type Target = PyArrayDyn<f64>;
     type Output = Bound<'py, PyArrayDyn<f64>>;
-    type Error = std::convert::Infallible;
+    type Error = PyErr;
 
     /// A new 1-D array, as [`vector_to_array`] gives.
-    fn into_pyobject(self, py: Python<'py>) -> Result<Self::Output, Self::Error> {
-        Ok(vector_to_array(py, &self.0))
+    fn into_pyobject(self, py: Python<'py>) -> PyResult<Self::Output> {
+        vector_to_array(py, &self.0)
     }
 }
 

@@ -9,6 +9,7 @@ use numpy::PyArrayDyn;
 use pyo3::prelude::*;
 
 use crate::convert::{maybe_detach, output_array, uniform, vector_to_array, write_flat, Params};
+use crate::limits::{bytes_of, check_memory, zeros};
 use crate::wrapper::CurveImpl;
 
 /// Base class of every karkas curve.
@@ -68,8 +69,11 @@ impl PyCurve {
 
     /// c.sample(n): `n` points at uniformly spaced parameters over the domain, shape (n, d).
     fn sample<'py>(&self, py: Python<'py>, n: usize) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        let d = self.inner.dim();
+        // The parameters and the points.
+        check_memory(py, &format!("Curve.sample({n})"), bytes_of(&[n, d + 1], 8))?;
         let ts = uniform(self.inner.domain(), n);
-        let array = PyArrayDyn::<f64>::zeros(py, &[n, self.inner.dim()][..], false);
+        let array = zeros(py, &[n, d])?;
         let inner = &self.inner;
         write_flat(&array, |flat| {
             maybe_detach(py, n, || inner.eval_flat(&ts, 0, flat))
@@ -97,7 +101,7 @@ impl PyCurve {
 
     /// The parameters where the polynomial pieces meet, ends included.
     #[getter]
-    fn breakpoints<'py>(&self, py: Python<'py>) -> Bound<'py, PyArrayDyn<f64>> {
+    fn breakpoints<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
         vector_to_array(py, &self.inner.breakpoints())
     }
 

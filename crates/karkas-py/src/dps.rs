@@ -11,6 +11,7 @@ use crate::convert::{
     output_array, points_to_array, variant, write_flat, ByDim, GridArray, PointsArray,
 };
 use crate::errors::{library_error, PointsError};
+use crate::limits::{bytes_of, check_memory};
 
 /// The dimension `D` of points.
 fn point_dim<const D: usize>(_: &[Point<D>]) -> usize {
@@ -43,6 +44,14 @@ impl PyDiscreteSpline {
         let what = if interpolating { "nodes" } else { "poles" };
         let (pts, dim) = PointsArray::extract_checked(points, what)?;
         let (order, n) = (count(order, "order")?, count(n, "n")?);
+        if interpolating {
+            // The DFT plan tabulates sin and cos of pi q / n for every q < n.
+            check_memory(
+                py,
+                &format!("DiscreteSpline.interpolate(n={n})"),
+                bytes_of(&[n], 16).saturating_add(bytes_of(&[pts.len(), dim], 32)),
+            )?;
+        }
         let flat = pts.flat();
         let spline = by_dim!(dim, D => {
             let p = as_points::<D>(&flat);
@@ -92,6 +101,17 @@ impl PyDiscreteSpline {
         out: Option<Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
         let (dim, m, _, n) = self.parts();
+        // The values (unless out= holds them) and a scratch line of n points.
+        let values = if out.is_none() {
+            bytes_of(&[m, n, dim], 8)
+        } else {
+            0
+        };
+        check_memory(
+            py,
+            &format!("DiscreteSpline.values() of {m} x {n} values"),
+            values.saturating_add(bytes_of(&[n, dim], 8)),
+        )?;
         let array = output_array(py, out, &[m * n, dim])?;
         write_flat(&array, |flat| {
             maybe_detach(
@@ -188,6 +208,14 @@ impl PyTubeSurface {
             count(r1, "r1")?,
             count(r2, "r2")?,
         );
+        // The values c(p, q), N1 x N2 points, and a line of work per row and column.
+        let (big_n1, big_n2) = (b.columns(), a.columns());
+        check_memory(
+            py,
+            &format!("TubeSurface({big_n1} x {big_n2} values)"),
+            bytes_of(&[big_n1, big_n2, dim], 8)
+                .saturating_add(bytes_of(&[big_n1.saturating_add(big_n2), dim], 32)),
+        )?;
         let tube = by_dim!(dim, D => {
             let (ga, gb): (Grid<Point<D>>, Grid<Point<D>>) = (a.grid::<D>()?, b.grid::<D>()?);
             let t = maybe_detach(py, ga.as_slice().len(), || TubeSurface::<D>::new(&ga, &gb, n1, n2, r1, r2))
@@ -204,6 +232,18 @@ impl PyTubeSurface {
 
     /// The values with the first row and column repeated at the end, (N1+1, N2+1, d).
     fn closed_grid<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        let (dim, (p1, p2)) =
+            each!(&self.tube, t => (point_dim(t.values().as_slice()), t.periods()));
+        // The grid, then the array it is copied into.
+        check_memory(
+            py,
+            &format!(
+                "TubeSurface.closed_grid() of {} x {} values",
+                p1 + 1,
+                p2 + 1
+            ),
+            bytes_of(&[p1 + 1, p2 + 1, dim], 16),
+        )?;
         each!(&self.tube, t => grid_to_array(py, &t.closed_grid()))
     }
 

@@ -9,6 +9,7 @@ use pyo3::prelude::*;
 use crate::convert::{as_points, by_dim, count, extract_vector, FlatPoints, Numbers, PointsArray};
 use crate::curve::PyCurve;
 use crate::errors::{library_error, KnotsError, OptionError};
+use crate::limits::{bytes_of, check_memory};
 use crate::wrapper::{CurveImpl, Wrapped};
 
 /// A C^1 cubic Hermite spline (a cubic spline of defect 2) on [0, 1], as returned by
@@ -52,6 +53,16 @@ enum Target {
     Tolerance(f64),
 }
 
+/// The bytes a fit of `points` points in `dim` dimensions with `knots` knots works in: per
+/// knot the knots and spline, the Newton solver's per-piece blocks (16 and `16 dim^2` numbers,
+/// twice), its vectors of `2 dim` unknowns and the banded normal equations (bandwidth
+/// `4 dim`); per point the foot parameters, distances and projections.
+fn fit_bytes(points: usize, knots: usize, dim: usize) -> u128 {
+    let per_knot = 8 * (32 + 48 * dim * dim + 2 * dim * (16 + 8 * dim)) as u128;
+    let per_point = 8 * (4 * dim + 8) as u128;
+    bytes_of(&[knots], per_knot).saturating_add(bytes_of(&[points], per_point))
+}
+
 /// fit_curve(points, knots=None, tolerance=None, eps=None, pin_ends=False, corners=None,
 /// fairness=None) -> HermiteSpline
 ///
@@ -83,6 +94,11 @@ pub fn fit_curve(
                         "knots must be at least 2 (got {n})"
                     )));
                 }
+                check_memory(
+                    py,
+                    &format!("fit_curve(knots={n})"),
+                    fit_bytes(pts.len(), n, dim),
+                )?;
                 Some(fit::uniform_knots(n))
             }
             Err(_) => Some(extract_vector(k, "knots")?),
@@ -106,6 +122,13 @@ pub fn fit_curve(
     }
     if let Some(fairness) = fairness {
         options.fairness = fairness;
+    }
+    if let Target::Knots(knots) = &target {
+        check_memory(
+            py,
+            &format!("fit_curve with {} knots", knots.len()),
+            fit_bytes(pts.len(), knots.len(), dim),
+        )?;
     }
     let flat = pts.flat();
     let (inner, sub): (Arc<dyn CurveImpl>, PyHermiteSpline) = by_dim!(dim, D => {

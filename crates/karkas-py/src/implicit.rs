@@ -14,6 +14,7 @@ use crate::convert::{
     count, grid_to_array, maybe_detach, point3, points3, points_to_array, vector_to_array,
 };
 use crate::errors::{library_error, OptionError};
+use crate::limits::{bytes_of, check_memory};
 
 /// An implicit surface F(x, y, z) = 0 given as an expression, e.g. "x^2 + y^2 - 4" (exact
 /// first and second derivatives, by symbolic differentiation).
@@ -43,7 +44,7 @@ impl PyImplicitSurface {
     ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
         let pts = points3(points, "points")?;
         let values: Vec<f64> = pts.iter().map(|&p| self.surface.value(p)).collect();
-        Ok(vector_to_array(py, &values))
+        vector_to_array(py, &values)
     }
 
     /// grad F at the points (n, 3) -> (n, 3).
@@ -124,12 +125,17 @@ impl PyImplicitSurface {
                 )))
             }
         };
-        let mut spec = NetSpec::new(
-            point3(&start, "start")?,
-            directions,
-            (count(nodes.0, "nodes")?, count(nodes.1, "nodes")?),
-            steps,
-        );
+        let nodes = (count(nodes.0, "nodes")?, count(nodes.1, "nodes")?);
+        // The traced grid and the returned array.
+        check_memory(
+            py,
+            &format!(
+                "ImplicitSurface.trace_net(nodes=({}, {}))",
+                nodes.0, nodes.1
+            ),
+            bytes_of(&[nodes.0, nodes.1, 3], 16),
+        )?;
+        let mut spec = NetSpec::new(point3(&start, "start")?, directions, nodes, steps);
         spec.closed_v = closed_v;
         spec.substeps = count(substeps, "substeps")?;
         let surface = &self.surface;

@@ -19,6 +19,7 @@ mod errors;
 mod export;
 mod fit;
 mod implicit;
+mod limits;
 mod ll;
 mod measure;
 mod param;
@@ -43,6 +44,7 @@ static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 #[pymodule(name = "karkas")]
 fn karkas_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    m.add("max_memory", limits::initial_max_memory()?)?;
     errors::register(m)?;
     m.add_class::<curve::PyCurve>()?;
     m.add_class::<ll::PyLlCurve>()?;

@@ -262,7 +262,7 @@ pub fn curve_parameters<'py>(
     let (pts, dim) = PointsArray::extract_checked(points, "points")?;
     let flat = pts.flat();
     let t = by_dim!(dim, D => param_curve(as_points::<D>(&flat), rule)).map_err(library_error)?;
-    Ok(vector_to_array(py, &t))
+    vector_to_array(py, &t)
 }
 
 /// grid_parameters(grid, parameterization="chord") -> (u (nu,), v (nv,)): the parameters of
@@ -277,5 +277,5 @@ pub fn grid_parameters<'py>(
     let rule = parse_grid_parameterization(parameterization)?;
     let (g, dim) = GridArray::extract_checked(grid, "grid")?;
     let (u, v) = by_dim!(dim, D => param_grid(&g.grid::<D>()?, rule)).map_err(library_error)?;
-    Ok((vector_to_array(py, &u), vector_to_array(py, &v)))
+    Ok((vector_to_array(py, &u)?, vector_to_array(py, &v)?))
 }

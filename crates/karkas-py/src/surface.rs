@@ -11,6 +11,7 @@ use pyo3::prelude::*;
 
 use crate::convert::{maybe_detach, output_array, uniform, write_flat, Params};
 use crate::errors::{library_error, KarkasError, OptionError};
+use crate::limits::{bytes_of, check_memory, zeros};
 use crate::section::PySectionCurve;
 use crate::wrapper::SurfaceImpl;
 
@@ -110,9 +111,13 @@ impl PySurface {
         nu: usize,
         nv: usize,
     ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        let d = self.inner.dim();
+        // The parameters and the points.
+        let bytes = bytes_of(&[nu, nv, d], 8).saturating_add(bytes_of(&[nu.saturating_add(nv)], 8));
+        check_memory(py, &format!("Surface.sample({nu}, {nv})"), bytes)?;
         let us = uniform(self.inner.domain_u(), nu);
         let vs = uniform(self.inner.domain_v(), nv);
-        let array = PyArrayDyn::<f64>::zeros(py, &[nu, nv, self.inner.dim()][..], false);
+        let array = zeros(py, &[nu, nv, d])?;
         let inner = &self.inner;
         write_flat(&array, |flat| {
             maybe_detach(py, nu * nv, || inner.grid_flat(&us, &vs, 0, 0, flat))
@@ -140,6 +145,13 @@ impl PySurface {
                 normal.len()
             )));
         }
+        // The coarse grid of samples (points and plane values) and the traced polylines.
+        let grid = [cells.0.saturating_add(1), cells.1.saturating_add(1), d + 1];
+        check_memory(
+            py,
+            &format!("Surface.section(cells=({}, {}))", cells.0, cells.1),
+            bytes_of(&grid, 16),
+        )?;
         let options = SectionOptions {
             tolerance,
             cells,
