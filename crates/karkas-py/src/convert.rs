@@ -20,7 +20,7 @@ use pyo3::sync::PyOnceLock;
 use pyo3::types::{PyFloat, PyInt};
 
 use crate::errors::{library_error, KarkasError, KnotsError, OptionError, PointsError};
-use crate::limits::{new_array, shape_text, zeros};
+use crate::limits::{bytes_of, check_memory, new_array, shape_text, zeros};
 
 /// Evaluations of at least this many points run with the GIL released (below it the release
 /// costs more than it frees).
@@ -106,12 +106,13 @@ impl<'py, Dm: Dimension + 'py> CoordArray<'py, Dm> {
             _ => "a 3-D float array of shape (nu, nv, d)",
         };
         let real = real_array(obj, what)?;
-        let array = real.extract().map_err(|_| {
+        let array: PyArrayLike<'py, f64, Dm, AllowTypeChange> = real.extract().map_err(|_| {
             PointsError::new_err(format!(
                 "{what} must be {shape} with d in {{2, 3}} (got shape {})",
                 shape_of(&real)
             ))
         })?;
+        check_copy(&array, what)?;
         Ok(CoordArray { array })
     }
 
@@ -210,6 +211,44 @@ pub fn real_array<'py>(obj: &Bound<'py, PyAny>, what: &str) -> PyResult<Bound<'p
     }
 }
 
+/// Checks against `karkas.max_memory` the copy that reading a non-contiguous array (a strided
+/// or broadcast view, whose logical size can be far above the memory it occupies) takes.
+fn check_copy<Dm: Dimension>(array: &PyReadonlyArray<'_, f64, Dm>, what: &str) -> PyResult<()> {
+    if array.is_c_contiguous() {
+        return Ok(());
+    }
+    check_memory(
+        array.py(),
+        &format!("copying {what} of shape {}", shape_text(array.shape())),
+        bytes_of(array.shape(), 8),
+    )
+}
+
+/// The items of a sequence of arrays (e.g. a list of curves), refused with `TypeError` when
+/// `obj` is a string or not a sequence, and checked against `karkas.max_memory` by its
+/// length before a list of them is made.
+pub fn object_list<'py>(obj: &Bound<'py, PyAny>, what: &str) -> PyResult<Vec<Bound<'py, PyAny>>> {
+    if obj.is_instance_of::<pyo3::types::PyString>() || obj.is_instance_of::<pyo3::types::PyBytes>()
+    {
+        return Err(PyTypeError::new_err(format!(
+            "{what} must be a sequence of arrays, not {}",
+            type_name(obj)
+        )));
+    }
+    let n = obj.len().map_err(|_| {
+        PyTypeError::new_err(format!(
+            "{what} must be a sequence of arrays, not {}",
+            type_name(obj)
+        ))
+    })?;
+    check_memory(
+        obj.py(),
+        &format!("{what} of {n} items"),
+        bytes_of(&[n], 64),
+    )?;
+    obj.try_iter()?.collect()
+}
+
 /// The type name of `obj`, for messages.
 pub fn type_name(obj: &Bound<'_, PyAny>) -> String {
     obj.get_type()
@@ -272,15 +311,31 @@ pub fn uniform((a, b): (f64, f64), n: usize) -> Vec<f64> {
         .collect()
 }
 
-/// A 1-D float64 array of parameters (or knots).
+/// A 1-D float64 array of parameters (or knots); `KnotsError` when not 1-D.
 pub fn extract_vector(obj: &Bound<'_, PyAny>, what: &str) -> PyResult<Vec<f64>> {
+    vector_of(obj, what, KnotsError::new_err)
+}
+
+/// A short 1-D float64 vector such as a plane's normal or a point; `OptionError` when not
+/// 1-D.
+pub fn small_vector(obj: &Bound<'_, PyAny>, what: &str) -> PyResult<Vec<f64>> {
+    vector_of(obj, what, OptionError::new_err)
+}
+
+/// A 1-D float64 array, `error` for one of another rank.
+fn vector_of(obj: &Bound<'_, PyAny>, what: &str, error: fn(String) -> PyErr) -> PyResult<Vec<f64>> {
     let real = real_array(obj, what)?;
     let array: PyArrayLike1<'_, f64, AllowTypeChange> = real.extract().map_err(|_| {
-        KnotsError::new_err(format!(
+        error(format!(
             "{what} must be a 1-D float array (got shape {})",
             shape_of(&real)
         ))
     })?;
+    check_memory(
+        obj.py(),
+        &format!("reading {what} of shape {}", shape_text(array.shape())),
+        bytes_of(array.shape(), 8),
+    )?;
     Ok(flat_of(&array).into_owned())
 }
 
@@ -304,6 +359,7 @@ impl<'py> Params<'py> {
         let array: PyArrayLikeDyn<'py, f64, AllowTypeChange> = real.extract().map_err(|_| {
             KarkasError::new_err(format!("{what} must be a float or an array of floats"))
         })?;
+        check_copy(&array, what)?;
         if array.ndim() == 0 {
             let t = array.as_array().iter().copied().next().unwrap_or(f64::NAN);
             return Ok(Params::Scalar(t));
@@ -373,7 +429,11 @@ pub fn output_array<'py>(
     let array = out
         .cast_into::<PyArrayDyn<f64>>()
         .map_err(|e| PyTypeError::new_err(format!("out must be a float64 numpy.ndarray ({e})")))?;
-    if !array.getattr("flags")?.getattr("writeable")?.extract::<bool>()? {
+    if !array
+        .getattr("flags")?
+        .getattr("writeable")?
+        .extract::<bool>()?
+    {
         return Err(KarkasError::new_err("out is read-only"));
     }
     Ok(array)

@@ -80,7 +80,7 @@ pub fn fit_curve(
     tolerance: Option<f64>,
     eps: Option<f64>,
     pin_ends: bool,
-    corners: Option<Vec<f64>>,
+    corners: Option<&Bound<'_, PyAny>>,
     fairness: Option<f64>,
 ) -> PyResult<Py<PyHermiteSpline>> {
     let (pts, dim) = PointsArray::extract_checked(points, "points")?;
@@ -114,7 +114,10 @@ pub fn fit_curve(
     };
     let mut options = FitOptions {
         pin_ends,
-        corners: corners.unwrap_or_default(),
+        corners: corners
+            .map(|c| extract_vector(c, "corners"))
+            .transpose()?
+            .unwrap_or_default(),
         ..FitOptions::default()
     };
     if let Some(eps) = eps {

@@ -11,10 +11,16 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use crate::convert::{
-    count, grid_to_array, maybe_detach, point3, points3, points_to_array, vector_to_array,
+    count, grid_to_array, maybe_detach, point3, points3, points_to_array, small_vector,
+    vector_to_array,
 };
 use crate::errors::{library_error, OptionError};
 use crate::limits::{bytes_of, check_memory};
+
+/// The most Runge-Kutta substeps per node step `trace_net` takes: a classical Runge-Kutta
+/// step's error falls as the fifth power of its length, so more substeps than this change
+/// nothing in double precision and only make a mistyped count run for hours.
+pub const MAX_SUBSTEPS: usize = 4096;
 
 /// An implicit surface F(x, y, z) = 0 given as an expression, e.g. "x^2 + y^2 - 4" (exact
 /// first and second derivatives, by symbolic differentiation).
@@ -77,8 +83,13 @@ impl PyImplicitSurface {
 
     /// The curvature frame at a point on the surface: a dict with normal, k1 >= k2 (principal
     /// curvatures), their directions d1, d2, gaussian and mean curvature.
-    fn curvatures<'py>(&self, py: Python<'py>, point: Vec<f64>) -> PyResult<Bound<'py, PyDict>> {
-        let f = SurfaceFrame::at(&self.surface, point3(&point, "point")?).map_err(library_error)?;
+    fn curvatures<'py>(
+        &self,
+        py: Python<'py>,
+        point: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let point = point3(&small_vector(point, "point")?, "point")?;
+        let f = SurfaceFrame::at(&self.surface, point).map_err(library_error)?;
         let d = PyDict::new(py);
         d.set_item("normal", f.normal.0.to_vec())?;
         d.set_item("k1", f.first_curvature)?;
@@ -94,18 +105,19 @@ impl PyImplicitSurface {
     /// closed_v=False, substeps=32) -> (nu, nv, 3): a node grid on F = 0 from start (projected
     /// first) along two direction fields: 'principal' (lines of curvature), 'turned' (both
     /// turned by angle), 'turned-u' (u lines turned), 'plane-sections' (v lines in planes
-    /// normal to plane_normal). nodes = (nu, nv); steps = arc lengths between nodes.
+    /// normal to plane_normal). nodes = (nu, nv); steps = arc lengths between nodes; substeps:
+    /// Runge-Kutta steps per node step, at most 4096.
     #[pyo3(signature = (start, nodes, steps, directions = "principal", angle = 0.0, plane_normal = None, closed_v = false, substeps = 32))]
     #[allow(clippy::too_many_arguments)]
     fn trace_net<'py>(
         &self,
         py: Python<'py>,
-        start: Vec<f64>,
+        start: &Bound<'py, PyAny>,
         nodes: (i64, i64),
         steps: (f64, f64),
         directions: &str,
         angle: f64,
-        plane_normal: Option<Vec<f64>>,
+        plane_normal: Option<Bound<'py, PyAny>>,
         closed_v: bool,
         substeps: i64,
     ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
@@ -115,7 +127,10 @@ impl PyImplicitSurface {
             "turned-u" => NetDirections::TurnedU { angle },
             "plane-sections" => NetDirections::PlaneSections {
                 plane_normal: point3(
-                    &plane_normal.ok_or_else(|| OptionError::new_err("'plane-sections' needs plane_normal"))?,
+                    &small_vector(
+                        &plane_normal.ok_or_else(|| OptionError::new_err("'plane-sections' needs plane_normal"))?,
+                        "plane_normal",
+                    )?,
                     "plane_normal",
                 )?,
             },
@@ -135,9 +150,21 @@ impl PyImplicitSurface {
             ),
             bytes_of(&[nodes.0, nodes.1, 3], 16),
         )?;
-        let mut spec = NetSpec::new(point3(&start, "start")?, directions, nodes, steps);
+        let mut spec = NetSpec::new(
+            point3(&small_vector(start, "start")?, "start")?,
+            directions,
+            nodes,
+            steps,
+        );
         spec.closed_v = closed_v;
         spec.substeps = count(substeps, "substeps")?;
+        if spec.substeps > MAX_SUBSTEPS {
+            return Err(OptionError::new_err(format!(
+                "substeps must be at most {MAX_SUBSTEPS} (got {}): the Runge-Kutta steps are \
+                 then already far below double precision",
+                spec.substeps
+            )));
+        }
         let surface = &self.surface;
         let grid = py
             .detach(|| trace_net(surface, &spec))

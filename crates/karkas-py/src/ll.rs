@@ -9,11 +9,12 @@ use numpy::{AllowTypeChange, PyArrayDyn, PyArrayLike2, PyUntypedArrayMethods};
 use pyo3::prelude::*;
 
 use crate::convert::{
-    as_points, by_dim, count, maybe_detach, py_bool, variant, write_flat, FlatPoints, GridArray,
-    PointsArray,
+    as_points, by_dim, count, maybe_detach, py_bool, real_array, small_vector, variant, write_flat,
+    FlatPoints, GridArray, PointsArray,
 };
 use crate::curve::PyCurve;
-use crate::errors::library_error;
+use crate::errors::{library_error, PointsError};
+use crate::limits::zeros;
 use crate::surface::PySurface;
 use crate::wrapper::{CurveImpl, SurfaceImpl, Wrapped, WrappedSurface};
 
@@ -196,13 +197,19 @@ impl PyLlSurface {
 #[pyo3(signature = (matrix, row_sums, column_sums, fixed = None, penalty = None, scale_with_total = false))]
 pub fn vary<'py>(
     py: Python<'py>,
-    matrix: PyArrayLike2<'py, f64, AllowTypeChange>,
-    row_sums: Vec<f64>,
-    column_sums: Vec<f64>,
+    matrix: &Bound<'py, PyAny>,
+    row_sums: &Bound<'py, PyAny>,
+    column_sums: &Bound<'py, PyAny>,
     fixed: Option<PyArrayLike2<'py, bool, AllowTypeChange>>,
     penalty: Option<f64>,
     scale_with_total: bool,
 ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+    let row_sums = small_vector(row_sums, "row_sums")?;
+    let column_sums = small_vector(column_sums, "column_sums")?;
+    let matrix: PyArrayLike2<'py, f64, AllowTypeChange> =
+        real_array(matrix, "matrix")?
+            .extract()
+            .map_err(|_| PointsError::new_err("matrix must be a 2-D float array"))?;
     let (n, m) = (matrix.shape()[0], matrix.shape()[1]);
     let values: Vec<f64> = matrix.as_array().iter().copied().collect();
     let z = Grid::from_row_major(n, m, values).map_err(library_error)?;
@@ -225,7 +232,7 @@ pub fn vary<'py>(
     let varied = py
         .detach(|| ll_vary(&z, &fixed, &targets, &options))
         .map_err(library_error)?;
-    let out = PyArrayDyn::<f64>::zeros(py, &[n, m][..], false);
+    let out = zeros(py, &[n, m])?;
     write_flat(&out, |flat| flat.copy_from_slice(varied.as_slice()))?;
     Ok(out)
 }

@@ -9,7 +9,7 @@ use karkas::section::SectionOptions;
 use numpy::PyArrayDyn;
 use pyo3::prelude::*;
 
-use crate::convert::{maybe_detach, output_array, uniform, write_flat, Params};
+use crate::convert::{maybe_detach, output_array, small_vector, uniform, write_flat, Params};
 use crate::errors::{library_error, KarkasError, OptionError};
 use crate::limits::{bytes_of, check_memory, zeros};
 use crate::section::PySectionCurve;
@@ -133,12 +133,13 @@ impl PySurface {
     fn section(
         &self,
         py: Python<'_>,
-        normal: Vec<f64>,
+        normal: &Bound<'_, PyAny>,
         offset: f64,
         tolerance: Option<f64>,
         cells: (usize, usize),
     ) -> PyResult<Vec<PySectionCurve>> {
         let d = self.inner.dim();
+        let normal = small_vector(normal, "normal")?;
         if normal.len() != d {
             return Err(OptionError::new_err(format!(
                 "normal must have {d} coordinates (got {})",
