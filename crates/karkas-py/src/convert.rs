@@ -17,7 +17,7 @@ use numpy::{
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::sync::PyOnceLock;
-use pyo3::types::{PyFloat, PyInt};
+use pyo3::types::{PyBool, PyFloat, PyInt};
 
 use crate::errors::{library_error, KarkasError, KnotsError, OptionError, PointsError};
 use crate::limits::{bytes_of, check_memory, new_array, shape_text, zeros};
@@ -493,9 +493,55 @@ pub fn vector_to_array<'py>(
 }
 
 /// A non-negative Python integer as a count, or an `OptionError` naming it.
-pub fn count(value: i64, name: &str) -> PyResult<usize> {
+pub fn count(value: impl Into<i64>, name: &str) -> PyResult<usize> {
+    let value: i64 = value.into();
     usize::try_from(value)
         .map_err(|_| OptionError::new_err(format!("{name} must be non-negative (got {value})")))
+}
+
+/// An integer argument: a Python `int` or anything with `__index__` (NumPy's integers).
+/// `True`/`False` raise `TypeError` (a flag is not a number), as floats and strings do;
+/// values beyond 64 bits raise `OverflowError`.
+#[derive(Clone, Copy, Debug)]
+pub struct Int(pub i64);
+
+impl From<Int> for i64 {
+    fn from(value: Int) -> i64 {
+        value.0
+    }
+}
+
+/// A count argument: an [`Int`] that must be non-negative (`OverflowError` otherwise, as
+/// Python's own conversions to unsigned integers raise).
+#[derive(Clone, Copy, Debug)]
+pub struct Size(pub usize);
+
+/// Refuses `bool` where an integer is expected.
+fn refuse_bool(ob: &Borrowed<'_, '_, PyAny>) -> PyResult<()> {
+    if ob.is_instance_of::<PyBool>() {
+        return Err(PyTypeError::new_err(
+            "expected an integer, got a bool (True and False are not counts)",
+        ));
+    }
+    Ok(())
+}
+
+impl<'a, 'py> FromPyObject<'a, 'py> for Int {
+    type Error = PyErr;
+
+    fn extract(ob: Borrowed<'a, 'py, PyAny>) -> PyResult<Self> {
+        refuse_bool(&ob)?;
+        Ok(Int(ob.extract::<i64>()?))
+    }
+}
+
+impl<'a, 'py> FromPyObject<'a, 'py> for Size {
+    type Error = PyErr;
+
+    fn extract(ob: Borrowed<'a, 'py, PyAny>) -> PyResult<Self> {
+        refuse_bool(&ob)?;
+        Ok(Size(ob.extract::<usize>()?))
+    }
 }
 
 /// `True`/`False` as Python spells them.

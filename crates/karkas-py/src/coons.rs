@@ -6,7 +6,7 @@ use karkas::coons::{CoonsSurface, CurveFit, PointNetwork};
 use karkas::Point;
 use pyo3::prelude::*;
 
-use crate::convert::{as_points, by_dim, check_dim, count, object_list, PointsArray};
+use crate::convert::{as_points, by_dim, check_dim, count, object_list, Int, PointsArray};
 use crate::errors::{library_error, OptionError, PointsError};
 use crate::limits::{bytes_of, check_memory};
 use crate::surface::PySurface;
@@ -97,7 +97,7 @@ impl PyCoonsSurface {
                         }
                     }
                 } else {
-                    let (name, order): (String, i64) = f.extract().map_err(|_| {
+                    let (name, order): (String, Int) = f.extract().map_err(|_| {
                         OptionError::new_err("fit must be 'spline' or ('ll', order)")
                     })?;
                     if name != "ll" {

@@ -8,7 +8,9 @@ use std::sync::Arc;
 use numpy::PyArrayDyn;
 use pyo3::prelude::*;
 
-use crate::convert::{maybe_detach, output_array, uniform, vector_to_array, write_flat, Params};
+use crate::convert::{
+    maybe_detach, output_array, uniform, vector_to_array, write_flat, Params, Size,
+};
 use crate::limits::{bytes_of, check_memory, zeros};
 use crate::wrapper::CurveImpl;
 
@@ -68,7 +70,8 @@ impl PyCurve {
     }
 
     /// c.sample(n): `n` points at uniformly spaced parameters over the domain, shape (n, d).
-    fn sample<'py>(&self, py: Python<'py>, n: usize) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+    fn sample<'py>(&self, py: Python<'py>, n: Size) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        let n = n.0;
         let d = self.inner.dim();
         // The parameters and the points.
         check_memory(py, &format!("Curve.sample({n})"), bytes_of(&[n, d + 1], 8))?;

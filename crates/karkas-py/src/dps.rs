@@ -8,7 +8,7 @@ use pyo3::prelude::*;
 
 use crate::convert::{
     as_points, as_points_mut, by_dim, check_dim, count, each, grid_to_array, maybe_detach,
-    output_array, points_to_array, variant, write_flat, ByDim, GridArray, PointsArray,
+    output_array, points_to_array, variant, write_flat, ByDim, GridArray, Int, PointsArray,
 };
 use crate::errors::{library_error, PointsError};
 use crate::limits::{bytes_of, check_memory};
@@ -188,8 +188,8 @@ impl PyTubeSurface {
         py: Python<'_>,
         along: &Bound<'_, PyAny>,
         across: &Bound<'_, PyAny>,
-        n1: i64,
-        n2: i64,
+        n1: Int,
+        n2: Int,
         r1: i64,
         r2: i64,
     ) -> PyResult<Self> {

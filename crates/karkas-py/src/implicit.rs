@@ -12,7 +12,7 @@ use pyo3::types::PyDict;
 
 use crate::convert::{
     count, grid_to_array, maybe_detach, point3, points3, points_to_array, small_vector,
-    vector_to_array,
+    vector_to_array, Int,
 };
 use crate::errors::{library_error, OptionError};
 use crate::limits::{bytes_of, check_memory};
@@ -113,7 +113,7 @@ impl PyImplicitSurface {
         &self,
         py: Python<'py>,
         start: &Bound<'py, PyAny>,
-        nodes: (i64, i64),
+        nodes: (Int, Int),
         steps: (f64, f64),
         directions: &str,
         angle: f64,

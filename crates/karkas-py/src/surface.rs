@@ -9,7 +9,7 @@ use karkas::section::SectionOptions;
 use numpy::PyArrayDyn;
 use pyo3::prelude::*;
 
-use crate::convert::{maybe_detach, output_array, small_vector, uniform, write_flat, Params};
+use crate::convert::{maybe_detach, output_array, small_vector, uniform, write_flat, Params, Size};
 use crate::errors::{library_error, KarkasError, OptionError};
 use crate::limits::{bytes_of, check_memory, zeros};
 use crate::section::PySectionCurve;
@@ -108,9 +108,10 @@ impl PySurface {
     fn sample<'py>(
         &self,
         py: Python<'py>,
-        nu: usize,
-        nv: usize,
+        nu: Size,
+        nv: Size,
     ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        let (nu, nv) = (nu.0, nv.0);
         let d = self.inner.dim();
         // The parameters and the points.
         let bytes = bytes_of(&[nu, nv, d], 8).saturating_add(bytes_of(&[nu.saturating_add(nv)], 8));

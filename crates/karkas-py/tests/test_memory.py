@@ -158,6 +158,8 @@ def test_every_sized_request_is_checked(cap):
         (lambda c: c.sample(10**30), OverflowError),
         (lambda c: c.sample(2.5), TypeError),
         (lambda c: c.sample("3"), TypeError),
+        (lambda c: c.sample(True), TypeError),
+        (lambda c: karkas.ImplicitSurface("x^2+y^2+z^2-1").trace_net([1, 0, 0], (True, 3), (0.1, 0.1)), TypeError),
         (lambda c: c.derivative(0.5, -1), OverflowError),
         (lambda c: karkas.LLCurve(c.control_points, order=10**30), OverflowError),
         (lambda c: karkas.LLCurve(c.control_points, order=10**6), karkas.OptionError),
