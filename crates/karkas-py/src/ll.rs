@@ -14,7 +14,7 @@ use crate::convert::{
 };
 use crate::curve::PyCurve;
 use crate::errors::{library_error, PointsError};
-use crate::limits::zeros;
+use crate::limits::{bytes_of, check_memory, shape_text, zeros};
 use crate::surface::PySurface;
 use crate::wrapper::{CurveImpl, SurfaceImpl, Wrapped, WrappedSurface};
 
@@ -211,12 +211,25 @@ pub fn vary<'py>(
             .extract()
             .map_err(|_| PointsError::new_err("matrix must be a 2-D float array"))?;
     let (n, m) = (matrix.shape()[0], matrix.shape()[1]);
+    // The matrix, the fixed entries, the varied matrix and the solver's work (about as many
+    // numbers again), before any copy.
+    check_memory(
+        py,
+        &format!("vary of a {n} x {m} matrix"),
+        bytes_of(&[n, m], 8 * 3 + 1),
+    )?;
     let values: Vec<f64> = matrix.as_array().iter().copied().collect();
     let z = Grid::from_row_major(n, m, values).map_err(library_error)?;
     let fixed = match fixed {
         Some(f) => {
-            let shape = f.shape();
-            Grid::from_row_major(shape[0], shape[1], f.as_array().iter().copied().collect())
+            if f.shape() != [n, m] {
+                return Err(PointsError::new_err(format!(
+                    "fixed has shape {}, the matrix {}",
+                    shape_text(f.shape()),
+                    shape_text(&[n, m])
+                )));
+            }
+            Grid::from_row_major(n, m, f.as_array().iter().copied().collect())
                 .map_err(library_error)?
         }
         None => Grid::from_fn(n, m, |_, _| false),

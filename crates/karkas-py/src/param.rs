@@ -11,8 +11,8 @@ use numpy::PyArrayDyn;
 use pyo3::prelude::*;
 
 use crate::convert::{
-    as_points, by_dim, extract_vector, maybe_detach, py_bool, vector_to_array, FlatPoints,
-    GridArray, Numbers, PointsArray,
+    as_points, by_dim, extract_vector, maybe_detach, py_bool, small_vector, vector_to_array,
+    FlatPoints, GridArray, Numbers, PointsArray,
 };
 use crate::curve::PyCurve;
 use crate::errors::{library_error, OptionError};
@@ -46,9 +46,14 @@ fn parse_ends<const D: usize>(bc: &Bound<'_, PyAny>) -> PyResult<SplineEnds<D>> 
             ))),
         };
     }
-    let (name, start, end): (String, Vec<f64>, Vec<f64>) = bc.extract().map_err(|_| {
-        OptionError::new_err("bc must be a name or ('clamped', start_derivative, end_derivative)")
-    })?;
+    let (name, start, end): (String, Bound<'_, PyAny>, Bound<'_, PyAny>) =
+        bc.extract().map_err(|_| {
+            OptionError::new_err(
+                "bc must be a name or ('clamped', start_derivative, end_derivative)",
+            )
+        })?;
+    let start = small_vector(&start, "the start derivative of bc")?;
+    let end = small_vector(&end, "the end derivative of bc")?;
     if name != "clamped" || start.len() != D || end.len() != D {
         return Err(OptionError::new_err(format!(
             "bc must be ('clamped', start, end) with {D} coordinates each"

@@ -10,7 +10,9 @@ exception outside the documented ones.
   (None, strings, nan, inf, negative, zero, huge and overflowing integers, empty arrays, wrong
   shapes and dtypes, Fortran-ordered, strided, read-only and broadcast views of huge shape,
   objects whose ``__array__`` raises), and also calls with no arguments and with one argument
-  too many. Properties are also assigned to (they are read-only).
+  too many. Properties are also assigned to (they are read-only). ``nested_calls`` puts
+  hostile values inside otherwise valid arguments (a clamped end's vector, a curve of a
+  network, a tuple of counts).
 - Each callable is swept in its own subprocess, with ``resource.RLIMIT_AS`` at a few GiB and
   ``karkas.max_memory`` lowered, so that a crash (a signal, an abort) fails the test instead of
   killing pytest, and a runaway allocation is refused rather than swapping.
@@ -395,6 +397,49 @@ def hostile_calls(name, o):
             yield f"{name} {key}={label}", (lambda b=bad: fn(*args, **b)), ALLOWED
 
 
+def nested_calls(o):
+    """Hostile values inside otherwise valid arguments (a tuple's element, a list's item)."""
+    huge = np.broadcast_to(np.float64(0.5), (10**10,))
+    s = np.linspace(0.0, 1.0, 5)
+    v, u = _network()
+    calls = {
+        "bc clamped huge": lambda: karkas.CubicSpline(o.pts3, bc=("clamped", huge, [1.0, 0.0, 0.0])),
+        "bc clamped complex": lambda: karkas.CubicSpline(o.pts3, bc=("clamped", [1j, 0, 0], [1.0, 0.0, 0.0])),
+        "bc clamped short": lambda: karkas.CubicSpline(o.pts3, bc=("clamped", [1.0], [1.0, 0.0, 0.0])),
+        "coons fit ll huge order": lambda: karkas.CoonsSurface(v, u, fit=("ll", 10**30)),
+        "coons fit ll bool": lambda: karkas.CoonsSurface(v, u, fit=("ll", True)),
+        "coons curve huge": lambda: karkas.CoonsSurface([v[0], np.broadcast_to(v[1][:1], (10**8, 3)), v[2]], u),
+        "coons curve complex": lambda: karkas.CoonsSurface([v[0], v[1] + 1j, v[2]], u),
+        "coons curves huge list": lambda: karkas.CoonsSurface(np.broadcast_to(v[0], (10**8, 5, 3)), u),
+        "coons derivs short": lambda: karkas.CoonsSurface(
+            v, u, kind="composite", u_derivs=[np.zeros((4, 3))] * 3, v_derivs=[np.zeros((5, 3))] * 3
+        ),
+        "fit corners huge": lambda: karkas.fit_curve(o.pts3, knots=5, corners=huge),
+        "fit knots huge": lambda: karkas.fit_curve(o.pts3, knots=huge),
+        "vary fixed wrong shape": lambda: karkas.vary(
+            np.ones((3, 4)), [4.0] * 3, [3.0] * 4, fixed=np.ones((2, 2), bool)
+        ),
+        "vary fixed huge": lambda: karkas.vary(
+            np.ones((3, 4)), [4.0] * 3, [3.0] * 4, fixed=np.broadcast_to(True, (10**5, 10**5))
+        ),
+        "vary matrix huge": lambda: karkas.vary(np.broadcast_to(1.0, (10**5, 10**5)), [4.0] * 3, [3.0] * 4),
+        "section cells huge": lambda: o.surface.section([0, 0, 1], 0.1, cells=(10**12, 10**12)),
+        "section cells zero": lambda: o.surface.section([0, 0, 1], 0.1, cells=(0, 0)),
+        "samples huge": lambda: karkas.hausdorff_to_implicit(o.surface, o.plane, o.plane_points, samples=(10**9, 10**9)),
+        "trace_net steps huge": lambda: o.implicit.trace_net([2.0, 0, 0], (3, 3), (1e308, -1e308)),
+        "trace_net nodes huge": lambda: o.implicit.trace_net([2.0, 0, 0], (10**9, 10**9), (0.1, 0.1)),
+        "derivative order huge": lambda: o.curve.derivative(0.5, 10**12),
+        "surface derivative order huge": lambda: o.surface.derivative(0.5, 0.5, 10**12, 10**12),
+        "out huge broadcast": lambda: o.curve(np.linspace(0.3, 0.6, 5), out=np.broadcast_to(0.0, (5, 3))),
+        "t huge broadcast": lambda: o.curve(np.broadcast_to(0.5, (10**11,))),
+        "grid huge u x v": lambda: o.surface(np.broadcast_to(0.5, (10**6,)), np.broadcast_to(0.5, (10**6,))),
+        "points huge broadcast": lambda: karkas.hausdorff(np.broadcast_to(o.pts3[:1], (10**10, 3)), o.pts3),
+        "expression huge": lambda: karkas.ImplicitSurface("(" * 100000 + "x" + ")" * 100000),
+    }
+    for label, thunk in calls.items():
+        yield f"nested: {label}", thunk, ALLOWED
+
+
 def sweep(name, directory):
     """Runs every hostile call of `name`; returns the calls that broke the rules."""
     import warnings
@@ -403,7 +448,8 @@ def sweep(name, directory):
     os.chdir(directory)
     o = fixtures(directory)
     failures = []
-    for label, thunk, allowed in hostile_calls(name, o):
+    calls = nested_calls(o) if name == "nested" else hostile_calls(name, o)
+    for label, thunk, allowed in calls:
         sys.stderr.write(f"CALL {label}\n")
         sys.stderr.flush()
         try:
@@ -453,7 +499,7 @@ def test_the_valid_call_succeeds(name, tmp_path):
     fn(*args, **kwargs)
 
 
-@pytest.mark.parametrize("name", public_callables())
+@pytest.mark.parametrize("name", public_callables() + ["nested"])
 def test_hostile_calls_raise_documented_errors(name, tmp_path):
     env = dict(os.environ, OPENBLAS_NUM_THREADS="1", RAYON_NUM_THREADS="2", RUST_BACKTRACE="0")
     done = subprocess.run(
