@@ -1,7 +1,9 @@
 //! NumPy arrays to karkas points and grids and back, and Python arguments to counts.
 //!
 //! Input arrays are read in place when they are C-contiguous float64 (anything else array-like
-//! is converted once by NumPy). Output arrays are written in place: a flat `&mut [f64]` of a
+//! is converted once by NumPy, after [`real_array`] has refused complex, string, date and
+//! non-numeric object data with `TypeError`; a copy of a strided or broadcast view is checked
+//! against `karkas.max_memory` first). Output arrays are written in place: a flat `&mut [f64]` of a
 //! C-contiguous `(..., d)` array is viewed as `&mut [Point<D>]` (`Point<D>` is
 //! `#[repr(transparent)]` over `[f64; D]` and `Pod`), so evaluation stores straight into the
 //! caller's memory.

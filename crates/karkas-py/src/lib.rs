@@ -7,7 +7,8 @@
 //! typed subclasses, with the library's message (see [`errors`]).
 //!
 //! One file per library module (`ll`, `param`, `fit`, `dps`, `coons`, `implicit`, `section`,
-//! `measure`) plus `export` and `read` (karkas-io's writers and readers); the base classes
+//! `measure`) plus `export` and `read` (karkas-io's writers and readers); the memory cap
+//! `karkas.max_memory` and checked array allocation in `limits`; the base classes
 //! `Curve` and `Surface` in `curve` and `surface` over the dimension-free interfaces of
 //! `wrapper`; arrays in `convert`; exceptions in `errors`.
 
@@ -41,6 +42,10 @@ static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 /// Curves (LLCurve, CubicSpline, HermiteSpline from fit_curve, ...) are called like SciPy's
 /// spline objects: c(t) -> points, c.derivative(t, k); surfaces S(u, v, grid=True). Arrays are
 /// float64, points (n, d), grids (nu, nv, d), d in {2, 3}.
+///
+/// karkas.max_memory (bytes, or None for no cap; default KARKAS_MAX_MEMORY or 2 GiB, as the
+/// command line's --max-memory) bounds every request whose size the caller gives: larger
+/// ones raise MemoryError before anything is allocated.
 #[pymodule(name = "karkas")]
 fn karkas_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
