@@ -383,7 +383,27 @@ def hostile_calls(name, o):
         for label, value in hostile_values():
             yield f"{name}({label})", (lambda v=value: target(v)), (TypeError,)
         return
-    fn, args, kwargs = entry(o)
+    for suffix, variant in _subclass_variants(name, o):
+        yield from _mutations(name + suffix, entry(variant))
+
+
+# The base classes' methods are swept on an object of every concrete subclass.
+SUBCLASS_OBJECTS = {"Curve": ("curve", ["llcurve", "cubic", "hermite"]), "Surface": ("surface", ["llsurface", "bicubic", "coons"])}
+
+
+def _subclass_variants(name, o):
+    base = name.split(".", 1)[0]
+    if base not in SUBCLASS_OBJECTS or "." not in name:
+        return [("", o)]
+    slot, objects = SUBCLASS_OBJECTS[base]
+    return [
+        (f" on {type(getattr(o, a)).__name__}", SimpleNamespace(**dict(vars(o), **{slot: getattr(o, a)})))
+        for a in objects
+    ]
+
+
+def _mutations(name, call):
+    fn, args, kwargs = call
     yield f"{name}()", fn, ALLOWED
     yield f"{name}(... + extra)", (lambda: fn(*args, None, **kwargs)), ALLOWED
     for i in range(len(args)):
@@ -502,13 +522,18 @@ def test_the_valid_call_succeeds(name, tmp_path):
 @pytest.mark.parametrize("name", public_callables() + ["nested"])
 def test_hostile_calls_raise_documented_errors(name, tmp_path):
     env = dict(os.environ, OPENBLAS_NUM_THREADS="1", RAYON_NUM_THREADS="2", RUST_BACKTRACE="0")
-    done = subprocess.run(
-        [sys.executable, os.path.abspath(__file__), name, str(tmp_path)],
-        capture_output=True,
-        text=True,
-        timeout=600,
-        env=env,
-    )
+    try:
+        done = subprocess.run(
+            [sys.executable, os.path.abspath(__file__), name, str(tmp_path)],
+            capture_output=True,
+            text=True,
+            timeout=600,
+            env=env,
+        )
+    except subprocess.TimeoutExpired as e:
+        err = e.stderr.decode() if isinstance(e.stderr, bytes) else (e.stderr or "")
+        calls = [line[5:] for line in err.splitlines() if line.startswith("CALL ")]
+        pytest.fail(f"the sweep of {name} ran for over 600 s, in: {calls[-1] if calls else '?'}")
     calls = [line[5:] for line in done.stderr.splitlines() if line.startswith("CALL ")]
     last = calls[-1] if calls else "(before the first call)"
     assert done.returncode >= 0, f"killed by signal {-done.returncode} in: {last}\n{done.stderr[-2000:]}"
