@@ -1,7 +1,9 @@
 //! NumPy arrays to karkas points and grids and back, and Python arguments to counts.
 //!
 //! Input arrays are read in place when they are C-contiguous float64 (anything else array-like
-//! is converted once by NumPy). Output arrays are written in place: a flat `&mut [f64]` of a
+//! is converted once by NumPy, after [`real_array`] has refused complex, string, date and
+//! non-numeric object data with `TypeError`; a copy of a strided or broadcast view is checked
+//! against `karkas.max_memory` first). Output arrays are written in place: a flat `&mut [f64]` of a
 //! C-contiguous `(..., d)` array is viewed as `&mut [Point<D>]` (`Point<D>` is
 //! `#[repr(transparent)]` over `[f64; D]` and `Pod`), so evaluation stores straight into the
 //! caller's memory.
@@ -11,12 +13,16 @@ use std::borrow::Cow;
 use karkas::{Grid, Point, Point3};
 use numpy::ndarray::{Dimension, Ix2, Ix3};
 use numpy::{
-    AllowTypeChange, PyArrayDyn, PyArrayLike, PyArrayLike1, PyArrayLikeDyn, PyArrayMethods,
-    PyReadonlyArray, PyUntypedArrayMethods,
+    AllowTypeChange, PyArrayDescrMethods, PyArrayDyn, PyArrayLike, PyArrayLike1, PyArrayLikeDyn,
+    PyArrayMethods, PyReadonlyArray, PyUntypedArray, PyUntypedArrayMethods,
 };
+use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
+use pyo3::sync::PyOnceLock;
+use pyo3::types::{PyBool, PyFloat, PyInt};
 
 use crate::errors::{library_error, KarkasError, KnotsError, OptionError, PointsError};
+use crate::limits::{bytes_of, check_memory, new_array, shape_text, zeros};
 
 /// Evaluations of at least this many points run with the GIL released (below it the release
 /// costs more than it frees).
@@ -101,9 +107,14 @@ impl<'py, Dm: Dimension + 'py> CoordArray<'py, Dm> {
             Some(2) => "a 2-D float array of shape (n, d)",
             _ => "a 3-D float array of shape (nu, nv, d)",
         };
-        let array = obj.extract().map_err(|_| {
-            PointsError::new_err(format!("{what} must be {shape} with d in {{2, 3}}"))
+        let real = real_array(obj, what)?;
+        let array: PyArrayLike<'py, f64, Dm, AllowTypeChange> = real.extract().map_err(|_| {
+            PointsError::new_err(format!(
+                "{what} must be {shape} with d in {{2, 3}} (got shape {})",
+                shape_of(&real)
+            ))
         })?;
+        check_copy(&array, what)?;
         Ok(CoordArray { array })
     }
 
@@ -139,6 +150,11 @@ impl GridArray<'_> {
         (shape[0], shape[1])
     }
 
+    /// The number of columns (the second axis).
+    pub fn columns(&self) -> usize {
+        self.array.shape()[1]
+    }
+
     /// The grid (rows along `u`) as karkas points.
     pub fn grid<const D: usize>(&self) -> PyResult<Grid<Point<D>>> {
         let shape = self.array.shape();
@@ -157,6 +173,102 @@ fn flat_of<'a, Dm: Dimension>(array: &'a PyReadonlyArray<'_, f64, Dm>) -> Cow<'a
         Some(s) => Cow::Borrowed(s),
         None => Cow::Owned(view.iter().copied().collect()),
     }
+}
+
+/// `numpy.asarray`, looked up once.
+static NUMPY_ASARRAY: PyOnceLock<Py<PyAny>> = PyOnceLock::new();
+
+/// `obj` as a NumPy array of real numbers (`numpy.asarray(obj)`, any layout, not yet
+/// float64): booleans, integers and floats of any width are taken (and converted to float64
+/// by the caller); complex numbers raise `TypeError` rather than lose their imaginary part,
+/// and so do strings, dates, and objects that are not numbers. An exception raised by the
+/// object itself (its `__array__`, `__len__`, ...) propagates unchanged.
+pub fn real_array<'py>(obj: &Bound<'py, PyAny>, what: &str) -> PyResult<Bound<'py, PyAny>> {
+    let py = obj.py();
+    let asarray = NUMPY_ASARRAY.get_or_try_init(py, || -> PyResult<Py<PyAny>> {
+        Ok(py.import("numpy")?.getattr("asarray")?.unbind())
+    })?;
+    let array = if obj.cast::<PyUntypedArray>().is_ok() {
+        obj.clone()
+    } else {
+        asarray.bind(py).call1((obj,))?
+    };
+    let untyped = array.cast::<PyUntypedArray>()?;
+    let dtype = untyped.dtype();
+    let kind: u8 = dtype.kind();
+    match kind {
+        b'b' | b'i' | b'u' | b'f' => Ok(array),
+        b'O' => {
+            // Objects that are all numbers (e.g. a ragged-free list holding Decimal) convert;
+            // anything else is a wrong type, not a wrong value.
+            let converted = asarray.bind(py).call1((&array, "float64")).map_err(|_| {
+                PyTypeError::new_err(format!(
+                    "{what} must hold real numbers, not Python objects ({})",
+                    type_name(obj)
+                ))
+            })?;
+            Ok(converted)
+        }
+        b'c' => Err(PyTypeError::new_err(format!(
+            "{what} must be real, not complex (dtype {dtype}); pass .real or abs() explicitly"
+        ))),
+        _ => Err(PyTypeError::new_err(format!(
+            "{what} must hold real numbers (got dtype {dtype} from {})",
+            type_name(obj)
+        ))),
+    }
+}
+
+/// Checks against `karkas.max_memory` the copy that reading a non-contiguous array (a strided
+/// or broadcast view, whose logical size can be far above the memory it occupies) takes.
+fn check_copy<Dm: Dimension>(array: &PyReadonlyArray<'_, f64, Dm>, what: &str) -> PyResult<()> {
+    if array.is_c_contiguous() {
+        return Ok(());
+    }
+    check_memory(
+        array.py(),
+        &format!("copying {what} of shape {}", shape_text(array.shape())),
+        bytes_of(array.shape(), 8),
+    )
+}
+
+/// The items of a sequence of arrays (e.g. a list of curves), refused with `TypeError` when
+/// `obj` is a string or not a sequence, and checked against `karkas.max_memory` by its
+/// length before a list of them is made.
+pub fn object_list<'py>(obj: &Bound<'py, PyAny>, what: &str) -> PyResult<Vec<Bound<'py, PyAny>>> {
+    if obj.is_instance_of::<pyo3::types::PyString>() || obj.is_instance_of::<pyo3::types::PyBytes>()
+    {
+        return Err(PyTypeError::new_err(format!(
+            "{what} must be a sequence of arrays, not {}",
+            type_name(obj)
+        )));
+    }
+    let n = obj.len().map_err(|_| {
+        PyTypeError::new_err(format!(
+            "{what} must be a sequence of arrays, not {}",
+            type_name(obj)
+        ))
+    })?;
+    check_memory(
+        obj.py(),
+        &format!("{what} of {n} items"),
+        bytes_of(&[n], 64),
+    )?;
+    obj.try_iter()?.collect()
+}
+
+/// The type name of `obj`, for messages.
+pub fn type_name(obj: &Bound<'_, PyAny>) -> String {
+    obj.get_type()
+        .name()
+        .map_or_else(|_| "?".to_string(), |n| n.to_string())
+}
+
+/// The shape of an array as Python prints it.
+fn shape_of(array: &Bound<'_, PyAny>) -> String {
+    array
+        .cast::<PyUntypedArray>()
+        .map_or_else(|_| "?".to_string(), |a| shape_text(a.shape()))
 }
 
 /// The dimension of `d` columns, or a `ValueError` naming `what`.
@@ -207,11 +319,31 @@ pub fn uniform((a, b): (f64, f64), n: usize) -> Vec<f64> {
         .collect()
 }
 
-/// A 1-D float64 array of parameters (or knots).
+/// A 1-D float64 array of parameters (or knots); `KnotsError` when not 1-D.
 pub fn extract_vector(obj: &Bound<'_, PyAny>, what: &str) -> PyResult<Vec<f64>> {
-    let array: PyArrayLike1<'_, f64, AllowTypeChange> = obj
-        .extract()
-        .map_err(|_| KnotsError::new_err(format!("{what} must be a 1-D float array")))?;
+    vector_of(obj, what, KnotsError::new_err)
+}
+
+/// A short 1-D float64 vector such as a plane's normal or a point; `OptionError` when not
+/// 1-D.
+pub fn small_vector(obj: &Bound<'_, PyAny>, what: &str) -> PyResult<Vec<f64>> {
+    vector_of(obj, what, OptionError::new_err)
+}
+
+/// A 1-D float64 array, `error` for one of another rank.
+fn vector_of(obj: &Bound<'_, PyAny>, what: &str, error: fn(String) -> PyErr) -> PyResult<Vec<f64>> {
+    let real = real_array(obj, what)?;
+    let array: PyArrayLike1<'_, f64, AllowTypeChange> = real.extract().map_err(|_| {
+        error(format!(
+            "{what} must be a 1-D float array (got shape {})",
+            shape_of(&real)
+        ))
+    })?;
+    check_memory(
+        obj.py(),
+        &format!("reading {what} of shape {}", shape_text(array.shape())),
+        bytes_of(array.shape(), 8),
+    )?;
     Ok(flat_of(&array).into_owned())
 }
 
@@ -226,14 +358,20 @@ pub enum Params<'py> {
 impl<'py> Params<'py> {
     /// Reads `obj` as a Python number or an array of numbers.
     pub fn extract(obj: &Bound<'py, PyAny>, what: &str) -> PyResult<Self> {
-        if let Ok(t) = obj.extract::<f64>() {
-            if obj.cast::<numpy::PyUntypedArray>().is_err() {
+        if obj.is_exact_instance_of::<PyFloat>() || obj.is_exact_instance_of::<PyInt>() {
+            if let Ok(t) = obj.extract::<f64>() {
                 return Ok(Params::Scalar(t));
             }
         }
-        let array: PyArrayLikeDyn<'py, f64, AllowTypeChange> = obj.extract().map_err(|_| {
+        let real = real_array(obj, what)?;
+        let array: PyArrayLikeDyn<'py, f64, AllowTypeChange> = real.extract().map_err(|_| {
             KarkasError::new_err(format!("{what} must be a float or an array of floats"))
         })?;
+        check_copy(&array, what)?;
+        if array.ndim() == 0 {
+            let t = array.as_array().iter().copied().next().unwrap_or(f64::NAN);
+            return Ok(Params::Scalar(t));
+        }
         Ok(Params::Array(array))
     }
 
@@ -254,28 +392,57 @@ impl<'py> Params<'py> {
     }
 }
 
-/// The output array of shape `shape`: `out` checked (float64, C-contiguous, writeable, that
-/// shape) or a new zeroed one.
+/// The output array of shape `shape`: `out` checked (a float64 `numpy.ndarray`, C-contiguous,
+/// writeable, that shape) or a new zeroed one, checked against `karkas.max_memory` first.
+///
+/// A wrong type or dtype of `out` raises `TypeError`; a wrong shape, a Fortran-ordered or
+/// strided `out` and a read-only one raise `KarkasError` (a `ValueError`).
 pub fn output_array<'py>(
     py: Python<'py>,
     out: Option<Bound<'py, PyAny>>,
     shape: &[usize],
 ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
     let Some(out) = out else {
-        return Ok(PyArrayDyn::<f64>::zeros(py, shape, false));
+        return new_array(
+            py,
+            shape,
+            &format!("a result of shape {}", shape_text(shape)),
+        );
     };
-    let array = out
-        .cast_into::<PyArrayDyn<f64>>()
-        .map_err(|_| KarkasError::new_err("out must be a float64 numpy.ndarray"))?;
-    if array.shape() != shape {
-        return Err(KarkasError::new_err(format!(
-            "out has shape {:?}, expected {:?}",
-            array.shape(),
-            shape
+    let untyped = out.cast::<PyUntypedArray>().map_err(|_| {
+        PyTypeError::new_err(format!(
+            "out must be a numpy.ndarray of float64, not {}",
+            type_name(&out)
+        ))
+    })?;
+    if !untyped.dtype().is_equiv_to(&numpy::dtype::<f64>(py)) {
+        return Err(PyTypeError::new_err(format!(
+            "out must have dtype float64, not {}",
+            untyped.dtype()
         )));
     }
-    if !array.is_c_contiguous() {
-        return Err(KarkasError::new_err("out must be C-contiguous"));
+    if untyped.shape() != shape {
+        return Err(KarkasError::new_err(format!(
+            "out has shape {}, expected {}",
+            shape_text(untyped.shape()),
+            shape_text(shape)
+        )));
+    }
+    if !untyped.is_c_contiguous() {
+        return Err(KarkasError::new_err(
+            "out must be C-contiguous (a Fortran-ordered or strided array would be filled \
+             in the wrong order); use numpy.empty(shape) or numpy.ascontiguousarray",
+        ));
+    }
+    let array = out
+        .cast_into::<PyArrayDyn<f64>>()
+        .map_err(|e| PyTypeError::new_err(format!("out must be a float64 numpy.ndarray ({e})")))?;
+    if !array
+        .getattr("flags")?
+        .getattr("writeable")?
+        .extract::<bool>()?
+    {
+        return Err(KarkasError::new_err("out is read-only"));
     }
     Ok(array)
 }
@@ -306,7 +473,7 @@ pub fn points_to_array<'py, const D: usize>(
     py: Python<'py>,
     points: &[Point<D>],
 ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-    let array = PyArrayDyn::<f64>::zeros(py, &[points.len(), D][..], false);
+    let array = zeros(py, &[points.len(), D])?;
     write_flat(&array, |flat| flat.copy_from_slice(flatten(points)))?;
     Ok(array)
 }
@@ -316,22 +483,73 @@ pub fn grid_to_array<'py, const D: usize>(
     py: Python<'py>,
     grid: &Grid<Point<D>>,
 ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-    let array = PyArrayDyn::<f64>::zeros(py, &[grid.rows(), grid.cols(), D][..], false);
+    let array = zeros(py, &[grid.rows(), grid.cols(), D])?;
     write_flat(&array, |flat| {
         flat.copy_from_slice(flatten(grid.as_slice()))
     })?;
     Ok(array)
 }
 
-/// A new 1-D float64 array holding `values`.
-pub fn vector_to_array<'py>(py: Python<'py>, values: &[f64]) -> Bound<'py, PyArrayDyn<f64>> {
-    numpy::PyArray1::from_slice(py, values).to_dyn().clone()
+/// A new 1-D float64 array holding `values` (NumPy's `MemoryError` if it cannot be made).
+pub fn vector_to_array<'py>(
+    py: Python<'py>,
+    values: &[f64],
+) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+    let array = zeros(py, &[values.len()])?;
+    write_flat(&array, |flat| flat.copy_from_slice(values))?;
+    Ok(array)
 }
 
 /// A non-negative Python integer as a count, or an `OptionError` naming it.
-pub fn count(value: i64, name: &str) -> PyResult<usize> {
+pub fn count(value: impl Into<i64>, name: &str) -> PyResult<usize> {
+    let value: i64 = value.into();
     usize::try_from(value)
         .map_err(|_| OptionError::new_err(format!("{name} must be non-negative (got {value})")))
+}
+
+/// An integer argument: a Python `int` or anything with `__index__` (NumPy's integers).
+/// `True`/`False` raise `TypeError` (a flag is not a number), as floats and strings do;
+/// values beyond 64 bits raise `OverflowError`.
+#[derive(Clone, Copy, Debug)]
+pub struct Int(pub i64);
+
+impl From<Int> for i64 {
+    fn from(value: Int) -> i64 {
+        value.0
+    }
+}
+
+/// A count argument: an [`Int`] that must be non-negative (`OverflowError` otherwise, as
+/// Python's own conversions to unsigned integers raise).
+#[derive(Clone, Copy, Debug)]
+pub struct Size(pub usize);
+
+/// Refuses `bool` where an integer is expected.
+fn refuse_bool(ob: &Borrowed<'_, '_, PyAny>) -> PyResult<()> {
+    if ob.is_instance_of::<PyBool>() {
+        return Err(PyTypeError::new_err(
+            "expected an integer, got a bool (True and False are not counts)",
+        ));
+    }
+    Ok(())
+}
+
+impl<'a, 'py> FromPyObject<'a, 'py> for Int {
+    type Error = PyErr;
+
+    fn extract(ob: Borrowed<'a, 'py, PyAny>) -> PyResult<Self> {
+        refuse_bool(&ob)?;
+        Ok(Int(ob.extract::<i64>()?))
+    }
+}
+
+impl<'a, 'py> FromPyObject<'a, 'py> for Size {
+    type Error = PyErr;
+
+    fn extract(ob: Borrowed<'a, 'py, PyAny>) -> PyResult<Self> {
+        refuse_bool(&ob)?;
+        Ok(Size(ob.extract::<usize>()?))
+    }
 }
 
 /// `True`/`False` as Python spells them.
@@ -394,11 +612,11 @@ pub struct Numbers(pub Vec<f64>);
 impl<'py> IntoPyObject<'py> for &Numbers {
     type Target = PyArrayDyn<f64>;
     type Output = Bound<'py, PyArrayDyn<f64>>;
-    type Error = std::convert::Infallible;
+    type Error = PyErr;
 
     /// A new 1-D array, as [`vector_to_array`] gives.
-    fn into_pyobject(self, py: Python<'py>) -> Result<Self::Output, Self::Error> {
-        Ok(vector_to_array(py, &self.0))
+    fn into_pyobject(self, py: Python<'py>) -> PyResult<Self::Output> {
+        vector_to_array(py, &self.0)
     }
 }
 

@@ -8,16 +8,21 @@ use karkas::coons::{
 use karkas::Point;
 use pyo3::prelude::*;
 
-use crate::convert::{as_points, by_dim, check_dim, count, FlatPoints, PointsArray};
+use crate::convert::{as_points, by_dim, check_dim, count, object_list, FlatPoints, Int, PointsArray};
 use crate::errors::{library_error, OptionError, PointsError};
+use crate::limits::{bytes_of, check_memory};
 use crate::surface::PySurface;
 use crate::wrapper::{SurfaceImpl, WrappedSurface};
 
 /// A list of point arrays (each (k, d)) as karkas point lists of dimension `D`.
+///
+/// The copies together are checked against `karkas.max_memory` before each is made (a list
+/// of broadcast views can be small in memory and huge once copied).
 fn point_lists<const D: usize>(
     lists: &[Bound<'_, PyAny>],
     what: &str,
 ) -> PyResult<Vec<Vec<Point<D>>>> {
+    let mut total: u128 = 0;
     lists
         .iter()
         .enumerate()
@@ -29,6 +34,8 @@ fn point_lists<const D: usize>(
                     pts.dim()
                 )));
             }
+            total = total.saturating_add(bytes_of(&[pts.len(), D], 8));
+            check_memory(obj.py(), &format!("{what}[..{}]", i + 1), total)?;
             Ok(as_points::<D>(&pts.flat()).to_vec())
         })
         .collect()
@@ -150,11 +157,11 @@ impl PyCoonsSurface {
     #[allow(clippy::too_many_arguments)]
     fn py_new(
         py: Python<'_>,
-        u_curves: Vec<Bound<'_, PyAny>>,
-        v_curves: Vec<Bound<'_, PyAny>>,
+        u_curves: &Bound<'_, PyAny>,
+        v_curves: &Bound<'_, PyAny>,
         kind: &str,
-        u_derivs: Option<Vec<Bound<'_, PyAny>>>,
-        v_derivs: Option<Vec<Bound<'_, PyAny>>>,
+        u_derivs: Option<&Bound<'_, PyAny>>,
+        v_derivs: Option<&Bound<'_, PyAny>>,
         fit: Option<Bound<'_, PyAny>>,
         crossing_tolerance: f64,
         tolerance: f64,
@@ -172,7 +179,7 @@ impl PyCoonsSurface {
                         }
                     }
                 } else {
-                    let (name, order): (String, i64) = f.extract().map_err(|_| {
+                    let (name, order): (String, Int) = f.extract().map_err(|_| {
                         OptionError::new_err("fit must be 'spline' or ('ll', order)")
                     })?;
                     if name != "ll" {
@@ -185,6 +192,10 @@ impl PyCoonsSurface {
             }
         };
         let kind: CoonsKind = kind.parse().map_err(library_error)?;
+        let v_curves = object_list(v_curves, "v_curves")?;
+        let u_curves = object_list(u_curves, "u_curves")?;
+        let u_derivs = u_derivs.map(|d| object_list(d, "u_derivs")).transpose()?;
+        let v_derivs = v_derivs.map(|d| object_list(d, "v_derivs")).transpose()?;
         let input = CoonsInput {
             curves: (given(&u_curves, "u_curves")?, given(&v_curves, "v_curves")?),
             derivs: match (&u_derivs, &v_derivs) {

@@ -9,7 +9,8 @@ use numpy::PyArrayDyn;
 use pyo3::prelude::*;
 
 use crate::bspline_form::FlatBSpline;
-use crate::convert::{maybe_detach, uniform, vector_to_array, write_flat};
+use crate::convert::{maybe_detach, uniform, vector_to_array, write_flat, Size};
+use crate::limits::{bytes_of, check_memory, zeros};
 use crate::wrapper::CurveImpl;
 
 /// Base class of every karkas curve: a parametric curve in 2-D or 3-D, called like SciPy's
@@ -121,9 +122,13 @@ impl PyCurve {
     /// (5, 2)
     /// >>> bool(np.allclose(p, c(np.linspace(*c.domain, 5))))
     /// True
-    fn sample<'py>(&self, py: Python<'py>, n: usize) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+    fn sample<'py>(&self, py: Python<'py>, n: Size) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        let n = n.0;
+        let d = self.inner.dim();
+        // The parameters and the points.
+        check_memory(py, &format!("Curve.sample({n})"), bytes_of(&[n, d + 1], 8))?;
         let ts = uniform(self.inner.domain(), n);
-        let array = PyArrayDyn::<f64>::zeros(py, &[n, self.inner.dim()][..], false);
+        let array = zeros(py, &[n, d])?;
         let inner = &self.inner;
         write_flat(&array, |flat| {
             maybe_detach(py, n, || inner.eval_flat(&ts, 0, flat))
@@ -151,7 +156,7 @@ impl PyCurve {
 
     /// The parameters where the polynomial pieces meet, ends included, float64 ``(m,)``.
     #[getter]
-    fn breakpoints<'py>(&self, py: Python<'py>) -> Bound<'py, PyArrayDyn<f64>> {
+    fn breakpoints<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
         vector_to_array(py, &self.inner.breakpoints())
     }
 

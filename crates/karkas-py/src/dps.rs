@@ -8,9 +8,11 @@ use pyo3::prelude::*;
 
 use crate::convert::{
     as_points, as_points_mut, by_dim, check_dim, count, each, grid_to_array, maybe_detach,
-    output_array, points_to_array, variant, write_flat, ByDim, FlatPoints, GridArray, PointsArray,
+    output_array, points_to_array, variant, write_flat, ByDim, FlatPoints, GridArray, Int,
+    PointsArray,
 };
 use crate::errors::{library_error, PointsError};
+use crate::limits::{bytes_of, check_memory};
 
 /// The dimension `D` of points.
 fn point_dim<const D: usize>(_: &[Point<D>]) -> usize {
@@ -68,6 +70,14 @@ impl PyDiscreteSpline {
         let what = if interpolating { "nodes" } else { "poles" };
         let (pts, dim) = PointsArray::extract_checked(points, what)?;
         let (order, n) = (count(order, "order")?, count(n, "n")?);
+        if interpolating {
+            // The DFT plan tabulates sin and cos of pi q / n for every q < n.
+            check_memory(
+                py,
+                &format!("DiscreteSpline.interpolate(n={n})"),
+                bytes_of(&[n], 16).saturating_add(bytes_of(&[pts.len(), dim], 32)),
+            )?;
+        }
         let flat = pts.flat();
         let spline = by_dim!(dim, D => {
             let p = as_points::<D>(&flat);
@@ -181,6 +191,17 @@ impl PyDiscreteSpline {
         out: Option<Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
         let (dim, m, _, n) = self.parts();
+        // The values (unless out= holds them) and a scratch line of n points.
+        let values = if out.is_none() {
+            bytes_of(&[m, n, dim], 8)
+        } else {
+            0
+        };
+        check_memory(
+            py,
+            &format!("DiscreteSpline.values() of {m} x {n} values"),
+            values.saturating_add(bytes_of(&[n, dim], 8)),
+        )?;
         let array = output_array(py, out, &[m * n, dim])?;
         write_flat(&array, |flat| {
             maybe_detach(
@@ -298,8 +319,8 @@ impl PyTubeSurface {
         py: Python<'_>,
         along: &Bound<'_, PyAny>,
         across: &Bound<'_, PyAny>,
-        n1: i64,
-        n2: i64,
+        n1: Int,
+        n2: Int,
         r1: i64,
         r2: i64,
     ) -> PyResult<Self> {
@@ -318,6 +339,14 @@ impl PyTubeSurface {
             count(r1, "r1")?,
             count(r2, "r2")?,
         );
+        // The values c(p, q), N1 x N2 points, and a line of work per row and column.
+        let (big_n1, big_n2) = (b.columns(), a.columns());
+        check_memory(
+            py,
+            &format!("TubeSurface({big_n1} x {big_n2} values)"),
+            bytes_of(&[big_n1, big_n2, dim], 8)
+                .saturating_add(bytes_of(&[big_n1.saturating_add(big_n2), dim], 32)),
+        )?;
         let given = |g: &GridArray<'_>| -> (FlatPoints, usize, usize) {
             let (rows, cols) = g.rows_cols();
             let coords = g.flat().into_owned();
@@ -385,6 +414,18 @@ impl PyTubeSurface {
     /// >>> bool(np.array_equal(g[-1], g[0]) and np.array_equal(g[:, -1], g[:, 0]))
     /// True
     fn closed_grid<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        let (dim, (p1, p2)) =
+            each!(&self.tube, t => (point_dim(t.values().as_slice()), t.periods()));
+        // The grid, then the array it is copied into.
+        check_memory(
+            py,
+            &format!(
+                "TubeSurface.closed_grid() of {} x {} values",
+                p1 + 1,
+                p2 + 1
+            ),
+            bytes_of(&[p1 + 1, p2 + 1, dim], 16),
+        )?;
         each!(&self.tube, t => grid_to_array(py, &t.closed_grid()))
     }
 

@@ -9,6 +9,7 @@ use pyo3::prelude::*;
 use crate::convert::{as_points, by_dim, extract_vector, FlatPoints, Numbers, PointsArray};
 use crate::curve::PyCurve;
 use crate::errors::{library_error, KnotsError, OptionError};
+use crate::limits::{bytes_of, check_memory};
 use crate::wrapper::{CurveImpl, Wrapped};
 
 /// A C^1 cubic Hermite spline (a cubic spline of defect 2) on [0, 1]: the result of
@@ -92,6 +93,16 @@ enum Target {
     Tolerance(f64),
 }
 
+/// The bytes a fit of `points` points in `dim` dimensions with `knots` knots works in: per
+/// knot the knots and spline, the Newton solver's per-piece blocks (16 and `16 dim^2` numbers,
+/// twice), its vectors of `2 dim` unknowns and the banded normal equations (bandwidth
+/// `4 dim`); per point the foot parameters, distances and projections.
+fn fit_bytes(points: usize, knots: usize, dim: usize) -> u128 {
+    let per_knot = 8 * (32 + 48 * dim * dim + 2 * dim * (16 + 8 * dim)) as u128;
+    let per_point = 8 * (4 * dim + 8) as u128;
+    bytes_of(&[knots], per_knot).saturating_add(bytes_of(&[points], per_point))
+}
+
 /// Fits measured points with a C^1 cubic Hermite spline on [0, 1] (Kuznetsov, Filatov).
 ///
 /// Minimizes the sum of squared foot-point distances, the sum of squared second-derivative
@@ -156,7 +167,7 @@ pub fn fit_curve(
     tolerance: Option<f64>,
     eps: Option<f64>,
     pin_ends: bool,
-    corners: Option<Vec<f64>>,
+    corners: Option<&Bound<'_, PyAny>>,
     fairness: f64,
 ) -> PyResult<Py<PyHermiteSpline>> {
     let (pts, dim) = PointsArray::extract_checked(points, "points")?;
@@ -169,6 +180,11 @@ pub fn fit_curve(
                         "knots must be at least 2 (got {n})"
                     )));
                 }
+                check_memory(
+                    py,
+                    &format!("fit_curve(knots={n})"),
+                    fit_bytes(pts.len(), n, dim),
+                )?;
                 Some(fit::knots_from_list(&[n as f64]).map_err(library_error)?)
             }
             Err(_) => Some(extract_vector(k, "knots")?),
@@ -184,12 +200,22 @@ pub fn fit_curve(
     };
     let mut options = FitOptions {
         pin_ends,
-        corners: corners.unwrap_or_default(),
+        corners: corners
+            .map(|c| extract_vector(c, "corners"))
+            .transpose()?
+            .unwrap_or_default(),
         fairness,
         ..FitOptions::default()
     };
     if let Some(eps) = eps {
         options.eps = eps;
+    }
+    if let Target::Knots(knots) = &target {
+        check_memory(
+            py,
+            &format!("fit_curve with {} knots", knots.len()),
+            fit_bytes(pts.len(), knots.len(), dim),
+        )?;
     }
     let flat = pts.flat();
     let (inner, sub): (Arc<dyn CurveImpl>, PyHermiteSpline) = by_dim!(dim, D => {

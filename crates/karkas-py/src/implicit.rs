@@ -11,9 +11,16 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use crate::convert::{
-    count, grid_to_array, maybe_detach, point3, points3, points_to_array, vector_to_array,
+    count, grid_to_array, maybe_detach, point3, points3, points_to_array, small_vector,
+    vector_to_array, Int,
 };
 use crate::errors::{library_error, OptionError};
+use crate::limits::{bytes_of, check_memory};
+
+/// The most Runge-Kutta substeps per node step `trace_net` takes: a classical Runge-Kutta
+/// step's error falls as the fifth power of its length, so more substeps than this change
+/// nothing in double precision and only make a mistyped count run for hours.
+pub const MAX_SUBSTEPS: usize = 4096;
 
 /// An implicit surface ``F(x, y, z) = 0`` given as an expression, with exact first and second
 /// derivatives (by symbolic differentiation).
@@ -79,7 +86,7 @@ impl PyImplicitSurface {
     ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
         let pts = points3(points, "points")?;
         let values: Vec<f64> = pts.iter().map(|&p| self.surface.value(p)).collect();
-        Ok(vector_to_array(py, &values))
+        vector_to_array(py, &values)
     }
 
     /// The gradient of ``F`` at points.
@@ -182,8 +189,13 @@ impl PyImplicitSurface {
     /// ['d1', 'd2', 'gaussian', 'k1', 'k2', 'mean', 'normal']
     /// >>> round(abs(f["k1"]) + abs(f["k2"]), 6), abs(f["gaussian"]) < 1e-12
     /// (0.5, True)
-    fn curvatures<'py>(&self, py: Python<'py>, point: Vec<f64>) -> PyResult<Bound<'py, PyDict>> {
-        let f = SurfaceFrame::at(&self.surface, point3(&point, "point")?).map_err(library_error)?;
+    fn curvatures<'py>(
+        &self,
+        py: Python<'py>,
+        point: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let point = point3(&small_vector(point, "point")?, "point")?;
+        let f = SurfaceFrame::at(&self.surface, point).map_err(library_error)?;
         let d = PyDict::new(py);
         d.set_item("normal", f.normal.0.to_vec())?;
         d.set_item("k1", f.first_curvature)?;
@@ -217,7 +229,7 @@ impl PyImplicitSurface {
     /// closed_v : bool, optional
     ///     The ``v`` lines close on themselves (around a tube).
     /// substeps : int, optional
-    ///     Integration steps between two nodes.
+    ///     Integration steps between two nodes (at most 4096).
     /// step : float or tuple of float, optional
     ///     The command line's name (``karkas surface implicit --step``): ``H`` or ``(HU, HV)``,
     ///     instead of ``steps``.
@@ -250,12 +262,12 @@ impl PyImplicitSurface {
     fn trace_net<'py>(
         &self,
         py: Python<'py>,
-        start: Vec<f64>,
-        nodes: (i64, i64),
+        start: &Bound<'py, PyAny>,
+        nodes: (Int, Int),
         steps: Option<(f64, f64)>,
         directions: &str,
         angle: f64,
-        plane_normal: Option<Vec<f64>>,
+        plane_normal: Option<Bound<'py, PyAny>>,
         closed_v: bool,
         substeps: i64,
         step: Option<&Bound<'py, PyAny>>,
@@ -287,7 +299,10 @@ impl PyImplicitSurface {
             "turned-u" => NetDirections::TurnedU { angle },
             "plane-sections" => NetDirections::PlaneSections {
                 plane_normal: point3(
-                    &plane_normal.ok_or_else(|| OptionError::new_err("'plane-sections' needs plane_normal"))?,
+                    &small_vector(
+                        &plane_normal.ok_or_else(|| OptionError::new_err("'plane-sections' needs plane_normal"))?,
+                        "plane_normal",
+                    )?,
                     "plane_normal",
                 )?,
             },
@@ -297,14 +312,31 @@ impl PyImplicitSurface {
                 )))
             }
         };
+        let nodes = (count(nodes.0, "nodes")?, count(nodes.1, "nodes")?);
+        // The traced grid and the returned array.
+        check_memory(
+            py,
+            &format!(
+                "ImplicitSurface.trace_net(nodes=({}, {}))",
+                nodes.0, nodes.1
+            ),
+            bytes_of(&[nodes.0, nodes.1, 3], 16),
+        )?;
         let mut spec = NetSpec::new(
-            point3(&start, "start")?,
+            point3(&small_vector(start, "start")?, "start")?,
             directions,
-            (count(nodes.0, "nodes")?, count(nodes.1, "nodes")?),
+            nodes,
             steps,
         );
         spec.closed_v = closed_v;
         spec.substeps = count(substeps, "substeps")?;
+        if spec.substeps > MAX_SUBSTEPS {
+            return Err(OptionError::new_err(format!(
+                "substeps must be at most {MAX_SUBSTEPS} (got {}): the Runge-Kutta steps are \
+                 then already far below double precision",
+                spec.substeps
+            )));
+        }
         let surface = &self.surface;
         let grid = py
             .detach(|| trace_net(surface, &spec))

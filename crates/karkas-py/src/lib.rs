@@ -8,7 +8,8 @@
 //!
 //! One file per library module (`ll`, `param`, `fit`, `dps`, `coons`, `implicit`, `section`,
 //! `measure`) plus `export` and `read` (karkas-io's writers and readers) and `geometry` (arc
-//! length, curvature, normals and projection on the base classes); the base classes
+//! length, curvature, normals and projection on the base classes); the memory cap
+//! `karkas.max_memory` and checked array allocation in `limits`; the base classes
 //! `Curve` and `Surface` in `curve` and `surface` over the dimension-free interfaces of
 //! `wrapper`; arrays in `convert`; exceptions in `errors`.
 
@@ -27,6 +28,7 @@ mod export_cad;
 mod fit;
 mod geometry;
 mod implicit;
+mod limits;
 mod ll;
 mod measure;
 mod param;
@@ -66,9 +68,14 @@ static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 ///        [3., 1.]])
 /// >>> issubclass(karkas.KarkasError, ValueError)
 /// True
+///
+/// ``karkas.max_memory`` (bytes, or None for no cap; default ``KARKAS_MAX_MEMORY`` or 2 GiB, as
+/// the command line's ``--max-memory``) bounds every request whose size the caller gives:
+/// larger ones raise ``MemoryError`` before anything is allocated.
 #[pymodule(name = "karkas")]
 fn karkas_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    m.add("max_memory", limits::initial_max_memory()?)?;
     errors::register(m)?;
     m.add_class::<curve::PyCurve>()?;
     m.add_class::<curve_eval::PyCurveDerivative>()?;

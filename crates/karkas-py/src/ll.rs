@@ -12,11 +12,12 @@ use numpy::{AllowTypeChange, PyArrayDyn, PyArrayLike2, PyUntypedArrayMethods};
 use pyo3::prelude::*;
 
 use crate::convert::{
-    as_points, by_dim, count, maybe_detach, py_bool, variant, write_flat, FlatPoints, GridArray,
-    PointsArray,
+    as_points, by_dim, count, maybe_detach, py_bool, real_array, small_vector, variant, write_flat,
+    FlatPoints, GridArray, PointsArray,
 };
 use crate::curve::PyCurve;
-use crate::errors::{library_error, OptionError};
+use crate::errors::{library_error, OptionError, PointsError};
+use crate::limits::{bytes_of, check_memory, shape_text, zeros};
 use crate::surface::PySurface;
 use crate::wrapper::{CurveImpl, SurfaceImpl, Wrapped, WrappedSurface};
 
@@ -401,15 +402,28 @@ impl PyLlSurface {
 #[allow(clippy::too_many_arguments)]
 pub fn vary<'py>(
     py: Python<'py>,
-    matrix: PyArrayLike2<'py, f64, AllowTypeChange>,
-    row_sums: Vec<f64>,
-    column_sums: Vec<f64>,
+    matrix: &Bound<'py, PyAny>,
+    row_sums: &Bound<'py, PyAny>,
+    column_sums: &Bound<'py, PyAny>,
     fixed: Option<PyArrayLike2<'py, bool, AllowTypeChange>>,
     penalty: Option<f64>,
     scale_with_total: bool,
     total: Option<f64>,
 ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+    let row_sums = small_vector(row_sums, "row_sums")?;
+    let column_sums = small_vector(column_sums, "column_sums")?;
+    let matrix: PyArrayLike2<'py, f64, AllowTypeChange> =
+        real_array(matrix, "matrix")?
+            .extract()
+            .map_err(|_| PointsError::new_err("matrix must be a 2-D float array"))?;
     let (n, m) = (matrix.shape()[0], matrix.shape()[1]);
+    // The matrix, the fixed entries, the varied matrix and the solver's work (about as many
+    // numbers again), before any copy.
+    check_memory(
+        py,
+        &format!("vary of a {n} x {m} matrix"),
+        bytes_of(&[n, m], 8 * 3 + 1),
+    )?;
     let complete = |name: &str, given: &[f64], lines: usize| {
         complete_sums(given, lines, total).map_err(|problem| {
             OptionError::new_err(match problem {
@@ -433,8 +447,14 @@ pub fn vary<'py>(
     let z = Grid::from_row_major(n, m, values).map_err(library_error)?;
     let fixed = match fixed {
         Some(f) => {
-            let shape = f.shape();
-            Grid::from_row_major(shape[0], shape[1], f.as_array().iter().copied().collect())
+            if f.shape() != [n, m] {
+                return Err(PointsError::new_err(format!(
+                    "fixed has shape {}, the matrix {}",
+                    shape_text(f.shape()),
+                    shape_text(&[n, m])
+                )));
+            }
+            Grid::from_row_major(n, m, f.as_array().iter().copied().collect())
                 .map_err(library_error)?
         }
         None => Grid::from_fn(n, m, |_, _| false),
@@ -450,7 +470,7 @@ pub fn vary<'py>(
     let varied = py
         .detach(|| ll_vary(&z, &fixed, &targets, &options))
         .map_err(library_error)?;
-    let out = PyArrayDyn::<f64>::zeros(py, &[n, m][..], false);
+    let out = zeros(py, &[n, m])?;
     write_flat(&out, |flat| flat.copy_from_slice(varied.as_slice()))?;
     Ok(out)
 }

@@ -8,6 +8,7 @@ use pyo3::types::PyDict;
 use crate::convert::points3;
 use crate::errors::{library_error, OptionError, PointsError};
 use crate::implicit::PyImplicitSurface;
+use crate::limits::{bytes_of, check_memory};
 use crate::surface::PySurface;
 
 /// A Hausdorff result as a dict: distance, and each direction's distance and the points
@@ -137,6 +138,15 @@ pub fn hausdorff_to_implicit<'py>(
     if s.inner.dim() != 3 {
         return Err(PointsError::new_err("the surface must be 3-D"));
     }
+    // The surface's samples, their distances and the k-d tree over them.
+    check_memory(
+        py,
+        &format!(
+            "hausdorff_to_implicit(samples=({}, {}))",
+            samples.0, samples.1
+        ),
+        bytes_of(&[samples.0, samples.1, 3], 32),
+    )?;
     let patch = points3(patch, "patch")?;
     let inner = &s.inner;
     let expr = &implicit.get().surface;

@@ -11,8 +11,8 @@ use numpy::PyArrayDyn;
 use pyo3::prelude::*;
 
 use crate::convert::{
-    as_points, by_dim, extract_vector, maybe_detach, py_bool, vector_to_array, FlatPoints,
-    GridArray, Numbers, PointsArray,
+    as_points, by_dim, extract_vector, maybe_detach, py_bool, small_vector, vector_to_array,
+    FlatPoints, GridArray, Numbers, PointsArray,
 };
 use crate::curve::PyCurve;
 use crate::errors::{library_error, OptionError};
@@ -50,9 +50,14 @@ fn parse_ends<const D: usize>(bc: &Bound<'_, PyAny>) -> PyResult<SplineEnds<D>> 
             ))),
         };
     }
-    let (name, start, end): (String, Vec<f64>, Vec<f64>) = bc.extract().map_err(|_| {
-        OptionError::new_err("bc must be a name or ('clamped', start_derivative, end_derivative)")
-    })?;
+    let (name, start, end): (String, Bound<'_, PyAny>, Bound<'_, PyAny>) =
+        bc.extract().map_err(|_| {
+            OptionError::new_err(
+                "bc must be a name or ('clamped', start_derivative, end_derivative)",
+            )
+        })?;
+    let start = small_vector(&start, "the start derivative of bc")?;
+    let end = small_vector(&end, "the end derivative of bc")?;
     if name != "clamped" || start.len() != D || end.len() != D {
         return Err(OptionError::new_err(format!(
             "bc must be ('clamped', start, end) with {D} coordinates each"
@@ -429,7 +434,7 @@ pub fn curve_parameters<'py>(
     let (pts, dim) = PointsArray::extract_checked(points, "points")?;
     let flat = pts.flat();
     let t = by_dim!(dim, D => param_curve(as_points::<D>(&flat), rule)).map_err(library_error)?;
-    Ok(vector_to_array(py, &t))
+    vector_to_array(py, &t)
 }
 
 /// The parameters of a grid of points, as ``BicubicSurface`` computes them.
@@ -471,5 +476,5 @@ pub fn grid_parameters<'py>(
     let rule = parse_grid_parameterization(parameterization)?;
     let (g, dim) = GridArray::extract_checked(grid, "grid")?;
     let (u, v) = by_dim!(dim, D => param_grid(&g.grid::<D>()?, rule)).map_err(library_error)?;
-    Ok((vector_to_array(py, &u), vector_to_array(py, &v)))
+    Ok((vector_to_array(py, &u)?, vector_to_array(py, &v)?))
 }

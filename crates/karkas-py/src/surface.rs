@@ -10,8 +10,9 @@ use numpy::PyArrayDyn;
 use pyo3::prelude::*;
 
 use crate::bspline_form::FlatBSplineSurface;
-use crate::convert::{maybe_detach, uniform, write_flat};
-use crate::errors::{library_error, OptionError};
+use crate::convert::{maybe_detach, output_array, small_vector, uniform, write_flat, Params, Size};
+use crate::errors::{library_error, KarkasError, OptionError};
+use crate::limits::{bytes_of, check_memory, zeros};
 use crate::section::PySectionCurve;
 use crate::wrapper::SurfaceImpl;
 
@@ -131,12 +132,17 @@ impl PySurface {
     fn sample<'py>(
         &self,
         py: Python<'py>,
-        nu: usize,
-        nv: usize,
+        nu: Size,
+        nv: Size,
     ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        let (nu, nv) = (nu.0, nv.0);
+        let d = self.inner.dim();
+        // The parameters and the points.
+        let bytes = bytes_of(&[nu, nv, d], 8).saturating_add(bytes_of(&[nu.saturating_add(nv)], 8));
+        check_memory(py, &format!("Surface.sample({nu}, {nv})"), bytes)?;
         let us = uniform(self.inner.domain_u(), nu);
         let vs = uniform(self.inner.domain_v(), nv);
-        let array = PyArrayDyn::<f64>::zeros(py, &[nu, nv, self.inner.dim()][..], false);
+        let array = zeros(py, &[nu, nv, d])?;
         let inner = &self.inner;
         write_flat(&array, |flat| {
             maybe_detach(py, nu * nv, || inner.grid_flat(&us, &vs, 0, 0, flat))
@@ -190,18 +196,26 @@ impl PySurface {
     fn section(
         &self,
         py: Python<'_>,
-        normal: Vec<f64>,
+        normal: &Bound<'_, PyAny>,
         offset: f64,
         tolerance: Option<f64>,
         cells: (usize, usize),
     ) -> PyResult<Vec<PySectionCurve>> {
         let d = self.inner.dim();
+        let normal = small_vector(normal, "normal")?;
         if normal.len() != d {
             return Err(OptionError::new_err(format!(
                 "normal must have {d} coordinates (got {})",
                 normal.len()
             )));
         }
+        // The coarse grid of samples (points and plane values) and the traced polylines.
+        let grid = [cells.0.saturating_add(1), cells.1.saturating_add(1), d + 1];
+        check_memory(
+            py,
+            &format!("Surface.section(cells=({}, {}))", cells.0, cells.1),
+            bytes_of(&grid, 16),
+        )?;
         let options = SectionOptions {
             tolerance,
             cells,

@@ -161,8 +161,6 @@ def test_large_evaluation_releases_the_gil_and_matches_small_batches(wavy3d):
     [
         (np.empty((10, 2)), "shape"),
         (np.empty((3, 10)).T, "contiguous"),
-        (np.empty((10, 3), dtype=np.float32), "float64"),
-        ([[0.0] * 3] * 10, "float64"),
     ],
 )
 def test_bad_out_raises_value_error(wavy3d, out, message):
@@ -171,11 +169,24 @@ def test_bad_out_raises_value_error(wavy3d, out, message):
         c(np.linspace(*c.domain, 10), out=out)
 
 
+@pytest.mark.parametrize(
+    "out, message",
+    [
+        (np.empty((10, 3), dtype=np.float32), "float64"),
+        ([[0.0] * 3] * 10, "float64"),
+    ],
+)
+def test_out_of_a_wrong_type_raises_type_error(wavy3d, out, message):
+    c = karkas.LLCurve(wavy3d)
+    with pytest.raises(TypeError, match=message):
+        c(np.linspace(*c.domain, 10), out=out)
+
+
 def test_read_only_out_raises_value_error(wavy3d):
     c = karkas.LLCurve(wavy3d)
     out = np.empty((10, 3))
     out.flags.writeable = False
-    with pytest.raises(ValueError, match="cannot be written"):
+    with pytest.raises(ValueError, match="read-only"):
         c(np.linspace(*c.domain, 10), out=out)
 
 

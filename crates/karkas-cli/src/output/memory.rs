@@ -36,37 +36,7 @@ pub fn set_max_memory(option: Option<u64>) -> Result<()> {
     Ok(())
 }
 
-/// Parses a size: a whole number of bytes with an optional suffix `K`, `M`, `G`, `T`
-/// (powers of 1024, an optional trailing `B` or `iB`), e.g. `512M`, `2G`, `1500000`.
-pub fn parse_size(text: &str) -> Result<u64, String> {
-    let upper = text.trim().to_ascii_uppercase();
-    let t = upper
-        .strip_suffix("IB")
-        .or_else(|| upper.strip_suffix('B'))
-        .unwrap_or(&upper);
-    let (digits, shift) = match t.char_indices().last() {
-        Some((k, c)) if c.is_ascii_alphabetic() => {
-            let shift = match c.to_ascii_uppercase() {
-                'K' => 10,
-                'M' => 20,
-                'G' => 30,
-                'T' => 40,
-                _ => return Err(format!("'{text}': unknown unit (use K, M, G or T)")),
-            };
-            (&t[..k], shift)
-        }
-        _ => (t, 0),
-    };
-    let n: u64 = digits
-        .trim()
-        .parse()
-        .map_err(|_| format!("'{text}' is not a size like 512M or 2G"))?;
-    match n.checked_mul(1 << shift) {
-        Some(bytes) if bytes > 0 => Ok(bytes),
-        Some(_) => Err(format!("'{text}': the cap must be positive")),
-        None => Err(format!("'{text}' is too large")),
-    }
-}
+pub use karkas_io::picture::budget::parse_size;
 
 /// Fails early when `request` (e.g. "curve ll: 50000000 samples") needs `bytes` of output
 /// buffers, more than the cap.

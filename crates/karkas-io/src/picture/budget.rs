@@ -81,6 +81,38 @@ pub fn check_output_memory(path: &Path, what: &str, bytes: u128) -> Result<(), I
     })
 }
 
+/// Parses a size: a whole number of bytes with an optional suffix `K`, `M`, `G`, `T`
+/// (powers of 1024, an optional trailing `B` or `iB`), e.g. `512M`, `2G`, `1500000`.
+pub fn parse_size(text: &str) -> Result<u64, String> {
+    let upper = text.trim().to_ascii_uppercase();
+    let t = upper
+        .strip_suffix("IB")
+        .or_else(|| upper.strip_suffix('B'))
+        .unwrap_or(&upper);
+    let (digits, shift) = match t.char_indices().last() {
+        Some((k, c)) if c.is_ascii_alphabetic() => {
+            let shift = match c.to_ascii_uppercase() {
+                'K' => 10,
+                'M' => 20,
+                'G' => 30,
+                'T' => 40,
+                _ => return Err(format!("'{text}': unknown unit (use K, M, G or T)")),
+            };
+            (&t[..k], shift)
+        }
+        _ => (t, 0),
+    };
+    let n: u64 = digits
+        .trim()
+        .parse()
+        .map_err(|_| format!("'{text}' is not a size like 512M or 2G"))?;
+    match n.checked_mul(1 << shift) {
+        Some(bytes) if bytes > 0 => Ok(bytes),
+        Some(_) => Err(format!("'{text}': the cap must be positive")),
+        None => Err(format!("'{text}' is too large")),
+    }
+}
+
 /// `bytes` in the largest binary unit that keeps it at least 1, like `1.5 GiB`.
 pub fn human_bytes(bytes: u128) -> String {
     let units = ["B", "KiB", "MiB", "GiB", "TiB"];
