@@ -274,8 +274,8 @@ impl PyCurve {
         usize,
     )> {
         let form = self.bspline().map_err(library_error)?;
-        let knots = vector_to_array(py, &form.knots);
-        let coefs = vector_to_array(py, &form.coefs).reshape(vec![form.count(), form.dim])?;
+        let knots = vector_to_array(py, &form.knots)?;
+        let coefs = vector_to_array(py, &form.coefs)?.reshape(vec![form.count(), form.dim])?;
         Ok((knots, coefs, form.degree))
     }
 }

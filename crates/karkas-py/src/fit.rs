@@ -183,7 +183,7 @@ pub fn fit_curve(
                 check_memory(
                     py,
                     &format!("fit_curve(knots={n})"),
-                    fit_bytes(pts.len(), n, dim),
+                    fit_bytes(pts.len(), n as usize, dim),
                 )?;
                 Some(fit::knots_from_list(&[n as f64]).map_err(library_error)?)
             }

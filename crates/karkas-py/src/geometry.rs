@@ -11,6 +11,7 @@ use pyo3::types::PyFloat;
 use crate::convert::{as_points, as_points_mut, maybe_detach, Params, PointsArray};
 use crate::curve::PyCurve;
 use crate::errors::{library_error, KarkasError, OptionError, PointsError};
+use crate::limits::{bytes_of, check_memory, zeros};
 use crate::surface::PySurface;
 use crate::wrapper::{lift, Lift, Wrapped, WrappedSurface};
 
@@ -183,7 +184,7 @@ fn array_of<'py>(
     shape: &[usize],
     values: &[f64],
 ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-    let array = PyArrayDyn::<f64>::zeros(py, shape, false);
+    let array = zeros(py, shape)?;
     crate::convert::write_flat(&array, |flat| flat.copy_from_slice(values))?;
     Ok(array)
 }
@@ -474,6 +475,7 @@ impl PyCurve {
 
 /// The parameter pairs of `(u, v, grid)` and the result's leading shape.
 fn parameter_pairs(
+    py: Python<'_>,
     u: &Bound<'_, PyAny>,
     v: &Bound<'_, PyAny>,
     grid: bool,
@@ -487,6 +489,12 @@ fn parameter_pairs(
                 "with grid=True, u and v must be floats or 1-D arrays",
             ));
         }
+        // The pairs, and per pair a result of up to 3 x 3 numbers (curvatures and directions).
+        check_memory(
+            py,
+            &format!("a {} x {} parameter grid", fu.len(), fv.len()),
+            bytes_of(&[fu.len(), fv.len()], 8 * 11),
+        )?;
         let mut us = Vec::with_capacity(fu.len() * fv.len());
         let mut vs = Vec::with_capacity(fu.len() * fv.len());
         for &a in fu.iter() {
@@ -548,7 +556,7 @@ impl PySurface {
         v: &Bound<'py, PyAny>,
         grid: bool,
     ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-        let (us, vs, mut shape) = parameter_pairs(u, v, grid)?;
+        let (us, vs, mut shape) = parameter_pairs(py, u, v, grid)?;
         let mut out = vec![0.0; 3 * us.len()];
         let inner = &self.inner;
         maybe_detach(py, us.len(), || inner.normals(&us, &vs, &mut out));
@@ -606,7 +614,7 @@ impl PySurface {
         let scalar = !grid
             && Params::extract(u, "u").is_ok_and(|p| matches!(p, Params::Scalar(_)))
             && Params::extract(v, "v").is_ok_and(|p| matches!(p, Params::Scalar(_)));
-        let (us, vs, shape) = parameter_pairs(u, v, grid)?;
+        let (us, vs, shape) = parameter_pairs(py, u, v, grid)?;
         let inner = &self.inner;
         let found = maybe_detach(py, us.len(), || inner.principal(&us, &vs));
         let k1: Vec<f64> = found.iter().map(|p| p.k1).collect();

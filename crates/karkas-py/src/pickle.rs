@@ -137,7 +137,7 @@ impl PyLlSurface {
 impl PyCubicSpline {
     /// Pickling: the points, parameters, parameterization and end conditions.
     fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
-        let t = self.t.as_ref().map(|t| vector_to_array(py, t));
+        let t = self.t.as_ref().map(|t| vector_to_array(py, t)).transpose()?;
         let bc: Bound<'py, PyAny> = match &self.ends {
             Ends::Named(name) => name.into_pyobject(py)?.into_any(),
             Ends::Clamped(start, end) => ("clamped", start.clone(), end.clone())
@@ -161,15 +161,15 @@ impl PyHermiteSpline {
         let (knots, values, derivatives) = self.coefficients();
         let s = self.stats();
         let args = (
-            vector_to_array(py, &knots.0),
+            vector_to_array(py, &knots.0)?,
             values.to_array(py)?,
             derivatives.to_array(py)?,
             s.max_distance,
             s.rms_distance,
             s.jump_sum,
             s.tolerance_met,
-            vector_to_array(py, &s.parameters),
-            vector_to_array(py, &s.distances),
+            vector_to_array(py, &s.parameters)?,
+            vector_to_array(py, &s.distances)?,
         );
         reduce(py, "HermiteSpline._from_fit", args.into_pyobject(py)?, None)
     }
@@ -216,8 +216,8 @@ impl PyBicubicSurface {
             Err((ku, kv)) => {
                 let args = (
                     grid,
-                    vector_to_array(py, ku),
-                    vector_to_array(py, kv),
+                    vector_to_array(py, ku)?,
+                    vector_to_array(py, kv)?,
                     cu,
                     cv,
                 );

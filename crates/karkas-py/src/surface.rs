@@ -10,8 +10,8 @@ use numpy::PyArrayDyn;
 use pyo3::prelude::*;
 
 use crate::bspline_form::FlatBSplineSurface;
-use crate::convert::{maybe_detach, output_array, small_vector, uniform, write_flat, Params, Size};
-use crate::errors::{library_error, KarkasError, OptionError};
+use crate::convert::{maybe_detach, small_vector, uniform, write_flat, Size};
+use crate::errors::{library_error, OptionError};
 use crate::limits::{bytes_of, check_memory, zeros};
 use crate::section::PySectionCurve;
 use crate::wrapper::SurfaceImpl;

@@ -405,10 +405,10 @@ impl PySurface {
         (usize, usize),
     )> {
         let form = self.bspline().map_err(library_error)?;
-        let tu = vector_to_array(py, &form.knots.0);
-        let tv = vector_to_array(py, &form.knots.1);
+        let tu = vector_to_array(py, &form.knots.0)?;
+        let tv = vector_to_array(py, &form.knots.1)?;
         let (nu, nv) = form.counts;
-        let coefs = vector_to_array(py, &form.coefs).reshape(vec![nu, nv, form.dim])?;
+        let coefs = vector_to_array(py, &form.coefs)?.reshape(vec![nu, nv, form.dim])?;
         Ok(((tu, tv), coefs, form.degrees))
     }
 }
