@@ -218,7 +218,9 @@ impl PyCurve {
     ///
     /// ``c.arc_length(t0=None, t1=None, tol=1e-10)`` is the length from ``t0`` to ``t1``
     /// (negative when ``t1 < t0``), computed by adaptive Gauss-Legendre quadrature of the
-    /// speed on every polynomial piece, split at the breakpoints.
+    /// speed on every polynomial piece, split at the breakpoints. The length is measured along
+    /// the curve itself: an open curve's parameters are clamped to its domain (no length along
+    /// the continued end pieces); a closed curve's wrap, a whole period counting once per turn.
     ///
     /// Parameters
     /// ----------
@@ -279,8 +281,9 @@ impl PyCurve {
     ///
     /// ``c.inverse_arc_length(s, t0=None, tol=1e-10)`` walks ``s`` along the curve from
     /// ``t0`` (backwards when ``s < 0``) and returns the parameter reached, with
-    /// ``|c.arc_length(t0, t) - s| <= tol``. An open curve stops at its domain end; a closed
-    /// one goes round and the parameter is wrapped into the domain.
+    /// ``|c.arc_length(t0, t) - s| <= tol``. On an open curve the walk starts from ``t0``
+    /// clamped to the domain and stops at the domain end; a closed one goes round and the
+    /// parameter is wrapped into the domain.
     ///
     /// Parameters
     /// ----------

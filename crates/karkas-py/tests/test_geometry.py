@@ -300,3 +300,14 @@ def test_derivative_objects_have_geometry_too():
     t_near, distance, foot = d.project(np.array([[4.0, 0.0]]))
     assert distance[0] == pytest.approx(2.0, rel=1e-6)
     assert np.allclose(foot[0], [2.0, 0.0], atol=1e-5)
+
+
+def test_open_curves_are_measured_within_their_domain():
+    # A cubic spline continues its end pieces outside the domain when evaluated, but its
+    # length is measured along the curve itself: parameters far outside are clamped (and a
+    # start at -1e30 neither hangs nor overflows).
+    pts = np.array([[0.0, 0.0], [1.0, 1.0], [2.0, 0.0], [3.0, 1.0]])
+    c = karkas.CubicSpline(pts)
+    a, b = c.domain
+    assert c.arc_length(-1e30, 1e30) == pytest.approx(c.arc_length(a, b), rel=1e-12)
+    assert c.inverse_arc_length(0.5, t0=-1e30) == pytest.approx(c.inverse_arc_length(0.5, t0=a), rel=1e-12)

@@ -117,7 +117,9 @@ def fixtures(directory):
     o.surface = karkas.LLSurface(o.grid, order=3)
     o.llsurface = o.surface
     o.bicubic = karkas.BicubicSurface(o.grid)
-    o.coons = karkas.CoonsSurface(*_network())
+    o.coons = karkas.CoonsSurface(**dict(zip(("v_curves", "u_curves"), _network())))
+    o.curve_derivative = o.curve.derivative(1)
+    o.surface_derivative = o.surface.derivative(1, 0)
     o.dps = karkas.DiscreteSpline(o.pts3[:8], order=2, n=4)
     o.along, o.across = _torus_skeleton()
     o.tube = karkas.TubeSurface(o.along, o.across, 4, 4, 2, 2)
@@ -151,6 +153,17 @@ def fixtures(directory):
     o.obj = os.path.join(directory, "s.obj")
     karkas.export_obj(o.obj, o.grid)
     o.out_path = os.path.join(directory, "out")
+    o.skeleton_csv = os.path.join(directory, "along.csv")
+    with open(o.skeleton_csv, "w") as f:
+        f.write("i,q,x,y,z\n")
+        for i, line in enumerate(o.along):
+            for q, p in enumerate(line):
+                f.write(f"{i},{q}," + ",".join(repr(float(x)) for x in p) + "\n")
+    o.samples_csv = os.path.join(directory, "samples.csv")
+    karkas.export(o.surface, o.samples_csv, samples=(4, 5))
+    o.mask_csv = os.path.join(directory, "mask.csv")
+    with open(o.mask_csv, "w") as f:
+        f.write("i,j\n0,0\n2,1\n")
     return o
 
 
@@ -163,8 +176,18 @@ NO_CONSTRUCTOR = "no constructor"
 VALID = {
     # Curves.
     "Curve": NO_CONSTRUCTOR,
-    "Curve.__call__": lambda o: (o.curve, (np.linspace(0.3, 0.6, 5),), {"out": None}),
-    "Curve.derivative": lambda o: (o.curve.derivative, (np.linspace(0.3, 0.6, 5),), {"out": None}),
+    "Curve.__call__": lambda o: (
+        o.curve, (np.linspace(0.3, 0.6, 5),), {"nu": 1, "out": None, "extrapolate": False}
+    ),
+    "Curve.derivative": lambda o: (o.curve.derivative, (1,), {}),
+    "Curve.to_bspline": lambda o: (o.curve.to_bspline, (), {}),
+    "Curve.arc_length": lambda o: (o.curve.arc_length, (0.3, 0.6), {"tol": 1e-8}),
+    "Curve.inverse_arc_length": lambda o: (o.curve.inverse_arc_length, (0.1,), {"t0": 0.3}),
+    "Curve.curvature": lambda o: (o.curve.curvature, (np.linspace(0.3, 0.6, 5),), {}),
+    "Curve.torsion": lambda o: (o.curve.torsion, (np.linspace(0.3, 0.6, 5),), {}),
+    "Curve.project": lambda o: (o.curve.project, (o.pts3[:4],), {"tol": 0.0}),
+    "CurveDerivative": NO_CONSTRUCTOR,
+    "CurveDerivative.parent": lambda o: (getattr, (o.curve_derivative, "parent"), {}),
     "Curve.sample": lambda o: (o.curve.sample, (11,), {}),
     "LLCurve": lambda o: (karkas.LLCurve, (o.pts3,), {"order": 3, "closed": False}),
     "LLCurve.interpolate": lambda o: (karkas.LLCurve.interpolate, (o.pts3,), {"order": 3, "closed": False}),
@@ -173,11 +196,15 @@ VALID = {
         (o.pts3,),
         {"t": None, "parameterization": "chord", "bc": "natural"},
     ),
-    "HermiteSpline": NO_CONSTRUCTOR,
+    "HermiteSpline": lambda o: (
+        karkas.HermiteSpline,
+        ([0.0, 1.0], [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0]], [[1.0, 0.0, 0.0], [1.0, 0.0, 0.0]]),
+        {},
+    ),
     "fit_curve": lambda o: (
         karkas.fit_curve,
         (o.pts3,),
-        {"knots": 5, "tolerance": None, "eps": None, "pin_ends": False, "corners": None, "fairness": None},
+        {"knots": 5, "tolerance": None, "eps": None, "pin_ends": False, "corners": None, "fairness": 3e-11},
     ),
     "curve_parameters": lambda o: (karkas.curve_parameters, (o.pts3,), {"parameterization": "chord"}),
     # Surfaces.
@@ -185,13 +212,18 @@ VALID = {
     "Surface.__call__": lambda o: (
         o.surface,
         (np.linspace(0.3, 0.6, 4), np.linspace(0.3, 0.6, 3)),
-        {"grid": True, "out": None},
+        {"du": 1, "dv": 0, "grid": True, "out": None, "extrapolate": None},
     ),
-    "Surface.derivative": lambda o: (
-        o.surface.derivative,
-        (np.linspace(0.3, 0.6, 4), np.linspace(0.3, 0.6, 3)),
-        {"grid": True, "out": None},
+    "Surface.derivative": lambda o: (o.surface.derivative, (1, 0), {}),
+    "Surface.to_bspline": lambda o: (o.surface.to_bspline, (), {}),
+    "Surface.normal": lambda o: (o.surface.normal, (0.4, 0.5), {"grid": False}),
+    "Surface.principal_curvatures": lambda o: (
+        o.surface.principal_curvatures, (0.4, 0.5), {"grid": False, "directions": True}
     ),
+    "Surface.project": lambda o: (o.surface.project, (o.grid[1:3, 1],), {"cells": (8, 8)}),
+    "SurfaceDerivative": NO_CONSTRUCTOR,
+    "SurfaceDerivative.parent": lambda o: (getattr, (o.surface_derivative, "parent"), {}),
+    "LLSurface.section": lambda o: (o.surface.section, ([0.0, 0.0, 1.0], 0.1), {"cells": None}),
     "Surface.sample": lambda o: (o.surface.sample, (5, 6), {}),
     "Surface.section": lambda o: (
         o.surface.section,
@@ -208,8 +240,14 @@ VALID = {
     ),
     "CoonsSurface": lambda o: (
         karkas.CoonsSurface,
-        _network(),
-        {"kind": "gordon-spline", "crossing_tolerance": 1e-6, "tolerance": 1e-4},
+        (),
+        {
+            "v_curves": _network()[0],
+            "u_curves": _network()[1],
+            "kind": "gordon-spline",
+            "crossing_tolerance": 1e-6,
+            "tolerance": 1e-4,
+        },
     ),
     "grid_parameters": lambda o: (karkas.grid_parameters, (o.grid,), {"parameterization": "chord"}),
     "vary": lambda o: (
@@ -258,6 +296,12 @@ VALID = {
     "read_grid": lambda o: (karkas.read_grid, (o.grid_csv,), {}),
     "read_network": lambda o: (karkas.read_network, (o.network_csv,), {}),
     "read_mesh": lambda o: (karkas.read_mesh, (o.obj,), {}),
+    "read_skeleton": lambda o: (karkas.read_skeleton, (o.skeleton_csv,), {"across": False}),
+    "read_point_set": lambda o: (karkas.read_point_set, (o.obj,), {}),
+    "read_surface_samples": lambda o: (karkas.read_surface_samples, (o.samples_csv,), {}),
+    "read_mask": lambda o: (karkas.read_mask, (o.mask_csv, 3, 3), {}),
+    "export": lambda o: (karkas.export, (o.curve, o.out_path + "e.svg"), {"samples": 50}),
+    "_restore": lambda o: (karkas._restore, ("LLCurve", (o.pts3, 3), None), {}),
     # The cap in force, so that the valid call leaves it as it was.
     "set_max_input_bytes": lambda o: (karkas.set_max_input_bytes, (karkas.max_input_bytes(),), {}),
     "max_input_bytes": lambda o: (karkas.max_input_bytes, (), {}),
@@ -266,6 +310,8 @@ VALID = {
 # The object a property is read from: class name -> attribute of fixtures().
 INSTANCES = {
     "Curve": "curve",
+    "CurveDerivative": "curve_derivative",
+    "SurfaceDerivative": "surface_derivative",
     "LLCurve": "llcurve",
     "CubicSpline": "cubic",
     "HermiteSpline": "hermite",

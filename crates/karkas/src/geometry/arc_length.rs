@@ -70,6 +70,15 @@ pub(crate) fn split_points<C: Curve<D> + ?Sized, const D: usize>(
 }
 
 /// The speed `|P'(t)|`.
+/// `(t0, t1)` clamped to the domain of an open curve (unchanged on a closed one).
+fn within_domain<C: Curve<D> + ?Sized, const D: usize>(curve: &C, t0: f64, t1: f64) -> (f64, f64) {
+    if curve.is_closed() {
+        return (t0, t1);
+    }
+    let domain = curve.domain();
+    (domain.clamp(t0), domain.clamp(t1))
+}
+
 fn speed<C: Curve<D> + ?Sized, const D: usize>(curve: &C, t: f64) -> f64 {
     curve.deriv(t, 1).norm()
 }
@@ -78,8 +87,9 @@ fn speed<C: Curve<D> + ?Sized, const D: usize>(curve: &C, t: f64) -> f64 {
 /// (absolute, in the curve's length units; a non-positive accuracy asks for the best the
 /// quadrature gives, about `1e-15` relative).
 ///
-/// Parameters outside the domain follow the curve's own evaluation rule (closed curves
-/// wrap, so a whole period counts once per turn). NaN parameters give NaN.
+/// On an open curve the parameters are clamped to the domain (the length is measured along
+/// the curve itself, never along an extension of its end pieces); on a closed curve they
+/// wrap, so a whole period counts once per turn. NaN parameters give NaN.
 ///
 /// ```
 /// use karkas::geometry::arc_length;
@@ -101,6 +111,8 @@ pub fn arc_length<C: Curve<D> + ?Sized, const D: usize>(
     if t1 < t0 {
         return -arc_length(curve, t1, t0, accuracy);
     }
+    // An open curve is measured within its domain: the parameters are clamped to it.
+    let (t0, t1) = within_domain(curve, t0, t1);
     if t1 == t0 {
         return 0.0;
     }
@@ -117,8 +129,8 @@ pub fn arc_length<C: Curve<D> + ?Sized, const D: usize>(
 /// point reached after walking `length` along the curve from `t0` (backwards when `length`
 /// is negative).
 ///
-/// On an open curve the walk stops at the domain end (an end is returned when `length`
-/// exceeds what is left). On a closed curve it goes round by the period and the result is
+/// On an open curve the walk starts from `t0` clamped to the domain and stops at the domain
+/// end (an end is returned when `length` exceeds what is left). On a closed curve it goes round by the period and the result is
 /// wrapped into the domain. NaN input gives NaN.
 pub fn inverse_arc_length<C: Curve<D> + ?Sized, const D: usize>(
     curve: &C,
@@ -131,6 +143,8 @@ pub fn inverse_arc_length<C: Curve<D> + ?Sized, const D: usize>(
     }
     let domain = curve.domain();
     let closed = curve.is_closed() && domain.length() > 0.0;
+    // An open curve is walked within its domain, from the start clamped to it.
+    let t0 = if closed { t0 } else { domain.clamp(t0) };
     if length == 0.0 {
         return if closed { domain.wrap(t0) } else { t0 };
     }
