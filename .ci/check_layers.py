@@ -26,7 +26,7 @@ import tempfile
 # `error` may be imported by every module and imports none. `ONLY` narrows a module further.
 LAYERS = [
     ["core"],
-    ["solve", "bspline"],
+    ["solve", "bspline", "geometry"],
     ["spline"],
     ["ll", "dps", "fit", "param", "implicit"],
     ["coons", "section", "measure"],

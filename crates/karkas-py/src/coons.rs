@@ -8,7 +8,9 @@ use karkas::coons::{
 use karkas::Point;
 use pyo3::prelude::*;
 
-use crate::convert::{as_points, by_dim, check_dim, count, object_list, FlatPoints, Int, PointsArray};
+use crate::convert::{
+    as_points, by_dim, check_dim, count, object_list, FlatPoints, Int, PointsArray,
+};
 use crate::errors::{library_error, OptionError, PointsError};
 use crate::limits::{bytes_of, check_memory};
 use crate::surface::PySurface;

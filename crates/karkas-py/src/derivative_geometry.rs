@@ -9,7 +9,7 @@ use karkas::{Curve, Interval, PiecewiseCurve, Point, Side, Surface};
 
 use crate::convert::by_dim;
 use crate::curve_eval::DerivativeCurve;
-use crate::geometry::{CurveGeometryImpl, SurfaceGeometryImpl};
+use crate::geometry_interface::{CurveGeometryImpl, SurfaceGeometryImpl};
 use crate::surface_eval::DerivativeSurface;
 use crate::wrapper::{CurveImpl, SurfaceImpl, Wrapped, WrappedSurface};
 

@@ -8,7 +8,7 @@
 use std::path::{Path, PathBuf};
 
 use karkas::bspline::BSplineCurve;
-use karkas::{Grid, Point, Point3};
+use karkas::Point3;
 use karkas_io::export::cad::{write_cad_curve, write_cad_surface, NO_EXACT_FORM};
 use karkas_io::export::curve::{
     write_curve, write_curve_figure, write_discrete_curve, CurveDrawing, DiscreteTitles,
@@ -23,31 +23,20 @@ use karkas_io::export::surface::{write_sampled_surface, write_surface, SurfaceDr
 use karkas_io::mesh::{MeshOptions, TriangleMesh};
 use karkas_io::svg::CurveOverlay;
 use karkas_io::write::write_indexed_grid_csv;
-use karkas_io::{IoError, OutputFormat};
+use karkas_io::OutputFormat;
 use numpy::PyReadonlyArray2;
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::PyTuple;
 
 use crate::adapters::{CurveView, SurfaceView};
-use crate::convert::{as_points, by_dim, check_dim, GridArray, PointsArray};
+use crate::convert::{as_points, by_dim, check_dim, PointsArray};
 use crate::curve::PyCurve;
 use crate::dps::{PyDiscreteSpline, PyTubeSurface};
-use crate::errors::{file_error, library_error, KarkasError, OptionError};
+use crate::errors::{library_error, OptionError};
 use crate::export_cad::{bspline_curve, bspline_surface, export_scipy_spline};
+use crate::export_format::{choose, grid3, lift, numpy_array, write_error, Options};
 use crate::surface::PySurface;
-
-/// What the options of [`export`] say about a drawing and a mesh.
-pub struct Options {
-    format: Option<String>,
-    samples: Option<(usize, usize)>,
-    title: Option<String>,
-    points: Option<(Vec<f64>, usize)>,
-    closed_points: bool,
-    net: Option<Grid<Point3>>,
-    comb: bool,
-    mesh: MeshOptions,
-}
 
 /// Writes `obj` to `path` in the format of its extension (or `format`), as the command line
 /// writes the same result.
@@ -163,68 +152,6 @@ pub fn export(
     Ok(path)
 }
 
-/// The format of `path` among `allowed`: `options.format` by name, else the extension; STEP
-/// and IGES asked of a kind without them are refused with `no_exact`.
-pub fn choose(
-    path: &Path,
-    options: &Options,
-    allowed: &[OutputFormat],
-    no_exact: &str,
-) -> PyResult<OutputFormat> {
-    let format = match &options.format {
-        Some(name) => named(name)?,
-        None => {
-            let all = OutputFormat::ALL;
-            OutputFormat::from_path(path, &all).map_err(|e| OptionError::new_err(e.to_string()))?
-        }
-    };
-    if format.is_cad() && !allowed.contains(&format) {
-        return Err(OptionError::new_err(format!(
-            "{}: {no_exact}",
-            path.display()
-        )));
-    }
-    let format = format
-        .allowed_for(path, allowed)
-        .map_err(|e| OptionError::new_err(e.to_string()))?;
-    if options.mesh.flip_normals && !OutputFormat::MESHES.contains(&format) {
-        return Err(OptionError::new_err(format!(
-            "flip_normals: only meshes (.obj .stl .ply .vtk .vts .glb) have normals to flip, \
-             not .{}",
-            format.extension()
-        )));
-    }
-    Ok(format)
-}
-
-/// The format named `name` (an extension, with or without its dot, or its alias).
-fn named(name: &str) -> PyResult<OutputFormat> {
-    let name = name.trim_start_matches('.');
-    OutputFormat::ALL
-        .into_iter()
-        .find(|f| {
-            name.eq_ignore_ascii_case(f.extension())
-                || f.alias().is_some_and(|a| name.eq_ignore_ascii_case(a))
-        })
-        .ok_or_else(|| {
-            let names: Vec<&str> = OutputFormat::ALL.iter().map(|f| f.extension()).collect();
-            OptionError::new_err(format!(
-                "format {name:?}: unknown (one of {})",
-                names.join(", ")
-            ))
-        })
-}
-
-/// A write error of karkas-io as the Python exception of its kind.
-pub fn write_error(e: IoError) -> PyErr {
-    match e {
-        IoError::Write { .. } | IoError::Open { .. } => file_error(e),
-        IoError::UnknownExtension { .. } => OptionError::new_err(e.to_string()),
-        IoError::Geometry(g) => library_error(g.source),
-        other => KarkasError::new_err(other.to_string()),
-    }
-}
-
 /// The caption: `options.title`, else the object's repr.
 fn title_of(obj: &Bound<'_, PyAny>, options: &Options) -> PyResult<String> {
     match &options.title {
@@ -260,32 +187,6 @@ fn flat_points(obj: &Bound<'_, PyAny>) -> PyResult<(Vec<f64>, usize)> {
     let array = numpy_array(obj)?;
     let (pts, dim) = PointsArray::extract_checked(&array, "points")?;
     Ok((pts.flat().into_owned(), dim))
-}
-
-/// `obj` as a float64 NumPy array (lists, tuples and other arrays converted).
-pub fn numpy_array<'py>(obj: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
-    obj.py()
-        .import("numpy")?
-        .call_method1("ascontiguousarray", (obj, "float64"))
-}
-
-/// A `(nu, nv, 3)` grid (a 2-D grid in `z = 0`).
-pub fn grid3(obj: &Bound<'_, PyAny>) -> PyResult<Grid<Point3>> {
-    let array = numpy_array(obj)?;
-    let (g, dim) = GridArray::extract_checked(&array, "grid")?;
-    by_dim!(dim, D => Ok(lift_grid(&g.grid::<D>()?)))
-}
-
-/// Points of any dimension in space (`z = 0` for planar ones).
-fn lift<const D: usize>(p: &Point<D>) -> Point3 {
-    let mut q = Point3::ZERO;
-    q.0[..D].copy_from_slice(&p.0);
-    q
-}
-
-/// A grid of any dimension in space.
-fn lift_grid<const D: usize>(g: &Grid<Point<D>>) -> Grid<Point3> {
-    Grid::from_fn(g.rows(), g.cols(), |i, j| lift(g.get(i, j)))
 }
 
 /// A curve: sampled (CSV, pictures, page) or its exact B-spline form (STEP, IGES).

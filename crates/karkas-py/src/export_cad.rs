@@ -11,7 +11,7 @@ use pyo3::prelude::*;
 
 use crate::convert::{as_points, by_dim, PointsArray};
 use crate::errors::{library_error, OptionError};
-use crate::export_any::{choose, grid3, numpy_array, write_error, Options};
+use crate::export_format::{choose, grid3, numpy_array, write_error, Options};
 
 /// The exact B-spline form `(t, c, k)` of `obj` by its `to_bspline()`, the control points
 /// flat; objects without one are refused with `no_exact`.

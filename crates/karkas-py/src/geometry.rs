@@ -2,7 +2,9 @@
 //! torsion, projection of points onto curves; unit normals, principal curvatures and
 //! projection of points onto surfaces (the library's [`karkas::geometry`]).
 
-use karkas::geometry::{self, CurveProjector, PrincipalCurvatures, SurfaceProjector};
+use karkas::geometry::{
+    self, CurveGeometry, CurveProjector, PrincipalCurvatures, SurfaceProjector,
+};
 use karkas::{Curve, Interval, PiecewiseCurve, Point3, Surface};
 use numpy::PyArrayDyn;
 use pyo3::prelude::*;
@@ -11,31 +13,10 @@ use pyo3::types::PyFloat;
 use crate::convert::{as_points, as_points_mut, maybe_detach, Params, PointsArray};
 use crate::curve::PyCurve;
 use crate::errors::{library_error, KarkasError, OptionError, PointsError};
+pub use crate::geometry_interface::{CurveGeometryImpl, SurfaceGeometryImpl};
 use crate::limits::{bytes_of, check_memory, zeros};
 use crate::surface::PySurface;
 use crate::wrapper::{lift, Lift, Wrapped, WrappedSurface};
-
-/// The geometry of a curve of either dimension on flat buffers.
-pub trait CurveGeometryImpl {
-    /// The arc length from `t0` to every `t1s[i]` into `out[i]`, each to `tol`.
-    fn arc_lengths(&self, t0: f64, t1s: &[f64], tol: f64, out: &mut [f64]);
-    /// The parameter after walking `lengths[i]` from `t0`, into `out[i]`.
-    fn inverse_arc_lengths(&self, t0: f64, lengths: &[f64], tol: f64, out: &mut [f64]);
-    /// The curvature at every `ts[i]` into `out[i]`.
-    fn curvatures(&self, ts: &[f64], out: &mut [f64]);
-    /// The torsion at every `ts[i]` into `out[i]` (3-D only: false otherwise).
-    fn torsions(&self, ts: &[f64], out: &mut [f64]) -> bool;
-    /// The nearest points to the flat points `qs` (`dim` coordinates each): parameters,
-    /// distances, and foot points (flat).
-    fn project(
-        &self,
-        qs: &[f64],
-        tol: f64,
-        t: &mut [f64],
-        distance: &mut [f64],
-        foot: &mut [f64],
-    ) -> karkas::Result<()>;
-}
 
 /// A curve of dimension `D <= 3` seen as one in 3-D (missing coordinates zero).
 struct CurveLift<'a, C, const D: usize>(&'a C);
@@ -102,26 +83,6 @@ where
         }
         Ok(())
     }
-}
-
-/// The geometry of a surface of either dimension on flat buffers (parameters as pairs).
-pub trait SurfaceGeometryImpl {
-    /// The unit normal at every `(us[i], vs[i])` into `out[3 i..3 i + 3]`.
-    fn normals(&self, us: &[f64], vs: &[f64], out: &mut [f64]);
-    /// The principal curvatures and directions at every `(us[i], vs[i])`.
-    fn principal(&self, us: &[f64], vs: &[f64]) -> Vec<PrincipalCurvatures>;
-    /// The nearest points to the flat points `qs`: `u`, `v`, distances, foot points.
-    #[allow(clippy::too_many_arguments)]
-    fn project(
-        &self,
-        qs: &[f64],
-        cells: (usize, usize),
-        tol: f64,
-        u: &mut [f64],
-        v: &mut [f64],
-        distance: &mut [f64],
-        foot: &mut [f64],
-    ) -> karkas::Result<()>;
 }
 
 impl<S, const D: usize> SurfaceGeometryImpl for WrappedSurface<S, D>

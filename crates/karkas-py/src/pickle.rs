@@ -137,7 +137,11 @@ impl PyLlSurface {
 impl PyCubicSpline {
     /// Pickling: the points, parameters, parameterization and end conditions.
     fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
-        let t = self.t.as_ref().map(|t| vector_to_array(py, t)).transpose()?;
+        let t = self
+            .t
+            .as_ref()
+            .map(|t| vector_to_array(py, t))
+            .transpose()?;
         let bc: Bound<'py, PyAny> = match &self.ends {
             Ends::Named(name) => name.into_pyobject(py)?.into_any(),
             Ends::Clamped(start, end) => ("clamped", start.clone(), end.clone())

@@ -17,7 +17,7 @@ use crate::convert::as_points_mut;
 use crate::section::PySectionCurve;
 
 /// A karkas curve of either dimension, evaluated on flat buffers.
-pub trait CurveImpl: crate::geometry::CurveGeometryImpl + Send + Sync {
+pub trait CurveImpl: crate::geometry_interface::CurveGeometryImpl + Send + Sync {
     /// The dimension `d` (2 or 3).
     fn dim(&self) -> usize;
     /// The parameter domain `(a, b)`.
@@ -80,7 +80,7 @@ where
     }
 }
 /// A karkas surface of either dimension, evaluated on flat buffers.
-pub trait SurfaceImpl: crate::geometry::SurfaceGeometryImpl + Send + Sync {
+pub trait SurfaceImpl: crate::geometry_interface::SurfaceGeometryImpl + Send + Sync {
     /// The dimension `d` (2 or 3).
     fn dim(&self) -> usize;
     /// The `u` domain.

@@ -43,29 +43,6 @@ pub trait Curve<const D: usize> {
         None
     }
 
-    /// The arc length from `t0` to `t1` (negative when `t1 < t0`) to within `accuracy`
-    /// (absolute): adaptive Gauss–Legendre quadrature of `|P'|` on every polynomial piece
-    /// ([`geometry::arc_length`](crate::geometry::arc_length)). Override where a closed form
-    /// is faster.
-    fn arc_length(&self, t0: f64, t1: f64, accuracy: f64) -> f64 {
-        crate::geometry::arc_length(self, t0, t1, accuracy)
-    }
-
-    /// The parameter reached after walking `length` along the curve from `t0` (backwards
-    /// when negative), to within `accuracy` in length
-    /// ([`geometry::inverse_arc_length`](crate::geometry::inverse_arc_length): stops at the
-    /// domain end of an open curve, wraps on a closed one).
-    fn inverse_arc_length(&self, t0: f64, length: f64, accuracy: f64) -> f64 {
-        crate::geometry::inverse_arc_length(self, t0, length, accuracy)
-    }
-
-    /// The curvature at `t`: signed in 2-D (positive for a counter-clockwise turn),
-    /// non-negative otherwise; NaN where `P' = 0`
-    /// ([`geometry::curvature`](crate::geometry::curvature)).
-    fn curvature(&self, t: f64) -> f64 {
-        crate::geometry::curvature(self, t)
-    }
-
     /// Evaluates at every parameter of `ts` into `out`.
     ///
     /// # Panics

@@ -5,9 +5,8 @@
 //! - [`arc_length`]: `∫ |P'(t)| dt` by adaptive Gauss–Legendre quadrature on each polynomial
 //!   piece (split at the breakpoints, where `P'` may have kinks), to a stated absolute
 //!   accuracy; the inverse (the parameter reached after a given length) by safeguarded Newton
-//!   on the length function. The curve methods [`Curve::arc_length`](crate::Curve::arc_length)
-//!   and [`Curve::inverse_arc_length`](crate::Curve::inverse_arc_length) call these and may be
-//!   overridden where a closed form is faster.
+//!   on the length function. The methods of [`CurveGeometry`] (implemented for every
+//!   curve) call these.
 //! - [`curvature`]: the Frenet curvature (signed in 2-D) and torsion (3-D) from the first
 //!   three derivatives.
 //! - [`curve_nearest`]: the globally nearest point of a curve: candidates from a sampled
@@ -20,6 +19,7 @@
 
 pub mod arc_length;
 pub mod curvature;
+mod curve_geometry;
 pub mod curve_nearest;
 mod quadrature;
 pub mod surface_frame;
@@ -27,6 +27,7 @@ pub mod surface_nearest;
 
 pub use arc_length::{arc_length, inverse_arc_length};
 pub use curvature::{curvature, torsion};
+pub use curve_geometry::CurveGeometry;
 pub use curve_nearest::{CurveNearest, CurveProjector};
 pub use surface_frame::{normal, principal_curvatures, PrincipalCurvatures};
 pub use surface_nearest::{SurfaceNearest, SurfaceProjector};

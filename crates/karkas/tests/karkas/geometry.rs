@@ -5,7 +5,7 @@
 use std::f64::consts::{PI, TAU};
 
 use karkas::geometry::{
-    arc_length, principal_curvatures, torsion, CurveProjector, SurfaceProjector,
+    arc_length, principal_curvatures, torsion, CurveGeometry, CurveProjector, SurfaceProjector,
 };
 use karkas::param::{CubicSpline, SplineEnds};
 use karkas::{Curve, Interval, Point, Point2, Point3, Surface};
