@@ -136,11 +136,14 @@ pub struct CoonsInput {
 
 /// The point arrays of a list (each (k, d)), copied.
 fn given(lists: &[Bound<'_, PyAny>], what: &str) -> PyResult<Vec<FlatPoints>> {
+    let mut total: u128 = 0;
     lists
         .iter()
         .enumerate()
         .map(|(i, obj)| {
             let pts = PointsArray::extract(obj, &format!("{what}[{i}]"))?;
+            total = total.saturating_add(bytes_of(&[pts.len(), pts.dim()], 8));
+            check_memory(obj.py(), &format!("{what}[..{}]", i + 1), total)?;
             Ok(FlatPoints {
                 coords: pts.flat().into_owned(),
                 dim: pts.dim(),

@@ -8,6 +8,7 @@ use std::path::PathBuf;
 use numpy::{PyArray1, PyArray2, PyArray3, PyArrayMethods};
 use pyo3::prelude::*;
 
+use crate::limits::{bytes_of, check_memory};
 use crate::read::{file_path, flat_points, points_array, read_error};
 
 /// Reads the skeleton curves of a tube along or across it.
@@ -184,6 +185,11 @@ pub fn read_mask(
     cols: usize,
 ) -> PyResult<Bound<'_, PyArray2<bool>>> {
     let path = file_path(path)?;
+    check_memory(
+        py,
+        &format!("read_mask of {rows} x {cols} cells"),
+        bytes_of(&[rows, cols], 1),
+    )?;
     let mask = py
         .detach(|| karkas_io::mask::read_cell_mask(&path, rows, cols))
         .map_err(read_error)?;

@@ -51,7 +51,7 @@ impl PyLlSurface {
     #[pyo3(signature = (normal, offset, tolerance = None, cells = None))]
     fn section<'py>(
         slf: &Bound<'py, Self>,
-        normal: Vec<f64>,
+        normal: &Bound<'py, PyAny>,
         offset: f64,
         tolerance: Option<f64>,
         cells: Option<(usize, usize)>,

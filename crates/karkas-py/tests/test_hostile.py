@@ -66,7 +66,7 @@ def is_property(name):
     cls, attr = name.split(".", 1)
     return isinstance(getattr(karkas, cls).__dict__[attr], property) or type(
         getattr(karkas, cls).__dict__[attr]
-    ).__name__ == "getset_descriptor"
+    ).__name__ in ("getset_descriptor", "member_descriptor")
 
 
 # -- Valid inputs ----------------------------------------------------------------------------
@@ -187,7 +187,6 @@ VALID = {
     "Curve.torsion": lambda o: (o.curve.torsion, (np.linspace(0.3, 0.6, 5),), {}),
     "Curve.project": lambda o: (o.curve.project, (o.pts3[:4],), {"tol": 0.0}),
     "CurveDerivative": NO_CONSTRUCTOR,
-    "CurveDerivative.parent": lambda o: (getattr, (o.curve_derivative, "parent"), {}),
     "Curve.sample": lambda o: (o.curve.sample, (11,), {}),
     "LLCurve": lambda o: (karkas.LLCurve, (o.pts3,), {"order": 3, "closed": False}),
     "LLCurve.interpolate": lambda o: (karkas.LLCurve.interpolate, (o.pts3,), {"order": 3, "closed": False}),
@@ -222,7 +221,6 @@ VALID = {
     ),
     "Surface.project": lambda o: (o.surface.project, (o.grid[1:3, 1],), {"cells": (8, 8)}),
     "SurfaceDerivative": NO_CONSTRUCTOR,
-    "SurfaceDerivative.parent": lambda o: (getattr, (o.surface_derivative, "parent"), {}),
     "LLSurface.section": lambda o: (o.surface.section, ([0.0, 0.0, 1.0], 0.1), {"cells": None}),
     "Surface.sample": lambda o: (o.surface.sample, (5, 6), {}),
     "Surface.section": lambda o: (

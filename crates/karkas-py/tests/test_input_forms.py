@@ -92,7 +92,7 @@ CASES = [
     ("fit_curve knots", [dyadic(np.linspace(0, 1, 6))], lambda k: karkas.fit_curve(PTS3, knots=k)(T)),
     ("curve_parameters", [INT_PTS], lambda p: karkas.curve_parameters(p)),
     ("Curve.__call__", [T], lambda t: LL(t)),
-    ("Curve.derivative", [T], lambda t: LL.derivative(t, 2)),
+    ("Curve.__call__ nu=2", [T], lambda t: LL(t, 2)),
     ("LLSurface", [GRID], lambda g: karkas.LLSurface(g, order=3)(UU, VV)),
     ("LLSurface.interpolate", [GRID], lambda g: karkas.LLSurface.interpolate(g, order=3)(UU, VV)),
     ("BicubicSurface", [GRID], lambda g: karkas.BicubicSurface(g)(UU, VV)),
@@ -104,13 +104,13 @@ CASES = [
     ("grid_parameters", [GRID], lambda g: np.concatenate(karkas.grid_parameters(g))),
     ("Surface.__call__", [UU, VV], lambda u, v: SURF(u, v)),
     ("Surface.__call__ grid=False", [UU, UU[::-1]], lambda u, v: SURF(u, v, grid=False)),
-    ("Surface.derivative", [UU, VV], lambda u, v: SURF.derivative(u, v, 1, 1)),
+    ("Surface.__call__ du=dv=1", [UU, VV], lambda u, v: SURF(u, v, 1, 1)),
     (
         "Surface.section",
         [np.array([0.0, 0.0, 1.0])],
         lambda n: np.concatenate([c.points for c in SURF.section(n, 0.125)]),
     ),
-    ("CoonsSurface", [V_CURVE], lambda c: karkas.CoonsSurface(*network(c))(UU, VV)),
+    ("CoonsSurface", [V_CURVE], lambda c: karkas.CoonsSurface(**dict(zip(("v_curves", "u_curves"), network(c))))(UU, VV)),
     ("DiscreteSpline", [INT_PTS], lambda p: karkas.DiscreteSpline(p, order=2, n=4).values()),
     ("DiscreteSpline.interpolate", [PTS3[:8]], lambda p: karkas.DiscreteSpline.interpolate(p, order=2, n=4).values()),
     ("TubeSurface", [ALONG, ACROSS], lambda a, b: karkas.TubeSurface(a, b, 4, 4, 2, 2).values()),
@@ -204,9 +204,9 @@ def test_a_tube_reads_every_layout_of_its_skeleton():
 def _outs():
     return [
         ("Curve.__call__", lambda out: LL(T, out=out), (9, 3)),
-        ("Curve.derivative", lambda out: LL.derivative(T, 1, out=out), (9, 3)),
+        ("Curve.__call__ nu=1", lambda out: LL(T, 1, out=out), (9, 3)),
         ("Surface.__call__", lambda out: SURF(UU, VV, out=out), (4, 5, 3)),
-        ("Surface.derivative", lambda out: SURF.derivative(UU, VV, 1, 0, out=out), (4, 5, 3)),
+        ("Surface.__call__ du=1", lambda out: SURF(UU, VV, 1, 0, out=out), (4, 5, 3)),
         ("DiscreteSpline.values", lambda out: karkas.DiscreteSpline(PTS3[:8], 2, 4).values(out=out), (32, 3)),
     ]
 
