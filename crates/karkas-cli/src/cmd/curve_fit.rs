@@ -74,9 +74,25 @@ pub struct CurveFitArgs {
     report: Option<PathBuf>,
 }
 
+/// The bytes a fit works in per knot, in 3-D (the most): the knot and its spline values and
+/// derivatives, the Newton solver's per-piece blocks, its vectors and the banded normal
+/// equations (`8 (32 + 48 d^2 + 2 d (16 + 8 d))` with `d = 3`).
+const FIT_BYTES_PER_KNOT: u128 = 8 * (32 + 48 * 9 + 6 * (16 + 24));
+
 /// Runs `karkas curve fit`.
 pub fn run(args: &CurveFitArgs) -> Result<()> {
     let format = output_format(&args.output, &EXACT_CURVE_FORMATS)?;
+    if let [count] = args.knots.as_deref().unwrap_or_default() {
+        // A count of uniform knots is checked before the knots and the fit's work arrays are
+        // made: per knot the spline, the per-piece blocks of the Newton solver and the band
+        // of the normal equations, in 3-D.
+        if count.fract() == 0.0 && *count >= 2.0 {
+            check_memory(
+                &format!("--knots {count}"),
+                (*count as u128).saturating_mul(FIT_BYTES_PER_KNOT),
+            )?;
+        }
+    }
     let knots = match &args.knots {
         Some(given) => Some(knots_from_list(given).context("--knots")?),
         None => None,

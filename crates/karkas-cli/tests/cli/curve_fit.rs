@@ -226,3 +226,33 @@ fn fairness_option() {
     let o = run(&["--fairness", "-1"], &dir.path().join("bad.csv"));
     assert_eq!(o.status.code(), Some(2));
 }
+
+#[test]
+fn a_huge_knot_count_is_refused_before_anything_is_allocated() {
+    // `--knots N` is a count of uniform knots; a billion of them is refused by the memory
+    // cap (exit 2, one line), not attempted (it aborted on the allocation).
+    let dir = temp_dir();
+    let input = write(dir.path(), "arc.csv", &arc());
+    let out = dir.path().join("fit.csv");
+    let o = karkas(&[
+        "curve",
+        "fit",
+        s(&input),
+        "--knots",
+        "1000000000",
+        "-o",
+        s(&out),
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    let err = stderr(&o);
+    assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+    assert!(
+        err.contains("--knots 1000000000") && err.contains("memory"),
+        "{err}"
+    );
+    assert!(!out.exists());
+    // A modest count works.
+    let o = karkas(&["curve", "fit", s(&input), "--knots", "6", "-o", s(&out)]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(out.exists());
+}
