@@ -290,10 +290,25 @@ class Surface:
     def principal_curvatures(
         self, u: _Params, v: _Params, grid: bool, directions: Literal[True]
     ) -> Tuple[Union[float, _Floats], Union[float, _Floats], _Floats, _Floats]: ...
+    @overload
     def project(
-        self, points: ArrayLike, cells: Tuple[int, int] = (64, 64), tol: float = 0.0
+        self,
+        points: ArrayLike,
+        cells: Tuple[int, int] = (64, 64),
+        tol: float = 0.0,
+        foot: Literal[False] = False,
+    ) -> Tuple[_Floats, _Floats, _Floats]:
+        """Globally nearest points: (u (n,), v (n,), distance (n,))."""
+    @overload
+    def project(
+        self,
+        points: ArrayLike,
+        cells: Tuple[int, int] = (64, 64),
+        tol: float = 0.0,
+        *,
+        foot: Literal[True],
     ) -> Tuple[_Floats, _Floats, _Floats, _Floats]:
-        """Globally nearest points: (u (n,), v (n,), distance (n,), foot (n, d))."""
+        """With foot=True also the foot points (n, d)."""
     def section(
         self,
         normal: Sequence[float],

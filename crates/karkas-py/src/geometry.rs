@@ -8,7 +8,7 @@ use karkas::geometry::{
 use karkas::{Curve, Interval, PiecewiseCurve, Point3, Surface};
 use numpy::PyArrayDyn;
 use pyo3::prelude::*;
-use pyo3::types::PyFloat;
+use pyo3::types::{PyFloat, PyTuple};
 
 use crate::convert::{as_points, as_points_mut, maybe_detach, Params, PointsArray};
 use crate::curve::PyCurve;
@@ -615,6 +615,8 @@ impl PySurface {
     ///     The sampling grid in (u, v); more cells for wavy surfaces.
     /// tol : float, optional
     ///     Tolerance on the foot parameters (0: full precision).
+    /// foot : bool, optional
+    ///     Also return the foot points.
     ///
     /// Returns
     /// -------
@@ -623,7 +625,7 @@ impl PySurface {
     /// distance : ndarray, shape (n,)
     ///     Distances to the surface.
     /// foot : ndarray, shape (n, d)
-    ///     The foot points ``S(u, v)``.
+    ///     Only with ``foot=True``: the foot points ``S(u, v)``.
     ///
     /// Raises
     /// ------
@@ -634,24 +636,21 @@ impl PySurface {
     /// --------
     /// >>> import numpy as np, karkas
     /// >>> g = np.zeros((4, 4, 3)); g[..., 0], g[..., 1] = np.meshgrid(range(4), range(4), indexing="ij")
-    /// >>> u, v, dist, foot = karkas.BicubicSurface(g).project([[1.5, 2.0, 3.0]])
-    /// >>> foot.round(12).tolist(), dist.round(12).tolist()
-    /// ([[1.5, 2.0, 0.0]], [3.0])
-    #[pyo3(signature = (points, cells = (64, 64), tol = 0.0))]
-    #[pyo3(text_signature = "(self, points, cells=(64, 64), tol=0.0)")]
-    #[allow(clippy::type_complexity)]
+    /// >>> u, v, dist = karkas.BicubicSurface(g).project([[1.5, 2.0, 3.0]])
+    /// >>> u.round(12).tolist(), v.round(12).tolist(), dist.round(12).tolist()
+    /// ([1.5], [2.0], [3.0])
+    /// >>> karkas.BicubicSurface(g).project([[1.5, 2.0, 3.0]], foot=True)[3].round(12).tolist()
+    /// [[1.5, 2.0, 0.0]]
+    #[pyo3(signature = (points, cells = (64, 64), tol = 0.0, foot = false))]
+    #[pyo3(text_signature = "(self, points, cells=(64, 64), tol=0.0, foot=False)")]
     fn project<'py>(
         &self,
         py: Python<'py>,
         points: &Bound<'py, PyAny>,
         cells: (usize, usize),
         tol: f64,
-    ) -> PyResult<(
-        Bound<'py, PyArrayDyn<f64>>,
-        Bound<'py, PyArrayDyn<f64>>,
-        Bound<'py, PyArrayDyn<f64>>,
-        Bound<'py, PyArrayDyn<f64>>,
-    )> {
+        foot: bool,
+    ) -> PyResult<Bound<'py, PyTuple>> {
         let tol = check_tol(tol)?;
         if cells.0 == 0 || cells.1 == 0 || cells.0.saturating_mul(cells.1) > 1 << 24 {
             return Err(OptionError::new_err(format!(
@@ -660,16 +659,19 @@ impl PySurface {
         }
         let d = self.inner.dim();
         let (qs, n) = query_points(points, d)?;
-        let (mut u, mut v, mut dist, mut foot) =
+        let (mut u, mut v, mut dist, mut feet) =
             (vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n * d]);
         let inner = &self.inner;
-        py.detach(|| inner.project(&qs, cells, tol, &mut u, &mut v, &mut dist, &mut foot))
+        py.detach(|| inner.project(&qs, cells, tol, &mut u, &mut v, &mut dist, &mut feet))
             .map_err(library_error)?;
-        Ok((
+        let mut parts = vec![
             array_of(py, &[n], &u)?,
             array_of(py, &[n], &v)?,
             array_of(py, &[n], &dist)?,
-            array_of(py, &[n, d], &foot)?,
-        ))
+        ];
+        if foot {
+            parts.push(array_of(py, &[n, d], &feet)?);
+        }
+        PyTuple::new(py, parts)
     }
 }

@@ -268,13 +268,13 @@ def _reference_surface_distance(S, q):
 def test_surface_projection_matches_brute_force(S):
     box = S.sample(20, 20).reshape(-1, 3)
     q = RNG.uniform(box.min(0) - 0.5, box.max(0) + 0.5, size=(8, 3))
-    u, v, dist, foot = S.project(q)
+    u, v, dist, foot = S.project(q, foot=True)
     want = np.array([_reference_surface_distance(S, x) for x in q])
     assert np.all(dist <= want + 1e-8)
     np.testing.assert_allclose(dist, want, atol=1e-6)
     np.testing.assert_allclose(foot, S(u, v, grid=False), atol=1e-12)
     on = S(u, v, grid=False)
-    _, _, d0, _ = S.project(on)
+    _, _, d0 = S.project(on)
     np.testing.assert_allclose(d0, 0.0, atol=1e-9)
 
 
@@ -284,7 +284,7 @@ def test_sphere_projection_closed_form():
     u, v = np.array([0.6, 1.4, 2.2]), np.array([-0.6, 0.1, 0.8])
     dirs = S(u, v, grid=False) / 2.0
     q = dirs * np.array([[3.0], [1.2], [2.5]])
-    _, _, dist, _ = S.project(q)
+    _, _, dist = S.project(q)
     np.testing.assert_allclose(dist, [1.0, 0.8, 0.5], atol=1e-6)
 
 
