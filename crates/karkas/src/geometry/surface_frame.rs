@@ -52,7 +52,9 @@ impl PrincipalCurvatures {
 /// The unit normal `S_u x S_v / |S_u x S_v|` at `(u, v)`; NaN where the surface is singular
 /// (`S_u x S_v = 0`).
 pub fn normal<S: Surface<3> + ?Sized>(surface: &S, u: f64, v: f64) -> Point3 {
-    let n = cross(surface.deriv(u, v, 1, 0), surface.deriv(u, v, 0, 1));
+    let (su, sv) = (surface.deriv(u, v, 1, 0), surface.deriv(u, v, 0, 1));
+    let scale = 1.0 / largest_coordinate(su, sv);
+    let n = cross(su * scale, sv * scale);
     let len = n.norm();
     if len > 0.0 {
         n * (1.0 / len)
@@ -68,8 +70,17 @@ pub fn principal_curvatures<S: Surface<3> + ?Sized>(
     u: f64,
     v: f64,
 ) -> PrincipalCurvatures {
-    let su = surface.deriv(u, v, 1, 0);
-    let sv = surface.deriv(u, v, 0, 1);
+    // The derivatives are divided by the largest coordinate of the first ones, which is the
+    // surface scaled by `1 / sigma`: its curvatures are `sigma` times the true ones. Products
+    // of derivatives then neither overflow (coordinates near 1e150) nor underflow (near
+    // 1e-150).
+    let (su, sv) = (surface.deriv(u, v, 1, 0), surface.deriv(u, v, 0, 1));
+    let sigma = largest_coordinate(su, sv);
+    if !(sigma.is_finite() && sigma > 0.0) {
+        return PrincipalCurvatures::UNDEFINED;
+    }
+    let scale = 1.0 / sigma;
+    let (su, sv) = (su * scale, sv * scale);
     let cr = cross(su, sv);
     let len = cr.norm();
     if len.is_nan() || len <= 0.0 {
@@ -77,9 +88,9 @@ pub fn principal_curvatures<S: Surface<3> + ?Sized>(
     }
     let n = cr * (1.0 / len);
     let (e, f, g) = (su.dot(su), su.dot(sv), sv.dot(sv));
-    let l = surface.deriv(u, v, 2, 0).dot(n);
-    let m = surface.deriv(u, v, 1, 1).dot(n);
-    let nn = surface.deriv(u, v, 0, 2).dot(n);
+    let l = (surface.deriv(u, v, 2, 0) * scale).dot(n);
+    let m = (surface.deriv(u, v, 1, 1) * scale).dot(n);
+    let nn = (surface.deriv(u, v, 0, 2) * scale).dot(n);
     let det = e * g - f * f;
     if det.is_nan() || det <= 0.0 {
         return PrincipalCurvatures::UNDEFINED;
@@ -99,8 +110,8 @@ pub fn principal_curvatures<S: Surface<3> + ?Sized>(
     let dir1 = direction(su, sv, n, a11, a12, a21, a22, k1);
     let dir2 = cross(n, dir1);
     PrincipalCurvatures {
-        k1,
-        k2,
+        k1: k1 * scale,
+        k2: k2 * scale,
         dir1,
         dir2,
         normal: n,
@@ -143,4 +154,9 @@ fn direction(
     } else {
         su * (1.0 / su.norm())
     }
+}
+
+/// The largest absolute coordinate of `a` and `b` (the scale of the first derivatives).
+fn largest_coordinate(a: Point3, b: Point3) -> f64 {
+    a.0.iter().chain(&b.0).fold(0.0, |m: f64, x| m.max(x.abs()))
 }

@@ -448,3 +448,41 @@ fn projection_onto_a_torus_is_global() {
         assert!(projector.nearest(torus.eval(u, v)).distance < 1e-12);
     }
 }
+
+#[test]
+fn normals_and_curvatures_hold_at_extreme_scales() {
+    // A sphere of radius 2e150 (or 2e-150): products of its derivatives overflow (underflow)
+    // unless the frame is computed on the scaled derivatives. Curvatures scale as 1/s.
+    for s in [1e150, 1e-150] {
+        let sphere = Sphere { r: 2.0 * s };
+        let (u, v) = (1.0, 0.5);
+        let p = sphere.eval(u, v) * (0.5 / s);
+        let pc = principal_curvatures(&sphere, u, v);
+        assert!(pc.normal.distance(p) < 1e-14, "{s}");
+        assert!(
+            (pc.k1 * s + 0.5).abs() < 1e-13 && (pc.k2 * s + 0.5).abs() < 1e-13,
+            "{s}"
+        );
+        assert!(
+            karkas::geometry::normal(&sphere, u, v).distance(p) < 1e-14,
+            "{s}"
+        );
+    }
+}
+
+#[test]
+fn helix_curvature_and_torsion_hold_at_extreme_scales() {
+    // A helix (r, c) scaled by s: curvature r / (r^2 + c^2) / s, torsion c / (r^2 + c^2) / s;
+    // |P'|^3 alone would overflow at 1e150 and underflow at 1e-150.
+    for s in [1e150, 1e-150] {
+        let helix = Helix {
+            r: 1.0 * s,
+            c: 0.5 * s,
+        };
+        let (k, tau) = (1.0 / 1.25, 0.5 / 1.25);
+        for t in [0.3, 2.0] {
+            assert!((helix.curvature(t) * s - k).abs() < 1e-13, "{s}");
+            assert!((torsion(&helix, t) * s - tau).abs() < 1e-13, "{s}");
+        }
+    }
+}
