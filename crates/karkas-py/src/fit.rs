@@ -3,7 +3,7 @@
 
 use std::sync::Arc;
 
-use karkas::fit::{self, FitOptions, HermiteSpline, DEFAULT_FAIRNESS};
+use karkas::fit::{self, FitOptions, HermiteSpline, DEFAULT_FAIRNESS, DEFAULT_SMOOTHING};
 use pyo3::prelude::*;
 
 use crate::convert::{as_points, by_dim, extract_vector, FlatPoints, Numbers, PointsArray};
@@ -155,9 +155,9 @@ fn fit_bytes(points: usize, knots: usize, dim: usize) -> u128 {
 /// >>> g.tolerance_met
 /// True
 #[pyfunction]
-#[pyo3(signature = (points, knots = None, tolerance = None, eps = None, pin_ends = false, corners = None, fairness = DEFAULT_FAIRNESS))]
+#[pyo3(signature = (points, knots = None, tolerance = None, eps = None, pin_ends = false, corners = None, fairness = DEFAULT_FAIRNESS, smoothing = DEFAULT_SMOOTHING))]
 #[pyo3(
-    text_signature = "(points, knots=None, tolerance=None, eps=None, pin_ends=False, corners=None, fairness=3e-11)"
+    text_signature = "(points, knots=None, tolerance=None, eps=None, pin_ends=False, corners=None, fairness=3e-11, smoothing=0.1)"
 )]
 #[allow(clippy::too_many_arguments)]
 pub fn fit_curve(
@@ -169,6 +169,7 @@ pub fn fit_curve(
     pin_ends: bool,
     corners: Option<&Bound<'_, PyAny>>,
     fairness: f64,
+    smoothing: f64,
 ) -> PyResult<Py<PyHermiteSpline>> {
     let (pts, dim) = PointsArray::extract_checked(points, "points")?;
     let knots: Option<Vec<f64>> = match knots {
@@ -205,6 +206,7 @@ pub fn fit_curve(
             .transpose()?
             .unwrap_or_default(),
         fairness,
+        smoothing,
         ..FitOptions::default()
     };
     if let Some(eps) = eps {

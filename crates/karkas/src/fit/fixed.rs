@@ -334,6 +334,7 @@ mod tests {
                 bending: 1e-6,
                 pins,
                 foot_points: false,
+                ordered: false,
             };
             let streamed = solve(&problem, &knots, &params, p, false);
             let factored = solve(&problem, &knots, &params, p, true);

@@ -49,9 +49,12 @@ mod adaptive;
 mod bspline;
 mod fixed;
 mod gradient;
+mod guards;
 mod hermite;
 mod knots;
 mod newton;
+mod noise;
+mod order;
 mod penalty;
 mod power;
 mod problem;
@@ -60,11 +63,14 @@ mod project_all;
 mod solver;
 
 pub use adaptive::{fit_curve_adaptive, AdaptiveFit};
+pub use guards::{FitWarning, FitWarningKind};
 pub use hermite::HermiteSpline;
 pub use knots::{
     check_knots, knots_from_list, start_parameters, uniform_knots, StartParameters,
     MIN_KNOT_SPACING,
 };
+pub use noise::{estimate_noise, NoiseEstimate};
 pub use penalty::{
     fit_curve, CurveFit, FitOptions, PenaltyRule, DEFAULT_FAIRNESS, DEFAULT_SETTLE_TOLERANCE,
+    DEFAULT_SMOOTHING,
 };

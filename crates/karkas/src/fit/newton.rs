@@ -422,6 +422,7 @@ impl<const D: usize> BlockKernel<'_, '_, D> {
         let knots = spline.knots();
         let n = self.problem.points.len();
         let (first_t, last_t) = (knots[0], knots[knots.len() - 1]);
+        let projection = self.problem.projection();
         let w4 = 4 * D;
         let mut v = [[0.0; D]; 4];
         for i in span {
@@ -443,7 +444,7 @@ impl<const D: usize> BlockKernel<'_, '_, D> {
                     sep[4 * a + b] += b0[a] * b0[b];
                 }
             }
-            let free = self.problem.foot_points && i > 0 && i + 1 < n && t > first_t && t < last_t;
+            let free = projection.is_free(i, n) && t > first_t && t < last_t;
             if !free {
                 continue;
             }

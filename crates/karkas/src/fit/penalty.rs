@@ -30,8 +30,10 @@
 //! Every `q_p` is found by [`Solver::minimize`], warm-started from the previous one.
 //! Cost: a few inner minimizations, each `O(n)` per iteration.
 
+use super::guards::FitWarning;
 use super::hermite::HermiteSpline;
 use super::knots::{check_knots, start_parameters, StartParameters};
+use super::noise::{estimate_noise, NoiseEstimate};
 use super::power::PowerForm;
 use super::problem::{Problem, State};
 use super::solver::{Penalty, Solver, Stop};
@@ -44,6 +46,8 @@ const POLISH_STEPS: usize = 8;
 
 /// The default of [`FitOptions::fairness`].
 pub const DEFAULT_FAIRNESS: f64 = 3e-11;
+/// The default of [`FitOptions::smoothing`].
+pub const DEFAULT_SMOOTHING: f64 = 0.1;
 /// The default of [`FitOptions::settle_tolerance`].
 pub const DEFAULT_SETTLE_TOLERANCE: f64 = 1e-2;
 
@@ -104,6 +108,18 @@ pub struct FitOptions {
     /// reparameterizations of the curve (points sliding along it), where the iteration would
     /// creep for many steps with the shape already settled.
     pub settle_tolerance: f64,
+    /// Keep the foot-point parameters in the order of the points (default `true`): a run of
+    /// points whose foot points come out of order shares one parameter (their weighted mean,
+    /// see docs/methods.md §4). Measured points follow the curve in their order, so their
+    /// parameters cannot decrease; without it a noisy cloud at a sharp end or between close
+    /// points lets the curve fold back to serve points out of order (a hook or a loop).
+    pub ordered: bool,
+    /// `s`: the bending weight grows with the noise estimated from the points,
+    /// `lambda = (fairness + s (sigma / L)^2) n tau` (see [`estimate_noise`]; default
+    /// [`DEFAULT_SMOOTHING`]; 0 for none). Noise makes the fit follow it with the freedom
+    /// of a defect-2 spline (two coefficients per knot); the term evens that out in
+    /// proportion to the noise, and vanishes on exact points.
+    pub smoothing: f64,
 }
 
 impl Default for FitOptions {
@@ -119,6 +135,8 @@ impl Default for FitOptions {
             fairness: DEFAULT_FAIRNESS,
             pin_ends: false,
             settle_tolerance: DEFAULT_SETTLE_TOLERANCE,
+            ordered: true,
+            smoothing: DEFAULT_SMOOTHING,
         }
     }
 }
@@ -148,6 +166,11 @@ pub struct CurveFit<const D: usize> {
     pub bending_energy: f64,
     /// Inner iterations done in all.
     pub iterations: usize,
+    /// The noise, size and turning of the points (see [`estimate_noise`]).
+    pub noise: NoiseEstimate,
+    /// What the distances do not show: crossings, excess turning, pieces with too few
+    /// points (see [`FitWarning`]).
+    pub warnings: Vec<FitWarning>,
 }
 
 impl<const D: usize> CurveFit<D> {
@@ -225,6 +248,13 @@ pub(crate) fn check_settings(options: &FitOptions) -> Result<()> {
             reason: "must be zero or positive and finite",
         });
     }
+    if !(options.smoothing >= 0.0 && options.smoothing.is_finite()) {
+        return Err(Error::InvalidSetting {
+            name: "smoothing",
+            value: options.smoothing,
+            reason: "must be zero or positive and finite",
+        });
+    }
     if !(options.settle_tolerance >= 0.0 && options.settle_tolerance < 1.0) {
         return Err(Error::InvalidSetting {
             name: "settle_tolerance",
@@ -278,14 +308,16 @@ pub(crate) fn fit_checked<const D: usize>(
     start: Vec<f64>,
     options: &FitOptions,
 ) -> Result<CurveFit<D>> {
+    let noise = estimate_noise(points);
     let problem = Problem {
         points,
         delta: weights,
-        bending: options.fairness * points.len() as f64,
+        bending: noise.bending_weight(points.len(), options.fairness, options.smoothing),
         pins: options
             .pin_ends
             .then(|| [points[0], points[points.len() - 1]]),
         foot_points: options.foot_points,
+        ordered: options.ordered,
     };
     let stop = Stop {
         max_iterations: options.max_iterations,
@@ -306,6 +338,8 @@ pub(crate) fn fit_checked<const D: usize>(
         seed_bound,
         weights: weights.to_vec(),
         iterations,
+        noise,
+        warnings: Vec::new(),
     };
     let f_of = |s: &State<D>| s.spline.jump_penalty(weights);
 
@@ -476,9 +510,10 @@ fn feasible_reference<const D: usize>(
         params: if fitted { state.params } else { start.to_vec() },
         dist_sq: vec![0.0; start.len()],
         piece: vec![0; start.len()],
+        order: Default::default(),
     };
     let mut form = PowerForm::new(&lifted.spline);
-    super::project_all::project(problem.points, problem.foot_points, &mut lifted, &mut form);
+    super::project_all::project(problem.points, problem.projection(), &mut lifted, &mut form);
     let value = lifted.data_term() + problem.bending * lifted.spline.bending_energy();
     (value, lifted)
 }

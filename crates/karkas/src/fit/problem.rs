@@ -3,6 +3,7 @@
 //! objective `F = H + p f + lambda S`.
 
 use super::hermite::HermiteSpline;
+use super::order::Block;
 use crate::Point;
 
 /// The data of one fit, shared by every minimization.
@@ -18,6 +19,36 @@ pub(crate) struct Problem<'a, const D: usize> {
     pub pins: Option<[Point<D>; 2]>,
     /// Project the points (foot-point distances) or keep their parameters.
     pub foot_points: bool,
+    /// Keep the foot-point parameters in the order of the points ([`super::order`]).
+    pub ordered: bool,
+}
+
+impl<const D: usize> Problem<'_, D> {
+    /// How the points get their parameters on a curve.
+    pub fn projection(&self) -> Projection {
+        Projection {
+            foot_points: self.foot_points,
+            ordered: self.foot_points && self.ordered,
+        }
+    }
+}
+
+/// How the points get their parameters on a curve.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct Projection {
+    /// Project the points (else every parameter is held).
+    pub foot_points: bool,
+    /// Make the foot-point parameters non-decreasing along the points ([`super::order`]).
+    pub ordered: bool,
+}
+
+impl Projection {
+    /// Whether point `i` of `n` is projected (else its parameter is held: the first and the
+    /// last point keep `t = 0` and `t = 1`).
+    #[inline]
+    pub fn is_free(&self, i: usize, n: usize) -> bool {
+        self.foot_points && i > 0 && i + 1 < n
+    }
 }
 
 /// A spline and the parameters, squared distances and pieces of the data points on it.
@@ -28,6 +59,17 @@ pub(crate) struct State<const D: usize> {
     pub dist_sq: Vec<f64>,
     /// The piece of every parameter (a hint kept up to date by the projection).
     pub piece: Vec<usize>,
+    /// Scratch space of the ordering of the parameters.
+    pub order: OrderScratch,
+}
+
+/// Scratch space of [`super::order::isotonic`]: a weight per point and the pooled runs.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct OrderScratch {
+    pub weights: Vec<f64>,
+    pub blocks: Vec<Block>,
+    /// The parameters before the ordering.
+    pub previous: Vec<f64>,
 }
 
 impl<const D: usize> State<D> {
@@ -42,6 +84,7 @@ impl<const D: usize> State<D> {
             ),
             dist_sq: vec![0.0; params.len()],
             piece: vec![0; params.len()],
+            order: OrderScratch::default(),
             params,
         }
     }

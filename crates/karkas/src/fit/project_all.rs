@@ -1,9 +1,12 @@
 //! Every data point projected onto the spline of a [`State`] from its previous foot point
 //! ([`foot_point_near`]), in parallel chunks, with the squared distances refreshed; the
-//! projection can be abandoned as soon as the distances exceed a budget.
+//! projection can be abandoned as soon as the distances exceed a budget. With
+//! [`Projection::Ordered`] the parameters are then made non-decreasing along the points
+//! ([`isotonic`]) and the distances of the points moved are refreshed.
 
+use super::order::isotonic;
 use super::power::PowerForm;
-use super::problem::State;
+use super::problem::{Projection, State};
 use super::project::foot_point_near;
 use crate::core::parallel::PARALLEL_THRESHOLD;
 use crate::Point;
@@ -11,15 +14,15 @@ use rayon::prelude::*;
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 
 /// Re-projects every inner point of `points` onto `state.spline` from its current parameter
-/// when `foot_points` (the ends keep theirs), and refreshes the squared distances; `form` is
-/// scratch space for the power form of the spline (same knots).
+/// unless the projection holds them (the ends keep theirs), and refreshes the squared
+/// distances; `form` is scratch space for the power form of the spline (same knots).
 pub(crate) fn project<const D: usize>(
     points: &[Point<D>],
-    foot_points: bool,
+    projection: Projection,
     state: &mut State<D>,
     form: &mut PowerForm<D>,
 ) {
-    project_within(points, foot_points, state, form, f64::INFINITY);
+    project_within(points, projection, state, form, f64::INFINITY);
 }
 
 /// A chunk of the projection: its index, and its parameters, squared distances and pieces.
@@ -39,7 +42,74 @@ const PROJECTION_CHUNK: usize = 1 << 12;
 /// chunk order, decides. So the result does not depend on the number of threads.
 pub(crate) fn project_within<const D: usize>(
     points: &[Point<D>],
-    foot_points: bool,
+    projection: Projection,
+    state: &mut State<D>,
+    form: &mut PowerForm<D>,
+    budget: f64,
+) -> bool {
+    let finished = project_each(points, projection, state, form, budget);
+    if !finished || !projection.ordered {
+        return finished;
+    }
+    order_parameters(points, projection, state, form) <= budget
+}
+
+/// Makes the parameters of `state` non-decreasing ([`isotonic`], weighted by the curvature of
+/// each point's squared distance at its foot point) and refreshes the distances of the points
+/// moved; returns the new sum of squared distances.
+fn order_parameters<const D: usize>(
+    points: &[Point<D>],
+    projection: Projection,
+    state: &mut State<D>,
+    form: &PowerForm<D>,
+) -> f64 {
+    let n = points.len();
+    if state.params.windows(2).all(|pair| pair[0] <= pair[1]) {
+        return state.data_term();
+    }
+    let weights = &mut state.order.weights;
+    weights.clear();
+    weights.extend(
+        state
+            .params
+            .iter()
+            .zip(&state.piece)
+            .zip(points)
+            .enumerate()
+            .map(|(i, ((&t, &piece), &r))| {
+                if !projection.is_free(i, n) {
+                    // Held parameters stay.
+                    return f64::MAX;
+                }
+                let [p, d1, d2] = form.jet(piece, t);
+                let speed_sq = d1.norm_sq();
+                (speed_sq + (p - r).dot(d2))
+                    .max(1e-3 * speed_sq)
+                    .max(f64::MIN_POSITIVE)
+            }),
+    );
+    let before = &mut state.order.previous;
+    before.clear();
+    before.extend_from_slice(&state.params);
+    isotonic(
+        &mut state.params,
+        &state.order.weights,
+        &mut state.order.blocks,
+    );
+    for (i, (t, old)) in state.params.iter().zip(&state.order.previous).enumerate() {
+        if t != old {
+            let piece = form.piece_near(*t, state.piece[i]);
+            state.piece[i] = piece;
+            state.dist_sq[i] = form.point(piece, *t).distance_sq(points[i]);
+        }
+    }
+    state.data_term()
+}
+
+/// [`project_within`] without the ordering.
+fn project_each<const D: usize>(
+    points: &[Point<D>],
+    projection: Projection,
     state: &mut State<D>,
     form: &mut PowerForm<D>,
     budget: f64,
@@ -57,7 +127,7 @@ pub(crate) fn project_within<const D: usize>(
         for (j, ((t, d), piece)) in params.iter_mut().zip(dist_sq).zip(piece).enumerate() {
             let i = first + j;
             let r = points[i];
-            if foot_points && i > 0 && i + 1 < n {
+            if projection.is_free(i, n) {
                 (*t, *d) = foot_point_near(form, r, *t, piece);
             } else {
                 *piece = form.piece_near(*t, *piece);

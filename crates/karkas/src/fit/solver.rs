@@ -128,6 +128,7 @@ impl<'a, const D: usize> Solver<'a, D> {
                 params: vec![0.0; n],
                 dist_sq: vec![0.0; n],
                 piece: vec![0; n],
+                order: Default::default(),
             },
         }
     }
@@ -158,7 +159,7 @@ impl<'a, const D: usize> Solver<'a, D> {
     pub fn project(&mut self, state: &mut State<D>) {
         project(
             self.problem.points,
-            self.problem.foot_points,
+            self.problem.projection(),
             state,
             &mut self.power,
         );
@@ -182,7 +183,7 @@ impl<'a, const D: usize> Solver<'a, D> {
         let penalties = penalties(&self.problem, &self.trial.spline, p);
         let finished = project_within(
             self.problem.points,
-            self.problem.foot_points,
+            self.problem.projection(),
             &mut self.trial,
             &mut self.power,
             budget - penalties,
@@ -215,7 +216,7 @@ impl<'a, const D: usize> Solver<'a, D> {
         }
         project(
             self.problem.points,
-            self.problem.foot_points,
+            self.problem.projection(),
             trial,
             &mut self.power,
         );

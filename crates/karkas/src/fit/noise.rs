@@ -1,0 +1,246 @@
+//! The noise of measured points and the dimensionless weight of the bending term
+//! (docs/methods.md §4, "noise-aware smoothing").
+//!
+//! The noise is estimated from the points alone, before any fit: every inner point `r_i` is
+//! compared with the chord of its neighbours, `e_i = r_i - (r_{i-1} + u (r_{i+1} - r_{i-1}))`
+//! (`u` the projection of `r_i` on the chord). For independent noise of `sigma` per
+//! coordinate the part of `e_i` across the chord has deviation `sigma sqrt(1 + u^2 +
+//! (1 - u)^2)`; the median of `|e_i|` over that factor, divided by the median of a half-normal
+//! (2-D) or a Rayleigh variable (3-D), estimates `sigma`. The median ignores the few points
+//! where the chord cuts a bend (`|e_i|` about `h^2 kappa / 8` there) and the corners.
+//!
+//! The bending term `lambda int |R''(t)|^2 dt` is weighted
+//! `lambda = (rho + s (sigma / L)^2) n tau`, with `n` the number of points, `L` the diagonal
+//! of the points' bounding box, `rho` the fairness floor ([`super::FitOptions::fairness`]),
+//! `s` the smoothing ([`super::FitOptions::smoothing`]) and `tau = (2 pi / max(Theta,
+//! 2 pi))^4`, where `Theta` is the total turning of the point polygon (taken through at most
+//! 64 of the points, so that the noise does not count): the pull of the term on the shape is
+//! about `lambda / n |R''''(t)|`, which grows as the fourth power of the turning, so `tau`
+//! keeps it the same share of the size on a curve that winds three times as on one that
+//! turns once. All three factors are invariant under scaling of the coordinates.
+
+use crate::Point;
+use std::f64::consts::PI;
+
+/// Polygon vertices the turning is measured through, at most.
+const TURNING_VERTICES: usize = 64;
+
+/// What the points say about themselves before a fit.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct NoiseEstimate {
+    /// The estimated standard deviation of the noise per coordinate (0 for fewer than 3
+    /// points or exact points on straight lines).
+    pub sigma: f64,
+    /// The diagonal of the points' bounding box.
+    pub size: f64,
+    /// The total turning of the point polygon through at most 64 of its points, in radians.
+    pub turning: f64,
+}
+
+impl NoiseEstimate {
+    /// `tau = (2 pi / max(turning, 2 pi))^4`, the share of the bending weight kept on a
+    /// curve that winds more than once.
+    pub fn turning_factor(&self) -> f64 {
+        (2.0 * PI / self.turning.max(2.0 * PI)).powi(4)
+    }
+
+    /// `lambda` for `n` points with the fairness floor `rho` and the smoothing `s`.
+    pub fn bending_weight(&self, n: usize, rho: f64, s: f64) -> f64 {
+        let relative = if self.size > 0.0 {
+            self.sigma / self.size
+        } else {
+            0.0
+        };
+        (rho + s * relative * relative) * n as f64 * self.turning_factor()
+    }
+}
+
+/// Estimates the noise, size and turning of `points` (see the module documentation).
+pub fn estimate_noise<const D: usize>(points: &[Point<D>]) -> NoiseEstimate {
+    let mut lo = [f64::INFINITY; D];
+    let mut hi = [f64::NEG_INFINITY; D];
+    for p in points {
+        for c in 0..D {
+            lo[c] = lo[c].min(p[c]);
+            hi[c] = hi[c].max(p[c]);
+        }
+    }
+    // The diagonal, scaled by its largest side so that it neither overflows nor underflows.
+    let sides: [f64; D] = std::array::from_fn(|c| (hi[c] - lo[c]).max(0.0));
+    let largest = sides.iter().fold(0.0f64, |m, &s| m.max(s));
+    let size = if largest > 0.0 && largest.is_finite() {
+        largest
+            * sides
+                .iter()
+                .map(|s| (s / largest).powi(2))
+                .sum::<f64>()
+                .sqrt()
+    } else {
+        0.0
+    };
+    NoiseEstimate {
+        sigma: noise_sigma(points, largest),
+        size,
+        turning: turning(points),
+    }
+}
+
+/// The median-based estimate of the noise, working in coordinates divided by `scale`.
+fn noise_sigma<const D: usize>(points: &[Point<D>], scale: f64) -> f64 {
+    if points.len() < 3 || !(scale > 0.0 && scale.is_finite()) {
+        return 0.0;
+    }
+    let mut residuals: Vec<f64> = points
+        .windows(3)
+        .filter_map(|w| {
+            let (a, b, c) = (
+                w[0] * (1.0 / scale),
+                w[1] * (1.0 / scale),
+                w[2] * (1.0 / scale),
+            );
+            let chord = c - a;
+            let length_sq = chord.norm_sq();
+            if length_sq == 0.0 {
+                return None;
+            }
+            let u = ((b - a).dot(chord) / length_sq).clamp(0.0, 1.0);
+            let e = b - a.add_scaled(u, chord);
+            let spread = (1.0 + u * u + (1.0 - u) * (1.0 - u)).sqrt();
+            Some(e.norm() / spread)
+        })
+        .collect();
+    if residuals.is_empty() {
+        return 0.0;
+    }
+    let middle = residuals.len() / 2;
+    let (_, median, _) = residuals.select_nth_unstable_by(middle, f64::total_cmp);
+    // The median of |N(0, 1)| in 2-D (one component across the chord), of a Rayleigh
+    // variable of unit scale in 3-D (two).
+    let unit_median = if D <= 2 {
+        0.674_489_750_196_081_7
+    } else {
+        1.177_410_022_515_474_7
+    };
+    *median / unit_median * scale
+}
+
+/// The total turning of the polygon through at most [`TURNING_VERTICES`] points spread
+/// evenly by index.
+fn turning<const D: usize>(points: &[Point<D>]) -> f64 {
+    let n = points.len();
+    if n < 3 {
+        return 0.0;
+    }
+    let step = n.div_ceil(TURNING_VERTICES).max(1);
+    let mut vertices: Vec<Point<D>> = points.iter().step_by(step).copied().collect();
+    if (n - 1) % step != 0 {
+        vertices.push(points[n - 1]);
+    }
+    let edges: Vec<Point<D>> = vertices
+        .windows(2)
+        .map(|w| w[1] - w[0])
+        .filter(|e| e.norm_sq() > 0.0)
+        .collect();
+    edges
+        .windows(2)
+        .map(|w| {
+            let (a, b) = (w[0] * (1.0 / w[0].norm()), w[1] * (1.0 / w[1].norm()));
+            // The angle between unit vectors, accurate near 0 and pi.
+            2.0 * (a - b).norm().atan2((a + b).norm())
+        })
+        .sum()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Point2;
+
+    /// A deterministic Gaussian sequence (Box–Muller on a linear congruential generator).
+    fn gaussian(seed: u64, count: usize) -> Vec<f64> {
+        let mut state = seed;
+        let mut uniform = || {
+            state = state
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1_442_695_040_888_963_407);
+            ((state >> 11) as f64 + 0.5) / (1u64 << 53) as f64
+        };
+        (0..count)
+            .map(|_| {
+                let (u, v) = (uniform(), uniform());
+                (-2.0 * u.ln()).sqrt() * (2.0 * PI * v).cos()
+            })
+            .collect()
+    }
+
+    fn circle(n: usize, sigma: f64, scale: f64) -> Vec<Point2> {
+        let noise = gaussian(7, 2 * n);
+        (0..n)
+            .map(|i| {
+                let a = 2.0 * PI * i as f64 / n as f64;
+                Point2::new([
+                    scale * (a.cos() + sigma * noise[2 * i]),
+                    scale * (a.sin() + sigma * noise[2 * i + 1]),
+                ])
+            })
+            .collect()
+    }
+
+    #[test]
+    fn the_noise_of_a_circle_is_found_within_ten_percent() {
+        for sigma in [1e-4, 1e-3, 1e-2] {
+            let estimate = estimate_noise(&circle(4000, sigma, 1.0));
+            assert!(
+                (estimate.sigma / sigma - 1.0).abs() < 0.1,
+                "sigma {sigma}: {estimate:?}"
+            );
+        }
+    }
+
+    #[test]
+    fn exact_points_have_almost_no_noise() {
+        // 4000 points on a unit circle: the chords cut the bend by h^2 / 8 = 3e-7.
+        let estimate = estimate_noise(&circle(4000, 0.0, 1.0));
+        assert!(estimate.sigma < 1e-6, "{estimate:?}");
+    }
+
+    #[test]
+    fn the_estimate_scales_with_the_points() {
+        let unit = estimate_noise(&circle(500, 1e-3, 1.0));
+        for scale in [1e-150, 1e-3, 1e3, 1e150] {
+            let scaled = estimate_noise(&circle(500, 1e-3, scale));
+            assert!(
+                (scaled.sigma / (scale * unit.sigma) - 1.0).abs() < 1e-9,
+                "{scale}"
+            );
+            assert!(
+                (scaled.size / (scale * unit.size) - 1.0).abs() < 1e-12,
+                "{scale}"
+            );
+            assert!((scaled.turning - unit.turning).abs() < 1e-9, "{scale}");
+            let (n, rho, s) = (500, 3e-11, 1.0);
+            let ratio = scaled.bending_weight(n, rho, s) / unit.bending_weight(n, rho, s);
+            assert!((ratio - 1.0).abs() < 1e-8, "{scale}: {ratio}");
+        }
+    }
+
+    #[test]
+    fn the_turning_counts_windings() {
+        let spiral: Vec<Point2> = (0..100_000)
+            .map(|i| {
+                let s = i as f64 / 99_999.0;
+                let a = 6.0 * PI * s;
+                Point2::new([(1.0 + s) * a.cos(), (1.0 + s) * a.sin()])
+            })
+            .collect();
+        let estimate = estimate_noise(&spiral);
+        assert!((estimate.turning - 6.0 * PI).abs() < 0.2, "{estimate:?}");
+        assert!((estimate.turning_factor() - 1.0 / 81.0).abs() < 1e-3);
+        let line: Vec<Point2> = (0..50).map(|i| Point2::new([i as f64, 0.0])).collect();
+        let flat = estimate_noise(&line);
+        assert_eq!(
+            (flat.sigma, flat.turning, flat.turning_factor()),
+            (0.0, 0.0, 1.0)
+        );
+    }
+}
