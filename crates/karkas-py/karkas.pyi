@@ -235,6 +235,10 @@ class HermiteSpline(Curve):
     def parameters(self) -> _Floats: ...
     @property
     def distances(self) -> _Floats: ...
+    @property
+    def noise(self) -> float: ...
+    @property
+    def warnings(self) -> list[str]: ...
 
 def fit_curve(
     points: ArrayLike,
@@ -244,6 +248,7 @@ def fit_curve(
     pin_ends: bool = False,
     corners: Optional[Sequence[float]] = None,
     fairness: float = 3e-11,
+    smoothing: float = 0.1,
 ) -> HermiteSpline:
     """Fits points (n, d) with a C^1 cubic Hermite spline; give knots (count or array) or
     tolerance. The options and defaults are those of karkas curve fit."""

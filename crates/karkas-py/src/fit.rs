@@ -83,6 +83,13 @@ pub struct PyHermiteSpline {
     /// The distance of every fitted point from the curve, (n,).
     #[pyo3(get)]
     distances: Numbers,
+    /// The noise estimated from the points, per coordinate (NaN when not a fit).
+    #[pyo3(get)]
+    noise: f64,
+    /// What the distances do not show (crossings, excess turning, sparse pieces, a tolerance
+    /// not met), one sentence each; empty when there is nothing to say.
+    #[pyo3(get)]
+    warnings: Vec<String>,
 }
 
 /// What a fit is asked for.
@@ -103,7 +110,7 @@ fn fit_bytes(points: usize, knots: usize, dim: usize) -> u128 {
     bytes_of(&[knots], per_knot).saturating_add(bytes_of(&[points], per_point))
 }
 
-/// Fits measured points with a C^1 cubic Hermite spline on [0, 1] (Kuznetsov, Filatov).
+/// Fits measured points with a C^1 cubic Hermite spline on [0, 1] (Pavlov).
 ///
 /// Minimizes the sum of squared foot-point distances, the sum of squared second-derivative
 /// jumps at the knots bounded by ``eps``. Give ``knots`` or ``tolerance``.
@@ -127,12 +134,17 @@ fn fit_bytes(points: usize, knots: usize, dim: usize) -> u128 {
 /// fairness : float, optional
 ///     The weight rho of the bending energy that keeps the parameterization even (default
 ///     3e-11, as ``karkas curve fit --fairness``).
+/// smoothing : float, optional
+///     The share s of the noise in the bending weight, ``lambda = (fairness + s (sigma /
+///     L)^2) n tau`` with sigma the noise estimated from the points (the result's ``noise``),
+///     L the size of the points and tau a factor for curves that wind (default 0.1, as
+///     ``karkas curve fit --smoothing``; 0 for none).
 ///
 /// Returns
 /// -------
 /// HermiteSpline
-///     The fitted curve, with ``max_distance``, ``rms_distance``, ``parameters`` and
-///     ``distances`` of the fit.
+///     The fitted curve, with ``max_distance``, ``rms_distance``, ``parameters``,
+///     ``distances``, ``noise`` and ``warnings`` of the fit.
 ///
 /// Raises
 /// ------
@@ -244,6 +256,8 @@ pub fn fit_curve(
             tolerance_met: met,
             parameters: Numbers(result.parameters.clone()),
             distances: Numbers(result.distances.clone()),
+            noise: result.noise.sigma,
+            warnings: result.warnings.iter().map(|w| w.message.clone()).collect(),
         };
         (Arc::new(Wrapped::<_, D>(spline)) as Arc<dyn CurveImpl>, sub)
     });
@@ -311,6 +325,8 @@ impl PyHermiteSpline {
             tolerance_met: stats.tolerance_met,
             parameters: Numbers(stats.parameters),
             distances: Numbers(stats.distances),
+            noise: stats.noise,
+            warnings: stats.warnings,
         };
         Ok(sub.with_base(inner, dim))
     }
@@ -324,6 +340,8 @@ impl PyHermiteSpline {
             tolerance_met: self.tolerance_met,
             parameters: self.parameters.0.clone(),
             distances: self.distances.0.clone(),
+            noise: self.noise,
+            warnings: self.warnings.clone(),
         }
     }
 
@@ -347,6 +365,10 @@ pub struct FitStats {
     pub parameters: Vec<f64>,
     /// The distances of the fitted points.
     pub distances: Vec<f64>,
+    /// The noise estimated from the points.
+    pub noise: f64,
+    /// The warnings of the fit.
+    pub warnings: Vec<String>,
 }
 
 impl FitStats {
@@ -359,6 +381,8 @@ impl FitStats {
             tolerance_met: None,
             parameters: Vec::new(),
             distances: Vec::new(),
+            noise: f64::NAN,
+            warnings: Vec::new(),
         }
     }
 }

@@ -174,6 +174,8 @@ impl PyHermiteSpline {
             s.tolerance_met,
             vector_to_array(py, &s.parameters)?,
             vector_to_array(py, &s.distances)?,
+            s.noise,
+            s.warnings,
         );
         reduce(py, "HermiteSpline._from_fit", args.into_pyobject(py)?, None)
     }
@@ -192,6 +194,8 @@ impl PyHermiteSpline {
         tolerance_met: Option<bool>,
         parameters: Vec<f64>,
         distances: Vec<f64>,
+        noise: f64,
+        warnings: Vec<String>,
     ) -> PyResult<Py<Self>> {
         let stats = crate::fit::FitStats {
             max_distance,
@@ -200,6 +204,8 @@ impl PyHermiteSpline {
             tolerance_met,
             parameters,
             distances,
+            noise,
+            warnings,
         };
         Py::new(py, Self::build(py, knots, values, derivatives, stats)?)
     }

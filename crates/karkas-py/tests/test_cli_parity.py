@@ -102,6 +102,7 @@ def grid_file(tmp_path):
         (("surface", "dps-tube"), "r2", karkas.TubeSurface, "r2"),
         (("surface", "bicubic"), "param", karkas.BicubicSurface, "parameterization"),
         (("curve", "fit"), "fairness", karkas.fit_curve, "fairness"),
+        (("curve", "fit"), "smoothing", karkas.fit_curve, "smoothing"),
     ],
 )
 def test_defaults_are_the_same(command, option, python, keyword):

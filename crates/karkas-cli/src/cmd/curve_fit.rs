@@ -1,6 +1,7 @@
 //! `karkas curve fit`: a C^1 cubic Hermite spline fitted to measured points with bounded
 //! second-derivative jumps (Pavlov, docs/methods.md §4).
 
+use super::fit_summary::FitSummary;
 use crate::args::{CombOption, CurveSamples};
 use crate::input::{run_on_curve_points, CurveJob};
 use crate::output::cad::write_cad_curve;
@@ -15,6 +16,7 @@ use anyhow::{bail, Context, Result};
 use clap::Args;
 use karkas::fit::{
     fit_curve, fit_curve_adaptive, knots_from_list, CurveFit, FitOptions, DEFAULT_FAIRNESS,
+    DEFAULT_SMOOTHING,
 };
 use karkas::{Curve, Point, Point2};
 use karkas_io::write::write_atomic;
@@ -56,6 +58,16 @@ pub struct CurveFitArgs {
     /// for n points; 0 for none).
     #[arg(long, value_name = "RHO", default_value_t = DEFAULT_FAIRNESS)]
     fairness: f64,
+    /// Smoothing s: the bending weight grows with the noise estimated from the points,
+    /// lambda = (rho + s (sigma / L)^2) n tau (sigma the noise, L the size of the points;
+    /// 0 for none).
+    #[arg(long, value_name = "S", default_value_t = DEFAULT_SMOOTHING)]
+    smoothing: f64,
+    /// Also print the summary as one JSON object on standard output (keys input, points,
+    /// knots, max_deviation, rms_deviation, f, p, noise, bending_weight, tolerance,
+    /// tolerance_met, warnings, seconds).
+    #[arg(long)]
+    json: bool,
     #[command(flatten)]
     samples: CurveSamples,
     /// Pin the ends of the curve to the first and last points (e.g. a profile closed at a
@@ -100,6 +112,9 @@ pub fn run(args: &CurveFitArgs) -> Result<()> {
     if !(args.fairness.is_finite() && args.fairness >= 0.0) {
         bail!("--fairness: must be a number >= 0, got {}", args.fairness);
     }
+    if !(args.smoothing.is_finite() && args.smoothing >= 0.0) {
+        bail!("--smoothing: must be a number >= 0, got {}", args.smoothing);
+    }
     if let Some(tol) = args.tolerance {
         if !(tol.is_finite() && tol > 0.0) {
             bail!("--tolerance: must be a positive number, got {tol}");
@@ -132,6 +147,7 @@ impl CurveJob for (&CurveFitArgs, OutputFormat, Option<Vec<f64>>) {
             corners: args.corners.clone(),
             pin_ends: args.pin_ends,
             fairness: args.fairness,
+            smoothing: args.smoothing,
             ..Default::default()
         };
         let input = || args.input.display().to_string();
@@ -152,6 +168,7 @@ impl CurveJob for (&CurveFitArgs, OutputFormat, Option<Vec<f64>>) {
             (None, None) => bail!("give --knots or --tolerance"),
         };
         let fit_time = started.elapsed();
+        let summary = FitSummary::new(input(), &fit, args.tolerance, fit_time);
         let n = args
             .samples
             .or_else(|| default_curve_samples(2 * fit.spline.pieces()));
@@ -170,37 +187,54 @@ impl CurveJob for (&CurveFitArgs, OutputFormat, Option<Vec<f64>>) {
             })?;
         }
         if format.is_cad() {
-            return write_cad_curve(&fit.spline, format, &args.output, args.input.display());
+            write_cad_curve(&fit.spline, format, &args.output, args.input.display())?;
+        } else {
+            write_fit_picture_or_samples(args, format, points, &fit, (&ts, &samples))?;
         }
-        let whiskers: Vec<[Point2; 2]> = fit
-            .parameters
-            .iter()
-            .zip(points)
-            .map(|(&t, p)| {
-                let f = fit.spline.eval(t);
-                [Point2::new([p[0], p[1]]), Point2::new([f[0], f[1]])]
-            })
-            .collect();
-        let comb = args.comb.teeth(&fit.spline, &ts);
-        let title = format!(
-            "defect-2 cubic spline fit, {} knots, {} points, max deviation {:.3e}",
-            fit.spline.knots().len(),
-            points.len(),
-            fit.max_distance()
-        );
-        let (output, overlay) = (&args.output, (&comb[..], &whiskers[..]));
-        let samples = (&ts[..], &samples[..]);
-        write_sampled_curve(output, format, &title, samples, points, false, overlay)?;
+        let what = if format.is_cad() {
+            "the exact B-spline".to_string()
+        } else {
+            format!("{n} samples")
+        };
         eprintln!(
-            "karkas: wrote {} ({n} samples); {} knots, max deviation {:.6e}, rms {:.6e}, f = {:.6e}, p = {:.6e}, fitted in {:.1} ms",
+            "karkas: wrote {} ({what}); {}",
             shown(&args.output).display(),
-            fit.spline.knots().len(),
-            fit.max_distance(),
-            fit.rms_distance(),
-            fit.jump_sum,
-            fit.penalty,
-            fit_time.as_secs_f64() * 1e3
+            summary.line()
         );
+        if args.json {
+            println!("{}", serde_json::to_string(&summary)?);
+        }
         Ok(())
     }
+}
+
+/// Writes the samples of a fit as CSV, a picture or a page (with the points, the deviation
+/// whiskers and the comb).
+fn write_fit_picture_or_samples<const D: usize>(
+    args: &CurveFitArgs,
+    format: OutputFormat,
+    points: &[Point<D>],
+    fit: &CurveFit<D>,
+    (ts, samples): (&[f64], &[Point<D>]),
+) -> Result<()> {
+    let whiskers: Vec<[Point2; 2]> = fit
+        .parameters
+        .iter()
+        .zip(points)
+        .map(|(&t, p)| {
+            let f = fit.spline.eval(t);
+            [Point2::new([p[0], p[1]]), Point2::new([f[0], f[1]])]
+        })
+        .collect();
+    let comb = args.comb.teeth(&fit.spline, ts);
+    let title = format!(
+        "defect-2 cubic spline fit, {} knots, {} points, max deviation {:.3e}",
+        fit.spline.knots().len(),
+        points.len(),
+        fit.max_distance()
+    );
+    let (output, overlay) = (&args.output, (&comb[..], &whiskers[..]));
+    let samples = (ts, samples);
+    write_sampled_curve(output, format, &title, samples, points, false, overlay)?;
+    Ok(())
 }

@@ -4,6 +4,7 @@ pub mod convert;
 mod curve_dps;
 mod curve_fit;
 mod curve_ll;
+mod fit_summary;
 pub mod hausdorff;
 pub mod section;
 mod surface_bicubic;
