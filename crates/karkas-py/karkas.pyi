@@ -248,7 +248,7 @@ def fit_curve(
     pin_ends: bool = False,
     corners: Optional[Sequence[float]] = None,
     fairness: float = 3e-11,
-    smoothing: float = 0.1,
+    smoothing: float = 0.3,
 ) -> HermiteSpline:
     """Fits points (n, d) with a C^1 cubic Hermite spline; give knots (count or array) or
     tolerance. The options and defaults are those of karkas curve fit."""

@@ -137,7 +137,7 @@ fn fit_bytes(points: usize, knots: usize, dim: usize) -> u128 {
 /// smoothing : float, optional
 ///     The share s of the noise in the bending weight, ``lambda = (fairness + s (sigma /
 ///     L)^2) n tau`` with sigma the noise estimated from the points (the result's ``noise``),
-///     L the size of the points and tau a factor for curves that wind (default 0.1, as
+///     L the size of the points and tau a factor for curves that wind (default 0.3, as
 ///     ``karkas curve fit --smoothing``; 0 for none).
 ///
 /// Returns
@@ -169,7 +169,7 @@ fn fit_bytes(points: usize, knots: usize, dim: usize) -> u128 {
 #[pyfunction]
 #[pyo3(signature = (points, knots = None, tolerance = None, eps = None, pin_ends = false, corners = None, fairness = DEFAULT_FAIRNESS, smoothing = DEFAULT_SMOOTHING))]
 #[pyo3(
-    text_signature = "(points, knots=None, tolerance=None, eps=None, pin_ends=False, corners=None, fairness=3e-11, smoothing=0.1)"
+    text_signature = "(points, knots=None, tolerance=None, eps=None, pin_ends=False, corners=None, fairness=3e-11, smoothing=0.3)"
 )]
 #[allow(clippy::too_many_arguments)]
 pub fn fit_curve(

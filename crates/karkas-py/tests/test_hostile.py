@@ -203,7 +203,7 @@ VALID = {
     "fit_curve": lambda o: (
         karkas.fit_curve,
         (o.pts3,),
-        {"knots": 5, "tolerance": None, "eps": None, "pin_ends": False, "corners": None, "fairness": 3e-11, "smoothing": 0.1},
+        {"knots": 5, "tolerance": None, "eps": None, "pin_ends": False, "corners": None, "fairness": 3e-11, "smoothing": 0.3},
     ),
     "curve_parameters": lambda o: (karkas.curve_parameters, (o.pts3,), {"parameterization": "chord"}),
     # Surfaces.

@@ -5,6 +5,7 @@
 //! (the paper's starting point), optionally uniform or centripetal (square roots of the
 //! chords), which the multi-start check uses.
 
+use super::noise::estimate_noise;
 use crate::core::knots;
 use crate::{Error, Point, Result};
 
@@ -119,7 +120,35 @@ pub enum StartParameters {
     Given(Vec<f64>),
 }
 
-/// The starting parameters of `points` by `rule` (`t_1 = 0`, `t_n = 1`).
+/// Chords measured over a stride of points at least this many times the noise.
+const CHORD_OVER_NOISE: f64 = 10.0;
+
+/// The stride of points over which chords are measured for starting parameters: 1 for
+/// points whose spacing exceeds their noise; on dense noisy points, where the chord between
+/// neighbours is mostly noise (and chord length grows with the noise, not the curve), the
+/// smallest power of two whose mean chord is at least [`CHORD_OVER_NOISE`] times the noise
+/// estimated from the points ([`estimate_noise`]), at most `n / 16`.
+fn noise_stride<const D: usize>(points: &[Point<D>]) -> usize {
+    let n = points.len();
+    let sigma = estimate_noise(points).sigma;
+    let mut stride = 1;
+    while sigma > 0.0 && 2 * stride <= n / 16 {
+        let step = ((n - stride) / 4096).max(1);
+        let (sum, count) = (0..n - stride)
+            .step_by(step)
+            .fold((0.0, 0usize), |(s, c), i| {
+                (s + points[i].distance(points[i + stride]), c + 1)
+            });
+        if sum / count.max(1) as f64 >= CHORD_OVER_NOISE * sigma {
+            break;
+        }
+        stride *= 2;
+    }
+    stride
+}
+
+/// The starting parameters of `points` by `rule` (`t_1 = 0`, `t_n = 1`): chord rules measure
+/// the chords over a stride of points on dense noisy points (see [`noise_stride`]).
 ///
 /// Errors: points that all coincide (for the chord rules); given parameters of the wrong
 /// count, not nondecreasing, or not from 0 to 1 ([`Error::InvalidSetting`]).
@@ -128,13 +157,21 @@ pub fn start_parameters<const D: usize>(
     rule: &StartParameters,
 ) -> Result<Vec<f64>> {
     let n = points.len();
+    let stride = noise_stride(points);
     let chords = |power: f64| -> Result<Vec<f64>> {
-        let mut acc = Vec::with_capacity(n);
+        // Cumulative chords through every `stride`-th point (and the last), in proportion to
+        // the index between them.
+        let mut acc = vec![0.0; n];
         let mut total = 0.0;
-        acc.push(0.0);
-        for w in points.windows(2) {
-            total += w[0].distance(w[1]).powf(power);
-            acc.push(total);
+        let mut from = 0;
+        while from + 1 < n {
+            let to = (from + stride).min(n - 1);
+            let chord = points[from].distance(points[to]).powf(power);
+            for (j, a) in acc[from + 1..=to].iter_mut().enumerate() {
+                *a = total + chord * (j + 1) as f64 / (to - from) as f64;
+            }
+            total += chord;
+            from = to;
         }
         if !(total.is_finite() && total > 0.0) {
             return Err(Error::TooFewPoints {

@@ -10,8 +10,10 @@
 //! where the chord cuts a bend (`|e_i|` about `h^2 kappa / 8` there) and the corners.
 //!
 //! The bending term `lambda int |R''(t)|^2 dt` is weighted
-//! `lambda = (rho + s (sigma / L)^2) n tau`, with `n` the number of points, `L` the diagonal
-//! of the points' bounding box, `rho` the fairness floor ([`super::FitOptions::fairness`]),
+//! `lambda = (rho phi + s psi (sigma / L)^2) n tau`, with `n` the number of points, `L` the
+//! diagonal of the points' bounding box, `rho` the fairness floor
+//! ([`super::FitOptions::fairness`]), `phi = min(1, (8 / m)^2)` and `psi = min(1, 64 / m)` the
+//! shares kept when the pieces hold many points (`m = n / pieces` per piece),
 //! `s` the smoothing ([`super::FitOptions::smoothing`]) and `tau = (2 pi / max(Theta,
 //! 2 pi))^4`, where `Theta` is the total turning of the point polygon (taken through at most
 //! 64 of the points, so that the noise does not count): the pull of the term on the shape is
@@ -44,16 +46,31 @@ impl NoiseEstimate {
         (2.0 * PI / self.turning.max(2.0 * PI)).powi(4)
     }
 
-    /// `lambda` for `n` points with the fairness floor `rho` and the smoothing `s`.
-    pub fn bending_weight(&self, n: usize, rho: f64, s: f64) -> f64 {
+    /// `lambda` for `n` points on `pieces` pieces with the fairness floor `rho` and the
+    /// smoothing `s` (see the module documentation).
+    pub fn bending_weight(&self, n: usize, pieces: usize, rho: f64, s: f64) -> f64 {
         let relative = if self.size > 0.0 {
             self.sigma / self.size
         } else {
             0.0
         };
-        (rho + s * relative * relative) * n as f64 * self.turning_factor()
+        let per_piece = n as f64 / pieces.max(1) as f64;
+        let floor = rho * (SPARSE_POINTS_PER_PIECE / per_piece).min(1.0).powi(2);
+        let noise = s * (NOISY_POINTS_PER_PIECE / per_piece).min(1.0) * relative * relative;
+        (floor + noise) * n as f64 * self.turning_factor()
     }
 }
+
+/// Points per piece up to which the fairness floor is kept whole: beyond, its share is
+/// `(8 / (n / pieces))^2`. The floor keeps sparse points from sliding along the curve (a
+/// piece with a handful of points can fold between them); with many points per piece the
+/// points pin the parameterization themselves, and the floor would only pull the ends, which
+/// a single point holds, inwards (by about `lambda |R''|` there, growing with `n`).
+const SPARSE_POINTS_PER_PIECE: f64 = 8.0;
+/// Points per piece up to which the noise term is kept whole: beyond, its share is
+/// `64 / (n / pieces)`. The noise left in a piece's coefficients falls as the square root of
+/// its points, so dense pieces need less smoothing, and would only pay its bias.
+const NOISY_POINTS_PER_PIECE: f64 = 64.0;
 
 /// Estimates the noise, size and turning of `points` (see the module documentation).
 pub fn estimate_noise<const D: usize>(points: &[Point<D>]) -> NoiseEstimate {
@@ -133,7 +150,7 @@ fn turning<const D: usize>(points: &[Point<D>]) -> f64 {
     }
     let step = n.div_ceil(TURNING_VERTICES).max(1);
     let mut vertices: Vec<Point<D>> = points.iter().step_by(step).copied().collect();
-    if (n - 1) % step != 0 {
+    if !(n - 1).is_multiple_of(step) {
         vertices.push(points[n - 1]);
     }
     let edges: Vec<Point<D>> = vertices
@@ -219,7 +236,7 @@ mod tests {
             );
             assert!((scaled.turning - unit.turning).abs() < 1e-9, "{scale}");
             let (n, rho, s) = (500, 3e-11, 1.0);
-            let ratio = scaled.bending_weight(n, rho, s) / unit.bending_weight(n, rho, s);
+            let ratio = scaled.bending_weight(n, 20, rho, s) / unit.bending_weight(n, 20, rho, s);
             assert!((ratio - 1.0).abs() < 1e-8, "{scale}: {ratio}");
         }
     }

@@ -46,8 +46,11 @@ const POLISH_STEPS: usize = 8;
 
 /// The default of [`FitOptions::fairness`].
 pub const DEFAULT_FAIRNESS: f64 = 3e-11;
+/// The inner minimization may stop once an undamped step moves no point's distance by more
+/// than this share of the size of the points (see [`FitOptions::settle_tolerance`]).
+const SETTLED_SHARE_OF_SIZE: f64 = 1e-7;
 /// The default of [`FitOptions::smoothing`].
-pub const DEFAULT_SMOOTHING: f64 = 0.1;
+pub const DEFAULT_SMOOTHING: f64 = 0.3;
 /// The default of [`FitOptions::settle_tolerance`].
 pub const DEFAULT_SETTLE_TOLERANCE: f64 = 1e-2;
 
@@ -312,7 +315,12 @@ pub(crate) fn fit_checked<const D: usize>(
     let problem = Problem {
         points,
         delta: weights,
-        bending: noise.bending_weight(points.len(), options.fairness, options.smoothing),
+        bending: noise.bending_weight(
+            points.len(),
+            knots.len() - 1,
+            options.fairness,
+            options.smoothing,
+        ),
         pins: options
             .pin_ends
             .then(|| [points[0], points[points.len() - 1]]),
@@ -322,6 +330,7 @@ pub(crate) fn fit_checked<const D: usize>(
     let stop = Stop {
         max_iterations: options.max_iterations,
         tolerance: options.settle_tolerance,
+        floor: SETTLED_SHARE_OF_SIZE * noise.size,
     };
     let mut state = State::<D>::blank(knots, start.clone());
     let mut solver = Solver::new(problem, &state.spline);

@@ -89,6 +89,9 @@ pub(crate) struct Stop {
     /// Stop once an undamped step changes no distance by more than this times the RMS
     /// distance (0: never).
     pub tolerance: f64,
+    /// ... or by more than this (an absolute floor: changes far below the size of the
+    /// points say nothing about the shape; 0 for none).
+    pub floor: f64,
 }
 
 /// Buffers and settings of the inner minimization.
@@ -326,7 +329,7 @@ impl<'a, const D: usize> Solver<'a, D> {
                         mu_tried
                     };
                     settled = mu_tried <= SETTLED_DAMPING
-                        && settled_distances(&state.dist_sq, &self.trial.dist_sq, stop.tolerance);
+                        && settled_distances(&state.dist_sq, &self.trial.dist_sq, stop);
                     std::mem::swap(state, &mut self.trial);
                     gained = Some(before - value);
                     progress = before - value > PROGRESS * value.abs();
@@ -358,9 +361,10 @@ impl<'a, const D: usize> Solver<'a, D> {
     }
 }
 
-/// Whether no distance changed by more than `tolerance` times the RMS of the new distances
-/// (from squared distances `old` and `new`).
-fn settled_distances(old: &[f64], new: &[f64], tolerance: f64) -> bool {
+/// Whether no distance changed by more than `stop.tolerance` times the RMS of the new
+/// distances, or by more than `stop.floor` (from squared distances `old` and `new`).
+fn settled_distances(old: &[f64], new: &[f64], stop: Stop) -> bool {
+    let tolerance = stop.tolerance;
     if tolerance <= 0.0 {
         return false;
     }
@@ -370,7 +374,7 @@ fn settled_distances(old: &[f64], new: &[f64], tolerance: f64) -> bool {
         largest = largest.max((a.sqrt() - b.sqrt()).abs());
         sum += b;
     }
-    largest <= tolerance * (sum / new.len().max(1) as f64).sqrt()
+    largest <= (tolerance * (sum / new.len().max(1) as f64).sqrt()).max(stop.floor)
 }
 
 /// Copies values and derivatives of `from` into `to` (same knots).
