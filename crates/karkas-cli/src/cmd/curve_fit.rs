@@ -55,7 +55,8 @@ pub struct CurveFitArgs {
     #[arg(long = "corner", value_name = "T")]
     corners: Vec<f64>,
     /// Weight rho of the bending energy that keeps the parameterization even (lambda = rho n
-    /// for n points; 0 for none).
+    /// for n points on pieces with at most 8 points each, less on denser pieces; 0 for
+    /// none).
     #[arg(long, value_name = "RHO", default_value_t = DEFAULT_FAIRNESS)]
     fairness: f64,
     /// Smoothing s: the bending weight grows with the noise estimated from the points,

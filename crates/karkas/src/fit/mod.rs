@@ -18,6 +18,11 @@
 //!   Levenberg–Marquardt damping and by the paper's alternation of a banded least-squares
 //!   solve with the projection of every point onto the curve; chord-length start; the ends
 //!   optionally pinned to the first and last points ([`FitOptions::pin_ends`]).
+//! - On real data ([`FitOptions::ordered`], [`FitOptions::smoothing`], [`estimate_noise`]):
+//!   the foot-point parameters are kept in the order of the points, the noise is estimated
+//!   from the points and the bending weight made dimensionless (size, turning, points per
+//!   piece) and proportional to the noise; the result carries the estimate and
+//!   [`FitWarning`]s (docs/methods.md §4, "On real and noisy data").
 //! - [`fit_curve_adaptive`]: knots placed automatically (uniform in chord length, then
 //!   refined where the deviation is largest) until a tolerance on the largest deviation
 //!   holds.
@@ -27,11 +32,13 @@
 //! without a regularization the derivatives `H_L` drift, and a bound on the jumps is met by
 //! slowing the curve where it bends and spending the parameter range on a fold between
 //! sparse points (a NACA 2412 fit on 17 knots came out 2.5e-2 from the true contour while
-//! 1e-5 from every point). The term is weighted `lambda = rho n` (`rho = 3e-11` by default),
+//! 1e-5 from every point). The term is weighted `lambda = rho n` on sparse pieces (`rho = 3e-11` by default, see
+//! [`estimate_noise`] for the whole weight),
 //! far below the data term.
 //!
-//! Guarantees (tested): every inner foot point is a local minimizer of the distance
-//! (residual orthogonal to the tangent, second-order condition); the gradient of
+//! Guarantees (tested): the parameters do not decrease along the points; every inner foot
+//! point outside a pooled run is a local minimizer of the distance (residual orthogonal to
+//! the tangent, second-order condition); the gradient of
 //! `H + p f + lambda S` with respect to the coefficients vanishes at the result when iterated
 //! to convergence ([`FitOptions::settle_tolerance`] 0); `eps -> 0` tends to the C^2 least-squares
 //! cubic spline on the same knots and a large `eps` gives the unconstrained C^1 fit; on a

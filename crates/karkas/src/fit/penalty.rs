@@ -87,7 +87,8 @@ pub struct FitOptions {
     /// (default `1e-3`).
     pub eps_tolerance: f64,
     /// `rho`: the objective gets the bending energy `lambda int |R''(t)|^2 dt` with
-    /// `lambda = rho n` for `n` points (default [`DEFAULT_FAIRNESS`], `3e-11`; 0 for none).
+    /// `lambda = rho n` for `n` points on sparse pieces, less on dense ones (see
+    /// [`estimate_noise`]; default [`DEFAULT_FAIRNESS`], `3e-11`; 0 for none).
     ///
     /// Why: the foot-point distances do not change when the points slide along the curve, so
     /// without it the unconstrained problem has (nearly) flat directions, the derivatives
@@ -163,7 +164,7 @@ pub struct CurveFit<const D: usize> {
     pub seed_bound: f64,
     /// `delta_L` per knot (0 at the ends and at corners).
     pub weights: Vec<f64>,
-    /// `lambda = fairness * n`, the weight of the bending energy.
+    /// `lambda`, the weight of the bending energy (see [`estimate_noise`]).
     pub bending_weight: f64,
     /// `S = int |R''(t)|^2 dt` achieved.
     pub bending_energy: f64,
@@ -443,8 +444,10 @@ pub(crate) fn fit_checked<const D: usize>(
             }
             return Ok(finish(state, found, seed_bound, iterations));
         }
-        // Not settled in the window (iteration cap): hold the p found, raised if need be.
-        p = found.max(f64::MIN_POSITIVE);
+        // Not settled in the window (iteration cap): hold the p found, raised if need be, but
+        // never below the paper's p* (a search that collapsed towards 0 would otherwise
+        // leave the paper's rule 40 decades short).
+        p = found.max(seed_bound).max(f64::MIN_POSITIVE);
     }
     // The paper's rule: p = p*, times 10 until the bound holds.
     for _ in 0..=40 {

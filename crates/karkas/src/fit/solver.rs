@@ -40,7 +40,7 @@ use super::gradient::{accumulate_gradient, Gradient};
 use super::hermite::HermiteSpline;
 use super::newton::NewtonModel;
 use super::power::PowerForm;
-use super::problem::{objective, penalties, Problem, State};
+use super::problem::{objective, penalties, Problem, Projection, State};
 use super::project_all::{project, project_within};
 use crate::solve::BandedLeastSquares;
 use crate::{Error, Result};
@@ -108,6 +108,8 @@ pub(crate) struct Solver<'a, const D: usize> {
     /// The power form of the spline being projected onto.
     power: PowerForm<D>,
     trial: State<D>,
+    /// The parameters held by the alternation step, while it tries the projection.
+    held: Vec<f64>,
 }
 
 impl<'a, const D: usize> Solver<'a, D> {
@@ -133,6 +135,7 @@ impl<'a, const D: usize> Solver<'a, D> {
                 piece: vec![0; n],
                 order: Default::default(),
             },
+            held: vec![0.0; n],
         }
     }
 
@@ -217,13 +220,29 @@ impl<'a, const D: usize> Solver<'a, D> {
         if solved.is_err() {
             return f64::INFINITY;
         }
-        project(
-            self.problem.points,
-            self.problem.projection(),
-            trial,
-            &mut self.power,
-        );
-        objective(&self.problem, trial, p)
+        let projection = self.problem.projection();
+        if !projection.ordered {
+            project(self.problem.points, projection, trial, &mut self.power);
+            return objective(&self.problem, trial, p);
+        }
+        // The ordered projection solves a quadratic model of the distances, so it may lose
+        // against the parameters held: keep whichever is lower, so that the step never
+        // raises F (the held parameters are ordered already).
+        let held = Projection {
+            foot_points: false,
+            ..projection
+        };
+        project(self.problem.points, held, trial, &mut self.power);
+        let kept = objective(&self.problem, trial, p);
+        self.held.clone_from(&trial.params);
+        project(self.problem.points, projection, trial, &mut self.power);
+        let moved = objective(&self.problem, trial, p);
+        if moved <= kept {
+            return moved;
+        }
+        trial.params.copy_from_slice(&self.held);
+        project(self.problem.points, held, trial, &mut self.power);
+        kept
     }
 
     /// Minimizes `F` from `state` (whose parameters are already foot points, or fixed

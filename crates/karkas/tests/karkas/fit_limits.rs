@@ -50,6 +50,7 @@ fn small_eps_tends_to_the_c2_least_squares_spline_with_parameters_held() {
             &FitOptions {
                 eps,
                 foot_points: false,
+                smoothing: 0.0,
                 ..Default::default()
             },
         )
@@ -77,6 +78,7 @@ fn small_eps_tends_to_the_c2_spline_with_foot_points() {
             &KNOTS,
             &FitOptions {
                 eps,
+                smoothing: 0.0,
                 ..Default::default()
             },
         )
@@ -107,6 +109,7 @@ fn large_eps_is_the_unconstrained_c1_fit() {
             eps: 1e30,
             foot_points: false,
             fairness: 0.0,
+            smoothing: 0.0,
             ..Default::default()
         },
     )
@@ -182,18 +185,19 @@ fn the_bending_term_is_the_integral_of_the_squared_second_derivative() {
     // two linear functions a + (b - a) s over a piece of length h is h/6 (2 a a' + a b' + b a'
     // + 2 b b')), and solved densely.
     let points = noisy_spiral(30, 0.02, 3);
-    let lambda = 1e-4;
     let fit = fit_curve(
         &points,
         &KNOTS,
         &FitOptions {
             foot_points: false,
-            fairness: lambda / points.len() as f64,
+            fairness: 1e-4 / points.len() as f64,
             ..Default::default()
         },
     )
     .unwrap();
-    assert!((fit.bending_weight - lambda).abs() < 1e-18);
+    // The weight's formula is tested with the noise estimate; here the term itself.
+    let lambda = fit.bending_weight;
+    assert!(lambda > 1e-6, "{lambda}");
     let unknowns = 2 * KNOTS.len();
     let bezier: Vec<Vec<[f64; 4]>> = (0..unknowns).map(|j| unit_bezier(&KNOTS, j)).collect();
     // Second derivatives at both ends of every piece.
@@ -283,6 +287,7 @@ fn pinned_ends_pass_through_the_first_and_last_points() {
             &KNOTS,
             &FitOptions {
                 eps,
+                smoothing: 0.0,
                 ..Default::default()
             },
         )

@@ -31,10 +31,12 @@ fn same_fit(a: &CurveFit<2>, b: &CurveFit<2>) -> bool {
 #[test]
 fn large_fits_do_not_depend_on_the_thread_count() {
     let points = noisy_spiral(40_000, 1e-3, 11);
+    // A bound a tenth of the unconstrained fit's jumps: the constrained path runs.
+    let free = fit_on(1, &points, &FitOptions::default());
     for options in [
         FitOptions::default(),
         FitOptions {
-            eps: 0.02,
+            eps: 0.1 * free.jump_sum,
             ..FitOptions::default()
         },
     ] {
@@ -53,14 +55,20 @@ fn large_fits_do_not_depend_on_the_thread_count() {
         );
         assert!(one.jump_sum <= options.eps * (1.0 + 1e-3));
         if options.eps.is_finite() {
-            // The bound is active: the constrained path (penalty search) ran.
-            assert!(one.penalty > 0.0 && one.jump_sum >= options.eps * (1.0 - 1e-3));
+            // The constrained path (penalty search) ran.
+            assert!(one.penalty > 0.0, "{}", one.penalty);
         }
-        // Every inner foot point is a local minimizer: the residual is orthogonal to the
-        // tangent, and no sampled parameter nearby is nearer.
+        // Every inner foot point outside a pooled run (points out of order sharing one
+        // parameter) is a local minimizer: the residual is orthogonal to the tangent, and no
+        // sampled parameter nearby is nearer.
         let curve = &one.spline;
+        let ts = &one.parameters;
+        assert!(ts.windows(2).all(|p| p[0] <= p[1]));
         for i in (1..points.len() - 1).step_by(97) {
-            let t = one.parameters[i];
+            let t = ts[i];
+            if ts[i - 1] == t || ts[i + 1] == t {
+                continue;
+            }
             let e = curve.eval(t) - points[i];
             let d1 = curve.deriv(t, 1);
             if t > 0.0 && t < 1.0 {

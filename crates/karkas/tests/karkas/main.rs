@@ -18,6 +18,7 @@ mod dps_interpolation;
 mod dps_tube;
 mod fit_limits;
 mod fit_naca;
+mod fit_noise;
 mod fit_optimality;
 mod fit_parallel;
 mod geometry;

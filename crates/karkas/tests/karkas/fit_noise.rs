@@ -1,0 +1,120 @@
+//! Noise-aware fitting (docs/methods.md §4): foot-point parameters kept in the order of the
+//! points, the noise estimated from the points, and a bending weight that neither pulls the
+//! ends of exact data in nor lets a noisy fit follow the noise.
+
+use crate::common::Rng;
+use crate::fit_reference::{naca, polyline_distance};
+use karkas::fit::{fit_curve, uniform_knots, FitOptions};
+use karkas::{Curve, Point2};
+use std::f64::consts::PI;
+
+/// `n` points of NACA 2412 in cosine spacing from the trailing edge over the upper surface,
+/// Gaussian noise of `sigma` per coordinate on every point.
+fn noisy_section(n: usize, sigma: f64, seed: u64) -> Vec<Point2> {
+    let mut rng = Rng::new(seed);
+    (0..n)
+        .map(|i| {
+            let p = naca(0.02, 0.4, 0.12, 2.0 * PI * i as f64 / (n - 1) as f64);
+            Point2::new([p[0] + sigma * rng.normal(), p[1] + sigma * rng.normal()])
+        })
+        .collect()
+}
+
+/// The largest distance from samples of `curve` to the true contour (a dense polyline).
+fn distance_to_truth<C: Curve<2>>(curve: &C) -> f64 {
+    let truth: Vec<Point2> = (0..=20_000)
+        .map(|k| naca(0.02, 0.4, 0.12, 2.0 * PI * k as f64 / 20_000.0))
+        .collect();
+    (0..=2000)
+        .map(|k| polyline_distance(&truth, curve.eval(k as f64 / 2000.0), 0, truth.len()).0)
+        .fold(0.0, f64::max)
+}
+
+#[test]
+fn parameters_follow_the_order_of_the_points() {
+    // Dense noisy points at both ends and at the nose: noise 1e-3 against spacings down to
+    // 1e-6, where foot points found one by one come out of order.
+    let points = noisy_section(2000, 1e-3, 11);
+    let ordered = fit_curve(&points, &uniform_knots(32), &FitOptions::default()).unwrap();
+    assert!(ordered.parameters.windows(2).all(|p| p[0] <= p[1]));
+    let free = FitOptions {
+        ordered: false,
+        ..Default::default()
+    };
+    let unordered = fit_curve(&points, &uniform_knots(32), &free).unwrap();
+    let reversals = unordered
+        .parameters
+        .windows(2)
+        .filter(|p| p[1] < p[0])
+        .count();
+    assert!(reversals > 100, "{reversals}");
+}
+
+#[test]
+fn the_noise_is_estimated_and_reported() {
+    for sigma in [1e-4, 1e-3] {
+        let points = noisy_section(1000, sigma, 5);
+        let fit = fit_curve(&points, &uniform_knots(20), &FitOptions::default()).unwrap();
+        assert!(
+            (fit.noise.sigma / sigma - 1.0).abs() < 0.25,
+            "sigma {sigma}: {:?}",
+            fit.noise
+        );
+        // The weight grows with the square of the noise (the floor is negligible here).
+        assert!(fit.bending_weight > 0.0);
+    }
+    let exact = noisy_section(1000, 0.0, 5);
+    let fit = fit_curve(&exact, &uniform_knots(20), &FitOptions::default()).unwrap();
+    assert!(fit.noise.sigma < 1e-5, "{:?}", fit.noise);
+}
+
+#[test]
+fn a_long_winding_curve_keeps_its_ends() {
+    // Three turns of a spiral, exact points: the bending term used to pull the ends in by
+    // 6e-3 (1e-9 without it).
+    let n = 100_000;
+    let points: Vec<Point2> = (0..n)
+        .map(|i| {
+            let s = i as f64 / (n - 1) as f64;
+            let a = 6.0 * PI * s;
+            Point2::new([(1.0 + s) * a.cos(), (1.0 + s) * a.sin()])
+        })
+        .collect();
+    let fit = fit_curve(&points, &uniform_knots(200), &FitOptions::default()).unwrap();
+    assert!(fit.max_distance() < 1e-5, "{}", fit.max_distance());
+    assert!(fit.spline.eval(0.0).distance(points[0]) < 1e-5);
+    assert!(fit.spline.eval(1.0).distance(points[n - 1]) < 1e-5);
+}
+
+#[test]
+fn smoothing_brings_a_noisy_fit_closer_to_the_truth() {
+    // NACA 2412, 1000 points, noise 1e-3, 32 knots: without smoothing the fit follows the
+    // noise; the default smoothing halves its distance from the true contour at least.
+    let points = noisy_section(1000, 1e-3, 3);
+    let rough = FitOptions {
+        smoothing: 0.0,
+        ..Default::default()
+    };
+    let plain = fit_curve(&points, &uniform_knots(32), &rough).unwrap();
+    let smooth = fit_curve(&points, &uniform_knots(32), &FitOptions::default()).unwrap();
+    let (a, b) = (
+        distance_to_truth(&plain.spline),
+        distance_to_truth(&smooth.spline),
+    );
+    eprintln!("without smoothing {a:.3e}, with {b:.3e}");
+    assert!(b < a, "without smoothing {a:.3e}, with {b:.3e}");
+    assert!(b < 1e-3, "{b:.3e}");
+}
+
+#[test]
+fn smoothing_and_fairness_are_scale_free() {
+    let points = noisy_section(500, 1e-3, 9);
+    let unit = fit_curve(&points, &uniform_knots(12), &FitOptions::default()).unwrap();
+    for scale in [1e-100, 1e100] {
+        let scaled: Vec<Point2> = points.iter().map(|&p| p * scale).collect();
+        let fit = fit_curve(&scaled, &uniform_knots(12), &FitOptions::default()).unwrap();
+        assert!((fit.noise.sigma / (scale * unit.noise.sigma) - 1.0).abs() < 1e-9);
+        let ratio = fit.max_distance() / (scale * unit.max_distance());
+        assert!((ratio - 1.0).abs() < 1e-6, "{scale}: {ratio}");
+    }
+}
