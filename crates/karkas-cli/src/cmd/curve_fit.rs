@@ -152,6 +152,9 @@ impl CurveJob for (&CurveFitArgs, OutputFormat, Option<Vec<f64>>) {
             (None, None) => bail!("give --knots or --tolerance"),
         };
         let fit_time = started.elapsed();
+        for warning in &fit.warnings {
+            eprintln!("karkas: warning: {warning}");
+        }
         let n = args
             .samples
             .or_else(|| default_curve_samples(2 * fit.spline.pieces()));
