@@ -9,8 +9,8 @@
 //! - crossings: the curve is sampled densely (16 steps a piece, halved while the tangent turns
 //!   more than 0.2 rad) and its self-crossings found by a sweep; a crossing is reported unless
 //!   the point polygon crosses itself at the same points (within 2 points either way), or it
-//!   joins the two ends of a closed contour (first and last point within twice the largest
-//!   distance);
+//!   joins the two ends of a closed contour (first and last point within twice the sum of
+//!   their distances from the curve);
 //! - turning: the curve's total absolute turning against the polygon's (the exterior angles,
 //!   plus half the first and the last, which is what a circle through the end points turns
 //!   beyond the end chords), allowed [`TURNING_MARGIN`] plus [`TURNING_RELATIVE`] of it; and
@@ -230,7 +230,11 @@ impl<const D: usize> Guard<'_, D> {
         let at = |k: usize, s: f64| t[k] + s * (t[k + 1] - t[k]);
         kept.into_iter()
             .filter_map(|c| {
-                let (ta, tb) = (at(c.a, c.sa), at(c.b, c.sb));
+                let (ta, tb) = self.refine_crossing(
+                    (at(c.a, c.sa), at(c.b, c.sb)),
+                    (t[c.a.saturating_sub(1)], t[(c.a + 2).min(t.len() - 1)]),
+                    (t[c.b.saturating_sub(1)], t[(c.b + 2).min(t.len() - 1)]),
+                );
                 let (ga, gb) = (self.gap(ta), self.gap(tb));
                 let from = excused.partition_point(|e| e.0 + CROSSING_SLACK < ga);
                 let matched = excused[from..]
@@ -255,11 +259,38 @@ impl<const D: usize> Guard<'_, D> {
             .collect()
     }
 
+    /// The parameters of a crossing `R(ta) = R(tb)` by Newton's method from the crossing of
+    /// the samples, kept when it converges inside the given ranges (else the start).
+    fn refine_crossing(&self, start: (f64, f64), ra: (f64, f64), rb: (f64, f64)) -> (f64, f64) {
+        let spline = &self.fit.spline;
+        let (mut ta, mut tb) = start;
+        for _ in 0..8 {
+            let f = spline.eval(ta) - spline.eval(tb);
+            let (da, db) = (spline.deriv(ta, 1), spline.deriv(tb, 1));
+            // Solve [da, -db] (x, y) = -f.
+            let det = -da[0] * db[1] + db[0] * da[1];
+            if det == 0.0 || !det.is_finite() {
+                return start;
+            }
+            let x = (f[0] * db[1] - db[0] * f[1]) / det;
+            let y = (f[0] * da[1] - da[0] * f[1]) / det;
+            (ta, tb) = (ta + x, tb + y);
+            if !(ra.0..=ra.1).contains(&ta) || !(rb.0..=rb.1).contains(&tb) {
+                return start;
+            }
+            if x.abs().max(y.abs()) <= 1e-14 {
+                break;
+            }
+        }
+        (ta, tb)
+    }
+
     /// How far apart the first and last points may be for the contour to count as closed:
-    /// twice the largest distance of a point from the curve (at least `1e-9` of the size).
+    /// twice the sum of their distances from the curve (at least `1e-9` of the size).
     fn touching_distance(&self) -> f64 {
         let size = self.points.iter().fold(0.0f64, |m, p| m.max(p.max_abs()));
-        (2.0 * self.fit.max_distance()).max(1e-9 * size)
+        let d = &self.fit.distances;
+        (2.0 * (d[0] + d[d.len() - 1])).max(1e-9 * size)
     }
 
     /// Turning beyond the polygon's: in all, and over runs of points (hooks, loops).

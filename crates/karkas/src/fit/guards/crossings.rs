@@ -69,3 +69,17 @@ pub(crate) fn crossings(vertices: &[[f64; 2]]) -> Vec<Crossing> {
     }
     found
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_bowtie_crosses_once() {
+        let v = [[0.0, 0.0], [1.0, 1.0], [1.0, 0.0], [0.0, 1.0]];
+        let c = crossings(&v);
+        assert_eq!(c.len(), 1, "{c:?}");
+        assert_eq!((c[0].a, c[0].b), (0, 2));
+        assert!((c[0].sa - 0.5).abs() < 1e-15 && (c[0].sb - 0.5).abs() < 1e-15);
+    }
+}
