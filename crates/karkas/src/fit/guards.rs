@@ -8,14 +8,18 @@
 //!
 //! - crossings: the curve is sampled densely (16 steps a piece, halved while the tangent turns
 //!   more than 0.2 rad) and its self-crossings found by a sweep; a crossing is reported unless
-//!   the point polygon crosses itself at the same points (within 2 points either way), or it
-//!   joins the two ends of a closed contour (first and last point within twice the sum of
-//!   their distances from the curve);
-//! - turning: the curve's total absolute turning against the polygon's (the exterior angles,
-//!   plus half the first and the last, which is what a circle through the end points turns
-//!   beyond the end chords), allowed [`TURNING_MARGIN`] plus [`TURNING_RELATIVE`] of it; and
-//!   between the foot points of any run of points, where the curve's turning in excess of the
-//!   polygon's grows by more than [`HOOK_TURNING`] (a hook or a loop);
+//!   the point polygon crosses itself at the same points (within 2 points either way), or
+//!   the polygon's two stretches there lie on branches (the polygon turns at least pi/2 from
+//!   one to the other) that come within twice the largest point distance of each other: the
+//!   points do not tell such branches apart at the fit's accuracy (the two ends of a closed
+//!   contour, a thin cusped trailing edge);
+//! - turning: between the foot points of points `i < j`, a curve through the points that
+//!   does not inflect between them turns at most as much as the polygon from the segment
+//!   before `i` to the segment after `j` (the exterior angles at `i..=j`); a run of points
+//!   where the curve turns more than that (plus [`TURNING_RELATIVE`] of it) by over
+//!   [`HOOK_TURNING`] is a hook or a loop; and in all, the curve may turn [`TURNING_MARGIN`]
+//!   plus [`TURNING_RELATIVE`] beyond the polygon (its exterior angles, the first and the
+//!   last point counted with the angles of their neighbours);
 //! - the pieces: two adjacent pieces holding fewer than 3 points between them (the paper's
 //!   condition for a determined fit), and a knot span holding none.
 //!
@@ -115,6 +119,7 @@ pub fn shape_warnings<const D: usize>(points: &[Point<D>], fit: &CurveFit<D>) ->
         points,
         fit,
         samples: Samples::of(&fit.spline),
+        angle: exterior_angles(points),
     };
     let mut warnings = Vec::new();
     if D == 2 {
@@ -168,11 +173,55 @@ fn coordinates<const D: usize>(p: Point<D>) -> String {
     format!("({})", parts.join(", "))
 }
 
+/// The exterior angle of the point polygon at every point (repeated points skipped; the
+/// first and the last point get the angle of their neighbour).
+fn exterior_angles<const D: usize>(points: &[Point<D>]) -> Vec<f64> {
+    let n = points.len();
+    let mut angle = vec![0.0; n];
+    let mut last: Option<Point<D>> = None;
+    for i in 1..n {
+        let d = points[i] - points[i - 1];
+        if d.norm_sq() == 0.0 {
+            continue;
+        }
+        if let Some(previous) = last {
+            angle[i - 1] = angle_between(previous, d);
+        }
+        last = Some(d);
+    }
+    angle[0] = angle[1];
+    angle[n - 1] = angle[n - 2];
+    angle
+}
+
+/// The distance between segments `ab` and `cd` in the plane.
+fn segment_distance(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> f64 {
+    if !crossings(&[a, b, c, d]).is_empty() && !crossings(&[c, d, a, b]).is_empty() {
+        return 0.0;
+    }
+    let to_segment = |p: [f64; 2], a: [f64; 2], b: [f64; 2]| {
+        let (ux, uy) = (b[0] - a[0], b[1] - a[1]);
+        let len = ux * ux + uy * uy;
+        let s = if len > 0.0 {
+            (((p[0] - a[0]) * ux + (p[1] - a[1]) * uy) / len).clamp(0.0, 1.0)
+        } else {
+            0.0
+        };
+        (p[0] - a[0] - s * ux).hypot(p[1] - a[1] - s * uy)
+    };
+    to_segment(a, c, d)
+        .min(to_segment(b, c, d))
+        .min(to_segment(c, a, b))
+        .min(to_segment(d, a, b))
+}
+
 /// The data of the guards of one fit.
 struct Guard<'a, const D: usize> {
     points: &'a [Point<D>],
     fit: &'a CurveFit<D>,
     samples: Samples<D>,
+    /// The exterior angles of the point polygon ([`exterior_angles`]).
+    angle: Vec<f64>,
 }
 
 impl<const D: usize> Guard<'_, D> {
@@ -206,11 +255,6 @@ impl<const D: usize> Guard<'_, D> {
         let polygon: Vec<[f64; 2]> = self.points.iter().map(plane).collect();
         let mut excused: Vec<(usize, usize)> =
             crossings(&polygon).iter().map(|c| (c.a, c.b)).collect();
-        let n = self.points.len();
-        if self.points[0].distance(self.points[n - 1]) <= self.touching_distance() {
-            // A closed contour: its ends meet.
-            excused.push((0, n - 2));
-        }
         excused.sort_unstable();
         found.sort_by_key(|c| (c.a, c.b));
         let mut kept: Vec<Crossing> = Vec::new();
@@ -241,7 +285,8 @@ impl<const D: usize> Guard<'_, D> {
                     .iter()
                     .take_while(|e| e.0 <= ga + CROSSING_SLACK)
                     .any(|e| e.1.abs_diff(gb) <= CROSSING_SLACK);
-                (!matched).then(|| FitWarning {
+                let unresolved = self.branches_touch(&polygon, ga, gb);
+                (!matched && !unresolved).then(|| FitWarning {
                     kind: FitWarningKind::SelfIntersection,
                     parameter: ta,
                     message: format!(
@@ -285,32 +330,31 @@ impl<const D: usize> Guard<'_, D> {
         (ta, tb)
     }
 
-    /// How far apart the first and last points may be for the contour to count as closed:
-    /// twice the sum of their distances from the curve (at least `1e-9` of the size).
-    fn touching_distance(&self) -> f64 {
-        let size = self.points.iter().fold(0.0f64, |m, p| m.max(p.max_abs()));
-        let d = &self.fit.distances;
-        (2.0 * (d[0] + d[d.len() - 1])).max(1e-9 * size)
+    /// Whether the polygon's gaps `ga` and `gb` are on two branches (the polygon turns by at
+    /// least pi/2 from one to the other) that come within twice the largest point distance
+    /// of each other there (one gap either way): at the fit's accuracy the points do not
+    /// tell such branches apart, and the curve may cross between them (the two ends of a
+    /// closed contour, a thin cusped trailing edge).
+    fn branches_touch(&self, polygon: &[[f64; 2]], ga: usize, gb: usize) -> bool {
+        let (lo, hi) = (ga.min(gb), ga.max(gb));
+        let turned: f64 = self.angle[lo + 1..=hi].iter().sum();
+        if turned < 0.5 * std::f64::consts::PI {
+            return false;
+        }
+        let reach = 2.0 * self.fit.max_distance();
+        let m = polygon.len() - 1;
+        let around = |g: usize| g.saturating_sub(1)..(g + 2).min(m);
+        around(lo).any(|i| {
+            around(hi).any(|j| {
+                segment_distance(polygon[i], polygon[i + 1], polygon[j], polygon[j + 1]) <= reach
+            })
+        })
     }
 
     /// Turning beyond the polygon's: in all, and over runs of points (hooks, loops).
     fn turning(&self) -> Vec<FitWarning> {
-        let (points, n) = (self.points, self.points.len());
-        // The exterior angle at every inner point (repeated points skipped).
-        let mut angle = vec![0.0; n];
-        let mut last: Option<Point<D>> = None;
-        for i in 1..n {
-            let d = points[i] - points[i - 1];
-            if d.norm_sq() == 0.0 {
-                continue;
-            }
-            if let Some(previous) = last {
-                angle[i - 1] = angle_between(previous, d);
-            }
-            last = Some(d);
-        }
-        angle[0] = angle[1];
-        angle[n - 1] = angle[n - 2];
+        let n = self.points.len();
+        let angle = &self.angle;
         // Per gap: the polygon's turning (a circle's through its ends) and the curve's.
         let curve_at: Vec<f64> = self
             .fit
@@ -320,28 +364,37 @@ impl<const D: usize> Guard<'_, D> {
             .collect();
         let polygon_gap = |i: usize| 0.5 * (angle[i] + angle[i + 1]);
         let curve_gap = |i: usize| (curve_at[i + 1] - curve_at[i]).abs();
-        let polygon_total: f64 = (0..n - 1).map(polygon_gap).sum();
+        let polygon_total: f64 = angle.iter().sum();
         let curve_total = self.samples.total_turning();
-        // Runs of gaps over which the excess grows by more than HOOK_TURNING.
+        // Between the foot points of points m < k the curve may turn as much as the polygon
+        // from the segment before m to the one after k (so it does on a convex stretch
+        // through the points): the angles at m..=k. With S the running sum of the gaps'
+        // excess over their share (half the angles at either end), the window's excess is
+        // (S_k - r a_k / 2) - (S_m + r a_m / 2), r = 1 + TURNING_RELATIVE. Windows whose
+        // excess passes HOOK_TURNING are hooks or loops.
+        let r = 1.0 + TURNING_RELATIVE;
         let mut hooks = Vec::new();
-        let (mut sum, mut low, mut low_at) = (0.0, 0.0, 0usize);
+        let mut sum = 0.0;
+        let (mut low, mut low_at) = (r * 0.5 * angle[0], 0usize);
         let (mut peak, mut peak_at) = (f64::NEG_INFINITY, 0usize);
         let mut worst = (f64::NEG_INFINITY, 0usize, 0usize);
         for i in 0..n - 1 {
-            sum += curve_gap(i) - (1.0 + TURNING_RELATIVE) * polygon_gap(i);
+            sum += curve_gap(i) - r * polygon_gap(i);
             let k = i + 1;
-            if sum - low > worst.0 {
-                worst = (sum - low, low_at, k);
+            let high = sum - r * 0.5 * angle[k];
+            if high - low > worst.0 {
+                worst = (high - low, low_at, k);
             }
-            if sum - low > HOOK_TURNING && sum > peak {
-                (peak, peak_at) = (sum, k);
+            if high - low > HOOK_TURNING && high > peak {
+                (peak, peak_at) = (high, k);
             }
-            let closes = peak.is_finite() && (sum < peak - HOOK_TURNING || k == n - 1);
+            let closes = peak.is_finite() && (high < peak - HOOK_TURNING || k == n - 1);
+            let here = sum + r * 0.5 * angle[k];
             if closes {
-                hooks.push(self.hook(low_at, peak_at, &curve_at, &angle));
-                (low, low_at, peak) = (sum, k, f64::NEG_INFINITY);
-            } else if sum < low {
-                (low, low_at) = (sum, k);
+                hooks.push(self.hook(low_at, peak_at, &curve_at));
+                (low, low_at, peak) = (here, k, f64::NEG_INFINITY);
+            } else if here < low {
+                (low, low_at) = (here, k);
             }
         }
         let allowed = polygon_total * (1.0 + TURNING_RELATIVE) + TURNING_MARGIN;
@@ -370,9 +423,9 @@ impl<const D: usize> Guard<'_, D> {
     }
 
     /// The warning of a hook or loop between points `i` and `j`.
-    fn hook(&self, i: usize, j: usize, curve_at: &[f64], angle: &[f64]) -> FitWarning {
+    fn hook(&self, i: usize, j: usize, curve_at: &[f64]) -> FitWarning {
         let curve = (curve_at[j] - curve_at[i]).abs();
-        let polygon: f64 = (i..j).map(|g| 0.5 * (angle[g] + angle[g + 1])).sum();
+        let polygon: f64 = self.angle[i..=j].iter().sum();
         let t = self.middle_turning(curve_at[i], curve_at[j]);
         let params = &self.fit.parameters;
         FitWarning {

@@ -139,37 +139,46 @@ fn a_loop_where_the_points_run_straight_is_a_crossing_and_excess_turning() {
 }
 
 #[test]
-fn a_hook_past_the_last_point_is_excess_turning_there() {
-    // Straight on to (1, 0), then on past it and back to (0.9, 0.05): a hook of about pi.
+fn a_hook_past_the_first_point_is_excess_turning_there() {
+    // Points along the x-axis from (1, 0) back to (0, 0), like the upper surface from a
+    // trailing edge; the curve leaves (1, 0) outwards, turns around and comes back: a hook of
+    // about pi past the first point.
     let spline = HermiteSpline::new(
         vec![0.0, 0.5, 1.0],
         vec![
+            Point2::new([1.0, 0.0]),
+            Point2::new([0.5, 0.0]),
             Point2::new([0.0, 0.0]),
-            Point2::new([0.8, 0.0]),
-            Point2::new([0.9, 0.05]),
         ],
         vec![
-            Point2::new([1.6, 0.0]),
-            Point2::new([1.6, 0.0]),
+            Point2::new([1.0, 0.2]),
+            Point2::new([-1.0, 0.0]),
             Point2::new([-1.0, 0.0]),
         ],
     )
     .unwrap();
-    let hook = brute_turning(&spline, 0.5, 1.0, 100_000);
+    let hook = brute_turning(&spline, 0.0, 0.5, 100_000);
     assert!(hook > 2.5, "{hook}");
-    // Points along the way, the last one where the hook ends: the polygon turns once, at
-    // its last corner, by less than the hook.
     let params: Vec<f64> = (0..=10).map(|k| k as f64 / 10.0).collect();
-    let mut points: Vec<Point2> = params[..10]
-        .iter()
-        .map(|&t| Point2::new([spline.eval(t)[0], 0.0]))
-        .collect();
-    points.push(spline.eval(1.0));
+    let points: Vec<Point2> = params.iter().map(|&t| Point2::new([1.0 - t, 0.0])).collect();
     let warnings = shape_warnings(&points, &fit_around(spline, &points, params));
     let turns = of_kind(&warnings, FitWarningKind::ExcessTurning);
     assert!(!turns.is_empty(), "{warnings:#?}");
-    assert!(turns.iter().all(|w| w.parameter > 0.5), "{turns:#?}");
-    assert!(of_kind(&warnings, FitWarningKind::SelfIntersection).is_empty());
+    assert!(turns.iter().all(|w| w.parameter < 0.5), "{turns:#?}");
+    assert!(
+        turns.iter().any(|w| w.message.contains(&format!("{:.2}", hook)[..3])),
+        "{hook}: {turns:#?}"
+    );
+}
+
+#[test]
+fn a_polygon_that_turns_back_itself_excuses_the_turn_of_the_curve() {
+    // A hairpin: the points go out along y = 0 and back along y = 0.2; the curve turns
+    // about pi around the bend, as the polygon does.
+    let mut points: Vec<Point2> = (0..=10).map(|k| Point2::new([k as f64 * 0.1, 0.0])).collect();
+    points.extend((0..=10).map(|k| Point2::new([1.0 - k as f64 * 0.1, 0.2])));
+    let fit = fit_curve(&points, &uniform_knots(8), &FitOptions::default()).unwrap();
+    no_shape_warnings(&fit.warnings, "hairpin");
 }
 
 fn no_shape_warnings(warnings: &[FitWarning], what: &str) {
