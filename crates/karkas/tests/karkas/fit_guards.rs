@@ -160,13 +160,18 @@ fn a_hook_past_the_first_point_is_excess_turning_there() {
     let hook = brute_turning(&spline, 0.0, 0.5, 100_000);
     assert!(hook > 2.5, "{hook}");
     let params: Vec<f64> = (0..=10).map(|k| k as f64 / 10.0).collect();
-    let points: Vec<Point2> = params.iter().map(|&t| Point2::new([1.0 - t, 0.0])).collect();
+    let points: Vec<Point2> = params
+        .iter()
+        .map(|&t| Point2::new([1.0 - t, 0.0]))
+        .collect();
     let warnings = shape_warnings(&points, &fit_around(spline, &points, params));
     let turns = of_kind(&warnings, FitWarningKind::ExcessTurning);
     assert!(!turns.is_empty(), "{warnings:#?}");
     assert!(turns.iter().all(|w| w.parameter < 0.5), "{turns:#?}");
     assert!(
-        turns.iter().any(|w| w.message.contains(&format!("{:.2}", hook)[..3])),
+        turns
+            .iter()
+            .any(|w| w.message.contains(&format!("{:.2}", hook)[..3])),
         "{hook}: {turns:#?}"
     );
 }
@@ -175,7 +180,9 @@ fn a_hook_past_the_first_point_is_excess_turning_there() {
 fn a_polygon_that_turns_back_itself_excuses_the_turn_of_the_curve() {
     // A hairpin: the points go out along y = 0 and back along y = 0.2; the curve turns
     // about pi around the bend, as the polygon does.
-    let mut points: Vec<Point2> = (0..=10).map(|k| Point2::new([k as f64 * 0.1, 0.0])).collect();
+    let mut points: Vec<Point2> = (0..=10)
+        .map(|k| Point2::new([k as f64 * 0.1, 0.0]))
+        .collect();
     points.extend((0..=10).map(|k| Point2::new([1.0 - k as f64 * 0.1, 0.2])));
     let fit = fit_curve(&points, &uniform_knots(8), &FitOptions::default()).unwrap();
     no_shape_warnings(&fit.warnings, "hairpin");
