@@ -13,7 +13,8 @@ tests/corpus/expected_refusals.txt for `curve fit` or `*` are skipped) is fitted
 and the `karkas: warning:` lines of its stderr are counted by kind: self_intersection,
 excess_turning, sparse_pieces, empty_span, tolerance_not_met ("N more warnings like the above
 (KIND)" adds N). Runs go in parallel (--jobs, default 2), each killed after --timeout seconds
-of wall clock (default 60). --limit N fits an even sample of N files (every k-th) instead of
+of wall clock (default 60). --exclude TEXT skips the files whose path contains TEXT (e.g. a
+multi-element section, several contours in one file). --limit N fits an even sample of N files (every k-th) instead of
 all of them.
 
 Exit status 1 when any fit crosses itself or turns too much (the warnings are listed with their
@@ -124,11 +125,18 @@ def main() -> int:
     ap.add_argument("--timeout", type=float, default=60.0, help="seconds of wall clock per fit")
     ap.add_argument("--limit", type=int, default=0, help="fit an even sample of N files")
     ap.add_argument("--allow-timeouts", action="store_true")
+    ap.add_argument(
+        "--exclude", action="append", default=[], metavar="TEXT",
+        help="skip files whose path contains TEXT (repeat for several)",
+    )
     ap.add_argument("--slowest", type=int, default=10, help="list the N slowest fits")
     args = ap.parse_args()
 
     skip = refused(HERE / "expected_refusals.txt")
-    files = [f for f in airfoil_files(args.dir) if f not in skip]
+    files = [
+        f for f in airfoil_files(args.dir)
+        if f not in skip and not any(text in f for text in args.exclude)
+    ]
     if not files:
         print(f"fit guards: no airfoil files under {args.dir}", file=sys.stderr)
         return 1
