@@ -170,6 +170,9 @@ impl CurveJob for (&CurveFitArgs, OutputFormat, Option<Vec<f64>>) {
         };
         let fit_time = started.elapsed();
         let summary = FitSummary::new(input(), &fit, args.tolerance, fit_time);
+        for warning in &fit.warnings {
+            eprintln!("karkas: warning: {warning}");
+        }
         let n = args
             .samples
             .or_else(|| default_curve_samples(2 * fit.spline.pieces()));

@@ -256,3 +256,31 @@ fn a_huge_knot_count_is_refused_before_anything_is_allocated() {
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     assert!(out.exists());
 }
+
+#[test]
+fn shape_warnings_are_printed_with_their_place() {
+    // 30 points on an arc; the knots 0.5 and 0.5001 leave a span with no point in it.
+    let dir = temp_dir();
+    let input = write(dir.path(), "arc.csv", &arc());
+    let out = dir.path().join("fit.csv");
+    let o = karkas(&[
+        "curve",
+        "fit",
+        s(&input),
+        "--knots",
+        "0,0.25,0.5,0.5001,0.75,1",
+        "-o",
+        s(&out),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let err = stderr(&o);
+    let line = err
+        .lines()
+        .find(|l| l.starts_with("karkas: warning: the knot span 3 holds no point"))
+        .unwrap_or_else(|| panic!("{err}"));
+    assert!(line.contains("t = 0.5..0.5001"), "{line}");
+    assert!(
+        !err.contains("crosses itself") && !err.contains(" rad"),
+        "{err}"
+    );
+}

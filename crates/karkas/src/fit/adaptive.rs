@@ -8,6 +8,7 @@
 //! are skipped; the knots never outnumber the points. Each round is one
 //! [`fit_curve`](super::fit_curve), so the cost is the number of knots added times a fit.
 
+use super::guards::with_warnings;
 use super::knots::{start_parameters, uniform_knots, MIN_KNOT_SPACING};
 use super::penalty::{check_inputs, check_settings, fit_checked, CurveFit, FitOptions};
 use crate::{Error, Point, Result};
@@ -55,7 +56,7 @@ pub fn fit_curve_adaptive<const D: usize>(
     loop {
         if fit.max_distance() <= tolerance {
             return Ok(AdaptiveFit {
-                fit,
+                fit: with_warnings(points, fit),
                 tolerance_met: true,
             });
         }
@@ -98,7 +99,7 @@ pub fn fit_curve_adaptive<const D: usize>(
         }
     }
     Ok(AdaptiveFit {
-        fit,
+        fit: with_warnings(points, fit),
         tolerance_met: false,
     })
 }

@@ -70,7 +70,9 @@ mod project_all;
 mod solver;
 
 pub use adaptive::{fit_curve_adaptive, AdaptiveFit};
-pub use guards::{FitWarning, FitWarningKind};
+pub use guards::{
+    shape_warnings, FitWarning, FitWarningKind, HOOK_TURNING, TURNING_MARGIN, TURNING_RELATIVE,
+};
 pub use hermite::HermiteSpline;
 pub use knots::{
     check_knots, knots_from_list, start_parameters, uniform_knots, StartParameters,

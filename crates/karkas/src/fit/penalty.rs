@@ -30,7 +30,7 @@
 //! Every `q_p` is found by [`Solver::minimize`], warm-started from the previous one.
 //! Cost: a few inner minimizations, each `O(n)` per iteration.
 
-use super::guards::FitWarning;
+use super::guards::{with_warnings, FitWarning};
 use super::hermite::HermiteSpline;
 use super::knots::{check_knots, start_parameters, StartParameters};
 use super::noise::{estimate_noise, NoiseEstimate};
@@ -301,7 +301,7 @@ pub fn fit_curve<const D: usize>(
 ) -> Result<CurveFit<D>> {
     let weights = check_inputs(points, knots, options)?;
     let start = start_parameters(points, &options.start)?;
-    fit_checked(points, knots, &weights, start, options)
+    fit_checked(points, knots, &weights, start, options).map(|fit| with_warnings(points, fit))
 }
 
 /// The fit after the inputs were checked.

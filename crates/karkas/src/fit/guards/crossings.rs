@@ -1,0 +1,85 @@
+//! Where a plane polyline crosses itself, for the shape guards (docs/methods.md §4): a sweep
+//! over the segments sorted by their lowest x, each tested against the segments whose x-range
+//! it overlaps (`O(m log m)` plus the pairs that overlap in x, few on a contour).
+
+/// A proper crossing of segments `a < b` (`b > a + 1`) of a polyline, at fractions `sa` and
+/// `sb` along them.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Crossing {
+    /// The first segment (from vertex `a` to `a + 1`).
+    pub a: usize,
+    /// The fraction along segment `a`.
+    pub sa: f64,
+    /// The second segment.
+    pub b: usize,
+    /// The fraction along segment `b`.
+    pub sb: f64,
+}
+
+/// Twice the signed area of the triangle `o, p, q`.
+fn orient(o: [f64; 2], p: [f64; 2], q: [f64; 2]) -> f64 {
+    (p[0] - o[0]) * (q[1] - o[1]) - (p[1] - o[1]) * (q[0] - o[0])
+}
+
+/// The proper crossings of the polyline through `vertices` (segments that share a vertex
+/// are not tested; touching without crossing does not count), in no particular order.
+pub(crate) fn crossings(vertices: &[[f64; 2]]) -> Vec<Crossing> {
+    let m = vertices.len().saturating_sub(1);
+    let lo = |k: usize| vertices[k][0].min(vertices[k + 1][0]);
+    let hi = |k: usize| vertices[k][0].max(vertices[k + 1][0]);
+    let mut order: Vec<usize> = (0..m).collect();
+    order.sort_by(|&a, &b| lo(a).total_cmp(&lo(b)));
+    let mut active: Vec<usize> = Vec::new();
+    let mut found = Vec::new();
+    for &k in &order {
+        let x = lo(k);
+        active.retain(|&j| hi(j) >= x);
+        let (p, q) = (vertices[k], vertices[k + 1]);
+        let (ylo, yhi) = (p[1].min(q[1]), p[1].max(q[1]));
+        for &j in &active {
+            if j + 1 == k || k + 1 == j {
+                continue;
+            }
+            let (c, d) = (vertices[j], vertices[j + 1]);
+            if c[1].max(d[1]) < ylo || c[1].min(d[1]) > yhi {
+                continue;
+            }
+            let (o1, o2) = (orient(p, q, c), orient(p, q, d));
+            let (o3, o4) = (orient(c, d, p), orient(c, d, q));
+            if o1 * o2 < 0.0 && o3 * o4 < 0.0 {
+                let (sk, sj) = (o3 / (o3 - o4), o1 / (o1 - o2));
+                found.push(if j < k {
+                    Crossing {
+                        a: j,
+                        sa: sj,
+                        b: k,
+                        sb: sk,
+                    }
+                } else {
+                    Crossing {
+                        a: k,
+                        sa: sk,
+                        b: j,
+                        sb: sj,
+                    }
+                });
+            }
+        }
+        active.push(k);
+    }
+    found
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_bowtie_crosses_once() {
+        let v = [[0.0, 0.0], [1.0, 1.0], [1.0, 0.0], [0.0, 1.0]];
+        let c = crossings(&v);
+        assert_eq!(c.len(), 1, "{c:?}");
+        assert_eq!((c[0].a, c[0].b), (0, 2));
+        assert!((c[0].sa - 0.5).abs() < 1e-15 && (c[0].sb - 0.5).abs() < 1e-15);
+    }
+}
