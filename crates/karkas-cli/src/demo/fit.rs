@@ -179,4 +179,18 @@ mod tests {
             );
         }
     }
+
+    /// The offsets the note gives: the printed y of points 6 to 8 against the clean section's
+    /// upper surface at the same stations, and point 8 against the lower polygon (segment 12-13).
+    #[test]
+    fn the_printed_points_6_to_8_stand_off_the_clean_section() {
+        let clean = super::super::foil_section::sampled_points();
+        let offsets: Vec<f64> = (5..8).map(|i| HYDROFOIL[i].1 - clean[i].0[1]).collect();
+        for (got, want) in offsets.iter().zip([8.1, -19.7, -26.7]) {
+            assert!((got - want).abs() < 0.05, "{offsets:?}");
+        }
+        let (a, b) = (HYDROFOIL[11], HYDROFOIL[12]);
+        let lower = a.1 + (b.1 - a.1) * (-74.8 - a.0) / (b.0 - a.0);
+        assert!((lower - HYDROFOIL[7].1 - 1.8).abs() < 0.05, "{lower}");
+    }
 }

@@ -106,10 +106,11 @@ const STEPS: [Step; 9] = [
                 eps = 0.01",
         note: Some(
             "The printed coordinates cross themselves: the upper-surface point 8 (-74.8, -94.3) \
-             lies below the lower surface, so the polygon of the points crosses itself twice, \
+             lies 1.8 below the lower surface's polygon, so the polygon of the points crosses itself twice, \
              at (-71.34, -91.00) (segments 7-8 and 12-13) and at (-78.70, -94.14) (segments \
-             8-9 and 12-13), and the upper-surface points 6 to 8 stand 7 to 27 units off a \
-             smooth section through the other 17 (transcription errors, docs/methods.md §4). \
+             8-9 and 12-13); at their stations the upper-surface points 6 to 8 lie 8.1, 19.7 \
+             and 26.7 in y off the upper surface of the next example's section, matched to the \
+             other 17 points (transcription errors, docs/methods.md §4). \
              No smooth loop-free curve can follow such points closely: the fit's large \
              deviations are the data's. The next example shows what the method does on a \
              section with known truth sampled the same way.",
