@@ -16,7 +16,13 @@ It runs headless: matplotlib's Agg backend draws straight to the PNG.
    - karkas.fit_curve: a C^1 cubic Hermite spline fitted to the noisy points with knots added
      until every point is within a tolerance (a smoothing fit, it does not chase the noise).
 3. The hydrofoil of data/hydrofoil-profile.csv is fitted on the knots of its source paper, once
-   freely and once with the paper's bound on the second-derivative jumps (eps = 0.01).
+   freely and once with the paper's bound on the second-derivative jumps (eps = 0.01). Its
+   printed points cross themselves (the upper-surface point 8 lies below the lower surface), so
+   no smooth loop-free curve follows them closely.
+4. Beside it, a clean hydrofoil with known truth: a NACA 6508-type section (4-digit mean line
+   and thickness, a 3% blunt trailing edge, cambered toward the lower surface, chord 280,
+   turned 40 degrees) sampled at the paper's 20 x stations in its order, fitted with the
+   paper's knots and eps; the largest distance of the fit from the true contour is printed.
 """
 
 import argparse
@@ -46,6 +52,55 @@ def naca4(code="2412", n=61):
     return np.vstack([upper[::-1], lower[1:]])
 
 
+def clean_section(u, upper):
+    """The clean hydrofoil's surface (upper: the side of the paper's points 1 to 10) at chordwise
+    positions u in [0, 1], in the paper's units."""
+    m, p, t = -0.06, 0.5, 0.08
+    u = np.asarray(u, float)
+    yt = 5 * t * (0.2969 * np.sqrt(u) - 0.1260 * u - 0.3516 * u**2 + 0.2843 * u**3 - 0.1015 * u**4) + 0.015 * u
+    yc = np.where(u < p, m / p**2 * (2 * p * u - u**2), m / (1 - p) ** 2 * (1 - 2 * p + 2 * p * u - u**2))
+    th = np.arctan(np.where(u < p, 2 * m / p**2 * (p - u), 2 * m / (1 - p) ** 2 * (p - u)))
+    s = 1.0 if upper else -1.0
+    a, b = u - s * yt * np.sin(th), yc + s * yt * np.cos(th)
+    c, d = np.cos(np.radians(40.0)), np.sin(np.radians(40.0))
+    return np.stack([-114.8 + 280 * (a * c - b * d), -102.6 + 280 * (a * d + b * c)], -1)
+
+
+def clean_hydrofoil():
+    """The clean section sampled like the paper's: its x stations, upper surface from the
+    trailing edge to the nose (point 10: the leftmost point), then the lower surface; and the
+    true contour between the first and last points."""
+    fine = 0.5 * (1 - np.cos(np.linspace(0.0, np.pi, 8001)))
+    upper, lower = clean_section(fine, True), clean_section(fine, False)
+    nose = int(np.argmin(upper[:, 0]))
+
+    def at(x, side, start):
+        lo, hi = fine[start], 1.0  # x grows along each surface beyond the nose: bisection
+        for _ in range(100):
+            mid = 0.5 * (lo + hi)
+            lo, hi = (mid, hi) if clean_section(mid, side)[0] < x else (lo, mid)
+        return 0.5 * (lo + hi)
+
+    stations = [94.8, 71.1, 47.4, 23.7, 0.0, -23.7, -47.1, -74.8, -106.6]
+    u_upper = [at(x, True, nose) for x in stations] + [fine[nose]]
+    u_lower = [at(x, False, 0) for x in [-106.6, -94.8, -71.1, -47.4, -23.7, 0.0, 23.7, 47.4, 71.1, 94.8]]
+    points = np.vstack([clean_section(np.array(u_upper), True), clean_section(np.array(u_lower), False)])
+    truth = np.vstack([upper[fine <= u_upper[0]][::-1], lower[(fine > 0) & (fine <= u_lower[-1])]])
+    return points, truth
+
+
+def farthest(points, line):
+    """The largest distance from a point of `points` to the polyline `line`."""
+    a, ab = line[:-1], np.diff(line, axis=0)
+    worst = 0.0
+    for chunk in np.array_split(points, max(1, len(points) // 50)):
+        ap = chunk[:, None, :] - a[None]
+        t = np.clip((ap * ab).sum(-1) / (ab * ab).sum(-1), 0.0, 1.0)
+        d = np.linalg.norm(ap - t[..., None] * ab, axis=-1).min(axis=1)
+        worst = max(worst, float(d.max()))
+    return worst
+
+
 def hydrofoil():
     path = os.path.join(HERE, "..", "data", "hydrofoil-profile.csv")
     rows = [line for line in open(path) if line[:1] not in "#x"]
@@ -69,7 +124,10 @@ def main():
     print(fit)
     print(f"fit: {len(fit.knots)} knots, largest distance {fit.max_distance:.2e}, rms {fit.rms_distance:.2e}")
 
-    fig, (ax, bx) = plt.subplots(2, 1, figsize=(9, 7.5), gridspec_kw={"height_ratios": [1, 1]})
+    fig = plt.figure(figsize=(12, 8))
+    grid = fig.add_gridspec(2, 2, height_ratios=[0.55, 1.2])
+    ax = fig.add_subplot(grid[0, :])
+    bx, cx = fig.add_subplot(grid[1, 0]), fig.add_subplot(grid[1, 1])
     ax.plot(*noisy.T, "k.", ms=4, label="61 noisy points (NACA 2412)")
     ax.plot(*spline.sample(2000).T, lw=1.0, label="CubicSpline (chord, not-a-knot)")
     ax.plot(*ll.sample(2000).T, lw=1.0, ls="--", label="LLCurve.interpolate(order=5)")
@@ -101,7 +159,26 @@ def main():
     bx.plot(*free(free.knots).T, "rs", ms=4, label="knots")
     bx.set_aspect("equal")
     bx.legend(fontsize=8)
-    bx.set_title("Hydrofoil of the source paper (its printed table has transcription errors)")
+    bx.set_title("The paper's hydrofoil: its printed points cross themselves", fontsize=10)
+
+    points, truth = clean_hydrofoil()
+    clean = karkas.fit_curve(points, knots=knots, eps=0.01)
+    curve = clean.sample(4000)
+    to_truth, from_truth = farthest(curve, truth), farthest(truth, curve)
+    print(clean)
+    print(f"paper's hydrofoil: largest point distance {bounded.max_distance:.3g}")
+    print(
+        f"clean hydrofoil: largest point distance {clean.max_distance:.3g}, rms {clean.rms_distance:.3g}; "
+        f"largest distance from the true contour {max(to_truth, from_truth):.3g} "
+        f"(fit to truth {to_truth:.3g}, truth to fit {from_truth:.3g}), chord 280"
+    )
+    cx.plot(*truth.T, "g-", lw=0.8, label="true section (NACA 6508 type)")
+    cx.plot(*points.T, "k.", ms=6, label="20 points at the paper's x stations")
+    cx.plot(*curve.T, lw=1.2, label=f"fit_curve(knots=paper's, eps=0.01): points within {clean.max_distance:.3g}")
+    cx.plot(*clean(clean.knots).T, "rs", ms=4, label=f"knots; {max(to_truth, from_truth):.3g} from the truth")
+    cx.set_aspect("equal")
+    cx.legend(fontsize=8)
+    cx.set_title("A clean hydrofoil with known truth, sampled and fitted the same way", fontsize=10)
 
     fig.tight_layout()
     fig.savefig(args.out, dpi=120)

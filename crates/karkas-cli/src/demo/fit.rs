@@ -1,8 +1,11 @@
 //! Pavlov (fitting with bounded second-derivative jumps): the paper's hydrofoil, knots
 //! (0, 0.445, 0.449, 0.587, 1), eps = 0.01 (docs/methods.md §4). The paper's deviations are printed
-//! beside ours as context: its printed coordinates carry transcription errors.
+//! beside ours as context: its printed coordinates carry transcription errors, and their
+//! polygon crosses itself (reported with where); [`super::fit_clean`] shows the method on a
+//! section with known truth sampled the same way.
 
 use super::common::{Finding, Output};
+use super::crossings::self_crossings;
 use crate::output::samples::sample_curve;
 use anyhow::{Context, Result};
 use karkas::fit::{fit_curve, FitOptions, PenaltyRule};
@@ -99,13 +102,37 @@ pub fn run(out: &Output) -> Result<Vec<Finding>> {
     write_fit_svg(
         &out.file("hydrofoil-fit.svg"),
         &FitPlot {
-            title: "Pavlov: hydrofoil, defect-2 cubic spline, eps = 0.01",
+            title: "Pavlov's printed hydrofoil (its points cross themselves), eps = 0.01",
             curve: &samples,
             points: &points,
             feet: &feet,
+            reference: &[],
         },
     )?;
+    let crossings = self_crossings(&points);
+    let places: Vec<String> = crossings
+        .iter()
+        .map(|c| {
+            format!(
+                "{}-{} x {}-{} at ({:.2}, {:.2})",
+                c.first + 1,
+                c.first + 2,
+                c.second + 1,
+                c.second + 2,
+                c.at[0],
+                c.at[1]
+            )
+        })
+        .collect();
     let mut findings = vec![
+        Finding::new(
+            example,
+            format!(
+                "self-crossings of the points' polygon (segments {})",
+                places.join("; ")
+            ),
+            crossings.len() as f64,
+        ),
         Finding::new(
             example,
             "max deviation, bound active",
@@ -127,4 +154,43 @@ pub fn run(out: &Output) -> Result<Vec<Finding>> {
     ];
     findings.extend(per_point);
     Ok(findings)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The crossings named in the demo's note, computed by hand from the paper's table
+    /// (segment 7-8 meets 12-13 at parameter 0.8751 of 7-8; 8-9 meets 12-13 at 0.1228 of 8-9).
+    #[test]
+    fn the_printed_points_cross_where_the_note_says() {
+        let points: Vec<Point2> = HYDROFOIL
+            .iter()
+            .map(|&(x, y, _)| Point2::new([x, y]))
+            .collect();
+        let found = self_crossings(&points);
+        assert_eq!(found.len(), 2);
+        let expected = [(6, 11, -71.3398, -91.0022), (7, 11, -78.7037, -94.1404)];
+        for (c, (i, j, x, y)) in found.iter().zip(expected) {
+            assert_eq!((c.first, c.second), (i, j));
+            assert!(
+                (c.at[0] - x).abs() < 1e-3 && (c.at[1] - y).abs() < 1e-3,
+                "{c:?}"
+            );
+        }
+    }
+
+    /// The offsets the note gives: the printed y of points 6 to 8 against the clean section's
+    /// upper surface at the same stations, and point 8 against the lower polygon (segment 12-13).
+    #[test]
+    fn the_printed_points_6_to_8_stand_off_the_clean_section() {
+        let clean = super::super::foil_section::sampled_points();
+        let offsets: Vec<f64> = (5..8).map(|i| HYDROFOIL[i].1 - clean[i].0[1]).collect();
+        for (got, want) in offsets.iter().zip([8.1, -19.7, -26.7]) {
+            assert!((got - want).abs() < 0.05, "{offsets:?}");
+        }
+        let (a, b) = (HYDROFOIL[11], HYDROFOIL[12]);
+        let lower = a.1 + (b.1 - a.1) * (-74.8 - a.0) / (b.0 - a.0);
+        assert!((lower - HYDROFOIL[7].1 - 1.8).abs() < 0.05, "{lower}");
+    }
 }

@@ -7,9 +7,12 @@
 mod common;
 mod coons;
 mod coons_data;
+mod crossings;
 mod data;
 mod dps;
 mod fit;
+mod fit_clean;
+mod foil_section;
 mod ll;
 mod param;
 mod param_experiment;
@@ -46,7 +49,7 @@ struct Step {
 }
 
 /// The examples, in the order of the papers.
-const STEPS: [Step; 8] = [
+const STEPS: [Step; 9] = [
     Step {
         id: "ll-contour",
         seed: "000",
@@ -102,11 +105,38 @@ const STEPS: [Step; 8] = [
         title: "The hydrofoil profile (20 points), knots (0, 0.445, 0.449, 0.587, 1), \
                 eps = 0.01",
         note: Some(
-            "The printed coordinates carry transcription errors (docs/methods.md §4): with these \
-             points and knots a careful fit lands above the paper's deviations; the method \
-             is judged on NACA sections with known truth in the test suite.",
+            "The printed coordinates cross themselves: the upper-surface point 8 (-74.8, -94.3) \
+             lies 1.8 below the lower surface's polygon, so the polygon of the points crosses itself twice, \
+             at (-71.34, -91.00) (segments 7-8 and 12-13) and at (-78.70, -94.14) (segments \
+             8-9 and 12-13); at their stations the upper-surface points 6 to 8 lie 8.1, 19.7 \
+             and 26.7 in y off the upper surface of the next example's section, matched to the \
+             other 17 points (transcription errors, docs/methods.md §4). \
+             No smooth loop-free curve can follow such points closely: the fit's large \
+             deviations are the data's. The next example shows what the method does on a \
+             section with known truth sampled the same way.",
         ),
         run: fit::run,
+    },
+    Step {
+        id: "fit-hydrofoil-clean",
+        seed: "003",
+        title: "A clean hydrofoil with known truth: a NACA 6508-type section (closed form, \
+                blunt trailing edge) like the paper's, sampled at the paper's 20 x stations in \
+                its order, the paper's knots (0, 0.445, 0.449, 0.587, 1) and eps = 0.01",
+        note: Some(
+            "The section: NACA 4-digit mean line and thickness (6% camber at half chord, 8% \
+             thick) opened linearly to a 3% blunt trailing edge, cambered toward the lower \
+             surface, chord 280, turned 40 degrees, leading edge at (-114.8, -102.6): a \
+             least-squares match to the paper's points without 6 to 8, rounded. The points \
+             stand at the paper's x stations (point 10: the leftmost point of the nose); the \
+             knots are the paper's, in the curve parameter on [0, 1] started from chord length, \
+             as in the paper's example: the close pair 0.445, 0.449 falls between points 9 and \
+             10, just before the nose, and 0.587 between points 11 and 12 after it. The \
+             paper's figure beside the largest deviation is its own fit's on its own data, \
+             for scale. The truth distances are measured both ways on 4000 samples of the fit \
+             and 4000 of the true contour between points 1 and 20.",
+        ),
+        run: fit_clean::run,
     },
     Step {
         id: "param-cylinder-hyperboloid",

@@ -7,6 +7,7 @@ mod common;
 mod contract;
 mod convert;
 mod curve_fit;
+mod demo_hydrofoil;
 mod demo_report;
 mod dps;
 mod export;

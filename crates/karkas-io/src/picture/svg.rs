@@ -233,6 +233,9 @@ pub struct FitPlot<'a> {
     pub points: &'a [Point2],
     /// The foot point of every data point on the curve (same length as `points`).
     pub feet: &'a [Point2],
+    /// A reference curve drawn thin and green under the fit (the true contour where one is
+    /// known); empty for none.
+    pub reference: &'a [Point2],
 }
 
 /// Draws `plot` and writes it as SVG to `path`, atomically.
@@ -242,8 +245,14 @@ pub fn write_fit_svg(path: &Path, plot: &FitPlot<'_>) -> Result<(), IoError> {
 
 /// Draws `plot` into an SVG document in memory; the error carries the drawing library's.
 pub fn render_fit_svg(plot: &FitPlot<'_>) -> Result<String, PictureError> {
-    let points = finite(plot.curve).chain(finite(plot.points));
+    let points = finite(plot.curve)
+        .chain(finite(plot.points))
+        .chain(finite(plot.reference));
     render_chart(plot.title, ("x", "y"), points, |chart| {
+        if !plot.reference.is_empty() {
+            let green = RGBColor(0, 150, 60).stroke_width(1);
+            chart.draw_series(LineSeries::new(finite(plot.reference), green))?;
+        }
         chart.draw_series(LineSeries::new(finite(plot.curve), BLUE.stroke_width(2)))?;
         let whisker = RGBColor(230, 120, 0).stroke_width(1);
         for (p, f) in plot.points.iter().zip(plot.feet) {
