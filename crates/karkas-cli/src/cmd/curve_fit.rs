@@ -140,12 +140,13 @@ impl CurveJob for (&CurveFitArgs, OutputFormat, Option<Vec<f64>>) {
             (Some(knots), _) => fit_curve(points, knots, &options).with_context(input)?,
             (None, Some(tol)) => {
                 let adaptive = fit_curve_adaptive(points, tol, &options).with_context(input)?;
-                if !adaptive.tolerance_met {
-                    eprintln!(
-                        "karkas: warning: tolerance {tol} not met (largest deviation {:.6}) with {} knots",
-                        adaptive.fit.max_distance(),
-                        adaptive.fit.spline.knots().len()
-                    );
+                let not_met = adaptive
+                    .fit
+                    .warnings
+                    .iter()
+                    .filter(|w| w.kind == karkas::fit::FitWarningKind::ToleranceNotMet);
+                for warning in not_met {
+                    eprintln!("karkas: warning: {warning}");
                 }
                 adaptive.fit
             }

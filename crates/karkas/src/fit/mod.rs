@@ -18,9 +18,10 @@
 //!   Levenberg–Marquardt damping and by the paper's alternation of a banded least-squares
 //!   solve with the projection of every point onto the curve; chord-length start; the ends
 //!   optionally pinned to the first and last points ([`FitOptions::pin_ends`]).
-//! - [`fit_curve_adaptive`]: knots placed automatically (uniform in chord length, then
-//!   refined where the deviation is largest) until a tolerance on the largest deviation
-//!   holds.
+//! - [`fit_curve_adaptive`]: knots placed automatically (uniform in chord length, then a
+//!   knot into every piece whose worst point lies beyond the tolerance, round after round)
+//!   until a tolerance on the largest deviation holds, or the deviation stalls (noise), with
+//!   a warning naming the best fit reached.
 //!
 //! Why the bending term: the foot-point distances do not change when the points slide
 //! along the curve, so the unconstrained problem is nearly flat along reparameterizations:
@@ -60,9 +61,10 @@ mod power;
 mod problem;
 mod project;
 mod project_all;
+mod refine;
 mod solver;
 
-pub use adaptive::{fit_curve_adaptive, AdaptiveFit};
+pub use adaptive::{fit_curve_adaptive, AdaptiveFit, AdaptiveStop};
 pub use guards::{FitWarning, FitWarningKind};
 pub use hermite::HermiteSpline;
 pub use knots::{
