@@ -5,22 +5,31 @@
 //! lengths, so these are uniform in chord length), plus the corners; fit; then, round after
 //! round, put one knot into every piece whose worst point lies beyond the tolerance, at that
 //! point's foot parameter (see `refine`), and fit again from the previous fit's foot
-//! parameters. A round at most doubles the pieces, so the knots a curve needs are reached in
-//! about `log2` of their count rounds.
+//! parameters, each round's fit capped at [`ROUND_ITERATIONS`] Newton iterations. A round at
+//! most doubles the pieces, so the knots a curve needs are reached in about `log2` of their
+//! count rounds.
 //!
 //! Stop rules, the first that holds ([`AdaptiveStop`]): every point within the tolerance;
 //! the tolerance below twice the noise estimated from the points
 //! ([`NoiseEstimate`](super::NoiseEstimate)) with the RMS distance at the noise and no longer
-//! falling (by 2% a round); the
-//! largest deviation not down by 10% over the last two rounds (noise, or data the curve
-//! cannot follow); the knots at one per two points (then the spline has as many coefficients
-//! as the points have coordinates); no piece over the tolerance that can be split (fewer than
-//! four points or too short). When the tolerance is not met the fit with the lowest largest
-//! deviation is returned (one with fewer knots when it lies within 1% of the lowest) with a
+//! falling (by 2% a round); the largest deviation not down by 10% over the last two rounds
+//! (noise, or data the curve cannot follow); the knots at one per two points (then the
+//! spline has as many coefficients as the points have coordinates); no piece over the
+//! tolerance that can be split (fewer than four points or too short).
+//!
+//! The smoothing ([`FitOptions::smoothing`]) is sized by that noise estimate: a tolerance
+//! below twice the estimate asks for a curve closer to the points than the smoothing lets it
+//! come, and on sparse points the estimate is partly the curve's own bending, so the
+//! smoothing is left out then; when the refinement stalls with it, it goes on without it from
+//! the best fit.
+//!
+//! When the tolerance is not met the fit with the lowest largest deviation is returned (one
+//! with fewer knots when it lies within 1% of the lowest) with a
 //! [`FitWarningKind::ToleranceNotMet`] warning that names it and why the refinement stopped.
 //!
-//! Cost: each fit is `O(n)` per iteration for `n` points; the rounds number about
-//! `log2(N / 4)` for `N` knots plus the stall window, so the whole is about `O(n log n)`.
+//! Cost: each fit is `O(n)` per iteration for `n` points and at most [`ROUND_ITERATIONS`]
+//! iterations; the rounds number about `log2(N / 4)` for `N` knots plus the stall window,
+//! so the whole is about `O(n log N)`.
 
 use super::guards::{FitWarning, FitWarningKind};
 use super::knots::{start_parameters, uniform_knots, MIN_KNOT_SPACING};
@@ -173,7 +182,6 @@ pub fn fit_curve_adaptive<const D: usize>(
             stop,
         });
     }
-    let mut best = best;
     let worst_at = best
         .distances
         .iter()
