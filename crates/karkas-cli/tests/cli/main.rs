@@ -10,6 +10,7 @@ mod curve_fit;
 mod demo_report;
 mod dps;
 mod export;
+mod fit_tolerance;
 mod hausdorff;
 mod meshes;
 mod output_bounds;
