@@ -11,11 +11,11 @@
 //!
 //! Stop rules, the first that holds ([`AdaptiveStop`]): every point within the tolerance;
 //! the tolerance below twice the noise estimated from the points
-//! ([`NoiseEstimate`](super::NoiseEstimate)) with the RMS distance at the noise and no longer
-//! falling (by 2% a round); the largest deviation not down by 10% over the last two rounds
+//! ([`NoiseEstimate`](super::NoiseEstimate)) with the RMS distance at the noise (within a
+//! factor 1.5) and no longer falling (by 2% a round); the largest deviation not down by 10% over the last two rounds
 //! (noise, or data the curve cannot follow); the knots at one per two points (then the
 //! spline has as many coefficients as the points have coordinates); no piece over the
-//! tolerance that can be split (fewer than four points or too short).
+//! tolerance that can be split (no point or too short).
 //!
 //! The smoothing ([`FitOptions::smoothing`]) is sized by that noise estimate: a tolerance
 //! below twice the estimate asks for a curve closer to the points than the smoothing lets it
@@ -44,13 +44,14 @@ use crate::{Error, Point, Result};
 /// knots suffice need not be minimal.
 const ROUND_ITERATIONS: usize = 20;
 /// Rounds over which the largest deviation must fall by [`STALL_GAIN`].
-const STALL_ROUNDS: usize = 2;
+const STALL_ROUNDS: usize = 3;
 /// The largest deviation stalls when it stays above this share of its value
 /// [`STALL_ROUNDS`] rounds before.
 const STALL_GAIN: f64 = 0.9;
 /// A tolerance below this many noise deviations is out of reach without following the noise.
 const NOISE_FLOOR: f64 = 2.0;
-/// The fit is at the noise when its RMS distance is within this many noise deviations.
+/// The fit is at the noise when its RMS distance is within this factor of the noise
+/// deviation (either way).
 const AT_NOISE: f64 = 1.5;
 /// The RMS distance has settled when a round lowers it by less than 2%: the shape is
 /// followed and only the noise is left.
@@ -65,13 +66,14 @@ pub enum AdaptiveStop {
     /// Every point lies within the tolerance.
     Met,
     /// The tolerance is below twice the estimated noise and the fit's RMS distance is at the
-    /// noise and fell by less than 2% in the last round: more knots would follow the noise.
+    /// noise (within a factor 1.5) and fell by less than 2% in the last round: more knots
+    /// would follow the noise.
     NoiseLevel,
     /// The largest deviation fell by less than 10% over the last two rounds.
     Stalled,
     /// The knots reached one per two points.
     KnotCap,
-    /// No piece beyond the tolerance holds enough points (four) or room to be split (or,
+    /// No piece beyond the tolerance holds a point or room to be split (or,
     /// without the bending term, a split left the spline undetermined).
     NoSplittablePiece,
 }
@@ -80,7 +82,8 @@ impl AdaptiveStop {
     /// A clause for the warning, e.g. "the deviation stalled near the noise level 1.0e-3".
     fn describe<const D: usize>(self, best: &CurveFit<D>) -> String {
         let sigma = best.noise.sigma;
-        let near_noise = sigma > 0.0 && best.rms_distance() <= AT_NOISE * sigma;
+        let rms = best.rms_distance();
+        let near_noise = sigma > 0.0 && rms <= AT_NOISE * sigma && rms >= sigma / AT_NOISE;
         match self {
             AdaptiveStop::Met => "the tolerance was met".to_string(),
             AdaptiveStop::NoiseLevel => format!(
@@ -94,7 +97,7 @@ impl AdaptiveStop {
             }
             AdaptiveStop::KnotCap => "the knots reached one per two points".to_string(),
             AdaptiveStop::NoSplittablePiece => {
-                "no piece beyond the tolerance has enough points to be split".to_string()
+                "no piece beyond the tolerance can be split further".to_string()
             }
         }
     }
@@ -231,8 +234,11 @@ fn refine<const D: usize>(
         let sigma = fit.noise.sigma;
         let rms_settled = rms_history.len() > 1
             && rms_history[rms_history.len() - 1] > RMS_GAIN * rms_history[rms_history.len() - 2];
-        if tolerance < NOISE_FLOOR * sigma && fit.rms_distance() <= AT_NOISE * sigma && rms_settled
-        {
+        let rms = fit.rms_distance();
+        // (An RMS distance far below the estimate says the estimate is the curve's own
+        // bending between sparse points, not noise.)
+        let at_noise = rms <= AT_NOISE * sigma && rms >= sigma / AT_NOISE;
+        if tolerance < NOISE_FLOOR * sigma && at_noise && rms_settled {
             break AdaptiveStop::NoiseLevel;
         }
         if history.len() > STALL_ROUNDS {

@@ -6,8 +6,9 @@
 use super::hermite::HermiteSpline;
 use super::knots::MIN_KNOT_SPACING;
 
-/// A piece holding fewer points than this is not split (each half keeps about two).
-pub(crate) const MIN_POINTS_TO_SPLIT: usize = 4;
+/// A piece holding fewer points than this is not split (the bending term keeps a piece with
+/// no point determined; without it a split that leaves the spline undetermined is undone).
+pub(crate) const MIN_POINTS_TO_SPLIT: usize = 1;
 /// A new knot stays this share of its piece away from the piece's ends.
 const KNOT_MARGIN: f64 = 0.25;
 
@@ -43,7 +44,7 @@ pub(crate) fn worst_per_piece<const D: usize>(
 }
 
 /// The knots after one round: `knots` plus one knot in each piece whose worst distance
-/// exceeds `tolerance` and that can be split (at least [`MIN_POINTS_TO_SPLIT`] points, wider
+/// exceeds `tolerance` and that can be split (at least [`MIN_POINTS_TO_SPLIT`] point, wider
 /// than four times [`MIN_KNOT_SPACING`]), the worst pieces first, at most `budget` new knots.
 /// Returns the knots and how many were added (0: nothing over the tolerance can be split).
 pub(crate) fn refined_knots(
