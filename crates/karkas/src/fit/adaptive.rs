@@ -23,6 +23,9 @@
 //! smoothing is left out then; when the refinement stalls with it, it goes on without it from
 //! the best fit.
 //!
+//! When the tolerance is met on a small problem (points times knots at most 2e5), the knots
+//! it does not need are taken out again one at a time (see `prune`).
+//!
 //! When the tolerance is not met the fit with the lowest largest deviation is returned (one
 //! with fewer knots when it lies within 1% of the lowest) with a
 //! [`FitWarningKind::ToleranceNotMet`] warning that names it and why the refinement stopped.
@@ -35,6 +38,7 @@ use super::guards::{FitWarning, FitWarningKind};
 use super::knots::{start_parameters, uniform_knots, MIN_KNOT_SPACING};
 use super::noise::estimate_noise;
 use super::penalty::{check_inputs, check_settings, fit_checked, CurveFit, FitOptions};
+use super::prune::prune;
 use super::refine::{refined_knots, worst_per_piece};
 use crate::{Error, Point, Result};
 
@@ -112,7 +116,8 @@ pub struct AdaptiveFit<const D: usize> {
     pub fit: CurveFit<D>,
     /// True when every point lies within the tolerance of the curve.
     pub tolerance_met: bool,
-    /// The fits made (the first one counts).
+    /// The refinement rounds: the fits made on growing knots, the first one included (the
+    /// trials of the pruning pass not).
     pub rounds: usize,
     /// Why the knots stopped being added.
     pub stop: AdaptiveStop,
@@ -178,6 +183,7 @@ pub fn fit_curve_adaptive<const D: usize>(
         }
     }
     if stop == AdaptiveStop::Met {
+        let best = prune(points, tolerance, options, best, warm_parameters)?;
         return Ok(AdaptiveFit {
             fit: best,
             tolerance_met: true,

@@ -61,6 +61,7 @@ mod power;
 mod problem;
 mod project;
 mod project_all;
+mod prune;
 mod refine;
 mod solver;
 
