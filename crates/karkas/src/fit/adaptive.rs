@@ -12,7 +12,7 @@
 //! Stop rules, the first that holds ([`AdaptiveStop`]): every point within the tolerance;
 //! the tolerance below twice the noise estimated from the points
 //! ([`NoiseEstimate`](super::NoiseEstimate)) with the RMS distance at the noise (within a
-//! factor 1.5) and no longer falling (by 2% a round); the largest deviation not down by 10% over the last two rounds
+//! factor 1.5) and no longer falling (by 2% a round); the largest deviation not down by 10% over the last three rounds
 //! (noise, or data the curve cannot follow); the knots at one per two points (then the
 //! spline has as many coefficients as the points have coordinates); no piece over the
 //! tolerance that can be split (no point or too short).
@@ -73,7 +73,7 @@ pub enum AdaptiveStop {
     /// noise (within a factor 1.5) and fell by less than 2% in the last round: more knots
     /// would follow the noise.
     NoiseLevel,
-    /// The largest deviation fell by less than 10% over the last two rounds.
+    /// The largest deviation fell by less than 10% over the last three rounds.
     Stalled,
     /// The knots reached one per two points.
     KnotCap,
