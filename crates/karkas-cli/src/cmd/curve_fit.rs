@@ -156,15 +156,9 @@ impl CurveJob for (&CurveFitArgs, OutputFormat, Option<Vec<f64>>) {
         let fit: CurveFit<D> = match (knots, args.tolerance) {
             (Some(knots), _) => fit_curve(points, knots, &options).with_context(input)?,
             (None, Some(tol)) => {
-                let adaptive = fit_curve_adaptive(points, tol, &options).with_context(input)?;
-                if !adaptive.tolerance_met {
-                    eprintln!(
-                        "karkas: warning: tolerance {tol} not met (largest deviation {:.6}) with {} knots",
-                        adaptive.fit.max_distance(),
-                        adaptive.fit.spline.knots().len()
-                    );
-                }
-                adaptive.fit
+                fit_curve_adaptive(points, tol, &options)
+                    .with_context(input)?
+                    .fit
             }
             (None, None) => bail!("give --knots or --tolerance"),
         };

@@ -11,6 +11,7 @@ mod demo_hydrofoil;
 mod demo_report;
 mod dps;
 mod export;
+mod fit_tolerance;
 mod hausdorff;
 mod meshes;
 mod output_bounds;

@@ -1,30 +1,132 @@
-//! Knots placed automatically until a tolerance on the largest deviation holds.
+//! Knots placed automatically until a tolerance on the largest deviation holds (the tolerance
+//! mode of Pavlov's defect-2 fit, docs/methods.md §4).
 //!
 //! Start from a few knots uniform in the parameter (the starting parameters are chord
-//! lengths, so these are uniform in chord length), plus the corners; fit; while the largest
-//! point distance exceeds the tolerance, halve the piece holding the foot point of the worst
-//! point (the piece with the largest deviation) and fit again. Pieces that cannot be halved
-//! (shorter than twice [`MIN_KNOT_SPACING`], or whose halving leaves the spline undetermined)
-//! are skipped; the knots never outnumber the points. Each round is one
-//! [`fit_curve`](super::fit_curve), so the cost is the number of knots added times a fit.
+//! lengths, so these are uniform in chord length), plus the corners; fit; then, round after
+//! round, put one knot into every piece whose worst point lies beyond the tolerance, at that
+//! point's foot parameter (see `refine`), and fit again from the previous fit's foot
+//! parameters, each round's fit capped at [`ROUND_ITERATIONS`] Newton iterations. A round at
+//! most doubles the pieces, so the knots a curve needs are reached in about `log2` of their
+//! count rounds.
+//!
+//! Stop rules, the first that holds ([`AdaptiveStop`]): every point within the tolerance;
+//! the tolerance below twice the noise estimated from the points
+//! ([`NoiseEstimate`](super::NoiseEstimate)) with the RMS distance at the noise (within a
+//! factor 1.5) and no longer falling (by 2% a round); the largest deviation not down by 10% over the last three rounds
+//! (noise, or data the curve cannot follow); the knots at one per two points (then the
+//! spline has as many coefficients as the points have coordinates); no piece over the
+//! tolerance that can be split (no point or too short).
+//!
+//! The smoothing ([`FitOptions::smoothing`]) is sized by that noise estimate: a tolerance
+//! below twice the estimate asks for a curve closer to the points than the smoothing lets it
+//! come, and on sparse points the estimate is partly the curve's own bending, so the
+//! smoothing is left out then; when the refinement stalls with it, it goes on without it from
+//! the best fit.
+//!
+//! When the tolerance is met on a small problem (points times knots at most 2e5), the knots
+//! it does not need are taken out again one at a time (see `prune`).
+//!
+//! When the tolerance is not met the fit with the lowest largest deviation is returned (one
+//! with fewer knots when it lies within 1% of the lowest) with a
+//! [`FitWarningKind::ToleranceNotMet`] warning that names it and why the refinement stopped.
+//!
+//! Cost: each fit is `O(n)` per iteration for `n` points and at most [`ROUND_ITERATIONS`]
+//! iterations; the rounds number about `log2(N / 4)` for `N` knots plus the stall window,
+//! so the whole is about `O(n log N)`.
 
-use super::guards::with_warnings;
+use super::guards::{with_warnings, FitWarning, FitWarningKind};
 use super::knots::{start_parameters, uniform_knots, MIN_KNOT_SPACING};
+use super::noise::estimate_noise;
 use super::penalty::{check_inputs, check_settings, fit_checked, CurveFit, FitOptions};
+use super::prune::prune;
+use super::refine::{refined_knots, worst_per_piece};
 use crate::{Error, Point, Result};
+
+/// The most Newton iterations of one round's fit: each round starts from the previous
+/// fit's foot parameters, and the distances of a fit stopped early are still the true
+/// distances of its curve, so the tolerance is judged honestly; the fits made before the
+/// knots suffice need not be minimal.
+const ROUND_ITERATIONS: usize = 20;
+/// Rounds over which the largest deviation must fall by [`STALL_GAIN`].
+const STALL_ROUNDS: usize = 3;
+/// The largest deviation stalls when it stays above this share of its value
+/// [`STALL_ROUNDS`] rounds before.
+const STALL_GAIN: f64 = 0.9;
+/// A tolerance below this many noise deviations is out of reach without following the noise.
+const NOISE_FLOOR: f64 = 2.0;
+/// The fit is at the noise when its RMS distance is within this factor of the noise
+/// deviation (either way).
+const AT_NOISE: f64 = 1.5;
+/// The RMS distance has settled when a round lowers it by less than 2%: the shape is
+/// followed and only the noise is left.
+const RMS_GAIN: f64 = 0.98;
+/// A fit with fewer knots is kept when its largest deviation is within this factor of a
+/// later one's.
+const KEEP_FEWER: f64 = 1.01;
+
+/// Why [`fit_curve_adaptive`] stopped adding knots.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum AdaptiveStop {
+    /// Every point lies within the tolerance.
+    Met,
+    /// The tolerance is below twice the estimated noise and the fit's RMS distance is at the
+    /// noise (within a factor 1.5) and fell by less than 2% in the last round: more knots
+    /// would follow the noise.
+    NoiseLevel,
+    /// The largest deviation fell by less than 10% over the last three rounds.
+    Stalled,
+    /// The knots reached one per two points.
+    KnotCap,
+    /// No piece beyond the tolerance holds a point or room to be split (or,
+    /// without the bending term, a split left the spline undetermined).
+    NoSplittablePiece,
+}
+
+impl AdaptiveStop {
+    /// A clause for the warning, e.g. "the deviation stalled near the noise level 1.0e-3".
+    fn describe<const D: usize>(self, best: &CurveFit<D>) -> String {
+        let sigma = best.noise.sigma;
+        let rms = best.rms_distance();
+        let near_noise = sigma > 0.0 && rms <= AT_NOISE * sigma && rms >= sigma / AT_NOISE;
+        match self {
+            AdaptiveStop::Met => "the tolerance was met".to_string(),
+            AdaptiveStop::NoiseLevel => format!(
+                "the tolerance is below twice the noise level {sigma:.1e} and the fit has reached it"
+            ),
+            AdaptiveStop::Stalled if near_noise => {
+                format!("the deviation stalled near the noise level {sigma:.1e}")
+            }
+            AdaptiveStop::Stalled => {
+                "the deviation stopped falling as knots were added".to_string()
+            }
+            AdaptiveStop::KnotCap => "the knots reached one per two points".to_string(),
+            AdaptiveStop::NoSplittablePiece => {
+                "no piece beyond the tolerance can be split further".to_string()
+            }
+        }
+    }
+}
 
 /// The result of [`fit_curve_adaptive`].
 #[derive(Clone, Debug)]
 pub struct AdaptiveFit<const D: usize> {
-    /// The last fit (on the knots it chose: `fit.spline.knots()`).
+    /// The fit returned: the first that met the tolerance, or else the one with the lowest
+    /// largest deviation (on the knots it chose: `fit.spline.knots()`). When the tolerance
+    /// was not met, its `warnings` hold a [`FitWarningKind::ToleranceNotMet`].
     pub fit: CurveFit<D>,
     /// True when every point lies within the tolerance of the curve.
     pub tolerance_met: bool,
+    /// The refinement rounds: the fits made on growing knots, the first one included (the
+    /// trials of the pruning pass not).
+    pub rounds: usize,
+    /// Why the knots stopped being added.
+    pub stop: AdaptiveStop,
 }
 
 /// Fits with knots chosen automatically until every point lies within `tolerance` of the
-/// curve (or no piece can be split further). `options` as for
-/// [`fit_curve`](super::fit_curve); the corners become knots.
+/// curve, or until more knots stop helping (see the [module docs](crate::fit) and
+/// [`AdaptiveStop`]). `options` as for [`fit_curve`](super::fit_curve); the corners become
+/// knots.
 ///
 /// Errors: a tolerance that is not positive and finite ([`Error::InvalidSetting`]), and those
 /// of [`fit_curve`](super::fit_curve) for the first fit.
@@ -41,65 +143,183 @@ pub fn fit_curve_adaptive<const D: usize>(
         });
     }
     check_settings(options)?;
+    // The smoothing is sized by the noise estimated from the points: a tolerance below twice
+    // that estimate asks for a curve closer to the points than the smoothing would let it
+    // come (and on sparse points the estimate is partly the curve's own bending).
+    let sigma = estimate_noise(points).sigma;
+    let options = &FitOptions {
+        max_iterations: options.max_iterations.min(ROUND_ITERATIONS),
+        smoothing: if tolerance < NOISE_FLOOR * sigma {
+            0.0
+        } else {
+            options.smoothing
+        },
+        ..options.clone()
+    };
     let start = start_parameters(points, &options.start)?;
-    let pieces = (points.len() / 4).clamp(1, 4);
+    let knots = first_knots(points.len(), &options.corners);
+    let weights = check_inputs(points, &knots, options)?;
+    let first = fit_checked(points, &knots, &weights, start, options)?;
+    let cap = (points.len() / 2).max(knots.len());
+    let mut rounds = 1;
+    let (mut stop, mut best) = refine(points, tolerance, options, cap, first, &mut rounds)?;
+    let held_off = matches!(stop, AdaptiveStop::Stalled | AdaptiveStop::NoiseLevel);
+    if held_off && options.smoothing > 0.0 {
+        // The smoothing is sized by the noise estimated from the points, which on sparse
+        // points is partly the curve's own bending: go on without it from the best fit.
+        let plain = &FitOptions {
+            smoothing: 0.0,
+            ..options.clone()
+        };
+        let knots = best.spline.knots();
+        let weights = check_inputs(points, knots, plain)?;
+        let start = warm_parameters(&best.parameters);
+        let refit = fit_checked(points, knots, &weights, start, plain)?;
+        rounds += 1;
+        let kept = best;
+        (stop, best) = refine(points, tolerance, plain, cap, refit, &mut rounds)?;
+        if stop != AdaptiveStop::Met && kept.max_distance() <= best.max_distance() * KEEP_FEWER {
+            best = kept;
+        }
+    }
+    if stop == AdaptiveStop::Met {
+        let best = prune(points, tolerance, options, best, warm_parameters)?;
+        return Ok(AdaptiveFit {
+            fit: with_warnings(points, best),
+            tolerance_met: true,
+            rounds,
+            stop,
+        });
+    }
+    let mut best = with_warnings(points, best);
+    let worst_at = best
+        .distances
+        .iter()
+        .enumerate()
+        .fold(
+            (0, -1.0),
+            |(i, m), (j, &d)| if d > m { (j, d) } else { (i, m) },
+        )
+        .0;
+    let message = format!(
+        "tolerance {tolerance:e} not met: the best fit reached max deviation {:.3e} with {} knots (stopped: {})",
+        best.max_distance(),
+        best.spline.knots().len(),
+        stop.describe(&best)
+    );
+    best.warnings.push(FitWarning {
+        kind: FitWarningKind::ToleranceNotMet,
+        parameter: best.parameters[worst_at],
+        message,
+    });
+    Ok(AdaptiveFit {
+        fit: best,
+        tolerance_met: false,
+        rounds,
+        stop,
+    })
+}
+
+/// Adds knots round after round from `fit` until a stop rule holds; returns the rule and the
+/// fit to keep: the one that met the tolerance, or the one with the lowest largest deviation
+/// (an earlier one with fewer knots when within [`KEEP_FEWER`]).
+fn refine<const D: usize>(
+    points: &[Point<D>],
+    tolerance: f64,
+    options: &FitOptions,
+    cap: usize,
+    mut fit: CurveFit<D>,
+    rounds: &mut usize,
+) -> Result<(AdaptiveStop, CurveFit<D>)> {
+    let mut history = vec![fit.max_distance()];
+    let mut rms_history = vec![fit.rms_distance()];
+    let mut best = fit.clone();
+    let stop = loop {
+        if fit.max_distance() <= tolerance {
+            return Ok((AdaptiveStop::Met, fit));
+        }
+        let sigma = fit.noise.sigma;
+        let rms_settled = rms_history.len() > 1
+            && rms_history[rms_history.len() - 1] > RMS_GAIN * rms_history[rms_history.len() - 2];
+        let rms = fit.rms_distance();
+        // (An RMS distance far below the estimate says the estimate is the curve's own
+        // bending between sparse points, not noise.)
+        let at_noise = rms <= AT_NOISE * sigma && rms >= sigma / AT_NOISE;
+        if tolerance < NOISE_FLOOR * sigma && at_noise && rms_settled {
+            break AdaptiveStop::NoiseLevel;
+        }
+        if history.len() > STALL_ROUNDS {
+            let before = history[history.len() - 1 - STALL_ROUNDS];
+            let recent = history[history.len() - STALL_ROUNDS..]
+                .iter()
+                .fold(f64::INFINITY, |m, &d| m.min(d));
+            if recent > STALL_GAIN * before {
+                break AdaptiveStop::Stalled;
+            }
+        }
+        let knots = fit.spline.knots().to_vec();
+        if knots.len() >= cap {
+            break AdaptiveStop::KnotCap;
+        }
+        let worst = worst_per_piece(&fit.spline, &fit.parameters, &fit.distances);
+        let mut budget = cap - knots.len();
+        let next = loop {
+            let (finer, added) = refined_knots(&knots, &worst, tolerance, budget);
+            if added == 0 {
+                break None;
+            }
+            let weights = check_inputs(points, &finer, options)?;
+            let start = warm_parameters(&fit.parameters);
+            match fit_checked(points, &finer, &weights, start, options) {
+                Ok(next) => break Some(next),
+                // Without the bending term a split can leave a piece undetermined: try
+                // fewer new knots, the worst pieces first.
+                Err(Error::SingularSystem { .. }) if added > 1 => budget = added / 2,
+                Err(Error::SingularSystem { .. }) => break None,
+                Err(e) => return Err(e),
+            }
+        };
+        let Some(next) = next else {
+            break AdaptiveStop::NoSplittablePiece;
+        };
+        *rounds += 1;
+        fit = next;
+        history.push(fit.max_distance());
+        rms_history.push(fit.rms_distance());
+        if fit.max_distance() * KEEP_FEWER < best.max_distance() {
+            best = fit.clone();
+        }
+    };
+    Ok((stop, best))
+}
+
+/// The first knots: a few uniform ones (up to 4 pieces, one per four points) and the corners.
+fn first_knots(points: usize, corners: &[f64]) -> Vec<f64> {
+    let pieces = (points / 4).clamp(1, 4);
     let mut knots = uniform_knots(pieces + 1);
-    for &corner in &options.corners {
+    for &corner in corners {
         knots.retain(|&k| (k - corner).abs() >= MIN_KNOT_SPACING || k == 0.0 || k == 1.0);
         knots.push(corner);
     }
     knots.sort_by(f64::total_cmp);
     knots.dedup();
-    let weights = check_inputs(points, &knots, options)?;
-    let mut fit = fit_checked(points, &knots, &weights, start.clone(), options)?;
-    let mut frozen: Vec<(f64, f64)> = Vec::new();
-    loop {
-        if fit.max_distance() <= tolerance {
-            return Ok(AdaptiveFit {
-                fit: with_warnings(points, fit),
-                tolerance_met: true,
-            });
-        }
-        let knots = fit.spline.knots().to_vec();
-        if knots.len() >= points.len() {
-            break;
-        }
-        // Worst deviation per piece.
-        let mut worst = vec![0.0f64; knots.len() - 1];
-        for (&t, &d) in fit.parameters.iter().zip(&fit.distances) {
-            let piece = fit.spline.locate(t).0;
-            worst[piece] = worst[piece].max(d);
-        }
-        let mut order: Vec<usize> = (0..worst.len()).collect();
-        order.sort_by(|&a, &b| worst[b].total_cmp(&worst[a]));
-        let mut refined = None;
-        for piece in order {
-            if worst[piece] <= tolerance {
-                break;
-            }
-            let (a, b) = (knots[piece], knots[piece + 1]);
-            if b - a < 2.0 * MIN_KNOT_SPACING || frozen.contains(&(a, b)) {
-                continue;
-            }
-            let mut finer = knots.clone();
-            finer.insert(piece + 1, 0.5 * (a + b));
-            let weights = check_inputs(points, &finer, options)?;
-            match fit_checked(points, &finer, &weights, start.clone(), options) {
-                Ok(next) => {
-                    refined = Some(next);
-                    break;
-                }
-                Err(Error::SingularSystem { .. }) => frozen.push((a, b)),
-                Err(e) => return Err(e),
-            }
-        }
-        match refined {
-            Some(next) => fit = next,
-            None => break,
-        }
+    knots
+}
+
+/// The previous fit's foot parameters as the next fit's start: clamped to `[0, 1]`,
+/// non-decreasing, from 0 to 1.
+fn warm_parameters(parameters: &[f64]) -> Vec<f64> {
+    let mut start = Vec::with_capacity(parameters.len());
+    let mut last = 0.0f64;
+    for &t in parameters {
+        last = last.max(t.clamp(0.0, 1.0));
+        start.push(last);
     }
-    Ok(AdaptiveFit {
-        fit: with_warnings(points, fit),
-        tolerance_met: false,
-    })
+    if let Some(first) = start.first_mut() {
+        *first = 0.0;
+    }
+    if let Some(end) = start.last_mut() {
+        *end = 1.0;
+    }
+    start
 }

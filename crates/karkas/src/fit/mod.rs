@@ -22,10 +22,12 @@
 //!   the foot-point parameters are kept in the order of the points, the noise is estimated
 //!   from the points and the bending weight made dimensionless (size, turning, points per
 //!   piece) and proportional to the noise; the result carries the estimate and
-//!   [`FitWarning`]s (docs/methods.md §4, "On real and noisy data").
-//! - [`fit_curve_adaptive`]: knots placed automatically (uniform in chord length, then
-//!   refined where the deviation is largest) until a tolerance on the largest deviation
-//!   holds.
+//!   [`FitWarning`]s from the shape guards ([`shape_warnings`]: crossings, excess turning,
+//!   sparse pieces, empty spans; docs/methods.md §4, "On real and noisy data").
+//! - [`fit_curve_adaptive`]: knots placed automatically (uniform in chord length, then a
+//!   knot into every piece whose worst point lies beyond the tolerance, round after round)
+//!   until a tolerance on the largest deviation holds, or the deviation stalls (noise), with
+//!   a warning naming the best fit reached.
 //!
 //! Why the bending term: the foot-point distances do not change when the points slide
 //! along the curve, so the unconstrained problem is nearly flat along reparameterizations:
@@ -67,9 +69,11 @@ mod power;
 mod problem;
 mod project;
 mod project_all;
+mod prune;
+mod refine;
 mod solver;
 
-pub use adaptive::{fit_curve_adaptive, AdaptiveFit};
+pub use adaptive::{fit_curve_adaptive, AdaptiveFit, AdaptiveStop};
 pub use guards::{
     shape_warnings, FitWarning, FitWarningKind, HOOK_TURNING, TURNING_MARGIN, TURNING_RELATIVE,
 };

@@ -16,6 +16,7 @@ mod coons_surface;
 mod dps_bspline;
 mod dps_interpolation;
 mod dps_tube;
+mod fit_adaptive;
 mod fit_guards;
 mod fit_limits;
 mod fit_naca;
