@@ -34,10 +34,12 @@
 //! iterations; the rounds number about `log2(N / 4)` for `N` knots plus the stall window,
 //! so the whole is about `O(n log N)`.
 
-use super::guards::{with_warnings, FitWarning, FitWarningKind};
+use super::guards::{shape_faults, with_warnings, FitWarning, FitWarningKind};
 use super::knots::{start_parameters, uniform_knots, MIN_KNOT_SPACING};
 use super::noise::estimate_noise;
-use super::penalty::{check_inputs, check_settings, fit_checked, CurveFit, FitOptions};
+use super::penalty::{
+    check_inputs, check_settings, fit_checked, CurveFit, FitOptions, DEFAULT_SMOOTHING,
+};
 use super::prune::prune;
 use super::refine::{refined_knots, worst_per_piece};
 use crate::{Error, Point, Result};
@@ -143,6 +145,7 @@ pub fn fit_curve_adaptive<const D: usize>(
         });
     }
     check_settings(options)?;
+    let asked = options.smoothing;
     // The smoothing is sized by the noise estimated from the points: a tolerance below twice
     // that estimate asks for a curve closer to the points than the smoothing would let it
     // come (and on sparse points the estimate is partly the curve's own bending).
@@ -183,6 +186,7 @@ pub fn fit_curve_adaptive<const D: usize>(
         }
     }
     if stop == AdaptiveStop::Met {
+        let best = smoothed_if_faulty(points, tolerance, options, asked, best)?;
         let best = prune(points, tolerance, options, best, warm_parameters)?;
         return Ok(AdaptiveFit {
             fit: with_warnings(points, best),
@@ -218,6 +222,47 @@ pub fn fit_curve_adaptive<const D: usize>(
         rounds,
         stop,
     })
+}
+
+/// Smoothing tried, in turn, on a fit within the tolerance that crosses itself or turns too
+/// much (a wiggle between sparse points), as multiples of the smoothing asked for (or of the
+/// default where none was asked).
+const FAULT_SMOOTHING: [f64; 3] = [1.0, 10.0, 100.0];
+
+/// `fit` (within `tolerance`), or, when it crosses itself or turns more than its points
+/// (see [`shape_faults`]), the first refit on its knots with more smoothing that is within the
+/// tolerance and sound: the smoothing evens out wiggles that the knots allow between sparse
+/// points.
+fn smoothed_if_faulty<const D: usize>(
+    points: &[Point<D>],
+    tolerance: f64,
+    options: &FitOptions,
+    asked: f64,
+    fit: CurveFit<D>,
+) -> Result<CurveFit<D>> {
+    if shape_faults(points, &fit).is_empty() {
+        return Ok(fit);
+    }
+    let unit = if asked > 0.0 {
+        asked
+    } else {
+        DEFAULT_SMOOTHING
+    };
+    for factor in FAULT_SMOOTHING {
+        let smoother = FitOptions {
+            smoothing: unit * factor,
+            ..options.clone()
+        };
+        let knots = fit.spline.knots();
+        let weights = check_inputs(points, knots, &smoother)?;
+        let start = warm_parameters(&fit.parameters);
+        if let Ok(trial) = fit_checked(points, knots, &weights, start, &smoother) {
+            if trial.max_distance() <= tolerance && shape_faults(points, &trial).is_empty() {
+                return Ok(trial);
+            }
+        }
+    }
+    Ok(fit)
 }
 
 /// Adds knots round after round from `fit` until a stop rule holds; returns the rule and the

@@ -104,6 +104,22 @@ pub(crate) fn with_warnings<const D: usize>(
     fit
 }
 
+/// The parameters where `fit` crosses itself or turns too much (the shape faults among
+/// [`shape_warnings`]); empty for a sound fit. The tolerance mode adds knots there, and
+/// removes no knot that makes one.
+pub(crate) fn shape_faults<const D: usize>(points: &[Point<D>], fit: &CurveFit<D>) -> Vec<f64> {
+    shape_warnings(points, fit)
+        .into_iter()
+        .filter(|w| {
+            matches!(
+                w.kind,
+                FitWarningKind::SelfIntersection | FitWarningKind::ExcessTurning
+            )
+        })
+        .map(|w| w.parameter)
+        .collect()
+}
+
 /// The shape warnings of a fit of `points` (see the module documentation): crossings of the
 /// curve where the point polygon does not cross itself, turning beyond the polygon's (in all,
 /// and hooks or loops between the foot points of a run of points), adjacent pieces holding

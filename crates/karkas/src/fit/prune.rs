@@ -1,9 +1,10 @@
 //! The last step of the tolerance mode of Pavlov's defect-2 fit (docs/methods.md §4): knots
 //! that the tolerance does not need are taken out again, one at a time, each removal kept
 //! when the refit (warm-started from the foot parameters) still has every point within the
-//! tolerance. Every trial is a fit, so the pass runs only on small problems (points times
+//! tolerance and neither crosses itself nor turns too much (the shape guards). Every trial is a fit, so the pass runs only on small problems (points times
 //! knots at most [`PRUNE_WORK`]).
 
+use super::guards::shape_faults;
 use super::penalty::{check_inputs, fit_checked, CurveFit, FitOptions};
 use crate::{Point, Result};
 
@@ -37,7 +38,11 @@ pub(crate) fn prune<const D: usize>(
         fewer.remove(at);
         let weights = check_inputs(points, &fewer, options)?;
         match fit_checked(points, &fewer, &weights, start(&fit.parameters), options) {
-            Ok(trial) if trial.max_distance() <= tolerance => fit = trial,
+            Ok(trial)
+                if trial.max_distance() <= tolerance && shape_faults(points, &trial).is_empty() =>
+            {
+                fit = trial
+            }
             _ => at += 1,
         }
     }
