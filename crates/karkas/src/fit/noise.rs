@@ -16,7 +16,7 @@
 //! The bending term `lambda int |R''(t)|^2 dt` is weighted
 //! `lambda = (rho phi + s psi (sigma / L)^2) n tau`, with `n` the number of points, `L` the
 //! diagonal of the points' bounding box, `rho` the fairness floor
-//! ([`super::FitOptions::fairness`]), `phi = min(1, (8 / m)^2)` and `psi = min(1, 64 / m)` the
+//! ([`super::FitOptions::fairness`]), `phi = min(1, (8 / m)^2)` and `psi = min(1, (64 / m)^2)` the
 //! shares kept when the pieces hold many points (`m = n / pieces` per piece),
 //! `s` the smoothing ([`super::FitOptions::smoothing`]) and `tau = (2 pi / max(Theta,
 //! 2 pi))^4`, where `Theta` is the total turning of the point polygon (taken through at most
@@ -60,7 +60,7 @@ impl NoiseEstimate {
         };
         let per_piece = n as f64 / pieces.max(1) as f64;
         let floor = rho * (SPARSE_POINTS_PER_PIECE / per_piece).min(1.0).powi(2);
-        let noise = s * (NOISY_POINTS_PER_PIECE / per_piece).min(1.0) * relative * relative;
+        let noise = s * (NOISY_POINTS_PER_PIECE / per_piece).min(1.0).powi(2) * relative * relative;
         (floor + noise) * n as f64 * self.turning_factor()
     }
 }
@@ -72,8 +72,9 @@ impl NoiseEstimate {
 /// a single point holds, inwards (by about `lambda |R''|` there, growing with `n`).
 const SPARSE_POINTS_PER_PIECE: f64 = 8.0;
 /// Points per piece up to which the noise term is kept whole: beyond, its share is
-/// `64 / (n / pieces)`. The noise left in a piece's coefficients falls as the square root of
-/// its points, so dense pieces need less smoothing, and would only pay its bias.
+/// `(64 / (n / pieces))^2`. The noise left in a piece's coefficients falls as the square
+/// root of its points, so dense pieces need less smoothing, and would only pay its bias and
+/// its cost (the bending term is what the iteration converges slowest on).
 const NOISY_POINTS_PER_PIECE: f64 = 64.0;
 
 /// Estimates the noise, size and turning of `points` (see the module documentation).

@@ -41,6 +41,8 @@ use crate::{Curve, Error, Point, Result};
 
 /// Iterations spent on the feasible reference `q*` of the paper's bound.
 const REFERENCE_ITERATIONS: usize = 5;
+/// Iterations of the unconstrained fit with ordered parameters, after the free one.
+const ORDERED_ITERATIONS: usize = 8;
 /// Minimizations at a held `p` that polish the active bound's fit, at most.
 const POLISH_STEPS: usize = 8;
 
@@ -334,7 +336,13 @@ pub(crate) fn fit_checked<const D: usize>(
         floor: SETTLED_SHARE_OF_SIZE * noise.size,
     };
     let mut state = State::<D>::blank(knots, start.clone());
-    let mut solver = Solver::new(problem, &state.spline);
+    let mut solver = Solver::new(
+        Problem {
+            ordered: false,
+            ..problem
+        },
+        &state.spline,
+    );
     let mut iterations = 0;
     let finish = |state: State<D>, p: f64, seed_bound: f64, iterations: usize| CurveFit {
         jump_sum: state.spline.jump_penalty(weights),
@@ -353,11 +361,24 @@ pub(crate) fn fit_checked<const D: usize>(
     };
     let f_of = |s: &State<D>| s.spline.jump_penalty(weights);
 
-    // 1. The unconstrained fit.
+    // 1. The unconstrained fit: first with every foot point free (the Newton model is exact
+    // for free foot points, and converges in a few steps), then with the parameters ordered
+    // from there (runs pooled out of order) for at most ORDERED_ITERATIONS steps: every
+    // projection orders the parameters, so the result is ordered however many steps run,
+    // and the pooled runs, which the model treats as free foot points, slow it down.
     match solver.solve_fixed(&mut state, 0.0) {
         Ok(()) => {
             solver.project(&mut state);
             iterations += solver.minimize(&mut state, Penalty::Fixed(0.0), stop)?.0;
+            if problem.ordered {
+                solver.set_ordered(true);
+                solver.project(&mut state);
+                let ordered = Stop {
+                    max_iterations: stop.max_iterations.min(ORDERED_ITERATIONS),
+                    ..stop
+                };
+                iterations += solver.minimize(&mut state, Penalty::Fixed(0.0), ordered)?.0;
+            }
             if f_of(&state) <= options.eps {
                 return Ok(finish(state, 0.0, 0.0, iterations));
             }
@@ -367,6 +388,7 @@ pub(crate) fn fit_checked<const D: usize>(
             // Too few points for the unconstrained fit: start from the fit with the jumps
             // held to zero (always determined when the points determine one cubic).
             state.params.copy_from_slice(&start);
+            solver.set_ordered(problem.ordered);
             solver.solve_fixed(&mut state, 1.0)?;
             solver.project(&mut state);
         }

@@ -139,6 +139,11 @@ impl<'a, const D: usize> Solver<'a, D> {
         }
     }
 
+    /// Keeps the foot-point parameters in the order of the points from now on (or not).
+    pub fn set_ordered(&mut self, ordered: bool) {
+        self.problem.ordered = ordered;
+    }
+
     /// `F = H + p f + lambda S` of a state.
     pub fn objective(&self, state: &State<D>, p: f64) -> f64 {
         objective(&self.problem, state, p)
