@@ -380,7 +380,12 @@ pub(crate) fn fit_checked<const D: usize>(
                 iterations += solver.minimize(&mut state, Penalty::Fixed(0.0), ordered)?.0;
             }
             if f_of(&state) <= options.eps {
-                return Ok(finish(state, 0.0, 0.0, iterations));
+                return Ok(finish(
+                    projected(&mut solver, problem.ordered, state),
+                    0.0,
+                    0.0,
+                    iterations,
+                ));
             }
         }
         Err(e) if options.eps.is_infinite() => return Err(e),
@@ -388,11 +393,15 @@ pub(crate) fn fit_checked<const D: usize>(
             // Too few points for the unconstrained fit: start from the fit with the jumps
             // held to zero (always determined when the points determine one cubic).
             state.params.copy_from_slice(&start);
-            solver.set_ordered(problem.ordered);
             solver.solve_fixed(&mut state, 1.0)?;
             solver.project(&mut state);
         }
     }
+
+    // The constrained fit runs with free foot points (with ordered ones the search for `p`
+    // creeps: the pooled runs slow the Newton model down); its parameters are ordered at the
+    // end, the spline kept.
+    solver.set_ordered(false);
 
     // 2. The paper's bound from a feasible q*: the fit on the knots {0, corners, 1}.
     let mut coarse: Vec<f64> = knots
@@ -406,7 +415,12 @@ pub(crate) fn fit_checked<const D: usize>(
     let (reference, exact) = feasible_reference(problem, &coarse, knots, &start, stop);
     if reference <= 0.0 {
         // The points lie exactly on a spline without bounded jumps: it is the answer.
-        return Ok(finish(exact, 0.0, 0.0, iterations));
+        return Ok(finish(
+            projected(&mut solver, problem.ordered, exact),
+            0.0,
+            0.0,
+            iterations,
+        ));
     }
     let eps = options.eps;
     let seed_bound = reference / eps;
@@ -453,7 +467,12 @@ pub(crate) fn fit_checked<const D: usize>(
                 iterations += solver.minimize(&mut polished, Penalty::Fixed(p), stop)?.0;
                 let f = f_of(&polished);
                 if f <= eps && f >= lowest {
-                    return Ok(finish(polished, p, seed_bound, iterations));
+                    return Ok(finish(
+                        projected(&mut solver, problem.ordered, polished),
+                        p,
+                        seed_bound,
+                        iterations,
+                    ));
                 }
                 let miss = f.max(f64::MIN_POSITIVE).ln() - ln_target;
                 if let Some((ln_p0, miss0)) = last {
@@ -464,7 +483,12 @@ pub(crate) fn fit_checked<const D: usize>(
                 last = Some((ln_p, miss));
                 ln_p -= miss / slope;
             }
-            return Ok(finish(state, found, seed_bound, iterations));
+            return Ok(finish(
+                projected(&mut solver, problem.ordered, state),
+                found,
+                seed_bound,
+                iterations,
+            ));
         }
         // Not settled in the window (iteration cap): hold the p found, raised if need be, but
         // never below the paper's p* (a search that collapsed towards 0 would otherwise
@@ -475,11 +499,30 @@ pub(crate) fn fit_checked<const D: usize>(
     for _ in 0..=40 {
         iterations += solver.minimize(&mut state, Penalty::Fixed(p), stop)?.0;
         if f_of(&state) <= eps {
-            return Ok(finish(state, p, seed_bound, iterations));
+            return Ok(finish(
+                projected(&mut solver, problem.ordered, state),
+                p,
+                seed_bound,
+                iterations,
+            ));
         }
         p *= 10.0;
     }
     Err(unreachable_bound(eps))
+}
+
+/// `state` with every point projected once more onto its spline, the parameters ordered when
+/// `ordered`: the alternation step may keep held parameters (when the ordered projection
+/// loses to them), and the constrained fit runs with free foot points; the reported
+/// parameters are foot points (or ordered runs of them).
+fn projected<const D: usize>(
+    solver: &mut Solver<'_, D>,
+    ordered: bool,
+    mut state: State<D>,
+) -> State<D> {
+    solver.set_ordered(ordered);
+    solver.project(&mut state);
+    state
 }
 
 /// The jump sum aimed at for the active bound: the middle of its window.
