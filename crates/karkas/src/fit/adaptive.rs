@@ -34,14 +34,13 @@
 //! iterations; the rounds number about `log2(N / 4)` for `N` knots plus the stall window,
 //! so the whole is about `O(n log N)`.
 
-use super::guards::{shape_faults, with_warnings, FitWarning, FitWarningKind};
+use super::guards::{shape_faults, with_warnings};
 use super::knots::{start_parameters, uniform_knots, MIN_KNOT_SPACING};
 use super::noise::estimate_noise;
-use super::penalty::{
-    check_inputs, check_settings, fit_checked, CurveFit, FitOptions, DEFAULT_SMOOTHING,
-};
+use super::penalty::{check_inputs, check_settings, fit_checked, FitOptions, DEFAULT_SMOOTHING};
 use super::prune::prune;
 use super::refine::{refined_knots, worst_per_piece};
+use super::result::{CurveFit, FitWarning, FitWarningKind};
 use crate::{Error, Point, Result};
 
 /// The most Newton iterations of one round's fit: each round starts from the previous

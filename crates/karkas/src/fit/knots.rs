@@ -147,8 +147,9 @@ fn noise_stride<const D: usize>(points: &[Point<D>]) -> usize {
     stride
 }
 
-/// The starting parameters of `points` by `rule` (`t_1 = 0`, `t_n = 1`): chord rules measure
-/// the chords over a stride of points on dense noisy points (see [`noise_stride`]).
+/// The starting parameters of `points` by `rule` (`t_1 = 0`, `t_n = 1`): on dense noisy
+/// points the chord rules measure chords over a stride of points whose mean chord is at
+/// least ten times the noise.
 ///
 /// Errors: points that all coincide (for the chord rules); given parameters of the wrong
 /// count, not nondecreasing, or not from 0 to 1 ([`Error::InvalidSetting`]).

@@ -71,12 +71,11 @@ mod project;
 mod project_all;
 mod prune;
 mod refine;
+mod result;
 mod solver;
 
 pub use adaptive::{fit_curve_adaptive, AdaptiveFit, AdaptiveStop};
-pub use guards::{
-    shape_warnings, FitWarning, FitWarningKind, HOOK_TURNING, TURNING_MARGIN, TURNING_RELATIVE,
-};
+pub use guards::{shape_warnings, HOOK_TURNING, TURNING_MARGIN, TURNING_RELATIVE};
 pub use hermite::HermiteSpline;
 pub use knots::{
     check_knots, knots_from_list, start_parameters, uniform_knots, StartParameters,
@@ -84,6 +83,7 @@ pub use knots::{
 };
 pub use noise::{estimate_noise, NoiseEstimate};
 pub use penalty::{
-    fit_curve, CurveFit, FitOptions, PenaltyRule, DEFAULT_FAIRNESS, DEFAULT_SETTLE_TOLERANCE,
+    fit_curve, FitOptions, PenaltyRule, DEFAULT_FAIRNESS, DEFAULT_SETTLE_TOLERANCE,
     DEFAULT_SMOOTHING,
 };
+pub use result::{CurveFit, FitWarning, FitWarningKind};

@@ -30,12 +30,13 @@
 //! Every `q_p` is found by [`Solver::minimize`], warm-started from the previous one.
 //! Cost: a few inner minimizations, each `O(n)` per iteration.
 
-use super::guards::{with_warnings, FitWarning};
+use super::guards::with_warnings;
 use super::hermite::HermiteSpline;
 use super::knots::{check_knots, start_parameters, StartParameters};
-use super::noise::{estimate_noise, NoiseEstimate};
+use super::noise::estimate_noise;
 use super::power::PowerForm;
 use super::problem::{Problem, State};
+use super::result::CurveFit;
 use super::solver::{Penalty, Solver, Stop};
 use crate::{Curve, Error, Point, Result};
 
@@ -144,55 +145,6 @@ impl Default for FitOptions {
             ordered: true,
             smoothing: DEFAULT_SMOOTHING,
         }
-    }
-}
-
-/// The result of a fit.
-#[derive(Clone, Debug)]
-pub struct CurveFit<const D: usize> {
-    /// The fitted spline on `[0, 1]`.
-    pub spline: HermiteSpline<D>,
-    /// The foot parameter `t_i` of every point (`t_1 = 0`, `t_n = 1`).
-    pub parameters: Vec<f64>,
-    /// The distance of every point from the curve, `|R(t_i) - r_i|`.
-    pub distances: Vec<f64>,
-    /// `H`: the sum of squared distances.
-    pub data_term: f64,
-    /// `f = sum delta_L |J_L|^2` achieved.
-    pub jump_sum: f64,
-    /// The penalty `p` of the final minimization (0 for the unconstrained fit).
-    pub penalty: f64,
-    /// The paper's bound `H(q*) / eps` (0 when no penalty was needed).
-    pub seed_bound: f64,
-    /// `delta_L` per knot (0 at the ends and at corners).
-    pub weights: Vec<f64>,
-    /// `lambda`, the weight of the bending energy (see [`estimate_noise`]).
-    pub bending_weight: f64,
-    /// `S = int |R''(t)|^2 dt` achieved.
-    pub bending_energy: f64,
-    /// Inner iterations done in all.
-    pub iterations: usize,
-    /// The noise, size and turning of the points (see [`estimate_noise`]).
-    pub noise: NoiseEstimate,
-    /// What the distances do not show: crossings, excess turning, pieces with too few
-    /// points (see [`FitWarning`]).
-    pub warnings: Vec<FitWarning>,
-}
-
-impl<const D: usize> CurveFit<D> {
-    /// The largest distance of a point from the curve.
-    pub fn max_distance(&self) -> f64 {
-        self.distances.iter().fold(0.0, |m, d| m.max(*d))
-    }
-
-    /// The root mean square of the distances.
-    pub fn rms_distance(&self) -> f64 {
-        (self.data_term / self.distances.len() as f64).sqrt()
-    }
-
-    /// `H + p f + lambda S`, the objective of the last minimization.
-    pub fn objective(&self) -> f64 {
-        self.data_term + self.penalty * self.jump_sum + self.bending_weight * self.bending_energy
     }
 }
 

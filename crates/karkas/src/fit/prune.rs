@@ -5,7 +5,8 @@
 //! knots at most [`PRUNE_WORK`]).
 
 use super::guards::shape_faults;
-use super::penalty::{check_inputs, fit_checked, CurveFit, FitOptions};
+use super::penalty::{check_inputs, fit_checked, FitOptions};
+use super::result::CurveFit;
 use crate::{Point, Result};
 
 /// The largest product of points and knots for which the pass runs.
