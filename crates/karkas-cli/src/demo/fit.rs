@@ -5,9 +5,9 @@
 //! section with known truth sampled the same way.
 
 use super::common::{Finding, Output};
-use super::crossings::self_crossings;
 use crate::output::samples::sample_curve;
 use anyhow::{Context, Result};
+use karkas::fit::polyline_crossings;
 use karkas::fit::{fit_curve, FitOptions, PenaltyRule};
 use karkas::{Curve, Point2};
 use karkas_io::svg::{write_fit_svg, FitPlot};
@@ -109,7 +109,7 @@ pub fn run(out: &Output) -> Result<Vec<Finding>> {
             reference: &[],
         },
     )?;
-    let crossings = self_crossings(&points);
+    let crossings = polyline_crossings(&points);
     let places: Vec<String> = crossings
         .iter()
         .map(|c| {
@@ -168,7 +168,7 @@ mod tests {
             .iter()
             .map(|&(x, y, _)| Point2::new([x, y]))
             .collect();
-        let found = self_crossings(&points);
+        let found = polyline_crossings(&points);
         assert_eq!(found.len(), 2);
         let expected = [(6, 11, -71.3398, -91.0022), (7, 11, -78.7037, -94.1404)];
         for (c, (i, j, x, y)) in found.iter().zip(expected) {

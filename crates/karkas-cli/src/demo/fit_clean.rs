@@ -6,8 +6,8 @@
 //! from the true contour, both ways.
 
 use super::common::{Finding, Output};
-use super::crossings::farthest_from;
 use super::foil_section::{sampled_points, true_contour, Side};
+use super::polyline_distance::farthest_from;
 use crate::output::samples::sample_curve;
 use anyhow::{Context, Result};
 use karkas::fit::{fit_curve, CurveFit, FitOptions};

@@ -7,7 +7,6 @@
 mod common;
 mod coons;
 mod coons_data;
-mod crossings;
 mod data;
 mod dps;
 mod fit;
@@ -16,6 +15,7 @@ mod foil_section;
 mod ll;
 mod param;
 mod param_experiment;
+mod polyline_distance;
 mod report;
 
 use anyhow::{Context, Result};

@@ -68,6 +68,32 @@ impl<const D: usize> Point<D> {
         self.norm_sq().sqrt()
     }
 
+    /// The angle between `self` and `other` as vectors, in `[0, pi]` (0 when either is zero):
+    /// `atan2(|a x b|, a . b)`, accurate near 0 and pi, on the vectors divided by their
+    /// largest coordinate so that lengths near 1e150 or 1e-150 neither overflow nor underflow.
+    pub fn angle_to(self, other: Self) -> f64 {
+        let unit = |v: Self| {
+            let largest = v.0.iter().fold(0.0f64, |m, c| m.max(c.abs()));
+            if largest > 0.0 {
+                v * (1.0 / largest)
+            } else {
+                v
+            }
+        };
+        let (a, b) = (unit(self), unit(other));
+        let dot = a.dot(b);
+        let cross = if D == 2 {
+            (a[0] * b[1] - a[1] * b[0]).abs()
+        } else {
+            (a.norm_sq() * b.norm_sq() - dot * dot).max(0.0).sqrt()
+        };
+        if cross == 0.0 && dot == 0.0 {
+            0.0
+        } else {
+            cross.atan2(dot)
+        }
+    }
+
     /// Squared distance to `other`.
     #[inline]
     pub fn distance_sq(self, other: Self) -> f64 {
@@ -189,6 +215,25 @@ impl<const D: usize> Neg for Point<D> {
 
 #[cfg(test)]
 mod tests {
+
+    #[test]
+    fn angles_between_vectors_hold_at_every_scale() {
+        use std::f64::consts::FRAC_PI_4;
+        for scale in [1e-160, 1.0, 1e160] {
+            let a = Point([1.0, 0.0, 0.0]) * scale;
+            let b = Point([1.0, 1.0, 0.0]) * scale;
+            assert!((a.angle_to(b) - FRAC_PI_4).abs() < 1e-15, "{scale}");
+            assert!((a.angle_to(a * -1.0) - std::f64::consts::PI).abs() < 1e-15);
+            let c = Point([3.0, 4.0]) * scale;
+            let d = Point([-4.0, 3.0]) * scale;
+            assert!((c.angle_to(d) - 2.0 * FRAC_PI_4).abs() < 1e-15, "{scale}");
+        }
+        assert_eq!(Point([0.0, 0.0]).angle_to(Point([1.0, 0.0])), 0.0);
+        // Nearly parallel: the angle, not a rounding of acos near 1.
+        let tiny = Point([1.0, 1e-12]).angle_to(Point([1.0, 0.0]));
+        assert!((tiny - 1e-12).abs() < 1e-24);
+    }
+
     use super::*;
 
     #[test]

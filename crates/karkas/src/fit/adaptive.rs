@@ -35,7 +35,7 @@
 //! so the whole is about `O(n log N)`.
 
 use super::guards::{shape_faults, with_warnings};
-use super::knots::{start_parameters, uniform_knots, MIN_KNOT_SPACING};
+use super::knots::{start_parameters_for, uniform_knots, MIN_KNOT_SPACING};
 use super::noise::estimate_noise;
 use super::penalty::{check_inputs, check_settings, fit_checked, FitOptions, DEFAULT_SMOOTHING};
 use super::prune::prune;
@@ -148,7 +148,8 @@ pub fn fit_curve_adaptive<const D: usize>(
     // The smoothing is sized by the noise estimated from the points: a tolerance below twice
     // that estimate asks for a curve closer to the points than the smoothing would let it
     // come (and on sparse points the estimate is partly the curve's own bending).
-    let sigma = estimate_noise(points).sigma;
+    let noise = estimate_noise(points);
+    let sigma = noise.sigma;
     let options = &FitOptions {
         max_iterations: options.max_iterations.min(ROUND_ITERATIONS),
         smoothing: if tolerance < NOISE_FLOOR * sigma {
@@ -158,10 +159,10 @@ pub fn fit_curve_adaptive<const D: usize>(
         },
         ..options.clone()
     };
-    let start = start_parameters(points, &options.start)?;
+    let start = start_parameters_for(points, &options.start, sigma)?;
     let knots = first_knots(points.len(), &options.corners);
     let weights = check_inputs(points, &knots, options)?;
-    let first = fit_checked(points, &knots, &weights, start, options)?;
+    let first = fit_checked(points, &knots, &weights, start, options, &noise)?;
     let cap = (points.len() / 2).max(knots.len());
     let mut rounds = 1;
     let (mut stop, mut best) = refine(points, tolerance, options, cap, first, &mut rounds)?;
@@ -176,7 +177,7 @@ pub fn fit_curve_adaptive<const D: usize>(
         let knots = best.spline.knots();
         let weights = check_inputs(points, knots, plain)?;
         let start = warm_parameters(&best.parameters);
-        let refit = fit_checked(points, knots, &weights, start, plain)?;
+        let refit = fit_checked(points, knots, &weights, start, plain, &noise)?;
         rounds += 1;
         let kept = best;
         (stop, best) = refine(points, tolerance, plain, cap, refit, &mut rounds)?;
@@ -255,7 +256,7 @@ fn smoothed_if_faulty<const D: usize>(
         let knots = fit.spline.knots();
         let weights = check_inputs(points, knots, &smoother)?;
         let start = warm_parameters(&fit.parameters);
-        if let Ok(trial) = fit_checked(points, knots, &weights, start, &smoother) {
+        if let Ok(trial) = fit_checked(points, knots, &weights, start, &smoother, &fit.noise) {
             if trial.max_distance() <= tolerance && shape_faults(points, &trial).is_empty() {
                 return Ok(trial);
             }
@@ -314,7 +315,7 @@ fn refine<const D: usize>(
             }
             let weights = check_inputs(points, &finer, options)?;
             let start = warm_parameters(&fit.parameters);
-            match fit_checked(points, &finer, &weights, start, options) {
+            match fit_checked(points, &finer, &weights, start, options, &fit.noise) {
                 Ok(next) => break Some(next),
                 // Without the bending term a split can leave a piece undetermined: try
                 // fewer new knots, the worst pieces first.

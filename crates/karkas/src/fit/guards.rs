@@ -30,9 +30,9 @@ mod crossings;
 mod sampling;
 
 use super::result::{CurveFit, FitWarning, FitWarningKind};
-use crate::{Curve, Point};
+use crate::{Curve, Point, Point2};
 use crossings::{crossings, Crossing};
-use sampling::{angle_between, Samples};
+use sampling::Samples;
 
 /// The turning the curve may have beyond the point polygon's, in radians.
 pub const TURNING_MARGIN: f64 = 0.1;
@@ -44,6 +44,35 @@ pub const HOOK_TURNING: f64 = 0.5;
 const CROSSING_SLACK: usize = 2;
 /// Warnings of one kind given one by one; the rest are counted in one more.
 const MAX_PER_KIND: usize = 10;
+
+/// A crossing of two segments of a plane polyline: the segments, by the index of their first
+/// point (`first < second`), and the crossing point.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PolylineCrossing {
+    /// The first segment, `points[first]` to `points[first + 1]`.
+    pub first: usize,
+    /// The second segment, `points[second]` to `points[second + 1]`.
+    pub second: usize,
+    /// Where they cross.
+    pub at: Point2,
+}
+
+/// Every proper crossing of two non-adjacent segments of the open polyline through `points`,
+/// ordered by the segments (the sweep of the shape guards, `O(m log m)` plus the pairs that
+/// overlap in x).
+pub fn polyline_crossings(points: &[Point2]) -> Vec<PolylineCrossing> {
+    let vertices: Vec<[f64; 2]> = points.iter().map(|p| p.0).collect();
+    let mut found: Vec<PolylineCrossing> = crossings(&vertices)
+        .into_iter()
+        .map(|c| PolylineCrossing {
+            first: c.a,
+            second: c.b,
+            at: points[c.a].add_scaled(c.sa, points[c.a + 1] - points[c.a]),
+        })
+        .collect();
+    found.sort_by_key(|c| (c.first, c.second));
+    found
+}
 
 /// The fit with the shape warnings of [`shape_warnings`] appended.
 pub(crate) fn with_warnings<const D: usize>(
@@ -148,11 +177,11 @@ fn exterior_angles<const D: usize>(points: &[Point<D>]) -> Vec<f64> {
     let mut last: Option<Point<D>> = None;
     for i in 1..n {
         let d = points[i] - points[i - 1];
-        if d.norm_sq() == 0.0 {
+        if d.0.iter().all(|&c| c == 0.0) {
             continue;
         }
         if let Some(previous) = last {
-            angle[i - 1] = angle_between(previous, d);
+            angle[i - 1] = previous.angle_to(d);
         }
         last = Some(d);
     }

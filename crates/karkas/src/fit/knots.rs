@@ -127,10 +127,9 @@ const CHORD_OVER_NOISE: f64 = 10.0;
 /// points whose spacing exceeds their noise; on dense noisy points, where the chord between
 /// neighbours is mostly noise (and chord length grows with the noise, not the curve), the
 /// smallest power of two whose mean chord is at least [`CHORD_OVER_NOISE`] times the noise
-/// estimated from the points ([`estimate_noise`]), at most `n / 16`.
-fn noise_stride<const D: usize>(points: &[Point<D>]) -> usize {
+/// estimated from the points (`sigma`, see [`estimate_noise`]), at most `n / 16`.
+fn noise_stride<const D: usize>(points: &[Point<D>], sigma: f64) -> usize {
     let n = points.len();
-    let sigma = estimate_noise(points).sigma;
     let mut stride = 1;
     while sigma > 0.0 && 2 * stride <= n / 16 {
         let step = ((n - stride) / 4096).max(1);
@@ -157,8 +156,17 @@ pub fn start_parameters<const D: usize>(
     points: &[Point<D>],
     rule: &StartParameters,
 ) -> Result<Vec<f64>> {
+    start_parameters_for(points, rule, estimate_noise(points).sigma)
+}
+
+/// [`start_parameters`] with the noise of the points already estimated (`sigma`).
+pub(crate) fn start_parameters_for<const D: usize>(
+    points: &[Point<D>],
+    rule: &StartParameters,
+    sigma: f64,
+) -> Result<Vec<f64>> {
     let n = points.len();
-    let stride = noise_stride(points);
+    let stride = noise_stride(points, sigma);
     let chords = |power: f64| -> Result<Vec<f64>> {
         // Cumulative chords through every `stride`-th point (and the last), in proportion to
         // the index between them.

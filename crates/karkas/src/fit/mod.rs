@@ -75,7 +75,10 @@ mod result;
 mod solver;
 
 pub use adaptive::{fit_curve_adaptive, AdaptiveFit, AdaptiveStop};
-pub use guards::{shape_warnings, HOOK_TURNING, TURNING_MARGIN, TURNING_RELATIVE};
+pub use guards::{
+    polyline_crossings, shape_warnings, PolylineCrossing, HOOK_TURNING, TURNING_MARGIN,
+    TURNING_RELATIVE,
+};
 pub use hermite::HermiteSpline;
 pub use knots::{
     check_knots, knots_from_list, start_parameters, uniform_knots, StartParameters,

@@ -170,16 +170,9 @@ fn turning<const D: usize>(points: &[Point<D>]) -> f64 {
     let edges: Vec<Point<D>> = vertices
         .windows(2)
         .map(|w| w[1] - w[0])
-        .filter(|e| e.norm_sq() > 0.0)
+        .filter(|e| e.0.iter().any(|&c| c != 0.0))
         .collect();
-    edges
-        .windows(2)
-        .map(|w| {
-            let (a, b) = (w[0] * (1.0 / w[0].norm()), w[1] * (1.0 / w[1].norm()));
-            // The angle between unit vectors, accurate near 0 and pi.
-            2.0 * (a - b).norm().atan2((a + b).norm())
-        })
-        .sum()
+    edges.windows(2).map(|w| w[0].angle_to(w[1])).sum()
 }
 
 #[cfg(test)]

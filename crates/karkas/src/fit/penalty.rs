@@ -32,8 +32,8 @@
 
 use super::guards::with_warnings;
 use super::hermite::HermiteSpline;
-use super::knots::{check_knots, start_parameters, StartParameters};
-use super::noise::estimate_noise;
+use super::knots::{check_knots, start_parameters_for, StartParameters};
+use super::noise::{estimate_noise, NoiseEstimate};
 use super::power::PowerForm;
 use super::problem::{Problem, State};
 use super::result::CurveFit;
@@ -254,19 +254,22 @@ pub fn fit_curve<const D: usize>(
     options: &FitOptions,
 ) -> Result<CurveFit<D>> {
     let weights = check_inputs(points, knots, options)?;
-    let start = start_parameters(points, &options.start)?;
-    fit_checked(points, knots, &weights, start, options).map(|fit| with_warnings(points, fit))
+    let noise = estimate_noise(points);
+    let start = start_parameters_for(points, &options.start, noise.sigma)?;
+    fit_checked(points, knots, &weights, start, options, &noise)
+        .map(|fit| with_warnings(points, fit))
 }
 
-/// The fit after the inputs were checked.
+/// The fit after the inputs were checked, `noise` estimated from the points.
 pub(crate) fn fit_checked<const D: usize>(
     points: &[Point<D>],
     knots: &[f64],
     weights: &[f64],
     start: Vec<f64>,
     options: &FitOptions,
+    noise: &NoiseEstimate,
 ) -> Result<CurveFit<D>> {
-    let noise = estimate_noise(points);
+    let noise = *noise;
     let problem = Problem {
         points,
         delta: weights,

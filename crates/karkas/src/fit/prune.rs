@@ -38,7 +38,15 @@ pub(crate) fn prune<const D: usize>(
         let mut fewer = knots.to_vec();
         fewer.remove(at);
         let weights = check_inputs(points, &fewer, options)?;
-        match fit_checked(points, &fewer, &weights, start(&fit.parameters), options) {
+        let trial = fit_checked(
+            points,
+            &fewer,
+            &weights,
+            start(&fit.parameters),
+            options,
+            &fit.noise,
+        );
+        match trial {
             Ok(trial)
                 if trial.max_distance() <= tolerance && shape_faults(points, &trial).is_empty() =>
             {

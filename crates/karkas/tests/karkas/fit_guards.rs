@@ -378,3 +378,14 @@ fn a_fit_on_knots_with_an_empty_span_warns() {
     assert!(!empty.is_empty(), "{:#?}", fit.warnings);
     assert!(empty.iter().any(|w| (w.parameter - 0.50005).abs() < 1e-9));
 }
+
+#[test]
+fn a_bow_tie_crosses_once_in_its_middle() {
+    use karkas::fit::polyline_crossings;
+    let p = |x: f64, y: f64| Point2::new([x, y]);
+    let found = polyline_crossings(&[p(0.0, 0.0), p(2.0, 2.0), p(2.0, 0.0), p(0.0, 2.0)]);
+    assert_eq!(found.len(), 1);
+    assert_eq!((found[0].first, found[0].second), (0, 2));
+    assert!((found[0].at[0] - 1.0).abs() < 1e-15 && (found[0].at[1] - 1.0).abs() < 1e-15);
+    assert!(polyline_crossings(&[p(0.0, 0.0), p(1.0, 0.0), p(1.0, 1.0), p(0.0, 1.0)]).is_empty());
+}

@@ -23,22 +23,6 @@ pub(crate) struct Samples<const D: usize> {
     pub turn: Vec<f64>,
 }
 
-/// The angle between two vectors (0 when either is zero).
-pub(crate) fn angle_between<const D: usize>(a: Point<D>, b: Point<D>) -> f64 {
-    let dot = a.dot(b);
-    let cross_sq = (a.norm_sq() * b.norm_sq() - dot * dot).max(0.0);
-    let cross = if D == 2 {
-        (a[0] * b[1] - a[1] * b[0]).abs()
-    } else {
-        cross_sq.sqrt()
-    };
-    if cross == 0.0 && dot == 0.0 {
-        0.0
-    } else {
-        cross.atan2(dot)
-    }
-}
-
 impl<const D: usize> Samples<D> {
     /// Samples `spline` on every piece: [`BASE_STEPS`] uniform steps, each halved while the
     /// tangent turns more than [`MAX_STEP_TURN`] over it (judged at its midpoint).
@@ -70,9 +54,9 @@ impl<const D: usize> Samples<D> {
         let mut total = 0.0;
         let mut last: Option<Point<D>> = None;
         for &(_, _, tangent) in &raw {
-            if tangent.norm_sq() > 0.0 {
+            if tangent.0.iter().any(|&c| c != 0.0) {
                 if let Some(previous) = last {
-                    total += angle_between(previous, tangent);
+                    total += previous.angle_to(tangent);
                 }
                 last = Some(tangent);
             }
@@ -117,7 +101,7 @@ fn refine<const D: usize>(
     if depth > 0 {
         let sm = 0.5 * (s0 + s1);
         let middle = at(piece, sm);
-        let turned = angle_between(left.2, middle.2) + angle_between(middle.2, right.2);
+        let turned = left.2.angle_to(middle.2) + middle.2.angle_to(right.2);
         if turned > MAX_STEP_TURN {
             refine(at, piece, (s0, left), (sm, middle), depth - 1, out);
             refine(at, piece, (sm, middle), (s1, right), depth - 1, out);
