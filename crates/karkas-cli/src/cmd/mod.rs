@@ -7,6 +7,7 @@ mod curve_ll;
 mod fit_summary;
 pub mod hausdorff;
 pub mod section;
+pub mod spline_options;
 mod surface_bicubic;
 mod surface_coons;
 mod surface_dps_tube;
