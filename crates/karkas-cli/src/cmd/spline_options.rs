@@ -8,7 +8,7 @@
 //! with a count of components other than the points' dimension, tangents without clamped
 //! ends, clamped ends without both tangents.
 
-use anyhow::{bail, Context, Result};
+use anyhow::{anyhow, bail, Context, Result};
 use clap::{Args, ValueEnum};
 use karkas::param::{CubicSpline, CurveParameterization, SplineEnds};
 use karkas::Point;
@@ -135,7 +135,17 @@ impl SplineOptions {
                 );
             }
         }
-        CubicSpline::through(points, self.param, ends).with_context(|| {
+        let spline = CubicSpline::through(points, self.param, ends).map_err(|e| match e {
+            karkas::Error::CoincidentPoints { first, second } => anyhow!(
+                "points {} and {} (counting from 1) coincide: {} parameters need distinct \
+                 consecutive points (--param uniform does not)",
+                first + 1,
+                second + 1,
+                self.param.name()
+            ),
+            e => anyhow::Error::new(e),
+        });
+        spline.with_context(|| {
             format!(
                 "{}: cubic spline ({} ends, {} parameters)",
                 name.display(),
