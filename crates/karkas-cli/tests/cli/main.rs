@@ -7,6 +7,7 @@ mod common;
 mod contract;
 mod convert;
 mod curve_fit;
+mod curve_spline;
 mod demo_hydrofoil;
 mod demo_report;
 mod dps;
