@@ -2,7 +2,8 @@
 points, with the parameters computed here from their formulas (uniform, chord, centripetal),
 the CLI's CSV rows t,x,y[,z] equal SciPy's spline at those t (to 1e-12 relative), for every
 end condition: not-a-knot, natural, clamped (first derivatives) and periodic (the first
-point appended when the last does not repeat it).
+point appended when the last does not repeat it); and `karkas.CubicSpline` with the same
+options (and both defaults) is the same curve.
 
 The binary is $KARKAS_BIN, else target/release/karkas of this repository (build it with
 `cargo build --release -p karkas-cli`); without it these tests are skipped."""
@@ -97,3 +98,28 @@ def test_periodic_matches_scipy_with_the_first_point_appended(tmp_path, dim):
     # Given closed, the same curve.
     again = run_spline(tmp_path, closed, "--ends", "periodic")
     np.testing.assert_array_equal(again, rows)
+
+
+@pytest.mark.parametrize(
+    "options, bc",
+    [
+        ((), None),
+        (("--ends", "natural", "--param", "uniform"), "natural"),
+        (("--ends", "periodic", "--param", "centripetal"), "periodic"),
+        (("--ends", "clamped", "--start-tangent=1,-2,0.5", "--end-tangent=0,3,1"),
+         ("clamped", [1.0, -2.0, 0.5], [0.0, 3.0, 1.0])),
+    ],
+)
+def test_the_python_class_builds_the_same_curve(tmp_path, options, bc):
+    """karkas.CubicSpline with the same options (and the same defaults) is the CLI's curve."""
+    karkas = pytest.importorskip("karkas")
+    pts = wavy(11, 3)
+    rows = run_spline(tmp_path, pts, *options)
+    rule = options[options.index("--param") + 1] if "--param" in options else None
+    kwargs = {"parameterization": rule} if rule else {}
+    if bc is not None:
+        kwargs["bc"] = bc
+    curve = karkas.CubicSpline(pts, **kwargs)
+    assert curve.domain[1] == rows[-1, 0]
+    expected = curve(rows[:, 0])
+    np.testing.assert_allclose(rows[:, 1:], expected, rtol=RTOL, atol=RTOL * np.max(np.abs(expected)))
