@@ -431,7 +431,12 @@ fn bad_input_is_refused_naming_the_problem() {
 
     let one = write(dir.path(), "one.csv", "x,y\n0,0\n");
     let args = ["curve", "spline", s(&one), "-o", s(&out)];
-    assert_rejected(&args, &["one.csv", "a cubic spline needs at least 2 points, got 1"][..], &out, None);
+    assert_rejected(
+        &args,
+        &["one.csv", "a cubic spline needs at least 2 points, got 1"][..],
+        &out,
+        None,
+    );
     let two = write(dir.path(), "two.csv", "x,y\n0,0\n1,1\n");
     let args = [
         "curve",
