@@ -10,6 +10,7 @@ mod curve_fit;
 mod demo_hydrofoil;
 mod demo_report;
 mod dps;
+mod dxf;
 mod export;
 mod fit_tolerance;
 mod hausdorff;
