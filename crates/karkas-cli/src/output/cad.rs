@@ -57,12 +57,13 @@ pub fn write_cad_surface(
     Ok(())
 }
 
-/// Refuses STEP, IGES and DXF for the discrete periodic splines: they are point sets
-/// (docs/methods.md §3, §6), with no exact piecewise polynomial form to export.
-pub fn refuse_cad_for_discrete(output: &Path) -> Result<()> {
+/// Refuses the exact formats `exact` (STEP and IGES, [`OutputFormat::CAD`], for surfaces; and
+/// DXF, [`OutputFormat::CURVE_CAD`], for curves) for the discrete periodic splines: they are
+/// point sets (docs/methods.md §3, §6), with no exact piecewise polynomial form to export.
+pub fn refuse_cad_for_discrete(output: &Path, exact: &[OutputFormat]) -> Result<()> {
     let cad = match super::target::requested_format() {
-        Some(format) => format.is_cad(),
-        None => OutputFormat::from_path(output, &OutputFormat::CURVE_CAD).is_ok(),
+        Some(format) => exact.contains(&format),
+        None => OutputFormat::from_path(output, exact).is_ok(),
     };
     if cad {
         bail!(
