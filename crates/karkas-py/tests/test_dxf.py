@@ -93,14 +93,23 @@ def ezdxf_curves(spline):
 
 
 def assert_same_curve(spline, ts, expected):
-    """ezdxf's evaluation of `spline` at `ts` is `expected` (n, 3) to 1e-12 of the size."""
+    """ezdxf's evaluation of `spline` at `ts` is `expected` (n, 3) to 1e-12 of the size.
+
+    The entity holds karkas's own knots (the domain is that of `ts`); ezdxf's BSpline
+    normalizes a knot vector to [0, 1], so it is evaluated at (t - t0) / (t1 - t0)."""
     curves, control = ezdxf_curves(spline)
+    knots = np.array(spline.knots)
+    p = spline.dxf.degree
+    t0, t1 = knots[0], knots[-1]
+    assert (knots[p], knots[-p - 1]) == (t0, t1) == (ts[0], ts[-1])
+    u = np.clip((np.asarray(ts) - t0) / (t1 - t0), 0.0, 1.0)
     size = np.max(np.abs(control))
     for curve in curves:
-        got = np.array(list(curve.points(ts)))
+        assert curve.max_t == 1.0
+        got = np.array(list(curve.points(u)))
         np.testing.assert_allclose(got, expected, rtol=0, atol=1e-12 * size)
     # The test can fail: a parameter shifted by 1e-6 is far outside the tolerance.
-    shifted = np.array(list(curves[0].points(np.clip(np.asarray(ts) + 1e-6, ts[0], ts[-1]))))
+    shifted = np.array(list(curves[0].points(np.clip(u + 1e-6, 0.0, 1.0))))
     assert np.max(np.abs(shifted - expected)) > 1e-9 * size
 
 
@@ -171,8 +180,11 @@ def test_python_export_dxf_matches_curve_evaluation(tmp_path):
     path = karkas.export(curve, tmp_path / "ll.dxf", points=pts)
     _, spline, points = read_dxf(path)
     assert_points(points, pts)
-    lo, hi = curve.domain if hasattr(curve, "domain") else (0.0, 1.0)
-    ts = np.linspace(lo, hi, 211)
+    t, c, k = curve.to_bspline()
+    assert spline.dxf.degree == k
+    np.testing.assert_array_equal(np.array(spline.knots), t)
+    np.testing.assert_array_equal(np.array(spline.control_points), in_space(np.asarray(c)))
+    ts = np.linspace(t[0], t[-1], 211)
     assert_same_curve(spline, ts, in_space(curve(ts)))
 
     fit = karkas.fit_curve(pts, knots=6)

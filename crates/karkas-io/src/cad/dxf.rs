@@ -18,7 +18,11 @@
 //!
 //! Every real is written as the shortest decimal that reads back as the same `f64` (Rust's
 //! round-trip formatting, an exponent only for very small or large magnitudes), so that the
-//! file gives the curve to the last bit.
+//! file gives the curve to the last bit. The knot and control point tolerances (groups 42 and
+//! 43) are the values' own rounding level (machine epsilon times their magnitude) rather than
+//! the customary 1e-10: readers round the knots to that tolerance before they evaluate
+//! (ezdxf's construction tool keeps `-log10(tolerance)` decimals), and 1e-10 would move the
+//! curve by about 1e-10 of its size.
 //!
 //! Hand-written because the DXF crate of crates.io (`dxf`) writes reals with at most twelve
 //! decimals after the point (`{:.12}`, so 1e-13 becomes 0 and a 1e-12 relative agreement is
@@ -118,6 +122,17 @@ fn extents(curve: &DxfCurve<'_>) -> (Point3, Point3) {
         }
     }
     (Point3::new(low), Point3::new(high))
+}
+
+/// The rounding level of `values`: the machine epsilon times their largest magnitude (1e-10,
+/// the usual default, when they are all 0).
+fn tolerance(values: impl Iterator<Item = f64>) -> f64 {
+    let size = values.map(f64::abs).fold(0.0, f64::max);
+    if size > 0.0 {
+        f64::EPSILON * size
+    } else {
+        1e-10
+    }
 }
 
 /// A real as the shortest decimal that reads back as the same `f64` (no `-0`).
@@ -375,8 +390,11 @@ impl Dxf {
         self.pair(72, spline.knots().len());
         self.pair(73, spline.control_points().len());
         self.pair(74, 0);
-        self.real(42, 1e-10);
-        self.real(43, 1e-10);
+        self.real(42, tolerance(spline.knots().iter().copied()));
+        self.real(
+            43,
+            tolerance(spline.control_points().iter().flat_map(|p| p.0)),
+        );
         for &k in spline.knots() {
             self.real(40, k);
         }
