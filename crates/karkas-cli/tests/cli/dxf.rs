@@ -126,8 +126,9 @@ impl Spline {
                 } else {
                     0.0
                 };
-                for c in 0..3 {
-                    d[j][c] = (1.0 - a) * d[j - 1][c] + a * d[j][c];
+                let previous = d[j - 1];
+                for (value, before) in d[j].iter_mut().zip(previous) {
+                    *value = (1.0 - a) * before + a * *value;
                 }
             }
         }
