@@ -586,7 +586,8 @@ def export(
 ) -> "os.PathLike[str]":
     """Writes a curve, surface, discrete spline, tube, point list (n, d), grid (nu, nv, 3),
     mesh (vertices, faces) or SciPy B-spline in the format of the path's extension (or
-    format=), as the command line writes the same result; returns the path."""
+    format=), as the command line writes the same result; returns the path. A curve's .dxf
+    is its exact SPLINE with points= as POINT entities on layer POINTS."""
 
 def set_max_input_bytes(nbytes: int) -> None:
     """The most memory one read may keep, in bytes, for every reader of the process (default

@@ -34,8 +34,8 @@ struct Cli {
     /// environment variable KARKAS_MAX_MEMORY); larger requests fail before any work.
     #[arg(long, global = true, value_name = "SIZE", value_parser = output::memory::parse_size)]
     max_memory: Option<u64>,
-    /// The format of the output: csv, svg, obj, stl, png, step, iges, ply, vtk, vts, glb, html
-    /// (each command writes some). Needed for another format than CSV on standard output
+    /// The format of the output: csv, svg, obj, stl, png, step, iges, ply, vtk, vts, glb, html,
+    /// dxf (each command writes some). Needed for another format than CSV on standard output
     /// (-o -); wins over the output file's extension.
     #[arg(long, global = true, value_name = "FORMAT", value_parser = args::parse_format)]
     format: Option<karkas_io::OutputFormat>,

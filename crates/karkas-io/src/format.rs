@@ -34,11 +34,13 @@ pub enum OutputFormat {
     Glb,
     /// A self-contained 3-D viewer page (`.html`).
     Html,
+    /// A DXF drawing of an exact B-spline curve and its input points (`.dxf`).
+    Dxf,
 }
 
 impl OutputFormat {
     /// All formats, in the order they are listed in messages.
-    pub const ALL: [OutputFormat; 12] = [
+    pub const ALL: [OutputFormat; 13] = [
         OutputFormat::Csv,
         OutputFormat::Svg,
         OutputFormat::Obj,
@@ -51,6 +53,7 @@ impl OutputFormat {
         OutputFormat::Vts,
         OutputFormat::Glb,
         OutputFormat::Html,
+        OutputFormat::Dxf,
     ];
 
     /// Every triangle-mesh format a sampled surface can be written in.
@@ -66,6 +69,11 @@ impl OutputFormat {
     /// The exact CAD formats (STEP and IGES), for the commands whose result is a piecewise
     /// polynomial.
     pub const CAD: [OutputFormat; 2] = [OutputFormat::Step, OutputFormat::Iges];
+
+    /// The exact formats of a curve: [`CAD`](Self::CAD) and DXF (a SPLINE entity with the
+    /// input points).
+    pub const CURVE_CAD: [OutputFormat; 3] =
+        [OutputFormat::Step, OutputFormat::Iges, OutputFormat::Dxf];
 
     /// The format named by the extension of `path` (case-insensitive), if it is one of
     /// `allowed`; otherwise [`IoError::UnknownExtension`] listing the allowed extensions.
@@ -100,7 +108,7 @@ impl OutputFormat {
     }
 
     /// The file extension, without the dot: `"csv"`, `"svg"`, `"obj"`, `"stl"`, `"png"`,
-    /// `"ply"`, `"vtk"`, `"vts"`, `"glb"` or `"html"`.
+    /// `"ply"`, `"vtk"`, `"vts"`, `"glb"`, `"html"` or `"dxf"`.
     pub fn extension(self) -> &'static str {
         match self {
             OutputFormat::Csv => "csv",
@@ -115,6 +123,7 @@ impl OutputFormat {
             OutputFormat::Vts => "vts",
             OutputFormat::Glb => "glb",
             OutputFormat::Html => "html",
+            OutputFormat::Dxf => "dxf",
         }
     }
 
@@ -127,9 +136,10 @@ impl OutputFormat {
         }
     }
 
-    /// True for the exact CAD formats (STEP, IGES).
+    /// True for the exact CAD formats (STEP, IGES, and DXF for curves:
+    /// [`CURVE_CAD`](Self::CURVE_CAD)).
     pub fn is_cad(self) -> bool {
-        OutputFormat::CAD.contains(&self)
+        OutputFormat::CURVE_CAD.contains(&self)
     }
 }
 
@@ -201,5 +211,10 @@ mod tests {
             Iges
         );
         assert!(OutputFormat::from_path(p("a.st"), &OutputFormat::CAD).is_err());
+        assert_eq!(
+            OutputFormat::from_path(p("a.DXF"), &OutputFormat::CURVE_CAD).unwrap(),
+            Dxf
+        );
+        assert!(OutputFormat::from_path(p("a.dxf"), &OutputFormat::CAD).is_err());
     }
 }

@@ -9,7 +9,7 @@ use std::path::{Path, PathBuf};
 
 use karkas::bspline::BSplineCurve;
 use karkas::Point3;
-use karkas_io::export::cad::{write_cad_curve, write_cad_surface, NO_EXACT_FORM};
+use karkas_io::export::cad::{write_cad_curve_with_points, write_cad_surface, NO_EXACT_FORM};
 use karkas_io::export::curve::{
     write_curve, write_curve_figure, write_discrete_curve, CurveDrawing, DiscreteTitles,
 };
@@ -44,7 +44,7 @@ use crate::surface::PySurface;
 /// Parameters
 /// ----------
 /// obj : Curve, Surface, DiscreteSpline, TubeSurface, array_like or tuple
-///     A curve (any `Curve`: CSV ``t,x,y[,z]``, SVG, PNG, HTML, STEP, IGES), a surface (any
+///     A curve (any `Curve`: CSV ``t,x,y[,z]``, SVG, PNG, HTML, STEP, IGES, DXF), a surface (any
 ///     `Surface`: CSV ``u,v,x,y,z``, OBJ, STL, PLY, VTK, VTS, GLB, SVG, PNG, HTML, STEP,
 ///     IGES), a `DiscreteSpline` (its values: CSV, SVG, PNG, HTML), a `TubeSurface` (CSV of
 ///     its values, meshes, pictures, HTML), a point list ``(n, d)`` (SVG, PNG, HTML), a grid
@@ -61,7 +61,8 @@ use crate::surface::PySurface;
 /// title : str, optional
 ///     The caption of pictures and of the viewer page (default: the object's repr).
 /// points : array_like, optional
-///     Input points ``(n, d)`` drawn over a curve in pictures and on the page.
+///     Input points ``(n, d)`` drawn over a curve in pictures and on the page, and written
+///     as POINT entities on layer ``POINTS`` of a DXF.
 /// closed_points : bool, default False
 ///     Draw `points` as a closed polygon.
 /// net : array_like, optional
@@ -81,9 +82,10 @@ use crate::surface::PySurface;
 /// Raises
 /// ------
 /// karkas.OptionError
-///     The extension or `format` is not one the object can be written in; STEP or IGES for an
-///     object without an exact piecewise polynomial form (discrete periodic splines, point
-///     lists, grids, meshes); `flip_normals` for a format that is not a mesh.
+///     The extension or `format` is not one the object can be written in; STEP, IGES or DXF
+///     for an object without an exact piecewise polynomial form (discrete periodic splines,
+///     point lists, grids, meshes); DXF for a surface; `flip_normals` for a format that is not
+///     a mesh; `points` of another dimension than a curve's.
 /// TypeError
 ///     `obj` is none of the kinds above.
 /// OSError
@@ -202,11 +204,23 @@ fn export_curve(
     let dim = curve.inner.dim();
     if format.is_cad() {
         let (knots, control, degree, cdim) = bspline_curve(obj, no_exact)?;
+        let input = match &options.points {
+            Some((_, d)) if *d != cdim => {
+                return Err(OptionError::new_err(format!(
+                    "points have {d} coordinates, the curve {cdim}"
+                )))
+            }
+            Some((flat, _)) => flat.clone(),
+            None => Vec::new(),
+        };
         return by_dim!(cdim, D => {
             let b = BSplineCurve::<D>::new(degree, knots, as_points::<D>(&control).to_vec())
                 .map_err(library_error)?;
-            py.detach(|| write_cad_curve(&b, format, path, path).map(|_| ()))
-                .map_err(write_error)
+            let input = as_points::<D>(&input);
+            py.detach(|| {
+                write_cad_curve_with_points(&b, input, format, path, path).map(|_| ())
+            })
+            .map_err(write_error)
         });
     }
     let title = title_of(obj, options)?;

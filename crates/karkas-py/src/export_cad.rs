@@ -44,17 +44,24 @@ fn curve_form(
 }
 
 /// A SciPy B-spline: `scipy.interpolate.BSpline` (coefficients `(n, d)`, `d` in {2, 3}) or
-/// `NdBSpline` of two variables (coefficients `(nu, nv, 3)`), written exactly as STEP or IGES.
+/// `NdBSpline` of two variables (coefficients `(nu, nv, 3)`), written exactly as STEP or IGES
+/// (a curve also as DXF, without input points).
 pub fn export_scipy_spline(
     py: Python<'_>,
     obj: &Bound<'_, PyAny>,
     path: &Path,
     options: &Options,
 ) -> PyResult<()> {
-    let only = "a SciPy B-spline is written as STEP or IGES only";
-    let format = choose(path, options, &OutputFormat::CAD, only)?;
+    let only = "a SciPy B-spline is written as STEP, IGES or (a curve) DXF only";
+    let format = choose(path, options, &OutputFormat::CURVE_CAD, only)?;
     let (t, c, k) = (obj.getattr("t")?, obj.getattr("c")?, obj.getattr("k")?);
     if let Ok((tu, tv)) = t.extract::<(Bound<'_, PyAny>, Bound<'_, PyAny>)>() {
+        if format == OutputFormat::Dxf {
+            return Err(OptionError::new_err(format!(
+                "{}: DXF is written for curves only (write .step or .iges)",
+                path.display()
+            )));
+        }
         let (ku, kv): (usize, usize) = k.extract()?;
         let b = surface_form((&tu, &tv), &c, (ku, kv))?;
         return py

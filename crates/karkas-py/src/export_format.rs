@@ -24,8 +24,9 @@ pub struct Options {
     pub(crate) mesh: MeshOptions,
 }
 
-/// The format of `path` among `allowed`: `options.format` by name, else the extension; STEP
-/// and IGES asked of a kind without them are refused with `no_exact`.
+/// The format of `path` among `allowed`: `options.format` by name, else the extension; STEP,
+/// IGES and DXF asked of a kind without them are refused with `no_exact` (DXF of a kind with
+/// STEP, a surface, as curves only).
 pub fn choose(
     path: &Path,
     options: &Options,
@@ -39,6 +40,15 @@ pub fn choose(
             OutputFormat::from_path(path, &all).map_err(|e| OptionError::new_err(e.to_string()))?
         }
     };
+    if format == OutputFormat::Dxf
+        && allowed.contains(&OutputFormat::Step)
+        && !allowed.contains(&format)
+    {
+        return Err(OptionError::new_err(format!(
+            "{}: DXF is written for curves only (write .step or .iges)",
+            path.display()
+        )));
+    }
     if format.is_cad() && !allowed.contains(&format) {
         return Err(OptionError::new_err(format!(
             "{}: {no_exact}",

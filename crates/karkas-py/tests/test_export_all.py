@@ -151,9 +151,9 @@ def test_discrete_spline_refuses_step_as_the_cli(tmp_path):
     src = tmp_path / "points.csv"
     write_points(src, POINTS2)
     r = subprocess.run([CLI, "curve", "dps", str(src), "--order", "3", "--n", "6", "-o", str(tmp_path / "c.step")], capture_output=True, text=True)
-    assert r.returncode != 0 and "no exact STEP/IGES form" in r.stderr
+    assert r.returncode != 0 and "no exact STEP/IGES/DXF form" in r.stderr
     s = karkas.DiscreteSpline.interpolate(POINTS2, order=3, n=6)
-    with pytest.raises(karkas.OptionError, match="no exact STEP/IGES form"):
+    with pytest.raises(karkas.OptionError, match="no exact STEP/IGES/DXF form"):
         karkas.export(s, tmp_path / "c.step")
     assert not (tmp_path / "c.step").exists()
 
@@ -456,7 +456,7 @@ def test_read_skeleton_and_tube_export(tmp_path):
             title = f"discrete periodic tube, {N1} x {N2} values, orders 2 and 2"
             karkas.export(tube, tmp_path / f"py.{ext}", title=title)
             same_bytes(out, tmp_path / f"py.{ext}")
-    with pytest.raises(karkas.OptionError, match="no exact STEP/IGES form"):
+    with pytest.raises(karkas.OptionError, match="no exact STEP/IGES/DXF form"):
         karkas.export(tube, tmp_path / "t.iges")
 
 

@@ -42,7 +42,7 @@ pub struct CurveDpsArgs {
 
 /// Runs `karkas curve dps`.
 pub fn run(args: &CurveDpsArgs) -> Result<()> {
-    refuse_cad_for_discrete(&args.output)?;
+    refuse_cad_for_discrete(&args.output, &OutputFormat::CURVE_CAD)?;
     let format = output_format(&args.output, &CURVE_FORMATS)?;
     check_dps_order("--order", args.order)?;
     check_dps_step("--n", args.step)?;

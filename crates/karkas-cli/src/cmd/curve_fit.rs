@@ -77,7 +77,8 @@ pub struct CurveFitArgs {
     pin_ends: bool,
     /// Output: .csv (t,x,y[,z] samples of the curve), a picture .svg or .png (points, curve,
     /// deviation whiskers; x-y projection) a 3-D viewer page (.html), or
-    /// the exact B-spline curve as .step/.stp or .iges/.igs (planar curves in z = 0).
+    /// the exact B-spline curve as .step/.stp, .iges/.igs or .dxf (a SPLINE with the input
+    /// points; planar curves in z = 0).
     #[arg(short, long)]
     output: PathBuf,
     #[command(flatten)]
@@ -185,7 +186,13 @@ impl CurveJob for (&CurveFitArgs, OutputFormat, Option<Vec<f64>>) {
             })?;
         }
         if format.is_cad() {
-            write_cad_curve(&fit.spline, format, &args.output, args.input.display())?;
+            write_cad_curve(
+                &fit.spline,
+                points,
+                format,
+                &args.output,
+                args.input.display(),
+            )?;
         } else {
             write_fit_picture_or_samples(args, format, points, &fit, (&ts, &samples))?;
         }

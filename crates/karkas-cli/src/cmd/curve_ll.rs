@@ -35,7 +35,8 @@ pub struct CurveLlArgs {
     input: PathBuf,
     /// Output file: .csv (t,x,y[,z]), a picture of the curve over its points (.svg, .png;
     /// x-y projection) a 3-D viewer page (.html), or
-    /// the exact B-spline curve as .step/.stp or .iges/.igs (planar curves in z = 0).
+    /// the exact B-spline curve as .step/.stp, .iges/.igs or .dxf (a SPLINE with the input
+    /// points; planar curves in z = 0).
     #[arg(short, long)]
     output: PathBuf,
     #[command(flatten)]
@@ -66,7 +67,7 @@ impl CurveJob for (&CurveLlArgs, OutputFormat) {
         let curve = build(points, args.order, args.closed)
             .with_context(|| args.input.display().to_string())?;
         if format.is_cad() {
-            return write_cad_curve(&curve, format, &args.output, args.input.display());
+            return write_cad_curve(&curve, points, format, &args.output, args.input.display());
         }
         let n = args
             .samples

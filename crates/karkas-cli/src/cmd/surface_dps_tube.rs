@@ -52,7 +52,7 @@ pub struct SurfaceDpsTubeArgs {
 
 /// Runs `karkas surface dps-tube`.
 pub fn run(args: &SurfaceDpsTubeArgs) -> Result<()> {
-    refuse_cad_for_discrete(&args.output)?;
+    refuse_cad_for_discrete(&args.output, &OutputFormat::CAD)?;
     let format = output_format(&args.output, &SURFACE_FORMATS)?;
     args.mesh.check(format)?;
     check_dps_order("--r1", args.r1)?;

@@ -1,26 +1,34 @@
-//! The exact B-spline forms as STEP or IGES, and the refusal of those formats for the discrete
-//! periodic splines, which have none.
+//! The exact B-spline forms as STEP, IGES or DXF (curves), and the refusal of those formats
+//! for the discrete periodic splines, which have none.
 
 use anyhow::{bail, Context, Result};
 use karkas::bspline::{ToBSplineCurve, ToBSplineSurface};
-use karkas_io::export::cad::NO_EXACT_FORM;
+use karkas::Point;
+use karkas_io::export::cad::{write_cad_curve_with_points, NO_EXACT_FORM};
 use karkas_io::OutputFormat;
 use std::path::Path;
 
-/// Writes the exact B-spline form of `curve` as STEP or IGES (by `format`, one of
-/// [`OutputFormat::CAD`]); `what` names the input for errors.
+/// Writes the exact B-spline form of `curve` as STEP, IGES or DXF (by `format`, one of
+/// [`OutputFormat::CURVE_CAD`]) with the input `points` the curve was made from, which a DXF
+/// holds as POINT entities on layer `POINTS` (STEP and IGES leave them out); `what` names the
+/// input for errors.
 pub fn write_cad_curve<const D: usize>(
     curve: &impl ToBSplineCurve<D>,
+    points: &[Point<D>],
     format: OutputFormat,
     output: &Path,
     what: impl std::fmt::Display,
 ) -> Result<()> {
     let what = what.to_string();
     let bspline = curve.to_bspline().with_context(|| what.clone())?;
-    let spatial =
-        karkas_io::export::cad::write_cad_curve(&bspline, format, output, Path::new(&what))?;
+    let spatial = write_cad_curve_with_points(&bspline, points, format, output, Path::new(&what))?;
+    let shown_points = if format == OutputFormat::Dxf {
+        format!(", {} input points", points.len())
+    } else {
+        String::new()
+    };
     eprintln!(
-        "karkas: wrote {} (B-spline curve of degree {}, {} control points)",
+        "karkas: wrote {} (B-spline curve of degree {}, {} control points{shown_points})",
         super::target::shown(output).display(),
         spatial.degree(),
         spatial.control_points().len()
@@ -49,12 +57,13 @@ pub fn write_cad_surface(
     Ok(())
 }
 
-/// Refuses STEP and IGES for the discrete periodic splines: they are point sets (docs/methods.md
-/// §3, §6), with no exact piecewise polynomial form to export.
-pub fn refuse_cad_for_discrete(output: &Path) -> Result<()> {
+/// Refuses the exact formats `exact` (STEP and IGES, [`OutputFormat::CAD`], for surfaces; and
+/// DXF, [`OutputFormat::CURVE_CAD`], for curves) for the discrete periodic splines: they are
+/// point sets (docs/methods.md §3, §6), with no exact piecewise polynomial form to export.
+pub fn refuse_cad_for_discrete(output: &Path, exact: &[OutputFormat]) -> Result<()> {
     let cad = match super::target::requested_format() {
-        Some(format) => format.is_cad(),
-        None => OutputFormat::from_path(output, &OutputFormat::CAD).is_ok(),
+        Some(format) => exact.contains(&format),
+        None => OutputFormat::from_path(output, exact).is_ok(),
     };
     if cad {
         bail!(

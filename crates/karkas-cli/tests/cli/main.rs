@@ -11,6 +11,7 @@ mod curve_spline;
 mod demo_hydrofoil;
 mod demo_report;
 mod dps;
+mod dxf;
 mod export;
 mod fit_tolerance;
 mod hausdorff;

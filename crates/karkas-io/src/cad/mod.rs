@@ -1,6 +1,8 @@
 //! Exact B-spline geometry for CAD programs: [`step`] (STEP AP214) and [`iges`] (IGES 5.3,
-//! entities 126 and 128), both writing the [`CadEntity`] items of [`entity`].
+//! entities 126 and 128), both writing the [`CadEntity`] items of [`entity`]; [`dxf`] (DXF
+//! R2000 SPLINE and POINT entities) for the curves that go to CAM and laser cutting.
 
+pub mod dxf;
 pub mod entity;
 pub mod iges;
 pub mod step;

@@ -17,9 +17,9 @@ pub const SURFACE_FORMATS: [OutputFormat; 10] = concat(
     [OutputFormat::Svg, OutputFormat::Png, OutputFormat::Html],
 );
 
-/// [`CURVE_FORMATS`] and the exact B-spline curve as STEP or IGES, for the curves that are
-/// piecewise polynomials.
-pub const EXACT_CURVE_FORMATS: [OutputFormat; 6] = concat(CURVE_FORMATS, OutputFormat::CAD);
+/// [`CURVE_FORMATS`] and the exact B-spline curve as STEP, IGES or DXF, for the curves that
+/// are piecewise polynomials.
+pub const EXACT_CURVE_FORMATS: [OutputFormat; 7] = concat(CURVE_FORMATS, OutputFormat::CURVE_CAD);
 
 /// [`SURFACE_FORMATS`] and the exact B-spline surface as STEP or IGES.
 pub const EXACT_SURFACE_FORMATS: [OutputFormat; 12] = concat(SURFACE_FORMATS, OutputFormat::CAD);

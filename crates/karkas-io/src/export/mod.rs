@@ -2,7 +2,7 @@
 //! surface, a discrete periodic spline or tube, a grid of points, a point list or a triangle
 //! mesh, sampled with the default counts and drawn with the defaults of the command line (the
 //! curvature comb, the isoparametric lines, the default view), or the exact B-spline forms as
-//! STEP or IGES.
+//! STEP or IGES (and curves as DXF).
 //!
 //! The command line and the Python package both write through this module, so that a file
 //! written either way is the same byte for byte. Every file is written atomically
@@ -16,7 +16,8 @@
 //!   discrete periodic curves.
 //! - [`surface`]: sampled surfaces and grids (CSV, meshes, pictures, the viewer page).
 //! - [`mesh`]: triangle meshes (mesh formats and the viewer page).
-//! - [`cad`]: the exact B-spline forms as STEP or IGES.
+//! - [`cad`]: the exact B-spline forms as STEP or IGES, and curves with their input points
+//!   as DXF.
 
 pub mod cad;
 pub mod curve;
