@@ -213,44 +213,34 @@ pub fn write_discrete_curve<const D: usize>(
 }
 
 /// The curvature comb of the x-y projection of `curve` at (at most [`COMB_TEETH`] of) the
-/// parameters `ts`: from each point, a tooth of length proportional to the signed curvature
-/// `(x'y'' - y'x'') / |r'|^3`, along the normal away from the centre of curvature, the longest
-/// tooth a sixth of the curve's extent.
+/// parameters `ts`: for each tooth its foot `p` on the curve and the curvature vector there,
+/// `-kappa n` with the signed curvature `kappa = (x'y'' - y'x'') / |r'|^3` and `n` the unit
+/// normal to the left of the direction of travel (so the vector points away from the centre
+/// of curvature and its length is `|kappa|`). The picture scales the teeth
+/// ([`ScaledComb`](crate::picture::comb::ScaledComb): a percentile of the lengths to a fixed
+/// fraction of the curve's extent).
 pub fn curvature_comb<const D: usize>(curve: &impl Curve<D>, ts: &[f64]) -> Vec<[Point2; 2]> {
     let stride = ts.len().div_ceil(COMB_TEETH).max(1);
-    let mut raw = Vec::new();
-    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+    let mut teeth = Vec::with_capacity(ts.len().min(COMB_TEETH + 1));
     for (k, &t) in ts.iter().enumerate() {
-        let p = curve.eval(t);
-        let p = Point2::new([p[0], p[1]]);
-        for c in 0..2 {
-            lo[c] = lo[c].min(p[c]);
-            hi[c] = hi[c].max(p[c]);
-        }
         if k % stride != 0 && k + 1 != ts.len() {
             continue;
         }
+        let p = curve.eval(t);
+        let p = Point2::new([p[0], p[1]]);
         let (d1, d2) = (curve.deriv(t, 1), curve.deriv(t, 2));
         let speed = d1[0].hypot(d1[1]);
         if !(speed > 0.0 && speed.is_finite()) {
             continue;
         }
         let kappa = (d1[0] * d2[1] - d1[1] * d2[0]) / speed.powi(3);
-        // Unit normal to the left of the direction of travel: the centre of curvature is at
-        // p + n / kappa, so the tooth -kappa n points away from it.
+        // The centre of curvature is at p + n / kappa, so -kappa n points away from it.
         let n = Point2::new([-d1[1] / speed, d1[0] / speed]);
-        if kappa.is_finite() {
-            raw.push((p, n * (-kappa)));
+        if kappa.is_finite() && p.is_finite() {
+            teeth.push([p, n * (-kappa)]);
         }
     }
-    let extent = (hi[0] - lo[0]).max(hi[1] - lo[1]);
-    let longest = raw.iter().map(|(_, v)| v.norm()).fold(0.0, f64::max);
-    let scale = if longest > 0.0 && extent.is_finite() {
-        extent / 6.0 / longest
-    } else {
-        0.0
-    };
-    raw.into_iter().map(|(p, v)| [p, p + v * scale]).collect()
+    teeth
 }
 
 /// The x-y projection of points of any dimension.
@@ -271,7 +261,7 @@ mod tests {
     use super::*;
 
     /// A circle of radius 2 traversed counter-clockwise: curvature 1/2 everywhere, teeth
-    /// pointing outwards, all of the same length (a sixth of the extent 4).
+    /// pointing outwards.
     #[test]
     fn comb_of_a_circle_points_outwards() {
         struct Circle;
@@ -300,9 +290,10 @@ mod tests {
             .collect();
         let comb = curvature_comb(&Circle, &ts);
         assert_eq!(comb.len(), 51);
-        for [p, tip] in comb {
-            assert!((tip.norm() - (2.0 + 4.0 / 6.0)).abs() < 1e-9, "{tip:?}");
+        for [p, vector] in comb {
             assert!((p.norm() - 2.0).abs() < 1e-12);
+            // Outwards: along p, of length 1/2.
+            assert!((vector - p * 0.25).norm() < 1e-12, "{vector:?} at {p:?}");
         }
     }
 }

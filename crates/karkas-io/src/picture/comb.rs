@@ -1,0 +1,161 @@
+//! The scale of a curvature comb in a picture.
+//!
+//! A comb scaled to its longest tooth shows only the sharpest bend (an airfoil's leading
+//! edge) and is flat everywhere else. Here the teeth are scaled so that the
+//! [`PERCENTILE`]th percentile of their lengths is [`TOOTH_FRACTION`] of the curve's extent,
+//! the factor rounded to two significant digits so that the legend reads
+//! "tooth = curvature x S". The few teeth that this would make longer than [`CLIP`] times
+//! that percentile tooth are clipped to that length (drawn in a darker colour, and counted in
+//! the legend), so that no tooth leaves the picture and the clipped ones stay recognisable.
+
+/// The percentile of the curvature magnitudes that sets the scale.
+pub const PERCENTILE: f64 = 0.9;
+/// The length of the percentile tooth as a fraction of the curve's extent.
+pub const TOOTH_FRACTION: f64 = 0.06;
+/// Teeth are clipped at this many times the percentile tooth.
+pub const CLIP: f64 = 2.5;
+
+/// A comb ready to draw.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ScaledComb {
+    /// The teeth from the curve to their tips, in model units, and whether each was clipped.
+    pub teeth: Vec<([(f64, f64); 2], bool)>,
+    /// Model units of tooth length per unit of curvature (square model units).
+    pub factor: f64,
+    /// The longest tooth drawn, in model units.
+    pub cap: f64,
+    /// How many teeth were clipped.
+    pub clipped: usize,
+}
+
+impl ScaledComb {
+    /// The comb of the `teeth` (each a foot on the curve and the curvature vector there:
+    /// length the curvature, pointing away from the centre of curvature) of a curve whose
+    /// extent (the larger side of its bounding box) is `extent`.
+    pub fn new(teeth: &[[karkas::Point2; 2]], extent: f64) -> ScaledComb {
+        let finite: Vec<&[karkas::Point2; 2]> = teeth
+            .iter()
+            .filter(|t| t[0].is_finite() && t[1].is_finite())
+            .collect();
+        let mut lengths: Vec<f64> = finite.iter().map(|t| t[1].norm()).collect();
+        lengths.sort_by(f64::total_cmp);
+        let reference = percentile(&lengths, PERCENTILE)
+            .filter(|&k| k > 0.0)
+            .or_else(|| lengths.last().copied().filter(|&k| k > 0.0));
+        let factor = match reference {
+            Some(k) if extent > 0.0 && extent.is_finite() => {
+                two_digits(TOOTH_FRACTION * extent / k)
+            }
+            _ => 0.0,
+        };
+        let cap = CLIP * TOOTH_FRACTION * extent;
+        let mut clipped = 0;
+        let teeth = finite
+            .into_iter()
+            .map(|t| {
+                let (p, v) = (t[0], t[1] * factor);
+                let length = v.norm();
+                let over = length > cap;
+                let v = if over {
+                    clipped += 1;
+                    v * (cap / length)
+                } else {
+                    v
+                };
+                ([(p[0], p[1]), (p[0] + v[0], p[1] + v[1])], over)
+            })
+            .collect();
+        ScaledComb {
+            teeth,
+            factor,
+            cap,
+            clipped,
+        }
+    }
+
+    /// The legend line: the scale, and the clipped teeth if any.
+    pub fn legend(&self) -> String {
+        let mut text = format!(
+            "comb: tooth length = curvature \u{d7} {} (the {:.0}th percentile tooth is {:.0}% of the curve's extent)",
+            significant(self.factor),
+            100.0 * PERCENTILE,
+            100.0 * TOOTH_FRACTION,
+        );
+        if self.clipped > 0 {
+            text.push_str(&format!(
+                "; {} of {} teeth clipped at {} (dark)",
+                self.clipped,
+                self.teeth.len(),
+                significant(self.cap)
+            ));
+        }
+        text
+    }
+}
+
+/// The `q` quantile of the sorted `values` (nearest rank), none for no values.
+fn percentile(sorted: &[f64], q: f64) -> Option<f64> {
+    let last = sorted.len().checked_sub(1)?;
+    Some(sorted[((q * last as f64).round() as usize).min(last)])
+}
+
+/// `x` rounded to two significant digits.
+fn two_digits(x: f64) -> f64 {
+    let power = 10f64.powf(x.log10().floor() - 1.0);
+    (x / power).round() * power
+}
+
+/// `x` with up to three significant digits, without trailing zeros.
+fn significant(x: f64) -> String {
+    if x == 0.0 || !x.is_finite() {
+        return "0".to_owned();
+    }
+    let magnitude = x.abs().log10().floor();
+    if !(-4.0..6.0).contains(&magnitude) {
+        return format!("{x:.2e}");
+    }
+    let decimals = (2.0 - magnitude).max(0.0) as usize;
+    let text = format!("{x:.decimals$}");
+    if text.contains('.') {
+        text.trim_end_matches('0').trim_end_matches('.').to_owned()
+    } else {
+        text
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use karkas::Point2;
+
+    #[test]
+    fn the_percentile_sets_the_scale_and_outliers_are_clipped() {
+        // 100 teeth of curvature 1 to 100 (in steps of 1), and one of 10^4.
+        let mut teeth: Vec<[Point2; 2]> = (1..=100)
+            .map(|k| [Point2::new([k as f64, 0.0]), Point2::new([0.0, k as f64])])
+            .collect();
+        teeth.push([Point2::new([0.0, 0.0]), Point2::new([0.0, 1e4])]);
+        let comb = ScaledComb::new(&teeth, 10.0);
+        // The 90th percentile (nearest rank of 101 values) is 91: 0.6 / 91 = 0.00659...
+        assert_eq!(comb.factor, 0.0066);
+        assert_eq!(comb.cap, 1.5);
+        // Teeth over 1.5 / 0.0066 = 227 in curvature: only the last.
+        assert_eq!(comb.clipped, 1);
+        let (tooth, clipped) = comb.teeth[100];
+        assert!(clipped && (tooth[1].1 - 1.5).abs() < 1e-12);
+        let (tooth, clipped) = comb.teeth[49];
+        assert!(!clipped && (tooth[1].1 - 50.0 * 0.0066).abs() < 1e-12);
+        let legend = comb.legend();
+        assert!(legend.contains("curvature \u{d7} 0.0066"), "{legend}");
+        assert!(legend.contains("1 of 101 teeth clipped at 1.5"), "{legend}");
+    }
+
+    #[test]
+    fn a_straight_line_has_a_flat_comb() {
+        let teeth = [[Point2::new([0.0, 0.0]), Point2::new([0.0, 0.0])]; 3];
+        let comb = ScaledComb::new(&teeth, 1.0);
+        assert_eq!((comb.factor, comb.clipped), (0.0, 0));
+        assert_eq!(significant(1234.6), "1235");
+        assert_eq!(significant(0.012345), "0.0123");
+    }
+}
