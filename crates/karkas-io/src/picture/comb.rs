@@ -1,19 +1,23 @@
 //! The scale of a curvature comb in a picture.
 //!
 //! A comb scaled to its longest tooth shows only the sharpest bend (an airfoil's leading
-//! edge) and is flat everywhere else. Here the teeth are scaled so that the
-//! [`PERCENTILE`]th percentile of their lengths is [`TOOTH_FRACTION`] of the curve's extent,
-//! the factor rounded to two significant digits so that the legend reads
-//! "tooth = curvature x S". The few teeth that this would make longer than [`CLIP`] times
-//! that percentile tooth are clipped to that length (drawn in a darker colour, and counted in
-//! the legend), so that no tooth leaves the picture and the clipped ones stay recognisable.
+//! edge) and is flat everywhere else. Here the teeth (equally spaced along the curve) are
+//! scaled so that the [`PERCENTILE`] percentile of their lengths is [`TOOTH_FRACTION`] of
+//! the curve's extent, the factor rounded to two significant digits so that the legend reads
+//! "tooth length = curvature x S". The 80th rather than the 90th percentile: on an airfoil
+//! the tenth of the arc round the nose holds the top decile of the curvature, so the 90th
+//! percentile still lets the nose set the scale and leaves the aft third flat. The few teeth
+//! that the scale makes longer than [`CLIP`] times the percentile tooth (on an airfoil, the
+//! nose: about a tenth of the teeth) are clipped to that length, drawn in a darker colour and
+//! counted in the legend, so that no tooth leaves the picture and the clipped ones stay
+//! recognisable.
 
 /// The percentile of the curvature magnitudes that sets the scale.
-pub const PERCENTILE: f64 = 0.9;
+pub const PERCENTILE: f64 = 0.8;
 /// The length of the percentile tooth as a fraction of the curve's extent.
 pub const TOOTH_FRACTION: f64 = 0.06;
 /// Teeth are clipped at this many times the percentile tooth.
-pub const CLIP: f64 = 2.5;
+pub const CLIP: f64 = 3.0;
 
 /// A comb ready to draw.
 #[derive(Clone, Debug, PartialEq)]
@@ -76,14 +80,12 @@ impl ScaledComb {
     /// The legend line: the scale, and the clipped teeth if any.
     pub fn legend(&self) -> String {
         let mut text = format!(
-            "comb: tooth length = curvature \u{d7} {} (the {:.0}th percentile tooth is {:.0}% of the curve's extent)",
+            "comb: tooth length = curvature \u{d7} {}",
             significant(self.factor),
-            100.0 * PERCENTILE,
-            100.0 * TOOTH_FRACTION,
         );
         if self.clipped > 0 {
             text.push_str(&format!(
-                "; {} of {} teeth clipped at {} (dark)",
+                "; {} of {} teeth (dark) clipped at {}",
                 self.clipped,
                 self.teeth.len(),
                 significant(self.cap)
@@ -101,8 +103,8 @@ fn percentile(sorted: &[f64], q: f64) -> Option<f64> {
 
 /// `x` rounded to two significant digits.
 fn two_digits(x: f64) -> f64 {
-    let power = 10f64.powf(x.log10().floor() - 1.0);
-    (x / power).round() * power
+    // Through the decimal text, so that the factor is the double nearest its printed value.
+    format!("{x:.1e}").parse().unwrap_or(x)
 }
 
 /// `x` with up to three significant digits, without trailing zeros.
@@ -136,18 +138,21 @@ mod tests {
             .collect();
         teeth.push([Point2::new([0.0, 0.0]), Point2::new([0.0, 1e4])]);
         let comb = ScaledComb::new(&teeth, 10.0);
-        // The 90th percentile (nearest rank of 101 values) is 91: 0.6 / 91 = 0.00659...
-        assert_eq!(comb.factor, 0.0066);
-        assert_eq!(comb.cap, 1.5);
-        // Teeth over 1.5 / 0.0066 = 227 in curvature: only the last.
+        // The 80th percentile (nearest rank of 101 values) is 81: 0.6 / 81 = 0.00740...
+        assert_eq!(comb.factor, 0.0074);
+        assert!((comb.cap - 1.8).abs() < 1e-12);
+        // Teeth over 1.8 / 0.0074 = 243 in curvature: only the last.
         assert_eq!(comb.clipped, 1);
         let (tooth, clipped) = comb.teeth[100];
-        assert!(clipped && (tooth[1].1 - 1.5).abs() < 1e-12);
+        assert!(clipped && (tooth[1].1 - 1.8).abs() < 1e-12);
         let (tooth, clipped) = comb.teeth[49];
-        assert!(!clipped && (tooth[1].1 - 50.0 * 0.0066).abs() < 1e-12);
+        assert!(!clipped && (tooth[1].1 - 50.0 * 0.0074).abs() < 1e-12);
         let legend = comb.legend();
-        assert!(legend.contains("curvature \u{d7} 0.0066"), "{legend}");
-        assert!(legend.contains("1 of 101 teeth clipped at 1.5"), "{legend}");
+        assert!(legend.contains("curvature \u{d7} 0.0074"), "{legend}");
+        assert!(
+            legend.contains("1 of 101 teeth (dark) clipped at 1.8"),
+            "{legend}"
+        );
     }
 
     #[test]

@@ -605,5 +605,77 @@ mod tests {
         assert_eq!(svg.matches("<polygon").count(), 4);
         // The line on the surface and the one beside it are drawn, the one below is not.
         assert_eq!(svg.matches("<polyline").count(), 2);
+        // Seen from above with azimuth 0, the picture's right is +y and its up is -x.
+        assert!(
+            svg.contains("across the picture: y, up the picture: -x"),
+            "{svg}"
+        );
+        assert!(!svg.contains("view x") && !svg.contains("view y"));
+        for axis in ["x", "y", "z"] {
+            assert!(
+                svg.contains(&format!(">{axis}</text>")),
+                "triad label {axis}"
+            );
+        }
+    }
+
+    #[test]
+    fn directions_are_named_by_the_model_axes() {
+        let d = |x: f64, y: f64, z: f64| direction_name(Point3::new([x, y, z]));
+        assert_eq!(d(1.0, 0.0, 0.0), "x");
+        assert_eq!(d(0.0, 0.0, -1.0), "-z");
+        let h = std::f64::consts::FRAC_1_SQRT_2;
+        assert_eq!(d(h, h, 0.0), "0.71 x + 0.71 y");
+        assert_eq!(d(-0.5, -1e-17, -0.866), "-0.5 x - 0.87 z");
+        let (right, up) = View {
+            azimuth: -90.0,
+            elevation: 0.0,
+        }
+        .axis_names();
+        // Looking from -y towards +y: right is +x, up is +z.
+        assert_eq!((right.as_str(), up.as_str()), ("x", "z"));
+    }
+
+    /// The scale bar's ticks are round model lengths at the picture's scale: a unit square seen
+    /// from above fills about 1000 of the 1100 pixels, so ticks 0.1 apart are about 96 px apart.
+    #[test]
+    fn the_scale_bar_measures_model_units() {
+        let points: Vec<Point3> = (0..2)
+            .flat_map(|i| (0..2).map(move |j| Point3::new([i as f64, j as f64, 0.0])))
+            .collect();
+        let scene = Scene {
+            title: "square",
+            mesh: SceneMesh {
+                rows: 2,
+                cols: 2,
+                points: &points,
+            },
+            curves: &[],
+            view: View {
+                azimuth: 0.0,
+                elevation: 90.0,
+            },
+        };
+        let svg = render_scene_svg(&scene);
+        let ticks: Vec<(f64, String)> = svg
+            .split("<text class=\"tick-scale\" x=\"")
+            .skip(1)
+            .map(|t| {
+                let (x, rest) = t.split_once('"').unwrap();
+                let label = rest.split_once('>').unwrap().1.split_once('<').unwrap().0;
+                (x.parse().unwrap(), label.to_owned())
+            })
+            .collect();
+        assert!(ticks.len() >= 2, "{ticks:?}");
+        // The square spans 1 / 1.06 of the drawing width (3% padding on each side).
+        let pixels_per_unit = DRAWING_WIDTH / 1.06;
+        for (x, label) in &ticks {
+            let value: f64 = label.parse().unwrap();
+            let expected = ticks[0].0 + value * pixels_per_unit;
+            assert!(
+                (x - expected).abs() < 0.01,
+                "{label} at {x}, expected {expected}"
+            );
+        }
     }
 }
