@@ -13,10 +13,11 @@ pub fn tick_values(range: (f64, f64), pixels_per_unit: f64, min_gap: f64) -> (Ve
     let step = nice_step(min_gap / pixels_per_unit);
     // A tick on the range's end stays in despite rounding (-0.3 / 0.1 is -2.9999999999999996).
     let (first, last) = ((start / step - 1e-9).ceil(), (end / step + 1e-9).floor());
-    if !(last - first < 1000.0) {
+    let count = last - first;
+    if count.is_nan() || count >= 1000.0 {
         return (Vec::new(), step);
     }
-    let values = (0..=(last - first) as i64)
+    let values = (0..=count as i64)
         .map(|k| (first + k as f64) * step)
         .collect();
     (values, step)
