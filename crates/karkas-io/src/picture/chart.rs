@@ -15,8 +15,10 @@
 
 use std::fmt::Write as _;
 
-use crate::picture::scene::escape;
+use crate::picture::text::escape;
 use crate::picture::ticks::{tick_label, tick_values};
+
+pub use crate::picture::text::Px;
 
 /// Width of the picture in pixels.
 pub const WIDTH: f64 = 900.0;
@@ -35,15 +37,6 @@ const BOTTOM: f64 = 62.0;
 const LEGEND_LINE: f64 = 20.0;
 /// Least distance between ticks in pixels, horizontally and vertically.
 const TICK_GAP: (f64, f64) = (80.0, 50.0);
-
-/// A pixel coordinate with two decimals.
-pub struct Px(pub f64);
-
-impl std::fmt::Display for Px {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "{:.2}", self.0)
-    }
-}
 
 /// One legend entry: a swatch of a colour and a text.
 #[derive(Clone, Debug)]

@@ -9,6 +9,11 @@
 //! (by more than a small fraction of the model's size, which absorbs the difference between
 //! the mesh and the true surface).
 //!
+//! Under the drawing: a scale bar with ticks in model units (an orthographic view shows
+//! lengths across the picture true), the picture's horizontal and vertical directions named
+//! by the model axes ([`View::axis_names`]), and the model axes x, y, z as they appear.
+//! Curves are written to a hundredth of a pixel, mesh cells to a tenth.
+//!
 //! The SVG is written directly rather than through `plotters`: plotters rounds every
 //! coordinate to whole pixels, and a mesh of thousands of small cells needs sub-pixel
 //! coordinates to look smooth. The rasterizer is a plain loop over each triangle's bounding
@@ -22,8 +27,8 @@ use karkas::{Point2, Point3};
 use crate::error::IoError;
 use crate::mesh::normals::cross;
 use crate::picture::budget;
-use crate::picture::chart::Px;
 use crate::picture::png::write_svg_as_png;
+use crate::picture::text::Px;
 use crate::picture::ticks::{nice_step, tick_label, without_negative_zero};
 use crate::write::write_atomic;
 
@@ -559,13 +564,7 @@ fn write_legend(svg: &mut String, groups: &[SceneCurves<'_>], baseline: f64) {
     }
 }
 
-/// `text` with the XML (and HTML) special characters escaped.
-pub(crate) fn escape(text: &str) -> String {
-    text.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
-        .replace('"', "&quot;")
-}
+pub(crate) use crate::picture::text::escape;
 
 #[cfg(test)]
 mod tests {
