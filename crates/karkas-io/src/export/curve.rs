@@ -14,8 +14,11 @@ use crate::{IoError, OutputFormat};
 use karkas::{Curve, Point, Point2, Point3};
 use std::path::Path;
 
-/// The most teeth a curvature comb gets.
-pub const COMB_TEETH: usize = 300;
+/// The most teeth a curvature comb gets (the picture draws at most
+/// [`DRAWN_TEETH`](crate::picture::comb::DRAWN_TEETH) of them as lines, all as the envelope
+/// through their tips, fine enough to show the curvature ripple of every piece of a curve
+/// through a few hundred points).
+pub const COMB_TEETH: usize = 1200;
 
 /// The formats [`write_curve_figure`] draws.
 const FIGURES: [OutputFormat; 3] = [OutputFormat::Svg, OutputFormat::Png, OutputFormat::Html];

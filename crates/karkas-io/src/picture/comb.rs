@@ -18,17 +18,22 @@ pub const PERCENTILE: f64 = 0.8;
 pub const TOOTH_FRACTION: f64 = 0.06;
 /// Teeth are clipped at this many times the percentile tooth.
 pub const CLIP: f64 = 3.0;
+/// The most teeth drawn as lines (every so many of the teeth; the envelope runs through the
+/// tips of all of them).
+pub const DRAWN_TEETH: usize = 300;
 
 /// A comb ready to draw.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ScaledComb {
     /// The teeth from the curve to their tips, in model units, and whether each was clipped.
     pub teeth: Vec<([(f64, f64); 2], bool)>,
+    /// Every how many teeth one is drawn as a line (at most [`DRAWN_TEETH`] drawn).
+    pub stride: usize,
     /// Model units of tooth length per unit of curvature (square model units).
     pub factor: f64,
     /// The longest tooth drawn, in model units.
     pub cap: f64,
-    /// How many teeth were clipped.
+    /// How many of the drawn teeth were clipped.
     pub clipped: usize,
 }
 
@@ -53,28 +58,30 @@ impl ScaledComb {
             _ => 0.0,
         };
         let cap = CLIP * TOOTH_FRACTION * extent;
-        let mut clipped = 0;
-        let teeth = finite
+        let teeth: Vec<([(f64, f64); 2], bool)> = finite
             .into_iter()
             .map(|t| {
                 let (p, v) = (t[0], t[1] * factor);
                 let length = v.norm();
                 let over = length > cap;
-                let v = if over {
-                    clipped += 1;
-                    v * (cap / length)
-                } else {
-                    v
-                };
+                let v = if over { v * (cap / length) } else { v };
                 ([(p[0], p[1]), (p[0] + v[0], p[1] + v[1])], over)
             })
             .collect();
+        let stride = teeth.len().div_ceil(DRAWN_TEETH).max(1);
+        let clipped = teeth.iter().step_by(stride).filter(|t| t.1).count();
         ScaledComb {
             teeth,
+            stride,
             factor,
             cap,
             clipped,
         }
+    }
+
+    /// The teeth drawn as lines: every [`stride`](Self::stride)th.
+    pub fn drawn(&self) -> impl Iterator<Item = &([(f64, f64); 2], bool)> {
+        self.teeth.iter().step_by(self.stride)
     }
 
     /// The legend line: the scale, and the clipped teeth if any.
@@ -87,7 +94,7 @@ impl ScaledComb {
             text.push_str(&format!(
                 "; {} of {} teeth (dark) clipped at {}",
                 self.clipped,
-                self.teeth.len(),
+                self.drawn().count(),
                 significant(self.cap)
             ));
         }

@@ -132,7 +132,7 @@ pub fn render_curve_svg_with(
     }
     chart.polyline("polygon", polygon, GREY, 1.0);
     if let Some(comb) = &comb {
-        for (tooth, clipped) in &comb.teeth {
+        for (tooth, clipped) in comb.drawn() {
             let (class, rgb) = if *clipped {
                 ("comb-clipped", CLIPPED)
             } else {
