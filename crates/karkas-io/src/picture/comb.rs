@@ -15,7 +15,7 @@
 /// The percentile of the curvature magnitudes that sets the scale.
 pub const PERCENTILE: f64 = 0.8;
 /// The length of the percentile tooth as a fraction of the curve's extent.
-pub const TOOTH_FRACTION: f64 = 0.06;
+pub const TOOTH_FRACTION: f64 = 0.07;
 /// Teeth are clipped at this many times the percentile tooth.
 pub const CLIP: f64 = 3.0;
 /// The most teeth drawn as lines (every so many of the teeth; the envelope runs through the
@@ -145,19 +145,19 @@ mod tests {
             .collect();
         teeth.push([Point2::new([0.0, 0.0]), Point2::new([0.0, 1e4])]);
         let comb = ScaledComb::new(&teeth, 10.0);
-        // The 80th percentile (nearest rank of 101 values) is 81: 0.6 / 81 = 0.00740...
-        assert_eq!(comb.factor, 0.0074);
-        assert!((comb.cap - 1.8).abs() < 1e-12);
-        // Teeth over 1.8 / 0.0074 = 243 in curvature: only the last.
+        // The 80th percentile (nearest rank of 101 values) is 81: 0.7 / 81 = 0.00864...
+        assert_eq!(comb.factor, 0.0086);
+        assert!((comb.cap - 2.1).abs() < 1e-12);
+        // Teeth over 2.1 / 0.0086 = 244 in curvature: only the last.
         assert_eq!(comb.clipped, 1);
         let (tooth, clipped) = comb.teeth[100];
-        assert!(clipped && (tooth[1].1 - 1.8).abs() < 1e-12);
+        assert!(clipped && (tooth[1].1 - 2.1).abs() < 1e-12);
         let (tooth, clipped) = comb.teeth[49];
-        assert!(!clipped && (tooth[1].1 - 50.0 * 0.0074).abs() < 1e-12);
+        assert!(!clipped && (tooth[1].1 - 50.0 * 0.0086).abs() < 1e-12);
         let legend = comb.legend();
-        assert!(legend.contains("curvature \u{d7} 0.0074"), "{legend}");
+        assert!(legend.contains("curvature \u{d7} 0.0086"), "{legend}");
         assert!(
-            legend.contains("1 of 101 teeth (dark) clipped at 1.8"),
+            legend.contains("1 of 101 teeth (dark) clipped at 2.1"),
             "{legend}"
         );
     }
