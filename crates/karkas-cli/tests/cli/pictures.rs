@@ -122,12 +122,29 @@ fn the_comb_of_an_airfoil_is_visible_along_the_whole_curve() {
                 "{method}: tooth tip {tip:?} outside the plotting area"
             );
         }
+        for class in ["tick-x", "tick-y"] {
+            let labels: Vec<&str> = svg
+                .split(&format!("class=\"{class}\""))
+                .skip(1)
+                .map(|t| t.split_once('>').unwrap().1.split_once('<').unwrap().0)
+                .collect();
+            assert!(labels.len() >= 3, "{method} {class}: {labels:?}");
+            for label in labels {
+                let negative_zero = label.starts_with('-') && label.parse::<f64>() == Ok(0.0);
+                assert!(!negative_zero, "{method} {class}: {label}");
+            }
+        }
         assert!(
             svg.contains("class=\"legend\"")
                 && svg.contains("comb: tooth length = curvature \u{d7} "),
             "{method}: the legend names the scale"
         );
     }
+    // PNG goes through the same drawing.
+    let png = dir.path().join("ll.png");
+    let o = karkas(&["curve", "ll", "--comb", s(&points), "-o", s(&png)]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(std::fs::read(&png).unwrap().starts_with(b"\x89PNG"));
 }
 
 /// A surface picture labels its scale in model units and its directions by the model axes,
