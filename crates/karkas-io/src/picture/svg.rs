@@ -300,6 +300,26 @@ fn write_rendered(path: &Path, rendered: Result<String, PictureError>) -> Result
     write_atomic(path, |out| out.write_all(svg.as_bytes()))
 }
 
+/// Width in pixels of pictures drawn with `plotters` on [`chart_builder`]'s layout (the same
+/// as the charts of this module).
+pub const WIDTH: u32 = 900;
+
+/// The layout of pictures still drawn with `plotters` (caption, margins, label areas). Such
+/// pictures get whole-pixel coordinates and plotters' tick labels; give their meshes
+/// [`tick_label`](crate::picture::ticks::tick_label) as the label formatter to keep "-0" out.
+pub fn chart_builder<'a, 'b, DB: plotters::prelude::DrawingBackend>(
+    root: &'a plotters::prelude::DrawingArea<DB, plotters::coord::Shift>,
+    title: &'b str,
+) -> plotters::prelude::ChartBuilder<'a, 'b, DB> {
+    let mut builder = plotters::prelude::ChartBuilder::on(root);
+    builder
+        .caption(title, ("sans-serif", 24))
+        .margin(12)
+        .x_label_area_size(45)
+        .y_label_area_size(65);
+    builder
+}
+
 /// The finite points of `points` as plotting coordinates (non-finite ones are left out).
 pub(crate) fn finite(points: &[Point2]) -> impl Iterator<Item = (f64, f64)> + '_ {
     points
