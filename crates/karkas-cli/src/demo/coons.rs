@@ -16,6 +16,7 @@ use karkas::coons::{
 };
 use karkas::{Point2, Point3, Surface};
 use karkas_io::obj::write_surface_obj;
+use karkas_io::scene::direction_name;
 use karkas_io::svg::{write_lines_svg, LineGroup, LinesPlot};
 use std::f64::consts::TAU;
 use std::path::Path;
@@ -86,6 +87,7 @@ pub fn figure_3(out: &Output) -> Result<Vec<Finding>> {
         &out.file("coons-fig3-gordon-vs-spline.svg"),
         "Chashnikov's fig. 3 network: Lagrange Gordon | natural-spline Gordon | composite Coons",
         &pictures,
+        axonometric_axes(SHEET_VIEW),
     )?;
     write_mesh(
         out,
@@ -185,6 +187,7 @@ pub fn fuselage_network(out: &Output) -> Result<Vec<Finding>> {
         &out.file("fuselage-gordon-vs-spline.svg"),
         "Chashnikov, 7 frames x 5 stringers: Lagrange Gordon (top), spline Gordon (bottom)",
         &[above, below],
+        axonometric_axes(BODY_VIEW),
     )?;
     write_mesh(
         out,
@@ -415,14 +418,27 @@ fn foot_point_distance(body: Body, p: Point3, mut u: f64, mut v: f64) -> f64 {
     p.distance(body.eval(u, v))
 }
 
-/// The view of the sheet: from the front left, above.
+/// The view of the sheet (azimuth and elevation in degrees): from the front left, above.
+const SHEET_VIEW: (f64, f64) = (-35.0, 30.0);
+/// The view of the fuselage: from the side, a little ahead of the nose, above.
+const BODY_VIEW: (f64, f64) = (18.0, 22.0);
+
+/// The view of the sheet.
 fn sheet_view(p: Point3) -> Point2 {
-    axonometric(p, -35.0, 30.0)
+    axonometric(p, SHEET_VIEW.0, SHEET_VIEW.1)
 }
 
-/// The view of the fuselage: from the side, a little ahead of the nose, above.
+/// The view of the fuselage.
 fn body_view(p: Point3) -> Point2 {
-    axonometric(p, 18.0, 22.0)
+    axonometric(p, BODY_VIEW.0, BODY_VIEW.1)
+}
+
+/// The names of [`axonometric`]'s picture directions (across, up) in model terms.
+fn axonometric_axes((azimuth, elevation): (f64, f64)) -> (String, String) {
+    let (az, el) = (azimuth.to_radians(), elevation.to_radians());
+    let right = Point3::new([az.cos(), az.sin(), 0.0]);
+    let up = Point3::new([az.sin() * el.sin(), -az.cos() * el.sin(), el.cos()]);
+    (direction_name(right), direction_name(up))
 }
 
 /// An axonometric projection: the camera turned `azimuth` degrees about z from the -y side
@@ -484,14 +500,19 @@ fn wireframe(
 }
 
 /// The wireframes in one picture: iso-lines thin and grey-blue, network curves red.
-fn write_panels(path: &Path, title: &str, panels: &[Wireframe]) -> Result<()> {
+fn write_panels(
+    path: &Path,
+    title: &str,
+    panels: &[Wireframe],
+    (across, up): (String, String),
+) -> Result<()> {
     let lines: Vec<Vec<Point2>> = panels.iter().flat_map(|p| p.lines.clone()).collect();
     let network: Vec<Vec<Point2>> = panels.iter().flat_map(|p| p.network.clone()).collect();
     write_lines_svg(
         path,
         &LinesPlot {
             title,
-            axes: ("view x", "view y"),
+            axes: (&across, &up),
             groups: &[
                 LineGroup {
                     lines: &lines,

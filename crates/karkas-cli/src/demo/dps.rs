@@ -267,12 +267,17 @@ pub fn knot(out: &Output) -> Result<Vec<Finding>> {
             },
         ]
     };
+    let (picture_across, picture_up) = View {
+        azimuth: AZIMUTH,
+        elevation: ELEVATION,
+    }
+    .axis_names();
     write_lines_svg(
         &out.file("knot-skeleton.svg"),
         &LinesPlot {
             title:
                 "Malozemov et al.'s fig. 3: the skeleton, 2 curves along (red) and 3 across (blue)",
-            axes: ("view x", "view y"),
+            axes: (&picture_across, &picture_up),
             groups: &skeleton_groups(2),
         },
     )?;
@@ -291,7 +296,7 @@ pub fn knot(out: &Output) -> Result<Vec<Finding>> {
         &out.file("knot-tube-wireframe.svg"),
         &LinesPlot {
             title: "Malozemov et al.: the knotted tube by formula (3), wireframe, skeleton in bold",
-            axes: ("view x", "view y"),
+            axes: (&picture_across, &picture_up),
             groups: &[
                 LineGroup {
                     lines: &projected(&q_lines),

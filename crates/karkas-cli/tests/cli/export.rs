@@ -66,7 +66,7 @@ fn curve_pictures_with_comb_and_whiskers() {
             .matches("<polyline")
             .count()
     };
-    // The comb adds a tooth per sample (at most 300) and its envelope, the whiskers one line
+    // The comb adds its drawn teeth (at most 300) and its envelope, the whiskers one line
     // per input point whose node lies in the domain.
     assert!(
         count(&decorated) > count(&plain) + 6,

@@ -17,6 +17,7 @@ mod fit_tolerance;
 mod hausdorff;
 mod meshes;
 mod output_bounds;
+mod pictures;
 mod reading;
 mod section;
 mod surface_bicubic;

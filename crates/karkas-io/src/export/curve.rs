@@ -14,8 +14,11 @@ use crate::{IoError, OutputFormat};
 use karkas::{Curve, Point, Point2, Point3};
 use std::path::Path;
 
-/// The most teeth a curvature comb gets.
-pub const COMB_TEETH: usize = 300;
+/// The most teeth a curvature comb gets (the picture draws at most
+/// [`DRAWN_TEETH`](crate::picture::comb::DRAWN_TEETH) of them as lines, all as the envelope
+/// through their tips, fine enough to show the curvature ripple of every piece of a curve
+/// through a few hundred points).
+pub const COMB_TEETH: usize = 1200;
 
 /// The formats [`write_curve_figure`] draws.
 const FIGURES: [OutputFormat; 3] = [OutputFormat::Svg, OutputFormat::Png, OutputFormat::Html];
@@ -212,45 +215,74 @@ pub fn write_discrete_curve<const D: usize>(
     }
 }
 
-/// The curvature comb of the x-y projection of `curve` at (at most [`COMB_TEETH`] of) the
-/// parameters `ts`: from each point, a tooth of length proportional to the signed curvature
-/// `(x'y'' - y'x'') / |r'|^3`, along the normal away from the centre of curvature, the longest
-/// tooth a sixth of the curve's extent.
+/// The curvature comb of the x-y projection of `curve` over the parameters `ts` (increasing,
+/// dense enough that the polygon through their points follows the curve): at most
+/// [`COMB_TEETH`] teeth equally spaced along the polygon's length (so that a sharp nose with
+/// many samples does not crowd the comb while long flat stretches go bare), each its foot `p`
+/// on the curve and the curvature vector there, `-kappa n` with the signed curvature
+/// `kappa = (x'y'' - y'x'') / |r'|^3` and `n` the unit normal to the left of the direction of
+/// travel (so the vector points away from the centre of curvature and its length is
+/// `|kappa|`). The picture scales the teeth
+/// ([`ScaledComb`](crate::picture::comb::ScaledComb): a percentile of the lengths, which with
+/// equally spaced teeth is a percentile along the arc, to a fixed fraction of the extent).
 pub fn curvature_comb<const D: usize>(curve: &impl Curve<D>, ts: &[f64]) -> Vec<[Point2; 2]> {
-    let stride = ts.len().div_ceil(COMB_TEETH).max(1);
-    let mut raw = Vec::new();
-    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
-    for (k, &t) in ts.iter().enumerate() {
+    let plane = |t: f64| {
         let p = curve.eval(t);
-        let p = Point2::new([p[0], p[1]]);
-        for c in 0..2 {
-            lo[c] = lo[c].min(p[c]);
-            hi[c] = hi[c].max(p[c]);
-        }
-        if k % stride != 0 && k + 1 != ts.len() {
-            continue;
-        }
-        let (d1, d2) = (curve.deriv(t, 1), curve.deriv(t, 2));
-        let speed = d1[0].hypot(d1[1]);
-        if !(speed > 0.0 && speed.is_finite()) {
-            continue;
-        }
-        let kappa = (d1[0] * d2[1] - d1[1] * d2[0]) / speed.powi(3);
-        // Unit normal to the left of the direction of travel: the centre of curvature is at
-        // p + n / kappa, so the tooth -kappa n points away from it.
-        let n = Point2::new([-d1[1] / speed, d1[0] / speed]);
-        if kappa.is_finite() {
-            raw.push((p, n * (-kappa)));
-        }
-    }
-    let extent = (hi[0] - lo[0]).max(hi[1] - lo[1]);
-    let longest = raw.iter().map(|(_, v)| v.norm()).fold(0.0, f64::max);
-    let scale = if longest > 0.0 && extent.is_finite() {
-        extent / 6.0 / longest
-    } else {
-        0.0
+        Point2::new([p[0], p[1]])
     };
-    raw.into_iter().map(|(p, v)| [p, p + v * scale]).collect()
+    let samples: Vec<(f64, Point2)> = ts
+        .iter()
+        .map(|&t| (t, plane(t)))
+        .filter(|(t, p)| t.is_finite() && p.is_finite())
+        .collect();
+    // The polygon's length at each sample.
+    let mut lengths = Vec::with_capacity(samples.len());
+    let mut total = 0.0;
+    for (k, (_, p)) in samples.iter().enumerate() {
+        if k > 0 {
+            total += p.distance(samples[k - 1].1);
+        }
+        lengths.push(total);
+    }
+    let teeth = samples.len().min(COMB_TEETH + 1);
+    if teeth < 2 || !(total > 0.0 && total.is_finite()) {
+        return samples
+            .iter()
+            .filter_map(|&(t, p)| tooth(curve, t, p))
+            .collect();
+    }
+    let mut segment = 0;
+    (0..teeth)
+        .filter_map(|j| {
+            let target = total * j as f64 / (teeth - 1) as f64;
+            while segment + 2 < samples.len() && lengths[segment + 1] < target {
+                segment += 1;
+            }
+            let (l0, l1) = (lengths[segment], lengths[segment + 1]);
+            let (t0, t1) = (samples[segment].0, samples[segment + 1].0);
+            let f = if l1 > l0 {
+                ((target - l0) / (l1 - l0)).clamp(0.0, 1.0)
+            } else {
+                0.0
+            };
+            let t = t0 + f * (t1 - t0);
+            tooth(curve, t, plane(t))
+        })
+        .collect()
+}
+
+/// The tooth of the comb at `t`, where the curve's x-y projection is at `p`: `p` and the
+/// curvature vector (none where the speed vanishes or the curvature is not finite).
+fn tooth<const D: usize>(curve: &impl Curve<D>, t: f64, p: Point2) -> Option<[Point2; 2]> {
+    let (d1, d2) = (curve.deriv(t, 1), curve.deriv(t, 2));
+    let speed = d1[0].hypot(d1[1]);
+    if !(speed > 0.0 && speed.is_finite() && p.is_finite()) {
+        return None;
+    }
+    let kappa = (d1[0] * d2[1] - d1[1] * d2[0]) / speed.powi(3);
+    // The centre of curvature is at p + n / kappa, so -kappa n points away from it.
+    let n = Point2::new([-d1[1] / speed, d1[0] / speed]);
+    kappa.is_finite().then(|| [p, n * (-kappa)])
 }
 
 /// The x-y projection of points of any dimension.
@@ -271,7 +303,7 @@ mod tests {
     use super::*;
 
     /// A circle of radius 2 traversed counter-clockwise: curvature 1/2 everywhere, teeth
-    /// pointing outwards, all of the same length (a sixth of the extent 4).
+    /// pointing outwards.
     #[test]
     fn comb_of_a_circle_points_outwards() {
         struct Circle;
@@ -300,9 +332,10 @@ mod tests {
             .collect();
         let comb = curvature_comb(&Circle, &ts);
         assert_eq!(comb.len(), 51);
-        for [p, tip] in comb {
-            assert!((tip.norm() - (2.0 + 4.0 / 6.0)).abs() < 1e-9, "{tip:?}");
+        for [p, vector] in comb {
             assert!((p.norm() - 2.0).abs() < 1e-12);
+            // Outwards: along p, of length 1/2.
+            assert!((vector - p * 0.25).norm() < 1e-12, "{vector:?} at {p:?}");
         }
     }
 }

@@ -25,9 +25,9 @@ pub const CURVE_POINT_PNG: u128 = 120;
 pub const PNG_PER_SVG_BYTE: u128 = 10;
 /// The depth buffer of a scene picture: one `f64` per pixel of the largest drawing area.
 pub const DEPTH_BUFFER: u128 = 1100 * 1100 * 8;
-/// The pixel buffers of the largest PNG: 2280 x 2400 RGBA pixels (pictures are rendered at
+/// The pixel buffers of the largest PNG: 2280 x 2504 RGBA pixels (pictures are rendered at
 /// twice their size), twice (the picture and one layer).
-pub const PIXELS: u128 = 2 * 2280 * 2400 * 4;
+pub const PIXELS: u128 = 2 * 2280 * 2504 * 4;
 
 /// What a scene picture of a `rows x cols` sampled surface with `curve_points` points of
 /// curves on it takes, as PNG when `png`, else as SVG (the samples included).

@@ -8,4 +8,10 @@ pub mod png;
 pub mod scene;
 pub mod svg;
 
+// The charts' parts: layout and drawing, comb scale, ticks, SVG text.
+pub mod chart;
+pub mod comb;
+pub mod text;
+pub mod ticks;
+
 pub use error::PictureError;

@@ -9,6 +9,11 @@
 //! (by more than a small fraction of the model's size, which absorbs the difference between
 //! the mesh and the true surface).
 //!
+//! Under the drawing: a scale bar with ticks in model units (an orthographic view shows
+//! lengths across the picture true), the picture's horizontal and vertical directions named
+//! by the model axes ([`View::axis_names`]), and the model axes x, y, z as they appear.
+//! Curves are written to a hundredth of a pixel, mesh cells to a tenth.
+//!
 //! The SVG is written directly rather than through `plotters`: plotters rounds every
 //! coordinate to whole pixels, and a mesh of thousands of small cells needs sub-pixel
 //! coordinates to look smooth. The rasterizer is a plain loop over each triangle's bounding
@@ -23,16 +28,24 @@ use crate::error::IoError;
 use crate::mesh::normals::cross;
 use crate::picture::budget;
 use crate::picture::png::write_svg_as_png;
+use crate::picture::text::Px;
+use crate::picture::ticks::{nice_step, tick_label, without_negative_zero};
 use crate::write::write_atomic;
 
 /// Width of the drawing area in pixels.
 const DRAWING_WIDTH: f64 = 1100.0;
 /// Smallest and largest height of the drawing area in pixels.
 const DRAWING_HEIGHTS: (f64, f64) = (260.0, 1100.0);
-/// Margins: left and right, above the drawing (the title), below it (the legend).
+/// Margins: left and right, above the drawing (the title), below it (the scale bar in model
+/// units, the names of the picture's directions, the model axes and the legend).
 const MARGIN: f64 = 20.0;
 const TOP: f64 = 56.0;
-const BOTTOM: f64 = 44.0;
+const BOTTOM: f64 = 96.0;
+/// Least distance between the scale bar's ticks, and its largest length, in pixels.
+const RULER_GAP: f64 = 70.0;
+const RULER_LENGTH: f64 = 420.0;
+/// Length in pixels of a model axis lying in the picture plane, in the axes symbol.
+const TRIAD: f64 = 32.0;
 /// How far behind the surface (as a fraction of the model's size) a curve point may lie and
 /// still be drawn: the mesh is only a chordal approximation of the surface.
 const DEPTH_SLACK: f64 = 0.004;
@@ -47,6 +60,14 @@ pub struct View {
 }
 
 impl View {
+    /// The names of the picture's horizontal and vertical directions in model terms, such as
+    /// `("0.26 x + 0.97 y", "-0.85 x + 0.23 y + 0.47 z")` (see [`direction_name`]); a view
+    /// along a model axis gets plain names (`"x"`, `"-y"`).
+    pub fn axis_names(&self) -> (String, String) {
+        let (right, up, _) = self.frame();
+        (direction_name(right), direction_name(up))
+    }
+
     /// Unit vectors: screen right, screen up, towards the viewer.
     fn frame(&self) -> (Point3, Point3, Point3) {
         let (az, el) = (self.azimuth.to_radians(), self.elevation.to_radians());
@@ -55,6 +76,35 @@ impl View {
         let up = Point3::new([-el.sin() * az.cos(), -el.sin() * az.sin(), el.cos()]);
         (right, up, toward)
     }
+}
+
+/// The unit vector `d` as a combination of the model axes with two decimals, terms that
+/// round to zero left out: `"x"`, `"-z"`, `"0.71 x + 0.71 y"`, `"-0.5 x - 0.87 z"`.
+pub fn direction_name(d: Point3) -> String {
+    let mut text = String::new();
+    for (c, axis) in ["x", "y", "z"].into_iter().enumerate() {
+        let v = (d[c] * 100.0).round() / 100.0;
+        if v == 0.0 {
+            continue;
+        }
+        let sign = if v < 0.0 { "-" } else { "+" };
+        let size = v.abs();
+        let coefficient = if size == 1.0 {
+            String::new()
+        } else {
+            format!("{} ", format!("{size:.2}").trim_end_matches('0'))
+        };
+        if text.is_empty() {
+            let sign = if v < 0.0 { "-" } else { "" };
+            let _ = write!(text, "{sign}{coefficient}{axis}");
+        } else {
+            let _ = write!(text, " {sign} {coefficient}{axis}");
+        }
+    }
+    if text.is_empty() {
+        text.push('0');
+    }
+    text
 }
 
 /// A surface sampled on a `rows x cols` grid, row-major (as
@@ -224,7 +274,7 @@ pub fn render_scene_svg(scene: &Scene<'_>) -> String {
                 svg.push_str(r#"<polyline points=""#);
                 for (k, (x, y)) in run.iter().enumerate() {
                     let sep = if k == 0 { "" } else { " " };
-                    let _ = write!(svg, "{sep}{x:.1},{y:.1}");
+                    let _ = write!(svg, "{sep}{},{}", Px(*x), Px(*y));
                 }
                 svg.push_str(r#""/>"#);
             }
@@ -232,6 +282,8 @@ pub fn render_scene_svg(scene: &Scene<'_>) -> String {
         svg.push_str("</g>");
     }
     svg.push_str("</g>");
+    write_scale_bar(&mut svg, &camera, scene.view, TOP + height + 16.0);
+    write_triad(&mut svg, &camera, (picture.0 - 70.0, TOP + height + 50.0));
     write_legend(&mut svg, scene.curves, picture.1 - 16.0);
     svg.push_str("</svg>\n");
     svg
@@ -426,6 +478,75 @@ fn visible_runs(
     runs
 }
 
+/// The scale bar under the drawing, at height `y`: ticks in model units (an orthographic
+/// view shows lengths across the picture true), and the names of the picture's horizontal and
+/// vertical directions in model terms.
+fn write_scale_bar(svg: &mut String, camera: &Camera, view: View, y: f64) {
+    let step = nice_step(RULER_GAP / camera.scale);
+    let steps = ((RULER_LENGTH / (step * camera.scale)).floor() as usize).max(1);
+    let x0 = MARGIN + 10.0;
+    let length = steps as f64 * step * camera.scale;
+    let _ = write!(
+        svg,
+        r#"<g class="scale-bar" font-family="sans-serif" font-size="13"><line x1="{x0}" y1="{y}" x2="{x1}" y2="{y}" stroke="black" stroke-width="1.5"/>"#,
+        x0 = Px(x0),
+        x1 = Px(x0 + length),
+        y = Px(y),
+    );
+    for k in 0..=steps {
+        let x = x0 + k as f64 * step * camera.scale;
+        let _ = write!(
+            svg,
+            r#"<line x1="{x}" y1="{y0}" x2="{x}" y2="{y}" stroke="black"/><text class="tick-scale" x="{x}" y="{ty}" text-anchor="middle">{}</text>"#,
+            tick_label(k as f64 * step, step),
+            x = Px(x),
+            y0 = Px(y - 5.0),
+            y = Px(y),
+            ty = Px(y + 16.0),
+        );
+    }
+    let (horizontal, vertical) = view.axis_names();
+    let _ = write!(
+        svg,
+        r#"<text class="scale-caption" x="{x}" y="{ty}">model units; across the picture: {}, up the picture: {} (view from azimuth {}°, elevation {}°)</text></g>"#,
+        escape(&horizontal),
+        escape(&vertical),
+        without_negative_zero(format!("{:.0}", view.azimuth)),
+        without_negative_zero(format!("{:.0}", view.elevation)),
+        x = Px(x0),
+        ty = Px(y + 36.0),
+    );
+}
+
+/// The model axes x, y, z as seen in the picture, drawn from `centre` and labelled.
+fn write_triad(svg: &mut String, camera: &Camera, centre: (f64, f64)) {
+    let _ = write!(
+        svg,
+        r#"<g class="triad" font-family="sans-serif" font-size="14" stroke-width="1.5">"#
+    );
+    let colours = [(200, 30, 30), (30, 140, 30), (30, 60, 200)];
+    for (c, name) in ["x", "y", "z"].into_iter().enumerate() {
+        let mut axis = Point3::new([0.0; 3]);
+        axis[c] = 1.0;
+        let (dx, dy) = (axis.dot(camera.right) * TRIAD, -axis.dot(camera.up) * TRIAD);
+        let (r, g, b) = colours[c];
+        let tip = (centre.0 + dx, centre.1 + dy);
+        let norm = dx.hypot(dy).max(1e-9);
+        let label = (tip.0 + 9.0 * dx / norm, tip.1 + 9.0 * dy / norm + 5.0);
+        let _ = write!(
+            svg,
+            r#"<line x1="{}" y1="{}" x2="{}" y2="{}" stroke="rgb({r},{g},{b})"/><text class="triad-axis" x="{}" y="{}" fill="rgb({r},{g},{b})" text-anchor="middle">{name}</text>"#,
+            Px(centre.0),
+            Px(centre.1),
+            Px(tip.0),
+            Px(tip.1),
+            Px(label.0),
+            Px(label.1),
+        );
+    }
+    svg.push_str("</g>");
+}
+
 /// The legend: a swatch and the label of each group that has one.
 fn write_legend(svg: &mut String, groups: &[SceneCurves<'_>], baseline: f64) {
     let mut x = MARGIN + 10.0;
@@ -443,13 +564,7 @@ fn write_legend(svg: &mut String, groups: &[SceneCurves<'_>], baseline: f64) {
     }
 }
 
-/// `text` with the XML (and HTML) special characters escaped.
-pub(crate) fn escape(text: &str) -> String {
-    text.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
-        .replace('"', "&quot;")
-}
+pub(crate) use crate::picture::text::escape;
 
 #[cfg(test)]
 mod tests {
@@ -489,5 +604,77 @@ mod tests {
         assert_eq!(svg.matches("<polygon").count(), 4);
         // The line on the surface and the one beside it are drawn, the one below is not.
         assert_eq!(svg.matches("<polyline").count(), 2);
+        // Seen from above with azimuth 0, the picture's right is +y and its up is -x.
+        assert!(
+            svg.contains("across the picture: y, up the picture: -x"),
+            "{svg}"
+        );
+        assert!(!svg.contains("view x") && !svg.contains("view y"));
+        for axis in ["x", "y", "z"] {
+            assert!(
+                svg.contains(&format!(">{axis}</text>")),
+                "triad label {axis}"
+            );
+        }
+    }
+
+    #[test]
+    fn directions_are_named_by_the_model_axes() {
+        let d = |x: f64, y: f64, z: f64| direction_name(Point3::new([x, y, z]));
+        assert_eq!(d(1.0, 0.0, 0.0), "x");
+        assert_eq!(d(0.0, 0.0, -1.0), "-z");
+        let h = std::f64::consts::FRAC_1_SQRT_2;
+        assert_eq!(d(h, h, 0.0), "0.71 x + 0.71 y");
+        assert_eq!(d(-0.5, -1e-17, -0.866), "-0.5 x - 0.87 z");
+        let (right, up) = View {
+            azimuth: -90.0,
+            elevation: 0.0,
+        }
+        .axis_names();
+        // Looking from -y towards +y: right is +x, up is +z.
+        assert_eq!((right.as_str(), up.as_str()), ("x", "z"));
+    }
+
+    /// The scale bar's ticks are round model lengths at the picture's scale: a unit square seen
+    /// from above fills about 1000 of the 1100 pixels, so ticks 0.1 apart are about 96 px apart.
+    #[test]
+    fn the_scale_bar_measures_model_units() {
+        let points: Vec<Point3> = (0..2)
+            .flat_map(|i| (0..2).map(move |j| Point3::new([i as f64, j as f64, 0.0])))
+            .collect();
+        let scene = Scene {
+            title: "square",
+            mesh: SceneMesh {
+                rows: 2,
+                cols: 2,
+                points: &points,
+            },
+            curves: &[],
+            view: View {
+                azimuth: 0.0,
+                elevation: 90.0,
+            },
+        };
+        let svg = render_scene_svg(&scene);
+        let ticks: Vec<(f64, String)> = svg
+            .split("<text class=\"tick-scale\" x=\"")
+            .skip(1)
+            .map(|t| {
+                let (x, rest) = t.split_once('"').unwrap();
+                let label = rest.split_once('>').unwrap().1.split_once('<').unwrap().0;
+                (x.parse().unwrap(), label.to_owned())
+            })
+            .collect();
+        assert!(ticks.len() >= 2, "{ticks:?}");
+        // The square spans 1 / 1.06 of the drawing width (3% padding on each side).
+        let pixels_per_unit = DRAWING_WIDTH / 1.06;
+        for (x, label) in &ticks {
+            let value: f64 = label.parse().unwrap();
+            let expected = ticks[0].0 + value * pixels_per_unit;
+            assert!(
+                (x - expected).abs() < 0.01,
+                "{label} at {x}, expected {expected}"
+            );
+        }
     }
 }
