@@ -4,9 +4,11 @@ pub mod convert;
 mod curve_dps;
 mod curve_fit;
 mod curve_ll;
+mod curve_spline;
 mod fit_summary;
 pub mod hausdorff;
 pub mod section;
+pub mod spline_options;
 mod surface_bicubic;
 mod surface_coons;
 mod surface_dps_tube;
@@ -25,6 +27,9 @@ pub enum CurveCommand {
     Dps(curve_dps::CurveDpsArgs),
     /// Fit a C^1 cubic spline with bounded second-derivative jumps to measured points.
     Fit(curve_fit::CurveFitArgs),
+    /// Cubic interpolating spline through ordered points (not-a-knot, natural, clamped or
+    /// periodic ends; uniform, chord or centripetal parameters).
+    Spline(curve_spline::CurveSplineArgs),
 }
 
 impl CurveCommand {
@@ -34,6 +39,7 @@ impl CurveCommand {
             CurveCommand::Ll(args) => curve_ll::run(&args),
             CurveCommand::Dps(args) => curve_dps::run(&args),
             CurveCommand::Fit(args) => curve_fit::run(&args),
+            CurveCommand::Spline(args) => curve_spline::run(&args),
         }
     }
 }

@@ -1,0 +1,106 @@
+//! `karkas curve spline`: the cubic interpolating spline through ordered points, with chosen
+//! end conditions and point parameters (Kuznetsov and Filatov, docs/methods.md §5).
+
+use crate::args::{CombOption, CurveSamples};
+use crate::cmd::spline_options::SplineOptions;
+use crate::input::{curve_points, run_on_curve_points, CurveJob};
+use crate::output::cad::write_cad_curve;
+use crate::output::curve::{curve_output_bytes, write_sampled_curve};
+use crate::output::formats::EXACT_CURVE_FORMATS;
+use crate::output::memory::check_memory;
+use crate::output::overwrite::ensure_distinct;
+use crate::output::samples::{default_curve_samples, report_samples, sample_curve, MAX_SAMPLES};
+use crate::output::target::output_format;
+use anyhow::Result;
+use clap::Args;
+use karkas::param::CubicSpline;
+use karkas::{Curve, Point, Point2};
+use karkas_io::OutputFormat;
+use std::path::PathBuf;
+
+/// Arguments of `karkas curve spline`.
+#[derive(Debug, Args)]
+pub struct CurveSplineArgs {
+    #[command(flatten)]
+    spline: SplineOptions,
+    #[command(flatten)]
+    samples: CurveSamples,
+    /// Input points: CSV or whitespace columns x,y[,z], or an airfoil .dat (Selig or Lednicer).
+    input: PathBuf,
+    /// Output file: .csv (t,x,y[,z] in the spline's parameter), a picture of the curve over
+    /// its points (.svg, .png; x-y projection), a 3-D viewer page (.html), or the exact
+    /// B-spline curve as .step/.stp or .iges/.igs (planar curves in z = 0).
+    #[arg(short, long)]
+    output: PathBuf,
+    #[command(flatten)]
+    comb: CombOption,
+    /// Pictures: draw a whisker from every input point to the curve at its knot (of zero
+    /// length up to rounding: the spline passes through its points).
+    #[arg(long)]
+    whiskers: bool,
+}
+
+/// Runs `karkas curve spline`.
+pub fn run(args: &CurveSplineArgs) -> Result<()> {
+    let format = output_format(&args.output, &EXACT_CURVE_FORMATS)?;
+    args.spline.check()?;
+    args.samples.check()?;
+    ensure_distinct(&args.input, &args.output)?;
+    run_on_curve_points(&args.input, &(args, format))
+}
+
+impl CurveJob for (&CurveSplineArgs, OutputFormat) {
+    fn run<const D: usize>(&self, points: &[Point<D>]) -> Result<()> {
+        let (args, format) = *self;
+        curve_points(&args.input, points)?;
+        let curve = args.spline.build(points, &args.input)?;
+        if format.is_cad() {
+            return write_cad_curve(&curve, format, &args.output, args.input.display());
+        }
+        let n = args
+            .samples
+            .or_else(|| default_curve_samples(points.len()).min(MAX_SAMPLES));
+        check_memory(
+            &format!("curve spline: {n} samples"),
+            curve_output_bytes::<D>(format, n + points.len()),
+        )?;
+        let (ts, samples) = sample_curve(&curve, n);
+        let title = format!(
+            "cubic spline, {}, {} points",
+            args.spline.describe(),
+            points.len()
+        );
+        let comb = args.comb.teeth(&curve, &ts);
+        let whiskers = if args.whiskers {
+            knot_whiskers(&curve)
+        } else {
+            Vec::new()
+        };
+        let (output, overlay) = (&args.output, (&comb[..], &whiskers[..]));
+        let samples = (&ts[..], &samples[..]);
+        write_sampled_curve(
+            output,
+            format,
+            &title,
+            samples,
+            points,
+            curve.is_closed(),
+            overlay,
+        )?;
+        report_samples(&args.output, n);
+        Ok(())
+    }
+}
+
+/// Whiskers (x-y projection) from every interpolated point to the curve at its knot.
+fn knot_whiskers<const D: usize>(curve: &CubicSpline<D>) -> Vec<[Point2; 2]> {
+    curve
+        .knots()
+        .iter()
+        .zip(curve.values())
+        .map(|(&t, p)| {
+            let q = curve.eval(t);
+            [Point2::new([p[0], p[1]]), Point2::new([q[0], q[1]])]
+        })
+        .collect()
+}
