@@ -85,7 +85,10 @@ impl PyCurve {
         out.set_item("curvature_extrema", f.curvature_extrema)?;
         out.set_item("inflections", f.inflections)?;
         let distance = f.max_distance_to_polygon;
-        out.set_item("max_distance_to_polygon", distance.is_finite().then_some(distance))?;
+        out.set_item(
+            "max_distance_to_polygon",
+            distance.is_finite().then_some(distance),
+        )?;
         out.set_item("fairness_energy", f.fairness_energy)?;
         out.set_item("pieces", f.pieces)?;
         out.set_item("curvature_jump", f.curvature_jump)?;

@@ -53,7 +53,8 @@ fn finite_or_null(x: f64) -> Value {
     }
 }
 
-/// The table: a header and one row per method, columns aligned.
+/// The table: a header and one row per method, columns aligned (a curvature of -0 shown as
+/// 0).
 pub fn table(reports: &[MethodReport]) -> String {
     let mut out = format!(
         "{:<8}{:>14}{:>14}{:>14}{:>9}{:>12}{:>14}{:>14}{:>8}\n",
@@ -73,8 +74,8 @@ pub fn table(reports: &[MethodReport]) -> String {
             "{:<8}{:>14.6}{:>14.5e}{:>14.5e}{:>9}{:>12}{:>14.3e}{:>14.5e}{:>8}\n",
             r.method,
             f.length,
-            f.curvature_min,
-            f.curvature_max,
+            f.curvature_min + 0.0,
+            f.curvature_max + 0.0,
             f.curvature_extrema,
             f.inflections,
             f.max_distance_to_polygon,
