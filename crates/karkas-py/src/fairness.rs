@@ -46,10 +46,10 @@ impl PyCurve {
     /// --------
     /// >>> import numpy as np, karkas
     /// >>> s = np.linspace(0, 2 * np.pi, 41)
-    /// >>> c = karkas.CubicSpline(np.c_[3 * np.cos(s), np.sin(s)], t=s, bc="periodic")
-    /// >>> f = c.fairness()
-    /// >>> f["curvature_extrema"], f["inflections"]
-    /// (4, 0)
+    /// >>> c = karkas.CubicSpline(np.c_[2 * np.cos(s), 2 * np.sin(s)], t=s, bc="periodic")
+    /// >>> f = c.fairness(c(s[:-1]))
+    /// >>> f["inflections"], round(f["length"], 4), round(f["curvature_max"], 2)
+    /// (0, 12.5664, 0.5)
     #[pyo3(signature = (points = None))]
     fn fairness<'py>(
         &self,
