@@ -67,6 +67,8 @@ def cases(folder):
     return [
         ("ll-curve", "curve", ["curve", "ll", "--order", "5", "--closed",
                                os.path.join(data, "contour-53.csv")]),
+        ("spline-curve", "curve", ["curve", "spline", "--ends", "periodic", "--param",
+                                   "centripetal", os.path.join(data, "contour-53.csv")]),
         ("fit-curve", "curve", ["curve", "fit", "--knots", "0,0.3,0.5,0.7,1",
                                 os.path.join(data, "hydrofoil-profile.csv")]),
         ("ll-surface", "surface", ["surface", "ll", "--order", "3",

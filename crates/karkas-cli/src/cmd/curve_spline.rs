@@ -1,5 +1,7 @@
 //! `karkas curve spline`: the cubic interpolating spline through ordered points, with chosen
-//! end conditions and point parameters (Kuznetsov and Filatov, docs/methods.md §5).
+//! end conditions and point parameters (Kuznetsov and Filatov's spline, its not-a-knot ends
+//! (3.10)–(3.12); docs/methods.md §5). The options are [`SplineOptions`], shared with the
+//! commands that offer the spline as a method.
 
 use crate::args::{CombOption, CurveSamples};
 use crate::cmd::spline_options::SplineOptions;

@@ -122,10 +122,16 @@ impl SplineOptions {
     ) -> Result<CubicSpline<D>> {
         let ends = self.ends::<D>()?;
         let name = display_name(what);
+        if points.len() < 2 {
+            bail!(
+                "{}: a cubic spline needs at least 2 points, got {}",
+                name.display(),
+                points.len()
+            );
+        }
         if ends.is_periodic() {
             let scale = points.iter().fold(1.0f64, |m, p| m.max(p.max_abs()));
-            let repeats = points.len() > 1
-                && (points[points.len() - 1] - points[0]).max_abs() <= 1e-12 * scale;
+            let repeats = (points[points.len() - 1] - points[0]).max_abs() <= 1e-12 * scale;
             let distinct = points.len() - usize::from(repeats);
             if distinct < 3 {
                 bail!(

@@ -8,6 +8,7 @@ mod contract;
 mod convert;
 mod curve_analyze;
 mod curve_fit;
+mod curve_spline;
 mod demo_hydrofoil;
 mod demo_report;
 mod dps;
