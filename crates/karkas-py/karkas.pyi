@@ -148,6 +148,9 @@ class Curve:
         """Torsion of a 3-D curve (KarkasError in 2-D)."""
     def project(self, points: ArrayLike, tol: float = 0.0) -> Tuple[_Floats, _Floats, _Floats]:
         """Globally nearest points: (t (n,), distance (n,), foot (n, d))."""
+    def fairness(self, points: Optional[ArrayLike] = None) -> dict[str, Any]:
+        """Length, curvature range, curvature extrema, inflections, max_distance_to_polygon
+        (None without points), fairness_energy, pieces, curvature_jump (curve analyze --json)."""
     @property
     def domain(self) -> Tuple[float, float]: ...
     @property

@@ -63,4 +63,4 @@ pub use cad::{iges, step};
 pub use error::{GeometryError, IoError, Location};
 pub use format::OutputFormat;
 pub use mesh::{glb, obj, ply, stl, vtk};
-pub use picture::{png, scene, svg};
+pub use picture::{curvature_plot, png, scene, svg};

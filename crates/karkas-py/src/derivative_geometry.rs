@@ -70,6 +70,9 @@ impl CurveGeometryImpl for DerivativeCurve {
     fn torsions(&self, ts: &[f64], out: &mut [f64]) -> bool {
         self.with_curve(|c| c.torsions(ts, out))
     }
+    fn fairness(&self, points: &[f64]) -> karkas::geometry::CurveFairness {
+        self.with_curve(|c| c.fairness(points))
+    }
     fn project(
         &self,
         qs: &[f64],

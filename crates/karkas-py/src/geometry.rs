@@ -55,6 +55,9 @@ where
             *o = self.0.curvature(t);
         }
     }
+    fn fairness(&self, points: &[f64]) -> geometry::CurveFairness {
+        geometry::curve_fairness(&self.0, as_points::<D>(points))
+    }
     fn torsions(&self, ts: &[f64], out: &mut [f64]) -> bool {
         if D != 3 {
             return false;

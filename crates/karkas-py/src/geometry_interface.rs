@@ -2,7 +2,7 @@
 //! length, curvature, projection; normals, principal curvatures, projection), on flat buffers.
 //! Their implementations for the library's types are in `geometry`.
 
-use karkas::geometry::PrincipalCurvatures;
+use karkas::geometry::{CurveFairness, PrincipalCurvatures};
 
 /// The geometry of a curve of either dimension on flat buffers.
 pub trait CurveGeometryImpl {
@@ -14,6 +14,8 @@ pub trait CurveGeometryImpl {
     fn curvatures(&self, ts: &[f64], out: &mut [f64]);
     /// The torsion at every `ts[i]` into `out[i]` (3-D only: false otherwise).
     fn torsions(&self, ts: &[f64], out: &mut [f64]) -> bool;
+    /// The fairness figures, the distance measured to the polygon of the flat `points`.
+    fn fairness(&self, points: &[f64]) -> CurveFairness;
     /// The nearest points to the flat points `qs` (`dim` coordinates each): parameters,
     /// distances, and foot points (flat).
     fn project(

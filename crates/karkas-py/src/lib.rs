@@ -26,6 +26,7 @@ mod export;
 mod export_any;
 mod export_cad;
 mod export_format;
+mod fairness;
 mod fit;
 mod geometry;
 mod geometry_interface;

@@ -186,6 +186,7 @@ VALID = {
     "Curve.curvature": lambda o: (o.curve.curvature, (np.linspace(0.3, 0.6, 5),), {}),
     "Curve.torsion": lambda o: (o.curve.torsion, (np.linspace(0.3, 0.6, 5),), {}),
     "Curve.project": lambda o: (o.curve.project, (o.pts3[:4],), {"tol": 0.0}),
+    "Curve.fairness": lambda o: (o.curve.fairness, (), {"points": o.pts3}),
     "CurveDerivative": NO_CONSTRUCTOR,
     "Curve.sample": lambda o: (o.curve.sample, (11,), {}),
     "LLCurve": lambda o: (karkas.LLCurve, (o.pts3,), {"order": 3, "closed": False}),

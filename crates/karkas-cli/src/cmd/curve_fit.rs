@@ -1,6 +1,7 @@
 //! `karkas curve fit`: a C^1 cubic Hermite spline fitted to measured points with bounded
 //! second-derivative jumps (Pavlov, docs/methods.md §4).
 
+use super::fit_options::FitCurveOptions;
 use super::fit_summary::FitSummary;
 use crate::args::{CombOption, CurveSamples};
 use crate::input::{run_on_curve_points, CurveJob};
@@ -12,12 +13,9 @@ use crate::output::overwrite::ensure_distinct;
 use crate::output::samples::default_curve_samples;
 use crate::output::samples::sample_curve;
 use crate::output::target::{output_format, shown};
-use anyhow::{bail, Context, Result};
+use anyhow::{bail, Result};
 use clap::Args;
-use karkas::fit::{
-    fit_curve, fit_curve_adaptive, knots_from_list, CurveFit, FitOptions, DEFAULT_FAIRNESS,
-    DEFAULT_SMOOTHING,
-};
+use karkas::fit::CurveFit;
 use karkas::{Curve, Point, Point2};
 use karkas_io::write::write_atomic;
 use karkas_io::OutputFormat;
@@ -35,35 +33,8 @@ pub struct CurveFitArgs {
     /// Input points, in order along the curve: CSV or whitespace columns x,y[,z], or an
     /// airfoil .dat.
     input: PathBuf,
-    /// The knots 0 = T1 < T2 < ... < TN = 1, comma-separated; or one whole number N: N
-    /// uniformly spaced knots.
-    #[arg(
-        long,
-        value_delimiter = ',',
-        conflicts_with = "tolerance",
-        value_name = "T1,...,TN|N"
-    )]
-    knots: Option<Vec<f64>>,
-    /// Place knots automatically until every point is within TOL of the curve.
-    #[arg(long, value_name = "TOL")]
-    tolerance: Option<f64>,
-    /// Bound on the sum of squared second-derivative jumps (Pavlov's J_L) at the inner
-    /// knots [default: none, the unconstrained C^1 fit].
-    #[arg(long, value_name = "E")]
-    eps: Option<f64>,
-    /// An inner knot whose jump is left free (a corner); repeat for several.
-    #[arg(long = "corner", value_name = "T")]
-    corners: Vec<f64>,
-    /// Weight rho of the bending energy that keeps the parameterization even (lambda = rho n
-    /// for n points on pieces with at most 8 points each, less on denser pieces; 0 for
-    /// none).
-    #[arg(long, value_name = "RHO", default_value_t = DEFAULT_FAIRNESS)]
-    fairness: f64,
-    /// Smoothing s: the bending weight grows with the noise estimated from the points,
-    /// lambda = (rho + s (sigma / L)^2) n tau (sigma the noise, L the size of the points;
-    /// 0 for none).
-    #[arg(long, value_name = "S", default_value_t = DEFAULT_SMOOTHING)]
-    smoothing: f64,
+    #[command(flatten)]
+    fit: FitCurveOptions,
     /// Also print the summary as one JSON object on standard output (keys input, points,
     /// knots, max_deviation, rms_deviation, f, p, noise, bending_weight, tolerance,
     /// tolerance_met, warnings, seconds).
@@ -71,10 +42,6 @@ pub struct CurveFitArgs {
     json: bool,
     #[command(flatten)]
     samples: CurveSamples,
-    /// Pin the ends of the curve to the first and last points (e.g. a profile closed at a
-    /// known trailing edge).
-    #[arg(long)]
-    pin_ends: bool,
     /// Output: .csv (t,x,y[,z] samples of the curve), a picture .svg or .png (points, curve,
     /// deviation whiskers; x-y projection) a 3-D viewer page (.html), or
     /// the exact B-spline curve as .step/.stp, .iges/.igs or .dxf (a SPLINE with the input
@@ -88,48 +55,13 @@ pub struct CurveFitArgs {
     report: Option<PathBuf>,
 }
 
-/// The bytes a fit works in per knot, in 3-D (the most): the knot and its spline values and
-/// derivatives, the Newton solver's per-piece blocks, its vectors and the banded normal
-/// equations (`8 (32 + 48 d^2 + 2 d (16 + 8 d))` with `d = 3`).
-const FIT_BYTES_PER_KNOT: u128 = 8 * (32 + 48 * 9 + 6 * (16 + 24));
-
 /// Runs `karkas curve fit`.
 pub fn run(args: &CurveFitArgs) -> Result<()> {
     let format = output_format(&args.output, &EXACT_CURVE_FORMATS)?;
-    if let [count] = args.knots.as_deref().unwrap_or_default() {
-        // A count of uniform knots is checked before the knots and the fit's work arrays are
-        // made: per knot the spline, the per-piece blocks of the Newton solver and the band
-        // of the normal equations, in 3-D.
-        if count.fract() == 0.0 && *count >= 2.0 {
-            check_memory(
-                &format!("--knots {count}"),
-                (*count as u128).saturating_mul(FIT_BYTES_PER_KNOT),
-            )?;
-        }
-    }
-    let knots = match &args.knots {
-        Some(given) => Some(knots_from_list(given).context("--knots")?),
-        None => None,
-    };
-    if !(args.fairness.is_finite() && args.fairness >= 0.0) {
-        bail!("--fairness: must be a number >= 0, got {}", args.fairness);
-    }
-    if !(args.smoothing.is_finite() && args.smoothing >= 0.0) {
-        bail!("--smoothing: must be a number >= 0, got {}", args.smoothing);
-    }
-    if let Some(tol) = args.tolerance {
-        if !(tol.is_finite() && tol > 0.0) {
-            bail!("--tolerance: must be a positive number, got {tol}");
-        }
-    }
+    let knots = args.fit.check()?;
     args.samples.check()?;
-    if args.knots.is_none() && args.tolerance.is_none() {
+    if args.fit.knots.is_none() && args.fit.tolerance.is_none() {
         bail!("give the knots (--knots T1,...,TN) or a tolerance (--tolerance TOL)");
-    }
-    if let Some(eps) = args.eps {
-        if eps.is_nan() || eps <= 0.0 {
-            bail!("--eps: must be a positive number, got {eps}");
-        }
     }
     ensure_distinct(&args.input, &args.output)?;
     if let Some(report) = &args.report {
@@ -144,27 +76,11 @@ pub fn run(args: &CurveFitArgs) -> Result<()> {
 impl CurveJob for (&CurveFitArgs, OutputFormat, Option<Vec<f64>>) {
     fn run<const D: usize>(&self, points: &[Point<D>]) -> Result<()> {
         let (args, format, knots) = (self.0, self.1, &self.2);
-        let options = FitOptions {
-            eps: args.eps.unwrap_or(f64::INFINITY),
-            corners: args.corners.clone(),
-            pin_ends: args.pin_ends,
-            fairness: args.fairness,
-            smoothing: args.smoothing,
-            ..Default::default()
-        };
         let input = || args.input.display().to_string();
         let started = Instant::now();
-        let fit: CurveFit<D> = match (knots, args.tolerance) {
-            (Some(knots), _) => fit_curve(points, knots, &options).with_context(input)?,
-            (None, Some(tol)) => {
-                fit_curve_adaptive(points, tol, &options)
-                    .with_context(input)?
-                    .fit
-            }
-            (None, None) => bail!("give --knots or --tolerance"),
-        };
+        let fit: CurveFit<D> = args.fit.fit(points, knots.as_deref(), None, &input())?;
         let fit_time = started.elapsed();
-        let summary = FitSummary::new(input(), &fit, args.tolerance, fit_time);
+        let summary = FitSummary::new(input(), &fit, args.fit.tolerance, fit_time);
         for warning in &fit.warnings {
             eprintln!("karkas: warning: {warning}");
         }

@@ -58,14 +58,14 @@ pub fn run(args: &CurveLlArgs) -> Result<()> {
 impl CurveJob for (&CurveLlArgs, OutputFormat) {
     fn run<const D: usize>(&self, points: &[Point<D>]) -> Result<()> {
         let (args, format) = *self;
-        let build = if args.interpolate {
-            LlCurve::interpolating
-        } else {
-            LlCurve::new
-        };
         curve_points(&args.input, points)?;
-        let curve = build(points, args.order, args.closed)
-            .with_context(|| args.input.display().to_string())?;
+        let curve = build_ll(
+            points,
+            args.order,
+            args.closed,
+            args.interpolate,
+            &args.input,
+        )?;
         if format.is_cad() {
             return write_cad_curve(&curve, points, format, &args.output, args.input.display());
         }
@@ -107,6 +107,23 @@ impl CurveJob for (&CurveLlArgs, OutputFormat) {
         report_samples(&args.output, n);
         Ok(())
     }
+}
+
+/// The LL curve of `points` (approximating, or interpolating when `interpolate`), errors
+/// naming `input`.
+pub(super) fn build_ll<const D: usize>(
+    points: &[Point<D>],
+    order: usize,
+    closed: bool,
+    interpolate: bool,
+    input: &std::path::Path,
+) -> Result<LlCurve<D>> {
+    let build = if interpolate {
+        LlCurve::interpolating
+    } else {
+        LlCurve::new
+    };
+    build(points, order, closed).with_context(|| input.display().to_string())
 }
 
 /// Whiskers from every input point (x-y projection) to the curve at its node: point `i`

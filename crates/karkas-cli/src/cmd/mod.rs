@@ -1,10 +1,13 @@
 //! The commands of the `karkas` binary, one file each.
 
 pub mod convert;
+mod curve_analyze;
 mod curve_dps;
 mod curve_fit;
 mod curve_ll;
 mod curve_spline;
+mod fairness_report;
+mod fit_options;
 mod fit_summary;
 pub mod hausdorff;
 pub mod section;
@@ -30,6 +33,9 @@ pub enum CurveCommand {
     /// Cubic interpolating spline through ordered points (not-a-knot, natural, clamped or
     /// periodic ends; uniform, chord or centripetal parameters).
     Spline(curve_spline::CurveSplineArgs),
+    /// Fairness of the curves of one or more methods on the same points: length, curvature
+    /// range, curvature extrema, inflections, distance from the points, energy.
+    Analyze(curve_analyze::CurveAnalyzeArgs),
 }
 
 impl CurveCommand {
@@ -39,6 +45,7 @@ impl CurveCommand {
             CurveCommand::Ll(args) => curve_ll::run(&args),
             CurveCommand::Dps(args) => curve_dps::run(&args),
             CurveCommand::Fit(args) => curve_fit::run(&args),
+            CurveCommand::Analyze(args) => curve_analyze::run(&args),
             CurveCommand::Spline(args) => curve_spline::run(&args),
         }
     }

@@ -6,6 +6,7 @@ mod cad;
 mod common;
 mod contract;
 mod convert;
+mod curve_analyze;
 mod curve_fit;
 mod curve_spline;
 mod demo_hydrofoil;

@@ -3,6 +3,7 @@
 //! these rendered to pixels with a compiled-in font), and the memory each takes ([`budget`]).
 
 pub mod budget;
+pub mod curvature_plot;
 pub(crate) mod error;
 pub mod png;
 pub mod scene;

@@ -9,6 +9,10 @@
 //!   curve) call these.
 //! - [`curvature`]: the Frenet curvature (signed in 2-D) and torsion (3-D) from the first
 //!   three derivatives.
+//! - [`curvature_rate`]: `dκ/ds` in closed form from the first three derivatives.
+//! - [`fairness`]: the fairness figures of a piecewise curve (length, curvature range,
+//!   curvature extrema and inflections, largest distance from the input polygon,
+//!   `∫ (dκ/ds)^2 ds`).
 //! - [`curve_nearest`]: the globally nearest point of a curve: candidates from a sampled
 //!   polyline in a k-d tree (the `kiddo` crate), refined by safeguarded Newton on
 //!   `(P(t) - q) . P'(t) = 0` per candidate segment.
@@ -19,15 +23,23 @@
 
 pub mod arc_length;
 pub mod curvature;
+pub mod curvature_rate;
 mod curve_geometry;
 pub mod curve_nearest;
+pub mod fairness;
+#[cfg(test)]
+mod fairness_tests;
+mod polygon_distance;
 mod quadrature;
+mod sign_changes;
 pub mod surface_frame;
 pub mod surface_nearest;
 
 pub use arc_length::{arc_length, inverse_arc_length};
 pub use curvature::{curvature, torsion};
+pub use curvature_rate::{curvature_rate, curvature_rate_on_side};
 pub use curve_geometry::CurveGeometry;
 pub use curve_nearest::{CurveNearest, CurveProjector};
+pub use fairness::{curvature_profile, curve_fairness, CurvatureSample, CurveFairness};
 pub use surface_frame::{normal, principal_curvatures, PrincipalCurvatures};
 pub use surface_nearest::{SurfaceNearest, SurfaceProjector};

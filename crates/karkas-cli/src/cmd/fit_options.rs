@@ -1,0 +1,133 @@
+//! The options of the constrained C^1 cubic fit to measured points (`curve fit`, and any
+//! command that offers the fit as one of its methods): knots or a tolerance, the bound on the
+//! second-derivative jumps, corners, fairness and smoothing (Pavlov, docs/methods.md §4).
+//!
+//! The group is flattened into a command's arguments (`#[command(flatten)]`);
+//! [`FitCurveOptions::check`] refuses bad values naming the option, and
+//! [`FitCurveOptions::fit`] makes the fit.
+
+use crate::output::memory::check_memory;
+use anyhow::{bail, Context, Result};
+use clap::Args;
+use karkas::fit::{
+    fit_curve, fit_curve_adaptive, knots_from_list, CurveFit, FitOptions, DEFAULT_FAIRNESS,
+    DEFAULT_SMOOTHING,
+};
+use karkas::Point;
+
+/// The bytes a fit works in per knot, in 3-D (the most): the knot and its spline values and
+/// derivatives, the Newton solver's per-piece blocks, its vectors and the banded normal
+/// equations (`8 (32 + 48 d^2 + 2 d (16 + 8 d))` with `d = 3`).
+const FIT_BYTES_PER_KNOT: u128 = 8 * (32 + 48 * 9 + 6 * (16 + 24));
+
+/// The options of a constrained cubic fit.
+#[derive(Clone, Debug, Args)]
+pub struct FitCurveOptions {
+    /// The knots 0 = T1 < T2 < ... < TN = 1, comma-separated; or one whole number N: N
+    /// uniformly spaced knots.
+    #[arg(
+        long,
+        value_delimiter = ',',
+        conflicts_with = "tolerance",
+        value_name = "T1,...,TN|N"
+    )]
+    pub knots: Option<Vec<f64>>,
+    /// Place knots automatically until every point is within TOL of the curve.
+    #[arg(long, value_name = "TOL")]
+    pub tolerance: Option<f64>,
+    /// Bound on the sum of squared second-derivative jumps (Pavlov's J_L) at the inner
+    /// knots [default: none, the unconstrained C^1 fit].
+    #[arg(long, value_name = "E")]
+    pub eps: Option<f64>,
+    /// An inner knot whose jump is left free (a corner); repeat for several.
+    #[arg(long = "corner", value_name = "T")]
+    pub corners: Vec<f64>,
+    /// Weight rho of the bending energy that keeps the parameterization even (lambda = rho n
+    /// for n points on pieces with at most 8 points each, less on denser pieces; 0 for
+    /// none).
+    #[arg(long, value_name = "RHO", default_value_t = DEFAULT_FAIRNESS)]
+    pub fairness: f64,
+    /// Smoothing s: the bending weight grows with the noise estimated from the points,
+    /// lambda = (rho + s (sigma / L)^2) n tau (sigma the noise, L the size of the points;
+    /// 0 for none).
+    #[arg(long, value_name = "S", default_value_t = DEFAULT_SMOOTHING)]
+    pub smoothing: f64,
+    /// Pin the ends of the curve to the first and last points (e.g. a profile closed at a
+    /// known trailing edge).
+    #[arg(long)]
+    pub pin_ends: bool,
+}
+
+impl FitCurveOptions {
+    /// Checks the values (memory of a knot count, knots, fairness, smoothing, tolerance, eps)
+    /// and returns the knots when given.
+    pub fn check(&self) -> Result<Option<Vec<f64>>> {
+        if let [count] = self.knots.as_deref().unwrap_or_default() {
+            // A count of uniform knots is checked before the knots and the fit's work arrays
+            // are made: per knot the spline, the per-piece blocks of the Newton solver and
+            // the band of the normal equations, in 3-D.
+            if count.fract() == 0.0 && *count >= 2.0 {
+                check_memory(
+                    &format!("--knots {count}"),
+                    (*count as u128).saturating_mul(FIT_BYTES_PER_KNOT),
+                )?;
+            }
+        }
+        let knots = match &self.knots {
+            Some(given) => Some(knots_from_list(given).context("--knots")?),
+            None => None,
+        };
+        if !(self.fairness.is_finite() && self.fairness >= 0.0) {
+            bail!("--fairness: must be a number >= 0, got {}", self.fairness);
+        }
+        if !(self.smoothing.is_finite() && self.smoothing >= 0.0) {
+            bail!("--smoothing: must be a number >= 0, got {}", self.smoothing);
+        }
+        if let Some(tol) = self.tolerance {
+            if !(tol.is_finite() && tol > 0.0) {
+                bail!("--tolerance: must be a positive number, got {tol}");
+            }
+        }
+        if let Some(eps) = self.eps {
+            if eps.is_nan() || eps <= 0.0 {
+                bail!("--eps: must be a positive number, got {eps}");
+            }
+        }
+        Ok(knots)
+    }
+
+    /// The library's options of the fit.
+    pub fn options(&self) -> FitOptions {
+        FitOptions {
+            eps: self.eps.unwrap_or(f64::INFINITY),
+            corners: self.corners.clone(),
+            pin_ends: self.pin_ends,
+            fairness: self.fairness,
+            smoothing: self.smoothing,
+            ..Default::default()
+        }
+    }
+
+    /// The fit of `points` on `knots` (from [`check`](Self::check)) or, without them, to
+    /// `tolerance` (the option's, else the one given); `input` names the points in errors.
+    pub fn fit<const D: usize>(
+        &self,
+        points: &[Point<D>],
+        knots: Option<&[f64]>,
+        tolerance: Option<f64>,
+        input: &str,
+    ) -> Result<CurveFit<D>> {
+        let options = self.options();
+        Ok(match (knots, self.tolerance.or(tolerance)) {
+            (Some(knots), _) => fit_curve(points, knots, &options).context(input.to_owned())?,
+            (None, Some(tol)) => {
+                fit_curve_adaptive(points, tol, &options)
+                    .context(input.to_owned())?
+                    .fit
+            }
+            (None, None) => {
+                bail!("give the knots (--knots T1,...,TN) or a tolerance (--tolerance TOL)")
+            }
+        })
+    }
+}
