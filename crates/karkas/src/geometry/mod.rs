@@ -6,7 +6,8 @@
 //!   piece (split at the breakpoints, where `P'` may have kinks), to a stated absolute
 //!   accuracy; the inverse (the parameter reached after a given length) by safeguarded Newton
 //!   on the length function. The methods of [`CurveGeometry`] (implemented for every
-//!   curve) call these.
+//!   curve) call these. [`ArcLengthTable`] measures every piece once for many lengths of
+//!   one curve (`O(log n)` each).
 //! - [`curvature`]: the Frenet curvature (signed in 2-D) and torsion (3-D) from the first
 //!   three derivatives.
 //! - [`curve_nearest`]: the globally nearest point of a curve: candidates from a sampled
@@ -18,6 +19,7 @@
 //!   grid in a k-d tree refined by Newton's method.
 
 pub mod arc_length;
+mod arc_length_table;
 pub mod curvature;
 mod curve_geometry;
 pub mod curve_nearest;
@@ -26,6 +28,7 @@ pub mod surface_frame;
 pub mod surface_nearest;
 
 pub use arc_length::{arc_length, inverse_arc_length};
+pub use arc_length_table::ArcLengthTable;
 pub use curvature::{curvature, torsion};
 pub use curve_geometry::CurveGeometry;
 pub use curve_nearest::{CurveNearest, CurveProjector};
