@@ -3,7 +3,7 @@
 //! projection of points onto surfaces (the library's [`karkas::geometry`]).
 
 use karkas::geometry::{
-    self, CurveGeometry, CurveProjector, PrincipalCurvatures, SurfaceProjector,
+    self, ArcLengthTable, CurveGeometry, CurveProjector, PrincipalCurvatures, SurfaceProjector,
 };
 use karkas::{Curve, Interval, PiecewiseCurve, Point3, Surface};
 use numpy::PyArrayDyn;
@@ -17,6 +17,10 @@ pub use crate::geometry_interface::{CurveGeometryImpl, SurfaceGeometryImpl};
 use crate::limits::{bytes_of, check_memory, zeros};
 use crate::surface::PySurface;
 use crate::wrapper::{lift, Lift, Wrapped, WrappedSurface};
+
+/// Batches of at least this many lengths measure the curve's pieces once
+/// ([`ArcLengthTable`]) instead of integrating from `t0` for each.
+const TABLE_BATCH: usize = 16;
 
 /// A curve of dimension `D <= 3` seen as one in 3-D (missing coordinates zero).
 struct CurveLift<'a, C, const D: usize>(&'a C);
@@ -41,13 +45,21 @@ where
     C: PiecewiseCurve<D> + Send + Sync,
 {
     fn arc_lengths(&self, t0: f64, t1s: &[f64], tol: f64, out: &mut [f64]) {
-        for (o, &t1) in out.iter_mut().zip(t1s) {
-            *o = self.0.arc_length(t0, t1, tol);
+        if t1s.len() < TABLE_BATCH {
+            for (o, &t1) in out.iter_mut().zip(t1s) {
+                *o = self.0.arc_length(t0, t1, tol);
+            }
+        } else {
+            ArcLengthTable::new(&self.0, tol).arc_lengths_into(&self.0, t0, t1s, out);
         }
     }
     fn inverse_arc_lengths(&self, t0: f64, lengths: &[f64], tol: f64, out: &mut [f64]) {
-        for (o, &s) in out.iter_mut().zip(lengths) {
-            *o = self.0.inverse_arc_length(t0, s, tol);
+        if lengths.len() < TABLE_BATCH {
+            for (o, &s) in out.iter_mut().zip(lengths) {
+                *o = self.0.inverse_arc_length(t0, s, tol);
+            }
+        } else {
+            ArcLengthTable::new(&self.0, tol).inverses_into(&self.0, t0, lengths, out);
         }
     }
     fn curvatures(&self, ts: &[f64], out: &mut [f64]) {

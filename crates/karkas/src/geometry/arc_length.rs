@@ -83,6 +83,17 @@ fn speed<C: Curve<D> + ?Sized, const D: usize>(curve: &C, t: f64) -> f64 {
     curve.deriv(t, 1).norm()
 }
 
+/// `∫_a^b |P'|` to within `accuracy`, for `[a, b]` inside one polynomial piece (no
+/// breakpoint inside, so no split): the parameters are used as given.
+pub(crate) fn piece_length<C: Curve<D> + ?Sized, const D: usize>(
+    curve: &C,
+    a: f64,
+    b: f64,
+    accuracy: f64,
+) -> f64 {
+    integrate(&|t: f64| speed(curve, t), a, b, accuracy)
+}
+
 /// The length of `curve` from `t0` to `t1` (negative when `t1 < t0`), to within `accuracy`
 /// (absolute, in the curve's length units; a non-positive accuracy asks for the best the
 /// quadrature gives, about `1e-15` relative).
@@ -186,7 +197,7 @@ pub fn inverse_arc_length<C: Curve<D> + ?Sized, const D: usize>(
 
 /// The `t` between `a` and `b` (either order) with `|arc_length(a, t)| = target`, where
 /// `|arc_length(a, b)| = piece >= target`.
-fn solve_on_piece<C: Curve<D> + ?Sized, const D: usize>(
+pub(crate) fn solve_on_piece<C: Curve<D> + ?Sized, const D: usize>(
     curve: &C,
     a: f64,
     b: f64,
@@ -204,7 +215,7 @@ fn solve_on_piece<C: Curve<D> + ?Sized, const D: usize>(
     let inner = 0.5 * accuracy;
     for _ in 0..MAX_STEPS {
         let t = a + sign * x;
-        let s = arc_length(curve, a, t, 0.25 * inner).abs();
+        let s = piece_length(curve, a, t, 0.25 * inner).abs();
         let f = s - target;
         if f.abs() <= inner {
             return t;

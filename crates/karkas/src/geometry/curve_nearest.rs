@@ -2,25 +2,32 @@
 //!
 //! The curve is sampled into a polyline (a few vertices per polynomial piece) whose vertices
 //! go into a k-d tree (the `kiddo` crate), and the arc length `ℓ_j` of every polyline segment
-//! is measured. For a query `q`, the nearest vertex gives an upper bound `d_0` on the
-//! distance; every curve point within `d_0` of `q` lies within `ℓ_j / 2` of a vertex of its
-//! segment, so only segments with a vertex within `d_0 + max ℓ_j / 2` can hold the nearest
-//! point. Each such segment `[a, b]` (nearest first, skipped once it cannot beat the best
-//! so far) is searched for a minimum of `|P(t) - q|^2 / 2`: where
+//! is measured. For a query `q`, the two segments at the nearest vertex are searched first,
+//! giving an upper bound `d_0` on the distance; every curve point within `d_0` of `q` lies
+//! within `ℓ_j / 2` of a vertex of its segment, so only segments with a vertex within
+//! `d_0 + max ℓ_j / 2` can hold the nearest point. Of those, a segment with ends `a`, `b` is
+//! skipped when `dist(q, [a, b]) - sqrt(ℓ_j^2 - |b - a|^2) / 2` is no better than the best so
+//! far: its points lie in the ellipse of foci `a`, `b` and major axis `ℓ_j`, all within the
+//! semi-minor axis `sqrt(ℓ_j^2 - |b - a|^2) / 2` of the chord `[a, b]`, a bound that is
+//! tight (of order `ℓ_j^2` times the curvature) on a finely sampled curve. The others
+//! (smallest bound first) are searched for a minimum of `|P(t) - q|^2 / 2`: where
 //! `g(t) = (P(t) - q) . P'(t)` changes sign from negative to positive, the root is found by
-//! Newton's method on `g` (`g' = |P'|^2 + (P - q) . P''`) safeguarded by bisection; its ends
-//! are candidates too. This is global up to minima hidden inside one segment with no sign
-//! change of `g` across it, which the sampling density makes negligible.
+//! Newton's method on `g` (`g' = |P'|^2 + (P - q) . P''`, started where `q` projects onto the
+//! chord) safeguarded by bisection; its ends are candidates too. A segment whose bound is
+//! below the best but which shows no such sign change is split into 8 parts and searched
+//! again: this finds a minimum between two roots of `g`, as next to a cusp (where `P' = 0`
+//! and `g` vanishes at a vertex). Only minima hidden inside an eighth of a segment can be
+//! missed, which the sampling density makes negligible.
 //!
 //! Parameters stay in the domain: clamped on an open curve (the foot may be an end), wrapped
-//! on a closed one. Ties (a point at the centre of a circle) resolve to the smallest
-//! candidate segment index.
+//! on a closed one. Ties (a point at the centre of a circle) resolve to the first
+//! segment searched.
 
 use kiddo::immutable::float::kdtree::ImmutableKdTree;
 use kiddo::SquaredEuclidean;
 use rayon::prelude::*;
 
-use super::arc_length::arc_length;
+use super::arc_length::piece_length;
 use crate::core::Curve;
 use crate::{Error, Point, Result};
 
@@ -33,6 +40,12 @@ const MIN_SEGMENTS: usize = 64;
 const MAX_SEGMENTS: usize = 1 << 18;
 /// Most Newton or bisection steps per candidate segment.
 const MAX_STEPS: usize = 100;
+/// The relative accuracy of the segments' arc lengths (their chord-width bounds grow as its
+/// square root).
+const LENGTH_ACCURACY: f64 = 1e-10;
+/// Parts a segment is split into when it may hold a minimum with no sign change of `g`
+/// across it.
+const FINE_PARTS: usize = 8;
 /// Batches at least this large are projected in parallel.
 const PARALLEL_BATCH: usize = 256;
 
@@ -78,6 +91,10 @@ pub struct CurveProjector<'a, C: ?Sized, const D: usize> {
     params: Vec<f64>,
     points: Vec<Point<D>>,
     tree: ImmutableKdTree<f64, u64, D, 32>,
+    /// Vertex tangents `P'(t_i)`.
+    tangents: Vec<Point<D>>,
+    /// How far each segment strays from its chord at most (see [`Self::lower_bound`]).
+    widths: Vec<f64>,
     /// The largest half arc length of a segment (with a safety margin).
     reach: f64,
     accuracy: f64,
@@ -109,13 +126,22 @@ impl<'a, C: Curve<D> + ?Sized, const D: usize> CurveProjector<'a, C, D> {
                 what: "a sample of the curve",
             });
         }
-        let mut reach: f64 = 0.0;
-        for (w, p) in params.windows(2).zip(points.windows(2)) {
-            let chord = p[0].distance(p[1]);
-            let length = arc_length(curve, w[0], w[1], 1e-3 * chord + 1e-300);
-            reach = reach.max(length.max(chord));
-        }
-        let reach = 0.5 * reach * (1.0 + 1e-6) + 1e-12 * (reach + points[0].max_abs());
+        let tangents: Vec<Point<D>> = params.iter().map(|&t| curve.deriv(t, 1)).collect();
+        let size = points.iter().fold(0.0f64, |m, p| m.max(p.max_abs()));
+        let mut longest: f64 = 0.0;
+        let widths: Vec<f64> = params
+            .windows(2)
+            .zip(points.windows(2))
+            .map(|(w, p)| {
+                let chord = p[0].distance(p[1]);
+                let length = piece_length(curve, w[0], w[1], LENGTH_ACCURACY * chord + 1e-300);
+                // Rounded up by the quadrature's error and rounding.
+                let length = length.max(chord) * (1.0 + 2.0 * LENGTH_ACCURACY) + 1e-12 * size;
+                longest = longest.max(length);
+                0.5 * ((length - chord) * (length + chord)).sqrt() + 1e-12 * size
+            })
+            .collect();
+        let reach = 0.5 * longest * (1.0 + 1e-6) + 1e-12 * size;
         let in_tree = if closed {
             points.len() - 1
         } else {
@@ -127,6 +153,8 @@ impl<'a, C: Curve<D> + ?Sized, const D: usize> CurveProjector<'a, C, D> {
             tree: ImmutableKdTree::new_from_slice(&coords),
             params,
             points,
+            tangents,
+            widths,
             reach,
             accuracy: accuracy.max(0.0),
             closed,
@@ -143,11 +171,20 @@ impl<'a, C: Curve<D> + ?Sized, const D: usize> CurveProjector<'a, C, D> {
         let vertices = if self.closed { segments } else { segments + 1 };
         let first =
             (self.tree.nearest_one::<SquaredEuclidean>(&q.0).item as usize).min(vertices - 1);
-        let mut best = CurveNearest {
-            t: self.params[first],
-            distance: self.points[first].distance(q),
-            point: self.points[first],
-        };
+        let mut best = self.result(self.params[first], self.points[first], q);
+        // The segments at the nearest vertex first: they usually hold the foot, and the
+        // distance they give shrinks the search below.
+        let around = self.segments_at(first);
+        let mut rooted = [false; 2];
+        for (k, j) in around.into_iter().enumerate() {
+            if let Some(j) = j {
+                let (found, root) = self.search_segment(q, j, 1);
+                rooted[k] = root;
+                if found.distance < best.distance {
+                    best = found;
+                }
+            }
+        }
         let radius = best.distance + self.reach;
         let mut candidates: Vec<(f64, usize)> = Vec::new();
         for found in self
@@ -155,27 +192,36 @@ impl<'a, C: Curve<D> + ?Sized, const D: usize> CurveProjector<'a, C, D> {
             .within_unsorted::<SquaredEuclidean>(&q.0, radius * radius)
         {
             let i = (found.item as usize).min(vertices - 1);
-            let d = found.distance.sqrt();
-            if i < segments {
-                candidates.push((d, i));
-            }
-            if i > 0 {
-                candidates.push((d, i - 1));
-            } else if self.closed {
-                candidates.push((d, segments - 1));
+            for j in self.segments_at(i).into_iter().flatten() {
+                // A segment at the nearest vertex whose minimum was found needs no more.
+                if (0..2).any(|k| rooted[k] && around[k] == Some(j)) {
+                    continue;
+                }
+                let bound = self.lower_bound(q, j);
+                if bound < best.distance {
+                    candidates.push((bound, j));
+                }
             }
         }
-        candidates.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
-        let mut seen = vec![false; segments];
-        for (d, j) in candidates {
-            if seen[j] {
-                continue;
-            }
-            seen[j] = true;
-            if d - self.reach > best.distance {
+        candidates.sort_unstable_by_key(|c| c.1);
+        candidates.dedup_by_key(|c| c.1);
+        candidates.sort_unstable_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+        for (bound, j) in candidates {
+            if bound >= best.distance {
                 break;
             }
-            let found = self.search_segment(q, j);
+            // A segment that may still hold a nearer point is searched more finely: a
+            // minimum between two roots of `g` (near a cusp, where `P' = 0`) shows no sign
+            // change across the whole segment.
+            let parts = if around.contains(&Some(j)) {
+                FINE_PARTS
+            } else {
+                1
+            };
+            let (mut found, root) = self.search_segment(q, j, parts);
+            if !root && parts == 1 {
+                found = self.search_segment(q, j, FINE_PARTS).0;
+            }
             if found.distance < best.distance {
                 best = found;
             }
@@ -184,6 +230,36 @@ impl<'a, C: Curve<D> + ?Sized, const D: usize> CurveProjector<'a, C, D> {
             best.t = self.curve.domain().wrap(best.t);
         }
         best
+    }
+
+    /// The segments that end at vertex `i` (the one before it and the one after it).
+    fn segments_at(&self, i: usize) -> [Option<usize>; 2] {
+        let segments = self.params.len() - 1;
+        let before = if i > 0 {
+            Some(i - 1)
+        } else if self.closed {
+            Some(segments - 1)
+        } else {
+            None
+        };
+        let after = (i < segments).then_some(i);
+        [before, after]
+    }
+
+    /// A lower bound on the distance from `q` to segment `j`: the segment (ends `a`, `b`,
+    /// chord `c`, arc length `l`) lies in the ellipse of foci `a`, `b` and major axis `l`,
+    /// whose points are within its semi-minor axis `h = sqrt(l^2 - c^2) / 2` of the chord
+    /// `[a, b]`; so the distance is at least `dist(q, [a, b]) - h`.
+    fn lower_bound(&self, q: Point<D>, j: usize) -> f64 {
+        let (a, b) = (self.points[j], self.points[j + 1]);
+        let (ab, aq) = (b - a, q - a);
+        let c2 = ab.norm_sq();
+        let s = if c2 > 0.0 {
+            (aq.dot(ab) / c2).clamp(0.0, 1.0)
+        } else {
+            0.0
+        };
+        (aq - ab * s).norm() - self.widths[j]
     }
 
     /// The nearest points to every point of `qs` (in parallel for large batches).
@@ -198,8 +274,10 @@ impl<'a, C: Curve<D> + ?Sized, const D: usize> CurveProjector<'a, C, D> {
         }
     }
 
-    /// The best of the ends of segment `j` and the minimum of the squared distance inside it.
-    fn search_segment(&self, q: Point<D>, j: usize) -> CurveNearest<D> {
+    /// The best of the ends of segment `j` and the minima of the squared distance inside it,
+    /// split into `parts` equal parts (a minimum is where `g` turns from `<= 0` to `> 0`);
+    /// true when a minimum inside was found.
+    fn search_segment(&self, q: Point<D>, j: usize, parts: usize) -> (CurveNearest<D>, bool) {
         let (a, b) = (self.params[j], self.params[j + 1]);
         let (pa, pb) = (self.points[j], self.points[j + 1]);
         let mut best = if pa.distance_sq(q) <= pb.distance_sq(q) {
@@ -207,21 +285,47 @@ impl<'a, C: Curve<D> + ?Sized, const D: usize> CurveProjector<'a, C, D> {
         } else {
             self.result(b, pb, q)
         };
-        let g = |t: f64, p: Point<D>| (p - q).dot(self.curve.deriv(t, 1));
-        let (ga, gb) = (g(a, pa), g(b, pb));
-        if ga < 0.0 && gb > 0.0 {
-            let t = self.newton_root(q, a, b);
-            let p = self.curve.eval(t);
-            if p.distance(q) < best.distance {
-                best = self.result(t, p, q);
+        let mut rooted = false;
+        let (mut lo, mut p_lo, mut g_lo) = (a, pa, (pa - q).dot(self.tangents[j]));
+        for k in 1..=parts {
+            let (hi, p_hi, g_hi) = if k == parts {
+                (b, pb, (pb - q).dot(self.tangents[j + 1]))
+            } else {
+                let t = a + (b - a) * (k as f64 / parts as f64);
+                let p = self.curve.eval(t);
+                (t, p, (p - q).dot(self.curve.deriv(t, 1)))
+            };
+            if p_hi.distance(q) < best.distance {
+                best = self.result(hi, p_hi, q);
             }
+            if g_lo <= 0.0 && g_hi > 0.0 {
+                // Start where q projects onto the chord.
+                let (chord, c2) = (p_hi - p_lo, p_lo.distance_sq(p_hi));
+                let s = if c2 > 0.0 {
+                    ((q - p_lo).dot(chord) / c2).clamp(0.0, 1.0)
+                } else {
+                    0.5
+                };
+                let t = self.newton_root(q, lo, hi, lo + (hi - lo) * s);
+                let p = self.curve.eval(t);
+                rooted = true;
+                if p.distance(q) < best.distance {
+                    best = self.result(t, p, q);
+                }
+            }
+            (lo, p_lo, g_lo) = (hi, p_hi, g_hi);
         }
-        best
+        (best, rooted)
     }
 
-    /// The root of `g` in `(lo, hi)` with `g(lo) < 0 < g(hi)`: Newton safeguarded by bisection.
-    fn newton_root(&self, q: Point<D>, mut lo: f64, mut hi: f64) -> f64 {
-        let mut t = 0.5 * (lo + hi);
+    /// The root of `g` in `(lo, hi)` with `g(lo) < 0 < g(hi)`: Newton from `start` safeguarded
+    /// by bisection.
+    fn newton_root(&self, q: Point<D>, mut lo: f64, mut hi: f64, start: f64) -> f64 {
+        let mut t = if start > lo && start < hi {
+            start
+        } else {
+            0.5 * (lo + hi)
+        };
         let floor = 4.0 * f64::EPSILON * (lo.abs().max(hi.abs()));
         let tolerance = self.accuracy.max(floor);
         for _ in 0..MAX_STEPS {
@@ -239,14 +343,18 @@ impl<'a, C: Curve<D> + ?Sized, const D: usize> CurveProjector<'a, C, D> {
             }
             let slope = d1.norm_sq() + r.dot(d2);
             let newton = t - g / slope;
+            if slope > 0.0 && (newton - t).abs() <= tolerance {
+                // Converged: the step is below the tolerance (Newton landing on `t` itself,
+                // a bracket end, must not fall back to bisection).
+                return newton.clamp(lo, hi);
+            }
             let next = if slope > 0.0 && newton > lo && newton < hi {
                 newton
             } else {
                 0.5 * (lo + hi)
             };
-            let step = (next - t).abs();
             t = next;
-            if step <= tolerance || hi - lo <= floor {
+            if hi - lo <= floor {
                 break;
             }
         }

@@ -6,7 +6,8 @@
 //!   piece (split at the breakpoints, where `P'` may have kinks), to a stated absolute
 //!   accuracy; the inverse (the parameter reached after a given length) by safeguarded Newton
 //!   on the length function. The methods of [`CurveGeometry`] (implemented for every
-//!   curve) call these.
+//!   curve) call these. [`ArcLengthTable`] measures every piece once for many lengths of
+//!   one curve (`O(log n)` each).
 //! - [`curvature`]: the Frenet curvature (signed in 2-D) and torsion (3-D) from the first
 //!   three derivatives.
 //! - [`curvature_rate`]: `dκ/ds` in closed form from the first three derivatives.
@@ -22,6 +23,7 @@
 //!   grid in a k-d tree refined by Newton's method.
 
 pub mod arc_length;
+mod arc_length_table;
 pub mod curvature;
 pub mod curvature_rate;
 mod curve_geometry;
@@ -36,6 +38,7 @@ pub mod surface_frame;
 pub mod surface_nearest;
 
 pub use arc_length::{arc_length, inverse_arc_length};
+pub use arc_length_table::ArcLengthTable;
 pub use curvature::{curvature, torsion};
 pub use curvature_rate::{curvature_rate, curvature_rate_on_side};
 pub use curve_geometry::CurveGeometry;

@@ -24,6 +24,7 @@ mod fit_noise;
 mod fit_optimality;
 mod fit_parallel;
 mod geometry;
+mod geometry_batch;
 mod ll_curve;
 mod ll_curve_closed;
 mod ll_curve_interp;
