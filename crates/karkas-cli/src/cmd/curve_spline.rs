@@ -57,7 +57,7 @@ impl CurveJob for (&CurveSplineArgs, OutputFormat) {
         curve_points(&args.input, points)?;
         let curve = args.spline.build(points, &args.input)?;
         if format.is_cad() {
-            return write_cad_curve(&curve, format, &args.output, args.input.display());
+            return write_cad_curve(&curve, points, format, &args.output, args.input.display());
         }
         let n = args
             .samples

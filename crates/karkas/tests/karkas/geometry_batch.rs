@@ -34,8 +34,8 @@ fn cusp() -> CubicSpline<2> {
 fn cubic_arc_length_to_1e_12_relative() {
     let c = wavy_cubic();
     for (a, b, reference) in [
-        (0.0, 2.0, 7.413_645_111_500_687_238),
-        (0.25, 1.75, 4.667_052_644_014_485_464),
+        (0.0, 2.0, 7.413_645_111_500_688),
+        (0.25, 1.75, 4.667_052_644_014_485),
     ] {
         let direct = c.arc_length(a, b, 1e-13);
         let table = ArcLengthTable::new(&c, 1e-13).arc_length(&c, a, b);
