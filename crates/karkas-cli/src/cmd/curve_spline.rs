@@ -31,7 +31,8 @@ pub struct CurveSplineArgs {
     input: PathBuf,
     /// Output file: .csv (t,x,y[,z] in the spline's parameter), a picture of the curve over
     /// its points (.svg, .png; x-y projection), a 3-D viewer page (.html), or the exact
-    /// B-spline curve as .step/.stp or .iges/.igs (planar curves in z = 0).
+    /// B-spline curve as .step/.stp, .iges/.igs or .dxf (a SPLINE with the input points on
+    /// their own layer; planar curves in z = 0).
     #[arg(short, long)]
     output: PathBuf,
     #[command(flatten)]
