@@ -43,6 +43,8 @@ const MAX_STEPS: usize = 100;
 /// The relative accuracy of the segments' arc lengths (their chord-width bounds grow as its
 /// square root).
 const LENGTH_ACCURACY: f64 = 1e-10;
+/// Where the tangent at a segment's end is taken, as a share of the segment before its end.
+const LEFT_LIMIT: f64 = 1e-9;
 /// Parts a segment is split into when it may hold a minimum with no sign change of `g`
 /// across it.
 const FINE_PARTS: usize = 8;
@@ -91,8 +93,11 @@ pub struct CurveProjector<'a, C: ?Sized, const D: usize> {
     params: Vec<f64>,
     points: Vec<Point<D>>,
     tree: ImmutableKdTree<f64, u64, D, 32>,
-    /// Vertex tangents `P'(t_i)`.
-    tangents: Vec<Point<D>>,
+    /// Tangents at the start of every segment, `P'(t_j)` (from the right).
+    starts: Vec<Point<D>>,
+    /// Tangents at the end of every segment, `P'(t_{j+1})` from the left (a piecewise curve
+    /// may turn at a vertex: a polyline's next edge can point back against this one).
+    ends: Vec<Point<D>>,
     /// How far each segment strays from its chord at most (see [`Self::lower_bound`]).
     widths: Vec<f64>,
     /// The largest half arc length of a segment (with a safety margin).
@@ -126,7 +131,16 @@ impl<'a, C: Curve<D> + ?Sized, const D: usize> CurveProjector<'a, C, D> {
                 what: "a sample of the curve",
             });
         }
-        let tangents: Vec<Point<D>> = params.iter().map(|&t| curve.deriv(t, 1)).collect();
+        let starts: Vec<Point<D>> = params[..params.len() - 1]
+            .iter()
+            .map(|&t| curve.deriv(t, 1))
+            .collect();
+        // The left limit, by the derivative a hair before the end (the `Curve` trait gives
+        // values at a parameter, not one-sided limits).
+        let ends: Vec<Point<D>> = params
+            .windows(2)
+            .map(|w| curve.deriv(w[1] - LEFT_LIMIT * (w[1] - w[0]), 1))
+            .collect();
         let size = points.iter().fold(0.0f64, |m, p| m.max(p.max_abs()));
         let mut longest: f64 = 0.0;
         let widths: Vec<f64> = params
@@ -153,7 +167,8 @@ impl<'a, C: Curve<D> + ?Sized, const D: usize> CurveProjector<'a, C, D> {
             tree: ImmutableKdTree::new_from_slice(&coords),
             params,
             points,
-            tangents,
+            starts,
+            ends,
             widths,
             reach,
             accuracy: accuracy.max(0.0),
@@ -286,10 +301,10 @@ impl<'a, C: Curve<D> + ?Sized, const D: usize> CurveProjector<'a, C, D> {
             self.result(b, pb, q)
         };
         let mut rooted = false;
-        let (mut lo, mut p_lo, mut g_lo) = (a, pa, (pa - q).dot(self.tangents[j]));
+        let (mut lo, mut p_lo, mut g_lo) = (a, pa, (pa - q).dot(self.starts[j]));
         for k in 1..=parts {
             let (hi, p_hi, g_hi) = if k == parts {
-                (b, pb, (pb - q).dot(self.tangents[j + 1]))
+                (b, pb, (pb - q).dot(self.ends[j]))
             } else {
                 let t = a + (b - a) * (k as f64 / parts as f64);
                 let p = self.curve.eval(t);

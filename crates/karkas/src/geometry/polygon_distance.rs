@@ -121,4 +121,34 @@ mod tests {
         assert!((p.nearest(Point([0.1, 0.5])).distance - 0.1).abs() < 1e-12);
         assert!(Polygon::new(&[Point([1.0, 2.0]), Point([1.0, 2.0])], false).is_none());
     }
+
+    /// The distance from `q` to the segment `[a, b]`, exactly.
+    fn segment_distance(q: Point<2>, a: Point<2>, b: Point<2>) -> f64 {
+        let (ab, aq) = (b - a, q - a);
+        let s = (aq.dot(ab) / ab.norm_sq()).clamp(0.0, 1.0);
+        (aq - ab * s).norm()
+    }
+
+    #[test]
+    fn sharp_turns_do_not_hide_the_nearest_edge() {
+        // A zig-zag whose edges turn by more than 90 degrees at every vertex: the direction
+        // after a vertex points back against the edge before it.
+        let pts: Vec<Point<2>> = (0..40)
+            .map(|k| Point([0.1 * k as f64, if k % 2 == 0 { 0.0 } else { 1.0 }]))
+            .collect();
+        let polygon = Polygon::new(&pts, false).unwrap();
+        let p = polygon.projector().unwrap();
+        for k in 0..2000 {
+            let q = Point([
+                -0.2 + 4.3 * (k as f64 * 0.618_034).fract(),
+                -0.3 + 1.6 * (k as f64 * 0.414_214).fract(),
+            ]);
+            let exact = pts
+                .windows(2)
+                .map(|w| segment_distance(q, w[0], w[1]))
+                .fold(f64::INFINITY, f64::min);
+            let found = p.nearest(q).distance;
+            assert!((found - exact).abs() < 1e-12, "{q:?}: {found} vs {exact}");
+        }
+    }
 }
