@@ -17,6 +17,7 @@ use crate::error::IoError;
 use crate::picture::error::PictureError;
 use crate::picture::png::write_svg_as_png;
 use crate::picture::svg::{chart_builder, finite, WIDTH};
+use crate::picture::ticks::{nice_step, tick_label};
 use crate::write::write_atomic;
 
 /// Height of the picture in pixels.
@@ -71,6 +72,17 @@ fn curvature_range(mut values: Vec<f64>) -> (f64, f64, bool) {
     (lo, hi, lo > values[0] || hi < values[n - 1])
 }
 
+/// The step whose decimals label the ticks of `range` (plotters puts about ten ticks on an
+/// axis; the labels go through [`tick_label`], so a tick at zero is never "-0").
+fn label_step(range: &Range<f64>) -> f64 {
+    let span = (range.end - range.start).abs();
+    if span > 0.0 && span.is_finite() {
+        nice_step(span / 10.0)
+    } else {
+        1.0
+    }
+}
+
 /// `lo..hi` padded by [`PADDING`] (opened to a unit around a single value).
 fn padded(lo: f64, hi: f64) -> Range<f64> {
     if !(lo.is_finite() && hi.is_finite()) || lo > hi {
@@ -105,6 +117,7 @@ pub fn render_curvature_svg(plot: &CurvaturePlot<'_>) -> Result<String, PictureE
     } else {
         "curvature"
     };
+    let (x_step, y_step) = (label_step(&x), label_step(&y));
     let mut svg = String::new();
     {
         let root = SVGBackend::with_string(&mut svg, (WIDTH, HEIGHT)).into_drawing_area();
@@ -114,6 +127,8 @@ pub fn render_curvature_svg(plot: &CurvaturePlot<'_>) -> Result<String, PictureE
             .configure_mesh()
             .x_desc("arc length s")
             .y_desc(y_desc)
+            .x_label_formatter(&|v| tick_label(*v, x_step))
+            .y_label_formatter(&|v| tick_label(*v, y_step))
             .draw()?;
         for (line, &(r, g, b)) in plot.lines.iter().zip(COLOURS.iter().cycle()) {
             let colour = RGBColor(r, g, b);
@@ -196,5 +211,40 @@ mod tests {
         })
         .unwrap();
         assert!(empty.starts_with("<svg"));
+    }
+
+    /// The text of every `<text>` element of `svg`.
+    fn texts(svg: &str) -> Vec<&str> {
+        svg.split("<text")
+            .skip(1)
+            .filter_map(|t| {
+                t.split_once('>')
+                    .and_then(|(_, rest)| rest.split_once("</text>"))
+            })
+            .map(|(text, _)| text.trim())
+            .collect()
+    }
+
+    #[test]
+    fn a_curvature_axis_through_zero_has_no_negative_zero_label() {
+        // Curvature from -0.3 to 0.7 (an inflection): ticks at ..., -0.2, 0, 0.2, ...
+        let points: Vec<Point2> = (0..=100)
+            .map(|i| Point2::new([0.01 * i as f64, -0.3 + 0.01 * i as f64]))
+            .collect();
+        let lines = [CurvatureLine {
+            label: "s-curve",
+            points: &points,
+        }];
+        let svg = render_curvature_svg(&CurvaturePlot {
+            title: "k",
+            lines: &lines,
+        })
+        .unwrap();
+        let labels = texts(&svg);
+        assert!(labels.contains(&"0.0"), "{labels:?}");
+        assert!(labels.iter().any(|l| l.starts_with("-0.")), "{labels:?}");
+        for label in labels {
+            assert!(!matches!(label, "-0" | "-0.0" | "-0.00"), "{label}");
+        }
     }
 }
