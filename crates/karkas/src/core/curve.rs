@@ -35,6 +35,13 @@ pub trait Curve<const D: usize> {
     /// [`Side::Above`] is returned (from below at the upper end of the domain).
     fn deriv(&self, t: f64, k: usize) -> Point<D>;
 
+    /// The point and its first two derivatives at `t`, `[P(t), P'(t), P''(t)]`, as
+    /// [`deriv`](Curve::deriv) gives them. Curves that locate their piece before evaluating
+    /// override it to locate once (Newton's method on a distance needs all three per step).
+    fn eval_with_derivatives(&self, t: f64) -> [Point<D>; 3] {
+        [self.eval(t), self.deriv(t, 1), self.deriv(t, 2)]
+    }
+
     /// The curve's polynomial pieces (degree, breakpoints, continuity) when it is a piecewise
     /// polynomial of its parameter; `None` (the default) when it is not or is not known to
     /// be. Used for exact B-spline export of surfaces built from curves

@@ -92,7 +92,7 @@ pub struct CurveProjector<'a, C: ?Sized, const D: usize> {
     /// `n` is vertex 0 and is not in the tree).
     params: Vec<f64>,
     points: Vec<Point<D>>,
-    tree: ImmutableKdTree<f64, u64, D, 32>,
+    tree: ImmutableKdTree<f64, u64, D, 16>,
     /// Tangents at the start of every segment, `P'(t_j)` (from the right).
     starts: Vec<Point<D>>,
     /// Tangents at the end of every segment, `P'(t_{j+1})` from the left (a piecewise curve
@@ -344,9 +344,8 @@ impl<'a, C: Curve<D> + ?Sized, const D: usize> CurveProjector<'a, C, D> {
         let floor = 4.0 * f64::EPSILON * (lo.abs().max(hi.abs()));
         let tolerance = self.accuracy.max(floor);
         for _ in 0..MAX_STEPS {
-            let r = self.curve.eval(t) - q;
-            let d1 = self.curve.deriv(t, 1);
-            let d2 = self.curve.deriv(t, 2);
+            let [p, d1, d2] = self.curve.eval_with_derivatives(t);
+            let r = p - q;
             let g = r.dot(d1);
             if g == 0.0 {
                 return t;

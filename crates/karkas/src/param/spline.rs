@@ -203,6 +203,11 @@ impl<const D: usize> Curve<D> for CubicSpline<D> {
         self.deriv_on_piece(self.locate(t, Side::Above), k)
     }
 
+    fn eval_with_derivatives(&self, t: f64) -> [Point<D>; 3] {
+        let at = self.locate(t, Side::Above);
+        [0, 1, 2].map(|k| self.deriv_on_piece(at, k))
+    }
+
     fn polynomial_pieces(&self) -> Option<crate::bspline::PolynomialPieces> {
         Some(crate::bspline::PolynomialPieces::uniform_continuity(
             3,

@@ -249,3 +249,31 @@ fn projection_onto_the_far_side_of_closed_curves_is_global() {
     }
     assert!(worst < 1e-9, "{worst}");
 }
+
+#[test]
+fn value_and_derivatives_at_once_equal_the_separate_calls() {
+    let open = wavy_cubic();
+    let pts: Vec<Point2> = (0..12)
+        .map(|k| {
+            let th = TAU * k as f64 / 12.0;
+            Point2::new([th.cos(), 0.5 * th.sin()])
+        })
+        .collect();
+    let closed = CubicSpline::through(
+        &pts,
+        CurveParameterization::Centripetal,
+        SplineEnds::Periodic,
+    )
+    .unwrap();
+    for curve in [&open, &closed] {
+        let d = curve.domain();
+        // Knots, points between them and outside the domain (extension or wrap).
+        for k in -8..=40 {
+            let t = d.start + d.length() * k as f64 / 32.0;
+            let [p, d1, d2] = curve.eval_with_derivatives(t);
+            assert_eq!(p, curve.eval(t), "{t}");
+            assert_eq!(d1, curve.deriv(t, 1), "{t}");
+            assert_eq!(d2, curve.deriv(t, 2), "{t}");
+        }
+    }
+}
