@@ -71,9 +71,9 @@ pub fn table(reports: &[MethodReport]) -> String {
     for r in reports {
         let f = &r.fairness;
         out += &format!(
-            "{:<8}{:>14.6}{:>14.5e}{:>14.5e}{:>9}{:>12}{:>14.3e}{:>14.5e}{:>8}\n",
+            "{:<8}{:>14}{:>14.5e}{:>14.5e}{:>9}{:>12}{:>14.3e}{:>14.5e}{:>8}\n",
             r.method,
-            f.length,
+            length_text(f.length),
             f.curvature_min + 0.0,
             f.curvature_max + 0.0,
             f.curvature_extrema,
@@ -84,6 +84,16 @@ pub fn table(reports: &[MethodReport]) -> String {
         );
     }
     out
+}
+
+/// A length with six decimals, or in exponent form outside 1e-3..1e7 (a curve in units near
+/// 1e150 would otherwise print 150 digits).
+fn length_text(length: f64) -> String {
+    if (1e-3..1e7).contains(&length.abs()) {
+        format!("{length:.6}")
+    } else {
+        format!("{length:.6e}")
+    }
 }
 
 /// Prints the figures: the JSON object on standard output when `json` (the table then goes to

@@ -10,8 +10,8 @@
 //!   `W' = 2 v^2 (P'' . P''') - 2 a (P' . P''')` (taken as 0 where `w = 0`, a zero of the
 //!   non-negative curvature, where `κ` has a corner).
 //!
-//! Both are evaluated on the curve scaled by the largest coordinate of `P'`, as in the
-//! curvature, so that `v^6` neither overflows nor underflows.
+//! Both are evaluated after a change of parameter and of length unit that brings `P'`, `P''`
+//! and `P'''` to order one, so that `v^6` and the products of derivatives do not underflow.
 
 use crate::core::{Curve, PiecewiseCurve, Side};
 use crate::Point;
@@ -27,8 +27,22 @@ pub(crate) fn curvature_and_rate<const D: usize>(
     if !(sigma.is_finite() && sigma > 0.0) {
         return (f64::NAN, f64::NAN);
     }
-    let scale = 1.0 / sigma;
-    let (d1, d2, d3) = (d1 * scale, d2 * scale, d3 * scale);
+    // Reparameterize by `t = τ u` with `τ = σ / |P''|` and scale space by `λ = σ τ`, so that
+    // the three derivatives are all of order one whatever the units of `t` and of space
+    // (chord parameters of coordinates near 1e150 give `P'''` near 1e-300, whose products
+    // underflow); `κ` scales by `λ` and `dκ/ds` by `λ^2`, undone at the end.
+    let rho = d2.max_abs();
+    let (d1, d2, d3, scale) = if rho.is_finite() && rho > 0.0 {
+        (
+            d1 * (1.0 / sigma),
+            d2 * (1.0 / rho),
+            d3 * ((1.0 / rho) * (sigma / rho)),
+            (rho / sigma) / sigma,
+        )
+    } else {
+        let scale = 1.0 / sigma;
+        (d1 * scale, d2 * scale, d3 * scale, scale)
+    };
     let v2 = d1.norm_sq();
     let a = d1.dot(d2);
     let (c, dc) = if D == 2 {

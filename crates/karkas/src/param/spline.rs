@@ -73,7 +73,7 @@ impl<const D: usize> CubicSpline<D> {
         }
         let mut values = values;
         if periodic {
-            let scale = values.iter().fold(1.0f64, |m, p| m.max(p.max_abs()));
+            let scale = values.iter().fold(0.0f64, |m, p| m.max(p.max_abs()));
             if (values[n - 1] - values[0]).max_abs() > 1e-12 * scale {
                 return Err(Error::OpenPeriodicData {
                     what: "a periodic spline",
@@ -113,7 +113,7 @@ impl<const D: usize> CubicSpline<D> {
     ) -> Result<Self> {
         let mut pts = points.to_vec();
         if matches!(ends, SplineEnds::Periodic) && !pts.is_empty() {
-            let scale = pts.iter().fold(1.0f64, |m, p| m.max(p.max_abs()));
+            let scale = pts.iter().fold(0.0f64, |m, p| m.max(p.max_abs()));
             let last = pts[pts.len() - 1];
             if (last - pts[0]).max_abs() > 1e-12 * scale {
                 pts.push(pts[0]);
@@ -177,12 +177,20 @@ impl<const D: usize> CubicSpline<D> {
 
     #[inline]
     fn deriv_on_piece(&self, (k, s): (usize, f64), order: usize) -> Point<D> {
+        // The derivative in `s` on the unit interval, then divided by `h` once per order: the
+        // weights `1/h^k` of `hermite_basis` overflow or underflow for the third derivative
+        // when `h` is near 1e150 or 1e-150 (chord parameters of such coordinates), while the
+        // derivative itself is representable.
         let h = self.knots[k + 1] - self.knots[k];
-        let w = hermite_basis(s, h, order);
-        self.values[k] * w[0]
+        let w = hermite_basis(s, 1.0, order);
+        let mut d = self.values[k] * w[0]
             + self.values[k + 1] * w[2]
-            + self.slopes[k] * w[1]
-            + self.slopes[k + 1] * w[3]
+            + (self.slopes[k] * h) * w[1]
+            + (self.slopes[k + 1] * h) * w[3];
+        for _ in 0..order.min(4) {
+            d *= 1.0 / h;
+        }
+        d
     }
 }
 

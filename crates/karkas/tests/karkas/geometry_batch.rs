@@ -277,3 +277,48 @@ fn value_and_derivatives_at_once_equal_the_separate_calls() {
         }
     }
 }
+
+#[test]
+fn third_derivatives_and_curvature_rates_hold_at_extreme_scales() {
+    let pts: Vec<Point2> = (0..30)
+        .map(|k| {
+            let th = TAU * k as f64 / 30.0;
+            Point2::new([th.cos() + 0.2 * (3.0 * th).cos(), 0.6 * th.sin()])
+        })
+        .collect();
+    let unit = CubicSpline::through(
+        &pts,
+        CurveParameterization::ChordLength,
+        SplineEnds::Periodic,
+    )
+    .unwrap();
+    for scale in [1e150, 1e-150] {
+        let scaled: Vec<Point2> = pts.iter().map(|&p| p * scale).collect();
+        let c = CubicSpline::through(
+            &scaled,
+            CurveParameterization::ChordLength,
+            SplineEnds::Periodic,
+        )
+        .unwrap();
+        for k in 0..50 {
+            let t = unit.domain().length() * (k as f64 + 0.3) / 50.0;
+            // With chord parameters, P^(j) scales by scale^(1 - j).
+            let d3 = c.deriv(t * scale, 3) * scale * scale;
+            let reference = unit.deriv(t, 3);
+            assert!(
+                (d3 - reference).norm() <= 1e-9 * reference.norm().max(1.0),
+                "{scale} {t}"
+            );
+            let (k1, r1) = karkas::geometry::curvature_rate(&unit, t);
+            let (k2, r2) = karkas::geometry::curvature_rate(&c, t * scale);
+            assert!(
+                (k2 * scale - k1).abs() <= 1e-9 * k1.abs().max(1.0),
+                "{scale} {t}"
+            );
+            assert!(
+                (r2 * scale * scale - r1).abs() <= 1e-9 * r1.abs().max(1.0),
+                "{scale} {t}"
+            );
+        }
+    }
+}
