@@ -17,6 +17,8 @@ __version__: str
 max_memory: int | None
 __all__ = [
     "__version__",
+    "batch",
+    "batch_inputs",
     "BicubicSurface",
     "ConvergenceError",
     "CoonsSurface",
@@ -601,3 +603,22 @@ def _restore(name: str, args: Tuple[object, ...], kwargs: Optional[dict] = None)
 
 def max_input_bytes() -> int:
     """The most memory one read may keep, in bytes (see set_max_input_bytes)."""
+
+def batch(
+    job: Union[str, Sequence[str]],
+    inputs: Union[_FilePath, Sequence[_FilePath]],
+    out: _FilePath,
+    options: Optional[Sequence[str]] = None,
+    format: Optional[str] = None,
+    jobs: Optional[int] = None,
+    resume: bool = False,
+    results_file: bool = True,
+    as_frame: Optional[bool] = None,
+    progress: bool = False,
+    **job_options: Any,
+) -> Any:
+    """One command run on many input files (the command line's karkas batch): a list of
+    record dicts (input, outputs, status, error, summary, seconds), or a pandas DataFrame."""
+
+def batch_inputs(inputs: Union[_FilePath, Sequence[_FilePath]]) -> list[str]:
+    """The input files a batch of inputs (folders, patterns, .txt lists, files) would run."""

@@ -1,21 +1,6 @@
-//! `karkas`: smooth curves and surfaces from point frames, on the command line.
-//!
-//! A thin layer over the `karkas` and `karkas-io` crates: one file per command in `cmd/`, the
-//! option groups they share in `args`, the checks of input frames in `input`, and every way a
-//! result leaves the program (files, reports, the error line) in `output/`.
-//! Exit codes: 0 on success (also when the reader of standard output closes it early), 2 on
-//! any error (bad arguments, bad or unreadable input, an
-//! output that cannot be written); the message is one line on standard error naming the file
-//! and the line or grid cell at fault. No output file is created or changed on error.
+//! The `karkas` binary: the command line of the `karkas_cli` library, with mimalloc as its
+//! allocator.
 
-mod args;
-mod cmd;
-mod demo;
-mod input;
-mod output;
-
-use clap::error::ErrorKind;
-use clap::{Parser, Subcommand};
 use std::process::ExitCode;
 
 /// mimalloc keeps freed memory for the next allocation instead of returning it to the
@@ -24,97 +9,6 @@ use std::process::ExitCode;
 #[global_allocator]
 static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
-/// Smooth parametric curves and surfaces from point frames.
-#[derive(Debug, Parser)]
-#[command(name = "karkas", version, about, long_about = None)]
-struct Cli {
-    #[command(subcommand)]
-    command: Command,
-    /// The most memory one request's output may take, like 512M or 4G (default 2G, or the
-    /// environment variable KARKAS_MAX_MEMORY); larger requests fail before any work.
-    #[arg(long, global = true, value_name = "SIZE", value_parser = output::memory::parse_size)]
-    max_memory: Option<u64>,
-    /// The format of the output: csv, svg, obj, stl, png, step, iges, ply, vtk, vts, glb, html,
-    /// dxf (each command writes some). Needed for another format than CSV on standard output
-    /// (-o -); wins over the output file's extension.
-    #[arg(long, global = true, value_name = "FORMAT", value_parser = args::parse_format)]
-    format: Option<karkas_io::OutputFormat>,
-}
-
-#[derive(Debug, Subcommand)]
-enum Command {
-    /// Build a curve from ordered points.
-    #[command(subcommand)]
-    Curve(cmd::CurveCommand),
-    /// Build a surface from a grid of points or a skeleton of curves.
-    #[command(subcommand)]
-    Surface(cmd::SurfaceCommand),
-    /// Two-sided Hausdorff distance between point sets or a point set and F(x, y, z) = 0.
-    Hausdorff(cmd::hausdorff::HausdorffArgs),
-    /// Cut a surface built from a grid by planes: sections and isolines.
-    Section(cmd::section::SectionArgs),
-    /// Vary one coordinate of a grid through new row sums, column sums and total.
-    Vary(cmd::vary::VaryArgs),
-    /// Reproduce the examples of the papers on built-in data.
-    Demo(demo::DemoArgs),
-    /// Convert a mesh, grid or curve file into another format (by the output extension).
-    ///
-    /// A mesh (.obj .stl .ply) converts to .obj .stl .ply .vtk .glb .html; a grid CSV
-    /// (i,j,x,y,z or u,v,x,y,z) to those and .vts .svg .png .csv (i,j,x,y,z); curve points
-    /// (CSV x,y[,z], airfoil .dat) to .svg .png .html.
-    Convert(cmd::convert::ConvertArgs),
-}
-
 fn main() -> ExitCode {
-    let cli = match Cli::try_parse() {
-        Ok(cli) => cli,
-        // --help, --version, and a command given without its subcommand: clap's own output.
-        Err(e)
-            if !e.use_stderr()
-                || e.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand =>
-        {
-            e.exit()
-        }
-        Err(e) => {
-            // clap's first line says what is wrong; keep every error to one line. When it ends
-            // in a colon (missing arguments), the next line names them.
-            let text = e.to_string();
-            let mut lines = text.lines().map(str::trim).filter(|l| !l.is_empty());
-            let first = lines.next().unwrap_or("bad arguments");
-            let detail = match lines.next() {
-                Some(next) if first.ends_with(':') => format!(" {next}"),
-                _ => String::new(),
-            };
-            eprintln!("karkas: {first}{detail} (see karkas --help)");
-            return ExitCode::from(2);
-        }
-    };
-    if let Err(e) = output::memory::set_max_memory(cli.max_memory) {
-        eprintln!("karkas: error: {}", output::message::error_line(&e));
-        return ExitCode::from(2);
-    }
-    if cli.format.is_some() && matches!(cli.command, Command::Hausdorff(_) | Command::Demo(_)) {
-        eprintln!("karkas: error: --format: this command writes no output file");
-        return ExitCode::from(2);
-    }
-    output::target::set_requested_format(cli.format);
-    let result = match cli.command {
-        Command::Curve(c) => c.run(),
-        Command::Surface(c) => c.run(),
-        Command::Hausdorff(args) => cmd::hausdorff::run(&args),
-        Command::Section(args) => cmd::section::run(&args),
-        Command::Vary(args) => cmd::vary::run(&args),
-        Command::Demo(args) => demo::run(&args),
-        Command::Convert(args) => cmd::convert::run(&args),
-    };
-    match result {
-        Ok(()) => ExitCode::SUCCESS,
-        // The reader of standard output went away (`karkas ... -o - | head`): what it wanted
-        // was written, like a tool killed by SIGPIPE but without a message.
-        Err(e) if output::message::is_broken_pipe(&e) => ExitCode::SUCCESS,
-        Err(e) => {
-            eprintln!("karkas: error: {}", output::message::error_line(&e));
-            ExitCode::from(2)
-        }
-    }
+    karkas_cli::run(std::env::args_os())
 }

@@ -14,6 +14,7 @@
 //! `wrapper`; arrays in `convert`; exceptions in `errors`.
 
 mod adapters;
+mod batch;
 mod bspline_form;
 mod convert;
 mod coons;
@@ -117,6 +118,8 @@ fn karkas_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(read::set_max_input_bytes, m)?)?;
     m.add_function(wrap_pyfunction!(read::max_input_bytes, m)?)?;
     m.add_function(wrap_pyfunction!(pickle::restore, m)?)?;
+    m.add_function(wrap_pyfunction!(batch::batch, m)?)?;
+    m.add_function(wrap_pyfunction!(batch::batch_inputs, m)?)?;
     let names: Vec<String> = m
         .dict()
         .keys()

@@ -12,6 +12,7 @@
 //! `--flip-normals` turns a mesh output over (reversed winding and normals).
 
 use crate::args::MeshOutput;
+use crate::output::console::note;
 use crate::output::curve::{to_space, write_curve_figure};
 use crate::output::formats::SURFACE_FORMATS;
 use crate::output::memory::{check_memory, mesh_output_bytes, surface_output_bytes};
@@ -140,10 +141,11 @@ pub fn run(args: &ConvertArgs) -> Result<()> {
             points.len()
         }
     };
-    eprintln!(
+    crate::output::console::record("points", count);
+    note(format!(
         "karkas: wrote {} ({count} points)",
         shown(&args.output).display()
-    );
+    ));
     Ok(())
 }
 

@@ -9,6 +9,7 @@ use super::fit_options::FitCurveOptions;
 use super::spline_options::{EndsKind, SplineOptions};
 use crate::args::check_ll_order;
 use crate::input::{curve_points, run_on_curve_points, CurveJob};
+use crate::output::console::note;
 use crate::output::memory::check_memory;
 use crate::output::overwrite::ensure_distinct;
 use crate::output::target::output_format;
@@ -262,16 +263,16 @@ impl CurveJob for Job<'_> {
                     let fallback = (self.knots.is_none() && args.fit.tolerance.is_none())
                         .then(|| default_tolerance(points));
                     if let Some(tol) = fallback {
-                        eprintln!(
+                        note(format!(
                             "karkas: fit to the tolerance {tol:.3e} ({DEFAULT_FIT_TOLERANCE:e} of \
                              the points' size; set --knots or --tolerance)"
-                        );
+                        ));
                     }
                     let fit = args
                         .fit
                         .fit(points, self.knots.as_deref(), fallback, &input)?;
                     for warning in &fit.warnings {
-                        eprintln!("karkas: warning: fit: {warning}");
+                        note(format!("karkas: warning: fit: {warning}"));
                     }
                     self.analyze(method, &fit.spline, points)?
                 }

@@ -6,6 +6,7 @@ use super::fit_summary::FitSummary;
 use crate::args::{CombOption, CurveSamples};
 use crate::input::{run_on_curve_points, CurveJob};
 use crate::output::cad::write_cad_curve;
+use crate::output::console::note;
 use crate::output::curve::{curve_output_bytes, write_sampled_curve};
 use crate::output::formats::EXACT_CURVE_FORMATS;
 use crate::output::memory::check_memory;
@@ -82,7 +83,7 @@ impl CurveJob for (&CurveFitArgs, OutputFormat, Option<Vec<f64>>) {
         let fit_time = started.elapsed();
         let summary = FitSummary::new(input(), &fit, args.fit.tolerance, fit_time);
         for warning in &fit.warnings {
-            eprintln!("karkas: warning: {warning}");
+            note(format!("karkas: warning: {warning}"));
         }
         let n = args
             .samples
@@ -117,12 +118,13 @@ impl CurveJob for (&CurveFitArgs, OutputFormat, Option<Vec<f64>>) {
         } else {
             format!("{n} samples")
         };
-        eprintln!(
+        note(format!(
             "karkas: wrote {} ({what}); {}",
             shown(&args.output).display(),
             summary.line()
-        );
-        if args.json {
+        ));
+        crate::output::console::record_all(serde_json::to_value(&summary)?);
+        if args.json && !crate::output::console::is_capturing() {
             println!("{}", serde_json::to_string(&summary)?);
         }
         Ok(())

@@ -2,6 +2,7 @@
 //! one JSON object keyed by method, and the curvature against the arc length as CSV
 //! (`method,t,s,curvature`) or a plot.
 
+use crate::output::console::note;
 use crate::output::target::shown;
 use anyhow::Result;
 use karkas::geometry::{CurvatureSample, CurveFairness};
@@ -100,12 +101,16 @@ fn length_text(length: f64) -> String {
 /// standard error), else the table on standard output.
 pub fn print(reports: &[MethodReport], json: bool, stdout_taken: bool) -> Result<()> {
     let table = table(reports);
+    let object: Map<String, Value> = reports
+        .iter()
+        .map(|r| (r.method.to_owned(), r.json()))
+        .collect();
+    if crate::output::console::is_capturing() {
+        // In a batch the figures are the record's summary, one object per method.
+        crate::output::console::record_all(Value::Object(object));
+        return Ok(());
+    }
     if json {
-        let object: Map<String, Value> = reports
-            .iter()
-            .map(|r| (r.method.to_owned(), r.json()))
-            .collect();
-        eprint!("{table}");
         println!("{}", Value::Object(object));
     } else if stdout_taken {
         eprint!("{table}");
@@ -164,6 +169,6 @@ pub fn write_profiles(
             write_curvature_picture(output, &plot, format == OutputFormat::Png)?;
         }
     }
-    eprintln!("karkas: wrote {}", shown(output).display());
+    note(format!("karkas: wrote {}", shown(output).display()));
     Ok(())
 }

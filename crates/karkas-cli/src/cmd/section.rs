@@ -6,6 +6,7 @@
 //! then the `--x` values, the `--y` values, the `--z` values.
 
 use crate::args::{parse_finite_list, parse_pair_with, parse_whole, GridInput, LlSurfaceOptions};
+use crate::output::console::note;
 use crate::output::samples::sample_surface;
 use crate::output::target::{output_format, shown};
 use anyhow::{bail, Context, Result};
@@ -189,12 +190,14 @@ pub fn run(args: &SectionArgs) -> Result<()> {
             }
         }
     }
-    eprintln!(
+    crate::output::console::record("pieces", lines.len());
+    crate::output::console::record("planes", cuts.len());
+    note(format!(
         "karkas: wrote {} ({} section pieces from {} planes)",
         shown(&args.output).display(),
         lines.len(),
         cuts.len()
-    );
+    ));
     Ok(())
 }
 
@@ -253,9 +256,17 @@ fn report_section(k: usize, cut: &Cut, section: &Section<3>, first: usize) {
     } else {
         ""
     };
-    eprintln!("karkas: plane {} ({}): {what}{how}", k + 1, cut.label);
+    note(format!(
+        "karkas: plane {} ({}): {what}{how}",
+        k + 1,
+        cut.label
+    ));
     for w in &section.warnings {
-        eprintln!("karkas: warning: plane {} ({}): {w}", k + 1, cut.label);
+        note(format!(
+            "karkas: warning: plane {} ({}): {w}",
+            k + 1,
+            cut.label
+        ));
     }
 }
 

@@ -1,6 +1,7 @@
 //! The exact B-spline forms as STEP, IGES or DXF (curves), and the refusal of those formats
 //! for the discrete periodic splines, which have none.
 
+use super::console::note;
 use anyhow::{bail, Context, Result};
 use karkas::bspline::{ToBSplineCurve, ToBSplineSurface};
 use karkas::Point;
@@ -27,12 +28,14 @@ pub fn write_cad_curve<const D: usize>(
     } else {
         String::new()
     };
-    eprintln!(
+    super::console::record("degree", spatial.degree());
+    super::console::record("control_points", spatial.control_points().len());
+    note(format!(
         "karkas: wrote {} (B-spline curve of degree {}, {} control points{shown_points})",
         super::target::shown(output).display(),
         spatial.degree(),
         spatial.control_points().len()
-    );
+    ));
     Ok(())
 }
 
@@ -46,14 +49,15 @@ pub fn write_cad_surface(
     let bspline = surface.to_bspline().with_context(|| what.to_string())?;
     karkas_io::export::cad::write_cad_surface(&bspline, format, output)?;
     let grid = bspline.control_points();
-    eprintln!(
+    super::console::record("control_points", vec![grid.rows(), grid.cols()]);
+    note(format!(
         "karkas: wrote {} (B-spline surface of degree {}x{}, {}x{} control points)",
         super::target::shown(output).display(),
         bspline.degree_u(),
         bspline.degree_v(),
         grid.rows(),
         grid.cols()
-    );
+    ));
     Ok(())
 }
 

@@ -18,6 +18,19 @@ pub fn error_line(error: &anyhow::Error) -> String {
     line
 }
 
+/// clap's error `e` in one line: its first line, which says what is wrong, and when that ends
+/// in a colon (missing arguments) the next, which names them.
+pub fn clap_line(e: &clap::Error) -> String {
+    let text = e.to_string();
+    let mut lines = text.lines().map(str::trim).filter(|l| !l.is_empty());
+    let first = lines.next().unwrap_or("bad arguments");
+    let first = first.strip_prefix("error: ").unwrap_or(first);
+    match lines.next() {
+        Some(next) if first.ends_with(':') => format!("{first} {next}"),
+        _ => first.to_owned(),
+    }
+}
+
 /// True when `error` comes from writing to a pipe whose reader has gone.
 pub fn is_broken_pipe(error: &anyhow::Error) -> bool {
     error.chain().any(|cause| {

@@ -3,6 +3,7 @@
 //! lines that report what was written, and the one-line error message.
 
 pub mod cad;
+pub mod console;
 pub mod curve;
 pub mod formats;
 pub mod memory;

@@ -2,6 +2,7 @@
 //! concern, the helpers they share in `common`.
 
 mod bad_input;
+mod batch;
 mod cad;
 mod common;
 mod contract;

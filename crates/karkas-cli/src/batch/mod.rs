@@ -1,0 +1,184 @@
+//! `karkas batch`: one command run on many inputs, every core busy, bad files recorded rather
+//! than fatal, and a run that resumes where a killed one stopped.
+//!
+//! Each input runs its command in this process on a worker of a rayon pool (`--jobs`), with
+//! the command's lines and figures captured for its record ([`crate::output::console`]); the
+//! records go to `OUT/results.jsonl` as they finish ([`results`]). The Python package's
+//! `karkas.batch` calls [`run`] with the same arguments.
+
+mod cli;
+mod inputs;
+mod job;
+mod results;
+
+pub use crate::args::parse_format;
+pub use cli::{run_cli as cli_run, BatchArgs};
+pub use inputs::expand as expand_inputs;
+pub use job::{Job, JOBS};
+pub use results::{Record, Status, RESULTS_FILE};
+
+use anyhow::{Context, Result};
+use indicatif::{ProgressBar, ProgressStyle};
+use rayon::prelude::*;
+use std::collections::HashMap;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+/// A batch: the job, its inputs and where the outputs go.
+#[derive(Clone, Debug)]
+pub struct Batch {
+    /// The command run on every input.
+    pub job: Job,
+    /// The input files.
+    pub inputs: Vec<PathBuf>,
+    /// The output folder (made when missing).
+    pub out: PathBuf,
+    /// Inputs processed at once (default: one per core).
+    pub jobs: Option<usize>,
+    /// Skip the inputs recorded ok whose outputs exist; run the others.
+    pub resume: bool,
+    /// Keep `OUT/results.jsonl` (false: records returned only).
+    pub results_file: bool,
+    /// Report on standard error: a progress bar (rate, time left) when it is a terminal, and
+    /// the error line of every input that fails.
+    pub progress: bool,
+}
+
+/// What a batch did.
+#[derive(Debug)]
+pub struct Outcome {
+    /// One record per input, in the order of the inputs.
+    pub records: Vec<Record>,
+    /// Inputs run now.
+    pub ran: usize,
+    /// Inputs skipped by `--resume` (recorded ok before).
+    pub skipped: usize,
+    /// Inputs whose record is an error.
+    pub failed: usize,
+    /// The wall time of the batch, in seconds.
+    pub seconds: f64,
+}
+
+impl Batch {
+    /// A batch of `job` (the command's words and options, as [`Job::new`] takes them) on the
+    /// files `inputs` names (see [`expand_inputs`]), with the defaults: as many inputs at once
+    /// as cores, no resume, the results file kept, no progress bar.
+    pub fn new(
+        job: &[String],
+        format: Option<karkas_io::OutputFormat>,
+        inputs: &[String],
+        out: &Path,
+    ) -> Result<Batch> {
+        let job = Job::new(job, format)?;
+        let inputs = expand_inputs(inputs)?;
+        inputs::check_distinct_stems(&inputs)?;
+        Ok(Batch {
+            job,
+            inputs,
+            out: out.to_path_buf(),
+            jobs: None,
+            resume: false,
+            results_file: true,
+            progress: false,
+        })
+    }
+
+    /// The path of the results file.
+    pub fn results_path(&self) -> PathBuf {
+        self.out.join(RESULTS_FILE)
+    }
+}
+
+/// Runs `batch`. Errors are about the batch itself (the output folder cannot be made, the
+/// pool cannot start); an input's failure is its record.
+pub fn run(batch: &Batch) -> Result<Outcome> {
+    let started = Instant::now();
+    if let Some(0) = batch.jobs {
+        anyhow::bail!("--jobs: at least 1");
+    }
+    std::fs::create_dir_all(&batch.out)
+        .with_context(|| format!("--out: cannot create the folder {}", batch.out.display()))?;
+    let path = batch.results_path();
+    let before = if batch.resume && batch.results_file {
+        results::read(&path)?
+    } else {
+        Vec::new()
+    };
+    let earlier: HashMap<&str, &Record> = before.iter().map(|r| (r.input.as_str(), r)).collect();
+    let done = |input: &Path| {
+        earlier
+            .get(input.display().to_string().as_str())
+            .filter(|r| r.is_done())
+            .copied()
+    };
+    let todo: Vec<&PathBuf> = batch.inputs.iter().filter(|i| done(i).is_none()).collect();
+    let journal = results::Journal::open(&path, batch.resume, batch.results_file)?;
+    let bar = progress_bar(batch, todo.len())?;
+    let mut builder = rayon::ThreadPoolBuilder::new();
+    if let Some(jobs) = batch.jobs {
+        builder = builder.num_threads(jobs);
+    }
+    let pool = builder.build().context("cannot start the worker threads")?;
+    let fresh: Vec<Record> = pool.install(|| {
+        todo.par_iter()
+            .with_max_len(1)
+            .map(|input| {
+                let record = batch.job.run(input, &batch.out);
+                if let (Some(error), true) = (&record.error, batch.progress) {
+                    bar.suspend(|| eprintln!("karkas: error: {error}"));
+                }
+                let appended = journal.append(&record);
+                bar.inc(1);
+                appended.map(|()| record)
+            })
+            .collect::<Result<Vec<Record>>>()
+    })?;
+    bar.finish_and_clear();
+    let mut fresh: HashMap<String, Record> =
+        fresh.into_iter().map(|r| (r.input.clone(), r)).collect();
+    let mut records = Vec::with_capacity(batch.inputs.len());
+    for input in &batch.inputs {
+        let name = input.display().to_string();
+        let record = match fresh.remove(&name) {
+            Some(record) => record,
+            None => done(input)
+                .cloned()
+                .context("a skipped input lost its record")?,
+        };
+        records.push(record);
+    }
+    // Records of inputs not in this batch stay in the file, after this batch's.
+    let mine: std::collections::HashSet<&str> = records.iter().map(|r| r.input.as_str()).collect();
+    let others: Vec<Record> = before
+        .iter()
+        .filter(|r| !mine.contains(r.input.as_str()))
+        .cloned()
+        .collect();
+    journal.finish(&[&records[..], &others[..]].concat())?;
+    let failed = records.iter().filter(|r| r.status == Status::Error).count();
+    Ok(Outcome {
+        ran: todo.len(),
+        skipped: batch.inputs.len() - todo.len(),
+        failed,
+        records,
+        seconds: started.elapsed().as_secs_f64(),
+    })
+}
+
+/// The progress bar of `todo` inputs: rate and time left, on standard error when it is a
+/// terminal and the batch asks for one.
+fn progress_bar(batch: &Batch, todo: usize) -> Result<ProgressBar> {
+    if !batch.progress {
+        return Ok(ProgressBar::hidden());
+    }
+    let bar = ProgressBar::new(todo as u64);
+    bar.set_style(
+        ProgressStyle::with_template(
+            "{prefix} [{bar:30}] {pos}/{len} {per_sec} ETA {eta} ({elapsed})",
+        )
+        .context("progress bar template")?
+        .progress_chars("=> "),
+    );
+    bar.set_prefix(format!("batch {}", batch.job.name()));
+    Ok(bar)
+}

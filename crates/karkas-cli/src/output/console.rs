@@ -1,0 +1,103 @@
+//! The lines a command prints about its work ("wrote ...", warnings, its figures), and their
+//! capture in a batch.
+//!
+//! A command run by `karkas batch` (or `karkas.batch` in Python) runs on a worker thread
+//! inside [`capture`]: its lines are kept for the input's record instead of interleaving on the
+//! terminal, and its figures ([`record`]) become the record's `summary`. Outside a capture the
+//! lines go to standard error and the figures nowhere.
+
+use serde_json::{Map, Value};
+use std::cell::RefCell;
+
+/// What a command said while captured: its lines (without the `karkas: ` prefix) and its
+/// figures.
+#[derive(Debug, Default)]
+pub struct Captured {
+    /// The lines the command would have printed on standard error.
+    pub messages: Vec<String>,
+    /// The figures the command recorded, by name.
+    pub figures: Map<String, Value>,
+}
+
+thread_local! {
+    static CAPTURE: RefCell<Option<Captured>> = const { RefCell::new(None) };
+}
+
+/// Prints `line` on standard error, or keeps it when captured.
+pub fn note(line: String) {
+    let kept = CAPTURE.with(|c| match c.borrow_mut().as_mut() {
+        Some(captured) => {
+            let text = line.strip_prefix("karkas: ").unwrap_or(&line);
+            captured.messages.push(text.to_owned());
+            true
+        }
+        None => false,
+    });
+    if !kept {
+        eprintln!("{line}");
+    }
+}
+
+/// True while the command runs inside [`capture`] (its standard output lines are then left
+/// out: the figures are in the record).
+pub fn is_capturing() -> bool {
+    CAPTURE.with(|c| c.borrow().is_some())
+}
+
+/// Records the figure `name` of the command's result, when captured.
+pub fn record(name: &str, value: impl Into<Value>) {
+    CAPTURE.with(|c| {
+        if let Some(captured) = c.borrow_mut().as_mut() {
+            captured.figures.insert(name.to_owned(), value.into());
+        }
+    });
+}
+
+/// Records every field of the object `figures` (other values are ignored), when captured.
+pub fn record_all(figures: Value) {
+    if let Value::Object(map) = figures {
+        for (name, value) in map {
+            record(&name, value);
+        }
+    }
+}
+
+/// Runs `work` with its lines and figures captured on this thread, and returns them with its
+/// result.
+pub fn capture<R>(work: impl FnOnce() -> R) -> (R, Captured) {
+    CAPTURE.with(|c| *c.borrow_mut() = Some(Captured::default()));
+    // The capture ends even when `work` panics (the batch catches the panic).
+    struct End;
+    impl Drop for End {
+        fn drop(&mut self) {
+            let _ = CAPTURE.try_with(|c| c.borrow_mut().take());
+        }
+    }
+    let end = End;
+    let result = work();
+    let captured = CAPTURE.with(|c| c.borrow_mut().take()).unwrap_or_default();
+    drop(end);
+    (result, captured)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn lines_and_figures_are_kept_only_inside_a_capture() {
+        let ((), captured) = capture(|| {
+            note("karkas: wrote a.csv (10 samples)".to_owned());
+            record("samples", 10);
+            record_all(serde_json::json!({"knots": 4, "max_deviation": 1e-5}));
+            assert!(is_capturing());
+        });
+        assert_eq!(captured.messages, ["wrote a.csv (10 samples)"]);
+        assert_eq!(captured.figures["samples"], 10);
+        assert_eq!(captured.figures["knots"], 4);
+        assert!(!is_capturing());
+        record("samples", 11);
+        let ((), again) = capture(|| ());
+        assert!(again.figures.is_empty() && again.messages.is_empty());
+    }
+}
