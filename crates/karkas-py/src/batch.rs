@@ -12,7 +12,9 @@ use std::path::PathBuf;
 /// The Python form of ``karkas batch``: every input runs the command with the same options,
 /// writes ``out/<input stem>.<format>``, and gets a record; a bad file is a record with status
 /// ``"error"``, never an exception. The records also go to ``out/results.jsonl``, one JSON
-/// line per input, as the command line writes them.
+/// line per input, as the command line writes them. Each input's output is capped by
+/// ``karkas.max_memory`` and what its reader keeps by ``set_max_input_bytes``; ``jobs``
+/// inputs run at once.
 ///
 /// Parameters
 /// ----------
@@ -39,6 +41,7 @@ use std::path::PathBuf;
 ///     Return a pandas DataFrame (default: when pandas is installed) instead of a list.
 /// progress : bool
 ///     Show a progress bar on a terminal and print the error line of every failed input.
+
 /// job_options : keyword arguments
 ///     The command's options by name: ``tolerance=1e-4`` is ``--tolerance 1e-4``,
 ///     ``pin_ends=True`` is ``--pin-ends``, ``knots=[0, 0.5, 1]`` is ``--knots 0,0.5,1``;
@@ -110,6 +113,10 @@ pub fn batch<'py>(
     if jobs == Some(0) {
         return Err(OptionError::new_err("jobs: at least 1"));
     }
+    // Each input's request is capped by karkas.max_memory, as every call of the package is.
+    let cap =
+        crate::limits::current_cap(py)?.map_or(u64::MAX, |c| c.min(u128::from(u64::MAX)) as u64);
+    karkas_cli::batch::set_output_cap(cap);
     let outcome = py
         .detach(|| karkas_cli::batch::run(&batch))
         .map_err(|e| PyOSError::new_err(error_text(&e)))?;

@@ -55,7 +55,7 @@ pub fn bytes_of(factors: &[usize], bytes_each: u128) -> u128 {
 /// It is read from the module the caller imported as `karkas` (the package that re-exports
 /// this extension when installed as one, else the extension itself); the default when neither
 /// has the attribute (it was deleted).
-fn current_cap(py: Python<'_>) -> PyResult<Option<u128>> {
+pub(crate) fn current_cap(py: Python<'_>) -> PyResult<Option<u128>> {
     let Some(value) = py.import("karkas")?.getattr_opt(ATTRIBUTE)? else {
         return Ok(Some(u128::from(initial_max_memory()?)));
     };

@@ -93,7 +93,15 @@ impl BatchArgs {
                 bail!("{name}: a value is needed");
             };
             match name {
-                "--inputs" => split.inputs.push(value),
+                "--inputs" => {
+                    split.inputs.push(value);
+                    // The files of a pattern the shell expanded: the command's options all
+                    // start with '-', and it takes no other argument.
+                    while let Some(more) = words.clone().next().filter(|w| !w.starts_with('-')) {
+                        split.inputs.push(more.clone());
+                        words.next();
+                    }
+                }
                 "--out" => split.out = Some(PathBuf::from(value)),
                 "--jobs" => {
                     split.jobs = Some(

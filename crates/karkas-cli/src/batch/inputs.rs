@@ -13,7 +13,8 @@ const MAX_LIST_BYTES: u64 = 64 << 20;
 /// sub-folders, nor names starting with `.`) sorted by name; a pattern with `*`, `?` or `[`
 /// its matching files sorted; a `.txt` file the paths on its lines (blank lines and lines
 /// starting with `#` skipped; relative paths relative to the list's folder); any other
-/// existing file itself. Refuses a spec that names nothing, and an empty result.
+/// existing path itself (a device or a pipe too: the command's reader refuses what it cannot
+/// read, as a record of that input). Refuses a spec that names nothing, and an empty result.
 pub fn expand(specs: &[String]) -> Result<Vec<PathBuf>> {
     if specs.is_empty() {
         bail!("--inputs: name the inputs (a folder, a glob pattern or a .txt list of paths)");
@@ -69,12 +70,13 @@ fn expand_one(spec: &str) -> Result<Vec<PathBuf>> {
         files.sort();
         return Ok(files);
     }
-    if !path.is_file() {
+    if !path.exists() {
         bail!("--inputs {spec}: no such file or folder");
     }
-    if path
-        .extension()
-        .is_some_and(|e| e.eq_ignore_ascii_case("txt"))
+    if path.is_file()
+        && path
+            .extension()
+            .is_some_and(|e| e.eq_ignore_ascii_case("txt"))
     {
         return read_list(path);
     }

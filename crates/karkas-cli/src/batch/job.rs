@@ -116,6 +116,17 @@ impl Job {
         };
         let example = Path::new("input.csv");
         job.parse(example, &job.outputs(example, Path::new("out")))?;
+        let given = |name: &str| {
+            job.options
+                .iter()
+                .any(|o| o == name || o.starts_with(&format!("{name}=")))
+        };
+        if job.words[..] == ["curve", "fit"] && !given("--knots") && !given("--tolerance") {
+            bail!(
+                "batch curve fit: give the knots (--knots T1,...,TN or N) or a tolerance \
+                 (--tolerance TOL)"
+            );
+        }
         Ok(job)
     }
 
@@ -228,6 +239,12 @@ fn command_words(line: &[String]) -> Result<Vec<String>> {
         _ => vec![first.clone()],
     };
     let name = words.join(" ");
+    if Path::new(first).exists() && !JOBS.contains(&name.as_str()) {
+        bail!(
+            "batch: {first} is a file, not a command (quote a pattern given to --inputs, \
+             'foils/*.dat', so that the shell does not expand it)"
+        );
+    }
     if !JOBS.contains(&name.as_str()) {
         let why = if matches!(
             name.as_str(),
@@ -278,6 +295,8 @@ mod tests {
             ("curve", "curve what?"),
             ("--tolerance 1e-4", "name the command"),
             ("convert", "--format"),
+            ("curve fit --pin-ends", "give the knots"),
+            ("Cargo.toml curve fit", "not a command (quote a pattern"),
         ] {
             let error = Job::new(&line(bad), None).unwrap_err().to_string();
             assert!(error.contains(says), "{bad}: {error}");

@@ -12,6 +12,7 @@ mod job;
 mod results;
 
 pub use crate::args::parse_format;
+pub use crate::output::memory::set_output_cap;
 pub use cli::{run_cli as cli_run, BatchArgs};
 pub use inputs::expand as expand_inputs;
 pub use job::{Job, JOBS};
@@ -174,9 +175,15 @@ fn progress_bar(batch: &Batch, todo: usize) -> Result<ProgressBar> {
     let bar = ProgressBar::new(todo as u64);
     bar.set_style(
         ProgressStyle::with_template(
-            "{prefix} [{bar:30}] {pos}/{len} {per_sec} ETA {eta} ({elapsed})",
+            "{prefix} [{bar:30}] {pos}/{len} {rate} inputs/s, ETA {eta} ({elapsed})",
         )
         .context("progress bar template")?
+        .with_key(
+            "rate",
+            |state: &indicatif::ProgressState, w: &mut dyn std::fmt::Write| {
+                let _ = write!(w, "{:.1}", state.per_sec());
+            },
+        )
         .progress_chars("=> "),
     );
     bar.set_prefix(format!("batch {}", batch.job.name()));

@@ -10,13 +10,13 @@ use anyhow::{bail, Context, Result};
 use karkas_io::picture::budget::{self, human_bytes};
 use karkas_io::viewer::{PAGE_POINT, PAGE_SURFACE_SAMPLE};
 use karkas_io::OutputFormat;
-use std::sync::OnceLock;
+use std::sync::atomic::{AtomicU64, Ordering};
 
 /// The default memory cap for one request's output buffers: 2 GiB.
 pub const DEFAULT_MAX_MEMORY: u64 = 2 << 30;
 
-/// The cap in force, set once from the command line or the environment.
-static MAX_MEMORY: OnceLock<u64> = OnceLock::new();
+/// The cap in force, set from the command line or the environment (0: not set, the default).
+static MAX_MEMORY: AtomicU64 = AtomicU64::new(0);
 
 /// Sets the cap: `--max-memory` if given, else `KARKAS_MAX_MEMORY`, else the default.
 pub fn set_max_memory(option: Option<u64>) -> Result<()> {
@@ -29,11 +29,16 @@ pub fn set_max_memory(option: Option<u64>) -> Result<()> {
             Err(_) => DEFAULT_MAX_MEMORY,
         },
     };
-    // Set once per process; a second call keeps the first value. The readers keep what they
-    // read within the same cap.
-    let _ = MAX_MEMORY.set(cap);
-    karkas_io::input::set_max_input_bytes(*MAX_MEMORY.get().unwrap_or(&cap));
+    // The readers keep what they read within the same cap.
+    set_output_cap(cap);
+    karkas_io::input::set_max_input_bytes(cap);
     Ok(())
+}
+
+/// Sets the cap on one request's output buffers alone (the readers' cap unchanged): the
+/// Python package's `karkas.batch` passes `karkas.max_memory` (no cap: `u64::MAX`).
+pub fn set_output_cap(bytes: u64) {
+    MAX_MEMORY.store(bytes.max(1), Ordering::Relaxed);
 }
 
 pub use karkas_io::picture::budget::parse_size;
@@ -41,7 +46,10 @@ pub use karkas_io::picture::budget::parse_size;
 /// Fails early when `request` (e.g. "curve ll: 50000000 samples") needs `bytes` of output
 /// buffers, more than the cap.
 pub fn check_memory(request: &str, bytes: u128) -> Result<()> {
-    let cap = *MAX_MEMORY.get_or_init(|| DEFAULT_MAX_MEMORY);
+    let cap = match MAX_MEMORY.load(Ordering::Relaxed) {
+        0 => DEFAULT_MAX_MEMORY,
+        cap => cap,
+    };
     if bytes > u128::from(cap) {
         bail!(
             "{request} would need {} of memory, above the cap of {} (raise it with --max-memory \

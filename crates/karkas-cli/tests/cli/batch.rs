@@ -340,6 +340,17 @@ fn each_output_equals_the_single_command_and_a_clean_batch_exits_0() {
             &text[..40]
         );
     }
+    // A pattern the shell expanded: the files after --inputs are all inputs.
+    let files: Vec<PathBuf> = (0..3)
+        .map(|k| inputs.join(format!("foil-0000{k}.dat")))
+        .collect();
+    let splines = dir.path().join("splines");
+    let mut args = vec!["batch", "curve", "spline", "--inputs"];
+    args.extend(files.iter().map(|f| s(f)));
+    args.extend(["--out", s(&splines), "--ends", "natural"]);
+    let expanded = karkas(&args);
+    assert_eq!(expanded.status.code(), Some(0), "{}", stderr(&expanded));
+    assert!(stderr(&expanded).contains("3 inputs, 3 ok"));
 }
 
 #[test]
