@@ -15,7 +15,7 @@ The arguments are those of the command line's `karkas batch` (see `karkas batch 
 one of the commands a batch runs (curve ll, curve fit, curve spline, curve dps, curve analyze,
 surface ll, surface bicubic, section, vary, convert); `--inputs`, a folder (its files), a glob
 pattern (quoted) or a .txt list of paths, and may be repeated; `--out DIR`; `--format EXT`;
-`--resume`. Every other argument is an option of the job, passed on in its order, and the
+`--resume`; `--max-memory SIZE` (each input's request, as karkas.max_memory on the workers). Every other argument is an option of the job, passed on in its order, and the
 script's own options may stand anywhere among them, as on the command line. Two more say where
 the work runs:
 
@@ -96,9 +96,10 @@ def split_arguments(argv):
     `karkas batch` splits them: the script's options may stand anywhere, as `--name VALUE` or
     `--name=VALUE`."""
     args = SimpleNamespace(inputs=[], out=None, format=None, workers=None, scheduler=None,
-                           resume=False, line=[])
-    words = iter(argv)
-    for word in words:
+                           resume=False, max_memory=None, line=[])
+    words = list(argv)[::-1]
+    while words:
+        word = words.pop()
         name, equals, inline = word.partition("=")
         if word in ("-h", "--help"):
             print(__doc__)
@@ -109,10 +110,13 @@ def split_arguments(argv):
         if name not in VALUED:
             args.line.append(word)
             continue
-        value = inline if equals else next(words, None)
+        value = inline if equals else (words.pop() if words else None)
         if value is None:
             raise Usage(f"{name}: a value is needed")
         take_option(args, name, value)
+        # The files of a pattern the shell expanded: the job's options all start with '-'.
+        while name == "--inputs" and words and not words[-1].startswith("-"):
+            args.inputs.append(words.pop())
     return args
 
 
@@ -129,10 +133,23 @@ def take_option(args, name, value):
     elif name in ("--workers", "--jobs"):
         args.workers = count(name, value)
     else:
-        raise Usage(
-            "--max-memory: the jobs run through karkas.batch, which keeps the command line's "
-            "default cap (2 GiB); run `karkas batch` for another cap"
-        )
+        args.max_memory = size(name, value)
+
+
+UNITS = {"": 1, "K": 1 << 10, "M": 1 << 20, "G": 1 << 30, "T": 1 << 40}
+
+
+def size(name, text):
+    """A size like 512M or 4G in bytes, as the command line's --max-memory reads it."""
+    number = text.strip().upper().removesuffix("IB").removesuffix("B")
+    unit = number[-1:] if number[-1:] in UNITS else ""
+    try:
+        value = float(number[: len(number) - len(unit)]) * UNITS[unit]
+    except ValueError:
+        value = 0
+    if value < 1:
+        raise Usage(f"{name} {text}: not a size (like 512M or 4G)")
+    return int(value)
 
 
 def count(name, value):
@@ -210,9 +227,12 @@ def failed_record(path, error):
             "summary": {"messages": []}, "seconds": 0.0}
 
 
-def run_one(path, job, options, out, fmt):
+def run_one(path, job, options, out, fmt, max_memory=None):
     """Runs the job on the input `path` into the folder `out` and returns its record (on a
-    worker: the function is shipped to it, and karkas is the worker's own)."""
+    worker: the function is shipped to it, and karkas is the worker's own); `max_memory`
+    caps the input's request, as --max-memory does on the command line."""
+    if max_memory is not None:
+        karkas.max_memory = max_memory
     if not os.path.isfile(path):
         why = "no such file on this worker (is the file system shared?)"
         return failed_record(path, f"{path}: {why}")
@@ -331,10 +351,11 @@ def connected(args):
         yield client
 
 
-def run_on_cluster(client, todo, job, options, out, fmt, journal):
+def run_on_cluster(client, todo, job, options, out, fmt, max_memory, journal):
     """Runs the inputs `todo` as one task each and returns their records by input, appending
     each to `journal` as it arrives (and printing the error line of a failed one)."""
-    futures = client.map(run_one, todo, job=job, options=options, out=out, fmt=fmt, pure=False)
+    futures = client.map(run_one, todo, job=job, options=options, out=out, fmt=fmt,
+                         max_memory=max_memory, pure=False)
     paths = {future.key: path for future, path in zip(futures, todo)}
     fresh = {}
     for future in as_completed(futures):
@@ -378,7 +399,8 @@ def run(args):
             workers = len(client.nthreads())
             started = time.perf_counter()
             ready = started - connecting
-            fresh = run_on_cluster(client, todo, job, options, args.out, args.format, journal)
+            fresh = run_on_cluster(client, todo, job, options, args.out, args.format,
+                                   args.max_memory, journal)
             seconds = time.perf_counter() - started
 
     records = [fresh.get(path) or done[path] for path in inputs]

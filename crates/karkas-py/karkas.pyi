@@ -605,10 +605,10 @@ def max_input_bytes() -> int:
     """The most memory one read may keep, in bytes (see set_max_input_bytes)."""
 
 def batch(
-    job: Union[str, Sequence[str]],
-    inputs: Union[_FilePath, Sequence[_FilePath]],
+    job: Union[str, list[str], Tuple[str, ...]],
+    inputs: Union[_FilePath, list[_FilePath], Tuple[_FilePath, ...]],
     out: _FilePath,
-    options: Optional[Sequence[str]] = None,
+    options: Optional[Union[list[str], Tuple[str, ...]]] = None,
     format: Optional[str] = None,
     jobs: Optional[int] = None,
     resume: bool = False,
@@ -620,5 +620,5 @@ def batch(
     """One command run on many input files (the command line's karkas batch): a list of
     record dicts (input, outputs, status, error, summary, seconds), or a pandas DataFrame."""
 
-def batch_inputs(inputs: Union[_FilePath, Sequence[_FilePath]]) -> list[str]:
+def batch_inputs(inputs: Union[_FilePath, list[_FilePath], Tuple[_FilePath, ...]]) -> list[str]:
     """The input files a batch of inputs (folders, patterns, .txt lists, files) would run."""

@@ -4,7 +4,7 @@
 use crate::errors::OptionError;
 use pyo3::exceptions::PyOSError;
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyList, PyString};
+use pyo3::types::{PyDict, PyList, PyString, PyTuple};
 use std::path::PathBuf;
 
 /// Runs one command of the command line on many input files in parallel.
@@ -18,16 +18,16 @@ use std::path::PathBuf;
 ///
 /// Parameters
 /// ----------
-/// job : str or sequence of str
+/// job : str, or list or tuple of str
 ///     The command and, optionally, its options as on the command line:
 ///     ``"curve fit"``, ``"curve ll --order 3"``, ``["curve", "fit", "--knots", "8"]``. One of
 ///     curve ll, curve fit, curve spline, curve dps, curve analyze, surface ll, surface
 ///     bicubic, section, vary, convert.
-/// inputs : str, os.PathLike or sequence of them
+/// inputs : str, os.PathLike or a list or tuple of them
 ///     A folder (its files), a glob pattern, a ``.txt`` list of paths, or files.
 /// out : str or os.PathLike
 ///     The output folder (made when missing).
-/// options : sequence of str, optional
+/// options : list or tuple of str, optional
 ///     More options of the command, as on the command line (``["--tolerance", "1e-4"]``).
 /// format : str, optional
 ///     The output format (``"csv"``, the default; ``"svg"``, ``"step"``, ...).
@@ -41,10 +41,10 @@ use std::path::PathBuf;
 ///     Return a pandas DataFrame (default: when pandas is installed) instead of a list.
 /// progress : bool
 ///     Show a progress bar on a terminal and print the error line of every failed input.
-
 /// job_options : keyword arguments
 ///     The command's options by name: ``tolerance=1e-4`` is ``--tolerance 1e-4``,
-///     ``pin_ends=True`` is ``--pin-ends``, ``knots=[0, 0.5, 1]`` is ``--knots 0,0.5,1``;
+///     ``pin_ends=True`` is ``--pin-ends``, ``knots=[0, 0.5, 1]`` (a list or tuple) is
+///     ``--knots 0,0.5,1``;
 ///     False and None leave the option out.
 ///
 /// Returns
@@ -86,7 +86,7 @@ pub fn batch<'py>(
     job: &Bound<'py, PyAny>,
     inputs: &Bound<'py, PyAny>,
     out: PathBuf,
-    options: Option<Vec<String>>,
+    options: Option<&Bound<'py, PyAny>>,
     format: Option<String>,
     jobs: Option<usize>,
     resume: bool,
@@ -96,7 +96,9 @@ pub fn batch<'py>(
     job_options: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyAny>> {
     let mut line = words(job)?;
-    line.extend(options.unwrap_or_default());
+    if let Some(options) = options {
+        line.extend(items(options, "options: a list of strings")?);
+    }
     if let Some(named) = job_options {
         line.extend(named_options(named)?);
     }
@@ -142,7 +144,7 @@ pub fn batch<'py>(
 ///
 /// Parameters
 /// ----------
-/// inputs : str, os.PathLike or sequence of them
+/// inputs : str, os.PathLike or a list or tuple of them
 ///     Folders, patterns, lists or files.
 ///
 /// Returns
@@ -177,7 +179,7 @@ fn error_text(e: &anyhow::Error) -> String {
     format!("{e:#}")
 }
 
-/// The words of `job`: a string split at white space, or a sequence of strings.
+/// The words of `job`: a string split at white space, or a list or tuple of strings.
 fn words(job: &Bound<'_, PyAny>) -> PyResult<Vec<String>> {
     if let Ok(text) = job.cast::<PyString>() {
         return Ok(text
@@ -186,22 +188,37 @@ fn words(job: &Bound<'_, PyAny>) -> PyResult<Vec<String>> {
             .map(str::to_owned)
             .collect());
     }
-    job.extract::<Vec<String>>()
-        .map_err(|_| OptionError::new_err("job: a string like 'curve fit' or a list of words"))
+    items(job, "job: a string like 'curve fit' or a list of words")
 }
 
-/// One path or several, as strings.
+/// One path or several (a list or tuple), as strings.
 fn paths(value: &Bound<'_, PyAny>) -> PyResult<Vec<String>> {
-    if let Ok(one) = value.extract::<PathBuf>() {
+    let what = "inputs: a path, a pattern, or a list of them";
+    if value.cast::<PyList>().is_err() && value.cast::<PyTuple>().is_err() {
+        let one: PathBuf = value.extract().map_err(|_| OptionError::new_err(what))?;
         return Ok(vec![one.to_string_lossy().into_owned()]);
     }
-    let many: Vec<PathBuf> = value
-        .extract()
-        .map_err(|_| OptionError::new_err("inputs: a path, a pattern, or a sequence of them"))?;
-    Ok(many
-        .iter()
-        .map(|p| p.to_string_lossy().into_owned())
-        .collect())
+    items(value, what)
+}
+
+/// The items of a list or tuple of strings or paths (nothing else, so that a huge array is
+/// refused before it is walked).
+fn items(value: &Bound<'_, PyAny>, what: &str) -> PyResult<Vec<String>> {
+    let list: Vec<Bound<'_, PyAny>> = if let Ok(list) = value.cast::<PyList>() {
+        list.iter().collect()
+    } else if let Ok(tuple) = value.cast::<PyTuple>() {
+        tuple.iter().collect()
+    } else {
+        return Err(OptionError::new_err(what.to_owned()));
+    };
+    list.iter()
+        .map(|item| {
+            let path: PathBuf = item
+                .extract()
+                .map_err(|_| OptionError::new_err(what.to_owned()))?;
+            Ok(path.to_string_lossy().into_owned())
+        })
+        .collect()
 }
 
 /// `name=value` keywords as command-line options.
@@ -216,17 +233,20 @@ fn named_options(named: &Bound<'_, PyDict>) -> PyResult<Vec<String>> {
             line.push(flag);
             continue;
         }
-        let text = if value.cast::<PyString>().is_ok() {
-            value.extract::<String>()?
-        } else if let Ok(items) = value.cast::<PyList>() {
-            let parts: PyResult<Vec<String>> =
-                items.iter().map(|v| v.str()?.extract::<String>()).collect();
-            parts?.join(",")
-        } else if let Ok(items) = value.extract::<Vec<f64>>() {
-            let parts: Vec<String> = items.iter().map(f64::to_string).collect();
-            parts.join(",")
+        let listed: Option<Vec<Bound<'_, PyAny>>> = if let Ok(list) = value.cast::<PyList>() {
+            Some(list.iter().collect())
+        } else if let Ok(tuple) = value.cast::<PyTuple>() {
+            Some(tuple.iter().collect())
         } else {
-            value.str()?.extract::<String>()?
+            None
+        };
+        let text = match listed {
+            Some(items) => {
+                let parts: PyResult<Vec<String>> =
+                    items.iter().map(|v| v.str()?.extract::<String>()).collect();
+                parts?.join(",")
+            }
+            None => value.str()?.extract::<String>()?,
         };
         line.push(flag);
         line.push(text);

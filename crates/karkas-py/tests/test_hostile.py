@@ -291,6 +291,12 @@ VALID = {
         {},
     ),
     "read_curve": lambda o: (karkas.read_curve, (o.curve_csv,), {}),
+    "batch": lambda o: (
+        karkas.batch,
+        ("curve fit", [o.airfoil, o.curve_csv], o.out_path + "-batch"),
+        {"knots": 6, "format": "csv", "jobs": 1, "as_frame": False, "options": ["--eps", "1"]},
+    ),
+    "batch_inputs": lambda o: (karkas.batch_inputs, ([o.airfoil, o.curve_csv],), {}),
     "read_airfoil": lambda o: (karkas.read_airfoil, (o.airfoil,), {}),
     "read_grid": lambda o: (karkas.read_grid, (o.grid_csv,), {}),
     "read_network": lambda o: (karkas.read_network, (o.network_csv,), {}),
