@@ -36,7 +36,8 @@ pub struct Batch {
     pub out: PathBuf,
     /// Inputs processed at once (default: one per core).
     pub jobs: Option<usize>,
-    /// Skip the inputs recorded ok whose outputs exist; run the others.
+    /// Skip the inputs recorded ok whose outputs (those this job writes) exist; run the
+    /// others.
     pub resume: bool,
     /// Keep `OUT/results.jsonl` (false: records returned only).
     pub results_file: bool,
@@ -106,10 +107,18 @@ pub fn run(batch: &Batch) -> Result<Outcome> {
         Vec::new()
     };
     let earlier: HashMap<&str, &Record> = before.iter().map(|r| (r.input.as_str(), r)).collect();
+    // Done: recorded ok, with the very outputs this job writes (another --format or
+    // --report runs again), all present.
     let done = |input: &Path| {
+        let outputs: Vec<String> = batch
+            .job
+            .outputs(input, &batch.out)
+            .iter()
+            .map(|o| o.display().to_string())
+            .collect();
         earlier
             .get(input.display().to_string().as_str())
-            .filter(|r| r.is_done())
+            .filter(|r| r.is_done() && r.outputs == outputs)
             .copied()
     };
     let todo: Vec<&PathBuf> = batch.inputs.iter().filter(|i| done(i).is_none()).collect();

@@ -130,20 +130,24 @@ fn two_thousand_noisy_sections_with_damaged_files_resume_after_a_kill() {
         "--jobs",
         "2",
     ];
-    // The first run, killed once a fifth of the inputs are recorded.
+    // The first run, killed half-way: once half of the inputs are recorded.
     let mut child = Command::new(env!("CARGO_BIN_EXE_karkas"))
         .args(args)
         .stderr(Stdio::null())
         .spawn()
         .unwrap();
     let started = Instant::now();
-    while records(&out).len() < 400 {
+    let recorded = || {
+        let bytes = std::fs::read(out.join("results.jsonl")).unwrap_or_default();
+        bytes.iter().filter(|&&b| b == b'\n').count()
+    };
+    while recorded() < 1003 {
         assert!(
             child.try_wait().unwrap().is_none(),
             "the batch ended before the kill"
         );
         assert!(started.elapsed() < Duration::from_secs(120), "no progress");
-        std::thread::sleep(Duration::from_millis(2));
+        std::thread::sleep(Duration::from_millis(5));
     }
     child.kill().unwrap();
     child.wait().unwrap();
@@ -340,6 +344,22 @@ fn each_output_equals_the_single_command_and_a_clean_batch_exits_0() {
             &text[..40]
         );
     }
+    // A resume with another format writes other files: every input runs again.
+    let resumed = karkas(&[
+        "batch",
+        "curve",
+        "ll",
+        "--order",
+        "3",
+        "--inputs",
+        &pattern,
+        "--out",
+        s(&svg),
+        "--resume",
+    ]);
+    assert_eq!(resumed.status.code(), Some(0), "{}", stderr(&resumed));
+    assert!(stderr(&resumed).contains("3 inputs, 3 ok, 0 failed; 3 run in"));
+    assert!(svg.join("foil-00001.csv").is_file());
     // A pattern the shell expanded: the files after --inputs are all inputs.
     let files: Vec<PathBuf> = (0..3)
         .map(|k| inputs.join(format!("foil-0000{k}.dat")))
