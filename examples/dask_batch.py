@@ -15,7 +15,8 @@ The arguments are those of the command line's `karkas batch` (see `karkas batch 
 one of the commands a batch runs (curve ll, curve fit, curve spline, curve dps, curve analyze,
 surface ll, surface bicubic, section, vary, convert); `--inputs`, a folder (its files), a glob
 pattern (quoted) or a .txt list of paths, and may be repeated; `--out DIR`; `--format EXT`;
-`--resume`; `--max-memory SIZE` (each input's request, as karkas.max_memory on the workers). Every other argument is an option of the job, passed on in its order, and the
+`--resume`; `--tree DIR` (outputs named after the input's path below DIR); `--max-memory SIZE`
+(each input's request, as karkas.max_memory on the workers). Every other argument is an option of the job, passed on in its order, and the
 script's own options may stand anywhere among them, as on the command line. Two more say where
 the work runs:
 
@@ -81,7 +82,8 @@ FIELDS = ["input", "outputs", "status", "error", "summary", "seconds"]
 DEFAULT_WORKERS = 2
 WORKER_WAIT_SECONDS = 60
 # The script's options that take a value; every other argument belongs to the job.
-VALUED = ("--inputs", "--out", "--format", "--jobs", "--workers", "--scheduler", "--max-memory")
+VALUED = ("--inputs", "--out", "--tree", "--format", "--jobs", "--workers", "--scheduler",
+          "--max-memory")
 
 
 class Usage(Exception):
@@ -96,7 +98,7 @@ def split_arguments(argv):
     `karkas batch` splits them: the script's options may stand anywhere, as `--name VALUE` or
     `--name=VALUE`."""
     args = SimpleNamespace(inputs=[], out=None, format=None, workers=None, scheduler=None,
-                           resume=False, max_memory=None, line=[])
+                           resume=False, max_memory=None, tree=None, line=[])
     words = list(argv)[::-1]
     while words:
         word = words.pop()
@@ -126,6 +128,8 @@ def take_option(args, name, value):
         args.inputs.append(value)
     elif name == "--out":
         args.out = value
+    elif name == "--tree":
+        args.tree = value
     elif name == "--format":
         args.format = value
     elif name == "--scheduler":
@@ -192,15 +196,24 @@ def single_input(path):
     return f"{escaped[:-1]}[{escaped[-1]}]"
 
 
-def check_stems(inputs):
-    """Refuses two inputs whose outputs would share a name, as `karkas batch` does."""
+def check_stems(inputs, tree=None):
+    """Refuses two inputs whose outputs would share a name, and with `tree` an input outside
+    that folder, as `karkas batch` does: outputs are named after the input's stem, or its path
+    below `tree`."""
     first = {}
     for path in inputs:
-        stem = os.path.splitext(os.path.basename(path))[0]
+        if tree is None:
+            stem = os.path.splitext(os.path.basename(path))[0]
+            hint = "name the outputs after their folders with --tree DIR, or run them in two batches"
+        else:
+            below = os.path.relpath(os.path.abspath(path), os.path.abspath(tree))
+            if below == os.pardir or below.startswith(os.pardir + os.sep):
+                raise Usage(f"--tree {tree}: the input {path} is not in that folder")
+            stem = os.path.splitext(below)[0]
+            hint = "rename one or run them in two batches"
         if stem in first:
             raise Usage(
-                f"{first[stem]} and {path} would write outputs of the same name ({stem}); "
-                "rename one or run them in two batches"
+                f"{first[stem]} and {path} would write outputs of the same name ({stem}); {hint}"
             )
         first[stem] = path
 
@@ -227,10 +240,11 @@ def failed_record(path, error):
             "summary": {"messages": []}, "seconds": 0.0}
 
 
-def run_one(path, job, options, out, fmt, max_memory=None):
+def run_one(path, job, options, out, fmt, max_memory=None, tree=None):
     """Runs the job on the input `path` into the folder `out` and returns its record (on a
     worker: the function is shipped to it, and karkas is the worker's own); `max_memory`
-    caps the input's request, as --max-memory does on the command line."""
+    caps the input's request, as --max-memory does on the command line, and `tree` names the
+    outputs after the input's path below it, as --tree does."""
     if max_memory is not None:
         karkas.max_memory = max_memory
     if not os.path.isfile(path):
@@ -238,7 +252,7 @@ def run_one(path, job, options, out, fmt, max_memory=None):
         return failed_record(path, f"{path}: {why}")
     try:
         record = karkas.batch(job, [single_input(path)], out, options=options, format=fmt,
-                              jobs=1, results_file=False, as_frame=False)[0]
+                              tree=tree, jobs=1, results_file=False, as_frame=False)[0]
     except (karkas.KarkasError, OSError) as e:
         return failed_record(path, str(e))
     record["input"] = path
@@ -351,11 +365,11 @@ def connected(args):
         yield client
 
 
-def run_on_cluster(client, todo, job, options, out, fmt, max_memory, journal):
+def run_on_cluster(client, todo, job, options, out, fmt, max_memory, tree, journal):
     """Runs the inputs `todo` as one task each and returns their records by input, appending
     each to `journal` as it arrives (and printing the error line of a failed one)."""
     futures = client.map(run_one, todo, job=job, options=options, out=out, fmt=fmt,
-                         max_memory=max_memory, pure=False)
+                         max_memory=max_memory, tree=tree, pure=False)
     paths = {future.key: path for future, path in zip(futures, todo)}
     fresh = {}
     for future in as_completed(futures):
@@ -380,7 +394,7 @@ def run(args):
         inputs = karkas.batch_inputs(args.inputs)
     except karkas.OptionError as e:
         raise Usage(str(e)) from None
-    check_stems(inputs)
+    check_stems(inputs, args.tree)
     check_job(job, options, args.format, inputs[0])
     try:
         os.makedirs(args.out, exist_ok=True)
@@ -400,7 +414,7 @@ def run(args):
             started = time.perf_counter()
             ready = started - connecting
             fresh = run_on_cluster(client, todo, job, options, args.out, args.format,
-                                   args.max_memory, journal)
+                                   args.max_memory, args.tree, journal)
             seconds = time.perf_counter() - started
 
     records = [fresh.get(path) or done[path] for path in inputs]

@@ -610,6 +610,7 @@ def batch(
     out: _FilePath,
     options: Optional[Union[list[str], Tuple[str, ...]]] = None,
     format: Optional[str] = None,
+    tree: Optional[_FilePath] = None,
     jobs: Optional[int] = None,
     resume: bool = False,
     results_file: bool = True,

@@ -31,6 +31,10 @@ use std::path::PathBuf;
 ///     More options of the command, as on the command line (``["--tolerance", "1e-4"]``).
 /// format : str, optional
 ///     The output format (``"csv"``, the default; ``"svg"``, ``"step"``, ...).
+/// tree : str or os.PathLike, optional
+///     Name each output after the input's path below this folder (``out/a/b/x.csv`` for
+///     ``tree/a/b/x.dat``) rather than after its stem alone (``out/x.csv``), so that files of
+///     one name in different folders do not collide.
 /// jobs : int, optional
 ///     Inputs processed at once (default: one per core).
 /// resume : bool
@@ -59,7 +63,8 @@ use std::path::PathBuf;
 /// ------
 /// OptionError
 ///     The command is not one a batch runs, its options are not the command's, the inputs
-///     name nothing, or two inputs would write outputs of the same name.
+///     name nothing, an input is outside ``tree``, or two inputs would write outputs of the
+///     same name.
 /// OSError
 ///     The output folder or the results file cannot be written.
 ///
@@ -77,8 +82,8 @@ use std::path::PathBuf;
 /// ['fits/a.csv']
 #[pyfunction]
 #[pyo3(
-    signature = (job, inputs, out, options=None, format=None, jobs=None, resume=false, results_file=true, as_frame=None, progress=false, **job_options),
-    text_signature = "(job, inputs, out, options=None, format=None, jobs=None, resume=False, results_file=True, as_frame=None, progress=False, **job_options)"
+    signature = (job, inputs, out, options=None, format=None, tree=None, jobs=None, resume=false, results_file=true, as_frame=None, progress=false, **job_options),
+    text_signature = "(job, inputs, out, options=None, format=None, tree=None, jobs=None, resume=False, results_file=True, as_frame=None, progress=False, **job_options)"
 )]
 #[allow(clippy::too_many_arguments)]
 pub fn batch<'py>(
@@ -88,6 +93,7 @@ pub fn batch<'py>(
     out: PathBuf,
     options: Option<&Bound<'py, PyAny>>,
     format: Option<String>,
+    tree: Option<PathBuf>,
     jobs: Option<usize>,
     resume: bool,
     results_file: bool,
@@ -106,7 +112,7 @@ pub fn batch<'py>(
         .map(|f| karkas_cli::batch::parse_format(&f).map_err(OptionError::new_err))
         .transpose()?;
     let specs = paths(inputs)?;
-    let mut batch = karkas_cli::batch::Batch::new(&line, format, &specs, &out)
+    let mut batch = karkas_cli::batch::Batch::new(&line, format, &specs, &out, tree.as_deref())
         .map_err(|e| OptionError::new_err(error_text(&e)))?;
     batch.jobs = jobs;
     batch.resume = resume;

@@ -140,3 +140,20 @@ def test_the_same_records_and_files_as_the_command_line(tmp_path):
         for a, b in zip(py["outputs"], cli["outputs"]):
             assert Path(a).read_bytes() == Path(b).read_bytes()
     assert sum(r["status"] == "ok" for r in records) == 24
+
+
+def test_a_tree_names_outputs_after_their_folders(tmp_path, rng):
+    for folder in ["wing", "tail/root"]:
+        (tmp_path / "db" / folder).mkdir(parents=True)
+        np.savetxt(tmp_path / "db" / folder / "x.csv", ellipse(40, 1.0, 0.3, 0.0, rng), delimiter=",")
+    pattern = str(tmp_path / "db" / "**" / "*.csv")
+    with pytest.raises(karkas.OptionError, match="--tree"):
+        karkas.batch("curve spline", pattern, tmp_path / "out")
+    records = karkas.batch("curve spline", pattern, tmp_path / "out", tree=tmp_path / "db",
+                           as_frame=False)
+    assert sorted(r["outputs"][0] for r in records) == [
+        str(tmp_path / "out" / "tail" / "root" / "x.csv"),
+        str(tmp_path / "out" / "wing" / "x.csv"),
+    ]
+    with pytest.raises(karkas.OptionError, match="not in that folder"):
+        karkas.batch("curve spline", pattern, tmp_path / "out", tree=tmp_path / "db" / "wing")

@@ -27,6 +27,11 @@ pub struct BatchArgs {
     /// The output folder (made when missing).
     #[arg(long, value_name = "DIR")]
     out: Option<PathBuf>,
+    /// Name each output after the input's path below this folder (OUT/a/b/x.csv for
+    /// DIR/a/b/x.dat), so that files of one name in different folders do not collide
+    /// [default: after the input's stem alone, OUT/x.csv].
+    #[arg(long, value_name = "DIR")]
+    tree: Option<PathBuf>,
     /// Inputs processed at once [default: one per core].
     #[arg(long, value_name = "N")]
     jobs: Option<usize>,
@@ -53,6 +58,7 @@ struct Split {
     job: Vec<String>,
     inputs: Vec<String>,
     out: Option<PathBuf>,
+    tree: Option<PathBuf>,
     jobs: Option<usize>,
     resume: bool,
     format: Option<OutputFormat>,
@@ -70,6 +76,7 @@ impl BatchArgs {
         let mut split = Split {
             inputs: self.inputs.clone(),
             out: self.out.clone(),
+            tree: self.tree.clone(),
             jobs: self.jobs,
             resume: self.resume,
             ..Split::default()
@@ -80,7 +87,14 @@ impl BatchArgs {
                 Some((name, value)) if name.starts_with("--") => (name, Some(value.to_owned())),
                 _ => (word.as_str(), None),
             };
-            let known = ["--inputs", "--out", "--jobs", "--format", "--max-memory"];
+            let known = [
+                "--inputs",
+                "--out",
+                "--tree",
+                "--jobs",
+                "--format",
+                "--max-memory",
+            ];
             if name == "--resume" {
                 split.resume = true;
                 continue;
@@ -103,6 +117,7 @@ impl BatchArgs {
                     }
                 }
                 "--out" => split.out = Some(PathBuf::from(value)),
+                "--tree" => split.tree = Some(PathBuf::from(value)),
                 "--jobs" => {
                     split.jobs = Some(
                         value
@@ -127,7 +142,9 @@ pub fn run_cli(args: &BatchArgs, format: Option<OutputFormat>) -> Result<bool> {
     let Some(out) = &split.out else {
         bail!("batch: --out DIR is needed (the outputs and results.jsonl go there)");
     };
-    let mut batch = Batch::new(&split.job, split.format.or(format), &split.inputs, out)?;
+    let format = split.format.or(format);
+    let tree = split.tree.as_deref();
+    let mut batch = Batch::new(&split.job, format, &split.inputs, out, tree)?;
     batch.jobs = split.jobs;
     batch.resume = split.resume;
     batch.progress = true;

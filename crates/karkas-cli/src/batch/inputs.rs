@@ -4,7 +4,7 @@
 use anyhow::{bail, Context, Result};
 use std::collections::{HashMap, HashSet};
 use std::io::Read;
-use std::path::{Path, PathBuf};
+use std::path::{Component, Path, PathBuf};
 
 /// The longest list file read (a list of paths, not data): 64 MiB.
 const MAX_LIST_BYTES: u64 = 64 << 20;
@@ -117,25 +117,72 @@ fn read_list(list: &Path) -> Result<Vec<PathBuf>> {
     Ok(files)
 }
 
-/// Refuses inputs whose outputs would share a name (`a/x.dat` and `b/x.csv` both write
-/// `OUT/x.*`), naming the first two.
-pub fn check_distinct_stems(inputs: &[PathBuf]) -> Result<()> {
-    let mut by_stem: HashMap<&std::ffi::OsStr, &Path> = HashMap::new();
+/// The name, without extension, of each input's outputs in the folder `out`: `OUT/<stem>`,
+/// or with `tree` the input's path below it, `OUT/<sub/folders/stem>`. Refuses an input
+/// outside `tree`, and two inputs whose outputs would share a name (`a/x.dat` and `b/x.csv`
+/// without `tree`), naming the first two.
+pub fn output_bases(inputs: &[PathBuf], out: &Path, tree: Option<&Path>) -> Result<Vec<PathBuf>> {
+    let mut first: HashMap<PathBuf, &Path> = HashMap::new();
+    let mut bases = Vec::with_capacity(inputs.len());
     for input in inputs {
-        let Some(stem) = input.file_stem() else {
-            bail!("{}: an input needs a file name", input.display());
+        let name = match tree {
+            Some(tree) => below(input, tree)?.with_extension(""),
+            None => match input.file_stem() {
+                Some(stem) => PathBuf::from(stem),
+                None => bail!("{}: an input needs a file name", input.display()),
+            },
         };
-        if let Some(first) = by_stem.insert(stem, input) {
+        let base = out.join(&name);
+        if let Some(earlier) = first.insert(base.clone(), input) {
+            let hint = if tree.is_some() {
+                "rename one or run them in two batches"
+            } else {
+                "name the outputs after their folders with --tree DIR, or run them in two batches"
+            };
             bail!(
-                "{} and {} would write outputs of the same name ({}); rename one or run them in \
-                 two batches",
-                first.display(),
+                "{} and {} would write outputs of the same name ({}); {hint}",
+                earlier.display(),
                 input.display(),
-                stem.to_string_lossy()
+                name.display()
             );
         }
+        bases.push(base);
     }
-    Ok(())
+    Ok(bases)
+}
+
+/// The path of `input` below the folder `tree`, with no `..` in it.
+fn below(input: &Path, tree: &Path) -> Result<PathBuf> {
+    let lexical = |p: &Path| -> PathBuf {
+        p.components()
+            .filter(|c| !matches!(c, Component::CurDir))
+            .collect()
+    };
+    let relative = lexical(input)
+        .strip_prefix(lexical(tree))
+        .map(Path::to_path_buf)
+        .or_else(|_| {
+            let (input, tree) = (input.canonicalize()?, tree.canonicalize()?);
+            input
+                .strip_prefix(tree)
+                .map(Path::to_path_buf)
+                .map_err(|_| std::io::Error::other("outside"))
+        });
+    match relative {
+        Ok(relative)
+            if relative.file_name().is_some()
+                && relative
+                    .components()
+                    .all(|c| matches!(c, Component::Normal(_))) =>
+        {
+            Ok(relative)
+        }
+        _ => bail!(
+            "--tree {}: the input {} is not in that folder",
+            tree.display(),
+            input.display()
+        ),
+    }
 }
 
 #[cfg(test)]
@@ -177,10 +224,28 @@ mod tests {
     }
 
     #[test]
-    fn inputs_with_one_stem_are_refused() {
+    fn outputs_are_named_by_stem_or_by_the_path_below_the_tree() {
         let inputs = [PathBuf::from("a/x.dat"), PathBuf::from("b/x.csv")];
-        let error = check_distinct_stems(&inputs).unwrap_err().to_string();
+        let out = Path::new("out");
+        let error = output_bases(&inputs, out, None).unwrap_err().to_string();
         assert!(error.contains("a/x.dat and b/x.csv"), "{error}");
-        assert!(check_distinct_stems(&[PathBuf::from("a/x.dat"), PathBuf::from("y.dat")]).is_ok());
+        assert!(error.contains("--tree"), "{error}");
+        let two = [PathBuf::from("a/x.dat"), PathBuf::from("y.v2.dat")];
+        assert_eq!(
+            output_bases(&two, out, None).unwrap(),
+            [PathBuf::from("out/x"), PathBuf::from("out/y.v2")]
+        );
+        let tree = [PathBuf::from("./db/a/x.dat"), PathBuf::from("db/b/x.csv")];
+        assert_eq!(
+            output_bases(&tree, out, Some(Path::new("db"))).unwrap(),
+            [PathBuf::from("out/a/x"), PathBuf::from("out/b/x")]
+        );
+        let outside = [PathBuf::from("elsewhere/x.dat")];
+        let error = output_bases(&outside, out, Some(Path::new("db")))
+            .unwrap_err()
+            .to_string();
+        assert!(error.contains("not in that folder"), "{error}");
+        let up = [PathBuf::from("db/../x.dat")];
+        assert!(output_bases(&up, out, Some(Path::new("db"))).is_err());
     }
 }

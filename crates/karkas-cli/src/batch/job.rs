@@ -115,7 +115,7 @@ impl Job {
             extension,
         };
         let example = Path::new("input.csv");
-        job.parse(example, &job.outputs(example, Path::new("out")))?;
+        job.parse(example, &job.outputs(Path::new("out/input")))?;
         let given = |name: &str| {
             job.options
                 .iter()
@@ -135,14 +135,14 @@ impl Job {
         self.words.join(" ")
     }
 
-    /// The files the job writes for `input` into the folder `out`: `OUT/<stem>.<ext>`, and
-    /// the deviations with `--report`.
-    pub fn outputs(&self, input: &Path, out: &Path) -> Vec<PathBuf> {
-        let stem = input.file_stem().unwrap_or(input.as_os_str());
+    /// The files the job writes for an input whose outputs are named `base` (their folder and
+    /// name without extension, `OUT/naca`): `OUT/naca.<ext>`, and `OUT/naca.deviations.csv`
+    /// with `--report`.
+    pub fn outputs(&self, base: &Path) -> Vec<PathBuf> {
         let named = |suffix: &str| {
-            let mut name = stem.to_os_string();
+            let mut name = base.as_os_str().to_os_string();
             name.push(suffix);
-            out.join(name)
+            PathBuf::from(name)
         };
         let mut outputs = vec![named(&format!(".{}", self.extension))];
         if self.report {
@@ -179,13 +179,19 @@ impl Job {
         }
     }
 
-    /// Runs the job on `input`, writing into `out`, and returns its record; a failure (a
-    /// panic too) is the record's error.
-    pub fn run(&self, input: &Path, out: &Path) -> Record {
+    /// Runs the job on `input`, its outputs named `base` (see [`Job::outputs`]; the folder is
+    /// made when missing), and returns its record; a failure (a panic too) is the record's
+    /// error.
+    pub fn run(&self, input: &Path, base: &Path) -> Record {
         let started = Instant::now();
-        let outputs = self.outputs(input, out);
+        let outputs = self.outputs(base);
         let (result, captured) = console::capture(|| {
             std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+                if let Some(folder) = base.parent().filter(|f| !f.as_os_str().is_empty()) {
+                    std::fs::create_dir_all(folder).map_err(|e| {
+                        anyhow::anyhow!("{}: cannot create the folder: {e}", folder.display())
+                    })?;
+                }
                 self.parse(input, &outputs)?.run()
             }))
         });
@@ -271,7 +277,7 @@ mod tests {
     fn jobs_are_checked_before_any_input() {
         let fit = Job::new(&line("curve fit --tolerance 1e-4 --report"), None).unwrap();
         assert_eq!(fit.name(), "curve fit");
-        let outputs = fit.outputs(Path::new("foils/naca.dat"), Path::new("out"));
+        let outputs = fit.outputs(Path::new("out/naca"));
         assert_eq!(
             outputs,
             [
@@ -280,10 +286,7 @@ mod tests {
             ]
         );
         let svg = Job::new(&line("curve ll --order 3"), Some(OutputFormat::Svg)).unwrap();
-        assert_eq!(
-            svg.outputs(Path::new("a.csv"), Path::new("o")),
-            [PathBuf::from("o/a.svg")]
-        );
+        assert_eq!(svg.outputs(Path::new("o/a")), [PathBuf::from("o/a.svg")]);
         for (bad, says) in [
             ("curve fit --tolerance 1e-4 -o x.csv", "leave out -o"),
             ("curve fit --report dev.csv --knots 5", "takes no file name"),

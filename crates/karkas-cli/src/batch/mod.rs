@@ -31,9 +31,11 @@ pub struct Batch {
     /// The command run on every input.
     pub job: Job,
     /// The input files.
-    pub inputs: Vec<PathBuf>,
+    inputs: Vec<PathBuf>,
+    /// The name of each input's outputs, without extension (see [`Job::outputs`]).
+    bases: Vec<PathBuf>,
     /// The output folder (made when missing).
-    pub out: PathBuf,
+    out: PathBuf,
     /// Inputs processed at once (default: one per core).
     pub jobs: Option<usize>,
     /// Skip the inputs recorded ok whose outputs (those this job writes) exist; run the
@@ -63,26 +65,35 @@ pub struct Outcome {
 
 impl Batch {
     /// A batch of `job` (the command's words and options, as [`Job::new`] takes them) on the
-    /// files `inputs` names (see [`expand_inputs`]), with the defaults: as many inputs at once
-    /// as cores, no resume, the results file kept, no progress bar.
+    /// files `inputs` names (see [`expand_inputs`]), writing into the folder `out` outputs
+    /// named after each input's stem, or with `tree` after its path below that folder (see
+    /// [`inputs::output_bases`]); with the defaults: as many inputs at once as cores, no
+    /// resume, the results file kept, no progress bar.
     pub fn new(
         job: &[String],
         format: Option<karkas_io::OutputFormat>,
         inputs: &[String],
         out: &Path,
+        tree: Option<&Path>,
     ) -> Result<Batch> {
         let job = Job::new(job, format)?;
         let inputs = expand_inputs(inputs)?;
-        inputs::check_distinct_stems(&inputs)?;
+        let bases = inputs::output_bases(&inputs, out, tree)?;
         Ok(Batch {
             job,
             inputs,
+            bases,
             out: out.to_path_buf(),
             jobs: None,
             resume: false,
             results_file: true,
             progress: false,
         })
+    }
+
+    /// The input files, in order.
+    pub fn inputs(&self) -> &[PathBuf] {
+        &self.inputs
     }
 
     /// The path of the results file.
@@ -109,10 +120,10 @@ pub fn run(batch: &Batch) -> Result<Outcome> {
     let earlier: HashMap<&str, &Record> = before.iter().map(|r| (r.input.as_str(), r)).collect();
     // Done: recorded ok, with the very outputs this job writes (another --format or
     // --report runs again), all present.
-    let done = |input: &Path| {
+    let done = |input: &Path, base: &Path| {
         let outputs: Vec<String> = batch
             .job
-            .outputs(input, &batch.out)
+            .outputs(base)
             .iter()
             .map(|o| o.display().to_string())
             .collect();
@@ -121,7 +132,12 @@ pub fn run(batch: &Batch) -> Result<Outcome> {
             .filter(|r| r.is_done() && r.outputs == outputs)
             .copied()
     };
-    let todo: Vec<&PathBuf> = batch.inputs.iter().filter(|i| done(i).is_none()).collect();
+    let all: Vec<(&PathBuf, &PathBuf)> = batch.inputs.iter().zip(&batch.bases).collect();
+    let todo: Vec<(&PathBuf, &PathBuf)> = all
+        .iter()
+        .filter(|(input, base)| done(input, base).is_none())
+        .copied()
+        .collect();
     let journal = results::Journal::open(&path, batch.resume, batch.results_file)?;
     let bar = progress_bar(batch, todo.len())?;
     let mut builder = rayon::ThreadPoolBuilder::new();
@@ -132,8 +148,8 @@ pub fn run(batch: &Batch) -> Result<Outcome> {
     let fresh: Vec<Record> = pool.install(|| {
         todo.par_iter()
             .with_max_len(1)
-            .map(|input| {
-                let record = batch.job.run(input, &batch.out);
+            .map(|(input, base)| {
+                let record = batch.job.run(input, base);
                 if let (Some(error), true) = (&record.error, batch.progress) {
                     bar.suspend(|| eprintln!("karkas: error: {error}"));
                 }
@@ -147,11 +163,11 @@ pub fn run(batch: &Batch) -> Result<Outcome> {
     let mut fresh: HashMap<String, Record> =
         fresh.into_iter().map(|r| (r.input.clone(), r)).collect();
     let mut records = Vec::with_capacity(batch.inputs.len());
-    for input in &batch.inputs {
+    for (input, base) in all {
         let name = input.display().to_string();
         let record = match fresh.remove(&name) {
             Some(record) => record,
-            None => done(input)
+            None => done(input, base)
                 .cloned()
                 .context("a skipped input lost its record")?,
         };

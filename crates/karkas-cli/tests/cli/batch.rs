@@ -458,3 +458,46 @@ fn bad_usage_exits_2_before_any_input() {
     }
     assert!(!out.exists(), "nothing is written on bad usage");
 }
+
+#[test]
+fn a_tree_names_outputs_after_their_folders() {
+    let dir = temp_dir();
+    let db = dir.path().join("db");
+    for folder in ["wing", "tail/root"] {
+        std::fs::create_dir_all(db.join(folder)).unwrap();
+        corpus(&db.join(folder), 1, 21);
+        for k in 0..DAMAGED.len() {
+            std::fs::remove_file(db.join(folder).join(format!("damaged-{k}.dat"))).unwrap();
+        }
+    }
+    let pattern = format!("{}/**/*.dat", s(&db));
+    let out = dir.path().join("out");
+    let spline = |more: &[&str]| {
+        let start = [
+            "batch",
+            "curve",
+            "spline",
+            "--inputs",
+            &pattern,
+            "--out",
+            s(&out),
+        ];
+        karkas(&[&start[..], more].concat())
+    };
+    let flat = spline(&[]);
+    assert_eq!(flat.status.code(), Some(2));
+    assert!(stderr(&flat).contains("--tree DIR"), "{}", stderr(&flat));
+    let tree = spline(&["--tree", s(&db)]);
+    assert_eq!(tree.status.code(), Some(0), "{}", stderr(&tree));
+    for name in ["wing/foil-00000.csv", "tail/root/foil-00000.csv"] {
+        let text = std::fs::read_to_string(out.join(name)).unwrap();
+        assert!(text.starts_with("t,x,y\n"), "{name}");
+    }
+    let outside = spline(&["--tree", s(&db.join("wing"))]);
+    assert_eq!(outside.status.code(), Some(2));
+    assert!(
+        stderr(&outside).contains("is not in that folder"),
+        "{}",
+        stderr(&outside)
+    );
+}
