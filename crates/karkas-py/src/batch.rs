@@ -111,6 +111,9 @@ pub fn batch<'py>(
     let format = format
         .map(|f| karkas_cli::batch::parse_format(&f).map_err(OptionError::new_err))
         .transpose()?;
+    if jobs == Some(0) {
+        return Err(OptionError::new_err("jobs: at least 1"));
+    }
     let specs = paths(inputs)?;
     let mut batch = karkas_cli::batch::Batch::new(&line, format, &specs, &out, tree.as_deref())
         .map_err(|e| OptionError::new_err(error_text(&e)))?;
@@ -118,9 +121,6 @@ pub fn batch<'py>(
     batch.resume = resume;
     batch.results_file = results_file;
     batch.progress = progress;
-    if jobs == Some(0) {
-        return Err(OptionError::new_err("jobs: at least 1"));
-    }
     // Each input's request is capped by karkas.max_memory, as every call of the package is.
     let cap =
         crate::limits::current_cap(py)?.map_or(u64::MAX, |c| c.min(u128::from(u64::MAX)) as u64);

@@ -14,7 +14,7 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 /// The commands a batch runs: those that read one input and write one output.
-pub const JOBS: [&str; 10] = [
+const JOBS: [&str; 10] = [
     "curve ll",
     "curve fit",
     "curve spline",
@@ -209,10 +209,7 @@ impl Job {
             )),
         };
         let mut summary = captured.figures;
-        summary.insert(
-            "messages".to_owned(),
-            Value::from(captured.messages.clone()),
-        );
+        summary.insert("messages".to_owned(), Value::from(captured.messages));
         Record {
             input: input.display().to_string(),
             outputs: match error {

@@ -15,7 +15,7 @@ pub use crate::args::parse_format;
 pub use crate::output::memory::set_output_cap;
 pub use cli::{run_cli as cli_run, BatchArgs};
 pub use inputs::expand as expand_inputs;
-pub use job::{Job, JOBS};
+pub use job::Job;
 pub use results::{Record, Status, RESULTS_FILE};
 
 use anyhow::{Context, Result};
@@ -91,11 +91,6 @@ impl Batch {
         })
     }
 
-    /// The input files, in order.
-    pub fn inputs(&self) -> &[PathBuf] {
-        &self.inputs
-    }
-
     /// The path of the results file.
     pub fn results_path(&self) -> PathBuf {
         self.out.join(RESULTS_FILE)
@@ -118,25 +113,32 @@ pub fn run(batch: &Batch) -> Result<Outcome> {
         Vec::new()
     };
     let earlier: HashMap<&str, &Record> = before.iter().map(|r| (r.input.as_str(), r)).collect();
-    // Done: recorded ok, with the very outputs this job writes (another --format or
-    // --report runs again), all present.
-    let done = |input: &Path, base: &Path| {
-        let outputs: Vec<String> = batch
-            .job
-            .outputs(base)
-            .iter()
-            .map(|o| o.display().to_string())
-            .collect();
-        earlier
-            .get(input.display().to_string().as_str())
-            .filter(|r| r.is_done() && r.outputs == outputs)
-            .copied()
-    };
-    let all: Vec<(&PathBuf, &PathBuf)> = batch.inputs.iter().zip(&batch.bases).collect();
-    let todo: Vec<(&PathBuf, &PathBuf)> = all
+    // Each input's earlier record when it needs no new run: recorded ok, with the very
+    // outputs this job writes (another --format or --report runs again), all present.
+    let done: Vec<Option<&Record>> = batch
+        .inputs
         .iter()
-        .filter(|(input, base)| done(input, base).is_none())
-        .copied()
+        .zip(&batch.bases)
+        .map(|(input, base)| {
+            let outputs: Vec<String> = batch
+                .job
+                .outputs(base)
+                .iter()
+                .map(|o| o.display().to_string())
+                .collect();
+            earlier
+                .get(input.display().to_string().as_str())
+                .filter(|r| r.is_done() && r.outputs == outputs)
+                .copied()
+        })
+        .collect();
+    let todo: Vec<(&PathBuf, &PathBuf)> = batch
+        .inputs
+        .iter()
+        .zip(&batch.bases)
+        .zip(&done)
+        .filter(|(_, earlier)| earlier.is_none())
+        .map(|(pair, _)| pair)
         .collect();
     let journal = results::Journal::open(&path, batch.resume, batch.results_file)?;
     let bar = progress_bar(batch, todo.len())?;
@@ -160,19 +162,12 @@ pub fn run(batch: &Batch) -> Result<Outcome> {
             .collect::<Result<Vec<Record>>>()
     })?;
     bar.finish_and_clear();
-    let mut fresh: HashMap<String, Record> =
-        fresh.into_iter().map(|r| (r.input.clone(), r)).collect();
-    let mut records = Vec::with_capacity(batch.inputs.len());
-    for (input, base) in all {
-        let name = input.display().to_string();
-        let record = match fresh.remove(&name) {
-            Some(record) => record,
-            None => done(input, base)
-                .cloned()
-                .context("a skipped input lost its record")?,
-        };
-        records.push(record);
-    }
+    // The fresh records come in the order of `todo`, the inputs not done.
+    let mut fresh = fresh.into_iter();
+    let records: Vec<Record> = done
+        .iter()
+        .filter_map(|earlier| earlier.cloned().or_else(|| fresh.next()))
+        .collect();
     // Records of inputs not in this batch stay in the file, after this batch's.
     let mine: std::collections::HashSet<&str> = records.iter().map(|r| r.input.as_str()).collect();
     let others: Vec<Record> = before

@@ -74,9 +74,10 @@ const DAMAGED: [&[u8]; 6] = [
     b"NACA cut\n1.0 0.0\n0.5 0.06\n0.0 0.0\n0.5\n",
 ];
 
-/// Writes `count` noisy sections `foil-NNNNN.dat` and the damaged files into `dir`; returns
-/// the names of the damaged ones.
-fn corpus(dir: &Path, count: usize, points: usize) -> Vec<String> {
+/// Writes `count` noisy sections `foil-NNNNN.dat` into the folder `dir` (made), and the
+/// damaged files when `damaged`; returns the names of the damaged ones.
+fn corpus(dir: &Path, count: usize, points: usize, damaged: bool) -> Vec<String> {
+    std::fs::create_dir_all(dir).unwrap();
     let mut rng = Rng(0x9E37_79B9_7F4A_7C15);
     for k in 0..count {
         let m = (k % 7) as f64 / 100.0;
@@ -87,6 +88,7 @@ fn corpus(dir: &Path, count: usize, points: usize) -> Vec<String> {
     }
     DAMAGED
         .iter()
+        .take(if damaged { DAMAGED.len() } else { 0 })
         .enumerate()
         .map(|(k, bytes)| {
             let name = format!("damaged-{k}.dat");
@@ -115,8 +117,7 @@ fn modified(path: &str) -> SystemTime {
 fn two_thousand_noisy_sections_with_damaged_files_resume_after_a_kill() {
     let dir = temp_dir();
     let (inputs, out) = (dir.path().join("foils"), dir.path().join("fits"));
-    std::fs::create_dir(&inputs).unwrap();
-    let damaged = corpus(&inputs, 2000, 61);
+    let damaged = corpus(&inputs, 2000, 61, true);
     let args = [
         "batch",
         "curve",
@@ -232,18 +233,7 @@ fn two_thousand_noisy_sections_with_damaged_files_resume_after_a_kill() {
 fn each_output_equals_the_single_command_and_a_clean_batch_exits_0() {
     let dir = temp_dir();
     let inputs = dir.path().join("in");
-    std::fs::create_dir(&inputs).unwrap();
-    corpus(&inputs, 3, 41);
-    for name in [
-        "damaged-0.dat",
-        "damaged-1.dat",
-        "damaged-2.dat",
-        "damaged-3.dat",
-        "damaged-4.dat",
-        "damaged-5.dat",
-    ] {
-        std::fs::remove_file(inputs.join(name)).unwrap();
-    }
+    corpus(&inputs, 3, 41, false);
     let list = write(
         dir.path(),
         "list.txt",
@@ -322,19 +312,13 @@ fn each_output_equals_the_single_command_and_a_clean_batch_exits_0() {
     // A glob, another command and format: pictures.
     let pattern = format!("{}/*.dat", s(&inputs));
     let svg = dir.path().join("svg");
-    let pictures = karkas(&[
-        "batch",
-        "curve",
-        "ll",
-        "--order",
-        "3",
-        "--inputs",
-        &pattern,
-        "--out",
-        s(&svg),
-        "--format",
-        "svg",
-    ]);
+    let ll = |more: &[&str]| {
+        let start = [
+            "batch", "curve", "ll", "--order", "3", "--inputs", &pattern, "--out",
+        ];
+        karkas(&[&start[..], &[s(&svg)], more].concat())
+    };
+    let pictures = ll(&["--format", "svg"]);
     assert_eq!(pictures.status.code(), Some(0), "{}", stderr(&pictures));
     for k in 0..3 {
         let text = std::fs::read_to_string(svg.join(format!("foil-0000{k}.svg"))).unwrap();
@@ -345,18 +329,7 @@ fn each_output_equals_the_single_command_and_a_clean_batch_exits_0() {
         );
     }
     // A resume with another format writes other files: every input runs again.
-    let resumed = karkas(&[
-        "batch",
-        "curve",
-        "ll",
-        "--order",
-        "3",
-        "--inputs",
-        &pattern,
-        "--out",
-        s(&svg),
-        "--resume",
-    ]);
+    let resumed = ll(&["--resume"]);
     assert_eq!(resumed.status.code(), Some(0), "{}", stderr(&resumed));
     assert!(stderr(&resumed).contains("3 inputs, 3 ok, 0 failed; 3 run in"));
     assert!(svg.join("foil-00001.csv").is_file());
@@ -377,8 +350,7 @@ fn each_output_equals_the_single_command_and_a_clean_batch_exits_0() {
 fn bad_usage_exits_2_before_any_input() {
     let dir = temp_dir();
     let inputs = dir.path().join("in");
-    std::fs::create_dir(&inputs).unwrap();
-    corpus(&inputs, 1, 21);
+    corpus(&inputs, 1, 21, true);
     let other = dir.path().join("other");
     std::fs::create_dir(&other).unwrap();
     std::fs::copy(inputs.join("foil-00000.dat"), other.join("foil-00000.csv")).unwrap();
@@ -464,11 +436,7 @@ fn a_tree_names_outputs_after_their_folders() {
     let dir = temp_dir();
     let db = dir.path().join("db");
     for folder in ["wing", "tail/root"] {
-        std::fs::create_dir_all(db.join(folder)).unwrap();
-        corpus(&db.join(folder), 1, 21);
-        for k in 0..DAMAGED.len() {
-            std::fs::remove_file(db.join(folder).join(format!("damaged-{k}.dat"))).unwrap();
-        }
+        corpus(&db.join(folder), 1, 21, false);
     }
     let pattern = format!("{}/**/*.dat", s(&db));
     let out = dir.path().join("out");
