@@ -15,6 +15,11 @@ agree to round-off, checked). The same jobs in Rust: `cargo bench -p karkas-benc
   against the piece lengths and the partial piece by a vectorised 16-point Gauss-Legendre rule
   on SciPy's derivative.
 
+Open CASCADE, when its wrapper (cadquery-ocp) is installed: the same curve as a
+Geom_BSplineCurve (karkas's exact B-spline form, checked equal), each point projected by
+GeomAPI_ProjectPointOnCurve (it has no batch call: a Python loop over `--occ-points` of the
+points, one thread), distances checked against karkas's, the time per point scaled to 10^6.
+
     RAYON_NUM_THREADS=1 python3 bench/geometry_vs_scipy.py --threads 1
     RAYON_NUM_THREADS=2 python3 bench/geometry_vs_scipy.py --threads 2
 """
@@ -52,6 +57,44 @@ def project_scipy(s, period, q, workers, per_piece=8, steps=6):
     return t, np.linalg.norm(s(t) - q, axis=1)
 
 
+def occ_curve(t, c, k):
+    """The clamped B-spline (t, c, k) as an Open CASCADE Geom_BSplineCurve in the plane z = 0;
+    None when cadquery-ocp is not installed."""
+    try:
+        from OCP.Geom import Geom_BSplineCurve
+        from OCP.gp import gp_Pnt
+    except ImportError:
+        return None
+    try:  # OCP >= 7.8
+        from OCP.collections import Array1_double, Array1_gp_Pnt, Array1_int
+    except ImportError:
+        from OCP.TColgp import TColgp_Array1OfPnt as Array1_gp_Pnt
+        from OCP.TColStd import TColStd_Array1OfInteger as Array1_int
+        from OCP.TColStd import TColStd_Array1OfReal as Array1_double
+    knots, mults = np.unique(np.asarray(t), return_counts=True)
+    c = np.asarray(c)
+    poles = Array1_gp_Pnt(1, len(c))
+    for i, p in enumerate(c):
+        poles.SetValue(i + 1, gp_Pnt(float(p[0]), float(p[1]), 0.0))
+    kn, mu = Array1_double(1, len(knots)), Array1_int(1, len(knots))
+    for i, (x, m) in enumerate(zip(knots, mults)):
+        kn.SetValue(i + 1, float(x))
+        mu.SetValue(i + 1, int(m))
+    return Geom_BSplineCurve(poles, kn, mu, k)
+
+
+def project_occ(curve, q):
+    """GeomAPI_ProjectPointOnCurve at every point of q: (parameters, distances)."""
+    from OCP.GeomAPI import GeomAPI_ProjectPointOnCurve
+    from OCP.gp import gp_Pnt
+
+    t, d = np.empty(len(q)), np.empty(len(q))
+    for i, (x, y) in enumerate(q):
+        proj = GeomAPI_ProjectPointOnCurve(gp_Pnt(float(x), float(y), 0.0), curve)
+        t[i], d[i] = proj.LowerDistanceParameter(), proj.LowerDistance()
+    return t, d
+
+
 GL_X, GL_W = np.polynomial.legendre.leggauss(16)
 
 
@@ -86,6 +129,8 @@ def main():
     ap.add_argument("--threads", type=int, default=2, help="cKDTree workers (set RAYON_NUM_THREADS too)")
     ap.add_argument("--rounds", type=int, default=5)
     ap.add_argument("--points", type=int, default=1_000_000)
+    ap.add_argument("--occ-points", type=int, default=20_000,
+                    help="points projected by Open CASCADE (a Python loop; 0 skips it)")
     args = ap.parse_args()
 
     pts = rose(1000)
@@ -119,6 +164,17 @@ def main():
                 project_scipy(s, period, q, args.threads, per_piece, steps))
     assert baselines, "no baseline reached karkas's accuracy"
 
+    occ = occ_curve(*curve.to_bspline()) if args.occ_points > 0 else None
+    if occ is not None:
+        gp = np.array([[occ.Value(float(x)).X(), occ.Value(float(x)).Y()] for x in check])
+        assert np.abs(gp - curve(check)).max() < 1e-12, "the Open CASCADE curve differs"
+        occ_m = min(args.occ_points, n)
+        _, do = project_occ(occ, q[:occ_m])
+        diff = np.abs(dk[:occ_m] - do).max()
+        print(f"Open CASCADE on {occ_m} points: max |distance difference| {diff:.1e}; karkas farther "
+              f"in {int(np.sum(dk[:occ_m] > do + 1e-12))}, OCC farther in {int(np.sum(do > dk[:occ_m] + 1e-12))}")
+        assert not np.any(dk[:occ_m] > do + 1e-9), "karkas missed a point Open CASCADE found nearer"
+
     t1s = rng.uniform(0.0, period, n)
     lk = curve.arc_length(0.0, t1s, tol=1e-10)
     lb = lengths_scipy(s, t1s)
@@ -137,6 +193,10 @@ def main():
     )
     for name, m in medians.items():
         print(f"{name:28s} {m * 1e3:9.1f} ms")
+    if occ is not None:
+        per_point = timed({"occ": lambda: project_occ(occ, q[:occ_m])}, 3)["occ"] / occ_m
+        print(f"{'Open CASCADE project':28s} {per_point * n * 1e3:9.1f} ms (per point x {n}, "
+              f"from {occ_m} points, one thread) = {per_point * n / medians['karkas project']:.1f}x karkas")
     fastest = min(baselines, key=lambda name: medians[name])
     print(f"projection: fastest equal-accuracy baseline ({fastest}) / karkas = "
           f"{medians[fastest] / medians['karkas project']:.2f}x ({args.threads} thread(s))")

@@ -22,10 +22,14 @@
 //! Parameters stay in the domain: clamped on an open curve (the foot may be an end), wrapped
 //! on a closed one. Ties (a point at the centre of a circle) resolve to the first
 //! segment searched.
+//!
+//! A batch of 4096 points or more (`CurveProjector::nearest_all`) on a piecewise
+//! polynomial curve shares this work by grid cells (`nearest_grid`): one search per
+//! cell proves that the distance has a single local minimum on a run of segments for every
+//! point of the cell, and each point then takes one Newton solve on one segment's polynomial.
 
 use kiddo::immutable::float::kdtree::ImmutableKdTree;
 use kiddo::SquaredEuclidean;
-use rayon::prelude::*;
 
 use super::arc_length::piece_length;
 use crate::core::Curve;
@@ -48,8 +52,6 @@ const LEFT_LIMIT: f64 = 1e-9;
 /// Parts a segment is split into when it may hold a minimum with no sign change of `g`
 /// across it.
 const FINE_PARTS: usize = 8;
-/// Batches at least this large are projected in parallel.
-const PARALLEL_BATCH: usize = 256;
 
 /// The point of a curve nearest to a query point (kurbo's `Nearest`, with the foot point).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -87,11 +89,11 @@ impl<const D: usize> CurveNearest<D> {
 /// assert!((near.point[0] - 1.5).abs() < 1e-12);
 /// ```
 pub struct CurveProjector<'a, C: ?Sized, const D: usize> {
-    curve: &'a C,
+    pub(super) curve: &'a C,
     /// Vertex parameters `t_0 < .. < t_n` (`t_n` the domain end; on a closed curve vertex
     /// `n` is vertex 0 and is not in the tree).
-    params: Vec<f64>,
-    points: Vec<Point<D>>,
+    pub(super) params: Vec<f64>,
+    pub(super) points: Vec<Point<D>>,
     tree: ImmutableKdTree<f64, u64, D, 16>,
     /// Tangents at the start of every segment, `P'(t_j)` (from the right).
     starts: Vec<Point<D>>,
@@ -101,9 +103,9 @@ pub struct CurveProjector<'a, C: ?Sized, const D: usize> {
     /// How far each segment strays from its chord at most (see [`Self::lower_bound`]).
     widths: Vec<f64>,
     /// The largest half arc length of a segment (with a safety margin).
-    reach: f64,
-    accuracy: f64,
-    closed: bool,
+    pub(super) reach: f64,
+    pub(super) accuracy: f64,
+    pub(super) closed: bool,
 }
 
 impl<'a, C: Curve<D> + ?Sized, const D: usize> CurveProjector<'a, C, D> {
@@ -248,7 +250,7 @@ impl<'a, C: Curve<D> + ?Sized, const D: usize> CurveProjector<'a, C, D> {
     }
 
     /// The segments that end at vertex `i` (the one before it and the one after it).
-    fn segments_at(&self, i: usize) -> [Option<usize>; 2] {
+    pub(super) fn segments_at(&self, i: usize) -> [Option<usize>; 2] {
         let segments = self.params.len() - 1;
         let before = if i > 0 {
             Some(i - 1)
@@ -265,7 +267,7 @@ impl<'a, C: Curve<D> + ?Sized, const D: usize> CurveProjector<'a, C, D> {
     /// chord `c`, arc length `l`) lies in the ellipse of foci `a`, `b` and major axis `l`,
     /// whose points are within its semi-minor axis `h = sqrt(l^2 - c^2) / 2` of the chord
     /// `[a, b]`; so the distance is at least `dist(q, [a, b]) - h`.
-    fn lower_bound(&self, q: Point<D>, j: usize) -> f64 {
+    pub(super) fn lower_bound(&self, q: Point<D>, j: usize) -> f64 {
         let (a, b) = (self.points[j], self.points[j + 1]);
         let (ab, aq) = (b - a, q - a);
         let c2 = ab.norm_sq();
@@ -277,16 +279,16 @@ impl<'a, C: Curve<D> + ?Sized, const D: usize> CurveProjector<'a, C, D> {
         (aq - ab * s).norm() - self.widths[j]
     }
 
-    /// The nearest points to every point of `qs` (in parallel for large batches).
-    pub fn nearest_all(&self, qs: &[Point<D>]) -> Vec<CurveNearest<D>>
-    where
-        C: Sync,
-    {
-        if qs.len() < PARALLEL_BATCH {
-            qs.iter().map(|&q| self.nearest(q)).collect()
-        } else {
-            qs.par_iter().map(|&q| self.nearest(q)).collect()
-        }
+    /// The polyline vertices within `radius` of `q` (closed curves: vertex 0 stands for the
+    /// last one too).
+    pub(super) fn vertices_within(&self, q: Point<D>, radius: f64) -> Vec<usize> {
+        let segments = self.params.len() - 1;
+        let vertices = if self.closed { segments } else { segments + 1 };
+        self.tree
+            .within_unsorted::<SquaredEuclidean>(&q.0, radius * radius)
+            .into_iter()
+            .map(|found| (found.item as usize).min(vertices - 1))
+            .collect()
     }
 
     /// The best of the ends of segment `j` and the minima of the squared distance inside it,
@@ -335,53 +337,66 @@ impl<'a, C: Curve<D> + ?Sized, const D: usize> CurveProjector<'a, C, D> {
 
     /// The root of `g` in `(lo, hi)` with `g(lo) < 0 < g(hi)`: Newton from `start` safeguarded
     /// by bisection.
-    fn newton_root(&self, q: Point<D>, mut lo: f64, mut hi: f64, start: f64) -> f64 {
-        let mut t = if start > lo && start < hi {
-            start
-        } else {
-            0.5 * (lo + hi)
-        };
+    fn newton_root(&self, q: Point<D>, lo: f64, hi: f64, start: f64) -> f64 {
         let floor = 4.0 * f64::EPSILON * (lo.abs().max(hi.abs()));
-        let tolerance = self.accuracy.max(floor);
-        for _ in 0..MAX_STEPS {
+        bracketed_newton(lo, hi, start, self.accuracy.max(floor), floor, |t| {
             let [p, d1, d2] = self.curve.eval_with_derivatives(t);
             let r = p - q;
-            let g = r.dot(d1);
-            if g == 0.0 {
-                return t;
-            }
-            if g < 0.0 {
-                lo = t;
-            } else {
-                hi = t;
-            }
-            let slope = d1.norm_sq() + r.dot(d2);
-            let newton = t - g / slope;
-            if slope > 0.0 && (newton - t).abs() <= tolerance {
-                // Converged: the step is below the tolerance (Newton landing on `t` itself,
-                // a bracket end, must not fall back to bisection).
-                return newton.clamp(lo, hi);
-            }
-            let next = if slope > 0.0 && newton > lo && newton < hi {
-                newton
-            } else {
-                0.5 * (lo + hi)
-            };
-            t = next;
-            if hi - lo <= floor {
-                break;
-            }
-        }
-        t
+            (r.dot(d1), d1.norm_sq() + r.dot(d2))
+        })
     }
 
-    fn result(&self, t: f64, p: Point<D>, q: Point<D>) -> CurveNearest<D> {
+    pub(super) fn result(&self, t: f64, p: Point<D>, q: Point<D>) -> CurveNearest<D> {
         CurveNearest {
             t,
             distance: p.distance(q),
             point: p,
         }
     }
+}
+
+/// The root of a function `g` with `g(lo) < 0 < g(hi)` (`step(t)` gives `g(t)` and its
+/// slope): Newton's method from `start`, a bisection whenever Newton leaves the bracket or the
+/// slope is not positive, until a step is below `tolerance` or the bracket below `floor`.
+pub(super) fn bracketed_newton(
+    mut lo: f64,
+    mut hi: f64,
+    start: f64,
+    tolerance: f64,
+    floor: f64,
+    mut step: impl FnMut(f64) -> (f64, f64),
+) -> f64 {
+    let mut t = if start > lo && start < hi {
+        start
+    } else {
+        0.5 * (lo + hi)
+    };
+    for _ in 0..MAX_STEPS {
+        let (g, slope) = step(t);
+        if g == 0.0 {
+            return t;
+        }
+        if g < 0.0 {
+            lo = t;
+        } else {
+            hi = t;
+        }
+        let newton = t - g / slope;
+        if slope > 0.0 && (newton - t).abs() <= tolerance {
+            // Converged: the step is below the tolerance (Newton landing on `t` itself, a
+            // bracket end, must not fall back to bisection).
+            return newton.clamp(lo, hi);
+        }
+        t = if slope > 0.0 && newton > lo && newton < hi {
+            newton
+        } else {
+            0.5 * (lo + hi)
+        };
+        if hi - lo <= floor {
+            break;
+        }
+    }
+    t
 }
 
 /// The vertex parameters of the polyline: a few per polynomial piece.

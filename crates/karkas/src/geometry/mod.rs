@@ -16,7 +16,9 @@
 //!   `∫ (dκ/ds)^2 ds`).
 //! - [`curve_nearest`]: the globally nearest point of a curve: candidates from a sampled
 //!   polyline in a k-d tree (the `kiddo` crate), refined by safeguarded Newton on
-//!   `(P(t) - q) . P'(t) = 0` per candidate segment.
+//!   `(P(t) - q) . P'(t) = 0` per candidate segment; large batches share one proof per cell
+//!   of a grid (`nearest_grid`: a run of segments on which the squared distance is convex
+//!   for the whole cell, bounded by `segment_polynomials`).
 //! - [`surface_frame`]: the unit normal and the principal curvatures and directions from the
 //!   first and second fundamental forms.
 //! - [`surface_nearest`]: the globally nearest point of a surface, candidates from a sampled
@@ -31,8 +33,10 @@ pub mod curve_nearest;
 pub mod fairness;
 #[cfg(test)]
 mod fairness_tests;
+mod nearest_grid;
 mod polygon_distance;
 mod quadrature;
+mod segment_polynomials;
 mod sign_changes;
 pub mod surface_frame;
 pub mod surface_nearest;

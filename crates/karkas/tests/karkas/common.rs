@@ -118,3 +118,28 @@ impl Rng {
         (0..count).map(|_| self.point()).collect()
     }
 }
+
+/// The nearest distance by sampling `n` parameters and refining the best by golden section.
+pub fn nearest_by_sampling<C: karkas::Curve<2>>(c: &C, q: karkas::Point2, n: usize) -> f64 {
+    let d = c.domain();
+    let mut best = (f64::INFINITY, 0.0);
+    for k in 0..=n {
+        let t = d.start + d.length() * k as f64 / n as f64;
+        let dist = c.eval(t).distance(q);
+        if dist < best.0 {
+            best = (dist, t);
+        }
+    }
+    let h = d.length() / n as f64;
+    let (mut lo, mut hi) = ((best.1 - h).max(d.start), (best.1 + h).min(d.end));
+    let g = 0.5 * (5f64.sqrt() - 1.0);
+    for _ in 0..200 {
+        let (x1, x2) = (hi - g * (hi - lo), lo + g * (hi - lo));
+        if c.eval(x1).distance(q) < c.eval(x2).distance(q) {
+            hi = x2;
+        } else {
+            lo = x1;
+        }
+    }
+    best.0.min(c.eval(0.5 * (lo + hi)).distance(q))
+}

@@ -12,6 +12,8 @@ use karkas::geometry::{arc_length, ArcLengthTable, CurveGeometry, CurveProjector
 use karkas::param::{CubicSpline, CurveParameterization, SplineEnds};
 use karkas::{Curve, Point2};
 
+use crate::common::nearest_by_sampling;
+
 /// The not-a-knot cubic spline through `f` at the parameters `ts`: exactly the cubic `f`.
 fn cubic_through(ts: &[f64], f: impl Fn(f64) -> Point2) -> CubicSpline<2> {
     let pts: Vec<Point2> = ts.iter().map(|&t| f(t)).collect();
@@ -162,31 +164,6 @@ fn table_nan(c: &CubicSpline<2>) -> bool {
     table.arc_length(c, f64::NAN, 1.0).is_nan() && table.inverse(c, 0.0, f64::NAN).is_nan()
 }
 
-/// The nearest distance by sampling `n` parameters and refining the best by golden section.
-fn brute_force<C: Curve<2>>(c: &C, q: Point2, n: usize) -> f64 {
-    let d = c.domain();
-    let mut best = (f64::INFINITY, 0.0);
-    for k in 0..=n {
-        let t = d.start + d.length() * k as f64 / n as f64;
-        let dist = c.eval(t).distance(q);
-        if dist < best.0 {
-            best = (dist, t);
-        }
-    }
-    let h = d.length() / n as f64;
-    let (mut lo, mut hi) = ((best.1 - h).max(d.start), (best.1 + h).min(d.end));
-    let g = 0.5 * (5f64.sqrt() - 1.0);
-    for _ in 0..200 {
-        let (x1, x2) = (hi - g * (hi - lo), lo + g * (hi - lo));
-        if c.eval(x1).distance(q) < c.eval(x2).distance(q) {
-            hi = x2;
-        } else {
-            lo = x1;
-        }
-    }
-    best.0.min(c.eval(0.5 * (lo + hi)).distance(q))
-}
-
 #[test]
 fn projection_near_a_cusp_is_global() {
     let c = cusp();
@@ -204,7 +181,7 @@ fn projection_near_a_cusp_is_global() {
     ];
     for q in queries {
         let near = projector.nearest(q);
-        let reference = brute_force(&c, q, 200_000);
+        let reference = nearest_by_sampling(&c, q, 200_000);
         assert!(
             near.distance <= reference + 1e-12,
             "{q:?}: {} vs {reference}",
@@ -238,7 +215,7 @@ fn projection_onto_the_far_side_of_closed_curves_is_global() {
         );
         let q = Point2::new([x, y]);
         let near = projector.nearest(q);
-        let reference = brute_force(&c, q, 100_000);
+        let reference = nearest_by_sampling(&c, q, 100_000);
         assert!(
             near.distance <= reference + 1e-12,
             "{q:?}: {} vs {reference}",

@@ -25,6 +25,7 @@ mod fit_optimality;
 mod fit_parallel;
 mod geometry;
 mod geometry_batch;
+mod geometry_nearest_batch;
 mod ll_curve;
 mod ll_curve_closed;
 mod ll_curve_interp;
