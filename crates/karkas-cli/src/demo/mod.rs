@@ -152,6 +152,14 @@ const STEPS: [Step; 9] = [
     },
 ];
 
+/// The browser workbench (`web/`): one self-contained page, the library compiled to
+/// WebAssembly inside it. It is embedded as built (`python3 web/build.py --install`, which CI
+/// checks against its sources) rather than built by `build.rs`, so that building the command
+/// line needs neither the WebAssembly target nor `wasm-bindgen`.
+const WORKBENCH: &str = include_str!("../../../../web/dist/karkas-workbench.html");
+/// Its file name in the demo's folder.
+pub const WORKBENCH_FILE: &str = "karkas-workbench.html";
+
 /// The memory the demo needs at most: its largest picture (the aircraft rendered to PNG, its
 /// pixels and renderer's tree) with the data of its examples, measured on the release build
 /// (the aircraft picture is estimated at 73 MiB) and rounded up.
@@ -192,6 +200,7 @@ pub fn run(args: &DemoArgs) -> Result<()> {
     let seconds = started.elapsed().as_secs_f64();
     report::write_json(&out.file("report.json"), &outcomes, seconds)?;
     report::write_html(&out.file("index.html"), &outcomes, seconds)?;
+    common::write_text(&out.file(WORKBENCH_FILE), WORKBENCH)?;
     bar.finish_and_clear();
     let summary = summary(&outcomes, &args.out, started.elapsed().as_secs_f64());
     // An error (a closed pipe) is returned rather than a panic.
@@ -226,9 +235,10 @@ fn summary(outcomes: &[ExampleOutcome], out: &Path, seconds: f64) -> String {
     let files: usize = outcomes.iter().map(|o| o.files.len()).sum();
     let _ = writeln!(
         text,
-        "{} examples, {files} files; report: {}; {seconds:.2} s",
+        "{} examples, {files} files; report: {}; workbench: {}; {seconds:.2} s",
         outcomes.len(),
-        out.join("index.html").display()
+        out.join("index.html").display(),
+        out.join(WORKBENCH_FILE).display()
     );
     text
 }

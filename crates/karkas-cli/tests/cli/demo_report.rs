@@ -78,6 +78,23 @@ fn demo_writes_a_complete_report() {
         assert!(html.contains(&format!("id=\"seed-{seed}\"")), "seed {seed}");
     }
     assert!(html.contains("report.json"));
+
+    // The browser workbench: the page web/build.py built, with its WebAssembly inlined.
+    let workbench = std::fs::read_to_string(out.join("karkas-workbench.html")).unwrap();
+    let built = include_str!("../../../../web/dist/karkas-workbench.html");
+    assert_eq!(workbench, built);
+    assert!(workbench.contains(r#"<meta name="karkas-sources" content=""#));
+    let wasm = workbench
+        .split(r#"<script id="karkas-wasm" type="application/octet-stream">"#)
+        .nth(1)
+        .and_then(|rest| rest.split("</script>").next())
+        .unwrap();
+    // Base64 of a WebAssembly module starts with its magic number, "\0asm".
+    assert!(
+        wasm.starts_with("AGFzbQ"),
+        "{}",
+        &wasm[..20.min(wasm.len())]
+    );
 }
 
 #[test]

@@ -1,10 +1,11 @@
 //! The exact B-spline forms of curves and surfaces as STEP or IGES, and of curves as DXF
 //! (with their input points).
 
-use crate::cad::dxf::{write_dxf, DxfCurve};
+use crate::cad::dxf::{dxf_text, DxfCurve};
 use crate::cad::{curve_in_space, CadEntity, CadError};
-use crate::iges::write_iges;
-use crate::step::write_step;
+use crate::iges::iges_text;
+use crate::step::step_text;
+use crate::write::write_atomic;
 use crate::{GeometryError, IoError, OutputFormat};
 use karkas::bspline::{BSplineCurve, BSplineSurface};
 use karkas::{Curve, Point, Point3};
@@ -32,23 +33,59 @@ pub fn write_cad_curve_with_points<const D: usize>(
     what: &Path,
 ) -> Result<BSplineCurve<3>, IoError> {
     let format = format.allowed_for(output, &OutputFormat::CURVE_CAD)?;
+    let (text, spatial) = cad_curve_text(bspline, points, format, file_name(output), what)?;
+    write_atomic(output, |out| out.write_all(text.as_bytes()))?;
+    Ok(spatial)
+}
+
+/// The text of the file [`write_cad_curve_with_points`] writes for a file whose stem is
+/// `name` (STEP and IGES name the product after it), and the curve in space: what a page or a
+/// program holding no files exports, byte for byte the command line's file. `format` is STEP,
+/// IGES or DXF.
+pub fn cad_curve_text<const D: usize>(
+    bspline: &BSplineCurve<D>,
+    points: &[Point<D>],
+    format: OutputFormat,
+    name: &str,
+    what: &Path,
+) -> Result<(String, BSplineCurve<3>), IoError> {
     let spatial = curve_in_space(bspline).map_err(|e| match e {
         CadError::Geometry(source) => geometry(what, source),
         other => crate::error::data_error(what, other.to_string()),
     })?;
-    if format == OutputFormat::Dxf {
-        let points: Vec<Point3> = points.iter().map(in_space).collect();
-        let drawing = DxfCurve {
-            spline: &spatial,
-            closed: bspline.is_closed() || ends_meet(&spatial),
-            planar: D < 3,
-            points: &points,
-        };
-        write_dxf(output, &drawing)?;
-    } else {
-        write_cad(&[CadEntity::Curve(&spatial)], format, output)?;
+    let entities = [CadEntity::Curve(&spatial)];
+    let text = match format {
+        OutputFormat::Dxf => {
+            let points: Vec<Point3> = points.iter().map(in_space).collect();
+            dxf_text(&DxfCurve {
+                spline: &spatial,
+                closed: bspline.is_closed() || ends_meet(&spatial),
+                planar: D < 3,
+                points: &points,
+            })
+        }
+        OutputFormat::Iges => iges_text(&entities, name),
+        _ => step_text(&entities, name),
+    };
+    Ok((text, spatial))
+}
+
+/// The text of the STEP or IGES file (by `format`) of the B-spline surface `bspline`, the
+/// product named `name`: byte for byte what [`write_cad_surface`] writes to a file of that
+/// stem.
+pub fn cad_surface_text(bspline: &BSplineSurface<3>, format: OutputFormat, name: &str) -> String {
+    let entities = [CadEntity::Surface(bspline)];
+    match format {
+        OutputFormat::Iges => iges_text(&entities, name),
+        _ => step_text(&entities, name),
     }
-    Ok(spatial)
+}
+
+/// The stem of `path` as STEP and IGES name their product ("karkas" when it has none).
+fn file_name(path: &Path) -> &str {
+    path.file_stem()
+        .and_then(|s| s.to_str())
+        .unwrap_or("karkas")
 }
 
 /// `p` in space (missing coordinates 0, as [`curve_in_space`] places a curve).
@@ -78,7 +115,8 @@ pub fn write_cad_surface(
     output: &Path,
 ) -> Result<(), IoError> {
     let format = format.allowed_for(output, &OutputFormat::CAD)?;
-    write_cad(&[CadEntity::Surface(bspline)], format, output)
+    let text = cad_surface_text(bspline, format, file_name(output));
+    write_atomic(output, |out| out.write_all(text.as_bytes()))
 }
 
 /// The library's error `source` about the input `what`.
@@ -87,17 +125,6 @@ pub fn geometry(what: &Path, source: karkas::Error) -> IoError {
         path: what.to_path_buf(),
         source,
     }))
-}
-
-fn write_cad(
-    entities: &[CadEntity<'_>],
-    format: OutputFormat,
-    output: &Path,
-) -> Result<(), IoError> {
-    match format {
-        OutputFormat::Iges => write_iges(output, entities),
-        _ => write_step(output, entities),
-    }
 }
 
 /// The message refusing STEP, IGES and DXF for the discrete periodic splines: they are point

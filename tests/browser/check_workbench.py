@@ -1,0 +1,192 @@
+#!/usr/bin/env python3
+"""Drive the karkas workbench page in headless Chromium as a designer would, and compare what
+it exports with the command line's files for the same points and options.
+
+1. Opens the page from disk; no console error, page error or network request at any step.
+2. Picks the shipped airfoil with the file picker; LL (order 3), the cubic spline and the fit
+   are drawn, with a curvature plot.
+3. Drags a point with the mouse: the point, every curve and the curvature plot change.
+4. Exports STEP, IGES and DXF of the LL curve and the dragged points; `karkas curve ll
+   --order 3` on those points writes the same bytes (the time stamp of FILE_NAME aside).
+5. Loads a damaged airfoil: the error is the command line's, beside the offending line.
+6. Loads the shipped grid: the LL surface in 3-D with a section; its STEP equals
+   `karkas surface ll --order 3`'s. Then a curve network of two files: the Gordon surface,
+   its STEP equal to `karkas surface coons --kind gordon`'s.
+7. Keeps a screenshot (--screenshot).
+
+Usage: check_workbench.py PAGE --karkas BIN [--screenshot OUT.png]
+Needs Python Playwright, Pillow and NumPy, and the system Chromium (/usr/bin/chromium or
+$CHROMIUM); Playwright never downloads a browser here.
+"""
+import argparse
+import io
+import pathlib
+import re
+import subprocess
+import sys
+import tempfile
+
+import numpy
+from PIL import Image
+from playwright.sync_api import sync_playwright
+
+from check_page import ARGS, CHROMIUM
+
+ROOT = pathlib.Path(__file__).resolve().parent.parent.parent
+AIRFOIL = ROOT / "data" / "batch-foils" / "foil-00000.dat"
+DAMAGED = ROOT / "data" / "batch-foils" / "damaged-002.dat"
+GRID = ROOT / "data" / "aircraft-15x31.csv"
+
+
+def without_time_stamp(step):
+    """STEP text with the time stamp (FILE_NAME's second field) blanked."""
+    return re.sub(r"FILE_NAME\('((?:[^']|'')*)','[^']*'", r"FILE_NAME('\1',''", step)
+
+
+def network():
+    """A curve network on z = 0.2 sin(3x) cos(2y): u-curves y = 0, 0.5, 1 and v-curves
+    x = 0, 0.5, 1, five points each, crossing at shared points (CSV curve,x,y,z)."""
+    z = lambda x, y: 0.2 * numpy.sin(3 * x) * numpy.cos(2 * y)
+    ts = [0.0, 0.25, 0.5, 0.75, 1.0]
+    u = ["curve,x,y,z"] + [f"{k},{x},{c},{float(z(x, c))!r}" for k, c in enumerate([0.0, 0.5, 1.0]) for x in ts]
+    v = ["curve,x,y,z"] + [f"{k},{c},{y},{float(z(c, y))!r}" for k, c in enumerate([0.0, 0.5, 1.0]) for y in ts]
+    return "\n".join(u) + "\n", "\n".join(v) + "\n"
+
+
+def element_pixels(page, testid):
+    png = page.locator(f'[data-testid="{testid}"]').screenshot()
+    return numpy.asarray(Image.open(io.BytesIO(png)).convert("L")).astype(int)
+
+
+def cli_text(karkas, args, points_text, name, ext, work):
+    source = work / f"{name}.input.csv"
+    source.write_text(points_text)
+    out = work / f"{name}.{ext}"
+    if out.exists():
+        out.unlink()
+    subprocess.run([karkas, *args, str(source), "-o", str(out)], check=True,
+                   capture_output=True)
+    return out.read_text()
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("page")
+    ap.add_argument("--karkas", required=True)
+    ap.add_argument("--screenshot")
+    args = ap.parse_args()
+    problems = []
+
+    def check(ok, what):
+        if not ok:
+            problems.append(what)
+        return ok
+
+    work = pathlib.Path(tempfile.mkdtemp())
+    with sync_playwright() as p:
+        browser = p.chromium.launch(executable_path=CHROMIUM, headless=True, args=ARGS)
+        page = browser.new_page(viewport={"width": 1280, "height": 800})
+        page.on("console", lambda m: m.type == "error" and problems.append(f"console error: {m.text}"))
+        page.on("pageerror", lambda e: problems.append(f"page error: {e}"))
+        page.route("http://*/**", lambda r: (problems.append(f"network request: {r.request.url}"), r.abort()))
+        page.route("https://*/**", lambda r: (problems.append(f"network request: {r.request.url}"), r.abort()))
+        page.goto(pathlib.Path(args.page).resolve().as_uri(), wait_until="load")
+        page.evaluate("window.karkasWorkbench.ready")
+
+        # 2. The shipped airfoil through the file picker.
+        page.set_input_files('[data-testid="file"]', str(AIRFOIL))
+        page.wait_for_function(f"window.karkasWorkbench.state().name === '{AIRFOIL.name}'")
+        page.evaluate("""() => { const w = window.karkasWorkbench;
+            w.setOption('order', 3); w.setOption('method-ll', true);
+            w.setOption('method-spline', true); w.setOption('method-fit', true); }""")
+        state = page.evaluate("window.karkasWorkbench.state()")
+        check(state["errors"] == [], f"errors on the airfoil: {state['errors']}")
+        before = page.evaluate("window.karkasWorkbench.curves()")
+        check(set(before) >= {"ll", "spline", "fit"}, f"curves drawn: {sorted(before)}")
+        plot_before = element_pixels(page, "curvature-plot")
+
+        # 3. Drag point 20 with the mouse.
+        x, y = page.evaluate("window.karkasWorkbench.pointOnScreen(20)")
+        page.mouse.move(x, y)
+        page.mouse.down()
+        page.mouse.move(x + 12, y - 25, steps=6)
+        page.mouse.up()
+        after = page.evaluate("window.karkasWorkbench.curves()")
+        for method in ("ll", "spline", "fit"):
+            a, b = numpy.array(before[method]["points"]), numpy.array(after[method]["points"])
+            check(a.shape == b.shape and numpy.abs(a - b).max() > 1e-4,
+                  f"{method}: the curve did not change with the drag")
+            ka, kb = numpy.array(before[method]["curvature"]), numpy.array(after[method]["curvature"])
+            check(ka.shape != kb.shape or numpy.abs(ka - kb).max() > 1e-6,
+                  f"{method}: the curvature did not change with the drag")
+        plot_after = element_pixels(page, "curvature-plot")
+        check(plot_before.shape == plot_after.shape and (plot_before != plot_after).mean() > 1e-3,
+              "the curvature plot did not change with the drag")
+        moved_x, moved_y = page.evaluate("window.karkasWorkbench.pointOnScreen(20)")
+        check(abs(moved_x - (x + 12)) < 1.5 and abs(moved_y - (y - 25)) < 1.5,
+              f"point 20 is at {moved_x:.1f},{moved_y:.1f}, not where it was dragged")
+
+        # 4. Exports against the command line, on the dragged points.
+        points = page.evaluate("window.karkasWorkbench.export('points')")
+        stem = AIRFOIL.stem
+        for ext in ("step", "iges", "dxf"):
+            from_page = page.evaluate(f"window.karkasWorkbench.export('{ext}')")
+            from_cli = cli_text(args.karkas, ["curve", "ll", "--order", "3"], points, stem, ext, work)
+            if ext == "step":
+                from_page, from_cli = without_time_stamp(from_page), without_time_stamp(from_cli)
+            check(from_page == from_cli, f"{ext.upper()} from the page differs from the command line's")
+        if args.screenshot:
+            page.screenshot(path=args.screenshot)
+
+        # 5. A damaged airfoil: the command line's words beside the line.
+        page.set_input_files('[data-testid="file"]', str(DAMAGED))
+        page.wait_for_timeout(300)
+        cli = subprocess.run([args.karkas, "curve", "ll", str(DAMAGED), "-o", str(work / "x.csv")],
+                             capture_output=True, text=True)
+        shown = page.locator('[data-testid="errors"]').inner_text()
+        cli_message = cli.stderr.strip().replace(str(DAMAGED), DAMAGED.name)
+        check(cli.returncode == 2 and shown.strip() == cli_message,
+              f"damaged file: page says {shown!r}, the command line {cli_message!r}")
+        check(page.locator('[data-testid="input-lines"] .bad').count() == 1,
+              "damaged file: the offending line is not marked")
+
+        # 6. The shipped grid: a surface with a section; STEP as the command line's.
+        page.set_input_files('[data-testid="file"]', str(GRID))
+        page.wait_for_function(f"window.karkasWorkbench.state().name === '{GRID.name}'")
+        page.evaluate("window.karkasWorkbench.setOption('section', 0.4)")
+        state = page.evaluate("window.karkasWorkbench.state()")
+        check(state["kind"] == "grid" and state["errors"] == [], f"grid: {state}")
+        check(state["sectionSegments"] > 10, f"grid: the section has {state['sectionSegments']} segments")
+        check(page.locator('[data-testid="view3d"]').is_visible(), "grid: no 3-D view")
+        from_page = without_time_stamp(page.evaluate("window.karkasWorkbench.export('step')"))
+        from_cli = without_time_stamp(
+            cli_text(args.karkas, ["surface", "ll", "--order", "3"], GRID.read_text(), GRID.stem, "step", work))
+        check(from_page == from_cli, "surface STEP from the page differs from the command line's")
+
+        # A curve network (two files): the Gordon surface, as `karkas surface coons --kind gordon`.
+        u_text, v_text = network()
+        (work / "u.csv").write_text(u_text)
+        (work / "v.csv").write_text(v_text)
+        page.set_input_files('[data-testid="file"]', [str(work / "u.csv"), str(work / "v.csv")])
+        page.wait_for_function("window.karkasWorkbench.state().kind === 'network'")
+        state = page.evaluate("window.karkasWorkbench.state()")
+        check(state["errors"] == [] and state["sectionSegments"] > 10, f"network: {state}")
+        from_page = without_time_stamp(page.evaluate("window.karkasWorkbench.export('step')"))
+        subprocess.run([args.karkas, "surface", "coons", "--kind", "gordon", "--u-curves",
+                        str(work / "u.csv"), "--v-curves", str(work / "v.csv"), "-o",
+                        str(work / "u.step")], check=True, capture_output=True)
+        from_cli = without_time_stamp((work / "u.step").read_text())
+        check(from_page == from_cli, "network STEP from the page differs from the command line's")
+        browser.close()
+
+    for line in problems:
+        print(f"check_workbench: {line}")
+    if not problems:
+        print("check_workbench: ok (airfoil loaded, dragged, curves and curvature plot changed; "
+              "STEP, IGES and DXF equal the command line's; errors as the command line's; "
+              "surface with a section)")
+    return 1 if problems else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
