@@ -34,9 +34,11 @@ DEMO = {
 
 
 def tracked(folder):
-    """The files of `folder` that git tracks (all of them outside a git work tree)."""
+    """The files of `folder` that git tracks or would (not ignored): the same before and after
+    they are added; all of them outside a git work tree."""
     try:
-        names = subprocess.run(["git", "ls-files", "-z", folder], cwd=ROOT, check=True,
+        names = subprocess.run(["git", "ls-files", "-z", "--cached", "--others",
+                                "--exclude-standard", folder], cwd=ROOT, check=True,
                                capture_output=True).stdout.decode().split("\0")
         return [ROOT / n for n in names if n]
     except (OSError, subprocess.CalledProcessError):
@@ -51,7 +53,7 @@ def sources():
     files += [WEB / "workbench.html", WEB / "workbench.js", WEB / "build.py", ROOT / "Cargo.lock"]
     files += [THREE / "three.module.min.js", THREE / "OrbitControls.js"]
     files += list(DEMO.values())
-    return sorted(set(files))
+    return sorted(p for p in set(files) if p.is_file())
 
 
 def sources_hash():

@@ -6,11 +6,13 @@ it exports with the command line's files for the same points and options.
 2. Picks the shipped airfoil with the file picker; LL (order 3), the cubic spline and the fit
    are drawn, with a curvature plot.
 3. Drags a point with the mouse: the point, every curve and the curvature plot change.
-4. Exports STEP, IGES and DXF of the LL curve and the dragged points; `karkas curve ll
-   --order 3` on those points writes the same bytes (the time stamp of FILE_NAME aside).
+4. Exports STEP, IGES, DXF and CSV of the LL curve and the dragged points; `karkas curve ll
+   --order 3` on those points writes the same bytes (the time stamp of FILE_NAME aside); the
+   SVG is a picture.
 5. Loads a damaged airfoil: the error is the command line's, beside the offending line.
-6. Loads the shipped grid: the LL surface in 3-D with a section; its STEP equals
-   `karkas surface ll --order 3`'s. Then a curve network of two files: the Gordon surface,
+   Drops the shipped contour on the page: it loads.
+6. Loads the shipped grid: the LL surface in 3-D with a section; its STEP and OBJ equal
+   `karkas surface ll --order 3`'s, its STL is a mesh. Then a curve network of two files: the Gordon surface,
    its STEP equal to `karkas surface coons --kind gordon`'s.
 7. Keeps a screenshot (--screenshot).
 
@@ -25,6 +27,7 @@ import re
 import subprocess
 import sys
 import tempfile
+import xml.etree.ElementTree
 
 import numpy
 from PIL import Image
@@ -129,12 +132,18 @@ def main():
         # 4. Exports against the command line, on the dragged points.
         points = page.evaluate("window.karkasWorkbench.export('points')")
         stem = AIRFOIL.stem
-        for ext in ("step", "iges", "dxf"):
+        for ext in ("step", "iges", "dxf", "csv"):
             from_page = page.evaluate(f"window.karkasWorkbench.export('{ext}')")
             from_cli = cli_text(args.karkas, ["curve", "ll", "--order", "3"], points, stem, ext, work)
             if ext == "step":
                 from_page, from_cli = without_time_stamp(from_page), without_time_stamp(from_cli)
             check(from_page == from_cli, f"{ext.upper()} from the page differs from the command line's")
+        svg = page.evaluate("window.karkasWorkbench.export('svg')")
+        try:
+            root = xml.etree.ElementTree.fromstring(svg)
+            check(root.tag.endswith("svg") and len(list(root.iter())) > 10, "the SVG export is empty")
+        except xml.etree.ElementTree.ParseError as e:
+            check(False, f"the SVG export is not XML: {e}")
         if args.screenshot:
             page.screenshot(path=args.screenshot)
 
@@ -150,6 +159,17 @@ def main():
         check(page.locator('[data-testid="input-lines"] .bad').count() == 1,
               "damaged file: the offending line is not marked")
 
+        # A file dropped on the page: the shipped contour.
+        contour = ROOT / "data" / "contour-53.csv"
+        page.evaluate("""([text, name]) => {
+            const data = new DataTransfer();
+            data.items.add(new File([text], name, { type: 'text/csv' }));
+            document.body.dispatchEvent(new DragEvent('drop', { dataTransfer: data, bubbles: true }));
+        }""", [contour.read_text(), contour.name])
+        page.wait_for_function(f"window.karkasWorkbench.state().name === '{contour.name}'")
+        state = page.evaluate("window.karkasWorkbench.state()")
+        check(state["points"] == 53 and state["errors"] == [], f"dropped contour: {state}")
+
         # 6. The shipped grid: a surface with a section; STEP as the command line's.
         page.set_input_files('[data-testid="file"]', str(GRID))
         page.wait_for_function(f"window.karkasWorkbench.state().name === '{GRID.name}'")
@@ -158,10 +178,13 @@ def main():
         check(state["kind"] == "grid" and state["errors"] == [], f"grid: {state}")
         check(state["sectionSegments"] > 10, f"grid: the section has {state['sectionSegments']} segments")
         check(page.locator('[data-testid="view3d"]').is_visible(), "grid: no 3-D view")
-        from_page = without_time_stamp(page.evaluate("window.karkasWorkbench.export('step')"))
-        from_cli = without_time_stamp(
-            cli_text(args.karkas, ["surface", "ll", "--order", "3"], GRID.read_text(), GRID.stem, "step", work))
-        check(from_page == from_cli, "surface STEP from the page differs from the command line's")
+        for ext in ("step", "obj"):
+            from_page = without_time_stamp(page.evaluate(f"window.karkasWorkbench.export('{ext}')"))
+            from_cli = without_time_stamp(
+                cli_text(args.karkas, ["surface", "ll", "--order", "3"], GRID.read_text(), GRID.stem, ext, work))
+            check(from_page == from_cli, f"surface {ext.upper()} from the page differs from the command line's")
+        stl = page.evaluate("window.karkasWorkbench.export('stl')")
+        check(stl.startswith("solid") and stl.count("facet normal") > 1000, "the STL export is not a mesh")
 
         # A curve network (two files): the Gordon surface, as `karkas surface coons --kind gordon`.
         u_text, v_text = network()
@@ -183,8 +206,8 @@ def main():
         print(f"check_workbench: {line}")
     if not problems:
         print("check_workbench: ok (airfoil loaded, dragged, curves and curvature plot changed; "
-              "STEP, IGES and DXF equal the command line's; errors as the command line's; "
-              "surface with a section)")
+              "STEP, IGES, DXF, CSV, surface STEP and OBJ, network STEP equal the command line's; "
+              "errors as the command line's; surfaces with sections)")
     return 1 if problems else 0
 
 

@@ -200,15 +200,22 @@ fn collect<R: BufRead + Send, const D: usize, S: Store<D>>(
         current = 1 - current;
         after += len as u64;
         let try_fast = notes.is_none();
-        let (fast, read) = std::thread::scope(|scope| {
-            let reader = scope.spawn(|| lines.read_block(spare, block_bytes));
-            let fast = if try_fast {
+        let parse = || {
+            if try_fast {
                 fast_block::<D>(block, layout, &slot)
             } else {
                 None
-            };
-            (fast, reader.join())
-        });
+            }
+        };
+        let (fast, read) = if cfg!(target_family = "wasm") {
+            // No threads in a browser: parse, then read the next block.
+            (parse(), Ok(lines.read_block(spare, block_bytes)))
+        } else {
+            std::thread::scope(|scope| {
+                let reader = scope.spawn(|| lines.read_block(spare, block_bytes));
+                (parse(), reader.join())
+            })
+        };
         next = match read {
             Ok(read) => read?,
             Err(panic) => std::panic::resume_unwind(panic),

@@ -244,15 +244,23 @@ pub fn write_curve_csv<const D: usize>(
     points: &[Point<D>],
 ) -> Result<(), IoError> {
     check_len(path, "parameters", ts.len(), points.len())?;
+    write_atomic(path, |out| render_curve_csv(ts, points, out))
+}
+
+/// The CSV text [`write_curve_csv`] writes, into `out` (`ts` and `points` of one length;
+/// extra entries of the longer are left out).
+pub fn render_curve_csv<const D: usize>(
+    ts: &[f64],
+    points: &[Point<D>],
+    out: &mut dyn Write,
+) -> io::Result<()> {
     let mut header = vec!["t".to_owned()];
     header.extend(coordinate_names(D));
-    write_atomic(path, |out| {
-        let mut csv = CsvRows::new(out, &header)?;
-        for (&t, p) in ts.iter().zip(points) {
-            csv.row(std::iter::once(t).chain(p.0))?;
-        }
-        csv.finish()
-    })
+    let mut csv = CsvRows::new(out, &header)?;
+    for (&t, p) in ts.iter().zip(points) {
+        csv.row(std::iter::once(t).chain(p.0))?;
+    }
+    csv.finish()
 }
 
 /// Writes surface samples as CSV: header `u,v,x,y,z`, rows in row-major order of the sample

@@ -6,12 +6,17 @@
 use std::path::Path;
 
 use karkas::bspline::ToBSplineCurve;
-use karkas::fit::{fit_curve_adaptive, FitOptions, DEFAULT_FAIRNESS, DEFAULT_SMOOTHING};
+use karkas::fit::{
+    fit_curve, fit_curve_adaptive, FitOptions, StartParameters, DEFAULT_FAIRNESS, DEFAULT_SMOOTHING,
+};
 use karkas::geometry::{curvature, curvature_profile};
 use karkas::ll::LlCurve;
 use karkas::param::{CubicSpline, CurveParameterization, SplineEnds};
 use karkas::{Curve, PiecewiseCurve, Point};
 use karkas_io::export::cad::cad_curve_text;
+use karkas_io::export::curve::{render_curve_svg, CurveDrawing};
+use karkas_io::export::samples::{default_curve_samples, sample_curve};
+use karkas_io::write::render_curve_csv;
 use karkas_io::OutputFormat;
 
 /// What the page asks of a curve method (the command line's options of the same names).
@@ -33,6 +38,12 @@ pub struct CurveRequest {
     pub eps: f64,
     /// The fit's free inner knots (`--corner`).
     pub corners: Vec<f64>,
+    /// The fit's knots (`--knots`), in place of the tolerance when not empty: the page keeps
+    /// the knots of the last fit while a point is dragged.
+    pub knots: Vec<f64>,
+    /// The fit's starting parameters of the points (one each, from 0 to 1), with `knots`:
+    /// the last fit's foot parameters, a start close to the answer after a small drag.
+    pub start: Vec<f64>,
 }
 
 /// A built curve, whatever its kind and dimension.
@@ -46,14 +57,25 @@ pub trait BuiltCurve {
     fn profile(&self, per_piece: usize) -> Vec<f64>;
     /// The degree and the number of control points of the exact B-spline form.
     fn bspline_size(&self) -> (usize, usize);
+    /// The breakpoints of the curve's polynomial pieces, the domain's ends included.
+    fn breaks(&self) -> Vec<f64>;
+    /// A fit's foot parameters of the points (empty for the other methods).
+    fn parameters(&self) -> Vec<f64>;
     /// The file the command line writes for this curve in `format` (STEP, IGES, DXF) to a
     /// file of stem `name`, the input named `input`.
     fn cad(&self, format: OutputFormat, name: &str, input: &str) -> Result<String, String>;
+    /// The command line's CSV of the curve (`t,x,y[,z]`) at its default number of samples
+    /// (10 per input point, at least 200).
+    fn csv(&self) -> String;
+    /// The command line's SVG picture of the curve over its points, with the curvature comb,
+    /// titled `title`.
+    fn svg(&self, title: &str) -> Result<String, String>;
 }
 
 struct Built<C, const D: usize> {
     curve: C,
     points: Vec<Point<D>>,
+    parameters: Vec<f64>,
 }
 
 impl<C, const D: usize> BuiltCurve for Built<C, D>
@@ -81,6 +103,14 @@ where
         out
     }
 
+    fn breaks(&self) -> Vec<f64> {
+        self.curve.breakpoints()
+    }
+
+    fn parameters(&self) -> Vec<f64> {
+        self.parameters.clone()
+    }
+
     fn profile(&self, per_piece: usize) -> Vec<f64> {
         curvature_profile(&self.curve, per_piece)
             .iter()
@@ -93,6 +123,30 @@ where
             Ok(b) => (b.degree(), b.control_points().len()),
             Err(_) => (0, 0),
         }
+    }
+
+    fn csv(&self) -> String {
+        let n = default_curve_samples(self.points.len());
+        let (ts, samples) = sample_curve(&self.curve, n);
+        let mut out = Vec::new();
+        // Writing into memory cannot fail.
+        let _ = render_curve_csv(&ts, &samples, &mut out);
+        String::from_utf8_lossy(&out).into_owned()
+    }
+
+    fn svg(&self, title: &str) -> Result<String, String> {
+        let drawing = CurveDrawing {
+            title,
+            input: &self.points,
+            closed_input: self.curve.is_closed(),
+            comb: true,
+        };
+        render_curve_svg(
+            &self.curve,
+            default_curve_samples(self.points.len()),
+            &drawing,
+        )
+        .map_err(|e| e.to_string())
     }
 
     fn cad(&self, format: OutputFormat, name: &str, input: &str) -> Result<String, String> {
@@ -126,6 +180,7 @@ pub fn build_curve<const D: usize>(
             Box::new(Built {
                 curve,
                 points: kept,
+                parameters: Vec::new(),
             })
         }
         "spline" => {
@@ -145,20 +200,31 @@ pub fn build_curve<const D: usize>(
             Box::new(Built {
                 curve,
                 points: kept,
+                parameters: Vec::new(),
             })
         }
         "fit" => {
-            let options = FitOptions {
+            let mut options = FitOptions {
                 eps: request.eps,
                 corners: request.corners.clone(),
                 fairness: DEFAULT_FAIRNESS,
                 smoothing: DEFAULT_SMOOTHING,
                 ..Default::default()
             };
-            let fit = fit_curve_adaptive(points, request.tolerance, &options).map_err(context)?;
+            let fit = if request.knots.is_empty() {
+                fit_curve_adaptive(points, request.tolerance, &options)
+                    .map_err(context)?
+                    .fit
+            } else {
+                if request.start.len() == points.len() {
+                    options.start = StartParameters::Given(request.start.clone());
+                }
+                fit_curve(points, &request.knots, &options).map_err(context)?
+            };
             Box::new(Built {
-                curve: fit.fit.spline,
+                curve: fit.spline,
                 points: kept,
+                parameters: fit.parameters,
             })
         }
         other => return Err(format!("unknown method '{other}'")),

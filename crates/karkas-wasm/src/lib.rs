@@ -80,11 +80,26 @@ impl CurveView {
     pub fn poles(&self) -> usize {
         self.built.bspline_size().1
     }
+    /// The breakpoints of the polynomial pieces (for a fit: its knots).
+    pub fn knots(&self) -> Vec<f64> {
+        self.built.breaks()
+    }
+    /// A fit's foot parameters of the points (empty for the other methods).
+    pub fn parameters(&self) -> Vec<f64> {
+        self.built.parameters()
+    }
     /// The command line's file in `format` (`step`, `iges`, `dxf`) for a file of stem `name`
-    /// made from the input `input`.
+    /// made from the input `input`; `csv` (the samples, `t,x,y[,z]`) and `svg` (the picture
+    /// with its comb, `name` its title) as the command line writes them.
     pub fn export(&self, format: &str, name: &str, input: &str) -> Result<String, JsError> {
-        let format = cad_format(format, &OutputFormat::CURVE_CAD)?;
-        self.built.cad(format, name, input).map_err(refusal)
+        match format {
+            "csv" => Ok(self.built.csv()),
+            "svg" => self.built.svg(name).map_err(refusal),
+            _ => {
+                let format = cad_format(format, &OutputFormat::CURVE_CAD)?;
+                self.built.cad(format, name, input).map_err(refusal)
+            }
+        }
     }
 }
 
@@ -96,7 +111,9 @@ fn cad_format(name: &str, allowed: &[OutputFormat]) -> Result<OutputFormat, JsEr
 
 /// Builds a curve through `coords` (`dim` numbers a point) as the command line's `curve ll`
 /// (`method` `ll`, `ll-interpolate`), `curve spline` (`spline`) or `curve fit` (`fit`) does
-/// with the options of the same names; errors name `input`.
+/// with the options of the same names (`knots`, when not empty, in place of the fit's
+/// tolerance, with the points' starting parameters `start` when it holds one a point);
+/// errors name `input`.
 #[allow(clippy::too_many_arguments)]
 #[wasm_bindgen(js_name = buildCurve)]
 pub fn build_curve_js(
@@ -110,6 +127,8 @@ pub fn build_curve_js(
     tolerance: f64,
     eps: f64,
     corners: &[f64],
+    knots: &[f64],
+    start: &[f64],
     input: &str,
 ) -> Result<CurveView, JsError> {
     let request = CurveRequest {
@@ -121,6 +140,8 @@ pub fn build_curve_js(
         tolerance,
         eps: if eps > 0.0 { eps } else { f64::INFINITY },
         corners: corners.to_vec(),
+        knots: knots.to_vec(),
+        start: start.to_vec(),
     };
     let built = match dim {
         2 => build_curve(&points::<2>(coords), &request, input),
@@ -155,8 +176,12 @@ impl SurfaceView {
     pub fn section(&self, nx: f64, ny: f64, nz: f64, offset: f64) -> Result<Vec<f64>, JsError> {
         self.built.section([nx, ny, nz], offset).map_err(refusal)
     }
-    /// The command line's STEP or IGES file for a file of stem `name`.
+    /// The command line's STEP or IGES file for a file of stem `name`, or its OBJ or ASCII
+    /// STL mesh (`obj`, `stl`) at the default samples.
     pub fn export(&self, format: &str, name: &str, input: &str) -> Result<String, JsError> {
+        if format == "obj" || format == "stl" {
+            return self.built.mesh(format).map_err(refusal);
+        }
         let format = cad_format(format, &OutputFormat::CAD)?;
         self.built.cad(format, name, input).map_err(refusal)
     }

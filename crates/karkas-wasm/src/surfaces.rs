@@ -12,7 +12,11 @@ use karkas::param::{BicubicSurface, GridParameterization};
 use karkas::section::{plane_section, Plane, SectionOptions};
 use karkas::{Grid, Point3, Surface};
 use karkas_io::export::cad::cad_surface_text;
+use karkas_io::export::samples::{default_surface_samples, sample_surface};
+use karkas_io::mesh::TriangleMesh;
 use karkas_io::network::CurveFamily;
+use karkas_io::obj::render_surface_obj;
+use karkas_io::stl::render_mesh_stl_ascii;
 use karkas_io::OutputFormat;
 
 /// A built surface, whatever its kind.
@@ -24,9 +28,13 @@ pub trait BuiltSurface {
     fn section(&self, normal: [f64; 3], offset: f64) -> Result<Vec<f64>, String>;
     /// The command line's STEP or IGES file of this surface, to a file of stem `name`.
     fn cad(&self, format: OutputFormat, name: &str, input: &str) -> Result<String, String>;
+    /// The command line's OBJ (`obj`) or ASCII STL (`stl`) mesh of the surface at its
+    /// default samples.
+    fn mesh(&self, format: &str) -> Result<String, String>;
 }
 
-struct Built<S>(S);
+/// A surface and its default sample counts (as the command line's).
+struct Built<S>(S, (usize, usize));
 
 impl<S: Surface<3> + ToBSplineSurface<3>> BuiltSurface for Built<S> {
     fn samples(&self, nu: usize, nv: usize) -> Vec<f64> {
@@ -66,6 +74,23 @@ impl<S: Surface<3> + ToBSplineSurface<3>> BuiltSurface for Built<S> {
         let bspline = self.0.to_bspline().map_err(|e| format!("{input}: {e}"))?;
         Ok(cad_surface_text(&bspline, format, name))
     }
+
+    fn mesh(&self, format: &str) -> Result<String, String> {
+        let (nu, nv) = self.1;
+        let (_, _, samples) = sample_surface(&self.0, nu, nv);
+        let mut out = Vec::new();
+        match format {
+            "obj" => render_surface_obj(nu, nv, &samples, &mut out),
+            "stl" => {
+                let grid = Grid::from_row_major(nu, nv, samples).map_err(|e| e.to_string())?;
+                let mesh = TriangleMesh::from_grid(&grid).map_err(|e| e.to_string())?;
+                render_mesh_stl_ascii(&mesh, &mut out)
+            }
+            other => return Err(format!("a surface mesh is obj or stl, not '{other}'")),
+        }
+        .map_err(|e| e.to_string())?;
+        Ok(String::from_utf8_lossy(&out).into_owned())
+    }
 }
 
 /// The LL surface of order `order` (`interpolate`: through every point) or, for `order` 0,
@@ -77,12 +102,18 @@ pub fn grid_surface(
     input: &str,
 ) -> Result<Box<dyn BuiltSurface>, String> {
     let context = |e: karkas::Error| format!("{input}: {e}");
+    let samples = (
+        default_surface_samples(grid.rows()),
+        default_surface_samples(grid.cols()),
+    );
     Ok(match method {
         "ll" => Box::new(Built(
             LlSurface::new(grid, order, false, false).map_err(context)?,
+            samples,
         )),
         "ll-interpolate" => Box::new(Built(
             LlSurface::interpolating(grid, order, false, false).map_err(context)?,
+            samples,
         )),
         "bicubic" => {
             let param = GridParameterization::Chord {
@@ -91,6 +122,7 @@ pub fn grid_surface(
             };
             Box::new(Built(
                 BicubicSurface::new(grid, param, false, false).map_err(context)?,
+                samples,
             ))
         }
         other => return Err(format!("unknown surface method '{other}'")),
@@ -121,5 +153,10 @@ pub fn network_surface(
     let surface = kind
         .build(network.network(), None, POINT_NETWORK_TOLERANCE)
         .map_err(context)?;
-    Ok(Box::new(Built(surface)))
+    let longest = |f: &CurveFamily| f.curves.iter().map(Vec::len).max().unwrap_or(0);
+    let samples = (
+        default_surface_samples(longest(u)),
+        default_surface_samples(longest(v)),
+    );
+    Ok(Box::new(Built(surface, samples)))
 }

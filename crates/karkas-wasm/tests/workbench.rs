@@ -21,6 +21,8 @@ fn request(method: &str) -> CurveRequest {
         tolerance: 1e-3,
         eps: f64::INFINITY,
         corners: Vec::new(),
+        knots: Vec::new(),
+        start: Vec::new(),
     }
 }
 
@@ -58,6 +60,12 @@ fn curve_exports_equal_the_command_line_files() {
         let text = built.cad(format, "foil", "foil.dat").unwrap();
         assert_eq!(text, std::fs::read_to_string(&path).unwrap(), "{ext}");
     }
+    // `-o foil.csv`: the default samples, 10 per point.
+    let (ts, samples) = karkas_io::export::samples::sample_curve(&ll, 10 * points.len());
+    let path = dir.join("foil.csv");
+    karkas_io::write::write_curve_csv(&path, &ts, &samples).unwrap();
+    assert_eq!(built.csv(), std::fs::read_to_string(&path).unwrap());
+    assert!(built.svg("LL").unwrap().contains("<svg"));
     std::fs::remove_dir_all(&dir).ok();
     for method in ["ll", "ll-interpolate", "spline", "fit"] {
         let built = build_curve(&points, &request(method), "foil.dat").unwrap();
@@ -100,6 +108,17 @@ fn surface_step_equals_the_command_line_file() {
         written.replace(&format!("'karkas-wasm-sheet-{}", std::process::id()), "'x")
     );
     assert_eq!(built.samples(4, 5).len(), 3 * 20);
+    // `-o sheet.obj`: the default samples, 4 per grid line, at least 50.
+    let (_, _, samples) = karkas_io::export::samples::sample_surface(&surface, 50, 50);
+    let obj = std::env::temp_dir().join(format!("karkas-wasm-sheet-{}.obj", std::process::id()));
+    karkas_io::obj::write_surface_obj(&obj, 50, 50, &samples).unwrap();
+    assert_eq!(
+        built.mesh("obj").unwrap(),
+        std::fs::read_to_string(&obj).unwrap()
+    );
+    std::fs::remove_file(&obj).ok();
+    assert!(built.mesh("stl").unwrap().starts_with("solid"));
+    assert!(built.mesh("ply").is_err());
     let section = built.section([1.0, 0.0, 0.0], 0.5).unwrap();
     assert!(section.len() > 3 * 5 && section.chunks(3).last().unwrap()[0].is_nan());
     assert!(grid_surface(&grid, "nurbs", 3, "sheet.csv").is_err());
