@@ -73,6 +73,9 @@ def cases(folder):
                                 os.path.join(data, "hydrofoil-profile.csv")]),
         ("ll-surface", "surface", ["surface", "ll", "--order", "3",
                                    os.path.join(data, "aircraft-15x31.csv")]),
+        # Closed around the body: the STEP and IGES surfaces carry the closed flag in v.
+        ("ll-surface-closed", "surface", ["surface", "ll", "--order", "3", "--closed-v",
+                                          os.path.join(data, "aircraft-15x31.csv")]),
         ("bicubic-surface", "surface", ["surface", "bicubic", "--param", "chord",
                                         os.path.join(data, "aircraft-15x31.csv")]),
         ("composite-coons", "surface", ["surface", "coons", "--kind", "composite",

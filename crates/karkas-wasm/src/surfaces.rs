@@ -72,7 +72,7 @@ impl<S: Surface<3> + ToBSplineSurface<3>> BuiltSurface for Built<S> {
 
     fn cad(&self, format: OutputFormat, name: &str, input: &str) -> Result<String, String> {
         let bspline = self.0.to_bspline().map_err(|e| format!("{input}: {e}"))?;
-        Ok(cad_surface_text(&bspline, format, name))
+        cad_surface_text(&bspline, format, name).map_err(|e| e.to_string())
     }
 
     fn mesh(&self, format: &str) -> Result<String, String> {

@@ -262,3 +262,150 @@ fn discrete_splines_and_bad_input_give_one_line_errors_and_no_file() {
     assert!(stderr(&o).contains("bad.csv"), "{}", stderr(&o));
     assert!(!out.exists());
 }
+
+/// The global parameters of an IGES file (the `G` section) split at the delimiter `,`, the
+/// first (`1H,`, the delimiter itself) taken whole: field `k` (1-based) at index `k - 1`.
+fn iges_global(text: &str) -> Vec<String> {
+    let data: String = text
+        .lines()
+        .filter(|l| l.len() == 80 && &l[72..73] == "G")
+        .map(|l| &l[..72])
+        .collect();
+    let rest = data.strip_prefix("1H,,").expect("the delimiter field");
+    std::iter::once("1H,".to_owned())
+        .chain(
+            rest.trim_end()
+                .trim_end_matches(';')
+                .split(',')
+                .map(|f| f.trim().to_owned()),
+        )
+        .collect()
+}
+
+#[test]
+fn closed_curves_and_surfaces_carry_their_closed_flags() {
+    let dir = temp_dir();
+    let input = write(dir.path(), "pts.csv", POINTS);
+    for (closed, flag, iges) in [(false, ".F.", "0"), (true, ".T.", "1")] {
+        let mut args = vec!["curve", "ll", "--order", "2"];
+        if closed {
+            args.push("--closed");
+        }
+        let step = dir.path().join(format!("c{closed}.step"));
+        let o = karkas(&[&args[..], &[s(&input), "-o", s(&step)]].concat());
+        assert!(o.status.success(), "{}", stderr(&o));
+        let curve = &step_items(
+            &std::fs::read_to_string(&step).unwrap(),
+            "B_SPLINE_CURVE_WITH_KNOTS",
+        )[0];
+        assert!(
+            curve.contains(&format!(",.UNSPECIFIED.,{flag},.F.,(")),
+            "{curve}"
+        );
+        let igs = dir.path().join(format!("c{closed}.igs"));
+        let o = karkas(&[&args[..], &[s(&input), "-o", s(&igs)]].concat());
+        assert!(o.status.success(), "{}", stderr(&o));
+        // Entity 126: PROP2 (the fifth field) is 1 for a closed curve.
+        assert_eq!(
+            iges_first_entity(&std::fs::read_to_string(&igs).unwrap())[4],
+            iges
+        );
+    }
+    // A grid closed in v: the STEP surface is closed in v only, so is the IGES surface.
+    let grid = write(
+        dir.path(),
+        "tube.csv",
+        &grid_csv(5, 8, |i, j| {
+            let th = std::f64::consts::TAU * j as f64 / 8.0;
+            [i as f64, th.cos(), th.sin()]
+        }),
+    );
+    let step = dir.path().join("tube.step");
+    let o = karkas(&[
+        "surface",
+        "ll",
+        "--order",
+        "2",
+        "--closed-v",
+        s(&grid),
+        "-o",
+        s(&step),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let surface = &step_items(
+        &std::fs::read_to_string(&step).unwrap(),
+        "B_SPLINE_SURFACE_WITH_KNOTS",
+    )[0];
+    assert!(
+        surface.contains(",.UNSPECIFIED.,.F.,.T.,.F.,("),
+        "{surface}"
+    );
+    let igs = dir.path().join("tube.igs");
+    let o = karkas(&[
+        "surface",
+        "ll",
+        "--order",
+        "2",
+        "--closed-v",
+        s(&grid),
+        "-o",
+        s(&igs),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let f = iges_first_entity(&std::fs::read_to_string(&igs).unwrap());
+    assert_eq!((f[5].as_str(), f[6].as_str()), ("0", "1"));
+}
+
+#[test]
+fn iges_states_the_largest_coordinate() {
+    let dir = temp_dir();
+    let input = write(
+        dir.path(),
+        "far.csv",
+        "x,y\n0,0\n1000,2\n2000,-3500\n3000,3\n4000,0\n",
+    );
+    let out = dir.path().join("far.iges");
+    let o = karkas(&["curve", "ll", "--order", "2", s(&input), "-o", s(&out)]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = std::fs::read_to_string(&out).unwrap();
+    // Global parameter 20, the maximum coordinate value: the largest control point coordinate.
+    let g = iges_global(&text);
+    let largest: f64 = g[19].parse().unwrap();
+    let f = iges_first_entity(&text);
+    let n: usize = f[1].parse::<usize>().unwrap() + 1;
+    let first = 7 + (n + 5) + n;
+    let control: f64 = (0..3 * n)
+        .map(|k| f[first + k].parse::<f64>().unwrap().abs())
+        .fold(0.0, f64::max);
+    assert_eq!(largest, control);
+    assert!(largest >= 4000.0);
+}
+
+#[test]
+fn b_splines_above_degree_25_are_refused_for_step_and_iges() {
+    let dir = temp_dir();
+    let input = write(dir.path(), "pts.csv", POINTS);
+    let grid = write(dir.path(), "g.csv", &wavy_grid(5, 4));
+    for (command, source, name) in [
+        ("curve", &input, "c.step"),
+        ("curve", &input, "c.iges"),
+        ("surface", &grid, "s.step"),
+        ("surface", &grid, "s.igs"),
+    ] {
+        let out = dir.path().join(name);
+        let o = karkas(&[command, "ll", "--order", "13", s(source), "-o", s(&out)]);
+        assert_eq!(o.status.code(), Some(2), "{name}: {}", stderr(&o));
+        let e = stderr(&o);
+        assert!(e.contains("degree 26, above 25"), "{e}");
+        assert!(e.contains("an LL order of at most 12"), "{e}");
+        assert_eq!(e.lines().count(), 1);
+        assert!(!out.exists());
+        // Order 12 (degree 24) is written.
+        let o = karkas(&[command, "ll", "--order", "12", s(source), "-o", s(&out)]);
+        assert!(o.status.success(), "{name}: {}", stderr(&o));
+    }
+    // DXF has no such limit in the readers that take it: written.
+    let out = dir.path().join("c.dxf");
+    let o = karkas(&["curve", "ll", "--order", "13", s(&input), "-o", s(&out)]);
+    assert!(o.status.success(), "{}", stderr(&o));
+}

@@ -53,6 +53,57 @@ pub enum CadError {
     Geometry(#[source] karkas::Error),
 }
 
+/// The highest degree written to STEP and IGES: Open CASCADE reads B-splines of higher degree
+/// as empty shapes (its `Geom_BSplineCurve` stops at degree 25).
+pub const MAX_CAD_DEGREE: usize = 25;
+
+/// Whether the clamped curve `c` is closed: marked so, or its ends (its first and last control
+/// points) coincide to `1e-12` of the control polygon's size (a closed curve whose mark was
+/// lost on the way, as a SciPy `(t, c, k)` or a curve placed in space).
+pub fn curve_closed(c: &BSplineCurve<3>) -> bool {
+    use karkas::Curve;
+    c.is_closed()
+        || lines_meet(c.control_points(), |k| {
+            c.control_points()[k * (c.control_points().len() - 1)]
+        })
+}
+
+/// Whether the surface `s` is closed in `u` and in `v`: marked so, or its first and last
+/// rows (columns) of control points coincide, as [`curve_closed`] tells for curves.
+pub fn surface_closed(s: &BSplineSurface<3>) -> (bool, bool) {
+    use karkas::Surface;
+    let grid = s.control_points();
+    let (rows, cols) = (grid.rows(), grid.cols());
+    let all = grid.as_slice();
+    let u = (0..cols).all(|j| lines_meet(all, |k| *grid.get(k * (rows - 1), j)));
+    let v = (0..rows).all(|i| lines_meet(all, |k| *grid.get(i, k * (cols - 1))));
+    (s.is_closed_u() || u, s.is_closed_v() || v)
+}
+
+/// True when `end(0)` and `end(last)` coincide to `1e-12` of the size of `points` (`end(k)`
+/// gives the first point for `k = 0` and the last for `k = 1`).
+fn lines_meet(points: &[Point<3>], end: impl Fn(usize) -> Point<3>) -> bool {
+    let (first, last) = (end(0), end(1));
+    let size = points
+        .iter()
+        .map(|p| (*p - points[0]).norm())
+        .fold(0.0, f64::max);
+    size > 0.0 && (last - first).norm() <= 1e-12 * size
+}
+
+/// The largest absolute coordinate of the control points of `entities` (IGES's global
+/// "maximum coordinate value").
+pub(crate) fn max_coordinate(entities: &[CadEntity<'_>]) -> f64 {
+    let largest = |points: &[Point<3>]| points.iter().map(|p| p.max_abs()).fold(0.0, f64::max);
+    entities
+        .iter()
+        .map(|e| match e {
+            CadEntity::Curve(c) => largest(c.control_points()),
+            CadEntity::Surface(s) => largest(s.control_points().as_slice()),
+        })
+        .fold(0.0, f64::max)
+}
+
 /// Writes the CAD file `path` atomically with the text `render(entities, name)`, `name` being
 /// the file stem (`karkas` when it has none).
 pub(crate) fn write_named(

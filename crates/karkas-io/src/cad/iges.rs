@@ -16,7 +16,9 @@ use std::path::Path;
 use karkas::bspline::{BSplineCurve, BSplineSurface};
 use karkas::{Curve, Surface};
 
-use crate::cad::entity::{real, write_named, CadEntity};
+use crate::cad::entity::{
+    curve_closed, max_coordinate, real, surface_closed, write_named, CadEntity,
+};
 use crate::error::IoError;
 
 /// Columns of data in a parameter line.
@@ -41,7 +43,7 @@ fn curve_parameters(c: &BSplineCurve<3>) -> Vec<String> {
         (n - 1).to_string(),
         c.degree().to_string(),
         u8::from(planar).to_string(),
-        u8::from(c.is_closed()).to_string(),
+        u8::from(curve_closed(c)).to_string(),
         "1".to_owned(),
         "0".to_owned(),
     ];
@@ -66,8 +68,8 @@ fn surface_parameters(s: &BSplineSurface<3>) -> Vec<String> {
         (cols - 1).to_string(),
         s.degree_u().to_string(),
         s.degree_v().to_string(),
-        u8::from(s.is_closed_u()).to_string(),
-        u8::from(s.is_closed_v()).to_string(),
+        u8::from(surface_closed(s).0).to_string(),
+        u8::from(surface_closed(s).1).to_string(),
         "1".to_owned(),
         "0".to_owned(),
         "0".to_owned(),
@@ -156,7 +158,7 @@ pub fn iges_text(entities: &[CadEntity<'_>], name: &str) -> String {
         real(1.0),
         hollerith(stamp),
         real(1e-9),
-        real(0.0),
+        real(max_coordinate(entities)),
         hollerith(""),
         hollerith(""),
         "11".to_owned(),

@@ -7,4 +7,6 @@ pub mod entity;
 pub mod iges;
 pub mod step;
 
-pub use entity::{curve_in_space, CadEntity, CadError};
+pub use entity::{
+    curve_closed, curve_in_space, surface_closed, CadEntity, CadError, MAX_CAD_DEGREE,
+};

@@ -9,7 +9,7 @@
 //! systems import as wires and faces. One product holds all items; lengths are in
 //! millimetres (the data's own unit is not known). Reals carry 17 significant digits, so a
 //! reader gets the same `f64` back. Closed karkas curves and surfaces are written as clamped
-//! open B-splines over one period.
+//! B-splines over one period, with their closed flags set (`.T.`).
 //!
 //! Hand-written: the Rust STEP crates either only read or come with a whole CAD kernel;
 //! writing these entities takes a page.
@@ -20,7 +20,7 @@ use std::path::Path;
 use karkas::bspline::{BSplineCurve, BSplineSurface};
 use karkas::{Point, Surface};
 
-use crate::cad::entity::{knot_runs, real, write_named, CadEntity};
+use crate::cad::entity::{curve_closed, knot_runs, real, surface_closed, write_named, CadEntity};
 use crate::error::IoError;
 
 /// The entity instances of a STEP data section, numbered from 1.
@@ -48,9 +48,10 @@ impl Data {
         let points: Vec<String> = c.control_points().iter().map(|&p| self.point(p)).collect();
         let (values, counts) = knot_runs(c.knots());
         self.add(format!(
-            "B_SPLINE_CURVE_WITH_KNOTS('{name}',{},({}),.UNSPECIFIED.,.F.,.F.,({}),({}),.UNSPECIFIED.)",
+            "B_SPLINE_CURVE_WITH_KNOTS('{name}',{},({}),.UNSPECIFIED.,{},.F.,({}),({}),.UNSPECIFIED.)",
             c.degree(),
             points.join(","),
+            logical(curve_closed(c)),
             join_usize(&counts),
             join_real(&values),
         ))
@@ -66,11 +67,14 @@ impl Data {
             .collect();
         let (ku, mu) = knot_runs(s.knots_u());
         let (kv, mv) = knot_runs(s.knots_v());
+        let (closed_u, closed_v) = surface_closed(s);
         self.add(format!(
-            "B_SPLINE_SURFACE_WITH_KNOTS('{name}',{},{},({}),.UNSPECIFIED.,.F.,.F.,.F.,({}),({}),({}),({}),.UNSPECIFIED.)",
+            "B_SPLINE_SURFACE_WITH_KNOTS('{name}',{},{},({}),.UNSPECIFIED.,{},{},.F.,({}),({}),({}),({}),.UNSPECIFIED.)",
             s.degree_u(),
             s.degree_v(),
             rows.join(","),
+            logical(closed_u),
+            logical(closed_v),
             join_usize(&mu),
             join_usize(&mv),
             join_real(&ku),
@@ -120,6 +124,15 @@ impl Data {
         let edge_loop = self.add(format!("EDGE_LOOP('',({}))", edges.join(",")));
         let bound = self.add(format!("FACE_OUTER_BOUND('',{edge_loop},.T.)"));
         self.add(format!("ADVANCED_FACE('{name}',({bound}),{surface},.T.)"))
+    }
+}
+
+/// A STEP logical: `.T.` or `.F.`.
+fn logical(value: bool) -> &'static str {
+    if value {
+        ".T."
+    } else {
+        ".F."
     }
 }
 

@@ -2,7 +2,7 @@
 //! (with their input points).
 
 use crate::cad::dxf::{dxf_text, DxfCurve};
-use crate::cad::{curve_in_space, CadEntity, CadError};
+use crate::cad::{curve_closed, curve_in_space, CadEntity, CadError, MAX_CAD_DEGREE};
 use crate::iges::iges_text;
 use crate::step::step_text;
 use crate::write::write_atomic;
@@ -33,6 +33,9 @@ pub fn write_cad_curve_with_points<const D: usize>(
     what: &Path,
 ) -> Result<BSplineCurve<3>, IoError> {
     let format = format.allowed_for(output, &OutputFormat::CURVE_CAD)?;
+    if format != OutputFormat::Dxf {
+        check_degree(bspline.degree(), format, output)?;
+    }
     let (text, spatial) = cad_curve_text(bspline, points, format, file_name(output), what)?;
     write_atomic(output, |out| out.write_all(text.as_bytes()))?;
     Ok(spatial)
@@ -41,7 +44,8 @@ pub fn write_cad_curve_with_points<const D: usize>(
 /// The text of the file [`write_cad_curve_with_points`] writes for a file whose stem is
 /// `name` (STEP and IGES name the product after it), and the curve in space: what a page or a
 /// program holding no files exports, byte for byte the command line's file. `format` is STEP,
-/// IGES or DXF.
+/// IGES or DXF. A STEP or IGES curve of a degree above [`MAX_CAD_DEGREE`] is refused, naming
+/// the file `name`.ext.
 pub fn cad_curve_text<const D: usize>(
     bspline: &BSplineCurve<D>,
     points: &[Point<D>],
@@ -53,13 +57,17 @@ pub fn cad_curve_text<const D: usize>(
         CadError::Geometry(source) => geometry(what, source),
         other => crate::error::data_error(what, other.to_string()),
     })?;
+    if format != OutputFormat::Dxf {
+        let target = format!("{name}.{}", format.extension());
+        check_degree(spatial.degree(), format, Path::new(&target))?;
+    }
     let entities = [CadEntity::Curve(&spatial)];
     let text = match format {
         OutputFormat::Dxf => {
             let points: Vec<Point3> = points.iter().map(in_space).collect();
             dxf_text(&DxfCurve {
                 spline: &spatial,
-                closed: bspline.is_closed() || ends_meet(&spatial),
+                closed: bspline.is_closed() || curve_closed(&spatial),
                 planar: D < 3,
                 points: &points,
             })
@@ -73,12 +81,45 @@ pub fn cad_curve_text<const D: usize>(
 /// The text of the STEP or IGES file (by `format`) of the B-spline surface `bspline`, the
 /// product named `name`: byte for byte what [`write_cad_surface`] writes to a file of that
 /// stem.
-pub fn cad_surface_text(bspline: &BSplineSurface<3>, format: OutputFormat, name: &str) -> String {
+///
+/// Errors: a degree above [`MAX_CAD_DEGREE`] ([`IoError::Data`] naming the file `name`.ext).
+pub fn cad_surface_text(
+    bspline: &BSplineSurface<3>,
+    format: OutputFormat,
+    name: &str,
+) -> Result<String, IoError> {
+    let target = format!("{name}.{}", format.extension());
+    check_degree(
+        bspline.degree_u().max(bspline.degree_v()),
+        format,
+        Path::new(&target),
+    )?;
     let entities = [CadEntity::Surface(bspline)];
-    match format {
+    Ok(match format {
         OutputFormat::Iges => iges_text(&entities, name),
         _ => step_text(&entities, name),
+    })
+}
+
+/// Refuses a B-spline of a degree above [`MAX_CAD_DEGREE`] for STEP and IGES.
+fn check_degree(degree: usize, format: OutputFormat, what: &Path) -> Result<(), IoError> {
+    if degree > MAX_CAD_DEGREE {
+        let name = if format == OutputFormat::Iges {
+            "IGES"
+        } else {
+            "STEP"
+        };
+        return Err(crate::error::data_error(
+            what,
+            format!(
+                "the exact B-spline has degree {degree}, above {MAX_CAD_DEGREE}, the highest \
+                 that CAD programs read from {name} (Open CASCADE reads it as an empty shape): \
+                 choose an LL order of at most {} (degree 2L), or write .csv, .obj or .stl",
+                MAX_CAD_DEGREE / 2
+            ),
+        ));
     }
+    Ok(())
 }
 
 /// The stem of `path` as STEP and IGES name their product ("karkas" when it has none).
@@ -93,21 +134,6 @@ fn in_space<const D: usize>(p: &Point<D>) -> Point3 {
     Point3::new(core::array::from_fn(|c| if c < D { p[c] } else { 0.0 }))
 }
 
-/// True when the ends of the clamped curve `spline` (its first and last control points)
-/// coincide to 1e-12 of the control polygon's size: a closed curve whose closure flag was lost
-/// (a SciPy `(t, c, k)` or a form handed over from Python).
-fn ends_meet(spline: &BSplineCurve<3>) -> bool {
-    let control = spline.control_points();
-    let (Some(first), Some(last)) = (control.first(), control.last()) else {
-        return false;
-    };
-    let size = control
-        .iter()
-        .map(|p| (*p - *first).norm())
-        .fold(0.0, f64::max);
-    (*last - *first).norm() <= 1e-12 * size
-}
-
 /// Writes the B-spline surface `bspline` at `output` as STEP or IGES (by `format`).
 pub fn write_cad_surface(
     bspline: &BSplineSurface<3>,
@@ -115,7 +141,8 @@ pub fn write_cad_surface(
     output: &Path,
 ) -> Result<(), IoError> {
     let format = format.allowed_for(output, &OutputFormat::CAD)?;
-    let text = cad_surface_text(bspline, format, file_name(output));
+    check_degree(bspline.degree_u().max(bspline.degree_v()), format, output)?;
+    let text = cad_surface_text(bspline, format, file_name(output))?;
     write_atomic(output, |out| out.write_all(text.as_bytes()))
 }
 
