@@ -6,6 +6,7 @@
 //! then the `--x` values, the `--y` values, the `--z` values.
 
 use crate::args::{parse_finite_list, parse_pair_with, parse_whole, GridInput, LlSurfaceOptions};
+use crate::input::grid_points;
 use crate::output::console::note;
 use crate::output::samples::sample_surface;
 use crate::output::target::{output_format, shown};
@@ -98,6 +99,23 @@ const GROUPS: [(&str, (u8, u8, u8)); 4] = [
     ("z = const", (200, 120, 0)),
 ];
 
+/// The smallest `--tolerance`, relative to the diagonal of the grid's bounding box: a chord
+/// error below it is under the rounding of the points themselves (about `1e-16` of their size)
+/// times the conditioning of the continuation, and asks for steps that round to nothing.
+const MIN_RELATIVE_TOLERANCE: f64 = 1e-12;
+
+/// The diagonal of the bounding box of `points`.
+fn diagonal(points: &[Point3]) -> f64 {
+    let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
+    for p in points {
+        for c in 0..3 {
+            lo[c] = lo[c].min(p[c]);
+            hi[c] = hi[c].max(p[c]);
+        }
+    }
+    (0..3).map(|c| hi[c] - lo[c]).fold(0.0, f64::hypot)
+}
+
 /// Runs `karkas section`.
 pub fn run(args: &SectionArgs) -> Result<()> {
     let format = output_format(
@@ -112,6 +130,16 @@ pub fn run(args: &SectionArgs) -> Result<()> {
     }
     let cuts = planes(args)?;
     let grid = args.grid.read_for(&args.output)?;
+    grid_points(&args.grid.input, grid.as_slice())?;
+    if let Some(t) = args.tolerance {
+        let floor = MIN_RELATIVE_TOLERANCE * diagonal(grid.as_slice());
+        if t < floor {
+            bail!(
+                "--tolerance: {t:e} is below what floating point resolves on this surface \
+                 ({MIN_RELATIVE_TOLERANCE:e} of its size): give at least {floor:.3e}"
+            );
+        }
+    }
     let surface = args.ll.build(&grid, &args.grid.input)?;
     let options = SectionOptions {
         tolerance: args.tolerance,

@@ -163,6 +163,11 @@ fn bad_section_input_exits_2_and_writes_nothing() {
     run(&["--plane", "0,0,1"], "NX,NY,NZ,C");
     run(&["--x", "nan"], "--x NaN");
     run(&["--z", "0", "--tolerance", "-1"], "--tolerance");
+    // A chord error below floating-point resolution: refused, not 22 pieces where 1 is right.
+    run(
+        &["--z", "0", "--tolerance", "1e-300"],
+        "--tolerance: 1e-300 is below what floating point resolves on this surface (1e-12 of its size)",
+    );
     run(&["--z", "0", "--cells", "2,50"], "cells must be 3 to 4096");
     run(&["--z", "0", "--order", "0"], "--order");
     assert_rejected(
@@ -185,6 +190,26 @@ fn bad_section_input_exits_2_and_writes_nothing() {
         ],
         "unknown output extension (use one of: .csv, .svg, .png)",
         &obj,
+        None,
+    );
+    // Every grid point at one place: refused as `surface ll` refuses it, not an empty result.
+    let same: String = (0..16)
+        .map(|k| format!("{},{},1,2,3\n", k / 4, k % 4))
+        .collect();
+    let same = write(dir.path(), "same.csv", &format!("i,j,x,y,z\n{same}"));
+    assert_rejected(
+        &[
+            "section",
+            s(&same),
+            "--method",
+            "ll",
+            "--z",
+            "0",
+            "-o",
+            s(&out),
+        ],
+        "all 16 grid points coincide (at 1,2,3): there is no surface to build",
+        &out,
         None,
     );
     let holey = write(dir.path(), "holey.csv", "i,j,x,y,z\n0,0,0,0,0\n1,1,1,1,1\n");
