@@ -180,9 +180,9 @@ fn build(
 fn read_family(path: &Path) -> Result<CurveFamily> {
     let family = read_curve_family(path)?;
     for (k, (curve, line)) in family.curves.iter().zip(&family.first_lines).enumerate() {
-        if curve.len() < 3 {
+        if curve.len() < 2 {
             bail!(
-                "{}:{line}: curve {k} has {} point{}; at least 3 are needed",
+                "{}:{line}: curve {k} has {} point{}; at least 2 are needed",
                 path.display(),
                 curve.len(),
                 if curve.len() == 1 { "" } else { "s" }

@@ -240,17 +240,20 @@ fn bad_input_exits_2_naming_the_file_and_writes_nothing() {
     );
     let nan = bad("nan.csv", "curve,x,y,z\n0,0,0,0\n0,1,nan,0\n0,2,0,0\n");
     run("gordon", &u, &nan, &[], &["nan.csv:3:", "non-finite"]);
-    // A curve too short to interpolate: named by its first line.
+    // A curve of one point (two make a straight edge): named by its first line.
     let short = bad(
         "short.csv",
-        &(family(2, |k, t| sheet(t, k as f64)) + "2,0,2,0\n2,2,2,0\n"),
+        &(family(2, |k, t| sheet(t, k as f64)) + "2,0,2,0\n"),
     );
     run(
         "gordon",
         &short,
         &v,
         &[],
-        &["short.csv:44:", "curve 2 has 2 points"],
+        &[
+            "short.csv:44:",
+            "curve 2 has 1 point; at least 2 are needed",
+        ],
     );
     // u-curve 1 lifted off the network: the pair is named with both files and lines.
     let lifted = bad(
@@ -373,6 +376,72 @@ fn without_derivative_files_composite_is_the_spline_gordon_surface() {
     for (a, b) in composite.iter().zip(&spline) {
         for c in 0..5 {
             assert!((a[c] - b[c]).abs() < 1e-12, "{a:?} vs {b:?}");
+        }
+    }
+}
+
+#[test]
+fn straight_edges_of_two_points_make_the_bilinear_patch() {
+    let dir = temp_dir();
+    // Two u-curves and two v-curves, each a straight edge between two corners.
+    let corners = [
+        [0.0, 0.0, 0.0],
+        [1.0, 0.0, 0.0],
+        [0.0, 1.0, 0.5],
+        [1.0, 1.0, 0.0],
+    ];
+    let edge = |k: usize, a: [f64; 3], b: [f64; 3]| {
+        format!(
+            "{k},{},{},{}\n{k},{},{},{}\n",
+            a[0], a[1], a[2], b[0], b[1], b[2]
+        )
+    };
+    let u = dir.path().join("u.csv");
+    let v = dir.path().join("v.csv");
+    std::fs::write(
+        &u,
+        format!(
+            "curve,x,y,z\n{}{}",
+            edge(0, corners[0], corners[1]),
+            edge(1, corners[2], corners[3])
+        ),
+    )
+    .unwrap();
+    std::fs::write(
+        &v,
+        format!(
+            "curve,x,y,z\n{}{}",
+            edge(0, corners[0], corners[2]),
+            edge(1, corners[1], corners[3])
+        ),
+    )
+    .unwrap();
+    for kind in ["bilinear", "gordon", "gordon-spline"] {
+        let out = dir.path().join(format!("{kind}.csv"));
+        let o = karkas(&[
+            "surface",
+            "coons",
+            "--kind",
+            kind,
+            "--u-curves",
+            s(&u),
+            "--v-curves",
+            s(&v),
+            "--samples",
+            "5,5",
+            "-o",
+            s(&out),
+        ]);
+        assert!(o.status.success(), "{kind}: {}", stderr(&o));
+        // The bilinear patch through the corners: x = u, y = v, z = 0.5 v (1 - u).
+        let (_, rows) = read_csv(&out);
+        assert_eq!(rows.len(), 25);
+        for r in rows {
+            let (uu, vv) = (r[0], r[1]);
+            let expected = [uu, vv, 0.5 * vv * (1.0 - uu)];
+            for c in 0..3 {
+                assert!((r[2 + c] - expected[c]).abs() < 1e-14, "{kind} {r:?}");
+            }
         }
     }
 }

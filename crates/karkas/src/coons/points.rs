@@ -101,7 +101,8 @@ impl<const D: usize> PointNetwork<D> {
     ///
     /// Errors: a tolerance that is negative or not finite ([`Error::InvalidSetting`]); a family
     /// with fewer than two curves, three when closed ([`Error::TooFewNetworkCurves`]); a curve
-    /// with fewer than three distinct points or a non-finite point ([`Error::NetworkCurve`]
+    /// with fewer than two points (an open curve of two is a straight edge) or, closed, three
+    /// distinct points, or a non-finite point ([`Error::NetworkCurve`]
     /// around [`Error::TooFewPoints`] or [`Error::NonFinitePoint`]); closed and open curves in
     /// one family ([`Error::MixedClosure`]); [`Error::NetworkCrossing`] for a pair without a
     /// common point, a pair meeting more than once, or crossings out of order; crossings too
@@ -454,15 +455,17 @@ fn family<'a, const D: usize>(
                 closed: !closed,
             });
         }
+        // An open curve of 2 points is a straight edge; a closed one needs 3 distinct.
         let distinct = distinct_len(curve, closed);
-        if distinct < 3 {
+        let least = if closed { 3 } else { 2 };
+        if distinct < least {
             return Err(in_curve(Error::TooFewPoints {
                 what: if closed {
                     "a closed curve (its repeated last point not counted)"
                 } else {
                     "a curve"
                 },
-                needed: 3,
+                needed: least,
                 got: distinct,
             }));
         }
