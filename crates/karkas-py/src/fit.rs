@@ -139,6 +139,10 @@ fn fit_bytes(points: usize, knots: usize, dim: usize) -> u128 {
 ///     L)^2) n tau`` with sigma the noise estimated from the points (the result's ``noise``),
 ///     L the size of the points and tau a factor for curves that wind (default 0.3, as
 ///     ``karkas curve fit --smoothing``; 0 for none).
+/// penalty : {"active", "paper"}, optional
+///     How the penalty p is chosen when ``eps`` is given, as ``karkas curve fit --penalty``:
+///     "active" (default) lowers p until the bound holds with equality (the constrained
+///     optimum); "paper" is Pavlov's rule p = H(q*) / eps, times 10 until the bound holds.
 ///
 /// Returns
 /// -------
@@ -167,9 +171,9 @@ fn fit_bytes(points: usize, knots: usize, dim: usize) -> u128 {
 /// >>> g.tolerance_met
 /// True
 #[pyfunction]
-#[pyo3(signature = (points, knots = None, tolerance = None, eps = None, pin_ends = false, corners = None, fairness = DEFAULT_FAIRNESS, smoothing = DEFAULT_SMOOTHING))]
+#[pyo3(signature = (points, knots = None, tolerance = None, eps = None, pin_ends = false, corners = None, fairness = DEFAULT_FAIRNESS, smoothing = DEFAULT_SMOOTHING, penalty = "active"))]
 #[pyo3(
-    text_signature = "(points, knots=None, tolerance=None, eps=None, pin_ends=False, corners=None, fairness=3e-11, smoothing=0.3)"
+    text_signature = "(points, knots=None, tolerance=None, eps=None, pin_ends=False, corners=None, fairness=3e-11, smoothing=0.3, penalty='active')"
 )]
 #[allow(clippy::too_many_arguments)]
 pub fn fit_curve(
@@ -182,7 +186,17 @@ pub fn fit_curve(
     corners: Option<&Bound<'_, PyAny>>,
     fairness: f64,
     smoothing: f64,
+    penalty: &str,
 ) -> PyResult<Py<PyHermiteSpline>> {
+    let penalty = match penalty {
+        "active" => fit::PenaltyRule::ActiveBound,
+        "paper" => fit::PenaltyRule::SeedBound,
+        other => {
+            return Err(OptionError::new_err(format!(
+                "penalty must be 'active' or 'paper', got '{other}'"
+            )))
+        }
+    };
     let (pts, dim) = PointsArray::extract_checked(points, "points")?;
     let knots: Option<Vec<f64>> = match knots {
         None => None,
@@ -219,6 +233,7 @@ pub fn fit_curve(
             .unwrap_or_default(),
         fairness,
         smoothing,
+        penalty,
         ..FitOptions::default()
     };
     if let Some(eps) = eps {

@@ -144,6 +144,7 @@ def test_curve_ll(tmp_path, wavy_file, options, kwargs):
         (["--knots", "0,0.3,0.45,0.7,1", "--eps", 0.05, "--pin-ends"], dict(knots=[0, 0.3, 0.45, 0.7, 1], eps=0.05, pin_ends=True)),
         (["--knots", 6, "--corner", 0.4, "--fairness", 0], dict(knots=6, corners=[0.4], fairness=0.0)),
         (["--tolerance", 2e-3], dict(tolerance=2e-3)),
+        (["--knots", "0,0.3,0.45,0.7,1", "--eps", 0.05, "--penalty", "paper"], dict(knots=[0, 0.3, 0.45, 0.7, 1], eps=0.05, penalty="paper")),
     ],
 )
 def test_curve_fit(tmp_path, wavy_file, options, kwargs):

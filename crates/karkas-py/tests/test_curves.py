@@ -259,3 +259,18 @@ def test_fit_curve_needs_knots_or_tolerance():
         karkas.fit_curve(pts, knots=4, tolerance=1e-3)
     with pytest.raises(ValueError):
         karkas.fit_curve(pts, knots=[0.0, 0.7, 0.5, 1.0])
+
+
+def test_fit_penalty_rules():
+    """The active bound meets eps with equality (to 1e-3); the paper's rule p = H(q*)/eps
+    (times 10 until the bound holds) stays below it, with a larger penalty."""
+    a = np.linspace(0.0, 2.0, 30)
+    wobble = 1.0 + 0.003 * ((np.arange(30) * 7919) % 13) / 13.0
+    pts = np.column_stack([np.cos(a), np.sin(a)]) * wobble[:, None]
+    knots, eps = [0.0, 0.3, 0.5, 0.7, 1.0], 1e-4
+    active = karkas.fit_curve(pts, knots=knots, eps=eps)
+    paper = karkas.fit_curve(pts, knots=knots, eps=eps, penalty="paper")
+    assert (1.0 - 1e-3) * eps <= active.jump_sum <= eps
+    assert paper.jump_sum <= eps and paper.jump_sum < active.jump_sum
+    with pytest.raises(karkas.OptionError, match="penalty must be 'active' or 'paper'"):
+        karkas.fit_curve(pts, knots=5, penalty="soft")

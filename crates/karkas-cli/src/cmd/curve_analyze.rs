@@ -190,6 +190,10 @@ fn check_unused(args: &CurveAnalyzeArgs, methods: &[Method]) -> Result<()> {
             ("--eps", f.eps.is_some()),
             ("--corner", !f.corners.is_empty()),
             ("--pin-ends", f.pin_ends),
+            (
+                "--penalty",
+                f.penalty != super::fit_options::Penalty::Active,
+            ),
         ],
     )
 }

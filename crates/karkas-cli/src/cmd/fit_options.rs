@@ -8,10 +8,10 @@
 
 use crate::output::memory::check_memory;
 use anyhow::{bail, Context, Result};
-use clap::Args;
+use clap::{Args, ValueEnum};
 use karkas::fit::{
-    fit_curve, fit_curve_adaptive, knots_from_list, CurveFit, FitOptions, DEFAULT_FAIRNESS,
-    DEFAULT_SMOOTHING,
+    fit_curve, fit_curve_adaptive, knots_from_list, CurveFit, FitOptions, PenaltyRule,
+    DEFAULT_FAIRNESS, DEFAULT_SMOOTHING,
 };
 use karkas::Point;
 
@@ -56,6 +56,30 @@ pub struct FitCurveOptions {
     /// known trailing edge).
     #[arg(long)]
     pub pin_ends: bool,
+    /// How the penalty p is chosen when --eps bounds the jumps: `active` lowers p until the
+    /// bound holds with equality (the constrained optimum); `paper` is Pavlov's rule
+    /// p = H(q*) / eps, times 10 until the bound holds.
+    #[arg(long, value_enum, default_value_t = Penalty::Active)]
+    pub penalty: Penalty,
+}
+
+/// The rule for the penalty `p` (`--penalty`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum Penalty {
+    /// Lower p until the bound is active.
+    Active,
+    /// The paper's p = H(q*) / eps, raised tenfold until the bound holds.
+    Paper,
+}
+
+impl Penalty {
+    /// The library's rule.
+    pub fn to_library(self) -> PenaltyRule {
+        match self {
+            Penalty::Active => PenaltyRule::ActiveBound,
+            Penalty::Paper => PenaltyRule::SeedBound,
+        }
+    }
 }
 
 impl FitCurveOptions {
@@ -104,6 +128,7 @@ impl FitCurveOptions {
             pin_ends: self.pin_ends,
             fairness: self.fairness,
             smoothing: self.smoothing,
+            penalty: self.penalty.to_library(),
             ..Default::default()
         }
     }

@@ -284,3 +284,67 @@ fn shape_warnings_are_printed_with_their_place() {
         "{err}"
     );
 }
+
+/// The figure after `name = ` in the fit's summary line.
+fn summary_figure(text: &str, name: &str) -> f64 {
+    let at = text.find(&format!("{name} = ")).expect(name) + name.len() + 3;
+    text[at..]
+        .split([',', ' '])
+        .next()
+        .unwrap()
+        .parse()
+        .unwrap()
+}
+
+#[test]
+fn penalty_rules_meet_the_bound_actively_or_by_the_paper() {
+    let dir = temp_dir();
+    let input = write(dir.path(), "arc.csv", &arc());
+    let out = dir.path().join("f.csv");
+    let eps = 1e-4;
+    let fit = |rule: &str| {
+        let o = karkas(&[
+            "curve",
+            "fit",
+            "--knots",
+            "0,0.3,0.5,0.7,1",
+            "--eps",
+            "1e-4",
+            "--penalty",
+            rule,
+            s(&input),
+            "-o",
+            s(&out),
+        ]);
+        assert!(o.status.success(), "{rule}: {}", stderr(&o));
+        (
+            summary_figure(&stderr(&o), "f"),
+            summary_figure(&stderr(&o), "p"),
+        )
+    };
+    // The active bound: f within 1e-3 of eps (the constrained optimum).
+    let (f_active, p_active) = fit("active");
+    assert!(
+        f_active <= eps && f_active >= (1.0 - 1e-3) * eps,
+        "{f_active}"
+    );
+    // The paper's rule: p = H(q*) / eps, raised tenfold until f <= eps: a larger p, and f
+    // below the bound.
+    let (f_paper, p_paper) = fit("paper");
+    assert!(f_paper <= eps, "{f_paper}");
+    assert!(p_paper > p_active, "{p_paper} vs {p_active}");
+    assert!(f_paper < f_active, "{f_paper} vs {f_active}");
+    let o = karkas(&[
+        "curve",
+        "fit",
+        "--knots",
+        "5",
+        "--penalty",
+        "soft",
+        s(&input),
+        "-o",
+        s(&out),
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("--penalty"), "{}", stderr(&o));
+}
