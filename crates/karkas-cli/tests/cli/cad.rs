@@ -320,39 +320,27 @@ fn closed_curves_and_surfaces_carry_their_closed_flags() {
             [i as f64, th.cos(), th.sin()]
         }),
     );
-    let step = dir.path().join("tube.step");
-    let o = karkas(&[
-        "surface",
-        "ll",
-        "--order",
-        "2",
-        "--closed-v",
-        s(&grid),
-        "-o",
-        s(&step),
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    let surface = &step_items(
-        &std::fs::read_to_string(&step).unwrap(),
-        "B_SPLINE_SURFACE_WITH_KNOTS",
-    )[0];
+    let tube = |ext: &str| {
+        let out = dir.path().join(format!("tube.{ext}"));
+        let o = karkas(&[
+            "surface",
+            "ll",
+            "--order",
+            "2",
+            "--closed-v",
+            s(&grid),
+            "-o",
+            s(&out),
+        ]);
+        assert!(o.status.success(), "{}", stderr(&o));
+        std::fs::read_to_string(&out).unwrap()
+    };
+    let surface = &step_items(&tube("step"), "B_SPLINE_SURFACE_WITH_KNOTS")[0];
     assert!(
         surface.contains(",.UNSPECIFIED.,.F.,.T.,.F.,("),
         "{surface}"
     );
-    let igs = dir.path().join("tube.igs");
-    let o = karkas(&[
-        "surface",
-        "ll",
-        "--order",
-        "2",
-        "--closed-v",
-        s(&grid),
-        "-o",
-        s(&igs),
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    let f = iges_first_entity(&std::fs::read_to_string(&igs).unwrap());
+    let f = iges_first_entity(&tube("igs"));
     assert_eq!((f[5].as_str(), f[6].as_str()), ("0", "1"));
 }
 

@@ -278,7 +278,7 @@ impl<'p, 'a, C: Curve<D> + ?Sized, const D: usize> NearestGrid<'p, 'a, C, D> {
             return None;
         }
         // Start where q projects onto the chord.
-        let [a, b] = [polys.jet(j, -1.0)[0], polys.jet(j, 1.0)[0]];
+        let [a, b] = polys.end_points(j);
         let (chord, c2) = (b - a, a.distance_sq(b));
         let s = if c2 > 0.0 {
             ((q - a).dot(chord) / c2).clamp(0.0, 1.0)

@@ -169,6 +169,13 @@ impl<const D: usize> SegmentPolynomials<D> {
         ((p0 - q).dot(d0), (p1 - q).dot(d1))
     }
 
+    /// The ends `P(-1)`, `P(1)` of segment `j`'s polynomial.
+    #[inline]
+    pub(super) fn end_points(&self, j: usize) -> [Point<D>; 2] {
+        let [p0, _, p1, _] = self.ends[j];
+        [p0, p1]
+    }
+
     /// True when `|P - x|^2` is strictly convex on segment `j` for every `x` within `radius`
     /// of `centre`: with `x = centre + e`, `|e| <= radius`, and `P'' = 2 c_2 + E(v)`,
     /// `|E| <= A3 = Σ_{k>=3} k (k - 1) |c_k|`,
