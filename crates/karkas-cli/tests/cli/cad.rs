@@ -344,6 +344,49 @@ fn closed_curves_and_surfaces_carry_their_closed_flags() {
     assert_eq!((f[5].as_str(), f[6].as_str()), ("0", "1"));
 }
 
+/// The STEP `FILE_NAME` time stamp (its second field) and the IGES global dates (fields 18
+/// and 25) of a curve written with `SOURCE_DATE_EPOCH` set to `fixed`, or unset.
+fn written_time_stamps(fixed: Option<&str>) -> (String, String, String) {
+    let dir = temp_dir();
+    let input = write(dir.path(), "p.csv", "x,y\n0,0\n1,2\n2,-1\n3,0\n");
+    let mut stamps = Vec::new();
+    for ext in ["step", "igs"] {
+        let out = dir.path().join(format!("p.{ext}"));
+        let mut command = std::process::Command::new(env!("CARGO_BIN_EXE_karkas"));
+        command.args(["curve", "ll", "--order", "2", s(&input), "-o", s(&out)]);
+        match fixed {
+            Some(value) => command.env("SOURCE_DATE_EPOCH", value),
+            None => command.env_remove("SOURCE_DATE_EPOCH"),
+        };
+        let o = command.output().unwrap();
+        assert!(o.status.success(), "{}", stderr(&o));
+        stamps.push(std::fs::read_to_string(&out).unwrap());
+    }
+    let file_name = stamps[0]
+        .lines()
+        .find(|l| l.starts_with("FILE_NAME("))
+        .unwrap()
+        .to_owned();
+    let step_stamp = file_name.split('\'').nth(3).unwrap().to_owned();
+    let g = iges_global(&stamps[1]);
+    (step_stamp, g[17].clone(), g[24].clone())
+}
+
+#[test]
+fn step_and_iges_carry_the_moment_they_were_written() {
+    // SOURCE_DATE_EPOCH = 10^9 s is 2001-09-09 01:46:40 UTC (reproducible output).
+    let (step, iges_made, iges_changed) = written_time_stamps(Some("1000000000"));
+    assert_eq!(step, "2001-09-09T01:46:40");
+    assert_eq!(iges_made, "15H20010909.014640");
+    assert_eq!(iges_changed, iges_made);
+    // Without it, the clock: moments after this code was written, in each format's spelling.
+    let (step, iges_made, _) = written_time_stamps(None);
+    assert_eq!(step.len(), 19, "{step}");
+    assert!(step.as_str() > "2026-01-01T00:00:00", "{step}");
+    assert_eq!(iges_made.len(), 18, "{iges_made}");
+    assert!(iges_made.as_str() > "15H20260101.000000", "{iges_made}");
+}
+
 #[test]
 fn iges_states_the_largest_coordinate() {
     let dir = temp_dir();

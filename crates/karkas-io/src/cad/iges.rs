@@ -19,6 +19,7 @@ use karkas::{Curve, Surface};
 use crate::cad::entity::{
     curve_closed, max_coordinate, real, surface_closed, write_named, CadEntity,
 };
+use crate::cad::time_stamp::FileStamp;
 use crate::error::IoError;
 
 /// Columns of data in a parameter line.
@@ -137,7 +138,7 @@ pub fn iges_text(entities: &[CadEntity<'_>], name: &str) -> String {
         let line: String = line.chars().filter(char::is_ascii).take(G_WIDTH).collect();
         record(&mut text, &line, 'S', k + 1);
     }
-    let stamp = "20000101.000000"; // files are reproducible: no clock in the output
+    let stamp = FileStamp::now().iges();
     let global = [
         "1H,".to_owned(),
         "1H;".to_owned(),
@@ -156,14 +157,14 @@ pub fn iges_text(entities: &[CadEntity<'_>], name: &str) -> String {
         hollerith("MM"),
         "1".to_owned(),
         real(1.0),
-        hollerith(stamp),
+        hollerith(&stamp),
         real(1e-9),
         real(max_coordinate(entities)),
         hollerith(""),
         hollerith(""),
         "11".to_owned(),
         "0".to_owned(),
-        hollerith(stamp),
+        hollerith(&stamp),
     ];
     let global_lines = pack(&global, G_WIDTH);
     for (k, line) in global_lines.iter().enumerate() {

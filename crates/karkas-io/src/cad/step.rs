@@ -21,6 +21,7 @@ use karkas::bspline::{BSplineCurve, BSplineSurface};
 use karkas::{Point, Surface};
 
 use crate::cad::entity::{curve_closed, knot_runs, real, surface_closed, write_named, CadEntity};
+use crate::cad::time_stamp::FileStamp;
 use crate::error::IoError;
 
 /// The entity instances of a STEP data section, numbered from 1.
@@ -222,7 +223,8 @@ pub fn step_text(entities: &[CadEntity<'_>], name: &str) -> String {
     text.push_str("FILE_DESCRIPTION(('karkas exact B-spline export'),'2;1');\n");
     let _ = writeln!(
         text,
-        "FILE_NAME('{name}','',(''),(''),'karkas {}','karkas','');",
+        "FILE_NAME('{name}','{}',(''),(''),'karkas {}','karkas','');",
+        FileStamp::now().iso8601(),
         env!("CARGO_PKG_VERSION")
     );
     text.push_str(
