@@ -37,10 +37,13 @@
 use super::guards::{shape_faults, with_warnings};
 use super::knots::{start_parameters_for, uniform_knots, MIN_KNOT_SPACING};
 use super::noise::estimate_noise;
-use super::penalty::{check_inputs, check_settings, fit_checked, FitOptions, DEFAULT_SMOOTHING};
+use super::penalty::{
+    check_inputs, check_settings, fit_checked, in_fit_units, FitOptions, DEFAULT_SMOOTHING,
+};
 use super::prune::prune;
 use super::refine::{refined_knots, worst_per_piece};
 use super::result::{CurveFit, FitWarning, FitWarningKind};
+use super::unit_scale::UnitScale;
 use crate::{Error, Point, Result};
 
 /// The most Newton iterations of one round's fit: each round starts from the previous
@@ -144,6 +147,53 @@ pub fn fit_curve_adaptive<const D: usize>(
         });
     }
     check_settings(options)?;
+    let unit = UnitScale::of(points);
+    let (scaled, scaled_options) = (unit.points(points), in_fit_units(options, unit));
+    let (best, stop, rounds) = adaptive_rounds(&scaled, unit.length(tolerance), &scaled_options)?;
+    if stop == AdaptiveStop::Met {
+        return Ok(AdaptiveFit {
+            fit: with_warnings(points, unit.restore(best)),
+            tolerance_met: true,
+            rounds,
+            stop,
+        });
+    }
+    let mut best = with_warnings(points, unit.restore(best));
+    let worst_at = best
+        .distances
+        .iter()
+        .enumerate()
+        .fold(
+            (0, -1.0),
+            |(i, m), (j, &d)| if d > m { (j, d) } else { (i, m) },
+        )
+        .0;
+    let message = format!(
+        "tolerance {tolerance:e} not met: the best fit reached max deviation {:.3e} with {} knots (stopped: {})",
+        best.max_distance(),
+        best.spline.knots().len(),
+        stop.describe(&best)
+    );
+    best.warnings.push(FitWarning {
+        kind: FitWarningKind::ToleranceNotMet,
+        parameter: best.parameters[worst_at],
+        message,
+    });
+    Ok(AdaptiveFit {
+        fit: best,
+        tolerance_met: false,
+        rounds,
+        stop,
+    })
+}
+
+/// The rounds of [`fit_curve_adaptive`] on points brought to unit size: the best fit
+/// (without warnings), why the rounds stopped, and how many there were.
+fn adaptive_rounds<const D: usize>(
+    points: &[Point<D>],
+    tolerance: f64,
+    options: &FitOptions,
+) -> Result<(CurveFit<D>, AdaptiveStop, usize)> {
     let asked = options.smoothing;
     // The smoothing is sized by the noise estimated from the points: a tolerance below twice
     // that estimate asks for a curve closer to the points than the smoothing would let it
@@ -186,42 +236,10 @@ pub fn fit_curve_adaptive<const D: usize>(
         }
     }
     if stop == AdaptiveStop::Met {
-        let best = smoothed_if_faulty(points, tolerance, options, asked, best)?;
-        let best = prune(points, tolerance, options, best, warm_parameters)?;
-        return Ok(AdaptiveFit {
-            fit: with_warnings(points, best),
-            tolerance_met: true,
-            rounds,
-            stop,
-        });
+        let smoothed = smoothed_if_faulty(points, tolerance, options, asked, best)?;
+        best = prune(points, tolerance, options, smoothed, warm_parameters)?;
     }
-    let mut best = with_warnings(points, best);
-    let worst_at = best
-        .distances
-        .iter()
-        .enumerate()
-        .fold(
-            (0, -1.0),
-            |(i, m), (j, &d)| if d > m { (j, d) } else { (i, m) },
-        )
-        .0;
-    let message = format!(
-        "tolerance {tolerance:e} not met: the best fit reached max deviation {:.3e} with {} knots (stopped: {})",
-        best.max_distance(),
-        best.spline.knots().len(),
-        stop.describe(&best)
-    );
-    best.warnings.push(FitWarning {
-        kind: FitWarningKind::ToleranceNotMet,
-        parameter: best.parameters[worst_at],
-        message,
-    });
-    Ok(AdaptiveFit {
-        fit: best,
-        tolerance_met: false,
-        rounds,
-        stop,
-    })
+    Ok((best, stop, rounds))
 }
 
 /// Smoothing tried, in turn, on a fit within the tolerance that crosses itself or turns too

@@ -73,6 +73,7 @@ mod prune;
 mod refine;
 mod result;
 mod solver;
+mod unit_scale;
 
 pub use adaptive::{fit_curve_adaptive, AdaptiveFit, AdaptiveStop};
 pub use guards::{

@@ -38,7 +38,9 @@ use super::power::PowerForm;
 use super::problem::{Problem, State};
 use super::result::CurveFit;
 use super::solver::{Penalty, Solver, Stop};
+use super::unit_scale::UnitScale;
 use crate::{Curve, Error, Point, Result};
+use std::borrow::Cow;
 
 /// Iterations spent on the feasible reference `q*` of the paper's bound.
 const REFERENCE_ITERATIONS: usize = 5;
@@ -254,10 +256,24 @@ pub fn fit_curve<const D: usize>(
     options: &FitOptions,
 ) -> Result<CurveFit<D>> {
     let weights = check_inputs(points, knots, options)?;
-    let noise = estimate_noise(points);
-    let start = start_parameters_for(points, &options.start, noise.sigma)?;
-    fit_checked(points, knots, &weights, start, options, &noise)
-        .map(|fit| with_warnings(points, fit))
+    let unit = UnitScale::of(points);
+    let (scaled, options) = (unit.points(points), in_fit_units(options, unit));
+    let noise = estimate_noise(&scaled);
+    let start = start_parameters_for(&scaled, &options.start, noise.sigma)?;
+    fit_checked(&scaled, knots, &weights, start, &options, &noise)
+        .map(|fit| with_warnings(points, unit.restore(fit)))
+}
+
+/// `options` in the units of a fit of points divided by `unit`'s scale: the bound `eps` on
+/// the squared jumps scales with them; the other settings are dimensionless.
+pub(crate) fn in_fit_units(options: &FitOptions, unit: UnitScale) -> Cow<'_, FitOptions> {
+    if unit.scale() == 1.0 {
+        return Cow::Borrowed(options);
+    }
+    Cow::Owned(FitOptions {
+        eps: unit.squared_length(options.eps),
+        ..options.clone()
+    })
 }
 
 /// The fit after the inputs were checked, `noise` estimated from the points.

@@ -67,7 +67,9 @@ pub struct CurveFairness {
     /// The largest distance of the curve from the polygon of the input points (NaN when the
     /// points give no polygon: fewer than two distinct ones).
     pub max_distance_to_polygon: f64,
-    /// `∫ (dκ/ds)^2 ds` over the curve.
+    /// `∫ (dκ/ds)^2 ds` over the curve. It scales as `1/size^3`: infinite for a curve so small
+    /// (below about 1e-100 units for an airfoil-like shape) that it exceeds the floating-point
+    /// range, and 0 for one so large that it falls below it.
     pub fairness_energy: f64,
     /// The number of polynomial pieces.
     pub pieces: usize,
@@ -219,7 +221,7 @@ pub fn curve_fairness<C: PiecewiseCurve<D> + ?Sized, const D: usize>(
         &breaks,
         &samples,
         m,
-        rate_threshold * rate_threshold * length,
+        (rate_threshold * length.sqrt()).powi(2),
     );
     let curvature_jump = samples
         .chunks(m + 1)
@@ -272,6 +274,11 @@ fn curvature_range<C: PiecewiseCurve<D> + ?Sized, const D: usize>(
 
 /// `∫ (dκ/ds)^2 ds` piece by piece, to [`RELATIVE_ACCURACY`] of an estimate from the samples
 /// (or `floor`, the integral of the noise threshold squared, when that is larger).
+///
+/// Each piece is integrated over its own unit interval `τ`, `t = a + (b - a) τ`, with the
+/// integrand `(κ_s sqrt(|P'| (b - a)))^2`: the factors stay near the energy's own scale
+/// (`1/size^3`), where `κ_s^2 |P'|` alone leaves the floating-point range for curves
+/// below about 1e-77 units long though their energy does not.
 fn energy<C: PiecewiseCurve<D> + ?Sized, const D: usize>(
     curve: &C,
     breaks: &[f64],
@@ -283,33 +290,43 @@ fn energy<C: PiecewiseCurve<D> + ?Sized, const D: usize>(
     if span.is_nan() || span <= 0.0 {
         return 0.0;
     }
-    let density = |s: &Sample<D>| s.rate * s.rate * s.speed;
+    // `(rate sqrt(speed width))^2`, the energy density of a piece of parameter width `width`
+    // per unit of its own interval.
+    let density = |rate: f64, speed: f64, width: f64| {
+        let value = (rate * (speed * width).sqrt()).powi(2);
+        if value.is_finite() {
+            value
+        } else if rate.is_finite() && speed.is_finite() {
+            // Finite factors whose product overflows: the energy of a curve so small that it
+            // exceeds the floating-point range (it grows as 1/size^3).
+            f64::INFINITY
+        } else {
+            0.0 // a singular point (a cusp's zero speed), of measure zero
+        }
+    };
     let estimate: f64 = samples
         .chunks(m + 1)
         .zip(breaks.windows(2))
         .map(|(piece, w)| {
-            let mean = piece
+            piece
                 .iter()
-                .map(density)
+                .map(|s| density(s.rate, s.speed, w[1] - w[0]))
                 .filter(|x| x.is_finite())
                 .sum::<f64>()
-                / piece.len() as f64;
-            mean * (w[1] - w[0])
+                / piece.len() as f64
         })
         .sum();
     let tolerance = (RELATIVE_ACCURACY * estimate).max(floor);
-    let f = |t: f64| {
-        let rate = curvature_rate(curve, t).1;
-        let value = rate * rate * curve.deriv(t, 1).norm();
-        if value.is_finite() {
-            value
-        } else {
-            0.0
-        }
-    };
     breaks
         .windows(2)
-        .map(|w| integrate(&f, w[0], w[1], tolerance * (w[1] - w[0]) / span))
+        .map(|w| {
+            let (a, width) = (w[0], w[1] - w[0]);
+            let f = |tau: f64| {
+                let t = a + width * tau;
+                density(curvature_rate(curve, t).1, curve.deriv(t, 1).norm(), width)
+            };
+            integrate(&f, 0.0, 1.0, tolerance * width / span)
+        })
         .sum()
 }
 
