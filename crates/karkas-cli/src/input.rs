@@ -9,6 +9,7 @@ use anyhow::{bail, Result};
 use karkas::Point;
 use karkas_io::input::{display_name, is_stdin};
 use karkas_io::points::{read_curve_points, CurvePoints};
+use karkas_io::range::check_stray_point;
 use std::path::Path;
 
 /// Refuses standard input (`-`) for more than one of a command's `inputs` (the options or
@@ -102,10 +103,16 @@ pub fn curve_points<const D: usize>(input: &Path, points: &[Point<D>]) -> Result
     Ok(())
 }
 
-/// Refuses a surface grid whose points all coincide or all lie on one line.
+/// Refuses a surface grid whose points all coincide or all lie on one line, naming a lone
+/// stray point when that is why they seem to.
 pub fn grid_points<const D: usize>(input: &Path, points: &[Point<D>]) -> Result<()> {
     if points.len() > 1 {
-        match spread(points) {
+        let spread = spread(points);
+        if spread != Spread::Surface {
+            // One stray value sets the model's size, and the rest look like a point or a line.
+            check_stray_point(points, &display_name(input))?;
+        }
+        match spread {
             Spread::OnePoint => bail!(
                 "{}: all {} grid points coincide (at {}): there is no surface to build",
                 display_name(input).display(),

@@ -21,6 +21,7 @@ use crate::input::excerpt;
 use crate::lines::{
     csv_rows, header_columns, parse_coordinate, read_text, row_location, strip_bom, Row,
 };
+use crate::range::check_coordinate_range;
 
 /// The names of a file of indexed points `a,b,x,y,z`, and how its errors name a cell.
 pub(crate) struct IndexedLayout {
@@ -106,6 +107,7 @@ pub(crate) fn parse_indexed(
     for ((i, j), (_, p)) in cells {
         points[i * cols + j] = p;
     }
+    check_coordinate_range(points.iter().flat_map(|p| p.0), path)?;
     Grid::from_row_major(rows, cols, points).map_err(|source| IoError::geometry(path, source))
 }
 

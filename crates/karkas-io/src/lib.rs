@@ -49,6 +49,7 @@ pub mod network;
 pub mod picture;
 pub mod points;
 pub mod pointset;
+pub mod range;
 pub mod samples;
 pub mod skeleton;
 pub mod viewer;

@@ -18,6 +18,7 @@ use crate::input::excerpt;
 use crate::lines::{
     csv_rows, header_columns, parse_coordinate, read_text, row_location, strip_bom, Row,
 };
+use crate::range::{check_coordinate_range, check_stray_point};
 
 /// The column names of a curve-family file.
 const NAMES: [&str; 4] = ["curve", "x", "y", "z"];
@@ -90,6 +91,9 @@ pub fn parse_curve_family(text: &str, path: &Path) -> Result<CurveFamily, IoErro
         family.curves.push(points);
         family.first_lines.push(line);
     }
+    check_coordinate_range(family.curves.iter().flatten().flat_map(|p| p.0), path)?;
+    let all: Vec<Point3> = family.curves.iter().flatten().copied().collect();
+    check_stray_point(&all, path)?;
     Ok(family)
 }
 

@@ -24,7 +24,7 @@
 use std::io::BufRead;
 use std::path::Path;
 
-use karkas::{Point2, Point3};
+use karkas::{Point, Point2, Point3};
 
 use crate::airfoil::AirfoilReader;
 use crate::columns::{read_columns, Either, Layout};
@@ -33,6 +33,7 @@ use crate::input::{display_name, excerpt, Input};
 use crate::lines::{
     check_held_at, first_token, is_number, looks_numeric, strip_comment, LineReader,
 };
+use crate::range::check_coordinate_range;
 use crate::store::{input_size, Flat, Store};
 
 /// An ordered list of curve points, planar or spatial as the file says.
@@ -74,8 +75,8 @@ pub fn read_curve_points(path: &Path) -> Result<CurvePoints, IoError> {
     let mut lines = LineReader::new(Input::open(path)?, &name);
     Ok(
         match read_any::<_, Vec<Point2>, Vec<Point3>>(&mut lines, path, input_size(path))? {
-            Either::Planar(p) => CurvePoints::Planar(p),
-            Either::Spatial(p) => CurvePoints::Spatial(p),
+            Either::Planar(p) => CurvePoints::Planar(in_range(p, &name)?),
+            Either::Spatial(p) => CurvePoints::Spatial(in_range(p, &name)?),
         },
     )
 }
@@ -92,6 +93,10 @@ pub fn read_curve_coordinates(path: &Path) -> Result<(Vec<f64>, usize), IoError>
             Either::Spatial(p) => (p.0, 3),
         },
     )
+    .and_then(|(flat, dim)| {
+        check_coordinate_range(flat.iter().copied(), &name)?;
+        Ok((flat, dim))
+    })
 }
 
 /// Reads curve points from `text` already in memory; `path` names the file in error messages
@@ -100,10 +105,16 @@ pub fn parse_curve_points(text: &str, path: &Path) -> Result<CurvePoints, IoErro
     let mut lines = LineReader::new(text.as_bytes(), path);
     Ok(
         match read_any::<_, Vec<Point2>, Vec<Point3>>(&mut lines, path, Some(text.len() as u64))? {
-            Either::Planar(p) => CurvePoints::Planar(p),
-            Either::Spatial(p) => CurvePoints::Spatial(p),
+            Either::Planar(p) => CurvePoints::Planar(in_range(p, path)?),
+            Either::Spatial(p) => CurvePoints::Spatial(in_range(p, path)?),
         },
     )
+}
+
+/// `points`, unless their coordinates are out of karkas's range ([`check_coordinate_range`]).
+fn in_range<const D: usize>(points: Vec<Point<D>>, path: &Path) -> Result<Vec<Point<D>>, IoError> {
+    check_coordinate_range(points.iter().flat_map(|p| p.0), path)?;
+    Ok(points)
 }
 
 /// Reads the points of `lines` (the input `path`, of `size` bytes when known) into the store

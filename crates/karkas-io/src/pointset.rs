@@ -14,6 +14,7 @@ use crate::input::display_name;
 use crate::lines::read_text;
 pub use crate::mesh::obj::parse_obj_vertices;
 use crate::points::{read_curve_points, CurvePoints};
+use crate::range::check_coordinate_range;
 
 /// Reads the points of `path`: OBJ vertices for `.obj`, otherwise CSV/whitespace columns
 /// with `x`, `y`, `z` (see [`crate::points`]), read in one pass; `-` is standard input.
@@ -22,7 +23,9 @@ pub fn read_point_set(path: &Path) -> Result<Vec<Point3>, IoError> {
         .extension()
         .is_some_and(|e| e.eq_ignore_ascii_case("obj"));
     if is_obj {
-        return parse_obj_vertices(&read_text(path)?, path);
+        let points = parse_obj_vertices(&read_text(path)?, path)?;
+        check_coordinate_range(points.iter().flat_map(|p| p.0), path)?;
+        return Ok(points);
     }
     match read_curve_points(path)? {
         CurvePoints::Spatial(points) => Ok(points),

@@ -11,6 +11,7 @@
 use std::borrow::Cow;
 
 use karkas::{Grid, Point, Point3};
+use karkas_io::range::check_coordinate_range;
 use numpy::ndarray::{Dimension, Ix2, Ix3};
 use numpy::{
     AllowTypeChange, PyArrayDescrMethods, PyArrayDyn, PyArrayLike, PyArrayLike1, PyArrayLikeDyn,
@@ -115,6 +116,9 @@ impl<'py, Dm: Dimension + 'py> CoordArray<'py, Dm> {
             ))
         })?;
         check_copy(&array, what)?;
+        let coordinates = array.as_array();
+        check_coordinate_range(coordinates.iter().copied(), std::path::Path::new(what))
+            .map_err(|e| PointsError::new_err(e.to_string()))?;
         Ok(CoordArray { array })
     }
 

@@ -21,6 +21,7 @@ mod meshes;
 mod output_bounds;
 mod pictures;
 mod reading;
+mod scale;
 mod section;
 mod surface_bicubic;
 mod surface_coons;
