@@ -8,6 +8,7 @@
 use crate::args::{GridSamples, MeshOutput};
 use crate::input::one_standard_input;
 use crate::output::cad::write_cad_surface;
+use crate::output::console::note;
 use crate::output::formats::EXACT_SURFACE_FORMATS;
 use crate::output::overwrite::ensure_distinct;
 use crate::output::samples::default_surface_samples;
@@ -16,7 +17,7 @@ use crate::output::target::output_format;
 use anyhow::{anyhow, bail, Context, Result};
 use clap::{Args, ValueEnum};
 use karkas::coons::{
-    CoonsKind, CoonsSurface, CrossDerivatives, CurveFit, PointNetwork, CROSSING_TOLERANCE,
+    Compatibility, CoonsKind, CurveFit, PointNetwork, Repair, CROSSING_TOLERANCE,
     POINT_NETWORK_TOLERANCE,
 };
 use karkas::Error;
@@ -66,6 +67,16 @@ pub struct SurfaceCoonsArgs {
     /// point counts as --v-curves [default: those of the gordon-spline surface].
     #[arg(long, value_name = "DV.csv")]
     v_derivs: Option<PathBuf>,
+    /// The tolerance of the compatibility conditions (8)/(11), relative to the model size
+    /// (the diagonal of the bounding box of the curves), per node spacing for each
+    /// derivative in a condition: data further apart are refused [default: 1e-4].
+    #[arg(long, value_name = "T")]
+    tolerance: Option<f64>,
+    /// Make incompatible data compatible instead of refusing it: both sides of every
+    /// condition (the curves' crossings, the cross-derivatives against the curves' tangents,
+    /// the twists) are moved to their mean, and the largest correction is reported.
+    #[arg(long, conflicts_with = "tolerance")]
+    repair: bool,
     #[command(flatten)]
     samples: GridSamples,
     #[command(flatten)]
@@ -84,6 +95,11 @@ pub fn run(args: &SurfaceCoonsArgs) -> Result<()> {
     args.mesh.check(format)?;
     if args.u_derivs.is_some() != args.v_derivs.is_some() {
         bail!("--u-derivs and --v-derivs go together: give both or neither");
+    }
+    if let Some(t) = args.tolerance {
+        if !(t.is_finite() && t >= 0.0) {
+            bail!("--tolerance must be a finite number >= 0, got {t}");
+        }
     }
     let with_derivs = args.u_derivs.is_some();
     if with_derivs && !matches!(args.kind, Kind::Bicubic | Kind::Composite) {
@@ -129,7 +145,19 @@ pub fn run(args: &SurfaceCoonsArgs) -> Result<()> {
         }
         _ => None,
     };
-    let surface = build(args.kind, &network, cross.as_ref()).map_err(|e| files.explain(e))?;
+    let compatibility = if args.repair {
+        Compatibility::Repair
+    } else {
+        Compatibility::Check(args.tolerance.unwrap_or(POINT_NETWORK_TOLERANCE))
+    };
+    let surface = args
+        .kind
+        .to_library()
+        .build(network.network(), cross.as_ref(), compatibility)
+        .map_err(|e| files.explain(e))?;
+    if let Some(repair) = surface.repair() {
+        report_repair(repair);
+    }
     if format.is_cad() {
         let what = format!("{}, {}", args.u_curves.display(), args.v_curves.display());
         return write_cad_surface(&surface, format, &args.output, what);
@@ -166,14 +194,13 @@ impl Kind {
     }
 }
 
-/// The surface of `kind` over the network.
-fn build(
-    kind: Kind,
-    network: &PointNetwork<3>,
-    cross: Option<&CrossDerivatives<3>>,
-) -> karkas::Result<CoonsSurface<3>> {
-    kind.to_library()
-        .build(network.network(), cross, POINT_NETWORK_TOLERANCE)
+/// Prints the largest correction of `--repair` (the command has no JSON summary).
+fn report_repair(repair: &Repair) {
+    note(format!(
+        "karkas: repaired the compatibility conditions: largest correction {:.3e} ({:.3e} of \
+         the model size), {} at (u={}, v={})",
+        repair.correction, repair.relative, repair.condition, repair.u, repair.v
+    ));
 }
 
 /// Reads a curve family, refusing curves too short to interpolate (named by their line).

@@ -445,3 +445,142 @@ fn straight_edges_of_two_points_make_the_bilinear_patch() {
         }
     }
 }
+
+/// The network of the wave `(x, y, a sin wx cos wy)` with `per_span` point steps between
+/// crossings (u-curves at y = 0, 1, 2, v-curves at x = 0, 1, 2), and its exact
+/// cross-derivatives per unit of the surface's parameters (which run over 0..2 in x and y: a
+/// factor 2), dS/dv along the u-curves shifted by `shift`.
+fn sheet_with_derivs(
+    dir: &Path,
+    per_span: usize,
+    (a, w): (f64, f64),
+    shift: [f64; 3],
+) -> [PathBuf; 4] {
+    let steps = 2 * per_span;
+    let sheet = |x: f64, y: f64| [x, y, a * (w * x).sin() * (w * y).cos()];
+    let write = |name: &str, f: &dyn Fn(usize, f64) -> [f64; 3]| {
+        let mut text = String::from("curve,x,y,z\n");
+        for k in 0..3 {
+            for q in 0..=steps {
+                let p = f(k, 2.0 * q as f64 / steps as f64);
+                text.push_str(&format!("{k},{},{},{}\n", p[0], p[1], p[2]));
+            }
+        }
+        let path = dir.join(name);
+        std::fs::write(&path, text).unwrap();
+        path
+    };
+    let u = write("u.csv", &|k, t| sheet(t, k as f64));
+    let v = write("v.csv", &|k, t| sheet(k as f64, t));
+    let du = write("du.csv", &|k, t| {
+        let y = k as f64;
+        let dz = -2.0 * a * w * (w * t).sin() * (w * y).sin();
+        [shift[0], 2.0 + shift[1], dz + shift[2]]
+    });
+    let dv = write("dv.csv", &|k, t| {
+        let x = k as f64;
+        [2.0, 0.0, 2.0 * a * w * (w * x).cos() * (w * t).cos()]
+    });
+    [u, v, du, dv]
+}
+
+/// `surface coons --kind composite` of the four files, with `extra` options.
+fn composite(files: &[PathBuf; 4], out: &Path, extra: &[&str]) -> std::process::Output {
+    let mut args = vec![
+        "surface",
+        "coons",
+        "--kind",
+        "composite",
+        "--u-curves",
+        s(&files[0]),
+        "--v-curves",
+        s(&files[1]),
+        "--u-derivs",
+        s(&files[2]),
+        "--v-derivs",
+        s(&files[3]),
+        "--samples",
+        "9,33",
+        "-o",
+        s(out),
+    ];
+    args.extend_from_slice(extra);
+    karkas(&args)
+}
+
+#[test]
+fn tolerance_option_accepts_what_the_default_refuses() {
+    // Exact derivatives, but 8 point steps per span of a wave: the interpolated curves'
+    // tangents differ from them by more than the default 1e-4 of the model size.
+    let dir = temp_dir();
+    let files = sheet_with_derivs(dir.path(), 8, (0.5, 2.0), [0.0; 3]);
+    let out = dir.path().join("out.csv");
+    let o = composite(&files, &out, &[]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    let message = stderr(&o);
+    assert!(
+        message.contains("differ by 1.344e-3 (tolerance 5.967e-4)"),
+        "{message}"
+    );
+    assert!(!out.exists());
+    let o = composite(&files, &out, &["--tolerance", "3e-3"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_eq!(read_csv(&out).1.len(), 9 * 33);
+    // A tolerance that is no tolerance, and --tolerance with --repair.
+    for bad in [&["--tolerance=-1"][..], &["--tolerance", "nan"]] {
+        let o = composite(&files, &dir.path().join("bad.csv"), bad);
+        assert_eq!(o.status.code(), Some(2));
+        assert!(stderr(&o).contains("--tolerance must be a finite number >= 0"));
+    }
+    let o = composite(
+        &files,
+        &dir.path().join("bad.csv"),
+        &["--tolerance", "1e-3", "--repair"],
+    );
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("cannot be used with"), "{}", stderr(&o));
+}
+
+#[test]
+fn repair_reports_half_the_perturbation_and_keeps_the_curves() {
+    // dS/dv along the u-curves lifted by 0.01 in z: it disagrees with the v-curves' own
+    // tangents by 0.01 at every crossing; the mean moves each side by 0.005.
+    let lift = 0.01;
+    let dir = temp_dir();
+    let files = sheet_with_derivs(dir.path(), 10, (0.3, 1.0), [0.0, 0.0, lift]);
+    let out = dir.path().join("out.csv");
+    let o = composite(&files, &out, &[]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("disagree at"), "{}", stderr(&o));
+    let o = composite(&files, &out, &["--repair"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let message = stderr(&o);
+    let reported: f64 = message
+        .split("largest correction ")
+        .nth(1)
+        .and_then(|rest| rest.split_whitespace().next())
+        .and_then(|x| x.parse().ok())
+        .unwrap_or_else(|| panic!("no correction in {message:?}"));
+    assert!(
+        (reported - lift / 2.0).abs() < 0.05 * lift,
+        "{reported} vs {lift} / 2: {message}"
+    );
+    assert!(message.contains("d/dv"), "{message}");
+    // Proposition 1 for the repaired curves: the u-curves are still the given curves (their
+    // crossings and tangents agreed with the v-curves and their cross-derivatives), and the
+    // surface's dS/dv along v = 0 is the mean of the lifted data and the v-curves' tangents.
+    let (_, rows) = read_csv(&out);
+    for a in 0..9 {
+        let row = &rows[a * 33];
+        let want = sheet(2.0 * row[0], 0.0);
+        for c in 0..3 {
+            assert!((row[2 + c] - want[c]).abs() < 1e-4, "{row:?}");
+        }
+    }
+    // At the crossing (u, v) = (0.5, 0): one-sided differences of the samples (h = 1/32)
+    // against dS/dv = (0, 2, 0) + 0.005 z, to the sampling error.
+    let (p0, p1, p2) = (&rows[4 * 33], &rows[4 * 33 + 1], &rows[4 * 33 + 2]);
+    let h = 1.0 / 32.0;
+    let dz = (-3.0 * p0[4] + 4.0 * p1[4] - p2[4]) / (2.0 * h);
+    assert!((dz - lift / 2.0).abs() < 5e-4, "{dz}");
+}

@@ -7,7 +7,7 @@ use super::blending::{
 };
 use super::curves::CurveRef;
 use super::network::{CrossDerivatives, CurveNetwork, NetworkAxis};
-use super::surface::{FamilyRef, Names};
+use super::surface::{Compatibility, FamilyRef, Names};
 use super::CoonsSurface;
 use crate::{Error, Result};
 
@@ -22,7 +22,10 @@ impl<const D: usize> CoonsSurface<D> {
     ///
     /// Errors: another network shape ([`Error::NotFourSided`]); incompatible corners
     /// ([`Error::IncompatibleCurves`]).
-    pub fn bilinear(network: &CurveNetwork<D>, tolerance: f64) -> Result<Self> {
+    pub fn bilinear(
+        network: &CurveNetwork<D>,
+        compatibility: impl Into<Compatibility>,
+    ) -> Result<Self> {
         let (u0, u1, v0, v1) = four_sided(network, "bilinear Coons")?;
         let u: FamilyRef = Arc::new(LagrangeBlending::new(&[u0, u1])?);
         let v: FamilyRef = Arc::new(LagrangeBlending::new(&[v0, v1])?);
@@ -31,7 +34,7 @@ impl<const D: usize> CoonsSurface<D> {
             v,
             network.v_curves().to_vec(),
             network.u_curves().to_vec(),
-            tolerance,
+            compatibility.into(),
             (false, false),
             Names {
                 v_curve: &|i| format!("v-curve {i}"),
@@ -55,10 +58,11 @@ impl<const D: usize> CoonsSurface<D> {
     pub fn bicubic(
         network: &CurveNetwork<D>,
         cross: Option<&CrossDerivatives<D>>,
-        tolerance: f64,
+        compatibility: impl Into<Compatibility>,
     ) -> Result<Self> {
         let (u0, u1, v0, v1) = four_sided(network, "bicubic Coons")?;
-        let cross = cross_or_derived(network, cross, tolerance)?;
+        let compatibility = compatibility.into();
+        let cross = cross_or_derived(network, cross, compatibility)?;
         let (a, b) = (network.v_curves(), network.u_curves());
         let (da, db) = (&cross.v_curves, &cross.u_curves);
         let u: FamilyRef = Arc::new(CubicHermiteBlending::new(u0, u1)?);
@@ -78,7 +82,7 @@ impl<const D: usize> CoonsSurface<D> {
             v,
             vec![a[0].clone(), da[0].clone(), da[1].clone(), a[1].clone()],
             vec![b[0].clone(), db[0].clone(), db[1].clone(), b[1].clone()],
-            tolerance,
+            compatibility,
             (false, false),
             Names {
                 v_curve: &|k| name("v-curve", k),
@@ -93,7 +97,10 @@ impl<const D: usize> CoonsSurface<D> {
     ///
     /// Errors: a violation of (8) at a crossing ([`Error::IncompatibleCurves`] naming the
     /// v-curve and u-curve).
-    pub fn gordon(network: &CurveNetwork<D>, tolerance: f64) -> Result<Self> {
+    pub fn gordon(
+        network: &CurveNetwork<D>,
+        compatibility: impl Into<Compatibility>,
+    ) -> Result<Self> {
         let (u_axis, v_axis) = (network.u_axis(), network.v_axis());
         let u: FamilyRef = Arc::new(LagrangeBlending::new(&u_axis.nodes_with_seam())?);
         let v: FamilyRef = Arc::new(LagrangeBlending::new(&v_axis.nodes_with_seam())?);
@@ -103,7 +110,7 @@ impl<const D: usize> CoonsSurface<D> {
             v,
             with_seam(network.v_curves(), u_axis),
             with_seam(network.u_curves(), v_axis),
-            tolerance,
+            compatibility.into(),
             (u_axis.is_closed(), v_axis.is_closed()),
             Names {
                 v_curve: &|i| format!("v-curve {}", i % count.0),
@@ -119,7 +126,7 @@ impl<const D: usize> CoonsSurface<D> {
     pub fn gordon_spline(
         network: &CurveNetwork<D>,
         ends: SplineEnds,
-        tolerance: f64,
+        compatibility: impl Into<Compatibility>,
     ) -> Result<Self> {
         let family = |axis: &NetworkAxis| -> Result<FamilyRef> {
             Ok(if axis.is_closed() {
@@ -137,7 +144,7 @@ impl<const D: usize> CoonsSurface<D> {
             family(v_axis)?,
             network.v_curves().to_vec(),
             network.u_curves().to_vec(),
-            tolerance,
+            compatibility.into(),
             (u_axis.is_closed(), v_axis.is_closed()),
             Names {
                 v_curve: &|i| format!("v-curve {i}"),
@@ -169,9 +176,10 @@ impl<const D: usize> CoonsSurface<D> {
     pub fn composite(
         network: &CurveNetwork<D>,
         cross: Option<&CrossDerivatives<D>>,
-        tolerance: f64,
+        compatibility: impl Into<Compatibility>,
     ) -> Result<Self> {
-        let cross = cross_or_derived(network, cross, tolerance)?;
+        let compatibility = compatibility.into();
+        let cross = cross_or_derived(network, cross, compatibility)?;
         let (u_axis, v_axis) = (network.u_axis(), network.v_axis());
         let u: FamilyRef = Arc::new(PiecewiseHermiteBlending::new(&u_axis.nodes_with_seam())?);
         let v: FamilyRef = Arc::new(PiecewiseHermiteBlending::new(&v_axis.nodes_with_seam())?);
@@ -197,7 +205,7 @@ impl<const D: usize> CoonsSurface<D> {
             v,
             interleave(network.v_curves(), &cross.v_curves, u_axis),
             interleave(network.u_curves(), &cross.u_curves, v_axis),
-            tolerance,
+            compatibility,
             (u_axis.is_closed(), v_axis.is_closed()),
             Names {
                 v_curve: &|k| name("v-curve", k, count.0),
@@ -238,7 +246,7 @@ fn with_seam<const D: usize>(curves: &[CurveRef<D>], axis: &NetworkAxis) -> Vec<
 fn cross_or_derived<const D: usize>(
     network: &CurveNetwork<D>,
     cross: Option<&CrossDerivatives<D>>,
-    tolerance: f64,
+    compatibility: Compatibility,
 ) -> Result<CrossDerivatives<D>> {
     match cross {
         Some(c) => {
@@ -258,7 +266,7 @@ fn cross_or_derived<const D: usize>(
             Ok(c.clone())
         }
         None => {
-            let gordon = CoonsSurface::gordon_spline(network, DERIVED_CROSS_ENDS, tolerance)?;
+            let gordon = CoonsSurface::gordon_spline(network, DERIVED_CROSS_ENDS, compatibility)?;
             Ok(CrossDerivatives::from_surface(Arc::new(gordon), network))
         }
     }

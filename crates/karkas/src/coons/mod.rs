@@ -62,7 +62,11 @@
 //! **Compatibility.** Every constructor checks (8) (which for the composite family is (11))
 //! at every pair of curves with a tolerance relative to the model size, and fails with
 //! [`Error::IncompatibleCurves`](crate::Error::IncompatibleCurves) naming the two curves, the
-//! crossing and the condition: never a silently wrong surface.
+//! crossing and the condition: never a silently wrong surface. Asked to
+//! ([`Compatibility::Repair`] in place of the tolerance), it makes the data compatible
+//! instead: both sides of every condition snap to their mean, each curve moved by the blend
+//! `sum_j H_j c_j` of its corrections (exact by (5)), and reports the largest correction
+//! ([`CoonsSurface::repair`]).
 //!
 //! **Curves from points.** [`PointNetwork`] turns point lists into a network: interpolating
 //! cubic-spline curves ([`CubicSpline`](crate::param::CubicSpline), or LL curves of Aulchenko et al.), crossings found as
@@ -80,6 +84,7 @@
 //! Boolean sum needs all cardinal functions at a parameter (a transposed solve), not one
 //! interpolant.
 
+mod blended;
 mod blending;
 mod bspline;
 mod cross_derivative;
@@ -106,4 +111,4 @@ pub use kind::{CoonsKind, CROSSING_TOLERANCE, POINT_NETWORK_TOLERANCE};
 pub use network::{CrossDerivatives, CurveNetwork, NetworkAxis};
 pub use points::{CurveFit, PointNetwork};
 pub use polyline::PolylineCurve;
-pub use surface::{CoonsSurface, FamilyRef, DEFAULT_TOLERANCE};
+pub use surface::{Compatibility, CoonsSurface, FamilyRef, Repair, DEFAULT_TOLERANCE};
