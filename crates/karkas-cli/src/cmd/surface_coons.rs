@@ -145,6 +145,9 @@ pub fn run(args: &SurfaceCoonsArgs) -> Result<()> {
         }
         _ => None,
     };
+    if args.kind == Kind::Gordon {
+        warn_lagrange_seam(&network);
+    }
     let compatibility = if args.repair {
         Compatibility::Repair
     } else {
@@ -191,6 +194,27 @@ impl Kind {
             Kind::GordonSpline => CoonsKind::GordonSpline,
             Kind::Composite => CoonsKind::Composite,
         }
+    }
+}
+
+/// Warns that Lagrange blending across a closed direction leaves a `C^0` seam (Lagrange
+/// polynomials are not periodic: the first curve is blended as a last node one period on).
+fn warn_lagrange_seam(network: &PointNetwork<3>) {
+    let net = network.network();
+    let closed: Vec<&str> = [
+        (net.u_axis().is_closed(), "u"),
+        (net.v_axis().is_closed(), "v"),
+    ]
+    .into_iter()
+    .filter_map(|(closed, name)| closed.then_some(name))
+    .collect();
+    if !closed.is_empty() {
+        note(format!(
+            "karkas: warning: --kind gordon blends with Lagrange polynomials, which are not \
+             periodic: the surface closes in {} with a C^0 seam (a crease along the first \
+             curve); --kind gordon-spline or composite blend smoothly across it",
+            closed.join(" and ")
+        ));
     }
 }
 

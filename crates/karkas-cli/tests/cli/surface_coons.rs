@@ -584,3 +584,61 @@ fn repair_reports_half_the_perturbation_and_keeps_the_curves() {
     let dz = (-3.0 * p0[4] + 4.0 * p1[4] - p2[4]) / (2.0 * h);
     assert!((dz - lift / 2.0).abs() < 5e-4, "{dz}");
 }
+
+#[test]
+fn lagrange_gordon_of_closed_curves_warns_of_its_seam() {
+    let dir = temp_dir();
+    let tau = std::f64::consts::TAU;
+    let ring = |x: f64, a: f64| [x, a.cos(), a.sin()];
+    let mut frames = String::from("curve,x,y,z\n");
+    for k in 0..3 {
+        for q in 0..=12 {
+            let p = ring(k as f64, tau * (q % 12) as f64 / 12.0);
+            frames.push_str(&format!("{k},{},{},{}\n", p[0], p[1], p[2]));
+        }
+    }
+    let mut stringers = String::from("curve,x,y,z\n");
+    for j in 0..4 {
+        for q in 0..=6 {
+            let p = ring(q as f64 / 3.0, tau * j as f64 / 4.0);
+            stringers.push_str(&format!("{j},{},{},{}\n", p[0], p[1], p[2]));
+        }
+    }
+    let u = dir.path().join("stringers.csv");
+    let v = dir.path().join("frames.csv");
+    std::fs::write(&u, stringers).unwrap();
+    std::fs::write(&v, frames).unwrap();
+    let (u3, v3) = sheet_files(dir.path(), 1);
+    let out = dir.path().join("out.csv");
+    let run = |kind: &str, u: &Path, v: &Path| {
+        let o = karkas(&[
+            "surface",
+            "coons",
+            "--kind",
+            kind,
+            "--u-curves",
+            s(u),
+            "--v-curves",
+            s(v),
+            "--samples",
+            "5,5",
+            "-o",
+            s(&out),
+        ]);
+        assert!(o.status.success(), "{kind}: {}", stderr(&o));
+        stderr(&o)
+    };
+    let warned = run("gordon", &u, &v);
+    assert!(
+        warned.contains("warning") && warned.contains("closes in v with a C^0 seam"),
+        "{warned}"
+    );
+    for (kind, u, v) in [
+        ("gordon-spline", &u, &v),
+        ("composite", &u, &v),
+        ("gordon", &u3, &v3),
+    ] {
+        let quiet = run(kind, u, v);
+        assert!(!quiet.contains("seam"), "{kind}: {quiet}");
+    }
+}
