@@ -8,8 +8,10 @@
 //! - the repair of incompatible data, which moves each curve by the blend of its corrections
 //!   (see [`Compatibility::Repair`](super::Compatibility::Repair)).
 
+use std::sync::Arc;
+
+use super::blending::BlendingFamily;
 use super::curves::CurveRef;
-use super::surface::FamilyRef;
 use crate::core::{Curve, Interval, PolynomialPieces};
 use crate::Point;
 
@@ -17,7 +19,7 @@ use crate::Point;
 #[derive(Clone)]
 pub(crate) struct BlendedCurve<const D: usize> {
     base: Option<CurveRef<D>>,
-    family: FamilyRef,
+    family: Arc<dyn BlendingFamily>,
     coefficients: Vec<Point<D>>,
     closed: bool,
 }
@@ -37,7 +39,7 @@ impl<const D: usize> BlendedCurve<D> {
     /// callers guarantee it), closed as `closed` says (a closed base keeps it closed).
     pub(crate) fn new(
         base: Option<CurveRef<D>>,
-        family: FamilyRef,
+        family: Arc<dyn BlendingFamily>,
         coefficients: Vec<Point<D>>,
         closed: bool,
     ) -> Self {
