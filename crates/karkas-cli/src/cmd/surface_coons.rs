@@ -17,10 +17,11 @@ use crate::output::target::output_format;
 use anyhow::{anyhow, bail, Context, Result};
 use clap::{Args, ValueEnum};
 use karkas::coons::{
-    Compatibility, CoonsKind, CurveFit, PointNetwork, Repair, CROSSING_TOLERANCE,
+    Compatibility, CoonsKind, CrossDerivatives, CurveFit, PointNetwork, Repair, CROSSING_TOLERANCE,
     POINT_NETWORK_TOLERANCE,
 };
 use karkas::Error;
+use karkas_io::grid::read_grid;
 use karkas_io::network::{read_curve_family, CurveFamily};
 use std::path::{Path, PathBuf};
 
@@ -60,13 +61,20 @@ pub struct SurfaceCoonsArgs {
     v_curves: PathBuf,
     /// Cross-derivatives dS/dv along the u-curves (bicubic, composite): same format and
     /// point counts as --u-curves, one vector per point, per unit of the surface parameters
-    /// [default: those of the gordon-spline surface, which the result then equals].
+    /// [default: built from the twists, see --twists].
     #[arg(long, value_name = "DU.csv")]
     u_derivs: Option<PathBuf>,
     /// Cross-derivatives dS/du along the v-curves (bicubic, composite): same format and
-    /// point counts as --v-curves [default: those of the gordon-spline surface].
+    /// point counts as --v-curves [default: built from the twists].
     #[arg(long, value_name = "DV.csv")]
     v_derivs: Option<PathBuf>,
+    /// Twist vectors d2S/dudv at the crossings (bicubic, composite), per unit of the surface
+    /// parameters: CSV with header i,j,x,y,z, one row per crossing of v-curve i with u-curve
+    /// j, rows in any order. The cross-derivatives are then the cubic Hermite curves of the
+    /// curves' tangents and these twists at the crossings (Chashnikov's A_i, B_j) [default:
+    /// twists by the spline-of-derivatives rule].
+    #[arg(long, value_name = "TWISTS.csv", conflicts_with_all = ["u_derivs", "v_derivs"])]
+    twists: Option<PathBuf>,
     /// The tolerance of the compatibility conditions (8)/(11), relative to the model size
     /// (the diagonal of the bounding box of the curves), per node spacing for each
     /// derivative in a condition: data further apart are refused [default: 1e-4].
@@ -105,17 +113,22 @@ pub fn run(args: &SurfaceCoonsArgs) -> Result<()> {
     if with_derivs && !matches!(args.kind, Kind::Bicubic | Kind::Composite) {
         bail!("--u-derivs and --v-derivs are used only by --kind bicubic and composite");
     }
+    if args.twists.is_some() && !matches!(args.kind, Kind::Bicubic | Kind::Composite) {
+        bail!("--twists is used only by --kind bicubic and composite");
+    }
     let mut named = vec![
         ("--u-curves", args.u_curves.as_path()),
         ("--v-curves", &args.v_curves),
     ];
     named.extend(args.u_derivs.as_deref().map(|p| ("--u-derivs", p)));
     named.extend(args.v_derivs.as_deref().map(|p| ("--v-derivs", p)));
+    named.extend(args.twists.as_deref().map(|p| ("--twists", p)));
     one_standard_input(&named)?;
     let inputs = [&args.u_curves, &args.v_curves]
         .into_iter()
         .chain(args.u_derivs.as_ref())
-        .chain(args.v_derivs.as_ref());
+        .chain(args.v_derivs.as_ref())
+        .chain(args.twists.as_ref());
     for input in inputs {
         ensure_distinct(input, &args.output)?;
     }
@@ -143,7 +156,22 @@ pub fn run(args: &SurfaceCoonsArgs) -> Result<()> {
                 .with_context(|| format!("{}, {}", du.display(), dv.display()))?;
             Some(derivs)
         }
-        _ => None,
+        _ => match &args.twists {
+            Some(path) => {
+                let twists = read_grid(path)?;
+                let derivs = CrossDerivatives::from_twists(network.network(), &twists)
+                    .with_context(|| {
+                        format!(
+                            "{}: {} v-curves x {} u-curves",
+                            path.display(),
+                            v_family.curves.len(),
+                            u_family.curves.len()
+                        )
+                    })?;
+                Some(derivs)
+            }
+            None => None,
+        },
     };
     if args.kind == Kind::Gordon {
         warn_lagrange_seam(&network);

@@ -350,37 +350,6 @@ fn bad_input_exits_2_naming_the_file_and_writes_nothing() {
 }
 
 #[test]
-fn without_derivative_files_composite_is_the_spline_gordon_surface() {
-    let dir = temp_dir();
-    let (u, v) = sheet_files(dir.path(), 1);
-    let out = |kind: &str| {
-        let path = dir.path().join(format!("{kind}.csv"));
-        let o = karkas(&[
-            "surface",
-            "coons",
-            "--kind",
-            kind,
-            "--u-curves",
-            s(&u),
-            "--v-curves",
-            s(&v),
-            "--samples",
-            "13,9",
-            "-o",
-            s(&path),
-        ]);
-        assert!(o.status.success(), "{}", stderr(&o));
-        read_csv(&path).1
-    };
-    let (composite, spline) = (out("composite"), out("gordon-spline"));
-    for (a, b) in composite.iter().zip(&spline) {
-        for c in 0..5 {
-            assert!((a[c] - b[c]).abs() < 1e-12, "{a:?} vs {b:?}");
-        }
-    }
-}
-
-#[test]
 fn straight_edges_of_two_points_make_the_bilinear_patch() {
     let dir = temp_dir();
     // Two u-curves and two v-curves, each a straight edge between two corners.
@@ -641,4 +610,135 @@ fn lagrange_gordon_of_closed_curves_warns_of_its_seam() {
         let quiet = run(kind, u, v);
         assert!(!quiet.contains("seam"), "{kind}: {quiet}");
     }
+}
+
+#[test]
+fn twists_file_gives_the_surface_its_twists_and_brings_it_closer() {
+    // z = sin x cos y over [0, 2]^2, curves at x, y = 0, 1, 2; the surface parameters run
+    // over [0, 1] (a factor 2 per derivative), so the exact twists are
+    // 4 d2z/dxdy = -4 cos x sin y at the crossings.
+    let dir = temp_dir();
+    let files = sheet_with_derivs(dir.path(), 10, (1.0, 1.0), [0.0; 3]);
+    let twists = dir.path().join("twists.csv");
+    let mut text = String::from("i,j,x,y,z\n");
+    for (i, j) in [
+        (2, 1),
+        (0, 0),
+        (1, 2),
+        (0, 1),
+        (2, 0),
+        (1, 0),
+        (0, 2),
+        (1, 1),
+        (2, 2),
+    ] {
+        let (x, y) = (i as f64, j as f64);
+        text.push_str(&format!("{i},{j},0,0,{}\n", -4.0 * x.cos() * y.sin()));
+    }
+    std::fs::write(&twists, text).unwrap();
+    let run = |name: &str, kind: &str, extra: &[&str]| {
+        let out = dir.path().join(name);
+        let mut args = vec![
+            "surface",
+            "coons",
+            "--kind",
+            kind,
+            "--u-curves",
+            s(&files[0]),
+            "--v-curves",
+            s(&files[1]),
+            "--samples",
+            "33,33",
+            "-o",
+            s(&out),
+        ];
+        args.extend_from_slice(extra);
+        let o = karkas(&args);
+        assert!(o.status.success(), "{name}: {}", stderr(&o));
+        read_csv(&out).1
+    };
+    let with = run("with.csv", "composite", &["--twists", s(&twists)]);
+    let without = run("without.csv", "composite", &[]);
+    let gordon = run("gordon.csv", "gordon-spline", &[]);
+    let z = |x: f64, y: f64| x.sin() * y.cos();
+    let error = |rows: &[Vec<f64>]| {
+        rows.iter()
+            .map(|r| (r[4] - z(2.0 * r[0], 2.0 * r[1])).abs())
+            .fold(0.0, f64::max)
+    };
+    let (e_with, e_without, e_gordon) = (error(&with), error(&without), error(&gordon));
+    assert!(
+        e_with < 0.8 * e_without && e_with < 0.8 * e_gordon,
+        "twists {e_with:e}, derived {e_without:e}, gordon-spline {e_gordon:e}"
+    );
+    // The twist at the inner crossing (u, v) = (0.5, 0.5), sample (16, 16), by the central
+    // difference of the samples (h = 1/32), against -4 cos 1 sin 1.
+    let twist = |rows: &[Vec<f64>]| {
+        let at = |a: usize, b: usize| rows[a * 33 + b][4];
+        (at(17, 17) - at(17, 15) - at(15, 17) + at(15, 15)) * (32.0 * 32.0 / 4.0)
+    };
+    let exact = -4.0 * 1f64.cos() * 1f64.sin();
+    assert!(
+        (twist(&with) - exact).abs() < 1e-2,
+        "{} vs {exact}",
+        twist(&with)
+    );
+    // Twists go with bicubic and composite only, not with derivative files, and must cover
+    // the crossings.
+    let out = dir.path().join("bad.csv");
+    let reject = |kind: &str, extra: &[&str], needles: &[&str]| {
+        let mut args = vec![
+            "surface",
+            "coons",
+            "--kind",
+            kind,
+            "--u-curves",
+            s(&files[0]),
+            "--v-curves",
+            s(&files[1]),
+            "-o",
+            s(&out),
+        ];
+        args.extend_from_slice(extra);
+        assert_rejected(&args, needles, &out, None);
+    };
+    reject(
+        "gordon",
+        &["--twists", s(&twists)],
+        &["--twists is used only by --kind bicubic and composite"],
+    );
+    let o = karkas(&[
+        "surface",
+        "coons",
+        "--kind",
+        "composite",
+        "--u-curves",
+        s(&files[0]),
+        "--v-curves",
+        s(&files[1]),
+        "--twists",
+        s(&twists),
+        "--u-derivs",
+        s(&files[2]),
+        "--v-derivs",
+        s(&files[3]),
+        "-o",
+        s(&out),
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("cannot be used with"), "{}", stderr(&o));
+    let small = dir.path().join("small.csv");
+    std::fs::write(
+        &small,
+        "i,j,x,y,z\n0,0,0,0,0\n0,1,0,0,0\n1,0,0,0,0\n1,1,0,0,0\n",
+    )
+    .unwrap();
+    reject(
+        "composite",
+        &["--twists", s(&small)],
+        &[
+            "small.csv: 3 v-curves x 3 u-curves",
+            "rows of twists (one per v-curve)",
+        ],
+    );
 }

@@ -172,7 +172,7 @@ fn composite_surface_is_c1_with_the_given_cross_derivatives() {
 #[test]
 fn closed_directions_close_smoothly() {
     // A tube: open along u, closed around v (period 2 pi). Composite (cross-derivatives from
-    // the periodic spline Gordon surface), spline Gordon and Lagrange Gordon all pass through
+    // the derived twists, periodic splines around), spline Gordon and Lagrange Gordon all pass through
     // the network; the composite is C^1 and the spline Gordon C^2 across the seam v = 0, the
     // Lagrange one only C^0.
     let s = Arc::new(tube());
@@ -364,40 +364,6 @@ fn network_shapes_are_checked() {
     );
     assert!(CoonsSurface::bilinear(&net2, -1.0).is_err());
     assert!(CoonsSurface::bilinear(&net2, f64::NAN).is_err());
-}
-
-#[test]
-fn derived_cross_derivatives_reproduce_the_spline_gordon_surface() {
-    // The cardinal splines are cubic between nodes, so the piecewise Hermite Boolean sum of
-    // the spline Gordon surface's own cross-derivatives is that surface: open and closed.
-    let cases = [
-        (
-            Arc::new(wavy_sheet()),
-            NetworkAxis::open(vec![0.0, 0.6, 1.5, 2.2, 3.0]).unwrap(),
-            NetworkAxis::open(vec![0.0, 0.5, 1.1, 2.0]).unwrap(),
-        ),
-        (
-            Arc::new(tube()),
-            NetworkAxis::open(vec![0.0, 1.0, 2.2, 3.0]).unwrap(),
-            NetworkAxis::closed(vec![0.0, 1.2, 2.5, 3.9, 5.1], std::f64::consts::TAU).unwrap(),
-        ),
-    ];
-    for (s, ua, va) in cases {
-        let net = network(&s, &ua, &va);
-        let composite = CoonsSurface::composite(&net, None, 1e-9).unwrap();
-        let gordon = CoonsSurface::gordon_spline(&net, SplineEnds::NotAKnot, 1e-9).unwrap();
-        let (du, dv) = (gordon.domain_u(), gordon.domain_v());
-        for u in linspace(du.start, du.end, 37) {
-            for v in linspace(dv.start, dv.end, 37) {
-                assert_close(
-                    composite.eval(u, v),
-                    gordon.eval(u, v),
-                    1e-12,
-                    "composite = G",
-                );
-            }
-        }
-    }
 }
 
 /// A curve moved by a constant vector.
