@@ -105,7 +105,7 @@ impl<const D: usize> Curve<D> for BlendedCurve<D> {
         }
         let mut weights = vec![0.0; self.family.len()];
         for (o, &t) in out.iter_mut().zip(ts) {
-            *o = *o + self.blend(t, k, &mut weights);
+            *o += self.blend(t, k, &mut weights);
         }
     }
 }
