@@ -476,9 +476,11 @@ class CoonsSurface(Surface):
         fit: Union[None, str, Tuple[str, int]] = None,
         crossing_tolerance: float = 1e-6,
         tolerance: float = 1e-4,
+        twists: Optional[ArrayLike] = None,
     ) -> Self:
         """kind: 'bilinear', 'bicubic', 'gordon', 'gordon-spline', 'composite'; u_curves and
-        v_curves by keyword, as karkas surface coons's --u-curves and --v-curves."""
+        v_curves by keyword, as karkas surface coons's --u-curves and --v-curves; twists:
+        (len(v_curves), len(u_curves), d), as --twists."""
     def __reduce__(self) -> Tuple[object, ...]: ...
     @property
     def kind(self) -> str: ...

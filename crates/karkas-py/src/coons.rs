@@ -3,13 +3,14 @@
 use std::sync::Arc;
 
 use karkas::coons::{
-    CoonsKind, CoonsSurface, CurveFit, PointNetwork, CROSSING_TOLERANCE, POINT_NETWORK_TOLERANCE,
+    CoonsKind, CoonsSurface, CrossDerivatives, CurveFit, PointNetwork, CROSSING_TOLERANCE,
+    POINT_NETWORK_TOLERANCE,
 };
 use karkas::Point;
 use pyo3::prelude::*;
 
 use crate::convert::{
-    as_points, by_dim, check_dim, count, object_list, FlatPoints, Int, PointsArray,
+    as_points, by_dim, check_dim, count, object_list, FlatPoints, GridArray, Int, PointsArray,
 };
 use crate::errors::{library_error, OptionError, PointsError};
 use crate::limits::{bytes_of, check_memory};
@@ -80,7 +81,15 @@ fn first_dim(lists: &[Bound<'_, PyAny>], what: &str) -> PyResult<usize> {
 ///     piecewise bicubic).
 /// u_derivs, v_derivs : sequence of array_like, optional
 ///     For ``'bicubic'`` and ``'composite'``: dS/dv along the u-curves and dS/du along the
-///     v-curves, one vector per point (give both or neither).
+///     v-curves, one vector per point (give both or neither). Without them they are built
+///     from the twists.
+/// twists : array_like, optional
+///     For ``'bicubic'`` and ``'composite'``, not with ``u_derivs``: the twist vectors
+///     d2S/dudv at the crossings, shape ``(len(v_curves), len(u_curves), d)`` (entry
+///     ``[i, j]`` where v-curve ``i`` crosses u-curve ``j``), per unit of the surface
+///     parameters; the cross-derivatives are then the cubic Hermite curves of the curves'
+///     tangents and these twists (Chashnikov's §4). Without them, twists by the
+///     spline-of-derivatives rule.
 /// fit : str or tuple, optional
 ///     How a curve is made from its points: ``'spline'`` (when None) or ``('ll', order)``.
 /// crossing_tolerance : float, optional
@@ -95,7 +104,8 @@ fn first_dim(lists: &[Bound<'_, PyAny>], what: &str) -> PyResult<usize> {
 /// IncompatibleDataError
 ///     Curves that do not cross where they must.
 /// OptionError
-///     An unknown ``kind`` or ``fit``, or derivatives for one family only.
+///     An unknown ``kind`` or ``fit``, derivatives for one family only, or twists with
+///     derivatives or with a kind that takes neither.
 ///
 /// Examples
 /// --------
@@ -128,6 +138,8 @@ pub struct CoonsInput {
     pub curves: (Vec<FlatPoints>, Vec<FlatPoints>),
     /// The cross-derivatives along the u-curves and along the v-curves.
     pub derivs: Option<(Vec<FlatPoints>, Vec<FlatPoints>)>,
+    /// The twists: rows, columns and the points row-major.
+    pub twists: Option<(usize, usize, FlatPoints)>,
     /// How the curves interpolate their points.
     pub fit: CurveFit,
     /// The crossing tolerance and the compatibility tolerance.
@@ -155,9 +167,9 @@ fn given(lists: &[Bound<'_, PyAny>], what: &str) -> PyResult<Vec<FlatPoints>> {
 #[pymethods]
 impl PyCoonsSurface {
     #[new]
-    #[pyo3(signature = (*, u_curves, v_curves, kind = "gordon-spline", u_derivs = None, v_derivs = None, fit = None, crossing_tolerance = CROSSING_TOLERANCE, tolerance = POINT_NETWORK_TOLERANCE))]
+    #[pyo3(signature = (*, u_curves, v_curves, kind = "gordon-spline", u_derivs = None, v_derivs = None, fit = None, crossing_tolerance = CROSSING_TOLERANCE, tolerance = POINT_NETWORK_TOLERANCE, twists = None))]
     #[pyo3(
-        text_signature = "(*, u_curves, v_curves, kind='gordon-spline', u_derivs=None, v_derivs=None, fit=None, crossing_tolerance=1e-06, tolerance=0.0001)"
+        text_signature = "(*, u_curves, v_curves, kind='gordon-spline', u_derivs=None, v_derivs=None, fit=None, crossing_tolerance=1e-06, tolerance=0.0001, twists=None)"
     )]
     #[allow(clippy::too_many_arguments)]
     fn py_new(
@@ -170,6 +182,7 @@ impl PyCoonsSurface {
         fit: Option<Bound<'_, PyAny>>,
         crossing_tolerance: f64,
         tolerance: f64,
+        twists: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<PyClassInitializer<Self>> {
         let fit = match fit {
             None => CurveFit::CubicSpline,
@@ -197,6 +210,21 @@ impl PyCoonsSurface {
             }
         };
         let kind: CoonsKind = kind.parse().map_err(library_error)?;
+        if twists.is_some() {
+            if !kind.takes_cross_derivatives() {
+                return Err(OptionError::new_err(
+                    "twists are used only by kind 'bicubic' and 'composite'",
+                ));
+            }
+            if u_derivs.is_some() || v_derivs.is_some() {
+                return Err(OptionError::new_err(
+                    "give twists or u_derivs and v_derivs, not both",
+                ));
+            }
+        }
+        let twists = twists
+            .map(|t| GridArray::extract(t, "twists"))
+            .transpose()?;
         let v_curves = object_list(v_curves, "v_curves")?;
         let u_curves = object_list(u_curves, "u_curves")?;
         let u_derivs = u_derivs.map(|d| object_list(d, "u_derivs")).transpose()?;
@@ -207,6 +235,14 @@ impl PyCoonsSurface {
                 (Some(du), Some(dv)) => Some((given(du, "u_derivs")?, given(dv, "v_derivs")?)),
                 _ => None,
             },
+            twists: twists.as_ref().map(|t| {
+                let (rows, cols) = t.rows_cols();
+                let flat = FlatPoints {
+                    coords: t.flat().into_owned(),
+                    dim: t.dim(),
+                };
+                (rows, cols, flat)
+            }),
             fit,
             tolerances: (crossing_tolerance, tolerance),
         };
@@ -219,11 +255,22 @@ impl PyCoonsSurface {
                 (None, None) => None,
                 _ => return Err(OptionError::new_err("give both u_derivs and v_derivs, or neither")),
             };
+            let twists = match &twists {
+                Some(t) if t.dim() != D => {
+                    return Err(PointsError::new_err(format!(
+                        "twists have {} coordinates per point, expected {D}",
+                        t.dim()
+                    )))
+                }
+                Some(t) => Some(t.grid::<D>()?),
+                None => None,
+            };
             let surface = py.detach(|| -> karkas::Result<CoonsSurface<D>> {
                 let network = PointNetwork::new(&v, &u, fit, crossing_tolerance)?;
-                let cross = match &derivs {
-                    Some((du, dv)) => Some(network.cross_derivatives(dv, du)?),
-                    None => None,
+                let cross = match (&derivs, &twists) {
+                    (Some((du, dv)), _) => Some(network.cross_derivatives(dv, du)?),
+                    (None, Some(t)) => Some(CrossDerivatives::from_twists(network.network(), t)?),
+                    (None, None) => None,
                 };
                 kind.build(network.network(), cross.as_ref(), tolerance)
             })

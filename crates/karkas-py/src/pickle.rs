@@ -294,6 +294,12 @@ impl PyCoonsSurface {
             karkas::coons::CurveFit::Ll(order) => kwargs.set_item("fit", ("ll", order))?,
             _ => kwargs.set_item("fit", "spline")?,
         }
+        if let Some((rows, cols, points)) = &input.twists {
+            let grid = points
+                .to_array(py)?
+                .call_method1("reshape", ((*rows, *cols, points.dim),))?;
+            kwargs.set_item("twists", grid)?;
+        }
         kwargs.set_item("crossing_tolerance", input.tolerances.0)?;
         kwargs.set_item("tolerance", input.tolerances.1)?;
         reduce(py, "CoonsSurface", PyTuple::empty(py), Some(kwargs))

@@ -153,3 +153,38 @@ def test_parameterizations():
     np.testing.assert_allclose(v, 2 * x)
     with pytest.raises(ValueError, match="coincid"):
         karkas.curve_parameters(np.zeros((3, 2)))
+
+
+def wave_network(m=5, k=9):
+    """v-curves at x = const, u-curves at y = const, over [-1, 1]^2; z = sin x cos y."""
+    xs = np.linspace(-1.0, 1.0, m)
+    s = np.linspace(-1.0, 1.0, (m - 1) * (k - 1) + 1)
+    v_curves = [np.column_stack([np.full_like(s, x), s, np.sin(x) * np.cos(s)]) for x in xs]
+    u_curves = [np.column_stack([s, np.full_like(s, y), np.sin(s) * np.cos(y)]) for y in xs]
+    return xs, v_curves, u_curves
+
+
+def test_composite_twists_are_the_surface_twists_at_the_crossings():
+    xs, v, u = wave_network()
+    # The surface parameters run over [0, 1] where x and y run over [-1, 1]: a factor 2 each.
+    twists = np.zeros((len(v), len(u), 3))
+    twists[..., 2] = -4.0 * np.outer(np.cos(xs), np.sin(xs))
+    S = karkas.CoonsSurface(u_curves=u, v_curves=v, kind="composite", twists=twists)
+    nodes = np.linspace(0.0, 1.0, len(xs))
+    for i, a in enumerate(nodes):
+        for j, b in enumerate(nodes):
+            np.testing.assert_allclose(S(a, b, 1, 1), twists[i, j], atol=1e-9)
+    # The exact twists bring the surface closer to the wave than the derived ones.
+    derived = karkas.CoonsSurface(u_curves=u, v_curves=v, kind="composite")
+
+    def error(surface):
+        P = surface.sample(41, 41)
+        return np.abs(P[..., 2] - np.sin(P[..., 0]) * np.cos(P[..., 1])).max()
+
+    assert error(S) < error(derived)
+    with pytest.raises(ValueError, match="twists are used only by"):
+        karkas.CoonsSurface(u_curves=u, v_curves=v, kind="gordon", twists=twists)
+    with pytest.raises(ValueError, match="not both"):
+        karkas.CoonsSurface(u_curves=u, v_curves=v, kind="composite", twists=twists, u_derivs=u, v_derivs=v)
+    with pytest.raises(ValueError, match="rows of twists"):
+        karkas.CoonsSurface(u_curves=u, v_curves=v, kind="composite", twists=twists[:3])

@@ -74,6 +74,10 @@ MAKERS = {
     "DiscreteSpline.interpolate": lambda: karkas.DiscreteSpline.interpolate(wavy(8, 2), order=4, n=3),
     "TubeSurface": lambda: karkas.TubeSurface(*torus_skeleton(), 4, 4, r1=3),
     "CoonsSurface": lambda: karkas.CoonsSurface(**dict(zip(("u_curves", "v_curves"), network())), kind="gordon"),
+    "CoonsSurface.twists": lambda: karkas.CoonsSurface(
+        **dict(zip(("u_curves", "v_curves"), network())), kind="composite",
+        twists=np.full((len(network()[1]), len(network()[0]), 3), 0.1),
+    ),
     "CoonsSurface.ll": lambda: karkas.CoonsSurface(
         **dict(zip(("u_curves", "v_curves"), network())), fit=("ll", 3), tolerance=1e-3
     ),

@@ -8,6 +8,7 @@
 use crate::args::{GridSamples, MeshOutput};
 use crate::input::one_standard_input;
 use crate::output::cad::write_cad_surface;
+use crate::output::console::note;
 use crate::output::formats::EXACT_SURFACE_FORMATS;
 use crate::output::overwrite::ensure_distinct;
 use crate::output::samples::default_surface_samples;
@@ -16,10 +17,11 @@ use crate::output::target::output_format;
 use anyhow::{anyhow, bail, Context, Result};
 use clap::{Args, ValueEnum};
 use karkas::coons::{
-    CoonsKind, CoonsSurface, CrossDerivatives, CurveFit, PointNetwork, CROSSING_TOLERANCE,
+    Compatibility, CoonsKind, CrossDerivatives, CurveFit, PointNetwork, Repair, CROSSING_TOLERANCE,
     POINT_NETWORK_TOLERANCE,
 };
 use karkas::Error;
+use karkas_io::grid::read_grid;
 use karkas_io::network::{read_curve_family, CurveFamily};
 use std::path::{Path, PathBuf};
 
@@ -59,13 +61,30 @@ pub struct SurfaceCoonsArgs {
     v_curves: PathBuf,
     /// Cross-derivatives dS/dv along the u-curves (bicubic, composite): same format and
     /// point counts as --u-curves, one vector per point, per unit of the surface parameters
-    /// [default: those of the gordon-spline surface, which the result then equals].
+    /// [default: built from the twists, see --twists].
     #[arg(long, value_name = "DU.csv")]
     u_derivs: Option<PathBuf>,
     /// Cross-derivatives dS/du along the v-curves (bicubic, composite): same format and
-    /// point counts as --v-curves [default: those of the gordon-spline surface].
+    /// point counts as --v-curves [default: built from the twists].
     #[arg(long, value_name = "DV.csv")]
     v_derivs: Option<PathBuf>,
+    /// Twist vectors d2S/dudv at the crossings (bicubic, composite), per unit of the surface
+    /// parameters: CSV with header i,j,x,y,z, one row per crossing of v-curve i with u-curve
+    /// j, rows in any order. The cross-derivatives are then the cubic Hermite curves of the
+    /// curves' tangents and these twists at the crossings (Chashnikov's A_i, B_j) [default:
+    /// twists by the spline-of-derivatives rule].
+    #[arg(long, value_name = "TWISTS.csv", conflicts_with_all = ["u_derivs", "v_derivs"])]
+    twists: Option<PathBuf>,
+    /// The tolerance of the compatibility conditions (8)/(11), relative to the model size
+    /// (the diagonal of the bounding box of the curves), per node spacing for each
+    /// derivative in a condition: data further apart are refused [default: 1e-4].
+    #[arg(long, value_name = "T")]
+    tolerance: Option<f64>,
+    /// Make incompatible data compatible instead of refusing it: both sides of every
+    /// condition (the curves' crossings, the cross-derivatives against the curves' tangents,
+    /// the twists) are moved to their mean, and the largest correction is reported.
+    #[arg(long, conflicts_with = "tolerance")]
+    repair: bool,
     #[command(flatten)]
     samples: GridSamples,
     #[command(flatten)]
@@ -85,9 +104,17 @@ pub fn run(args: &SurfaceCoonsArgs) -> Result<()> {
     if args.u_derivs.is_some() != args.v_derivs.is_some() {
         bail!("--u-derivs and --v-derivs go together: give both or neither");
     }
+    if let Some(t) = args.tolerance {
+        if !(t.is_finite() && t >= 0.0) {
+            bail!("--tolerance must be a finite number >= 0, got {t}");
+        }
+    }
     let with_derivs = args.u_derivs.is_some();
     if with_derivs && !matches!(args.kind, Kind::Bicubic | Kind::Composite) {
         bail!("--u-derivs and --v-derivs are used only by --kind bicubic and composite");
+    }
+    if args.twists.is_some() && !matches!(args.kind, Kind::Bicubic | Kind::Composite) {
+        bail!("--twists is used only by --kind bicubic and composite");
     }
     let mut named = vec![
         ("--u-curves", args.u_curves.as_path()),
@@ -95,11 +122,13 @@ pub fn run(args: &SurfaceCoonsArgs) -> Result<()> {
     ];
     named.extend(args.u_derivs.as_deref().map(|p| ("--u-derivs", p)));
     named.extend(args.v_derivs.as_deref().map(|p| ("--v-derivs", p)));
+    named.extend(args.twists.as_deref().map(|p| ("--twists", p)));
     one_standard_input(&named)?;
     let inputs = [&args.u_curves, &args.v_curves]
         .into_iter()
         .chain(args.u_derivs.as_ref())
-        .chain(args.v_derivs.as_ref());
+        .chain(args.v_derivs.as_ref())
+        .chain(args.twists.as_ref());
     for input in inputs {
         ensure_distinct(input, &args.output)?;
     }
@@ -127,9 +156,39 @@ pub fn run(args: &SurfaceCoonsArgs) -> Result<()> {
                 .with_context(|| format!("{}, {}", du.display(), dv.display()))?;
             Some(derivs)
         }
-        _ => None,
+        _ => match &args.twists {
+            Some(path) => {
+                let twists = read_grid(path)?;
+                let derivs = CrossDerivatives::from_twists(network.network(), &twists)
+                    .with_context(|| {
+                        format!(
+                            "{}: {} v-curves x {} u-curves",
+                            path.display(),
+                            v_family.curves.len(),
+                            u_family.curves.len()
+                        )
+                    })?;
+                Some(derivs)
+            }
+            None => None,
+        },
     };
-    let surface = build(args.kind, &network, cross.as_ref()).map_err(|e| files.explain(e))?;
+    if args.kind == Kind::Gordon {
+        warn_lagrange_seam(&network);
+    }
+    let compatibility = if args.repair {
+        Compatibility::Repair
+    } else {
+        Compatibility::Check(args.tolerance.unwrap_or(POINT_NETWORK_TOLERANCE))
+    };
+    let surface = args
+        .kind
+        .to_library()
+        .build(network.network(), cross.as_ref(), compatibility)
+        .map_err(|e| files.explain(e))?;
+    if let Some(repair) = surface.repair() {
+        report_repair(repair);
+    }
     if format.is_cad() {
         let what = format!("{}, {}", args.u_curves.display(), args.v_curves.display());
         return write_cad_surface(&surface, format, &args.output, what);
@@ -166,14 +225,34 @@ impl Kind {
     }
 }
 
-/// The surface of `kind` over the network.
-fn build(
-    kind: Kind,
-    network: &PointNetwork<3>,
-    cross: Option<&CrossDerivatives<3>>,
-) -> karkas::Result<CoonsSurface<3>> {
-    kind.to_library()
-        .build(network.network(), cross, POINT_NETWORK_TOLERANCE)
+/// Warns that Lagrange blending across a closed direction leaves a `C^0` seam (Lagrange
+/// polynomials are not periodic: the first curve is blended as a last node one period on).
+fn warn_lagrange_seam(network: &PointNetwork<3>) {
+    let net = network.network();
+    let closed: Vec<&str> = [
+        (net.u_axis().is_closed(), "u"),
+        (net.v_axis().is_closed(), "v"),
+    ]
+    .into_iter()
+    .filter_map(|(closed, name)| closed.then_some(name))
+    .collect();
+    if !closed.is_empty() {
+        note(format!(
+            "karkas: warning: --kind gordon blends with Lagrange polynomials, which are not \
+             periodic: the surface closes in {} with a C^0 seam (a crease along the first \
+             curve); --kind gordon-spline or composite blend smoothly across it",
+            closed.join(" and ")
+        ));
+    }
+}
+
+/// Prints the largest correction of `--repair` (the command has no JSON summary).
+fn report_repair(repair: &Repair) {
+    note(format!(
+        "karkas: repaired the compatibility conditions: largest correction {:.3e} ({:.3e} of \
+         the model size), {} at (u={}, v={})",
+        repair.correction, repair.relative, repair.condition, repair.u, repair.v
+    ));
 }
 
 /// Reads a curve family, refusing curves too short to interpolate (named by their line).

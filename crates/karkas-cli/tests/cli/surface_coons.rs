@@ -350,37 +350,6 @@ fn bad_input_exits_2_naming_the_file_and_writes_nothing() {
 }
 
 #[test]
-fn without_derivative_files_composite_is_the_spline_gordon_surface() {
-    let dir = temp_dir();
-    let (u, v) = sheet_files(dir.path(), 1);
-    let out = |kind: &str| {
-        let path = dir.path().join(format!("{kind}.csv"));
-        let o = karkas(&[
-            "surface",
-            "coons",
-            "--kind",
-            kind,
-            "--u-curves",
-            s(&u),
-            "--v-curves",
-            s(&v),
-            "--samples",
-            "13,9",
-            "-o",
-            s(&path),
-        ]);
-        assert!(o.status.success(), "{}", stderr(&o));
-        read_csv(&path).1
-    };
-    let (composite, spline) = (out("composite"), out("gordon-spline"));
-    for (a, b) in composite.iter().zip(&spline) {
-        for c in 0..5 {
-            assert!((a[c] - b[c]).abs() < 1e-12, "{a:?} vs {b:?}");
-        }
-    }
-}
-
-#[test]
 fn straight_edges_of_two_points_make_the_bilinear_patch() {
     let dir = temp_dir();
     // Two u-curves and two v-curves, each a straight edge between two corners.
@@ -444,4 +413,332 @@ fn straight_edges_of_two_points_make_the_bilinear_patch() {
             }
         }
     }
+}
+
+/// The network of the wave `(x, y, a sin wx cos wy)` with `per_span` point steps between
+/// crossings (u-curves at y = 0, 1, 2, v-curves at x = 0, 1, 2), and its exact
+/// cross-derivatives per unit of the surface's parameters (which run over 0..2 in x and y: a
+/// factor 2), dS/dv along the u-curves shifted by `shift`.
+fn sheet_with_derivs(
+    dir: &Path,
+    per_span: usize,
+    (a, w): (f64, f64),
+    shift: [f64; 3],
+) -> [PathBuf; 4] {
+    let steps = 2 * per_span;
+    let sheet = |x: f64, y: f64| [x, y, a * (w * x).sin() * (w * y).cos()];
+    let write = |name: &str, f: &dyn Fn(usize, f64) -> [f64; 3]| {
+        let mut text = String::from("curve,x,y,z\n");
+        for k in 0..3 {
+            for q in 0..=steps {
+                let p = f(k, 2.0 * q as f64 / steps as f64);
+                text.push_str(&format!("{k},{},{},{}\n", p[0], p[1], p[2]));
+            }
+        }
+        let path = dir.join(name);
+        std::fs::write(&path, text).unwrap();
+        path
+    };
+    let u = write("u.csv", &|k, t| sheet(t, k as f64));
+    let v = write("v.csv", &|k, t| sheet(k as f64, t));
+    let du = write("du.csv", &|k, t| {
+        let y = k as f64;
+        let dz = -2.0 * a * w * (w * t).sin() * (w * y).sin();
+        [shift[0], 2.0 + shift[1], dz + shift[2]]
+    });
+    let dv = write("dv.csv", &|k, t| {
+        let x = k as f64;
+        [2.0, 0.0, 2.0 * a * w * (w * x).cos() * (w * t).cos()]
+    });
+    [u, v, du, dv]
+}
+
+/// `surface coons --kind composite` of the four files, with `extra` options.
+fn composite(files: &[PathBuf; 4], out: &Path, extra: &[&str]) -> std::process::Output {
+    let mut args = vec![
+        "surface",
+        "coons",
+        "--kind",
+        "composite",
+        "--u-curves",
+        s(&files[0]),
+        "--v-curves",
+        s(&files[1]),
+        "--u-derivs",
+        s(&files[2]),
+        "--v-derivs",
+        s(&files[3]),
+        "--samples",
+        "9,33",
+        "-o",
+        s(out),
+    ];
+    args.extend_from_slice(extra);
+    karkas(&args)
+}
+
+#[test]
+fn tolerance_option_accepts_what_the_default_refuses() {
+    // Exact derivatives, but 8 point steps per span of a wave: the interpolated curves'
+    // tangents differ from them by more than the default 1e-4 of the model size.
+    let dir = temp_dir();
+    let files = sheet_with_derivs(dir.path(), 8, (0.5, 2.0), [0.0; 3]);
+    let out = dir.path().join("out.csv");
+    let o = composite(&files, &out, &[]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    let message = stderr(&o);
+    assert!(
+        message.contains("differ by 1.344e-3 (tolerance 5.967e-4)"),
+        "{message}"
+    );
+    assert!(!out.exists());
+    let o = composite(&files, &out, &["--tolerance", "3e-3"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_eq!(read_csv(&out).1.len(), 9 * 33);
+    // A tolerance that is no tolerance, and --tolerance with --repair.
+    for bad in [&["--tolerance=-1"][..], &["--tolerance", "nan"]] {
+        let o = composite(&files, &dir.path().join("bad.csv"), bad);
+        assert_eq!(o.status.code(), Some(2));
+        assert!(stderr(&o).contains("--tolerance must be a finite number >= 0"));
+    }
+    let o = composite(
+        &files,
+        &dir.path().join("bad.csv"),
+        &["--tolerance", "1e-3", "--repair"],
+    );
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("cannot be used with"), "{}", stderr(&o));
+}
+
+#[test]
+fn repair_reports_half_the_perturbation_and_keeps_the_curves() {
+    // dS/dv along the u-curves lifted by 0.01 in z: it disagrees with the v-curves' own
+    // tangents by 0.01 at every crossing; the mean moves each side by 0.005.
+    let lift = 0.01;
+    let dir = temp_dir();
+    let files = sheet_with_derivs(dir.path(), 10, (0.3, 1.0), [0.0, 0.0, lift]);
+    let out = dir.path().join("out.csv");
+    let o = composite(&files, &out, &[]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("disagree at"), "{}", stderr(&o));
+    let o = composite(&files, &out, &["--repair"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let message = stderr(&o);
+    let reported: f64 = message
+        .split("largest correction ")
+        .nth(1)
+        .and_then(|rest| rest.split_whitespace().next())
+        .and_then(|x| x.parse().ok())
+        .unwrap_or_else(|| panic!("no correction in {message:?}"));
+    assert!(
+        (reported - lift / 2.0).abs() < 0.05 * lift,
+        "{reported} vs {lift} / 2: {message}"
+    );
+    assert!(message.contains("d/dv"), "{message}");
+    // Proposition 1 for the repaired curves: the u-curves are still the given curves (their
+    // crossings and tangents agreed with the v-curves and their cross-derivatives), and the
+    // surface's dS/dv along v = 0 is the mean of the lifted data and the v-curves' tangents.
+    let (_, rows) = read_csv(&out);
+    for a in 0..9 {
+        let row = &rows[a * 33];
+        let want = sheet(2.0 * row[0], 0.0);
+        for c in 0..3 {
+            assert!((row[2 + c] - want[c]).abs() < 1e-4, "{row:?}");
+        }
+    }
+    // At the crossing (u, v) = (0.5, 0): one-sided differences of the samples (h = 1/32)
+    // against dS/dv = (0, 2, 0) + 0.005 z, to the sampling error.
+    let (p0, p1, p2) = (&rows[4 * 33], &rows[4 * 33 + 1], &rows[4 * 33 + 2]);
+    let h = 1.0 / 32.0;
+    let dz = (-3.0 * p0[4] + 4.0 * p1[4] - p2[4]) / (2.0 * h);
+    assert!((dz - lift / 2.0).abs() < 5e-4, "{dz}");
+}
+
+#[test]
+fn lagrange_gordon_of_closed_curves_warns_of_its_seam() {
+    let dir = temp_dir();
+    let tau = std::f64::consts::TAU;
+    let ring = |x: f64, a: f64| [x, a.cos(), a.sin()];
+    let mut frames = String::from("curve,x,y,z\n");
+    for k in 0..3 {
+        for q in 0..=12 {
+            let p = ring(k as f64, tau * (q % 12) as f64 / 12.0);
+            frames.push_str(&format!("{k},{},{},{}\n", p[0], p[1], p[2]));
+        }
+    }
+    let mut stringers = String::from("curve,x,y,z\n");
+    for j in 0..4 {
+        for q in 0..=6 {
+            let p = ring(q as f64 / 3.0, tau * j as f64 / 4.0);
+            stringers.push_str(&format!("{j},{},{},{}\n", p[0], p[1], p[2]));
+        }
+    }
+    let u = dir.path().join("stringers.csv");
+    let v = dir.path().join("frames.csv");
+    std::fs::write(&u, stringers).unwrap();
+    std::fs::write(&v, frames).unwrap();
+    let (u3, v3) = sheet_files(dir.path(), 1);
+    let out = dir.path().join("out.csv");
+    let run = |kind: &str, u: &Path, v: &Path| {
+        let o = karkas(&[
+            "surface",
+            "coons",
+            "--kind",
+            kind,
+            "--u-curves",
+            s(u),
+            "--v-curves",
+            s(v),
+            "--samples",
+            "5,5",
+            "-o",
+            s(&out),
+        ]);
+        assert!(o.status.success(), "{kind}: {}", stderr(&o));
+        stderr(&o)
+    };
+    let warned = run("gordon", &u, &v);
+    assert!(
+        warned.contains("warning") && warned.contains("closes in v with a C^0 seam"),
+        "{warned}"
+    );
+    for (kind, u, v) in [
+        ("gordon-spline", &u, &v),
+        ("composite", &u, &v),
+        ("gordon", &u3, &v3),
+    ] {
+        let quiet = run(kind, u, v);
+        assert!(!quiet.contains("seam"), "{kind}: {quiet}");
+    }
+}
+
+#[test]
+fn twists_file_gives_the_surface_its_twists_and_brings_it_closer() {
+    // z = sin x cos y over [0, 2]^2, curves at x, y = 0, 1, 2; the surface parameters run
+    // over [0, 1] (a factor 2 per derivative), so the exact twists are
+    // 4 d2z/dxdy = -4 cos x sin y at the crossings.
+    let dir = temp_dir();
+    let files = sheet_with_derivs(dir.path(), 10, (1.0, 1.0), [0.0; 3]);
+    let twists = dir.path().join("twists.csv");
+    let mut text = String::from("i,j,x,y,z\n");
+    for (i, j) in [
+        (2, 1),
+        (0, 0),
+        (1, 2),
+        (0, 1),
+        (2, 0),
+        (1, 0),
+        (0, 2),
+        (1, 1),
+        (2, 2),
+    ] {
+        let (x, y) = (i as f64, j as f64);
+        text.push_str(&format!("{i},{j},0,0,{}\n", -4.0 * x.cos() * y.sin()));
+    }
+    std::fs::write(&twists, text).unwrap();
+    let run = |name: &str, kind: &str, extra: &[&str]| {
+        let out = dir.path().join(name);
+        let mut args = vec![
+            "surface",
+            "coons",
+            "--kind",
+            kind,
+            "--u-curves",
+            s(&files[0]),
+            "--v-curves",
+            s(&files[1]),
+            "--samples",
+            "33,33",
+            "-o",
+            s(&out),
+        ];
+        args.extend_from_slice(extra);
+        let o = karkas(&args);
+        assert!(o.status.success(), "{name}: {}", stderr(&o));
+        read_csv(&out).1
+    };
+    let with = run("with.csv", "composite", &["--twists", s(&twists)]);
+    let without = run("without.csv", "composite", &[]);
+    let gordon = run("gordon.csv", "gordon-spline", &[]);
+    let z = |x: f64, y: f64| x.sin() * y.cos();
+    let error = |rows: &[Vec<f64>]| {
+        rows.iter()
+            .map(|r| (r[4] - z(2.0 * r[0], 2.0 * r[1])).abs())
+            .fold(0.0, f64::max)
+    };
+    let (e_with, e_without, e_gordon) = (error(&with), error(&without), error(&gordon));
+    assert!(
+        e_with < 0.8 * e_without && e_with < 0.8 * e_gordon,
+        "twists {e_with:e}, derived {e_without:e}, gordon-spline {e_gordon:e}"
+    );
+    // The twist at the inner crossing (u, v) = (0.5, 0.5), sample (16, 16), by the central
+    // difference of the samples (h = 1/32), against -4 cos 1 sin 1.
+    let twist = |rows: &[Vec<f64>]| {
+        let at = |a: usize, b: usize| rows[a * 33 + b][4];
+        (at(17, 17) - at(17, 15) - at(15, 17) + at(15, 15)) * (32.0 * 32.0 / 4.0)
+    };
+    let exact = -4.0 * 1f64.cos() * 1f64.sin();
+    assert!(
+        (twist(&with) - exact).abs() < 1e-2,
+        "{} vs {exact}",
+        twist(&with)
+    );
+    // Twists go with bicubic and composite only, not with derivative files, and must cover
+    // the crossings.
+    let out = dir.path().join("bad.csv");
+    let reject = |kind: &str, extra: &[&str], needles: &[&str]| {
+        let mut args = vec![
+            "surface",
+            "coons",
+            "--kind",
+            kind,
+            "--u-curves",
+            s(&files[0]),
+            "--v-curves",
+            s(&files[1]),
+            "-o",
+            s(&out),
+        ];
+        args.extend_from_slice(extra);
+        assert_rejected(&args, needles, &out, None);
+    };
+    reject(
+        "gordon",
+        &["--twists", s(&twists)],
+        &["--twists is used only by --kind bicubic and composite"],
+    );
+    let o = karkas(&[
+        "surface",
+        "coons",
+        "--kind",
+        "composite",
+        "--u-curves",
+        s(&files[0]),
+        "--v-curves",
+        s(&files[1]),
+        "--twists",
+        s(&twists),
+        "--u-derivs",
+        s(&files[2]),
+        "--v-derivs",
+        s(&files[3]),
+        "-o",
+        s(&out),
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("cannot be used with"), "{}", stderr(&o));
+    let small = dir.path().join("small.csv");
+    std::fs::write(
+        &small,
+        "i,j,x,y,z\n0,0,0,0,0\n0,1,0,0,0\n1,0,0,0,0\n1,1,0,0,0\n",
+    )
+    .unwrap();
+    reject(
+        "composite",
+        &["--twists", s(&small)],
+        &[
+            "small.csv: 3 v-curves x 3 u-curves",
+            "rows of twists (one per v-curve)",
+        ],
+    );
 }

@@ -1,5 +1,5 @@
-//! Curves taken from a Coons surface: its first derivative across a parameter line, the
-//! cross-derivative curve that a curve network derives when none is given (Chashnikov).
+//! Curves taken from a Coons surface: its first derivative across a parameter line, a
+//! cross-derivative curve of a curve network taken from a surface through it (Chashnikov).
 
 use std::sync::Arc;
 
@@ -20,9 +20,9 @@ pub enum Along {
 /// along the line: for [`Along::V`], `t -> dS/du (at, t)`; for [`Along::U`],
 /// `t -> dS/dv (t, at)`.
 ///
-/// This is how omitted cross-derivative curves of a curve network are derived (see
-/// [`CrossDerivatives::from_surface`](super::CrossDerivatives::from_surface)). Batch
-/// evaluation goes through the surface's grid evaluation.
+/// [`CrossDerivatives::from_surface`](super::CrossDerivatives::from_surface) makes a
+/// network's cross-derivative curves of these. Batch evaluation goes through the surface's
+/// grid evaluation.
 #[derive(Clone)]
 pub struct SurfaceCrossDerivative<const D: usize> {
     surface: Arc<CoonsSurface<D>>,

@@ -7,12 +7,13 @@ use super::blending::{
 };
 use super::curves::CurveRef;
 use super::network::{CrossDerivatives, CurveNetwork, NetworkAxis};
-use super::surface::{FamilyRef, Names};
+use super::surface::{Compatibility, FamilyRef, Names};
 use super::CoonsSurface;
 use crate::{Error, Result};
 
-/// The end conditions used for cross-derivatives derived from a network (the not-a-knot
-/// cubic-spline Gordon surface).
+/// The end conditions of the splines through the curves' tangents that derive twists, and
+/// from them cross-derivatives, when none are given ([`derived_twists`](super::derived_twists);
+/// periodic in a closed direction).
 pub const DERIVED_CROSS_ENDS: SplineEnds = SplineEnds::NotAKnot;
 
 impl<const D: usize> CoonsSurface<D> {
@@ -22,7 +23,10 @@ impl<const D: usize> CoonsSurface<D> {
     ///
     /// Errors: another network shape ([`Error::NotFourSided`]); incompatible corners
     /// ([`Error::IncompatibleCurves`]).
-    pub fn bilinear(network: &CurveNetwork<D>, tolerance: f64) -> Result<Self> {
+    pub fn bilinear(
+        network: &CurveNetwork<D>,
+        compatibility: impl Into<Compatibility>,
+    ) -> Result<Self> {
         let (u0, u1, v0, v1) = four_sided(network, "bilinear Coons")?;
         let u: FamilyRef = Arc::new(LagrangeBlending::new(&[u0, u1])?);
         let v: FamilyRef = Arc::new(LagrangeBlending::new(&[v0, v1])?);
@@ -31,7 +35,7 @@ impl<const D: usize> CoonsSurface<D> {
             v,
             network.v_curves().to_vec(),
             network.u_curves().to_vec(),
-            tolerance,
+            compatibility.into(),
             (false, false),
             Names {
                 v_curve: &|i| format!("v-curve {i}"),
@@ -46,19 +50,19 @@ impl<const D: usize> CoonsSurface<D> {
     /// family is `a_0, A_0, A_1, a_1` (same in `v`).
     ///
     /// `cross` gives `A_0, A_1` (`dS/du` along the v-curves) and `B_0, B_1` (`dS/dv` along the
-    /// u-curves); without it they are taken from the not-a-knot spline Gordon surface of the
-    /// network, which on two curves per direction is the bilinear Coons surface (see
-    /// [`CrossDerivatives::from_surface`]).
+    /// u-curves); without it they are the cubic Hermite curves of the curves' tangents at the
+    /// corners and the derived twists ([`CrossDerivatives::derived`]; on two nodes the
+    /// spline-of-derivatives rule is the difference quotient of the tangents).
     ///
     /// Errors: another network shape ([`Error::NotFourSided`]); cross-derivative counts other
     /// than two ([`Error::CountMismatch`]); a violation of (8) ([`Error::IncompatibleCurves`]).
     pub fn bicubic(
         network: &CurveNetwork<D>,
         cross: Option<&CrossDerivatives<D>>,
-        tolerance: f64,
+        compatibility: impl Into<Compatibility>,
     ) -> Result<Self> {
         let (u0, u1, v0, v1) = four_sided(network, "bicubic Coons")?;
-        let cross = cross_or_derived(network, cross, tolerance)?;
+        let cross = cross_or_derived(network, cross)?;
         let (a, b) = (network.v_curves(), network.u_curves());
         let (da, db) = (&cross.v_curves, &cross.u_curves);
         let u: FamilyRef = Arc::new(CubicHermiteBlending::new(u0, u1)?);
@@ -78,7 +82,7 @@ impl<const D: usize> CoonsSurface<D> {
             v,
             vec![a[0].clone(), da[0].clone(), da[1].clone(), a[1].clone()],
             vec![b[0].clone(), db[0].clone(), db[1].clone(), b[1].clone()],
-            tolerance,
+            compatibility.into(),
             (false, false),
             Names {
                 v_curve: &|k| name("v-curve", k),
@@ -93,7 +97,10 @@ impl<const D: usize> CoonsSurface<D> {
     ///
     /// Errors: a violation of (8) at a crossing ([`Error::IncompatibleCurves`] naming the
     /// v-curve and u-curve).
-    pub fn gordon(network: &CurveNetwork<D>, tolerance: f64) -> Result<Self> {
+    pub fn gordon(
+        network: &CurveNetwork<D>,
+        compatibility: impl Into<Compatibility>,
+    ) -> Result<Self> {
         let (u_axis, v_axis) = (network.u_axis(), network.v_axis());
         let u: FamilyRef = Arc::new(LagrangeBlending::new(&u_axis.nodes_with_seam())?);
         let v: FamilyRef = Arc::new(LagrangeBlending::new(&v_axis.nodes_with_seam())?);
@@ -103,7 +110,7 @@ impl<const D: usize> CoonsSurface<D> {
             v,
             with_seam(network.v_curves(), u_axis),
             with_seam(network.u_curves(), v_axis),
-            tolerance,
+            compatibility.into(),
             (u_axis.is_closed(), v_axis.is_closed()),
             Names {
                 v_curve: &|i| format!("v-curve {}", i % count.0),
@@ -119,25 +126,15 @@ impl<const D: usize> CoonsSurface<D> {
     pub fn gordon_spline(
         network: &CurveNetwork<D>,
         ends: SplineEnds,
-        tolerance: f64,
+        compatibility: impl Into<Compatibility>,
     ) -> Result<Self> {
-        let family = |axis: &NetworkAxis| -> Result<FamilyRef> {
-            Ok(if axis.is_closed() {
-                Arc::new(SplineBlending::new(
-                    &axis.nodes_with_seam(),
-                    SplineEnds::Periodic,
-                )?)
-            } else {
-                Arc::new(SplineBlending::new(axis.nodes(), ends)?)
-            })
-        };
         let (u_axis, v_axis) = (network.u_axis(), network.v_axis());
         Self::build(
-            family(u_axis)?,
-            family(v_axis)?,
+            spline_family(u_axis, ends)?,
+            spline_family(v_axis, ends)?,
             network.v_curves().to_vec(),
             network.u_curves().to_vec(),
-            tolerance,
+            compatibility.into(),
             (u_axis.is_closed(), v_axis.is_closed()),
             Names {
                 v_curve: &|i| format!("v-curve {i}"),
@@ -153,13 +150,13 @@ impl<const D: usize> CoonsSurface<D> {
     /// Coons surface (13); it is `C^1` and satisfies (14): `S(u_i, .) = a_i`,
     /// `S_u(u_i, .) = A_i`, `S(., v_j) = b_j`, `S_v(., v_j) = B_j`.
     ///
-    /// `cross` gives `A_i` and `B_j`; without it they are the cross-derivatives of the
-    /// not-a-knot (periodic in a closed direction) spline Gordon surface `G` of the network,
-    /// `A_i = G_u(u_i, .)`, `B_j = G_v(., v_j)`, which satisfy (11) by construction. The
-    /// composite surface is then `G` itself: the cardinal splines are cubic between the nodes,
-    /// so the piecewise Hermite operators reproduce them and the residual
-    /// `(I - P)(I - Q) G` of the Boolean sum vanishes. Give cross-derivatives to get anything
-    /// else (a surface with prescribed tangent planes along the curves). In a
+    /// `cross` gives `A_i` and `B_j`; without it they are built as Chashnikov's §4 builds them
+    /// from twist vectors `d_ij` ([`CrossDerivatives::from_twists`]: `A_i(v_j) = b_j'(u_i)`,
+    /// `A_i'(v_j) = d_ij`, piecewise cubic Hermite between the nodes; same for `B_j`), with
+    /// the twists of the spline-of-derivatives rule ([`derived_twists`](super::derived_twists)),
+    /// which satisfy (11) by construction. Give twists
+    /// ([`CrossDerivatives::from_twists`]) or cross-derivatives to prescribe the surface's
+    /// tangent planes along the curves. In a
     /// closed direction the first curve and its cross-derivative are repeated one period on
     /// (the piecewise Hermite family is local, so the seam is `C^1` like every other node).
     ///
@@ -169,9 +166,9 @@ impl<const D: usize> CoonsSurface<D> {
     pub fn composite(
         network: &CurveNetwork<D>,
         cross: Option<&CrossDerivatives<D>>,
-        tolerance: f64,
+        compatibility: impl Into<Compatibility>,
     ) -> Result<Self> {
-        let cross = cross_or_derived(network, cross, tolerance)?;
+        let cross = cross_or_derived(network, cross)?;
         let (u_axis, v_axis) = (network.u_axis(), network.v_axis());
         let u: FamilyRef = Arc::new(PiecewiseHermiteBlending::new(&u_axis.nodes_with_seam())?);
         let v: FamilyRef = Arc::new(PiecewiseHermiteBlending::new(&v_axis.nodes_with_seam())?);
@@ -197,7 +194,7 @@ impl<const D: usize> CoonsSurface<D> {
             v,
             interleave(network.v_curves(), &cross.v_curves, u_axis),
             interleave(network.u_curves(), &cross.u_curves, v_axis),
-            tolerance,
+            compatibility.into(),
             (u_axis.is_closed(), v_axis.is_closed()),
             Names {
                 v_curve: &|k| name("v-curve", k, count.0),
@@ -233,12 +230,23 @@ fn with_seam<const D: usize>(curves: &[CurveRef<D>], axis: &NetworkAxis) -> Vec<
     out
 }
 
+/// The cubic-spline cardinal family of an axis: `ends` when open, periodic when closed.
+pub(crate) fn spline_family(axis: &NetworkAxis, ends: SplineEnds) -> Result<FamilyRef> {
+    Ok(if axis.is_closed() {
+        Arc::new(SplineBlending::new(
+            &axis.nodes_with_seam(),
+            SplineEnds::Periodic,
+        )?)
+    } else {
+        Arc::new(SplineBlending::new(axis.nodes(), ends)?)
+    })
+}
+
 /// The given cross-derivatives (checked against the network's curve counts) or those of the
-/// network's spline Gordon surface.
+/// derived twists ([`CrossDerivatives::derived`]).
 fn cross_or_derived<const D: usize>(
     network: &CurveNetwork<D>,
     cross: Option<&CrossDerivatives<D>>,
-    tolerance: f64,
 ) -> Result<CrossDerivatives<D>> {
     match cross {
         Some(c) => {
@@ -257,9 +265,6 @@ fn cross_or_derived<const D: usize>(
             Error::check_counts(&counts)?;
             Ok(c.clone())
         }
-        None => {
-            let gordon = CoonsSurface::gordon_spline(network, DERIVED_CROSS_ENDS, tolerance)?;
-            Ok(CrossDerivatives::from_surface(Arc::new(gordon), network))
-        }
+        None => CrossDerivatives::derived(network),
     }
 }

@@ -6,7 +6,7 @@ use core::str::FromStr;
 
 use super::blending::SplineEnds;
 use super::network::{CrossDerivatives, CurveNetwork};
-use super::surface::CoonsSurface;
+use super::surface::{Compatibility, CoonsSurface};
 use crate::{Error, Result};
 
 /// How far apart (relative to the model size) a point of a u-curve and a point of a v-curve
@@ -72,13 +72,15 @@ impl CoonsKind {
     }
 
     /// The surface of this kind over `network` (cross-derivatives used by bicubic and
-    /// composite surfaces only; `tolerance` of the compatibility conditions).
+    /// composite surfaces only; `compatibility`: the tolerance of the compatibility
+    /// conditions, or [`Compatibility::Repair`]).
     pub fn build<const D: usize>(
         self,
         network: &CurveNetwork<D>,
         cross: Option<&CrossDerivatives<D>>,
-        tolerance: f64,
+        compatibility: impl Into<Compatibility>,
     ) -> Result<CoonsSurface<D>> {
+        let tolerance = compatibility.into();
         match self {
             CoonsKind::Bilinear => CoonsSurface::bilinear(network, tolerance),
             CoonsKind::Bicubic => CoonsSurface::bicubic(network, cross, tolerance),

@@ -24,11 +24,14 @@
 //!   `A_i`, `B_j` (11) and the piecewise Hermite blending (17)–(18): `C^1`, satisfies (14), and
 //!   equals the patch-by-patch surface (13) (Proposition 2).
 //!
-//! Omitted cross-derivative curves are derived from the network: `A_i = G_u(u_i, .)`,
-//! `B_j = G_v(., v_j)` for the not-a-knot (periodic when closed) spline Gordon surface `G`
-//! through the network, which satisfy (11) by Proposition 1 applied to `G`. (The composite
-//! surface of these is `G` itself: the cardinal splines are cubic between nodes, so the
-//! piecewise Hermite Boolean sum reproduces them.)
+//! **Twists.** Chashnikov's §4 builds the cross-derivative curves from twist vectors `d_ij`:
+//! `A_i(v_j) = b_j'(u_i)`, `A_i'(v_j) = d_ij`, `B_j(u_i) = a_i'(v_j)`, `B_j'(u_i) = d_ij`
+//! ([`CrossDerivatives::from_twists`]: piecewise cubic Hermite curves of these data, so (11)
+//! holds by construction and the surface has `S_uv(u_i, v_j) = d_ij`). Omitted twists are
+//! derived by the spline-of-derivatives rule ([`derived_twists`]: the mean of the
+//! derivatives of the not-a-knot, periodic when closed, splines through the curves' tangents
+//! `b_j'(u_i)` over `j` and `a_i'(v_j)` over `i`; exact for bicubic and bilinear polynomial
+//! surfaces); omitted cross-derivative curves are those of the derived twists.
 //!
 //! ```
 //! use karkas::coons::{curve_ref, CoonsSurface, CurveNetwork, NetworkAxis, PolylineCurve};
@@ -62,7 +65,11 @@
 //! **Compatibility.** Every constructor checks (8) (which for the composite family is (11))
 //! at every pair of curves with a tolerance relative to the model size, and fails with
 //! [`Error::IncompatibleCurves`](crate::Error::IncompatibleCurves) naming the two curves, the
-//! crossing and the condition: never a silently wrong surface.
+//! crossing and the condition: never a silently wrong surface. Asked to
+//! ([`Compatibility::Repair`] in place of the tolerance), it makes the data compatible
+//! instead: both sides of every condition snap to their mean, each curve moved by the blend
+//! `sum_j H_j c_j` of its corrections (exact by (5)), and reports the largest correction
+//! ([`CoonsSurface::repair`]).
 //!
 //! **Curves from points.** [`PointNetwork`] turns point lists into a network: interpolating
 //! cubic-spline curves ([`CubicSpline`](crate::param::CubicSpline), or LL curves of Aulchenko et al.), crossings found as
@@ -80,6 +87,7 @@
 //! Boolean sum needs all cardinal functions at a parameter (a transposed solve), not one
 //! interpolant.
 
+mod blended;
 mod blending;
 mod bspline;
 mod cross_derivative;
@@ -91,6 +99,7 @@ mod network;
 mod points;
 mod polyline;
 mod surface;
+mod twists;
 mod warp;
 
 pub use blending::{
@@ -106,4 +115,5 @@ pub use kind::{CoonsKind, CROSSING_TOLERANCE, POINT_NETWORK_TOLERANCE};
 pub use network::{CrossDerivatives, CurveNetwork, NetworkAxis};
 pub use points::{CurveFit, PointNetwork};
 pub use polyline::PolylineCurve;
-pub use surface::{CoonsSurface, FamilyRef, DEFAULT_TOLERANCE};
+pub use surface::{Compatibility, CoonsSurface, FamilyRef, Repair, DEFAULT_TOLERANCE};
+pub use twists::derived_twists;

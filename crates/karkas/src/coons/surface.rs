@@ -3,6 +3,7 @@
 
 use std::sync::Arc;
 
+use super::blended::BlendedCurve;
 use super::blending::{reduce, BlendingFamily};
 use super::curves::{AffineCurve, CurveRef};
 use crate::core::{Interval, Surface};
@@ -17,6 +18,48 @@ pub const DEFAULT_TOLERANCE: f64 = 1e-6;
 
 /// Points sampled per curve to measure the model size.
 const SIZE_SAMPLES: usize = 9;
+
+/// How a constructor treats the compatibility conditions (8) (for the composite family, (11)).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Compatibility {
+    /// Check them with this tolerance relative to the model size (per node spacing for
+    /// derivative conditions, see [`CoonsSurface::new`]) and refuse a violation
+    /// ([`Error::IncompatibleCurves`]). A bare `f64` converts to this.
+    Check(f64),
+    /// Make them hold: both sides of every condition, `L^u_i(g_j)` and `L^v_j(f_i)`, are
+    /// snapped to their mean. Curve `f_i` becomes `f_i + sum_j H^v_j (mean_ij - L^v_j(f_i))`
+    /// (and `g_j` likewise with the `u` family): since `L^v_k(H^v_j) = delta_kj` (5), this
+    /// changes exactly the data the conditions look at, by half the mismatch, and the
+    /// surface then interpolates the repaired curves (Proposition 1). The largest
+    /// correction is kept ([`CoonsSurface::repair`]).
+    Repair,
+}
+
+impl From<f64> for Compatibility {
+    fn from(tolerance: f64) -> Self {
+        Compatibility::Check(tolerance)
+    }
+}
+
+/// The largest correction a [`Compatibility::Repair`] made: half the largest mismatch of the
+/// conditions (8), the largest measured as the check measures it (relative to the model
+/// size, per node spacing for derivatives).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Repair {
+    /// The size of the correction, in the units of the condition (a distance for values,
+    /// per unit of the parameter for derivatives); 0 when the data were compatible.
+    pub correction: f64,
+    /// The correction relative to the model size (times the node spacings for derivative
+    /// conditions): what a [`Compatibility::Check`] tolerance is compared with.
+    pub relative: f64,
+    /// The condition corrected, e.g. `value at u=0.5 of u-curve 1 and derivative in v at
+    /// v=0.25 of v-curve 2`.
+    pub condition: String,
+    /// Where the two curves cross.
+    pub u: f64,
+    /// Where the two curves cross.
+    pub v: f64,
+}
 
 /// A generalized Coons surface (Chashnikov, formula (9)):
 ///
@@ -40,6 +83,8 @@ pub struct CoonsSurface<const D: usize> {
     corners: Vec<Point<D>>,
     closed_u: bool,
     closed_v: bool,
+    /// The largest correction, when built with [`Compatibility::Repair`].
+    repair: Option<Repair>,
 }
 
 impl<const D: usize> core::fmt::Debug for CoonsSurface<D> {
@@ -80,12 +125,15 @@ impl<const D: usize> CoonsSurface<D> {
     /// that differ from the family sizes ([`Error::CountMismatch`]), a tolerance that is
     /// negative or not finite ([`Error::InvalidSetting`]), and [`Error::IncompatibleCurves`] naming the first pair that violates (8)
     /// (curves are named `f_i` and `g_j`).
+    ///
+    /// `compatibility` is a tolerance (`f64`, [`Compatibility::Check`]) or
+    /// [`Compatibility::Repair`].
     pub fn new(
         u_family: FamilyRef,
         v_family: FamilyRef,
         v_curves: Vec<CurveRef<D>>,
         u_curves: Vec<CurveRef<D>>,
-        tolerance: f64,
+        compatibility: impl Into<Compatibility>,
     ) -> Result<Self> {
         let closed = (u_family.is_periodic(), v_family.is_periodic());
         Self::build(
@@ -93,7 +141,7 @@ impl<const D: usize> CoonsSurface<D> {
             v_family,
             v_curves,
             u_curves,
-            tolerance,
+            compatibility.into(),
             closed,
             Names {
                 v_curve: &|i| format!("f_{i}"),
@@ -109,7 +157,7 @@ impl<const D: usize> CoonsSurface<D> {
         v_family: FamilyRef,
         v_curves: Vec<CurveRef<D>>,
         u_curves: Vec<CurveRef<D>>,
-        tolerance: f64,
+        compatibility: Compatibility,
         (closed_u, closed_v): (bool, bool),
         names: Names<'_>,
     ) -> Result<Self> {
@@ -134,6 +182,10 @@ impl<const D: usize> CoonsSurface<D> {
             ("u-curves (one per v-blending function)", n, u_curves.len()),
         ];
         Error::check_counts(&counts)?;
+        let tolerance = match compatibility {
+            Compatibility::Check(t) => t,
+            Compatibility::Repair => 0.0,
+        };
         if !(tolerance.is_finite() && tolerance >= 0.0) {
             return Err(Error::InvalidSetting {
                 name: "tolerance",
@@ -162,6 +214,28 @@ impl<const D: usize> CoonsSurface<D> {
             smallest_spacing(u_family.as_ref()),
             smallest_spacing(v_family.as_ref()),
         );
+        if compatibility == Compatibility::Repair {
+            let scale = |i: usize, j: usize| {
+                size / hu.powi(lu[i].order() as i32) / hv.powi(lv[j].order() as i32)
+            };
+            let describe = |i: usize, j: usize| {
+                format!(
+                    "{} of {} and {} of {}",
+                    lu[i].describe('u'),
+                    (names.u_curve)(j),
+                    lv[j].describe('v'),
+                    (names.v_curve)(i)
+                )
+            };
+            return Ok(repaired(
+                (u_family.clone(), v_family.clone()),
+                (v_curves, u_curves),
+                corners,
+                (closed_u, closed_v),
+                &scale,
+                &describe,
+            ));
+        }
         for (i, (f, li)) in v_curves.iter().zip(lu).enumerate() {
             for (j, lj) in lv.iter().enumerate() {
                 let mismatch = corners[i * n + j].distance(lj.apply(f.as_ref()));
@@ -194,7 +268,14 @@ impl<const D: usize> CoonsSurface<D> {
             corners,
             closed_u,
             closed_v,
+            repair: None,
         })
+    }
+
+    /// The largest correction of the data, when the surface was built with
+    /// [`Compatibility::Repair`]; `None` when the data were checked.
+    pub fn repair(&self) -> Option<&Repair> {
+        self.repair.as_ref()
     }
 
     /// The blending family of `u` (functionals `L^u_i`, functions `H^u_i`).
@@ -343,6 +424,80 @@ impl<const D: usize> CoonsSurface<D> {
             sum = sum.add_scaled(hv[j], q);
         }
         sum
+    }
+}
+
+/// The surface of curves repaired as [`Compatibility::Repair`] says, from the data
+/// `corners[i n + j] = L^u_i(g_j)`; `scale(i, j)` turns a correction into the relative figure
+/// of the check, `describe(i, j)` names the condition.
+fn repaired<const D: usize>(
+    (u_family, v_family): (FamilyRef, FamilyRef),
+    (v_curves, u_curves): (Vec<CurveRef<D>>, Vec<CurveRef<D>>),
+    mut corners: Vec<Point<D>>,
+    (closed_u, closed_v): (bool, bool),
+    scale: &dyn Fn(usize, usize) -> f64,
+    describe: &dyn Fn(usize, usize) -> String,
+) -> CoonsSurface<D> {
+    let (m, n) = (v_curves.len(), u_curves.len());
+    let (lu, lv) = (u_family.functionals(), v_family.functionals());
+    // Corrections of f_i (over j) and of g_j (over i), both half the mismatch.
+    let mut of_f = vec![Point::ZERO; m * n];
+    let mut of_g = vec![Point::ZERO; m * n];
+    let mut largest: Option<(f64, f64, usize, usize)> = None;
+    for (i, f) in v_curves.iter().enumerate() {
+        for (j, lj) in lv.iter().enumerate() {
+            let from_g = corners[i * n + j];
+            let from_f = lj.apply(f.as_ref());
+            let mean = (from_g + from_f) * 0.5;
+            of_f[i * n + j] = mean - from_f;
+            of_g[i * n + j] = mean - from_g;
+            corners[i * n + j] = mean;
+            let correction = mean.distance(from_f).max(mean.distance(from_g));
+            let relative = correction / scale(i, j);
+            if largest.is_none_or(|(r, ..)| relative > r) {
+                largest = Some((relative, correction, i, j));
+            }
+        }
+    }
+    let shifted = |curve: &CurveRef<D>, family: &FamilyRef, c: Vec<Point<D>>| -> CurveRef<D> {
+        if c.iter().all(|p| *p == Point::ZERO) {
+            curve.clone()
+        } else {
+            let closed = curve.is_closed();
+            std::sync::Arc::new(BlendedCurve::new(
+                Some(curve.clone()),
+                family.clone(),
+                c,
+                closed,
+            ))
+        }
+    };
+    let v_curves = v_curves
+        .iter()
+        .enumerate()
+        .map(|(i, f)| shifted(f, &v_family, of_f[i * n..(i + 1) * n].to_vec()))
+        .collect();
+    let u_curves = u_curves
+        .iter()
+        .enumerate()
+        .map(|(j, g)| shifted(g, &u_family, (0..m).map(|i| of_g[i * n + j]).collect()))
+        .collect();
+    let repair = largest.map(|(relative, correction, i, j)| Repair {
+        correction,
+        relative,
+        condition: describe(i, j),
+        u: lu[i].at(),
+        v: lv[j].at(),
+    });
+    CoonsSurface {
+        u_family,
+        v_family,
+        v_curves,
+        u_curves,
+        corners,
+        closed_u,
+        closed_v,
+        repair,
     }
 }
 

@@ -172,7 +172,7 @@ fn composite_surface_is_c1_with_the_given_cross_derivatives() {
 #[test]
 fn closed_directions_close_smoothly() {
     // A tube: open along u, closed around v (period 2 pi). Composite (cross-derivatives from
-    // the periodic spline Gordon surface), spline Gordon and Lagrange Gordon all pass through
+    // the derived twists, periodic splines around), spline Gordon and Lagrange Gordon all pass through
     // the network; the composite is C^1 and the spline Gordon C^2 across the seam v = 0, the
     // Lagrange one only C^0.
     let s = Arc::new(tube());
@@ -366,36 +366,104 @@ fn network_shapes_are_checked() {
     assert!(CoonsSurface::bilinear(&net2, f64::NAN).is_err());
 }
 
-#[test]
-fn derived_cross_derivatives_reproduce_the_spline_gordon_surface() {
-    // The cardinal splines are cubic between nodes, so the piecewise Hermite Boolean sum of
-    // the spline Gordon surface's own cross-derivatives is that surface: open and closed.
-    let cases = [
-        (
-            Arc::new(wavy_sheet()),
-            NetworkAxis::open(vec![0.0, 0.6, 1.5, 2.2, 3.0]).unwrap(),
-            NetworkAxis::open(vec![0.0, 0.5, 1.1, 2.0]).unwrap(),
-        ),
-        (
-            Arc::new(tube()),
-            NetworkAxis::open(vec![0.0, 1.0, 2.2, 3.0]).unwrap(),
-            NetworkAxis::closed(vec![0.0, 1.2, 2.5, 3.9, 5.1], std::f64::consts::TAU).unwrap(),
-        ),
-    ];
-    for (s, ua, va) in cases {
-        let net = network(&s, &ua, &va);
-        let composite = CoonsSurface::composite(&net, None, 1e-9).unwrap();
-        let gordon = CoonsSurface::gordon_spline(&net, SplineEnds::NotAKnot, 1e-9).unwrap();
-        let (du, dv) = (gordon.domain_u(), gordon.domain_v());
-        for u in linspace(du.start, du.end, 37) {
-            for v in linspace(dv.start, dv.end, 37) {
-                assert_close(
-                    composite.eval(u, v),
-                    gordon.eval(u, v),
-                    1e-12,
-                    "composite = G",
-                );
-            }
+/// A curve moved by a constant vector.
+struct Lifted {
+    inner: karkas::coons::CurveRef<3>,
+    by: Point3,
+}
+
+impl karkas::Curve<3> for Lifted {
+    fn domain(&self) -> Interval {
+        self.inner.domain()
+    }
+    fn is_closed(&self) -> bool {
+        self.inner.is_closed()
+    }
+    fn eval(&self, t: f64) -> Point3 {
+        self.inner.eval(t) + self.by
+    }
+    fn deriv(&self, t: f64, k: usize) -> Point3 {
+        if k == 0 {
+            self.eval(t)
+        } else {
+            self.inner.deriv(t, k)
         }
+    }
+}
+
+#[test]
+fn repair_snaps_to_the_mean_and_the_surface_interpolates_the_repaired_curves() {
+    use karkas::coons::Compatibility;
+    let s = Arc::new(wavy_sheet());
+    let (ua, va) = (
+        NetworkAxis::open(vec![0.0, 0.8, 1.6, 3.0]).unwrap(),
+        NetworkAxis::open(vec![0.0, 0.9, 2.0]).unwrap(),
+    );
+    let net = network(&s, &ua, &va);
+    let exact = exact_cross(&s, &ua, &va);
+    // B_1 lifted by 0.01 in z: it disagrees with a_i'(v_1) by 0.01 at every u_i.
+    let lift = Point3::new([0.0, 0.0, 0.01]);
+    let mut u_cross = exact.u_curves.clone();
+    u_cross[1] = Arc::new(Lifted {
+        inner: u_cross[1].clone(),
+        by: lift,
+    });
+    let cross = CrossDerivatives {
+        v_curves: exact.v_curves.clone(),
+        u_curves: u_cross,
+    };
+    let refused = CoonsSurface::composite(&net, Some(&cross), 1e-6).unwrap_err();
+    assert!(matches!(refused, Error::IncompatibleCurves { .. }));
+    let checked = CoonsSurface::composite(&net, Some(&exact), 1e-9).unwrap();
+    assert!(checked.repair().is_none());
+
+    let c = CoonsSurface::composite(&net, Some(&cross), Compatibility::Repair).unwrap();
+    let repair = c.repair().unwrap();
+    assert!((repair.correction - 0.005).abs() < 1e-12, "{repair:?}");
+    // (Every v-curve meets the lifted B_1 with the same mismatch: any of them may be named.)
+    assert!(
+        repair.condition.starts_with(
+            "the value of the cross-derivative curve of u-curve 1 and d/dv of v-curve "
+        ),
+        "{repair:?}"
+    );
+    assert_eq!(repair.v, 0.9);
+    // Proposition 1 for the repaired curves (15): c(u_i, .) = f_2i, c_u(u_i, .) = f_2i+1,
+    // c(., v_j) = g_2j, c_v(., v_j) = g_2j+1.
+    for (i, &u) in ua.nodes().iter().enumerate() {
+        for v in linspace(0.0, 2.0, 17) {
+            let f = c.v_curves();
+            assert_close(c.eval(u, v), f[2 * i].eval(v), 1e-12, "c(u_i, v)");
+            assert_close(
+                c.deriv(u, v, 1, 0),
+                f[2 * i + 1].eval(v),
+                1e-12,
+                "c_u(u_i, v)",
+            );
+        }
+    }
+    for (j, &v) in va.nodes().iter().enumerate() {
+        for u in linspace(0.0, 3.0, 17) {
+            let g = c.u_curves();
+            assert_close(c.eval(u, v), g[2 * j].eval(u), 1e-12, "c(u, v_j)");
+            assert_close(
+                c.deriv(u, v, 0, 1),
+                g[2 * j + 1].eval(u),
+                1e-12,
+                "c_v(u, v_j)",
+            );
+        }
+    }
+    // The repaired data are the means: at every crossing of v = 0.9, dS/dv is the exact one
+    // plus half the lift; elsewhere the surface keeps the exact data.
+    for &u in ua.nodes() {
+        assert_close(
+            c.deriv(u, 0.9, 0, 1),
+            s.deriv(u, 0.9, 0, 1) + lift * 0.5,
+            1e-12,
+            "mean",
+        );
+        assert_close(c.eval(u, 0.9), s.eval(u, 0.9), 1e-12, "crossing");
+        assert_close(c.deriv(u, 0.0, 0, 1), s.deriv(u, 0.0, 0, 1), 1e-12, "B_0");
     }
 }

@@ -10,8 +10,8 @@ use crate::coons_reference::{
     assert_close, cubic_in_u, exact_cross, iso, network, torus, wavy_sheet, Analytic, Dir,
 };
 use karkas::coons::{
-    curve_ref, CoonsSurface, CubicHermiteBlending, CurveNetwork, CurveRef, FamilyRef,
-    LagrangeBlending, LlBlending, NetworkAxis, PiecewiseHermiteBlending, PolylineCurve,
+    curve_ref, derived_twists, CoonsSurface, CubicHermiteBlending, CurveNetwork, CurveRef,
+    FamilyRef, LagrangeBlending, LlBlending, NetworkAxis, PiecewiseHermiteBlending, PolylineCurve,
     SplineBlending, SplineEnds, DEFAULT_TOLERANCE,
 };
 use karkas::ll::LlCurve;
@@ -206,18 +206,78 @@ fn proposition_1_for_every_instance() {
     assert_eq!(orders, [(0.5, 0), (0.5, 1), (2.0, 1), (2.0, 0)]);
 }
 
+/// The piecewise cubic Hermite interpolant of `values` and `slopes` at `nodes`, its
+/// derivative of order `k` at `t` (the piece above a node, the last piece at the end).
+fn hermite_interpolant(
+    nodes: &[f64],
+    values: &[Point3],
+    slopes: &[Point3],
+    t: f64,
+    k: usize,
+) -> Point3 {
+    let l = (0..nodes.len() - 1)
+        .rev()
+        .find(|&l| t >= nodes[l])
+        .unwrap_or(0)
+        .min(nodes.len() - 2);
+    let h = nodes[l + 1] - nodes[l];
+    let s = (t - nodes[l]) / h;
+    // Coefficients of 1, s, s^2, s^3 of H_1..H_4 (the paper's (3)).
+    let basis = [
+        [1.0, 0.0, -3.0, 2.0],
+        [0.0, 1.0, -2.0, 1.0],
+        [0.0, 0.0, -1.0, 1.0],
+        [0.0, 0.0, 3.0, -2.0],
+    ];
+    let eval = |c: &[f64; 4]| -> f64 {
+        (k..4)
+            .map(|p| {
+                let falling: f64 = (0..k).map(|q| (p - q) as f64).product();
+                c[p] * falling * s.powi((p - k) as i32)
+            })
+            .sum::<f64>()
+            / h.powi(k as i32)
+    };
+    values[l] * eval(&basis[0])
+        + slopes[l] * (h * eval(&basis[1]))
+        + slopes[l + 1] * (h * eval(&basis[2]))
+        + values[l + 1] * eval(&basis[3])
+}
+
 #[test]
-fn derived_cross_derivatives_come_from_the_spline_gordon_surface() {
-    let (s, _, _, net) = sheet_network();
+fn derived_cross_derivatives_come_from_the_derived_twists() {
+    // Chashnikov's §4: A_i(v_j) = b_j'(u_i), A_i'(v_j) = d_ij, here with the derived twists,
+    // and A_i the cubic Hermite curve of these data between the nodes (same for B_j).
+    let (s, u_axis, v_axis, net) = sheet_network();
     let composite = CoonsSurface::composite(&net, None, DEFAULT_TOLERANCE).unwrap();
-    let g = CoonsSurface::gordon_spline(&net, SplineEnds::NotAKnot, DEFAULT_TOLERANCE).unwrap();
-    // Values along the curves are the network's (the closed form); the derivatives across
-    // are those of the spline Gordon surface G.
-    let pick = |k: usize, exact: Point3, derived: Point3| if k == 0 { exact } else { derived };
+    let d = derived_twists(&net).unwrap();
+    let (un, vn) = (u_axis.nodes(), v_axis.nodes());
+    let a_cross = |i: usize, v: f64, kv: usize| {
+        let values: Vec<Point3> = vn.iter().map(|&vj| s.deriv(un[i], vj, 1, 0)).collect();
+        hermite_interpolant(vn, &values, d.row(i), v, kv)
+    };
+    let b_cross = |j: usize, u: f64, ku: usize| {
+        let values: Vec<Point3> = un.iter().map(|&ui| s.deriv(ui, vn[j], 0, 1)).collect();
+        let slopes: Vec<Point3> = (0..un.len()).map(|i| *d.get(i, j)).collect();
+        hermite_interpolant(un, &values, &slopes, u, ku)
+    };
+    let node = |nodes: &[f64], at: f64| nodes.iter().position(|&x| x == at).unwrap();
     check_proposition_1(
         &composite,
-        &|at, k, v, kv| pick(k, s.deriv(at, v, 0, kv), g.deriv(at, v, 1, kv)),
-        &|at, k, u, ku| pick(k, s.deriv(u, at, ku, 0), g.deriv(u, at, ku, 1)),
+        &|at, k, v, kv| {
+            if k == 0 {
+                s.deriv(at, v, 0, kv)
+            } else {
+                a_cross(node(un, at), v, kv)
+            }
+        },
+        &|at, k, u, ku| {
+            if k == 0 {
+                s.deriv(u, at, ku, 0)
+            } else {
+                b_cross(node(vn, at), u, ku)
+            }
+        },
         1e-9,
         "composite with derived cross-derivatives",
     );

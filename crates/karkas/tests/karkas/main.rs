@@ -13,6 +13,7 @@ mod coons_blending;
 mod coons_composite;
 mod coons_network;
 mod coons_surface;
+mod coons_twists;
 mod dps_bspline;
 mod dps_interpolation;
 mod dps_tube;
