@@ -179,9 +179,14 @@ class LLCurve(Curve):
     """The LL approximation of a support polygon (points (n, d), d in {2, 3})."""
 
     def __new__(
-        cls, points: ArrayLike, order: int = 3, closed: bool = False, interpolate: bool = False
+        cls,
+        points: ArrayLike,
+        order: int = 3,
+        closed: bool = False,
+        interpolate: bool = False,
+        within: Optional[float] = None,
     ) -> Self:
-        """The defaults are those of karkas curve ll."""
+        """The defaults are those of karkas curve ll; within=D as its --within D."""
     def __reduce__(self) -> Tuple[object, ...]: ...
     @staticmethod
     def interpolate(points: ArrayLike, order: int = 3, closed: bool = False) -> LLCurve:
@@ -190,6 +195,10 @@ class LLCurve(Curve):
     def order(self) -> int: ...
     @property
     def interpolating(self) -> bool: ...
+    @property
+    def within(self) -> Optional[float]: ...
+    @property
+    def largest_deviation(self) -> Optional[float]: ...
     @property
     def control_points(self) -> _Floats: ...
 
@@ -362,8 +371,9 @@ class LLSurface(Surface):
         closed_u: bool = False,
         closed_v: bool = False,
         interpolate: bool = False,
+        within: Optional[float] = None,
     ) -> Self:
-        """The defaults are those of karkas surface ll."""
+        """The defaults are those of karkas surface ll; within=D as its --within D."""
     def __reduce__(self) -> Tuple[object, ...]: ...
     @staticmethod
     def interpolate(
@@ -381,6 +391,10 @@ class LLSurface(Surface):
     def order(self) -> int: ...
     @property
     def interpolating(self) -> bool: ...
+    @property
+    def within(self) -> Optional[float]: ...
+    @property
+    def largest_deviation(self) -> Optional[float]: ...
 
 @final
 class BicubicSurface(Surface):

@@ -45,6 +45,13 @@ use crate::wrapper::{CurveImpl, SurfaceImpl, Wrapped, WrappedSurface};
 ///     at the end).
 /// interpolate : bool, optional
 ///     The interpolating variant (as ``LLCurve.interpolate``): a curve through every point.
+/// within : float, optional
+///     Pass within this distance (model units, Euclidean) of every point at its node, keeping
+///     the order (as ``karkas curve ll --within``): each node's target is the point within
+///     the distance nearest to the plain approximation's node, and the interpolating system
+///     is solved once for the targets. A distance at or above the plain approximation's
+///     largest node deviation gives the plain approximation; a tiny one tends to the
+///     interpolating variant. Not with ``interpolate=True``.
 ///
 /// Raises
 /// ------
@@ -52,7 +59,8 @@ use crate::wrapper::{CurveImpl, SurfaceImpl, Wrapped, WrappedSurface};
 ///     Too few points, a non-finite coordinate, or an array that is not ``(n, 2)`` or
 ///     ``(n, 3)``.
 /// OptionError
-///     ``order`` is out of range.
+///     ``order`` is out of range, ``within`` is not positive and finite, or ``within`` is
+///     given with ``interpolate=True``.
 ///
 /// Examples
 /// --------
@@ -65,6 +73,11 @@ use crate::wrapper::{CurveImpl, SurfaceImpl, Wrapped, WrappedSurface};
 /// (True, True)
 /// >>> c.order, c.interpolating, c.control_points.shape
 /// (3, False, (5, 2))
+/// >>> near = karkas.LLCurve(pts, order=3, within=0.05)
+/// >>> near.within, round(near.largest_deviation, 12)
+/// (0.05, 0.05)
+/// >>> bool(np.all(np.linalg.norm(near(np.arange(1, 6) / 6) - pts, axis=1) <= 0.05 + 1e-12))
+/// True
 #[pyclass(extends = PyCurve, module = "karkas", name = "LLCurve", frozen)]
 pub struct PyLlCurve {
     /// The order L (the curve is C^L).
@@ -73,6 +86,14 @@ pub struct PyLlCurve {
     /// True for the interpolating variant.
     #[pyo3(get)]
     pub(crate) interpolating: bool,
+    /// The distance given as ``within`` (None without it).
+    #[pyo3(get)]
+    pub(crate) within: Option<f64>,
+    /// With ``within``: the largest distance from a point to the curve at its node (at most
+    /// ``within`` up to round-off; the plain approximation's when that is smaller). None
+    /// without ``within``.
+    #[pyo3(get)]
+    largest_deviation: Option<f64>,
     /// The control polygon r_1..r_K (closed curves repeat the first point at the end), (K, d).
     #[pyo3(get, name = "control_points")]
     control: FlatPoints,
@@ -88,38 +109,41 @@ impl PyLlCurve {
         points: &Bound<'_, PyAny>,
         order: i64,
         closed: bool,
-        interpolating: bool,
+        (interpolating, within): (bool, Option<f64>),
     ) -> PyResult<PyClassInitializer<Self>> {
+        check_within(interpolating, within)?;
         let (pts, dim) = PointsArray::extract_checked(points, "points")?;
         let order = count(order, "order")?;
         let flat = pts.flat();
         let n = pts.len();
-        let (inner, control): (Arc<dyn CurveImpl>, FlatPoints) = by_dim!(dim, D => {
+        let (inner, control, largest_deviation): (Arc<dyn CurveImpl>, FlatPoints, Option<f64>) = by_dim!(dim, D => {
             let p = as_points::<D>(&flat);
-            let curve = maybe_detach(py, n, || {
-                if interpolating {
-                    LlCurve::<D>::interpolating(p, order, closed)
-                } else {
-                    LlCurve::<D>::new(p, order, closed)
-                }
+            let (curve, largest) = maybe_detach(py, n, || match within {
+                Some(distance) => LlCurve::<D>::within(p, order, closed, distance)
+                    .map(|fit| (fit.shape, Some(fit.largest_deviation))),
+                None if interpolating => LlCurve::<D>::interpolating(p, order, closed).map(|c| (c, None)),
+                None => LlCurve::<D>::new(p, order, closed).map(|c| (c, None)),
             })
             .map_err(library_error)?;
             let control = FlatPoints::of(curve.control_points());
-            (Arc::new(Wrapped::<_, D>(curve)), control)
+            (Arc::new(Wrapped::<_, D>(curve)), control, largest)
         });
         let points = FlatPoints {
             coords: flat.into_owned(),
             dim,
         };
         let description = format!(
-            "<karkas.LLCurve {}order={order}, closed={}, {n} points in {dim}-D",
+            "<karkas.LLCurve {}order={order}, closed={}{}, {n} points in {dim}-D",
             variant(interpolating),
-            py_bool(closed)
+            py_bool(closed),
+            within_text(within)
         );
         Ok(
             PyClassInitializer::from(PyCurve::new(inner, description)).add_subclass(PyLlCurve {
                 order,
                 interpolating,
+                within,
+                largest_deviation,
                 control,
                 points,
                 closed,
@@ -131,16 +155,17 @@ impl PyLlCurve {
 #[pymethods]
 impl PyLlCurve {
     #[new]
-    #[pyo3(signature = (points, order = DEFAULT_ORDER as i64, closed = false, interpolate = false))]
-    #[pyo3(text_signature = "(points, order=3, closed=False, interpolate=False)")]
+    #[pyo3(signature = (points, order = DEFAULT_ORDER as i64, closed = false, interpolate = false, within = None))]
+    #[pyo3(text_signature = "(points, order=3, closed=False, interpolate=False, within=None)")]
     fn py_new(
         py: Python<'_>,
         points: &Bound<'_, PyAny>,
         order: i64,
         closed: bool,
         interpolate: bool,
+        within: Option<f64>,
     ) -> PyResult<PyClassInitializer<Self>> {
-        Self::build(py, points, order, closed, interpolate)
+        Self::build(py, points, order, closed, (interpolate, within))
     }
 
     /// The interpolating LL curve: through every point at its node ``t_i = i/(K+1)``.
@@ -186,7 +211,7 @@ impl PyLlCurve {
         order: i64,
         closed: bool,
     ) -> PyResult<Py<Self>> {
-        Py::new(py, Self::build(py, points, order, closed, true)?)
+        Py::new(py, Self::build(py, points, order, closed, (true, None))?)
     }
 }
 
@@ -212,6 +237,10 @@ impl PyLlCurve {
 ///     Closed in ``u`` (the rows taken cyclically), in ``v`` (the columns taken cyclically).
 /// interpolate : bool, optional
 ///     The interpolating variant (as ``LLSurface.interpolate``): through every grid point.
+/// within : float, optional
+///     Pass within this distance (model units, Euclidean) of every grid point at its node,
+///     keeping the order (as ``karkas surface ll --within``; see ``LLCurve``). Not with
+///     ``interpolate=True``.
 ///
 /// Raises
 /// ------
@@ -219,7 +248,8 @@ impl PyLlCurve {
 ///     Too few grid points, a non-finite coordinate, or an array that is not
 ///     ``(nu, nv, 2)`` or ``(nu, nv, 3)``.
 /// OptionError
-///     ``order`` is out of range.
+///     ``order`` is out of range, ``within`` is not positive and finite, or ``within`` is
+///     given with ``interpolate=True``.
 ///
 /// Examples
 /// --------
@@ -240,6 +270,13 @@ pub struct PyLlSurface {
     /// True for the interpolating variant.
     #[pyo3(get)]
     pub(crate) interpolating: bool,
+    /// The distance given as ``within`` (None without it).
+    #[pyo3(get)]
+    pub(crate) within: Option<f64>,
+    /// With ``within``: the largest distance from a grid point to the surface at its node.
+    /// None without ``within``.
+    #[pyo3(get)]
+    largest_deviation: Option<f64>,
     /// The grid given, row-major (for pickling and the default section cells).
     pub(crate) grid: FlatPoints,
     /// The grid's rows and columns.
@@ -255,37 +292,46 @@ impl PyLlSurface {
         order: i64,
         closed_u: bool,
         closed_v: bool,
-        interpolating: bool,
+        (interpolating, within): (bool, Option<f64>),
     ) -> PyResult<PyClassInitializer<Self>> {
+        check_within(interpolating, within)?;
         let (g, dim) = GridArray::extract_checked(grid, "grid")?;
         let order = count(order, "order")?;
-        let (rows, cols, inner): (usize, usize, Arc<dyn SurfaceImpl>) = by_dim!(dim, D => {
+        let (rows, cols, inner, largest_deviation): (
+            usize,
+            usize,
+            Arc<dyn SurfaceImpl>,
+            Option<f64>,
+        ) = by_dim!(dim, D => {
             let grid = g.grid::<D>()?;
-            let surface = maybe_detach(py, grid.rows() * grid.cols(), || {
-                if interpolating {
-                    LlSurface::<D>::interpolating(&grid, order, closed_u, closed_v)
-                } else {
-                    LlSurface::<D>::new(&grid, order, closed_u, closed_v)
-                }
+            let (surface, largest) = maybe_detach(py, grid.rows() * grid.cols(), || match within {
+                Some(distance) => LlSurface::<D>::within(&grid, order, closed_u, closed_v, distance)
+                    .map(|fit| (fit.shape, Some(fit.largest_deviation))),
+                None if interpolating => LlSurface::<D>::interpolating(&grid, order, closed_u, closed_v)
+                    .map(|s| (s, None)),
+                None => LlSurface::<D>::new(&grid, order, closed_u, closed_v).map(|s| (s, None)),
             })
             .map_err(library_error)?;
-            (grid.rows(), grid.cols(), Arc::new(WrappedSurface::<_, D>(surface)))
+            (grid.rows(), grid.cols(), Arc::new(WrappedSurface::<_, D>(surface)), largest)
         });
         let given = FlatPoints {
             coords: g.flat().into_owned(),
             dim,
         };
         let description = format!(
-            "<karkas.LLSurface {}order={order}, closed_u={}, closed_v={}, {rows}x{cols} grid in {dim}-D",
+            "<karkas.LLSurface {}order={order}, closed_u={}, closed_v={}{}, {rows}x{cols} grid in {dim}-D",
             variant(interpolating),
             py_bool(closed_u),
-            py_bool(closed_v)
+            py_bool(closed_v),
+            within_text(within)
         );
         Ok(
             PyClassInitializer::from(PySurface::new(inner, description)).add_subclass(
                 PyLlSurface {
                     order,
                     interpolating,
+                    within,
+                    largest_deviation,
                     grid: given,
                     shape: (rows, cols),
                     closed: (closed_u, closed_v),
@@ -298,8 +344,10 @@ impl PyLlSurface {
 #[pymethods]
 impl PyLlSurface {
     #[new]
-    #[pyo3(signature = (grid, order = DEFAULT_ORDER as i64, closed_u = false, closed_v = false, interpolate = false))]
-    #[pyo3(text_signature = "(grid, order=3, closed_u=False, closed_v=False, interpolate=False)")]
+    #[pyo3(signature = (grid, order = DEFAULT_ORDER as i64, closed_u = false, closed_v = false, interpolate = false, within = None))]
+    #[pyo3(
+        text_signature = "(grid, order=3, closed_u=False, closed_v=False, interpolate=False, within=None)"
+    )]
     fn py_new(
         py: Python<'_>,
         grid: &Bound<'_, PyAny>,
@@ -307,8 +355,9 @@ impl PyLlSurface {
         closed_u: bool,
         closed_v: bool,
         interpolate: bool,
+        within: Option<f64>,
     ) -> PyResult<PyClassInitializer<Self>> {
-        Self::build(py, grid, order, closed_u, closed_v, interpolate)
+        Self::build(py, grid, order, closed_u, closed_v, (interpolate, within))
     }
 
     /// The interpolating LL surface: through every grid point at its node.
@@ -353,8 +402,28 @@ impl PyLlSurface {
         closed_u: bool,
         closed_v: bool,
     ) -> PyResult<Py<Self>> {
-        Py::new(py, Self::build(py, grid, order, closed_u, closed_v, true)?)
+        Py::new(
+            py,
+            Self::build(py, grid, order, closed_u, closed_v, (true, None))?,
+        )
     }
+}
+
+/// Refuses ``within`` together with ``interpolate=True`` (the library refuses a distance that
+/// is not positive and finite).
+fn check_within(interpolating: bool, within: Option<f64>) -> PyResult<()> {
+    if interpolating && within.is_some() {
+        return Err(OptionError::new_err(
+            "within and interpolate=True exclude each other: within already lies between the \
+             approximation and the interpolation",
+        ));
+    }
+    Ok(())
+}
+
+/// `", within=D"` for the `repr` of a curve or surface built with `within`.
+fn within_text(within: Option<f64>) -> String {
+    within.map_or_else(String::new, |d| format!(", within={d}"))
 }
 
 /// The LL paper's surface variation: the least change of a matrix that gives it prescribed row

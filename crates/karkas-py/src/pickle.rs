@@ -105,13 +105,14 @@ fn array_list<'py>(py: Python<'py>, lists: &[FlatPoints]) -> PyResult<Bound<'py,
 
 #[pymethods]
 impl PyLlCurve {
-    /// Pickling: the points, order, closedness and variant.
+    /// Pickling: the points, order, closedness, variant and distance.
     fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
         let args = (
             self.points.to_array(py)?,
             self.order,
             self.closed,
             self.interpolating,
+            self.within,
         );
         reduce(py, "LLCurve", args.into_pyobject(py)?, None)
     }
@@ -119,7 +120,7 @@ impl PyLlCurve {
 
 #[pymethods]
 impl PyLlSurface {
-    /// Pickling: the grid, order, closedness and variant.
+    /// Pickling: the grid, order, closedness, variant and distance.
     fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
         let grid = grid_array(py, &self.grid, self.shape)?;
         let args = (
@@ -128,6 +129,7 @@ impl PyLlSurface {
             self.closed.0,
             self.closed.1,
             self.interpolating,
+            self.within,
         );
         reduce(py, "LLSurface", args.into_pyobject(py)?, None)
     }

@@ -125,6 +125,7 @@ def test_defaults_are_the_same(command, option, python, keyword):
         ([], {}),
         (["--order", 5, "--closed"], dict(order=5, closed=True)),
         (["--order", 2, "--interpolate"], dict(order=2, interpolate=True)),
+        (["--order", 4, "--within", 0.004], dict(order=4, within=0.004)),
     ],
 )
 def test_curve_ll(tmp_path, wavy_file, options, kwargs):
@@ -187,6 +188,7 @@ def check_grid_surface(out, surface, params=("u", "v")):
         ([], {}),
         (["--order", 4, "--closed-v"], dict(order=4, closed_v=True)),
         (["--order", 2, "--interpolate", "--closed-u"], dict(order=2, closed_u=True, interpolate=True)),
+        (["--order", 3, "--within", 0.01, "--closed-v"], dict(order=3, closed_v=True, within=0.01)),
     ],
 )
 def test_surface_ll(tmp_path, grid_file, options, kwargs):

@@ -57,6 +57,8 @@ MAKERS = {
     "LLCurve": lambda: karkas.LLCurve(wavy(), order=4, closed=True),
     "LLCurve.interpolate": lambda: karkas.LLCurve.interpolate(wavy(d=2), order=2),
     "LLSurface": lambda: karkas.LLSurface(wavy_grid(), order=2, closed_v=True, interpolate=True),
+    "LLCurve.within": lambda: karkas.LLCurve(wavy(), order=3, within=0.01),
+    "LLSurface.within": lambda: karkas.LLSurface(wavy_grid(), order=2, closed_v=True, within=0.01),
     "CubicSpline": lambda: karkas.CubicSpline(wavy(), parameterization="centripetal", bc="natural"),
     "CubicSpline.clamped": lambda: karkas.CubicSpline(
         wavy(d=2), t=np.arange(12.0) ** 1.1, bc=("clamped", [1.0, 0.0], [0.0, -1.0])
@@ -94,7 +96,7 @@ def evaluate(obj):
         t = np.linspace(a - 0.1, b + 0.1, 57)
         out["points"] = obj(t)
         out["d1"] = obj(t, 1)
-        for name in ("order", "interpolating", "control_points", "knots", "values", "slopes",
+        for name in ("order", "interpolating", "within", "largest_deviation", "control_points", "knots", "values", "slopes",
                      "derivatives", "max_distance", "rms_distance", "jump_sum", "tolerance_met",
                      "parameters", "distances"):
             if hasattr(obj, name):
@@ -104,7 +106,7 @@ def evaluate(obj):
         u, v = np.linspace(a, b, 9), np.linspace(c, d, 11)
         out["points"] = obj(u, v)
         out["du"] = obj(u, v, 1, 0)
-        for name in ("order", "interpolating", "knots_u", "knots_v", "kind"):
+        for name in ("order", "interpolating", "within", "largest_deviation", "knots_u", "knots_v", "kind"):
             if hasattr(obj, name):
                 out[name] = getattr(obj, name)
     elif isinstance(obj, karkas.DiscreteSpline):

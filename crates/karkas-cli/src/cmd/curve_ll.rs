@@ -3,6 +3,7 @@
 use crate::args::{check_ll_order, CombOption, CurveSamples};
 use crate::input::{curve_points, run_on_curve_points, CurveJob};
 use crate::output::cad::write_cad_curve;
+use crate::output::console::{note, record};
 use crate::output::curve::{curve_output_bytes, write_sampled_curve};
 use crate::output::formats::EXACT_CURVE_FORMATS;
 use crate::output::memory::check_memory;
@@ -10,9 +11,9 @@ use crate::output::overwrite::ensure_distinct;
 use crate::output::samples::sample_curve;
 use crate::output::samples::{default_curve_samples, report_samples, MAX_SAMPLES};
 use crate::output::target::output_format;
-use anyhow::{Context, Result};
+use anyhow::{bail, Context, Result};
 use clap::Args;
-use karkas::ll::LlCurve;
+use karkas::ll::{LlCurve, WithinFit};
 use karkas::{Curve, Point, Point2};
 use karkas_io::OutputFormat;
 use std::path::PathBuf;
@@ -29,6 +30,17 @@ pub struct CurveLlArgs {
     /// Pass through every input point instead of approximating the polygon.
     #[arg(long)]
     interpolate: bool,
+    /// Pass within distance D (model units) of every input point at its node, keeping the
+    /// order L: between the approximation and --interpolate (system (6) solved for targets
+    /// pulled to distance D). D at or above the approximation's largest deviation gives the
+    /// approximation itself.
+    #[arg(
+        long,
+        value_name = "D",
+        conflicts_with = "interpolate",
+        allow_hyphen_values = true
+    )]
+    within: Option<f64>,
     #[command(flatten)]
     samples: CurveSamples,
     /// Input points: CSV or whitespace columns x,y[,z], or an airfoil .dat (Selig or Lednicer).
@@ -50,6 +62,7 @@ pub struct CurveLlArgs {
 pub fn run(args: &CurveLlArgs) -> Result<()> {
     let format = output_format(&args.output, &EXACT_CURVE_FORMATS)?;
     check_ll_order(args.order)?;
+    check_within(args.within)?;
     args.samples.check()?;
     ensure_distinct(&args.input, &args.output)?;
     run_on_curve_points(&args.input, &(args, format))
@@ -59,13 +72,18 @@ impl CurveJob for (&CurveLlArgs, OutputFormat) {
     fn run<const D: usize>(&self, points: &[Point<D>]) -> Result<()> {
         let (args, format) = *self;
         curve_points(&args.input, points)?;
-        let curve = build_ll(
-            points,
-            args.order,
-            args.closed,
-            args.interpolate,
-            &args.input,
-        )?;
+        let curve = match args.within {
+            Some(distance) => {
+                build_ll_within(points, args.order, args.closed, distance, &args.input)?
+            }
+            None => build_ll(
+                points,
+                args.order,
+                args.closed,
+                args.interpolate,
+                &args.input,
+            )?,
+        };
         if format.is_cad() {
             return write_cad_curve(&curve, points, format, &args.output, args.input.display());
         }
@@ -77,10 +95,10 @@ impl CurveJob for (&CurveLlArgs, OutputFormat) {
             curve_output_bytes::<D>(format, n + points.len()),
         )?;
         let (ts, samples) = sample_curve(&curve, n);
-        let variant = if args.interpolate {
-            "interpolating "
-        } else {
-            ""
+        let variant = match (args.interpolate, args.within) {
+            (true, _) => "interpolating ".to_owned(),
+            (false, Some(d)) => format!("within {d} "),
+            (false, None) => String::new(),
         };
         let title = format!(
             "{variant}LL curve, L = {}, {} points",
@@ -124,6 +142,53 @@ pub(super) fn build_ll<const D: usize>(
         LlCurve::new
     };
     build(points, order, closed).with_context(|| input.display().to_string())
+}
+
+/// Refuses a `--within` distance that is not positive and finite.
+pub(super) fn check_within(within: Option<f64>) -> Result<()> {
+    match within {
+        Some(d) if !(d > 0.0 && d.is_finite()) => {
+            bail!("--within: the distance must be positive and finite (model units), got {d}")
+        }
+        _ => Ok(()),
+    }
+}
+
+/// Reports on standard error (and in a batch record) what `--within` achieved.
+pub(super) fn report_within<T>(fit: &WithinFit<T>, distance: f64, what: &str) {
+    let how = if fit.pulled_nodes == 0 {
+        "the approximation is already within it, nothing solved".to_owned()
+    } else {
+        format!(
+            "{} of {} nodes pulled in, system (6) solved once (direct, no iterations)",
+            fit.pulled_nodes, fit.nodes
+        )
+    };
+    note(format!(
+        "karkas: {what} within {distance}: largest node deviation {:.6e} (approximation \
+         {:.6e}); {how}",
+        fit.largest_deviation, fit.plain_deviation
+    ));
+    record("within", distance);
+    record("largest_deviation", fit.largest_deviation);
+    record("plain_deviation", fit.plain_deviation);
+    record("pulled_nodes", fit.pulled_nodes);
+    record("solves", usize::from(fit.pulled_nodes > 0));
+}
+
+/// The LL curve of `points` within `distance` of them (reported on standard error), errors
+/// naming `input`.
+fn build_ll_within<const D: usize>(
+    points: &[Point<D>],
+    order: usize,
+    closed: bool,
+    distance: f64,
+    input: &std::path::Path,
+) -> Result<LlCurve<D>> {
+    let fit = LlCurve::within(points, order, closed, distance)
+        .with_context(|| input.display().to_string())?;
+    report_within(&fit, distance, "curve ll");
+    Ok(fit.shape)
 }
 
 /// Whiskers from every input point (x-y projection) to the curve at its node: point `i`

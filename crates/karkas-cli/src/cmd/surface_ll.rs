@@ -1,12 +1,14 @@
 //! `karkas surface ll`: the LL surface of a grid of points (Aulchenko et al., docs/methods.md §1.3).
 
+use super::curve_ll::{check_within, report_within};
 use crate::args::{GridInput, GridSamples, LlSurfaceOptions, MeshOutput};
 use crate::input::grid_points;
 use crate::output::formats::EXACT_SURFACE_FORMATS;
 use crate::output::surface::write_grid_surface;
 use crate::output::target::output_format;
-use anyhow::Result;
+use anyhow::{Context, Result};
 use clap::Args;
+use karkas::ll::LlSurface;
 use std::path::PathBuf;
 
 /// Arguments of `karkas surface ll`.
@@ -14,6 +16,17 @@ use std::path::PathBuf;
 pub struct SurfaceLlArgs {
     #[command(flatten)]
     ll: LlSurfaceOptions,
+    /// Pass within distance D (model units) of every grid point at its node, keeping the
+    /// order L: between the approximation and --interpolate (the separable system (6) solved
+    /// for targets pulled to distance D). D at or above the approximation's largest deviation
+    /// gives the approximation itself.
+    #[arg(
+        long,
+        value_name = "D",
+        conflicts_with = "interpolate",
+        allow_hyphen_values = true
+    )]
+    within: Option<f64>,
     #[command(flatten)]
     samples: GridSamples,
     #[command(flatten)]
@@ -31,13 +44,33 @@ pub struct SurfaceLlArgs {
 pub fn run(args: &SurfaceLlArgs) -> Result<()> {
     let format = output_format(&args.output, &EXACT_SURFACE_FORMATS)?;
     args.ll.check()?;
+    check_within(args.within)?;
     args.samples.check()?;
     args.mesh.check(format)?;
     let grid = args.grid.read_for(&args.output)?;
     grid_points(&args.grid.input, grid.as_slice())?;
-    let surface = args.ll.build(&grid, &args.grid.input)?;
+    let surface = match args.within {
+        Some(distance) => {
+            let closed = &args.ll.closed;
+            let fit = LlSurface::within(
+                &grid,
+                args.ll.order,
+                closed.closed_u,
+                closed.closed_v,
+                distance,
+            )
+            .with_context(|| args.grid.input.display().to_string())?;
+            report_within(&fit, distance, "surface ll");
+            fit.shape
+        }
+        None => args.ll.build(&grid, &args.grid.input)?,
+    };
+    let variant = args
+        .within
+        .map(|d| format!("within {d} "))
+        .unwrap_or_default();
     let title = format!(
-        "LL surface, L = {}, {} x {} grid",
+        "{variant}LL surface, L = {}, {} x {} grid",
         args.ll.order,
         grid.rows(),
         grid.cols()

@@ -17,6 +17,7 @@ mod dxf;
 mod export;
 mod fit_tolerance;
 mod hausdorff;
+mod ll_within;
 mod meshes;
 mod output_bounds;
 mod pictures;

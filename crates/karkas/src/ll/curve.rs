@@ -69,7 +69,7 @@ impl<const D: usize> LlCurve<D> {
     }
 
     /// Validates and, when `closed`, closes the input polygon.
-    fn support_polygon(points: &[Point<D>], closed: bool) -> Result<Vec<Point<D>>> {
+    pub(super) fn support_polygon(points: &[Point<D>], closed: bool) -> Result<Vec<Point<D>>> {
         validate(points, "an LL curve")?;
         let mut control = points.to_vec();
         if closed {

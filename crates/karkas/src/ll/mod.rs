@@ -10,6 +10,8 @@
 //! - [`LlCurve`]: open and closed curves in any dimension (§1.2);
 //! - [`LlSurface`]: tensor-product surfaces, each direction open or closed (§1.3);
 //! - [`interpolation_controls`]: the `O(K)` solve of the interpolating variant;
+//! - [`LlCurve::within`], [`LlSurface::within`]: between the two, a curve or surface that
+//!   passes within a given distance of every point without raising `L` ([`WithinFit`]);
 //! - [`vary`]: the surface variation method (§1.5): a coordinate matrix varied through new
 //!   row sums, column sums and total, with chosen entries fixed.
 //!
@@ -26,6 +28,7 @@ mod level_lines;
 mod prefilter;
 mod surface;
 mod variation;
+mod within;
 
 pub use axis::NodeAxis;
 pub use curve::LlCurve;
@@ -33,6 +36,7 @@ pub use kernel::{LlKernel, MAX_ORDER};
 pub use prefilter::interpolation_controls;
 pub use surface::LlSurface;
 pub use variation::{complete_sums, vary, FixedEntries, SumTargets, SumsProblem, VariationOptions};
+pub use within::WithinFit;
 
 /// The order `L` used when none is given (the command line's `--order`, Python's `order=`):
 /// `C^3` curves and surfaces of degree 6 pieces, smooth enough for curvature plots and

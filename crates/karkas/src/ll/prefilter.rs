@@ -10,8 +10,9 @@
 //! The interpolating curve keeps the smoothness `C^L` but no longer the monotonicity and
 //! no-oscillation guarantees of the approximating scheme.
 
+use super::frame::extend;
 use crate::solve::{solve_cyclic_tridiagonal, solve_tridiagonal};
-use crate::{Point, Result};
+use crate::{Grid, Point, Result};
 
 /// Replaces the `K` node values `p` by the control values `r*` whose LL curve interpolates
 /// them. For `closed`, `values[K-1]` must equal `values[0]` (the repeated node); it is set
@@ -41,4 +42,52 @@ pub fn interpolation_controls<const D: usize>(
             values,
         )
     }
+}
+
+/// The node values of the LL curve over control values `values` (formula (5)):
+/// `d_L r_{i-1} + (1 - 2 d_L) r_i + d_L r_{i+1}`, the operator that
+/// [`interpolation_controls`] inverts. An open polygon's ends are its end points exactly (the
+/// end extrapolation makes `D_1 = D_K = 0`); a closed polygon (`values[K-1] == values[0]`)
+/// wraps, and its repeated node gets the same value as the first.
+pub(crate) fn node_values<const D: usize>(
+    values: &[Point<D>],
+    d_l: f64,
+    closed: bool,
+) -> Vec<Point<D>> {
+    let k = values.len();
+    let extended = extend(values, closed);
+    let mut out: Vec<Point<D>> = extended
+        .windows(3)
+        .map(|w| w[0] * d_l + w[1] * (1.0 - 2.0 * d_l) + w[2] * d_l)
+        .collect();
+    if !closed {
+        out[0] = values[0];
+        out[k - 1] = values[k - 1];
+    }
+    out
+}
+
+/// Applies a 1-D operation on node sequences to every row of `grid` (closed as `closed_v`),
+/// then to every column (closed as `closed_u`): the separable form of the surface's node
+/// operator and of its inverse.
+pub(crate) fn along_rows_then_columns<const D: usize>(
+    grid: &mut Grid<Point<D>>,
+    (closed_u, closed_v): (bool, bool),
+    mut apply: impl FnMut(&mut [Point<D>], bool) -> Result<()>,
+) -> Result<()> {
+    let (kx, ky) = (grid.rows(), grid.cols());
+    for i in 0..kx {
+        apply(&mut grid.as_mut_slice()[i * ky..(i + 1) * ky], closed_v)?;
+    }
+    let mut column = vec![Point::ZERO; kx];
+    for j in 0..ky {
+        for (i, c) in column.iter_mut().enumerate() {
+            *c = *grid.get(i, j);
+        }
+        apply(&mut column, closed_u)?;
+        for (i, c) in column.iter().enumerate() {
+            *grid.get_mut(i, j) = *c;
+        }
+    }
+    Ok(())
 }

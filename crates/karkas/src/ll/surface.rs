@@ -16,7 +16,7 @@ use super::axis::NodeAxis;
 use super::curve::LlCurve;
 use super::frame::extend;
 use super::kernel::{pow_n, LlKernel};
-use super::prefilter::interpolation_controls;
+use super::prefilter::{along_rows_then_columns, interpolation_controls};
 use crate::core::parallel::for_each_row_block;
 use crate::core::{Grid, Interval, ParameterLine, PiecewiseSurface, Side, Surface};
 use crate::{Point, Result};
@@ -80,28 +80,16 @@ impl<const D: usize> LlSurface<D> {
             "a closed direction of an LL surface (distinct rows or columns)",
         )?;
         if interpolate {
-            let (kx, ky) = (control.rows(), control.cols());
             let d_l = kernel.d_l();
-            for i in 0..kx {
-                let row = &mut control.as_mut_slice()[i * ky..(i + 1) * ky];
-                interpolation_controls(row, d_l, closed_v)?;
-            }
-            let mut column = vec![Point::ZERO; kx];
-            for j in 0..ky {
-                for (i, c) in column.iter_mut().enumerate() {
-                    *c = *control.get(i, j);
-                }
-                interpolation_controls(&mut column, d_l, closed_u)?;
-                for (i, c) in column.iter().enumerate() {
-                    *control.get_mut(i, j) = *c;
-                }
-            }
+            along_rows_then_columns(&mut control, (closed_u, closed_v), |line, closed| {
+                interpolation_controls(line, d_l, closed)
+            })?;
         }
         Ok(Self::from_control(kernel, control, closed_u, closed_v))
     }
 
     /// Builds the surface from a ready control grid (closed directions already repeat).
-    fn from_control(
+    pub(super) fn from_control(
         kernel: LlKernel,
         control: Grid<Point<D>>,
         closed_u: bool,

@@ -227,7 +227,7 @@ fn lines_are_ll_curves() {
 /// Across every u-border: partials of order (ku <= L, kv <= L) agree from both sides and equal
 /// the reference cells; the (L+1)-th u-partial jumps by the reference amount, which is large.
 /// Then the same across v-borders, and at cell corners from all four sides.
-fn check_surface_borders(s: &LlSurface<3>, r: &RefSurface<3>, what: &str) {
+pub fn check_surface_borders(s: &LlSurface<3>, r: &RefSurface<3>, what: &str) {
     let l = r.kernel.l;
     let (bu, bv) = (s.breakpoints_u(), s.breakpoints_v());
     let (au, av) = (s.axis_u(), s.axis_v());

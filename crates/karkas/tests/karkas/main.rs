@@ -35,6 +35,7 @@ mod ll_kernel;
 mod ll_properties;
 mod ll_surface;
 mod ll_surface_interp;
+mod ll_within;
 mod param_bicubic;
 mod param_spline;
 mod robust_properties;
