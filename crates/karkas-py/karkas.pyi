@@ -396,6 +396,9 @@ class BicubicSurface(Surface):
         """parameterization (karkas surface bicubic --param): 'uniform', 'chord', 'averaged'
         (also 'averaged-chord'), 'centripetal'."""
     def __reduce__(self) -> Tuple[object, ...]: ...
+    def condition_measure(self) -> _Floats:
+        """The condition measure (2.4) of the parameters at every node, (nu, nv), in [0, 1];
+        1 for arc lengths along orthogonal directions (karkas surface bicubic --report)."""
     @staticmethod
     def from_knots(
         grid: ArrayLike,

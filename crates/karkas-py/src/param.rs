@@ -278,6 +278,8 @@ pub struct PyBicubicSurface {
     knots_v: Numbers,
     /// What it was built from (for pickling).
     pub(crate) input: BicubicInput,
+    /// The condition measure at every node of the (closed) grid, row-major, and its shape.
+    condition: (Vec<f64>, (usize, usize)),
 }
 
 impl PyBicubicSurface {
@@ -312,10 +314,12 @@ impl PyBicubicSurface {
                 GridParameters::Rule(rule) => BicubicSurface::<D>::new(&grid, *rule, closed_u, closed_v),
             })
             .map_err(library_error)?;
+            let measures = surface.condition_measures();
             let sub = PyBicubicSurface {
                 knots_u: Numbers(surface.knots_u().to_vec()),
                 knots_v: Numbers(surface.knots_v().to_vec()),
                 input,
+                condition: (measures.as_slice().to_vec(), (measures.rows(), measures.cols())),
             };
             (sub, Arc::new(WrappedSurface::<_, D>(surface)), grid.rows(), grid.cols())
         });
@@ -341,6 +345,38 @@ impl PyBicubicSurface {
         closed_v: bool,
     ) -> PyResult<PyClassInitializer<Self>> {
         Self::build(py, grid, Ok(parameterization), closed_u, closed_v)
+    }
+
+    /// How well the parameters condition the continuation system at every node (Kuznetsov
+    /// and Filatov's measure (2.4), extended to tangents of any length; ``surface bicubic
+    /// --report`` on the command line).
+    ///
+    /// At a node with tangents ``W_u``, ``W_v`` it is ``min(1, s2) / max(1, s1)`` for the
+    /// singular values ``s1 >= s2`` of ``[W_u W_v]``: the inverse 2-norm condition number of
+    /// ``[alpha; beta; n]`` (``alpha``, ``beta`` the dual basis of the tangents, ``n`` the unit
+    /// normal). It is 1 exactly for arc lengths along orthogonal directions (Theorem 2.1) and
+    /// smaller otherwise: ``tan(theta / 2)`` for unit tangents at an angle ``theta``,
+    /// ``min(1, a, b) / max(1, a, b)`` for orthogonal tangents of lengths ``a``, ``b``.
+    ///
+    /// Returns
+    /// -------
+    /// numpy.ndarray
+    ///     float64, shape ``(nu, nv)`` of the grid (a closed direction includes its repeated
+    ///     seam line, like ``knots_u``, ``knots_v``), values in ``[0, 1]``.
+    ///
+    /// Examples
+    /// --------
+    /// >>> grid = np.array([[[i, j, 0.0] for j in range(3)] for i in range(3)], float)
+    /// >>> m = karkas.BicubicSurface(grid).condition_measure()
+    /// >>> m.shape, bool(np.allclose(m, 1.0))
+    /// ((3, 3), True)
+    /// >>> stretched = karkas.BicubicSurface(grid * [2.0, 1.0, 1.0], "uniform")
+    /// >>> bool(np.allclose(stretched.condition_measure(), 0.5))
+    /// True
+    fn condition_measure<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let (values, shape) = &self.condition;
+        let flat = vector_to_array(py, values)?;
+        flat.call_method1("reshape", ((shape.0, shape.1),))
     }
 
     /// The bicubic interpolant of a grid on given parameters.

@@ -8,7 +8,7 @@ use crate::output::surface::write_grid_surface;
 use crate::output::target::output_format;
 use anyhow::{Context, Result};
 use clap::{Args, ValueEnum};
-use karkas::param::{BicubicSurface, GridParameterization};
+use karkas::param::{BicubicSurface, ConditionSummary, GridParameterization};
 use std::path::PathBuf;
 
 /// The parameterizations of `--param`.
@@ -54,6 +54,11 @@ pub struct SurfaceBicubicArgs {
     grid: GridInput,
     #[command(flatten)]
     mesh: MeshOutput,
+    /// Print to standard error how well the parameters condition the continuation system
+    /// (Kuznetsov and Filatov's measure (2.4), 1 for arc lengths along orthogonal lines): the
+    /// smallest and mean measure over the nodes and the worst node.
+    #[arg(long)]
+    report: bool,
     /// Output file: .csv (u,v,x,y,z in the chosen parameters), a mesh (.obj .stl .ply .vtk .vts .glb), a picture
     /// (.svg .png) a 3-D viewer page (.html), or the
     /// exact B-spline surface as .step/.stp or .iges/.igs.
@@ -71,6 +76,9 @@ pub fn run(args: &SurfaceBicubicArgs) -> Result<()> {
     let (closed_u, closed_v) = (args.closed.closed_u, args.closed.closed_v);
     let surface = BicubicSurface::new(&grid, args.param.to_library(), closed_u, closed_v)
         .with_context(|| args.grid.input.display().to_string())?;
+    if args.report {
+        eprintln!("karkas: {}", condition_report(&surface.condition_summary()));
+    }
     let title = format!("bicubic surface, {} x {} grid", grid.rows(), grid.cols());
     let input = (args.grid.input.as_path(), &grid);
     write_grid_surface(
@@ -81,6 +89,17 @@ pub fn run(args: &SurfaceBicubicArgs) -> Result<()> {
         args.samples.samples,
         &title,
         &args.mesh.options(false),
+    )
+}
+
+/// The line of `--report`: `condition measure of the parameters: min M at node (i=I, j=J),
+/// mean A over N nodes (1 = arc lengths along orthogonal lines)`.
+fn condition_report(summary: &ConditionSummary) -> String {
+    let (i, j) = summary.worst;
+    format!(
+        "condition measure of the parameters: min {:.6} at node (i={i}, j={j}), mean {:.6} over \
+         {} nodes (1 = arc lengths along orthogonal lines)",
+        summary.min, summary.mean, summary.nodes
     )
 }
 

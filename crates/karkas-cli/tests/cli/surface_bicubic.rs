@@ -182,3 +182,57 @@ fn python_spellings_of_the_parameterization() {
         std::fs::read_to_string(&b).unwrap()
     );
 }
+
+/// The number after `key ` in the `--report` line of `err`.
+fn reported(err: &str, key: &str) -> f64 {
+    let line = err
+        .lines()
+        .find(|l| l.contains("condition measure"))
+        .unwrap_or_else(|| panic!("no report in {err}"));
+    let rest = line.split(&format!("{key} ")).nth(1).unwrap();
+    rest.split([' ', ',']).next().unwrap().parse().unwrap()
+}
+
+/// `--report`: the condition measure (2.4) of the parameters on stderr; the closed forms of a
+/// grid of unit steps along orthogonal lines (1) and along lines at 60 degrees (tan 30).
+#[test]
+fn report_gives_the_condition_measure_of_the_parameters() {
+    let dir = temp_dir();
+    let out = dir.path().join("s.csv");
+    let steps = [0.0, 0.5, 1.5, 2.0];
+    for (deg, expected) in [(90.0f64, 1.0), (60.0, 30f64.to_radians().tan())] {
+        let (c, s_) = (deg.to_radians().cos(), deg.to_radians().sin());
+        let text = grid_csv(4, 5, |i, j| {
+            let y = 0.7 * j as f64;
+            [steps[i] + c * y, s_ * y, 1.0]
+        });
+        let input = write(dir.path(), "g.csv", &text);
+        let o = karkas(&["surface", "bicubic", "--report", s(&input), "-o", s(&out)]);
+        assert!(o.status.success(), "{}", stderr(&o));
+        let err = stderr(&o);
+        assert!((reported(&err, "min") - expected).abs() < 2e-6, "{err}");
+        assert!((reported(&err, "mean") - expected).abs() < 2e-6, "{err}");
+        assert!(err.contains("over 20 nodes"), "{err}");
+    }
+    // Uniform parameters on rows 2 apart: the u tangents are stretched to 2, measure 1/2; the
+    // worst node is named.
+    let text = grid_csv(3, 3, |i, j| [2.0 * i as f64, j as f64, 0.0]);
+    let input = write(dir.path(), "u.csv", &text);
+    let o = karkas(&[
+        "surface",
+        "bicubic",
+        "--param",
+        "uniform",
+        "--report",
+        s(&input),
+        "-o",
+        s(&out),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let err = stderr(&o);
+    assert!((reported(&err, "min") - 0.5).abs() < 2e-6, "{err}");
+    assert!(err.contains("at node (i="), "{err}");
+    // Without --report nothing is said about it.
+    let o = karkas(&["surface", "bicubic", s(&input), "-o", s(&out)]);
+    assert!(!stderr(&o).contains("condition measure"));
+}
