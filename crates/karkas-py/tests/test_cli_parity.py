@@ -206,6 +206,19 @@ def test_surface_bicubic(tmp_path, grid_file, param, closed):
     check_grid_surface(out, S)
 
 
+def test_surface_bicubic_origin(tmp_path, grid_file):
+    out = tmp_path / "out.csv"
+    cli("surface", "bicubic", grid_file, "-o", out, "--samples", "11,15", "--origin", "3,5")
+    S = karkas.BicubicSurface(karkas.read_grid(grid_file), origin=(3, 5))
+    check_grid_surface(out, S)
+    u, v = karkas.grid_parameters(karkas.read_grid(grid_file), origin=(3, 5))
+    close(S.knots_u, u)
+    close(S.knots_v, v)
+    assert u[3] == 0.0 and v[5] == 0.0
+    # Not the default origin's surface.
+    assert not np.allclose(S.knots_u, karkas.BicubicSurface(karkas.read_grid(grid_file)).knots_u)
+
+
 def network_files(tmp_path, step=4):
     """z = x^2 + y^3/2 + x y: u-curves at y = const, v-curves at x = const (crossing at
     every step-th point), and the cross-derivatives per unit of the network parameters (the

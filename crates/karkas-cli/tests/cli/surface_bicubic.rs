@@ -236,3 +236,108 @@ fn report_gives_the_condition_measure_of_the_parameters() {
     let o = karkas(&["surface", "bicubic", s(&input), "-o", s(&out)]);
     assert!(!stderr(&o).contains("condition measure"));
 }
+
+/// `--origin I,J`: the paper's origin node (i*, j*) of the chord parameters. On the grid of
+/// [`grid_text`] with the origin (2, 1), `u` is the chord length along column 1 (points
+/// `(x_i, 1, 0.1 i)`) and `v` along row 2 (points `(4, j, 0.2 j)`), both zero at the node.
+#[test]
+fn origin_moves_the_zero_of_the_chord_parameters() {
+    let dir = temp_dir();
+    let input = write(dir.path(), "g.csv", &grid_text());
+    let out = dir.path().join("s.csv");
+    let o = karkas(&[
+        "surface",
+        "bicubic",
+        "--origin",
+        "2,1",
+        "--samples",
+        "2,2",
+        s(&input),
+        "-o",
+        s(&out),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let (_, rows) = read_csv(&out);
+    let xs: [f64; 4] = [0.0, 1.0, 4.0, 6.0];
+    let chord = |i: usize| ((xs[i + 1] - xs[i]).powi(2) + 0.01f64).sqrt();
+    let (u0, u3) = (-(chord(0) + chord(1)), chord(2));
+    let step_v = 1.04f64.sqrt();
+    let (v0, v4) = (-step_v, 3.0 * step_v);
+    let corners = [(u0, v0), (u0, v4), (u3, v0), (u3, v4)];
+    for (row, (u, v)) in rows.iter().zip(corners) {
+        assert!(
+            (row[0] - u).abs() < 1e-12 && (row[1] - v).abs() < 1e-12,
+            "{row:?}"
+        );
+    }
+    // The corners are still the corner nodes.
+    assert!(
+        rows[0][2..].iter().all(|c| c.abs() < 1e-12),
+        "{:?}",
+        rows[0]
+    );
+    assert!((rows[3][2] - 6.0).abs() < 1e-12 && (rows[3][3] - 4.0).abs() < 1e-12);
+    // The origin (0, 0) written out is the default.
+    let a = dir.path().join("a.csv");
+    let b = dir.path().join("b.csv");
+    assert!(karkas(&["surface", "bicubic", s(&input), "-o", s(&a)])
+        .status
+        .success());
+    let o = karkas(&[
+        "surface",
+        "bicubic",
+        "--origin",
+        "0,0",
+        s(&input),
+        "-o",
+        s(&b),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_eq!(std::fs::read(&a).unwrap(), std::fs::read(&b).unwrap());
+}
+
+#[test]
+fn origin_outside_the_grid_or_without_chord_exits_2() {
+    let dir = temp_dir();
+    let input = write(dir.path(), "g.csv", &grid_text());
+    let out = dir.path().join("s.csv");
+    for (origin, param) in [
+        ("4,0", "chord"),
+        ("0,5", "chord"),
+        ("1,1", "uniform"),
+        ("1", "chord"),
+    ] {
+        let o = karkas(&[
+            "surface",
+            "bicubic",
+            "--param",
+            param,
+            "--origin",
+            origin,
+            s(&input),
+            "-o",
+            s(&out),
+        ]);
+        assert_eq!(o.status.code(), Some(2), "{origin} {param}");
+        let err = stderr(&o);
+        assert!(
+            err.contains("--origin") && err.lines().count() == 1,
+            "{err}"
+        );
+        assert!(!out.exists());
+    }
+    let o = karkas(&[
+        "surface",
+        "bicubic",
+        "--origin",
+        "4,0",
+        s(&input),
+        "-o",
+        s(&out),
+    ]);
+    assert!(
+        stderr(&o).contains("outside the 4 x 5 grid"),
+        "{}",
+        stderr(&o)
+    );
+}
