@@ -302,6 +302,23 @@ def test_surface_implicit(tmp_path, turn):
     close(rows[:, 2:], same[i, j])
 
 
+@pytest.mark.parametrize("option, directions", [("--turn-u", "turned-u"), ("--turn-v", "turned-v")])
+def test_surface_implicit_one_family_turned(tmp_path, option, directions):
+    out = tmp_path / "out.csv"
+    expr = "x^2/4 + y^2 + z^2/2 - 1"
+    cli("surface", "implicit", "--expr", expr, "--start", "1.2,0.7,0.3", "--nodes", "5,6",
+        "--step", "0.1,0.15", option, 25, "-o", out)
+    header, rows = read_csv(out)
+    grid = karkas.ImplicitSurface(expr).trace_net(
+        [1.2, 0.7, 0.3], (5, 6), (0.1, 0.15), directions=directions, angle=math.radians(25))
+    i, j = rows[:, 0].astype(int), rows[:, 1].astype(int)
+    close(rows[:, 2:], grid[i, j])
+    # Not the net with both families turned.
+    both = karkas.ImplicitSurface(expr).trace_net(
+        [1.2, 0.7, 0.3], (5, 6), (0.1, 0.15), directions="turned", angle=math.radians(25))
+    assert np.abs(rows[:, 2:] - both[i, j]).max() > 1e-3
+
+
 def test_surface_implicit_closed_v_and_one_step(tmp_path):
     out = tmp_path / "out.csv"
     expr = "x^2 + y^2 - 1 + 0*z"
