@@ -6,7 +6,7 @@
 
 use super::common::{write_text, write_viewer, Finding, Output};
 use super::param_experiment::{
-    angle_sweep as sweep_frames, helix_experiment, run_net, seed_experiments, SeedExperiment,
+    angle_sweep as sweep_frames, frame_error, helix_experiment, seed_experiments, SeedExperiment,
     SeedSurface, SweepFrame, Turn,
 };
 use crate::output::samples::sample_surface;
@@ -115,15 +115,14 @@ fn frame_lines(surface: &BicubicSurface<3>) -> Vec<Vec<Point3>> {
 
 /// The angle sweep of figures 3.2 and 3.3: the error of the cylinder's and the hyperboloid's
 /// frames against the turning angle, one family and both families turned (frames computed in
-/// parallel), as detail rows of the report (example `004 sweep: <frame>`, naming the angle as
+/// parallel, those of the table taken from its run), as detail rows of the report (example `004 sweep: <frame>`, naming the angle as
 /// `N deg`, the paper's printed errors beside the frames it measured), a CSV file and a chart.
 pub fn angle_sweep(out: &Output) -> Result<Vec<Finding>> {
     let frames = sweep_frames();
     let errors = frames
         .par_iter()
         .map(|f| {
-            run_net(f.surface, &f.net)
-                .map(|o| o.error.distance)
+            frame_error(f.surface, &f.net)
                 .with_context(|| format!("Kuznetsov and Filatov, {}", f.label()))
         })
         .collect::<Result<Vec<f64>>>()?;

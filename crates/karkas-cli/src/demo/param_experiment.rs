@@ -34,6 +34,7 @@ use karkas::measure::{hausdorff_surface_implicit, Hausdorff};
 use karkas::param::{BicubicSurface, GridParameterization};
 use karkas::{Grid, Point3, Result};
 use std::f64::consts::TAU;
+use std::sync::Mutex;
 
 /// How much denser than the frame the exact patch is traced.
 const PATCH_REFINEMENT: usize = 4;
@@ -81,11 +82,34 @@ impl SeedExperiment {
     }
 }
 
-/// Traces the frame `net` on `surface` and its exact patch, interpolates and measures.
+/// Traces the frame `net` on `surface` and its exact patch, interpolates and measures; the
+/// error is remembered for [`frame_error`].
 pub fn run_net(surface: SeedSurface, net: &NetSpec) -> Result<ExperimentOutcome> {
-    match surface {
+    let outcome = match surface {
         SeedSurface::Cylinder => run_on(&Cylinder { radius: 1.0 }, net),
         SeedSurface::Hyperboloid => run_on(&Hyperboloid { neck_radius: 1.0 }, net),
+    }?;
+    if let Ok(mut known) = KNOWN_ERRORS.lock() {
+        known.push((surface, *net, outcome.error.distance));
+    }
+    Ok(outcome)
+}
+
+/// The Hausdorff errors of the frames run so far in this process: the angle sweep takes the
+/// frames it shares with the table from here instead of tracing them again.
+static KNOWN_ERRORS: Mutex<Vec<(SeedSurface, NetSpec, f64)>> = Mutex::new(Vec::new());
+
+/// The Hausdorff error of the frame `net` on `surface` ([`run_net`], or the error it found
+/// for the same frame before).
+pub fn frame_error(surface: SeedSurface, net: &NetSpec) -> Result<f64> {
+    let known = KNOWN_ERRORS.lock().ok().and_then(|k| {
+        k.iter()
+            .find(|(s, n, _)| *s == surface && n == net)
+            .map(|&(_, _, e)| e)
+    });
+    match known {
+        Some(e) => Ok(e),
+        None => run_net(surface, net).map(|o| o.error.distance),
     }
 }
 
