@@ -406,10 +406,15 @@ class BicubicSurface(Surface):
         parameterization: str = "chord",
         closed_u: bool = False,
         closed_v: bool = False,
+        origin: Optional[Tuple[int, int]] = None,
     ) -> Self:
         """parameterization (karkas surface bicubic --param): 'uniform', 'chord', 'averaged'
-        (also 'averaged-chord'), 'centripetal'."""
+        (also 'averaged-chord'), 'centripetal'; origin (--origin I,J): the origin node (i, j)
+        of 'chord'."""
     def __reduce__(self) -> Tuple[object, ...]: ...
+    def condition_measure(self) -> _Floats:
+        """The condition measure (2.4) of the parameters at every node, (nu, nv), in [0, 1];
+        1 for arc lengths along orthogonal directions (karkas surface bicubic --report)."""
     @staticmethod
     def from_knots(
         grid: ArrayLike,
@@ -550,7 +555,9 @@ def vary(
     """The least change of matrix with the given row and column sums (LL surface variation)."""
 
 def curve_parameters(points: ArrayLike, parameterization: str = "chord") -> _Floats: ...
-def grid_parameters(grid: ArrayLike, parameterization: str = "chord") -> Tuple[_Floats, _Floats]: ...
+def grid_parameters(
+    grid: ArrayLike, parameterization: str = "chord", origin: Optional[Tuple[int, int]] = None
+) -> Tuple[_Floats, _Floats]: ...
 def export_obj(path: _FilePath, grid: ArrayLike) -> None: ...
 def export_stl(path: _FilePath, grid: ArrayLike) -> None: ...
 def export_curve_csv(path: _FilePath, t: ArrayLike, points: ArrayLike) -> None: ...

@@ -17,6 +17,7 @@ EXAMPLES = [
     "dps-knotted-tube",
     "fit-hydrofoil",
     "param-cylinder-hyperboloid",
+    "param-angle-sweep",
 ]
 
 

@@ -220,10 +220,11 @@ impl PyImplicitSurface {
     ///     ``step``).
     /// directions : str, optional
     ///     ``'principal'`` (lines of curvature), ``'turned'`` (both fields turned by
-    ///     ``angle``), ``'turned-u'`` (the ``u`` lines turned) or ``'plane-sections'`` (``v``
-    ///     lines in planes normal to ``plane_normal``).
+    ///     ``angle``), ``'turned-u'`` (the ``u`` lines turned), ``'turned-v'`` (the ``v``
+    ///     lines turned) or ``'plane-sections'`` (``v`` lines in planes normal to
+    ///     ``plane_normal``).
     /// angle : float, optional
-    ///     The turn in radians for ``'turned'`` and ``'turned-u'``.
+    ///     The turn in radians for ``'turned'``, ``'turned-u'`` and ``'turned-v'``.
     /// plane_normal : sequence of float, optional
     ///     The normal of the planes for ``'plane-sections'``.
     /// closed_v : bool, optional
@@ -297,6 +298,7 @@ impl PyImplicitSurface {
             "principal" => NetDirections::Principal,
             "turned" => NetDirections::Turned { angle },
             "turned-u" => NetDirections::TurnedU { angle },
+            "turned-v" => NetDirections::TurnedV { angle },
             "plane-sections" => NetDirections::PlaneSections {
                 plane_normal: point3(
                     &small_vector(
@@ -308,7 +310,7 @@ impl PyImplicitSurface {
             },
             other => {
                 return Err(OptionError::new_err(format!(
-                    "unknown directions {other:?} (expected 'principal', 'turned', 'turned-u' or 'plane-sections')"
+                    "unknown directions {other:?} (expected 'principal', 'turned', 'turned-u', 'turned-v' or 'plane-sections')"
                 )))
             }
         };

@@ -11,7 +11,7 @@ use numpy::PyArrayDyn;
 use pyo3::prelude::*;
 
 use crate::convert::{
-    as_points, by_dim, extract_vector, maybe_detach, py_bool, small_vector, vector_to_array,
+    as_points, by_dim, count, extract_vector, maybe_detach, py_bool, small_vector, vector_to_array,
     FlatPoints, GridArray, Numbers, PointsArray,
 };
 use crate::curve::PyCurve;
@@ -209,6 +209,34 @@ pub fn parse_grid_parameterization(name: &str) -> PyResult<GridParameterization>
     name.parse().map_err(library_error)
 }
 
+/// The grid rule named `name` with the origin node `origin` of the chord rule (Kuznetsov and
+/// Filatov's `(i*, j*)`, the command line's `--origin I,J`) inside a `rows x cols` grid.
+pub fn grid_rule(
+    name: &str,
+    origin: Option<(i64, i64)>,
+    (rows, cols): (usize, usize),
+) -> PyResult<GridParameterization> {
+    let rule = parse_grid_parameterization(name)?;
+    let Some((i, j)) = origin else {
+        return Ok(rule);
+    };
+    let (i, j) = (count(i, "origin")?, count(j, "origin")?);
+    if !matches!(rule, GridParameterization::Chord { .. }) {
+        return Err(OptionError::new_err(format!(
+            "origin belongs to parameterization='chord', not {name:?}"
+        )));
+    }
+    if i >= rows || j >= cols {
+        return Err(OptionError::new_err(format!(
+            "origin ({i}, {j}) is outside the {rows} x {cols} grid"
+        )));
+    }
+    Ok(GridParameterization::Chord {
+        origin_row: i,
+        origin_col: j,
+    })
+}
+
 /// Where the parameters of a bicubic surface come from.
 #[derive(Clone)]
 pub enum GridParameters {
@@ -228,6 +256,8 @@ pub struct BicubicInput {
     pub how: Result<String, (Vec<f64>, Vec<f64>)>,
     /// Closed in u, in v.
     pub closed: (bool, bool),
+    /// The origin node of the chord rule, as given.
+    pub origin: Option<(i64, i64)>,
 }
 
 /// Bicubic interpolation of a grid of points (Kuznetsov, Filatov): a C^2 surface through every
@@ -252,13 +282,18 @@ pub struct BicubicInput {
 ///     and columns) or ``'centripetal'``; the command line's ``--param`` names.
 /// closed_u, closed_v : bool, optional
 ///     Closed (periodic) in ``u``, in ``v``.
+/// origin : tuple of int, optional
+///     ``(i, j)``: the origin node of ``'chord'`` (the paper's ``(i*, j*)``, the command
+///     line's ``--origin I,J``): ``u`` is the chord length along column ``j``, ``v`` along row
+///     ``i``, both zero at the node. Default ``(0, 0)``.
 ///
 /// Raises
 /// ------
 /// PointsError
 ///     Too few grid points, a non-finite coordinate, coinciding neighbours, or a wrong shape.
 /// OptionError
-///     An unknown ``parameterization``.
+///     An unknown ``parameterization``, an ``origin`` outside the grid or given with another
+///     parameterization than ``'chord'``.
 ///
 /// Examples
 /// --------
@@ -278,6 +313,8 @@ pub struct PyBicubicSurface {
     knots_v: Numbers,
     /// What it was built from (for pickling).
     pub(crate) input: BicubicInput,
+    /// The condition measure at every node of the (closed) grid, row-major, and its shape.
+    condition: (Vec<f64>, (usize, usize)),
 }
 
 impl PyBicubicSurface {
@@ -287,6 +324,7 @@ impl PyBicubicSurface {
         how: Result<&str, (Vec<f64>, Vec<f64>)>,
         closed_u: bool,
         closed_v: bool,
+        origin: Option<(i64, i64)>,
     ) -> PyResult<PyClassInitializer<Self>> {
         let (g, dim) = GridArray::extract_checked(grid, "grid")?;
         let input = BicubicInput {
@@ -297,11 +335,12 @@ impl PyBicubicSurface {
             shape: g.rows_cols(),
             how: how.clone().map(str::to_string),
             closed: (closed_u, closed_v),
+            origin,
         };
         let (label, parameters) = match how {
             Ok(name) => (
                 name.to_string(),
-                GridParameters::Rule(parse_grid_parameterization(name)?),
+                GridParameters::Rule(grid_rule(name, origin, g.rows_cols())?),
             ),
             Err((ku, kv)) => ("given knots".to_string(), GridParameters::Knots(ku, kv)),
         };
@@ -312,10 +351,12 @@ impl PyBicubicSurface {
                 GridParameters::Rule(rule) => BicubicSurface::<D>::new(&grid, *rule, closed_u, closed_v),
             })
             .map_err(library_error)?;
+            let measures = surface.condition_measures();
             let sub = PyBicubicSurface {
                 knots_u: Numbers(surface.knots_u().to_vec()),
                 knots_v: Numbers(surface.knots_v().to_vec()),
                 input,
+                condition: (measures.as_slice().to_vec(), (measures.rows(), measures.cols())),
             };
             (sub, Arc::new(WrappedSurface::<_, D>(surface)), grid.rows(), grid.cols())
         });
@@ -331,16 +372,51 @@ impl PyBicubicSurface {
 #[pymethods]
 impl PyBicubicSurface {
     #[new]
-    #[pyo3(signature = (grid, parameterization = GridParameterization::DEFAULT_NAME, closed_u = false, closed_v = false))]
-    #[pyo3(text_signature = "(grid, parameterization='chord', closed_u=False, closed_v=False)")]
+    #[pyo3(signature = (grid, parameterization = GridParameterization::DEFAULT_NAME, closed_u = false, closed_v = false, origin = None))]
+    #[pyo3(
+        text_signature = "(grid, parameterization='chord', closed_u=False, closed_v=False, origin=None)"
+    )]
     fn py_new(
         py: Python<'_>,
         grid: &Bound<'_, PyAny>,
         parameterization: &str,
         closed_u: bool,
         closed_v: bool,
+        origin: Option<(i64, i64)>,
     ) -> PyResult<PyClassInitializer<Self>> {
-        Self::build(py, grid, Ok(parameterization), closed_u, closed_v)
+        Self::build(py, grid, Ok(parameterization), closed_u, closed_v, origin)
+    }
+
+    /// How well the parameters condition the continuation system at every node (Kuznetsov
+    /// and Filatov's measure (2.4), extended to tangents of any length; ``surface bicubic
+    /// --report`` on the command line).
+    ///
+    /// At a node with tangents ``W_u``, ``W_v`` it is ``min(1, s2) / max(1, s1)`` for the
+    /// singular values ``s1 >= s2`` of ``[W_u W_v]``: the inverse 2-norm condition number of
+    /// ``[alpha; beta; n]`` (``alpha``, ``beta`` the dual basis of the tangents, ``n`` the unit
+    /// normal). It is 1 exactly for arc lengths along orthogonal directions (Theorem 2.1) and
+    /// smaller otherwise: ``tan(theta / 2)`` for unit tangents at an angle ``theta``,
+    /// ``min(1, a, b) / max(1, a, b)`` for orthogonal tangents of lengths ``a``, ``b``.
+    ///
+    /// Returns
+    /// -------
+    /// numpy.ndarray
+    ///     float64, shape ``(nu, nv)`` of the grid (a closed direction includes its repeated
+    ///     seam line, like ``knots_u``, ``knots_v``), values in ``[0, 1]``.
+    ///
+    /// Examples
+    /// --------
+    /// >>> grid = np.array([[[i, j, 0.0] for j in range(3)] for i in range(3)], float)
+    /// >>> m = karkas.BicubicSurface(grid).condition_measure()
+    /// >>> m.shape, bool(np.allclose(m, 1.0))
+    /// ((3, 3), True)
+    /// >>> stretched = karkas.BicubicSurface(grid * [2.0, 1.0, 1.0], "uniform")
+    /// >>> bool(np.allclose(stretched.condition_measure(), 0.5))
+    /// True
+    fn condition_measure<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let (values, shape) = &self.condition;
+        let flat = vector_to_array(py, values)?;
+        flat.call_method1("reshape", ((shape.0, shape.1),))
     }
 
     /// The bicubic interpolant of a grid on given parameters.
@@ -389,7 +465,7 @@ impl PyBicubicSurface {
         let kv = extract_vector(knots_v, "knots_v")?;
         Py::new(
             py,
-            Self::build(py, grid, Err((ku, kv)), closed_u, closed_v)?,
+            Self::build(py, grid, Err((ku, kv)), closed_u, closed_v, None)?,
         )
     }
 }
@@ -446,6 +522,9 @@ pub fn curve_parameters<'py>(
 /// parameterization : str, optional
 ///     ``'uniform'``, ``'chord'`` (chord lengths along the first column for ``u`` and the
 ///     first row for ``v``), ``'averaged-chord'`` or ``'centripetal'``.
+/// origin : tuple of int, optional
+///     ``(i, j)``: the origin node of ``'chord'``: ``u`` along column ``j``, ``v`` along row
+///     ``i``, both zero at the node (default ``(0, 0)``).
 ///
 /// Returns
 /// -------
@@ -467,14 +546,15 @@ pub fn curve_parameters<'py>(
 /// >>> karkas.grid_parameters(grid, "chord")
 /// (array([0., 2.]), array([0., 3., 6.]))
 #[pyfunction]
-#[pyo3(signature = (grid, parameterization = "chord"))]
+#[pyo3(signature = (grid, parameterization = "chord", origin = None))]
 pub fn grid_parameters<'py>(
     py: Python<'py>,
     grid: &Bound<'py, PyAny>,
     parameterization: &str,
+    origin: Option<(i64, i64)>,
 ) -> PyResult<(Array<'py>, Array<'py>)> {
-    let rule = parse_grid_parameterization(parameterization)?;
     let (g, dim) = GridArray::extract_checked(grid, "grid")?;
+    let rule = grid_rule(parameterization, origin, g.rows_cols())?;
     let (u, v) = by_dim!(dim, D => param_grid(&g.grid::<D>()?, rule)).map_err(library_error)?;
     Ok((vector_to_array(py, &u)?, vector_to_array(py, &v)?))
 }

@@ -222,7 +222,7 @@ impl PyBicubicSurface {
         let (cu, cv) = input.closed;
         match &input.how {
             Ok(name) => {
-                let args = (grid, name.as_str(), cu, cv);
+                let args = (grid, name.as_str(), cu, cv, input.origin);
                 reduce(py, "BicubicSurface", args.into_pyobject(py)?, None)
             }
             Err((ku, kv)) => {

@@ -208,6 +208,19 @@ def test_surface_bicubic(tmp_path, grid_file, param, closed):
     check_grid_surface(out, S)
 
 
+def test_surface_bicubic_origin(tmp_path, grid_file):
+    out = tmp_path / "out.csv"
+    cli("surface", "bicubic", grid_file, "-o", out, "--samples", "11,15", "--origin", "3,5")
+    S = karkas.BicubicSurface(karkas.read_grid(grid_file), origin=(3, 5))
+    check_grid_surface(out, S)
+    u, v = karkas.grid_parameters(karkas.read_grid(grid_file), origin=(3, 5))
+    close(S.knots_u, u)
+    close(S.knots_v, v)
+    assert u[3] == 0.0 and v[5] == 0.0
+    # Not the default origin's surface.
+    assert not np.allclose(S.knots_u, karkas.BicubicSurface(karkas.read_grid(grid_file)).knots_u)
+
+
 def network_files(tmp_path, step=4):
     """z = x^2 + y^3/2 + x y: u-curves at y = const, v-curves at x = const (crossing at
     every step-th point), and the cross-derivatives per unit of the network parameters (the
@@ -289,6 +302,23 @@ def test_surface_implicit(tmp_path, turn):
     # The command line's names.
     same = surface.trace_net([1.2, 0.7, 0.3], (5, 6), step=(0.1, 0.15), turn=turn)
     close(rows[:, 2:], same[i, j])
+
+
+@pytest.mark.parametrize("option, directions", [("--turn-u", "turned-u"), ("--turn-v", "turned-v")])
+def test_surface_implicit_one_family_turned(tmp_path, option, directions):
+    out = tmp_path / "out.csv"
+    expr = "x^2/4 + y^2 + z^2/2 - 1"
+    cli("surface", "implicit", "--expr", expr, "--start", "1.2,0.7,0.3", "--nodes", "5,6",
+        "--step", "0.1,0.15", option, 25, "-o", out)
+    header, rows = read_csv(out)
+    grid = karkas.ImplicitSurface(expr).trace_net(
+        [1.2, 0.7, 0.3], (5, 6), (0.1, 0.15), directions=directions, angle=math.radians(25))
+    i, j = rows[:, 0].astype(int), rows[:, 1].astype(int)
+    close(rows[:, 2:], grid[i, j])
+    # Not the net with both families turned.
+    both = karkas.ImplicitSurface(expr).trace_net(
+        [1.2, 0.7, 0.3], (5, 6), (0.1, 0.15), directions="turned", angle=math.radians(25))
+    assert np.abs(rows[:, 2:] - both[i, j]).max() > 1e-3
 
 
 def test_surface_implicit_closed_v_and_one_step(tmp_path):

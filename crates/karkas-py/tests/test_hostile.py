@@ -231,7 +231,8 @@ VALID = {
     ),
     "LLSurface": lambda o: (karkas.LLSurface, (o.grid,), {"order": 3, "closed_u": False, "closed_v": False}),
     "LLSurface.interpolate": lambda o: (karkas.LLSurface.interpolate, (o.grid,), {"order": 3}),
-    "BicubicSurface": lambda o: (karkas.BicubicSurface, (o.grid,), {"parameterization": "chord"}),
+    "BicubicSurface": lambda o: (karkas.BicubicSurface, (o.grid,), {"parameterization": "chord", "origin": (1, 2)}),
+    "BicubicSurface.condition_measure": lambda o: (o.bicubic.condition_measure, (), {}),
     "BicubicSurface.from_knots": lambda o: (
         karkas.BicubicSurface.from_knots,
         (o.grid, np.linspace(0, 1, 6), np.linspace(0, 1, 7)),
@@ -248,7 +249,7 @@ VALID = {
             "tolerance": 1e-4,
         },
     ),
-    "grid_parameters": lambda o: (karkas.grid_parameters, (o.grid,), {"parameterization": "chord"}),
+    "grid_parameters": lambda o: (karkas.grid_parameters, (o.grid,), {"parameterization": "chord", "origin": (1, 2)}),
     "vary": lambda o: (
         karkas.vary,
         (np.ones((3, 4)), [4.0, 4.0, 4.0], [3.0, 3.0, 3.0, 3.0]),

@@ -114,3 +114,23 @@ def test_surface_reprs():
     assert r.startswith("<karkas.LLSurface") and "7x9 grid in 3-D" in r and "order=3" in r
     r = repr(karkas.BicubicSurface(height_grid()))
     assert r.startswith("<karkas.BicubicSurface") and "chord" in r
+
+
+def test_bicubic_origin_keyword():
+    """origin=(i, j): the paper's origin node of the chord parameters; u along column j, v
+    along row i (closed forms on a grid with rows at x = 0, 1, 4 and a tilt in z)."""
+    grid = np.array([[[x, j, 0.5 * i * j] for j in range(4)] for i, x in enumerate([0.0, 1.0, 4.0])])
+    u, v = karkas.grid_parameters(grid, "chord", origin=(1, 2))
+    np.testing.assert_allclose(u, [-np.hypot(1.0, 1.0), 0.0, np.hypot(3.0, 1.0)], atol=1e-15)
+    np.testing.assert_allclose(v, np.hypot(1.0, 0.5) * (np.arange(4) - 2.0), atol=1e-15)
+    S = karkas.BicubicSurface(grid, origin=(1, 2))
+    np.testing.assert_allclose(S.knots_u, u)
+    np.testing.assert_allclose(S(u[2], v[3]), grid[2, 3], atol=1e-12)
+    import pickle
+
+    T = pickle.loads(pickle.dumps(S))
+    np.testing.assert_array_equal(T.knots_u, S.knots_u)
+    for bad in [dict(origin=(3, 0)), dict(origin=(0, 4)), dict(origin=(-1, 0)),
+                dict(origin=(1, 1), parameterization="uniform")]:
+        with pytest.raises(karkas.OptionError, match="origin"):
+            karkas.BicubicSurface(grid, **bad)

@@ -1,14 +1,14 @@
 //! `karkas surface bicubic`: the bicubic interpolant of a grid of points with chosen
 //! parameters (Kuznetsov and Filatov, docs/methods.md §5).
 
-use crate::args::{ClosedUv, GridInput, GridSamples, MeshOutput};
+use crate::args::{parse_whole, ClosedUv, GridInput, GridSamples, MeshOutput};
 use crate::input::grid_points;
 use crate::output::formats::EXACT_SURFACE_FORMATS;
 use crate::output::surface::write_grid_surface;
 use crate::output::target::output_format;
-use anyhow::{Context, Result};
+use anyhow::{bail, Context, Result};
 use clap::{Args, ValueEnum};
-use karkas::param::{BicubicSurface, GridParameterization};
+use karkas::param::{BicubicSurface, ConditionSummary, GridParameterization};
 use std::path::PathBuf;
 
 /// The parameterizations of `--param`.
@@ -46,6 +46,10 @@ pub struct SurfaceBicubicArgs {
     #[arg(long, value_enum, default_value_t = ParamKind::Chord,
           visible_alias = "parameterization")]
     param: ParamKind,
+    /// The origin node I,J of --param chord (Kuznetsov and Filatov's (i*, j*)): u is the chord
+    /// length along column J, v along row I, both zero at the node [default: 0,0].
+    #[arg(long, value_name = "I,J", value_parser = parse_origin)]
+    origin: Option<(usize, usize)>,
     #[command(flatten)]
     closed: ClosedUv,
     #[command(flatten)]
@@ -54,6 +58,11 @@ pub struct SurfaceBicubicArgs {
     grid: GridInput,
     #[command(flatten)]
     mesh: MeshOutput,
+    /// Print to standard error how well the parameters condition the continuation system
+    /// (Kuznetsov and Filatov's measure (2.4), 1 for arc lengths along orthogonal lines): the
+    /// smallest and mean measure over the nodes and the worst node.
+    #[arg(long)]
+    report: bool,
     /// Output file: .csv (u,v,x,y,z in the chosen parameters), a mesh (.obj .stl .ply .vtk .vts .glb), a picture
     /// (.svg .png) a 3-D viewer page (.html), or the
     /// exact B-spline surface as .step/.stp or .iges/.igs.
@@ -69,8 +78,12 @@ pub fn run(args: &SurfaceBicubicArgs) -> Result<()> {
     let grid = args.grid.read_for(&args.output)?;
     grid_points(&args.grid.input, grid.as_slice())?;
     let (closed_u, closed_v) = (args.closed.closed_u, args.closed.closed_v);
-    let surface = BicubicSurface::new(&grid, args.param.to_library(), closed_u, closed_v)
+    let rule = parameterization(args.param, args.origin, (grid.rows(), grid.cols()))?;
+    let surface = BicubicSurface::new(&grid, rule, closed_u, closed_v)
         .with_context(|| args.grid.input.display().to_string())?;
+    if args.report {
+        eprintln!("karkas: {}", condition_report(&surface.condition_summary()));
+    }
     let title = format!("bicubic surface, {} x {} grid", grid.rows(), grid.cols());
     let input = (args.grid.input.as_path(), &grid);
     write_grid_surface(
@@ -81,6 +94,53 @@ pub fn run(args: &SurfaceBicubicArgs) -> Result<()> {
         args.samples.samples,
         &title,
         &args.mesh.options(false),
+    )
+}
+
+/// The rule of `--param` with the origin node of `--origin` (`--param chord` only, inside the
+/// `rows x cols` grid).
+fn parameterization(
+    kind: ParamKind,
+    origin: Option<(usize, usize)>,
+    (rows, cols): (usize, usize),
+) -> Result<GridParameterization> {
+    let Some((i, j)) = origin else {
+        return Ok(kind.to_library());
+    };
+    if kind != ParamKind::Chord {
+        bail!(
+            "--origin: the origin node belongs to --param chord, not --param {}",
+            kind.to_library().name()
+        );
+    }
+    if i >= rows || j >= cols {
+        bail!(
+            "--origin: node ({i}, {j}) is outside the {rows} x {cols} grid (I below {rows}, J \
+             below {cols})"
+        );
+    }
+    Ok(GridParameterization::Chord {
+        origin_row: i,
+        origin_col: j,
+    })
+}
+
+/// Parses `I,J` (two whole numbers).
+fn parse_origin(text: &str) -> Result<(usize, usize), String> {
+    let (i, j) = text.split_once(',').ok_or_else(|| {
+        format!("expected I,J (row and column of a node, separated by a comma), got '{text}'")
+    })?;
+    Ok((parse_whole(i.trim())?, parse_whole(j.trim())?))
+}
+
+/// The line of `--report`: `condition measure of the parameters: min M at node (i=I, j=J),
+/// mean A over N nodes (1 = arc lengths along orthogonal lines)`.
+fn condition_report(summary: &ConditionSummary) -> String {
+    let (i, j) = summary.worst;
+    format!(
+        "condition measure of the parameters: min {:.6} at node (i={i}, j={j}), mean {:.6} over \
+         {} nodes (1 = arc lengths along orthogonal lines)",
+        summary.min, summary.mean, summary.nodes
     )
 }
 

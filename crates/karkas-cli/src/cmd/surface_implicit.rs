@@ -40,6 +40,25 @@ pub struct SurfaceImplicitArgs {
         allow_negative_numbers = true
     )]
     turn: f64,
+    /// Turn only the u family (the spine and every column) by DEG degrees about the normal;
+    /// the v lines stay lines of curvature (a net that is not orthogonal, the paper's frames
+    /// with one axis turned).
+    #[arg(
+        long,
+        value_name = "DEG",
+        allow_negative_numbers = true,
+        conflicts_with_all = ["turn", "turn_v"]
+    )]
+    turn_u: Option<f64>,
+    /// Turn only the v family (every row) by DEG degrees about the normal; the u lines stay
+    /// lines of curvature.
+    #[arg(
+        long,
+        value_name = "DEG",
+        allow_negative_numbers = true,
+        conflicts_with = "turn"
+    )]
+    turn_v: Option<f64>,
     /// The v lines are closed: spread their NV nodes evenly over one turn (the last node
     /// repeats the first); the v step is then only the tracing step while measuring a turn.
     #[arg(long)]
@@ -56,17 +75,8 @@ pub fn run(args: &SurfaceImplicitArgs) -> Result<()> {
     if nu.saturating_mul(nv) > MAX_NODES {
         bail!("--nodes: at most {MAX_NODES} nodes can be traced");
     }
-    if !args.turn.is_finite() {
-        bail!("--turn: the angle must be finite");
-    }
+    let directions = directions(args)?;
     let surface = ExpressionSurface::parse(&args.expr).context("--expr")?;
-    let directions = if args.turn == 0.0 {
-        NetDirections::Principal
-    } else {
-        NetDirections::Turned {
-            angle: args.turn.to_radians(),
-        }
-    };
     let mut spec = NetSpec::new(args.start, directions, args.nodes, args.step);
     spec.closed_v = args.closed_v;
     let grid = trace_net(&surface, &spec).map_err(|e| match e {
@@ -81,6 +91,26 @@ pub fn run(args: &SurfaceImplicitArgs) -> Result<()> {
         shown(&args.output).display()
     );
     Ok(())
+}
+
+/// The direction fields of `--turn`, `--turn-u` or `--turn-v` (at most one given; a zero
+/// angle is the lines of curvature).
+fn directions(args: &SurfaceImplicitArgs) -> Result<NetDirections> {
+    let (option, degrees) = match (args.turn_u, args.turn_v) {
+        (Some(a), _) => ("--turn-u", a),
+        (_, Some(a)) => ("--turn-v", a),
+        _ => ("--turn", args.turn),
+    };
+    if !degrees.is_finite() {
+        bail!("{option}: the angle must be finite");
+    }
+    let angle = degrees.to_radians();
+    Ok(match option {
+        _ if degrees == 0.0 => NetDirections::Principal,
+        "--turn-u" => NetDirections::TurnedU { angle },
+        "--turn-v" => NetDirections::TurnedV { angle },
+        _ => NetDirections::Turned { angle },
+    })
 }
 
 /// Parses `X,Y,Z`.

@@ -1,10 +1,14 @@
 //! Kuznetsov and Filatov (parameterization and bicubic interpolation): the table of Hausdorff errors of
 //! frames laid along the lines of curvature or turned away from them (docs/methods.md §5), with
 //! the paper's figures beside ours. Writes every frame's nodes (grid CSV) and interpolant
-//! (OBJ mesh).
+//! (OBJ mesh). A second example sweeps the turning angle (figures 3.2, 3.3): the error of
+//! every frame against its angle, as a table, a CSV file and a chart.
 
-use super::common::{write_viewer, Finding, Output};
-use super::param_experiment::{helix_experiment, seed_experiments, SeedExperiment};
+use super::common::{write_text, write_viewer, Finding, Output};
+use super::param_experiment::{
+    angle_sweep as sweep_frames, frame_error, helix_experiment, seed_experiments, SeedExperiment,
+    SeedSurface, SweepFrame, Turn,
+};
 use crate::output::samples::sample_surface;
 use anyhow::{Context, Result};
 use karkas::param::BicubicSurface;
@@ -12,6 +16,7 @@ use karkas::{Point3, Surface};
 use karkas_io::obj::write_surface_obj;
 use karkas_io::scene::{write_scene_svg, Scene, SceneCurves, SceneMesh, View};
 use karkas_io::write::write_grid_csv;
+use rayon::prelude::*;
 
 /// Runs the seven rows of the paper's table and the extra helix frame into `out`.
 pub fn run(out: &Output) -> Result<Vec<Finding>> {
@@ -106,4 +111,244 @@ fn frame_lines(surface: &BicubicSurface<3>) -> Vec<Vec<Point3>> {
             .collect()
     });
     along_v.chain(along_u).collect()
+}
+
+/// The angle sweep of figures 3.2 and 3.3: the error of the cylinder's and the hyperboloid's
+/// frames against the turning angle, one family and both families turned (frames computed in
+/// parallel, those of the table taken from its run), as detail rows of the report (example `004 sweep: <frame>`, naming the angle as
+/// `N deg`, the paper's printed errors beside the frames it measured), a CSV file and a chart.
+pub fn angle_sweep(out: &Output) -> Result<Vec<Finding>> {
+    let frames = sweep_frames();
+    let errors = frames
+        .par_iter()
+        .map(|f| {
+            frame_error(f.surface, &f.net)
+                .with_context(|| format!("Kuznetsov and Filatov, {}", f.label()))
+        })
+        .collect::<Result<Vec<f64>>>()?;
+    let mut csv = String::from("surface,turned,degrees,karkas,paper\n");
+    let mut findings = Vec::with_capacity(frames.len());
+    for (frame, &error) in frames.iter().zip(&errors) {
+        let paper = frame.paper_error.map_or(String::new(), |p| p.to_string());
+        csv.push_str(&format!(
+            "{},{},{},{error},{paper}\n",
+            surface_name(frame.surface),
+            turn_name(frame.turn),
+            frame.degrees
+        ));
+        let finding = Finding::new(
+            format!("004 sweep: {}", frame.label()),
+            "two-sided Hausdorff error, 5 x 9 frame",
+            error,
+        );
+        findings.push(
+            match frame.paper_error {
+                Some(p) => finding.paper(p),
+                None => finding,
+            }
+            .detail(),
+        );
+    }
+    write_text(&out.file("004-angle-sweep.csv"), &csv)?;
+    write_text(
+        &out.file("004-angle-sweep.svg"),
+        &sweep_chart(&frames, &errors),
+    )?;
+    Ok(findings)
+}
+
+fn surface_name(surface: SeedSurface) -> &'static str {
+    match surface {
+        SeedSurface::Cylinder => "cylinder",
+        SeedSurface::Hyperboloid => "hyperboloid",
+    }
+}
+
+fn turn_name(turn: Turn) -> &'static str {
+    match turn {
+        Turn::None => "none",
+        Turn::Both => "both",
+        Turn::One => "one",
+    }
+}
+
+/// The chart of the sweep: error against angle on a logarithmic axis (the errors span two
+/// orders of magnitude), one polyline per surface and series (each starting at its surface's
+/// 0 degree frame), the paper's printed errors as hollow squares.
+fn sweep_chart(frames: &[SweepFrame], errors: &[f64]) -> String {
+    use std::fmt::Write as _;
+    let (width, height, left, right, top, bottom) = (760.0, 440.0, 70.0, 230.0, 40.0, 50.0);
+    let (low, high) = errors
+        .iter()
+        .chain(frames.iter().filter_map(|f| f.paper_error.as_ref()))
+        .filter(|e| **e > 0.0 && e.is_finite())
+        .fold((f64::INFINITY, 0.0f64), |(lo, hi), &e| {
+            (lo.min(e), hi.max(e))
+        });
+    // Whole decades around the figures.
+    let (decade_low, decade_high) = if low <= high {
+        let a = low.log10().floor();
+        (a, high.log10().ceil().max(a + 1.0))
+    } else {
+        (-3.0, 0.0)
+    };
+    let x = |deg: f64| left + (width - left - right) * deg / 90.0;
+    let y = |e: f64| {
+        let t = (e.max(1e-300).log10() - decade_low) / (decade_high - decade_low);
+        height - bottom - (height - top - bottom) * t
+    };
+    let mut svg = format!(
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{width}\" height=\"{height}\" \
+         font-family=\"sans-serif\" font-size=\"12\">\n<rect width=\"100%\" height=\"100%\" \
+         fill=\"white\"/>\n<text x=\"{left}\" y=\"22\" font-size=\"14\">Kuznetsov and \
+         Filatov, figures 3.2 and 3.3: Hausdorff error of the 5 x 9 frame against the turning \
+         angle</text>\n"
+    );
+    // Axes, ticks every 15 degrees and at 1, 2 and 5 of every decade of the error.
+    let (x0, x1) = (x(0.0), x(90.0));
+    let (y0, y1) = (y(10f64.powf(decade_low)), y(10f64.powf(decade_high)));
+    let _ = writeln!(
+        svg,
+        "<path d=\"M{x0},{y1} L{x0},{y0} L{x1},{y0}\" stroke=\"black\" fill=\"none\"/>"
+    );
+    for deg in (0..=90).step_by(15) {
+        let px = x(f64::from(deg));
+        let _ = writeln!(
+            svg,
+            "<line x1=\"{px}\" y1=\"{y0}\" x2=\"{px}\" y2=\"{}\" stroke=\"black\"/>\
+             <text x=\"{px}\" y=\"{}\" text-anchor=\"middle\">{deg}</text>",
+            y0 + 5.0,
+            y0 + 18.0
+        );
+    }
+    let mut decade = decade_low;
+    while decade <= decade_high {
+        for mantissa in [1.0, 2.0, 5.0] {
+            let e = mantissa * 10f64.powf(decade);
+            if decade == decade_high && mantissa > 1.0 {
+                break;
+            }
+            let py = y(e);
+            let digits = (-decade).max(0.0) as usize;
+            let _ = writeln!(
+                svg,
+                "<line x1=\"{}\" y1=\"{py}\" x2=\"{x0}\" y2=\"{py}\" stroke=\"black\"/>\
+                 <text x=\"{}\" y=\"{}\" text-anchor=\"end\">{e:.digits$}</text>",
+                x0 - 5.0,
+                x0 - 8.0,
+                py + 4.0,
+            );
+        }
+        decade += 1.0;
+    }
+    let _ = writeln!(
+        svg,
+        "<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">angle to the lines of curvature, \
+         degrees</text>\n<text x=\"16\" y=\"{}\" transform=\"rotate(-90 16 {})\" \
+         text-anchor=\"middle\">Hausdorff error (logarithmic scale)</text>",
+        0.5 * (x0 + x1),
+        height - 10.0,
+        0.5 * (y0 + y1),
+        0.5 * (y0 + y1)
+    );
+    let series = [
+        (
+            SeedSurface::Cylinder,
+            Turn::Both,
+            "#1f5fbf",
+            "cylinder, both families",
+        ),
+        (
+            SeedSurface::Cylinder,
+            Turn::One,
+            "#7fa8e8",
+            "cylinder, generator",
+        ),
+        (
+            SeedSurface::Hyperboloid,
+            Turn::Both,
+            "#c0392b",
+            "hyperboloid, both families",
+        ),
+        (
+            SeedSurface::Hyperboloid,
+            Turn::One,
+            "#e8a07f",
+            "hyperboloid, meridian",
+        ),
+    ];
+    for (k, (surface, turn, colour, name)) in series.into_iter().enumerate() {
+        let points: Vec<(f64, f64)> = frames
+            .iter()
+            .zip(errors)
+            .filter(|(f, _)| f.surface == surface && (f.turn == turn || f.turn == Turn::None))
+            .map(|(f, &e)| (x(f64::from(f.degrees)), y(e)))
+            .collect();
+        let path: Vec<String> = points
+            .iter()
+            .map(|(a, b)| format!("{a:.1},{b:.1}"))
+            .collect();
+        let _ = writeln!(
+            svg,
+            "<polyline points=\"{}\" stroke=\"{colour}\" stroke-width=\"2\" fill=\"none\"/>",
+            path.join(" ")
+        );
+        for (a, b) in &points {
+            let _ = writeln!(
+                svg,
+                "<circle cx=\"{a:.1}\" cy=\"{b:.1}\" r=\"3\" fill=\"{colour}\"/>"
+            );
+        }
+        for f in frames
+            .iter()
+            .filter(|f| f.surface == surface && f.turn == turn)
+        {
+            if let Some(p) = f.paper_error {
+                let (a, b) = (x(f64::from(f.degrees)), y(p));
+                let _ = writeln!(
+                    svg,
+                    "<rect x=\"{:.1}\" y=\"{:.1}\" width=\"8\" height=\"8\" stroke=\"{colour}\" \
+                     stroke-width=\"1.5\" fill=\"none\"/>",
+                    a - 4.0,
+                    b - 4.0
+                );
+            }
+        }
+        let ly = top + 20.0 * k as f64;
+        let _ = writeln!(
+            svg,
+            "<line x1=\"{}\" y1=\"{ly}\" x2=\"{}\" y2=\"{ly}\" stroke=\"{colour}\" \
+             stroke-width=\"2\"/><text x=\"{}\" y=\"{}\">{name}</text>",
+            x1 + 20.0,
+            x1 + 45.0,
+            x1 + 50.0,
+            ly + 4.0
+        );
+    }
+    // The 0 degree frames' paper points (shared by both series of a surface).
+    for (f, _) in frames
+        .iter()
+        .zip(errors)
+        .filter(|(f, _)| f.turn == Turn::None)
+    {
+        if let Some(p) = f.paper_error {
+            let _ = writeln!(
+                svg,
+                "<rect x=\"{:.1}\" y=\"{:.1}\" width=\"8\" height=\"8\" stroke=\"black\" \
+                 stroke-width=\"1.5\" fill=\"none\"/>",
+                x(0.0) - 4.0,
+                y(p) - 4.0
+            );
+        }
+    }
+    let _ = writeln!(
+        svg,
+        "<rect x=\"{}\" y=\"{}\" width=\"8\" height=\"8\" stroke=\"black\" fill=\"none\"/>\
+         <text x=\"{}\" y=\"{}\">the paper's printed error</text>\n</svg>",
+        x1 + 28.0,
+        top + 80.0 - 4.0,
+        x1 + 50.0,
+        top + 84.0
+    );
+    svg
 }

@@ -34,6 +34,7 @@ use karkas::measure::{hausdorff_surface_implicit, Hausdorff};
 use karkas::param::{BicubicSurface, GridParameterization};
 use karkas::{Grid, Point3, Result};
 use std::f64::consts::TAU;
+use std::sync::Mutex;
 
 /// How much denser than the frame the exact patch is traced.
 const PATCH_REFINEMENT: usize = 4;
@@ -77,30 +78,55 @@ pub struct ExperimentOutcome {
 impl SeedExperiment {
     /// Traces the frame and its exact patch, interpolates and measures.
     pub fn run(&self) -> Result<ExperimentOutcome> {
-        match self.surface {
-            SeedSurface::Cylinder => self.run_on(&Cylinder { radius: 1.0 }),
-            SeedSurface::Hyperboloid => self.run_on(&Hyperboloid { neck_radius: 1.0 }),
-        }
+        run_net(self.surface, &self.net)
     }
+}
 
-    fn run_on<S: ImplicitSurface>(&self, implicit: &S) -> Result<ExperimentOutcome> {
-        let nodes = trace_net(implicit, &self.net)?;
-        let surface = BicubicSurface::new(&nodes, GridParameterization::default(), false, false)?;
-        let k = PATCH_REFINEMENT;
-        let mut dense = self.net;
-        dense.nodes = (
-            (self.net.nodes.0 - 1) * k + 1,
-            (self.net.nodes.1 - 1) * k + 1,
-        );
-        dense.steps = (self.net.steps.0 / k as f64, self.net.steps.1 / k as f64);
-        let patch = trace_net(implicit, &dense)?;
-        let error = hausdorff_surface_implicit(&surface, implicit, patch.as_slice(), SAMPLES)?;
-        Ok(ExperimentOutcome {
-            nodes,
-            surface,
-            error,
-        })
+/// Traces the frame `net` on `surface` and its exact patch, interpolates and measures; the
+/// error is remembered for [`frame_error`].
+pub fn run_net(surface: SeedSurface, net: &NetSpec) -> Result<ExperimentOutcome> {
+    let outcome = match surface {
+        SeedSurface::Cylinder => run_on(&Cylinder { radius: 1.0 }, net),
+        SeedSurface::Hyperboloid => run_on(&Hyperboloid { neck_radius: 1.0 }, net),
+    }?;
+    if let Ok(mut known) = KNOWN_ERRORS.lock() {
+        known.push((surface, *net, outcome.error.distance));
     }
+    Ok(outcome)
+}
+
+/// The Hausdorff errors of the frames run so far in this process: the angle sweep takes the
+/// frames it shares with the table from here instead of tracing them again.
+static KNOWN_ERRORS: Mutex<Vec<(SeedSurface, NetSpec, f64)>> = Mutex::new(Vec::new());
+
+/// The Hausdorff error of the frame `net` on `surface` ([`run_net`], or the error it found
+/// for the same frame before).
+pub fn frame_error(surface: SeedSurface, net: &NetSpec) -> Result<f64> {
+    let known = KNOWN_ERRORS.lock().ok().and_then(|k| {
+        k.iter()
+            .find(|(s, n, _)| *s == surface && n == net)
+            .map(|&(_, _, e)| e)
+    });
+    match known {
+        Some(e) => Ok(e),
+        None => run_net(surface, net).map(|o| o.error.distance),
+    }
+}
+
+fn run_on<S: ImplicitSurface>(implicit: &S, net: &NetSpec) -> Result<ExperimentOutcome> {
+    let nodes = trace_net(implicit, net)?;
+    let surface = BicubicSurface::new(&nodes, GridParameterization::default(), false, false)?;
+    let k = PATCH_REFINEMENT;
+    let mut dense = *net;
+    dense.nodes = ((net.nodes.0 - 1) * k + 1, (net.nodes.1 - 1) * k + 1);
+    dense.steps = (net.steps.0 / k as f64, net.steps.1 / k as f64);
+    let patch = trace_net(implicit, &dense)?;
+    let error = hausdorff_surface_implicit(&surface, implicit, patch.as_slice(), SAMPLES)?;
+    Ok(ExperimentOutcome {
+        nodes,
+        surface,
+        error,
+    })
 }
 
 /// A 5 x 9 net with closed `v` lines.
@@ -129,16 +155,6 @@ pub fn seed_experiments() -> Vec<SeedExperiment> {
     let cylinder_start = Point3::new([1.0, 0.0, 0.0]);
     let hyperboloid_start = Point3::new([1.25f64.sqrt(), 0.0, -0.5]);
     let meridian_step = meridian_length() / 4.0;
-    let turned_planes = |deg: f64| {
-        let a = deg.to_radians();
-        NetDirections::PlaneSections {
-            plane_normal: Point3::new([0.0, -a.sin(), a.cos()]),
-        }
-    };
-    let generator = |deg: f64| NetDirections::TurnedU {
-        angle: deg.to_radians(),
-    };
-    let stretched = |step: f64, deg: f64| step / deg.to_radians().cos();
     let row = |label, paper, surface, net| SeedExperiment {
         label,
         paper_error: Some(paper),
@@ -194,6 +210,141 @@ pub fn seed_experiments() -> Vec<SeedExperiment> {
             ),
         ),
     ]
+}
+
+/// Both families turned by `deg` degrees: `v` lines in the planes normal to
+/// `(0, -sin a, cos a)`, `u` lines their orthogonal trajectories.
+fn turned_planes(deg: f64) -> NetDirections {
+    let a = deg.to_radians();
+    NetDirections::PlaneSections {
+        plane_normal: Point3::new([0.0, -a.sin(), a.cos()]),
+    }
+}
+
+/// The `u` family (generator, meridian) turned by `deg` degrees.
+fn generator(deg: f64) -> NetDirections {
+    NetDirections::TurnedU {
+        angle: deg.to_radians(),
+    }
+}
+
+/// The `u` step along a line turned by `deg` degrees from the `u` line of curvature that keeps
+/// the nodes on the same rows (`step / cos a`).
+fn stretched(step: f64, deg: f64) -> f64 {
+    step / deg.to_radians().cos()
+}
+
+/// Which family of a frame of the angle sweep is turned.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Turn {
+    /// None: the lines of curvature (0 degrees).
+    None,
+    /// Both families ([`turned_planes`]): orthogonal lines turned at the start node.
+    Both,
+    /// The `u` family only (the generator or the meridian).
+    One,
+}
+
+/// One frame of the angle sweep of figures 3.2 and 3.3.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SweepFrame {
+    /// The surface.
+    pub surface: SeedSurface,
+    /// Which family is turned.
+    pub turn: Turn,
+    /// The angle, degrees.
+    pub degrees: u32,
+    /// The error the paper prints for this frame, if it prints one.
+    pub paper_error: Option<f64>,
+    /// The net of nodes.
+    pub net: NetSpec,
+}
+
+impl SweepFrame {
+    /// `cylinder, both families turned 30 deg`, `hyperboloid, 0 deg (lines of curvature)`.
+    pub fn label(&self) -> String {
+        let (name, one) = match self.surface {
+            SeedSurface::Cylinder => ("cylinder", "generator"),
+            SeedSurface::Hyperboloid => ("hyperboloid", "meridian"),
+        };
+        let deg = self.degrees;
+        match self.turn {
+            Turn::None => format!("{name}, {deg} deg (lines of curvature)"),
+            Turn::Both => format!("{name}, both families turned {deg} deg"),
+            Turn::One => format!("{name}, {one} turned {deg} deg"),
+        }
+    }
+}
+
+/// The angles of the sweep besides 0: every 15 degrees below 90 (at 90 degrees one family
+/// turned is parallel to the other, and both families turned exchange the closed and open
+/// lines).
+pub const SWEEP_DEGREES: [u32; 5] = [15, 30, 45, 60, 75];
+
+/// The frames of the angle sweep (figures 3.2, 3.3): for the cylinder and the hyperboloid the
+/// lines of curvature, then one family turned and both families turned by every angle of
+/// [`SWEEP_DEGREES`], with the paper's printed errors beside the frames it measured. The
+/// hyperboloid's turned plane sections close only below 45 degrees (steeper planes cut it in
+/// hyperbolas), so its both-families series stops at 30; its one-family series adds the
+/// paper's 68 degrees.
+pub fn angle_sweep() -> Vec<SweepFrame> {
+    let mut frames = Vec::new();
+    let surfaces = [
+        (
+            SeedSurface::Cylinder,
+            Point3::new([1.0, 0.0, 0.0]),
+            0.5,
+            0.011,
+            &[(30, 0.089), (45, 0.267)][..],
+            &[(30, 0.086), (45, 0.09)][..],
+        ),
+        (
+            SeedSurface::Hyperboloid,
+            Point3::new([1.25f64.sqrt(), 0.0, -0.5]),
+            meridian_length() / 4.0,
+            0.03,
+            &[][..],
+            &[(68, 0.078)][..],
+        ),
+    ];
+    for (surface, start, step, principal, both_paper, one_paper) in surfaces {
+        let paper =
+            |table: &[(u32, f64)], deg: u32| table.iter().find(|(d, _)| *d == deg).map(|&(_, e)| e);
+        frames.push(SweepFrame {
+            surface,
+            turn: Turn::None,
+            degrees: 0,
+            paper_error: Some(principal),
+            net: net(start, NetDirections::Principal, step),
+        });
+        let mut one_degrees = SWEEP_DEGREES.to_vec();
+        one_degrees.extend(one_paper.iter().map(|&(d, _)| d));
+        one_degrees.sort_unstable();
+        one_degrees.dedup();
+        for deg in one_degrees {
+            let d = f64::from(deg);
+            frames.push(SweepFrame {
+                surface,
+                turn: Turn::One,
+                degrees: deg,
+                paper_error: paper(one_paper, deg),
+                net: net(start, generator(d), stretched(step, d)),
+            });
+        }
+        for deg in SWEEP_DEGREES {
+            if surface == SeedSurface::Hyperboloid && deg >= 45 {
+                continue;
+            }
+            frames.push(SweepFrame {
+                surface,
+                turn: Turn::Both,
+                degrees: deg,
+                paper_error: paper(both_paper, deg),
+                net: net(start, turned_planes(f64::from(deg)), step),
+            });
+        }
+    }
+    frames
 }
 
 /// A frame not in the paper: the cylinder's net of constant-angle helices, both families

@@ -5,7 +5,7 @@ use crate::common::{karkas, s, stderr, temp_dir};
 use serde_json::Value;
 
 /// The examples the demo promises (issue contract: scripts read report.json by these ids).
-const EXAMPLES: [&str; 9] = [
+const EXAMPLES: [&str; 10] = [
     "ll-contour",
     "ll-aircraft",
     "coons-fig3",
@@ -15,6 +15,7 @@ const EXAMPLES: [&str; 9] = [
     "fit-hydrofoil",
     "fit-hydrofoil-clean",
     "param-cylinder-hyperboloid",
+    "param-angle-sweep",
 ];
 
 #[test]
@@ -68,10 +69,12 @@ fn demo_writes_a_complete_report() {
         .flat_map(|e| e["rows"].as_array().unwrap())
         .filter(|r| r["paper"].is_number())
         .count();
-    // Kuznetsov and Filatov: 7 table entries; Pavlov: 20 per-point deviations and their maximum,
-    // and the largest deviation beside the clean hydrofoil's.
-    assert_eq!(paper_rows, 7 + 21 + 1);
+    // Kuznetsov and Filatov: 7 table entries and the 7 printed points of the angle sweep;
+    // Pavlov: 20 per-point deviations and their maximum, and the largest deviation beside the
+    // clean hydrofoil's.
+    assert_eq!(paper_rows, 7 + 7 + 21 + 1);
     crate::demo_hydrofoil::check_clean_hydrofoil(&out, examples);
+    check_angle_sweep(examples);
 
     let html = std::fs::read_to_string(out.join("index.html")).unwrap();
     for seed in ["000", "001", "002", "003", "004"] {
@@ -94,6 +97,79 @@ fn demo_writes_a_complete_report() {
         wasm.starts_with("AGFzbQ"),
         "{}",
         &wasm[..20.min(wasm.len())]
+    );
+}
+
+/// The angle sweep of Kuznetsov and Filatov's figures 3.2 and 3.3: a row for every angle of
+/// every series, each naming its angle as `N deg`, the paper's printed points beside the frames
+/// it measured, and for each surface the frame along the lines of curvature (0 deg) the best.
+fn check_angle_sweep(examples: &[Value]) {
+    let sweep = examples
+        .iter()
+        .find(|e| e["id"] == "param-angle-sweep")
+        .expect("the angle sweep");
+    let rows: Vec<(&str, f64, Option<f64>)> = sweep["rows"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|r| {
+            (
+                r["example"].as_str().unwrap(),
+                r["karkas"].as_f64().unwrap(),
+                r["paper"].as_f64(),
+            )
+        })
+        .collect();
+    let row = |name: &str| {
+        rows.iter()
+            .find(|r| r.0 == format!("004 sweep: {name}"))
+            .unwrap_or_else(|| panic!("no row {name} in {rows:?}"))
+    };
+    for surface in ["cylinder", "hyperboloid"] {
+        let principal = row(&format!("{surface}, 0 deg (lines of curvature)"));
+        let one = if surface == "cylinder" {
+            "generator"
+        } else {
+            "meridian"
+        };
+        let mut series = Vec::new();
+        for deg in [15, 30, 45, 60, 75] {
+            series.push(row(&format!("{surface}, {one} turned {deg} deg")));
+            if surface == "cylinder" || deg < 45 {
+                series.push(row(&format!("{surface}, both families turned {deg} deg")));
+            }
+        }
+        // Turning one family can leave the worst point where it was (at the seam of the first
+        // circle, which every frame shares), so small turns of one family may tie with 0 deg;
+        // none is better, and turning both families is always worse.
+        for r in &series {
+            assert!(r.1 >= principal.1, "{r:?} vs 0 deg {principal:?}");
+            if r.0.contains("both families") || r.0.contains("75 deg") {
+                assert!(r.1 > principal.1, "{r:?} vs 0 deg {principal:?}");
+            }
+        }
+        let all = rows.iter().filter(|r| r.0.contains(surface)).count();
+        assert_eq!(
+            all,
+            series.len() + 1 + usize::from(surface == "hyperboloid")
+        );
+    }
+    assert_eq!(row("cylinder, 0 deg (lines of curvature)").2, Some(0.011));
+    assert_eq!(row("cylinder, both families turned 30 deg").2, Some(0.089));
+    assert_eq!(row("cylinder, both families turned 45 deg").2, Some(0.267));
+    assert_eq!(row("cylinder, generator turned 30 deg").2, Some(0.086));
+    assert_eq!(row("cylinder, generator turned 45 deg").2, Some(0.09));
+    assert_eq!(row("hyperboloid, 0 deg (lines of curvature)").2, Some(0.03));
+    assert_eq!(row("hyperboloid, meridian turned 68 deg").2, Some(0.078));
+    // The 0 deg frames are the table's frames along the lines of curvature.
+    let table = examples
+        .iter()
+        .flat_map(|e| e["rows"].as_array().unwrap())
+        .find(|r| r["example"] == "004 cylinder, lines of curvature")
+        .unwrap();
+    assert_eq!(
+        table["karkas"].as_f64(),
+        Some(row("cylinder, 0 deg (lines of curvature)").1)
     );
 }
 

@@ -182,3 +182,162 @@ fn python_spellings_of_the_parameterization() {
         std::fs::read_to_string(&b).unwrap()
     );
 }
+
+/// The number after `key ` in the `--report` line of `err`.
+fn reported(err: &str, key: &str) -> f64 {
+    let line = err
+        .lines()
+        .find(|l| l.contains("condition measure"))
+        .unwrap_or_else(|| panic!("no report in {err}"));
+    let rest = line.split(&format!("{key} ")).nth(1).unwrap();
+    rest.split([' ', ',']).next().unwrap().parse().unwrap()
+}
+
+/// `--report`: the condition measure (2.4) of the parameters on stderr; the closed forms of a
+/// grid of unit steps along orthogonal lines (1) and along lines at 60 degrees (tan 30).
+#[test]
+fn report_gives_the_condition_measure_of_the_parameters() {
+    let dir = temp_dir();
+    let out = dir.path().join("s.csv");
+    let steps = [0.0, 0.5, 1.5, 2.0];
+    for (deg, expected) in [(90.0f64, 1.0), (60.0, 30f64.to_radians().tan())] {
+        let (c, s_) = (deg.to_radians().cos(), deg.to_radians().sin());
+        let text = grid_csv(4, 5, |i, j| {
+            let y = 0.7 * j as f64;
+            [steps[i] + c * y, s_ * y, 1.0]
+        });
+        let input = write(dir.path(), "g.csv", &text);
+        let o = karkas(&["surface", "bicubic", "--report", s(&input), "-o", s(&out)]);
+        assert!(o.status.success(), "{}", stderr(&o));
+        let err = stderr(&o);
+        assert!((reported(&err, "min") - expected).abs() < 2e-6, "{err}");
+        assert!((reported(&err, "mean") - expected).abs() < 2e-6, "{err}");
+        assert!(err.contains("over 20 nodes"), "{err}");
+    }
+    // Uniform parameters on rows 2 apart: the u tangents are stretched to 2, measure 1/2; the
+    // worst node is named.
+    let text = grid_csv(3, 3, |i, j| [2.0 * i as f64, j as f64, 0.0]);
+    let input = write(dir.path(), "u.csv", &text);
+    let o = karkas(&[
+        "surface",
+        "bicubic",
+        "--param",
+        "uniform",
+        "--report",
+        s(&input),
+        "-o",
+        s(&out),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let err = stderr(&o);
+    assert!((reported(&err, "min") - 0.5).abs() < 2e-6, "{err}");
+    assert!(err.contains("at node (i="), "{err}");
+    // Without --report nothing is said about it.
+    let o = karkas(&["surface", "bicubic", s(&input), "-o", s(&out)]);
+    assert!(!stderr(&o).contains("condition measure"));
+}
+
+/// `--origin I,J`: the paper's origin node (i*, j*) of the chord parameters. On the grid of
+/// [`grid_text`] with the origin (2, 1), `u` is the chord length along column 1 (points
+/// `(x_i, 1, 0.1 i)`) and `v` along row 2 (points `(4, j, 0.2 j)`), both zero at the node.
+#[test]
+fn origin_moves_the_zero_of_the_chord_parameters() {
+    let dir = temp_dir();
+    let input = write(dir.path(), "g.csv", &grid_text());
+    let out = dir.path().join("s.csv");
+    let o = karkas(&[
+        "surface",
+        "bicubic",
+        "--origin",
+        "2,1",
+        "--samples",
+        "2,2",
+        s(&input),
+        "-o",
+        s(&out),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let (_, rows) = read_csv(&out);
+    let xs: [f64; 4] = [0.0, 1.0, 4.0, 6.0];
+    let chord = |i: usize| ((xs[i + 1] - xs[i]).powi(2) + 0.01f64).sqrt();
+    let (u0, u3) = (-(chord(0) + chord(1)), chord(2));
+    let step_v = 1.04f64.sqrt();
+    let (v0, v4) = (-step_v, 3.0 * step_v);
+    let corners = [(u0, v0), (u0, v4), (u3, v0), (u3, v4)];
+    for (row, (u, v)) in rows.iter().zip(corners) {
+        assert!(
+            (row[0] - u).abs() < 1e-12 && (row[1] - v).abs() < 1e-12,
+            "{row:?}"
+        );
+    }
+    // The corners are still the corner nodes.
+    assert!(
+        rows[0][2..].iter().all(|c| c.abs() < 1e-12),
+        "{:?}",
+        rows[0]
+    );
+    assert!((rows[3][2] - 6.0).abs() < 1e-12 && (rows[3][3] - 4.0).abs() < 1e-12);
+    // The origin (0, 0) written out is the default.
+    let a = dir.path().join("a.csv");
+    let b = dir.path().join("b.csv");
+    assert!(karkas(&["surface", "bicubic", s(&input), "-o", s(&a)])
+        .status
+        .success());
+    let o = karkas(&[
+        "surface",
+        "bicubic",
+        "--origin",
+        "0,0",
+        s(&input),
+        "-o",
+        s(&b),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_eq!(std::fs::read(&a).unwrap(), std::fs::read(&b).unwrap());
+}
+
+#[test]
+fn origin_outside_the_grid_or_without_chord_exits_2() {
+    let dir = temp_dir();
+    let input = write(dir.path(), "g.csv", &grid_text());
+    let out = dir.path().join("s.csv");
+    for (origin, param) in [
+        ("4,0", "chord"),
+        ("0,5", "chord"),
+        ("1,1", "uniform"),
+        ("1", "chord"),
+    ] {
+        let o = karkas(&[
+            "surface",
+            "bicubic",
+            "--param",
+            param,
+            "--origin",
+            origin,
+            s(&input),
+            "-o",
+            s(&out),
+        ]);
+        assert_eq!(o.status.code(), Some(2), "{origin} {param}");
+        let err = stderr(&o);
+        assert!(
+            err.contains("--origin") && err.lines().count() == 1,
+            "{err}"
+        );
+        assert!(!out.exists());
+    }
+    let o = karkas(&[
+        "surface",
+        "bicubic",
+        "--origin",
+        "4,0",
+        s(&input),
+        "-o",
+        s(&out),
+    ]);
+    assert!(
+        stderr(&o).contains("outside the 4 x 5 grid"),
+        "{}",
+        stderr(&o)
+    );
+}

@@ -173,3 +173,99 @@ fn no_surface_near_the_start_is_a_clear_error() {
     assert_eq!(o.status.code(), Some(2));
     assert!(!grid.exists());
 }
+
+/// Runs `surface implicit` on the unit cylinder from (1, 0, 0) with `extra` options.
+fn cylinder_net(dir: &Path, extra: &[&str]) -> std::process::Output {
+    let grid = dir.join("g.csv");
+    let mut args = vec![
+        "surface",
+        "implicit",
+        "--expr",
+        "x^2+y^2-1",
+        "--start",
+        "1,0,0",
+        "-o",
+        s(&grid),
+    ];
+    args.extend_from_slice(extra);
+    karkas(&args)
+}
+
+/// `--turn-u` turns the generators only (the spine is the helix at the angle to them, the rows
+/// stay circles); `--turn-v` turns the circles only (the spine is a generator, the rows are
+/// helices at the angle to the circles). Closed forms on the unit cylinder.
+#[test]
+fn one_family_turned_nets() {
+    let dir = temp_dir();
+    let grid = dir.path().join("g.csv");
+    let (sin30, cos30) = 30f64.to_radians().sin_cos();
+    let eighth = std::f64::consts::TAU / 8.0;
+    let o = cylinder_net(
+        dir.path(),
+        &[
+            "--nodes",
+            "3,9",
+            "--step",
+            "0.5",
+            "--closed-v",
+            "--turn-u",
+            "30",
+        ],
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let rows = read_grid(&grid);
+    assert_eq!(rows.len(), 27);
+    for r in &rows {
+        let (i, j) = (r[0], r[1]);
+        // The spine node i is 0.5 i along the helix: height 0.5 i cos 30, turned 0.5 i sin 30.
+        assert!((r[4].abs() - 0.5 * i * cos30).abs() < 1e-7, "{r:?}");
+        let start = rows[(9.0 * i) as usize];
+        assert!(
+            (start[3].atan2(start[2]).abs() - 0.5 * i * sin30).abs() < 1e-7,
+            "{start:?}"
+        );
+        // Row i: the circle through it, 9 nodes a turn, 8 steps of 45 degrees.
+        let turned = (r[2] * start[2] + r[3] * start[3]).clamp(-1.0, 1.0).acos();
+        let expected = (eighth * j).min(std::f64::consts::TAU - eighth * j);
+        assert!((turned - expected).abs() < 1e-6, "{r:?}");
+    }
+    let o = cylinder_net(
+        dir.path(),
+        &["--nodes", "3,5", "--step", "0.5", "--turn-v", "30"],
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let rows = read_grid(&grid);
+    for r in &rows {
+        let (i, j) = (r[0], r[1]);
+        let start = rows[(5.0 * i) as usize];
+        // The spine is the generator through (1, 0, 0): nodes 0.5 apart.
+        assert!(
+            start[2] == 1.0 || (start[2] - 1.0).abs() < 1e-9,
+            "{start:?}"
+        );
+        assert!((start[4].abs() - 0.5 * i).abs() < 1e-7, "{start:?}");
+        // Row i: the helix at 30 degrees to the circle, 0.5 j along it.
+        let turned = r[3].atan2(r[2]) - start[3].atan2(start[2]);
+        assert!((turned.abs() - 0.5 * j * cos30).abs() < 1e-7, "{r:?}");
+        assert!(
+            ((r[4] - start[4]).abs() - 0.5 * j * sin30).abs() < 1e-7,
+            "{r:?}"
+        );
+    }
+    // One turn at a time.
+    let o = cylinder_net(
+        dir.path(),
+        &[
+            "--nodes", "3,5", "--step", "0.5", "--turn", "10", "--turn-u", "30",
+        ],
+    );
+    assert_eq!(o.status.code(), Some(2));
+    let o = cylinder_net(
+        dir.path(),
+        &[
+            "--nodes", "3,5", "--step", "0.5", "--turn-u", "10", "--turn-v", "30",
+        ],
+    );
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("--turn-v") || stderr(&o).contains("--turn-u"));
+}

@@ -39,6 +39,12 @@ pub enum NetDirections {
         /// The angle, radians.
         angle: f64,
     },
+    /// Only the `v` family turned by `angle` (radians); the `u` lines (the spine) stay lines
+    /// of curvature (a net that is not orthogonal).
+    TurnedV {
+        /// The angle, radians.
+        angle: f64,
+    },
     /// `v` lines are the sections of the surface by the planes normal to `plane_normal`, `u`
     /// lines their orthogonal trajectories.
     PlaneSections {
@@ -119,6 +125,8 @@ fn direction<S: ImplicitSurface + ?Sized>(
         (NetDirections::Turned { angle }, _) => (angle, true),
         (NetDirections::TurnedU { angle }, Family::U) => (angle, true),
         (NetDirections::TurnedU { .. }, Family::V) => (0.0, true),
+        (NetDirections::TurnedV { angle }, Family::V) => (angle, true),
+        (NetDirections::TurnedV { .. }, Family::U) => (0.0, true),
         (NetDirections::PlaneSections { plane_normal }, fam) => {
             let section = in_plane(cross(plane_normal, n))?;
             let d = match fam {
@@ -181,6 +189,7 @@ fn initial_direction<S: ImplicitSurface + ?Sized>(
         }
         NetDirections::Turned { angle } => frame.turn(base, angle),
         NetDirections::TurnedU { angle } if family == Family::U => frame.turn(base, angle),
+        NetDirections::TurnedV { angle } if family == Family::V => frame.turn(base, angle),
         _ => base,
     };
     direction(surface, directions, family, x, seed)
@@ -341,7 +350,9 @@ pub fn trace_net<S: ImplicitSurface + ?Sized>(surface: &S, spec: &NetSpec) -> Re
     }
     match spec.directions {
         NetDirections::Principal => {}
-        NetDirections::Turned { angle } | NetDirections::TurnedU { angle } => {
+        NetDirections::Turned { angle }
+        | NetDirections::TurnedU { angle }
+        | NetDirections::TurnedV { angle } => {
             if !angle.is_finite() {
                 return Err(Error::NonFiniteArgument { what: "the angle" });
             }

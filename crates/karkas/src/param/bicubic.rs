@@ -20,6 +20,7 @@
 //! once (`O(M)`), then costs 4 multiply-adds per point; the `v` weights of every sample
 //! column are computed once per call.
 
+use super::condition::{node_measures, ConditionSummary};
 use super::parameterization::{grid_parameters, GridParameterization};
 use super::spline::check_parameters;
 use crate::core::knots::locate;
@@ -188,6 +189,34 @@ impl<const D: usize> BicubicSurface<D> {
     pub fn node_derivatives(&self, i: usize, j: usize) -> (Point<D>, Point<D>, Point<D>) {
         let k = i * self.values.cols() + j;
         (self.ru[k], self.rv[k], self.ruv[k])
+    }
+
+    /// The condition measure of the parameters at every node of the (closed) grid: the
+    /// extension of Kuznetsov and Filatov's (2.4) in [`condition_measure`](super::condition_measure) from the node
+    /// tangents `W_u`, `W_v` (`1` exactly for arc lengths along orthogonal directions,
+    /// Theorem 2.1; smaller for skewed or stretched parameters). `O(N M)`.
+    pub fn condition_measures(&self) -> Grid<f64> {
+        let cols = self.values.cols();
+        node_measures(self.values.rows(), cols, |i, j| {
+            let k = i * cols + j;
+            (self.ru[k], self.rv[k])
+        })
+    }
+
+    /// The smallest and mean condition measure of [`condition_measures`](Self::condition_measures)
+    /// and the worst node, over the distinct nodes (a closed direction's repeated seam line
+    /// counted once).
+    pub fn condition_summary(&self) -> ConditionSummary {
+        let measures = self.condition_measures();
+        let rows = measures.rows() - usize::from(self.closed_u);
+        let cols = measures.cols() - usize::from(self.closed_v);
+        // A grid has at least 2 lines in each direction (3 distinct when closed): never empty.
+        ConditionSummary::of(&measures, rows, cols).unwrap_or(ConditionSummary {
+            min: f64::NAN,
+            mean: f64::NAN,
+            worst: (0, 0),
+            nodes: 0,
+        })
     }
 
     /// The value and `v`-slope of the line `u = const` at node column `j`, combined from the

@@ -13,7 +13,10 @@
 //!   tridiagonal solve;
 //! - [`BicubicSurface`]: the bicubic interpolant of a grid in Hermite form (3.6)–(3.9), its
 //!   node derivatives found by the paper's three steps of `2N + M` spline solves, `O(N M)`;
-//!   not-a-knot ends, periodic in a closed direction.
+//!   not-a-knot ends, periodic in a closed direction;
+//! - [`condition_measure`], [`BicubicSurface::condition_measures`]: how well the parameters
+//!   condition the continuation system (2.3), the paper's measure (2.4) extended to tangents
+//!   of any length (`1` exactly for arc lengths along orthogonal directions, Theorem 2.1).
 //!
 //! The paper's table of errors (frames from [`crate::implicit`], measured with
 //! [`crate::measure`]) is an experiment built on this module: the CLI's `demo` runs it.
@@ -32,12 +35,14 @@
 
 mod bicubic;
 mod bspline;
+mod condition;
 mod names;
 mod parameterization;
 mod spline;
 
 pub use crate::spline::SplineEnds;
 pub use bicubic::BicubicSurface;
+pub use condition::{condition_measure, ConditionSummary};
 pub use parameterization::{
     curve_parameters, grid_parameters, CurveParameterization, GridParameterization,
 };

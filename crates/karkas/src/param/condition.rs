@@ -1,0 +1,138 @@
+//! The conditioning of a parameterization: the measure (2.4) of the continuation system (2.3)
+//! of Kuznetsov and Filatov (docs/methods.md §5), for a parameterized surface.
+//!
+//! Along a surface `W(u, v)` the parameter differentials are `du = alpha . dx`,
+//! `dv = beta . dx` (2.1), where `alpha`, `beta` are the dual basis of the tangents `W_u`,
+//! `W_v` in the tangent plane (`alpha . W_u = 1`, `alpha . W_v = 0`, `beta . W_u = 0`,
+//! `beta . W_v = 1`, both orthogonal to the unit normal `n`); the continuation system is
+//! `[alpha; beta; n] dx = (du, dv, 0)` (2.3). The paper measures its conditioning by
+//! `|D| = |Delta| / d` (2.4), the determinant over the product of the row norms, for *unit*
+//! `alpha`, `beta` (2.2); Theorem 2.1: the best conditioning, `|D| = 1`, is reached exactly
+//! when `u`, `v` are arc lengths along two orthogonal directions.
+//!
+//! A parameterized surface does not keep its rows unit (a stretched parameter scales a row),
+//! so karkas extends (2.4) to any rows as the inverse 2-norm condition number
+//!
+//! `kappa^-1 = sigma_min / sigma_max` of `[alpha; beta; n]`
+//!
+//! (the same as that of `[W_u W_v n]`, its inverse). With `s_1 >= s_2` the singular values
+//! of the Jacobian `[W_u W_v]` (square roots of the eigenvalues of the first fundamental form
+//! `[[E, F], [F, G]]`) and the unit normal contributing `1`, it is
+//! `min(1, s_2) / max(1, s_1)`: equal to `1` exactly when `E = G = 1`, `F = 0` (Theorem 2.1's
+//! arc lengths along orthogonal directions) and below `1` otherwise, `0` where the tangents
+//! are parallel. Closed forms: tangents of unit length at an angle `theta` give
+//! `tan(theta / 2)` (for unit rows this is `|D| / (1 + sqrt(1 - D^2))`, increasing with the
+//! paper's `|D| = sin theta`); orthogonal tangents of lengths `a`, `b` give
+//! `min(1, a, b) / max(1, a, b)`. `O(1)` per point, `O(N M)` per grid.
+
+use crate::core::Grid;
+use crate::Point;
+
+/// The condition measure of the continuation system of a parameterization with tangents
+/// `wu = W_u`, `wv = W_v` at a point: `min(1, s_2) / max(1, s_1)` for the singular values
+/// `s_1 >= s_2` of `[W_u W_v]` (the module's extension of (2.4) to rows of any length), in
+/// `[0, 1]`, `1` exactly for unit orthogonal tangents. A non-finite tangent gives NaN.
+pub fn condition_measure<const D: usize>(wu: Point<D>, wv: Point<D>) -> f64 {
+    let (e, f, g) = (wu.dot(wu), wu.dot(wv), wv.dot(wv));
+    let mean = 0.5 * (e + g);
+    let radius = (0.25 * (e - g) * (e - g) + f * f).sqrt();
+    let largest = mean + radius;
+    // det = s_1^2 s_2^2, so the smaller eigenvalue without cancellation.
+    let det = (e * g - f * f).max(0.0);
+    let smallest = if largest > 0.0 { det / largest } else { 0.0 };
+    let (s1, s2) = (largest.sqrt(), smallest.sqrt());
+    s2.min(1.0) / s1.max(1.0)
+}
+
+/// The condition measures of a grid of nodes, summarized.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ConditionSummary {
+    /// The smallest measure (the worst conditioned node).
+    pub min: f64,
+    /// The mean measure over the nodes.
+    pub mean: f64,
+    /// The worst node `(i, j)` (the first of the smallest).
+    pub worst: (usize, usize),
+    /// How many nodes were summarized.
+    pub nodes: usize,
+}
+
+impl ConditionSummary {
+    /// The summary of `measures` over rows `0..rows` and columns `0..cols` (a closed
+    /// direction passes one less than stored, so that its seam counts once). A NaN measure
+    /// counts as the worst. `None` for an empty range.
+    pub fn of(measures: &Grid<f64>, rows: usize, cols: usize) -> Option<ConditionSummary> {
+        let (rows, cols) = (rows.min(measures.rows()), cols.min(measures.cols()));
+        let nodes = rows * cols;
+        if nodes == 0 {
+            return None;
+        }
+        let (mut min, mut worst, mut sum) = (measures.row(0)[0], (0, 0), 0.0);
+        for i in 0..rows {
+            for (j, &m) in measures.row(i)[..cols].iter().enumerate() {
+                sum += m;
+                if m < min || (m.is_nan() && !min.is_nan()) {
+                    (min, worst) = (m, (i, j));
+                }
+            }
+        }
+        Some(ConditionSummary {
+            min,
+            mean: sum / nodes as f64,
+            worst,
+            nodes,
+        })
+    }
+}
+
+/// The measures of every node of a grid from its tangents `(W_u, W_v)`, row-major.
+pub(super) fn node_measures<const D: usize>(
+    rows: usize,
+    cols: usize,
+    tangents: impl Fn(usize, usize) -> (Point<D>, Point<D>),
+) -> Grid<f64> {
+    Grid::from_fn(rows, cols, |i, j| {
+        let (wu, wv) = tangents(i, j);
+        condition_measure(wu, wv)
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Point3;
+
+    #[test]
+    fn closed_forms_of_the_measure() {
+        let (ex, ey) = (Point3::new([1.0, 0.0, 0.0]), Point3::new([0.0, 1.0, 0.0]));
+        assert_eq!(condition_measure(ex, ey), 1.0);
+        for deg in [15.0f64, 30.0, 60.0, 89.0, 120.0] {
+            let t = deg.to_radians();
+            let skew = ex * t.cos() + ey * t.sin();
+            let expected = if deg <= 90.0 {
+                (t / 2.0).tan()
+            } else {
+                ((std::f64::consts::PI - t) / 2.0).tan()
+            };
+            assert!(
+                (condition_measure(ex, skew) - expected).abs() < 1e-15,
+                "{deg}"
+            );
+        }
+        assert!((condition_measure(ex * 2.5, ey) - 0.4).abs() < 1e-16);
+        assert!((condition_measure(ex * 0.5, ey * 3.0) - 0.5 / 3.0).abs() < 1e-16);
+        assert_eq!(condition_measure(ex, ex * 2.0), 0.0);
+        assert_eq!(condition_measure(Point3::ZERO, ey), 0.0);
+    }
+
+    #[test]
+    fn summary_finds_the_worst_node_and_skips_the_seam() {
+        let g = Grid::from_fn(2, 3, |i, j| [[1.0, 0.5, 0.9], [0.8, 1.0, 0.2]][i][j]);
+        let s = ConditionSummary::of(&g, 2, 3).unwrap();
+        assert_eq!((s.min, s.worst, s.nodes), (0.2, (1, 2), 6));
+        assert!((s.mean - 4.4 / 6.0).abs() < 1e-15);
+        let s = ConditionSummary::of(&g, 2, 2).unwrap();
+        assert_eq!((s.min, s.worst, s.nodes), (0.5, (0, 1), 4));
+        assert_eq!(ConditionSummary::of(&g, 0, 2), None);
+    }
+}
