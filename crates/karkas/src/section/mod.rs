@@ -14,7 +14,11 @@
 //! - **general path** (formulas (22)–(23)): the level curve `F(u, v) = 0` is traced in the
 //!   parameter plane by predictor-corrector continuation (see `trace.rs`), started from every
 //!   crossing found on the edges of a coarse grid of cells, both ways, to the border of the
-//!   domain or until it closes (closed directions are crossed), each piece once.
+//!   domain or until it closes (closed directions are crossed), each piece once. A border
+//!   line that is one point in space (a pole: the nose of a body of revolution, where a grid
+//!   row collapses) is that point: a curve reaching it ends there, and the two pieces meeting
+//!   at a pole are joined into one curve through it (a plane through a body's nose and tail
+//!   cuts one closed loop).
 //!
 //! Guarantees: every reported point is `surface.eval(u, v)` at its reported parameters and
 //! lies on the level set to rounding (Newton is run to `1e-14` of the values' size); the

@@ -2,7 +2,7 @@
 
 use super::lines::sample_line;
 use super::plane::{LevelFunction, Plane};
-use super::result::{condense, Section};
+use super::result::{condense, Section, SectionWarning};
 use super::sample_grid::SampleGrid;
 use super::scan::trace_all;
 use super::trace::Tracer;
@@ -129,13 +129,20 @@ impl<'s, S: Surface<D> + ?Sized, const D: usize> Sectioner<'s, S, D> {
             .surface
             .level_parameter_lines(plane.normal(), plane.offset())
         {
-            let curves = lines
-                .into_iter()
-                .map(|line| sample_line(self.surface, &self.grid, line, self.tolerance))
-                .collect();
+            let mut curves = Vec::new();
+            let mut warnings = Vec::new();
+            for line in lines {
+                let curve = sample_line(self.surface, &self.grid, line, self.tolerance);
+                if !self.grid.is_one_point(curve.points.iter().copied()) {
+                    curves.push(curve);
+                } else if let Some(&(u, v)) = curve.params.first() {
+                    // A line that is one point (a pole): the plane touches the surface there.
+                    warnings.push(SectionWarning::SingularPoint { u, v });
+                }
+            }
             return Section {
                 curves,
-                warnings: Vec::new(),
+                warnings,
                 fast_path: true,
             };
         }

@@ -37,5 +37,6 @@ mod ll_surface_interp;
 mod param_bicubic;
 mod param_spline;
 mod robust_properties;
+mod section_poles;
 mod sections;
 mod variation;
