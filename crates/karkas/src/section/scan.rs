@@ -12,6 +12,8 @@
 //! inside one cell, or a piece that leaves a cell through the edge it entered, is missed. The
 //! grid must be finer than the smallest loop to be found (the `cells` option).
 
+use super::chords::split_chords;
+use super::lines::SHORTEST_CHORD;
 use super::plane::LevelFunction;
 use super::result::{SectionCurve, SectionWarning};
 use super::sample_grid::SampleGrid;
@@ -96,6 +98,7 @@ pub(crate) fn trace_all<S: Surface<D> + ?Sized, F: LevelFunction<D>, const D: us
             continue;
         }
         let (nodes, closed, stops) = trace_piece(tracer, &seed);
+        let nodes = split_far_chords(tracer, nodes, closed);
         warnings.extend(stops);
         visited.edges[edge_index(edge)] = true;
         visited.file(grid, &nodes, closed, &edge_index);
@@ -108,6 +111,32 @@ pub(crate) fn trace_all<S: Surface<D> + ?Sized, F: LevelFunction<D>, const D: us
         }
     }
     (curves, warnings)
+}
+
+/// Splits the chords of a traced piece that stray farther than the tolerance from the section
+/// (see `chords.rs`): the point between two nodes is their parameters' middle (or quarter)
+/// brought onto the level set by Newton's method.
+fn split_far_chords<S: Surface<D> + ?Sized, F: LevelFunction<D>, const D: usize>(
+    tracer: &Tracer<'_, S, F, D>,
+    nodes: Vec<Node<D>>,
+    closed: bool,
+) -> Vec<Node<D>> {
+    let grid = tracer.grid;
+    let on_arc = |a: &[f64; 2], b: &[f64; 2], t: f64| {
+        let s = [
+            a[0] + t * grid.u.reduce(b[0] - a[0]),
+            a[1] + t * grid.v.reduce(b[1] - a[1]),
+        ];
+        let (probe, _) = tracer.correct(s, None)?;
+        let inside = grid.contains(probe.s) && grid.pole_at(probe.s).is_none();
+        inside.then_some((probe.s, probe.point))
+    };
+    let shortest = SHORTEST_CHORD * grid.scale;
+    let nodes = nodes.into_iter().map(|n| (n.s, n.point)).collect();
+    split_chords(nodes, closed, tracer.tolerance, shortest, &on_arc)
+        .into_iter()
+        .map(|(s, point)| Node { s, point })
+        .collect()
 }
 
 /// Joins the pieces that end at the same pole (a collapsed border line, [`Pole`]): the

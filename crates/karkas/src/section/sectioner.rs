@@ -27,7 +27,8 @@ pub const DEFAULT_RELATIVE_TOLERANCE: f64 = 1e-4;
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SectionOptions {
     /// The largest distance allowed between a section polyline and the true section curve
-    /// (the chord error), in the surface's units. `None` (the default):
+    /// (the chord error: every chord is measured against the arc it spans and split until it is
+    /// within the tolerance), in the surface's units. `None` (the default):
     /// [`DEFAULT_RELATIVE_TOLERANCE`] times the diagonal of the surface's bounding box (as
     /// sampled on the grid). The points themselves are always on the section to rounding.
     pub tolerance: Option<f64>,

@@ -38,5 +38,6 @@ mod param_bicubic;
 mod param_spline;
 mod robust_properties;
 mod section_poles;
+mod section_tolerance;
 mod sections;
 mod variation;
