@@ -64,8 +64,9 @@ pub struct SectionArgs {
         allow_hyphen_values = true
     )]
     zs: Vec<f64>,
-    /// Largest distance between a section polyline and the true curve, in model units
-    /// [default: 1e-4 of the diagonal of the surface's bounding box].
+    /// Largest distance between a section polyline and the true curve (every chord is measured
+    /// and split until within it), in model units [default: 1e-4 of the diagonal of the
+    /// surface's bounding box].
     #[arg(long, allow_hyphen_values = true)]
     tolerance: Option<f64>,
     /// Cells NU,NV of the grid on which sections are looked for: a closed piece smaller than a

@@ -24,6 +24,7 @@ mod pictures;
 mod reading;
 mod scale;
 mod section;
+mod section_poles;
 mod surface_bicubic;
 mod surface_coons;
 mod surface_implicit;

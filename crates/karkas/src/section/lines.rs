@@ -4,8 +4,10 @@
 //!
 //! Sampling starts from the grid's vertices along the line and halves every interval whose
 //! midpoint lies farther than the tolerance from its chord (at most [`MAX_DEPTH`] times), so a
-//! line costs `O(cells + refinements)` evaluations.
+//! line costs `O(cells + refinements)` evaluations; then every chord is measured against the
+//! line at three points and split where it strays farther (see `chords.rs`).
 
+use super::chords::split_chords;
 use super::result::SectionCurve;
 use super::sample_grid::{Axis, SampleGrid};
 use crate::core::{ParameterLine, Surface};
@@ -32,20 +34,40 @@ pub(crate) fn sample_line<S: Surface<D> + ?Sized, const D: usize>(
             surface.eval(fixed, t)
         }
     };
-    let ts = sample_params(axis, &eval, tolerance);
-    let points: Vec<Point<D>> = ts.iter().map(|&t| eval(t)).collect();
-    let params = ts
+    let nodes = sample_params(axis, &eval, tolerance)
+        .into_iter()
+        .map(|s| (s, eval(axis.param(s))))
+        .collect();
+    let on_arc = |&a: &f64, &b: &f64, t: f64| {
+        let s = a + t * axis.reduce(b - a);
+        Some((s, eval(axis.param(s))))
+    };
+    let shortest = SHORTEST_CHORD * grid.scale;
+    let nodes = split_chords(nodes, axis.closed(), tolerance, shortest, &on_arc);
+    let params = nodes
         .iter()
-        .map(|&t| if along_u { (t, fixed) } else { (fixed, t) })
+        .map(|&(s, _)| {
+            let t = axis.param(s);
+            if along_u {
+                (t, fixed)
+            } else {
+                (fixed, t)
+            }
+        })
         .collect();
     SectionCurve {
         params,
-        points,
+        points: nodes.into_iter().map(|(_, p)| p).collect(),
         closed: axis.closed(),
     }
 }
 
-/// Parameters along `axis`, refined until every chord is within `tolerance` of the curve.
+/// Chords shorter than this (relative to the surface's size) are not split: they are at the
+/// rounding of the points.
+pub(crate) const SHORTEST_CHORD: f64 = 1e-12;
+
+/// Cell coordinates along `axis`, refined until every chord's midpoint is within `tolerance`
+/// of the curve.
 fn sample_params<const D: usize>(
     axis: &Axis,
     eval: &impl Fn(f64) -> Point<D>,
@@ -64,7 +86,7 @@ fn sample_params<const D: usize>(
     if axis.closed() {
         out.pop(); // s = cells is s = 0 again
     }
-    out.into_iter().map(|s| axis.param(s)).collect()
+    out
 }
 
 /// Adds the cell coordinates strictly between `a` and `b` needed to follow the curve.

@@ -8,7 +8,8 @@ use core::fmt;
 pub struct SectionCurve<const D: usize> {
     /// The surface parameters `(u, v)` of the points (in the domain; a closed direction is
     /// wrapped into its period, so the parameters jump by a period where the curve crosses the
-    /// seam).
+    /// seam, and a curve through a pole, a border line that is one point, leaves it at other
+    /// parameters than it came in by).
     pub params: Vec<(f64, f64)>,
     /// The points: `points[k]` is the surface's `eval(params[k])`, on the level set to the
     /// precision of the floating point arithmetic.

@@ -130,6 +130,24 @@ pub(crate) struct BlockBox<const D: usize> {
     pub(crate) hi: Point<D>,
 }
 
+/// A border line of an open direction along which the whole line is one point: the nose or
+/// tail of a body of revolution, where a row of the grid collapses. Its parameter line is
+/// one point in space, so a section through it is the point, not the line; curves that reach
+/// it end there and are joined through it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Pole<const D: usize> {
+    /// The direction the line is a border of (0 = u, 1 = v): the line is `s[axis] = at`.
+    pub(crate) axis: usize,
+    /// Its cell coordinate: 0 or the number of cells.
+    pub(crate) at: f64,
+    /// The point.
+    pub(crate) point: Point<D>,
+}
+
+/// Largest spread of the samples of a border line (relative to the surface's size) for the
+/// line to count as one point: rounding in evaluating the surface, far under any tolerance.
+const POLE_SPREAD: f64 = 1e-11;
+
 /// The surface sampled at the grid's vertices, once, for every level function to be cut.
 #[derive(Clone, Debug)]
 pub(crate) struct SampleGrid<const D: usize> {
@@ -144,6 +162,8 @@ pub(crate) struct SampleGrid<const D: usize> {
     /// Bounding boxes of the blocks, `blocks_u x blocks_v`, `u` outer; a box holding a
     /// non-finite sample is infinite.
     pub(crate) blocks: Vec<BlockBox<D>>,
+    /// The border lines that are one point (see [`Pole`]).
+    pub(crate) poles: Vec<Pole<D>>,
 }
 
 impl<const D: usize> SampleGrid<D> {
@@ -176,9 +196,57 @@ impl<const D: usize> SampleGrid<D> {
             scale,
             diagonal,
             blocks: Vec::new(),
+            poles: Vec::new(),
         };
         grid.blocks = grid.block_boxes();
+        grid.poles = grid.find_poles(surface);
         grid
+    }
+
+    /// The border lines of open directions that are one point: every vertex on the line and
+    /// the middle of every cell side along it within [`POLE_SPREAD`] of the size of the
+    /// surface from the line's first vertex.
+    fn find_poles<S: Surface<D> + ?Sized>(&self, surface: &S) -> Vec<Pole<D>> {
+        let mut poles = Vec::new();
+        for axis in 0..2 {
+            let (this, other) = (self.axis(axis), self.axis(1 - axis));
+            if this.closed() {
+                continue;
+            }
+            for at in [0.0, this.cells() as f64] {
+                let on_line = |t: f64| {
+                    let s = if axis == 0 { [at, t] } else { [t, at] };
+                    let (u, v) = self.params(s);
+                    surface.eval(u, v)
+                };
+                let first = on_line(0.0);
+                let samples = (0..=2 * other.cells()).map(|k| on_line(0.5 * k as f64));
+                if first.is_finite() && self.is_one_point(samples) {
+                    poles.push(Pole {
+                        axis,
+                        at,
+                        point: first,
+                    });
+                }
+            }
+        }
+        poles
+    }
+
+    /// True when `points` are one point to rounding (within [`POLE_SPREAD`] of the surface's
+    /// size of the first): a curve of them has no length worth reporting.
+    pub(crate) fn is_one_point(&self, points: impl IntoIterator<Item = Point<D>>) -> bool {
+        let mut points = points.into_iter();
+        let Some(first) = points.next() else {
+            return true;
+        };
+        let near = POLE_SPREAD * self.scale;
+        points.all(|p| p.distance(first) <= near) // false for NaN
+    }
+
+    /// The pole whose line holds cell coordinates `s` (exactly), if any.
+    pub(crate) fn pole_at(&self, s: [f64; 2]) -> Option<&Pole<D>> {
+        self.poles.iter().find(|p| s[p.axis] == p.at)
     }
 
     /// Blocks along `u` and `v`.

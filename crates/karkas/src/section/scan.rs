@@ -12,6 +12,8 @@
 //! inside one cell, or a piece that leaves a cell through the edge it entered, is missed. The
 //! grid must be finer than the smallest loop to be found (the `cells` option).
 
+use super::chords::split_chords;
+use super::lines::SHORTEST_CHORD;
 use super::plane::LevelFunction;
 use super::result::{SectionCurve, SectionWarning};
 use super::sample_grid::SampleGrid;
@@ -23,12 +25,27 @@ use std::collections::HashMap;
 /// Iterations of the edge root search (it converges far sooner).
 const ROOT_ITERATIONS: usize = 100;
 
+/// How far from a pole on the level set (in cells along an edge) the level function is taken
+/// in its place: at the pole it vanishes whichever way the curves leave it, while this close
+/// to it its sign tells on which side of the curves the edge starts.
+const POLE_OFFSET: f64 = 1e-6;
+
 /// One grid edge: from vertex `(a, b)` one step along `u` (`along_v == false`) or `v`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 struct Edge {
     a: usize,
     b: usize,
     along_v: bool,
+}
+
+/// A grid edge the level set crosses: between the fractions `t[0]` and `t[1]` of the edge
+/// (0 and 1 but next to a pole) the level function goes from `g[0]` to `g[1]`, of opposite
+/// signs.
+#[derive(Clone, Copy, Debug)]
+struct Crossing {
+    edge: Edge,
+    t: [f64; 2],
+    g: [f64; 2],
 }
 
 /// Marks of traced pieces on the grid.
@@ -63,40 +80,164 @@ pub(crate) fn trace_all<S: Surface<D> + ?Sized, F: LevelFunction<D>, const D: us
     let near = 4.0 * tracer.tolerance + 1e-9 * grid.scale;
     let mut curves = Vec::new();
     let mut warnings = Vec::new();
+    let mut pieces = Vec::new();
     let crossings = crossed_edges(tracer);
-    for (edge, g0, g1) in crossings {
+    for crossing in crossings {
+        let edge = crossing.edge;
         if visited.edges[edge_index(edge)] {
             continue;
         }
-        let s = edge_root(tracer, edge, g0, g1);
+        let s = edge_root(tracer, crossing);
         let Some((seed, _)) = tracer.correct(s, None) else {
             continue;
         };
-        if visited.near(grid, seed.s, seed.point, near) {
+        if grid.pole_at(seed.s).is_some() || visited.near(grid, seed.s, seed.point, near) {
+            // A seed at a pole is the pole: the curves through it are found from their
+            // crossings off the pole.
             visited.edges[edge_index(edge)] = true;
             continue;
         }
         let (nodes, closed, stops) = trace_piece(tracer, &seed);
+        let nodes = split_far_chords(tracer, nodes, closed);
         warnings.extend(stops);
         visited.edges[edge_index(edge)] = true;
         visited.file(grid, &nodes, closed, &edge_index);
-        if nodes.len() >= 2 {
-            curves.push(to_curve(grid, &nodes, closed));
+        pieces.push((nodes, closed));
+    }
+    join_at_poles(tracer, &mut pieces, &mut warnings);
+    for (nodes, closed) in &pieces {
+        if nodes.len() >= 2 && !grid.is_one_point(nodes.iter().map(|n| n.point)) {
+            curves.push(to_curve(grid, nodes, *closed));
         }
     }
     (curves, warnings)
 }
 
+/// Splits the chords of a traced piece that stray farther than the tolerance from the section
+/// (see `chords.rs`): the point between two nodes is their parameters' middle (or quarter)
+/// brought onto the level set by Newton's method.
+fn split_far_chords<S: Surface<D> + ?Sized, F: LevelFunction<D>, const D: usize>(
+    tracer: &Tracer<'_, S, F, D>,
+    nodes: Vec<Node<D>>,
+    closed: bool,
+) -> Vec<Node<D>> {
+    let grid = tracer.grid;
+    let on_arc = |a: &[f64; 2], b: &[f64; 2], t: f64| {
+        let s = [
+            a[0] + t * grid.u.reduce(b[0] - a[0]),
+            a[1] + t * grid.v.reduce(b[1] - a[1]),
+        ];
+        let (probe, _) = tracer.correct(s, None)?;
+        let inside = grid.contains(probe.s) && grid.pole_at(probe.s).is_none();
+        inside.then_some((probe.s, probe.point))
+    };
+    let shortest = SHORTEST_CHORD * grid.scale;
+    let nodes = nodes.into_iter().map(|n| (n.s, n.point)).collect();
+    split_chords(nodes, closed, tracer.tolerance, shortest, &on_arc)
+        .into_iter()
+        .map(|(s, point)| Node { s, point })
+        .collect()
+}
+
+/// Joins the pieces that end at the same pole (a collapsed border line, [`Pole`]): the
+/// section of a body through its nose is one curve through the nose, which the parameter
+/// plane splits into pieces ending on the pole line at different parameters. Two ends at a
+/// pole are joined into one curve (a piece with both ends there is closed); more ends are
+/// left apart (the curve crosses itself there). A pole on the level set that no piece
+/// reaches is a point where the plane touches the surface, and is reported.
+///
+/// [`Pole`]: super::sample_grid::Pole
+fn join_at_poles<S: Surface<D> + ?Sized, F: LevelFunction<D>, const D: usize>(
+    tracer: &Tracer<'_, S, F, D>,
+    pieces: &mut Vec<(Vec<Node<D>>, bool)>,
+    warnings: &mut Vec<SectionWarning>,
+) {
+    let grid = tracer.grid;
+    for pole in &grid.poles {
+        let at_pole = |n: &Node<D>| n.s[pole.axis] == pole.at;
+        let mut ends = Vec::new();
+        for (k, (nodes, closed)) in pieces.iter().enumerate() {
+            if *closed || nodes.len() < 2 {
+                continue;
+            }
+            if at_pole(&nodes[0]) {
+                ends.push((k, false));
+            }
+            if at_pole(&nodes[nodes.len() - 1]) {
+                ends.push((k, true));
+            }
+        }
+        match ends[..] {
+            [] if tracer.level.value(pole.point).abs() <= tracer.acceptable => {
+                let mut s = [0.0; 2];
+                s[pole.axis] = pole.at;
+                let (u, v) = grid.params(s);
+                warnings.push(SectionWarning::SingularPoint { u, v });
+            }
+            [(k, _), (j, _)] if k == j => {
+                let (nodes, closed) = &mut pieces[k];
+                nodes.pop(); // the pole again
+                *closed = true;
+            }
+            [(k, k_last), (j, j_last)] => {
+                let mut first = core::mem::take(&mut pieces[k].0);
+                let mut second = core::mem::take(&mut pieces[j].0);
+                if !k_last {
+                    first.reverse();
+                }
+                if j_last {
+                    second.reverse();
+                }
+                first.extend(second.into_iter().skip(1)); // the pole once
+                pieces[k].0 = first;
+                pieces.remove(j);
+            }
+            _ => {}
+        }
+    }
+}
+
 /// The grid edges whose ends differ in sign (NaN is no sign change; zero counts as positive),
 /// with the values at their ends.
+///
+/// An edge along a pole line (a collapsed border, one point) crosses nothing. An edge from a
+/// pole on the level set takes the level function [`POLE_OFFSET`] off the pole instead of at
+/// it (where it vanishes, with the sign of its rounding).
 fn crossed_edges<S: Surface<D> + ?Sized, F: LevelFunction<D>, const D: usize>(
     tracer: &Tracer<'_, S, F, D>,
-) -> Vec<(Edge, f64, f64)> {
+) -> Vec<Crossing> {
     let grid = tracer.grid;
     let level = tracer.level;
     let (nu, nv) = (grid.u.vertices(), grid.v.vertices());
     let value = |a: usize, b: usize| level.value(grid.points[a * nv + b]);
     let crossed = |g0: f64, g1: f64| g0.is_finite() && g1.is_finite() && (g0 < 0.0) != (g1 < 0.0);
+    // Poles on the level set, by direction: `on_level[axis]` lists their lines.
+    let mut on_level: [Vec<f64>; 2] = [Vec::new(), Vec::new()];
+    for pole in &grid.poles {
+        if level.value(pole.point).abs() <= tracer.acceptable {
+            on_level[pole.axis].push(pole.at);
+        }
+    }
+    let on_pole_line = |axis: usize, k: usize| {
+        grid.poles
+            .iter()
+            .any(|p| p.axis == axis && p.at == k as f64)
+    };
+    // The crossing of an edge from vertex (a, b) to (a1, b1) along direction `axis`.
+    let crossing = |edge: Edge, axis: usize, from: usize, ends: [(usize, usize); 2]| {
+        let mut t = [0.0, 1.0];
+        let mut g = [value(ends[0].0, ends[0].1), value(ends[1].0, ends[1].1)];
+        for (end, offset) in [(0, POLE_OFFSET), (1, -POLE_OFFSET)] {
+            let line = (from + end) as f64;
+            if on_level[axis].contains(&line) {
+                t[end] += offset;
+                let mut s = [edge.a as f64, edge.b as f64];
+                s[axis] += t[end];
+                g[end] = tracer.value(s);
+            }
+        }
+        crossed(g[0], g[1]).then_some(Crossing { edge, t, g })
+    };
     let (blocks_u, blocks_v) = grid.block_counts();
     let mut crossings = Vec::new();
     for bi in 0..blocks_u {
@@ -118,36 +259,24 @@ fn crossed_edges<S: Surface<D> + ?Sized, F: LevelFunction<D>, const D: usize>(
             // Edges along u start on the block's cells in u and its lines in v.
             for a in cells_u.clone() {
                 let a1 = if a + 1 == nu { 0 } else { a + 1 };
-                for b in lines_v.clone() {
-                    let (g0, g1) = (value(a, b), value(a1, b));
-                    if crossed(g0, g1) {
-                        crossings.push((
-                            Edge {
-                                a,
-                                b,
-                                along_v: false,
-                            },
-                            g0,
-                            g1,
-                        ));
-                    }
+                for b in lines_v.clone().filter(|&b| !on_pole_line(1, b)) {
+                    let edge = Edge {
+                        a,
+                        b,
+                        along_v: false,
+                    };
+                    crossings.extend(crossing(edge, 0, a, [(a, b), (a1, b)]));
                 }
             }
-            for a in lines_u {
+            for a in lines_u.filter(|&a| !on_pole_line(0, a)) {
                 for b in cells_v.clone() {
                     let b1 = if b + 1 == nv { 0 } else { b + 1 };
-                    let (g0, g1) = (value(a, b), value(a, b1));
-                    if crossed(g0, g1) {
-                        crossings.push((
-                            Edge {
-                                a,
-                                b,
-                                along_v: true,
-                            },
-                            g0,
-                            g1,
-                        ));
-                    }
+                    let edge = Edge {
+                        a,
+                        b,
+                        along_v: true,
+                    };
+                    crossings.extend(crossing(edge, 1, b, [(a, b), (a, b1)]));
                 }
             }
         }
@@ -179,13 +308,12 @@ fn trace_piece<S: Surface<D> + ?Sized, F: LevelFunction<D>, const D: usize>(
     (backward, false, warnings)
 }
 
-/// The crossing of the level set on `edge`, in cell coordinates.
+/// The crossing of the level set on an edge, in cell coordinates.
 fn edge_root<S: Surface<D> + ?Sized, F: LevelFunction<D>, const D: usize>(
     tracer: &Tracer<'_, S, F, D>,
-    edge: Edge,
-    g0: f64,
-    g1: f64,
+    crossing: Crossing,
 ) -> [f64; 2] {
+    let edge = crossing.edge;
     let at = |t: f64| {
         if edge.along_v {
             [edge.a as f64, edge.b as f64 + t]
@@ -194,7 +322,7 @@ fn edge_root<S: Surface<D> + ?Sized, F: LevelFunction<D>, const D: usize>(
         }
     };
     // Illinois: regula falsi that halves the retained end's value when it is kept twice.
-    let (mut t0, mut f0, mut t1, mut f1) = (0.0f64, g0, 1.0f64, g1);
+    let ([mut t0, mut t1], [mut f0, mut f1]) = (crossing.t, crossing.g);
     for _ in 0..ROOT_ITERATIONS {
         if f1.abs() <= tracer.converged || (t1 - t0).abs() <= 1e-15 {
             break;

@@ -2,7 +2,7 @@
 
 use super::lines::sample_line;
 use super::plane::{LevelFunction, Plane};
-use super::result::{condense, Section};
+use super::result::{condense, Section, SectionWarning};
 use super::sample_grid::SampleGrid;
 use super::scan::trace_all;
 use super::trace::Tracer;
@@ -27,7 +27,8 @@ pub const DEFAULT_RELATIVE_TOLERANCE: f64 = 1e-4;
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SectionOptions {
     /// The largest distance allowed between a section polyline and the true section curve
-    /// (the chord error), in the surface's units. `None` (the default):
+    /// (the chord error: every chord is measured against the arc it spans and split until it is
+    /// within the tolerance), in the surface's units. `None` (the default):
     /// [`DEFAULT_RELATIVE_TOLERANCE`] times the diagonal of the surface's bounding box (as
     /// sampled on the grid). The points themselves are always on the section to rounding.
     pub tolerance: Option<f64>,
@@ -129,13 +130,20 @@ impl<'s, S: Surface<D> + ?Sized, const D: usize> Sectioner<'s, S, D> {
             .surface
             .level_parameter_lines(plane.normal(), plane.offset())
         {
-            let curves = lines
-                .into_iter()
-                .map(|line| sample_line(self.surface, &self.grid, line, self.tolerance))
-                .collect();
+            let mut curves = Vec::new();
+            let mut warnings = Vec::new();
+            for line in lines {
+                let curve = sample_line(self.surface, &self.grid, line, self.tolerance);
+                if !self.grid.is_one_point(curve.points.iter().copied()) {
+                    curves.push(curve);
+                } else if let Some(&(u, v)) = curve.params.first() {
+                    // A line that is one point (a pole): the plane touches the surface there.
+                    warnings.push(SectionWarning::SingularPoint { u, v });
+                }
+            }
             return Section {
                 curves,
-                warnings: Vec::new(),
+                warnings,
                 fast_path: true,
             };
         }

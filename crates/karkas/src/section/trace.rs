@@ -13,8 +13,9 @@
 //! deviation from the arc (estimated as `h theta / 8` from the turn `theta`) is within the
 //! tolerance; otherwise `h` is cut. A step never spans more than one grid cell. At an open
 //! border the step is clipped to the border and the corrector runs along it; in a closed
-//! direction the trace runs across the seam. A curve ends at the border, when it comes back to
-//! its start (closed), or with a warning: at a singular point (the plane touching the surface),
+//! direction the trace runs across the seam. A curve ends at the border, at a pole (a border
+//! line that is one point, such as a body's nose, where the level function vanishes along the
+//! whole line), when it comes back to its start (closed), or with a warning: at a singular point (the plane touching the surface),
 //! when the step shrinks to nothing, or when the step budget runs out. No loop is unbounded.
 
 use super::plane::LevelFunction;
@@ -256,6 +257,16 @@ impl<S: Surface<D> + ?Sized, F: LevelFunction<D>, const D: usize> Tracer<'_, S, 
             };
             let chord = next.point - current.point;
             let length = chord.norm();
+            if self.grid.pole_at(next.s).is_some() {
+                // A pole on the level set: the whole line is one point, where the curve ends
+                // (and is joined to the curve leaving it; see `scan.rs`).
+                if moved > 0.5 * h || length.is_nan() || length <= 0.0 {
+                    h *= 0.5;
+                    continue;
+                }
+                out.push(next.node());
+                return Ending::Border;
+            }
             let Some(next_tangent) = self.tangent(&next, Some(&tangent), sign) else {
                 if moved <= 0.5 * h && length > 0.0 {
                     out.push(next.node());

@@ -40,5 +40,7 @@ mod param_bicubic;
 mod param_condition;
 mod param_spline;
 mod robust_properties;
+mod section_poles;
+mod section_tolerance;
 mod sections;
 mod variation;

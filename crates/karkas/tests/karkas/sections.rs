@@ -184,10 +184,7 @@ fn sections_of_an_exact_sphere_are_its_circles_within_the_tolerance() {
                 // The chord's midpoint is inside the circle by its deviation from the arc.
                 let mid = curve.points[a].lerp(curve.points[b], 0.5);
                 let deviation = radius - mid.distance(centre);
-                assert!(
-                    deviation <= 1.5 * tolerance,
-                    "chord deviates by {deviation:e}"
-                );
+                assert!(deviation <= tolerance, "chord deviates by {deviation:e}");
             }
             assert!(curve.points.iter().all(|q| (q.norm() - 1.0).abs() < 1e-12));
         }
