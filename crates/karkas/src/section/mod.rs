@@ -50,5 +50,6 @@ mod trace;
 pub use plane::{LevelFunction, Plane};
 pub use result::{Section, SectionCurve, SectionWarning};
 pub use sectioner::{
-    cells_for_grid, plane_section, SectionOptions, Sectioner, DEFAULT_RELATIVE_TOLERANCE, MAX_CELLS,
+    cells_for_grid, plane_section, SectionOptions, Sectioner, DEFAULT_RELATIVE_TOLERANCE,
+    MAX_CELLS, MIN_RELATIVE_TOLERANCE,
 };

@@ -23,6 +23,12 @@ pub fn cells_for_grid(rows: usize, cols: usize) -> (usize, usize) {
 /// The default tolerance, as a fraction of the diagonal of the surface's bounding box.
 pub const DEFAULT_RELATIVE_TOLERANCE: f64 = 1e-4;
 
+/// The smallest tolerance, as a fraction of the larger of the diagonal and the largest
+/// coordinate of the surface's samples: a chord error below it is under the rounding of the
+/// points (about `1e-16` of their size) times the conditioning of the continuation, cannot be
+/// measured, and would split every chord to its depth limit (millions of points).
+pub const MIN_RELATIVE_TOLERANCE: f64 = 1e-12;
+
 /// How sections are traced.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SectionOptions {
@@ -69,7 +75,8 @@ impl<'s, S: Surface<D> + ?Sized, const D: usize> Sectioner<'s, S, D> {
     /// Prepares sections of `surface`.
     ///
     /// Errors: [`Error::InvalidSetting`] for cells outside `3..=MAX_CELLS`, a tolerance that is
-    /// not positive and finite, a zero step budget; [`Error::InvalidDomain`] for a surface whose
+    /// not positive and finite or below [`MIN_RELATIVE_TOLERANCE`] of the surface's size, a
+    /// zero step budget; [`Error::InvalidDomain`] for a surface whose
     /// parameter domain is empty or not finite.
     pub fn new(surface: &'s S, options: &SectionOptions) -> Result<Self> {
         for (name, cells) in [("cells_u", options.cells.0), ("cells_v", options.cells.1)] {
@@ -107,6 +114,16 @@ impl<'s, S: Surface<D> + ?Sized, const D: usize> Sectioner<'s, S, D> {
             }
         }
         let grid = SampleGrid::new(surface, options.cells);
+        let size = grid.diagonal.max(grid.scale);
+        if let Some(t) = options.tolerance {
+            if t < MIN_RELATIVE_TOLERANCE * size {
+                return Err(Error::InvalidSetting {
+                    name: "tolerance",
+                    value: t,
+                    reason: "below 1e-12 of the surface's size, where chord errors are rounding",
+                });
+            }
+        }
         let tolerance = options.tolerance.unwrap_or_else(|| {
             (DEFAULT_RELATIVE_TOLERANCE * grid.diagonal.max(grid.scale)).max(f64::MIN_POSITIVE)
         });

@@ -262,3 +262,30 @@ fn the_tolerance_bounds_the_chord_error_on_the_fast_path() {
         }
     }
 }
+
+#[test]
+fn a_tolerance_below_rounding_is_refused_not_split_to_millions_of_points() {
+    // A tolerance of 5e-324 used to split every chord 24 times (2^24 points each), which ran
+    // the memory out; the torus is about 3 across.
+    let torus = &ll_tori()[0];
+    for tolerance in [5e-324, 1e-300, 1e-13] {
+        let options = SectionOptions {
+            tolerance: Some(tolerance),
+            ..SectionOptions::default()
+        };
+        let e = Sectioner::new(torus, &options).err().expect("refused");
+        assert!(
+            e.to_string().contains("below 1e-12 of the surface's size"),
+            "{e}"
+        );
+    }
+    let options = SectionOptions {
+        tolerance: Some(1e-10),
+        ..SectionOptions::default()
+    };
+    let section = Sectioner::new(torus, &options)
+        .unwrap()
+        .plane(&plane([0.3, 0.2, 1.0], 0.25));
+    let points: usize = section.curves.iter().map(|c| c.points.len()).sum();
+    assert!(points > 1000 && points < 1_000_000, "{points}");
+}
