@@ -38,7 +38,7 @@ pub fn run(args: &SurfaceLlArgs) -> Result<()> {
     let surface = args.ll.build(&grid, &args.grid.input)?;
     let title = format!(
         "LL surface, L = {}, {} x {} grid",
-        args.ll.order,
+        args.ll.order(),
         grid.rows(),
         grid.cols()
     );

@@ -22,6 +22,7 @@ mod output_bounds;
 mod pictures;
 mod reading;
 mod section;
+mod section_methods;
 mod section_poles;
 mod surface_bicubic;
 mod surface_coons;
