@@ -9,9 +9,10 @@ use crate::output::curve::curvature_comb;
 use crate::output::overwrite::ensure_distinct;
 use crate::output::samples::MAX_SAMPLES;
 use anyhow::{bail, Context, Result};
-use clap::Args;
+use clap::{Args, ValueEnum};
 use karkas::dps::MAX_ORDER;
 use karkas::ll::{LlKernel, LlSurface};
+use karkas::param::GridParameterization;
 use karkas::{Curve, Grid, Point2, Point3};
 use karkas_io::grid::read_grid;
 use karkas_io::mesh::MeshOptions;
@@ -79,9 +80,14 @@ pub struct GridInput {
 impl GridInput {
     /// Reads the grid, after refusing an `output` that would overwrite it.
     pub fn read_for(&self, output: &Path) -> Result<Grid<Point3>> {
-        ensure_distinct(&self.input, output)?;
-        Ok(read_grid(&self.input)?)
+        read_grid_for(&self.input, output)
     }
+}
+
+/// Reads the grid at `input`, after refusing an `output` that would overwrite it.
+pub fn read_grid_for(input: &Path, output: &Path) -> Result<Grid<Point3>> {
+    ensure_distinct(input, output)?;
+    Ok(read_grid(input)?)
 }
 
 /// `--closed-u`, `--closed-v` of the commands that build a surface from a grid.
@@ -98,9 +104,9 @@ pub struct ClosedUv {
 /// The options of an LL surface (`surface ll`, `section --method ll`).
 #[derive(Debug, Args)]
 pub struct LlSurfaceOptions {
-    /// LL order L (at least 1): the surface is C^L in each variable.
-    #[arg(long, default_value_t = karkas::ll::DEFAULT_ORDER)]
-    pub order: usize,
+    /// LL order L (at least 1): the surface is C^L in each variable [default: 3].
+    #[arg(long)]
+    pub order: Option<usize>,
     #[command(flatten)]
     pub closed: ClosedUv,
     /// Pass through every grid point instead of approximating the grid.
@@ -109,9 +115,14 @@ pub struct LlSurfaceOptions {
 }
 
 impl LlSurfaceOptions {
+    /// The order given, else [`karkas::ll::DEFAULT_ORDER`].
+    pub fn order(&self) -> usize {
+        self.order.unwrap_or(karkas::ll::DEFAULT_ORDER)
+    }
+
     /// Refuses an order the LL kernel does not have.
     pub fn check(&self) -> Result<()> {
-        check_ll_order(self.order)
+        check_ll_order(self.order())
     }
 
     /// The LL surface of `grid` (read from `input`, which errors name).
@@ -121,8 +132,53 @@ impl LlSurfaceOptions {
         } else {
             LlSurface::new
         };
-        build(grid, self.order, self.closed.closed_u, self.closed.closed_v)
-            .with_context(|| input.display().to_string())
+        build(
+            grid,
+            self.order(),
+            self.closed.closed_u,
+            self.closed.closed_v,
+        )
+        .with_context(|| input.display().to_string())
+    }
+}
+
+/// The parameterizations of `--param`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum ParamKind {
+    /// u_i = i, v_j = j.
+    Uniform,
+    /// Chord lengths along the row and the column through node (0, 0) (Kuznetsov and Filatov's rule).
+    Chord,
+    /// Chord lengths averaged over all rows and columns (also spelled averaged-chord).
+    #[value(alias = "averaged-chord")]
+    Averaged,
+    /// Square roots of chord lengths averaged over all rows and columns.
+    Centripetal,
+}
+
+impl ParamKind {
+    /// The library's parameterization, by the library's parser of names (the one Python's
+    /// `parameterization=` uses).
+    pub fn to_library(self) -> GridParameterization {
+        let name = self.to_possible_value().map(|v| v.get_name().to_owned());
+        name.and_then(|n| n.parse().ok()).unwrap_or_default()
+    }
+}
+
+/// `--param` of the bicubic interpolant of a grid (`surface bicubic`, `section --method
+/// bicubic`).
+#[derive(Debug, Args)]
+pub struct GridParamOption {
+    /// Parameters of the grid nodes [default: chord] (--parameterization is the same option,
+    /// by Python's name).
+    #[arg(long, value_enum, visible_alias = "parameterization")]
+    pub param: Option<ParamKind>,
+}
+
+impl GridParamOption {
+    /// The parameterization given, else chord lengths.
+    pub fn kind(&self) -> ParamKind {
+        self.param.unwrap_or(ParamKind::Chord)
     }
 }
 
@@ -292,6 +348,30 @@ mod tests {
         assert_eq!(
             parse_finite_list::<2>("1", "A,B (two numbers)"),
             Err("expected A,B (two numbers), got '1'".to_owned())
+        );
+    }
+
+    /// Every name of `--param` is one of the library's, and means the same rule.
+    #[test]
+    fn param_names_are_the_library_names() {
+        let expected = [
+            (ParamKind::Uniform, GridParameterization::Uniform),
+            (ParamKind::Chord, GridParameterization::default()),
+            (ParamKind::Averaged, GridParameterization::AveragedChord),
+            (ParamKind::Centripetal, GridParameterization::Centripetal),
+        ];
+        for (kind, rule) in expected {
+            assert_eq!(kind.to_library(), rule);
+            let name = kind.to_possible_value().map(|v| v.get_name().to_owned());
+            assert!(GridParameterization::NAMES.contains(&name.as_deref().unwrap_or("")));
+        }
+        assert_eq!(
+            ParamKind::from_str("averaged-chord", false),
+            Ok(ParamKind::Averaged)
+        );
+        assert_eq!(
+            ParamKind::Chord.to_library().name(),
+            GridParameterization::DEFAULT_NAME
         );
     }
 }

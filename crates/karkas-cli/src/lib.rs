@@ -47,7 +47,7 @@ enum Command {
     Surface(cmd::SurfaceCommand),
     /// Two-sided Hausdorff distance between point sets or a point set and F(x, y, z) = 0.
     Hausdorff(cmd::hausdorff::HausdorffArgs),
-    /// Cut a surface built from a grid by planes: sections and isolines.
+    /// Cut a surface (of a grid or of a curve network) by planes: sections and isolines.
     Section(cmd::section::SectionArgs),
     /// Vary one coordinate of a grid through new row sums, column sums and total.
     Vary(cmd::vary::VaryArgs),

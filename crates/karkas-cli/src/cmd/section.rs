@@ -1,41 +1,81 @@
-//! `karkas section`: plane sections of a surface built from a grid (Aulchenko et al., docs/methods.md §1.4).
+//! `karkas section`: plane sections of a surface (Aulchenko et al., docs/methods.md §1.4): the
+//! LL surface of a grid, the bicubic interpolant of a grid (Kuznetsov and Filatov,
+//! docs/methods.md §5) or the Coons / Gordon surface of a curve network (Chashnikov,
+//! docs/methods.md §2), each built as the `surface` command of the same name builds it.
 //!
 //! The planes come from `--plane nx,ny,nz,c` (the plane `nx x + ny y + nz z = c`) and the
 //! shorthands `--x X`, `--y Y`, `--z Z` (each repeatable, each taking a comma list). Sections
 //! are numbered from 0 over all pieces, planes taken in this order: every `--plane` as given,
 //! then the `--x` values, the `--y` values, the `--z` values.
 
-use crate::args::{parse_finite_list, parse_pair_with, parse_whole, GridInput, LlSurfaceOptions};
+use super::surface_coons::{network_surface, Kind, NetworkFiles};
+use crate::args::{
+    parse_finite_list, parse_pair_with, parse_whole, read_grid_for, GridParamOption,
+    LlSurfaceOptions,
+};
 use crate::input::grid_points;
 use crate::output::console::note;
 use crate::output::samples::sample_surface;
 use crate::output::target::{output_format, shown};
 use anyhow::{bail, Context, Result};
 use clap::{Args, ValueEnum};
+use karkas::param::BicubicSurface;
 use karkas::section::{cells_for_grid, Plane, Section, SectionOptions, Sectioner, MAX_CELLS};
-use karkas::Point3;
+use karkas::{Point3, Surface};
 use karkas_io::scene::{write_scene_png, write_scene_svg, Scene, SceneCurves, SceneMesh, View};
 use karkas_io::write::write_sections_csv;
 use karkas_io::OutputFormat;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// The surface methods a section can be taken of.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 pub enum SurfaceMethod {
-    /// LL-approximation (Aulchenko et al.), as `karkas surface ll` builds it.
+    /// LL-approximation (Aulchenko et al.) of INPUT_GRID, as `karkas surface ll` builds it.
     Ll,
+    /// Bicubic interpolation (Kuznetsov and Filatov) of INPUT_GRID, as `karkas surface
+    /// bicubic` builds it.
+    Bicubic,
+    /// Coons or Gordon surface of the curve network of --u-curves and --v-curves (no
+    /// INPUT_GRID), as `karkas surface coons` builds it.
+    Coons,
+}
+
+impl SurfaceMethod {
+    /// The name of `--method`.
+    fn name(self) -> &'static str {
+        match self {
+            SurfaceMethod::Ll => "ll",
+            SurfaceMethod::Bicubic => "bicubic",
+            SurfaceMethod::Coons => "coons",
+        }
+    }
 }
 
 /// Arguments of `karkas section`.
 #[derive(Debug, Args)]
 pub struct SectionArgs {
-    #[command(flatten)]
-    grid: GridInput,
-    /// How the surface is built from the grid.
+    /// Input grid (--method ll and bicubic): CSV with header i,j,x,y,z (indices from 0, rows
+    /// in any order).
+    #[arg(value_name = "INPUT_GRID")]
+    input: Option<PathBuf>,
+    /// The surface to cut.
     #[arg(long, value_enum)]
     method: SurfaceMethod,
+    /// --method ll: --order, --interpolate; --method ll and bicubic: --closed-u, --closed-v.
     #[command(flatten)]
     ll: LlSurfaceOptions,
+    /// --method bicubic only.
+    #[command(flatten)]
+    param: GridParamOption,
+    /// --method coons: the surface to build, as `surface coons --kind` takes it.
+    #[arg(long, value_enum)]
+    kind: Option<Kind>,
+    /// --method coons: the curves running along u, as `surface coons --u-curves` takes them.
+    #[arg(long, value_name = "U.csv")]
+    u_curves: Option<PathBuf>,
+    /// --method coons: the curves running along v, as `surface coons --v-curves` takes them.
+    #[arg(long, value_name = "V.csv")]
+    v_curves: Option<PathBuf>,
     /// A cutting plane nx,ny,nz,c: the plane nx*x + ny*y + nz*z = c (repeatable).
     #[arg(long = "plane", value_name = "NX,NY,NZ,C", value_parser = parse_plane,
           allow_hyphen_values = true)]
@@ -117,12 +157,24 @@ fn diagonal(points: &[Point3]) -> f64 {
     (0..3).map(|c| hi[c] - lo[c]).fold(0.0, f64::hypot)
 }
 
+/// What the sections are cut from: the defaults it gives and how the picture names it.
+struct Source {
+    /// The diagonal of the bounding box of its points (grid or curve points).
+    diagonal: f64,
+    /// Points along u and v (grid lines, or the longest curve of each family): the default
+    /// cells and the picture's mesh follow them.
+    lines: (usize, usize),
+    /// The surface, for the picture's title: "the LL surface (L = 3) of sphere.csv".
+    title: String,
+}
+
 /// Runs `karkas section`.
 pub fn run(args: &SectionArgs) -> Result<()> {
     let format = output_format(
         &args.output,
         &[OutputFormat::Csv, OutputFormat::Svg, OutputFormat::Png],
     )?;
+    check_method_options(args)?;
     args.ll.check()?;
     if let Some(t) = args.tolerance {
         if !(t.is_finite() && t > 0.0) {
@@ -130,10 +182,158 @@ pub fn run(args: &SectionArgs) -> Result<()> {
         }
     }
     let cuts = planes(args)?;
-    let grid = args.grid.read_for(&args.output)?;
-    grid_points(&args.grid.input, grid.as_slice())?;
+    match (args.method, &args.input) {
+        (SurfaceMethod::Coons, _) => {
+            let (Some(u_curves), Some(v_curves), Some(kind)) =
+                (&args.u_curves, &args.v_curves, args.kind)
+            else {
+                bail!("--method coons needs --kind, --u-curves U.csv and --v-curves V.csv");
+            };
+            let files = NetworkFiles {
+                u_curves,
+                v_curves,
+                u_derivs: None,
+                v_derivs: None,
+                twists: None,
+                tolerance: None,
+                repair: false,
+            };
+            let (surface, u_family, v_family) = network_surface(kind, &files, &args.output)?;
+            let points: Vec<Point3> = u_family
+                .curves
+                .iter()
+                .chain(&v_family.curves)
+                .flatten()
+                .copied()
+                .collect();
+            let longest = |curves: &[Vec<Point3>]| curves.iter().map(Vec::len).max().unwrap_or(0);
+            let kind_name = kind
+                .to_possible_value()
+                .map_or_else(String::new, |v| v.get_name().to_owned());
+            let source = Source {
+                diagonal: diagonal(&points),
+                lines: (longest(&u_family.curves), longest(&v_family.curves)),
+                title: format!(
+                    "the {kind_name} surface of {}, {}",
+                    file_name(u_curves),
+                    file_name(v_curves)
+                ),
+            };
+            cut(args, format, &cuts, &surface, &source)
+        }
+        (method, Some(input)) => {
+            let grid = read_grid_for(input, &args.output)?;
+            grid_points(input, grid.as_slice())?;
+            let source = Source {
+                diagonal: diagonal(grid.as_slice()),
+                lines: (grid.rows(), grid.cols()),
+                title: String::new(),
+            };
+            if method == SurfaceMethod::Bicubic {
+                let (closed_u, closed_v) = (args.ll.closed.closed_u, args.ll.closed.closed_v);
+                let param = args.param.kind();
+                let surface = BicubicSurface::new(&grid, param.to_library(), closed_u, closed_v)
+                    .with_context(|| input.display().to_string())?;
+                let param_name = param
+                    .to_possible_value()
+                    .map_or_else(String::new, |v| v.get_name().to_owned());
+                let title = format!(
+                    "the bicubic surface ({param_name} parameters) of {}",
+                    file_name(input)
+                );
+                cut(args, format, &cuts, &surface, &Source { title, ..source })
+            } else {
+                let surface = args.ll.build(&grid, input)?;
+                let title = format!(
+                    "the LL surface (L = {}) of {}",
+                    args.ll.order(),
+                    file_name(input)
+                );
+                cut(args, format, &cuts, &surface, &Source { title, ..source })
+            }
+        }
+        (method, None) => bail!(
+            "--method {} needs INPUT_GRID, the grid CSV to build the surface from",
+            method.name()
+        ),
+    }
+}
+
+/// Refuses the options the chosen `--method` does not use, and a grid given to `--method
+/// coons`, naming them.
+fn check_method_options(args: &SectionArgs) -> Result<()> {
+    let method = args.method;
+    let groups = [
+        (
+            SurfaceMethod::Ll,
+            vec![
+                (args.ll.order.is_some(), "--order"),
+                (args.ll.interpolate, "--interpolate"),
+            ],
+        ),
+        (
+            SurfaceMethod::Bicubic,
+            vec![(args.param.param.is_some(), "--param")],
+        ),
+        (
+            SurfaceMethod::Coons,
+            vec![
+                (args.kind.is_some(), "--kind"),
+                (args.u_curves.is_some(), "--u-curves"),
+                (args.v_curves.is_some(), "--v-curves"),
+            ],
+        ),
+    ];
+    for (user, options) in groups {
+        let given: Vec<&str> = options
+            .iter()
+            .filter(|(given, _)| *given)
+            .map(|(_, name)| *name)
+            .collect();
+        if user != method && !given.is_empty() {
+            let verb = if given.len() == 1 { "is" } else { "are" };
+            bail!(
+                "{} {verb} used only by --method {}, not --method {}",
+                given.join(", "),
+                user.name(),
+                method.name()
+            );
+        }
+    }
+    if method == SurfaceMethod::Coons {
+        if args.ll.closed.closed_u || args.ll.closed.closed_v {
+            bail!(
+                "--closed-u / --closed-v are not used by --method coons: a curve whose last \
+                 point repeats its first closes its direction"
+            );
+        }
+        if let Some(input) = &args.input {
+            bail!(
+                "--method coons takes no INPUT_GRID (got {}): the network is read from \
+                 --u-curves and --v-curves",
+                input.display()
+            );
+        }
+    }
+    Ok(())
+}
+
+/// The file name of `path`, for titles.
+fn file_name(path: &Path) -> String {
+    path.file_name()
+        .map_or_else(String::new, |n| n.to_string_lossy().into_owned())
+}
+
+/// Cuts `surface` by every plane of `cuts` and writes the sections in `format`.
+fn cut<S: Surface<3>>(
+    args: &SectionArgs,
+    format: OutputFormat,
+    cuts: &[Cut],
+    surface: &S,
+    source: &Source,
+) -> Result<()> {
     if let Some(t) = args.tolerance {
-        let floor = MIN_RELATIVE_TOLERANCE * diagonal(grid.as_slice());
+        let floor = MIN_RELATIVE_TOLERANCE * source.diagonal;
         if t < floor {
             bail!(
                 "--tolerance: {t:e} is below what floating point resolves on this surface \
@@ -141,15 +341,13 @@ pub fn run(args: &SectionArgs) -> Result<()> {
             );
         }
     }
-    let surface = args.ll.build(&grid, &args.grid.input)?;
+    let (rows, cols) = source.lines;
     let options = SectionOptions {
         tolerance: args.tolerance,
-        cells: args
-            .cells
-            .unwrap_or_else(|| cells_for_grid(grid.rows(), grid.cols())),
+        cells: args.cells.unwrap_or_else(|| cells_for_grid(rows, cols)),
         ..SectionOptions::default()
     };
-    let sectioner = Sectioner::new(&surface, &options)?;
+    let sectioner = Sectioner::new(surface, &options)?;
 
     let mut lines: Vec<Vec<Point3>> = Vec::new();
     let mut groups: [Vec<Vec<Point3>>; 4] = Default::default();
@@ -168,8 +366,8 @@ pub fn run(args: &SectionArgs) -> Result<()> {
     match format {
         OutputFormat::Csv => write_sections_csv(&args.output, &lines)?,
         _ => {
-            let (nu, nv) = (mesh_samples(grid.rows()), mesh_samples(grid.cols()));
-            let (_, _, mesh) = sample_surface(&surface, nu, nv);
+            let (nu, nv) = (mesh_samples(rows), mesh_samples(cols));
+            let (_, _, mesh) = sample_surface(surface, nu, nv);
             let labels: Vec<String> = groups
                 .iter()
                 .zip(GROUPS)
@@ -190,15 +388,7 @@ pub fn run(args: &SectionArgs) -> Result<()> {
                     width: 1.6,
                 })
                 .collect();
-            let title = format!(
-                "{} sections of the LL surface (L = {}) of {}",
-                cuts.len(),
-                args.ll.order,
-                args.grid
-                    .input
-                    .file_name()
-                    .map_or_else(String::new, |n| n.to_string_lossy().into_owned())
-            );
+            let title = format!("{} sections of {}", cuts.len(), source.title);
             let scene = Scene {
                 title: &title,
                 mesh: SceneMesh {

@@ -1,38 +1,17 @@
 //! `karkas surface bicubic`: the bicubic interpolant of a grid of points with chosen
 //! parameters (Kuznetsov and Filatov, docs/methods.md §5).
 
-use crate::args::{parse_whole, ClosedUv, GridInput, GridSamples, MeshOutput};
+use crate::args::{
+    parse_whole, ClosedUv, GridInput, GridParamOption, GridSamples, MeshOutput, ParamKind,
+};
 use crate::input::grid_points;
 use crate::output::formats::EXACT_SURFACE_FORMATS;
 use crate::output::surface::write_grid_surface;
 use crate::output::target::output_format;
 use anyhow::{bail, Context, Result};
-use clap::{Args, ValueEnum};
+use clap::Args;
 use karkas::param::{BicubicSurface, ConditionSummary, GridParameterization};
 use std::path::PathBuf;
-
-/// The parameterizations of `--param`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
-pub enum ParamKind {
-    /// u_i = i, v_j = j.
-    Uniform,
-    /// Chord lengths along the row and the column through node (0, 0) (Kuznetsov and Filatov's rule).
-    Chord,
-    /// Chord lengths averaged over all rows and columns (also spelled averaged-chord).
-    #[value(alias = "averaged-chord")]
-    Averaged,
-    /// Square roots of chord lengths averaged over all rows and columns.
-    Centripetal,
-}
-
-impl ParamKind {
-    /// The library's parameterization, by the library's parser of names (the one Python's
-    /// `parameterization=` uses).
-    pub fn to_library(self) -> GridParameterization {
-        let name = self.to_possible_value().map(|v| v.get_name().to_owned());
-        name.and_then(|n| n.parse().ok()).unwrap_or_default()
-    }
-}
 
 /// Arguments of `karkas surface bicubic`.
 #[derive(Debug, Args)]
@@ -41,11 +20,8 @@ impl ParamKind {
      grid line in each direction, at least 50]"
 )))]
 pub struct SurfaceBicubicArgs {
-    /// Parameters of the grid nodes (--parameterization is the same option, by Python's
-    /// name).
-    #[arg(long, value_enum, default_value_t = ParamKind::Chord,
-          visible_alias = "parameterization")]
-    param: ParamKind,
+    #[command(flatten)]
+    param: GridParamOption,
     /// The origin node I,J of --param chord (Kuznetsov and Filatov's (i*, j*)): u is the chord
     /// length along column J, v along row I, both zero at the node [default: 0,0].
     #[arg(long, value_name = "I,J", value_parser = parse_origin)]
@@ -78,7 +54,7 @@ pub fn run(args: &SurfaceBicubicArgs) -> Result<()> {
     let grid = args.grid.read_for(&args.output)?;
     grid_points(&args.grid.input, grid.as_slice())?;
     let (closed_u, closed_v) = (args.closed.closed_u, args.closed.closed_v);
-    let rule = parameterization(args.param, args.origin, (grid.rows(), grid.cols()))?;
+    let rule = parameterization(args.param.kind(), args.origin, (grid.rows(), grid.cols()))?;
     let surface = BicubicSurface::new(&grid, rule, closed_u, closed_v)
         .with_context(|| args.grid.input.display().to_string())?;
     if args.report {
@@ -142,33 +118,4 @@ fn condition_report(summary: &ConditionSummary) -> String {
          {} nodes (1 = arc lengths along orthogonal lines)",
         summary.min, summary.mean, summary.nodes
     )
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// Every name of `--param` is one of the library's, and means the same rule.
-    #[test]
-    fn param_names_are_the_library_names() {
-        let expected = [
-            (ParamKind::Uniform, GridParameterization::Uniform),
-            (ParamKind::Chord, GridParameterization::default()),
-            (ParamKind::Averaged, GridParameterization::AveragedChord),
-            (ParamKind::Centripetal, GridParameterization::Centripetal),
-        ];
-        for (kind, rule) in expected {
-            assert_eq!(kind.to_library(), rule);
-            let name = kind.to_possible_value().map(|v| v.get_name().to_owned());
-            assert!(GridParameterization::NAMES.contains(&name.as_deref().unwrap_or("")));
-        }
-        assert_eq!(
-            ParamKind::from_str("averaged-chord", false),
-            Ok(ParamKind::Averaged)
-        );
-        assert_eq!(
-            ParamKind::Chord.to_library().name(),
-            GridParameterization::DEFAULT_NAME
-        );
-    }
 }

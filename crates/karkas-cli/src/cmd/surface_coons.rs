@@ -17,8 +17,8 @@ use crate::output::target::output_format;
 use anyhow::{anyhow, bail, Context, Result};
 use clap::{Args, ValueEnum};
 use karkas::coons::{
-    Compatibility, CoonsKind, CrossDerivatives, CurveFit, PointNetwork, Repair, CROSSING_TOLERANCE,
-    POINT_NETWORK_TOLERANCE,
+    Compatibility, CoonsKind, CoonsSurface, CrossDerivatives, CurveFit, PointNetwork, Repair,
+    CROSSING_TOLERANCE, POINT_NETWORK_TOLERANCE,
 };
 use karkas::Error;
 use karkas_io::grid::read_grid;
@@ -101,94 +101,16 @@ pub fn run(args: &SurfaceCoonsArgs) -> Result<()> {
     let format = output_format(&args.output, &EXACT_SURFACE_FORMATS)?;
     args.samples.check()?;
     args.mesh.check(format)?;
-    if args.u_derivs.is_some() != args.v_derivs.is_some() {
-        bail!("--u-derivs and --v-derivs go together: give both or neither");
-    }
-    if let Some(t) = args.tolerance {
-        if !(t.is_finite() && t >= 0.0) {
-            bail!("--tolerance must be a finite number >= 0, got {t}");
-        }
-    }
-    let with_derivs = args.u_derivs.is_some();
-    if with_derivs && !matches!(args.kind, Kind::Bicubic | Kind::Composite) {
-        bail!("--u-derivs and --v-derivs are used only by --kind bicubic and composite");
-    }
-    if args.twists.is_some() && !matches!(args.kind, Kind::Bicubic | Kind::Composite) {
-        bail!("--twists is used only by --kind bicubic and composite");
-    }
-    let mut named = vec![
-        ("--u-curves", args.u_curves.as_path()),
-        ("--v-curves", &args.v_curves),
-    ];
-    named.extend(args.u_derivs.as_deref().map(|p| ("--u-derivs", p)));
-    named.extend(args.v_derivs.as_deref().map(|p| ("--v-derivs", p)));
-    named.extend(args.twists.as_deref().map(|p| ("--twists", p)));
-    one_standard_input(&named)?;
-    let inputs = [&args.u_curves, &args.v_curves]
-        .into_iter()
-        .chain(args.u_derivs.as_ref())
-        .chain(args.v_derivs.as_ref())
-        .chain(args.twists.as_ref());
-    for input in inputs {
-        ensure_distinct(input, &args.output)?;
-    }
-
-    let u_family = read_family(&args.u_curves)?;
-    let v_family = read_family(&args.v_curves)?;
-    let files = Files {
-        u: &args.u_curves,
-        v: &args.v_curves,
-        u_family: &u_family,
-        v_family: &v_family,
+    let files = NetworkFiles {
+        u_curves: &args.u_curves,
+        v_curves: &args.v_curves,
+        u_derivs: args.u_derivs.as_deref(),
+        v_derivs: args.v_derivs.as_deref(),
+        twists: args.twists.as_deref(),
+        tolerance: args.tolerance,
+        repair: args.repair,
     };
-    let network = PointNetwork::new(
-        &v_family.curves,
-        &u_family.curves,
-        CurveFit::CubicSpline,
-        CROSSING_TOLERANCE,
-    )
-    .map_err(|e| files.explain(e))?;
-    let cross = match (&args.u_derivs, &args.v_derivs) {
-        (Some(du), Some(dv)) => {
-            let (du_family, dv_family) = (read_family(du)?, read_family(dv)?);
-            let derivs = network
-                .cross_derivatives(&dv_family.curves, &du_family.curves)
-                .with_context(|| format!("{}, {}", du.display(), dv.display()))?;
-            Some(derivs)
-        }
-        _ => match &args.twists {
-            Some(path) => {
-                let twists = read_grid(path)?;
-                let derivs = CrossDerivatives::from_twists(network.network(), &twists)
-                    .with_context(|| {
-                        format!(
-                            "{}: {} v-curves x {} u-curves",
-                            path.display(),
-                            v_family.curves.len(),
-                            u_family.curves.len()
-                        )
-                    })?;
-                Some(derivs)
-            }
-            None => None,
-        },
-    };
-    if args.kind == Kind::Gordon {
-        warn_lagrange_seam(&network);
-    }
-    let compatibility = if args.repair {
-        Compatibility::Repair
-    } else {
-        Compatibility::Check(args.tolerance.unwrap_or(POINT_NETWORK_TOLERANCE))
-    };
-    let surface = args
-        .kind
-        .to_library()
-        .build(network.network(), cross.as_ref(), compatibility)
-        .map_err(|e| files.explain(e))?;
-    if let Some(repair) = surface.repair() {
-        report_repair(repair);
-    }
+    let (surface, u_family, v_family) = network_surface(args.kind, &files, &args.output)?;
     if format.is_cad() {
         let what = format!("{}, {}", args.u_curves.display(), args.v_curves.display());
         return write_cad_surface(&surface, format, &args.output, what);
@@ -210,6 +132,117 @@ pub fn run(args: &SurfaceCoonsArgs) -> Result<()> {
         None,
         &args.mesh.options(false),
     )
+}
+
+/// The files of a curve network (`--u-curves`, `--v-curves`, the optional `--u-derivs`,
+/// `--v-derivs` and `--twists`) and how its compatibility is settled (`--tolerance`,
+/// `--repair`).
+pub(crate) struct NetworkFiles<'a> {
+    pub u_curves: &'a Path,
+    pub v_curves: &'a Path,
+    pub u_derivs: Option<&'a Path>,
+    pub v_derivs: Option<&'a Path>,
+    pub twists: Option<&'a Path>,
+    pub tolerance: Option<f64>,
+    pub repair: bool,
+}
+
+/// Reads the network of `files` (none of which may be `output`) and builds its surface of
+/// `kind`; also returns the u- and v-curve families as read. Errors name the options, files
+/// and lines at fault.
+pub(crate) fn network_surface(
+    kind: Kind,
+    files: &NetworkFiles<'_>,
+    output: &Path,
+) -> Result<(CoonsSurface<3>, CurveFamily, CurveFamily)> {
+    if files.u_derivs.is_some() != files.v_derivs.is_some() {
+        bail!("--u-derivs and --v-derivs go together: give both or neither");
+    }
+    if let Some(t) = files.tolerance {
+        if !(t.is_finite() && t >= 0.0) {
+            bail!("--tolerance must be a finite number >= 0, got {t}");
+        }
+    }
+    let with_derivs = files.u_derivs.is_some();
+    if with_derivs && !matches!(kind, Kind::Bicubic | Kind::Composite) {
+        bail!("--u-derivs and --v-derivs are used only by --kind bicubic and composite");
+    }
+    if files.twists.is_some() && !matches!(kind, Kind::Bicubic | Kind::Composite) {
+        bail!("--twists is used only by --kind bicubic and composite");
+    }
+    let mut named = vec![
+        ("--u-curves", files.u_curves),
+        ("--v-curves", files.v_curves),
+    ];
+    named.extend(files.u_derivs.map(|p| ("--u-derivs", p)));
+    named.extend(files.v_derivs.map(|p| ("--v-derivs", p)));
+    named.extend(files.twists.map(|p| ("--twists", p)));
+    one_standard_input(&named)?;
+    let inputs = [files.u_curves, files.v_curves]
+        .into_iter()
+        .chain(files.u_derivs)
+        .chain(files.v_derivs)
+        .chain(files.twists);
+    for input in inputs {
+        ensure_distinct(input, output)?;
+    }
+
+    let u_family = read_family(files.u_curves)?;
+    let v_family = read_family(files.v_curves)?;
+    let places = Files {
+        u: files.u_curves,
+        v: files.v_curves,
+        u_family: &u_family,
+        v_family: &v_family,
+    };
+    let network = PointNetwork::new(
+        &v_family.curves,
+        &u_family.curves,
+        CurveFit::CubicSpline,
+        CROSSING_TOLERANCE,
+    )
+    .map_err(|e| places.explain(e))?;
+    let cross = match (files.u_derivs, files.v_derivs) {
+        (Some(du), Some(dv)) => {
+            let (du_family, dv_family) = (read_family(du)?, read_family(dv)?);
+            let derivs = network
+                .cross_derivatives(&dv_family.curves, &du_family.curves)
+                .with_context(|| format!("{}, {}", du.display(), dv.display()))?;
+            Some(derivs)
+        }
+        _ => match files.twists {
+            Some(path) => {
+                let twists = read_grid(path)?;
+                let derivs = CrossDerivatives::from_twists(network.network(), &twists)
+                    .with_context(|| {
+                        format!(
+                            "{}: {} v-curves x {} u-curves",
+                            path.display(),
+                            v_family.curves.len(),
+                            u_family.curves.len()
+                        )
+                    })?;
+                Some(derivs)
+            }
+            None => None,
+        },
+    };
+    if kind == Kind::Gordon {
+        warn_lagrange_seam(&network);
+    }
+    let compatibility = if files.repair {
+        Compatibility::Repair
+    } else {
+        Compatibility::Check(files.tolerance.unwrap_or(POINT_NETWORK_TOLERANCE))
+    };
+    let surface = kind
+        .to_library()
+        .build(network.network(), cross.as_ref(), compatibility)
+        .map_err(|e| places.explain(e))?;
+    if let Some(repair) = surface.repair() {
+        report_repair(repair);
+    }
+    Ok((surface, u_family, v_family))
 }
 
 impl Kind {

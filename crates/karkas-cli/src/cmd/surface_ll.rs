@@ -54,7 +54,7 @@ pub fn run(args: &SurfaceLlArgs) -> Result<()> {
             let closed = &args.ll.closed;
             let fit = LlSurface::within(
                 &grid,
-                args.ll.order,
+                args.ll.order(),
                 closed.closed_u,
                 closed.closed_v,
                 distance,
@@ -71,7 +71,7 @@ pub fn run(args: &SurfaceLlArgs) -> Result<()> {
         .unwrap_or_default();
     let title = format!(
         "{variant}LL surface, L = {}, {} x {} grid",
-        args.ll.order,
+        args.ll.order(),
         grid.rows(),
         grid.cols()
     );

@@ -24,6 +24,7 @@ mod pictures;
 mod reading;
 mod scale;
 mod section;
+mod section_methods;
 mod section_poles;
 mod surface_bicubic;
 mod surface_coons;
