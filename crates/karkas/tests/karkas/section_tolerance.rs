@@ -273,7 +273,9 @@ fn a_tolerance_below_rounding_is_refused_not_split_to_millions_of_points() {
             tolerance: Some(tolerance),
             ..SectionOptions::default()
         };
-        let e = Sectioner::new(torus, &options).err().expect("refused");
+        let Err(e) = Sectioner::new(torus, &options) else {
+            panic!("a tolerance of {tolerance:e} was accepted");
+        };
         assert!(
             e.to_string().contains("below 1e-12 of the surface's size"),
             "{e}"
