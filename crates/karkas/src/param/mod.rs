@@ -13,7 +13,9 @@
 //!   tridiagonal solve;
 //! - [`BicubicSurface`]: the bicubic interpolant of a grid in Hermite form (3.6)–(3.9), its
 //!   node derivatives found by the paper's three steps of `2N + M` spline solves, `O(N M)`;
-//!   not-a-knot ends, periodic in a closed direction.
+//!   not-a-knot ends, periodic in a closed direction;
+//! - [`relay_grid`]: a grid re-laid along the lines of curvature of its own bicubic
+//!   interpolant, spaced by arc length (the paper's best parameters, Theorem 2.1).
 //!
 //! The paper's table of errors (frames from [`crate::implicit`], measured with
 //! [`crate::measure`]) is an experiment built on this module: the CLI's `demo` runs it.
@@ -34,11 +36,16 @@ mod bicubic;
 mod bspline;
 mod names;
 mod parameterization;
+mod relay;
 mod spline;
 
 pub use crate::spline::SplineEnds;
 pub use bicubic::BicubicSurface;
 pub use parameterization::{
     curve_parameters, grid_parameters, CurveParameterization, GridParameterization,
+};
+pub use relay::{
+    relay_grid, relay_surface, RelaidGrid, RelayOptions, DEFAULT_SUBSTEPS, SHRINK, SHRINK_ROUNDS,
+    UMBILIC_RATIO,
 };
 pub use spline::CubicSpline;

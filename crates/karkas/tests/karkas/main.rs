@@ -35,6 +35,7 @@ mod ll_properties;
 mod ll_surface;
 mod ll_surface_interp;
 mod param_bicubic;
+mod param_relay;
 mod param_spline;
 mod robust_properties;
 mod sections;
