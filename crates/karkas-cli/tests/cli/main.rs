@@ -25,4 +25,5 @@ mod section;
 mod surface_bicubic;
 mod surface_coons;
 mod surface_implicit;
+mod surface_relay;
 mod vary;
