@@ -15,6 +15,7 @@ mod foil_section;
 mod ll;
 mod param;
 mod param_experiment;
+mod param_relay;
 mod polyline_distance;
 mod report;
 
@@ -49,7 +50,7 @@ struct Step {
 }
 
 /// The examples, in the order of the papers.
-const STEPS: [Step; 9] = [
+const STEPS: [Step; 10] = [
     Step {
         id: "ll-contour",
         seed: "000",
@@ -149,6 +150,20 @@ const STEPS: [Step; 9] = [
              lines of curvature are the paper's construction.",
         ),
         run: param::run,
+    },
+    Step {
+        id: "param-relay",
+        seed: "004",
+        title: "Turned frames of the cylinder and the hyperboloid re-laid along the lines of \
+                curvature of their own bicubic interpolants (karkas surface relay): Hausdorff \
+                errors of the turned, re-laid and principal frames",
+        note: Some(
+            "The re-laid frame covers the part of the turned frame's patch that the lines of \
+             curvature through its centre reach, and is measured against that part of the \
+             exact surface; its nodes lie on the turned frame's interpolant, so its error \
+             cannot fall below that interpolant's error there.",
+        ),
+        run: param_relay::run,
     },
 ];
 

@@ -5,7 +5,7 @@ use crate::common::{karkas, s, stderr, temp_dir};
 use serde_json::Value;
 
 /// The examples the demo promises (issue contract: scripts read report.json by these ids).
-const EXAMPLES: [&str; 9] = [
+const EXAMPLES: [&str; 10] = [
     "ll-contour",
     "ll-aircraft",
     "coons-fig3",
@@ -15,6 +15,7 @@ const EXAMPLES: [&str; 9] = [
     "fit-hydrofoil",
     "fit-hydrofoil-clean",
     "param-cylinder-hyperboloid",
+    "param-relay",
 ];
 
 #[test]
@@ -73,6 +74,8 @@ fn demo_writes_a_complete_report() {
     assert_eq!(paper_rows, 7 + 21 + 1);
     crate::demo_hydrofoil::check_clean_hydrofoil(&out, examples);
 
+    check_relaid_frames(examples);
+
     let html = std::fs::read_to_string(out.join("index.html")).unwrap();
     for seed in ["000", "001", "002", "003", "004"] {
         assert!(html.contains(&format!("id=\"seed-{seed}\"")), "seed {seed}");
@@ -106,4 +109,41 @@ fn demo_into_a_file_is_an_error() {
     assert_eq!(run.status.code(), Some(2));
     assert_eq!(std::fs::read_to_string(&file).unwrap(), "keep");
     assert!(stderr(&run).contains("taken"), "{}", stderr(&run));
+}
+
+/// The re-laid frames: for the cylinder and the hyperboloid at 30 and 45 degrees, the turned,
+/// re-laid and principal frames' errors; the hyperboloid's re-laid frames land within twice
+/// the principal frame's error.
+fn check_relaid_frames(examples: &[Value]) {
+    let relay = examples
+        .iter()
+        .find(|e| e["id"] == "param-relay")
+        .expect("the param-relay example");
+    let rows = relay["rows"].as_array().unwrap();
+    let value = |example: &str, measure: &str| {
+        rows.iter()
+            .find(|r| {
+                r["example"].as_str() == Some(example)
+                    && r["measure"]
+                        .as_str()
+                        .is_some_and(|m| m.starts_with(measure))
+            })
+            .and_then(|r| r["karkas"].as_f64())
+            .unwrap_or_else(|| panic!("{example}: no {measure} row"))
+    };
+    for surface in ["cylinder", "hyperboloid"] {
+        for degrees in [30, 45] {
+            let example = format!("004 {surface}, both axes turned {degrees} deg");
+            let turned = value(&example, "turned frame");
+            let relaid = value(&example, "re-laid");
+            let principal = value(&example, "principal frame");
+            assert!(turned > 0.0 && relaid > 0.0 && principal > 0.0, "{example}");
+            if surface == "hyperboloid" {
+                assert!(
+                    relaid <= 2.0 * principal,
+                    "{example}: {relaid} vs {principal}"
+                );
+            }
+        }
+    }
 }
