@@ -2,14 +2,23 @@
 //! lines of curvature of their own bicubic interpolants (`karkas surface relay`), with the
 //! Hausdorff errors of the turned, re-laid and principal frames side by side. Writes every
 //! re-laid frame's nodes (grid CSV).
+//!
+//! Two inputs per turned frame: the table's own 5 x 9 frame, and a frame along the same lines
+//! [`DENSITY`] times denser and [`REACH`] times longer in every open direction (the surface
+//! known by more points), re-laid onto 5 x 9 nodes with the principal frame's arc-length
+//! steps (shrunk by [`STEP_FACTORS`] until the net fits the input's domain). The re-laid nodes
+//! lie on the input's interpolant, so they are only as accurate as it is: from the coarse
+//! input the error stays at the turned frame's level, from the dense input it falls to that
+//! of the principal frame of the same region (the nodes at the re-laid rows' heights and
+//! columns' angles, on the exact surface).
 
 use super::common::{Finding, Output};
-use super::param_experiment::{seed_experiments, SeedExperiment, SeedSurface};
+use super::param_experiment::{seed_experiments, ExperimentOutcome, SeedExperiment, SeedSurface};
 use crate::output::samples::sample_surface;
 use anyhow::{Context, Result};
 use karkas::implicit::{Cylinder, Hyperboloid, ImplicitSurface, NetDirections};
 use karkas::measure::hausdorff_surface_implicit;
-use karkas::param::{relay_grid, BicubicSurface, GridParameterization, RelayOptions};
+use karkas::param::{relay_grid, BicubicSurface, GridParameterization, RelaidGrid, RelayOptions};
 use karkas::{Grid, Point3};
 use karkas_io::scene::{write_scene_svg, Scene, SceneCurves, SceneMesh, View};
 use karkas_io::write::write_grid_csv;
@@ -27,9 +36,17 @@ pub fn run(out: &Output) -> Result<Vec<Finding>> {
     let hyperboloid_principal = table[5]
         .run()
         .context("the hyperboloid's principal frame")?;
-    let mut cases: Vec<(SeedExperiment, f64)> = vec![
-        (table[1].clone(), cylinder_principal.error.distance),
-        (table[2].clone(), cylinder_principal.error.distance),
+    let mut cases: Vec<(SeedExperiment, f64, &SeedExperiment)> = vec![
+        (
+            table[1].clone(),
+            cylinder_principal.error.distance,
+            &table[0],
+        ),
+        (
+            table[2].clone(),
+            cylinder_principal.error.distance,
+            &table[0],
+        ),
     ];
     for (degrees, label) in [
         (30.0f64, "hyperboloid, both axes turned 30 deg"),
@@ -46,75 +63,189 @@ pub fn run(out: &Output) -> Result<Vec<Finding>> {
             surface: SeedSurface::Hyperboloid,
             net,
         };
-        cases.push((row, hyperboloid_principal.error.distance));
+        cases.push((row, hyperboloid_principal.error.distance, &table[5]));
     }
     let mut findings = Vec::new();
-    for (row, principal) in cases {
+    for (row, principal, principal_net) in cases {
         let turned = row
             .run()
             .with_context(|| format!("Kuznetsov and Filatov, {}", row.label))?;
-        let options = RelayOptions {
-            closed: (false, row.net.closed_v),
-            ..RelayOptions::default()
-        };
-        let relaid = relay_grid(&turned.nodes, &options)
-            .with_context(|| format!("re-laying {}", row.label))?;
-        let relaid_error = match row.surface {
-            SeedSurface::Cylinder => {
-                relaid_error(&relaid.nodes, &Cylinder { radius: 1.0 }, |_| 1.0)
-            }
-            SeedSurface::Hyperboloid => {
-                relaid_error(&relaid.nodes, &Hyperboloid { neck_radius: 1.0 }, |z| {
-                    (1.0 + z * z).sqrt()
-                })
-            }
-        }?;
-        let words: Vec<&str> = row
-            .label
-            .split(|c: char| !c.is_ascii_alphanumeric())
-            .filter(|w| !w.is_empty())
-            .collect();
-        let name = format!("004-relaid-{}", words.join("-"));
-        write_grid_csv(&out.file(format!("{name}-nodes.csv")), &relaid.nodes)?;
-        write_picture(out, &name, row.label, &relaid.nodes, relaid_error)?;
-        let example = format!("004 {}", row.label);
-        findings.push(
-            Finding::new(
-                &example,
-                "turned frame: Hausdorff error",
-                turned.error.distance,
-            )
-            .detail(),
-        );
-        findings.push(Finding::new(
-            &example,
-            "re-laid along lines of curvature: Hausdorff error",
-            relaid_error,
-        ));
-        findings
-            .push(Finding::new(&example, "principal frame: Hausdorff error", principal).detail());
+        let (m, n) = row.net.nodes;
+        for density in [1, DENSITY] {
+            let input = if density == 1 {
+                turned.clone()
+            } else {
+                let mut dense = row.clone();
+                // Twice the extent in every open direction, so that the principal frame's
+                // region fits inside; a closed direction already runs round the surface.
+                let v_reach = if row.net.closed_v { 1 } else { REACH };
+                dense.net.nodes = (
+                    (m - 1) * density * REACH + 1,
+                    (n - 1) * density * v_reach + 1,
+                );
+                dense.net.steps = (
+                    row.net.steps.0 / density as f64,
+                    row.net.steps.1 / density as f64,
+                );
+                dense
+                    .run()
+                    .with_context(|| format!("Kuznetsov and Filatov, {}, dense", row.label))?
+            };
+            relay_case(
+                out,
+                &row,
+                &turned,
+                &input,
+                principal,
+                principal_net,
+                &mut findings,
+            )?;
+        }
     }
     Ok(findings)
 }
+
+/// How many times denser (in each direction) the dense input frames are than the table's.
+const DENSITY: usize = 2;
+
+/// How many times the table frame's extent the dense input frames span in an open direction.
+const REACH: usize = 3;
+
+/// Re-lays `input` (the turned frame of `row` itself, or a denser frame along the same lines)
+/// onto a frame of the table's size and records the three errors.
+fn relay_case(
+    out: &Output,
+    row: &SeedExperiment,
+    turned: &ExperimentOutcome,
+    input: &ExperimentOutcome,
+    principal: f64,
+    principal_net: &SeedExperiment,
+    findings: &mut Vec<Finding>,
+) -> Result<()> {
+    let dense = input.nodes.rows() != turned.nodes.rows();
+    let options = RelayOptions {
+        size: Some((turned.nodes.rows(), turned.nodes.cols())),
+        closed: (false, row.net.closed_v),
+        ..RelayOptions::default()
+    };
+    let relaid = if dense {
+        relay_on_principal_steps(input, &options, principal_net)
+    } else {
+        relay_grid(&input.nodes, &options).map_err(anyhow::Error::from)
+    }
+    .with_context(|| format!("re-laying {}", row.label))?;
+    let (relaid_error, same_region) = match row.surface {
+        SeedSurface::Cylinder => relaid_error(&relaid.nodes, &Cylinder { radius: 1.0 }, |_| 1.0),
+        SeedSurface::Hyperboloid => {
+            relaid_error(&relaid.nodes, &Hyperboloid { neck_radius: 1.0 }, |z| {
+                (1.0 + z * z).sqrt()
+            })
+        }
+    }?;
+    // A dense input's re-laid frame lies elsewhere on the surface than the table's
+    // principal frame: it is compared with the principal frame of its own region.
+    let principal = if dense { same_region } else { principal };
+    let words: Vec<&str> = row
+        .label
+        .split(|c: char| !c.is_ascii_alphanumeric())
+        .filter(|w| !w.is_empty())
+        .collect();
+    let (rows, cols) = (input.nodes.rows(), input.nodes.cols());
+    let (name, example, label) = if dense {
+        (
+            format!("004-relaid-{}-from-{rows}x{cols}", words.join("-")),
+            format!("004 {}, re-laid from {rows} x {cols}", row.label),
+            format!("{}, re-laid from {rows} x {cols} nodes", row.label),
+        )
+    } else {
+        (
+            format!("004-relaid-{}", words.join("-")),
+            format!("004 {}", row.label),
+            row.label.to_string(),
+        )
+    };
+    write_grid_csv(&out.file(format!("{name}-nodes.csv")), &relaid.nodes)?;
+    write_picture(out, &name, &label, &relaid.nodes, relaid_error)?;
+    findings.push(
+        Finding::new(
+            &example,
+            "turned frame: Hausdorff error",
+            turned.error.distance,
+        )
+        .detail(),
+    );
+    if dense {
+        findings.push(
+            Finding::new(
+                &example,
+                "dense turned input frame: Hausdorff error",
+                input.error.distance,
+            )
+            .detail(),
+        );
+    }
+    findings.push(Finding::new(
+        &example,
+        "re-laid along lines of curvature: Hausdorff error",
+        relaid_error,
+    ));
+    let measure = if dense {
+        "principal frame of the same region: Hausdorff error"
+    } else {
+        "principal frame: Hausdorff error"
+    };
+    findings.push(Finding::new(&example, measure, principal).detail());
+    Ok(())
+}
+
+/// Re-lays a dense input with the principal frame's arc-length steps, or when its net does not
+/// fit the input's domain with steps shrunk by [`STEP_FACTORS`].
+fn relay_on_principal_steps(
+    input: &ExperimentOutcome,
+    options: &RelayOptions,
+    principal_net: &SeedExperiment,
+) -> Result<RelaidGrid> {
+    // The principal frame's rows are its circles; the re-laid frame's rows are circles when
+    // its `v` lines (rows) are, else its steps are taken the other way round.
+    let (mut hu, mut hv) = principal_net.net.steps;
+    let trial = relay_grid(&input.nodes, options)?;
+    if !rows_are_circles(&trial.nodes) {
+        (hu, hv) = (hv, hu);
+    }
+    let mut last = None;
+    for factor in STEP_FACTORS {
+        let steps = (hu * factor, hv * factor);
+        match relay_grid(
+            &input.nodes,
+            &RelayOptions {
+                steps: Some(steps),
+                ..*options
+            },
+        ) {
+            Ok(relaid) => return Ok(relaid),
+            Err(e) => last = Some(e),
+        }
+    }
+    Err(last.map_or_else(|| anyhow::anyhow!("no step factor"), anyhow::Error::from))
+}
+
+/// The factors the principal frame's steps are tried with on a dense input, largest first.
+const STEP_FACTORS: [f64; 6] = [1.0, 0.95, 0.9, 0.8, 0.7, 0.6];
 
 /// The two-sided Hausdorff error of the bicubic interpolant (the paper's chord parameters,
 /// not-a-knot) of a re-laid frame of a surface of revolution about `z` (radius `rho(z)`)
 /// against the exact patch it covers: the heights of its rows (circles) and the angles of its
 /// columns (meridians), or the other way round, sampled in closed form four times denser.
+///
+/// Returns that error and the error, measured the same way, of the principal frame of the same
+/// region: the nodes at the re-laid rows' heights and columns' angles, on the exact surface.
 fn relaid_error<I: ImplicitSurface>(
     nodes: &Grid<Point3>,
     implicit: &I,
     rho: impl Fn(f64) -> f64,
-) -> Result<f64> {
+) -> Result<(f64, f64)> {
     let surface = BicubicSurface::new(nodes, GridParameterization::default(), false, false)?;
-    // Rows are circles when a row keeps its height better than a column does.
-    let row_spread = (0..nodes.rows())
-        .map(|i| spread((0..nodes.cols()).map(|j| nodes.get(i, j)[2])))
-        .fold(0.0, f64::max);
-    let col_spread = (0..nodes.cols())
-        .map(|j| spread((0..nodes.rows()).map(|i| nodes.get(i, j)[2])))
-        .fold(0.0, f64::max);
-    let circles = if row_spread <= col_spread {
+    let circles = if rows_are_circles(nodes) {
         nodes.clone()
     } else {
         nodes.transposed()
@@ -140,7 +271,31 @@ fn relaid_error<I: ImplicitSurface>(
             patch.push(Point3::new([r * t.cos(), r * t.sin(), z]));
         }
     }
-    Ok(hausdorff_surface_implicit(&surface, implicit, &patch, SAMPLES)?.distance)
+    let relaid = hausdorff_surface_implicit(&surface, implicit, &patch, SAMPLES)?.distance;
+    let mut exact = Vec::with_capacity(m * n);
+    for i in 0..m {
+        let z = row_height(i);
+        for j in 0..n {
+            let t = base + column_angle(j);
+            exact.push(Point3::new([rho(z) * t.cos(), rho(z) * t.sin(), z]));
+        }
+    }
+    let exact = Grid::from_row_major(m, n, exact)?;
+    let principal = BicubicSurface::new(&exact, GridParameterization::default(), false, false)?;
+    let principal = hausdorff_surface_implicit(&principal, implicit, &patch, SAMPLES)?.distance;
+    Ok((relaid, principal))
+}
+
+/// Whether the rows of a frame of a surface of revolution about `z` are its circles: a row
+/// keeps its height better than a column does.
+fn rows_are_circles(nodes: &Grid<Point3>) -> bool {
+    let row_spread = (0..nodes.rows())
+        .map(|i| spread((0..nodes.cols()).map(|j| nodes.get(i, j)[2])))
+        .fold(0.0, f64::max);
+    let col_spread = (0..nodes.cols())
+        .map(|j| spread((0..nodes.rows()).map(|i| nodes.get(i, j)[2])))
+        .fold(0.0, f64::max);
+    row_spread <= col_spread
 }
 
 /// `max - min` of the values.

@@ -144,6 +144,39 @@ fn check_relaid_frames(examples: &[Value]) {
                     "{example}: {relaid} vs {principal}"
                 );
             }
+            // Re-laid from a denser turned frame: the error falls to the principal frame's of
+            // the same region (cylinder) and to the dense input's own (hyperboloid), far below
+            // the coarse turned frame's.
+            let dense = rows
+                .iter()
+                .filter_map(|r| r["example"].as_str())
+                .find(|e| e.starts_with(&format!("{example}, re-laid from ")))
+                .unwrap_or_else(|| panic!("{example}: no dense row"))
+                .to_string();
+            let dense_turned = value(&dense, "turned frame");
+            let dense_input = value(&dense, "dense turned input frame");
+            let dense_relaid = value(&dense, "re-laid");
+            let dense_principal = value(&dense, "principal frame");
+            assert_eq!(dense_turned, turned, "{dense}");
+            assert!(
+                dense_relaid < 0.5 * turned,
+                "{dense}: {dense_relaid} vs {turned}"
+            );
+            if surface == "cylinder" {
+                assert!(
+                    dense_relaid <= 1.5 * dense_principal && dense_relaid <= 1.5 * principal,
+                    "{dense}: {dense_relaid} vs {dense_principal}, {principal}"
+                );
+                assert!(
+                    dense_principal > 0.5 * principal,
+                    "{dense}: {dense_principal}"
+                );
+            } else {
+                assert!(
+                    dense_relaid <= 1.5 * dense_input,
+                    "{dense}: {dense_relaid} vs {dense_input}"
+                );
+            }
         }
     }
 }
