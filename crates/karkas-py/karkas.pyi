@@ -59,6 +59,7 @@ __all__ = [
     "read_point_set",
     "read_skeleton",
     "read_surface_samples",
+    "relay_grid",
     "SectionCurve",
     "set_max_input_bytes",
     "Surface",
@@ -558,6 +559,16 @@ def curve_parameters(points: ArrayLike, parameterization: str = "chord") -> _Flo
 def grid_parameters(
     grid: ArrayLike, parameterization: str = "chord", origin: Optional[Tuple[int, int]] = None
 ) -> Tuple[_Floats, _Floats]: ...
+def relay_grid(
+    grid: ArrayLike,
+    size: Optional[Tuple[int, int]] = None,
+    start: Optional[Tuple[int, int]] = None,
+) -> _Floats:
+    """The grid re-laid along the lines of curvature of its bicubic interpolant, (M, N, 3).
+
+    Raises PointsError for a grid that is not (nu, nv, 3), a size below 2, a start outside
+    the grid or an umbilic region (a plane, a sphere), ConvergenceError when the net does not
+    fit the interpolant's domain."""
 def export_obj(path: _FilePath, grid: ArrayLike) -> None: ...
 def export_stl(path: _FilePath, grid: ArrayLike) -> None: ...
 def export_curve_csv(path: _FilePath, t: ArrayLike, points: ArrayLike) -> None: ...

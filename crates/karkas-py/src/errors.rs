@@ -185,7 +185,8 @@ fn kind(e: &karkas::Error) -> Kind {
         | E::TooFewNetworkCurves { .. }
         | E::SkeletonLength { .. }
         | E::NonFiniteSkeletonPoint { .. }
-        | E::OpenPeriodicData { .. } => Kind::Points,
+        | E::OpenPeriodicData { .. }
+        | E::UmbilicRegion { .. } => Kind::Points,
         E::InvalidKnot { .. } => Kind::Knots,
         E::InvalidOrder { .. }
         | E::InvalidStep { .. }

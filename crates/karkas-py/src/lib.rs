@@ -39,6 +39,7 @@ mod param;
 mod pickle;
 mod read;
 mod read_more;
+mod relay;
 mod repr_html;
 mod section;
 mod section_defaults;
@@ -101,6 +102,7 @@ fn karkas_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(ll::vary, m)?)?;
     m.add_function(wrap_pyfunction!(param::curve_parameters, m)?)?;
     m.add_function(wrap_pyfunction!(param::grid_parameters, m)?)?;
+    m.add_function(wrap_pyfunction!(relay::relay_grid, m)?)?;
     m.add_function(wrap_pyfunction!(export_any::export, m)?)?;
     m.add_function(wrap_pyfunction!(export::export_obj, m)?)?;
     m.add_function(wrap_pyfunction!(export::export_stl, m)?)?;

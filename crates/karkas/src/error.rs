@@ -557,6 +557,23 @@ pub enum Error {
         /// The end conditions given.
         ends: &'static str,
     },
+    /// A point where the principal curvatures (nearly) agree, so that no principal
+    /// direction is defined: a plane, a sphere or an umbilic region
+    /// ([`relay_grid`](crate::param::relay_grid), whose test is stated in
+    /// [`UMBILIC_RATIO`](crate::param::UMBILIC_RATIO)).
+    #[error(
+        "the surface is umbilic near ({}, {}, {}) (principal curvatures {k1:.4e} and {k2:.4e} \
+         nearly equal, as on a plane or a sphere): its lines of curvature are not defined",
+        point[0], point[1], point[2]
+    )]
+    UmbilicRegion {
+        /// Where.
+        point: [f64; 3],
+        /// The larger principal curvature there.
+        k1: f64,
+        /// The smaller.
+        k2: f64,
+    },
 }
 
 impl Error {

@@ -17,6 +17,7 @@ mod surface_coons;
 mod surface_dps_tube;
 mod surface_implicit;
 mod surface_ll;
+mod surface_relay;
 pub mod vary;
 
 use clap::Subcommand;
@@ -64,6 +65,8 @@ pub enum SurfaceCommand {
     Implicit(surface_implicit::SurfaceImplicitArgs),
     /// Coons, Gordon or composite Coons surface through a network of curves.
     Coons(surface_coons::SurfaceCoonsArgs),
+    /// A grid re-laid along the lines of curvature of its own bicubic interpolant.
+    Relay(surface_relay::SurfaceRelayArgs),
 }
 
 impl SurfaceCommand {
@@ -75,6 +78,7 @@ impl SurfaceCommand {
             SurfaceCommand::Bicubic(args) => surface_bicubic::run(&args),
             SurfaceCommand::Implicit(args) => surface_implicit::run(&args),
             SurfaceCommand::Coons(args) => surface_coons::run(&args),
+            SurfaceCommand::Relay(args) => surface_relay::run(&args),
         }
     }
 }

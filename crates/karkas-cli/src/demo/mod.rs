@@ -15,6 +15,7 @@ mod foil_section;
 mod ll;
 mod param;
 mod param_experiment;
+mod param_relay;
 mod polyline_distance;
 mod report;
 
@@ -170,6 +171,28 @@ const STEPS: [Step; 10] = [
              circle, which every frame shares, so the error ties with 0 deg there.",
         ),
         run: param::angle_sweep,
+    },
+    Step {
+        id: "param-relay",
+        seed: "004",
+        title: "Turned frames of the cylinder and the hyperboloid re-laid along the lines of \
+                curvature of their own bicubic interpolants (karkas surface relay): Hausdorff \
+                errors of the turned, re-laid and principal frames",
+        note: Some(
+            "The re-laid nodes lie on the input's interpolant, so they can only be as accurate \
+             as it is. Re-laid from the table's own 5 x 9 turned frame, the frame covers the \
+             part of the turned patch that the lines of curvature through its centre reach \
+             and its error stays at the turned frame's level. Re-laid from a turned frame \
+             along the same lines, twice as dense and three times as long in every open \
+             direction (25 x 17 cylinder, 25 x 49 hyperboloid, from the same start node), onto 5 x 9 nodes \
+             with the principal frame's steps (the cylinder's shrunk to 0.9 and 0.95 of them \
+             to fit the input's domain), the error falls to that of the principal frame of \
+             the same region (rows at the re-laid heights, columns at the re-laid angles, on \
+             the exact surface). The dense hyperboloid frame's centre lies near z = 4 to 5, where the \
+             surface is nearly a cone and the principal frame's error is 5e-5..1e-4: there the \
+             re-laid error stays at the dense input's own level.",
+        ),
+        run: param_relay::run,
     },
 ];
 

@@ -16,6 +16,7 @@ const EXAMPLES: [&str; 10] = [
     "fit-hydrofoil-clean",
     "param-cylinder-hyperboloid",
     "param-angle-sweep",
+    "param-relay",
 ];
 
 #[test]
@@ -75,6 +76,8 @@ fn demo_writes_a_complete_report() {
     assert_eq!(paper_rows, 7 + 7 + 21 + 1);
     crate::demo_hydrofoil::check_clean_hydrofoil(&out, examples);
     check_angle_sweep(examples);
+
+    check_relaid_frames(examples);
 
     let html = std::fs::read_to_string(out.join("index.html")).unwrap();
     for seed in ["000", "001", "002", "003", "004"] {
@@ -182,4 +185,74 @@ fn demo_into_a_file_is_an_error() {
     assert_eq!(run.status.code(), Some(2));
     assert_eq!(std::fs::read_to_string(&file).unwrap(), "keep");
     assert!(stderr(&run).contains("taken"), "{}", stderr(&run));
+}
+
+/// The re-laid frames: for the cylinder and the hyperboloid at 30 and 45 degrees, the turned,
+/// re-laid and principal frames' errors; the hyperboloid's re-laid frames land within twice
+/// the principal frame's error.
+fn check_relaid_frames(examples: &[Value]) {
+    let relay = examples
+        .iter()
+        .find(|e| e["id"] == "param-relay")
+        .expect("the param-relay example");
+    let rows = relay["rows"].as_array().unwrap();
+    let value = |example: &str, measure: &str| {
+        rows.iter()
+            .find(|r| {
+                r["example"].as_str() == Some(example)
+                    && r["measure"]
+                        .as_str()
+                        .is_some_and(|m| m.starts_with(measure))
+            })
+            .and_then(|r| r["karkas"].as_f64())
+            .unwrap_or_else(|| panic!("{example}: no {measure} row"))
+    };
+    for surface in ["cylinder", "hyperboloid"] {
+        for degrees in [30, 45] {
+            let example = format!("004 {surface}, both axes turned {degrees} deg");
+            let turned = value(&example, "turned frame");
+            let relaid = value(&example, "re-laid");
+            let principal = value(&example, "principal frame");
+            assert!(turned > 0.0 && relaid > 0.0 && principal > 0.0, "{example}");
+            if surface == "hyperboloid" {
+                assert!(
+                    relaid <= 2.0 * principal,
+                    "{example}: {relaid} vs {principal}"
+                );
+            }
+            // Re-laid from a denser turned frame: the error falls to the principal frame's of
+            // the same region (cylinder) and to the dense input's own (hyperboloid), far below
+            // the coarse turned frame's.
+            let dense = rows
+                .iter()
+                .filter_map(|r| r["example"].as_str())
+                .find(|e| e.starts_with(&format!("{example}, re-laid from ")))
+                .unwrap_or_else(|| panic!("{example}: no dense row"))
+                .to_string();
+            let dense_turned = value(&dense, "turned frame");
+            let dense_input = value(&dense, "dense turned input frame");
+            let dense_relaid = value(&dense, "re-laid");
+            let dense_principal = value(&dense, "principal frame");
+            assert_eq!(dense_turned, turned, "{dense}");
+            assert!(
+                dense_relaid < 0.5 * turned,
+                "{dense}: {dense_relaid} vs {turned}"
+            );
+            if surface == "cylinder" {
+                assert!(
+                    dense_relaid <= 1.5 * dense_principal && dense_relaid <= 1.5 * principal,
+                    "{dense}: {dense_relaid} vs {dense_principal}, {principal}"
+                );
+                assert!(
+                    dense_principal > 0.5 * principal,
+                    "{dense}: {dense_principal}"
+                );
+            } else {
+                assert!(
+                    dense_relaid <= 1.5 * dense_input,
+                    "{dense}: {dense_relaid} vs {dense_input}"
+                );
+            }
+        }
+    }
 }

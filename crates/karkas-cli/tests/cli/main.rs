@@ -29,4 +29,5 @@ mod section_poles;
 mod surface_bicubic;
 mod surface_coons;
 mod surface_implicit;
+mod surface_relay;
 mod vary;

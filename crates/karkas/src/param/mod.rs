@@ -17,6 +17,8 @@
 //! - [`condition_measure`], [`BicubicSurface::condition_measures`]: how well the parameters
 //!   condition the continuation system (2.3), the paper's measure (2.4) extended to tangents
 //!   of any length (`1` exactly for arc lengths along orthogonal directions, Theorem 2.1).
+//! - [`relay_grid`]: a grid re-laid along the lines of curvature of its own bicubic
+//!   interpolant, spaced by arc length (the paper's best parameters, Theorem 2.1).
 //!
 //! The paper's table of errors (frames from [`crate::implicit`], measured with
 //! [`crate::measure`]) is an experiment built on this module: the CLI's `demo` runs it.
@@ -38,6 +40,7 @@ mod bspline;
 mod condition;
 mod names;
 mod parameterization;
+mod relay;
 mod spline;
 
 pub use crate::spline::SplineEnds;
@@ -45,5 +48,9 @@ pub use bicubic::BicubicSurface;
 pub use condition::{condition_measure, ConditionSummary};
 pub use parameterization::{
     curve_parameters, grid_parameters, CurveParameterization, GridParameterization,
+};
+pub use relay::{
+    relay_grid, relay_surface, RelaidGrid, RelayOptions, DEFAULT_SUBSTEPS, SHRINK, SHRINK_ROUNDS,
+    UMBILIC_RATIO,
 };
 pub use spline::CubicSpline;

@@ -38,6 +38,7 @@ mod ll_surface_interp;
 mod ll_within;
 mod param_bicubic;
 mod param_condition;
+mod param_relay;
 mod param_spline;
 mod robust_properties;
 mod section_poles;
