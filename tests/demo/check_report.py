@@ -16,8 +16,10 @@ EXAMPLES = [
     "dps-five-petal",
     "dps-knotted-tube",
     "fit-hydrofoil",
+    "fit-hydrofoil-clean",
     "param-cylinder-hyperboloid",
     "param-angle-sweep",
+    "param-relay",
 ]
 
 
