@@ -50,7 +50,7 @@ struct Step {
 }
 
 /// The examples, in the order of the papers.
-const STEPS: [Step; 10] = [
+const STEPS: [Step; 11] = [
     Step {
         id: "ll-contour",
         seed: "000",

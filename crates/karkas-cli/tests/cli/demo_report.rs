@@ -5,7 +5,7 @@ use crate::common::{karkas, s, stderr, temp_dir};
 use serde_json::Value;
 
 /// The examples the demo promises (issue contract: scripts read report.json by these ids).
-const EXAMPLES: [&str; 10] = [
+const EXAMPLES: [&str; 11] = [
     "ll-contour",
     "ll-aircraft",
     "coons-fig3",
