@@ -83,6 +83,13 @@ def _grid(nu=6, nv=7):
     return np.stack([u, v, np.sin(2 * u) * np.cos(v)], axis=-1)
 
 
+def _cylinder_grid(nu=7, nv=9):
+    """A grid on the cylinder x^2 + y^2 = 1 along helices (no umbilic point, unlike _grid)."""
+    s, t = np.meshgrid(0.15 * np.arange(nu), 0.15 * np.arange(nv), indexing="ij")
+    angle, z = 0.5 * s + 0.87 * t, 0.87 * s - 0.5 * t
+    return np.stack([np.cos(angle), np.sin(angle), z], axis=-1)
+
+
 def _torus_skeleton(m1=4, m2=6, n1=4, n2=4, R=3.0, r=1.0):
     N1, N2 = m1 * n1, m2 * n2
 
@@ -249,6 +256,7 @@ VALID = {
             "tolerance": 1e-4,
         },
     ),
+    "relay_grid": lambda o: (karkas.relay_grid, (_cylinder_grid(),), {"size": (4, 5), "start": (2, 3)}),
     "grid_parameters": lambda o: (karkas.grid_parameters, (o.grid,), {"parameterization": "chord", "origin": (1, 2)}),
     "vary": lambda o: (
         karkas.vary,

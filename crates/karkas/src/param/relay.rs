@@ -112,13 +112,16 @@ pub struct RelaidGrid {
     pub start: (usize, usize),
 }
 
+/// The most nodes [`relay_grid`] lays (as `karkas surface relay --size` allows).
+pub const MAX_RELAY_NODES: usize = 1_000_000;
+
 /// Re-lays `grid` along the lines of curvature of its bicubic interpolant (chord-length
 /// parameters through node `(0, 0)`, not-a-knot ends or periodic in a closed direction), as
 /// the module docs describe.
 ///
 /// Errors: those of [`BicubicSurface::new`]; a size below 2 ([`Error::InvalidGridSize`]); a
-/// start node outside the grid ([`Error::OutsideGrid`]); non-positive or non-finite steps
-/// ([`Error::InvalidSetting`]); an umbilic met ([`Error::UmbilicRegion`]); a singular point
+/// start node outside the grid ([`Error::OutsideGrid`]); non-positive or non-finite steps, or
+/// more than [`MAX_RELAY_NODES`] nodes ([`Error::InvalidSetting`]); an umbilic met ([`Error::UmbilicRegion`]); a singular point
 /// or a net that does not fit the domain ([`Error::ContinuationFailed`]).
 pub fn relay_grid(grid: &Grid<Point3>, options: &RelayOptions) -> Result<RelaidGrid> {
     let (rows, cols) = (grid.rows(), grid.cols());
@@ -135,6 +138,13 @@ pub fn relay_grid(grid: &Grid<Point3>, options: &RelayOptions) -> Result<RelaidG
         });
     }
     let (m, n) = options.size.unwrap_or((rows, cols));
+    if m.saturating_mul(n) > MAX_RELAY_NODES {
+        return Err(Error::InvalidSetting {
+            name: "size",
+            value: m as f64 * n as f64,
+            reason: "at most 1e6 nodes can be re-laid (each is the crossing of two traced lines)",
+        });
+    }
     let start_uv = (surface.knots_u()[si], surface.knots_v()[sj]);
     let scaled = |k: usize, from: usize, to: usize| {
         ((k as f64) * (to - 1) as f64 / (from - 1) as f64).round() as usize

@@ -348,6 +348,15 @@ fn bad_options_are_refused() {
         relay_grid(&frame, &tiny),
         Err(Error::InvalidGridSize { rows: 1, .. })
     ));
+    // A size that would not fit in memory is refused before any allocation.
+    let huge = RelayOptions {
+        size: Some((usize::MAX / 2, 3)),
+        ..RelayOptions::default()
+    };
+    assert!(matches!(
+        relay_grid(&frame, &huge),
+        Err(Error::InvalidSetting { name: "size", .. })
+    ));
     let negative = RelayOptions {
         steps: Some((-0.1, 0.1)),
         ..RelayOptions::default()
