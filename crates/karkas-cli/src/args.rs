@@ -329,6 +329,21 @@ pub fn parse_count(text: &str) -> Result<usize, String> {
     Ok(n)
 }
 
+/// Parses `H` or `HU,HV` (positive).
+pub fn parse_steps(text: &str) -> Result<(f64, f64), String> {
+    let positive = |s: &str| match parse_finite(s)? {
+        h if h > 0.0 => Ok(h),
+        h => Err(format!("the step must be positive, got {h}")),
+    };
+    match text.split_once(',') {
+        Some((a, b)) => Ok((positive(a)?, positive(b)?)),
+        None => {
+            let h = positive(text)?;
+            Ok((h, h))
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -1,7 +1,7 @@
 //! `karkas surface implicit`: a grid of nodes on an implicit surface, traced along its lines
 //! of curvature (or a net turned by an angle) by continuation (Kuznetsov and Filatov, docs/methods.md §5).
 
-use crate::args::{parse_finite, parse_finite_list, parse_pair_with, parse_whole};
+use crate::args::{parse_finite_list, parse_pair_with, parse_steps, parse_whole};
 use crate::output::target::{output_format, shown};
 use anyhow::{bail, Context, Result};
 use clap::Args;
@@ -124,21 +124,6 @@ fn parse_nodes(text: &str) -> Result<(usize, usize), String> {
         n if n >= 2 => Ok(n),
         n => Err(format!("at least 2 nodes are needed, got {n}")),
     })
-}
-
-/// Parses `H` or `HU,HV` (positive).
-fn parse_steps(text: &str) -> Result<(f64, f64), String> {
-    let positive = |s: &str| match parse_finite(s)? {
-        h if h > 0.0 => Ok(h),
-        h => Err(format!("the step must be positive, got {h}")),
-    };
-    match text.split_once(',') {
-        Some((a, b)) => Ok((positive(a)?, positive(b)?)),
-        None => {
-            let h = positive(text)?;
-            Ok((h, h))
-        }
-    }
 }
 
 #[cfg(test)]

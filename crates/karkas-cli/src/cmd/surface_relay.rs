@@ -1,7 +1,7 @@
 //! `karkas surface relay`: a grid re-laid along the lines of curvature of its own bicubic
 //! interpolant, spaced by arc length (Kuznetsov and Filatov, Theorem 2.1; docs/methods.md §5).
 
-use crate::args::{parse_pair_with, parse_whole, ClosedUv, GridInput};
+use crate::args::{parse_pair_with, parse_steps, parse_whole, ClosedUv, GridInput};
 use crate::input::grid_points;
 use crate::output::target::{output_format, shown};
 use anyhow::{bail, Context, Result};
@@ -112,21 +112,6 @@ fn parse_size(text: &str) -> Result<(usize, usize), String> {
 /// Parses `I,J`.
 fn parse_node(text: &str) -> Result<(usize, usize), String> {
     parse_pair_with(text, parse_whole)
-}
-
-/// Parses `H` or `HU,HV` (positive, finite).
-fn parse_steps(text: &str) -> Result<(f64, f64), String> {
-    let positive = |s: &str| match crate::args::parse_finite(s)? {
-        h if h > 0.0 => Ok(h),
-        h => Err(format!("the step must be positive, got {h}")),
-    };
-    match text.split_once(',') {
-        Some((a, b)) => Ok((positive(a)?, positive(b)?)),
-        None => {
-            let h = positive(text)?;
-            Ok((h, h))
-        }
-    }
 }
 
 #[cfg(test)]

@@ -55,30 +55,27 @@ impl FileStamp {
 
     /// ISO 8601 as STEP writes it: `2026-11-28T05:18:43`.
     pub fn iso8601(&self) -> String {
-        let m = self.moment;
-        format!(
-            "{:04}-{:02}-{:02}T{:02}:{:02}:{:02}",
-            m.year(),
-            u8::from(m.month()),
-            m.day(),
-            m.hour(),
-            m.minute(),
-            m.second()
-        )
+        let [year, month, day, hour, minute, second] = self.fields();
+        format!("{year:04}-{month:02}-{day:02}T{hour:02}:{minute:02}:{second:02}")
     }
 
     /// IGES 5.3's 15-character form: `20261128.051843`.
     pub fn iges(&self) -> String {
+        let [year, month, day, hour, minute, second] = self.fields();
+        format!("{year:04}{month:02}{day:02}.{hour:02}{minute:02}{second:02}")
+    }
+
+    /// Year, month, day, hour, minute and second.
+    fn fields(&self) -> [i32; 6] {
         let m = self.moment;
-        format!(
-            "{:04}{:02}{:02}.{:02}{:02}{:02}",
+        [
             m.year(),
-            u8::from(m.month()),
-            m.day(),
-            m.hour(),
-            m.minute(),
-            m.second()
-        )
+            i32::from(u8::from(m.month())),
+            i32::from(m.day()),
+            i32::from(m.hour()),
+            i32::from(m.minute()),
+            i32::from(m.second()),
+        ]
     }
 }
 
