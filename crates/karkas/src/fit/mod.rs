@@ -56,6 +56,7 @@
 
 mod adaptive;
 mod bspline;
+mod coarse;
 mod fixed;
 mod gradient;
 mod guards;

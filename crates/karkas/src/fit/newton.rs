@@ -423,8 +423,9 @@ impl<const D: usize> BlockKernel<'_, '_, D> {
         let n = self.problem.points.len();
         let (first_t, last_t) = (knots[0], knots[knots.len() - 1]);
         let projection = self.problem.projection();
-        let w4 = 4 * D;
-        let mut v = [[0.0; D]; 4];
+        // With ordered parameters, a run of points pooled to one parameter moves as one: its
+        // `t` is eliminated jointly (see `Run`).
+        let mut run: Option<Run<D>> = None;
         for i in span {
             let (r, t, k) = (
                 &self.problem.points[i],
@@ -463,25 +464,138 @@ impl<const D: usize> BlockKernel<'_, '_, D> {
                 continue;
             }
             // `v` in the interleaved layout: entry `a D + c`.
+            let mut v = [[0.0; D]; 4];
             for (a, va) in v.iter_mut().enumerate() {
                 for c in 0..D {
                     va[c] = b0[a] * d1[c] + b1[a] * e[c];
                 }
             }
-            let v = v.as_flattened();
-            let block_range = w4 * w4 * local..w4 * w4 * (local + 1);
-            let inv_safe = 1.0 / exact.max(speed_sq);
-            let inv_exact = if exact > 0.0 { 1.0 / exact } else { 0.0 };
-            let block = &mut coupled[block_range.clone()];
-            let safe = &mut coupled_safe[block_range];
-            for (x, &vx) in v.iter().enumerate() {
-                let row = w4 * x..w4 * x + x + 1;
-                for ((b, s), &vy) in block[row.clone()].iter_mut().zip(&mut safe[row]).zip(v) {
-                    let vv = vx * vy;
-                    *b -= vv * inv_exact;
-                    *s -= vv * inv_safe;
+            let point = Run {
+                local,
+                t,
+                v,
+                exact,
+                safe: exact.max(speed_sq),
+            };
+            match &mut run {
+                Some(open) if projection.ordered && open.t == t && open.local == local => {
+                    open.pool(&point)
+                }
+                _ => {
+                    if let Some(done) = run.replace(point) {
+                        done.subtract(coupled, coupled_safe);
+                    }
                 }
             }
         }
+        if let Some(done) = run {
+            done.subtract(coupled, coupled_safe);
+        }
+    }
+}
+
+/// The coupling term of one point, or of a run of points pooled to one parameter by the
+/// ordering ([`super::order`]): the run's points share `t`, so eliminating it gives
+/// `-(sum v_i)(sum v_i)^T / sum h_i` where free points give `-sum v_i v_i^T / h_i` (by
+/// Cauchy–Schwarz the free model is the more optimistic one: it lets every pooled point slide
+/// on its own, and its steps are refused).
+struct Run<const D: usize> {
+    /// The piece, relative to the range being filled.
+    local: usize,
+    /// The shared parameter.
+    t: f64,
+    /// `sum v_i`, interleaved layout (`v[a][c]` is entry `a D + c`).
+    v: [[f64; D]; 4],
+    /// `sum h_i` (exact model).
+    exact: f64,
+    /// `sum max(h_i, |R'|^2)` (safe model).
+    safe: f64,
+}
+
+impl<const D: usize> Run<D> {
+    /// Adds a point with the same parameter.
+    fn pool(&mut self, other: &Run<D>) {
+        for (a, b) in self.v.iter_mut().zip(&other.v) {
+            for c in 0..D {
+                a[c] += b[c];
+            }
+        }
+        self.exact += other.exact;
+        self.safe += other.safe;
+    }
+
+    /// Subtracts the run's term from the blocks of its piece.
+    fn subtract(&self, coupled: &mut [f64], coupled_safe: &mut [f64]) {
+        let w4 = 4 * D;
+        let v = self.v.as_flattened();
+        let block_range = w4 * w4 * self.local..w4 * w4 * (self.local + 1);
+        let inv_safe = 1.0 / self.safe;
+        let inv_exact = if self.exact > 0.0 {
+            1.0 / self.exact
+        } else {
+            0.0
+        };
+        let block = &mut coupled[block_range.clone()];
+        let safe = &mut coupled_safe[block_range];
+        for (x, &vx) in v.iter().enumerate() {
+            let row = w4 * x..w4 * x + x + 1;
+            for ((b, s), &vy) in block[row.clone()].iter_mut().zip(&mut safe[row]).zip(v) {
+                let vv = vx * vy;
+                *b -= vv * inv_exact;
+                *s -= vv * inv_safe;
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod run_tests {
+    use super::Run;
+
+    fn run(t: f64, v: [[f64; 2]; 4], h: f64, speed_sq: f64) -> Run<2> {
+        Run {
+            local: 1,
+            t,
+            v,
+            exact: h,
+            safe: h.max(speed_sq),
+        }
+    }
+
+    #[test]
+    fn a_pooled_run_is_eliminated_through_its_one_parameter() {
+        let v1 = [[1.0, -2.0], [0.5, 0.0], [3.0, 1.0], [-1.0, 2.0]];
+        let v2 = [[0.0, 1.0], [2.0, -1.0], [1.0, 1.0], [0.5, 0.5]];
+        let (h1, h2) = (2.0, 0.5);
+        let mut pooled = run(0.3, v1, h1, 1.0);
+        pooled.pool(&run(0.3, v2, h2, 1.0));
+        let w = 8;
+        let (mut exact, mut safe) = (vec![0.0; 2 * w * w], vec![0.0; 2 * w * w]);
+        pooled.subtract(&mut exact, &mut safe);
+        let sum: Vec<f64> = v1
+            .as_flattened()
+            .iter()
+            .zip(v2.as_flattened())
+            .map(|(a, b)| a + b)
+            .collect();
+        for x in 0..w {
+            for y in 0..w {
+                let got = exact[w * w + w * x + y];
+                if y > x {
+                    // Only the lower triangle is accumulated.
+                    assert_eq!(got, 0.0);
+                    continue;
+                }
+                // -(v1 + v2)(v1 + v2)^T / (h1 + h2), not -v1 v1^T / h1 - v2 v2^T / h2.
+                let expected = -sum[x] * sum[y] / (h1 + h2);
+                assert!((got - expected).abs() <= 1e-15 * expected.abs().max(1.0));
+                // The safe model raises each h to |R'|^2 = 1 first: 2 + 1.
+                let safe_expected = -sum[x] * sum[y] / 3.0;
+                let got = safe[w * w + w * x + y];
+                assert!((got - safe_expected).abs() <= 1e-15 * safe_expected.abs().max(1.0));
+            }
+        }
+        // The first piece's blocks are untouched.
+        assert!(exact[..w * w].iter().all(|&e| e == 0.0));
     }
 }

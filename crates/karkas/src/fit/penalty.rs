@@ -30,6 +30,7 @@
 //! Every `q_p` is found by [`Solver::minimize`], warm-started from the previous one.
 //! Cost: a few inner minimizations, each `O(n)` per iteration.
 
+use super::coarse::warm_start;
 use super::guards::with_warnings;
 use super::hermite::HermiteSpline;
 use super::knots::{check_knots, start_parameters_for, StartParameters};
@@ -46,6 +47,8 @@ use std::borrow::Cow;
 const REFERENCE_ITERATIONS: usize = 5;
 /// Iterations of the unconstrained fit with ordered parameters, after the free one.
 const ORDERED_ITERATIONS: usize = 8;
+/// ... and they stop once a step lowers `F` by less than this share of it.
+const ORDERED_MIN_GAIN: f64 = 1e-4;
 /// Minimizations at a held `p` that polish the active bound's fit, at most.
 const POLISH_STEPS: usize = 8;
 
@@ -305,6 +308,7 @@ pub(crate) fn fit_checked<const D: usize>(
         max_iterations: options.max_iterations,
         tolerance: options.settle_tolerance,
         floor: SETTLED_SHARE_OF_SIZE * noise.size,
+        min_gain: 0.0,
     };
     let mut state = State::<D>::blank(knots, start.clone());
     let mut solver = Solver::new(
@@ -337,7 +341,19 @@ pub(crate) fn fit_checked<const D: usize>(
     // from there (runs pooled out of order) for at most ORDERED_ITERATIONS steps: every
     // projection orders the parameters, so the result is ordered however many steps run,
     // and the pooled runs, which the model treats as free foot points, slow it down.
-    match solver.solve_fixed(&mut state, 0.0) {
+    // Dense points start from the fit of a subset ([`warm_start`]).
+    let free = Problem {
+        ordered: false,
+        ..problem
+    };
+    let first = match warm_start(&free, &start, stop, &mut state) {
+        Some(done) => {
+            iterations += done;
+            Ok(())
+        }
+        None => solver.solve_fixed(&mut state, 0.0),
+    };
+    match first {
         Ok(()) => {
             solver.project(&mut state);
             iterations += solver.minimize(&mut state, Penalty::Fixed(0.0), stop)?.0;
@@ -346,6 +362,7 @@ pub(crate) fn fit_checked<const D: usize>(
                 solver.project(&mut state);
                 let ordered = Stop {
                     max_iterations: stop.max_iterations.min(ORDERED_ITERATIONS),
+                    min_gain: ORDERED_MIN_GAIN,
                     ..stop
                 };
                 iterations += solver.minimize(&mut state, Penalty::Fixed(0.0), ordered)?.0;

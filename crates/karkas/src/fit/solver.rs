@@ -92,6 +92,10 @@ pub(crate) struct Stop {
     /// ... or by more than this (an absolute floor: changes far below the size of the
     /// points say nothing about the shape; 0 for none).
     pub floor: f64,
+    /// Stop once a step lowers `F` by less than this share of `F` (0: never). With ordered
+    /// parameters `F` keeps creeping down as pooled runs split and merge while the curve
+    /// no longer moves: the rule ends that phase.
+    pub min_gain: f64,
 }
 
 /// Buffers and settings of the inner minimization.
@@ -379,6 +383,11 @@ impl<'a, const D: usize> Solver<'a, D> {
             }
             if gained.is_some() && settled && in_window(state) {
                 return Ok((iteration + 1, p));
+            }
+            if let Some(gain) = gained {
+                if gain < stop.min_gain * current.abs() && in_window(state) {
+                    return Ok((iteration + 1, p));
+                }
             }
         }
         Ok((stop.max_iterations, p))

@@ -130,66 +130,16 @@ fn gradient_of_the_penalized_objective_vanishes() {
     // The bound holds and is active.
     assert!(fit.jump_sum <= eps && fit.jump_sum >= (1.0 - 1e-3) * eps);
     assert!(fit.penalty > 0.0);
-    let knots = fit.spline.knots().to_vec();
-    let (values, derivs) = (
-        fit.spline.values().to_vec(),
-        fit.spline.derivatives().to_vec(),
-    );
-    let n_knots = knots.len();
-    let jumps = seed_jumps(&knots, &values, &derivs);
-    let bends = second_derivatives(&knots, &values, &derivs);
     assert!(fit.bending_weight > 0.0);
     // The paper's formula agrees with the library's J_L.
-    for (l, j) in jumps.iter().enumerate() {
+    let (values, derivs) = (fit.spline.values(), fit.spline.derivatives());
+    for (l, j) in seed_jumps(fit.spline.knots(), values, derivs)
+        .iter()
+        .enumerate()
+    {
         assert!(j.distance(fit.spline.jump_measure(l + 1)) < 1e-9 * (1.0 + j.norm()));
     }
-    // Coefficient (knot, value-or-derivative, coordinate): gradient entry and scale.
-    let mut worst: f64 = 0.0;
-    for knot in 0..n_knots {
-        for kind in 0..2 {
-            for c in 0..2 {
-                let mut unit_v = vec![Point2::ZERO; n_knots];
-                let mut unit_d = vec![Point2::ZERO; n_knots];
-                let mut e = Point2::ZERO;
-                e[c] = 1.0;
-                if kind == 0 {
-                    unit_v[knot] = e;
-                } else {
-                    unit_d[knot] = e;
-                }
-                // dR(t_i)/dq by the Bezier form of the unit coefficient (R is linear in q).
-                let (mut g, mut size) = (0.0, 0.0);
-                for (i, r) in points.iter().enumerate() {
-                    let t = fit.parameters[i];
-                    let res = bezier_eval(&fit, &values, &derivs, t) - *r;
-                    let dr = bezier_eval(&fit, &unit_v, &unit_d, t);
-                    let term = 2.0 * res.dot(dr);
-                    g += term;
-                    size += term.abs();
-                }
-                // lambda int |R''|^2: R'' is linear on a piece, so the integral of R'' . U''
-                // over a piece of length h is h/6 (2 a.a' + a.b' + b.a' + 2 b.b').
-                let unit_bends = second_derivatives(&knots, &unit_v, &unit_d);
-                for (k, ([a, b], [ua, ub])) in bends.iter().zip(&unit_bends).enumerate() {
-                    let h = knots[k + 1] - knots[k];
-                    let integral =
-                        h / 6.0 * (2.0 * a.dot(*ua) + a.dot(*ub) + b.dot(*ua) + 2.0 * b.dot(*ub));
-                    let term = 2.0 * fit.bending_weight * integral;
-                    g += term;
-                    size += term.abs();
-                }
-                let unit_jumps = seed_jumps(&knots, &unit_v, &unit_d);
-                for (l, (j, dj)) in jumps.iter().zip(&unit_jumps).enumerate() {
-                    let term = 2.0 * fit.penalty * fit.weights[l + 1] * j.dot(*dj);
-                    g += term;
-                    size += term.abs();
-                }
-                if size > 0.0 {
-                    worst = worst.max(g.abs() / size);
-                }
-            }
-        }
-    }
+    let worst = relative_gradient(&fit, &points);
     assert!(worst < 1e-10, "relative gradient {worst:e}");
 }
 
@@ -286,4 +236,66 @@ fn a_corner_knot_keeps_its_bend() {
     assert!(smooth.spline.jump_measure(2).norm() <= allowed);
     assert!(corner.spline.jump_measure(2).norm() > 100.0 * allowed);
     assert!(corner.max_distance() < 1e-3);
+}
+
+/// The largest entry of the gradient of `H + p f + lambda S` with respect to the spline
+/// coefficients at the fit, each relative to the sum of the magnitudes of its terms (the
+/// parameters held at the fit's foot points: at foot points their derivative vanishes).
+pub(crate) fn relative_gradient(fit: &CurveFit<2>, points: &[Point2]) -> f64 {
+    let knots = fit.spline.knots().to_vec();
+    let (values, derivs) = (
+        fit.spline.values().to_vec(),
+        fit.spline.derivatives().to_vec(),
+    );
+    let n_knots = knots.len();
+    let jumps = seed_jumps(&knots, &values, &derivs);
+    let bends = second_derivatives(&knots, &values, &derivs);
+    // Coefficient (knot, value-or-derivative, coordinate): gradient entry and scale.
+    let mut worst: f64 = 0.0;
+    for knot in 0..n_knots {
+        for kind in 0..2 {
+            for c in 0..2 {
+                let mut unit_v = vec![Point2::ZERO; n_knots];
+                let mut unit_d = vec![Point2::ZERO; n_knots];
+                let mut e = Point2::ZERO;
+                e[c] = 1.0;
+                if kind == 0 {
+                    unit_v[knot] = e;
+                } else {
+                    unit_d[knot] = e;
+                }
+                // dR(t_i)/dq by the Bezier form of the unit coefficient (R is linear in q).
+                let (mut g, mut size) = (0.0, 0.0);
+                for (i, r) in points.iter().enumerate() {
+                    let t = fit.parameters[i];
+                    let res = bezier_eval(fit, &values, &derivs, t) - *r;
+                    let dr = bezier_eval(fit, &unit_v, &unit_d, t);
+                    let term = 2.0 * res.dot(dr);
+                    g += term;
+                    size += term.abs();
+                }
+                // lambda int |R''|^2: R'' is linear on a piece, so the integral of R'' . U''
+                // over a piece of length h is h/6 (2 a.a' + a.b' + b.a' + 2 b.b').
+                let unit_bends = second_derivatives(&knots, &unit_v, &unit_d);
+                for (k, ([a, b], [ua, ub])) in bends.iter().zip(&unit_bends).enumerate() {
+                    let h = knots[k + 1] - knots[k];
+                    let integral =
+                        h / 6.0 * (2.0 * a.dot(*ua) + a.dot(*ub) + b.dot(*ua) + 2.0 * b.dot(*ub));
+                    let term = 2.0 * fit.bending_weight * integral;
+                    g += term;
+                    size += term.abs();
+                }
+                let unit_jumps = seed_jumps(&knots, &unit_v, &unit_d);
+                for (l, (j, dj)) in jumps.iter().zip(&unit_jumps).enumerate() {
+                    let term = 2.0 * fit.penalty * fit.weights[l + 1] * j.dot(*dj);
+                    g += term;
+                    size += term.abs();
+                }
+                if size > 0.0 {
+                    worst = worst.max(g.abs() / size);
+                }
+            }
+        }
+    }
+    worst
 }

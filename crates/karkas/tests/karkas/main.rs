@@ -18,6 +18,7 @@ mod dps_bspline;
 mod dps_interpolation;
 mod dps_tube;
 mod fit_adaptive;
+mod fit_dense;
 mod fit_guards;
 mod fit_limits;
 mod fit_naca;

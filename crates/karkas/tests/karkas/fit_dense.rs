@@ -1,0 +1,69 @@
+//! Dense fits, which start from the fit of a subset of their points (every `k`-th, with the
+//! same bending weight per point; from `4 * 32` points per piece): the result keeps its
+//! parameters in order and averages the noise away inside the curve. (That the warm start
+//! ends as low as the cold start is tested next to it, in `fit/coarse.rs`.)
+
+use crate::fit_reference::noisy_spiral;
+use karkas::fit::{fit_curve, uniform_knots, FitOptions};
+use karkas::{Curve, Point2};
+
+/// The spiral of `noisy_spiral` without noise, at `s`.
+fn spiral(s: f64) -> Point2 {
+    let a = 2.5 * s;
+    Point2::new([(1.0 + 0.5 * s) * a.cos(), (1.0 + 0.5 * s) * a.sin()])
+}
+
+/// The largest distance from the noise-free spiral over `[a, b]` of its parameter (2001
+/// samples) to a dense polyline of the whole fit; with `[0, 1]` also the other way round.
+fn distance_to_truth(fit: &dyn Curve<2>, a: f64, b: f64) -> f64 {
+    let fitted: Vec<Point2> = (0..=20_000)
+        .map(|i| fit.eval(i as f64 / 20_000.0))
+        .collect();
+    let truth: Vec<Point2> = (0..=2000)
+        .map(|i| spiral(a + (b - a) * i as f64 / 2000.0))
+        .collect();
+    let one_way = |from: &[Point2], to: &[Point2]| {
+        from.iter()
+            .map(|p| {
+                to.iter()
+                    .map(|q| p.distance(*q))
+                    .fold(f64::INFINITY, f64::min)
+            })
+            .fold(0.0f64, f64::max)
+    };
+    let back = if a == 0.0 && b == 1.0 {
+        let dense: Vec<Point2> = (0..=20_000).map(|i| spiral(i as f64 / 20_000.0)).collect();
+        one_way(
+            &fitted[..].iter().step_by(10).copied().collect::<Vec<_>>(),
+            &dense,
+        )
+    } else {
+        0.0
+    };
+    one_way(&truth, &fitted).max(back)
+}
+
+#[test]
+fn a_dense_noisy_fit_lies_near_the_truth_with_ordered_parameters() {
+    let sigma = 1e-3;
+    let points = noisy_spiral(20_000, sigma, 5);
+    for knots in [uniform_knots(8), uniform_knots(40)] {
+        let fit = fit_curve(&points, &knots, &FitOptions::default()).unwrap();
+        assert!(fit.parameters.windows(2).all(|w| w[0] <= w[1]));
+        // The noise averages over hundreds of points per piece: away from the ends (2% of
+        // the parameter each) the fit lies well inside one sigma of the truth; an end is
+        // held by its last point alone, so it stays within a few sigma.
+        let inner = distance_to_truth(&fit.spline, 0.02, 0.98);
+        assert!(
+            inner < 0.2 * sigma,
+            "{} knots: {inner:e} from the truth",
+            knots.len()
+        );
+        let whole = distance_to_truth(&fit.spline, 0.0, 1.0);
+        assert!(
+            whole < 3.0 * sigma,
+            "{} knots: {whole:e} at the ends",
+            knots.len()
+        );
+    }
+}
