@@ -4,7 +4,8 @@
 //! bending term of [`FitOptions::fairness`]) subject to `f(q) = sum_L delta_L |J_L|^2 <= eps`:
 //!
 //! 1. the unconstrained fit `q_H` (`p = 0`) is found first, from the least-squares fit at the
-//!    starting parameters: when `f(q_H) <= eps` it is the answer (the paper's "the problem
+//!    starting parameters (dense points: from the fit of a subset, see
+//!    [`warm_start`]): when `f(q_H) <= eps` it is the answer (the paper's "the problem
 //!    reduces to finding `q_H`");
 //! 2. otherwise `q*` is the fit on the knots `{0, corners, 1}` only, which has no jump at any
 //!    knot with `delta_L = 1` (so `f(q*) = 0`), and the paper's bound is
