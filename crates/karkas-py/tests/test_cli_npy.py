@@ -51,7 +51,7 @@ def test_curve_ll_npy_equals_the_csv(tmp_path):
 
 @needs_cli
 def test_surface_ll_npy_equals_the_csv(tmp_path):
-    rows = [f"{i},{j},{i},{j},{np.sin(0.5 * i) * np.cos(0.4 * j)!r}" for i in range(5) for j in range(6)]
+    rows = [f"{i},{j},{i},{j},{float(np.sin(0.5 * i) * np.cos(0.4 * j))!r}" for i in range(5) for j in range(6)]
     (tmp_path / "g.csv").write_text("i,j,x,y,z\n" + "\n".join(rows) + "\n")
     for ext in ("csv", "npy"):
         run_cli("surface", "ll", tmp_path / "g.csv", "--samples", "40,1700", "-o", tmp_path / f"s.{ext}")
