@@ -74,6 +74,9 @@ pub(crate) fn parse_indexed(
 ) -> Result<Grid<Point3>, IoError> {
     let text = strip_bom(text);
     let mut rows = IndexedRows::new(path, layout);
+    // At most one cell a line: reserved once (capacity not used is never touched).
+    rows.cells
+        .reserve(memchr::memchr_iter(b'\n', text.as_bytes()).count() + 1);
     if is_plain(text) {
         let mut fields: Vec<&str> = Vec::new();
         for (k, line) in text.lines().enumerate() {

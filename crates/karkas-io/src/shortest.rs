@@ -28,6 +28,21 @@ pub fn push(out: &mut Vec<u8>, v: f64) {
     }
     let mut buffer = ryu::Buffer::new();
     let text = buffer.format_finite(v).as_bytes();
+    // The common case: a plain decimal (`-911.7978476360678`, `0.00012`) is `{}`'s own
+    // layout, and `123.0` is `123`; only a possible tie needs the digits taken apart.
+    if !text.contains(&b'e') {
+        if let Some(whole) = text.strip_suffix(b".0") {
+            out.extend_from_slice(whole);
+            return;
+        }
+        if let Some(point) = text.iter().position(|&b| b == b'.') {
+            let fraction = (text.len() - point - 1) as i64;
+            if lowest_bit(v) != -(fraction + 1) {
+                out.extend_from_slice(text);
+                return;
+            }
+        }
+    }
     let (negative, text) = match text.split_first() {
         Some((b'-', rest)) => (true, rest),
         _ => (false, text),
@@ -101,6 +116,18 @@ pub fn push(out: &mut Vec<u8>, v: f64) {
     }
 }
 
+/// The exponent of the lowest set bit of `v` (not zero): `|v| = m 2^b` with `m` odd.
+#[inline]
+fn lowest_bit(v: f64) -> i64 {
+    let bits = v.to_bits();
+    let (exponent, fraction) = ((bits >> 52) & 0x7ff, bits & ((1 << 52) - 1));
+    let (m, b) = match exponent {
+        0 => (fraction, -1074i64),
+        e => (fraction | (1 << 52), e as i64 - 1075),
+    };
+    b + i64::from(m.trailing_zeros())
+}
+
 /// True when `v` lies exactly halfway between the `digits` (a point after the first `point`
 /// of them) and the next number of as many digits: `|v| = (10 D + 5) 10^q` with `D` the
 /// digits as an integer and `q` one place below the last digit.
@@ -171,8 +198,8 @@ mod tests {
             1e16,
             1e20,
             123.456,
-            125406270313.515625,
-            -125406270313.515625,
+            125_406_270_313.0 + 33.0 / 64.0,
+            -(125_406_270_313.0 + 33.0 / 64.0),
             9.5,
             0.25,
             (1u64 << 60) as f64,
