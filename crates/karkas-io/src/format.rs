@@ -36,11 +36,13 @@ pub enum OutputFormat {
     Html,
     /// A DXF drawing of an exact B-spline curve and its input points (`.dxf`).
     Dxf,
+    /// A NumPy array of the sampled points (`.npy`, `f64` little-endian, C order).
+    Npy,
 }
 
 impl OutputFormat {
     /// All formats, in the order they are listed in messages.
-    pub const ALL: [OutputFormat; 13] = [
+    pub const ALL: [OutputFormat; 14] = [
         OutputFormat::Csv,
         OutputFormat::Svg,
         OutputFormat::Obj,
@@ -54,6 +56,7 @@ impl OutputFormat {
         OutputFormat::Glb,
         OutputFormat::Html,
         OutputFormat::Dxf,
+        OutputFormat::Npy,
     ];
 
     /// Every triangle-mesh format a sampled surface can be written in.
@@ -108,7 +111,7 @@ impl OutputFormat {
     }
 
     /// The file extension, without the dot: `"csv"`, `"svg"`, `"obj"`, `"stl"`, `"png"`,
-    /// `"ply"`, `"vtk"`, `"vts"`, `"glb"`, `"html"` or `"dxf"`.
+    /// `"ply"`, `"vtk"`, `"vts"`, `"glb"`, `"html"`, `"dxf"` or `"npy"`.
     pub fn extension(self) -> &'static str {
         match self {
             OutputFormat::Csv => "csv",
@@ -124,6 +127,7 @@ impl OutputFormat {
             OutputFormat::Glb => "glb",
             OutputFormat::Html => "html",
             OutputFormat::Dxf => "dxf",
+            OutputFormat::Npy => "npy",
         }
     }
 

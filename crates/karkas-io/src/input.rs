@@ -83,6 +83,8 @@ pub struct Input {
     /// The name of the input in messages (see [`display_name`]).
     pub name: PathBuf,
     reader: Box<dyn BufRead + Send>,
+    /// The file's size when known (0 for a stream): what [`Input::read_text`] reserves.
+    size: u64,
 }
 
 impl std::fmt::Debug for Input {
@@ -95,16 +97,19 @@ impl Input {
     /// Opens `path` (`-`: standard input) for one buffered pass.
     pub fn open(path: &Path) -> Result<Input, IoError> {
         let name = display_name(path);
+        let mut size = 0;
         let reader: Box<dyn BufRead + Send> = if is_stdin(path) {
             Box::new(std::io::BufReader::with_capacity(1 << 16, std::io::stdin()))
         } else {
             let file = std::fs::File::open(path).map_err(IoError::open(&name))?;
-            if file.metadata().is_ok_and(|m| m.is_dir()) {
+            let metadata = file.metadata();
+            if metadata.as_ref().is_ok_and(|m| m.is_dir()) {
                 return Err(data_error(&name, "is a directory, not a file"));
             }
+            size = metadata.map_or(0, |m| m.len());
             Box::new(std::io::BufReader::with_capacity(1 << 16, file))
         };
-        Ok(Input { name, reader })
+        Ok(Input { name, reader, size })
     }
 
     /// An input reading from `reader` (e.g. bytes already in memory), named `name`.
@@ -112,6 +117,7 @@ impl Input {
         Input {
             name: name.into(),
             reader: Box::new(reader),
+            size: 0,
         }
     }
 
@@ -142,7 +148,10 @@ impl Input {
     /// The whole input as text, read line by line with the bounds of
     /// [`Input::read_line_bytes`], its size charged against [`max_input_bytes`].
     pub fn read_text(&mut self) -> Result<String, IoError> {
-        let mut text = String::new();
+        // A file's text is at most its size: reserved once, not grown by doubling (each
+        // doubling copies the text and touches fresh pages). Never more than the cap.
+        let reserve = self.size.min(max_input_bytes());
+        let mut text = String::with_capacity(usize::try_from(reserve).unwrap_or(0));
         let mut bytes = Vec::new();
         let mut line = 0;
         loop {

@@ -24,6 +24,8 @@
 //!   writing and reading it: [`obj`], [`stl`], [`ply`],
 //!   [`vtk`] (legacy VTK and XML structured grids), [`glb`] (binary
 //!   glTF); [`mesh::write_mesh`] and [`mesh::read_mesh`] choose the format by extension;
+//! - [`npy`]: NumPy `.npy` arrays of `f64` (the header; values written as sampled by
+//!   [`export::stream`]);
 //! - [`viewer`]: a self-contained HTML page showing surfaces and curves in 3-D.
 //! - [`cad`]: exact B-spline curves and surfaces ([`cad::CadEntity`], from
 //!   [`karkas::bspline`]) as STEP AP214 and IGES 5.3 (entities 126, 128) files;
@@ -46,6 +48,7 @@ pub mod input;
 pub mod mask;
 pub mod mesh;
 pub mod network;
+pub mod npy;
 pub mod picture;
 pub mod points;
 pub mod pointset;
@@ -58,6 +61,7 @@ pub mod write;
 mod columns;
 mod lines;
 mod plain_decimal;
+mod shortest;
 mod store;
 
 pub use cad::{iges, step};

@@ -13,9 +13,9 @@
 //! message ever names it: errors name only the destination.
 //!
 //! CSV is written with the `csv` crate. Numbers use Rust's shortest round-trip formatting of
-//! `f64` (`{}`), so a file read back gives bit-identical values.
+//! `f64` (`{}`, written fast by [`crate::shortest`]), so a file read back gives bit-identical
+//! values.
 
-use std::fmt::Write as _;
 use std::fs::{File, OpenOptions};
 use std::io::{self, BufWriter, Write};
 use std::path::{Path, PathBuf};
@@ -263,6 +263,13 @@ pub fn render_curve_csv<const D: usize>(
     csv.finish()
 }
 
+/// The header line of the curve samples CSV of dimension `dim`: `t,x,y\n`, `t,x,y,z\n`, ...
+pub(crate) fn curve_csv_header(dim: usize) -> String {
+    let mut names = vec!["t".to_owned()];
+    names.extend(coordinate_names(dim));
+    names.join(",") + "\n"
+}
+
 /// Writes surface samples as CSV: header `u,v,x,y,z`, rows in row-major order of the sample
 /// grid (`u` outer, `v` inner): `points[a * vs.len() + b]` is the point at `(us[a], vs[b])`.
 ///
@@ -387,7 +394,7 @@ fn check_len(
 /// A CSV writer of rows of numbers in shortest round-trip form.
 struct CsvRows<'a> {
     writer: csv::Writer<&'a mut dyn Write>,
-    number: String,
+    number: Vec<u8>,
 }
 
 impl<'a> CsvRows<'a> {
@@ -397,7 +404,7 @@ impl<'a> CsvRows<'a> {
         writer.write_record(header)?;
         Ok(CsvRows {
             writer,
-            number: String::new(),
+            number: Vec::new(),
         })
     }
 
@@ -405,8 +412,7 @@ impl<'a> CsvRows<'a> {
     fn row(&mut self, values: impl IntoIterator<Item = f64>) -> io::Result<()> {
         for v in values {
             self.number.clear();
-            // Writing into a String cannot fail.
-            let _ = write!(self.number, "{v}");
+            crate::shortest::push(&mut self.number, v);
             self.writer.write_field(&self.number)?;
         }
         self.writer.write_record(None::<&[u8]>)?;
@@ -421,7 +427,7 @@ impl<'a> CsvRows<'a> {
     ) -> io::Result<()> {
         for k in indices {
             self.number.clear();
-            let _ = write!(self.number, "{k}");
+            write!(self.number, "{k}")?;
             self.writer.write_field(&self.number)?;
         }
         self.row(values)

@@ -5,7 +5,7 @@ use crate::input::{curve_points, run_on_curve_points, CurveJob};
 use crate::output::cad::write_cad_curve;
 use crate::output::console::{note, record};
 use crate::output::curve::{curve_output_bytes, write_sampled_curve};
-use crate::output::formats::EXACT_CURVE_FORMATS;
+use crate::output::formats::STREAMED_CURVE_FORMATS;
 use crate::output::memory::check_memory;
 use crate::output::overwrite::ensure_distinct;
 use crate::output::samples::sample_curve;
@@ -15,6 +15,7 @@ use anyhow::{bail, Context, Result};
 use clap::Args;
 use karkas::ll::{LlCurve, WithinFit};
 use karkas::{Curve, Point, Point2};
+use karkas_io::export::stream;
 use karkas_io::OutputFormat;
 use std::path::PathBuf;
 
@@ -45,8 +46,9 @@ pub struct CurveLlArgs {
     samples: CurveSamples,
     /// Input points: CSV or whitespace columns x,y[,z], or an airfoil .dat (Selig or Lednicer).
     input: PathBuf,
-    /// Output file: .csv (t,x,y[,z]), a picture of the curve over its points (.svg, .png;
-    /// x-y projection) a 3-D viewer page (.html), or
+    /// Output file: .csv (t,x,y[,z]), .npy (the samples' points, an (n, dim) float64 array),
+    /// a picture of the curve over its points (.svg, .png; x-y projection) a 3-D viewer page
+    /// (.html), or
     /// the exact B-spline curve as .step/.stp, .iges/.igs or .dxf (a SPLINE with the input
     /// points; planar curves in z = 0).
     #[arg(short, long)]
@@ -60,7 +62,7 @@ pub struct CurveLlArgs {
 
 /// Runs `karkas curve ll`.
 pub fn run(args: &CurveLlArgs) -> Result<()> {
-    let format = output_format(&args.output, &EXACT_CURVE_FORMATS)?;
+    let format = output_format(&args.output, &STREAMED_CURVE_FORMATS)?;
     check_ll_order(args.order)?;
     check_within(args.within)?;
     args.samples.check()?;
@@ -90,10 +92,17 @@ impl CurveJob for (&CurveLlArgs, OutputFormat) {
         let n = args
             .samples
             .or_else(|| default_curve_samples(points.len()).min(MAX_SAMPLES));
+        // The cap is checked against the samples held, as before CSV and .npy were written
+        // block by block (they take one block now): the same requests pass as before.
         check_memory(
             &format!("curve ll: {n} samples"),
             curve_output_bytes::<D>(format, n + points.len()),
         )?;
+        if stream::streams(format) {
+            stream::write_curve_samples(&curve, n, format, &args.output)?;
+            report_samples(&args.output, n);
+            return Ok(());
+        }
         let (ts, samples) = sample_curve(&curve, n);
         let variant = match (args.interpolate, args.within) {
             (true, _) => "interpolating ".to_owned(),

@@ -3,7 +3,7 @@
 use super::curve_ll::{check_within, report_within};
 use crate::args::{GridInput, GridSamples, LlSurfaceOptions, MeshOutput};
 use crate::input::grid_points;
-use crate::output::formats::EXACT_SURFACE_FORMATS;
+use crate::output::formats::STREAMED_SURFACE_FORMATS;
 use crate::output::surface::write_grid_surface;
 use crate::output::target::output_format;
 use anyhow::{Context, Result};
@@ -33,7 +33,8 @@ pub struct SurfaceLlArgs {
     grid: GridInput,
     #[command(flatten)]
     mesh: MeshOutput,
-    /// Output file: .csv (u,v,x,y,z), a mesh (.obj .stl .ply .vtk .vts .glb), a picture
+    /// Output file: .csv (u,v,x,y,z), .npy (the samples' points, an (nu, nv, 3) float64
+    /// array), a mesh (.obj .stl .ply .vtk .vts .glb), a picture
     /// (.svg .png) a 3-D viewer page (.html), or the
     /// exact B-spline surface as .step/.stp or .iges/.igs.
     #[arg(short, long)]
@@ -42,7 +43,7 @@ pub struct SurfaceLlArgs {
 
 /// Runs `karkas surface ll`.
 pub fn run(args: &SurfaceLlArgs) -> Result<()> {
-    let format = output_format(&args.output, &EXACT_SURFACE_FORMATS)?;
+    let format = output_format(&args.output, &STREAMED_SURFACE_FORMATS)?;
     args.ll.check()?;
     check_within(args.within)?;
     args.samples.check()?;

@@ -81,7 +81,7 @@ pub fn surface_output_bytes(format: OutputFormat, rows: usize, cols: usize) -> u
             budget::scene_bytes(rows, cols, isolines, format == OutputFormat::Png)
         }
         OutputFormat::Html => samples * (24 + PAGE_SURFACE_SAMPLE) + isolines as u128 * PAGE_POINT,
-        OutputFormat::Csv | OutputFormat::Obj => samples * 24,
+        OutputFormat::Csv | OutputFormat::Obj | OutputFormat::Npy => samples * 24,
         _ => samples * (24 + MESH_PER_SAMPLE),
     }
 }

@@ -9,6 +9,7 @@ use super::target::shown;
 use anyhow::Result;
 use karkas::bspline::ToBSplineSurface;
 use karkas::{Grid, Point3, Surface};
+use karkas_io::export::stream;
 use karkas_io::export::surface::SurfaceDrawing;
 use karkas_io::mesh::MeshOptions;
 use karkas_io::OutputFormat;
@@ -17,12 +18,13 @@ use std::path::Path;
 pub use karkas_io::export::surface::isoparametric_lines;
 
 /// Samples `surface` on a uniform `nu x nv` grid over its whole domain and writes the samples
-/// to `output` as a `u,v,x,y,z` CSV or any mesh, picture or page format of
+/// to `output` as a `u,v,x,y,z` CSV (or `.npy` where the command allows it; both written as
+/// sampled, [`stream`]) or any mesh, picture or page format of
 /// [`super::formats::SURFACE_FORMATS`], by `format`; then reports what was written. `title`
 /// captions pictures and the page; `net` (the input grid) is shown on the page; `mesh` says
 /// how meshes are written.
 pub fn write_sampled_surface(
-    surface: &impl Surface<3>,
+    surface: &(impl Surface<3> + Sync),
     (nu, nv): (usize, usize),
     format: OutputFormat,
     output: &Path,
@@ -38,6 +40,12 @@ pub fn write_sampled_surface(
         ),
         surface_output_bytes(format, nu, nv) + (nu as u128 + nv as u128) * 8,
     )?;
+    if stream::streams(format) {
+        // Checked as held (the same requests pass as before); written block by block.
+        stream::write_surface_samples(surface, (nu, nv), format, output)?;
+        report_samples(output, nu * nv);
+        return Ok(());
+    }
     let drawing = SurfaceDrawing {
         title,
         net,
@@ -52,7 +60,7 @@ pub fn write_sampled_surface(
 /// `output`: its exact B-spline form as STEP or IGES, else `samples` (default
 /// [`default_surface_samples`] per grid line) as [`write_sampled_surface`] writes them.
 pub fn write_grid_surface(
-    surface: &(impl Surface<3> + ToBSplineSurface<3>),
+    surface: &(impl Surface<3> + ToBSplineSurface<3> + Sync),
     format: OutputFormat,
     output: &Path,
     (input, grid): (&Path, &Grid<Point3>),

@@ -62,7 +62,11 @@ pub fn output_format(output: &Path, allowed: &[OutputFormat]) -> Result<OutputFo
 fn is_binary(format: OutputFormat) -> bool {
     matches!(
         format,
-        OutputFormat::Png | OutputFormat::Stl | OutputFormat::Ply | OutputFormat::Glb
+        OutputFormat::Png
+            | OutputFormat::Stl
+            | OutputFormat::Ply
+            | OutputFormat::Glb
+            | OutputFormat::Npy
     )
 }
 

@@ -19,6 +19,7 @@ mod fit_tolerance;
 mod hausdorff;
 mod ll_within;
 mod meshes;
+mod npy;
 mod output_bounds;
 mod pictures;
 mod reading;

@@ -176,7 +176,7 @@ fn format_a_command_cannot_write_is_refused() {
     assert_eq!(o.status.code(), Some(2));
     assert_eq!(
         stderr(&o),
-        "karkas: error: --format obj: this command writes csv, svg, png, html, step, iges, dxf\n"
+        "karkas: error: --format obj: this command writes csv, svg, png, html, step, iges, dxf, npy\n"
     );
     assert!(o.stdout.is_empty());
     let o = karkas(&["curve", "ll", s(&p), "-o", "-", "--format", "docx"]);

@@ -24,6 +24,16 @@ pub const EXACT_CURVE_FORMATS: [OutputFormat; 7] = concat(CURVE_FORMATS, OutputF
 /// [`SURFACE_FORMATS`] and the exact B-spline surface as STEP or IGES.
 pub const EXACT_SURFACE_FORMATS: [OutputFormat; 12] = concat(SURFACE_FORMATS, OutputFormat::CAD);
 
+/// [`EXACT_CURVE_FORMATS`] and the samples' points as a NumPy `.npy` array, for the commands
+/// that write their samples as they compute them ([`super::stream`]).
+pub const STREAMED_CURVE_FORMATS: [OutputFormat; 8] =
+    concat(EXACT_CURVE_FORMATS, [OutputFormat::Npy]);
+
+/// [`EXACT_SURFACE_FORMATS`] and the samples' points as a NumPy `.npy` array, for the
+/// commands that write their samples as they compute them ([`super::stream`]).
+pub const STREAMED_SURFACE_FORMATS: [OutputFormat; 13] =
+    concat(EXACT_SURFACE_FORMATS, [OutputFormat::Npy]);
+
 /// The formats of a point list drawn as a curve (no parameters to write a CSV with).
 pub const POINTS_FORMATS: [OutputFormat; 3] =
     [OutputFormat::Svg, OutputFormat::Png, OutputFormat::Html];

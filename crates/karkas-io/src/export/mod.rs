@@ -14,6 +14,8 @@
 //! - [`samples`]: the default sample counts and uniform sampling.
 //! - [`curve`]: sampled curves (CSV, pictures with the curvature comb, the viewer page) and
 //!   discrete periodic curves.
+//! - [`stream`]: sampled curves and surfaces as CSV or `.npy`, written block by block as
+//!   they are sampled.
 //! - [`surface`]: sampled surfaces and grids (CSV, meshes, pictures, the viewer page).
 //! - [`mesh`]: triangle meshes (mesh formats and the viewer page).
 //! - [`cad`]: the exact B-spline forms as STEP or IGES, and curves with their input points
@@ -24,4 +26,5 @@ pub mod curve;
 pub mod formats;
 pub mod mesh;
 pub mod samples;
+pub mod stream;
 pub mod surface;

@@ -134,3 +134,37 @@ fn written_grids_read_back_exactly() {
     let text = std::fs::read_to_string(&path).unwrap();
     assert!(text.starts_with("i,j,x,y,z\n0,0,0,0.3333333333333333,-0.00000000000000002\n"));
 }
+
+/// Grid text read by hand (plain lines) and with the `csv` crate (a quote anywhere sends the
+/// text there): the same grid, the same error.
+#[test]
+fn plain_and_quoted_readings_agree() {
+    let texts = [
+        ORDERED.to_owned(),
+        // Comments, blank lines, spaces, extra columns, rows shuffled, CRLF.
+        "# frame\r\n\r\nI , J,x,y,z,note\r\n1,2,1,2,21,a # c\r\n0,0,0,0,0,\r\n , \r\n0,1,0,1,10,b\r\n0,2,0,2,20,c\r\n1,0,1,0,1,d\r\n1,1,1,1,11,e\r\n".to_owned(),
+        // Errors: a bad number, a cell twice before a bad number, a missing cell, a ragged
+        // row, a negative index, a non-finite value, no header, no data.
+        "i,j,x,y,z\n0,0,0,0,0\n0,1,0,x1,0\n".to_owned(),
+        "i,j,x,y,z\n0,0,0,0,0\n0,0,1,1,1\n0,1,0,x1,0\n".to_owned(),
+        "i,j,x,y,z\n0,0,0,0,0\n1,1,0,0,0\n".to_owned(),
+        "i,j,x,y,z\n0,0,0,0,0\n0,1,0,0\n".to_owned(),
+        "i,j,x,y,z\n0,-1,0,0,0\n".to_owned(),
+        "i,j,x,y,z\n0,0,0,inf,0\n".to_owned(),
+        "0,0,0,0,0\n".to_owned(),
+        "i,j,x,y,z\n# nothing\n".to_owned(),
+        "i,j,x,y,z\n0,0,0,0,0\n0,1,0,0,0\n0,1,2,2,2\n1,0,0,0,0\n".to_owned(),
+    ];
+    for text in texts {
+        let quoted = format!("{text}\n# \"quoted\"\n");
+        let (a, b) = (
+            parse_grid(&text, Path::new("g.csv")),
+            parse_grid(&quoted, Path::new("g.csv")),
+        );
+        match (a, b) {
+            (Ok(a), Ok(b)) => assert_eq!(a, b, "{text}"),
+            (Err(a), Err(b)) => assert_eq!(a.to_string(), b.to_string(), "{text}"),
+            (a, b) => panic!("{text}: {a:?} vs {b:?}"),
+        }
+    }
+}

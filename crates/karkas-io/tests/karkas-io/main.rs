@@ -13,6 +13,7 @@ mod reading;
 mod robustness;
 mod skeleton;
 mod stl;
+mod stream;
 mod svg;
 mod util;
 mod write;
