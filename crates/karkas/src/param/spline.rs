@@ -12,7 +12,7 @@ use super::parameterization::{curve_parameters, CurveParameterization};
 use crate::core::knots::{check_knots, check_min_gap, Knots};
 use crate::core::parallel::for_each_chunk;
 use crate::core::{Curve, Interval, PiecewiseCurve, Side};
-use crate::spline::{hermite_basis, not_a_knot_slopes, SlopeSystem, SplineEnds};
+use crate::spline::{hermite_basis, not_a_knot_slopes, periodic_slopes, SlopeSystem, SplineEnds};
 use crate::{Error, Point, Result};
 
 /// A cubic interpolating spline `t -> P(t)` in R^D on knots `t_0 < .. < t_{n-1}`.
@@ -73,8 +73,8 @@ impl<const D: usize> CubicSpline<D> {
         }
         let mut values = values;
         if periodic {
-            let scale = values.iter().fold(0.0f64, |m, p| m.max(p.max_abs()));
-            if (values[n - 1] - values[0]).max_abs() > 1e-12 * scale {
+            let seam = values[n - 1] - values[0];
+            if seam != Point::ZERO && seam.max_abs() > 1e-12 * max_abs(&values) {
                 return Err(Error::OpenPeriodicData {
                     what: "a periodic spline",
                     item: "value",
@@ -89,6 +89,8 @@ impl<const D: usize> CubicSpline<D> {
         };
         if matches!(ends, SplineEnds::NotAKnot) && n >= 4 {
             not_a_knot_slopes(&knots, &values, &mut slopes)?;
+        } else if periodic && n >= 4 {
+            periodic_slopes(&knots, &values, &mut slopes)?;
         } else {
             SlopeSystem::new(&knots, &ends)?.solve(&values, &mut slopes, 1, clamped);
         }
@@ -111,11 +113,12 @@ impl<const D: usize> CubicSpline<D> {
         parameterization: CurveParameterization,
         ends: SplineEnds<D>,
     ) -> Result<Self> {
-        let mut pts = points.to_vec();
+        // Room for the seam point: no second copy of the points when it is appended.
+        let mut pts = Vec::with_capacity(points.len() + 1);
+        pts.extend_from_slice(points);
         if matches!(ends, SplineEnds::Periodic) && !pts.is_empty() {
-            let scale = pts.iter().fold(0.0f64, |m, p| m.max(p.max_abs()));
             let last = pts[pts.len() - 1];
-            if (last - pts[0]).max_abs() > 1e-12 * scale {
+            if last != pts[0] && (last - pts[0]).max_abs() > 1e-12 * max_abs(&pts) {
                 pts.push(pts[0]);
             }
         }
@@ -255,6 +258,18 @@ impl<const D: usize> PiecewiseCurve<D> for CubicSpline<D> {
 /// The smallest gap between consecutive parameters, as a part of their whole span: closer
 /// knots make slopes overflow and the system singular.
 const MIN_RELATIVE_KNOT_GAP: f64 = 1e-12;
+
+/// The largest absolute coordinate of `points` (NaN ignored), one running maximum per
+/// coordinate so that the maxima do not wait on each other.
+fn max_abs<const D: usize>(points: &[Point<D>]) -> f64 {
+    let most = points.iter().fold([0.0f64; D], |mut m, p| {
+        for (m, c) in m.iter_mut().zip(p.0) {
+            *m = m.max(c.abs());
+        }
+        m
+    });
+    most.into_iter().fold(0.0, f64::max)
+}
 
 /// Fails unless `knots` (at least 2) are finite, strictly increasing, and no gap is below
 /// [`MIN_RELATIVE_KNOT_GAP`] of their span ([`Error::InvalidKnot`]).
