@@ -378,8 +378,8 @@ class SizeCache:
 def occ_points(pts, handle=False):
     """The points as Open CASCADE's array (1-based), built outside any timing."""
     arr = HArray1_gp_Pnt(1, len(pts)) if handle else TColgp_Array1OfPnt(1, len(pts))
-    for i, p in enumerate(pts):
-        arr.SetValue(i + 1, gp_Pnt(*p))
+    for i, (x, y, z) in enumerate(np.asarray(pts).tolist()):
+        arr.SetValue(i + 1, gp_Pnt(x, y, z))
     return arr
 
 
@@ -573,6 +573,22 @@ def curve_interp_job(sizes, geomdl_max, occ_max):
 
         return Run(go, error)
 
+    def setup_occ_interpolate(n):
+        pts = data(n)
+        arr = occ_points(pts, handle=True)
+        knots = chord_parameters(pts)
+
+        def go():
+            interpolation = GeomAPI_Interpolate(arr, False, OCC_POINT_TOLERANCE)
+            interpolation.Perform()
+            return interpolation.Curve()
+
+        def error(c):
+            step = max(1, n // 2000)
+            return float(np.max(np.abs(occ_values(c, knots[::step]) - pts[::step])))
+
+        return Run(go, error)
+
     job.tool("karkas CubicSpline", setup_karkas)
     job.tool("karkas LLCurve.interpolate (L=5)", setup_ll)
     job.tool(
@@ -586,6 +602,11 @@ def curve_interp_job(sizes, geomdl_max, occ_max):
         # An approximation to its tolerance (1e-6), not an interpolant: its distance from the
         # points is checked, within 10x its tolerance.
         job.tool("OCC GeomAPI_PointsToBSpline", setup_occ, occ_max, error_tol=10 * OCC_TOLERANCE)
+    if GeomAPI_Interpolate is not None:
+        # The C^2 cubic through the points at the same chord-length parameters, but with a
+        # knot at every point and other end conditions than not-a-knot (it departs from
+        # karkas's curve near the ends only): checked by its error at the points.
+        job.tool("OCC GeomAPI_Interpolate", setup_occ_interpolate)
     return job
 
 
