@@ -36,11 +36,17 @@ impl<const D: usize> CubicSpline<D> {
     /// derivative, and for periodic ends a last value that does not repeat the first
     /// (relative tolerance `1e-12`, [`Error::OpenPeriodicData`]).
     pub fn new(knots: &[f64], values: &[Point<D>], ends: SplineEnds<D>) -> Result<Self> {
-        Self::from_owned(knots.to_vec(), values.to_vec(), ends)
+        Self::from_owned(knots.to_vec(), values.to_vec(), ends, false)
     }
 
-    /// [`new`](Self::new) on owned knots and values (no copies of them are made).
-    fn from_owned(knots: Vec<f64>, values: Vec<Point<D>>, ends: SplineEnds<D>) -> Result<Self> {
+    /// [`new`](Self::new) on owned knots and values (no copies of them are made);
+    /// `finite_values`: the caller has checked every value finite.
+    fn from_owned(
+        knots: Vec<f64>,
+        values: Vec<Point<D>>,
+        ends: SplineEnds<D>,
+        finite_values: bool,
+    ) -> Result<Self> {
         let n = knots.len();
         let periodic = matches!(ends, SplineEnds::Periodic);
         let needed = if periodic { 3 } else { 2 };
@@ -59,8 +65,10 @@ impl<const D: usize> CubicSpline<D> {
             });
         }
         check_parameters(&knots)?;
-        if let Some(index) = values.iter().position(|p| !p.is_finite()) {
-            return Err(Error::NonFinitePoint { index });
+        if !finite_values {
+            if let Some(index) = values.iter().position(|p| !p.is_finite()) {
+                return Err(Error::NonFinitePoint { index });
+            }
         }
         if let SplineEnds::Clamped { start, end } = ends {
             if let Some(&value) = start.0.iter().chain(&end.0).find(|x| !x.is_finite()) {
@@ -82,18 +90,21 @@ impl<const D: usize> CubicSpline<D> {
             }
             values[n - 1] = values[0];
         }
-        let mut slopes = vec![Point::ZERO; n];
         let clamped = match ends {
             SplineEnds::Clamped { start, end } => Some((start, end)),
             _ => None,
         };
-        if matches!(ends, SplineEnds::NotAKnot) && n >= 4 {
-            not_a_knot_slopes(&knots, &values, &mut slopes)?;
-        } else if periodic && n >= 4 {
-            periodic_slopes(&knots, &values, &mut slopes)?;
+        let slopes = if periodic && n >= 4 {
+            periodic_slopes(&knots, &values)?
         } else {
-            SlopeSystem::new(&knots, &ends)?.solve(&values, &mut slopes, 1, clamped);
-        }
+            let mut slopes = vec![Point::ZERO; n];
+            if matches!(ends, SplineEnds::NotAKnot) && n >= 4 {
+                not_a_knot_slopes(&knots, &values, &mut slopes)?;
+            } else {
+                SlopeSystem::new(&knots, &ends)?.solve(&values, &mut slopes, 1, clamped);
+            }
+            slopes
+        };
         Ok(CubicSpline {
             knots: Knots::from_checked(knots),
             values,
@@ -122,8 +133,9 @@ impl<const D: usize> CubicSpline<D> {
                 pts.push(pts[0]);
             }
         }
+        // curve_parameters fails on any point that is not finite.
         let knots = curve_parameters(&pts, parameterization)?;
-        Self::from_owned(knots, pts, ends)
+        Self::from_owned(knots, pts, ends, true)
     }
 
     /// The knots `t_0 < .. < t_{n-1}`.
@@ -274,6 +286,19 @@ fn max_abs<const D: usize>(points: &[Point<D>]) -> f64 {
 /// Fails unless `knots` (at least 2) are finite, strictly increasing, and no gap is below
 /// [`MIN_RELATIVE_KNOT_GAP`] of their span ([`Error::InvalidKnot`]).
 pub(super) fn check_parameters(knots: &[f64]) -> Result<()> {
+    // One pass that only says yes: finite ends and every gap positive and at least the
+    // smallest allowed make the knots finite, strictly increasing and far enough apart.
+    // Anything else goes through the checks below, which name the first fault.
+    if let [first, .., last] = knots {
+        let span = last - first;
+        let floor = (MIN_RELATIVE_KNOT_GAP * span).max(f64::MIN_POSITIVE);
+        let apart = knots
+            .windows(2)
+            .fold(true, |ok, w| ok & (w[1] - w[0] >= floor));
+        if apart && first.is_finite() && span.is_finite() {
+            return Ok(());
+        }
+    }
     check_knots(knots, 2, "a cubic spline (knots)")?;
     let span = knots[knots.len() - 1] - knots[0];
     check_min_gap(

@@ -40,10 +40,9 @@ const FILL_FLOOR: f64 = 1.0 / (1u64 << 60) as f64;
 pub(crate) fn periodic_slopes<const D: usize>(
     knots: &[f64],
     values: &[Point<D>],
-    slopes: &mut [Point<D>],
-) -> Result<()> {
+) -> Result<Vec<Point<D>>> {
     let n = knots.len();
-    debug_assert!(n >= 4 && values.len() == n && slopes.len() == n);
+    debug_assert!(n >= 4 && values.len() == n);
     let p = n - 1;
     let step = |k: usize| knots[k + 1] - knots[k];
     let divided = |k: usize, h: f64| (values[k + 1] - values[k]) * (1.0 / h);
@@ -59,17 +58,16 @@ pub(crate) fn periodic_slopes<const D: usize>(
     let lower_last = 0.5 * h_last;
 
     // Row i normalised: m_i + upper[i] m_{i+1} + fill[i] m_{p-1} = slopes[i].
-    let mut upper = vec![0.0; p - 1];
+    // (Filled as they come: no pass to zero them first.)
+    let mut upper = Vec::with_capacity(p - 1);
+    let mut slopes = Vec::with_capacity(n);
     let mut fill: Vec<f64> = Vec::new();
     let mut filling = true;
     let (mut hp, mut dp) = (h_last, d_last);
     // Row 0's coefficient of m_{p-1} is its "lower" one: start the fill at -1 times it.
     let (mut u_prev, mut s_prev, mut y_prev) = (0.0, -1.0, Point::ZERO);
-    let rows = knots
-        .windows(2)
-        .zip(values.windows(2))
-        .zip(upper.iter_mut().zip(slopes.iter_mut()));
-    for (i, ((t, v), (up, slope))) in rows.enumerate() {
+    let rows = knots.windows(2).zip(values.windows(2)).take(p - 1);
+    for (i, (t, v)) in rows.enumerate() {
         let hc = t[1] - t[0];
         let dc = (v[1] - v[0]) * (1.0 / hc);
         let (lower, diag, above) = (0.5 * hc, hp + hc, 0.5 * hp);
@@ -82,8 +80,8 @@ pub(crate) fn periodic_slopes<const D: usize>(
         let u = above / pivot;
         let inv = 1.0 / pivot;
         let y = rhs.add_scaled(-lower, y_prev) * inv;
-        *up = u;
-        *slope = y;
+        upper.push(u);
+        slopes.push(y);
         let mut s = 0.0;
         if filling {
             s = -lower * s_prev * inv;
@@ -110,7 +108,7 @@ pub(crate) fn periodic_slopes<const D: usize>(
         return Err(singular(p - 1, d));
     }
     let last = f * (1.0 / d);
-    slopes[p - 1] = last;
+    slopes.push(last);
     slopes[p - 2] = y_pen.add_scaled(-g, last);
     let k = fill.len().min(p - 2);
     for i in (k..p - 2).rev() {
@@ -121,8 +119,8 @@ pub(crate) fn periodic_slopes<const D: usize>(
             .add_scaled(-upper[i], slopes[i + 1])
             .add_scaled(-fill[i], last);
     }
-    slopes[p] = slopes[0];
-    Ok(())
+    slopes.push(slopes[0]);
+    Ok(slopes)
 }
 
 #[cfg(test)]
@@ -137,38 +135,44 @@ mod tests {
     fn dense_slopes<const D: usize>(knots: &[f64], values: &[Point<D>]) -> Vec<Point<D>> {
         let p = knots.len() - 1;
         let h = |i: usize| knots[i % p + 1] - knots[i % p];
-        let delta = |i: usize, c: usize| (values[i % p + 1][c] - values[i % p][c]) / h(i);
-        let mut out = vec![Point::ZERO; p + 1];
-        for c in 0..D {
+        let column = |c: usize| -> Vec<f64> {
+            let delta = |i: usize| (values[i % p + 1][c] - values[i % p][c]) / h(i);
+            // The augmented matrix [A | r].
             let mut a = vec![vec![0.0; p + 1]; p];
-            for i in 0..p {
+            for (i, row) in a.iter_mut().enumerate() {
                 let (hp, hc) = (h(i + p - 1), h(i));
                 let lambda = hc / (hp + hc);
                 let mu = hp / (hp + hc);
-                a[i][(i + p - 1) % p] += lambda;
-                a[i][i] += 2.0;
-                a[i][(i + 1) % p] += mu;
-                a[i][p] = 3.0 * (lambda * delta(i + p - 1, c) + mu * delta(i, c));
+                row[(i + p - 1) % p] += lambda;
+                row[i] += 2.0;
+                row[(i + 1) % p] += mu;
+                row[p] = 3.0 * (lambda * delta(i + p - 1) + mu * delta(i));
             }
             for col in 0..p {
                 let pivot = (col..p)
                     .max_by(|&x, &y| a[x][col].abs().total_cmp(&a[y][col].abs()))
                     .unwrap();
                 a.swap(col, pivot);
-                for row in col + 1..p {
-                    let factor = a[row][col] / a[col][col];
-                    for k in col..=p {
-                        a[row][k] -= factor * a[col][k];
+                let top = a[col].clone();
+                for row in a.iter_mut().skip(col + 1) {
+                    let factor = row[col] / top[col];
+                    for (x, &y) in row.iter_mut().zip(&top).skip(col) {
+                        *x -= factor * y;
                     }
                 }
             }
+            let mut x = vec![0.0; p + 1];
             for row in (0..p).rev() {
-                let s: f64 = (row + 1..p).map(|k| a[row][k] * out[k][c]).sum();
-                out[row][c] = (a[row][p] - s) / a[row][row];
+                let s: f64 = (row + 1..p).map(|k| a[row][k] * x[k]).sum();
+                x[row] = (a[row][p] - s) / a[row][row];
             }
-            out[p][c] = out[0][c];
-        }
-        out
+            x[p] = x[0];
+            x
+        };
+        let columns: Vec<Vec<f64>> = (0..D).map(column).collect();
+        (0..=p)
+            .map(|k| Point(std::array::from_fn(|c| columns[c][k])))
+            .collect()
     }
 
     /// Closed 3-D data on `n` knots (the last value repeats the first) with steps that vary
@@ -207,8 +211,7 @@ mod tests {
         for n in [4usize, 5, 6, 7, 9, 16, 41, 150] {
             for spread in [1.0, 3.0, 1e3, 1e-3] {
                 let (knots, values) = ring(n, spread);
-                let mut got = vec![Point::ZERO; n];
-                periodic_slopes(&knots, &values, &mut got).unwrap();
+                let got = periodic_slopes(&knots, &values).unwrap();
                 let expect = dense_slopes(&knots, &values);
                 let scale = expect.iter().fold(1.0f64, |m, s| m.max(s.max_abs()));
                 let err = max_difference(&got, &expect);
@@ -228,8 +231,7 @@ mod tests {
         for spread in [1.0, 40.0] {
             let n = 100_001;
             let (knots, values) = ring(n, spread);
-            let mut got = vec![Point::ZERO; n];
-            periodic_slopes(&knots, &values, &mut got).unwrap();
+            let got = periodic_slopes(&knots, &values).unwrap();
             let mut expect = vec![Point::ZERO; n];
             SlopeSystem::new(&knots, &SplineEnds::<3>::Periodic)
                 .unwrap()
@@ -285,8 +287,7 @@ mod tests {
         }
         let (_, mut values) = ring(n, 1.0);
         values[n - 1] = values[0];
-        let mut got = vec![Point::ZERO; n];
-        periodic_slopes(&knots, &values, &mut got).unwrap();
+        let got = periodic_slopes(&knots, &values).unwrap();
         let expect = dense_slopes(&knots, &values);
         let scale = expect.iter().fold(0.0f64, |m, s| m.max(s.max_abs()));
         let err = max_difference(&got, &expect);
