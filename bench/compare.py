@@ -1179,7 +1179,8 @@ def main():
         return
     rounds = args.rounds or (3 if args.quick else 9)
     if not args.quick and rounds < 9:
-        sys.exit("full runs take at least 9 rounds (fewer only with --quick)")
+        print(f"full runs take at least 9 rounds (fewer only with --quick): 9, not {rounds}")
+        rounds = args.rounds = 9
 
     if args.child:
         results = run_jobs(args, rounds)
