@@ -33,6 +33,9 @@ run = lambda: S(us, vs, grid=True, out=out)""",
 rng = np.random.default_rng(7)
 pts = noisy_spiral(100_000, 2.9e-4, rng)
 run = lambda: karkas.fit_curve(pts, knots=2012)""",
+    "closed periodic cubic spline 1e5 (chord)": """
+pts = closed_curve(100_000)
+run = lambda: karkas.CubicSpline(pts, parameterization="chord", bc="periodic")""",
     "closed DPS interpolation 1e5": """
 pts = closed_curve(100_000)
 run = lambda: karkas.DiscreteSpline.interpolate(pts, order=3, n=10)""",

@@ -12,7 +12,7 @@ use super::parameterization::{curve_parameters, CurveParameterization};
 use crate::core::knots::{check_knots, check_min_gap, Knots};
 use crate::core::parallel::for_each_chunk;
 use crate::core::{Curve, Interval, PiecewiseCurve, Side};
-use crate::spline::{hermite_basis, not_a_knot_slopes, SlopeSystem, SplineEnds};
+use crate::spline::{hermite_basis, not_a_knot_slopes, periodic_slopes, SlopeSystem, SplineEnds};
 use crate::{Error, Point, Result};
 
 /// A cubic interpolating spline `t -> P(t)` in R^D on knots `t_0 < .. < t_{n-1}`.
@@ -36,11 +36,17 @@ impl<const D: usize> CubicSpline<D> {
     /// derivative, and for periodic ends a last value that does not repeat the first
     /// (relative tolerance `1e-12`, [`Error::OpenPeriodicData`]).
     pub fn new(knots: &[f64], values: &[Point<D>], ends: SplineEnds<D>) -> Result<Self> {
-        Self::from_owned(knots.to_vec(), values.to_vec(), ends)
+        Self::from_owned(knots.to_vec(), values.to_vec(), ends, false)
     }
 
-    /// [`new`](Self::new) on owned knots and values (no copies of them are made).
-    fn from_owned(knots: Vec<f64>, values: Vec<Point<D>>, ends: SplineEnds<D>) -> Result<Self> {
+    /// [`new`](Self::new) on owned knots and values (no copies of them are made);
+    /// `finite_values`: the caller has checked every value finite.
+    fn from_owned(
+        knots: Vec<f64>,
+        values: Vec<Point<D>>,
+        ends: SplineEnds<D>,
+        finite_values: bool,
+    ) -> Result<Self> {
         let n = knots.len();
         let periodic = matches!(ends, SplineEnds::Periodic);
         let needed = if periodic { 3 } else { 2 };
@@ -59,8 +65,10 @@ impl<const D: usize> CubicSpline<D> {
             });
         }
         check_parameters(&knots)?;
-        if let Some(index) = values.iter().position(|p| !p.is_finite()) {
-            return Err(Error::NonFinitePoint { index });
+        if !finite_values {
+            if let Some(index) = values.iter().position(|p| !p.is_finite()) {
+                return Err(Error::NonFinitePoint { index });
+            }
         }
         if let SplineEnds::Clamped { start, end } = ends {
             if let Some(&value) = start.0.iter().chain(&end.0).find(|x| !x.is_finite()) {
@@ -73,8 +81,8 @@ impl<const D: usize> CubicSpline<D> {
         }
         let mut values = values;
         if periodic {
-            let scale = values.iter().fold(0.0f64, |m, p| m.max(p.max_abs()));
-            if (values[n - 1] - values[0]).max_abs() > 1e-12 * scale {
+            let seam = values[n - 1] - values[0];
+            if seam != Point::ZERO && seam.max_abs() > 1e-12 * max_abs(&values) {
                 return Err(Error::OpenPeriodicData {
                     what: "a periodic spline",
                     item: "value",
@@ -82,16 +90,21 @@ impl<const D: usize> CubicSpline<D> {
             }
             values[n - 1] = values[0];
         }
-        let mut slopes = vec![Point::ZERO; n];
         let clamped = match ends {
             SplineEnds::Clamped { start, end } => Some((start, end)),
             _ => None,
         };
-        if matches!(ends, SplineEnds::NotAKnot) && n >= 4 {
-            not_a_knot_slopes(&knots, &values, &mut slopes)?;
+        let slopes = if periodic && n >= 4 {
+            periodic_slopes(&knots, &values)?
         } else {
-            SlopeSystem::new(&knots, &ends)?.solve(&values, &mut slopes, 1, clamped);
-        }
+            let mut slopes = vec![Point::ZERO; n];
+            if matches!(ends, SplineEnds::NotAKnot) && n >= 4 {
+                not_a_knot_slopes(&knots, &values, &mut slopes)?;
+            } else {
+                SlopeSystem::new(&knots, &ends)?.solve(&values, &mut slopes, 1, clamped);
+            }
+            slopes
+        };
         Ok(CubicSpline {
             knots: Knots::from_checked(knots),
             values,
@@ -111,16 +124,18 @@ impl<const D: usize> CubicSpline<D> {
         parameterization: CurveParameterization,
         ends: SplineEnds<D>,
     ) -> Result<Self> {
-        let mut pts = points.to_vec();
+        // Room for the seam point: no second copy of the points when it is appended.
+        let mut pts = Vec::with_capacity(points.len() + 1);
+        pts.extend_from_slice(points);
         if matches!(ends, SplineEnds::Periodic) && !pts.is_empty() {
-            let scale = pts.iter().fold(0.0f64, |m, p| m.max(p.max_abs()));
             let last = pts[pts.len() - 1];
-            if (last - pts[0]).max_abs() > 1e-12 * scale {
+            if last != pts[0] && (last - pts[0]).max_abs() > 1e-12 * max_abs(&pts) {
                 pts.push(pts[0]);
             }
         }
+        // curve_parameters fails on any point that is not finite.
         let knots = curve_parameters(&pts, parameterization)?;
-        Self::from_owned(knots, pts, ends)
+        Self::from_owned(knots, pts, ends, true)
     }
 
     /// The knots `t_0 < .. < t_{n-1}`.
@@ -256,9 +271,34 @@ impl<const D: usize> PiecewiseCurve<D> for CubicSpline<D> {
 /// knots make slopes overflow and the system singular.
 const MIN_RELATIVE_KNOT_GAP: f64 = 1e-12;
 
+/// The largest absolute coordinate of `points` (NaN ignored), one running maximum per
+/// coordinate so that the maxima do not wait on each other.
+fn max_abs<const D: usize>(points: &[Point<D>]) -> f64 {
+    let most = points.iter().fold([0.0f64; D], |mut m, p| {
+        for (m, c) in m.iter_mut().zip(p.0) {
+            *m = m.max(c.abs());
+        }
+        m
+    });
+    most.into_iter().fold(0.0, f64::max)
+}
+
 /// Fails unless `knots` (at least 2) are finite, strictly increasing, and no gap is below
 /// [`MIN_RELATIVE_KNOT_GAP`] of their span ([`Error::InvalidKnot`]).
 pub(super) fn check_parameters(knots: &[f64]) -> Result<()> {
+    // One pass that only says yes: finite ends and every gap positive and at least the
+    // smallest allowed make the knots finite, strictly increasing and far enough apart.
+    // Anything else goes through the checks below, which name the first fault.
+    if let [first, .., last] = knots {
+        let span = last - first;
+        let floor = (MIN_RELATIVE_KNOT_GAP * span).max(f64::MIN_POSITIVE);
+        let apart = knots
+            .windows(2)
+            .fold(true, |ok, w| ok & (w[1] - w[0] >= floor));
+        if apart && first.is_finite() && span.is_finite() {
+            return Ok(());
+        }
+    }
     check_knots(knots, 2, "a cubic spline (knots)")?;
     let span = knots[knots.len() - 1] - knots[0];
     check_min_gap(

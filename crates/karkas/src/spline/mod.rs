@@ -50,12 +50,14 @@
 //! assert_eq!(reason(spline.unwrap_err()), reason(fit.unwrap_err()));
 //! ```
 
+mod cyclic;
 mod ends;
 mod hermite;
 mod one_pass;
 mod system;
 mod transposed;
 
+pub(crate) use cyclic::periodic_slopes;
 pub use ends::SplineEnds;
 pub use hermite::{hermite_basis, hermite_cubic};
 pub(crate) use one_pass::not_a_knot_slopes;
