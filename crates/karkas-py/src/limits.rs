@@ -13,8 +13,9 @@
 //! imported (a size such as `512M` or `2G`), else [`DEFAULT_MAX_MEMORY`], 2 GiB, the default
 //! of `--max-memory`.
 //!
-//! Arrays are made by `numpy.zeros` called through Python ([`new_array`]): a failed
-//! allocation is NumPy's own `MemoryError`, never a null pointer inside the extension.
+//! Arrays are made by `numpy.zeros` called through Python ([`new_array`]), or `numpy.empty`
+//! for results written in full ([`new_empty_array`]): a failed allocation is NumPy's own
+//! `MemoryError`, never a null pointer inside the extension.
 
 use karkas_io::picture::budget::{human_bytes, parse_size};
 use numpy::PyArrayDyn;
@@ -112,6 +113,26 @@ pub fn new_array<'py>(
 ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
     check_memory(py, request, bytes_of(shape, 8))?;
     zeros(py, shape)
+}
+
+/// `numpy.empty`, looked up once.
+static NUMPY_EMPTY: PyOnceLock<Py<PyAny>> = PyOnceLock::new();
+
+/// A new float64 array of `shape` whose contents are not set (`numpy.empty`), checked against
+/// the cap first (as `request`): for results the caller overwrites entirely, so that no
+/// zeroing pass precedes the writes (`numpy.zeros` of an array from the heap, rather than
+/// from fresh pages, clears it first).
+pub fn new_empty_array<'py>(
+    py: Python<'py>,
+    shape: &[usize],
+    request: &str,
+) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+    check_memory(py, request, bytes_of(shape, 8))?;
+    let empty = NUMPY_EMPTY.get_or_try_init(py, || -> PyResult<Py<PyAny>> {
+        Ok(py.import("numpy")?.getattr("empty")?.unbind())
+    })?;
+    let array = empty.bind(py).call1((PyTuple::new(py, shape)?,))?;
+    Ok(array.cast_into::<PyArrayDyn<f64>>()?)
 }
 
 /// A new zeroed float64 array of `shape` (no cap check: for sizes already checked or held).
