@@ -150,8 +150,8 @@ impl<const D: usize> LlCurve<D> {
 
     /// Batch evaluation with the kernel specialised to order `L`, four parameters per step:
     /// the parameters are brought into the domain and turned into segment, `xi` and `h(xi)`
-    /// in `f64x4` ([`segment_and_kernel`]), then each point combines its segment's
-    /// coefficients.
+    /// in `f64x4` ([`segment_and_kernel`]); four that share a segment combine its
+    /// coefficients in `f64x4` too, others point by point (the same operations either way).
     fn eval_batch<const L: usize>(&self, ts: &[f64], out: &mut [Point<D>]) {
         let coeffs: [f64; L] = core::array::from_fn(|k| self.kernel.value_coeffs()[k]);
         let axis = self.axis;
@@ -166,6 +166,8 @@ impl<const D: usize> LlCurve<D> {
         };
         let mut t4 = ts.chunks_exact(LANES);
         let mut o4 = out.chunks_exact_mut(LANES);
+        // The segment of the last four parameters that shared one, with its coefficients.
+        let mut shared: Option<(f64, [[f64x4; 3]; D])> = None;
         for (tc, oc) in (&mut t4).zip(&mut o4) {
             let t = f64x4::new([tc[0], tc[1], tc[2], tc[3]]);
             let t = if axis.is_closed() {
@@ -175,10 +177,33 @@ impl<const D: usize> LlCurve<D> {
                 let t = t.cmp_lt(start).blend(start, t);
                 t.cmp_gt(end).blend(end, t)
             };
-            let [i, xi, h] = segment_and_kernel::<f64x4, L>(t * scale + half, &coeffs);
-            let (i, xi, h) = (i.to_array(), xi.to_array(), h.to_array());
-            for (l, p) in oc.iter_mut().enumerate() {
-                *p = point(i[l], xi[l], h[l]);
+            let [i, xi4, h4] = segment_and_kernel::<f64x4, L>(t * scale + half, &coeffs);
+            let i = i.to_array();
+            if i.iter().all(|&j| j == i[0]) {
+                // One segment for the four (sorted parameters, nearly always): its
+                // coefficients broadcast once per segment, the combination in `f64x4`.
+                let seg = match shared {
+                    Some((j, seg)) if j == i[0] => seg,
+                    _ => {
+                        let s = &self.segments[(i[0] as usize).clamp(1, nodes) - 1];
+                        let seg: [[f64x4; 3]; D] = std::array::from_fn(|c| {
+                            [s.a.0[c], s.b.0[c], s.c.0[c]].map(f64x4::splat)
+                        });
+                        shared = Some((i[0], seg));
+                        seg
+                    }
+                };
+                for (c, [a, b, cc]) in seg.iter().enumerate() {
+                    let x = (*a + xi4 * *b + h4 * *cc).to_array();
+                    for (p, x) in oc.iter_mut().zip(x) {
+                        p.0[c] = x;
+                    }
+                }
+            } else {
+                let (xi, h) = (xi4.to_array(), h4.to_array());
+                for (l, p) in oc.iter_mut().enumerate() {
+                    *p = point(i[l], xi[l], h[l]);
+                }
             }
         }
         for (p, &t) in o4.into_remainder().iter_mut().zip(t4.remainder()) {
@@ -276,6 +301,45 @@ mod tests {
                 c.eval_into(&ts, &mut out);
                 for (&t, p) in ts.iter().zip(&out) {
                     assert!(p.distance(c.eval(t)) < 1e-13, "order {order} t {t}");
+                }
+            }
+        }
+    }
+
+    /// The four-lane steps (one shared segment, or gathered point by point) give the bits of
+    /// the one-parameter remainder path, for sorted and shuffled parameters, open and closed,
+    /// outside the domain and at NaN (NaN payloads aside).
+    #[test]
+    fn four_lane_steps_equal_the_remainder_path_bitwise() {
+        let pts: Vec<Point<3>> = (0..40)
+            .map(|i| {
+                let f = i as f64 * 0.3;
+                Point([f.cos() * 3.0, f * f * 0.1, (2.0 * f).sin()])
+            })
+            .collect();
+        for closed in [false, true] {
+            let c = LlCurve::new(&pts, 5, closed).unwrap();
+            let mut ts: Vec<f64> = (0..=4001)
+                .map(|k| -0.05 + 1.1 * k as f64 / 4001.0)
+                .collect();
+            ts[100] = f64::NAN;
+            let mut shuffled = ts.clone();
+            for i in 0..shuffled.len() {
+                shuffled.swap(i, (i * 7919) % ts.len());
+            }
+            for ts in [&ts, &shuffled] {
+                let mut out = vec![Point::ZERO; ts.len()];
+                c.eval_into(ts, &mut out);
+                for (&t, p) in ts.iter().zip(&out) {
+                    let mut one = [Point::ZERO];
+                    c.eval_into(&[t], &mut one);
+                    for k in 0..3 {
+                        let (a, b) = (p[k], one[0][k]);
+                        assert!(
+                            a.to_bits() == b.to_bits() || (a.is_nan() && b.is_nan()),
+                            "t={t}"
+                        );
+                    }
                 }
             }
         }

@@ -196,6 +196,8 @@ impl<const D: usize> CubicSpline<D> {
         let mut hint = 0;
         let mut t4 = ts.chunks_exact(LANES);
         let mut o4 = out.chunks_exact_mut(LANES);
+        // The operands of the last group of four that shared one piece.
+        let mut shared = None;
         for (tc, oc) in (&mut t4).zip(&mut o4) {
             let mut t = [0.0; LANES];
             let mut k = [0; LANES];
@@ -204,7 +206,19 @@ impl<const D: usize> CubicSpline<D> {
                 hint = piece_near(knots, guess, t[l], hint);
                 k[l] = hint;
             }
-            oc.copy_from_slice(&pieces.at4::<ORDER>(k, t));
+            if k.iter().all(|&j| j == k[0]) {
+                let operands = match shared {
+                    Some((j, ops)) if j == k[0] => ops,
+                    _ => {
+                        let ops = pieces.operands(k);
+                        shared = Some((k[0], ops));
+                        ops
+                    }
+                };
+                operands.at4::<ORDER>(t, oc);
+            } else {
+                pieces.operands(k).at4::<ORDER>(t, oc);
+            }
         }
         for (p, &t) in o4.into_remainder().iter_mut().zip(t4.remainder()) {
             let t = wrap(t);

@@ -155,33 +155,69 @@ impl<const D: usize> Pieces<'_, D> {
         }))
     }
 
-    /// The `ORDER`-th derivative at four parameters `t` (already wrapped) on their pieces `k`.
+    /// The operands of four parameters on the pieces `k`: gathered lane by lane, or
+    /// broadcast once when the four share a piece (sorted parameters, nearly always).
     #[inline(always)]
-    pub(super) fn at4<const ORDER: usize>(
-        &self,
-        k: [usize; LANES],
-        t: [f64; LANES],
-    ) -> [Point<D>; LANES] {
+    pub(super) fn operands(&self, k: [usize; LANES]) -> Operands<D> {
+        if k.iter().all(|&j| j == k[0]) {
+            let k = k[0];
+            let start = self.knots[k];
+            let ends = |c: usize| {
+                [
+                    self.values[k][c],
+                    self.slopes[k][c],
+                    self.values[k + 1][c],
+                    self.slopes[k + 1][c],
+                ]
+                .map(f64x4::splat)
+            };
+            return Operands {
+                start: f64x4::splat(start),
+                h: f64x4::splat(self.knots[k + 1] - start),
+                inv_h: f64x4::splat(self.inv_steps[k]),
+                ends: std::array::from_fn(ends),
+            };
+        }
         let gather = |f: &dyn Fn(usize) -> f64| f64x4::new(k.map(f));
         let start = gather(&|k| self.knots[k]);
-        let h = gather(&|k| self.knots[k + 1]) - start;
-        let inv_h = gather(&|k| self.inv_steps[k]);
-        let s = (f64x4::new(t) - start) * inv_h;
+        Operands {
+            start,
+            h: gather(&|k| self.knots[k + 1]) - start,
+            inv_h: gather(&|k| self.inv_steps[k]),
+            ends: std::array::from_fn(|c| {
+                [
+                    gather(&|k| self.values[k][c]),
+                    gather(&|k| self.slopes[k][c]),
+                    gather(&|k| self.values[k + 1][c]),
+                    gather(&|k| self.slopes[k + 1][c]),
+                ]
+            }),
+        }
+    }
+}
+
+/// What four parameters need of their pieces, lane by lane: the piece start `t_k`, its step
+/// `h`, `1 / h`, and per coordinate `[y_k, m_k, y_{k+1}, m_{k+1}]`.
+#[derive(Clone, Copy)]
+pub(super) struct Operands<const D: usize> {
+    start: f64x4,
+    h: f64x4,
+    inv_h: f64x4,
+    ends: [[f64x4; 4]; D],
+}
+
+impl<const D: usize> Operands<D> {
+    /// The `ORDER`-th derivative (`ORDER <= 3`) at the four parameters `t` (already wrapped).
+    #[inline(always)]
+    pub(super) fn at4<const ORDER: usize>(&self, t: [f64; LANES], out: &mut [Point<D>]) {
+        let s = (f64x4::new(t) - self.start) * self.inv_h;
         let w = unit_weights::<f64x4, ORDER>(s);
-        let mut out = [Point([0.0; D]); LANES];
         for c in 0..D {
-            let ends = [
-                gather(&|k| self.values[k][c]),
-                gather(&|k| self.slopes[k][c]),
-                gather(&|k| self.values[k + 1][c]),
-                gather(&|k| self.slopes[k + 1][c]),
-            ];
-            let d = combine::<f64x4, ORDER>(&w, ends, h, inv_h).to_array();
+            let d = combine::<f64x4, ORDER>(&w, self.ends[c], self.h, self.inv_h).to_array();
             for (p, x) in out.iter_mut().zip(d) {
                 p.0[c] = x;
             }
         }
-        out
     }
 }
 
@@ -272,7 +308,8 @@ mod tests {
         }
     }
 
-    /// Four lanes equal four single evaluations bit for bit, every order.
+    /// Four lanes equal four single evaluations bit for bit, every order, on four pieces
+    /// (gathered operands) and on one (broadcast operands).
     #[test]
     fn four_lanes_equal_single_points() {
         let knots = [0.0, 0.3, 1.1, 1.15, 2.0];
@@ -287,20 +324,22 @@ mod tests {
             values: &values,
             slopes: &slopes,
         };
-        let t = [0.1, 1.12, -0.5, 2.7];
-        let k = t.map(|t| piece_of(&knots, None, t));
-        fn check<const O: usize>(p: &Pieces<'_, 2>, k: [usize; 4], t: [f64; 4]) {
-            let four = p.at4::<O>(k, t);
-            for l in 0..4 {
-                let one = p.at::<O>(k[l], (t[l] - p.knots[k[l]]) * p.inv_steps[k[l]]);
-                for c in 0..2 {
-                    assert_eq!(four[l][c].to_bits(), one[c].to_bits(), "order {O} lane {l}");
+        for t in [[0.1, 1.12, -0.5, 2.7], [0.31, 0.5, 0.7, 1.0999]] {
+            let k = t.map(|t| piece_of(&knots, None, t));
+            fn check<const O: usize>(p: &Pieces<'_, 2>, k: [usize; 4], t: [f64; 4]) {
+                let mut four = [Point([0.0; 2]); 4];
+                p.operands(k).at4::<O>(t, &mut four);
+                for l in 0..4 {
+                    let one = p.at::<O>(k[l], (t[l] - p.knots[k[l]]) * p.inv_steps[k[l]]);
+                    for c in 0..2 {
+                        assert_eq!(four[l][c].to_bits(), one[c].to_bits(), "order {O} lane {l}");
+                    }
                 }
             }
+            check::<0>(&p, k, t);
+            check::<1>(&p, k, t);
+            check::<2>(&p, k, t);
+            check::<3>(&p, k, t);
         }
-        check::<0>(&p, k, t);
-        check::<1>(&p, k, t);
-        check::<2>(&p, k, t);
-        check::<3>(&p, k, t);
     }
 }
