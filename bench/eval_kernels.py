@@ -23,6 +23,12 @@ to tracemalloc).
 Run: ``python3 bench/eval_kernels.py [ROUNDS]`` (default 9) with karkas importable (e.g.
 ``PYTHONPATH`` pointing at an installed wheel). Prints one table per thread count and the
 memory table.
+
+Rust kernels before and after a change, on one thread:
+``python3 bench/eval_kernels.py --criterion BEFORE_EXE AFTER_EXE PATTERN [ROUNDS]`` runs two
+builds of the same Criterion bench target (``cargo bench -p karkas-bench --bench ll
+--no-run`` prints the executable) alternately, ROUNDS times (default 5), and prints the
+median time of each benchmark matching PATTERN (a regular expression) and the ratio.
 """
 
 import os
@@ -141,7 +147,39 @@ def memory(tool):
     print(f"{tool} {(peak - before) / 1024:.1f} {(held - before) / 1024:.1f}")
 
 
+def criterion_pair(before, after, pattern, rounds):
+    """Runs two Criterion bench executables (the same benches built before and after a
+    change) alternately, ROUNDS times each, and prints per benchmark the median over rounds
+    of Criterion's point estimate and the after/before ratio of the medians."""
+    import re
+
+    found = {}
+    for _ in range(rounds):
+        for label, exe in (("before", before), ("after", after)):
+            text = subprocess.run(
+                [exe, "--bench", pattern, "--warm-up-time", "1", "--measurement-time", "2",
+                 "--noplot"],
+                capture_output=True, text=True, check=True,
+                env=dict(os.environ, RAYON_NUM_THREADS="1"),
+            ).stdout
+            for name, mid, unit in re.findall(
+                    r"^(\S+)\s*\n?\s+time:\s+\[\S+ \S+ (\S+) (\S+) \S+ \S+\]", text,
+                    re.M):
+                scale = {"ns": 1e-6, "µs": 1e-3, "us": 1e-3, "ms": 1.0, "s": 1e3}[unit]
+                found.setdefault(name, {}).setdefault(label, []).append(float(mid) * scale)
+    print(f"{'benchmark':52} {'before ms':>10} {'after ms':>10} {'after/before':>13}")
+    for name, runs in found.items():
+        b, a = statistics.median(runs["before"]), statistics.median(runs["after"])
+        print(f"{name:52} {b:10.3f} {a:10.3f} {a / b:13.2f}")
+
+
 def main():
+    if len(sys.argv) > 4 and sys.argv[1] == "--criterion":
+        rounds = int(sys.argv[5]) if len(sys.argv) > 5 else 5
+        print(f"load average: {os.getloadavg()}")
+        criterion_pair(sys.argv[2], sys.argv[3], sys.argv[4], rounds)
+        print(f"load average: {os.getloadavg()}")
+        return
     if len(sys.argv) > 2 and sys.argv[1] == "--speed":
         speed(int(sys.argv[2]))
         return

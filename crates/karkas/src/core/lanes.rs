@@ -10,10 +10,18 @@
 
 use std::ops::{Add, Mul, Sub};
 
-pub(crate) use wide::{f64x4, CmpGt, CmpLt};
+pub(crate) use wide::{f64x4, CmpGe, CmpGt, CmpLt};
 
 /// The number of parameters of one [`f64x4`].
 pub(crate) const LANES: usize = 4;
+
+/// The four numbers of `chunk` (of length [`LANES`], e.g. from `chunks_exact`) as one vector,
+/// read by one unaligned load (building it number by number goes through the stack and
+/// stalls on the store forwarding).
+#[inline(always)]
+pub(crate) fn load4(chunk: &[f64]) -> f64x4 {
+    bytemuck::pod_read_unaligned(bytemuck::cast_slice(chunk))
+}
 
 /// A number or four numbers: the arithmetic a batch kernel and its one-point form share.
 pub(crate) trait Lane:

@@ -17,7 +17,7 @@ use super::batch::segment_and_kernel;
 use super::frame::{close, coincide, extend, model_scale, validate};
 use super::kernel::{pow_n, LlKernel};
 use super::prefilter::interpolation_controls;
-use crate::core::lanes::{f64x4, CmpGt, CmpLt, LANES};
+use crate::core::lanes::{f64x4, load4, CmpGt, CmpLt, LANES};
 use crate::core::parallel::for_each_chunk;
 use crate::core::PolynomialPieces;
 use crate::core::{Curve, Interval, PiecewiseCurve, Side};
@@ -167,9 +167,10 @@ impl<const D: usize> LlCurve<D> {
         let mut t4 = ts.chunks_exact(LANES);
         let mut o4 = out.chunks_exact_mut(LANES);
         // The segment of the last four parameters that shared one, with its coefficients.
-        let mut shared: Option<(f64, [[f64x4; 3]; D])> = None;
+        let mut shared_segment = f64::NAN;
+        let mut shared = [[f64x4::splat(0.0); 3]; D];
         for (tc, oc) in (&mut t4).zip(&mut o4) {
-            let t = f64x4::new([tc[0], tc[1], tc[2], tc[3]]);
+            let t = load4(tc);
             let t = if axis.is_closed() {
                 f64x4::new(t.to_array().map(|t| axis.reduce(t)))
             } else {
@@ -182,18 +183,13 @@ impl<const D: usize> LlCurve<D> {
             if i.iter().all(|&j| j == i[0]) {
                 // One segment for the four (sorted parameters, nearly always): its
                 // coefficients broadcast once per segment, the combination in `f64x4`.
-                let seg = match shared {
-                    Some((j, seg)) if j == i[0] => seg,
-                    _ => {
-                        let s = &self.segments[(i[0] as usize).clamp(1, nodes) - 1];
-                        let seg: [[f64x4; 3]; D] = std::array::from_fn(|c| {
-                            [s.a.0[c], s.b.0[c], s.c.0[c]].map(f64x4::splat)
-                        });
-                        shared = Some((i[0], seg));
-                        seg
-                    }
-                };
-                for (c, [a, b, cc]) in seg.iter().enumerate() {
+                if shared_segment != i[0] {
+                    let s = &self.segments[(i[0] as usize).clamp(1, nodes) - 1];
+                    shared =
+                        std::array::from_fn(|c| [s.a.0[c], s.b.0[c], s.c.0[c]].map(f64x4::splat));
+                    shared_segment = i[0];
+                }
+                for (c, [a, b, cc]) in shared.iter().enumerate() {
                     let x = (*a + xi4 * *b + h4 * *cc).to_array();
                     for (p, x) in oc.iter_mut().zip(x) {
                         p.0[c] = x;

@@ -11,7 +11,7 @@
 use super::parameterization::{curve_parameters, CurveParameterization};
 use super::spline_eval::{piece_near, piece_of, Pieces, UniformGuess};
 use crate::core::knots::{check_knots, check_min_gap, Knots};
-use crate::core::lanes::LANES;
+use crate::core::lanes::{f64x4, load4, CmpGe, CmpLt, LANES};
 use crate::core::parallel::for_each_chunk;
 use crate::core::{Curve, Interval, PiecewiseCurve, Side};
 use crate::spline::{hermite_basis, not_a_knot_slopes, SlopeSystem, SplineEnds};
@@ -193,31 +193,46 @@ impl<const D: usize> CubicSpline<D> {
         let pieces = self.pieces();
         let (knots, guess) = (&self.knots[..], self.guess);
         let wrap = |t: f64| if self.periodic { domain.wrap(t) } else { t };
+        let last = knots.len() - 2;
+        // The piece of the last four parameters that shared one: its bounds (open at the
+        // ends of the knots) and its operands, broadcast.
+        let bounds = |k: usize| {
+            let lo = if k == 0 { f64::NEG_INFINITY } else { knots[k] };
+            let hi = if k == last {
+                f64::INFINITY
+            } else {
+                knots[k + 1]
+            };
+            (f64x4::splat(lo), f64x4::splat(hi))
+        };
         let mut hint = 0;
+        let (mut lo, mut hi) = bounds(0);
+        let mut shared = pieces.operands([0; LANES]);
         let mut t4 = ts.chunks_exact(LANES);
         let mut o4 = out.chunks_exact_mut(LANES);
-        // The operands of the last group of four that shared one piece.
-        let mut shared = None;
         for (tc, oc) in (&mut t4).zip(&mut o4) {
-            let mut t = [0.0; LANES];
+            let tv = if self.periodic {
+                f64x4::new([wrap(tc[0]), wrap(tc[1]), wrap(tc[2]), wrap(tc[3])])
+            } else {
+                load4(tc)
+            };
+            // All four on the shared piece (NaN never is): `t_k <= t < t_{k+1}` lane-wise.
+            if (tv.cmp_ge(lo) & tv.cmp_lt(hi)).all() {
+                shared.at4::<ORDER>(tv, oc);
+                continue;
+            }
+            let t = tv.to_array();
             let mut k = [0; LANES];
             for l in 0..LANES {
-                t[l] = wrap(tc[l]);
                 hint = piece_near(knots, guess, t[l], hint);
                 k[l] = hint;
             }
             if k.iter().all(|&j| j == k[0]) {
-                let operands = match shared {
-                    Some((j, ops)) if j == k[0] => ops,
-                    _ => {
-                        let ops = pieces.operands(k);
-                        shared = Some((k[0], ops));
-                        ops
-                    }
-                };
-                operands.at4::<ORDER>(t, oc);
+                (lo, hi) = bounds(k[0]);
+                shared = pieces.operands(k);
+                shared.at4::<ORDER>(tv, oc);
             } else {
-                pieces.operands(k).at4::<ORDER>(t, oc);
+                pieces.operands(k).at4::<ORDER>(tv, oc);
             }
         }
         for (p, &t) in o4.into_remainder().iter_mut().zip(t4.remainder()) {

@@ -209,8 +209,8 @@ pub(super) struct Operands<const D: usize> {
 impl<const D: usize> Operands<D> {
     /// The `ORDER`-th derivative (`ORDER <= 3`) at the four parameters `t` (already wrapped).
     #[inline(always)]
-    pub(super) fn at4<const ORDER: usize>(&self, t: [f64; LANES], out: &mut [Point<D>]) {
-        let s = (f64x4::new(t) - self.start) * self.inv_h;
+    pub(super) fn at4<const ORDER: usize>(&self, t: f64x4, out: &mut [Point<D>]) {
+        let s = (t - self.start) * self.inv_h;
         let w = unit_weights::<f64x4, ORDER>(s);
         for c in 0..D {
             let d = combine::<f64x4, ORDER>(&w, self.ends[c], self.h, self.inv_h).to_array();
@@ -328,7 +328,7 @@ mod tests {
             let k = t.map(|t| piece_of(&knots, None, t));
             fn check<const O: usize>(p: &Pieces<'_, 2>, k: [usize; 4], t: [f64; 4]) {
                 let mut four = [Point([0.0; 2]); 4];
-                p.operands(k).at4::<O>(t, &mut four);
+                p.operands(k).at4::<O>(f64x4::new(t), &mut four);
                 for l in 0..4 {
                     let one = p.at::<O>(k[l], (t[l] - p.knots[k[l]]) * p.inv_steps[k[l]]);
                     for c in 0..2 {
