@@ -6,7 +6,7 @@ use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Through
 use karkas::param::{
     BicubicSurface, CubicSpline, CurveParameterization, GridParameterization, SplineEnds,
 };
-use karkas::{Grid, Point3, Surface};
+use karkas::{Curve, Grid, Point3, Surface};
 use std::hint::black_box;
 
 /// A wavy sheet of `n x n` points with uneven spacing.
@@ -76,5 +76,35 @@ fn spline(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, bicubic, spline);
+/// Batch evaluation of a cubic spline (values, first derivatives) at 10^6 sorted parameters
+/// into a reused buffer: the kernel the Python package's `CubicSpline(t, out=...)` runs.
+fn spline_eval(c: &mut Criterion) {
+    let mut group = c.benchmark_group("cubic_spline_eval_3d");
+    group.sample_size(20);
+    let points: Vec<Point3> = (0..1000)
+        .map(|i| {
+            let s = i as f64 * 1e-2;
+            Point3::new([s.cos() * (1.0 + 0.3 * (7.0 * s).sin()), s.sin(), 0.2 * s])
+        })
+        .collect();
+    let curve = CubicSpline::through(
+        &points,
+        CurveParameterization::ChordLength,
+        SplineEnds::NotAKnot,
+    )
+    .unwrap();
+    let n = 1_000_000;
+    let d = curve.domain();
+    let ts: Vec<f64> = (0..n).map(|i| d.uniform(i, n)).collect();
+    let mut out = vec![Point3::ZERO; n];
+    group.throughput(Throughput::Elements(n as u64));
+    for k in [0usize, 1] {
+        group.bench_function(BenchmarkId::new("sorted_1000_knots_order", k), |b| {
+            b.iter(|| curve.deriv_into(black_box(&ts), k, &mut out))
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, bicubic, spline, spline_eval);
 criterion_main!(benches);

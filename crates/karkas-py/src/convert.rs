@@ -23,7 +23,7 @@ use pyo3::sync::PyOnceLock;
 use pyo3::types::{PyBool, PyFloat, PyInt};
 
 use crate::errors::{library_error, KarkasError, KnotsError, OptionError, PointsError};
-use crate::limits::{bytes_of, check_memory, new_array, shape_text, zeros};
+use crate::limits::{bytes_of, check_memory, new_empty_array, shape_text, zeros};
 
 /// Evaluations of at least this many points run with the GIL released (below it the release
 /// costs more than it frees).
@@ -159,10 +159,20 @@ impl GridArray<'_> {
         self.array.shape()[1]
     }
 
-    /// The grid (rows along `u`) as karkas points.
+    /// The grid (rows along `u`) as karkas points: one copy of the array, read in place when
+    /// it is C-contiguous and in row-major order through its strides otherwise.
     pub fn grid<const D: usize>(&self) -> PyResult<Grid<Point<D>>> {
         let shape = self.array.shape();
-        let points: Vec<Point<D>> = as_points::<D>(&self.flat()).to_vec();
+        let view = self.array.as_array();
+        let points: Vec<Point<D>> = match view.to_slice() {
+            Some(flat) => as_points::<D>(flat).to_vec(),
+            None => {
+                let mut coords = view.iter().copied();
+                (0..shape[0] * shape[1])
+                    .map(|_| Point(std::array::from_fn(|_| coords.next().unwrap_or(f64::NAN))))
+                    .collect()
+            }
+        };
         Grid::from_row_major(shape[0], shape[1], points).map_err(library_error)
     }
 }
@@ -397,7 +407,9 @@ impl<'py> Params<'py> {
 }
 
 /// The output array of shape `shape`: `out` checked (a float64 `numpy.ndarray`, C-contiguous,
-/// writeable, that shape) or a new zeroed one, checked against `karkas.max_memory` first.
+/// writeable, that shape) or a new one, checked against `karkas.max_memory` first. A new
+/// array is not zeroed (`numpy.empty`): every caller writes every element, directly through
+/// [`write_flat`], so the result is allocated once and written once.
 ///
 /// A wrong type or dtype of `out` raises `TypeError`; a wrong shape, a Fortran-ordered or
 /// strided `out` and a read-only one raise `KarkasError` (a `ValueError`).
@@ -407,7 +419,7 @@ pub fn output_array<'py>(
     shape: &[usize],
 ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
     let Some(out) = out else {
-        return new_array(
+        return new_empty_array(
             py,
             shape,
             &format!("a result of shape {}", shape_text(shape)),

@@ -13,8 +13,9 @@
 //! imported (a size such as `512M` or `2G`), else [`DEFAULT_MAX_MEMORY`], 2 GiB, the default
 //! of `--max-memory`.
 //!
-//! Arrays are made by `numpy.zeros` called through Python ([`new_array`]): a failed
-//! allocation is NumPy's own `MemoryError`, never a null pointer inside the extension.
+//! Arrays are made by NumPy called through Python (`numpy.empty` for results written in full,
+//! [`new_empty_array`]; `numpy.zeros`, [`zeros`]): a failed allocation is NumPy's own
+//! `MemoryError`, never a null pointer inside the extension.
 
 use karkas_io::picture::budget::{human_bytes, parse_size};
 use numpy::PyArrayDyn;
@@ -103,15 +104,24 @@ pub fn check_memory(py: Python<'_>, request: &str, bytes: u128) -> PyResult<()> 
 /// `numpy.zeros`, looked up once.
 static NUMPY_ZEROS: PyOnceLock<Py<PyAny>> = PyOnceLock::new();
 
-/// A new zeroed float64 array of `shape`, checked against the cap first (as `request`);
-/// NumPy's `MemoryError` when the allocation itself fails.
-pub fn new_array<'py>(
+/// `numpy.empty`, looked up once.
+static NUMPY_EMPTY: PyOnceLock<Py<PyAny>> = PyOnceLock::new();
+
+/// A new float64 array of `shape` whose contents are not set (`numpy.empty`), checked against
+/// the cap first (as `request`): for results the caller overwrites entirely, so that no
+/// zeroing pass precedes the writes (`numpy.zeros` of an array from the heap, rather than
+/// from fresh pages, clears it first).
+pub fn new_empty_array<'py>(
     py: Python<'py>,
     shape: &[usize],
     request: &str,
 ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
     check_memory(py, request, bytes_of(shape, 8))?;
-    zeros(py, shape)
+    let empty = NUMPY_EMPTY.get_or_try_init(py, || -> PyResult<Py<PyAny>> {
+        Ok(py.import("numpy")?.getattr("empty")?.unbind())
+    })?;
+    let array = empty.bind(py).call1((PyTuple::new(py, shape)?,))?;
+    Ok(array.cast_into::<PyArrayDyn<f64>>()?)
 }
 
 /// A new zeroed float64 array of `shape` (no cap check: for sizes already checked or held).

@@ -246,11 +246,12 @@ pub enum GridParameters {
     Knots(Vec<f64>, Vec<f64>),
 }
 
-/// What a bicubic surface was built from, for pickling.
+/// What a bicubic surface was built from, for pickling. The grid itself is not kept: it is
+/// the surface's own nodes (the values of an open direction are the grid as given; a closed
+/// direction's seam line was made an exact copy of the first, or appended, and pickling drops
+/// an appended line), read back by [`PyBicubicSurface::grid_given`].
 pub struct BicubicInput {
-    /// The grid, row-major.
-    pub grid: FlatPoints,
-    /// Its rows and columns.
+    /// The rows and columns of the grid given.
     pub shape: (usize, usize),
     /// The parameterization's name, or the knots given.
     pub how: Result<String, (Vec<f64>, Vec<f64>)>,
@@ -313,11 +314,50 @@ pub struct PyBicubicSurface {
     knots_v: Numbers,
     /// What it was built from (for pickling).
     pub(crate) input: BicubicInput,
-    /// The condition measure at every node of the (closed) grid, row-major, and its shape.
-    condition: (Vec<f64>, (usize, usize)),
+}
+
+/// The library's bicubic surface behind a `BicubicSurface`, of either dimension.
+enum BicubicRef<'a> {
+    D2(&'a BicubicSurface<2>),
+    D3(&'a BicubicSurface<3>),
+}
+
+/// The bicubic surface behind `base` (always present for a `BicubicSurface`).
+fn bicubic_of(base: &PySurface) -> PyResult<BicubicRef<'_>> {
+    let any = base.inner.library_surface();
+    if let Some(s) = any.and_then(|a| a.downcast_ref::<BicubicSurface<2>>()) {
+        return Ok(BicubicRef::D2(s));
+    }
+    if let Some(s) = any.and_then(|a| a.downcast_ref::<BicubicSurface<3>>()) {
+        return Ok(BicubicRef::D3(s));
+    }
+    Err(pyo3::exceptions::PyTypeError::new_err(
+        "not a bicubic surface underneath",
+    ))
+}
+
+/// The nodes `r_ij`, `i < rows`, `j < cols`, row-major.
+fn nodes_of<const D: usize>(s: &BicubicSurface<D>, (rows, cols): (usize, usize)) -> FlatPoints {
+    let mut coords = Vec::with_capacity(rows * cols * D);
+    for i in 0..rows {
+        for j in 0..cols {
+            coords.extend_from_slice(&s.node(i, j).0);
+        }
+    }
+    FlatPoints { coords, dim: D }
 }
 
 impl PyBicubicSurface {
+    /// The grid as given, for pickling: the surface's nodes over the given shape (an
+    /// appended seam line left out).
+    pub(crate) fn grid_given(slf: &Bound<'_, Self>) -> PyResult<FlatPoints> {
+        let shape = slf.get().input.shape;
+        Ok(match bicubic_of(slf.as_super().get())? {
+            BicubicRef::D2(s) => nodes_of(s, shape),
+            BicubicRef::D3(s) => nodes_of(s, shape),
+        })
+    }
+
     fn build(
         py: Python<'_>,
         grid: &Bound<'_, PyAny>,
@@ -328,10 +368,6 @@ impl PyBicubicSurface {
     ) -> PyResult<PyClassInitializer<Self>> {
         let (g, dim) = GridArray::extract_checked(grid, "grid")?;
         let input = BicubicInput {
-            grid: FlatPoints {
-                coords: g.flat().into_owned(),
-                dim,
-            },
             shape: g.rows_cols(),
             how: how.clone().map(str::to_string),
             closed: (closed_u, closed_v),
@@ -345,20 +381,20 @@ impl PyBicubicSurface {
             Err((ku, kv)) => ("given knots".to_string(), GridParameters::Knots(ku, kv)),
         };
         let (sub, inner, rows, cols): (Self, Arc<dyn SurfaceImpl>, usize, usize) = by_dim!(dim, D => {
+            // One copy of the input: the surface keeps it as its values.
             let grid = g.grid::<D>()?;
-            let surface = maybe_detach(py, grid.rows() * grid.cols(), || match &parameters {
-                GridParameters::Knots(ku, kv) => BicubicSurface::<D>::from_knots(&grid, ku, kv, closed_u, closed_v),
-                GridParameters::Rule(rule) => BicubicSurface::<D>::new(&grid, *rule, closed_u, closed_v),
+            let (rows, cols) = (grid.rows(), grid.cols());
+            let surface = maybe_detach(py, rows * cols, || match &parameters {
+                GridParameters::Knots(ku, kv) => BicubicSurface::<D>::from_grid_knots(grid, ku, kv, closed_u, closed_v),
+                GridParameters::Rule(rule) => BicubicSurface::<D>::from_grid(grid, *rule, closed_u, closed_v),
             })
             .map_err(library_error)?;
-            let measures = surface.condition_measures();
             let sub = PyBicubicSurface {
                 knots_u: Numbers(surface.knots_u().to_vec()),
                 knots_v: Numbers(surface.knots_v().to_vec()),
                 input,
-                condition: (measures.as_slice().to_vec(), (measures.rows(), measures.cols())),
             };
-            (sub, Arc::new(WrappedSurface::<_, D>(surface)), grid.rows(), grid.cols())
+            (sub, Arc::new(WrappedSurface::<_, D>(surface)), rows, cols)
         });
         let description = format!(
             "<karkas.BicubicSurface parameterization='{label}', closed_u={}, closed_v={}, {rows}x{cols} grid in {dim}-D",
@@ -413,10 +449,13 @@ impl PyBicubicSurface {
     /// >>> stretched = karkas.BicubicSurface(grid * [2.0, 1.0, 1.0], "uniform")
     /// >>> bool(np.allclose(stretched.condition_measure(), 0.5))
     /// True
-    fn condition_measure<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        let (values, shape) = &self.condition;
-        let flat = vector_to_array(py, values)?;
-        flat.call_method1("reshape", ((shape.0, shape.1),))
+    fn condition_measure<'py>(slf: &Bound<'py, Self>) -> PyResult<Bound<'py, PyAny>> {
+        let measures = match bicubic_of(slf.as_super().get())? {
+            BicubicRef::D2(s) => s.condition_measures(),
+            BicubicRef::D3(s) => s.condition_measures(),
+        };
+        let flat = vector_to_array(slf.py(), measures.as_slice())?;
+        flat.call_method1("reshape", ((measures.rows(), measures.cols()),))
     }
 
     /// The bicubic interpolant of a grid on given parameters.

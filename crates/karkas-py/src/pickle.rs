@@ -216,9 +216,10 @@ impl PyHermiteSpline {
 #[pymethods]
 impl PyBicubicSurface {
     /// Pickling: the grid, the parameterization or knots, and closedness.
-    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
-        let input = &self.input;
-        let grid = grid_array(py, &input.grid, input.shape)?;
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<Bound<'py, PyTuple>> {
+        let py = slf.py();
+        let input = &slf.get().input;
+        let grid = grid_array(py, &PyBicubicSurface::grid_given(slf)?, input.shape)?;
         let (cu, cv) = input.closed;
         match &input.how {
             Ok(name) => {

@@ -111,6 +111,11 @@ pub trait SurfaceImpl: crate::geometry_interface::SurfaceGeometryImpl + Send + S
         patch: &[Point3],
         samples: (usize, usize),
     ) -> karkas::Result<Hausdorff>;
+    /// The library surface itself, for a class that reads more of it than this interface
+    /// gives (the bicubic surface's nodes and condition measures); `None` unless overridden.
+    fn library_surface(&self) -> Option<&dyn std::any::Any> {
+        None
+    }
 }
 
 /// A surface of dimension `D` seen as one in 3-D (used only when `D == 3`: the coordinates
@@ -151,8 +156,11 @@ pub struct WrappedSurface<S, const D: usize>(pub S);
 
 impl<S, const D: usize> SurfaceImpl for WrappedSurface<S, D>
 where
-    S: Surface<D> + ToBSplineSurface<D> + Send + Sync,
+    S: Surface<D> + ToBSplineSurface<D> + Send + Sync + 'static,
 {
+    fn library_surface(&self) -> Option<&dyn std::any::Any> {
+        Some(&self.0)
+    }
     fn to_bspline(&self) -> karkas::Result<FlatBSplineSurface> {
         Ok(FlatBSplineSurface::of(&self.0.to_bspline()?))
     }

@@ -6,6 +6,7 @@ mod grid;
 mod grid_points;
 mod interval;
 pub mod knots;
+pub(crate) mod lanes;
 pub(crate) mod parallel;
 mod pieces;
 mod point;

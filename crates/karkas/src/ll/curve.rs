@@ -13,9 +13,11 @@
 //! the kernel specialised to the order (1..=12) at compile time.
 
 use super::axis::NodeAxis;
+use super::batch::segment_and_kernel;
 use super::frame::{close, coincide, extend, model_scale, validate};
 use super::kernel::{pow_n, LlKernel};
 use super::prefilter::interpolation_controls;
+use crate::core::lanes::{f64x4, load4, CmpGt, CmpLt, LANES};
 use crate::core::parallel::for_each_chunk;
 use crate::core::PolynomialPieces;
 use crate::core::{Curve, Interval, PiecewiseCurve, Side};
@@ -146,69 +148,66 @@ impl<const D: usize> LlCurve<D> {
         p * pow_n(self.axis.scale(), k)
     }
 
-    /// Batch evaluation with the kernel specialised to order `L`.
-    ///
-    /// Works in chunks, in two passes: the first finds every parameter's segment, `xi` and
-    /// `h(xi)` with float arithmetic only (no gathers, no conversions, so it vectorizes); the
-    /// second combines the segment coefficients.
+    /// Batch evaluation with the kernel specialised to order `L`, four parameters per step:
+    /// the parameters are brought into the domain and turned into segment, `xi` and `h(xi)`
+    /// in `f64x4` ([`segment_and_kernel`]); four that share a segment combine its
+    /// coefficients in `f64x4` too, others point by point (the same operations either way).
     fn eval_batch<const L: usize>(&self, ts: &[f64], out: &mut [Point<D>]) {
-        const CHUNK: usize = 256;
         let coeffs: [f64; L] = core::array::from_fn(|k| self.kernel.value_coeffs()[k]);
         let axis = self.axis;
-        let scale = axis.scale();
         let nodes = axis.nodes();
-        let mut segment = [0.0f64; CHUNK];
-        let mut local = [0.0f64; CHUNK];
-        let mut kernel = [0.0f64; CHUNK];
-        for (tc, oc) in ts.chunks(CHUNK).zip(out.chunks_mut(CHUNK)) {
-            let n = tc.len();
-            let (seg, loc, ker) = (&mut segment[..n], &mut local[..n], &mut kernel[..n]);
-            if axis.is_closed() {
-                for (s, &t) in seg.iter_mut().zip(tc) {
-                    *s = axis.reduce(t) * scale + 0.5;
+        let d = axis.domain();
+        let (start, end) = (f64x4::splat(d.start), f64x4::splat(d.end));
+        let (scale, half) = (f64x4::splat(axis.scale()), f64x4::splat(0.5));
+        // `as usize` saturates and maps NaN to 0; the clamp keeps the index valid.
+        let point = |i: f64, xi: f64, h: f64| {
+            let s = &self.segments[(i as usize).clamp(1, nodes) - 1];
+            s.a.add_scaled(xi, s.b).add_scaled(h, s.c)
+        };
+        let mut t4 = ts.chunks_exact(LANES);
+        let mut o4 = out.chunks_exact_mut(LANES);
+        // The segment of the last four parameters that shared one, with its coefficients.
+        let mut shared_segment = f64::NAN;
+        let mut shared = [[f64x4::splat(0.0); 3]; D];
+        for (tc, oc) in (&mut t4).zip(&mut o4) {
+            let t = load4(tc);
+            let t = if axis.is_closed() {
+                f64x4::new(t.to_array().map(|t| axis.reduce(t)))
+            } else {
+                // The clamp of `Interval::clamp`: NaN stays NaN.
+                let t = t.cmp_lt(start).blend(start, t);
+                t.cmp_gt(end).blend(end, t)
+            };
+            let [i, xi4, h4] = segment_and_kernel::<f64x4, L>(t * scale + half, &coeffs);
+            let i = i.to_array();
+            if i.iter().all(|&j| j == i[0]) {
+                // One segment for the four (sorted parameters, nearly always): its
+                // coefficients broadcast once per segment, the combination in `f64x4`.
+                if shared_segment != i[0] {
+                    let s = &self.segments[(i[0] as usize).clamp(1, nodes) - 1];
+                    shared =
+                        std::array::from_fn(|c| [s.a.0[c], s.b.0[c], s.c.0[c]].map(f64x4::splat));
+                    shared_segment = i[0];
+                }
+                for (c, [a, b, cc]) in shared.iter().enumerate() {
+                    let x = (*a + xi4 * *b + h4 * *cc).to_array();
+                    for (p, x) in oc.iter_mut().zip(x) {
+                        p.0[c] = x;
+                    }
                 }
             } else {
-                let d = axis.domain();
-                for (s, &t) in seg.iter_mut().zip(tc) {
-                    let t = if t < d.start {
-                        d.start
-                    } else if t > d.end {
-                        d.end
-                    } else {
-                        t
-                    };
-                    *s = t * scale + 0.5;
+                let (xi, h) = (xi4.to_array(), h4.to_array());
+                for (l, p) in oc.iter_mut().enumerate() {
+                    *p = point(i[l], xi[l], h[l]);
                 }
-            }
-            for ((s, xi_out), h_out) in seg.iter_mut().zip(loc.iter_mut()).zip(ker.iter_mut()) {
-                let i = floor_small(*s);
-                let xi = *s - i;
-                let y = 1.0 - xi;
-                let mut q = coeffs[L - 1];
-                for c in coeffs[..L - 1].iter().rev() {
-                    q = q * y + c;
-                }
-                *s = i;
-                *xi_out = xi;
-                *h_out = q * pow_n(xi, L + 1);
-            }
-            for (k, p) in oc.iter_mut().enumerate() {
-                // `as usize` saturates and maps NaN to 0; the clamp keeps the index valid.
-                let s = &self.segments[(seg[k] as usize).clamp(1, nodes) - 1];
-                *p = s.a.add_scaled(loc[k], s.b).add_scaled(ker[k], s.c);
             }
         }
+        for (p, &t) in o4.into_remainder().iter_mut().zip(t4.remainder()) {
+            let s = axis.reduce(t) * axis.scale() + 0.5;
+            let [i, xi, h] = segment_and_kernel::<f64, L>(s, &coeffs);
+            *p = point(i, xi, h);
+        }
     }
-}
-
-/// `floor(s)` for `0 <= s < 2^51`, by rounding through `2^52` (a libm call is avoided on
-/// baseline x86-64, and the loop stays vectorizable). Exact halves may round either way,
-/// which moves a parameter on a segment border to the neighbouring segment: the LL curve is
-/// continuous there, so the point is the same.
-#[inline(always)]
-fn floor_small(s: f64) -> f64 {
-    const TWO_52: f64 = 4_503_599_627_370_496.0;
-    (s - 0.5 + TWO_52) - TWO_52
 }
 
 impl<const D: usize> Curve<D> for LlCurve<D> {
@@ -240,7 +239,7 @@ impl<const D: usize> Curve<D> for LlCurve<D> {
 
     fn eval_into(&self, ts: &[f64], out: &mut [Point<D>]) {
         crate::core::assert_buffer_len(ts.len(), out.len());
-        // Large batches run in parallel chunks (multiples of the kernel's 256).
+        // Large batches run in parallel chunks.
         for_each_chunk(ts, out, |ts, out| match self.kernel.order() {
             1 => self.eval_batch::<1>(ts, out),
             2 => self.eval_batch::<2>(ts, out),
@@ -298,6 +297,45 @@ mod tests {
                 c.eval_into(&ts, &mut out);
                 for (&t, p) in ts.iter().zip(&out) {
                     assert!(p.distance(c.eval(t)) < 1e-13, "order {order} t {t}");
+                }
+            }
+        }
+    }
+
+    /// The four-lane steps (one shared segment, or gathered point by point) give the bits of
+    /// the one-parameter remainder path, for sorted and shuffled parameters, open and closed,
+    /// outside the domain and at NaN (NaN payloads aside).
+    #[test]
+    fn four_lane_steps_equal_the_remainder_path_bitwise() {
+        let pts: Vec<Point<3>> = (0..40)
+            .map(|i| {
+                let f = i as f64 * 0.3;
+                Point([f.cos() * 3.0, f * f * 0.1, (2.0 * f).sin()])
+            })
+            .collect();
+        for closed in [false, true] {
+            let c = LlCurve::new(&pts, 5, closed).unwrap();
+            let mut ts: Vec<f64> = (0..=4001)
+                .map(|k| -0.05 + 1.1 * k as f64 / 4001.0)
+                .collect();
+            ts[100] = f64::NAN;
+            let mut shuffled = ts.clone();
+            for i in 0..shuffled.len() {
+                shuffled.swap(i, (i * 7919) % ts.len());
+            }
+            for ts in [&ts, &shuffled] {
+                let mut out = vec![Point::ZERO; ts.len()];
+                c.eval_into(ts, &mut out);
+                for (&t, p) in ts.iter().zip(&out) {
+                    let mut one = [Point::ZERO];
+                    c.eval_into(&[t], &mut one);
+                    for k in 0..3 {
+                        let (a, b) = (p[k], one[0][k]);
+                        assert!(
+                            a.to_bits() == b.to_bits() || (a.is_nan() && b.is_nan()),
+                            "t={t}"
+                        );
+                    }
                 }
             }
         }

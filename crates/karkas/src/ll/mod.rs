@@ -20,6 +20,7 @@
 //! [`Surface::level_parameter_lines`](crate::Surface::level_parameter_lines).
 
 mod axis;
+mod batch;
 mod bspline;
 mod curve;
 mod frame;

@@ -70,6 +70,33 @@ impl<const D: usize> BicubicSurface<D> {
     ) -> Result<Self> {
         grid.check_points(2, WHAT)?;
         let grid = grid.closed(closed_u, closed_v, WHAT_CLOSED)?;
+        Self::on_closed_grid(grid, parameterization, closed_u, closed_v)
+    }
+
+    /// [`new`](Self::new) on an owned grid: an open surface keeps `grid` as its values
+    /// without copying it (a closed direction copies it once, to close it).
+    pub fn from_grid(
+        grid: Grid<Point<D>>,
+        parameterization: GridParameterization,
+        closed_u: bool,
+        closed_v: bool,
+    ) -> Result<Self> {
+        grid.check_points(2, WHAT)?;
+        let grid = if closed_u || closed_v {
+            grid.closed(closed_u, closed_v, WHAT_CLOSED)?
+        } else {
+            grid
+        };
+        Self::on_closed_grid(grid, parameterization, closed_u, closed_v)
+    }
+
+    /// The parameters of the (already closed) `grid`, checked, then [`build`](Self::build).
+    fn on_closed_grid(
+        grid: Grid<Point<D>>,
+        parameterization: GridParameterization,
+        closed_u: bool,
+        closed_v: bool,
+    ) -> Result<Self> {
         let (us, vs) = grid_parameters(&grid, parameterization)?;
         // Parameters spanning many orders of magnitude (a far outlier) are refused here.
         check_parameters(&us)?;
@@ -91,6 +118,30 @@ impl<const D: usize> BicubicSurface<D> {
         closed_u: bool,
         closed_v: bool,
     ) -> Result<Self> {
+        Self::check_knots_fit(grid, knots_u, knots_v)?;
+        let closed = grid.closed(closed_u, closed_v, WHAT_CLOSED)?;
+        Self::on_closed_knots(grid, closed, knots_u, knots_v, closed_u, closed_v)
+    }
+
+    /// [`from_knots`](Self::from_knots) on an owned grid: an open surface keeps `grid` as
+    /// its values without copying it.
+    pub fn from_grid_knots(
+        grid: Grid<Point<D>>,
+        knots_u: &[f64],
+        knots_v: &[f64],
+        closed_u: bool,
+        closed_v: bool,
+    ) -> Result<Self> {
+        Self::check_knots_fit(&grid, knots_u, knots_v)?;
+        if closed_u || closed_v {
+            let closed = grid.closed(closed_u, closed_v, WHAT_CLOSED)?;
+            return Self::on_closed_knots(&grid, closed, knots_u, knots_v, closed_u, closed_v);
+        }
+        Self::build(grid, knots_u.to_vec(), knots_v.to_vec(), false, false)
+    }
+
+    /// The checks of [`from_knots`](Self::from_knots) before closing the grid.
+    fn check_knots_fit(grid: &Grid<Point<D>>, knots_u: &[f64], knots_v: &[f64]) -> Result<()> {
         grid.check_points(2, WHAT)?;
         Error::check_counts(&[
             ("knots in u (one per grid row)", grid.rows(), knots_u.len()),
@@ -101,8 +152,19 @@ impl<const D: usize> BicubicSurface<D> {
             ),
         ])?;
         check_parameters(knots_u)?;
-        check_parameters(knots_v)?;
-        let closed = grid.closed(closed_u, closed_v, WHAT_CLOSED)?;
+        check_parameters(knots_v)
+    }
+
+    /// `closed` (the closed `grid`) built on the given knots, refused when closing added a
+    /// line (the knots were given for the grid as it is).
+    fn on_closed_knots(
+        grid: &Grid<Point<D>>,
+        closed: Grid<Point<D>>,
+        knots_u: &[f64],
+        knots_v: &[f64],
+        closed_u: bool,
+        closed_v: bool,
+    ) -> Result<Self> {
         if closed.rows() != grid.rows() || closed.cols() != grid.cols() {
             return Err(Error::OpenPeriodicData {
                 what: "a closed direction",
@@ -273,7 +335,8 @@ impl<const D: usize> BicubicSurface<D> {
 
 /// The `u`-slopes of every column of `grid` (step 1). Large grids are solved in blocks of
 /// columns in parallel: each block is gathered into a contiguous buffer, solved there (the
-/// same arithmetic per column as one solve over all columns) and copied back.
+/// same arithmetic per column as one solve over all columns) and copied back. The blocks go
+/// in waves of a few per thread, so the buffers in flight stay a small part of the grid.
 fn solve_columns<const D: usize>(system: &SlopeSystem, grid: &Grid<Point<D>>) -> Vec<Point<D>> {
     let (rows, cols) = (grid.rows(), grid.cols());
     let mut ru = vec![Point::ZERO; rows * cols];
@@ -282,25 +345,28 @@ fn solve_columns<const D: usize>(system: &SlopeSystem, grid: &Grid<Point<D>>) ->
         return ru;
     }
     let starts: Vec<usize> = (0..cols).step_by(COLUMN_BLOCK).collect();
-    let blocks: Vec<Vec<Point<D>>> = starts
-        .par_iter()
-        .map(|&a| {
-            let width = COLUMN_BLOCK.min(cols - a);
-            let mut values = Vec::with_capacity(rows * width);
-            for i in 0..rows {
-                values.extend_from_slice(&grid.row(i)[a..a + width]);
+    let wave = 2 * rayon::current_num_threads().max(1);
+    for starts in starts.chunks(wave) {
+        let blocks: Vec<Vec<Point<D>>> = starts
+            .par_iter()
+            .map(|&a| {
+                let width = COLUMN_BLOCK.min(cols - a);
+                let mut values = Vec::with_capacity(rows * width);
+                for i in 0..rows {
+                    values.extend_from_slice(&grid.row(i)[a..a + width]);
+                }
+                let mut slopes = vec![Point::ZERO; rows * width];
+                system.solve(&values, &mut slopes, width, None);
+                slopes
+            })
+            .collect();
+        ru.par_chunks_mut(cols).enumerate().for_each(|(i, row)| {
+            for (&a, block) in starts.iter().zip(&blocks) {
+                let width = COLUMN_BLOCK.min(cols - a);
+                row[a..a + width].copy_from_slice(&block[i * width..(i + 1) * width]);
             }
-            let mut slopes = vec![Point::ZERO; rows * width];
-            system.solve(&values, &mut slopes, width, None);
-            slopes
-        })
-        .collect();
-    ru.par_chunks_mut(cols).enumerate().for_each(|(i, row)| {
-        for (&a, block) in starts.iter().zip(&blocks) {
-            let width = COLUMN_BLOCK.min(cols - a);
-            row[a..a + width].copy_from_slice(&block[i * width..(i + 1) * width]);
-        }
-    });
+        });
+    }
     ru
 }
 

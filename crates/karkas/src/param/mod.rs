@@ -42,6 +42,7 @@ mod names;
 mod parameterization;
 mod relay;
 mod spline;
+mod spline_eval;
 
 pub use crate::spline::SplineEnds;
 pub use bicubic::BicubicSurface;
