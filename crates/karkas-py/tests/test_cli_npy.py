@@ -3,31 +3,13 @@
 writes, and `karkas surface ll -o s.npy` as an (nu, nv, 3) array equal to the CSV's x,y,z with
 `u` outer."""
 
-import os
-import pathlib
-import shutil
 import subprocess
 
 import numpy as np
 import pytest
 
-ROOT = pathlib.Path(__file__).resolve().parents[3]
 
-
-def _cli():
-    candidates = [os.environ.get("KARKAS_BIN")]
-    for target in (os.environ.get("CARGO_TARGET_DIR"), str(ROOT / "target")):
-        if target:
-            candidates += [os.path.join(target, "release", "karkas"), os.path.join(target, "debug", "karkas")]
-    candidates.append(shutil.which("karkas"))
-    for c in candidates:
-        if c and os.path.isfile(c) and os.access(c, os.X_OK):
-            return c
-    return None
-
-
-CLI = _cli()
-needs_cli = pytest.mark.skipif(CLI is None, reason="the karkas binary is not built (cargo build --release -p karkas-cli)")
+from cli_binary import CLI, needs_cli
 
 
 def run_cli(*args):

@@ -6,8 +6,6 @@ command's CSV samples, or `curve(t)` in Python) at the same parameters to 1e-12 
 curve's size."""
 
 import os
-import pathlib
-import shutil
 import subprocess
 
 import numpy as np
@@ -21,23 +19,8 @@ else:
     ezdxf = pytest.importorskip("ezdxf")
 from ezdxf.math import BSpline  # noqa: E402
 
-ROOT = pathlib.Path(__file__).resolve().parents[3]
 
-
-def _cli():
-    candidates = [os.environ.get("KARKAS_BIN")]
-    for target in (os.environ.get("CARGO_TARGET_DIR"), str(ROOT / "target")):
-        if target:
-            candidates += [os.path.join(target, "release", "karkas"), os.path.join(target, "debug", "karkas")]
-    candidates.append(shutil.which("karkas"))
-    for c in candidates:
-        if c and os.path.isfile(c) and os.access(c, os.X_OK):
-            return c
-    return None
-
-
-CLI = _cli()
-needs_cli = pytest.mark.skipif(CLI is None, reason="the karkas binary is not built (cargo build --release -p karkas-cli)")
+from cli_binary import CLI, needs_cli  # noqa: E402
 
 CLOSED, PERIODIC, RATIONAL, PLANAR = 1, 2, 4, 8
 

@@ -3,9 +3,7 @@ file `karkas` writes for the same command and input, byte for byte (every format
 deterministic: no clock, no randomness); STEP and IGES read back in Open CASCADE; the readers
 read the files back; _repr_html_ shows a curve as SVG and a surface in the viewer."""
 
-import os
 import pathlib
-import shutil
 import subprocess
 
 import numpy as np
@@ -13,23 +11,8 @@ import pytest
 
 import karkas
 
-ROOT = pathlib.Path(__file__).resolve().parents[3]
 
-
-def _cli():
-    candidates = [os.environ.get("KARKAS_BIN")]
-    for target in (os.environ.get("CARGO_TARGET_DIR"), str(ROOT / "target")):
-        if target:
-            candidates += [os.path.join(target, "release", "karkas"), os.path.join(target, "debug", "karkas")]
-    candidates.append(shutil.which("karkas"))
-    for c in candidates:
-        if c and os.path.isfile(c) and os.access(c, os.X_OK):
-            return c
-    return None
-
-
-CLI = _cli()
-needs_cli = pytest.mark.skipif(CLI is None, reason="the karkas binary is not built (cargo build --release -p karkas-cli)")
+from cli_binary import CLI, needs_cli
 
 
 def run_cli(*args):
