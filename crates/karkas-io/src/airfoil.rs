@@ -189,7 +189,9 @@ impl<'p> AirfoilReader<'p> {
             parse_coordinate(fields[1], 2, at)?,
         ]);
         if let Some((upper, lower)) = self.points.first().and_then(|&c| lednicer_counts(c)) {
-            if self.points.len() == upper.saturating_add(lower) + 1 && self.extra_line.is_none() {
+            if self.points.len() == upper.saturating_add(lower).saturating_add(1)
+                && self.extra_line.is_none()
+            {
                 self.extra_line = Some(at.line);
             }
         }
@@ -284,6 +286,13 @@ mod tests {
         assert_eq!(lednicer_counts(Point([1.0, 0.0])), None);
         assert_eq!(lednicer_counts(Point([17.5, 17.0])), None);
         assert_eq!(lednicer_counts(Point([2.0, 1.0])), None);
+    }
+
+    #[test]
+    fn counts_too_large_to_add_are_an_error_not_an_overflow() {
+        // 1e300 saturates to usize::MAX: the count of points after it must not overflow.
+        let text = "NAME\n1e300 4.\n0 0\n1 0\n";
+        assert!(parse_airfoil(text, Path::new("a.dat")).is_err());
     }
 
     #[test]
