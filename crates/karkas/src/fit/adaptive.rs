@@ -23,6 +23,12 @@
 //! smoothing is left out then; when the refinement stalls with it, it goes on without it from
 //! the best fit.
 //!
+//! A fit that crosses itself or turns more than its points (a hook past a sharp trailing
+//! edge, a loop between sparse points) is made sound where possible: more smoothing on its
+//! knots, the same knots from the starting parameters, knots added at the faults, or a knot
+//! taken out beside an empty span (see `faults`); a fit that met the tolerance stays within
+//! it.
+//!
 //! When the tolerance is met on a small problem (points times knots at most 2e5), the knots
 //! it does not need are taken out again one at a time (see `prune`).
 //!
@@ -34,12 +40,11 @@
 //! iterations; the rounds number about `log2(N / 4)` for `N` knots plus the stall window,
 //! so the whole is about `O(n log N)`.
 
-use super::guards::{shape_faults, with_warnings};
-use super::knots::{start_parameters_for, uniform_knots, MIN_KNOT_SPACING};
+use super::faults::sound_fit;
+use super::guards::with_warnings;
+use super::knots::{start_parameters_for, uniform_knots, warm_parameters, MIN_KNOT_SPACING};
 use super::noise::estimate_noise;
-use super::penalty::{
-    check_inputs, check_settings, fit_checked, in_fit_units, FitOptions, DEFAULT_SMOOTHING,
-};
+use super::penalty::{check_inputs, check_settings, fit_checked, in_fit_units, FitOptions};
 use super::prune::prune;
 use super::refine::{refined_knots, worst_per_piece};
 use super::result::{CurveFit, FitWarning, FitWarningKind};
@@ -235,52 +240,11 @@ fn adaptive_rounds<const D: usize>(
             best = kept;
         }
     }
+    best = sound_fit(points, tolerance, options, asked, cap, best)?;
     if stop == AdaptiveStop::Met {
-        let smoothed = smoothed_if_faulty(points, tolerance, options, asked, best)?;
-        best = prune(points, tolerance, options, smoothed, warm_parameters)?;
+        best = prune(points, tolerance, options, best, warm_parameters)?;
     }
     Ok((best, stop, rounds))
-}
-
-/// Smoothing tried, in turn, on a fit within the tolerance that crosses itself or turns too
-/// much (a wiggle between sparse points), as multiples of the smoothing asked for (or of the
-/// default where none was asked).
-const FAULT_SMOOTHING: [f64; 3] = [1.0, 10.0, 100.0];
-
-/// `fit` (within `tolerance`), or, when it crosses itself or turns more than its points
-/// (see [`shape_faults`]), the first refit on its knots with more smoothing that is within the
-/// tolerance and sound: the smoothing evens out wiggles that the knots allow between sparse
-/// points.
-fn smoothed_if_faulty<const D: usize>(
-    points: &[Point<D>],
-    tolerance: f64,
-    options: &FitOptions,
-    asked: f64,
-    fit: CurveFit<D>,
-) -> Result<CurveFit<D>> {
-    if shape_faults(points, &fit).is_empty() {
-        return Ok(fit);
-    }
-    let unit = if asked > 0.0 {
-        asked
-    } else {
-        DEFAULT_SMOOTHING
-    };
-    for factor in FAULT_SMOOTHING {
-        let smoother = FitOptions {
-            smoothing: unit * factor,
-            ..options.clone()
-        };
-        let knots = fit.spline.knots();
-        let weights = check_inputs(points, knots, &smoother)?;
-        let start = warm_parameters(&fit.parameters);
-        if let Ok(trial) = fit_checked(points, knots, &weights, start, &smoother, &fit.noise) {
-            if trial.max_distance() <= tolerance && shape_faults(points, &trial).is_empty() {
-                return Ok(trial);
-            }
-        }
-    }
-    Ok(fit)
 }
 
 /// Adds knots round after round from `fit` until a stop rule holds; returns the rule and the
@@ -367,22 +331,4 @@ fn first_knots(points: usize, corners: &[f64]) -> Vec<f64> {
     knots.sort_by(f64::total_cmp);
     knots.dedup();
     knots
-}
-
-/// The previous fit's foot parameters as the next fit's start: clamped to `[0, 1]`,
-/// non-decreasing, from 0 to 1.
-fn warm_parameters(parameters: &[f64]) -> Vec<f64> {
-    let mut start = Vec::with_capacity(parameters.len());
-    let mut last = 0.0f64;
-    for &t in parameters {
-        last = last.max(t.clamp(0.0, 1.0));
-        start.push(last);
-    }
-    if let Some(first) = start.first_mut() {
-        *first = 0.0;
-    }
-    if let Some(end) = start.last_mut() {
-        *end = 1.0;
-    }
-    start
 }

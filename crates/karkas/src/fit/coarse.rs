@@ -10,9 +10,8 @@
 //! the cost per step; the whole set then starts from its spline, every point's parameter
 //! interpolated between those of the subset, and converges in a few steps.
 
-use super::hermite::HermiteSpline;
 use super::problem::{Problem, State};
-use super::solver::{Penalty, Solver, Stop};
+use super::solver::{copy_coefficients, Penalty, Solver, Stop};
 use crate::Point;
 
 /// Points per piece kept in the subset.
@@ -54,7 +53,7 @@ pub(crate) fn warm_start<const D: usize>(
     let (iterations, _) = solver
         .minimize(&mut coarse, Penalty::Fixed(0.0), stop)
         .ok()?;
-    copy_spline(&coarse.spline, &mut state.spline);
+    copy_coefficients(&coarse.spline, &mut state.spline);
     for (pair, ts) in picked.windows(2).zip(coarse.params.windows(2)) {
         let (a, b) = (pair[0], pair[1]);
         let span = (b - a) as f64;
@@ -65,13 +64,6 @@ pub(crate) fn warm_start<const D: usize>(
     }
     state.params[n - 1] = coarse.params[picked.len() - 1];
     Some(iterations)
-}
-
-/// Copies the coefficients of `from` into `to` (same knots).
-fn copy_spline<const D: usize>(from: &HermiteSpline<D>, to: &mut HermiteSpline<D>) {
-    let (values, derivatives) = to.coefficients_mut();
-    values.copy_from_slice(from.values());
-    derivatives.copy_from_slice(from.derivatives());
 }
 
 #[cfg(test)]

@@ -226,6 +226,24 @@ pub(crate) fn start_parameters_for<const D: usize>(
     }
 }
 
+/// A previous fit's foot parameters as the next fit's start (the tolerance mode's rounds): clamped to `[0, 1]`,
+/// non-decreasing, from 0 to 1.
+pub(crate) fn warm_parameters(parameters: &[f64]) -> Vec<f64> {
+    let mut start = Vec::with_capacity(parameters.len());
+    let mut last = 0.0f64;
+    for &t in parameters {
+        last = last.max(t.clamp(0.0, 1.0));
+        start.push(last);
+    }
+    if let Some(first) = start.first_mut() {
+        *first = 0.0;
+    }
+    if let Some(end) = start.last_mut() {
+        *end = 1.0;
+    }
+    start
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -51,12 +51,13 @@
 //! Complexity: each iteration is `O(n D^2)` for `n` points in R^D (one pass to assemble the
 //! banded Newton system, one to project the points from their previous foot points, `O(1)`
 //! curve evaluations each) plus `O(N D^3)` for `N` knots (banded Cholesky, `5 D + 1`
-//! diagonals); a few iterations suffice (10^5 points, 200 knots: about 0.1 s without the
-//! bound, 0.4 s with an active one).
+//! diagonals); a few iterations suffice (10^5 noisy points of a spiral, 200 knots: about 0.2 s
+//! without the bound, 1.5 s with an active one; `cargo bench -p karkas-bench --bench fit`).
 
 mod adaptive;
 mod bspline;
 mod coarse;
+mod faults;
 mod fixed;
 mod gradient;
 mod guards;

@@ -411,7 +411,10 @@ fn settled_distances(old: &[f64], new: &[f64], stop: Stop) -> bool {
 }
 
 /// Copies values and derivatives of `from` into `to` (same knots).
-fn copy_coefficients<const D: usize>(from: &HermiteSpline<D>, to: &mut HermiteSpline<D>) {
+pub(crate) fn copy_coefficients<const D: usize>(
+    from: &HermiteSpline<D>,
+    to: &mut HermiteSpline<D>,
+) {
     let (values, derivatives) = to.coefficients_mut();
     values.copy_from_slice(from.values());
     derivatives.copy_from_slice(from.derivatives());

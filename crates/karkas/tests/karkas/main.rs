@@ -19,6 +19,7 @@ mod dps_interpolation;
 mod dps_tube;
 mod fit_adaptive;
 mod fit_dense;
+mod fit_faults;
 mod fit_guards;
 mod fit_limits;
 mod fit_naca;

@@ -1,0 +1,152 @@
+//! The tolerance mode repairs a fit that hooks (docs/methods.md §4, "shape guards"): real
+//! coordinates whose trailing edge rises steeply from its last point.
+
+use karkas::fit::{fit_curve, fit_curve_adaptive, FitOptions, FitWarningKind};
+use karkas::Point2;
+
+/// The AH 80-140 section (Althaus) as the airfoil collection of the corpus gives it
+/// (tests/corpus/fetch_corpus.py): 97 points, upper surface first, closed trailing edge.
+const AH80140: [[f64; 2]; 97] = [
+    [1.0, 0.0],
+    [0.99893, 0.00097],
+    [0.99572, 0.00161],
+    [0.99039, 0.00246],
+    [0.98296, 0.00347],
+    [0.97347, 0.00477],
+    [0.96194, 0.00625],
+    [0.94844, 0.00806],
+    [0.93301, 0.01008],
+    [0.91573, 0.01247],
+    [0.89668, 0.01511],
+    [0.87592, 0.01816],
+    [0.85355, 0.02152],
+    [0.82967, 0.02535],
+    [0.80438, 0.02953],
+    [0.77779, 0.0342],
+    [0.75, 0.03927],
+    [0.72114, 0.04487],
+    [0.69134, 0.05082],
+    [0.66072, 0.05724],
+    [0.62941, 0.06395],
+    [0.59755, 0.07105],
+    [0.56526, 0.07822],
+    [0.5327, 0.0855],
+    [0.5, 0.09256],
+    [0.4673, 0.09927],
+    [0.43474, 0.10497],
+    [0.40245, 0.10925],
+    [0.37059, 0.11184],
+    [0.33928, 0.11315],
+    [0.30866, 0.11312],
+    [0.27886, 0.112],
+    [0.25, 0.10968],
+    [0.22221, 0.10635],
+    [0.19562, 0.10198],
+    [0.17033, 0.09691],
+    [0.14645, 0.09105],
+    [0.12408, 0.0847],
+    [0.10332, 0.07767],
+    [0.08427, 0.07024],
+    [0.06699, 0.06229],
+    [0.05156, 0.05421],
+    [0.03806, 0.04584],
+    [0.02653, 0.03774],
+    [0.01704, 0.02975],
+    [0.00961, 0.02234],
+    [0.00428, 0.01511],
+    [0.00107, 0.00812],
+    [0.0, 0.0],
+    [0.00107, -0.00587],
+    [0.00428, -0.01064],
+    [0.00961, -0.01476],
+    [0.01704, -0.01798],
+    [0.02653, -0.02065],
+    [0.03806, -0.02257],
+    [0.05156, -0.02423],
+    [0.06699, -0.0254],
+    [0.08427, -0.02644],
+    [0.10332, -0.0271],
+    [0.12408, -0.02766],
+    [0.14645, -0.02792],
+    [0.17033, -0.02812],
+    [0.19562, -0.02804],
+    [0.22221, -0.02787],
+    [0.25, -0.02748],
+    [0.27886, -0.02708],
+    [0.30866, -0.02651],
+    [0.33928, -0.02595],
+    [0.37059, -0.02523],
+    [0.40245, -0.02454],
+    [0.43474, -0.02369],
+    [0.4673, -0.0228],
+    [0.5, -0.02175],
+    [0.5327, -0.02066],
+    [0.56526, -0.01939],
+    [0.59755, -0.01812],
+    [0.62941, -0.01672],
+    [0.66072, -0.01536],
+    [0.69134, -0.01392],
+    [0.72114, -0.01252],
+    [0.75, -0.01107],
+    [0.77779, -0.00967],
+    [0.80438, -0.00828],
+    [0.82967, -0.00703],
+    [0.85355, -0.00582],
+    [0.87592, -0.00479],
+    [0.89668, -0.00382],
+    [0.91573, -0.00306],
+    [0.93301, -0.00239],
+    [0.94844, -0.00193],
+    [0.96194, -0.00152],
+    [0.97347, -0.00128],
+    [0.98296, -0.00108],
+    [0.99039, -0.00101],
+    [0.99572, -0.00093],
+    [0.99893, -0.0008],
+    [1.0, 0.0],
+];
+
+fn points() -> Vec<Point2> {
+    AH80140.iter().map(|&p| Point2::new(p)).collect()
+}
+
+fn shape_faults(warnings: &[karkas::fit::FitWarning]) -> Vec<String> {
+    warnings
+        .iter()
+        .filter(|w| {
+            matches!(
+                w.kind,
+                FitWarningKind::SelfIntersection | FitWarningKind::ExcessTurning
+            )
+        })
+        .map(|w| w.message.clone())
+        .collect()
+}
+
+#[test]
+fn the_plain_fit_on_the_knots_the_tolerance_first_reaches_hooks_at_the_trailing_edge() {
+    // The premise: 13 uniform knots meet 1e-4 but hook past x = 1 at both ends.
+    let fit = fit_curve(
+        &points(),
+        &karkas::fit::uniform_knots(13),
+        &FitOptions::default(),
+    )
+    .unwrap();
+    assert!(fit.max_distance() <= 1e-4, "{}", fit.max_distance());
+    let faults = shape_faults(&fit.warnings);
+    assert!(faults.len() >= 2, "{faults:?}");
+}
+
+#[test]
+fn the_tolerance_mode_meets_the_tolerance_without_a_hook_or_a_loop() {
+    let adaptive = fit_curve_adaptive(&points(), 1e-4, &FitOptions::default()).unwrap();
+    assert!(adaptive.tolerance_met);
+    assert!(adaptive.fit.max_distance() <= 1e-4);
+    let faults = shape_faults(&adaptive.fit.warnings);
+    assert!(faults.is_empty(), "{faults:?}");
+    // No point of the curve runs past the trailing edge by more than the tolerance.
+    let beyond = (0..=4000)
+        .map(|i| karkas::Curve::eval(&adaptive.fit.spline, i as f64 / 4000.0).0[0])
+        .fold(f64::NEG_INFINITY, f64::max);
+    assert!(beyond <= 1.0 + 1e-4, "the curve reaches x = {beyond}");
+}
