@@ -11,7 +11,7 @@
 use std::borrow::Cow;
 
 use karkas::{Grid, Point, Point3};
-use karkas_io::range::check_coordinate_range;
+use karkas_io::range::{check_coordinate_range, check_coordinate_slice};
 use numpy::ndarray::{Dimension, Ix2, Ix3};
 use numpy::{
     AllowTypeChange, PyArrayDescrMethods, PyArrayDyn, PyArrayLike, PyArrayLike1, PyArrayLikeDyn,
@@ -117,8 +117,12 @@ impl<'py, Dm: Dimension + 'py> CoordArray<'py, Dm> {
         })?;
         check_copy(&array, what)?;
         let coordinates = array.as_array();
-        check_coordinate_range(coordinates.iter().copied(), std::path::Path::new(what))
-            .map_err(|e| PointsError::new_err(e.to_string()))?;
+        let path = std::path::Path::new(what);
+        match coordinates.as_slice_memory_order() {
+            Some(flat) => check_coordinate_slice(flat, path),
+            None => check_coordinate_range(coordinates.iter().copied(), path),
+        }
+        .map_err(|e| PointsError::new_err(e.to_string()))?;
         Ok(CoordArray { array })
     }
 

@@ -21,14 +21,14 @@
 //! column are computed once per call.
 
 use super::condition::{node_measures, ConditionSummary};
+use super::grid_slopes::{solve_columns, solve_rows};
 use super::parameterization::{grid_parameters, GridParameterization};
 use super::spline::check_parameters;
 use crate::core::knots::locate;
-use crate::core::parallel::{for_each_row_block, PARALLEL_THRESHOLD};
+use crate::core::parallel::for_each_row_block;
 use crate::core::{Grid, Interval, PiecewiseSurface, Side, Surface};
 use crate::spline::{hermite_basis, SlopeSystem, SplineEnds};
 use crate::{Error, Point, Result};
-use rayon::prelude::*;
 
 /// A bicubic interpolating spline surface over a grid `r_ij` (row `i` at `u_i`, column `j`
 /// at `v_j`), each direction open (not-a-knot ends) or closed (periodic).
@@ -188,7 +188,7 @@ impl<const D: usize> BicubicSurface<D> {
         closed_u: bool,
         closed_v: bool,
     ) -> Result<Self> {
-        let (rows, cols) = (grid.rows(), grid.cols());
+        let cols = grid.cols();
         let ends = |closed: bool| -> SplineEnds<D> {
             if closed {
                 SplineEnds::Periodic
@@ -201,25 +201,9 @@ impl<const D: usize> BicubicSurface<D> {
         let system_v = SlopeSystem::new(&knots_v, &ends_v)?;
         // Step 1: r_u along every column, all columns in sweeps over the grid rows.
         let ru = solve_columns(&system_u, &grid);
-        // Steps 2 and 3: r_v and r_uv along every row (rows in parallel when large).
-        let mut rv = vec![Point::ZERO; rows * cols];
-        let mut ruv = vec![Point::ZERO; rows * cols];
-        let solve_row = |i: usize, rv_row: &mut [Point<D>], ruv_row: &mut [Point<D>]| {
-            let span = i * cols..(i + 1) * cols;
-            system_v.solve(grid.row(i), rv_row, 1, None);
-            system_v.solve(&ru[span], ruv_row, 1, None);
-        };
-        if rows * cols < PARALLEL_THRESHOLD {
-            for (i, (a, b)) in rv.chunks_mut(cols).zip(ruv.chunks_mut(cols)).enumerate() {
-                solve_row(i, a, b);
-            }
-        } else {
-            rv.par_chunks_mut(cols)
-                .zip(ruv.par_chunks_mut(cols))
-                .enumerate()
-                .with_min_len((PARALLEL_THRESHOLD / 4 / cols).max(1))
-                .for_each(|(i, (a, b))| solve_row(i, a, b));
-        }
+        // Steps 2 and 3: r_v and r_uv along every row.
+        let rv = solve_rows(&system_v, grid.as_slice(), cols);
+        let ruv = solve_rows(&system_v, &ru, cols);
         Ok(BicubicSurface {
             knots_u,
             knots_v,
@@ -333,43 +317,6 @@ impl<const D: usize> BicubicSurface<D> {
     }
 }
 
-/// The `u`-slopes of every column of `grid` (step 1). Large grids are solved in blocks of
-/// columns in parallel: each block is gathered into a contiguous buffer, solved there (the
-/// same arithmetic per column as one solve over all columns) and copied back. The blocks go
-/// in waves of a few per thread, so the buffers in flight stay a small part of the grid.
-fn solve_columns<const D: usize>(system: &SlopeSystem, grid: &Grid<Point<D>>) -> Vec<Point<D>> {
-    let (rows, cols) = (grid.rows(), grid.cols());
-    let mut ru = vec![Point::ZERO; rows * cols];
-    if rows * cols < PARALLEL_THRESHOLD || cols < 2 * COLUMN_BLOCK {
-        system.solve(grid.as_slice(), &mut ru, cols, None);
-        return ru;
-    }
-    let starts: Vec<usize> = (0..cols).step_by(COLUMN_BLOCK).collect();
-    let wave = 2 * rayon::current_num_threads().max(1);
-    for starts in starts.chunks(wave) {
-        let blocks: Vec<Vec<Point<D>>> = starts
-            .par_iter()
-            .map(|&a| {
-                let width = COLUMN_BLOCK.min(cols - a);
-                let mut values = Vec::with_capacity(rows * width);
-                for i in 0..rows {
-                    values.extend_from_slice(&grid.row(i)[a..a + width]);
-                }
-                let mut slopes = vec![Point::ZERO; rows * width];
-                system.solve(&values, &mut slopes, width, None);
-                slopes
-            })
-            .collect();
-        ru.par_chunks_mut(cols).enumerate().for_each(|(i, row)| {
-            for (&a, block) in starts.iter().zip(&blocks) {
-                let width = COLUMN_BLOCK.min(cols - a);
-                row[a..a + width].copy_from_slice(&block[i * width..(i + 1) * width]);
-            }
-        });
-    }
-    ru
-}
-
 /// The Hermite weights of [`hermite_basis`] in the order `[y_k, y_{k+1}, m_k, m_{k+1}]`
 /// (values first, as the rows of (3.8)).
 #[inline]
@@ -381,9 +328,6 @@ fn hermite_weights(s: f64, h: f64, k: usize) -> [f64; 4] {
 /// The input named in the errors of a grid too small (in total, in a closed direction).
 const WHAT: &str = "a bicubic surface (in each grid direction)";
 const WHAT_CLOSED: &str = "a closed direction of a bicubic surface (distinct grid lines)";
-
-/// Columns per parallel block of [`solve_columns`].
-const COLUMN_BLOCK: usize = 32;
 
 impl<const D: usize> Surface<D> for BicubicSurface<D> {
     fn domain_u(&self) -> Interval {

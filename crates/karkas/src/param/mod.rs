@@ -38,6 +38,7 @@
 mod bicubic;
 mod bspline;
 mod condition;
+mod grid_slopes;
 mod names;
 mod parameterization;
 mod relay;
