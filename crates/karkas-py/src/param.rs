@@ -11,8 +11,8 @@ use numpy::PyArrayDyn;
 use pyo3::prelude::*;
 
 use crate::convert::{
-    as_points, by_dim, count, extract_vector, maybe_detach, py_bool, small_vector, vector_to_array,
-    FlatPoints, GridArray, Numbers, PointsArray,
+    as_points, by_dim, count, extract_vector, maybe_detach, points_to_array, py_bool, small_vector,
+    vector_to_array, FlatPoints, GridArray, Numbers, PointsArray,
 };
 use crate::curve::PyCurve;
 use crate::errors::{library_error, OptionError};
@@ -122,23 +122,45 @@ fn parse_ends<const D: usize>(bc: &Bound<'_, PyAny>) -> PyResult<SplineEnds<D>> 
 /// True
 #[pyclass(extends = PyCurve, module = "karkas", name = "CubicSpline", frozen)]
 pub struct PyCubicSpline {
-    /// The knots t_0 < ... < t_{n-1}.
-    #[pyo3(get)]
-    knots: Numbers,
-    /// The interpolated values P(t_k), (n, d).
-    #[pyo3(get)]
-    values: FlatPoints,
-    /// The node slopes P'(t_k), (n, d).
-    #[pyo3(get)]
-    slopes: FlatPoints,
-    /// The points given (for pickling).
-    pub(crate) points: FlatPoints,
     /// The parameters given (None: computed by the parameterization).
     pub(crate) t: Option<Vec<f64>>,
     /// The parameterization's name as given.
     pub(crate) parameterization: String,
     /// The end conditions.
     pub(crate) ends: Ends,
+}
+
+/// The library's cubic spline behind a `CubicSpline`, of either dimension.
+enum SplineRef<'a> {
+    D2(&'a CubicSpline<2>),
+    D3(&'a CubicSpline<3>),
+}
+
+/// The cubic spline behind `base` (always present for a `CubicSpline`): its knots, values and
+/// slopes are read from it, not kept twice.
+fn spline_of(base: &PyCurve) -> PyResult<SplineRef<'_>> {
+    let any = base.inner.library_curve();
+    if let Some(s) = any.and_then(|a| a.downcast_ref::<CubicSpline<2>>()) {
+        return Ok(SplineRef::D2(s));
+    }
+    if let Some(s) = any.and_then(|a| a.downcast_ref::<CubicSpline<3>>()) {
+        return Ok(SplineRef::D3(s));
+    }
+    Err(pyo3::exceptions::PyTypeError::new_err(
+        "a CubicSpline without its spline",
+    ))
+}
+
+impl PyCubicSpline {
+    /// The points to build it again, for pickling: the spline's values (the points given,
+    /// with the seam point a periodic spline appended; built again they give the same
+    /// spline).
+    pub(crate) fn points_given(slf: &Bound<'_, Self>) -> PyResult<FlatPoints> {
+        Ok(match spline_of(slf.as_super().get())? {
+            SplineRef::D2(s) => FlatPoints::of(s.values()),
+            SplineRef::D3(s) => FlatPoints::of(s.values()),
+        })
+    }
 }
 
 #[pymethods]
@@ -177,29 +199,55 @@ impl PyCubicSpline {
                     ("clamped", Ends::Clamped(start.0.to_vec(), end.0.to_vec()))
                 }
             };
+            let knot_count = spline.knots().len();
             let sub = PyCubicSpline {
-                knots: Numbers(spline.knots().to_vec()),
-                values: FlatPoints::of(spline.values()),
-                slopes: FlatPoints::of(spline.slopes()),
-                points: FlatPoints { coords: flat.to_vec(), dim },
                 t: knots.clone(),
                 parameterization: parameterization.to_string(),
                 ends: given_ends,
             };
             let inner: Arc<dyn CurveImpl> = Arc::new(Wrapped::<_, D>(spline));
-            (name, (inner, sub))
+            (name, (inner, sub, knot_count))
         });
-        let (inner, sub) = built;
+        let (inner, sub, knot_count) = built;
         let params = if knots.is_some() {
             "given t"
         } else {
             parameterization
         };
         let description = format!(
-            "<karkas.CubicSpline bc='{bc_name}', parameterization='{params}', {} knots in {dim}-D",
-            sub.knots.0.len()
+            "<karkas.CubicSpline bc='{bc_name}', parameterization='{params}', {knot_count} knots in {dim}-D"
         );
         Ok(PyClassInitializer::from(PyCurve::new(inner, description)).add_subclass(sub))
+    }
+
+    /// The knots t_0 < ... < t_{n-1}.
+    #[getter]
+    fn knots<'py>(slf: &Bound<'py, Self>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        let py = slf.py();
+        match spline_of(slf.as_super().get())? {
+            SplineRef::D2(s) => vector_to_array(py, s.knots()),
+            SplineRef::D3(s) => vector_to_array(py, s.knots()),
+        }
+    }
+
+    /// The interpolated values P(t_k), (n, d).
+    #[getter]
+    fn values<'py>(slf: &Bound<'py, Self>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        let py = slf.py();
+        match spline_of(slf.as_super().get())? {
+            SplineRef::D2(s) => points_to_array(py, s.values()),
+            SplineRef::D3(s) => points_to_array(py, s.values()),
+        }
+    }
+
+    /// The node slopes P'(t_k), (n, d).
+    #[getter]
+    fn slopes<'py>(slf: &Bound<'py, Self>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+        let py = slf.py();
+        match spline_of(slf.as_super().get())? {
+            SplineRef::D2(s) => points_to_array(py, s.slopes()),
+            SplineRef::D3(s) => points_to_array(py, s.slopes()),
+        }
     }
 }
 

@@ -138,22 +138,23 @@ impl PyLlSurface {
 #[pymethods]
 impl PyCubicSpline {
     /// Pickling: the points, parameters, parameterization and end conditions.
-    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
-        let t = self
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<Bound<'py, PyTuple>> {
+        let (py, this) = (slf.py(), slf.get());
+        let t = this
             .t
             .as_ref()
             .map(|t| vector_to_array(py, t))
             .transpose()?;
-        let bc: Bound<'py, PyAny> = match &self.ends {
+        let bc: Bound<'py, PyAny> = match &this.ends {
             Ends::Named(name) => name.into_pyobject(py)?.into_any(),
             Ends::Clamped(start, end) => ("clamped", start.clone(), end.clone())
                 .into_pyobject(py)?
                 .into_any(),
         };
         let args = (
-            self.points.to_array(py)?,
+            PyCubicSpline::points_given(slf)?.to_array(py)?,
             t,
-            self.parameterization.as_str(),
+            this.parameterization.as_str(),
             bc,
         );
         reduce(py, "CubicSpline", args.into_pyobject(py)?, None)

@@ -30,6 +30,11 @@ pub trait CurveImpl: crate::geometry_interface::CurveGeometryImpl + Send + Sync 
     fn continuity(&self) -> usize;
     /// Writes the `k`-th derivative (0: the point) at every `ts[i]` into `out[d i..d i + d]`.
     fn eval_flat(&self, ts: &[f64], k: usize, out: &mut [f64]);
+    /// The library curve itself, for a class that reads more of it than this interface gives
+    /// (a cubic spline's knots, values and slopes); `None` unless overridden.
+    fn library_curve(&self) -> Option<&dyn std::any::Any> {
+        None
+    }
     /// The exact B-spline form over the domain (one period, clamped, for a closed curve), or
     /// the library's reason why there is none.
     fn to_bspline(&self) -> karkas::Result<FlatBSpline>;
@@ -45,8 +50,11 @@ pub struct Wrapped<C, const D: usize>(pub C);
 
 impl<C, const D: usize> CurveImpl for Wrapped<C, D>
 where
-    C: PiecewiseCurve<D> + ToBSplineCurve<D> + Send + Sync,
+    C: PiecewiseCurve<D> + ToBSplineCurve<D> + Send + Sync + 'static,
 {
+    fn library_curve(&self) -> Option<&dyn std::any::Any> {
+        Some(&self.0)
+    }
     fn to_bspline(&self) -> karkas::Result<FlatBSpline> {
         Ok(FlatBSpline::of(&self.0.to_bspline()?))
     }
