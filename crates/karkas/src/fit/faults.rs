@@ -24,7 +24,7 @@ use super::knots::{start_parameters_for, warm_parameters, MIN_KNOT_SPACING};
 use super::penalty::{check_inputs, fit_checked, FitOptions, DEFAULT_SMOOTHING};
 use super::refine::worst_per_piece;
 use super::result::CurveFit;
-use crate::{Error, Point, Result};
+use crate::{Point, Result};
 
 /// Smoothing tried, in turn, as multiples of the smoothing asked for (or of the default
 /// where none was asked).
@@ -53,46 +53,48 @@ pub(crate) fn sound_fit<const D: usize>(
         return Ok(fit);
     }
     let bound = tolerance.max(fit.max_distance() * UNMET_SLACK);
-    if let Some(smoothed) = smoothed(points, bound, options, asked, &fit) {
-        return Ok(smoothed);
-    }
-    let refit = |knots: &[f64], parameters: &[f64]| -> Result<Option<CurveFit<D>>> {
-        let weights = check_inputs(points, knots, options)?;
-        let start = warm_parameters(parameters);
-        match fit_checked(points, knots, &weights, start, options, &fit.noise) {
-            Ok(trial) => Ok(Some(trial)),
-            Err(Error::SingularSystem { .. }) => Ok(None),
-            Err(e) => Err(e),
-        }
-    };
     let sound = |trial: &CurveFit<D>| {
         trial.max_distance() <= bound && shape_faults(points, trial).is_empty()
     };
-    // The same knots from the starting parameters: the refinement carries each round's foot
-    // parameters to the next, and a loop made on coarse knots can stay.
-    let start = start_parameters_for(points, &options.start, fit.noise.sigma)?;
-    let weights = check_inputs(points, fit.spline.knots(), options)?;
-    if let Ok(trial) = fit_checked(
-        points,
-        fit.spline.knots(),
-        &weights,
-        start,
-        options,
-        &fit.noise,
-    ) {
-        if sound(&trial) {
-            return Ok(trial);
-        }
+    let knots = fit.spline.knots();
+    // 1. More smoothing on the same knots; the same knots from the starting parameters (the
+    // refinement carries each round's foot parameters to the next, and a loop made on coarse
+    // knots can stay).
+    let unit = if asked > 0.0 {
+        asked
+    } else {
+        DEFAULT_SMOOTHING
+    };
+    let smoothed = FAULT_SMOOTHING.iter().find_map(|factor| {
+        let smoother = FitOptions {
+            smoothing: unit * factor,
+            ..options.clone()
+        };
+        refit(
+            points,
+            knots,
+            warm_parameters(&fit.parameters),
+            &smoother,
+            &fit,
+        )
+        .filter(sound)
+    });
+    if let Some(trial) = smoothed {
+        return Ok(trial);
     }
-    // Knots at the faults, round after round.
-    let mut last = (fit.spline.knots().to_vec(), fit.parameters.clone(), faults);
+    let start = start_parameters_for(points, &options.start, fit.noise.sigma)?;
+    if let Some(trial) = refit(points, knots, start, options, &fit).filter(sound) {
+        return Ok(trial);
+    }
+    // 2. Knots at the faults, round after round.
+    let mut last = (knots.to_vec(), fit.parameters.clone(), faults);
     for _ in 0..FAULT_ROUNDS {
         let (knots, parameters, faults) = &last;
         let finer = split_at(knots, faults);
         if finer.len() == knots.len() || finer.len() > cap {
             break;
         }
-        let Some(trial) = refit(&finer, parameters)? else {
+        let Some(trial) = refit(points, &finer, warm_parameters(parameters), options, &fit) else {
             break;
         };
         if sound(&trial) {
@@ -101,18 +103,35 @@ pub(crate) fn sound_fit<const D: usize>(
         let faults = shape_faults(points, &trial);
         last = (finer, trial.parameters, faults);
     }
-    // A knot taken out beside a span that holds no point: such spans let the curve wiggle.
-    let knots = fit.spline.knots();
+    // 3. A knot taken out beside a span that holds no point: such spans let the curve wiggle.
     for at in knots_beside_empty_spans(&fit) {
         let mut fewer = knots.to_vec();
         fewer.remove(at);
-        if let Some(trial) = refit(&fewer, &fit.parameters)? {
-            if sound(&trial) {
-                return Ok(trial);
-            }
+        let trial = refit(
+            points,
+            &fewer,
+            warm_parameters(&fit.parameters),
+            options,
+            &fit,
+        );
+        if let Some(trial) = trial.filter(sound) {
+            return Ok(trial);
         }
     }
     Ok(fit)
+}
+
+/// The fit of `points` on `knots` from the parameters `start`, with the noise estimate of
+/// `fit`; `None` when it cannot be made (a repair is optional: `fit` stands).
+fn refit<const D: usize>(
+    points: &[Point<D>],
+    knots: &[f64],
+    start: Vec<f64>,
+    options: &FitOptions,
+    fit: &CurveFit<D>,
+) -> Option<CurveFit<D>> {
+    let weights = check_inputs(points, knots, options).ok()?;
+    fit_checked(points, knots, &weights, start, options, &fit.noise).ok()
 }
 
 /// The inner knots that bound a knot span holding no point's foot parameter.
@@ -128,33 +147,6 @@ fn knots_beside_empty_spans<const D: usize>(fit: &CurveFit<D>) -> Vec<usize> {
         .collect();
     beside.dedup();
     beside
-}
-
-/// The first refit of `fit` on its knots with more smoothing whose largest deviation is at
-/// most `bound` and that is sound.
-fn smoothed<const D: usize>(
-    points: &[Point<D>],
-    bound: f64,
-    options: &FitOptions,
-    asked: f64,
-    fit: &CurveFit<D>,
-) -> Option<CurveFit<D>> {
-    let unit = if asked > 0.0 {
-        asked
-    } else {
-        DEFAULT_SMOOTHING
-    };
-    FAULT_SMOOTHING.iter().find_map(|factor| {
-        let smoother = FitOptions {
-            smoothing: unit * factor,
-            ..options.clone()
-        };
-        let knots = fit.spline.knots();
-        let weights = check_inputs(points, knots, &smoother).ok()?;
-        let start = warm_parameters(&fit.parameters);
-        let trial = fit_checked(points, knots, &weights, start, &smoother, &fit.noise).ok()?;
-        (trial.max_distance() <= bound && shape_faults(points, &trial).is_empty()).then_some(trial)
-    })
 }
 
 /// `knots` with one more knot in every piece that holds a fault parameter, at the fault
