@@ -13,15 +13,21 @@
 //! the weighted mean of its parameters. Hand-written: it is a dozen lines on the fit's own
 //! buffers, and the crates that offer it allocate their own point types per call.
 
-/// Replaces `params` by their weighted isotonic (non-decreasing) regression with weights
-/// `weights` (positive), reusing `blocks` as scratch; returns whether anything changed.
-pub(crate) fn isotonic(params: &mut [f64], weights: &[f64], blocks: &mut Vec<Block>) -> bool {
+/// Replaces `params` by their weighted isotonic (non-decreasing) regression with the
+/// positive weights `weight(i)`, reusing `blocks` as scratch; returns whether anything
+/// changed. A point's weight is asked for only when its run is pooled (on a fit most points
+/// are in order, and a weight costs an evaluation of the curve).
+pub(crate) fn isotonic(
+    params: &mut [f64],
+    mut weight: impl FnMut(usize) -> f64,
+    blocks: &mut Vec<Block>,
+) -> bool {
     blocks.clear();
     let mut changed = false;
-    for (i, (&t, &w)) in params.iter().zip(weights).enumerate() {
+    for (i, &t) in params.iter().enumerate() {
         let mut block = Block {
             start: i,
-            weight: w,
+            weight: None,
             mean: t,
         };
         while let Some(last) = blocks.last() {
@@ -29,11 +35,15 @@ pub(crate) fn isotonic(params: &mut [f64], weights: &[f64], blocks: &mut Vec<Blo
                 break;
             }
             changed = true;
-            let total = last.weight + block.weight;
+            let (a, b) = (
+                last.weight.unwrap_or_else(|| weight(last.start)),
+                block.weight.unwrap_or_else(|| weight(block.start)),
+            );
+            let total = a + b;
             block = Block {
                 start: last.start,
-                weight: total,
-                mean: (last.mean * last.weight + block.mean * block.weight) / total,
+                weight: Some(total),
+                mean: (last.mean * a + block.mean * b) / total,
             };
             blocks.pop();
         }
@@ -49,11 +59,12 @@ pub(crate) fn isotonic(params: &mut [f64], weights: &[f64], blocks: &mut Vec<Blo
     changed
 }
 
-/// A run of pooled parameters: its first index, total weight and weighted mean.
+/// A run of pooled parameters: its first index, total weight (`None` for a single point
+/// whose weight was not needed yet) and weighted mean.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Block {
     start: usize,
-    weight: f64,
+    weight: Option<f64>,
     mean: f64,
 }
 
@@ -65,8 +76,27 @@ mod tests {
     fn ordered_input_is_kept() {
         let mut t = vec![0.0, 0.1, 0.1, 0.5, 1.0];
         let mut blocks = Vec::new();
-        assert!(!isotonic(&mut t, &[1.0; 5], &mut blocks));
+        assert!(!isotonic(&mut t, |_| 1.0, &mut blocks));
         assert_eq!(t, vec![0.0, 0.1, 0.1, 0.5, 1.0]);
+    }
+
+    #[test]
+    fn only_pooled_points_are_weighed() {
+        let mut t = vec![0.0, 0.1, 0.6, 0.2, 0.7, 0.8, 0.75, 1.0];
+        let mut asked = Vec::new();
+        let w = [1.0, 1.0, 2.0, 3.0, 1.0, 1.0, 1.0, 1.0];
+        assert!(isotonic(
+            &mut t,
+            |i| {
+                asked.push(i);
+                w[i]
+            },
+            &mut Vec::new()
+        ));
+        asked.sort_unstable();
+        assert_eq!(asked, vec![2, 3, 5, 6]);
+        assert!((t[2] - (0.6 * 2.0 + 0.2 * 3.0) / 5.0).abs() < 1e-15);
+        assert!(t[5] == t[6] && (t[5] - 0.775).abs() < 1e-15);
     }
 
     #[test]
@@ -74,7 +104,7 @@ mod tests {
         let mut t = vec![0.0, 0.6, 0.2, 0.3, 1.0];
         let w = [1.0, 1.0, 3.0, 1.0, 1.0];
         let mut blocks = Vec::new();
-        assert!(isotonic(&mut t, &w, &mut blocks));
+        assert!(isotonic(&mut t, |i| w[i], &mut blocks));
         // 0.6 (w 1) and 0.2 (w 3) pool to 0.3, which equals the next value: no further pool.
         assert!((t[1] - 0.3).abs() < 1e-15 && (t[2] - 0.3).abs() < 1e-15);
         assert!((t[3] - 0.3).abs() < 1e-15);
@@ -92,7 +122,7 @@ mod tests {
         ];
         for (input, w) in cases {
             let mut t = input.to_vec();
-            isotonic(&mut t, w, &mut Vec::new());
+            isotonic(&mut t, |i| w[i], &mut Vec::new());
             let cost = |x: &[f64]| -> f64 {
                 x.iter()
                     .zip(input)

@@ -63,10 +63,9 @@ pub(crate) struct State<const D: usize> {
     pub order: OrderScratch,
 }
 
-/// Scratch space of [`super::order::isotonic`]: a weight per point and the pooled runs.
+/// Scratch space of [`super::order::isotonic`]: the pooled runs.
 #[derive(Clone, Debug, Default)]
 pub(crate) struct OrderScratch {
-    pub weights: Vec<f64>,
     pub blocks: Vec<Block>,
     /// The parameters before the ordering.
     pub previous: Vec<f64>,

@@ -67,35 +67,22 @@ fn order_parameters<const D: usize>(
     if state.params.windows(2).all(|pair| pair[0] <= pair[1]) {
         return state.data_term();
     }
-    let weights = &mut state.order.weights;
-    weights.clear();
-    weights.extend(
-        state
-            .params
-            .iter()
-            .zip(&state.piece)
-            .zip(points)
-            .enumerate()
-            .map(|(i, ((&t, &piece), &r))| {
-                if !projection.is_free(i, n) {
-                    // Held parameters stay.
-                    return f64::MAX;
-                }
-                let [p, d1, d2] = form.jet(piece, t);
-                let speed_sq = d1.norm_sq();
-                (speed_sq + (p - r).dot(d2))
-                    .max(1e-3 * speed_sq)
-                    .max(f64::MIN_POSITIVE)
-            }),
-    );
-    let before = &mut state.order.previous;
-    before.clear();
-    before.extend_from_slice(&state.params);
-    isotonic(
-        &mut state.params,
-        &state.order.weights,
-        &mut state.order.blocks,
-    );
+    let (pieces, order) = (&state.piece, &mut state.order);
+    order.previous.clear();
+    order.previous.extend_from_slice(&state.params);
+    let previous = &order.previous;
+    // The curvature of a point's squared distance at its foot point (held parameters stay).
+    let weight = |i: usize| {
+        if !projection.is_free(i, n) {
+            return f64::MAX;
+        }
+        let [p, d1, d2] = form.jet(pieces[i], previous[i]);
+        let speed_sq = d1.norm_sq();
+        (speed_sq + (p - points[i]).dot(d2))
+            .max(1e-3 * speed_sq)
+            .max(f64::MIN_POSITIVE)
+    };
+    isotonic(&mut state.params, weight, &mut order.blocks);
     for (i, (t, old)) in state.params.iter().zip(&state.order.previous).enumerate() {
         if t != old {
             let piece = form.piece_near(*t, state.piece[i]);

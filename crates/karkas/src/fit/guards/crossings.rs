@@ -37,37 +37,60 @@ pub(crate) fn crossings(vertices: &[[f64; 2]]) -> Vec<Crossing> {
         let (p, q) = (vertices[k], vertices[k + 1]);
         let (ylo, yhi) = (p[1].min(q[1]), p[1].max(q[1]));
         for &j in &active {
-            if j + 1 == k || k + 1 == j {
-                continue;
-            }
             let (c, d) = (vertices[j], vertices[j + 1]);
             if c[1].max(d[1]) < ylo || c[1].min(d[1]) > yhi {
                 continue;
             }
-            let (o1, o2) = (orient(p, q, c), orient(p, q, d));
-            let (o3, o4) = (orient(c, d, p), orient(c, d, q));
-            if o1 * o2 < 0.0 && o3 * o4 < 0.0 {
-                let (sk, sj) = (o3 / (o3 - o4), o1 / (o1 - o2));
-                found.push(if j < k {
-                    Crossing {
-                        a: j,
-                        sa: sj,
-                        b: k,
-                        sb: sk,
-                    }
-                } else {
-                    Crossing {
-                        a: k,
-                        sa: sk,
-                        b: j,
-                        sb: sj,
-                    }
-                });
-            }
+            found.extend(crossing(vertices, j, k));
         }
         active.push(k);
     }
     found
+}
+
+/// The proper crossing of segments `j` and `k` of the polyline through `vertices`, if they
+/// cross (`None` for segments that share a vertex): the test of [`crossings`] for one pair,
+/// the same whichever is given first.
+pub(crate) fn crossing(vertices: &[[f64; 2]], j: usize, k: usize) -> Option<Crossing> {
+    if j.abs_diff(k) < 2 {
+        return None;
+    }
+    let (p, q) = (vertices[k], vertices[k + 1]);
+    let (c, d) = (vertices[j], vertices[j + 1]);
+    let (o1, o2) = (orient(p, q, c), orient(p, q, d));
+    let (o3, o4) = (orient(c, d, p), orient(c, d, q));
+    if !(o1 * o2 < 0.0 && o3 * o4 < 0.0) {
+        return None;
+    }
+    let (sk, sj) = (o3 / (o3 - o4), o1 / (o1 - o2));
+    Some(if j < k {
+        Crossing {
+            a: j,
+            sa: sj,
+            b: k,
+            sb: sk,
+        }
+    } else {
+        Crossing {
+            a: k,
+            sa: sk,
+            b: j,
+            sb: sj,
+        }
+    })
+}
+
+/// A jittered Lissajous figure of `n` vertices, which crosses itself many times (tests).
+#[cfg(test)]
+pub(crate) fn jittered_lissajous(n: usize, jitter: f64) -> Vec<[f64; 2]> {
+    let tau = 2.0 * std::f64::consts::PI;
+    (0..n)
+        .map(|i| {
+            let s = i as f64 / (n - 1) as f64;
+            let shift = jitter * ((i * 7) % 5) as f64;
+            [(3.0 * tau * s).sin() + shift, (2.0 * tau * s + 0.3).sin()]
+        })
+        .collect()
 }
 
 #[cfg(test)]
@@ -81,5 +104,25 @@ mod tests {
         assert_eq!(c.len(), 1, "{c:?}");
         assert_eq!((c[0].a, c[0].b), (0, 2));
         assert!((c[0].sa - 0.5).abs() < 1e-15 && (c[0].sb - 0.5).abs() < 1e-15);
+    }
+
+    #[test]
+    fn one_pair_agrees_with_the_sweep_either_way_round() {
+        let v = jittered_lissajous(120, 0.03);
+        let mut swept: Vec<(usize, usize)> = crossings(&v).iter().map(|c| (c.a, c.b)).collect();
+        swept.sort_unstable();
+        assert!(swept.len() > 5, "{swept:?}");
+        let m = v.len() - 1;
+        let mut paired = Vec::new();
+        for j in 0..m {
+            for k in j + 1..m {
+                let one = crossing(&v, j, k);
+                assert_eq!(one, crossing(&v, k, j), "segments {j} and {k}");
+                if let Some(c) = one {
+                    paired.push((c.a, c.b));
+                }
+            }
+        }
+        assert_eq!(swept, paired);
     }
 }
