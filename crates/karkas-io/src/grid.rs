@@ -13,6 +13,8 @@
 //! (the `skeleton` module); the parser here serves both.
 
 use std::collections::HashMap;
+
+use rayon::prelude::*;
 use std::path::Path;
 
 use karkas::{Grid, Point, Point3};
@@ -73,11 +75,28 @@ pub(crate) fn parse_indexed(
     layout: &IndexedLayout,
 ) -> Result<Grid<Point3>, IoError> {
     let text = strip_bom(text);
+    let plain = is_plain(text);
+    if plain {
+        if let Some(grid) = parse_in_order(text, path, layout) {
+            return grid;
+        }
+    }
+    parse_any_order(text, plain, path, layout)
+}
+
+/// [`parse_indexed`] for cells in any order: each cell is kept with its indices and line
+/// until the grid is complete.
+fn parse_any_order(
+    text: &str,
+    plain: bool,
+    path: &Path,
+    layout: &IndexedLayout,
+) -> Result<Grid<Point3>, IoError> {
     let mut rows = IndexedRows::new(path, layout);
     // At most one cell a line: reserved once (capacity not used is never touched).
     rows.cells
         .reserve(memchr::memchr_iter(b'\n', text.as_bytes()).count() + 1);
-    if is_plain(text) {
+    if plain {
         let mut fields: Vec<&str> = Vec::new();
         for (k, line) in text.lines().enumerate() {
             fields.clear();
@@ -91,6 +110,160 @@ pub(crate) fn parse_indexed(
         }
     }
     rows.finish()
+}
+
+/// The grid of plain `text` whose cells come in row-major order, each once (what programs
+/// write): the points go straight into the grid, with no record of each cell's indices and
+/// line, and a large text is read in pieces in parallel. `None` as soon as a cell comes out
+/// of that order or a row does not read; the general reader then reads the text again and
+/// reports what it finds, so the grid and every error are the same either way.
+fn parse_in_order(
+    text: &str,
+    path: &Path,
+    layout: &IndexedLayout,
+) -> Option<Result<Grid<Point3>, IoError>> {
+    let (columns, body) = header_and_body(text, path, layout)?;
+    let pieces = if body.len() < PARALLEL_BYTES {
+        1
+    } else {
+        rayon::current_num_threads().clamp(1, MAX_PIECES)
+    };
+    let mut bounds = vec![0];
+    for k in 1..pieces {
+        let from = (body.len() * k / pieces).max(bounds[k - 1]);
+        let cut =
+            memchr::memchr(b'\n', &body.as_bytes()[from..]).map_or(body.len(), |e| from + e + 1);
+        bounds.push(cut);
+    }
+    bounds.push(body.len());
+    let runs: Vec<Option<Run>> = bounds
+        .par_windows(2)
+        .map(|w| Run::of(&body[w[0]..w[1]], &columns, path))
+        .collect();
+    let runs: Vec<Run> = runs.into_iter().collect::<Option<Vec<Run>>>()?;
+    // The runs joined: each must go on where the previous one ended.
+    let mut cols: Option<usize> = None;
+    let mut last: Option<(usize, usize)> = None;
+    for run in runs.iter().filter(|r| !r.points.is_empty()) {
+        match last {
+            None if run.first != (0, 0) => return None,
+            None => {}
+            Some(end) => follow(end, run.first, &mut cols)?,
+        }
+        if let Some(c) = run.cols {
+            if *cols.get_or_insert(c) != c {
+                return None;
+            }
+        }
+        last = Some(run.last);
+    }
+    let (i, j) = last?;
+    let (rows, cols) = match cols {
+        None => (1, j + 1),
+        Some(cols) if j + 1 == cols => (i + 1, cols),
+        Some(_) => return None,
+    };
+    let mut points = Vec::with_capacity(runs.iter().map(|r| r.points.len()).sum());
+    for run in &runs {
+        points.extend_from_slice(&run.points);
+    }
+    Some(
+        check_coordinate_range(points.iter().flat_map(|p| p.0), path).and_then(|()| {
+            Grid::from_row_major(rows, cols, points)
+                .map_err(|source| IoError::geometry(path, source))
+        }),
+    )
+}
+
+/// Texts shorter than this are read in one piece.
+const PARALLEL_BYTES: usize = 1 << 20;
+/// The most pieces a text is read in.
+const MAX_PIECES: usize = 16;
+
+/// The columns named by the header (the first line with content) of `text`, and the text
+/// after it; `None` when there is no header or it does not name the columns.
+fn header_and_body<'t>(
+    text: &'t str,
+    path: &Path,
+    layout: &IndexedLayout,
+) -> Option<(GridColumns, &'t str)> {
+    let mut rest = text;
+    let mut line = 0;
+    while !rest.is_empty() {
+        line += 1;
+        let end = memchr::memchr(b'\n', rest.as_bytes()).map_or(rest.len(), |e| e + 1);
+        let (content, after) = rest.split_at(end);
+        rest = after;
+        let fields: Vec<&str> = split_row(content.lines().next().unwrap_or(""));
+        if fields.iter().all(|f| f.is_empty()) {
+            continue;
+        }
+        let header = Row {
+            line,
+            fields: fields.iter().map(|f| (*f).to_owned()).collect(),
+        };
+        let columns = GridColumns::from_header(&header, path, layout).ok()?;
+        return Some((columns, rest));
+    }
+    None
+}
+
+/// The trimmed fields of a plain line, its comment cut.
+fn split_row(line: &str) -> Vec<&str> {
+    strip_comment(line).split(',').map(str::trim).collect()
+}
+
+/// Consecutive cells of a grid in row-major order: the first and the last, the row length
+/// when a row ended among them, and their points.
+struct Run {
+    first: (usize, usize),
+    last: (usize, usize),
+    cols: Option<usize>,
+    points: Vec<Point3>,
+}
+
+impl Run {
+    /// The cells of the lines of `piece`; `None` when a row does not read or a cell does not
+    /// follow the one before it.
+    fn of(piece: &str, columns: &GridColumns, path: &Path) -> Option<Run> {
+        let mut run = Run {
+            first: (0, 0),
+            last: (0, 0),
+            cols: None,
+            points: Vec::with_capacity(memchr::memchr_iter(b'\n', piece.as_bytes()).count() + 1),
+        };
+        let mut fields: Vec<&str> = Vec::new();
+        for line in piece.lines() {
+            fields.clear();
+            fields.extend(strip_comment(line).split(',').map(str::trim));
+            if fields.iter().all(|f| f.is_empty()) {
+                continue;
+            }
+            // The line only names errors, and an error sends the text to the general reader.
+            let (i, j, point) = columns.read(&fields, 0, path).ok()?;
+            if run.points.is_empty() {
+                run.first = (i, j);
+            } else {
+                follow(run.last, (i, j), &mut run.cols)?;
+            }
+            run.last = (i, j);
+            run.points.push(point);
+        }
+        Some(run)
+    }
+}
+
+/// Whether cell `next` follows cell `last` in row-major order: the next in the row, or the
+/// first of the next row, which makes the row `last.1 + 1` long (recorded in `cols`, and
+/// checked against a length already recorded).
+fn follow(last: (usize, usize), next: (usize, usize), cols: &mut Option<usize>) -> Option<()> {
+    if next == (last.0, last.1 + 1) {
+        return Some(());
+    }
+    if next != (last.0 + 1, 0) {
+        return None;
+    }
+    (*cols.get_or_insert(last.1 + 1) == last.1 + 1).then_some(())
 }
 
 /// True when `text` has no double quote (no quoted field) and no carriage return but before a
@@ -287,7 +460,7 @@ impl GridColumns {
         }
         let field = |k: usize| fields[self.index[k]];
         let grid_index = |k: usize| {
-            field(k).parse::<usize>().map_err(|_| {
+            parse_index(field(k)).ok_or_else(|| {
                 at.error(format!(
                     "'{}' is not a non-negative integer (column {}, '{}')",
                     excerpt(field(k)),
@@ -310,9 +483,115 @@ impl GridColumns {
     }
 }
 
+/// `field` as a `usize`, as `str::parse` reads it; plain digits (at most 19, which cannot
+/// overflow) without its generality.
+fn parse_index(field: &str) -> Option<usize> {
+    let bytes = field.as_bytes();
+    if (1..=19).contains(&bytes.len()) && bytes.iter().all(u8::is_ascii_digit) {
+        return Some(
+            bytes
+                .iter()
+                .fold(0usize, |v, &b| v * 10 + usize::from(b - b'0')),
+        );
+    }
+    field.parse().ok()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn indices_read_as_str_parse_reads_them() {
+        for text in [
+            "0",
+            "7",
+            "0042",
+            "+5",
+            "-1",
+            "",
+            " 1",
+            "1.0",
+            "1e3",
+            "x",
+            "18446744073709551615",
+            "18446744073709551616",
+            "9999999999999999999",
+            "00000000000000000001",
+        ] {
+            assert_eq!(parse_index(text), text.parse::<usize>().ok(), "{text:?}");
+        }
+    }
+
+    #[test]
+    fn cells_in_order_read_as_the_general_reader_reads_them() {
+        let header = "i,j,x,y,z\n";
+        let row = |i: usize, j: usize| format!("{i},{j},{}.5,{j},-{i}e-3\n", i + j);
+        let ordered = |rows: usize, cols: usize| -> Vec<String> {
+            (0..rows)
+                .flat_map(|i| (0..cols).map(move |j| row(i, j)))
+                .collect()
+        };
+        let joined = |lines: &[String]| format!("{header}{}", lines.concat());
+        let mut texts = Vec::new();
+        for (rows, cols) in [(1, 1), (1, 4), (4, 1), (3, 5)] {
+            texts.push(joined(&ordered(rows, cols)));
+        }
+        let full = ordered(3, 4);
+        let mut swapped = full.clone();
+        swapped.swap(5, 6);
+        let mut repeated = full.clone();
+        repeated[7] = row(1, 2);
+        let mut short = full.clone();
+        short.pop();
+        let mut bad = full.clone();
+        bad[9] = "2,1,x,0,0\n".to_owned();
+        let mut extra_row = full.clone();
+        extra_row.push(row(3, 0));
+        let mut wide = full.clone();
+        wide.insert(4, row(0, 4));
+        let mut huge = full.clone();
+        huge[11] = "2,3,1e308,0,0\n".to_owned();
+        for lines in [swapped, repeated, short, bad, extra_row, wide, huge] {
+            texts.push(joined(&lines));
+        }
+        texts.push(format!(
+            "# comment\n\n{}",
+            joined(&full).replace("1,0,", "\n1,0,")
+        ));
+        texts.push(header.to_owned());
+        for text in &texts {
+            let path = Path::new("g.csv");
+            let general = parse_any_order(text, true, path, &GRID).map_err(|e| e.to_string());
+            let read = parse_grid(text, path).map_err(|e| e.to_string());
+            assert_eq!(read, general, "{text}");
+        }
+        // Texts long enough to be read in pieces: in order, one pair swapped at each place,
+        // a row one cell short, the last row one cell long.
+        let big = ordered(400, 300);
+        assert!(joined(&big).len() > 2 * PARALLEL_BYTES);
+        let mut big_texts = vec![joined(&big)];
+        for at in [1, 299, 300, 59_999, 60_000, 119_998] {
+            let mut lines = big.clone();
+            lines.swap(at, at + 1);
+            big_texts.push(joined(&lines));
+        }
+        let mut lines = big.clone();
+        lines.remove(60_299);
+        big_texts.push(joined(&lines));
+        let mut lines = big.clone();
+        lines.push(row(399, 300));
+        big_texts.push(joined(&lines));
+        for text in &big_texts {
+            let path = Path::new("g.csv");
+            let general = parse_any_order(text, true, path, &GRID).map_err(|e| e.to_string());
+            assert_eq!(parse_grid(text, path).map_err(|e| e.to_string()), general);
+        }
+        assert!(parse_grid(&big_texts[0], Path::new("g.csv")).is_ok());
+        // The ordered ones took the direct path.
+        assert!(parse_in_order(&texts[3], Path::new("g.csv"), &GRID).is_some());
+        assert!(parse_in_order(&texts[4], Path::new("g.csv"), &GRID).is_none());
+    }
 
     #[test]
     fn missing_count_is_exact_for_huge_indices() {

@@ -155,6 +155,7 @@ impl Input {
         let mut bytes = Vec::new();
         let mut line = 0;
         loop {
+            line += self.take_whole_lines(&mut text)?;
             line += 1;
             if !self.read_line_bytes(&mut bytes, line)? {
                 return Ok(text);
@@ -165,6 +166,34 @@ impl Input {
             }
             check_held(&self.name, text.len() as u128)?;
         }
+    }
+
+    /// Appends to `text` the whole lines in the reader's buffer when none of them needs the
+    /// line-by-line checks of [`read_line_bytes`] (no NUL byte, UTF-8, and the buffer shorter
+    /// than [`MAX_LINE_BYTES`], so no line in it is too long); returns how many. A buffer that
+    /// needs them is left for the line-by-line reading, which then reports the error at its
+    /// line. The text is the same either way, at a few checks per buffer instead of per line.
+    fn take_whole_lines(&mut self, text: &mut String) -> Result<usize, IoError> {
+        let available = match self.reader.fill_buf() {
+            Ok(bytes) => bytes,
+            // The line-by-line reading retries or reports it.
+            Err(_) => return Ok(0),
+        };
+        let Some(last) = memchr::memrchr(b'\n', available) else {
+            return Ok(0);
+        };
+        let block = &available[..=last];
+        if block.len() > MAX_LINE_BYTES || memchr::memchr(0, block).is_some() {
+            return Ok(0);
+        }
+        let Ok(whole) = std::str::from_utf8(block) else {
+            return Ok(0);
+        };
+        let (lines, used) = (memchr::memchr_iter(b'\n', block).count(), block.len());
+        text.push_str(whole);
+        self.reader.consume(used);
+        check_held(&self.name, text.len() as u128)?;
+        Ok(lines)
     }
 
     /// The whole input as bytes (a binary format), its size charged against
