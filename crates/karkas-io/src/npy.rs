@@ -12,6 +12,10 @@
 //! format (`npyz`, `ndarray-npy`) would do through their own writer types and a Python
 //! literal parser for reading, dependencies and build time for twenty lines.
 
+use std::io::Write;
+
+use karkas::Point;
+
 /// The header of an `.npy` file of `f64` values in C order with `shape`.
 pub fn header(shape: &[usize]) -> Vec<u8> {
     let dims: Vec<String> = shape.iter().map(usize::to_string).collect();
@@ -42,9 +46,36 @@ pub fn push_values(out: &mut Vec<u8>, values: impl IntoIterator<Item = f64>) {
     }
 }
 
+/// Writes the coordinates of `points` to `out` as little-endian `f64`, point after point. On a
+/// little-endian machine the points' memory is those bytes already and goes out as it is;
+/// elsewhere the values go through `scratch`.
+pub fn write_points<const D: usize>(
+    out: &mut dyn Write,
+    points: &[Point<D>],
+    scratch: &mut Vec<u8>,
+) -> std::io::Result<()> {
+    if cfg!(target_endian = "little") {
+        return out.write_all(bytemuck::cast_slice(points));
+    }
+    scratch.clear();
+    push_values(scratch, points.iter().flat_map(|p| p.0));
+    out.write_all(scratch)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn points_go_out_as_their_values_in_little_endian() {
+        let points = [Point([1.5, -2.0, 1e-300]), Point([f64::MAX, 0.1, -0.0])];
+        let mut written = Vec::new();
+        write_points(&mut written, &points, &mut Vec::new()).unwrap();
+        let mut expected = Vec::new();
+        push_values(&mut expected, points.iter().flat_map(|p| p.0));
+        assert_eq!(written, expected);
+        assert_eq!(&written[..8], &1.5f64.to_le_bytes());
+    }
 
     #[test]
     fn the_header_is_numpys() {

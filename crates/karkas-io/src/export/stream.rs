@@ -57,9 +57,7 @@ pub fn write_curve_samples<const D: usize>(
             points.resize(count, Point::<D>::ZERO);
             curve.eval_into(&ts, &mut points);
             if format == OutputFormat::Npy {
-                bytes.clear();
-                npy::push_values(&mut bytes, points.iter().flat_map(|p| p.0));
-                out.write_all(&bytes)?;
+                npy::write_points(out, &points, &mut bytes)?;
             } else {
                 write_rows(out, &ts, |k, text| {
                     push_row(text, std::iter::once(ts[k]).chain(points[k].0));
@@ -102,9 +100,7 @@ pub fn write_surface_samples(
             points.resize(rows * nv, Point3::ZERO);
             surface.eval_grid_into(&us, &vs, &mut points);
             if format == OutputFormat::Npy {
-                bytes.clear();
-                npy::push_values(&mut bytes, points.iter().flat_map(|p| p.0));
-                out.write_all(&bytes)?;
+                npy::write_points(out, &points, &mut bytes)?;
             } else {
                 write_rows(out, &points, |k, text| {
                     let (u, v) = (us[k / nv], vs[k % nv]);
