@@ -158,10 +158,10 @@ fn parse_in_order(
         last = Some(run.last);
     }
     let (i, j) = last?;
-    let (rows, cols) = match cols {
-        None => (1, j + 1),
-        Some(cols) if j + 1 == cols => (i + 1, cols),
-        Some(_) => return None,
+    let (rows, cols) = match (cols, i.checked_add(1)?, j.checked_add(1)?) {
+        (None, _, length) => (1, length),
+        (Some(cols), rows, length) if length == cols => (rows, cols),
+        _ => return None,
     };
     let mut points = Vec::with_capacity(runs.iter().map(|r| r.points.len()).sum());
     for run in &runs {
@@ -256,14 +256,16 @@ impl Run {
 /// Whether cell `next` follows cell `last` in row-major order: the next in the row, or the
 /// first of the next row, which makes the row `last.1 + 1` long (recorded in `cols`, and
 /// checked against a length already recorded).
+/// (Indices at `usize::MAX` have no successor here: the general reader takes them.)
 fn follow(last: (usize, usize), next: (usize, usize), cols: &mut Option<usize>) -> Option<()> {
-    if next == (last.0, last.1 + 1) {
+    let length = last.1.checked_add(1)?;
+    if next == (last.0, length) {
         return Some(());
     }
-    if next != (last.0 + 1, 0) {
+    if next != (last.0.checked_add(1)?, 0) {
         return None;
     }
-    (*cols.get_or_insert(last.1 + 1) == last.1 + 1).then_some(())
+    (*cols.get_or_insert(length) == length).then_some(())
 }
 
 /// True when `text` has no double quote (no quoted field) and no carriage return but before a
@@ -560,6 +562,11 @@ mod tests {
             joined(&full).replace("1,0,", "\n1,0,")
         ));
         texts.push(header.to_owned());
+        // Indices at the end of usize: no successor, so the general reader takes them.
+        let max = usize::MAX;
+        texts.push(format!("{header}0,0,1,1,1\n0,{max},1,1,1\n0,0,2,2,2\n"));
+        texts.push(format!("{header}0,{max},1,1,1\n1,0,1,1,1\n"));
+        texts.push(format!("{header}{max},0,1,1,1\n0,0,1,1,1\n"));
         for text in &texts {
             let path = Path::new("g.csv");
             let general = parse_any_order(text, true, path, &GRID).map_err(|e| e.to_string());
