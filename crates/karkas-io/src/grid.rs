@@ -7,7 +7,8 @@
 //! every cell given exactly once. `#` comments and blank lines are skipped as in the other
 //! formats; quoted fields are read with the `csv` crate, plain lines split at commas without
 //! it (no allocation per field, no map of cells: a million-cell grid reads in a fraction of a
-//! second).
+//! second). Cells in row-major order, as programs write them, go straight into the grid, and
+//! a large text of them is read in pieces in parallel ([`parse_in_order`]).
 //!
 //! The same layout with other index names holds the skeleton curves of a tube
 //! (the `skeleton` module); the parser here serves both.
@@ -99,8 +100,7 @@ fn parse_any_order(
     if plain {
         let mut fields: Vec<&str> = Vec::new();
         for (k, line) in text.lines().enumerate() {
-            fields.clear();
-            fields.extend(strip_comment(line).split(',').map(str::trim));
+            split_row(line, &mut fields);
             rows.row(k + 1, &fields)?;
         }
     } else {
@@ -163,8 +163,12 @@ fn parse_in_order(
         (Some(cols), rows, length) if length == cols => (rows, cols),
         _ => return None,
     };
-    let mut points = Vec::with_capacity(runs.iter().map(|r| r.points.len()).sum());
-    for run in &runs {
+    // The first run's points are the start of the grid's: the others are appended to them.
+    let rest: usize = runs.iter().skip(1).map(|r| r.points.len()).sum();
+    let mut runs = runs.into_iter();
+    let mut points = runs.next()?.points;
+    points.reserve_exact(rest);
+    for run in runs {
         points.extend_from_slice(&run.points);
     }
     Some(
@@ -194,7 +198,8 @@ fn header_and_body<'t>(
         let end = memchr::memchr(b'\n', rest.as_bytes()).map_or(rest.len(), |e| e + 1);
         let (content, after) = rest.split_at(end);
         rest = after;
-        let fields: Vec<&str> = split_row(content.lines().next().unwrap_or(""));
+        let mut fields = Vec::new();
+        split_row(content.lines().next().unwrap_or(""), &mut fields);
         if fields.iter().all(|f| f.is_empty()) {
             continue;
         }
@@ -208,9 +213,10 @@ fn header_and_body<'t>(
     None
 }
 
-/// The trimmed fields of a plain line, its comment cut.
-fn split_row(line: &str) -> Vec<&str> {
-    strip_comment(line).split(',').map(str::trim).collect()
+/// The trimmed fields of a plain line, its comment cut, into `fields` (cleared first).
+fn split_row<'t>(line: &'t str, fields: &mut Vec<&'t str>) {
+    fields.clear();
+    fields.extend(strip_comment(line).split(',').map(str::trim));
 }
 
 /// Consecutive cells of a grid in row-major order: the first and the last, the row length
@@ -234,8 +240,7 @@ impl Run {
         };
         let mut fields: Vec<&str> = Vec::new();
         for line in piece.lines() {
-            fields.clear();
-            fields.extend(strip_comment(line).split(',').map(str::trim));
+            split_row(line, &mut fields);
             if fields.iter().all(|f| f.is_empty()) {
                 continue;
             }

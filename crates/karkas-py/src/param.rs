@@ -17,7 +17,9 @@ use crate::convert::{
 use crate::curve::PyCurve;
 use crate::errors::{library_error, OptionError};
 use crate::surface::PySurface;
-use crate::wrapper::{CurveImpl, SurfaceImpl, Wrapped, WrappedSurface};
+use crate::wrapper::{
+    in_plane_or_space, CurveImpl, PlaneOrSpace, SurfaceImpl, Wrapped, WrappedSurface,
+};
 
 /// A float64 array returned to Python.
 type Array<'py> = Bound<'py, PyArrayDyn<f64>>;
@@ -131,24 +133,12 @@ pub struct PyCubicSpline {
 }
 
 /// The library's cubic spline behind a `CubicSpline`, of either dimension.
-enum SplineRef<'a> {
-    D2(&'a CubicSpline<2>),
-    D3(&'a CubicSpline<3>),
-}
+type SplineRef<'a> = PlaneOrSpace<'a, CubicSpline<2>, CubicSpline<3>>;
 
 /// The cubic spline behind `base` (always present for a `CubicSpline`): its knots, values and
 /// slopes are read from it, not kept twice.
 fn spline_of(base: &PyCurve) -> PyResult<SplineRef<'_>> {
-    let any = base.inner.library_curve();
-    if let Some(s) = any.and_then(|a| a.downcast_ref::<CubicSpline<2>>()) {
-        return Ok(SplineRef::D2(s));
-    }
-    if let Some(s) = any.and_then(|a| a.downcast_ref::<CubicSpline<3>>()) {
-        return Ok(SplineRef::D3(s));
-    }
-    Err(pyo3::exceptions::PyTypeError::new_err(
-        "a CubicSpline without its spline",
-    ))
+    in_plane_or_space(base.inner.library_curve(), "CubicSpline")
 }
 
 impl PyCubicSpline {
@@ -365,23 +355,11 @@ pub struct PyBicubicSurface {
 }
 
 /// The library's bicubic surface behind a `BicubicSurface`, of either dimension.
-enum BicubicRef<'a> {
-    D2(&'a BicubicSurface<2>),
-    D3(&'a BicubicSurface<3>),
-}
+type BicubicRef<'a> = PlaneOrSpace<'a, BicubicSurface<2>, BicubicSurface<3>>;
 
 /// The bicubic surface behind `base` (always present for a `BicubicSurface`).
 fn bicubic_of(base: &PySurface) -> PyResult<BicubicRef<'_>> {
-    let any = base.inner.library_surface();
-    if let Some(s) = any.and_then(|a| a.downcast_ref::<BicubicSurface<2>>()) {
-        return Ok(BicubicRef::D2(s));
-    }
-    if let Some(s) = any.and_then(|a| a.downcast_ref::<BicubicSurface<3>>()) {
-        return Ok(BicubicRef::D3(s));
-    }
-    Err(pyo3::exceptions::PyTypeError::new_err(
-        "not a bicubic surface underneath",
-    ))
+    in_plane_or_space(base.inner.library_surface(), "BicubicSurface")
 }
 
 /// The nodes `r_ij`, `i < rows`, `j < cols`, row-major.

@@ -40,6 +40,31 @@ pub trait CurveImpl: crate::geometry_interface::CurveGeometryImpl + Send + Sync 
     fn to_bspline(&self) -> karkas::Result<FlatBSpline>;
 }
 
+/// A library object of one of two types: its 2-D or its 3-D form.
+pub(crate) enum PlaneOrSpace<'a, A, B> {
+    /// The plane form.
+    D2(&'a A),
+    /// The space form.
+    D3(&'a B),
+}
+
+/// `library` (from [`CurveImpl::library_curve`] or [`SurfaceImpl::library_surface`]) as the
+/// 2-D type `A` or the 3-D type `B`; `what` names the object in the error when it is neither.
+pub(crate) fn in_plane_or_space<'a, A: std::any::Any, B: std::any::Any>(
+    library: Option<&'a dyn std::any::Any>,
+    what: &str,
+) -> pyo3::PyResult<PlaneOrSpace<'a, A, B>> {
+    if let Some(a) = library.and_then(|l| l.downcast_ref::<A>()) {
+        return Ok(PlaneOrSpace::D2(a));
+    }
+    if let Some(b) = library.and_then(|l| l.downcast_ref::<B>()) {
+        return Ok(PlaneOrSpace::D3(b));
+    }
+    Err(pyo3::exceptions::PyTypeError::new_err(format!(
+        "a {what} without its library object"
+    )))
+}
+
 /// The ends `(a, b)` of an interval.
 fn ends(interval: Interval) -> (f64, f64) {
     (interval.start, interval.end)
