@@ -72,6 +72,13 @@ impl<const D: usize> PowerForm<D> {
         out
     }
 
+    /// The third derivative (per unit `t`) of piece `k`, constant on it.
+    #[inline]
+    pub fn third(&self, k: usize) -> Point<D> {
+        let inv = 1.0 / (self.knots[k + 1] - self.knots[k]);
+        self.coef[k][3] * (6.0 * inv * inv * inv)
+    }
+
     /// The point of piece `k` at `t`.
     #[inline]
     pub fn point(&self, k: usize, t: f64) -> Point<D> {

@@ -7,7 +7,7 @@
 use super::order::isotonic;
 use super::power::PowerForm;
 use super::problem::{Projection, State};
-use super::project::foot_point_near;
+use super::project::{foot_point_near, foot_point_pair};
 use crate::core::parallel::PARALLEL_THRESHOLD;
 use crate::Point;
 use rayon::prelude::*;
@@ -110,18 +110,38 @@ fn project_each<const D: usize>(
     let abandoned = AtomicBool::new(false);
     let chunk = |(c, ((params, dist_sq), piece)): ChunkSlices<'_>| {
         let first = c * PROJECTION_CHUNK;
+        let len = params.len();
         let mut sum = 0.0;
-        for (j, ((t, d), piece)) in params.iter_mut().zip(dist_sq).zip(piece).enumerate() {
+        let mut j = 0;
+        while j < len {
             let i = first + j;
-            let r = points[i];
-            if projection.is_free(i, n) {
-                (*t, *d) = foot_point_near(form, r, *t, piece);
+            // Two free points at a time (see `foot_point_pair`), in order.
+            let taken = if j + 1 < len && projection.is_free(i, n) && projection.is_free(i + 1, n) {
+                let (pa, pb) = piece[j..].split_at_mut(1);
+                let [a, b] = foot_point_pair(
+                    form,
+                    [points[i], points[i + 1]],
+                    [params[j], params[j + 1]],
+                    [&mut pa[0], &mut pb[0]],
+                );
+                (params[j], dist_sq[j]) = a;
+                (params[j + 1], dist_sq[j + 1]) = b;
+                sum += a.1;
+                sum += b.1;
+                2
             } else {
-                *piece = form.piece_near(*t, *piece);
-                *d = form.point(*piece, *t).distance_sq(r);
-            }
-            sum += *d;
-            if j % 64 == 63
+                let r = points[i];
+                if projection.is_free(i, n) {
+                    (params[j], dist_sq[j]) = foot_point_near(form, r, params[j], &mut piece[j]);
+                } else {
+                    piece[j] = form.piece_near(params[j], piece[j]);
+                    dist_sq[j] = form.point(piece[j], params[j]).distance_sq(r);
+                }
+                sum += dist_sq[j];
+                1
+            };
+            j += taken;
+            if j % 64 < taken
                 && (abandoned.load(Ordering::Relaxed)
                     || sum + f64::from_bits(done.load(Ordering::Relaxed)) > limit)
             {
