@@ -3,11 +3,16 @@
 //! belongs to): `sum_i A_i^T e_i + p sum_L delta_L a_L J_L + lambda G q` at foot points
 //! (`A_i` the basis values at `t_i`, `e_i = R(t_i) - r_i`, `a_L` the coefficients of `J_L`,
 //! `G` the Gram matrix of the basis' second derivatives), in the interleaved layout of the
-//! unknowns, zero at pinned end values.
+//! unknowns, zero at pinned end values. With many points the data terms are summed over
+//! fixed parts of the points in parallel, then part by part, so that the sums do not depend
+//! on the number of threads.
 
 use super::hermite::{bending_gram, hermite_basis, jump_coefficients, HermiteSpline};
 use super::problem::{Problem, State};
+use crate::core::parallel::PARALLEL_THRESHOLD;
 use crate::Point;
+use rayon::prelude::*;
+use std::ops::Range;
 
 /// The half gradient of `F = H + p f + lambda S` in two parts, `base` (of `H + lambda S`) and
 /// `jump` (of `f`, per unit `p`), with the sums of the absolute values of their terms (the
@@ -18,6 +23,9 @@ pub(crate) struct Gradient {
     base_abs: Vec<f64>,
     jump: Vec<f64>,
     jump_abs: Vec<f64>,
+    /// The data terms of each part of many points, and their absolute values (allocated
+    /// at the first use).
+    parts: Vec<(Vec<f64>, Vec<f64>)>,
 }
 
 impl Gradient {
@@ -28,6 +36,7 @@ impl Gradient {
             base_abs: vec![0.0; unknowns],
             jump: vec![0.0; unknowns],
             jump_abs: vec![0.0; unknowns],
+            parts: Vec::new(),
         }
     }
 
@@ -81,21 +90,30 @@ pub(crate) fn accumulate_gradient<const D: usize>(
     ] {
         v.fill(0.0);
     }
-    for (i, (r, &t)) in problem.points.iter().zip(&state.params).enumerate() {
-        let k = spline.piece_near(t, state.piece[i]);
-        let h = knots[k + 1] - knots[k];
-        let b0 = hermite_basis((t - knots[k]) / h, h, 0);
-        let q = piece_coefficients(spline, k);
-        let mut e = -*r;
-        for a in 0..4 {
-            e = e.add_scaled(b0[a], q[a]);
-        }
-        let base = 2 * k * D;
-        for (a, &phi) in b0.iter().enumerate() {
-            for c in 0..D {
-                let term = phi * e[c];
-                out.base[base + a * D + c] += term;
-                out.base_abs[base + a * D + c] += term.abs();
+    let n = problem.points.len();
+    if n < PARALLEL_THRESHOLD {
+        add_points(problem, state, 0..n, &mut out.base, &mut out.base_abs);
+    } else {
+        // Fixed parts, summed in order: the sums do not depend on the number of threads.
+        let size = n.div_ceil(PARTS);
+        let unknowns = out.base.len();
+        out.parts
+            .resize_with(PARTS, || (vec![0.0; unknowns], vec![0.0; unknowns]));
+        out.parts
+            .par_iter_mut()
+            .enumerate()
+            .for_each(|(p, (base, base_abs))| {
+                base.fill(0.0);
+                base_abs.fill(0.0);
+                let range = (p * size).min(n)..((p + 1) * size).min(n);
+                add_points(problem, state, range, base, base_abs);
+            });
+        for (base, base_abs) in &out.parts {
+            for (o, v) in out.base.iter_mut().zip(base) {
+                *o += v;
+            }
+            for (o, v) in out.base_abs.iter_mut().zip(base_abs) {
+                *o += v;
             }
         }
     }
@@ -139,6 +157,42 @@ pub(crate) fn accumulate_gradient<const D: usize>(
         if pinned(problem, unknowns, j) {
             out.base[j] = 0.0;
             out.jump[j] = 0.0;
+        }
+    }
+}
+
+/// Parts of the points summed in parallel (fixed, so that the gradient does not depend on the
+/// number of threads).
+const PARTS: usize = 8;
+
+/// The data terms `A_i^T e_i` of the points in `range`, and their absolute values, added to
+/// `base` and `base_abs`.
+fn add_points<const D: usize>(
+    problem: &Problem<D>,
+    state: &State<D>,
+    range: Range<usize>,
+    base: &mut [f64],
+    base_abs: &mut [f64],
+) {
+    let spline = &state.spline;
+    let knots = spline.knots();
+    for i in range {
+        let (r, t) = (problem.points[i], state.params[i]);
+        let k = spline.piece_near(t, state.piece[i]);
+        let h = knots[k + 1] - knots[k];
+        let b0 = hermite_basis((t - knots[k]) / h, h, 0);
+        let q = piece_coefficients(spline, k);
+        let mut e = -r;
+        for a in 0..4 {
+            e = e.add_scaled(b0[a], q[a]);
+        }
+        let first = 2 * k * D;
+        for (a, &phi) in b0.iter().enumerate() {
+            for c in 0..D {
+                let term = phi * e[c];
+                base[first + a * D + c] += term;
+                base_abs[first + a * D + c] += term.abs();
+            }
         }
     }
 }

@@ -12,6 +12,10 @@
 //! the pool-adjacent-violators algorithm in `O(n)`: a run of points out of order is given
 //! the weighted mean of its parameters. Hand-written: it is a dozen lines on the fit's own
 //! buffers, and the crates that offer it allocate their own point types per call.
+//! With many points the runs are pooled within parts in parallel, then across the parts
+//! ([`isotonic_in_parts`]).
+
+use rayon::prelude::*;
 
 /// Replaces `params` by their weighted isotonic (non-decreasing) regression with the
 /// positive weights `weight(i)`, reusing `blocks` as scratch; returns whether anything
@@ -25,38 +29,90 @@ pub(crate) fn isotonic(
     blocks.clear();
     let mut changed = false;
     for (i, &t) in params.iter().enumerate() {
-        let mut block = Block {
-            start: i,
-            weight: None,
-            mean: t,
-        };
-        while let Some(last) = blocks.last() {
-            if last.mean <= block.mean {
-                break;
-            }
-            changed = true;
-            let (a, b) = (
-                last.weight.unwrap_or_else(|| weight(last.start)),
-                block.weight.unwrap_or_else(|| weight(block.start)),
-            );
-            let total = a + b;
-            block = Block {
-                start: last.start,
-                weight: Some(total),
-                mean: (last.mean * a + block.mean * b) / total,
-            };
-            blocks.pop();
-        }
-        blocks.push(block);
+        changed |= push(blocks, Block::single(i, t), &mut weight);
     }
     if changed {
-        let mut end = params.len();
-        for block in blocks.iter().rev() {
-            params[block.start..end].fill(block.mean);
-            end = block.start;
-        }
+        fill(params, blocks);
     }
     changed
+}
+
+/// Parts of [`isotonic_in_parts`] (fixed, so that the result does not depend on the number
+/// of threads).
+const PARTS: usize = 8;
+
+/// [`isotonic`] with the runs pooled within [`PARTS`] consecutive parts in parallel, then
+/// across the parts' ends. Pooling adjacent violators in any order leads to the same
+/// regression (the pool-adjacent-violators argument), so only the rounding of the means may
+/// differ from [`isotonic`]'s; `parts` is scratch.
+pub(crate) fn isotonic_in_parts(
+    params: &mut [f64],
+    weight: impl Fn(usize) -> f64 + Sync,
+    parts: &mut Vec<Vec<Block>>,
+) -> bool {
+    let size = params.len().div_ceil(PARTS).max(1);
+    parts.resize_with(PARTS, Vec::new);
+    for part in parts.iter_mut() {
+        part.clear();
+    }
+    let pooled = parts
+        .par_iter_mut()
+        .zip(params.par_chunks(size))
+        .enumerate()
+        .map(|(p, (blocks, chunk))| {
+            let mut changed = false;
+            for (j, &t) in chunk.iter().enumerate() {
+                changed |= push(blocks, Block::single(p * size + j, t), &mut |i| weight(i));
+            }
+            changed
+        })
+        .reduce(|| false, |a, b| a | b);
+    let (first, rest) = parts.split_at_mut(1);
+    let blocks = &mut first[0];
+    let mut changed = pooled;
+    for part in rest.iter() {
+        for &block in part {
+            changed |= push(blocks, block, &mut |i| weight(i));
+        }
+    }
+    if changed {
+        fill(params, blocks);
+    }
+    changed
+}
+
+/// Pushes `block` onto the increasing run of `blocks`, pooling it with the blocks before it
+/// whose means exceed its own; returns whether it pooled any.
+fn push(blocks: &mut Vec<Block>, mut block: Block, weight: &mut impl FnMut(usize) -> f64) -> bool {
+    let mut changed = false;
+    while let Some(last) = blocks.last() {
+        if last.mean <= block.mean {
+            break;
+        }
+        changed = true;
+        let (a, b) = (
+            last.weight.unwrap_or_else(|| weight(last.start)),
+            block.weight.unwrap_or_else(|| weight(block.start)),
+        );
+        let total = a + b;
+        block = Block {
+            start: last.start,
+            weight: Some(total),
+            mean: (last.mean * a + block.mean * b) / total,
+        };
+        blocks.pop();
+    }
+    blocks.push(block);
+    changed
+}
+
+/// Every parameter set to the mean of its block (`blocks` cover `params` in order).
+fn fill(params: &mut [f64], blocks: &[Block]) {
+    let mut end = params.len();
+    for block in blocks.iter().rev() {
+        params[block.start..end].fill(block.mean);
+        end = block.start;
+    }
 }
 
 /// A run of pooled parameters: its first index, total weight (`None` for a single point
@@ -66,6 +122,17 @@ pub(crate) struct Block {
     start: usize,
     weight: Option<f64>,
     mean: f64,
+}
+
+impl Block {
+    /// Point `i`, with parameter `t`, alone.
+    fn single(i: usize, t: f64) -> Self {
+        Block {
+            start: i,
+            weight: None,
+            mean: t,
+        }
+    }
 }
 
 #[cfg(test)]
@@ -97,6 +164,27 @@ mod tests {
         assert_eq!(asked, vec![2, 3, 5, 6]);
         assert!((t[2] - (0.6 * 2.0 + 0.2 * 3.0) / 5.0).abs() < 1e-15);
         assert!(t[5] == t[6] && (t[5] - 0.775).abs() < 1e-15);
+    }
+
+    /// Pooled in parts, the regression is the one pooled in one pass, to rounding, on
+    /// sequences of every length around the parts' size with violations across their ends.
+    #[test]
+    fn pooling_in_parts_gives_the_same_regression() {
+        for n in [0, 1, 2, 7, 8, 9, 15, 16, 17, 64, 100, 1000] {
+            // A noisy increasing sequence: runs out of order everywhere, some across parts.
+            let t: Vec<f64> = (0..n)
+                .map(|i| i as f64 / n as f64 + 0.05 * ((i * 7919 % 101) as f64 / 101.0 - 0.5))
+                .collect();
+            let w = |i: usize| 1.0 + (i % 5) as f64;
+            let (mut one, mut parts) = (t.clone(), t.clone());
+            let a = isotonic(&mut one, w, &mut Vec::new());
+            let b = isotonic_in_parts(&mut parts, w, &mut Vec::new());
+            assert_eq!(a, b, "{n}");
+            for (x, y) in one.iter().zip(&parts) {
+                assert!((x - y).abs() <= 1e-15, "{n}: {x} {y}");
+            }
+            assert!(parts.windows(2).all(|p| p[0] <= p[1]));
+        }
     }
 
     #[test]

@@ -67,6 +67,8 @@ pub(crate) struct State<const D: usize> {
 #[derive(Clone, Debug, Default)]
 pub(crate) struct OrderScratch {
     pub blocks: Vec<Block>,
+    /// The pooled runs of each part, with many points.
+    pub parts: Vec<Vec<Block>>,
     /// The parameters before the ordering.
     pub previous: Vec<f64>,
 }

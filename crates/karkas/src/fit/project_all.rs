@@ -2,9 +2,11 @@
 //! ([`foot_point_near`]), in parallel chunks, with the squared distances refreshed; the
 //! projection can be abandoned as soon as the distances exceed a budget. With
 //! [`Projection::Ordered`] the parameters are then made non-decreasing along the points
-//! ([`isotonic`]) and the distances of the points moved are refreshed.
+//! ([`isotonic`]; with many points [`isotonic_in_parts`], in parallel) and the distances of
+//! the points moved are refreshed. Free points are searched two at a time
+//! ([`foot_point_pair`]), which overlaps their chains of dependent evaluations.
 
-use super::order::isotonic;
+use super::order::{isotonic, isotonic_in_parts};
 use super::power::PowerForm;
 use super::problem::{Projection, State};
 use super::project::{foot_point_near, foot_point_pair};
@@ -67,10 +69,10 @@ fn order_parameters<const D: usize>(
     if state.params.windows(2).all(|pair| pair[0] <= pair[1]) {
         return state.data_term();
     }
-    let (pieces, order) = (&state.piece, &mut state.order);
+    let order = &mut state.order;
     order.previous.clear();
     order.previous.extend_from_slice(&state.params);
-    let previous = &order.previous;
+    let (pieces, previous) = (&state.piece, &order.previous);
     // The curvature of a point's squared distance at its foot point (held parameters stay).
     let weight = |i: usize| {
         if !projection.is_free(i, n) {
@@ -82,13 +84,36 @@ fn order_parameters<const D: usize>(
             .max(1e-3 * speed_sq)
             .max(f64::MIN_POSITIVE)
     };
-    isotonic(&mut state.params, weight, &mut order.blocks);
-    for (i, (t, old)) in state.params.iter().zip(&state.order.previous).enumerate() {
+    let parallel = n >= PARALLEL_THRESHOLD;
+    if parallel {
+        isotonic_in_parts(&mut state.params, weight, &mut order.parts);
+    } else {
+        isotonic(&mut state.params, weight, &mut order.blocks);
+    }
+    // The distance of a point whose parameter moved, at its new parameter.
+    type Moved<'s> = (usize, ((&'s f64, &'s f64), (&'s mut usize, &'s mut f64)));
+    let refresh = |(i, ((t, old), (piece, d))): Moved<'_>| {
         if t != old {
-            let piece = form.piece_near(*t, state.piece[i]);
-            state.piece[i] = piece;
-            state.dist_sq[i] = form.point(piece, *t).distance_sq(points[i]);
+            *piece = form.piece_near(*t, *piece);
+            *d = form.point(*piece, *t).distance_sq(points[i]);
         }
+    };
+    let (params, previous) = (&state.params, &state.order.previous);
+    let (pieces, dist_sq) = (&mut state.piece, &mut state.dist_sq);
+    if parallel {
+        params
+            .par_iter()
+            .zip(previous)
+            .zip(pieces.par_iter_mut().zip(dist_sq.par_iter_mut()))
+            .enumerate()
+            .for_each(refresh);
+    } else {
+        params
+            .iter()
+            .zip(previous)
+            .zip(pieces.iter_mut().zip(dist_sq.iter_mut()))
+            .enumerate()
+            .for_each(refresh);
     }
     state.data_term()
 }
