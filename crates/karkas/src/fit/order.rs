@@ -106,11 +106,14 @@ fn push(blocks: &mut Vec<Block>, mut block: Block, weight: &mut impl FnMut(usize
     changed
 }
 
-/// Every parameter set to the mean of its block (`blocks` cover `params` in order).
+/// Every parameter set to the mean of its block (`blocks` cover `params` in order; a point
+/// alone keeps its own).
 fn fill(params: &mut [f64], blocks: &[Block]) {
     let mut end = params.len();
     for block in blocks.iter().rev() {
-        params[block.start..end].fill(block.mean);
+        if block.weight.is_some() {
+            params[block.start..end].fill(block.mean);
+        }
         end = block.start;
     }
 }

@@ -56,7 +56,7 @@ impl<const D: usize> PowerForm<D> {
     }
 
     /// The point, first and second derivative (per unit `t`) of piece `k` at `t`.
-    #[inline]
+    #[inline(always)]
     pub fn jet(&self, k: usize, t: f64) -> [Point<D>; 3] {
         let h = self.knots[k + 1] - self.knots[k];
         let s = (t - self.knots[k]) / h;
