@@ -14,12 +14,13 @@
 //!
 //! The search ends when Newton's step falls below the resolution of `t`, or, in the
 //! quadratic regime, when the step just computed is below `1e-10` of the window or leaves an
-//! error (about `g''' step^2 / 2 g'`) below the resolution of `t`. That last step is taken
+//! error (about `g'' step^2 / 2 g'`) below the resolution of `t`. That last step is taken
 //! without evaluating the curve at its end: the quadratic model gives `d` there to rounding
-//! (it falls by `g^2 / 2 g'`), which saves one evaluation in three. The result is a local minimizer: an inner `t` with `g = 0` and `g' >= 0` up to
-//! rounding, or an end of `[0, 1]` where `d` increases inwards. The curve is evaluated from
-//! its power form ([`PowerForm`]) with a piece hint per point; `O(1)` evaluations per point
-//! in the usual case (three or four from the previous foot point).
+//! (it falls by `g^2 / 2 g'`), which saves about one evaluation per point. The result is a
+//! local minimizer: an inner `t` with `g = 0` and `g' >= 0` up to rounding, or an end of
+//! `[0, 1]` where `d` increases inwards. The curve is evaluated from its power form
+//! ([`PowerForm`]) with a piece hint per point; `O(1)` evaluations per point in the usual
+//! case (two or three from the previous foot point).
 
 use super::power::PowerForm;
 use crate::Point;
@@ -39,7 +40,7 @@ struct Jet {
     h: f64,
     /// `|R'|^2`.
     speed_sq: f64,
-    /// A bound on `|h'|`, the rate of change of the curvature `h` (see [`descend`]).
+    /// A bound on `|h'|`, the rate of change of `h` (see [`Descent::advance`]).
     bend: f64,
 }
 
@@ -72,8 +73,9 @@ pub(crate) fn foot_point<const D: usize>(
     foot_point_near(&PowerForm::new(curve), r, start, &mut piece)
 }
 
-/// [`foot_point`] with `piece`, a hint for the piece of `start`, updated to the piece of the
-/// result (the fit keeps one per point, so that locating a parameter is `O(1)`).
+/// The foot point of `r` on `curve` over its domain, searched from `start`, with `piece` a
+/// hint for the piece of `start`, updated to the piece of the result (the fit keeps one per
+/// point, so that locating a parameter is `O(1)`); returns `(t, |R(t) - r|^2)`.
 pub(crate) fn foot_point_near<const D: usize>(
     curve: &PowerForm<D>,
     r: Point<D>,

@@ -1,7 +1,7 @@
 //! Every data point projected onto the spline of a [`State`] from its previous foot point
 //! ([`foot_point_near`]), in parallel chunks, with the squared distances refreshed; the
 //! projection can be abandoned as soon as the distances exceed a budget. With
-//! [`Projection::Ordered`] the parameters are then made non-decreasing along the points
+//! [`Projection::ordered`] the parameters are then made non-decreasing along the points
 //! ([`isotonic`]; with many points [`isotonic_in_parts`], in parallel) and the distances of
 //! the points moved are refreshed. Free points are searched two at a time
 //! ([`foot_point_pair`]), which overlaps their chains of dependent evaluations.

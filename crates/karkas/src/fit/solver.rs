@@ -11,7 +11,7 @@
 //! - Newton's method on the reduced objective (the `t_i` eliminated by projection, see
 //!   [`newton`](super::newton) and [`gradient`](super::gradient)): each iteration assembles the banded Hessian in one pass over
 //!   the points, solves it by banded Cholesky, moves the coefficients and re-projects every
-//!   point from its previous foot point ([`foot_point_near`]).
+//!   point from its previous foot point ([`foot_point_near`](super::project::foot_point_near)).
 //! - Levenberg–Marquardt damping (Marquardt's scaling): a step is taken only when the true
 //!   objective, after re-projecting every point, decreases; the damping follows the ratio of
 //!   the actual to the predicted decrease; each damping is tried with the exact model, then
