@@ -10,6 +10,15 @@ use rayon::prelude::*;
 /// Batches with fewer items than this run serially.
 pub(crate) const PARALLEL_THRESHOLD: usize = 1 << 15;
 
+/// Parts a reduction over many items is split into (sums, pooled runs): fixed, not one per
+/// thread, so that the result does not depend on the number of threads.
+pub(crate) const FIXED_PARTS: usize = 8;
+
+/// Items per part when `n` items are split into [`FIXED_PARTS`] (at least 1).
+pub(crate) fn part_size(n: usize) -> usize {
+    n.div_ceil(FIXED_PARTS).max(1)
+}
+
 /// Items per parallel chunk of a 1-D batch (large enough to amortise the scheduling, small
 /// enough to balance two cores).
 const CHUNK: usize = 1 << 14;

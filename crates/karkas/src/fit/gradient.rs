@@ -9,7 +9,7 @@
 
 use super::hermite::{bending_gram, hermite_basis, jump_coefficients, HermiteSpline};
 use super::problem::{Problem, State};
-use crate::core::parallel::PARALLEL_THRESHOLD;
+use crate::core::parallel::{part_size, FIXED_PARTS, PARALLEL_THRESHOLD};
 use crate::Point;
 use rayon::prelude::*;
 use std::ops::Range;
@@ -95,10 +95,10 @@ pub(crate) fn accumulate_gradient<const D: usize>(
         add_points(problem, state, 0..n, &mut out.base, &mut out.base_abs);
     } else {
         // Fixed parts, summed in order: the sums do not depend on the number of threads.
-        let size = n.div_ceil(PARTS);
+        let size = part_size(n);
         let unknowns = out.base.len();
         out.parts
-            .resize_with(PARTS, || (vec![0.0; unknowns], vec![0.0; unknowns]));
+            .resize_with(FIXED_PARTS, || (vec![0.0; unknowns], vec![0.0; unknowns]));
         out.parts
             .par_iter_mut()
             .enumerate()
@@ -160,10 +160,6 @@ pub(crate) fn accumulate_gradient<const D: usize>(
         }
     }
 }
-
-/// Parts of the points summed in parallel (fixed, so that the gradient does not depend on the
-/// number of threads).
-const PARTS: usize = 8;
 
 /// The data terms `A_i^T e_i` of the points in `range`, and their absolute values, added to
 /// `base` and `base_abs`.

@@ -15,6 +15,7 @@
 //! With many points the runs are pooled within parts in parallel, then across the parts
 //! ([`isotonic_in_parts`]).
 
+use crate::core::parallel::{part_size, FIXED_PARTS};
 use rayon::prelude::*;
 
 /// Replaces `params` by their weighted isotonic (non-decreasing) regression with the
@@ -37,11 +38,7 @@ pub(crate) fn isotonic(
     changed
 }
 
-/// Parts of [`isotonic_in_parts`] (fixed, so that the result does not depend on the number
-/// of threads).
-const PARTS: usize = 8;
-
-/// [`isotonic`] with the runs pooled within [`PARTS`] consecutive parts in parallel, then
+/// [`isotonic`] with the runs pooled within [`FIXED_PARTS`] consecutive parts in parallel, then
 /// across the parts' ends. Pooling adjacent violators in any order leads to the same
 /// regression (the pool-adjacent-violators argument), so only the rounding of the means may
 /// differ from [`isotonic`]'s; `parts` is scratch.
@@ -50,8 +47,8 @@ pub(crate) fn isotonic_in_parts(
     weight: impl Fn(usize) -> f64 + Sync,
     parts: &mut Vec<Vec<Block>>,
 ) -> bool {
-    let size = params.len().div_ceil(PARTS).max(1);
-    parts.resize_with(PARTS, Vec::new);
+    let size = part_size(params.len());
+    parts.resize_with(FIXED_PARTS, Vec::new);
     for part in parts.iter_mut() {
         part.clear();
     }
