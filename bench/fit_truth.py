@@ -13,7 +13,9 @@ upper surface and back, Gaussian noise sigma = 1e-4 and 1e-3 of the chord per co
 
 karkas: ``karkas.fit_curve(points, knots=...)`` with its defaults. The figure is the largest
 distance between the fitted curve and the TRUE contour, both ways (every sample of the fit to
-the dense true contour, every point of the contour to the dense fit), ends included.
+the dense true contour, every point of the contour to the dense fit), ends included. Both
+fits are sampled at 200001 parameters, about 1e-5 of the chord apart, so that the gaps
+between samples add at most about 5e-6 to the second way.
 
 The speed case: 10^5 noisy points of NACA 2412 (sigma 1e-4), karkas on 200 uniform knots
 against ``splprep`` (s = 2 n sigma^2), rounds interleaved in one process, both results checked
@@ -40,7 +42,7 @@ SECTIONS = ("0012", "2412", "4415")
 SIZES = (200, 1000, 5000)
 NOISE = (1e-4, 1e-3)
 UNIFORM_KNOTS = 32
-DENSE = 20001
+DENSE = 200_001
 
 
 def naca(code, beta):

@@ -265,6 +265,7 @@ def fit_curve(
     fairness: float = 3e-11,
     smoothing: float = 0.3,
     penalty: Literal["active", "paper"] = "active",
+    free_ends: bool = False,
 ) -> HermiteSpline:
     """Fits points (n, d) with a C^1 cubic Hermite spline; give knots (count or array) or
     tolerance. The options and defaults are those of karkas curve fit."""

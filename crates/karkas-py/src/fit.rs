@@ -129,6 +129,10 @@ fn fit_bytes(points: usize, knots: usize, dim: usize) -> u128 {
 ///     The bound on the sum of squared second-derivative jumps; None: no bound.
 /// pin_ends : bool, optional
 ///     Make the curve pass through the first and last points.
+/// free_ends : bool, optional
+///     On given knots, leave the ends where the foot points put them (as ``karkas curve fit
+///     --free-ends``). By default each end of a noisy fit is held on its tangent line where
+///     the points towards it say it lies; not used with ``tolerance``.
 /// corners : sequence of float, optional
 ///     Knots where the curve may turn a corner (no smoothness asked there).
 /// fairness : float, optional
@@ -171,9 +175,9 @@ fn fit_bytes(points: usize, knots: usize, dim: usize) -> u128 {
 /// >>> g.tolerance_met
 /// True
 #[pyfunction]
-#[pyo3(signature = (points, knots = None, tolerance = None, eps = None, pin_ends = false, corners = None, fairness = DEFAULT_FAIRNESS, smoothing = DEFAULT_SMOOTHING, penalty = "active"))]
+#[pyo3(signature = (points, knots = None, tolerance = None, eps = None, pin_ends = false, corners = None, fairness = DEFAULT_FAIRNESS, smoothing = DEFAULT_SMOOTHING, penalty = "active", free_ends = false))]
 #[pyo3(
-    text_signature = "(points, knots=None, tolerance=None, eps=None, pin_ends=False, corners=None, fairness=3e-11, smoothing=0.3, penalty='active')"
+    text_signature = "(points, knots=None, tolerance=None, eps=None, pin_ends=False, corners=None, fairness=3e-11, smoothing=0.3, penalty='active', free_ends=False)"
 )]
 #[allow(clippy::too_many_arguments)]
 pub fn fit_curve(
@@ -187,6 +191,7 @@ pub fn fit_curve(
     fairness: f64,
     smoothing: f64,
     penalty: &str,
+    free_ends: bool,
 ) -> PyResult<Py<PyHermiteSpline>> {
     let penalty = match penalty {
         "active" => fit::PenaltyRule::ActiveBound,
@@ -225,8 +230,12 @@ pub fn fit_curve(
         (None, Some(tolerance)) => Target::Tolerance(tolerance),
         (None, None) => return Err(OptionError::new_err("give the knots or a tolerance")),
     };
+    if pin_ends && free_ends {
+        return Err(OptionError::new_err("give pin_ends or free_ends, not both"));
+    }
     let mut options = FitOptions {
         pin_ends,
+        estimated_ends: !free_ends,
         corners: corners
             .map(|c| extract_vector(c, "corners"))
             .transpose()?

@@ -142,6 +142,7 @@ def test_curve_ll(tmp_path, wavy_file, options, kwargs):
     "options, kwargs",
     [
         (["--knots", 7], dict(knots=7)),
+        (["--knots", 7, "--free-ends"], dict(knots=7, free_ends=True)),
         (["--knots", "0,0.3,0.45,0.7,1", "--eps", 0.05, "--pin-ends"], dict(knots=[0, 0.3, 0.45, 0.7, 1], eps=0.05, pin_ends=True)),
         (["--knots", 6, "--corner", 0.4, "--fairness", 0], dict(knots=6, corners=[0.4], fairness=0.0)),
         (["--tolerance", 2e-3], dict(tolerance=2e-3)),

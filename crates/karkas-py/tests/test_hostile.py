@@ -211,7 +211,7 @@ VALID = {
     "fit_curve": lambda o: (
         karkas.fit_curve,
         (o.pts3,),
-        {"knots": 5, "tolerance": None, "eps": None, "pin_ends": False, "corners": None, "fairness": 3e-11, "smoothing": 0.3},
+        {"knots": 5, "tolerance": None, "eps": None, "pin_ends": False, "corners": None, "fairness": 3e-11, "smoothing": 0.3, "free_ends": False},
     ),
     "curve_parameters": lambda o: (karkas.curve_parameters, (o.pts3,), {"parameterization": "chord"}),
     # Surfaces.

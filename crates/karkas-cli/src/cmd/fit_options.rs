@@ -56,6 +56,12 @@ pub struct FitCurveOptions {
     /// known trailing edge).
     #[arg(long)]
     pub pin_ends: bool,
+    /// On given knots, leave the ends where the foot points put them: by default each end
+    /// of a noisy fit is held on its tangent line where the points towards it say it lies
+    /// (noisy points beyond an end pull it outward). Not used with --tolerance, which holds
+    /// every point, the ends included, within the tolerance.
+    #[arg(long, conflicts_with = "pin_ends")]
+    pub free_ends: bool,
     /// How the penalty p is chosen when --eps bounds the jumps: `active` lowers p until the
     /// bound holds with equality (the constrained optimum); `paper` is Pavlov's rule
     /// p = H(q*) / eps, times 10 until the bound holds.
@@ -126,6 +132,7 @@ impl FitCurveOptions {
             eps: self.eps.unwrap_or(f64::INFINITY),
             corners: self.corners.clone(),
             pin_ends: self.pin_ends,
+            estimated_ends: !self.free_ends,
             fairness: self.fairness,
             smoothing: self.smoothing,
             penalty: self.penalty.to_library(),

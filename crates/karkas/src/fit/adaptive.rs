@@ -205,8 +205,11 @@ fn adaptive_rounds<const D: usize>(
     // come (and on sparse points the estimate is partly the curve's own bending).
     let noise = estimate_noise(points);
     let sigma = noise.sigma;
+    // The ends are not held at an estimate: every point, the first and the last included,
+    // must come within the tolerance.
     let options = &FitOptions {
         max_iterations: options.max_iterations.min(ROUND_ITERATIONS),
+        estimated_ends: false,
         smoothing: if tolerance < NOISE_FLOOR * sigma {
             0.0
         } else {

@@ -21,7 +21,9 @@
 //! - On real data ([`FitOptions::ordered`], [`FitOptions::smoothing`], [`estimate_noise`]):
 //!   the foot-point parameters are kept in the order of the points, the noise is estimated
 //!   from the points and the bending weight made dimensionless (size, turning, points per
-//!   piece) and proportional to the noise; the result carries the estimate and
+//!   piece) and proportional to the noise, the open ends are held on their tangent lines
+//!   where the points towards them say they lie ([`FitOptions::estimated_ends`]); the result
+//!   carries the estimate and
 //!   [`FitWarning`]s from the shape guards ([`shape_warnings`]: crossings, excess turning,
 //!   sparse pieces, empty spans; docs/methods.md §4, "On real and noisy data").
 //! - [`fit_curve_adaptive`]: knots placed automatically (uniform in chord length, then a
@@ -57,6 +59,7 @@
 mod adaptive;
 mod bspline;
 mod coarse;
+mod ends;
 mod faults;
 mod fixed;
 mod gradient;

@@ -32,6 +32,7 @@
 //! Cost: a few inner minimizations, each `O(n)` per iteration.
 
 use super::coarse::warm_start;
+use super::ends::end_pins;
 use super::guards::with_warnings;
 use super::hermite::HermiteSpline;
 use super::knots::{check_knots, start_parameters_for, StartParameters};
@@ -110,9 +111,9 @@ pub struct FitOptions {
     /// the chord on a NACA section at the default).
     pub fairness: f64,
     /// Pin the end values to the first and last points (`R(0) = r_1`, `R(1) = r_n`;
-    /// default `false`). Without it, noisy points beyond an end of an open curve pull the
-    /// end outwards (their foot point is the end itself); a closed contour sampled from a
-    /// known point (e.g. a trailing edge) should pin its ends.
+    /// default `false`): for a contour sampled from a known point (e.g. a trailing edge).
+    /// Without it the ends of a noisy fit are held at an estimate
+    /// ([`FitOptions::estimated_ends`]).
     pub pin_ends: bool,
     /// The inner minimization stops once an undamped step changes no point's distance by
     /// more than `settle_tolerance` times the RMS distance (default
@@ -127,6 +128,13 @@ pub struct FitOptions {
     /// parameters cannot decrease; without it a noisy cloud at a sharp end or between close
     /// points lets the curve fold back to serve points out of order (a hook or a loop).
     pub ordered: bool,
+    /// Hold each open end of a noisy fit where the points towards it say it lies
+    /// (default `true`; docs/methods.md §4, "Ends"). Noisy points beyond an end project onto
+    /// the end itself and pull it outward along the tangent; after the fit with free foot
+    /// points each end is pinned on its tangent line, at the end of a quadratic in the point
+    /// index fitted to the points towards it ([`super::ends`]). No effect on exact points
+    /// (no noise), with [`FitOptions::pin_ends`], or without foot points.
+    pub estimated_ends: bool,
     /// `s`: the bending weight grows with the noise estimated from the points,
     /// `lambda = (fairness + s (sigma / L)^2) n tau` (see [`estimate_noise`]; default
     /// [`DEFAULT_SMOOTHING`]; 0 for none). Noise makes the fit follow it with the freedom
@@ -150,6 +158,7 @@ impl Default for FitOptions {
             settle_tolerance: DEFAULT_SETTLE_TOLERANCE,
             ordered: true,
             smoothing: DEFAULT_SMOOTHING,
+            estimated_ends: true,
         }
     }
 }
@@ -290,7 +299,7 @@ pub(crate) fn fit_checked<const D: usize>(
     noise: &NoiseEstimate,
 ) -> Result<CurveFit<D>> {
     let noise = *noise;
-    let problem = Problem {
+    let mut problem = Problem {
         points,
         delta: weights,
         bending: noise.bending_weight(
@@ -320,10 +329,11 @@ pub(crate) fn fit_checked<const D: usize>(
         &state.spline,
     );
     let mut iterations = 0;
+    let bending_weight = problem.bending;
     let finish = |state: State<D>, p: f64, seed_bound: f64, iterations: usize| CurveFit {
         jump_sum: state.spline.jump_penalty(weights),
         bending_energy: state.spline.bending_energy(),
-        bending_weight: problem.bending,
+        bending_weight,
         data_term: state.data_term(),
         distances: state.dist_sq.iter().map(|d| d.sqrt()).collect(),
         parameters: state.params,
@@ -358,6 +368,19 @@ pub(crate) fn fit_checked<const D: usize>(
         Ok(()) => {
             solver.project(&mut state);
             iterations += solver.minimize(&mut state, Penalty::Fixed(0.0), stop)?.0;
+            let estimate = options.estimated_ends && problem.pins.is_none() && problem.foot_points;
+            if let Some(pins) = estimate
+                .then(|| end_pins(points, noise.sigma, &state.spline))
+                .flatten()
+            {
+                // From here on the ends are held where the points say (see `ends`).
+                problem.pins = Some(pins);
+                solver.set_pins(pins, &mut state);
+                if !problem.ordered {
+                    solver.project(&mut state);
+                    iterations += solver.minimize(&mut state, Penalty::Fixed(0.0), stop)?.0;
+                }
+            }
             if problem.ordered {
                 solver.set_ordered(true);
                 solver.project(&mut state);

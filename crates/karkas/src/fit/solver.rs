@@ -43,7 +43,7 @@ use super::power::PowerForm;
 use super::problem::{objective, penalties, Problem, Projection, State};
 use super::project_all::{project, project_within};
 use crate::solve::BandedLeastSquares;
-use crate::{Error, Result};
+use crate::{Error, Point, Result};
 
 /// Stop when the largest gradient entry is below this times the gradient's scale.
 const GRADIENT_TOLERANCE: f64 = 1e-12;
@@ -146,6 +146,16 @@ impl<'a, const D: usize> Solver<'a, D> {
     /// Keeps the foot-point parameters in the order of the points from now on (or not).
     pub fn set_ordered(&mut self, ordered: bool) {
         self.problem.ordered = ordered;
+    }
+
+    /// Pins the end values to `pins` from now on, and moves the ends of `state.spline` there
+    /// (its parameters and distances are left for the next projection).
+    pub fn set_pins(&mut self, pins: [Point<D>; 2], state: &mut State<D>) {
+        self.problem.pins = Some(pins);
+        let (values, _) = state.spline.coefficients_mut();
+        let last = values.len() - 1;
+        values[0] = pins[0];
+        values[last] = pins[1];
     }
 
     /// `F = H + p f + lambda S` of a state.

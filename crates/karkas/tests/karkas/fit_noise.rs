@@ -118,3 +118,72 @@ fn smoothing_and_fairness_are_scale_free() {
         assert!((ratio - 1.0).abs() < 1e-6, "{scale}: {ratio}");
     }
 }
+
+#[test]
+fn noisy_open_ends_stay_at_the_true_edge() {
+    // NACA 2412 closed at the trailing edge (1, 0), 5000 points in cosine spacing, noise 1e-3,
+    // 32 knots: the points beyond each end pull a free end outward along the tangent; the
+    // estimated ends stay closer to the true edge (RMS over both ends of 6 noisy sets).
+    let sigma = 1e-3;
+    let edge = Point2::new([1.0, 0.0]);
+    let rms_of_ends = |options: &FitOptions| {
+        let mut sum = 0.0;
+        for seed in 0..6 {
+            let points = noisy_section(5000, sigma, 100 + seed);
+            let fit = fit_curve(&points, &uniform_knots(32), options).unwrap();
+            eprintln!(
+                "{:?} {:?} noise {:e}",
+                fit.spline.eval(0.0),
+                fit.spline.eval(1.0),
+                fit.noise.sigma
+            );
+            sum += fit.spline.eval(0.0).distance_sq(edge) + fit.spline.eval(1.0).distance_sq(edge);
+        }
+        (sum / 12.0).sqrt()
+    };
+    let free = rms_of_ends(&FitOptions {
+        estimated_ends: false,
+        ..Default::default()
+    });
+    let estimated = rms_of_ends(&FitOptions::default());
+    eprintln!("ends from the true edge: free {free:.3e}, estimated {estimated:.3e}");
+    assert!(estimated < 0.6 * sigma, "{estimated:.3e}");
+    assert!(
+        estimated < 0.7 * free,
+        "free {free:.3e}, estimated {estimated:.3e}"
+    );
+}
+
+#[test]
+fn estimated_ends_move_along_the_tangent_only() {
+    // The pinned end differs from the free fit's end along the free fit's tangent there
+    // (within the change of the tangent between the two fits).
+    let points = noisy_section(3000, 1e-3, 21);
+    let knots = uniform_knots(24);
+    let free = fit_curve(
+        &points,
+        &knots,
+        &FitOptions {
+            estimated_ends: false,
+            ..Default::default()
+        },
+    )
+    .unwrap();
+    let held = fit_curve(&points, &knots, &FitOptions::default()).unwrap();
+    for (t, sign) in [(0.0, 1.0), (1.0, -1.0)] {
+        let tangent = free.spline.deriv(t, 1) * sign;
+        let tangent = tangent * (1.0 / tangent.norm());
+        let moved = held.spline.eval(t) - free.spline.eval(t);
+        let across = (moved[0] * tangent[1] - moved[1] * tangent[0]).abs();
+        eprintln!(
+            "end {t}: moved {:.3e}, across the tangent {across:.3e}",
+            moved.norm()
+        );
+        assert!(
+            moved.norm() > 1e-5,
+            "the end did not move: {:.3e}",
+            moved.norm()
+        );
+        assert!(across < 0.05 * moved.norm() + 1e-6, "{across:.3e}");
+    }
+}
