@@ -132,7 +132,7 @@ pub struct FitOptions {
     /// (default `true`; docs/methods.md §4, "Ends"). Noisy points beyond an end project onto
     /// the end itself and pull it outward along the tangent; after the fit with free foot
     /// points each end is pinned on its tangent line, at the end of a quadratic in the point
-    /// index fitted to the points towards it ([`super::ends`]). No effect on exact points
+    /// index fitted to the points towards it. No effect on exact points
     /// (no noise), with [`FitOptions::pin_ends`], or without foot points.
     pub estimated_ends: bool,
     /// `s`: the bending weight grows with the noise estimated from the points,
@@ -352,7 +352,9 @@ pub(crate) fn fit_checked<const D: usize>(
     // from there (runs pooled out of order) for at most ORDERED_ITERATIONS steps: every
     // projection orders the parameters, so the result is ordered however many steps run,
     // and the pooled runs, which the model treats as free foot points, slow it down.
-    // Dense points start from the fit of a subset ([`warm_start`]).
+    // Dense points start from the fit of a subset ([`warm_start`]). Between the two phases
+    // the ends of a noisy fit are pinned at their estimates ([`super::ends`]); they stay
+    // pinned for the rest of the fit, the constrained one included.
     let free = Problem {
         ordered: false,
         ..problem
