@@ -4,7 +4,7 @@
 //! arrays of shape `(n, d)`, grids `(nu, nv, d)`, `d` in {2, 3}. Evaluation writes straight
 //! into the output array (`out=`) with the GIL released for large batches; construction with
 //! the GIL released too. Bad input raises `karkas.KarkasError` (a `ValueError`) or one of its
-//! typed subclasses, with the library's message (see [`errors`]).
+//! typed subclasses, with the library's message (see `errors`).
 //!
 //! One file per library module (`ll`, `param`, `fit`, `dps`, `coons`, `implicit`, `section`,
 //! `measure`) plus `export` and `read` (karkas-io's writers and readers) and `geometry` (arc

@@ -41,7 +41,7 @@ pub struct BatchArgs {
     resume: bool,
     /// The command (curve ll, curve fit, curve spline, curve dps, curve analyze, surface ll,
     /// surface bicubic, section, vary, convert) and its options, without input and -o
-    /// (curve fit's --report takes no file: OUT/<stem>.deviations.csv).
+    /// (curve fit's --report takes no file: `OUT/<stem>.deviations.csv`).
     #[arg(
         trailing_var_arg = true,
         allow_hyphen_values = true,

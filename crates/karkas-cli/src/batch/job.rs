@@ -59,7 +59,7 @@ impl JobCommand {
     }
 }
 
-/// A command of [`JOBS`] with its options, run on every input of a batch.
+/// A command of `JOBS` with its options, run on every input of a batch.
 #[derive(Clone, Debug)]
 pub struct Job {
     /// The command's words: `curve fit`.
@@ -74,7 +74,7 @@ pub struct Job {
 
 impl Job {
     /// The job of `line` (the command's words, then its options; no input, no `-o`), writing
-    /// `format` (default CSV). Refuses a command that is not one of [`JOBS`] and options the
+    /// `format` (default CSV). Refuses a command that is not one of `JOBS` and options the
     /// command would refuse, before any input is read.
     pub fn new(line: &[String], format: Option<OutputFormat>) -> Result<Job> {
         let words = command_words(line)?;

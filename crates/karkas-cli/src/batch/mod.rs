@@ -2,8 +2,8 @@
 //! than fatal, and a run that resumes where a killed one stopped.
 //!
 //! Each input runs its command in this process on a worker of a rayon pool (`--jobs`), with
-//! the command's lines and figures captured for its record ([`crate::output::console`]); the
-//! records go to `OUT/results.jsonl` as they finish ([`results`]). The Python package's
+//! the command's lines and figures captured for its record (`output::console`); the
+//! records go to `OUT/results.jsonl` as they finish (`results`). The Python package's
 //! `karkas.batch` calls [`run`] with the same arguments.
 
 mod cli;
@@ -67,7 +67,7 @@ impl Batch {
     /// A batch of `job` (the command's words and options, as [`Job::new`] takes them) on the
     /// files `inputs` names (see [`expand_inputs`]), writing into the folder `out` outputs
     /// named after each input's stem, or with `tree` after its path below that folder (see
-    /// [`inputs::output_bases`]); with the defaults: as many inputs at once as cores, no
+    /// `inputs::output_bases`); with the defaults: as many inputs at once as cores, no
     /// resume, the results file kept, no progress bar.
     pub fn new(
         job: &[String],

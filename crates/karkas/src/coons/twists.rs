@@ -8,7 +8,7 @@
 //! ```
 //!
 //! which are conditions (11) by construction. The paper leaves the curves between the nodes
-//! to its reference [4]; karkas takes the piecewise cubic Hermite interpolant of these values
+//! to its reference \[4\]; karkas takes the piecewise cubic Hermite interpolant of these values
 //! and derivatives (the blending functions (17)–(18) of the same nodes), so `A_i` is a cubic on
 //! each span, like the patches (13) it borders ([`CrossDerivatives::from_twists`]).
 //!

@@ -75,7 +75,7 @@ impl ArcLengthTable {
     }
 
     /// The length of `curve` (the curve the table was made of) from `t0` to `t1`, negative
-    /// when `t1 < t0`, with the conventions of [`arc_length`]: clamped to the domain of an open
+    /// when `t1 < t0`, with the conventions of [`arc_length`](fn@super::arc_length): clamped to the domain of an open
     /// curve, wrapping (a whole turn per period) on a closed one; NaN for NaN parameters.
     pub fn arc_length<C: Curve<D> + ?Sized, const D: usize>(
         &self,

@@ -1,5 +1,5 @@
 //! The rate of change of curvature along the arc, `dκ/ds`, in closed form from the first
-//! three derivatives (differentiating the Frenet formulas of [`curvature`](super::curvature)).
+//! three derivatives (differentiating the Frenet formulas of [`curvature`](fn@super::curvature)).
 //!
 //! With `v = |P'|`, `a = P' . P''`:
 //!

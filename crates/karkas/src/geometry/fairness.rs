@@ -2,7 +2,7 @@
 //! computed for any piecewise-polynomial curve ([`PiecewiseCurve`]).
 //!
 //! Curvature `κ` and its rate along the arc `dκ/ds` come in closed form from the first three
-//! derivatives ([`curvature_rate`](super::curvature_rate), the Frenet formulas of
+//! derivatives ([`curvature_rate`](fn@super::curvature_rate), the Frenet formulas of
 //! docs/methods.md, differentiated): `κ` is signed in 2-D (positive for a counter-clockwise
 //! turn) and `|κ|` in any other dimension.
 //!
@@ -24,7 +24,7 @@
 //! - **Fairness energy** `∫ (dκ/ds)^2 ds`: adaptive Gauss–Legendre quadrature of
 //!   `(dκ/ds)^2 |P'(t)|` on every polynomial piece (to `1e-10` relative); the Dirac parts of
 //!   `κ` jumps are not in it.
-//! - **Length**: [`arc_length`](super::arc_length) over the domain.
+//! - **Length**: [`arc_length`](fn@super::arc_length) over the domain.
 //! - **Largest distance to the polygon**: the largest distance of the curve from the polyline
 //!   of the input points (closed for a closed curve), over the same samples, refined by
 //!   golden-section search around the best sample of every piece that comes within half of

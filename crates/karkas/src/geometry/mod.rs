@@ -2,15 +2,15 @@
 //! arc length and its inverse, curvature and torsion, unit normals and principal
 //! curvatures, and the closest point of a curve or surface to given points.
 //!
-//! - [`arc_length`]: `∫ |P'(t)| dt` by adaptive Gauss–Legendre quadrature on each polynomial
+//! - [`arc_length`](fn@arc_length): `∫ |P'(t)| dt` by adaptive Gauss–Legendre quadrature on each polynomial
 //!   piece (split at the breakpoints, where `P'` may have kinks), to a stated absolute
 //!   accuracy; the inverse (the parameter reached after a given length) by safeguarded Newton
 //!   on the length function. The methods of [`CurveGeometry`] (implemented for every
 //!   curve) call these. [`ArcLengthTable`] measures every piece once for many lengths of
 //!   one curve (`O(log n)` each).
-//! - [`curvature`]: the Frenet curvature (signed in 2-D) and torsion (3-D) from the first
+//! - [`curvature`](fn@curvature): the Frenet curvature (signed in 2-D) and torsion (3-D) from the first
 //!   three derivatives.
-//! - [`curvature_rate`]: `dκ/ds` in closed form from the first three derivatives.
+//! - [`curvature_rate`](fn@curvature_rate): `dκ/ds` in closed form from the first three derivatives.
 //! - [`fairness`]: the fairness figures of a piecewise curve (length, curvature range,
 //!   curvature extrema and inflections, largest distance from the input polygon,
 //!   `∫ (dκ/ds)^2 ds`).

@@ -121,7 +121,7 @@ pub const MAX_RELAY_NODES: usize = 1_000_000;
 ///
 /// Errors: those of [`BicubicSurface::new`]; a size below 2 ([`Error::InvalidGridSize`]); a
 /// start node outside the grid ([`Error::OutsideGrid`]); non-positive or non-finite steps, or
-/// more than [`MAX_RELAY_NODES`] nodes ([`Error::InvalidSetting`]); an umbilic met ([`Error::UmbilicRegion`]); a singular point
+/// more than `MAX_RELAY_NODES` (10^6) nodes ([`Error::InvalidSetting`]); an umbilic met ([`Error::UmbilicRegion`]); a singular point
 /// or a net that does not fit the domain ([`Error::ContinuationFailed`]).
 pub fn relay_grid(grid: &Grid<Point3>, options: &RelayOptions) -> Result<RelaidGrid> {
     let (rows, cols) = (grid.rows(), grid.cols());

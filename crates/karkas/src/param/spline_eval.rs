@@ -1,6 +1,6 @@
 //! The evaluation kernel of [`CubicSpline`](super::CubicSpline): the piece lookup and the
 //! Hermite combination (Kuznetsov and Filatov, (3.7)), written once over
-//! [`Lane`](crate::core::lanes::Lane) so that batches run four parameters per step in `f64x4`
+//! [`Lane`] so that batches run four parameters per step in `f64x4`
 //! and single points run the same arithmetic on one `f64` (equal bits).
 //!
 //! - The derivative order is a const parameter: the weights of each order are their own

@@ -32,8 +32,9 @@ use crate::{Error, Point, Result};
 /// Fill below this (relative to the row's pivot scale) is dropped; see the module docs.
 const FILL_FLOOR: f64 = 1.0 / (1u64 << 60) as f64;
 
-/// The slopes of the periodic cubic spline through `values` at `knots` (`n = knots.len()
-/// >= 4`, `values[n - 1] == values[0]`); `slopes[n - 1]` repeats `slopes[0]`. `O(n)`.
+/// The slopes of the periodic cubic spline through `values` at `knots`
+/// (`n = knots.len() >= 4`, `values[n - 1] == values[0]`); `slopes[n - 1]` repeats
+/// `slopes[0]`. `O(n)`.
 ///
 /// Fails with [`Error::SingularSystem`] only on knots whose steps are not finite and
 /// positive (the callers have checked them).

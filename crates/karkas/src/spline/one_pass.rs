@@ -3,11 +3,11 @@
 use crate::{Error, Point, Result};
 
 /// The slopes of one line of not-a-knot values (`n = knots.len() >= 4`) in a single pass:
-/// the same rows, factorization and sweeps as [`SlopeSystem`] with `width = 1`, in the same
+/// the same rows, factorization and sweeps as [`SlopeSystem`](super::system::SlopeSystem) with `width = 1`, in the same
 /// floating-point order (bitwise equal results), but formed on the fly from the knots, so
 /// that the only scratch memory is the scaled super-diagonal. `O(n)`.
 ///
-/// Fails with [`Error::SingularSystem`] where [`SlopeSystem::new`] would.
+/// Fails with [`Error::SingularSystem`] where [`SlopeSystem::new`](super::system::SlopeSystem::new) would.
 pub(crate) fn not_a_knot_slopes<const D: usize>(
     knots: &[f64],
     values: &[Point<D>],
