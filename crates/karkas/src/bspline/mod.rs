@@ -33,11 +33,13 @@
 //! piecewise polynomial types with prescribed knot multiplicities; de Boor's algorithm and
 //! blossoming are a few dozen lines.
 
+mod basis;
 mod bezier;
 mod curve;
 mod surface;
 
 pub use crate::core::PolynomialPieces;
+pub(crate) use basis::cubic_span_weights;
 pub(crate) use bezier::{
     bspline_controls, hermite_curve, knot_vector, split_scalar, tensor_controls,
 };

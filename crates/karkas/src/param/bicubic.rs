@@ -1,33 +1,35 @@
-//! Bicubic interpolation of a grid in Hermite form (Kuznetsov and Filatov, (3.3)–(3.13); the
-//! 1-D splines are those of [`crate::spline`]).
+//! Bicubic interpolation of a grid (Kuznetsov and Filatov, (3.3)–(3.13); the 1-D splines
+//! are those of [`crate::spline`]).
 //!
-//! On the cell `[u_i, u_{i+1}] x [v_j, v_{j+1}]` the surface is `W = phi(s)^T F phi(t)` (3.6)
-//! with the Hermite basis `phi` of (3.7), (3.9) and the 4 x 4 matrix (3.8) of node values
-//! `r`, u-slopes `r_u`, v-slopes `r_v` and twists `r_uv` at the four corners. The unknown
-//! derivatives come from `2N + M` one-dimensional spline solves (the paper's three steps):
-//!
-//! 1. a spline in `u` along every column `v = v_j` gives `r_u` (M solves);
-//! 2. a spline in `v` along every row `u = u_i` gives `r_v` (N solves);
-//! 3. a spline in `v` of the `r_u` of every row gives `r_uv` (N solves).
+//! The paper writes the surface on the cell `[u_i, u_{i+1}] x [v_j, v_{j+1}]` as
+//! `W = phi(s)^T F phi(t)` (3.6), with the Hermite basis `phi` of (3.7), (3.9) and the 4 x 4
+//! matrix (3.8) of node values `r`, u-slopes `r_u`, v-slopes `r_v` and twists `r_uv` at the
+//! four corners, found by one-dimensional spline solves (its three steps). The same surface is
+//! a tensor-product cubic B-spline with a simple knot at every node parameter: karkas keeps
+//! that form, `(N + 2) x (M + 2)` control points for `N x M` nodes, one point per node where
+//! the Hermite form needs four (`grid_controls.rs`: a spline in `u` along every column, then
+//! one in `v` along every row of the result, each turned into its B-spline coefficients).
 //!
 //! Each solve is tridiagonal (not-a-knot ends eliminated as in (3.10)–(3.12), or cyclic for a
 //! closed direction), so construction is `O(N M)`. Guarantees: `W(u_i, v_j) = r_ij` at every
 //! node; every partial derivative `D^{a,b} W` with `a, b <= 2` is continuous; every line
 //! `u = u_i` and `v = v_j` is the 1-D cubic spline of its nodes; with not-a-knot ends a
-//! bicubic polynomial is reproduced exactly.
+//! bicubic polynomial is reproduced exactly. A closed direction is held over one period as a
+//! clamped B-spline whose ends join with `C^2` continuity, and evaluation wraps by the period.
 //!
-//! Grid evaluation ([`Surface::eval_grid_into`]) combines the two node rows of a sample row
-//! once (`O(M)`), then costs 4 multiply-adds per point; the `v` weights of every sample
+//! Grid evaluation ([`Surface::eval_grid_into`]) combines the four control rows of a sample
+//! row once (`O(M)`), then costs 4 multiply-adds per point; the `v` weights of every sample
 //! column are computed once per call.
 
 use super::condition::{node_measures, ConditionSummary};
-use super::grid_slopes::{solve_columns, solve_rows};
+use super::grid_controls::control_net;
 use super::parameterization::{grid_parameters, GridParameterization};
 use super::spline::check_parameters;
+use crate::bspline::{cubic_span_weights, knot_vector};
 use crate::core::knots::locate;
 use crate::core::parallel::for_each_row_block;
 use crate::core::{Grid, Interval, PiecewiseSurface, Side, Surface};
-use crate::spline::{hermite_basis, SlopeSystem, SplineEnds};
+use crate::spline::{SlopeSystem, SplineEnds};
 use crate::{Error, Point, Result};
 
 /// A bicubic interpolating spline surface over a grid `r_ij` (row `i` at `u_i`, column `j`
@@ -41,14 +43,13 @@ pub struct BicubicSurface<const D: usize> {
     knots_v: Vec<f64>,
     closed_u: bool,
     closed_v: bool,
+    /// The clamped cubic knot vectors over `knots_u`, `knots_v` (each node a simple knot).
+    clamped_u: Vec<f64>,
+    clamped_v: Vec<f64>,
     /// The node values `r_ij` ((3.8); a closed direction repeats its first line).
     values: Grid<Point<D>>,
-    /// `m^(1,0) = dW/du` at the nodes, row-major like `values`.
-    ru: Vec<Point<D>>,
-    /// `m^(0,1) = dW/dv`.
-    rv: Vec<Point<D>>,
-    /// `m^(1,1) = d^2 W / du dv`.
-    ruv: Vec<Point<D>>,
+    /// The B-spline control points, row-major, `knots_v.len() + 2` a row.
+    net: Vec<Point<D>>,
 }
 
 impl<const D: usize> BicubicSurface<D> {
@@ -180,7 +181,8 @@ impl<const D: usize> BicubicSurface<D> {
         )
     }
 
-    /// The three steps of the paper: `2N + M` spline solves.
+    /// The control net: a spline solve along every column, then along every row of the
+    /// result.
     fn build(
         grid: Grid<Point<D>>,
         knots_u: Vec<f64>,
@@ -188,7 +190,6 @@ impl<const D: usize> BicubicSurface<D> {
         closed_u: bool,
         closed_v: bool,
     ) -> Result<Self> {
-        let cols = grid.cols();
         let ends = |closed: bool| -> SplineEnds<D> {
             if closed {
                 SplineEnds::Periodic
@@ -199,20 +200,17 @@ impl<const D: usize> BicubicSurface<D> {
         let (ends_u, ends_v) = (ends(closed_u), ends(closed_v));
         let system_u = SlopeSystem::new(&knots_u, &ends_u)?;
         let system_v = SlopeSystem::new(&knots_v, &ends_v)?;
-        // Step 1: r_u along every column, all columns in sweeps over the grid rows.
-        let ru = solve_columns(&system_u, &grid);
-        // Steps 2 and 3: r_v and r_uv along every row.
-        let rv = solve_rows(&system_v, grid.as_slice(), cols);
-        let ruv = solve_rows(&system_v, &ru, cols);
+        let net = control_net((&system_u, &knots_u), (&system_v, &knots_v), &grid);
+        let clamped = |knots: &[f64]| knot_vector(3, knots, &vec![1; knots.len() - 2]);
         Ok(BicubicSurface {
+            clamped_u: clamped(&knots_u),
+            clamped_v: clamped(&knots_v),
             knots_u,
             knots_v,
             closed_u,
             closed_v,
             values: grid,
-            ru,
-            rv,
-            ruv,
+            net,
         })
     }
 
@@ -233,8 +231,21 @@ impl<const D: usize> BicubicSurface<D> {
 
     /// The node derivatives `(m^(1,0), m^(0,1), m^(1,1))` at node `(i, j)` ((3.8)).
     pub fn node_derivatives(&self, i: usize, j: usize) -> (Point<D>, Point<D>, Point<D>) {
-        let k = i * self.values.cols() + j;
-        (self.ru[k], self.rv[k], self.ruv[k])
+        // The node as the start of its cell, the last node as the end of the last cell.
+        let at =
+            |k: usize, count: usize| (k.min(count - 2), if k + 1 >= count { 1.0 } else { 0.0 });
+        let (cu, cv) = (at(i, self.knots_u.len()), at(j, self.knots_v.len()));
+        (
+            self.deriv_on_cell(cu, cv, 1, 0),
+            self.deriv_on_cell(cu, cv, 0, 1),
+            self.deriv_on_cell(cu, cv, 1, 1),
+        )
+    }
+
+    /// The B-spline form: clamped cubic knot vectors (a simple knot at every node parameter)
+    /// and the `(N + 2) x (M + 2)` control points, row-major.
+    pub(crate) fn bspline_parts(&self) -> (&[f64], &[f64], &[Point<D>]) {
+        (&self.clamped_u, &self.clamped_v, &self.net)
     }
 
     /// The condition measure of the parameters at every node of the (closed) grid: the
@@ -244,8 +255,8 @@ impl<const D: usize> BicubicSurface<D> {
     pub fn condition_measures(&self) -> Grid<f64> {
         let cols = self.values.cols();
         node_measures(self.values.rows(), cols, |i, j| {
-            let k = i * cols + j;
-            (self.ru[k], self.rv[k])
+            let (ru, rv, _) = self.node_derivatives(i, j);
+            (ru, rv)
         })
     }
 
@@ -265,40 +276,33 @@ impl<const D: usize> BicubicSurface<D> {
         })
     }
 
-    /// The value and `v`-slope of the line `u = const` at node column `j`, combined from the
-    /// two node rows `i`, `i + 1` with the u-weights `w`.
+    /// The weights of the four control rows of cell `i` for the `k`-th `u`-derivative at
+    /// local coordinate `s`.
     #[inline]
-    fn column_data(&self, i: usize, j: usize, w: &[f64; 4]) -> (Point<D>, Point<D>) {
-        let cols = self.values.cols();
-        let (a, b) = (i * cols + j, (i + 1) * cols + j);
-        let r = self.values.as_slice();
-        (
-            r[a] * w[0] + r[b] * w[1] + self.ru[a] * w[2] + self.ru[b] * w[3],
-            self.rv[a] * w[0] + self.rv[b] * w[1] + self.ruv[a] * w[2] + self.ruv[b] * w[3],
-        )
+    fn weights_u(&self, i: usize, s: f64, k: usize) -> [f64; 4] {
+        cubic_span_weights(&self.clamped_u[i + 1..i + 7], s, k)
     }
 
-    /// Fills `values` and `slopes` with the value and `v`-slope of the line `u = const` at
-    /// every node column, from node rows `i`, `i + 1` with the u-weights `w` (`O(M)`).
-    fn combine_rows(
-        &self,
-        i: usize,
-        w: &[f64; 4],
-        values: &mut [Point<D>],
-        slopes: &mut [Point<D>],
-    ) {
-        let cols = self.values.cols();
-        let (upper, lower) = (i * cols..(i + 1) * cols, (i + 1) * cols..(i + 2) * cols);
-        let r = self.values.as_slice();
-        let rows = r[upper.clone()].iter().zip(&r[lower.clone()]);
-        let u_slopes = self.ru[upper.clone()].iter().zip(&self.ru[lower.clone()]);
-        for ((q, (&a, &b)), (&ua, &ub)) in values.iter_mut().zip(rows).zip(u_slopes) {
-            *q = a * w[0] + b * w[1] + ua * w[2] + ub * w[3];
-        }
-        let v_slopes = self.rv[upper.clone()].iter().zip(&self.rv[lower.clone()]);
-        let twists = self.ruv[upper].iter().zip(&self.ruv[lower]);
-        for ((qv, (&a, &b)), (&ua, &ub)) in slopes.iter_mut().zip(v_slopes).zip(twists) {
-            *qv = a * w[0] + b * w[1] + ua * w[2] + ub * w[3];
+    /// The weights of the four control columns of cell `j` (see [`weights_u`](Self::weights_u)).
+    #[inline]
+    fn weights_v(&self, j: usize, t: f64, k: usize) -> [f64; 4] {
+        cubic_span_weights(&self.clamped_v[j + 1..j + 7], t, k)
+    }
+
+    /// Fills `line` with the control points of the curve `u = const` (all `M + 2` of them):
+    /// control rows `i..i + 4` combined with the weights `w`.
+    /// Runs over the coordinates as one flat array (so it vectorizes), with the arithmetic of
+    /// `deriv_on_cell`.
+    fn combine_rows(&self, i: usize, w: &[f64; 4], line: &mut [Point<D>]) {
+        let stride = line.len() * D;
+        let rows: &[f64] = bytemuck::cast_slice(&self.net);
+        let rows = &rows[i * stride..(i + 4) * stride];
+        let (r0, rest) = rows.split_at(stride);
+        let (r1, rest) = rest.split_at(stride);
+        let (r2, r3) = rest.split_at(stride);
+        let line: &mut [f64] = bytemuck::cast_slice_mut(line);
+        for ((((q, &a), &b), &c), &d) in line.iter_mut().zip(r0).zip(r1).zip(r2).zip(r3) {
+            *q = a * w[0] + b * w[1] + c * w[2] + d * w[3];
         }
     }
 
@@ -309,20 +313,16 @@ impl<const D: usize> BicubicSurface<D> {
         ku: usize,
         kv: usize,
     ) -> Point<D> {
-        let wu = hermite_weights(s, self.knots_u[i + 1] - self.knots_u[i], ku);
-        let wv = hermite_weights(t, self.knots_v[j + 1] - self.knots_v[j], kv);
-        let (q0, s0) = self.column_data(i, j, &wu);
-        let (q1, s1) = self.column_data(i, j + 1, &wu);
-        q0 * wv[0] + q1 * wv[1] + s0 * wv[2] + s1 * wv[3]
+        let wu = self.weights_u(i, s, ku);
+        let wv = self.weights_v(j, t, kv);
+        let stride = self.knots_v.len() + 2;
+        // Rows first, as in `combine_rows`, so a grid evaluation gives the same bits.
+        let row = |a: usize| &self.net[(i + a) * stride + j..][..4];
+        let (r0, r1, r2, r3) = (row(0), row(1), row(2), row(3));
+        let c: [Point<D>; 4] =
+            std::array::from_fn(|b| r0[b] * wu[0] + r1[b] * wu[1] + r2[b] * wu[2] + r3[b] * wu[3]);
+        c[0] * wv[0] + c[1] * wv[1] + c[2] * wv[2] + c[3] * wv[3]
     }
-}
-
-/// The Hermite weights of [`hermite_basis`] in the order `[y_k, y_{k+1}, m_k, m_{k+1}]`
-/// (values first, as the rows of (3.8)).
-#[inline]
-fn hermite_weights(s: f64, h: f64, k: usize) -> [f64; 4] {
-    let [v0, d0, v1, d1] = hermite_basis(s, h, k);
-    [v0, v1, d0, d1]
 }
 
 /// The input named in the errors of a grid too small (in total, in a closed direction).
@@ -365,26 +365,19 @@ impl<const D: usize> Surface<D> for BicubicSurface<D> {
             .iter()
             .map(|&v| {
                 let (j, t) = locate(&self.knots_v, self.closed_v, v, Side::Above);
-                (
-                    j,
-                    hermite_weights(t, self.knots_v[j + 1] - self.knots_v[j], 0),
-                )
+                (j, self.weights_v(j, t, 0))
             })
             .collect();
-        let cols = self.values.cols();
+        let stride = self.knots_v.len() + 2;
         let row_len = vs.len().max(1);
         for_each_row_block(out, row_len, |first, block| {
-            let mut values = vec![Point::ZERO; cols];
-            let mut slopes = vec![Point::ZERO; cols];
+            let mut line = vec![Point::ZERO; stride];
             for (&u, out_row) in us[first..].iter().zip(block.chunks_exact_mut(row_len)) {
                 let (i, s) = locate(&self.knots_u, self.closed_u, u, Side::Above);
-                let wu = hermite_weights(s, self.knots_u[i + 1] - self.knots_u[i], 0);
-                self.combine_rows(i, &wu, &mut values, &mut slopes);
+                self.combine_rows(i, &self.weights_u(i, s, 0), &mut line);
                 for (p, &(j, w)) in out_row.iter_mut().zip(&columns) {
-                    *p = values[j] * w[0]
-                        + values[j + 1] * w[1]
-                        + slopes[j] * w[2]
-                        + slopes[j + 1] * w[3];
+                    let c = &line[j..j + 4];
+                    *p = c[0] * w[0] + c[1] * w[1] + c[2] * w[2] + c[3] * w[3];
                 }
             }
         });

@@ -38,7 +38,7 @@
 mod bicubic;
 mod bspline;
 mod condition;
-mod grid_slopes;
+mod grid_controls;
 mod names;
 mod parameterization;
 mod relay;

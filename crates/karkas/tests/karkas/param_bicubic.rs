@@ -337,10 +337,10 @@ proptest! {
 }
 
 /// A grid large enough for the parallel paths (column blocks, row solves, row blocks of the
-/// grid evaluation): the node slopes equal the 1-D splines of the grid lines and the grid
-/// evaluation equals point evaluation, bitwise.
+/// grid evaluation): the node slopes equal those of the 1-D splines of the grid lines (to
+/// rounding), and the grid evaluation equals point evaluation bitwise.
 #[test]
-fn large_grids_match_line_splines_and_point_evaluation_bitwise() {
+fn large_grids_match_line_splines_and_grid_evaluation_is_point_evaluation() {
     use karkas::param::{CubicSpline, SplineEnds};
     let (n, m) = (230, 190);
     let grid = Grid::from_fn(n, m, |i, j| {
@@ -350,12 +350,14 @@ fn large_grids_match_line_splines_and_point_evaluation_bitwise() {
     let surface = BicubicSurface::new(&grid, GridParameterization::default(), false, false)
         .expect("valid grid");
     let same = |a: Point3, b: Point3| (0..3).all(|c| a[c].to_bits() == b[c].to_bits());
+    // The node slopes are derived from the B-spline form: equal to rounding.
+    let close = |a: Point3, b: Point3| a.distance(b) <= 1e-12 * (1.0 + b.norm());
     for j in [0, 1, 77, m - 1] {
         let column: Vec<Point3> = (0..n).map(|i| *grid.get(i, j)).collect();
         let spline = CubicSpline::new(surface.knots_u(), &column, SplineEnds::NotAKnot).unwrap();
         for i in 0..n {
             assert!(
-                same(surface.node_derivatives(i, j).0, spline.slopes()[i]),
+                close(surface.node_derivatives(i, j).0, spline.slopes()[i]),
                 "ru {i} {j}"
             );
         }
@@ -365,7 +367,7 @@ fn large_grids_match_line_splines_and_point_evaluation_bitwise() {
             CubicSpline::new(surface.knots_v(), grid.row(i), SplineEnds::NotAKnot).unwrap();
         for j in 0..m {
             assert!(
-                same(surface.node_derivatives(i, j).1, spline.slopes()[j]),
+                close(surface.node_derivatives(i, j).1, spline.slopes()[j]),
                 "rv {i} {j}"
             );
         }
