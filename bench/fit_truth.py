@@ -88,8 +88,12 @@ def chord(points):
     return d / d[-1]
 
 
+# Added to every seed of the table (--seed-offset): the same cases with other noise.
+SEED_OFFSET = 0
+
+
 def noisy(code, n, sigma):
-    rng = np.random.default_rng(n + int(sigma * 1e6) + int(code))
+    rng = np.random.default_rng(n + int(sigma * 1e6) + int(code) + SEED_OFFSET)
     return naca(code, np.linspace(0, 2 * np.pi, n)) + rng.normal(0, sigma, (n, 2))
 
 
@@ -168,7 +172,11 @@ def main():
     parser.add_argument("--rounds", type=int, default=9)
     parser.add_argument("--table-only", action="store_true")
     parser.add_argument("--speed-only", action="store_true")
+    parser.add_argument("--seed-offset", type=int, default=0,
+                        help="added to the noise seed of every case of the table")
     args = parser.parse_args()
+    global SEED_OFFSET
+    SEED_OFFSET = args.seed_offset
     if not args.speed_only:
         table()
     if not args.table_only:

@@ -263,7 +263,7 @@ def fit_curve(
     pin_ends: bool = False,
     corners: Optional[Sequence[float]] = None,
     fairness: float = 3e-11,
-    smoothing: float = 0.3,
+    smoothing: Optional[float] = None,
     penalty: Literal["active", "paper"] = "active",
     free_ends: bool = False,
 ) -> HermiteSpline:

@@ -3,7 +3,7 @@
 
 use std::sync::Arc;
 
-use karkas::fit::{self, FitOptions, HermiteSpline, DEFAULT_FAIRNESS, DEFAULT_SMOOTHING};
+use karkas::fit::{self, FitOptions, HermiteSpline, DEFAULT_FAIRNESS};
 use pyo3::prelude::*;
 
 use crate::convert::{as_points, by_dim, extract_vector, FlatPoints, Numbers, PointsArray};
@@ -141,8 +141,9 @@ fn fit_bytes(points: usize, knots: usize, dim: usize) -> u128 {
 /// smoothing : float, optional
 ///     The share s of the noise in the bending weight, ``lambda = (fairness + s (sigma /
 ///     L)^2) n tau`` with sigma the noise estimated from the points (the result's ``noise``),
-///     L the size of the points and tau a factor for curves that wind (default 0.3, as
-///     ``karkas curve fit --smoothing``; 0 for none).
+///     L the size of the points and tau a factor for curves that wind (as ``karkas curve
+///     fit --smoothing``; 0 for none). Default (None): 0.1 on given knots, 0.3 with
+///     ``tolerance``.
 /// penalty : {"active", "paper"}, optional
 ///     How the penalty p is chosen when ``eps`` is given, as ``karkas curve fit --penalty``:
 ///     "active" (default) lowers p until the bound holds with equality (the constrained
@@ -175,9 +176,9 @@ fn fit_bytes(points: usize, knots: usize, dim: usize) -> u128 {
 /// >>> g.tolerance_met
 /// True
 #[pyfunction]
-#[pyo3(signature = (points, knots = None, tolerance = None, eps = None, pin_ends = false, corners = None, fairness = DEFAULT_FAIRNESS, smoothing = DEFAULT_SMOOTHING, penalty = "active", free_ends = false))]
+#[pyo3(signature = (points, knots = None, tolerance = None, eps = None, pin_ends = false, corners = None, fairness = DEFAULT_FAIRNESS, smoothing = None, penalty = "active", free_ends = false))]
 #[pyo3(
-    text_signature = "(points, knots=None, tolerance=None, eps=None, pin_ends=False, corners=None, fairness=3e-11, smoothing=0.3, penalty='active', free_ends=False)"
+    text_signature = "(points, knots=None, tolerance=None, eps=None, pin_ends=False, corners=None, fairness=3e-11, smoothing=None, penalty='active', free_ends=False)"
 )]
 #[allow(clippy::too_many_arguments)]
 pub fn fit_curve(
@@ -189,7 +190,7 @@ pub fn fit_curve(
     pin_ends: bool,
     corners: Option<&Bound<'_, PyAny>>,
     fairness: f64,
-    smoothing: f64,
+    smoothing: Option<f64>,
     penalty: &str,
     free_ends: bool,
 ) -> PyResult<Py<PyHermiteSpline>> {

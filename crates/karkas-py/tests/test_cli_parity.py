@@ -102,7 +102,6 @@ def grid_file(tmp_path):
         (("surface", "dps-tube"), "r2", karkas.TubeSurface, "r2"),
         (("surface", "bicubic"), "param", karkas.BicubicSurface, "parameterization"),
         (("curve", "fit"), "fairness", karkas.fit_curve, "fairness"),
-        (("curve", "fit"), "smoothing", karkas.fit_curve, "smoothing"),
     ],
 )
 def test_defaults_are_the_same(command, option, python, keyword):
@@ -114,6 +113,29 @@ def test_defaults_are_the_same(command, option, python, keyword):
         assert shown == default
     else:
         assert float(shown) == default
+
+
+
+def test_the_smoothing_default_is_per_mode(tmp_path):
+    """--smoothing has no single default: 0.1 on given knots, 0.3 with --tolerance, as the
+    help says; fit_curve's smoothing=None is the same, and so is the command without it."""
+    import inspect
+
+    assert inspect.signature(karkas.fit_curve).parameters["smoothing"].default is None
+    text = " ".join(cli("curve", "fit", "--help").split())
+    assert "Default 0.1 on given knots (--knots), 0.3 with --tolerance" in text
+    rng = np.random.default_rng(5)
+    t = np.linspace(0.0, 2.0 * np.pi, 400)
+    pts = np.column_stack([np.cos(t), 0.3 * np.sin(t)]) + rng.normal(0.0, 1e-3, (400, 2))
+    path = write_curve(tmp_path / "noisy.csv", pts)
+    for mode, value, other in (({"knots": 12}, 0.1, 0.3), ({"tolerance": 5e-3}, 0.3, 0.1)):
+        default = karkas.fit_curve(pts, **mode).distances
+        np.testing.assert_array_equal(default, karkas.fit_curve(pts, smoothing=value, **mode).distances)
+        assert not np.array_equal(default, karkas.fit_curve(pts, smoothing=other, **mode).distances)
+        option = f"--{next(iter(mode))}"
+        report = tmp_path / "dev.csv"
+        cli("curve", "fit", path, option, list(mode.values())[0], "-o", tmp_path / "c.csv", "--report", report)
+        close(read_csv(report)[1][:, 2], default)
 
 
 # ---------------------------------------------------------------- curves

@@ -6,9 +6,7 @@
 use std::path::Path;
 
 use karkas::bspline::ToBSplineCurve;
-use karkas::fit::{
-    fit_curve, fit_curve_adaptive, FitOptions, StartParameters, DEFAULT_FAIRNESS, DEFAULT_SMOOTHING,
-};
+use karkas::fit::{fit_curve, fit_curve_adaptive, FitOptions, StartParameters, DEFAULT_FAIRNESS};
 use karkas::geometry::{curvature, curvature_profile};
 use karkas::ll::LlCurve;
 use karkas::param::{CubicSpline, CurveParameterization, SplineEnds};
@@ -208,7 +206,7 @@ pub fn build_curve<const D: usize>(
                 eps: request.eps,
                 corners: request.corners.clone(),
                 fairness: DEFAULT_FAIRNESS,
-                smoothing: DEFAULT_SMOOTHING,
+                smoothing: None,
                 ..Default::default()
             };
             let fit = if request.knots.is_empty() {

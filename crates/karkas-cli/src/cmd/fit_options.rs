@@ -11,7 +11,7 @@ use anyhow::{bail, Context, Result};
 use clap::{Args, ValueEnum};
 use karkas::fit::{
     fit_curve, fit_curve_adaptive, knots_from_list, CurveFit, FitOptions, PenaltyRule,
-    DEFAULT_FAIRNESS, DEFAULT_SMOOTHING,
+    DEFAULT_FAIRNESS,
 };
 use karkas::Point;
 
@@ -49,9 +49,9 @@ pub struct FitCurveOptions {
     pub fairness: f64,
     /// Smoothing s: the bending weight grows with the noise estimated from the points,
     /// lambda = (rho + s (sigma / L)^2) n tau (sigma the noise, L the size of the points;
-    /// 0 for none).
-    #[arg(long, value_name = "S", default_value_t = DEFAULT_SMOOTHING)]
-    pub smoothing: f64,
+    /// 0 for none). Default 0.1 on given knots (--knots), 0.3 with --tolerance.
+    #[arg(long, value_name = "S")]
+    pub smoothing: Option<f64>,
     /// Pin the ends of the curve to the first and last points (e.g. a profile closed at a
     /// known trailing edge).
     #[arg(long)]
@@ -110,8 +110,8 @@ impl FitCurveOptions {
         if !(self.fairness.is_finite() && self.fairness >= 0.0) {
             bail!("--fairness: must be a number >= 0, got {}", self.fairness);
         }
-        if !(self.smoothing.is_finite() && self.smoothing >= 0.0) {
-            bail!("--smoothing: must be a number >= 0, got {}", self.smoothing);
+        if let Some(s) = self.smoothing.filter(|s| !(s.is_finite() && *s >= 0.0)) {
+            bail!("--smoothing: must be a number >= 0, got {s}");
         }
         if let Some(tol) = self.tolerance {
             if !(tol.is_finite() && tol > 0.0) {

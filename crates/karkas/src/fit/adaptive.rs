@@ -44,7 +44,9 @@ use super::faults::sound_fit;
 use super::guards::with_warnings;
 use super::knots::{start_parameters_for, uniform_knots, warm_parameters, MIN_KNOT_SPACING};
 use super::noise::estimate_noise;
-use super::penalty::{check_inputs, check_settings, fit_checked, in_fit_units, FitOptions};
+use super::penalty::{
+    check_inputs, check_settings, fit_checked, in_fit_units, FitOptions, TOLERANCE_SMOOTHING,
+};
 use super::prune::prune;
 use super::refine::{refined_knots, worst_per_piece};
 use super::result::{CurveFit, FitWarning, FitWarningKind};
@@ -199,7 +201,7 @@ fn adaptive_rounds<const D: usize>(
     tolerance: f64,
     options: &FitOptions,
 ) -> Result<(CurveFit<D>, AdaptiveStop, usize)> {
-    let asked = options.smoothing;
+    let asked = options.smoothing.unwrap_or(TOLERANCE_SMOOTHING);
     // The smoothing is sized by the noise estimated from the points: a tolerance below twice
     // that estimate asks for a curve closer to the points than the smoothing would let it
     // come (and on sparse points the estimate is partly the curve's own bending).
@@ -210,11 +212,11 @@ fn adaptive_rounds<const D: usize>(
     let options = &FitOptions {
         max_iterations: options.max_iterations.min(ROUND_ITERATIONS),
         estimated_ends: false,
-        smoothing: if tolerance < NOISE_FLOOR * sigma {
+        smoothing: Some(if tolerance < NOISE_FLOOR * sigma {
             0.0
         } else {
-            options.smoothing
-        },
+            asked
+        }),
         ..options.clone()
     };
     let start = start_parameters_for(points, &options.start, sigma)?;
@@ -225,11 +227,11 @@ fn adaptive_rounds<const D: usize>(
     let mut rounds = 1;
     let (mut stop, mut best) = refine(points, tolerance, options, cap, first, &mut rounds)?;
     let held_off = matches!(stop, AdaptiveStop::Stalled | AdaptiveStop::NoiseLevel);
-    if held_off && options.smoothing > 0.0 {
+    if held_off && options.smoothing.is_some_and(|s| s > 0.0) {
         // The smoothing is sized by the noise estimated from the points, which on sparse
         // points is partly the curve's own bending: go on without it from the best fit.
         let plain = &FitOptions {
-            smoothing: 0.0,
+            smoothing: Some(0.0),
             ..options.clone()
         };
         let knots = best.spline.knots();

@@ -21,7 +21,7 @@
 
 use super::guards::shape_faults;
 use super::knots::{start_parameters_for, warm_parameters, MIN_KNOT_SPACING};
-use super::penalty::{check_inputs, fit_checked, FitOptions, DEFAULT_SMOOTHING};
+use super::penalty::{check_inputs, fit_checked, FitOptions, TOLERANCE_SMOOTHING};
 use super::refine::worst_per_piece;
 use super::result::CurveFit;
 use crate::{Point, Result};
@@ -63,11 +63,11 @@ pub(crate) fn sound_fit<const D: usize>(
     let unit = if asked > 0.0 {
         asked
     } else {
-        DEFAULT_SMOOTHING
+        TOLERANCE_SMOOTHING
     };
     let smoothed = FAULT_SMOOTHING.iter().find_map(|factor| {
         let smoother = FitOptions {
-            smoothing: unit * factor,
+            smoothing: Some(unit * factor),
             ..options.clone()
         };
         refit(

@@ -93,6 +93,6 @@ pub use knots::{
 pub use noise::{estimate_noise, NoiseEstimate};
 pub use penalty::{
     fit_curve, FitOptions, PenaltyRule, DEFAULT_FAIRNESS, DEFAULT_SETTLE_TOLERANCE,
-    DEFAULT_SMOOTHING,
+    DEFAULT_SMOOTHING, TOLERANCE_SMOOTHING,
 };
 pub use result::{CurveFit, FitWarning, FitWarningKind};

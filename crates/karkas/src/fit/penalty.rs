@@ -59,8 +59,11 @@ pub const DEFAULT_FAIRNESS: f64 = 3e-11;
 /// The inner minimization may stop once an undamped step moves no point's distance by more
 /// than this share of the size of the points (see [`FitOptions::settle_tolerance`]).
 const SETTLED_SHARE_OF_SIZE: f64 = 1e-7;
-/// The default of [`FitOptions::smoothing`].
-pub const DEFAULT_SMOOTHING: f64 = 0.3;
+/// The smoothing of a fit on given knots when [`FitOptions::smoothing`] is `None`.
+pub const DEFAULT_SMOOTHING: f64 = 0.1;
+/// The smoothing of the tolerance mode ([`fit_curve_adaptive`](super::fit_curve_adaptive))
+/// when [`FitOptions::smoothing`] is `None`.
+pub const TOLERANCE_SMOOTHING: f64 = 0.3;
 /// The default of [`FitOptions::settle_tolerance`].
 pub const DEFAULT_SETTLE_TOLERANCE: f64 = 1e-2;
 
@@ -136,11 +139,16 @@ pub struct FitOptions {
     /// (no noise), with [`FitOptions::pin_ends`], or without foot points.
     pub estimated_ends: bool,
     /// `s`: the bending weight grows with the noise estimated from the points,
-    /// `lambda = (fairness + s (sigma / L)^2) n tau` (see [`estimate_noise`]; default
-    /// [`DEFAULT_SMOOTHING`]; 0 for none). Noise makes the fit follow it with the freedom
-    /// of a defect-2 spline (two coefficients per knot); the term evens that out in
-    /// proportion to the noise, and vanishes on exact points.
-    pub smoothing: f64,
+    /// `lambda = (fairness + s (sigma / L)^2) n tau` (see [`estimate_noise`]; 0 for none).
+    /// Noise makes the fit follow it with the freedom of a defect-2 spline (two coefficients
+    /// per knot); the term evens that out in proportion to the noise, and vanishes on exact
+    /// points. `None` (the default): [`DEFAULT_SMOOTHING`] (0.1) on given knots,
+    /// [`TOLERANCE_SMOOTHING`] (0.3) in the tolerance mode. On given knots less smoothing
+    /// brings a noisy fit closer to the true curve (the term's pull at the ends and its bias
+    /// across the curve grow with it); the tolerance mode places its knots where the points
+    /// are farthest, and there more smoothing keeps wavy coordinates from making the curve
+    /// turn to and fro.
+    pub smoothing: Option<f64>,
 }
 
 impl Default for FitOptions {
@@ -157,7 +165,7 @@ impl Default for FitOptions {
             pin_ends: false,
             settle_tolerance: DEFAULT_SETTLE_TOLERANCE,
             ordered: true,
-            smoothing: DEFAULT_SMOOTHING,
+            smoothing: None,
             estimated_ends: true,
         }
     }
@@ -221,12 +229,14 @@ pub(crate) fn check_settings(options: &FitOptions) -> Result<()> {
             reason: "must be zero or positive and finite",
         });
     }
-    if !(options.smoothing >= 0.0 && options.smoothing.is_finite()) {
-        return Err(Error::InvalidSetting {
-            name: "smoothing",
-            value: options.smoothing,
-            reason: "must be zero or positive and finite",
-        });
+    if let Some(smoothing) = options.smoothing {
+        if !(smoothing >= 0.0 && smoothing.is_finite()) {
+            return Err(Error::InvalidSetting {
+                name: "smoothing",
+                value: smoothing,
+                reason: "must be zero or positive and finite",
+            });
+        }
     }
     if !(options.settle_tolerance >= 0.0 && options.settle_tolerance < 1.0) {
         return Err(Error::InvalidSetting {
@@ -306,7 +316,7 @@ pub(crate) fn fit_checked<const D: usize>(
             points.len(),
             knots.len() - 1,
             options.fairness,
-            options.smoothing,
+            options.smoothing.unwrap_or(DEFAULT_SMOOTHING),
         ),
         pins: options
             .pin_ends

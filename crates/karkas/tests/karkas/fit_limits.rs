@@ -50,7 +50,7 @@ fn small_eps_tends_to_the_c2_least_squares_spline_with_parameters_held() {
             &FitOptions {
                 eps,
                 foot_points: false,
-                smoothing: 0.0,
+                smoothing: Some(0.0),
                 ..Default::default()
             },
         )
@@ -78,7 +78,7 @@ fn small_eps_tends_to_the_c2_spline_with_foot_points() {
             &KNOTS,
             &FitOptions {
                 eps,
-                smoothing: 0.0,
+                smoothing: Some(0.0),
                 ..Default::default()
             },
         )
@@ -109,7 +109,7 @@ fn large_eps_is_the_unconstrained_c1_fit() {
             eps: 1e30,
             foot_points: false,
             fairness: 0.0,
-            smoothing: 0.0,
+            smoothing: Some(0.0),
             ..Default::default()
         },
     )
@@ -287,7 +287,7 @@ fn pinned_ends_pass_through_the_first_and_last_points() {
             &KNOTS,
             &FitOptions {
                 eps,
-                smoothing: 0.0,
+                smoothing: Some(0.0),
                 ..Default::default()
             },
         )

@@ -92,7 +92,7 @@ fn smoothing_brings_a_noisy_fit_closer_to_the_truth() {
     // noise; the default smoothing halves its distance from the true contour at least.
     let points = noisy_section(1000, 1e-3, 3);
     let rough = FitOptions {
-        smoothing: 0.0,
+        smoothing: Some(0.0),
         ..Default::default()
     };
     let plain = fit_curve(&points, &uniform_knots(32), &rough).unwrap();
@@ -186,4 +186,29 @@ fn estimated_ends_move_along_the_tangent_only() {
         );
         assert!(across < 0.05 * moved.norm() + 1e-6, "{across:.3e}");
     }
+}
+
+#[test]
+fn the_default_smoothing_depends_on_the_mode() {
+    // `smoothing: None` is DEFAULT_SMOOTHING on given knots and TOLERANCE_SMOOTHING in the
+    // tolerance mode (bitwise), and the two differ on noisy points.
+    use karkas::fit::{fit_curve_adaptive, DEFAULT_SMOOTHING, TOLERANCE_SMOOTHING};
+    const { assert!(DEFAULT_SMOOTHING < TOLERANCE_SMOOTHING) };
+    let points = noisy_section(600, 1e-3, 21);
+    let with = |s: Option<f64>| FitOptions {
+        smoothing: s,
+        ..Default::default()
+    };
+    let knots = uniform_knots(16);
+    let given = |s| fit_curve(&points, &knots, &with(s)).unwrap().distances;
+    assert_eq!(given(None), given(Some(DEFAULT_SMOOTHING)));
+    assert_ne!(given(None), given(Some(TOLERANCE_SMOOTHING)));
+    let tolerance = |s| {
+        fit_curve_adaptive(&points, 4e-3, &with(s))
+            .unwrap()
+            .fit
+            .distances
+    };
+    assert_eq!(tolerance(None), tolerance(Some(TOLERANCE_SMOOTHING)));
+    assert_ne!(tolerance(None), tolerance(Some(DEFAULT_SMOOTHING)));
 }
