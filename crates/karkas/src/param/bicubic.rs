@@ -291,6 +291,7 @@ impl<const D: usize> BicubicSurface<D> {
 
     /// Fills `line` with the control points of the curve `u = const` (all `M + 2` of them):
     /// control rows `i..i + 4` combined with the weights `w`.
+    ///
     /// Runs over the coordinates as one flat array (so it vectorizes), with the arithmetic of
     /// `deriv_on_cell`.
     fn combine_rows(&self, i: usize, w: &[f64; 4], line: &mut [Point<D>]) {

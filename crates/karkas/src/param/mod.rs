@@ -11,9 +11,10 @@
 //! - [`CubicSpline`]: 1-D cubic interpolating splines on any increasing knots with
 //!   not-a-knot (the paper's (3.10)–(3.12)), natural, clamped or periodic ends; one `O(n)`
 //!   tridiagonal solve;
-//! - [`BicubicSurface`]: the bicubic interpolant of a grid in Hermite form (3.6)–(3.9), its
-//!   node derivatives found by the paper's three steps of `2N + M` spline solves, `O(N M)`;
-//!   not-a-knot ends, periodic in a closed direction;
+//! - [`BicubicSurface`]: the bicubic interpolant of a grid, the surface of the Hermite form
+//!   (3.6)–(3.9) held as its B-spline control net (a spline solve along every column, then
+//!   along every row of the result), `O(N M)`; not-a-knot ends, periodic in a closed
+//!   direction;
 //! - [`condition_measure`], [`BicubicSurface::condition_measures`]: how well the parameters
 //!   condition the continuation system (2.3), the paper's measure (2.4) extended to tangents
 //!   of any length (`1` exactly for arc lengths along orthogonal directions, Theorem 2.1).
