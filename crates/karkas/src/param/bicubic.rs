@@ -39,11 +39,10 @@ use crate::{Error, Point, Result};
 /// one wraps by its period.
 #[derive(Clone, Debug, PartialEq)]
 pub struct BicubicSurface<const D: usize> {
-    knots_u: Vec<f64>,
-    knots_v: Vec<f64>,
     closed_u: bool,
     closed_v: bool,
-    /// The clamped cubic knot vectors over `knots_u`, `knots_v` (each node a simple knot).
+    /// The clamped cubic knot vectors over the node parameters (each node a simple knot; the
+    /// parameters themselves are the entries between the three repeated ones at each end).
     clamped_u: Vec<f64>,
     clamped_v: Vec<f64>,
     /// The node values `r_ij` ((3.8); a closed direction repeats its first line).
@@ -205,8 +204,6 @@ impl<const D: usize> BicubicSurface<D> {
         Ok(BicubicSurface {
             clamped_u: clamped(&knots_u),
             clamped_v: clamped(&knots_v),
-            knots_u,
-            knots_v,
             closed_u,
             closed_v,
             values: grid,
@@ -216,12 +213,12 @@ impl<const D: usize> BicubicSurface<D> {
 
     /// The knots `u_0 < .. < u_{N-1}` (a closed direction includes the seam twice).
     pub fn knots_u(&self) -> &[f64] {
-        &self.knots_u
+        &self.clamped_u[3..self.clamped_u.len() - 3]
     }
 
     /// The knots `v_0 < .. < v_{M-1}`.
     pub fn knots_v(&self) -> &[f64] {
-        &self.knots_v
+        &self.clamped_v[3..self.clamped_v.len() - 3]
     }
 
     /// The interpolated node `r_ij` (of the closed grid).
@@ -231,10 +228,10 @@ impl<const D: usize> BicubicSurface<D> {
 
     /// The node derivatives `(m^(1,0), m^(0,1), m^(1,1))` at node `(i, j)` ((3.8)).
     pub fn node_derivatives(&self, i: usize, j: usize) -> (Point<D>, Point<D>, Point<D>) {
-        // The node as the start of its cell, the last node as the end of the last cell.
-        let at =
-            |k: usize, count: usize| (k.min(count - 2), if k + 1 >= count { 1.0 } else { 0.0 });
-        let (cu, cv) = (at(i, self.knots_u.len()), at(j, self.knots_v.len()));
+        let (cu, cv) = (
+            node_cell(i, self.knots_u().len()),
+            node_cell(j, self.knots_v().len()),
+        );
         (
             self.deriv_on_cell(cu, cv, 1, 0),
             self.deriv_on_cell(cu, cv, 0, 1),
@@ -253,10 +250,23 @@ impl<const D: usize> BicubicSurface<D> {
     /// tangents `W_u`, `W_v` (`1` exactly for arc lengths along orthogonal directions,
     /// Theorem 2.1; smaller for skewed or stretched parameters). `O(N M)`.
     pub fn condition_measures(&self) -> Grid<f64> {
-        let cols = self.values.cols();
-        node_measures(self.values.rows(), cols, |i, j| {
-            let (ru, rv, _) = self.node_derivatives(i, j);
-            (ru, rv)
+        // The value and first-derivative weights of every node line, computed once.
+        let lines = |count: usize, weights: &dyn Fn(usize, f64, usize) -> [f64; 4]| {
+            (0..count)
+                .map(|k| {
+                    let (cell, s) = node_cell(k, count);
+                    (cell, weights(cell, s, 0), weights(cell, s, 1))
+                })
+                .collect::<Vec<_>>()
+        };
+        let rows = lines(self.knots_u().len(), &|i, s, k| self.weights_u(i, s, k));
+        let cols = lines(self.knots_v().len(), &|j, t, k| self.weights_v(j, t, k));
+        node_measures(rows.len(), cols.len(), |i, j| {
+            let ((ci, u0, u1), (cj, v0, v1)) = (&rows[i], &cols[j]);
+            (
+                self.combine_on_cell(*ci, *cj, u1, v0),
+                self.combine_on_cell(*ci, *cj, u0, v1),
+            )
         })
     }
 
@@ -314,9 +324,14 @@ impl<const D: usize> BicubicSurface<D> {
         ku: usize,
         kv: usize,
     ) -> Point<D> {
-        let wu = self.weights_u(i, s, ku);
-        let wv = self.weights_v(j, t, kv);
-        let stride = self.knots_v.len() + 2;
+        self.combine_on_cell(i, j, &self.weights_u(i, s, ku), &self.weights_v(j, t, kv))
+    }
+
+    /// The control points of cell `(i, j)` combined with the weights `wu` of its rows and `wv`
+    /// of its columns.
+    #[inline]
+    fn combine_on_cell(&self, i: usize, j: usize, wu: &[f64; 4], wv: &[f64; 4]) -> Point<D> {
+        let stride = self.knots_v().len() + 2;
         // Rows first, as in `combine_rows`, so a grid evaluation gives the same bits.
         let row = |a: usize| &self.net[(i + a) * stride + j..][..4];
         let (r0, r1, r2, r3) = (row(0), row(1), row(2), row(3));
@@ -326,17 +341,24 @@ impl<const D: usize> BicubicSurface<D> {
     }
 }
 
+/// The cell of node `k` of `count` and its local coordinate there: the start of its cell, the
+/// last node the end of the last cell.
+#[inline]
+fn node_cell(k: usize, count: usize) -> (usize, f64) {
+    (k.min(count - 2), if k + 1 >= count { 1.0 } else { 0.0 })
+}
+
 /// The input named in the errors of a grid too small (in total, in a closed direction).
 const WHAT: &str = "a bicubic surface (in each grid direction)";
 const WHAT_CLOSED: &str = "a closed direction of a bicubic surface (distinct grid lines)";
 
 impl<const D: usize> Surface<D> for BicubicSurface<D> {
     fn domain_u(&self) -> Interval {
-        Interval::new(self.knots_u[0], self.knots_u[self.knots_u.len() - 1])
+        Interval::new(self.knots_u()[0], self.knots_u()[self.knots_u().len() - 1])
     }
 
     fn domain_v(&self) -> Interval {
-        Interval::new(self.knots_v[0], self.knots_v[self.knots_v.len() - 1])
+        Interval::new(self.knots_v()[0], self.knots_v()[self.knots_v().len() - 1])
     }
 
     fn is_closed_u(&self) -> bool {
@@ -353,8 +375,8 @@ impl<const D: usize> Surface<D> for BicubicSurface<D> {
 
     fn deriv(&self, u: f64, v: f64, ku: usize, kv: usize) -> Point<D> {
         self.deriv_on_cell(
-            locate(&self.knots_u, self.closed_u, u, Side::Above),
-            locate(&self.knots_v, self.closed_v, v, Side::Above),
+            locate(self.knots_u(), self.closed_u, u, Side::Above),
+            locate(self.knots_v(), self.closed_v, v, Side::Above),
             ku,
             kv,
         )
@@ -365,16 +387,16 @@ impl<const D: usize> Surface<D> for BicubicSurface<D> {
         let columns: Vec<(usize, [f64; 4])> = vs
             .iter()
             .map(|&v| {
-                let (j, t) = locate(&self.knots_v, self.closed_v, v, Side::Above);
+                let (j, t) = locate(self.knots_v(), self.closed_v, v, Side::Above);
                 (j, self.weights_v(j, t, 0))
             })
             .collect();
-        let stride = self.knots_v.len() + 2;
+        let stride = self.knots_v().len() + 2;
         let row_len = vs.len().max(1);
         for_each_row_block(out, row_len, |first, block| {
             let mut line = vec![Point::ZERO; stride];
             for (&u, out_row) in us[first..].iter().zip(block.chunks_exact_mut(row_len)) {
-                let (i, s) = locate(&self.knots_u, self.closed_u, u, Side::Above);
+                let (i, s) = locate(self.knots_u(), self.closed_u, u, Side::Above);
                 self.combine_rows(i, &self.weights_u(i, s, 0), &mut line);
                 for (p, &(j, w)) in out_row.iter_mut().zip(&columns) {
                     let c = &line[j..j + 4];
@@ -387,11 +409,11 @@ impl<const D: usize> Surface<D> for BicubicSurface<D> {
 
 impl<const D: usize> PiecewiseSurface<D> for BicubicSurface<D> {
     fn breakpoints_u(&self) -> Vec<f64> {
-        self.knots_u.clone()
+        self.knots_u().to_vec()
     }
 
     fn breakpoints_v(&self) -> Vec<f64> {
-        self.knots_v.clone()
+        self.knots_v().to_vec()
     }
 
     fn continuity(&self) -> usize {
@@ -408,8 +430,8 @@ impl<const D: usize> PiecewiseSurface<D> for BicubicSurface<D> {
         side_v: Side,
     ) -> Point<D> {
         self.deriv_on_cell(
-            locate(&self.knots_u, self.closed_u, u, side_u),
-            locate(&self.knots_v, self.closed_v, v, side_v),
+            locate(self.knots_u(), self.closed_u, u, side_u),
+            locate(self.knots_v(), self.closed_v, v, side_v),
             ku,
             kv,
         )
