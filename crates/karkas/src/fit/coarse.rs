@@ -100,6 +100,8 @@ mod tests {
             tolerance: 1e-4,
             floor: 0.0,
             min_gain: 0.0,
+            min_decrease: 0.0,
+            decrease_share: 0.0,
         };
         let mut state = State::blank(knots, start.to_vec());
         let mut solver = Solver::new(problem, &state.spline);
@@ -162,6 +164,8 @@ mod tests {
             tolerance: 1e-2,
             floor: 0.0,
             min_gain: 0.0,
+            min_decrease: 0.0,
+            decrease_share: 0.0,
         };
         let mut state = State::blank(&knots, start.clone());
         // 1000 points on 11 pieces: 91 per piece, below 4 x 32.

@@ -96,6 +96,10 @@ pub(crate) struct Stop {
     /// parameters `F` keeps creeping down as pooled runs split and merge while the curve
     /// no longer moves: the rule ends that phase.
     pub min_gain: f64,
+    /// ... or by less than this, absolutely, and less than `decrease_share` of `F` (0: never).
+    pub min_decrease: f64,
+    /// See `min_decrease`.
+    pub decrease_share: f64,
 }
 
 /// Buffers and settings of the inner minimization.
@@ -395,7 +399,9 @@ impl<'a, const D: usize> Solver<'a, D> {
                 return Ok((iteration + 1, p));
             }
             if let Some(gain) = gained {
-                if gain < stop.min_gain * current.abs() && in_window(state) {
+                let small = gain < stop.min_gain * current.abs()
+                    || (gain < stop.min_decrease && gain < stop.decrease_share * current.abs());
+                if small && in_window(state) {
                     return Ok((iteration + 1, p));
                 }
             }
