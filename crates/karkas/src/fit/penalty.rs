@@ -50,14 +50,14 @@ const REFERENCE_ITERATIONS: usize = 5;
 /// The free phase of the unconstrained fit, when the ordered phase follows it, stops once a
 /// step lowers `F` by less than this times `sigma^2` per coefficient of the spline. Fitting
 /// noise, `F` drops by about `sigma^2` per coefficient, and a change `delta` of the curve
-/// moves `F` by about `n delta^2`: so a step below this moves the curve by about a tenth of
+/// moves `F` by about `n delta^2`: so a step below this moves the curve by about a fifth of
 /// its own standard error, `sigma sqrt(K / n)` for `K` coefficients. There the free steps
 /// mostly slide the foot points along the curve, and the ordered phase can start from
 /// them (10^5 points of a noisy spiral on 1808 knots: 9 free steps to convergence, the last
-/// seven lowering `F` by 0.2% in all; 4 with the rule). Few pieces with many points each
+/// seven lowering `F` by 0.2% in all; 2 with the rule). Few pieces with many points each
 /// move in steps that are small against `F` but large against this, and run to
 /// convergence; exact points (`sigma` about 0) too.
-const FREE_DECREASE_PER_COEFFICIENT: f64 = 0.01;
+const FREE_DECREASE_PER_COEFFICIENT: f64 = 0.04;
 /// ... and by less than this share of `F`: where the noise estimate is mostly shape (a
 /// sparse digitized section, whose second differences are its curvature, not noise) the
 /// rule above would stop on steps that still shape the curve.
