@@ -95,14 +95,7 @@ mod tests {
 
     /// The minimization of `problem` from `state`, warm-started or not; returns `F`.
     fn minimized(problem: Problem<2>, start: &[f64], knots: &[f64], warm: bool) -> f64 {
-        let stop = Stop {
-            max_iterations: 200,
-            tolerance: 1e-4,
-            floor: 0.0,
-            min_gain: 0.0,
-            min_decrease: 0.0,
-            decrease_share: 0.0,
-        };
+        let stop = Stop::new(200, 1e-4);
         let mut state = State::blank(knots, start.to_vec());
         let mut solver = Solver::new(problem, &state.spline);
         if warm {
@@ -159,14 +152,7 @@ mod tests {
             foot_points: true,
             ordered: false,
         };
-        let stop = Stop {
-            max_iterations: 10,
-            tolerance: 1e-2,
-            floor: 0.0,
-            min_gain: 0.0,
-            min_decrease: 0.0,
-            decrease_share: 0.0,
-        };
+        let stop = Stop::new(10, 1e-2);
         let mut state = State::blank(&knots, start.clone());
         // 1000 points on 11 pieces: 91 per piece, below 4 x 32.
         assert!(warm_start(&problem, &start, stop, &mut state).is_none());

@@ -340,12 +340,8 @@ pub(crate) fn fit_checked<const D: usize>(
         ordered: options.ordered,
     };
     let stop = Stop {
-        max_iterations: options.max_iterations,
-        tolerance: options.settle_tolerance,
         floor: SETTLED_SHARE_OF_SIZE * noise.size,
-        min_gain: 0.0,
-        min_decrease: 0.0,
-        decrease_share: 0.0,
+        ..Stop::new(options.max_iterations, options.settle_tolerance)
     };
     let mut state = State::<D>::blank(knots, start.clone());
     let mut solver = Solver::new(

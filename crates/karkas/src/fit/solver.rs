@@ -102,6 +102,20 @@ pub(crate) struct Stop {
     pub decrease_share: f64,
 }
 
+impl Stop {
+    /// At most `max_iterations`, settled at `tolerance`; every other rule off.
+    pub fn new(max_iterations: usize, tolerance: f64) -> Self {
+        Stop {
+            max_iterations,
+            tolerance,
+            floor: 0.0,
+            min_gain: 0.0,
+            min_decrease: 0.0,
+            decrease_share: 0.0,
+        }
+    }
+}
+
 /// Buffers and settings of the inner minimization.
 pub(crate) struct Solver<'a, const D: usize> {
     problem: Problem<'a, D>,
