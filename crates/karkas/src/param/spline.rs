@@ -388,16 +388,27 @@ pub(super) fn check_parameters(knots: &[f64]) -> Result<()> {
     }
     check_knots(knots, 2, "a cubic spline (knots)")?;
     let span = knots[knots.len() - 1] - knots[0];
+    // The same floor as above: a gap below the smallest normal float (a subnormal span) has
+    // no finite reciprocal, and the B-spline weights divide by it.
     check_min_gap(
         knots,
-        MIN_RELATIVE_KNOT_GAP * span,
-        "closer than 1e-12 of the knot span to the knot before it",
+        (MIN_RELATIVE_KNOT_GAP * span).max(f64::MIN_POSITIVE),
+        "closer than 1e-12 of the knot span (or than the smallest normal float) to the knot before it",
     )
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn knots_closer_than_the_smallest_normal_float_are_refused() {
+        // A subnormal gap passed the relative floor (1e-12 of a subnormal span is 0) and gave
+        // a bicubic surface whose evaluation was NaN.
+        let err = check_parameters(&[1.5e-323, 1.43e-322]).unwrap_err();
+        assert!(err.to_string().contains("knot"), "{err}");
+        assert!(check_parameters(&[0.0, f64::MIN_POSITIVE]).is_ok());
+    }
 
     /// The same bits, or both NaN (the sign and payload of a NaN depend on which operand the
     /// compiler puts first, in vector code as in scalar code).

@@ -386,3 +386,14 @@ fn large_grids_match_line_splines_and_grid_evaluation_is_point_evaluation() {
         }
     }
 }
+
+#[test]
+fn knots_a_subnormal_gap_apart_are_refused() {
+    // Found by the `splines` fuzz target: the surface was built and evaluated to NaN.
+    let grid = Grid::from_fn(2, 2, |i, j| {
+        Point3::new([i as f64, j as f64, (i * j) as f64])
+    });
+    let made =
+        BicubicSurface::from_knots(&grid, &[1.5e-323, 1.43e-322], &[-85.75, 15.0], false, false);
+    assert!(made.is_err(), "{made:?}");
+}
