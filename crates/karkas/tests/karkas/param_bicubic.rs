@@ -396,4 +396,9 @@ fn knots_a_subnormal_gap_apart_are_refused() {
     let made =
         BicubicSurface::from_knots(&grid, &[1.5e-323, 1.43e-322], &[-85.75, 15.0], false, false);
     assert!(made.is_err(), "{made:?}");
+    // A normal gap of 4.5e-308 under coordinate differences of 425: the slopes overflow.
+    let far = Grid::from_fn(2, 2, |i, j| Point3::new([425.0 * i as f64, j as f64, 0.0]));
+    let made =
+        BicubicSurface::from_knots(&far, &[1.5e-323, 4.45e-308], &[-85.75, 15.0], false, false);
+    assert!(made.is_err(), "{made:?}");
 }
