@@ -201,7 +201,7 @@ fn bicubic(c: &mut Criterion) {
     let surface =
         BicubicSurface::new(&sheet(1000), GridParameterization::default(), false, false).unwrap();
     let mut group = short(c, "bicubic_eval_grid");
-    for m in [250, 500, 1000, 2000] {
+    for m in [250, 500, 632, 1000, 2000] {
         let us: Vec<f64> = (0..m).map(|i| surface.domain_u().uniform(i, m)).collect();
         let vs: Vec<f64> = (0..m).map(|i| surface.domain_v().uniform(i, m)).collect();
         let mut out = vec![Point3::ZERO; m * m];

@@ -24,7 +24,7 @@
 use super::condition::{node_measures, ConditionSummary};
 use super::grid_controls::control_net;
 use super::parameterization::{grid_parameters, GridParameterization};
-use super::spline::check_parameters;
+use super::spline::{check_parameters, overflow_at_smallest_gap};
 use crate::bspline::{cubic_span_weights, knot_vector};
 use crate::core::knots::locate;
 use crate::core::parallel::for_each_row_block;
@@ -201,23 +201,8 @@ impl<const D: usize> BicubicSurface<D> {
         let system_v = SlopeSystem::new(&knots_v, &ends_v)?;
         let net = control_net((&system_u, &knots_u), (&system_v, &knots_v), &grid);
         if !net.iter().all(|c| c.is_finite()) {
-            // Coordinate differences over a gap too small for them overflow the slopes: name
-            // the knot that ends the smallest gap.
-            let smallest = |knots: &[f64]| {
-                (1..knots.len())
-                    .map(|k| (knots[k] - knots[k - 1], k, knots[k]))
-                    .fold(
-                        (f64::INFINITY, 0, 0.0),
-                        |a, b| if b.0 < a.0 { b } else { a },
-                    )
-            };
-            let (du, dv) = (smallest(&knots_u), smallest(&knots_v));
-            let (_, index, value) = if du.0 <= dv.0 { du } else { dv };
-            return Err(Error::InvalidKnot {
-                index,
-                value,
-                reason: "too close to the knot before it for the grid's coordinates: the surface overflows",
-            });
+            // Coordinate differences over a gap too small for them overflow the slopes.
+            return Err(overflow_at_smallest_gap(&[&knots_u, &knots_v]));
         }
         let clamped = |knots: &[f64]| knot_vector(3, knots, &vec![1; knots.len() - 2]);
         Ok(BicubicSurface {

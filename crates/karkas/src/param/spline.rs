@@ -38,9 +38,11 @@ impl<const D: usize> CubicSpline<D> {
     ///
     /// Errors: fewer than 2 points (3 when periodic), lengths that differ
     /// ([`Error::CountMismatch`]), knots not finite and strictly increasing or closer than
-    /// `1e-12` of their span ([`Error::InvalidKnot`]), a non-finite value or clamped end
-    /// derivative, and for periodic ends a last value that does not repeat the first
-    /// (relative tolerance `1e-12`, [`Error::OpenPeriodicData`]).
+    /// `1e-12` of their span ([`Error::InvalidKnot`]), or so close that the values'
+    /// differences over them overflow the slopes (`InvalidKnot` naming the knot that ends
+    /// the smallest gap), a non-finite value or clamped end derivative, and for periodic
+    /// ends a last value that does not repeat the first (relative tolerance `1e-12`,
+    /// [`Error::OpenPeriodicData`]).
     pub fn new(knots: &[f64], values: &[Point<D>], ends: SplineEnds<D>) -> Result<Self> {
         Self::from_owned(knots.to_vec(), values.to_vec(), ends, false)
     }
@@ -111,6 +113,9 @@ impl<const D: usize> CubicSpline<D> {
             }
             slopes
         };
+        if !slopes.iter().all(|m| m.is_finite()) {
+            return Err(overflow_at_smallest_gap(&[&knots]));
+        }
         let inv_steps = knots.windows(2).map(|w| 1.0 / (w[1] - w[0])).collect();
         let guess = UniformGuess::new(&knots);
         Ok(CubicSpline {
@@ -395,6 +400,24 @@ pub(super) fn check_parameters(knots: &[f64]) -> Result<()> {
         (MIN_RELATIVE_KNOT_GAP * span).max(f64::MIN_POSITIVE),
         "closer than 1e-12 of the knot span (or than the smallest normal float) to the knot before it",
     )
+}
+
+/// The error of a spline or surface whose coefficients overflowed: coordinate differences
+/// over a knot gap too small for them (a gap of `4e-308` under a difference of `425`). Names
+/// the knot that ends the smallest gap of all `knot_lists`.
+pub(super) fn overflow_at_smallest_gap(knot_lists: &[&[f64]]) -> Error {
+    let (_, index, value) = knot_lists
+        .iter()
+        .flat_map(|knots| (1..knots.len()).map(|k| (knots[k] - knots[k - 1], k, knots[k])))
+        .fold(
+            (f64::INFINITY, 0, 0.0),
+            |a, b| if b.0 < a.0 { b } else { a },
+        );
+    Error::InvalidKnot {
+        index,
+        value,
+        reason: "too close to the knot before it for the values' differences: the spline overflows",
+    }
 }
 
 #[cfg(test)]

@@ -8,7 +8,7 @@
 //! same `q`, so mostly extrapolated).
 
 use karkas::param::{CubicSpline, CurveParameterization, SplineEnds};
-use karkas::{Curve, PiecewiseCurve, Point, Point3, Side};
+use karkas::{Curve, Error, PiecewiseCurve, Point, Point2, Point3, Side};
 use proptest::prelude::*;
 
 const X: [f64; 7] = [0.0, 0.5, 1.3, 2.0, 3.1, 4.0, 5.2];
@@ -431,4 +431,29 @@ proptest! {
             }
         }
     }
+}
+
+#[test]
+fn values_too_far_apart_for_their_knot_gap_are_refused() {
+    // A normal gap of 4.5e-308 under a difference of 425: the slopes overflow, and the
+    // spline would evaluate to NaN.
+    let values = [Point2::new([0.0, 0.0]), Point2::new([425.0, 1.0])];
+    let knots = [1.5e-323, 4.45e-308];
+    for ends in [SplineEnds::NotAKnot, SplineEnds::Natural] {
+        let made = CubicSpline::new(&knots, &values, ends);
+        match made {
+            Err(Error::InvalidKnot { index, .. }) => assert_eq!(index, 1),
+            other => panic!("{other:?}"),
+        }
+    }
+    // Given finite end slopes, no slope is divided by the gap: the spline is finite.
+    let clamped = SplineEnds::Clamped {
+        start: Point2::ZERO,
+        end: Point2::ZERO,
+    };
+    let given = CubicSpline::new(&knots, &values, clamped).unwrap();
+    assert!(given.eval(2e-308).is_finite());
+    // The same values a fair gap apart still make a finite spline.
+    let fine = CubicSpline::new(&[0.0, 1e-300], &values, SplineEnds::NotAKnot).unwrap();
+    assert!(fine.eval(0.5e-300).is_finite());
 }
