@@ -135,6 +135,45 @@ impl<const D: usize> HermiteSpline<D> {
         &self.derivatives
     }
 
+    /// How far the curve moved across itself from `before` (a spline on the same knots) to
+    /// this one: at every knot, the part of the change of the value normal to `before`'s
+    /// tangent, and the part of the change of the derivative normal to it times 4/27 of the
+    /// longer neighbouring piece (`s (1 - s)^2 <= 4/27`: the most a change of one end
+    /// derivative moves a cubic Hermite piece); the largest of these. Changes along the
+    /// tangent slide the curve's parameterization, not its shape, and do not count (where
+    /// the derivative vanishes the whole change counts).
+    pub(crate) fn moved_across(&self, before: &Self) -> f64 {
+        let n = self.knots.len();
+        let mut moved = 0.0f64;
+        for l in 0..n {
+            let h_left = if l > 0 {
+                self.knots[l] - self.knots[l - 1]
+            } else {
+                0.0
+            };
+            let h_right = if l + 1 < n {
+                self.knots[l + 1] - self.knots[l]
+            } else {
+                0.0
+            };
+            let reach = 4.0 / 27.0 * h_left.max(h_right);
+            let tangent = before.derivatives[l];
+            let length = tangent.norm();
+            let across = |d: Point<D>| {
+                if length > 0.0 {
+                    let unit = tangent * (1.0 / length);
+                    (d - unit * d.dot(unit)).norm()
+                } else {
+                    d.norm()
+                }
+            };
+            let value = across(self.values[l] - before.values[l]);
+            let slope = across(self.derivatives[l] - before.derivatives[l]) * reach;
+            moved = moved.max(value).max(slope);
+        }
+        moved
+    }
+
     /// Mutable access to values and derivatives (the knots stay).
     pub(crate) fn coefficients_mut(&mut self) -> (&mut [Point<D>], &mut [Point<D>]) {
         (&mut self.values, &mut self.derivatives)
@@ -319,5 +358,48 @@ impl<const D: usize> PiecewiseCurve<D> for HermiteSpline<D> {
             piece -= 1;
         }
         self.deriv_on_piece(piece, self.local(piece, t), k)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Point2;
+
+    fn line(shift_value: Point2, shift_slope: Point2) -> HermiteSpline<2> {
+        let p = |x: f64, y: f64| Point2::new([x, y]);
+        HermiteSpline::from_parts(
+            vec![0.0, 0.5, 1.0],
+            vec![p(0.0, 0.0), p(1.0, 0.0) + shift_value, p(2.0, 0.0)],
+            vec![p(2.0, 0.0), p(2.0, 0.0) + shift_slope, p(2.0, 0.0)],
+        )
+    }
+
+    #[test]
+    fn a_move_along_the_tangent_does_not_count_and_one_across_does() {
+        let p = |x: f64, y: f64| Point2::new([x, y]);
+        let straight = line(Point2::ZERO, Point2::ZERO);
+        // Sliding the middle value and speeding up the middle derivative along the line:
+        // a reparameterization.
+        let slid = line(p(0.1, 0.0), p(0.5, 0.0));
+        assert_eq!(slid.moved_across(&straight), 0.0);
+        // The middle value lifted off the line by 0.01.
+        let lifted = line(p(0.0, 0.01), Point2::ZERO);
+        assert!((lifted.moved_across(&straight) - 0.01).abs() < 1e-15);
+        // The middle derivative turned off the line: the pieces move by 4/27 h |dH| at most,
+        // and by that much at s = 1/3 of the piece from the knot.
+        let turned = line(Point2::ZERO, p(0.0, 0.3));
+        let bound = turned.moved_across(&straight);
+        assert!((bound - 4.0 / 27.0 * 0.5 * 0.3).abs() < 1e-15);
+        let largest = (0..=3000)
+            .map(|i| {
+                let t = i as f64 / 3000.0;
+                turned.eval(t).distance(straight.eval(t))
+            })
+            .fold(0.0f64, f64::max);
+        assert!(
+            largest <= bound + 1e-15 && largest > 0.999 * bound,
+            "{largest} {bound}"
+        );
     }
 }

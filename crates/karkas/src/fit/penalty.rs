@@ -66,6 +66,16 @@ const FREE_DECREASE_SHARE: f64 = 1e-3;
 const ORDERED_ITERATIONS: usize = 8;
 /// ... and they stop once a step lowers `F` by less than this share of it.
 const ORDERED_MIN_GAIN: f64 = 1e-4;
+/// ... or once a step moves the curve across itself (`HermiteSpline::moved_across`) by less
+/// than this share of its standard error ([`standard_error`]). After the first ordered step
+/// (which brings the ends to their pins) such steps slide pooled runs of foot points along a
+/// curve that stays, from the pinned ends a few knots a step. 10^6 noisy points of a spiral
+/// (sigma 2.9e-4) on 20 000 knots: 8 ordered steps, none moving the curve by more than 1.2%
+/// of its standard error; with the rule 1, 4.5 s against 2.2 s on one thread, the largest
+/// distance from the true curve 5.72e-4 both ways and the RMS 2.99e-5 against 3.02e-5. The
+/// free phase keeps its own rule: there steps this small can still be shaping a dense,
+/// strongly curved stretch (a nose in cosine spacing under noise of 1e-3 of the chord).
+const MOVE_SHARE: f64 = 0.1;
 /// Minimizations at a held `p` that polish the active bound's fit, at most.
 const POLISH_STEPS: usize = 8;
 
@@ -302,6 +312,36 @@ pub fn fit_curve<const D: usize>(
         .map(|fit| with_warnings(points, unit.restore(fit)))
 }
 
+/// The standard error of a least-squares spline on `knots` knots (`2 knots` coefficients per
+/// coordinate) fitted to the `n` points of `state`: `s sqrt(2 knots / n)`, with `s` the
+/// smaller of the noise estimate and the RMS distance of the points from the fit (on sparse
+/// points the estimate from second differences is mostly the curve's own curvature). 0 when
+/// not finite, and when the points lie farther apart on average than `s` along the curve
+/// (its length taken between the values at the knots): runs of foot points pool only where
+/// the noise along the curve exceeds the spacing of the points; elsewhere every foot point
+/// shapes the curve.
+fn standard_error<const D: usize>(noise: &NoiseEstimate, state: &State<D>, knots: usize) -> f64 {
+    let n = state.dist_sq.len() as f64;
+    let spread = noise.sigma.min((state.data_term() / n).sqrt());
+    let length: f64 = state
+        .spline
+        .values()
+        .windows(2)
+        .map(|w| (w[1] - w[0]).norm())
+        .sum();
+    // False also when either side is NaN.
+    let pooled = length < spread * (n - 1.0);
+    if !pooled {
+        return 0.0;
+    }
+    let error = spread * (2.0 * knots as f64 / n).sqrt();
+    if error.is_finite() {
+        error
+    } else {
+        0.0
+    }
+}
+
 /// `options` in the units of a fit of points divided by `unit`'s scale: the bound `eps` on
 /// the squared jumps scales with them; the other settings are dimensionless.
 pub(crate) fn in_fit_units(options: &FitOptions, unit: UnitScale) -> Cow<'_, FitOptions> {
@@ -373,10 +413,11 @@ pub(crate) fn fit_checked<const D: usize>(
     // 1. The unconstrained fit: first with every foot point free (the Newton model is exact
     // for free foot points, and converges in a few steps; with the ordered phase to follow,
     // until a step lowers `F` by less than FREE_DECREASE_PER_COEFFICIENT sigma^2 per
-    // coefficient and FREE_DECREASE_SHARE of `F`), then with the parameters ordered from there (runs pooled out of order)
-    // for at most ORDERED_ITERATIONS steps: every projection orders the parameters, so the
-    // result is ordered however many steps run, and the pooled runs, which the model treats
-    // as free foot points, slow it down.
+    // coefficient and FREE_DECREASE_SHARE of `F`), then with the parameters ordered from
+    // there (runs pooled out of order) for at most ORDERED_ITERATIONS steps: every projection
+    // orders the parameters, so the result is ordered however many steps run, and the pooled
+    // runs, which the model treats as free foot points, slow it down; it also ends on a step
+    // that hardly moves the curve (MOVE_SHARE).
     // Dense points start from the fit of a subset ([`warm_start`]). Between the two phases
     // the ends of a noisy fit are pinned at their estimates ([`super::ends`]); they stay
     // pinned for the rest of the fit, the constrained one included.
@@ -427,6 +468,7 @@ pub(crate) fn fit_checked<const D: usize>(
                 let ordered = Stop {
                     max_iterations: stop.max_iterations.min(ORDERED_ITERATIONS),
                     min_gain: ORDERED_MIN_GAIN,
+                    min_move: MOVE_SHARE * standard_error(&noise, &state, knots.len()),
                     ..stop
                 };
                 iterations += solver.minimize(&mut state, Penalty::Fixed(0.0), ordered)?.0;

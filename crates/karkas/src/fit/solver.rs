@@ -23,7 +23,8 @@
 //!   floating point, a step is taken when it shrinks the gradient.
 //! - The iteration stops when the gradient vanishes (relative `1e-12`), when an undamped step
 //!   changes no point's distance by more than [`Stop::tolerance`] times the RMS distance,
-//!   after iterations that lower neither `F` nor the gradient, or after
+//!   after iterations that lower neither `F` nor the gradient, after a step that moves the
+//!   curve across itself by less than [`Stop::min_move`], or after
 //!   [`Stop::max_iterations`]. The
 //!   second rule exists because `F` is nearly flat along reparameterizations of the curve
 //!   (points sliding along it): there the iterates creep, lowering `F` by tiny amounts for
@@ -100,6 +101,11 @@ pub(crate) struct Stop {
     pub min_decrease: f64,
     /// See `min_decrease`.
     pub decrease_share: f64,
+    /// Stop once a step moves the curve across itself by less than this
+    /// ([`HermiteSpline::moved_across`]; 0: never). With ordered parameters the steps after
+    /// the curve has settled only slide pooled runs of foot points along it, and the slide
+    /// travels a few knots a step: `F` falls for many steps while the shape stays.
+    pub min_move: f64,
 }
 
 impl Stop {
@@ -112,6 +118,7 @@ impl Stop {
             min_gain: 0.0,
             min_decrease: 0.0,
             decrease_share: 0.0,
+            min_move: 0.0,
         }
     }
 }
@@ -322,6 +329,10 @@ impl<'a, const D: usize> Solver<'a, D> {
         let mut prefer_safe = false;
         let mut stalls = 0;
         let mut last_gradient = f64::INFINITY;
+        // Whether the accepted step moved the curve across itself by less than `min_move`.
+        let still = |old: &State<D>, new: &State<D>| {
+            stop.min_move > 0.0 && new.spline.moved_across(&old.spline) < stop.min_move
+        };
         for iteration in 0..stop.max_iterations {
             self.model.assemble(&self.problem, state);
             let (g, scale) = self.model.gradient().size(p);
@@ -336,6 +347,7 @@ impl<'a, const D: usize> Solver<'a, D> {
             let mut gained = None;
             let mut progress = false;
             let mut settled = false;
+            let mut unmoved = false;
             // Each damping is tried with both models, the preferred one first.
             'tries: for attempt in 0..2 * DAMPING_TRIES {
                 let safe = (attempt % 2 == 1) != prefer_safe;
@@ -386,6 +398,7 @@ impl<'a, const D: usize> Solver<'a, D> {
                     };
                     settled = mu_tried <= SETTLED_DAMPING
                         && settled_distances(&state.dist_sq, &self.trial.dist_sq, stop);
+                    unmoved = still(state, &self.trial);
                     std::mem::swap(state, &mut self.trial);
                     gained = Some(before - value);
                     progress = before - value > PROGRESS * value.abs();
@@ -397,6 +410,7 @@ impl<'a, const D: usize> Solver<'a, D> {
             if gained.is_none() {
                 let value = self.alternation_into_trial(state, p);
                 if value < current {
+                    unmoved = still(state, &self.trial);
                     std::mem::swap(state, &mut self.trial);
                     gained = Some(current - value);
                     progress = current - value > PROGRESS * value.abs();
@@ -409,7 +423,7 @@ impl<'a, const D: usize> Solver<'a, D> {
             if stalls > STALLS {
                 return Ok((iteration + 1, p));
             }
-            if gained.is_some() && settled && in_window(state) {
+            if gained.is_some() && (settled || unmoved) && in_window(state) {
                 return Ok((iteration + 1, p));
             }
             if let Some(gain) = gained {
