@@ -366,7 +366,7 @@ pub enum Error {
     /// [`HermiteSpline::new`](crate::fit::HermiteSpline::new),
     /// [`fit_curve`](crate::fit::fit_curve),
     /// [`SplineBlending::new`](crate::coons::SplineBlending::new)).
-    #[error("knot {index} ({value}) is invalid: {reason}")]
+    #[error("knot {index} ({}) is invalid: {reason}", Shown(*value))]
     InvalidKnot {
         /// Index of the knot (0-based).
         index: usize,
@@ -381,7 +381,7 @@ pub enum Error {
     /// penalty of [`vary`](crate::ll::vary), node steps of
     /// [`trace_net`](crate::implicit::trace_net), the compatibility tolerance of a
     /// [`CoonsSurface`](crate::coons::CoonsSurface)).
-    #[error("{name} = {value} is not allowed: {reason}")]
+    #[error("{name} = {} is not allowed: {reason}", Shown(*value))]
     InvalidSetting {
         /// The setting.
         name: &'static str,
@@ -591,5 +591,48 @@ impl Error {
     }
 }
 
+/// A float as the messages show it: as Rust prints it, but in exponent form where that
+/// would run to many digits (below `1e-4` or from `1e16` in size: a knot of `4.45e-308`
+/// would otherwise print 300 zeros).
+struct Shown(f64);
+
+impl core::fmt::Display for Shown {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        let size = self.0.abs();
+        if size != 0.0 && size.is_finite() && !(1e-4..1e16).contains(&size) {
+            write!(f, "{:e}", self.0)
+        } else {
+            write!(f, "{}", self.0)
+        }
+    }
+}
+
 /// `Result` with [`Error`].
 pub type Result<T> = core::result::Result<T, Error>;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn extreme_values_are_shown_with_an_exponent() {
+        let knot = |value| Error::InvalidKnot {
+            index: 1,
+            value,
+            reason: "r",
+        };
+        assert_eq!(
+            knot(4.45e-308).to_string(),
+            "knot 1 (4.45e-308) is invalid: r"
+        );
+        assert_eq!(knot(0.25).to_string(), "knot 1 (0.25) is invalid: r");
+        assert_eq!(knot(0.0).to_string(), "knot 1 (0) is invalid: r");
+        assert_eq!(knot(f64::NAN).to_string(), "knot 1 (NaN) is invalid: r");
+        let setting = Error::InvalidSetting {
+            name: "tolerance",
+            value: -2e20,
+            reason: "r",
+        };
+        assert_eq!(setting.to_string(), "tolerance = -2e20 is not allowed: r");
+    }
+}

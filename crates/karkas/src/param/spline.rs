@@ -416,7 +416,7 @@ pub(super) fn overflow_at_smallest_gap(knot_lists: &[&[f64]]) -> Error {
     Error::InvalidKnot {
         index,
         value,
-        reason: "too close to the knot before it for the values' differences: the spline overflows",
+        reason: "too close to the knot before it for the values' differences: the slopes overflow",
     }
 }
 
