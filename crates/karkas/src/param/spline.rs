@@ -375,15 +375,22 @@ fn max_abs<const D: usize>(points: &[Point<D>]) -> f64 {
     most.into_iter().fold(0.0, f64::max)
 }
 
+/// The smallest gap allowed between knots spanning `span`: [`MIN_RELATIVE_KNOT_GAP`] of it,
+/// and never below the smallest normal float (a subnormal gap has no finite reciprocal, and
+/// the B-spline weights divide by it).
+fn min_knot_gap(span: f64) -> f64 {
+    (MIN_RELATIVE_KNOT_GAP * span).max(f64::MIN_POSITIVE)
+}
+
 /// Fails unless `knots` (at least 2) are finite, strictly increasing, and no gap is below
-/// [`MIN_RELATIVE_KNOT_GAP`] of their span ([`Error::InvalidKnot`]).
+/// [`min_knot_gap`] of their span ([`Error::InvalidKnot`]).
 pub(super) fn check_parameters(knots: &[f64]) -> Result<()> {
     // One pass that only says yes: finite ends and every gap positive and at least the
     // smallest allowed make the knots finite, strictly increasing and far enough apart.
     // Anything else goes through the checks below, which name the first fault.
     if let [first, .., last] = knots {
         let span = last - first;
-        let floor = (MIN_RELATIVE_KNOT_GAP * span).max(f64::MIN_POSITIVE);
+        let floor = min_knot_gap(span);
         let apart = knots
             .windows(2)
             .fold(true, |ok, w| ok & (w[1] - w[0] >= floor));
@@ -393,11 +400,9 @@ pub(super) fn check_parameters(knots: &[f64]) -> Result<()> {
     }
     check_knots(knots, 2, "a cubic spline (knots)")?;
     let span = knots[knots.len() - 1] - knots[0];
-    // The same floor as above: a gap below the smallest normal float (a subnormal span) has
-    // no finite reciprocal, and the B-spline weights divide by it.
     check_min_gap(
         knots,
-        (MIN_RELATIVE_KNOT_GAP * span).max(f64::MIN_POSITIVE),
+        min_knot_gap(span),
         "closer than 1e-12 of the knot span (or than the smallest normal float) to the knot before it",
     )
 }
