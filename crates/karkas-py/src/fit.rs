@@ -132,7 +132,8 @@ fn fit_bytes(points: usize, knots: usize, dim: usize) -> u128 {
 /// free_ends : bool, optional
 ///     On given knots, leave the ends where the foot points put them (as ``karkas curve fit
 ///     --free-ends``). By default each end of a noisy fit is held on its tangent line where
-///     the points towards it say it lies; not used with ``tolerance``.
+///     the points towards it say it lies, and ends that the noise does not tell apart (a
+///     closed trailing edge) at their common point; not used with ``tolerance``.
 /// corners : sequence of float, optional
 ///     Knots where the curve may turn a corner (no smoothness asked there).
 /// fairness : float, optional

@@ -58,7 +58,8 @@ pub struct FitCurveOptions {
     pub pin_ends: bool,
     /// On given knots, leave the ends where the foot points put them: by default each end
     /// of a noisy fit is held on its tangent line where the points towards it say it lies
-    /// (noisy points beyond an end pull it outward). Not used with --tolerance, which holds
+    /// (noisy points beyond an end pull it outward), and ends that the noise does not tell
+    /// apart (a closed trailing edge) at their common point. Not used with --tolerance, which holds
     /// every point, the ends included, within the tolerance.
     #[arg(long, conflicts_with = "pin_ends")]
     pub free_ends: bool,

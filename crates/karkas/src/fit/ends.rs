@@ -19,6 +19,13 @@
 //! short window: in a long window their weight is small. (Lepski's rule, growing the window
 //! until an estimate disagrees with a shorter window's, stops at once on such outliers.)
 //!
+//! Where the two estimates agree within [`COINCIDENT`] standard errors of their difference,
+//! the ends meet (a closed trailing edge: upper and lower surface end at one point) and each
+//! run estimates the same point. Both ends are then held at the inverse-variance mean of the
+//! two, along and across the curve: it has about `1/sqrt 2` of either estimate's error. NACA
+//! 4415 with 1000 points at noise 1e-3 ends 0.51 deviations from the true trailing edge
+//! with each end held by its own run (RMS over 40 noise seeds), 0.37 at the common point.
+//!
 //! The least-squares weights come from the normal equations of the monomials in `i / m`,
 //! solved with `nalgebra`. On 1000-5000 noisy points of NACA sections the estimate lies
 //! within 0.2-0.55 noise deviations of the true trailing edge (RMS, along the chord), where a
@@ -40,11 +47,15 @@ const AGREEMENT: f64 = 2.0;
 /// (the quadratic has 0.94 on 5 points, 0.51 on 31 and 0.42 on 47, the first window length
 /// tried that qualifies: so at least 188 points).
 const USEFUL_SPREAD: f64 = 0.5;
+/// Two end estimates closer than this many standard errors of their difference are taken
+/// for one point (the ends of a contour that meet).
+const COINCIDENT: f64 = 3.0;
 
 /// The end pins of a fit of `points` whose free fit is `spline`, for points with noise
 /// `sigma` per coordinate. Each pin lies on the spline's tangent line at that end, where the
-/// estimate of the end from the points projects onto it. `None` when there is no noise to
-/// correct for, too few points, or a degenerate end.
+/// estimate of the end from the points projects onto it; when the two estimates agree within
+/// the noise (the ends meet), both pins are their common point. `None` when there is no noise
+/// to correct for, too few points, or a degenerate end.
 pub(crate) fn end_pins<const D: usize>(
     points: &[Point<D>],
     sigma: f64,
@@ -60,11 +71,38 @@ pub(crate) fn end_pins<const D: usize>(
     if start.is_none() && end.is_none() {
         return None;
     }
+    if let (Some(a), Some(b)) = (start, end) {
+        if let Some(common) = common_end(a, b, sigma) {
+            // Ends that meet: both held at the common point, along and across alike.
+            return Some([common, common]);
+        }
+    }
     // An end without an estimate is held where the free fit put it.
     Some([
-        on_tangent(values[0], derivatives[0], start.unwrap_or(values[0]))?,
-        on_tangent(values[last], derivatives[last], end.unwrap_or(values[last]))?,
+        on_tangent(values[0], derivatives[0], start.map_or(values[0], |e| e.at))?,
+        on_tangent(
+            values[last],
+            derivatives[last],
+            end.map_or(values[last], |e| e.at),
+        )?,
     ])
+}
+
+/// The common point of two end estimates that the noise does not tell apart (a contour whose
+/// ends meet, the closed trailing edge of a section): their inverse-variance mean. `None` when
+/// they lie more than [`COINCIDENT`] standard errors of their difference apart.
+fn common_end<const D: usize>(
+    a: EndEstimate<D>,
+    b: EndEstimate<D>,
+    sigma: f64,
+) -> Option<Point<D>> {
+    let (va, vb) = (a.spread * a.spread, b.spread * b.spread);
+    let apart = (a.at - b.at).norm();
+    if apart.is_nan() || apart > COINCIDENT * sigma * (va + vb).sqrt() {
+        return None;
+    }
+    let at = a.at * (vb / (va + vb)) + b.at * (va / (va + vb));
+    at.is_finite().then_some(at)
 }
 
 /// `estimate` projected onto the line through `end` along `tangent`.
@@ -82,6 +120,15 @@ fn on_tangent<const D: usize>(
     pin.is_finite().then_some(pin)
 }
 
+/// An estimate of where a run of points starts.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct EndEstimate<const D: usize> {
+    /// The estimated end.
+    pub(crate) at: Point<D>,
+    /// Its standard error per coordinate, for unit noise (the norm of the weights).
+    pub(crate) spread: f64,
+}
+
 /// The end of the ordered points `run` (`n` in all) at index 0: the quadratic in the index
 /// on the longest window where the cubic agrees with it (`None` when no window does, or
 /// none is long enough to be twice as precise as the first point).
@@ -89,7 +136,7 @@ pub(crate) fn estimate_end<'a, const D: usize>(
     run: impl Iterator<Item = &'a Point<D>> + Clone,
     n: usize,
     sigma: f64,
-) -> Option<Point<D>> {
+) -> Option<EndEstimate<D>> {
     let largest = ((n as f64 * LARGEST_SHARE) as usize).max(FIRST_WINDOW);
     let mut windows = vec![FIRST_WINDOW];
     while let Some(&m) = windows.last() {
@@ -113,7 +160,12 @@ pub(crate) fn estimate_end<'a, const D: usize>(
             spread += (w3 - w2) * (w3 - w2);
         }
         let agree = (at3 - at2).norm() <= AGREEMENT * sigma * spread.sqrt();
-        (agree && own.sqrt() <= USEFUL_SPREAD && at2.is_finite()).then_some(at2)
+        let error = own.sqrt();
+        let useful = agree && error <= USEFUL_SPREAD && at2.is_finite();
+        useful.then_some(EndEstimate {
+            at: at2,
+            spread: error,
+        })
     })
 }
 
@@ -150,17 +202,7 @@ mod tests {
     /// `n` points `(x^2, 3 + 2 x)`, `x = i / n`, with Gaussian noise of `sigma` per
     /// coordinate (Box-Muller on a xorshift generator seeded with `seed`).
     fn quadratic_run(n: usize, sigma: f64, seed: u64) -> Vec<P2> {
-        let mut state = seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1;
-        let mut uniform = move || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            ((state >> 11) as f64 + 0.5) / (1u64 << 53) as f64
-        };
-        let mut normal = move || {
-            let (a, b) = (uniform(), uniform());
-            (-2.0 * a.ln()).sqrt() * (2.0 * std::f64::consts::PI * b).cos()
-        };
+        let mut normal = gaussian(seed);
         (0..n)
             .map(|i| {
                 let x = i as f64 / n as f64;
@@ -169,10 +211,99 @@ mod tests {
             .collect()
     }
 
+    /// Standard normal deviates: Box-Muller on a xorshift generator seeded with `seed`.
+    fn gaussian(seed: u64) -> impl FnMut() -> f64 {
+        let mut state = seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1;
+        let mut uniform = move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            ((state >> 11) as f64 + 0.5) / (1u64 << 53) as f64
+        };
+        move || {
+            let (a, b) = (uniform(), uniform());
+            (-2.0 * a.ln()).sqrt() * (2.0 * std::f64::consts::PI * b).cos()
+        }
+    }
+
+    /// `n` points round the ellipse `((1 + cos b) / 2, 0.1 sin b)`, `b` uniform over one turn
+    /// (so both ends at `(1, 0)`), shifted by `gap` in `y` along the way (the last point
+    /// `gap` above the first), with Gaussian noise of `sigma` per coordinate.
+    fn closed_run(n: usize, sigma: f64, gap: f64, seed: u64) -> Vec<P2> {
+        let mut normal = gaussian(seed);
+        (0..n)
+            .map(|i| {
+                let s = i as f64 / (n - 1) as f64;
+                let b = 2.0 * std::f64::consts::PI * s;
+                let x = 0.5 * (1.0 + b.cos()) + sigma * normal();
+                P2::new([x, 0.1 * b.sin() + gap * s + sigma * normal()])
+            })
+            .collect()
+    }
+
+    /// A spline from the first to the last of `run`, leaving along the run's ends.
+    fn spline_along(run: &[P2]) -> HermiteSpline<2> {
+        let (first, last) = (run[0], run[run.len() - 1]);
+        let middle = run[run.len() / 2];
+        let knots = vec![0.0, 0.5, 1.0];
+        let values = vec![first, middle, last];
+        let derivatives = vec![run[10] - first, last - first, last - run[run.len() - 11]];
+        HermiteSpline::new(knots, values, derivatives).unwrap()
+    }
+
+    #[test]
+    fn ends_that_meet_are_held_at_their_common_point() {
+        // 1000 points round a closed contour at noise 1e-3, 100 seeds. Where both ends have
+        // an estimate, both pins are one point (but for the odd seed whose two estimates
+        // the noise puts 3 standard errors apart), about 1/sqrt(2) as far from the true end
+        // as either end's own estimate.
+        let (sigma, truth) = (1e-3, P2::new([1.0, 0.0]));
+        let (mut own, mut pinned, mut both, mut met) = (0.0, 0.0, 0, 0);
+        for seed in 0..100 {
+            let run = closed_run(1000, sigma, 0.0, seed);
+            let first = estimate_end(run.iter(), run.len(), sigma);
+            let last = estimate_end(run.iter().rev(), run.len(), sigma);
+            let (Some(first), Some(last)) = (first, last) else {
+                continue;
+            };
+            let [start, end] = end_pins(&run, sigma, &spline_along(&run)).unwrap();
+            both += 1;
+            met += usize::from(start == end);
+            own += (first.at - truth).norm_sq() + (last.at - truth).norm_sq();
+            pinned += (start - truth).norm_sq() + (end - truth).norm_sq();
+        }
+        let (own, pinned) = (
+            (own / 2.0 / both as f64).sqrt(),
+            (pinned / 2.0 / both as f64).sqrt(),
+        );
+        eprintln!("{met} of {both} met; own estimates {own:e}, pins {pinned:e}");
+        assert!(
+            both >= 90 && met as f64 >= 0.95 * both as f64,
+            "{met} of {both}"
+        );
+        assert!(pinned < 0.85 * own, "{pinned:e} against {own:e}");
+    }
+
+    #[test]
+    fn ends_the_noise_tells_apart_keep_their_own_pins() {
+        // The same contour with its ends 10 deviations apart: each pin stays by its end.
+        let sigma = 1e-3;
+        let run = closed_run(1000, sigma, 10.0 * sigma, 3);
+        let [start, end] = end_pins(&run, sigma, &spline_along(&run)).unwrap();
+        assert!(
+            (start - P2::new([1.0, 0.0])).norm() < 2.0 * sigma,
+            "{start:?}"
+        );
+        assert!(
+            (end - P2::new([1.0, 10.0 * sigma])).norm() < 2.0 * sigma,
+            "{end:?}"
+        );
+    }
+
     #[test]
     fn exact_quadratic_gives_its_start() {
         let run = quadratic_run(400, 0.0, 1);
-        let end = estimate_end(run.iter(), run.len(), 1e-3).unwrap();
+        let end = estimate_end(run.iter(), run.len(), 1e-3).unwrap().at;
         assert!((end - P2::new([0.0, 3.0])).norm() < 1e-12, "{end:?}");
     }
 
@@ -184,7 +315,7 @@ mod tests {
         let (mut first, mut estimated) = (0.0, 0.0);
         for seed in 0..200 {
             let run = quadratic_run(2000, sigma, seed);
-            let end = estimate_end(run.iter(), run.len(), sigma).unwrap();
+            let end = estimate_end(run.iter(), run.len(), sigma).unwrap().at;
             first += (run[0] - P2::new([0.0, 3.0])).norm_sq();
             estimated += (end - P2::new([0.0, 3.0])).norm_sq();
         }
@@ -203,7 +334,7 @@ mod tests {
             let mut run = quadratic_run(2000, sigma, seed);
             run[0] += P2::new([-6.0 * sigma, 5.0 * sigma]);
             run[1] += P2::new([4.0 * sigma, -5.0 * sigma]);
-            let end = estimate_end(run.iter(), run.len(), sigma).unwrap();
+            let end = estimate_end(run.iter(), run.len(), sigma).unwrap().at;
             worst = worst.max((end - P2::new([0.0, 3.0])).norm());
         }
         assert!(worst < 1.5 * sigma, "{worst:e}");
@@ -224,14 +355,14 @@ mod tests {
                 P2::new([x, y])
             })
             .collect();
-        let end = estimate_end(run.iter(), run.len(), 1e-6).unwrap();
+        let end = estimate_end(run.iter(), run.len(), 1e-6).unwrap().at;
         assert!(end.norm() < 1e-6, "{end:?}");
     }
 
     #[test]
     fn reversed_runs_estimate_the_other_end() {
         let run = quadratic_run(400, 0.0, 1);
-        let end = estimate_end(run.iter().rev(), run.len(), 1e-3).unwrap();
+        let end = estimate_end(run.iter().rev(), run.len(), 1e-3).unwrap().at;
         assert!((end - run[399]).norm() < 1e-12, "{end:?}");
     }
 

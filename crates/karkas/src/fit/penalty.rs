@@ -160,7 +160,8 @@ pub struct FitOptions {
     /// (default `true`; docs/methods.md §4, "Ends"). Noisy points beyond an end project onto
     /// the end itself and pull it outward along the tangent; after the fit with free foot
     /// points each end is pinned on its tangent line, at the end of a quadratic in the point
-    /// index fitted to the points towards it. No effect on exact points
+    /// index fitted to the points towards it; two ends that the noise does not tell apart
+    /// (a closed trailing edge) are both pinned at their common point. No effect on exact points
     /// (no noise), with [`FitOptions::pin_ends`], or without foot points.
     pub estimated_ends: bool,
     /// `s`: the bending weight grows with the noise estimated from the points,

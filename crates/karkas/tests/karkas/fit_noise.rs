@@ -155,10 +155,30 @@ fn noisy_open_ends_stay_at_the_true_edge() {
 }
 
 #[test]
+fn ends_that_meet_are_held_at_one_point() {
+    // The section is closed at its trailing edge: the two end estimates agree within the
+    // noise, and both ends are held at their common point, nearer the edge than the first
+    // and the last point.
+    let sigma = 1e-3;
+    let points = noisy_section(3000, sigma, 21);
+    let fit = fit_curve(&points, &uniform_knots(24), &FitOptions::default()).unwrap();
+    let (start, end) = (fit.spline.eval(0.0), fit.spline.eval(1.0));
+    let edge = Point2::new([1.0, 0.0]);
+    eprintln!(
+        "{start:?} {end:?}; first and last point {:?} {:?}",
+        points[0], points[2999]
+    );
+    assert!(start.distance(end) < 1e-12, "{start:?} {end:?}");
+    assert!(start.distance(edge) < 0.5 * sigma, "{start:?}");
+}
+
+#[test]
 fn estimated_ends_move_along_the_tangent_only() {
-    // The pinned end differs from the free fit's end along the free fit's tangent there
-    // (within the change of the tangent between the two fits).
-    let points = noisy_section(3000, 1e-3, 21);
+    // Ends apart (the section without its last fifth, so the lower surface ends at
+    // x = 0.35): each pinned end differs from the free fit's end along the free fit's tangent
+    // there (within the change of the tangent between the two fits).
+    let mut points = noisy_section(3000, 1e-3, 21);
+    points.truncate(2400);
     let knots = uniform_knots(24);
     let free = fit_curve(
         &points,
