@@ -23,8 +23,7 @@
 //!   from the points and the bending weight made dimensionless (size, turning, points per
 //!   piece) and proportional to the noise, the open ends are held on their tangent lines
 //!   where the points towards them say they lie, or at one point where they meet
-//!   ([`FitOptions::estimated_ends`]); the result
-//!   carries the estimate and
+//!   ([`FitOptions::estimated_ends`]); the result carries the estimate and
 //!   [`FitWarning`]s from the shape guards ([`shape_warnings`]: crossings, excess turning,
 //!   sparse pieces, empty spans; docs/methods.md §4, "On real and noisy data").
 //! - [`fit_curve_adaptive`]: knots placed automatically (uniform in chord length, then a

@@ -161,8 +161,8 @@ pub struct FitOptions {
     /// the end itself and pull it outward along the tangent; after the fit with free foot
     /// points each end is pinned on its tangent line, at the end of a quadratic in the point
     /// index fitted to the points towards it; two ends that the noise does not tell apart
-    /// (a closed trailing edge) are both pinned at their common point. No effect on exact points
-    /// (no noise), with [`FitOptions::pin_ends`], or without foot points.
+    /// (a closed trailing edge) are both pinned at their common point. No effect on exact
+    /// points (no noise), with [`FitOptions::pin_ends`], or without foot points.
     pub estimated_ends: bool,
     /// `s`: the bending weight grows with the noise estimated from the points,
     /// `lambda = (fairness + s (sigma / L)^2) n tau` (see [`estimate_noise`]; 0 for none).

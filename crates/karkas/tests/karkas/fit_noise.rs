@@ -175,7 +175,7 @@ fn ends_that_meet_are_held_at_one_point() {
 #[test]
 fn estimated_ends_move_along_the_tangent_only() {
     // Ends apart (the section without its last fifth, so the lower surface ends at
-    // x = 0.35): each pinned end differs from the free fit's end along the free fit's tangent
+    // x = 0.65): each pinned end differs from the free fit's end along the free fit's tangent
     // there (within the change of the tangent between the two fits).
     let mut points = noisy_section(3000, 1e-3, 21);
     points.truncate(2400);
