@@ -4,7 +4,7 @@
 //! ends as low as the cold start is tested next to it, in `fit/coarse.rs`.)
 
 use crate::fit_reference::noisy_spiral;
-use karkas::fit::{fit_curve, uniform_knots, CurveFit, FitOptions};
+use karkas::fit::{fit_curve, uniform_knots, FitOptions};
 use karkas::{Curve, Point2};
 
 /// The spiral of `noisy_spiral` without noise, at `s`.
@@ -68,9 +68,15 @@ fn a_dense_noisy_fit_lies_near_the_truth_with_ordered_parameters() {
     }
 }
 
-/// The fit's parameters are in order, and it lies within 0.35 sigma of the truth inside and
-/// within 2 sigma at the ends.
-fn assert_ordered_near_the_truth(fit: &CurveFit<2>, sigma: f64) {
+/// Fits `n` points of the spiral with noise 1e-3 (seed `seed`) on `knots` uniform knots with
+/// the defaults, and asserts that it took at most `max_steps` steps, that its parameters are
+/// in order, and that it lies within 0.35 sigma of the truth inside and within 2 sigma at
+/// the ends.
+fn assert_dense_fit(n: usize, seed: u64, knots: usize, max_steps: usize) {
+    let sigma = 1e-3;
+    let points = noisy_spiral(n, sigma, seed);
+    let fit = fit_curve(&points, &uniform_knots(knots), &FitOptions::default()).unwrap();
+    assert!(fit.iterations <= max_steps, "{} steps", fit.iterations);
     assert!(fit.parameters.windows(2).all(|w| w[0] <= w[1]));
     let inner = distance_to_truth(&fit.spline, 0.02, 0.98);
     assert!(inner < 0.35 * sigma, "{inner:e} from the truth");
@@ -84,11 +90,7 @@ fn the_free_phase_hands_over_once_its_steps_only_slide_the_points() {
     // the fit took 17 steps here. Handed over to the ordered phase once a free step lowers F
     // by less than 0.04 sigma^2 per coefficient (and 0.1% of F), it takes 4, and the curve
     // lies as near the truth (0.27 sigma inside, against 0.28).
-    let sigma = 1e-3;
-    let points = noisy_spiral(20_000, sigma, 11);
-    let fit = fit_curve(&points, &uniform_knots(401), &FitOptions::default()).unwrap();
-    assert!(fit.iterations <= 8, "{} steps", fit.iterations);
-    assert_ordered_near_the_truth(&fit, sigma);
+    assert_dense_fit(20_000, 11, 401, 8);
 }
 
 #[test]
@@ -98,9 +100,5 @@ fn ordered_steps_that_only_slide_the_foot_points_end_the_phase() {
     // that no longer moves. The phase ends once a step moves the curve across itself by less
     // than a tenth of its standard error: the fit took 14 steps here before the rule, 8 with
     // it.
-    let sigma = 1e-3;
-    let points = noisy_spiral(200_000, sigma, 13);
-    let fit = fit_curve(&points, &uniform_knots(4001), &FitOptions::default()).unwrap();
-    assert!(fit.iterations <= 9, "{} steps", fit.iterations);
-    assert_ordered_near_the_truth(&fit, sigma);
+    assert_dense_fit(200_000, 13, 4001, 9);
 }
