@@ -143,8 +143,8 @@ fn fit_bytes(points: usize, knots: usize, dim: usize) -> u128 {
 ///     The share s of the noise in the bending weight, ``lambda = (fairness + s (sigma /
 ///     L)^2) n tau`` with sigma the noise estimated from the points (the result's ``noise``),
 ///     L the size of the points and tau a factor for curves that wind (as ``karkas curve
-///     fit --smoothing``; 0 for none). Default (None): 0.1 on given knots, 0.3 with
-///     ``tolerance``.
+///     fit --smoothing``; 0 for none), its noise part falling off near the ends of the
+///     curve. Default (None): 0.1 on given knots, 0.3 with ``tolerance``.
 /// penalty : {"active", "paper"}, optional
 ///     How the penalty p is chosen when ``eps`` is given, as ``karkas curve fit --penalty``:
 ///     "active" (default) lowers p until the bound holds with equality (the constrained

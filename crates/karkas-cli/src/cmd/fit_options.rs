@@ -49,7 +49,7 @@ pub struct FitCurveOptions {
     pub fairness: f64,
     /// Smoothing s: the bending weight grows with the noise estimated from the points,
     /// lambda = (rho + s (sigma / L)^2) n tau (sigma the noise, L the size of the points;
-    /// 0 for none). Default 0.1 on given knots (--knots), 0.3 with --tolerance.
+    /// 0 for none), its noise part falling off near the ends of the curve. Default 0.1 on given knots (--knots), 0.3 with --tolerance.
     #[arg(long, value_name = "S")]
     pub smoothing: Option<f64>,
     /// Pin the ends of the curve to the first and last points (e.g. a profile closed at a

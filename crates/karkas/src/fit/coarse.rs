@@ -70,6 +70,7 @@ pub(crate) fn warm_start<const D: usize>(
 mod tests {
     use super::*;
     use crate::fit::knots::uniform_knots;
+    use crate::fit::problem::Taper;
     use crate::Point2;
 
     /// `n` points of a spiral with a deterministic noise of amplitude `noise`.
@@ -122,6 +123,7 @@ mod tests {
                 points: &points,
                 delta: &delta,
                 bending,
+                taper: Taper::NONE,
                 pins: None,
                 foot_points: true,
                 ordered: false,
@@ -148,6 +150,7 @@ mod tests {
             points: &points,
             delta: &delta,
             bending: 0.0,
+            taper: Taper::NONE,
             pins: None,
             foot_points: true,
             ordered: false,

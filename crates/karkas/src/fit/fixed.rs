@@ -196,8 +196,9 @@ fn piece_rows<const D: usize>(
         add(b, problem.points[i]);
     }
     if problem.bending > 0.0 {
-        let wm = (problem.bending * h).sqrt();
-        let wt = (problem.bending * h / 12.0).sqrt() * h;
+        let lambda = problem.bending_on(knots, k);
+        let wm = (lambda * h).sqrt();
+        let wt = (lambda * h / 12.0).sqrt() * h;
         add(hermite_basis(0.5, h, 2).map(|v| v * wm), Point::ZERO);
         add(hermite_basis(0.5, h, 3).map(|v| v * wt), Point::ZERO);
     }
@@ -283,6 +284,7 @@ pub(crate) fn solve_fixed<const D: usize>(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::fit::problem::Taper;
 
     /// The least-squares spline of `points` at `params` on `knots`, with the rows of each
     /// piece rotated into its factor first (`factored`) or streamed to the band solver.
@@ -332,6 +334,7 @@ mod tests {
                 points: &points,
                 delta: &delta,
                 bending: 1e-6,
+                taper: Taper::NONE,
                 pins,
                 foot_points: false,
                 ordered: false,

@@ -133,9 +133,9 @@ pub(crate) fn accumulate_gradient<const D: usize>(
             }
         }
     }
-    let lambda = problem.bending;
-    if lambda > 0.0 {
+    if problem.bending > 0.0 {
         for k in 0..knots.len() - 1 {
+            let lambda = problem.bending_on(knots, k);
             let g = bending_gram(knots[k + 1] - knots[k]);
             let q = piece_coefficients(spline, k);
             let base = 2 * k * D;

@@ -259,12 +259,18 @@ impl<const D: usize> HermiteSpline<D> {
     /// length `h` the second derivative is linear, and the integral is
     /// `h |R''(mid)|^2 + h^3 |R'''|^2 / 12`.
     pub fn bending_energy(&self) -> f64 {
+        self.bending_energy_by(|_, _| 1.0)
+    }
+
+    /// The bending energy with the piece `[a, b]` weighted by `share(a, b)`.
+    pub(crate) fn bending_energy_by(&self, share: impl Fn(f64, f64) -> f64) -> f64 {
         (0..self.pieces())
             .map(|k| {
-                let h = self.knots[k + 1] - self.knots[k];
+                let (a, b) = (self.knots[k], self.knots[k + 1]);
+                let h = b - a;
                 let mid = self.deriv_on_piece(k, 0.5, 2).norm_sq();
                 let third = self.deriv_on_piece(k, 0.5, 3).norm_sq();
-                h * mid + h * h * h / 12.0 * third
+                share(a, b) * (h * mid + h * h * h / 12.0 * third)
             })
             .sum()
     }

@@ -191,7 +191,6 @@ impl<const D: usize> NewtonModel<D> {
                 k_mat.add(i, j, value);
             }
         };
-        let lambda = problem.bending;
         for k in 0..knots.len() - 1 {
             let base = 2 * k * D;
             let sep = &self.separable[16 * k..16 * k + 16];
@@ -201,6 +200,7 @@ impl<const D: usize> NewtonModel<D> {
                 &self.coupled
             };
             let block = &coupled[w4 * w4 * k..w4 * w4 * (k + 1)];
+            let lambda = problem.bending_on(knots, k);
             let g = if lambda > 0.0 {
                 bending_gram(knots[k + 1] - knots[k])
             } else {

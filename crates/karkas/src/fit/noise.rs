@@ -23,7 +23,8 @@
 //! 64 of the points, so that the noise does not count): the pull of the term on the shape is
 //! about `lambda / n |R''''(t)|`, which grows as the fourth power of the turning, so `tau`
 //! keeps it the same share of the size on a curve that winds three times as on one that
-//! turns once. All three factors are invariant under scaling of the coordinates.
+//! turns once. All three factors are invariant under scaling of the coordinates. The noise
+//! part falls off towards the ends of the curve (see `problem::Taper`).
 
 use crate::Point;
 use std::f64::consts::PI;
@@ -53,6 +54,12 @@ impl NoiseEstimate {
     /// `lambda` for `n` points on `pieces` pieces with the fairness floor `rho` and the
     /// smoothing `s` (see the module documentation).
     pub fn bending_weight(&self, n: usize, pieces: usize, rho: f64, s: f64) -> f64 {
+        let (fairness, smoothing) = self.bending_parts(n, pieces, rho, s);
+        fairness + smoothing
+    }
+
+    /// The two parts of `lambda`: the fairness floor's and the noise's.
+    pub fn bending_parts(&self, n: usize, pieces: usize, rho: f64, s: f64) -> (f64, f64) {
         let relative = if self.size > 0.0 {
             self.sigma / self.size
         } else {
@@ -61,7 +68,8 @@ impl NoiseEstimate {
         let per_piece = n as f64 / pieces.max(1) as f64;
         let floor = rho * (SPARSE_POINTS_PER_PIECE / per_piece).min(1.0).powi(2);
         let noise = s * (NOISY_POINTS_PER_PIECE / per_piece).min(1.0).powi(2) * relative * relative;
-        (floor + noise) * n as f64 * self.turning_factor()
+        let scale = n as f64 * self.turning_factor();
+        (floor * scale, noise * scale)
     }
 }
 

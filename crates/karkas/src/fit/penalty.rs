@@ -38,7 +38,7 @@ use super::hermite::HermiteSpline;
 use super::knots::{check_knots, start_parameters_for, StartParameters};
 use super::noise::{estimate_noise, NoiseEstimate};
 use super::power::PowerForm;
-use super::problem::{Problem, State};
+use super::problem::{Problem, State, Taper};
 use super::result::CurveFit;
 use super::solver::{Penalty, Solver, Stop};
 use super::unit_scale::UnitScale;
@@ -165,13 +165,14 @@ pub struct FitOptions {
     /// points (no noise), with [`FitOptions::pin_ends`], or without foot points.
     pub estimated_ends: bool,
     /// `s`: the bending weight grows with the noise estimated from the points,
-    /// `lambda = (fairness + s (sigma / L)^2) n tau` (see [`estimate_noise`]; 0 for none).
-    /// Noise makes the fit follow it with the freedom of a defect-2 spline (two coefficients
+    /// `lambda = (fairness + s (sigma / L)^2) n tau` (see [`estimate_noise`]; 0 for none), the
+    /// noise part falling off over the last stretch at either end (docs/methods.md §4, "The
+    /// smoothing falls off at the ends"). Noise makes the fit follow it with the freedom of a defect-2 spline (two coefficients
     /// per knot); the term evens that out in proportion to the noise, and vanishes on exact
     /// points. `None` (the default): [`DEFAULT_SMOOTHING`] (0.1) on given knots,
     /// [`TOLERANCE_SMOOTHING`] (0.3) in the tolerance mode. On given knots less smoothing
-    /// brings a noisy fit closer to the true curve (the term's pull at the ends and its bias
-    /// across the curve grow with it); the tolerance mode places its knots where the points
+    /// brings a noisy fit closer to the true curve (the term's bias across the curve grows
+    /// with it); the tolerance mode places its knots where the points
     /// are farthest, and there more smoothing keeps wavy coordinates from making the curve
     /// turn to and fro.
     pub smoothing: Option<f64>,
@@ -365,15 +366,17 @@ pub(crate) fn fit_checked<const D: usize>(
     noise: &NoiseEstimate,
 ) -> Result<CurveFit<D>> {
     let noise = *noise;
+    let (fairness, smoothing) = noise.bending_parts(
+        points.len(),
+        knots.len() - 1,
+        options.fairness,
+        options.smoothing.unwrap_or(DEFAULT_SMOOTHING),
+    );
     let mut problem = Problem {
         points,
         delta: weights,
-        bending: noise.bending_weight(
-            points.len(),
-            knots.len() - 1,
-            options.fairness,
-            options.smoothing.unwrap_or(DEFAULT_SMOOTHING),
-        ),
+        bending: fairness + smoothing,
+        taper: Taper::towards_ends(fairness, smoothing, points.len()),
         pins: options
             .pin_ends
             .then(|| [points[0], points[points.len() - 1]]),
@@ -394,9 +397,11 @@ pub(crate) fn fit_checked<const D: usize>(
     );
     let mut iterations = 0;
     let bending_weight = problem.bending;
+    let taper = problem.taper;
     let finish = |state: State<D>, p: f64, seed_bound: f64, iterations: usize| CurveFit {
         jump_sum: state.spline.jump_penalty(weights),
-        bending_energy: state.spline.bending_energy(),
+        bending_energy: state.spline.bending_energy_by(|a, b| taper.share(a, b)),
+        bending_shares: knots.windows(2).map(|w| taper.share(w[0], w[1])).collect(),
         bending_weight,
         data_term: state.data_term(),
         distances: state.dist_sq.iter().map(|d| d.sqrt()).collect(),
@@ -686,6 +691,6 @@ fn feasible_reference<const D: usize>(
     };
     let mut form = PowerForm::new(&lifted.spline);
     super::project_all::project(problem.points, problem.projection(), &mut lifted, &mut form);
-    let value = lifted.data_term() + problem.bending * lifted.spline.bending_energy();
+    let value = lifted.data_term() + problem.bending_term(&lifted.spline);
     (value, lifted)
 }

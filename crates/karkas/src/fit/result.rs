@@ -27,8 +27,13 @@ pub struct CurveFit<const D: usize> {
     pub weights: Vec<f64>,
     /// `lambda`, the weight of the bending energy (see [`estimate_noise`](super::estimate_noise)).
     pub bending_weight: f64,
-    /// `S = int |R''(t)|^2 dt` achieved.
+    /// `S` achieved: the bending energy `int |R''(t)|^2 dt` with each piece's share weighted
+    /// by [`CurveFit::bending_shares`] (the plain energy when every share is 1).
     pub bending_energy: f64,
+    /// The share of `lambda` on each piece: 1 away from the ends, less towards them where the
+    /// noise part of the weight falls off (docs/methods.md §4, "The smoothing falls off at the
+    /// ends").
+    pub bending_shares: Vec<f64>,
     /// Inner iterations done in all.
     pub iterations: usize,
     /// The noise, size and turning of the points (see [`estimate_noise`](super::estimate_noise)).

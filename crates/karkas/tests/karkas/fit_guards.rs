@@ -30,6 +30,7 @@ fn fit_around(spline: HermiteSpline<2>, points: &[Point2], parameters: Vec<f64>)
         weights: vec![0.0; spline.knots().len()],
         bending_weight: 0.0,
         bending_energy: 0.0,
+        bending_shares: vec![1.0; spline.pieces()],
         iterations: 0,
         noise: estimate_noise(points),
         warnings: Vec::new(),

@@ -215,7 +215,9 @@ fn the_bending_term_is_the_integral_of_the_squared_second_derivative() {
                 let h = KNOTS[piece + 1] - KNOTS[piece];
                 let (a, b) = ends(&bezier[j][piece], h);
                 let (c, d) = ends(&bezier[k][piece], h);
-                *entry += h / 6.0 * (2.0 * a * c + a * d + b * c + 2.0 * b * d);
+                // Each piece weighted by its share of lambda, as the fit reports it.
+                let share = fit.bending_shares[piece];
+                *entry += share * h / 6.0 * (2.0 * a * c + a * d + b * c + 2.0 * b * d);
             }
         }
     }

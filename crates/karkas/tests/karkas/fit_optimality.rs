@@ -303,14 +303,15 @@ pub(crate) fn relative_gradient(fit: &CurveFit<2>, points: &[Point2], pinned_end
                     g += term;
                     size += term.abs();
                 }
-                // lambda int |R''|^2: R'' is linear on a piece, so the integral of R'' . U''
-                // over a piece of length h is h/6 (2 a.a' + a.b' + b.a' + 2 b.b').
+                // lambda int |R''|^2, each piece's share of lambda as the fit reports it: R''
+                // is linear on a piece, so the integral of R'' . U'' over a piece of length h
+                // is h/6 (2 a.a' + a.b' + b.a' + 2 b.b').
                 let unit_bends = second_derivatives(&knots, &unit_v, &unit_d);
                 for (k, ([a, b], [ua, ub])) in bends.iter().zip(&unit_bends).enumerate() {
                     let h = knots[k + 1] - knots[k];
                     let integral =
                         h / 6.0 * (2.0 * a.dot(*ua) + a.dot(*ub) + b.dot(*ua) + 2.0 * b.dot(*ub));
-                    let term = 2.0 * fit.bending_weight * integral;
+                    let term = 2.0 * fit.bending_weight * fit.bending_shares[k] * integral;
                     g += term;
                     size += term.abs();
                 }
