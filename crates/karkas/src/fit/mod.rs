@@ -22,8 +22,8 @@
 //!   the foot-point parameters are kept in the order of the points, the noise is estimated
 //!   from the points and the bending weight made dimensionless (size, turning, points per
 //!   piece) and proportional to the noise (its noise part falling off at the ends, where the
-//!   term's natural end condition would pull the curve), the open ends are held on their tangent lines
-//!   where the points towards them say they lie, or at one point where they meet
+//!   term's natural end condition would pull the curve), the open ends are held on their
+//!   tangent lines where the points towards them say they lie, or at one point where they meet
 //!   ([`FitOptions::estimated_ends`]); the result carries the estimate and
 //!   [`FitWarning`]s from the shape guards ([`shape_warnings`]: crossings, excess turning,
 //!   sparse pieces, empty spans; docs/methods.md §4, "On real and noisy data").

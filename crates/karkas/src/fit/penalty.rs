@@ -167,12 +167,12 @@ pub struct FitOptions {
     /// `s`: the bending weight grows with the noise estimated from the points,
     /// `lambda = (fairness + s (sigma / L)^2) n tau` (see [`estimate_noise`]; 0 for none), the
     /// noise part falling off over the last stretch at either end (docs/methods.md §4, "The
-    /// smoothing falls off at the ends"). Noise makes the fit follow it with the freedom of a defect-2 spline (two coefficients
-    /// per knot); the term evens that out in proportion to the noise, and vanishes on exact
-    /// points. `None` (the default): [`DEFAULT_SMOOTHING`] (0.1) on given knots,
-    /// [`TOLERANCE_SMOOTHING`] (0.3) in the tolerance mode. On given knots less smoothing
-    /// brings a noisy fit closer to the true curve (the term's bias across the curve grows
-    /// with it); the tolerance mode places its knots where the points
+    /// smoothing falls off at the ends"). Noise makes the fit follow it with the freedom of a
+    /// defect-2 spline (two coefficients per knot); the term evens that out in proportion to
+    /// the noise, and vanishes on exact points. `None` (the default): [`DEFAULT_SMOOTHING`]
+    /// (0.1) on given knots, [`TOLERANCE_SMOOTHING`] (0.3) in the tolerance mode. On given
+    /// knots less smoothing brings a noisy fit closer to the true curve (the term's bias
+    /// across the curve grows with it); the tolerance mode places its knots where the points
     /// are farthest, and there more smoothing keeps wavy coordinates from making the curve
     /// turn to and fro.
     pub smoothing: Option<f64>,
