@@ -48,7 +48,7 @@ pub fn write_curve_samples<const D: usize>(
             out.write_all(crate::write::curve_csv_header(D).as_bytes())?;
         }
         let (mut ts, mut points) = (Vec::new(), Vec::new());
-        let mut bytes = Vec::new();
+        let (mut bytes, mut texts) = (Vec::new(), Vec::new());
         for first in (0..n).step_by(BLOCK) {
             let count = BLOCK.min(n - first);
             ts.clear();
@@ -59,7 +59,7 @@ pub fn write_curve_samples<const D: usize>(
             if format == OutputFormat::Npy {
                 npy::write_points(out, &points, &mut bytes)?;
             } else {
-                write_rows(out, &ts, |k, text| {
+                write_rows(out, &ts, &mut texts, |k, text| {
                     push_row(text, std::iter::once(ts[k]).chain(points[k].0));
                 })?;
             }
@@ -81,6 +81,8 @@ pub fn write_surface_samples(
     let (domain_u, domain_v) = (surface.domain_u(), surface.domain_v());
     let vs: Vec<f64> = (0..nv).map(|k| domain_v.uniform(k, nv)).collect();
     let rows_per_block = (BLOCK / nv.max(1)).max(1);
+    // Each `v` is written on every row of samples, each `u` on `nv` lines: formatted once.
+    let v_texts = NumberTexts::of(&vs);
     write_atomic(path, |out| {
         if format == OutputFormat::Npy {
             out.write_all(&npy::header(&[nu, nv, 3]))?;
@@ -91,7 +93,7 @@ pub fn write_surface_samples(
             return Ok(());
         }
         let (mut us, mut points) = (Vec::new(), Vec::new());
-        let mut bytes = Vec::new();
+        let (mut bytes, mut texts) = (Vec::new(), Vec::new());
         for first in (0..nu).step_by(rows_per_block) {
             let rows = rows_per_block.min(nu - first);
             us.clear();
@@ -102,9 +104,16 @@ pub fn write_surface_samples(
             if format == OutputFormat::Npy {
                 npy::write_points(out, &points, &mut bytes)?;
             } else {
-                write_rows(out, &points, |k, text| {
-                    let (u, v) = (us[k / nv], vs[k % nv]);
-                    push_row(text, [u, v].into_iter().chain(points[k].0));
+                let u_texts = NumberTexts::of(&us);
+                write_rows(out, &points, &mut texts, |k, text| {
+                    text.extend_from_slice(u_texts.get(k / nv));
+                    text.push(b',');
+                    text.extend_from_slice(v_texts.get(k % nv));
+                    for v in points[k].0 {
+                        text.push(b',');
+                        crate::shortest::push(text, v);
+                    }
+                    text.push(b'\n');
                 })?;
             }
         }
@@ -114,24 +123,61 @@ pub fn write_surface_samples(
 
 /// Formats the rows `0..items.len()` of a block with `row` (which appends row `k` to a
 /// buffer) in parallel chunks, and writes the chunks to `out` in order.
+///
+/// The chunks' buffers are `texts`, kept from block to block: their pages are reused, not
+/// fresh (and zeroed by the system) for every block.
 fn write_rows<T: Sync>(
     out: &mut dyn Write,
     items: &[T],
+    texts: &mut Vec<Vec<u8>>,
     row: impl Fn(usize, &mut Vec<u8>) + Sync,
 ) -> io::Result<()> {
-    let chunks: Vec<Vec<u8>> = (0..items.len().div_ceil(CHUNK))
-        .into_par_iter()
-        .map(|chunk| {
+    let chunks = items.len().div_ceil(CHUNK);
+    if texts.len() < chunks {
+        texts.resize_with(chunks, Vec::new);
+    }
+    texts[..chunks]
+        .par_iter_mut()
+        .enumerate()
+        .for_each(|(chunk, text)| {
             let first = chunk * CHUNK;
             let end = (first + CHUNK).min(items.len());
-            let mut text = Vec::with_capacity((end - first) * 96);
+            text.clear();
+            text.reserve((end - first) * 96);
             for k in first..end {
-                row(k, &mut text);
+                row(k, text);
             }
-            text
-        })
-        .collect();
-    chunks.iter().try_for_each(|text| out.write_all(text))
+        });
+    texts[..chunks]
+        .iter()
+        .try_for_each(|text| out.write_all(text))
+}
+
+/// Numbers formatted once ([`crate::shortest`]) and written many times.
+struct NumberTexts {
+    bytes: Vec<u8>,
+    /// Where each number's text ends in `bytes`.
+    ends: Vec<usize>,
+}
+
+impl NumberTexts {
+    fn of(values: &[f64]) -> Self {
+        let mut bytes = Vec::with_capacity(values.len() * 24);
+        let ends = values
+            .iter()
+            .map(|&v| {
+                crate::shortest::push(&mut bytes, v);
+                bytes.len()
+            })
+            .collect();
+        NumberTexts { bytes, ends }
+    }
+
+    /// The text of number `k`.
+    fn get(&self, k: usize) -> &[u8] {
+        let start = if k == 0 { 0 } else { self.ends[k - 1] };
+        &self.bytes[start..self.ends[k]]
+    }
 }
 
 /// Appends one CSV row of `values` (comma-separated, `\n`-ended) to `text`.
