@@ -1,5 +1,6 @@
 //! Data-parallel batches: large evaluation and grid jobs are split into chunks that rayon
-//! runs on all cores; small ones stay on the calling thread (no scheduling overhead).
+//! runs on all cores; small ones stay on the calling thread (no scheduling overhead), and so
+//! does every batch when rayon's pool has one thread ([`worth_splitting`]).
 //!
 //! Every chunk is computed by the same serial kernel as a small batch, so results do not
 //! depend on the number of threads (bitwise). Threads come from rayon's global pool
@@ -9,6 +10,14 @@ use rayon::prelude::*;
 
 /// Batches with fewer items than this run serially.
 pub(crate) const PARALLEL_THRESHOLD: usize = 1 << 15;
+
+/// True when a batch of `n` items is split among threads: at least [`PARALLEL_THRESHOLD`]
+/// items, and more than one thread in rayon's pool. With one thread (`RAYON_NUM_THREADS=1`)
+/// a parallel call would only hand the work to the pool's one worker and wait for it, a
+/// wake-up and a sleep of two threads per call; the calling thread does it instead.
+pub(crate) fn worth_splitting(n: usize) -> bool {
+    n >= PARALLEL_THRESHOLD && rayon::current_num_threads() > 1
+}
 
 /// Parts a reduction over many items is split into (sums, pooled runs): fixed, not one per
 /// thread, so that the result does not depend on the number of threads.
@@ -30,7 +39,7 @@ pub(crate) fn for_each_chunk<T: Send>(
     out: &mut [T],
     kernel: impl Fn(&[f64], &mut [T]) + Sync,
 ) {
-    if out.len() < PARALLEL_THRESHOLD {
+    if !worth_splitting(out.len()) {
         kernel(ts, out);
     } else {
         out.par_chunks_mut(CHUNK)
@@ -49,7 +58,7 @@ pub(crate) fn for_each_row_block<T: Send>(
 ) {
     let row_len = row_len.max(1);
     let rows = out.len() / row_len;
-    if out.len() < PARALLEL_THRESHOLD || rows < 2 {
+    if !worth_splitting(out.len()) || rows < 2 {
         kernel(0, out);
     } else {
         let rows_per_block = (CHUNK / row_len).max(1).min(rows.div_ceil(8).max(1));

@@ -29,7 +29,7 @@ use realfft::{ComplexToReal, RealFftPlanner, RealToComplex};
 use rayon::prelude::*;
 
 use super::period::check_period;
-use crate::core::parallel::PARALLEL_THRESHOLD;
+use crate::core::parallel::worth_splitting;
 use crate::{Error, Point, Result};
 
 /// A reusable solver of the interpolation problem `S_r(l n) = z(l)`, `l` in `0..m`, for one
@@ -216,7 +216,7 @@ fn symbol(m: usize, n: usize, order: usize) -> Vec<f64> {
         sum
     };
     // Every k is independent: large symbols are computed in parallel (same values).
-    if (m / 2) * n < PARALLEL_THRESHOLD {
+    if !worth_splitting((m / 2) * n) {
         (0..=m / 2).map(term).collect()
     } else {
         (0..m / 2 + 1)

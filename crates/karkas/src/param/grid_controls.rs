@@ -19,10 +19,11 @@
 //! The sweeps take `width` lines stored k-major (the `k`-th value of every line side by
 //! side): independent chains that the processor overlaps and vectorizes. Columns are gathered
 //! in blocks ([`COLUMN_BLOCK`] wide, in parallel waves of one per thread, so the buffers in
-//! flight stay a small part of the grid), rows [`ROW_BLOCK`] at a time. Every line gets the
+//! flight stay a small part of the grid; one after another on the calling thread when the
+//! pool has one thread), rows [`ROW_BLOCK`] at a time. Every line gets the
 //! same arithmetic as when converted alone, so the net does not depend on blocks or threads.
 
-use crate::core::parallel::PARALLEL_THRESHOLD;
+use crate::core::parallel::{worth_splitting, PARALLEL_THRESHOLD};
 use crate::core::Grid;
 use crate::spline::SlopeSystem;
 use crate::Point;
@@ -69,14 +70,20 @@ fn u_step<const D: usize>(
         hermite_to_controls(knots, &mut lines, &slopes, width);
         lines
     };
-    if rows * cols < PARALLEL_THRESHOLD || cols < 2 * COLUMN_BLOCK {
-        let lines = block(0, cols);
-        for (row, coefficients) in net.chunks_exact_mut(stride).zip(lines.chunks_exact(cols)) {
-            row[..cols].copy_from_slice(coefficients);
+    let small = rows * cols < PARALLEL_THRESHOLD || cols < 2 * COLUMN_BLOCK;
+    let widths = if small { cols } else { COLUMN_BLOCK };
+    let starts: Vec<usize> = (0..cols).step_by(widths).collect();
+    if small || !worth_splitting(rows * cols) {
+        // One block, or the blocks one after the other (cache-sized) on the calling thread.
+        for &a in &starts {
+            let width = widths.min(cols - a);
+            let lines = block(a, width);
+            for (row, coefficients) in net.chunks_exact_mut(stride).zip(lines.chunks_exact(width)) {
+                row[a..a + width].copy_from_slice(coefficients);
+            }
         }
         return;
     }
-    let starts: Vec<usize> = (0..cols).step_by(COLUMN_BLOCK).collect();
     let wave = rayon::current_num_threads().max(1);
     for starts in starts.chunks(wave) {
         let blocks: Vec<Vec<Point<D>>> = starts
@@ -114,7 +121,7 @@ fn v_step<const D: usize>(system: &SlopeSystem, knots: &[f64], net: &mut [Point<
         }
     };
     let span = ROW_BLOCK * stride;
-    if net.len() < PARALLEL_THRESHOLD {
+    if !worth_splitting(net.len()) {
         let mut buffers = scratch();
         net.chunks_mut(span)
             .for_each(|rows| block(&mut buffers, rows));

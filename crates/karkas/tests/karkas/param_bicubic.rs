@@ -388,6 +388,50 @@ fn large_grids_match_line_splines_and_grid_evaluation_is_point_evaluation() {
 }
 
 #[test]
+fn large_surfaces_do_not_depend_on_the_thread_count() {
+    // Above the parallel threshold: with one thread the work runs on the calling thread,
+    // with more it is split; the net and a grid evaluation are the same bits either way.
+    let (n, m) = (260, 230);
+    let grid = Grid::from_fn(n, m, |i, j| {
+        let (x, y) = (i as f64 / n as f64, j as f64 / m as f64);
+        Point3::new([
+            x + 0.2 * x * x,
+            y + 0.05 * (3.0 * x).sin(),
+            (6.0 * x).sin() * (4.0 * y).cos(),
+        ])
+    });
+    let on = |threads: usize| {
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .expect("a thread pool");
+        pool.install(|| {
+            let s = BicubicSurface::new(&grid, GridParameterization::default(), false, false)
+                .expect("valid grid");
+            let (du, dv) = (s.domain_u(), s.domain_v());
+            let us: Vec<f64> = (0..401).map(|k| du.uniform(k, 401)).collect();
+            let vs: Vec<f64> = (0..333).map(|k| dv.uniform(k, 333)).collect();
+            let mut out = vec![Point3::ZERO; us.len() * vs.len()];
+            s.eval_grid_into(&us, &vs, &mut out);
+            let bits: Vec<u64> = out.iter().flat_map(|p| p.0.map(f64::to_bits)).collect();
+            (s, bits)
+        })
+    };
+    let (one, one_bits) = on(1);
+    for threads in [2, 3] {
+        let (other, other_bits) = on(threads);
+        assert!(
+            one == other,
+            "the surface on 1 and {threads} threads differs"
+        );
+        assert!(
+            one_bits == other_bits,
+            "the grid evaluation on 1 and {threads} threads differs"
+        );
+    }
+}
+
+#[test]
 fn knots_a_subnormal_gap_apart_are_refused() {
     // Found by the `splines` fuzz target: the surface was built and evaluated to NaN.
     let grid = Grid::from_fn(2, 2, |i, j| {
