@@ -29,9 +29,10 @@ pub fn push(out: &mut Vec<u8>, v: f64) {
     let mut buffer = ryu::Buffer::new();
     let text = buffer.format_finite(v).as_bytes();
     // The commonest case, taken without looking at the text: `ryu` writes a plain decimal
-    // for 1e-5 <= |v| < 1e16, and a tie needs `v`'s lowest set bit at 2^-(f + 1) for the
-    // f digits after the point, while a value whose lowest bit lies below 2^-len has more
-    // binary places than the text has characters: no tie, no `.0` of a whole number.
+    // for 1e-5 <= |v| < 1e16 (the range here stays a decade inside, whatever the rounding
+    // of the digits), and a tie needs `v`'s lowest set bit at 2^-(f + 1) for the f digits
+    // after the point, while a value whose lowest bit lies below 2^-len has more binary
+    // places than the text has characters: no tie, and no `.0` of a whole number.
     if (1e-4..1e15).contains(&v.abs()) && lowest_bit(v) < -(text.len() as i64) {
         out.extend_from_slice(text);
         return;
@@ -207,7 +208,6 @@ mod tests {
             9.999999999999999e-5,
             999_999_999_999_999.9,
             999_999_999_999_999.5,
-            1e15,
             -0.1,
             -123.456,
             1e15,

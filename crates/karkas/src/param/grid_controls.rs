@@ -20,8 +20,8 @@
 //! side): independent chains that the processor overlaps and vectorizes. Columns are gathered
 //! in blocks ([`COLUMN_BLOCK`] wide, in parallel waves of one per thread, so the buffers in
 //! flight stay a small part of the grid; one after another on the calling thread when the
-//! pool has one thread), rows [`ROW_BLOCK`] at a time. Every line gets the
-//! same arithmetic as when converted alone, so the net does not depend on blocks or threads.
+//! pool has one thread), rows [`ROW_BLOCK`] at a time. Every line gets the same arithmetic as
+//! when converted alone, so the net does not depend on blocks or threads.
 
 use crate::core::parallel::{worth_splitting, PARALLEL_THRESHOLD};
 use crate::core::Grid;
