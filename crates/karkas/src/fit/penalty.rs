@@ -400,7 +400,7 @@ pub(crate) fn fit_checked<const D: usize>(
     let taper = problem.taper;
     let finish = |state: State<D>, p: f64, seed_bound: f64, iterations: usize| CurveFit {
         jump_sum: state.spline.jump_penalty(weights),
-        bending_energy: state.spline.bending_energy_by(|a, b| taper.share(a, b)),
+        bending_energy: taper.bending_energy(&state.spline),
         bending_shares: knots.windows(2).map(|w| taper.share(w[0], w[1])).collect(),
         bending_weight,
         data_term: state.data_term(),

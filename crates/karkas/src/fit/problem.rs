@@ -78,6 +78,11 @@ impl Taper {
         let r = (mid.min(1.0 - mid).max(0.0) / self.length).min(1.0);
         self.floor + (1.0 - self.floor) * r * r
     }
+
+    /// `S`, the bending energy of `spline` with each piece weighted by its share.
+    pub fn bending_energy<const D: usize>(&self, spline: &HermiteSpline<D>) -> f64 {
+        spline.bending_energy_by(|a, b| self.share(a, b))
+    }
 }
 
 impl<const D: usize> Problem<'_, D> {
@@ -90,7 +95,7 @@ impl<const D: usize> Problem<'_, D> {
     /// `lambda S`, the bending term of `spline`, each piece weighted by its share.
     pub fn bending_term(&self, spline: &HermiteSpline<D>) -> f64 {
         if self.bending > 0.0 {
-            self.bending * spline.bending_energy_by(|a, b| self.taper.share(a, b))
+            self.bending * self.taper.bending_energy(spline)
         } else {
             0.0
         }
