@@ -25,9 +25,9 @@
 //!
 //! A fit that crosses itself or turns more than its points (a hook past a sharp trailing
 //! edge, a loop between sparse points) is made sound where possible: more smoothing on its
-//! knots, the same knots from the starting parameters, knots added at the faults, or a knot
-//! taken out beside an empty span (see `faults`); a fit that met the tolerance stays within
-//! it.
+//! knots, the same knots from the starting parameters, uniform knots up to the cap, knots
+//! added at the faults, or a knot taken out beside an empty span (see `faults`); a fit that
+//! met the tolerance stays within it.
 //!
 //! When the tolerance is met on a small problem (points times knots at most 2e5), the knots
 //! it does not need are taken out again one at a time (see `prune`).
@@ -42,7 +42,7 @@
 
 use super::faults::sound_fit;
 use super::guards::with_warnings;
-use super::knots::{start_parameters_for, uniform_knots, warm_parameters, MIN_KNOT_SPACING};
+use super::knots::{start_parameters_for, uniform_with_corners, warm_parameters};
 use super::noise::estimate_noise;
 use super::penalty::{
     check_inputs, check_settings, fit_checked, in_fit_units, FitOptions, TOLERANCE_SMOOTHING,
@@ -202,6 +202,7 @@ fn adaptive_rounds<const D: usize>(
     options: &FitOptions,
 ) -> Result<(CurveFit<D>, AdaptiveStop, usize)> {
     let asked = options.smoothing.unwrap_or(TOLERANCE_SMOOTHING);
+    let iterations = options.max_iterations;
     // The smoothing is sized by the noise estimated from the points: a tolerance below twice
     // that estimate asks for a curve closer to the points than the smoothing would let it
     // come (and on sparse points the estimate is partly the curve's own bending).
@@ -245,7 +246,7 @@ fn adaptive_rounds<const D: usize>(
             best = kept;
         }
     }
-    best = sound_fit(points, tolerance, options, asked, cap, best)?;
+    best = sound_fit(points, tolerance, options, asked, cap, iterations, best)?;
     if stop == AdaptiveStop::Met {
         best = prune(points, tolerance, options, best, warm_parameters)?;
     }
@@ -327,13 +328,5 @@ fn refine<const D: usize>(
 
 /// The first knots: a few uniform ones (up to 4 pieces, one per four points) and the corners.
 fn first_knots(points: usize, corners: &[f64]) -> Vec<f64> {
-    let pieces = (points / 4).clamp(1, 4);
-    let mut knots = uniform_knots(pieces + 1);
-    for &corner in corners {
-        knots.retain(|&k| (k - corner).abs() >= MIN_KNOT_SPACING || k == 0.0 || k == 1.0);
-        knots.push(corner);
-    }
-    knots.sort_by(f64::total_cmp);
-    knots.dedup();
-    knots
+    uniform_with_corners((points / 4).clamp(1, 4) + 1, corners)
 }

@@ -244,6 +244,19 @@ pub(crate) fn warm_parameters(parameters: &[f64]) -> Vec<f64> {
     start
 }
 
+/// `count` uniform knots with the corners put in (a uniform knot closer than
+/// [`MIN_KNOT_SPACING`] to a corner gives way to it).
+pub(crate) fn uniform_with_corners(count: usize, corners: &[f64]) -> Vec<f64> {
+    let mut knots = uniform_knots(count);
+    for &corner in corners {
+        knots.retain(|&k| (k - corner).abs() >= MIN_KNOT_SPACING || k == 0.0 || k == 1.0);
+        knots.push(corner);
+    }
+    knots.sort_by(f64::total_cmp);
+    knots.dedup();
+    knots
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -227,3 +227,77 @@ fn a_loop_at_a_sharp_leading_edge_is_repaired_with_more_bending_on_finer_knots()
     assert!(faults.is_empty(), "{faults:?}");
     assert!(adaptive.fit.max_distance() <= 1e-4);
 }
+
+/// The GOE 114 section as the airfoil collection of the corpus gives it: 33 points, upper
+/// surface first, a leading edge that turns 125 degrees at one point.
+const GOE114: [[f64; 2]; 33] = [
+    [1.0, 0.0],
+    [0.94964, 0.01022],
+    [0.8993, 0.01995],
+    [0.79866, 0.03809],
+    [0.69808, 0.05434],
+    [0.59764, 0.067],
+    [0.49736, 0.07476],
+    [0.39726, 0.07762],
+    [0.29738, 0.0741],
+    [0.19782, 0.06168],
+    [0.14818, 0.05163],
+    [0.09862, 0.03918],
+    [0.07386, 0.03231],
+    [0.04919, 0.02294],
+    [0.02454, 0.01307],
+    [0.01225, 0.00713],
+    [0.0, 0.0],
+    [0.01271, -0.00585],
+    [0.02534, -0.00971],
+    [0.05058, -0.01651],
+    [0.07575, -0.02133],
+    [0.10087, -0.02474],
+    [0.15097, -0.02747],
+    [0.201, -0.0282],
+    [0.30075, -0.02118],
+    [0.40038, -0.01067],
+    [0.50016, -0.00464],
+    [0.60002, -0.00062],
+    [0.69997, 0.00091],
+    [0.79995, 0.00134],
+    [0.89998, 0.00067],
+    [0.94999, 0.00033],
+    [1.0, 0.0],
+];
+
+/// The knots the tolerance mode ends on for GOE 114 without the uniform knots (placed where
+/// the deviation was largest).
+const GOE114_REFINED: [f64; 10] = [
+    0.0,
+    0.11300558981435423,
+    0.25,
+    0.38925666871944825,
+    0.42892609317433245,
+    0.5,
+    0.6757066847988222,
+    0.75,
+    0.8125,
+    1.0,
+];
+
+#[test]
+fn a_hook_at_a_sparse_sharp_leading_edge_is_repaired_with_uniform_knots() {
+    let points: Vec<Point2> = GOE114.iter().map(|&p| Point2::new(p)).collect();
+    // The premise: on the refined knots, short ones at the leading edge beside a long piece,
+    // the curve turns too much there.
+    let plain = fit_curve(&points, &GOE114_REFINED, &FitOptions::default()).unwrap();
+    assert!(!shape_faults(&plain.warnings).is_empty());
+    // The tolerance mode gives a sound fit within the cap of one knot per two points, and
+    // its curve rounds the leading edge instead of looping 3.5e-3 ahead of it.
+    let adaptive = fit_curve_adaptive(&points, 1e-4, &FitOptions::default()).unwrap();
+    assert!(adaptive.tolerance_met);
+    assert!(adaptive.fit.max_distance() <= 1e-4);
+    let faults = shape_faults(&adaptive.fit.warnings);
+    assert!(faults.is_empty(), "{faults:?}");
+    assert!(adaptive.fit.spline.knots().len() <= points.len() / 2);
+    let ahead = (0..=40_000)
+        .map(|i| karkas::Curve::eval(&adaptive.fit.spline, i as f64 / 40_000.0).0[0])
+        .fold(f64::INFINITY, f64::min);
+    assert!(ahead >= -2e-3, "the curve reaches x = {ahead}");
+}
