@@ -6,8 +6,8 @@
 //!
 //! 1. more smoothing on the same knots ([`FAULT_SMOOTHING`]): it evens out a wiggle that the
 //!    knots allow between sparse points, at no cost in coefficients; then the same knots
-//!    from the starting parameters (chord lengths by default), as a loop made while the knots were
-//!    coarse can stay in the foot parameters carried from round to round;
+//!    from the starting parameters (chord lengths by default), as a loop made while the
+//!    knots were coarse can stay in the foot parameters carried from round to round;
 //! 2. uniform knots, as many as the fit has and then one more at a time up to the cap of
 //!    one knot per two points, each count fitted with no smoothing from the starting
 //!    parameters and then from centripetal ones: the refinement puts its knots where the
@@ -36,8 +36,8 @@
 //! pruning of the tolerance mode), 6 with as many and 6 with one to three more.
 //!
 //! The first fit without faults whose largest deviation is within the tolerance (or, when
-//! the tolerance was not met, at most [`UNMET_SLACK`] times the fit's) is kept; when none is found the fit
-//! is returned as it was, and its warnings name the faults.
+//! the tolerance was not met, at most [`UNMET_SLACK`] times the fit's) is kept; when none is
+//! found the fit is returned as it was, and its warnings name the faults.
 
 use super::guards::shape_faults;
 use super::knots::{
