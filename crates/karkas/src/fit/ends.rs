@@ -19,18 +19,27 @@
 //! short window: in a long window their weight is small. (Lepski's rule, growing the window
 //! until an estimate disagrees with a shorter window's, stops at once on such outliers.)
 //!
+//! Points that crowd towards the end with their spacing falling to zero there (cosine spacing
+//! at a trailing edge) are even functions of the index about the end, and the even quadratic
+//! `c0 + c2 i^2` gives the end with less than half the quadratic's variance on a window. It is
+//! taken on the longest window where the quadratic agrees with it, when that window is at
+//! least as long as the quadratic's own (see [`estimate_end`]). On NACA 4415 with 32 uniform
+//! knots at noise 1e-3 (40 seeds) the end then lies 0.33 noise deviations from the true
+//! trailing edge (RMS) at 1000 points and 0.15 at 5000, against 0.40 and 0.19 with the
+//! quadratic alone.
+//!
 //! Where the two estimates agree within [`COINCIDENT`] standard errors of their difference,
 //! the ends meet (a closed trailing edge: upper and lower surface end at one point) and each
 //! run estimates the same point. Both ends are then held at the inverse-variance mean of the
-//! two, along and across the curve: it has about `1/sqrt 2` of either estimate's error. NACA
-//! 4415 with 1000 points at noise 1e-3 ends 0.51 deviations from the true trailing edge with
-//! each end held on its tangent line where its own estimate projects (RMS over 40 noise
-//! seeds), 0.37 at the common point.
+//! two, along and across the curve: it has about `1/sqrt 2` of either estimate's error. With
+//! the quadratic alone, NACA 4415 with 1000 points at noise 1e-3 ends 0.51 deviations from
+//! the true trailing edge with each end held on its tangent line where its own estimate
+//! projects (RMS over 40 noise seeds), 0.37 at the common point.
 //!
-//! The least-squares weights come from the normal equations of the monomials in `i / m`,
-//! solved with `nalgebra`. On 1000-5000 noisy points of NACA sections the estimate lies
-//! within 0.2-0.55 noise deviations of the true trailing edge (RMS, along the chord), where a
-//! free foot-point end lies about one deviation out.
+//! The least-squares weights come from the normal equations of the powers of `i / m`,
+//! solved with `nalgebra`. On 1000-5000 noisy points of NACA sections the quadratic's
+//! estimate lies within 0.2-0.55 noise deviations of the true trailing edge (RMS, along the
+//! chord), where a free foot-point end lies about one deviation out.
 
 use super::hermite::HermiteSpline;
 use crate::Point;
@@ -128,15 +137,43 @@ pub(crate) struct EndEstimate<const D: usize> {
     pub(crate) at: Point<D>,
     /// Its standard error per coordinate, for unit noise (the norm of the weights).
     pub(crate) spread: f64,
+    /// The points it was estimated from.
+    pub(crate) window: usize,
 }
 
-/// The end of the ordered points `run` (`n` in all) at index 0: the quadratic in the index
-/// on the longest window where the cubic agrees with it (`None` when no window does, or
-/// none is long enough to be twice as precise as the first point).
+/// The end of the ordered points `run` (`n` in all) at index 0 (`None` when no window gives
+/// an estimate):
+///
+/// - the quadratic in the index on the longest window where the cubic agrees with it;
+/// - or, where the even quadratic `c0 + c2 i^2` agrees with the quadratic on a window at
+///   least as long, the even quadratic on the longest such window. Points that crowd towards
+///   the end with their spacing falling to zero there (cosine spacing at a trailing edge)
+///   are even functions of the index about the end, and two coefficients estimate the end
+///   with less than half the quadratic's variance on a window. A shorter window is not
+///   taken: there the test has too little power to see an odd term (points spaced evenly),
+///   and the even model would carry its bias.
 pub(crate) fn estimate_end<'a, const D: usize>(
     run: impl Iterator<Item = &'a Point<D>> + Clone,
     n: usize,
     sigma: f64,
+) -> Option<EndEstimate<D>> {
+    let general = longest_agreeing(run.clone(), n, sigma, [0, 1, 2], [0, 1, 2, 3]);
+    let even = longest_agreeing(run, n, sigma, [0, 2], [0, 1, 2]);
+    match (general, even) {
+        (Some(g), Some(e)) if e.window >= g.window => Some(e),
+        (g, _) => g,
+    }
+}
+
+/// The end of `run` at index 0 from the polynomial in the index with the powers `model`, on
+/// the longest window where the polynomial with the powers `check` agrees with it (`None`
+/// when no window does, or none is long enough to be twice as precise as the first point).
+fn longest_agreeing<'a, const D: usize, const K: usize, const L: usize>(
+    run: impl Iterator<Item = &'a Point<D>> + Clone,
+    n: usize,
+    sigma: f64,
+    model: [i32; K],
+    check: [i32; L],
 ) -> Option<EndEstimate<D>> {
     let largest = ((n as f64 * LARGEST_SHARE) as usize).max(FIRST_WINDOW);
     let mut windows = vec![FIRST_WINDOW];
@@ -148,13 +185,13 @@ pub(crate) fn estimate_end<'a, const D: usize>(
         windows.push(next);
     }
     windows.into_iter().rev().find_map(|m| {
-        let quadratic = start_weights::<3>(m)?;
-        let cubic = start_weights::<4>(m)?;
+        let fitted = start_weights(m, model)?;
+        let wider = start_weights(m, check)?;
         let (mut at2, mut at3) = (Point::<D>::ZERO, Point::<D>::ZERO);
         let (mut own, mut spread) = (0.0, 0.0);
         for (i, p) in run.clone().take(m).enumerate() {
             let x = i as f64 / m as f64;
-            let (w2, w3) = (polynomial(&quadratic, x), polynomial(&cubic, x));
+            let (w2, w3) = (polynomial(&fitted, model, x), polynomial(&wider, check, x));
             at2 = at2.add_scaled(w2, *p);
             at3 = at3.add_scaled(w3, *p);
             own += w2 * w2;
@@ -166,32 +203,28 @@ pub(crate) fn estimate_end<'a, const D: usize>(
         useful.then_some(EndEstimate {
             at: at2,
             spread: error,
+            window: m,
         })
     })
 }
 
-/// The coefficients `c` of the least-squares weights `w_i = sum_j c_j x_i^j` (`x_i = i / m`,
-/// `i < m`) that give a polynomial of degree `K - 1` fitted to `m` values at `x = 0`: the
-/// first row of the inverse of the normal matrix.
-fn start_weights<const K: usize>(m: usize) -> Option<SVector<f64, K>> {
+/// The coefficients `c` of the least-squares weights `w_i = sum_j c_j x_i^(p_j)` (`x_i = i /
+/// m`, `i < m`, `p = powers`, the first 0) that give the polynomial with those powers fitted
+/// to `m` values at `x = 0`: the first row of the inverse of the normal matrix.
+fn start_weights<const K: usize>(m: usize, powers: [i32; K]) -> Option<SVector<f64, K>> {
     let mut normal = SMatrix::<f64, K, K>::zeros();
     for i in 0..m {
         let x = i as f64 / m as f64;
-        let mut row = SVector::<f64, K>::zeros();
-        let mut power = 1.0;
-        for r in row.iter_mut() {
-            *r = power;
-            power *= x;
-        }
+        let row = SVector::<f64, K>::from_fn(|r, _| x.powi(powers[r]));
         normal += row * row.transpose();
     }
     let inverse = normal.try_inverse()?;
     Some(inverse.row(0).transpose())
 }
 
-/// `sum_j c_j x^j`.
-fn polynomial<const K: usize>(c: &SVector<f64, K>, x: f64) -> f64 {
-    c.iter().rev().fold(0.0, |acc, &cj| acc * x + cj)
+/// `sum_j c_j x^(p_j)`.
+fn polynomial<const K: usize>(c: &SVector<f64, K>, powers: [i32; K], x: f64) -> f64 {
+    c.iter().zip(powers).map(|(&cj, p)| cj * x.powi(p)).sum()
 }
 
 #[cfg(test)]
@@ -299,6 +332,66 @@ mod tests {
             (end - P2::new([1.0, 10.0 * sigma])).norm() < 2.0 * sigma,
             "{end:?}"
         );
+    }
+
+    /// `n` points of the curve `(u, 0.3 u - 0.2 u^2)` crowding towards its start as cosine
+    /// spacing does (`u = 1 - cos(pi i / (2 (n - 1)))`, so both coordinates are even in the
+    /// index `i` about the start), with Gaussian noise of `sigma` per coordinate.
+    fn crowded_run(n: usize, sigma: f64, seed: u64) -> Vec<P2> {
+        let mut normal = gaussian(seed);
+        (0..n)
+            .map(|i| {
+                let b = std::f64::consts::FRAC_PI_2 * i as f64 / (n - 1) as f64;
+                let u = 1.0 - b.cos();
+                P2::new([
+                    u + sigma * normal(),
+                    0.3 * u - 0.2 * u * u + sigma * normal(),
+                ])
+            })
+            .collect()
+    }
+
+    #[test]
+    fn points_that_crowd_towards_the_end_take_the_even_model() {
+        // 200 noisy runs of 1000 points: the even quadratic brings the start closer to the
+        // truth (RMS) than the quadratic alone (measured: 2.97e-4 against 3.41e-4).
+        let sigma = 1e-3;
+        let (mut chosen, mut general, mut counted) = (0.0, 0.0, 0);
+        for seed in 0..200 {
+            let run = crowded_run(1000, sigma, seed);
+            let quadratic = longest_agreeing(run.iter(), run.len(), sigma, [0, 1, 2], [0, 1, 2, 3]);
+            let (Some(end), Some(quadratic)) =
+                (estimate_end(run.iter(), run.len(), sigma), quadratic)
+            else {
+                continue;
+            };
+            counted += 1;
+            chosen += end.at.norm_sq();
+            general += quadratic.at.norm_sq();
+        }
+        let (chosen, general) = (
+            (chosen / counted as f64).sqrt(),
+            (general / counted as f64).sqrt(),
+        );
+        eprintln!("{counted} runs: even where it agrees {chosen:e}, quadratic {general:e}");
+        assert!(counted >= 180, "{counted}");
+        assert!(chosen < 0.92 * general, "{chosen:e} against {general:e}");
+    }
+
+    #[test]
+    fn evenly_spaced_points_keep_the_quadratic() {
+        // Round the ellipse at even steps one coordinate is odd in the index about the end:
+        // the even model is never taken.
+        let sigma = 1e-3;
+        for seed in 0..100 {
+            let run = closed_run(1000, sigma, 0.0, seed);
+            let quadratic = longest_agreeing(run.iter(), run.len(), sigma, [0, 1, 2], [0, 1, 2, 3]);
+            assert_eq!(
+                estimate_end(run.iter(), run.len(), sigma),
+                quadratic,
+                "seed {seed}"
+            );
+        }
     }
 
     #[test]
