@@ -187,21 +187,21 @@ fn longest_agreeing<'a, const D: usize, const K: usize, const L: usize>(
     windows.into_iter().rev().find_map(|m| {
         let fitted = start_weights(m, model)?;
         let wider = start_weights(m, check)?;
-        let (mut at2, mut at3) = (Point::<D>::ZERO, Point::<D>::ZERO);
+        let (mut at, mut at_check) = (Point::<D>::ZERO, Point::<D>::ZERO);
         let (mut own, mut spread) = (0.0, 0.0);
         for (i, p) in run.clone().take(m).enumerate() {
             let x = i as f64 / m as f64;
-            let (w2, w3) = (polynomial(&fitted, model, x), polynomial(&wider, check, x));
-            at2 = at2.add_scaled(w2, *p);
-            at3 = at3.add_scaled(w3, *p);
-            own += w2 * w2;
-            spread += (w3 - w2) * (w3 - w2);
+            let (w, w_check) = (polynomial(&fitted, model, x), polynomial(&wider, check, x));
+            at = at.add_scaled(w, *p);
+            at_check = at_check.add_scaled(w_check, *p);
+            own += w * w;
+            spread += (w_check - w) * (w_check - w);
         }
-        let agree = (at3 - at2).norm() <= AGREEMENT * sigma * spread.sqrt();
+        let agree = (at_check - at).norm() <= AGREEMENT * sigma * spread.sqrt();
         let error = own.sqrt();
-        let useful = agree && error <= USEFUL_SPREAD && at2.is_finite();
+        let useful = agree && error <= USEFUL_SPREAD && at.is_finite();
         useful.then_some(EndEstimate {
-            at: at2,
+            at,
             spread: error,
             window: m,
         })
