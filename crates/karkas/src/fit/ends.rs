@@ -157,11 +157,10 @@ pub(crate) fn estimate_end<'a, const D: usize>(
     n: usize,
     sigma: f64,
 ) -> Option<EndEstimate<D>> {
-    let general = longest_agreeing(run.clone(), n, sigma, [0, 1, 2], [0, 1, 2, 3]);
-    let even = longest_agreeing(run, n, sigma, [0, 2], [0, 1, 2]);
-    match (general, even) {
-        (Some(g), Some(e)) if e.window >= g.window => Some(e),
-        (g, _) => g,
+    let general = longest_agreeing(run.clone(), n, sigma, [0, 1, 2], [0, 1, 2, 3])?;
+    match longest_agreeing(run, n, sigma, [0, 2], [0, 1, 2]) {
+        Some(even) if even.window >= general.window => Some(even),
+        _ => Some(general),
     }
 }
 

@@ -185,7 +185,7 @@ pub(crate) fn sound_fit<const D: usize>(
 
 /// The first sound fit (`sound`) on uniform knots, their count from `counts` in turn (as
 /// many as [`UNIFORM_WORK`] allows), with no smoothing, from the parameters `start` and then
-/// from centripetal ones.
+/// from centripetal ones (unless `start` is centripetal already).
 fn uniform_refit<const D: usize>(
     points: &[Point<D>],
     counts: RangeInclusive<usize>,
@@ -198,13 +198,17 @@ fn uniform_refit<const D: usize>(
         smoothing: Some(0.0),
         ..options.clone()
     };
-    let centripetal = start_parameters_for(points, &StartParameters::Centripetal, fit.noise.sigma)?;
-    let tries = UNIFORM_WORK / (2 * points.len());
+    let mut starts = vec![start.to_vec()];
+    if options.start != StartParameters::Centripetal {
+        let centripetal = StartParameters::Centripetal;
+        starts.push(start_parameters_for(points, &centripetal, fit.noise.sigma)?);
+    }
+    let tries = UNIFORM_WORK / (starts.len() * points.len());
     Ok(counts.take(tries.max(1)).find_map(|count| {
         let even = uniform_with_corners(count, &options.corners);
-        [start, &centripetal]
-            .into_iter()
-            .find_map(|from| refit(points, &even, from.to_vec(), &plain, fit).filter(&sound))
+        starts
+            .iter()
+            .find_map(|from| refit(points, &even, from.clone(), &plain, fit).filter(&sound))
     }))
 }
 
