@@ -40,7 +40,7 @@
 //! iterations; the rounds number about `log2(N / 4)` for `N` knots plus the stall window,
 //! so the whole is about `O(n log N)`.
 
-use super::faults::sound_fit;
+use super::faults::{sound_fit, Repairs};
 use super::guards::with_warnings;
 use super::knots::{start_parameters_for, uniform_with_corners, warm_parameters};
 use super::noise::estimate_noise;
@@ -246,7 +246,17 @@ fn adaptive_rounds<const D: usize>(
             best = kept;
         }
     }
-    best = sound_fit(points, tolerance, options, asked, cap, iterations, best)?;
+    let repairs = Repairs {
+        asked,
+        cap,
+        iterations,
+        through_points: stop != AdaptiveStop::NoiseLevel,
+    };
+    best = sound_fit(points, tolerance, options, repairs, best)?;
+    if best.max_distance() <= tolerance {
+        // (The repair of a faulty fit can meet the tolerance that the rounds did not.)
+        stop = AdaptiveStop::Met;
+    }
     if stop == AdaptiveStop::Met {
         best = prune(points, tolerance, options, best, warm_parameters)?;
     }

@@ -79,6 +79,7 @@ mod prune;
 mod refine;
 mod result;
 mod solver;
+mod through_points;
 mod unit_scale;
 
 pub use adaptive::{fit_curve_adaptive, AdaptiveFit, AdaptiveStop};

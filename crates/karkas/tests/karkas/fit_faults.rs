@@ -1,7 +1,9 @@
 //! The tolerance mode repairs a fit that hooks (docs/methods.md §4, "shape guards"): real
 //! coordinates whose trailing edge rises steeply from its last point.
 
-use karkas::fit::{fit_curve, fit_curve_adaptive, FitOptions, FitWarningKind};
+use karkas::fit::{
+    fit_curve, fit_curve_adaptive, uniform_knots, FitOptions, FitWarningKind, StartParameters,
+};
 use karkas::Point2;
 
 /// The AH 80-140 section (Althaus) as the airfoil collection of the corpus gives it
@@ -300,4 +302,78 @@ fn a_hook_at_a_sparse_sharp_leading_edge_is_repaired_with_uniform_knots() {
         .map(|i| karkas::Curve::eval(&adaptive.fit.spline, i as f64 / 40_000.0).0[0])
         .fold(f64::INFINITY, f64::min);
     assert!(ahead >= -2e-3, "the curve reaches x = {ahead}");
+}
+
+/// The GOE 165 section as the airfoil collection of the corpus gives it
+/// (tests/corpus/fetch_corpus.py): 33 points, 4-5 digits, upper surface first; at the
+/// leading edge the polygon turns 94 degrees at one point, between chords of 0.013 and
+/// 0.023.
+const GOE165: [[f64; 2]; 33] = [
+    [1.0, 0.0006],
+    [0.94946, 0.01886],
+    [0.89911, 0.03133],
+    [0.79853, 0.05168],
+    [0.69807, 0.06783],
+    [0.59766, 0.08247],
+    [0.4973, 0.09522],
+    [0.39713, 0.10108],
+    [0.29708, 0.10294],
+    [0.19723, 0.0977],
+    [0.1475, 0.08819],
+    [0.09793, 0.07288],
+    [0.07321, 0.06288],
+    [0.04865, 0.04768],
+    [0.02408, 0.03248],
+    [0.01195, 0.01944],
+    [0.0, 0.0],
+    [0.01269, -0.00664],
+    [0.02531, -0.01088],
+    [0.05042, -0.01487],
+    [0.07555, -0.01935],
+    [0.1006, -0.02094],
+    [0.15069, -0.02412],
+    [0.20066, -0.0233],
+    [0.30042, -0.01467],
+    [0.39991, 0.00326],
+    [0.49943, 0.01998],
+    [0.59922, 0.02742],
+    [0.69924, 0.02676],
+    [0.79939, 0.0215],
+    [0.89964, 0.01275],
+    [0.94983, 0.00608],
+    [1.0, -0.0006],
+];
+
+#[test]
+fn a_hook_that_no_least_squares_refit_removes_goes_with_a_curve_through_the_points() {
+    let points: Vec<Point2> = GOE165.iter().map(|&p| Point2::new(p)).collect();
+    // The premise: no least-squares fit on uniform knots, up to one knot per two points,
+    // from chord-length or centripetal parameters, is both within the tolerance and sound.
+    for start in [StartParameters::ChordLength, StartParameters::Centripetal] {
+        let options = FitOptions {
+            smoothing: Some(0.0),
+            estimated_ends: false,
+            start,
+            ..FitOptions::default()
+        };
+        for count in 2..=points.len() / 2 {
+            let fit = fit_curve(&points, &uniform_knots(count), &options).unwrap();
+            let faults = shape_faults(&fit.warnings);
+            assert!(
+                fit.max_distance() > 1e-4 || !faults.is_empty(),
+                "{count} knots"
+            );
+        }
+    }
+    let adaptive = fit_curve_adaptive(&points, 1e-4, &FitOptions::default()).unwrap();
+    assert!(adaptive.tolerance_met);
+    assert!(adaptive.fit.max_distance() <= 1e-4);
+    let faults = shape_faults(&adaptive.fit.warnings);
+    assert!(faults.is_empty(), "{faults:?}");
+    // It comes no farther ahead of the leading edge point than the tolerance (the faulty fit
+    // hooked 3.4e-4 ahead of it).
+    let ahead = (0..=40_000)
+        .map(|i| karkas::Curve::eval(&adaptive.fit.spline, i as f64 / 40_000.0).0[0])
+        .fold(f64::INFINITY, f64::min);
+    assert!(ahead >= -1e-4, "the curve reaches x = {ahead}");
 }
