@@ -86,7 +86,8 @@ pub enum AdaptiveStop {
     NoiseLevel,
     /// The largest deviation fell by less than 10% over the last three rounds.
     Stalled,
-    /// The knots reached one per two points.
+    /// The refinement reached one knot per two points (the repair of a fit that crosses
+    /// itself or turns too much can then take more: a curve through some of the points).
     KnotCap,
     /// No piece beyond the tolerance holds a point or room to be split (or,
     /// without the bending term, a split left the spline undetermined).
@@ -110,7 +111,7 @@ impl AdaptiveStop {
             AdaptiveStop::Stalled => {
                 "the deviation stopped falling as knots were added".to_string()
             }
-            AdaptiveStop::KnotCap => "the knots reached one per two points".to_string(),
+            AdaptiveStop::KnotCap => "the refinement reached one knot per two points".to_string(),
             AdaptiveStop::NoSplittablePiece => {
                 "no piece beyond the tolerance can be split further".to_string()
             }

@@ -1,10 +1,11 @@
 //! The tolerance mode repairs a fit that hooks (docs/methods.md §4, "shape guards"): real
 //! coordinates whose trailing edge rises steeply from its last point.
 
+use crate::common::Rng;
 use karkas::fit::{
     fit_curve, fit_curve_adaptive, uniform_knots, FitOptions, FitWarningKind, StartParameters,
 };
-use karkas::Point2;
+use karkas::{Point2, Point3};
 
 /// The AH 80-140 section (Althaus) as the airfoil collection of the corpus gives it
 /// (tests/corpus/fetch_corpus.py): 97 points, upper surface first, closed trailing edge.
@@ -376,4 +377,28 @@ fn a_hook_that_no_least_squares_refit_removes_goes_with_a_curve_through_the_poin
         .map(|i| karkas::Curve::eval(&adaptive.fit.spline, i as f64 / 40_000.0).0[0])
         .fold(f64::INFINITY, f64::min);
     assert!(ahead >= -1e-4, "the curve reaches x = {ahead}");
+}
+
+#[test]
+fn noisy_points_at_a_tolerance_below_the_noise_are_not_followed_one_by_one() {
+    // 200 points of a helix with noise 1e-3, at the tolerance 1e-4: the rounds stop at one
+    // knot per two points with a fit that turns too much. Through every point a curve would
+    // meet the tolerance; the repair keeps the points within the fit's own deviation instead.
+    let mut rng = Rng::new(7);
+    let points: Vec<Point3> = (0..200)
+        .map(|i| {
+            let s = i as f64 / 199.0;
+            let noise = Point3::new([rng.normal(), rng.normal(), rng.normal()]) * 1e-3;
+            Point3::new([(20.0 * s).cos(), (20.0 * s).sin(), s]) + noise
+        })
+        .collect();
+    let adaptive = fit_curve_adaptive(&points, 1e-4, &FitOptions::default()).unwrap();
+    assert!(!adaptive.tolerance_met);
+    assert!(
+        adaptive.fit.max_distance() > 1e-3,
+        "{}",
+        adaptive.fit.max_distance()
+    );
+    let faults = shape_faults(&adaptive.fit.warnings);
+    assert!(faults.is_empty(), "{faults:?}");
 }
