@@ -26,8 +26,11 @@
 //! A fit that crosses itself or turns more than its points (a hook past a sharp trailing
 //! edge, a loop between sparse points) is made sound where possible: more smoothing on its
 //! knots, the same knots from the starting parameters, uniform knots up to the cap, knots
-//! added at the faults, or a knot taken out beside an empty span (see `faults`); a fit that
-//! met the tolerance stays within it.
+//! added at the faults, a knot taken out beside an empty span, or at last a curve through
+//! some of the points that turns as they do, which may take more knots than the cap (see
+//! `faults`); a fit that met the tolerance stays within it, and one that missed it within its
+//! deviation (when the curve through the points comes within the tolerance after all, the
+//! tolerance is met).
 //!
 //! When the tolerance is met on a small problem (points times knots at most 2e5), the knots
 //! it does not need are taken out again one at a time (see `prune`).
