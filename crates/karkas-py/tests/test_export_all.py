@@ -1,7 +1,9 @@
 """karkas.export against the command line: for each format, the file Python writes equals the
-file `karkas` writes for the same command and input, byte for byte (every format here is
-deterministic: no clock, no randomness); STEP and IGES read back in Open CASCADE; the readers
-read the files back; _repr_html_ shows a curve as SVG and a surface in the viewer."""
+file `karkas` writes for the same command and input, byte for byte (no randomness; the one
+clock reading, the time stamp of a STEP or IGES header, is fixed by SOURCE_DATE_EPOCH for every
+test here, else the two writes can fall in different seconds); STEP and IGES read back in Open
+CASCADE; the readers read the files back; _repr_html_ shows a curve as SVG and a surface in the
+viewer."""
 
 import pathlib
 import subprocess
@@ -13,6 +15,12 @@ import karkas
 
 
 from cli_binary import CLI, needs_cli
+
+
+@pytest.fixture(autouse=True)
+def fixed_time_stamp(monkeypatch):
+    """The same STEP and IGES time stamp for the command line (inherited) and this process."""
+    monkeypatch.setenv("SOURCE_DATE_EPOCH", "1000000000")
 
 
 def run_cli(*args):
