@@ -223,14 +223,15 @@ impl<const D: usize> Nodes<'_, D> {
             let c = self.piece(at, j);
             let (first, last) = (at[j], at[j + 1]);
             let turns = turning_of(&c);
-            let mut path = vec![self.tangent(at, j)];
-            path.extend(self.points[first..=last].windows(2).map(|w| w[1] - w[0]));
-            path.push(self.tangent(at, j + 1));
-            let allowed: f64 = path
-                .windows(2)
-                .filter(|w| w[0].norm() > 0.0 && w[1].norm() > 0.0)
-                .map(|w| w[0].angle_to(w[1]))
-                .sum();
+            // From the first tangent along the chords to the last tangent (zero chords skipped).
+            let path = std::iter::once(self.tangent(at, j))
+                .chain(self.points[first..=last].windows(2).map(|w| w[1] - w[0]))
+                .chain(std::iter::once(self.tangent(at, j + 1)))
+                .filter(|d| d.norm() > 0.0);
+            let (allowed, _) =
+                path.fold((0.0, None), |(sum, before): (f64, Option<Point<D>>), d| {
+                    (sum + before.map_or(0.0, |b| b.angle_to(d)), Some(d))
+                });
             turns <= allowed + PIECE_TURNING_SLACK
                 && self.points[first + 1..last]
                     .iter()
