@@ -213,6 +213,30 @@ impl MeshOutput {
     }
 }
 
+/// `--cap` of the surface commands that write bodies.
+#[derive(Debug, Args)]
+pub struct CapOption {
+    /// Close every open boundary loop of the surface that lies in a plane (a wing's root and
+    /// tip, a tube's ends) with a planar face: STEP then holds a closed solid, IGES the faces
+    /// and the caps, meshes are closed; the enclosed volume is reported. An open boundary
+    /// that is not a planar loop is an error.
+    #[arg(long)]
+    pub cap: bool,
+}
+
+impl CapOption {
+    /// Refuses `--cap` for an output in `format` that holds no body (CSV, pictures, pages).
+    pub fn check(&self, format: OutputFormat) -> Result<()> {
+        if self.cap && !format.is_cad() {
+            bail!(
+                "--cap: only STEP and IGES (.step .iges) hold caps, not .{}",
+                format.extension()
+            );
+        }
+        Ok(())
+    }
+}
+
 /// `--comb` of the curve pictures.
 #[derive(Debug, Args)]
 pub struct CombOption {

@@ -3,7 +3,7 @@
 
 use std::sync::Arc;
 
-use karkas::fit::{self, FitOptions, HermiteSpline, DEFAULT_FAIRNESS};
+use karkas::fit::{self, FitEnds, FitOptions, HermiteSpline, DEFAULT_FAIRNESS};
 use pyo3::prelude::*;
 
 use crate::convert::{as_points, by_dim, extract_vector, FlatPoints, Numbers, PointsArray};
@@ -236,8 +236,13 @@ pub fn fit_curve(
         return Err(OptionError::new_err("give pin_ends or free_ends, not both"));
     }
     let mut options = FitOptions {
-        pin_ends,
-        estimated_ends: !free_ends,
+        ends: if pin_ends {
+            FitEnds::Pinned
+        } else if free_ends {
+            FitEnds::Free
+        } else {
+            FitEnds::Auto
+        },
         corners: corners
             .map(|c| extract_vector(c, "corners"))
             .transpose()?

@@ -2,7 +2,8 @@
 //! parameters (Kuznetsov and Filatov, docs/methods.md §5).
 
 use crate::args::{
-    parse_whole, ClosedUv, GridInput, GridParamOption, GridSamples, MeshOutput, ParamKind,
+    parse_whole, CapOption, ClosedUv, GridInput, GridParamOption, GridSamples, MeshOutput,
+    ParamKind,
 };
 use crate::input::grid_points;
 use crate::output::formats::EXACT_SURFACE_FORMATS;
@@ -34,6 +35,8 @@ pub struct SurfaceBicubicArgs {
     grid: GridInput,
     #[command(flatten)]
     mesh: MeshOutput,
+    #[command(flatten)]
+    cap: CapOption,
     /// Print to standard error how well the parameters condition the continuation system
     /// (Kuznetsov and Filatov's measure (2.4), 1 for arc lengths along orthogonal lines): the
     /// smallest and mean measure over the nodes and the worst node.
@@ -51,6 +54,7 @@ pub fn run(args: &SurfaceBicubicArgs) -> Result<()> {
     let format = output_format(&args.output, &EXACT_SURFACE_FORMATS)?;
     args.samples.check()?;
     args.mesh.check(format)?;
+    args.cap.check(format)?;
     let grid = args.grid.read_for(&args.output)?;
     grid_points(&args.grid.input, grid.as_slice())?;
     let (closed_u, closed_v) = (args.closed.closed_u, args.closed.closed_v);
@@ -69,7 +73,7 @@ pub fn run(args: &SurfaceBicubicArgs) -> Result<()> {
         input,
         args.samples.samples,
         &title,
-        &args.mesh.options(false),
+        (&args.mesh.options(false), args.cap.cap),
     )
 }
 

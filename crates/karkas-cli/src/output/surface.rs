@@ -58,7 +58,8 @@ pub fn write_sampled_surface(
 
 /// Writes a surface built from `grid` (read from `input`, which errors name) in the format of
 /// `output`: its exact B-spline form as STEP or IGES, else `samples` (default
-/// [`default_surface_samples`] per grid line) as [`write_sampled_surface`] writes them.
+/// [`default_surface_samples`] per grid line) as [`write_sampled_surface`] writes them; `cap`
+/// closes the open planar boundary loops (`--cap`).
 pub fn write_grid_surface(
     surface: &(impl Surface<3> + ToBSplineSurface<3> + Sync),
     format: OutputFormat,
@@ -66,10 +67,10 @@ pub fn write_grid_surface(
     (input, grid): (&Path, &Grid<Point3>),
     samples: Option<(usize, usize)>,
     title: &str,
-    mesh: &MeshOptions,
+    (mesh, cap): (&MeshOptions, bool),
 ) -> Result<()> {
     if format.is_cad() {
-        return write_cad_surface(surface, format, output, input.display());
+        return write_cad_surface(surface, format, output, input.display(), cap);
     }
     let samples = samples.unwrap_or((
         default_surface_samples(grid.rows()),

@@ -210,7 +210,7 @@ fn a_clean_naca_fit_with_closed_trailing_edge_raises_no_shape_warning() {
     assert!(points[0].distance(points[199]) < 1e-12);
     let options = FitOptions {
         eps: 1e-3,
-        pin_ends: true,
+        ends: karkas::fit::FitEnds::Pinned,
         ..Default::default()
     };
     for knots in [9, 17, 33] {
@@ -235,14 +235,24 @@ fn a_closed_circle_whose_ends_coincide_raises_no_shape_warning() {
             Point2::new([a.cos(), a.sin()])
         })
         .collect();
-    for pin_ends in [false, true] {
+    for ends in [
+        karkas::fit::FitEnds::Free,
+        karkas::fit::FitEnds::Auto,
+        karkas::fit::FitEnds::Pinned,
+    ] {
         let options = FitOptions {
-            pin_ends,
+            ends,
             ..Default::default()
         };
         let fit = fit_curve(&points, &uniform_knots(9), &options).unwrap();
         let shape = shape_warnings(&points, &fit);
-        no_shape_warnings(&shape, &format!("pin_ends {pin_ends}"));
+        no_shape_warnings(&shape, &format!("ends {ends:?}"));
+        // The ends coincide: every policy but Free closes the circle at its first point.
+        if ends != karkas::fit::FitEnds::Free {
+            let values = fit.spline.values();
+            assert!(values[0].distance(points[0]) < 1e-15, "{ends:?}");
+            assert_eq!(values[0], values[values.len() - 1], "{ends:?}");
+        }
     }
 }
 

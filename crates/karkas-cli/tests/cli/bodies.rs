@@ -1,0 +1,181 @@
+//! Bodies as CAD takes them: a pole is a vertex (no edge), a closed direction one seam edge
+//! used twice, `--cap` closes planar open boundary loops, and a closed shell is a STEP solid
+//! whose volume the command reports (README, "Command line", `--cap`). Open CASCADE's reading
+//! of the same files (BRepCheck, areas, volumes) is checked by tests/cad/check_bodies.py.
+
+use crate::common::{grid_csv, karkas, s, stderr, temp_dir, write};
+use std::f64::consts::PI;
+
+/// The STEP entity instances of a given type.
+fn count(text: &str, entity: &str) -> usize {
+    text.matches(&format!("={entity}(")).count()
+}
+
+/// An ellipsoid with semi-axes (a, b, c) as a grid of `rows` meridian stations from pole to
+/// pole (the first and last rows one repeated point) and `cols` points around.
+fn ellipsoid(rows: usize, cols: usize, (a, b, c): (f64, f64, f64)) -> String {
+    grid_csv(rows, cols, |i, j| {
+        let theta = PI * i as f64 / (rows - 1) as f64;
+        let phi = 2.0 * PI * j as f64 / cols as f64;
+        let r = if i == 0 || i == rows - 1 {
+            0.0
+        } else {
+            theta.sin()
+        };
+        [a * theta.cos(), b * r * phi.cos(), c * r * phi.sin()]
+    })
+}
+
+/// A tube along x whose sections are ellipses, open at both ends.
+fn tube(rows: usize, cols: usize) -> String {
+    grid_csv(rows, cols, |i, j| {
+        let phi = 2.0 * PI * j as f64 / cols as f64;
+        let r = 1.0 + 0.2 * (i as f64 / 3.0).sin();
+        [0.3 * i as f64, r * phi.cos(), 0.6 * r * phi.sin()]
+    })
+}
+
+/// The enclosed volume the command reports on standard error.
+fn reported_volume(err: &str) -> f64 {
+    let at = err.find("enclosed volume ").expect(err) + "enclosed volume ".len();
+    err[at..]
+        .split(|c: char| c == ')' || c.is_whitespace())
+        .next()
+        .unwrap()
+        .parse()
+        .unwrap()
+}
+
+#[test]
+fn a_body_closed_by_poles_is_a_solid_with_one_seam_and_no_pole_edges() {
+    let dir = temp_dir();
+    let (a, b, c) = (2.0, 1.0, 0.7);
+    // LL interpolation converges slowly at the poles: 49 x 96 nodes keep it within 1e-3.
+    let input = write(dir.path(), "e.csv", &ellipsoid(49, 96, (a, b, c)));
+    let exact = 4.0 / 3.0 * PI * a * b * c;
+    for method in [
+        vec!["surface", "bicubic", "--closed-v"],
+        vec!["surface", "ll", "--closed-v", "--interpolate"],
+    ] {
+        let out = dir.path().join("e.step");
+        let mut args = method.clone();
+        args.extend([s(&input), "-o", s(&out)]);
+        let o = karkas(&args);
+        assert!(o.status.success(), "{method:?}: {}", stderr(&o));
+        let text = std::fs::read_to_string(&out).unwrap();
+        // The seam (one edge, twice in the loop) and the two poles (vertices only).
+        assert_eq!(count(&text, "EDGE_CURVE"), 1, "{method:?}");
+        assert_eq!(count(&text, "ORIENTED_EDGE"), 2, "{method:?}");
+        assert_eq!(count(&text, "VERTEX_POINT"), 2, "{method:?}");
+        assert_eq!(count(&text, "CLOSED_SHELL"), 1, "{method:?}");
+        assert_eq!(count(&text, "MANIFOLD_SOLID_BREP"), 1, "{method:?}");
+        let volume = reported_volume(&stderr(&o));
+        assert!(
+            (volume - exact).abs() < 1e-3 * exact,
+            "{method:?}: {volume} against {exact}"
+        );
+    }
+}
+
+#[test]
+fn caps_close_a_tube_into_a_solid() {
+    let dir = temp_dir();
+    let input = write(dir.path(), "t.csv", &tube(13, 24));
+    for ext in ["step", "iges"] {
+        let out = dir.path().join(format!("t.{ext}"));
+        let o = karkas(&[
+            "surface",
+            "bicubic",
+            "--closed-v",
+            "--cap",
+            s(&input),
+            "-o",
+            s(&out),
+        ]);
+        assert!(o.status.success(), "{}", stderr(&o));
+        assert!(stderr(&o).contains("2 planar caps"), "{}", stderr(&o));
+        let text = std::fs::read_to_string(&out).unwrap();
+        if ext == "step" {
+            assert_eq!(count(&text, "PLANE"), 2);
+            assert_eq!(count(&text, "ADVANCED_FACE"), 3);
+            assert_eq!(count(&text, "EDGE_CURVE"), 3);
+            assert_eq!(count(&text, "MANIFOLD_SOLID_BREP"), 1);
+        } else {
+            // Two trimmed planes beside the B-spline face.
+            let kinds: Vec<&str> = text
+                .lines()
+                .filter(|l| l.len() == 80 && &l[72..73] == "D")
+                .step_by(2)
+                .map(|l| l[..8].trim())
+                .collect();
+            assert_eq!(
+                kinds.iter().filter(|k| **k == "144").count(),
+                2,
+                "{kinds:?}"
+            );
+        }
+    }
+    // Without --cap the tube is an open shell with no volume.
+    let out = dir.path().join("open.step");
+    let o = karkas(&["surface", "bicubic", "--closed-v", s(&input), "-o", s(&out)]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(!stderr(&o).contains("volume"), "{}", stderr(&o));
+    let text = std::fs::read_to_string(&out).unwrap();
+    assert_eq!(count(&text, "OPEN_SHELL"), 1);
+}
+
+#[test]
+fn a_cap_on_a_boundary_that_cannot_take_one_exits_2() {
+    let dir = temp_dir();
+    // Open in both directions and not flat: the one boundary loop is not planar.
+    let input = write(
+        dir.path(),
+        "g.csv",
+        &grid_csv(5, 6, |i, j| {
+            let (x, y) = (i as f64, j as f64);
+            [x, y, (0.5 * x).sin() * (0.3 * y).cos()]
+        }),
+    );
+    let out = dir.path().join("g.step");
+    let o = karkas(&["surface", "bicubic", "--cap", s(&input), "-o", s(&out)]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("--cap: the open boundary loop"),
+        "{}",
+        stderr(&o)
+    );
+    assert!(
+        stderr(&o).contains("is not planar: it strays"),
+        "{}",
+        stderr(&o)
+    );
+    assert!(!out.exists());
+    // A body closed by its poles has nothing to cap.
+    let input = write(dir.path(), "e.csv", &ellipsoid(9, 12, (1.0, 1.0, 1.0)));
+    let o = karkas(&[
+        "surface",
+        "bicubic",
+        "--closed-v",
+        "--cap",
+        s(&input),
+        "-o",
+        s(&out),
+    ]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("--cap: the surface has no open boundary"),
+        "{}",
+        stderr(&o)
+    );
+    // --cap is for STEP and IGES.
+    let o = karkas(&[
+        "surface",
+        "bicubic",
+        "--cap",
+        s(&input),
+        "-o",
+        s(&dir.path().join("e.csv")),
+    ]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("--cap: only"), "{}", stderr(&o));
+}

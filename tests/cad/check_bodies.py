@@ -1,0 +1,284 @@
+#!/usr/bin/env python3
+"""CAD acceptance check for bodies: poles, seams, caps and solids as Open CASCADE reads them.
+
+karkas writes closed bodies as STEP and IGES: an ellipsoid and a fuselage-like body whose
+first and last grid rows are single points (poles), closed around by `--closed-v`, through
+`surface ll --interpolate` and `surface bicubic` (default parameters: a pole row needs no
+option), and the ellipsoid as a curve network whose first and last rings are single points
+through `surface coons` (`gordon-spline`, `composite`); a tube and the demo's aircraft grid (`data/aircraft-15x31.csv`, closed across its
+plane of symmetry by `--closed-v`) capped at both ends by `--cap`. Each file is read by Open
+CASCADE (cadquery-ocp): BRepCheck_Analyzer must find the shape valid; the STEP file must hold
+one solid; the face area (GProp) must be within 1e-3 of the area of the same surface finely
+sampled by karkas (a 400 x 400 CSV, triangulated here, caps added as the areas the command
+reports) and, for the ellipsoid, of the analytic area; the volume (GProp at 1e-9) within
+1e-3 of the analytic one (ellipsoid) and within 1e-6 of the volume the command reports.
+IGES holds the faces: sewn (BRepBuilderAPI_Sewing), several faces must close into one shell
+with the same volume. One line per file with the counts; exit 1 on any failure.
+
+Usage: python3 tests/cad/check_bodies.py [--karkas target/release/karkas] [--keep DIR]
+"""
+
+import argparse
+import csv
+import math
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+import numpy as np
+from OCP.BRepBuilderAPI import BRepBuilderAPI_Sewing
+from OCP.BRepCheck import BRepCheck_Analyzer
+from OCP.BRepGProp import BRepGProp
+from OCP.GProp import GProp_GProps
+from OCP.IFSelect import IFSelect_RetDone
+from OCP.IGESControl import IGESControl_Reader
+from OCP.STEPControl import STEPControl_Reader
+from OCP.TopAbs import TopAbs_FACE, TopAbs_SHELL, TopAbs_SOLID
+from OCP.TopExp import TopExp_Explorer
+from scipy.integrate import dblquad
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+AREA_TOLERANCE = 1e-3
+VOLUME_TOLERANCE = 1e-3
+
+
+def write_grid(path, rows, cols, point):
+    with open(path, "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["i", "j", "x", "y", "z"])
+        for i in range(rows):
+            for j in range(cols):
+                w.writerow([i, j, *(repr(float(x)) for x in point(i, j))])
+
+
+ELLIPSOID = (2.0, 1.0, 0.7)
+
+
+def ellipsoid(i, j, rows=49, cols=96):
+    a, b, c = ELLIPSOID
+    theta, phi = math.pi * i / (rows - 1), 2 * math.pi * j / cols
+    r = 0.0 if i in (0, rows - 1) else math.sin(theta)
+    return a * math.cos(theta), b * r * math.cos(phi), c * r * math.sin(phi)
+
+
+def ellipsoid_area():
+    a, b, c = ELLIPSOID
+
+    def density(phi, theta):
+        st, ct, sp, cp = math.sin(theta), math.cos(theta), math.sin(phi), math.cos(phi)
+        # |S_theta x S_phi| of (a cos t, b sin t cos p, c sin t sin p).
+        n = np.array([b * c * st * ct, a * c * st * st * cp, a * b * st * st * sp])
+        return float(np.linalg.norm(n))
+
+    return dblquad(density, 0.0, math.pi, 0.0, 2 * math.pi, epsabs=1e-11, epsrel=1e-11)[0]
+
+
+def fuselage(i, j, rows=31, cols=40):
+    """A body of revolution-like fuselage: an elliptic nose and a tapered tail, both poles."""
+    x = 10.0 * i / (rows - 1)
+    r = 0.0 if i in (0, rows - 1) else 0.8 * math.sin(math.pi * (x / 10.0) ** 0.7)
+    phi = 2 * math.pi * j / cols
+    return x, r * math.cos(phi), 0.8 * r * math.sin(phi) + 0.05 * x
+
+
+def tube(i, j, rows=13, cols=24):
+    phi = 2 * math.pi * j / cols
+    r = 1.0 + 0.2 * math.sin(i / 3.0)
+    return 0.3 * i, r * math.cos(phi), 0.6 * r * math.sin(phi)
+
+
+def ellipsoid_network(folder, rings=13, meridians=16, per=4):
+    """The ellipsoid as a curve network: v-curves are closed rings x = const (the first and
+    last one point each, the poles), u-curves meridians from pole to pole."""
+    a, b, c = ELLIPSOID
+
+    def point(theta, phi, pole):
+        r = 0.0 if pole else math.sin(theta)
+        return a * math.cos(theta), b * r * math.cos(phi), c * r * math.sin(phi)
+
+    paths = []
+    for name, count, steps, at in (
+        ("v", rings, meridians * per,
+         lambda i, k: point(math.pi * i / (rings - 1), 2 * math.pi * k / (meridians * per),
+                            i in (0, rings - 1))),
+        ("u", meridians, (rings - 1) * per,
+         lambda j, k: point(math.pi * k / ((rings - 1) * per), 2 * math.pi * j / meridians,
+                            k in (0, (rings - 1) * per))),
+    ):
+        path = os.path.join(folder, f"ellipsoid-{name}.csv")
+        with open(path, "w", newline="") as f:
+            w = csv.writer(f)
+            w.writerow(["curve", "x", "y", "z"])
+            for curve in range(count):
+                for k in range(steps + 1):
+                    w.writerow([curve, *(repr(x) for x in at(curve, k))])
+        paths.append(path)
+    return paths
+
+
+def run(karkas, args):
+    done = subprocess.run([karkas, *args], capture_output=True, text=True)
+    if done.returncode != 0:
+        raise RuntimeError(f"karkas {' '.join(args)}: {done.stderr.strip()}")
+    return done.stderr
+
+
+def read_shape(path):
+    reader = STEPControl_Reader() if path.endswith(".step") else IGESControl_Reader()
+    if reader.ReadFile(path) != IFSelect_RetDone:
+        raise RuntimeError("the reader refused the file")
+    reader.TransferRoots()
+    return reader.OneShape()
+
+
+def count(shape, kind):
+    explorer, n = TopExp_Explorer(shape, kind), 0
+    while explorer.More():
+        n += 1
+        explorer.Next()
+    return n
+
+
+def area_of(shape):
+    props = GProp_GProps()
+    BRepGProp.SurfaceProperties_s(shape, props, 1e-9)
+    return props.Mass()
+
+
+def volume_of(shape):
+    props = GProp_GProps()
+    BRepGProp.VolumeProperties_s(shape, props, 1e-9)
+    return props.Mass()
+
+
+def sampled_area(csv_path):
+    """The area of the triangulated u,v,x,y,z samples (u outer)."""
+    data = np.loadtxt(csv_path, delimiter=",", skiprows=1)
+    nu = len(np.unique(data[:, 0]))
+    p = data[:, 2:].reshape(nu, -1, 3)
+    a, b, c, d = p[:-1, :-1], p[1:, :-1], p[1:, 1:], p[:-1, 1:]
+    t1 = np.linalg.norm(np.cross(b - a, c - a), axis=-1)
+    t2 = np.linalg.norm(np.cross(c - a, d - a), axis=-1)
+    return 0.5 * float(t1.sum() + t2.sum())
+
+
+def relative(a, b):
+    return abs(a - b) / max(abs(b), 1e-300)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--karkas", default=os.path.join(ROOT, "target", "release", "karkas"))
+    parser.add_argument("--keep", help="write the files into this folder and keep them")
+    args = parser.parse_args()
+    folder = args.keep or tempfile.mkdtemp(prefix="karkas-bodies-")
+    os.makedirs(folder, exist_ok=True)
+    grids = {
+        "ellipsoid": (49, 96, ellipsoid),
+        "fuselage": (31, 40, fuselage),
+        "tube": (13, 24, tube),
+    }
+    for name, (rows, cols, point) in grids.items():
+        write_grid(os.path.join(folder, name + ".csv"), rows, cols,
+                   lambda i, j, p=point, r=rows, c=cols: p(i, j, r, c))
+    a, b, c = ELLIPSOID
+    exact = {"ellipsoid": (ellipsoid_area(), 4.0 / 3.0 * math.pi * a * b * c)}
+    aircraft = os.path.join(ROOT, "data", "aircraft-15x31.csv")
+    cases = []
+    for grid in ("ellipsoid", "fuselage"):
+        src = os.path.join(folder, grid + ".csv")
+        cases.append((f"{grid}-ll", grid, ["surface", "ll", "--interpolate", "--closed-v", src]))
+        cases.append((f"{grid}-bicubic", grid, ["surface", "bicubic", "--closed-v", src]))
+    v_net, u_net = ellipsoid_network(folder)
+    for kind in ("gordon-spline", "composite"):
+        cases.append((f"ellipsoid-coons-{kind}", "ellipsoid",
+                      ["surface", "coons", "--kind", kind, "--u-curves", u_net, "--v-curves",
+                       v_net]))
+    tube_csv = os.path.join(folder, "tube.csv")
+    cases.append(("tube-bicubic-capped", "tube", ["surface", "bicubic", "--closed-v", "--cap",
+                                                  tube_csv]))
+    cases.append(("tube-ll-capped", "tube", ["surface", "ll", "--interpolate", "--closed-v",
+                                             "--cap", tube_csv]))
+    cases.append(("aircraft-ll-capped", "aircraft", ["surface", "ll", "--closed-v", "--cap",
+                                                     aircraft]))
+    cases.append(("aircraft-bicubic-capped", "aircraft", ["surface", "bicubic", "--closed-v",
+                                                          "--cap", aircraft]))
+    failures = 0
+    for name, grid, command in cases:
+        try:
+            fine = os.path.join(folder, name + "-fine.csv")
+            plain = [x for x in command if x != "--cap"]
+            run(args.karkas, [*plain, "--samples", "400,400", "-o", fine])
+            mesh_area = sampled_area(fine)
+            for ext in (".step", ".iges"):
+                path = os.path.join(folder, name + ext)
+                note = run(args.karkas, [*command, "-o", path])
+                reported = float(re.search(r"enclosed volume ([0-9.eE+-]+)", note).group(1))
+                caps = 0.0
+                shape = read_shape(path)
+                problems = []
+                valid = BRepCheck_Analyzer(shape).IsValid()
+                if not valid:
+                    problems.append("BRepCheck: not valid")
+                if ext == ".step":
+                    solids = count(shape, TopAbs_SOLID)
+                    if solids != 1:
+                        problems.append(f"{solids} solids, expected 1")
+                    body = shape
+                else:
+                    sewing = BRepBuilderAPI_Sewing(1e-6)
+                    sewing.Add(shape)
+                    sewing.Perform()
+                    body = sewing.SewedShape()
+                    # One face closed by its poles and seam is its own shell; several (caps)
+                    # must sew into one.
+                    if count(shape, TopAbs_FACE) > 1 and count(body, TopAbs_SHELL) != 1:
+                        problems.append("the IGES faces do not sew into one shell")
+                faces = count(shape, TopAbs_FACE)
+                area = area_of(shape)
+                # The caps' area: the shell's area less the B-spline face's.
+                side = area if faces == 1 else area_of(first_face(shape))
+                caps = area - side
+                volume = abs(volume_of(body))
+                if relative(side, mesh_area) > AREA_TOLERANCE:
+                    problems.append(f"face area {side:.9g}, finely meshed {mesh_area:.9g}")
+                if relative(volume, reported) > 1e-6:
+                    problems.append(f"volume {volume:.9g}, the command reported {reported:.9g}")
+                if grid in exact:
+                    exact_area, exact_volume = exact[grid]
+                    if relative(side, exact_area) > AREA_TOLERANCE:
+                        problems.append(f"area {side:.9g}, analytic {exact_area:.9g}")
+                    if relative(volume, exact_volume) > VOLUME_TOLERANCE:
+                        problems.append(f"volume {volume:.9g}, analytic {exact_volume:.9g}")
+                status = "FAIL" if problems else "ok  "
+                print(f"{status} {name}{ext}: valid {valid}, {faces} faces, face area {side:.6f}"
+                      f" (meshed {mesh_area:.6f}), caps {caps:.6f}, volume {volume:.6f}"
+                      f" (reported {reported:.6f}){'; ' + '; '.join(problems) if problems else ''}")
+                failures += bool(problems)
+        except Exception as e:  # noqa: BLE001 - report and go on
+            print(f"FAIL {name}: {e}")
+            failures += 1
+    if failures:
+        print(f"{failures} failure(s)")
+        return 1
+    print(f"all {len(cases) * 2} body files valid in Open CASCADE")
+    return 0
+
+
+def first_face(shape):
+    explorer = TopExp_Explorer(shape, TopAbs_FACE)
+    best, best_area = None, -1.0
+    while explorer.More():
+        face = explorer.Current()
+        a = area_of(face)
+        props_face = face
+        if a > best_area:
+            best, best_area = props_face, a
+        explorer.Next()
+    return best
+
+
+if __name__ == "__main__":
+    sys.exit(main())
