@@ -6,12 +6,15 @@ first and last grid rows are single points (poles), closed around by `--closed-v
 `surface ll --interpolate` and `surface bicubic` (default parameters: a pole row needs no
 option), and the ellipsoid as a curve network whose first and last rings are single points
 through `surface coons` (`gordon-spline`, `composite`); a tube and the demo's aircraft grid (`data/aircraft-15x31.csv`, closed across its
-plane of symmetry by `--closed-v`) capped at both ends by `--cap`. Each file is read by Open
+plane of symmetry by `--closed-v`) capped at both ends by `--cap`; a tapered wing of sharp-trailing-edge sections closed around by `--crease-v` (a
+C^0 seam at the edge: the tangents on its two sides must differ by more than 5 degrees on
+the finely sampled surface) and capped at root and tip. Each file is read by Open
 CASCADE (cadquery-ocp): BRepCheck_Analyzer must find the shape valid; the STEP file must hold
 one solid; the face area (GProp) must be within 1e-3 of the area of the same surface finely
 sampled by karkas (a 400 x 400 CSV, triangulated here, caps added as the areas the command
 reports) and, for the ellipsoid, of the analytic area; the volume (GProp at 1e-9) within
-1e-3 of the analytic one (ellipsoid) and within 1e-6 of the volume the command reports.
+1e-3 of the analytic one (ellipsoid) and of the finely sampled surface closed by fans at its
+ends (capped bodies), and within 1e-6 of the volume the command reports.
 IGES holds the faces: sewn (BRepBuilderAPI_Sewing), several faces must close into one shell
 with the same volume. One line per file with the counts; exit 1 on any failure.
 
@@ -118,6 +121,49 @@ def ellipsoid_network(folder, rings=13, meridians=16, per=4):
     return paths
 
 
+def wing(i, j, rows=9, cols=61):
+    """A tapered wing: NACA 0012-like sections with a sharp trailing edge at (chord, 0), each
+    in Selig order (the trailing edge first and last), at spans z = 0..4."""
+    span = 4.0 * i / (rows - 1)
+    chord = 2.0 - 0.25 * span
+    half = (cols - 1) // 2
+    k = abs(j - half)  # 0 at the nose, half at the trailing edge
+    x = 0.5 * (1.0 - math.cos(math.pi * k / half))
+    t = 0.6 * (0.2969 * math.sqrt(x) - 0.1260 * x - 0.3516 * x * x + 0.2843 * x ** 3
+               - 0.1036 * x ** 4)
+    if k == half:
+        t = 0.0
+    y = t if j < half else -t
+    return 0.3 * span + chord * x, chord * y, span
+
+
+def closed_mesh_volume(csv_path):
+    """The volume of the sampled surface (u,v,x,y,z, u outer) closed by fans at its first and
+    last rows (the caps), by the divergence theorem on its triangles."""
+    data = np.loadtxt(csv_path, delimiter=",", skiprows=1)
+    nu = len(np.unique(data[:, 0]))
+    p = data[:, 2:].reshape(nu, -1, 3)
+    a, b, c, d = p[:-1, :-1], p[1:, :-1], p[1:, 1:], p[:-1, 1:]
+    six = (np.einsum("...i,...i", a, np.cross(b, c)) + np.einsum("...i,...i", a, np.cross(c, d)))
+    total = float(six.sum())
+    for row, sign in ((p[0], 1.0), (p[-1], -1.0)):
+        centre = row[:-1].mean(axis=0)
+        total += sign * float(np.einsum("...i,...i", np.broadcast_to(centre, row[:-1].shape),
+                                        np.cross(row[:-1], row[1:])).sum())
+    return abs(total) / 6.0
+
+
+def sharp_seam(csv_path):
+    """The angle (degrees) between the tangents on the two sides of the v-seam, at the
+    middle row of the samples."""
+    data = np.loadtxt(csv_path, delimiter=",", skiprows=1)
+    nu = len(np.unique(data[:, 0]))
+    row = data[:, 2:].reshape(nu, -1, 3)[nu // 2]
+    start, end = row[1] - row[0], row[-1] - row[-2]
+    cosine = np.dot(start, end) / np.linalg.norm(start) / np.linalg.norm(end)
+    return math.degrees(math.acos(max(-1.0, min(1.0, cosine))))
+
+
 def run(karkas, args):
     done = subprocess.run([karkas, *args], capture_output=True, text=True)
     if done.returncode != 0:
@@ -179,6 +225,7 @@ def main():
         "ellipsoid": (49, 96, ellipsoid),
         "fuselage": (31, 40, fuselage),
         "tube": (13, 24, tube),
+        "wing": (9, 61, wing),
     }
     for name, (rows, cols, point) in grids.items():
         write_grid(os.path.join(folder, name + ".csv"), rows, cols,
@@ -187,6 +234,10 @@ def main():
     exact = {"ellipsoid": (ellipsoid_area(), 4.0 / 3.0 * math.pi * a * b * c)}
     aircraft = os.path.join(ROOT, "data", "aircraft-15x31.csv")
     cases = []
+    wing_csv = os.path.join(folder, "wing.csv")
+    for method in (["surface", "bicubic"], ["surface", "ll", "--interpolate"]):
+        cases.append((f"wing-{method[1]}-crease-capped", "wing",
+                      [*method, "--crease-v", "--cap", wing_csv]))
     for grid in ("ellipsoid", "fuselage"):
         src = os.path.join(folder, grid + ".csv")
         cases.append((f"{grid}-ll", grid, ["surface", "ll", "--interpolate", "--closed-v", src]))
@@ -246,6 +297,14 @@ def main():
                     problems.append(f"face area {side:.9g}, finely meshed {mesh_area:.9g}")
                 if relative(volume, reported) > 1e-6:
                     problems.append(f"volume {volume:.9g}, the command reported {reported:.9g}")
+                if "--cap" in command:
+                    meshed_volume = closed_mesh_volume(fine)
+                    if relative(volume, meshed_volume) > VOLUME_TOLERANCE:
+                        problems.append(f"volume {volume:.9g}, finely meshed {meshed_volume:.9g}")
+                if grid == "wing":
+                    angle = sharp_seam(fine)
+                    if angle < 5.0:
+                        problems.append(f"the trailing edge is not sharp: tangents {angle:.2f} deg apart")
                 if grid in exact:
                     exact_area, exact_volume = exact[grid]
                     if relative(side, exact_area) > AREA_TOLERANCE:

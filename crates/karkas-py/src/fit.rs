@@ -130,10 +130,12 @@ fn fit_bytes(points: usize, knots: usize, dim: usize) -> u128 {
 /// pin_ends : bool, optional
 ///     Make the curve pass through the first and last points.
 /// free_ends : bool, optional
-///     On given knots, leave the ends where the foot points put them (as ``karkas curve fit
-///     --free-ends``). By default each end of a noisy fit is held on its tangent line where
-///     the points towards it say it lies, and ends that the noise does not tell apart (a
-///     closed trailing edge) at their common point; not used with ``tolerance``.
+///     Leave the ends where the foot points put them (as ``karkas curve fit --free-ends``).
+///     By default a first and last point that coincide (within 1e-6 of the points' size: a
+///     closed profile, a sharp trailing edge) pin both ends at that point, in every mode, so
+///     the curve closes there; on given knots each other end of a noisy fit is held on its
+///     tangent line where the points towards it say it lies, and ends that the noise does not
+///     tell apart (a closed trailing edge) at their common point.
 /// corners : sequence of float, optional
 ///     Knots where the curve may turn a corner (no smoothness asked there).
 /// fairness : float, optional

@@ -2,8 +2,8 @@
 //! parameters (Kuznetsov and Filatov, docs/methods.md §5).
 
 use crate::args::{
-    parse_whole, CapOption, ClosedUv, GridInput, GridParamOption, GridSamples, MeshOutput,
-    ParamKind,
+    parse_whole, CapOption, ClosedUv, CreaseUv, GridInput, GridParamOption, GridSamples,
+    MeshOutput, ParamKind,
 };
 use crate::input::grid_points;
 use crate::output::formats::EXACT_SURFACE_FORMATS;
@@ -37,6 +37,8 @@ pub struct SurfaceBicubicArgs {
     mesh: MeshOutput,
     #[command(flatten)]
     cap: CapOption,
+    #[command(flatten)]
+    crease: CreaseUv,
     /// Print to standard error how well the parameters condition the continuation system
     /// (Kuznetsov and Filatov's measure (2.4), 1 for arc lengths along orthogonal lines): the
     /// smallest and mean measure over the nodes and the worst node.
@@ -55,7 +57,7 @@ pub fn run(args: &SurfaceBicubicArgs) -> Result<()> {
     args.samples.check()?;
     args.mesh.check(format)?;
     args.cap.check(format)?;
-    let grid = args.grid.read_for(&args.output)?;
+    let grid = args.crease.apply(args.grid.read_for(&args.output)?)?;
     grid_points(&args.grid.input, grid.as_slice())?;
     let (closed_u, closed_v) = (args.closed.closed_u, args.closed.closed_v);
     let rule = parameterization(args.param.kind(), args.origin, (grid.rows(), grid.cols()))?;

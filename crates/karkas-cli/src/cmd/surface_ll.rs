@@ -1,7 +1,7 @@
 //! `karkas surface ll`: the LL surface of a grid of points (Aulchenko et al., docs/methods.md §1.3).
 
 use super::curve_ll::{check_within, report_within};
-use crate::args::{CapOption, GridInput, GridSamples, LlSurfaceOptions, MeshOutput};
+use crate::args::{CapOption, CreaseUv, GridInput, GridSamples, LlSurfaceOptions, MeshOutput};
 use crate::input::grid_points;
 use crate::output::formats::STREAMED_SURFACE_FORMATS;
 use crate::output::surface::write_grid_surface;
@@ -35,6 +35,8 @@ pub struct SurfaceLlArgs {
     mesh: MeshOutput,
     #[command(flatten)]
     cap: CapOption,
+    #[command(flatten)]
+    crease: CreaseUv,
     /// Output file: .csv (u,v,x,y,z), .npy (the samples' points, an (nu, nv, 3) float64
     /// array), a mesh (.obj .stl .ply .vtk .vts .glb), a picture
     /// (.svg .png) a 3-D viewer page (.html), or the
@@ -51,7 +53,7 @@ pub fn run(args: &SurfaceLlArgs) -> Result<()> {
     args.samples.check()?;
     args.mesh.check(format)?;
     args.cap.check(format)?;
-    let grid = args.grid.read_for(&args.output)?;
+    let grid = args.crease.apply(args.grid.read_for(&args.output)?)?;
     grid_points(&args.grid.input, grid.as_slice())?;
     let surface = match args.within {
         Some(distance) => {

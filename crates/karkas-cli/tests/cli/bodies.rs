@@ -179,3 +179,115 @@ fn a_cap_on_a_boundary_that_cannot_take_one_exits_2() {
     assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
     assert!(stderr(&o).contains("--cap: only"), "{}", stderr(&o));
 }
+
+/// A tapered wing of sharp-trailing-edge sections, each in Selig order with the edge first and
+/// last (when `repeat`) or first only.
+fn wing(rows: usize, cols: usize, repeat: bool) -> String {
+    let half = (cols - 1) / 2;
+    let all = grid_csv(rows, cols, |i, j| {
+        let span = 4.0 * i as f64 / (rows - 1) as f64;
+        let chord = 2.0 - 0.25 * span;
+        let k = (j as i64 - half as i64).unsigned_abs() as f64;
+        let x = 0.5 * (1.0 - (PI * k / half as f64).cos());
+        let t = if k as usize == half {
+            0.0
+        } else {
+            0.6 * (0.2969 * x.sqrt() - 0.1260 * x - 0.3516 * x * x + 0.2843 * x.powi(3)
+                - 0.1036 * x.powi(4))
+        };
+        let y = if j < half { t } else { -t };
+        [0.3 * span + chord * x, chord * y, span]
+    });
+    if repeat {
+        return all;
+    }
+    // Leave out the last column (the repeated trailing edge).
+    all.lines()
+        .filter(|l| {
+            !l.split(',')
+                .nth(1)
+                .is_some_and(|j| j == (cols - 1).to_string())
+        })
+        .map(|l| format!("{l}\n"))
+        .collect()
+}
+
+#[test]
+fn a_creased_capped_wing_is_a_solid_with_a_sharp_trailing_edge() {
+    let dir = temp_dir();
+    for (name, repeat) in [("repeated", true), ("appended", false)] {
+        let input = write(dir.path(), &format!("{name}.csv"), &wing(9, 41, repeat));
+        let out = dir.path().join(format!("{name}.step"));
+        let o = karkas(&[
+            "surface",
+            "bicubic",
+            "--crease-v",
+            "--cap",
+            s(&input),
+            "-o",
+            s(&out),
+        ]);
+        assert!(o.status.success(), "{name}: {}", stderr(&o));
+        let text = std::fs::read_to_string(&out).unwrap();
+        assert_eq!(count(&text, "MANIFOLD_SOLID_BREP"), 1, "{name}");
+        assert_eq!(count(&text, "PLANE"), 2, "{name}");
+        // The trailing edge is the seam (one edge, used by the face twice), the root and tip
+        // loops the two others.
+        assert_eq!(count(&text, "EDGE_CURVE"), 3, "{name}");
+        let volume = reported_volume(&stderr(&o));
+        assert!(volume > 0.1 && volume < 1.0, "{name}: {volume}");
+        // The tangents on the two sides of the trailing edge differ: a crease.
+        let samples = dir.path().join(format!("{name}-s.csv"));
+        let o = karkas(&[
+            "surface",
+            "bicubic",
+            "--crease-v",
+            "--samples",
+            "5,201",
+            s(&input),
+            "-o",
+            s(&samples),
+        ]);
+        assert!(o.status.success(), "{}", stderr(&o));
+        let (_, rows) = crate::common::read_csv(&samples);
+        let row: Vec<[f64; 3]> = rows[2 * 201..3 * 201]
+            .iter()
+            .map(|r| [r[2], r[3], r[4]])
+            .collect();
+        let along = |a: [f64; 3], b: [f64; 3]| [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
+        let (start, end) = (along(row[0], row[1]), along(row[199], row[200]));
+        let dot: f64 = (0..3).map(|c| start[c] * end[c]).sum();
+        let norm = |v: [f64; 3]| (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+        let angle = (dot / norm(start) / norm(end))
+            .clamp(-1.0, 1.0)
+            .acos()
+            .to_degrees();
+        assert!(angle > 10.0, "{name}: tangents {angle} degrees apart");
+        assert_eq!(row[0], row[200], "{name}");
+    }
+    // A crease and a periodic closure of the same direction, or too few columns, exit 2.
+    let input = write(dir.path(), "w.csv", &wing(3, 11, true));
+    let out = dir.path().join("w.step");
+    let o = karkas(&[
+        "surface",
+        "bicubic",
+        "--crease-v",
+        "--closed-v",
+        s(&input),
+        "-o",
+        s(&out),
+    ]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    let narrow = write(
+        dir.path(),
+        "n.csv",
+        &grid_csv(3, 2, |i, j| [i as f64, j as f64, 0.0]),
+    );
+    let o = karkas(&["surface", "ll", "--crease-v", s(&narrow), "-o", s(&out)]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("--crease-v: a closed direction needs at least 3 columns"),
+        "{}",
+        stderr(&o)
+    );
+}

@@ -46,6 +46,7 @@ fn every_curve_method_closes_a_sharp_trailing_edge_at_its_point() {
         vec!["curve", "fit", "--knots", "12"],
         vec!["curve", "spline"],
         vec!["curve", "ll", "--interpolate"],
+        vec!["curve", "ll"],
         vec!["curve", "ll", "--within", "1e-4"],
     ] {
         let mut args = method.clone();
