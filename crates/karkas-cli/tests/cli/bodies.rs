@@ -204,9 +204,9 @@ fn wing(rows: usize, cols: usize, repeat: bool) -> String {
     // Leave out the last column (the repeated trailing edge).
     all.lines()
         .filter(|l| {
-            !l.split(',')
+            l.split(',')
                 .nth(1)
-                .is_some_and(|j| j == (cols - 1).to_string())
+                .is_none_or(|j| j != (cols - 1).to_string())
         })
         .map(|l| format!("{l}\n"))
         .collect()
