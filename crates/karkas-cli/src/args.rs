@@ -285,11 +285,18 @@ pub struct CapOption {
 }
 
 impl CapOption {
-    /// Refuses `--cap` for an output in `format` that holds no body (CSV, pictures, pages).
+    /// Refuses `--cap` for an output in `format` that holds no body (CSV, pictures, pages,
+    /// the VTK structured grids).
     pub fn check(&self, format: OutputFormat) -> Result<()> {
-        if self.cap && !format.is_cad() {
+        let body = format.is_cad()
+            || matches!(
+                format,
+                OutputFormat::Obj | OutputFormat::Stl | OutputFormat::Ply | OutputFormat::Glb
+            );
+        if self.cap && !body {
             bail!(
-                "--cap: only STEP and IGES (.step .iges) hold caps, not .{}",
+                "--cap: only STEP, IGES and the triangle meshes (.step .iges .obj .stl .ply .glb) \
+                 hold caps, not .{}",
                 format.extension()
             );
         }

@@ -12,7 +12,7 @@ use crate::output::console::note;
 use crate::output::formats::EXACT_SURFACE_FORMATS;
 use crate::output::overwrite::ensure_distinct;
 use crate::output::samples::default_surface_samples;
-use crate::output::surface::write_sampled_surface;
+use crate::output::surface::{write_capped_mesh, write_sampled_surface};
 use crate::output::target::output_format;
 use anyhow::{anyhow, bail, Context, Result};
 use clap::{Args, ValueEnum};
@@ -126,6 +126,15 @@ pub fn run(args: &SurfaceCoonsArgs) -> Result<()> {
             default_surface_samples(longest(&v_family)),
         )
     });
+    if args.cap.cap {
+        return write_capped_mesh(
+            &surface,
+            (nu, nv),
+            format,
+            &args.output,
+            &args.mesh.options(false),
+        );
+    }
     write_sampled_surface(
         &surface,
         (nu, nv),

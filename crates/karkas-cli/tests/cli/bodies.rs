@@ -167,17 +167,35 @@ fn a_cap_on_a_boundary_that_cannot_take_one_exits_2() {
         "{}",
         stderr(&o)
     );
-    // --cap is for STEP and IGES.
+    // --cap is for STEP, IGES and the triangle meshes.
+    for ext in ["csv", "vts"] {
+        let o = karkas(&[
+            "surface",
+            "bicubic",
+            "--cap",
+            s(&input),
+            "-o",
+            s(&dir.path().join(format!("e.{ext}"))),
+        ]);
+        assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+        assert!(stderr(&o).contains("--cap: only"), "{}", stderr(&o));
+    }
+    // A closed body's mesh has nothing to cap either.
     let o = karkas(&[
         "surface",
         "bicubic",
+        "--closed-v",
         "--cap",
         s(&input),
         "-o",
-        s(&dir.path().join("e.csv")),
+        s(&dir.path().join("e.stl")),
     ]);
     assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
-    assert!(stderr(&o).contains("--cap: only"), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("--cap: the surface has no open boundary"),
+        "{}",
+        stderr(&o)
+    );
 }
 
 /// A tapered wing of sharp-trailing-edge sections, each in Selig order with the edge first and
@@ -290,4 +308,93 @@ fn a_creased_capped_wing_is_a_solid_with_a_sharp_trailing_edge() {
         "{}",
         stderr(&o)
     );
+}
+
+/// The triangles of the mesh file `path` as corner coordinates.
+fn mesh_triangles(path: &std::path::Path) -> Vec<[[f64; 3]; 3]> {
+    let mesh = karkas_io::mesh::read_mesh(path).unwrap();
+    mesh.triangles
+        .iter()
+        .map(|t| t.map(|k| mesh.positions[k as usize].0))
+        .collect()
+}
+
+/// True when every edge of `triangles` (corners keyed by their f32 coordinates, as STL holds
+/// them) is used exactly once in each direction: watertight, the winding consistent.
+fn watertight(triangles: &[[[f64; 3]; 3]]) -> bool {
+    use std::collections::HashMap;
+    let key = |p: [f64; 3]| p.map(|x| (x as f32).to_bits());
+    let mut edges: HashMap<_, usize> = HashMap::new();
+    for t in triangles {
+        for e in 0..3 {
+            *edges.entry((key(t[e]), key(t[(e + 1) % 3]))).or_default() += 1;
+        }
+    }
+    edges
+        .iter()
+        .all(|(&(a, b), &n)| n == 1 && edges.get(&(b, a)) == Some(&1))
+}
+
+/// The signed volume of `triangles`, `sum a . (b x c) / 6`, and their smallest area.
+fn volume_and_smallest_area(triangles: &[[[f64; 3]; 3]]) -> (f64, f64) {
+    let sub = |p: [f64; 3], q: [f64; 3]| [p[0] - q[0], p[1] - q[1], p[2] - q[2]];
+    let cross = |p: [f64; 3], q: [f64; 3]| {
+        [
+            p[1] * q[2] - p[2] * q[1],
+            p[2] * q[0] - p[0] * q[2],
+            p[0] * q[1] - p[1] * q[0],
+        ]
+    };
+    let dot = |p: [f64; 3], q: [f64; 3]| p[0] * q[0] + p[1] * q[1] + p[2] * q[2];
+    let mut volume = 0.0;
+    let mut smallest = f64::INFINITY;
+    for &[a, b, c] in triangles {
+        volume += dot(a, cross(b, c)) / 6.0;
+        let n = cross(sub(b, a), sub(c, a));
+        smallest = smallest.min(0.5 * dot(n, n).sqrt());
+    }
+    (volume, smallest)
+}
+
+#[test]
+fn pole_closed_and_capped_meshes_are_watertight_with_the_solids_volume() {
+    let dir = temp_dir();
+    let ellipsoid = write(dir.path(), "e.csv", &ellipsoid(25, 48, (2.0, 1.0, 0.7)));
+    let tube = write(dir.path(), "t.csv", &tube(13, 24));
+    for (input, cap) in [(&ellipsoid, false), (&tube, true)] {
+        let mut command = vec!["surface", "bicubic", "--closed-v"];
+        if cap {
+            command.push("--cap");
+        }
+        let step = dir.path().join("b.step");
+        let mut args = command.clone();
+        args.extend([s(input), "-o", s(&step)]);
+        let o = karkas(&args);
+        assert!(o.status.success(), "{}", stderr(&o));
+        let solid = reported_volume(&stderr(&o));
+        for ext in ["stl", "obj", "ply"] {
+            let out = dir.path().join(format!("b.{ext}"));
+            let mut args = command.clone();
+            args.extend(["--samples", "200,400", s(input), "-o", s(&out)]);
+            let o = karkas(&args);
+            assert!(o.status.success(), "{ext}: {}", stderr(&o));
+            let triangles = mesh_triangles(&out);
+            assert!(watertight(&triangles), "{ext} (cap {cap}): not watertight");
+            let (volume, smallest) = volume_and_smallest_area(&triangles);
+            // Outward normals: a positive volume.
+            assert!(
+                (volume - solid).abs() < 1e-3 * solid,
+                "{ext} (cap {cap}): mesh volume {volume}, solid {solid}"
+            );
+            assert!(
+                smallest > 1e-9,
+                "{ext} (cap {cap}): a triangle of area {smallest}"
+            );
+            if cap {
+                assert!(stderr(&o).contains("2 planar caps"), "{}", stderr(&o));
+                let meshed = reported_volume(&stderr(&o));
+                assert!((meshed - volume).abs() < 1e-6 * volume, "{meshed} {volume}");
+            }
+        }
+    }
 }
