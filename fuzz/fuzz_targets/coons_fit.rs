@@ -56,7 +56,12 @@ fuzz_target!(|data: &[u8]| {
         if input.flag() {
             options.eps = input.float();
         }
-        options.pin_ends = input.flag();
+        options.ends = [
+            karkas::fit::FitEnds::Auto,
+            karkas::fit::FitEnds::Shared,
+            karkas::fit::FitEnds::Pinned,
+            karkas::fit::FitEnds::Free,
+        ][input.count(0, 3)];
         options.max_iterations = 20;
         let in_range = points.iter().all(|p| p.max_abs() <= RANGE);
         let spline = if input.flag() {

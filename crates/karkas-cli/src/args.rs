@@ -213,6 +213,97 @@ impl MeshOutput {
     }
 }
 
+/// `--crease-u`, `--crease-v` of the surface commands that close a direction with a C^0 seam
+/// (`surface ll`, `surface bicubic`).
+#[derive(Debug, Args)]
+pub struct CreaseUv {
+    /// Close the surface in u with a crease: the first row is appended after the last (unless
+    /// the last repeats it) and the direction is interpolated as an open one, so the seam is
+    /// C^0 (a sharp trailing edge stays sharp). Not with --closed-u.
+    #[arg(long, conflicts_with = "closed_u")]
+    pub crease_u: bool,
+    /// Close the surface in v with a crease (the first column appended), as --crease-u. Not
+    /// with --closed-v.
+    #[arg(long, conflicts_with = "closed_v")]
+    pub crease_v: bool,
+}
+
+impl CreaseUv {
+    /// `grid` closed with a crease in the directions asked: the first row (column) appended
+    /// after the last unless the last repeats it (within `1e-12` of the largest coordinate),
+    /// with a warning when the last nearly repeats it. A direction of fewer than 3 distinct
+    /// lines cannot close: an error naming the option.
+    pub fn apply(&self, grid: Grid<Point3>) -> Result<Grid<Point3>> {
+        let mut grid = grid;
+        if self.crease_v {
+            grid = close_columns(&grid, "--crease-v", "columns")?;
+        }
+        if self.crease_u {
+            grid = close_columns(&grid.transposed(), "--crease-u", "rows")?.transposed();
+        }
+        Ok(grid)
+    }
+}
+
+/// `grid` with its first column appended after the last unless the last repeats it (the rule
+/// of [`CreaseUv::apply`]); `option` and `lines` name them in messages.
+fn close_columns(grid: &Grid<Point3>, option: &str, lines: &str) -> Result<Grid<Point3>> {
+    let (rows, cols) = (grid.rows(), grid.cols());
+    let scale = grid
+        .as_slice()
+        .iter()
+        .fold(1.0f64, |m, p| m.max(p.max_abs()));
+    let gap = |i: usize| grid.get(i, 0).distance(*grid.get(i, cols - 1));
+    let repeats = (0..rows).all(|i| gap(i) <= 1e-12 * scale);
+    let distinct = cols - usize::from(repeats);
+    if distinct < 3 {
+        bail!(
+            "{option}: a closed direction needs at least 3 {lines} besides a repeated first \
+             one, got {distinct}"
+        );
+    }
+    if repeats {
+        return Ok(grid.clone());
+    }
+    // The line whose ends lie farthest apart says whether they nearly meet.
+    let worst = (0..rows)
+        .max_by(|&a, &b| gap(a).total_cmp(&gap(b)))
+        .unwrap_or(0);
+    crate::output::console::warn_near_miss(option, grid.row(worst));
+    Ok(Grid::from_fn(rows, cols + 1, |i, j| *grid.get(i, j % cols)))
+}
+
+/// `--cap` of the surface commands that write bodies.
+#[derive(Debug, Args)]
+pub struct CapOption {
+    /// Close every open boundary loop of the surface that lies in a plane (a wing's root and
+    /// tip, a tube's ends) with a planar face: STEP then holds a closed solid, IGES the faces
+    /// and the caps, meshes are closed; the enclosed volume is reported. An open boundary
+    /// that is not a planar loop is an error.
+    #[arg(long)]
+    pub cap: bool,
+}
+
+impl CapOption {
+    /// Refuses `--cap` for an output in `format` that holds no body (CSV, pictures, pages,
+    /// the VTK structured grids).
+    pub fn check(&self, format: OutputFormat) -> Result<()> {
+        let body = format.is_cad()
+            || matches!(
+                format,
+                OutputFormat::Obj | OutputFormat::Stl | OutputFormat::Ply | OutputFormat::Glb
+            );
+        if self.cap && !body {
+            bail!(
+                "--cap: only STEP, IGES and the triangle meshes (.step .iges .obj .stl .ply .glb) \
+                 hold caps, not .{}",
+                format.extension()
+            );
+        }
+        Ok(())
+    }
+}
+
 /// `--comb` of the curve pictures.
 #[derive(Debug, Args)]
 pub struct CombOption {

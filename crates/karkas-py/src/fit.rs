@@ -3,7 +3,7 @@
 
 use std::sync::Arc;
 
-use karkas::fit::{self, FitOptions, HermiteSpline, DEFAULT_FAIRNESS};
+use karkas::fit::{self, FitEnds, FitOptions, HermiteSpline, DEFAULT_FAIRNESS};
 use pyo3::prelude::*;
 
 use crate::convert::{as_points, by_dim, extract_vector, FlatPoints, Numbers, PointsArray};
@@ -130,10 +130,12 @@ fn fit_bytes(points: usize, knots: usize, dim: usize) -> u128 {
 /// pin_ends : bool, optional
 ///     Make the curve pass through the first and last points.
 /// free_ends : bool, optional
-///     On given knots, leave the ends where the foot points put them (as ``karkas curve fit
-///     --free-ends``). By default each end of a noisy fit is held on its tangent line where
-///     the points towards it say it lies, and ends that the noise does not tell apart (a
-///     closed trailing edge) at their common point; not used with ``tolerance``.
+///     Leave the ends where the foot points put them (as ``karkas curve fit --free-ends``).
+///     By default a first and last point that coincide (within 1e-6 of the points' size: a
+///     closed profile, a sharp trailing edge) pin both ends at that point, in every mode, so
+///     the curve closes there; on given knots each other end of a noisy fit is held on its
+///     tangent line where the points towards it say it lies, and ends that the noise does not
+///     tell apart (a closed trailing edge) at their common point.
 /// corners : sequence of float, optional
 ///     Knots where the curve may turn a corner (no smoothness asked there).
 /// fairness : float, optional
@@ -236,8 +238,13 @@ pub fn fit_curve(
         return Err(OptionError::new_err("give pin_ends or free_ends, not both"));
     }
     let mut options = FitOptions {
-        pin_ends,
-        estimated_ends: !free_ends,
+        ends: if pin_ends {
+            FitEnds::Pinned
+        } else if free_ends {
+            FitEnds::Free
+        } else {
+            FitEnds::Auto
+        },
         corners: corners
             .map(|c| extract_vector(c, "corners"))
             .transpose()?

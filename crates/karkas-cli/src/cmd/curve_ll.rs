@@ -74,6 +74,9 @@ impl CurveJob for (&CurveLlArgs, OutputFormat) {
     fn run<const D: usize>(&self, points: &[Point<D>]) -> Result<()> {
         let (args, format) = *self;
         curve_points(&args.input, points)?;
+        if args.closed {
+            crate::output::console::warn_near_miss("--closed", points);
+        }
         let curve = match args.within {
             Some(distance) => {
                 build_ll_within(points, args.order, args.closed, distance, &args.input)?

@@ -10,7 +10,7 @@ use crate::output::memory::check_memory;
 use anyhow::{bail, Context, Result};
 use clap::{Args, ValueEnum};
 use karkas::fit::{
-    fit_curve, fit_curve_adaptive, knots_from_list, CurveFit, FitOptions, PenaltyRule,
+    fit_curve, fit_curve_adaptive, knots_from_list, CurveFit, FitEnds, FitOptions, PenaltyRule,
     DEFAULT_FAIRNESS,
 };
 use karkas::Point;
@@ -56,11 +56,12 @@ pub struct FitCurveOptions {
     /// known trailing edge).
     #[arg(long)]
     pub pin_ends: bool,
-    /// On given knots, leave the ends where the foot points put them: by default each end
-    /// of a noisy fit is held on its tangent line where the points towards it say it lies
-    /// (noisy points beyond an end pull it outward), and ends that the noise does not tell
-    /// apart (a closed trailing edge) at their common point. Not used with --tolerance, which holds
-    /// every point, the ends included, within the tolerance.
+    /// Leave the ends where the foot points put them. By default a first and last point that
+    /// coincide (within 1e-6 of the points' size: a closed profile, a sharp trailing edge)
+    /// pin both ends at that point, so the curve closes there with a corner; on given knots
+    /// each other end of a noisy fit is held on its tangent line where the points towards it
+    /// say it lies (noisy points beyond an end pull it outward), and ends that the noise does
+    /// not tell apart (a closed trailing edge) at their common point.
     #[arg(long, conflicts_with = "pin_ends")]
     pub free_ends: bool,
     /// How the penalty p is chosen when --eps bounds the jumps: `active` lowers p until the
@@ -132,8 +133,13 @@ impl FitCurveOptions {
         FitOptions {
             eps: self.eps.unwrap_or(f64::INFINITY),
             corners: self.corners.clone(),
-            pin_ends: self.pin_ends,
-            estimated_ends: !self.free_ends,
+            ends: if self.pin_ends {
+                FitEnds::Pinned
+            } else if self.free_ends {
+                FitEnds::Free
+            } else {
+                FitEnds::Auto
+            },
             fairness: self.fairness,
             smoothing: self.smoothing,
             penalty: self.penalty.to_library(),

@@ -140,6 +140,7 @@ impl SplineOptions {
                     name.display()
                 );
             }
+            crate::output::console::warn_near_miss("--ends periodic", points);
         }
         let spline = CubicSpline::through(points, self.param, ends).map_err(|e| match e {
             karkas::Error::CoincidentPoints { first, second } => anyhow!(

@@ -2,7 +2,8 @@
 //! parameters (Kuznetsov and Filatov, docs/methods.md §5).
 
 use crate::args::{
-    parse_whole, ClosedUv, GridInput, GridParamOption, GridSamples, MeshOutput, ParamKind,
+    parse_whole, CapOption, ClosedUv, CreaseUv, GridInput, GridParamOption, GridSamples,
+    MeshOutput, ParamKind,
 };
 use crate::input::grid_points;
 use crate::output::formats::EXACT_SURFACE_FORMATS;
@@ -34,6 +35,10 @@ pub struct SurfaceBicubicArgs {
     grid: GridInput,
     #[command(flatten)]
     mesh: MeshOutput,
+    #[command(flatten)]
+    cap: CapOption,
+    #[command(flatten)]
+    crease: CreaseUv,
     /// Print to standard error how well the parameters condition the continuation system
     /// (Kuznetsov and Filatov's measure (2.4), 1 for arc lengths along orthogonal lines): the
     /// smallest and mean measure over the nodes and the worst node.
@@ -51,7 +56,8 @@ pub fn run(args: &SurfaceBicubicArgs) -> Result<()> {
     let format = output_format(&args.output, &EXACT_SURFACE_FORMATS)?;
     args.samples.check()?;
     args.mesh.check(format)?;
-    let grid = args.grid.read_for(&args.output)?;
+    args.cap.check(format)?;
+    let grid = args.crease.apply(args.grid.read_for(&args.output)?)?;
     grid_points(&args.grid.input, grid.as_slice())?;
     let (closed_u, closed_v) = (args.closed.closed_u, args.closed.closed_v);
     let rule = parameterization(args.param.kind(), args.origin, (grid.rows(), grid.cols()))?;
@@ -69,7 +75,7 @@ pub fn run(args: &SurfaceBicubicArgs) -> Result<()> {
         input,
         args.samples.samples,
         &title,
-        &args.mesh.options(false),
+        (&args.mesh.options(false), args.cap.cap),
     )
 }
 

@@ -5,14 +5,14 @@
 //! cubic splines in the point-index parameter, warped so that the crossings sit at common
 //! node values in `[0, 1]`); the surface's parameters `u`, `v` are those node values.
 
-use crate::args::{GridSamples, MeshOutput};
+use crate::args::{CapOption, GridSamples, MeshOutput};
 use crate::input::one_standard_input;
 use crate::output::cad::write_cad_surface;
 use crate::output::console::note;
 use crate::output::formats::EXACT_SURFACE_FORMATS;
 use crate::output::overwrite::ensure_distinct;
 use crate::output::samples::default_surface_samples;
-use crate::output::surface::write_sampled_surface;
+use crate::output::surface::{write_capped_mesh, write_sampled_surface};
 use crate::output::target::output_format;
 use anyhow::{anyhow, bail, Context, Result};
 use clap::{Args, ValueEnum};
@@ -89,6 +89,8 @@ pub struct SurfaceCoonsArgs {
     samples: GridSamples,
     #[command(flatten)]
     mesh: MeshOutput,
+    #[command(flatten)]
+    cap: CapOption,
     /// Output file: .csv (u,v,x,y,z), a mesh (.obj .stl .ply .vtk .vts .glb), a picture
     /// (.svg .png) a 3-D viewer page (.html), or the
     /// exact B-spline surface as .step/.stp or .iges/.igs.
@@ -101,6 +103,7 @@ pub fn run(args: &SurfaceCoonsArgs) -> Result<()> {
     let format = output_format(&args.output, &EXACT_SURFACE_FORMATS)?;
     args.samples.check()?;
     args.mesh.check(format)?;
+    args.cap.check(format)?;
     let files = NetworkFiles {
         u_curves: &args.u_curves,
         v_curves: &args.v_curves,
@@ -113,7 +116,7 @@ pub fn run(args: &SurfaceCoonsArgs) -> Result<()> {
     let (surface, u_family, v_family) = network_surface(args.kind, &files, &args.output)?;
     if format.is_cad() {
         let what = format!("{}, {}", args.u_curves.display(), args.v_curves.display());
-        return write_cad_surface(&surface, format, &args.output, what);
+        return write_cad_surface(&surface, format, &args.output, what, args.cap.cap);
     }
 
     let longest = |f: &CurveFamily| f.curves.iter().map(Vec::len).max().unwrap_or(0);
@@ -123,6 +126,15 @@ pub fn run(args: &SurfaceCoonsArgs) -> Result<()> {
             default_surface_samples(longest(&v_family)),
         )
     });
+    if args.cap.cap {
+        return write_capped_mesh(
+            &surface,
+            (nu, nv),
+            format,
+            &args.output,
+            &args.mesh.options(false),
+        );
+    }
     write_sampled_surface(
         &surface,
         (nu, nv),

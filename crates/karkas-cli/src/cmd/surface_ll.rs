@@ -1,7 +1,7 @@
 //! `karkas surface ll`: the LL surface of a grid of points (Aulchenko et al., docs/methods.md §1.3).
 
 use super::curve_ll::{check_within, report_within};
-use crate::args::{GridInput, GridSamples, LlSurfaceOptions, MeshOutput};
+use crate::args::{CapOption, CreaseUv, GridInput, GridSamples, LlSurfaceOptions, MeshOutput};
 use crate::input::grid_points;
 use crate::output::formats::STREAMED_SURFACE_FORMATS;
 use crate::output::surface::write_grid_surface;
@@ -33,6 +33,10 @@ pub struct SurfaceLlArgs {
     grid: GridInput,
     #[command(flatten)]
     mesh: MeshOutput,
+    #[command(flatten)]
+    cap: CapOption,
+    #[command(flatten)]
+    crease: CreaseUv,
     /// Output file: .csv (u,v,x,y,z), .npy (the samples' points, an (nu, nv, 3) float64
     /// array), a mesh (.obj .stl .ply .vtk .vts .glb), a picture
     /// (.svg .png) a 3-D viewer page (.html), or the
@@ -48,7 +52,8 @@ pub fn run(args: &SurfaceLlArgs) -> Result<()> {
     check_within(args.within)?;
     args.samples.check()?;
     args.mesh.check(format)?;
-    let grid = args.grid.read_for(&args.output)?;
+    args.cap.check(format)?;
+    let grid = args.crease.apply(args.grid.read_for(&args.output)?)?;
     grid_points(&args.grid.input, grid.as_slice())?;
     let surface = match args.within {
         Some(distance) => {
@@ -84,6 +89,6 @@ pub fn run(args: &SurfaceLlArgs) -> Result<()> {
         input,
         args.samples.samples,
         &title,
-        &args.mesh.options(false),
+        (&args.mesh.options(false), args.cap.cap),
     )
 }

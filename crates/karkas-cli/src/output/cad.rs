@@ -2,9 +2,10 @@
 //! for the discrete periodic splines, which have none.
 
 use super::console::note;
-use anyhow::{bail, Context, Result};
+use anyhow::{anyhow, bail, Context, Result};
 use karkas::bspline::{ToBSplineCurve, ToBSplineSurface};
 use karkas::Point;
+use karkas_io::cad::CadShell;
 use karkas_io::export::cad::{write_cad_curve_with_points, NO_EXACT_FORM};
 use karkas_io::OutputFormat;
 use std::path::Path;
@@ -39,19 +40,49 @@ pub fn write_cad_curve<const D: usize>(
     Ok(())
 }
 
-/// Writes the exact B-spline form of `surface` as STEP or IGES (by `format`).
+/// Writes the exact B-spline form of `surface` as STEP or IGES (by `format`): one face, with
+/// no edge at its poles and one seam edge for a closed direction; with `cap`, every open
+/// boundary loop closed by a planar face (an error naming `--cap` when a loop is not planar
+/// or there is none). A closed result is a solid in STEP, its faces turned outwards, and its
+/// volume is reported.
 pub fn write_cad_surface(
     surface: &impl ToBSplineSurface<3>,
     format: OutputFormat,
     output: &Path,
     what: impl std::fmt::Display,
+    cap: bool,
 ) -> Result<()> {
     let bspline = surface.to_bspline().with_context(|| what.to_string())?;
-    karkas_io::export::cad::write_cad_surface(&bspline, format, output)?;
+    let mut shell = CadShell::of_surfaces(std::slice::from_ref(&bspline));
+    let caps = if cap {
+        shell.cap_free_loops().map_err(|e| anyhow!("--cap: {e}"))?
+    } else {
+        Vec::new()
+    };
+    let volume = shell.is_closed().then(|| shell.orient_outward());
+    karkas_io::export::cad::write_cad_shell(&shell, format, output)?;
     let grid = bspline.control_points();
     super::console::record("control_points", vec![grid.rows(), grid.cols()]);
+    let mut body = String::new();
+    if !caps.is_empty() {
+        super::console::record("caps", caps.len());
+        body.push_str(&format!(
+            ", {} planar cap{}",
+            caps.len(),
+            if caps.len() == 1 { "" } else { "s" }
+        ));
+    }
+    if let Some(volume) = volume {
+        super::console::record("volume", volume);
+        let kind = if format == OutputFormat::Iges {
+            "closed faces"
+        } else {
+            "closed solid"
+        };
+        body.push_str(&format!(", {kind}, enclosed volume {volume:.9e}"));
+    }
     note(format!(
-        "karkas: wrote {} (B-spline surface of degree {}x{}, {}x{} control points)",
+        "karkas: wrote {} (B-spline surface of degree {}x{}, {}x{} control points{body})",
         super::target::shown(output).display(),
         bspline.degree_u(),
         bspline.degree_v(),

@@ -80,6 +80,41 @@ pub fn capture<R>(work: impl FnOnce() -> R) -> (R, Captured) {
     (result, captured)
 }
 
+/// Ends farther apart than this share of the points' size are taken for an open curve that
+/// `--closed` (or periodic ends) joins on purpose, not for a near miss.
+pub const NEAR_MISS_SHARE: f64 = 1e-2;
+
+/// Warns when an option closes `points` (`option`, e.g. `--closed`) and their last point
+/// misses the first by a little: more than rounding (`1e-12` of the largest coordinate) and at
+/// most [`NEAR_MISS_SHARE`] of the diagonal of the points' bounding box. The curve then closes
+/// through a short extra piece between them rather than at the point the user meant.
+pub fn warn_near_miss<const D: usize>(option: &str, points: &[karkas::Point<D>]) {
+    let (Some(&first), Some(&last)) = (points.first(), points.last()) else {
+        return;
+    };
+    let scale = points.iter().fold(1.0f64, |m, p| m.max(p.max_abs()));
+    let (mut low, mut high) = ([f64::INFINITY; D], [f64::NEG_INFINITY; D]);
+    for p in points {
+        for c in 0..D {
+            low[c] = low[c].min(p[c]);
+            high[c] = high[c].max(p[c]);
+        }
+    }
+    let size = (0..D)
+        .map(|c| (high[c] - low[c]).powi(2))
+        .sum::<f64>()
+        .sqrt();
+    let gap = first.distance(last);
+    if gap > 1e-12 * scale && gap <= NEAR_MISS_SHARE * size {
+        note(format!(
+            "karkas: warning: {option}: the last point is {gap:.1e} from the first ({:.1e} of \
+             the size): the curve closes through a short piece between them; repeat the first \
+             point exactly to close at it",
+            gap / size
+        ));
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

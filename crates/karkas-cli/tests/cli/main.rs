@@ -3,7 +3,9 @@
 
 mod bad_input;
 mod batch;
+mod bodies;
 mod cad;
+mod closed_profiles;
 mod common;
 mod contract;
 mod convert;

@@ -5,6 +5,7 @@
 use karkas::bspline::{BSplineCurve, BSplineSurface};
 use karkas::Point;
 
+use crate::cad::shell::{CadShell, FaceSurface};
 use crate::error::IoError;
 use crate::write::write_atomic;
 
@@ -14,9 +15,24 @@ pub enum CadEntity<'a> {
     /// A B-spline curve (in STEP: a `B_SPLINE_CURVE_WITH_KNOTS` in a wireframe
     /// representation; in IGES: entity 126).
     Curve(&'a BSplineCurve<3>),
-    /// A B-spline surface (in STEP: a `B_SPLINE_SURFACE_WITH_KNOTS` as the face of an open
-    /// shell, bounded by its four boundary curves; in IGES: entity 128).
+    /// A B-spline surface (in STEP: a `B_SPLINE_SURFACE_WITH_KNOTS` as the one face of a
+    /// shell bounded by its boundary curves, with poles and seams as [`CadShell`] makes
+    /// them, a solid when the surface closes on itself; in IGES: entity 128).
     Surface(&'a BSplineSurface<3>),
+    /// A shell of B-spline faces and planar caps (in STEP: an open shell, or a solid when
+    /// it is closed; in IGES: its faces, entity 128, and its caps, trimmed planes, entity
+    /// 144).
+    Shell(&'a CadShell),
+}
+
+/// The one-face shell of the surface `s`, turned outwards when it is closed (a body closed by
+/// its poles and seams).
+pub(crate) fn surface_shell(s: &BSplineSurface<3>) -> CadShell {
+    let mut shell = CadShell::of_surfaces(std::slice::from_ref(s));
+    if shell.is_closed() {
+        shell.orient_outward();
+    }
+    shell
 }
 
 /// A curve of dimension `D <= 3` in 3-D space (missing coordinates 0: a planar curve lies
@@ -100,6 +116,20 @@ pub(crate) fn max_coordinate(entities: &[CadEntity<'_>]) -> f64 {
         .map(|e| match e {
             CadEntity::Curve(c) => largest(c.control_points()),
             CadEntity::Surface(s) => largest(s.control_points().as_slice()),
+            CadEntity::Shell(shell) => shell
+                .faces()
+                .iter()
+                .map(|f| match &f.surface {
+                    FaceSurface::BSpline(s) => largest(s.control_points().as_slice()),
+                    FaceSurface::Plane(_) => 0.0,
+                })
+                .chain(
+                    shell
+                        .edges()
+                        .iter()
+                        .map(|e| largest(e.curve.control_points())),
+                )
+                .fold(0.0, f64::max),
         })
         .fold(0.0, f64::max)
 }

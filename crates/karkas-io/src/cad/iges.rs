@@ -1,4 +1,6 @@
-//! IGES 5.3 files of exact B-spline curves (entity 126) and surfaces (entity 128).
+//! IGES 5.3 files of exact B-spline curves (entity 126) and surfaces (entity 128), and the
+//! faces of shells: B-spline faces (128) and planar caps as trimmed surfaces (144 over a
+//! planar 128, trimmed by a curve on it, 142, made of the cap's edges, 102 of 126).
 //!
 //! Fixed 80-column records: Start (`S`), Global (`G`), Directory Entry (`D`, two lines per
 //! entity), Parameter Data (`P`, data in columns 1–64, the entity's directory pointer in
@@ -14,11 +16,13 @@ use std::fmt::Write as _;
 use std::path::Path;
 
 use karkas::bspline::{BSplineCurve, BSplineSurface};
-use karkas::{Curve, Surface};
+use karkas::geometry::cross;
+use karkas::{Curve, Grid, Point3, Surface};
 
 use crate::cad::entity::{
     curve_closed, max_coordinate, real, surface_closed, write_named, CadEntity,
 };
+use crate::cad::shell::{CadShell, FaceSurface};
 use crate::cad::time_stamp::FileStamp;
 use crate::error::IoError;
 
@@ -27,12 +31,182 @@ const P_WIDTH: usize = 64;
 /// Columns of data in a global or start line.
 const G_WIDTH: usize = 72;
 
-/// The parameters of one entity (type number first) and its form number.
-fn parameters(entity: &CadEntity<'_>) -> (u32, Vec<String>) {
-    match entity {
-        CadEntity::Curve(c) => (126, curve_parameters(c)),
-        CadEntity::Surface(s) => (128, surface_parameters(s)),
+/// One IGES entity: its type number, parameters (type number first), whether it is
+/// physically dependent on another (a part of a trimmed surface), and its label.
+struct Record {
+    kind: u32,
+    fields: Vec<String>,
+    dependent: bool,
+}
+
+impl Record {
+    fn label(&self) -> &'static str {
+        match self.kind {
+            126 => "BSCURVE",
+            128 => "BSSURF",
+            102 => "CCURVE",
+            142 => "CRVONSRF",
+            _ => "TRMSURF",
+        }
     }
+}
+
+/// The records of `entities`, in order.
+fn records(entities: &[CadEntity<'_>]) -> Vec<Record> {
+    let mut out = Vec::new();
+    for entity in entities {
+        match entity {
+            CadEntity::Curve(c) => out.push(Record {
+                kind: 126,
+                fields: curve_parameters(c),
+                dependent: false,
+            }),
+            CadEntity::Surface(s) => out.push(Record {
+                kind: 128,
+                fields: surface_parameters(s),
+                dependent: false,
+            }),
+            CadEntity::Shell(shell) => shell_records(shell, &mut out),
+        }
+    }
+    out
+}
+
+/// The directory pointer of the record of index `k`.
+fn pointer(k: usize) -> String {
+    (2 * k + 1).to_string()
+}
+
+/// The faces of `shell`: each B-spline face an untrimmed surface (entity 128, which readers
+/// bound by its parameter rectangle, with its poles and seams), each planar cap a trimmed
+/// surface (entity 144): a planar B-spline patch (128) covering the cap, trimmed by its
+/// boundary loop (142, the loop's edges as one composite curve, 102, of entities 126 in
+/// model space).
+fn shell_records(shell: &CadShell, out: &mut Vec<Record>) {
+    for face in shell.faces() {
+        let plane = match &face.surface {
+            FaceSurface::BSpline(s) => {
+                out.push(Record {
+                    kind: 128,
+                    fields: surface_parameters(s),
+                    dependent: false,
+                });
+                continue;
+            }
+            FaceSurface::Plane(plane) => *plane,
+        };
+        let curves: Vec<BSplineCurve<3>> = face
+            .bound
+            .iter()
+            .map(|o| {
+                let curve = &shell.edges()[o.edge].curve;
+                if o.forward {
+                    curve.clone()
+                } else {
+                    reversed(curve)
+                }
+            })
+            .collect();
+        // The patch: the bounding rectangle of the loop in the plane's axes, widened by a
+        // hundredth, its normal the face's.
+        let x = plane.x_axis();
+        let normal = if face.same_sense {
+            plane.normal
+        } else {
+            -plane.normal
+        };
+        let y = cross(normal, x);
+        let (mut low, mut high) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+        for p in curves.iter().flat_map(|c| c.control_points()) {
+            let d = *p - plane.origin;
+            for (c, axis) in [x, y].iter().enumerate() {
+                low[c] = low[c].min(d.dot(*axis));
+                high[c] = high[c].max(d.dot(*axis));
+            }
+        }
+        let margin = 0.01 * (high[0] - low[0]).max(high[1] - low[1]);
+        let grid = Grid::from_fn(2, 2, |i, j| {
+            let a = if i == 0 {
+                low[0] - margin
+            } else {
+                high[0] + margin
+            };
+            let b = if j == 0 {
+                low[1] - margin
+            } else {
+                high[1] + margin
+            };
+            plane.origin + x * a + y * b
+        });
+        let Ok(patch) = BSplineSurface::new(
+            (1, vec![0.0, 0.0, 1.0, 1.0]),
+            (1, vec![0.0, 0.0, 1.0, 1.0]),
+            grid,
+        ) else {
+            continue;
+        };
+        let surface = out.len();
+        out.push(Record {
+            kind: 128,
+            fields: surface_parameters(&patch),
+            dependent: true,
+        });
+        let mut pieces = Vec::new();
+        for c in &curves {
+            pieces.push(pointer(out.len()));
+            out.push(Record {
+                kind: 126,
+                fields: curve_parameters(c),
+                dependent: true,
+            });
+        }
+        let boundary = if pieces.len() == 1 {
+            pieces[0].clone()
+        } else {
+            let mut fields = vec!["102".to_owned(), pieces.len().to_string()];
+            fields.extend(pieces);
+            out.push(Record {
+                kind: 102,
+                fields,
+                dependent: true,
+            });
+            pointer(out.len() - 1)
+        };
+        // Curve on a surface: unspecified creation, the plane, no parameter-space curve, the
+        // model-space curve, which is preferred.
+        out.push(Record {
+            kind: 142,
+            fields: vec![
+                "142".into(),
+                "0".into(),
+                pointer(surface),
+                "0".into(),
+                boundary,
+                "2".into(),
+            ],
+            dependent: true,
+        });
+        let on_surface = pointer(out.len() - 1);
+        out.push(Record {
+            kind: 144,
+            fields: vec![
+                "144".into(),
+                pointer(surface),
+                "1".into(),
+                "0".into(),
+                on_surface,
+            ],
+            dependent: false,
+        });
+    }
+}
+
+/// The curve `c` run backwards over the same domain.
+fn reversed(c: &BSplineCurve<3>) -> BSplineCurve<3> {
+    let (a, b) = (c.knots()[0], c.knots()[c.knots().len() - 1]);
+    let knots: Vec<f64> = c.knots().iter().rev().map(|&k| a + b - k).collect();
+    let control: Vec<Point3> = c.control_points().iter().rev().copied().collect();
+    BSplineCurve::new(c.degree(), knots, control).unwrap_or_else(|_| c.clone())
 }
 
 fn curve_parameters(c: &BSplineCurve<3>) -> Vec<String> {
@@ -174,18 +348,23 @@ pub fn iges_text(entities: &[CadEntity<'_>], name: &str) -> String {
     // Parameter lines of every entity, then the directory pointing at them.
     let mut parameter_lines: Vec<(String, usize)> = Vec::new();
     let mut directory: Vec<[String; 2]> = Vec::new();
-    for (k, entity) in entities.iter().enumerate() {
+    for (k, entity) in records(entities).iter().enumerate() {
         let de = 2 * k + 1;
-        let (kind, fields) = parameters(entity);
-        let lines = pack(&fields, P_WIDTH);
+        let kind = entity.kind;
+        let lines = pack(&entity.fields, P_WIDTH);
         let first = parameter_lines.len() + 1;
         let count = lines.len();
         parameter_lines.extend(lines.into_iter().map(|l| (l, de)));
-        let label = if kind == 126 { "BSCURVE" } else { "BSSURF" };
+        let label = entity.label();
+        let status = if entity.dependent {
+            "00010000"
+        } else {
+            "00000000"
+        };
         directory.push([
             format!(
-                "{kind:>8}{first:>8}{:>8}{:>8}{:>8}{:>8}{:>8}{:>8}{:>8}",
-                0, 0, 0, 0, 0, 0, "00000000"
+                "{kind:>8}{first:>8}{:>8}{:>8}{:>8}{:>8}{:>8}{:>8}{status:>8}",
+                0, 0, 0, 0, 0, 0
             ),
             format!(
                 "{kind:>8}{:>8}{:>8}{count:>8}{:>8}{:>8}{:>8}{label:>8}{:>8}",
@@ -226,7 +405,7 @@ pub fn write_iges(path: &Path, entities: &[CadEntity<'_>]) -> Result<(), IoError
 #[cfg(test)]
 mod tests {
     use super::*;
-    use karkas::{Grid, Point};
+    use karkas::Point;
 
     fn curve() -> BSplineCurve<3> {
         BSplineCurve::new(

@@ -3,10 +3,13 @@
 //!
 //! Curves are `B_SPLINE_CURVE_WITH_KNOTS` in a `GEOMETRIC_CURVE_SET` of a
 //! `GEOMETRICALLY_BOUNDED_WIREFRAME_SHAPE_REPRESENTATION`; surfaces are
-//! `B_SPLINE_SURFACE_WITH_KNOTS` carried by an `ADVANCED_FACE` bounded by its four boundary
-//! curves (the iso-lines at the domain ends, exact B-splines too), in an `OPEN_SHELL` of a
+//! `B_SPLINE_SURFACE_WITH_KNOTS` carried by an `ADVANCED_FACE` bounded by its boundary
+//! curves (the iso-lines at the domain ends, exact B-splines too; no edge at a pole, one seam
+//! edge used twice for a closed direction: [`CadShell`]), in an `OPEN_SHELL` of a
 //! `SHELL_BASED_SURFACE_MODEL` of a `MANIFOLD_SURFACE_SHAPE_REPRESENTATION`: the forms CAD
-//! systems import as wires and faces. One product holds all items; lengths are in
+//! systems import as wires and faces. A closed shell (a body closed by its poles and seams,
+//! or capped by planar faces, `PLANE`) is a `CLOSED_SHELL` of a `MANIFOLD_SOLID_BREP` in an
+//! `ADVANCED_BREP_SHAPE_REPRESENTATION`: a solid, its faces turned outwards. One product holds all items; lengths are in
 //! millimetres (the data's own unit is not known). Reals carry 17 significant digits, so a
 //! reader gets the same `f64` back. Closed karkas curves and surfaces are written as clamped
 //! B-splines over one period, with their closed flags set (`.T.`).
@@ -18,9 +21,12 @@ use std::fmt::Write as _;
 use std::path::Path;
 
 use karkas::bspline::{BSplineCurve, BSplineSurface};
-use karkas::{Point, Surface};
+use karkas::Point;
 
-use crate::cad::entity::{curve_closed, knot_runs, real, surface_closed, write_named, CadEntity};
+use crate::cad::entity::{
+    curve_closed, knot_runs, real, surface_closed, surface_shell, write_named, CadEntity,
+};
+use crate::cad::shell::{CadShell, FaceSurface};
 use crate::cad::time_stamp::FileStamp;
 use crate::error::IoError;
 
@@ -83,48 +89,86 @@ impl Data {
         ))
     }
 
-    /// The face of `surface` bounded by its four boundary iso-curves.
-    fn face(&mut self, s: &BSplineSurface<3>, name: &str) -> String {
-        let surface = self.surface(s, name);
-        let (du, dv) = (s.domain_u(), s.domain_v());
-        let corner = |u: f64, v: f64| s.eval(u, v);
-        let corners = [
-            corner(du.start, dv.start),
-            corner(du.end, dv.start),
-            corner(du.end, dv.end),
-            corner(du.start, dv.end),
-        ];
-        let vertices: Vec<String> = corners
+    /// The faces of `shell` (see [`CadShell`]): its vertices, edges (each written once,
+    /// however many loops use it), loops and faces, in an `OPEN_SHELL` or, when it is
+    /// closed, a `CLOSED_SHELL`. Returns the shell's reference and whether it is closed.
+    fn shell(&mut self, shell: &CadShell, name: &str) -> (String, bool) {
+        let vertices: Vec<String> = shell
+            .vertices()
             .iter()
             .map(|&p| {
                 let point = self.point(p);
                 self.add(format!("VERTEX_POINT('',{point})"))
             })
             .collect();
-        // (curve, start vertex, end vertex along the curve's parameter, same sense as loop)
-        let sides = [
-            (s.curve_at_v(dv.start), 0, 1, true),
-            (s.curve_at_u(du.end), 1, 2, true),
-            (s.curve_at_v(dv.end), 3, 2, false),
-            (s.curve_at_u(du.start), 0, 3, false),
-        ];
-        let edges: Vec<String> = sides
+        let edges: Vec<String> = shell
+            .edges()
             .iter()
-            .map(|(curve, a, b, sense)| {
-                let geometry = self.curve(curve, "");
-                let edge = self.add(format!(
-                    "EDGE_CURVE('',{},{},{geometry},.T.)",
-                    vertices[*a], vertices[*b]
-                ));
+            .map(|e| {
+                let geometry = self.curve(&e.curve, "");
                 self.add(format!(
-                    "ORIENTED_EDGE('',*,*,{edge},{})",
-                    if *sense { ".T." } else { ".F." }
+                    "EDGE_CURVE('',{},{},{geometry},.T.)",
+                    vertices[e.start], vertices[e.end]
                 ))
             })
             .collect();
-        let edge_loop = self.add(format!("EDGE_LOOP('',({}))", edges.join(",")));
-        let bound = self.add(format!("FACE_OUTER_BOUND('',{edge_loop},.T.)"));
-        self.add(format!("ADVANCED_FACE('{name}',({bound}),{surface},.T.)"))
+        let mut faces = Vec::new();
+        for (k, face) in shell.faces().iter().enumerate() {
+            let face_name = if k == 0 {
+                name.to_owned()
+            } else {
+                format!("{name}_{k}")
+            };
+            let surface = match &face.surface {
+                FaceSurface::BSpline(s) => self.surface(s, &face_name),
+                FaceSurface::Plane(plane) => {
+                    let origin = self.point(plane.origin);
+                    let axis = self.direction(plane.normal);
+                    let x = self.direction(plane.x_axis());
+                    let placement = self.add(format!("AXIS2_PLACEMENT_3D('',{origin},{axis},{x})"));
+                    self.add(format!("PLANE('{face_name}',{placement})"))
+                }
+            };
+            let bound = if face.bound.is_empty() {
+                // A face with no edge at all (every side a point): bounded by a vertex.
+                let vertex = vertices.first().cloned().unwrap_or_default();
+                let vertex_loop = self.add(format!("VERTEX_LOOP('',{vertex})"));
+                self.add(format!("FACE_BOUND('',{vertex_loop},.T.)"))
+            } else {
+                let oriented: Vec<String> = face
+                    .bound
+                    .iter()
+                    .map(|o| {
+                        self.add(format!(
+                            "ORIENTED_EDGE('',*,*,{},{})",
+                            edges[o.edge],
+                            logical(o.forward)
+                        ))
+                    })
+                    .collect();
+                let edge_loop = self.add(format!("EDGE_LOOP('',({}))", oriented.join(",")));
+                self.add(format!("FACE_OUTER_BOUND('',{edge_loop},.T.)"))
+            };
+            faces.push(self.add(format!(
+                "ADVANCED_FACE('{face_name}',({bound}),{surface},{})",
+                logical(face.same_sense)
+            )));
+        }
+        let closed = shell.is_closed();
+        let kind = if closed { "CLOSED_SHELL" } else { "OPEN_SHELL" };
+        (
+            self.add(format!("{kind}('',({}))", faces.join(","))),
+            closed,
+        )
+    }
+
+    fn direction(&mut self, d: Point<3>) -> String {
+        self.add(format!(
+            "DIRECTION('',({},{},{}))",
+            real(d[0]),
+            real(d[1]),
+            real(d[2])
+        ))
     }
 }
 
@@ -192,12 +236,22 @@ pub fn step_text(entities: &[CadEntity<'_>], name: &str) -> String {
     let placement = data.add(format!("AXIS2_PLACEMENT_3D('',{origin},{z},{x})"));
 
     let mut curves = Vec::new();
-    let mut faces = Vec::new();
+    let mut open_shells = Vec::new();
+    let mut solids = Vec::new();
     for (k, entity) in entities.iter().enumerate() {
         let item = format!("{name}_{k}");
-        match entity {
-            CadEntity::Curve(c) => curves.push(data.curve(c, &item)),
-            CadEntity::Surface(s) => faces.push(data.face(s, &item)),
+        let (shell, closed) = match entity {
+            CadEntity::Curve(c) => {
+                curves.push(data.curve(c, &item));
+                continue;
+            }
+            CadEntity::Surface(s) => data.shell(&surface_shell(s), &item),
+            CadEntity::Shell(shell) => data.shell(shell, &item),
+        };
+        if closed {
+            solids.push(data.add(format!("MANIFOLD_SOLID_BREP('{item}',{shell})")));
+        } else {
+            open_shells.push(shell);
         }
     }
     let mut representations = Vec::new();
@@ -207,11 +261,19 @@ pub fn step_text(entities: &[CadEntity<'_>], name: &str) -> String {
             "GEOMETRICALLY_BOUNDED_WIREFRAME_SHAPE_REPRESENTATION('{name}',({placement},{set}),{context})"
         )));
     }
-    if !faces.is_empty() {
-        let shell = data.add(format!("OPEN_SHELL('',({}))", faces.join(",")));
-        let model = data.add(format!("SHELL_BASED_SURFACE_MODEL('',({shell}))"));
+    if !open_shells.is_empty() {
+        let model = data.add(format!(
+            "SHELL_BASED_SURFACE_MODEL('',({}))",
+            open_shells.join(",")
+        ));
         representations.push(data.add(format!(
             "MANIFOLD_SURFACE_SHAPE_REPRESENTATION('{name}',({placement},{model}),{context})"
+        )));
+    }
+    if !solids.is_empty() {
+        representations.push(data.add(format!(
+            "ADVANCED_BREP_SHAPE_REPRESENTATION('{name}',({placement},{}),{context})",
+            solids.join(",")
         )));
     }
     for r in representations {

@@ -2,7 +2,9 @@
 //! (with their input points).
 
 use crate::cad::dxf::{dxf_text, DxfCurve};
-use crate::cad::{curve_closed, curve_in_space, CadEntity, CadError, MAX_CAD_DEGREE};
+use crate::cad::{
+    curve_closed, curve_in_space, CadEntity, CadError, CadShell, FaceSurface, MAX_CAD_DEGREE,
+};
 use crate::iges::iges_text;
 use crate::step::step_text;
 use crate::write::write_atomic;
@@ -99,6 +101,47 @@ pub fn cad_surface_text(
         OutputFormat::Iges => iges_text(&entities, name),
         _ => step_text(&entities, name),
     })
+}
+
+/// The text of the STEP or IGES file (by `format`) of the shell `shell` (a solid in STEP when
+/// it is closed), the product named `name`: byte for byte what [`write_cad_shell`] writes to a
+/// file of that stem.
+///
+/// Errors: a face of a degree above [`MAX_CAD_DEGREE`] ([`IoError::Data`] naming the file
+/// `name`.ext).
+pub fn cad_shell_text(
+    shell: &CadShell,
+    format: OutputFormat,
+    name: &str,
+) -> Result<String, IoError> {
+    let target = format!("{name}.{}", format.extension());
+    let degree = shell
+        .faces()
+        .iter()
+        .map(|f| match &f.surface {
+            FaceSurface::BSpline(s) => s.degree_u().max(s.degree_v()),
+            FaceSurface::Plane(_) => 1,
+        })
+        .max()
+        .unwrap_or(1);
+    check_degree(degree, format, Path::new(&target))?;
+    let entities = [CadEntity::Shell(shell)];
+    Ok(match format {
+        OutputFormat::Iges => iges_text(&entities, name),
+        _ => step_text(&entities, name),
+    })
+}
+
+/// Writes the shell `shell` at `output` as STEP (a solid when it is closed) or IGES (its
+/// faces), by `format`.
+pub fn write_cad_shell(
+    shell: &CadShell,
+    format: OutputFormat,
+    output: &Path,
+) -> Result<(), IoError> {
+    let format = format.allowed_for(output, &OutputFormat::CAD)?;
+    let text = cad_shell_text(shell, format, file_name(output))?;
+    write_atomic(output, |out| out.write_all(text.as_bytes()))
 }
 
 /// Refuses a B-spline of a degree above [`MAX_CAD_DEGREE`] for STEP and IGES.

@@ -5,6 +5,8 @@
 
 use super::formats::SURFACE_FORMATS;
 use super::samples::sample_surface;
+use crate::mesh::closed::GridPoles;
+use crate::mesh::triangulate::GridSeams;
 use crate::mesh::{write_surface_mesh_as, MeshOptions};
 use crate::obj::write_surface_obj;
 use crate::scene::{
@@ -50,7 +52,9 @@ pub fn write_sampled_surface(
     let format = format.allowed_for(output, &SURFACE_FORMATS)?;
     let (us, vs, mut samples) = sample_surface(surface, nu, nv);
     match format {
-        OutputFormat::Obj => {
+        // A body (poles or a closed direction) goes through the general mesh writer, which
+        // closes its poles with fans and turns it outwards (`mesh/closed.rs`).
+        OutputFormat::Obj if !is_body(nu, nv, &samples) => {
             if drawing.mesh.flip_normals && nv > 0 {
                 // Turned over in place: each row backwards, as `flip_orientation` does.
                 samples.chunks_mut(nv).for_each(<[Point3]>::reverse);
@@ -68,6 +72,12 @@ pub fn write_sampled_surface(
             write_surface(output, format, &grid, drawing)
         }
     }
+}
+
+/// True when the `nu x nv` samples `samples` have a pole line or a closed direction.
+fn is_body(nu: usize, nv: usize, samples: &[Point3]) -> bool {
+    let seams = GridSeams::detect(nu, nv, samples);
+    seams.closed_u || seams.closed_v || GridPoles::detect(nu, nv, samples).any()
 }
 
 /// Writes the grid of points `samples` (row-major, `u` outer) at `output` in `format`, one of

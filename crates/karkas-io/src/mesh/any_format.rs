@@ -15,6 +15,7 @@ use karkas::{Grid, Point3};
 use crate::error::{data_error, IoError};
 use crate::format::OutputFormat;
 use crate::input::{is_stdin, Input};
+use crate::mesh::closed::closed_grid_mesh;
 use crate::mesh::glb::write_mesh_glb;
 use crate::mesh::obj::{read_obj_mesh, write_mesh_obj};
 use crate::mesh::ply::{read_ply_from, write_mesh_ply, PlyEncoding};
@@ -100,14 +101,22 @@ pub fn write_surface_mesh(
 }
 
 /// Writes the sampled surface `grid` as a mesh in `format` (see [`write_mesh_as`]; the seam of
-/// a closed grid is welded in OBJ, PLY and glTF).
+/// a closed grid is welded in OBJ, PLY and glTF, its poles closed by fans in every format but
+/// the VTK grids, and a closed mesh turned so that its normals point outwards: see
+/// [`closed_grid_mesh`]).
 pub fn write_surface_mesh_as(
     format: OutputFormat,
     path: &Path,
     grid: &Grid<Point3>,
     options: &MeshOptions,
 ) -> Result<(), IoError> {
-    let mut mesh = TriangleMesh::from_grid(grid).map_err(IoError::invalid_mesh(path))?;
+    let mesh = TriangleMesh::from_grid(grid).map_err(IoError::invalid_mesh(path))?;
+    let mut mesh = if matches!(format, OutputFormat::Vtk | OutputFormat::Vts) {
+        // Structured grids: the samples as they are.
+        mesh
+    } else {
+        closed_grid_mesh(mesh).0
+    };
     if options.flip_normals {
         mesh.flip_orientation();
     }

@@ -7,10 +7,13 @@
 //!   one.
 //! - [`write_mesh`] / [`read_mesh`] ([`MeshOptions`]): any format by extension, standard
 //!   input by content ([`sniff_mesh_format`]).
+//! - [`closed`]: bodies: poles closed by fans, seams welded, planar caps, outward normals
+//!   and the enclosed volume ([`body_mesh`]).
 //! - [`obj`] (Wavefront OBJ), [`stl`] (binary and ASCII STL), [`ply`] (Stanford PLY),
 //!   [`vtk`] (legacy VTK and XML structured grids `.vts`), [`glb`] (binary glTF 2.0).
 
 mod any_format;
+pub mod closed;
 pub(crate) mod error;
 pub mod glb;
 pub(crate) mod normals;
@@ -28,5 +31,6 @@ pub use any_format::{
     is_mesh_prefix, read_mesh, read_mesh_from, sniff_mesh_format, write_mesh, write_mesh_as,
     write_surface_mesh, write_surface_mesh_as, MeshFormat, MeshOptions, SNIFF_BYTES,
 };
+pub use closed::{body_mesh, closed_grid_mesh, BodyMeshError, MeshBody, MeshCap};
 pub use error::MeshError;
 pub use triangle_mesh::TriangleMesh;

@@ -4,19 +4,22 @@
 //! the repeated samples are not written and the triangles along the seam use the first
 //! row's (column's) vertices, so that mesh tools see one closed surface.
 //!
-//! Nothing is copied: positions, normals and triangles are produced on demand from the mesh
-//! (normals are computed once when the mesh has none).
+//! A grid whose first or last row (column) is one point (a pole) is written as the general
+//! mesh of `mesh/closed.rs` instead, its poles closed by fans. Otherwise nothing is copied:
+//! positions, normals and triangles are produced on demand from the mesh (normals are
+//! computed once when the mesh has none).
 
 use std::borrow::Cow;
 
 use karkas::Point3;
 
+use crate::mesh::closed::{has_poles, weld_grid_mesh};
 use crate::mesh::triangle_mesh::TriangleMesh;
 use crate::mesh::triangulate::GridSeams;
 
 /// The vertices and triangles of a mesh as a format with shared vertices writes them.
 pub(crate) struct SharedVertices<'a> {
-    mesh: &'a TriangleMesh,
+    mesh: Cow<'a, TriangleMesh>,
     seams: GridSeams,
     normals: Cow<'a, [Point3]>,
 }
@@ -24,15 +27,19 @@ pub(crate) struct SharedVertices<'a> {
 impl<'a> SharedVertices<'a> {
     /// The mesh `mesh` (assumed valid), its grid seams welded when it has a grid shape.
     pub fn of(mesh: &'a TriangleMesh) -> SharedVertices<'a> {
+        let mesh = if has_poles(mesh) {
+            Cow::Owned(weld_grid_mesh(mesh))
+        } else {
+            Cow::Borrowed(mesh)
+        };
         let n = mesh.positions.len();
         let seams = match mesh.grid {
             Some((nu, nv)) => GridSeams::detect(nu, nv, &mesh.positions),
             None => GridSeams::open(n, 1),
         };
-        let normals = if mesh.normals.len() == n {
-            Cow::Borrowed(mesh.normals.as_slice())
-        } else {
-            Cow::Owned(mesh.vertex_normals())
+        let normals = match &mesh {
+            Cow::Borrowed(m) if m.normals.len() == n => Cow::Borrowed(m.normals.as_slice()),
+            _ => Cow::Owned(mesh.vertex_normals()),
         };
         SharedVertices {
             mesh,

@@ -13,8 +13,12 @@
 //! points are exact copies, and the mesh is closed in the sense STL knows (its edges meet at
 //! equal vertex coordinates).
 //!
+//! A grid mesh with a pole line (see `mesh/closed.rs`) is written with its poles closed by
+//! fans, without zero-area triangles.
+//!
 //! Reading (binary or ASCII, from a file or standard input) is in `mesh/stl_read.rs`.
 
+use std::borrow::Cow;
 use std::io;
 use std::path::Path;
 
@@ -22,6 +26,7 @@ use karkas::Point3;
 use stl_io::{Normal, Triangle, Vertex};
 
 use crate::error::IoError;
+use crate::mesh::closed::{has_poles, weld_grid_mesh};
 use crate::mesh::error::MeshError;
 use crate::mesh::normals::triangle_normal;
 use crate::mesh::triangle_mesh::TriangleMesh;
@@ -68,6 +73,8 @@ fn triangle(corners: [Point3; 3]) -> Triangle {
 /// [`IoError::InvalidMesh`], nothing written.
 pub fn write_mesh_stl(path: &Path, mesh: &TriangleMesh, ascii: bool) -> Result<(), IoError> {
     mesh.check_writable(path)?;
+    let mesh = poles_welded(mesh);
+    let mesh = mesh.as_ref();
     if ascii {
         write_atomic(path, |out| render_mesh_stl_ascii(mesh, out))
     } else {
@@ -81,6 +88,7 @@ pub fn write_mesh_stl(path: &Path, mesh: &TriangleMesh, ascii: bool) -> Result<(
 
 /// Writes the ASCII STL text of `mesh` into `out` (the mesh is assumed valid).
 pub fn render_mesh_stl_ascii(mesh: &TriangleMesh, out: &mut dyn io::Write) -> io::Result<()> {
+    let mesh = poles_welded(mesh);
     writeln!(out, "solid karkas")?;
     for t in &mesh.triangles {
         let n = mesh.face_normal(*t);
@@ -92,6 +100,16 @@ pub fn render_mesh_stl_ascii(mesh: &TriangleMesh, out: &mut dyn io::Write) -> io
         writeln!(out, "  endloop\nendfacet")?;
     }
     writeln!(out, "endsolid karkas")
+}
+
+/// `mesh`, or, for a grid with a pole line, its general mesh with the poles closed by fans
+/// (`mesh/closed.rs`), so that no triangle has zero area.
+fn poles_welded(mesh: &TriangleMesh) -> Cow<'_, TriangleMesh> {
+    if has_poles(mesh) {
+        Cow::Owned(weld_grid_mesh(mesh))
+    } else {
+        Cow::Borrowed(mesh)
+    }
 }
 
 #[cfg(test)]

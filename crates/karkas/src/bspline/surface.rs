@@ -195,6 +195,43 @@ impl<const D: usize> Surface<D> for BSplineSurface<D> {
 }
 
 impl<const D: usize> BSplineSurface<D> {
+    /// The partial derivative `d^(ku+kv) S / du^ku dv^kv` as a B-spline surface (degrees
+    /// lowered by `ku` and `kv`, at least 0), built once for evaluating it at many points
+    /// (each [`Surface::deriv`] call builds it anew).
+    pub fn derivative_surface(&self, ku: usize, kv: usize) -> BSplineSurface<D> {
+        self.derivative_in_v(kv).derivative_in_u(ku)
+    }
+
+    /// The surface differentiated `k` times in `u` (as [`Self::derivative_in_v`]).
+    fn derivative_in_u(&self, k: usize) -> BSplineSurface<D> {
+        let mut s = self.clone();
+        for _ in 0..k {
+            if s.degree_u == 0 {
+                break;
+            }
+            let p = s.degree_u;
+            let (rows, cols) = (s.control.rows(), s.control.cols());
+            let control = Grid::from_fn(rows - 1, cols, |i, j| {
+                let span = s.knots_u[i + p + 1] - s.knots_u[i + 1];
+                if span > 0.0 {
+                    (*s.control.get(i + 1, j) - *s.control.get(i, j)) * (p as f64 / span)
+                } else {
+                    Point::ZERO
+                }
+            });
+            s = BSplineSurface {
+                degree_u: p - 1,
+                degree_v: s.degree_v,
+                knots_u: s.knots_u[1..s.knots_u.len() - 1].to_vec(),
+                knots_v: s.knots_v,
+                control,
+                closed_u: false,
+                closed_v: false,
+            };
+        }
+        s
+    }
+
     /// The surface differentiated `k` times in `v` (degree `q - k`, at least 0; a degree-0
     /// direction is piecewise constant, which de Boor's algorithm evaluates as is).
     fn derivative_in_v(&self, k: usize) -> BSplineSurface<D> {

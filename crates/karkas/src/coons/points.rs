@@ -489,8 +489,17 @@ fn find_crossings<const D: usize>(
     // (`size` is the model size the tolerance is relative to).
     let cell = tolerance.max(size * 1e-12).max(f64::MIN_POSITIVE);
     let key = |p: &Point<D>| -> [i64; D] { core::array::from_fn(|c| (p[c] / cell).floor() as i64) };
+    // A pole (a curve that is one point: the nose of a body) meets every curve of the other
+    // family at that point; its crossings are spread over its points in the order of the
+    // curves it meets, as a frame's crossings are (see `pole_crossings`).
+    let is_pole = |curve: &[Point<D>]| curve.iter().all(|p| p.distance(curve[0]) <= tolerance);
+    let u_poles: Vec<bool> = u.curves.iter().map(|c| is_pole(c)).collect();
+    let v_poles: Vec<bool> = v.curves.iter().map(|c| is_pole(c)).collect();
     let mut grid: HashMap<[i64; D], Vec<(usize, usize)>> = HashMap::new();
     for (j, curve) in u.curves.iter().enumerate() {
+        if u_poles[j] {
+            continue;
+        }
         for (q, p) in curve[..distinct_len(curve, u.closed)].iter().enumerate() {
             grid.entry(key(p)).or_default().push((j, q));
         }
@@ -499,6 +508,9 @@ fn find_crossings<const D: usize>(
     let mut found: Vec<Vec<(usize, usize)>> = vec![Vec::new(); v.curves.len() * n];
     let neighbours = 3usize.pow(D as u32);
     for (i, curve) in v.curves.iter().enumerate() {
+        if v_poles[i] {
+            continue;
+        }
         for (k, p) in curve[..distinct_len(curve, v.closed)].iter().enumerate() {
             let base = key(p);
             for code in 0..neighbours {
@@ -522,6 +534,7 @@ fn find_crossings<const D: usize>(
             }
         }
     }
+    pole_crossings(v, u, (&v_poles, &u_poles), tolerance, &mut found)?;
     found
         .into_iter()
         .enumerate()
@@ -541,6 +554,65 @@ fn find_crossings<const D: usize>(
             }
         })
         .collect()
+}
+
+/// The crossings of the poles (`poles.0` marks the v-curves that are one point, `poles.1` the
+/// u-curves) with the curves of the other family, added to `found` (row-major by v-curve): a
+/// pole's crossing with the `c`-th of the `count` curves it meets is its point
+/// `c * points / count` (`points` its distinct points), so that the crossings advance along it
+/// in order and a pole sampled as densely as the other curves has them at the same point
+/// indices; the other curve's crossing is its point at the pole (an end, for a nose).
+///
+/// Errors: a pole with fewer distinct points than the curves it meets; two poles that would
+/// cross; a curve that does not pass through a pole.
+fn pole_crossings<const D: usize>(
+    v: &Family<'_, D>,
+    u: &Family<'_, D>,
+    (v_poles, u_poles): (&[bool], &[bool]),
+    tolerance: f64,
+    found: &mut [Vec<(usize, usize)>],
+) -> Result<()> {
+    let (m, n) = (v.curves.len(), u.curves.len());
+    for i in 0..m {
+        for j in 0..n {
+            if !v_poles[i] && !u_poles[j] {
+                continue;
+            }
+            let problem = |text: String| Error::NetworkCrossing {
+                v_curve: i,
+                u_curve: j,
+                problem: text,
+            };
+            if v_poles[i] && u_poles[j] {
+                return Err(problem("both curves are single points (poles)".into()));
+            }
+            // (the pole's family, its curve, the other's curve, its index among the curves
+            // the pole meets, their count)
+            let (pole, other, other_closed, c, count) = if v_poles[i] {
+                (&v.curves[i], &u.curves[j], u.closed, j, n)
+            } else {
+                (&u.curves[j], &v.curves[i], v.closed, i, m)
+            };
+            let points = distinct_len(pole, if v_poles[i] { v.closed } else { u.closed });
+            if points < count {
+                return Err(problem(format!(
+                    "a curve that is one point (a pole) needs at least as many points as the                      {count} curves it meets, to give each its own crossing; it has {points}"
+                )));
+            }
+            let at = pole[0];
+            let Some(q) = other[..distinct_len(other, other_closed)]
+                .iter()
+                .position(|p| p.distance(at) <= tolerance)
+            else {
+                return Err(problem(format!(
+                    "no common point: the curve does not pass through the pole (to within                      {tolerance:.3e})"
+                )));
+            };
+            let k = c * points / count;
+            found[i * n + j] = vec![if v_poles[i] { (k, q) } else { (q, k) }];
+        }
+    }
+    Ok(())
 }
 
 /// The error for a pair of curves with two crossings `a` and `b` (point indices on the

@@ -48,7 +48,8 @@ use super::guards::with_warnings;
 use super::knots::{start_parameters_for, uniform_with_corners, warm_parameters};
 use super::noise::estimate_noise;
 use super::penalty::{
-    check_inputs, check_settings, fit_checked, in_fit_units, FitOptions, TOLERANCE_SMOOTHING,
+    check_inputs, check_settings, fit_checked, in_fit_units, FitEnds, FitOptions,
+    TOLERANCE_SMOOTHING,
 };
 use super::prune::prune;
 use super::refine::{refined_knots, worst_per_piece};
@@ -213,10 +214,14 @@ fn adaptive_rounds<const D: usize>(
     let noise = estimate_noise(points);
     let sigma = noise.sigma;
     // The ends are not held at an estimate: every point, the first and the last included,
-    // must come within the tolerance.
+    // must come within the tolerance. Ends that coincide are pinned there (a closed
+    // profile), unless the caller freed them.
     let options = &FitOptions {
         max_iterations: options.max_iterations.min(ROUND_ITERATIONS),
-        estimated_ends: false,
+        ends: match options.ends {
+            FitEnds::Auto => FitEnds::Shared,
+            other => other,
+        },
         smoothing: Some(if tolerance < NOISE_FLOOR * sigma {
             0.0
         } else {

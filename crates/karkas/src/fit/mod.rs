@@ -17,14 +17,15 @@
 //!   parameter block solved out, curvature terms kept; banded), safeguarded by
 //!   Levenberg–Marquardt damping and by the paper's alternation of a banded least-squares
 //!   solve with the projection of every point onto the curve; chord-length start; the ends
-//!   optionally pinned to the first and last points ([`FitOptions::pin_ends`]).
+//!   pinned to the first and last points, or at their common point when they coincide (a
+//!   closed profile: [`FitEnds`]).
 //! - On real data ([`FitOptions::ordered`], [`FitOptions::smoothing`], [`estimate_noise`]):
 //!   the foot-point parameters are kept in the order of the points, the noise is estimated
 //!   from the points and the bending weight made dimensionless (size, turning, points per
 //!   piece) and proportional to the noise (its noise part falling off at the ends, where the
 //!   term's natural end condition would pull the curve), the open ends are held on their
 //!   tangent lines where the points towards them say they lie, or at one point where they meet
-//!   ([`FitOptions::estimated_ends`]); the result carries the estimate and
+//!   ([`FitEnds::Auto`]); the result carries the estimate and
 //!   [`FitWarning`]s from the shape guards ([`shape_warnings`]: crossings, excess turning,
 //!   sparse pieces, empty spans; docs/methods.md §4, "On real and noisy data").
 //! - [`fit_curve_adaptive`]: knots placed automatically (uniform in chord length, then a
@@ -94,7 +95,7 @@ pub use knots::{
 };
 pub use noise::{estimate_noise, NoiseEstimate};
 pub use penalty::{
-    fit_curve, FitOptions, PenaltyRule, DEFAULT_FAIRNESS, DEFAULT_SETTLE_TOLERANCE,
-    DEFAULT_SMOOTHING, TOLERANCE_SMOOTHING,
+    fit_curve, shared_end, FitEnds, FitOptions, PenaltyRule, DEFAULT_FAIRNESS,
+    DEFAULT_SETTLE_TOLERANCE, DEFAULT_SMOOTHING, SHARED_END_TOLERANCE, TOLERANCE_SMOOTHING,
 };
 pub use result::{CurveFit, FitWarning, FitWarningKind};

@@ -138,11 +138,10 @@ pub struct FitOptions {
     /// points there are; its pull on the shape is about `rho |R''''(t)|` (a few `1e-6` of
     /// the chord on a NACA section at the default).
     pub fairness: f64,
-    /// Pin the end values to the first and last points (`R(0) = r_1`, `R(1) = r_n`;
-    /// default `false`): for a contour sampled from a known point (e.g. a trailing edge).
-    /// Without it the ends of a noisy fit are held at an estimate
-    /// ([`FitOptions::estimated_ends`]).
-    pub pin_ends: bool,
+    /// Where the ends lie ([`FitEnds`]; default [`FitEnds::Auto`]: ends whose points
+    /// coincide, a closed profile, pinned at that point; other ends of a noisy fit held where
+    /// the points towards them say).
+    pub ends: FitEnds,
     /// The inner minimization stops once an undamped step changes no point's distance by
     /// more than `settle_tolerance` times the RMS distance (default
     /// [`DEFAULT_SETTLE_TOLERANCE`], `1e-2`), or when the gradient of the objective vanishes
@@ -156,14 +155,6 @@ pub struct FitOptions {
     /// parameters cannot decrease; without it a noisy cloud at a sharp end or between close
     /// points lets the curve fold back to serve points out of order (a hook or a loop).
     pub ordered: bool,
-    /// Hold each open end of a noisy fit where the points towards it say it lies
-    /// (default `true`; docs/methods.md §4, "Ends"). Noisy points beyond an end project onto
-    /// the end itself and pull it outward along the tangent; after the fit with free foot
-    /// points each end is pinned on its tangent line, at the end of a quadratic in the point
-    /// index fitted to the points towards it; two ends that the noise does not tell apart
-    /// (a closed trailing edge) are both pinned at their common point. No effect on exact
-    /// points (no noise), with [`FitOptions::pin_ends`], or without foot points.
-    pub estimated_ends: bool,
     /// `s`: the bending weight grows with the noise estimated from the points,
     /// `lambda = (fairness + s (sigma / L)^2) n tau` (see [`estimate_noise`]; 0 for none), the
     /// noise part falling off over the last stretch at either end (docs/methods.md §4, "The
@@ -178,6 +169,59 @@ pub struct FitOptions {
     pub smoothing: Option<f64>,
 }
 
+/// Where the ends of a fit lie (docs/methods.md §4, "Ends").
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum FitEnds {
+    /// Ends whose points coincide (the first and last points within
+    /// [`SHARED_END_TOLERANCE`] of the points' size: a closed profile, a sharp trailing edge)
+    /// are pinned at that point, so that the curve closes there with a corner; other ends of
+    /// a noisy fit are held on their tangent lines where the points towards them say they lie
+    /// (noisy points beyond an end pull it outward; two ends that the noise does not tell
+    /// apart are held at their common point: [`super::ends`]); the ends of a fit on exact
+    /// points lie where the foot points put them.
+    #[default]
+    Auto,
+    /// Ends whose points coincide are pinned at that point, as [`FitEnds::Auto`]; other ends
+    /// lie where the foot points put them (the tolerance mode, which holds every point, the
+    /// ends included, within its tolerance).
+    Shared,
+    /// Pinned to the first and last points (`R(0) = r_1`, `R(1) = r_n`): for a contour
+    /// sampled from known end points.
+    Pinned,
+    /// Where the foot points put them, whether the end points coincide or not.
+    Free,
+}
+
+/// The first and last points of a curve coincide (its ends are one point: a closed profile)
+/// when they lie within this fraction of the diagonal of the points' bounding box.
+pub const SHARED_END_TOLERANCE: f64 = 1e-6;
+
+/// The common point of the first and last points when they coincide (within
+/// [`SHARED_END_TOLERANCE`] of the points' size; their midpoint), else `None`.
+pub fn shared_end<const D: usize>(points: &[Point<D>]) -> Option<Point<D>> {
+    let (first, last) = (*points.first()?, *points.last()?);
+    if points.len() < 3 {
+        return None;
+    }
+    let gap = first.distance(last);
+    (gap <= SHARED_END_TOLERANCE * points_size(points)).then(|| first.lerp(last, 0.5))
+}
+
+/// The diagonal of the bounding box of `points`.
+fn points_size<const D: usize>(points: &[Point<D>]) -> f64 {
+    let (mut low, mut high) = ([f64::INFINITY; D], [f64::NEG_INFINITY; D]);
+    for p in points {
+        for c in 0..D {
+            low[c] = low[c].min(p[c]);
+            high[c] = high[c].max(p[c]);
+        }
+    }
+    (0..D)
+        .map(|c| (high[c] - low[c]).powi(2))
+        .sum::<f64>()
+        .sqrt()
+}
+
 impl Default for FitOptions {
     fn default() -> Self {
         FitOptions {
@@ -189,11 +233,10 @@ impl Default for FitOptions {
             max_iterations: 200,
             eps_tolerance: 1e-3,
             fairness: DEFAULT_FAIRNESS,
-            pin_ends: false,
+            ends: FitEnds::Auto,
             settle_tolerance: DEFAULT_SETTLE_TOLERANCE,
             ordered: true,
             smoothing: None,
-            estimated_ends: true,
         }
     }
 }
@@ -377,9 +420,11 @@ pub(crate) fn fit_checked<const D: usize>(
         delta: weights,
         bending: fairness + smoothing,
         taper: Taper::towards_ends(fairness, smoothing, points.len()),
-        pins: options
-            .pin_ends
-            .then(|| [points[0], points[points.len() - 1]]),
+        pins: match options.ends {
+            FitEnds::Pinned => Some([points[0], points[points.len() - 1]]),
+            FitEnds::Auto | FitEnds::Shared => shared_end(points).map(|p| [p, p]),
+            FitEnds::Free => None,
+        },
         foot_points: options.foot_points,
         ordered: options.ordered,
     };
@@ -455,7 +500,8 @@ pub(crate) fn fit_checked<const D: usize>(
             iterations += solver
                 .minimize(&mut state, Penalty::Fixed(0.0), free_stop)?
                 .0;
-            let estimate = options.estimated_ends && problem.pins.is_none() && problem.foot_points;
+            let estimate =
+                options.ends == FitEnds::Auto && problem.pins.is_none() && problem.foot_points;
             if let Some(pins) = estimate
                 .then(|| end_pins(points, noise.sigma, &state.spline))
                 .flatten()

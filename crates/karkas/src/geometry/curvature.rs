@@ -60,8 +60,8 @@ fn largest_coordinate<const D: usize>(p: &crate::Point<D>) -> f64 {
     p.0.iter().fold(0.0, |m: f64, x| m.max(x.abs()))
 }
 
-/// `a x b`.
-pub(crate) fn cross(a: Point3, b: Point3) -> Point3 {
+/// The cross product `a x b` of two vectors in space.
+pub fn cross(a: Point3, b: Point3) -> Point3 {
     Point3::new([
         a[1] * b[2] - a[2] * b[1],
         a[2] * b[0] - a[0] * b[2],

@@ -19,6 +19,9 @@
 //!   `(P(t) - q) . P'(t) = 0` per candidate segment; large batches share one proof per cell
 //!   of a grid (`nearest_grid`: a run of segments on which the squared distance is convex
 //!   for the whole cell, bounded by `segment_polynomials`).
+//! - [`enclosed_volume`]: the volume a closed surface encloses (the divergence theorem, by
+//!   Gauss–Legendre on its polynomial cells; planar caps by their area vectors) and the
+//!   plane of a closed polygon.
 //! - [`surface_frame`]: the unit normal and the principal curvatures and directions from the
 //!   first and second fundamental forms.
 //! - [`surface_nearest`]: the globally nearest point of a surface, candidates from a sampled
@@ -30,6 +33,7 @@ pub mod curvature;
 pub mod curvature_rate;
 mod curve_geometry;
 pub mod curve_nearest;
+pub mod enclosed_volume;
 pub mod fairness;
 #[cfg(test)]
 mod fairness_tests;
@@ -43,10 +47,11 @@ pub mod surface_nearest;
 
 pub use arc_length::{arc_length, inverse_arc_length};
 pub use arc_length_table::ArcLengthTable;
-pub use curvature::{curvature, torsion};
+pub use curvature::{cross, curvature, torsion};
 pub use curvature_rate::{curvature_rate, curvature_rate_on_side};
 pub use curve_geometry::CurveGeometry;
 pub use curve_nearest::{CurveNearest, CurveProjector};
+pub use enclosed_volume::{area_vector, flux_volume, polygon_plane, Plane};
 pub use fairness::{curvature_profile, curve_fairness, CurvatureSample, CurveFairness};
 pub use surface_frame::{normal, principal_curvatures, PrincipalCurvatures};
 pub use surface_nearest::{SurfaceNearest, SurfaceProjector};

@@ -18,6 +18,17 @@ const WEIGHTS: [f64; 4] = [
 /// The deepest bisection (an interval `2^-48` of the original is below any useful accuracy).
 const MAX_DEPTH: usize = 48;
 
+/// The nodes and weights of the 8-point Gauss–Legendre rule on `[a, b]` (exact for
+/// polynomials of degree 15), for integrals over several variables.
+pub(crate) fn gauss8_rule(a: f64, b: f64) -> [(f64, f64); 8] {
+    let (mid, half) = (0.5 * (a + b), 0.5 * (b - a));
+    core::array::from_fn(|k| {
+        let (x, w) = (NODES[k % 4], WEIGHTS[k % 4]);
+        let sign = if k < 4 { -1.0 } else { 1.0 };
+        (mid + sign * half * x, w * half)
+    })
+}
+
 /// The 8-point Gauss–Legendre rule on `[a, b]` (exact for polynomials of degree 15).
 fn gauss8(f: &impl Fn(f64) -> f64, a: f64, b: f64) -> f64 {
     let (mid, half) = (0.5 * (a + b), 0.5 * (b - a));

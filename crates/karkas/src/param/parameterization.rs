@@ -15,7 +15,9 @@
 //! - [`GridParameterization::Uniform`]: `u_i = i`, `v_j = j`;
 //! - [`GridParameterization::Chord`]: the paper's rule: an origin node `(i*, j*)` gets
 //!   `(u, v) = (0, 0)`, and `u_i` (`v_j`) is the signed cumulative chord length along the grid
-//!   line `j = j*` (`i = i*`) through it;
+//!   line `j = j*` (`i = i*`) through it; when that line is a pole (all its points one
+//!   point, within [`POLE_RELATIVE_TOLERANCE`] of the grid's extent: the nose of a body), the
+//!   nearest line that is not a pole is measured instead;
 //! - [`GridParameterization::AveragedChord`]: the step `u_i - u_{i-1}` is the mean over all
 //!   columns `j` of `|r_ij - r_{i-1,j}|` (likewise for `v`), starting at 0: less sensitive to
 //!   the choice of one line;
@@ -107,6 +109,35 @@ pub fn curve_parameters<const D: usize>(
     Ok(ts)
 }
 
+/// Lines of a grid whose points all lie within this fraction of the grid's extent of the
+/// first are poles (one point, e.g. the nose of a body).
+pub const POLE_RELATIVE_TOLERANCE: f64 = 1e-9;
+
+/// The line nearest to `line` (of `count`, nearer first, then lower) that is not a pole.
+fn nearest_line(line: usize, count: usize, pole: impl Fn(usize) -> bool) -> usize {
+    (0..count)
+        .flat_map(|d| [line.checked_sub(d), Some(line + d)])
+        .flatten()
+        .filter(|&k| k < count)
+        .find(|&k| !pole(k))
+        .unwrap_or(line)
+}
+
+/// The diagonal of the bounding box of the grid's points.
+fn grid_extent<const D: usize>(grid: &Grid<Point<D>>) -> f64 {
+    let (mut low, mut high) = ([f64::INFINITY; D], [f64::NEG_INFINITY; D]);
+    for p in grid.as_slice() {
+        for c in 0..D {
+            low[c] = low[c].min(p[c]);
+            high[c] = high[c].max(p[c]);
+        }
+    }
+    (0..D)
+        .map(|c| (high[c] - low[c]).powi(2))
+        .sum::<f64>()
+        .sqrt()
+}
+
 /// The parameters `(u_i, v_j)` of the nodes of `grid` by the rule `kind`.
 ///
 /// Errors: fewer than 2 rows or columns, a non-finite point, an origin node outside the grid,
@@ -139,13 +170,22 @@ pub fn grid_parameters<const D: usize>(
                 });
             }
             origin = (origin_row, origin_col);
+            // A pole (a line that is one point) has no chords: measure the nearest line that
+            // is not one instead.
+            let tolerance = POLE_RELATIVE_TOLERANCE * grid_extent(grid);
+            let pole_col =
+                |j: usize| (1..rows).all(|i| grid.get(i, j).distance(*grid.get(0, j)) <= tolerance);
+            let pole_row = |i: usize| {
+                grid.row(i)
+                    .iter()
+                    .all(|p| p.distance(grid.row(i)[0]) <= tolerance)
+            };
+            let column = nearest_line(origin_col, cols, pole_col);
+            let row = nearest_line(origin_row, rows, pole_row);
             u_steps = (1..rows)
-                .map(|i| {
-                    grid.get(i, origin_col)
-                        .distance(*grid.get(i - 1, origin_col))
-                })
+                .map(|i| grid.get(i, column).distance(*grid.get(i - 1, column)))
                 .collect();
-            let line = grid.row(origin_row);
+            let line = grid.row(row);
             v_steps = line.windows(2).map(|w| w[0].distance(w[1])).collect();
         }
         GridParameterization::AveragedChord | GridParameterization::Centripetal => {

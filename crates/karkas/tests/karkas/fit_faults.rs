@@ -353,7 +353,7 @@ fn a_hook_that_no_least_squares_refit_removes_goes_with_a_curve_through_the_poin
     for start in [StartParameters::ChordLength, StartParameters::Centripetal] {
         let options = FitOptions {
             smoothing: Some(0.0),
-            estimated_ends: false,
+            ends: karkas::fit::FitEnds::Free,
             start,
             ..FitOptions::default()
         };

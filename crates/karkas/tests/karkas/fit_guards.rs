@@ -210,7 +210,7 @@ fn a_clean_naca_fit_with_closed_trailing_edge_raises_no_shape_warning() {
     assert!(points[0].distance(points[199]) < 1e-12);
     let options = FitOptions {
         eps: 1e-3,
-        pin_ends: true,
+        ends: karkas::fit::FitEnds::Pinned,
         ..Default::default()
     };
     for knots in [9, 17, 33] {
@@ -235,14 +235,33 @@ fn a_closed_circle_whose_ends_coincide_raises_no_shape_warning() {
             Point2::new([a.cos(), a.sin()])
         })
         .collect();
-    for pin_ends in [false, true] {
+    for ends in [
+        karkas::fit::FitEnds::Free,
+        karkas::fit::FitEnds::Auto,
+        karkas::fit::FitEnds::Pinned,
+    ] {
         let options = FitOptions {
-            pin_ends,
+            ends,
             ..Default::default()
         };
         let fit = fit_curve(&points, &uniform_knots(9), &options).unwrap();
         let shape = shape_warnings(&points, &fit);
-        no_shape_warnings(&shape, &format!("pin_ends {pin_ends}"));
+        no_shape_warnings(&shape, &format!("ends {ends:?}"));
+        // The ends coincide (to 1e-15 here): the default closes the circle at their common
+        // point; Pinned pins each end to its own point.
+        let values = fit.spline.values();
+        let (first, last) = (values[0], values[values.len() - 1]);
+        match ends {
+            karkas::fit::FitEnds::Auto => {
+                assert!(first.distance(points[0]) < 1e-15);
+                assert_eq!(first, last);
+            }
+            karkas::fit::FitEnds::Pinned => {
+                assert_eq!(first, points[0]);
+                assert_eq!(last, points[points.len() - 1]);
+            }
+            _ => {}
+        }
     }
 }
 

@@ -299,7 +299,7 @@ fn pinned_ends_pass_through_the_first_and_last_points() {
             &KNOTS,
             &FitOptions {
                 eps,
-                pin_ends: true,
+                ends: karkas::fit::FitEnds::Pinned,
                 ..Default::default()
             },
         )

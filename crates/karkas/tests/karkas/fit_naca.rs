@@ -76,7 +76,7 @@ fn sample(n: usize, sigma: f64) -> Vec<Point2> {
 fn error(points: &[Point2], k: usize) -> f64 {
     let options = FitOptions {
         eps: EPS,
-        pin_ends: true,
+        ends: karkas::fit::FitEnds::Pinned,
         ..Default::default()
     };
     let fit = fit_curve(points, &uniform_knots(k), &options).unwrap();

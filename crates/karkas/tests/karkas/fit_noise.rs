@@ -142,7 +142,7 @@ fn noisy_open_ends_stay_at_the_true_edge() {
         (sum / 12.0).sqrt()
     };
     let free = rms_of_ends(&FitOptions {
-        estimated_ends: false,
+        ends: karkas::fit::FitEnds::Free,
         ..Default::default()
     });
     let estimated = rms_of_ends(&FitOptions::default());
@@ -184,7 +184,7 @@ fn estimated_ends_move_along_the_tangent_only() {
         &points,
         &knots,
         &FitOptions {
-            estimated_ends: false,
+            ends: karkas::fit::FitEnds::Free,
             ..Default::default()
         },
     )

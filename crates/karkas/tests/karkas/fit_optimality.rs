@@ -27,7 +27,7 @@ fn options(eps: f64) -> FitOptions {
     FitOptions {
         eps,
         settle_tolerance: 0.0,
-        estimated_ends: false,
+        ends: karkas::fit::FitEnds::Free,
         ..Default::default()
     }
 }
@@ -154,7 +154,7 @@ fn gradient_vanishes_with_estimated_ends() {
     // (the ordered phase stops after a few steps once they gain little).
     let points = noisy_spiral(400, 1e-3, 7);
     let held = FitOptions {
-        estimated_ends: true,
+        ends: karkas::fit::FitEnds::Auto,
         ordered: false,
         ..options(f64::INFINITY)
     };
