@@ -332,18 +332,36 @@ fn project(
             None => (0.0, 1.0),
         };
         if !fixed {
+            // Newton's method on the squared distance, each step at most one knot span long
+            // and kept only when it brings the point closer (else halved, up to four times).
+            let mut s = span_of(knots, count, *ti);
+            let [mut c, mut d1, mut d2] = eval3(knots, control, s, *ti);
+            let mut dist_sq = (c - p).norm_sq();
             for _ in 0..NEWTON_STEPS {
-                let s = span_of(knots, count, *ti);
-                let [c, d1, d2] = eval3(knots, control, s, *ti);
                 let r = c - p;
                 let g = r.dot(d1);
                 let h = d1.norm_sq() + r.dot(d2);
-                let step = if h > 0.0 { g / h } else { 0.0 };
+                let reach = knots[s + 1] - knots[s];
+                let mut step = if h > 0.0 { -g / h } else { -g.signum() * reach };
                 if !step.is_finite() {
                     break;
                 }
-                *ti = (*ti - step).clamp(lo, hi);
-                if step.abs() < 1e-15 {
+                step = step.clamp(-reach, reach);
+                let mut moved = false;
+                for _ in 0..5 {
+                    let next = (*ti + step).clamp(lo, hi);
+                    let ns = span_of(knots, count, next);
+                    let e = eval3(knots, control, ns, next);
+                    let nd = (e[0] - p).norm_sq();
+                    if nd < dist_sq {
+                        (*ti, s, dist_sq) = (next, ns, nd);
+                        [c, d1, d2] = e;
+                        moved = true;
+                        break;
+                    }
+                    step *= 0.5;
+                }
+                if !moved || step.abs() < 1e-15 {
                     break;
                 }
             }
