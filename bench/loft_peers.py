@@ -70,7 +70,7 @@ def placed_points(S, profiles, les, chords, twists):
         ]
     )
     return [
-        np.array(w._compute_xyz_of_WingXSec(i, x_nondim=p[:, 0], z_nondim=p[:, 1])).T
+        np.asarray(w._compute_xyz_of_WingXSec(i, x_nondim=p[:, :1], z_nondim=p[:, 1:]))
         for i, p in enumerate(profiles)
     ]
 
@@ -104,7 +104,7 @@ def face_surface(shape):
     faces = []
     ex = TopExp_Explorer(shape, TopAbs_FACE)
     while ex.More():
-        faces.append(BRep_Tool.Surface_s(TopoDS.Face_s(ex.Current())))
+        faces.append(BRep_Tool.Surface_s(TopoDS.Face(ex.Current())))
         ex.Next()
     return faces
 

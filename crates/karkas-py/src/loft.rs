@@ -168,10 +168,7 @@ pub fn loft(
             leading_edge: les[k],
             chord: chords[k],
             twist: twists[k],
-            dihedral: dihedrals
-                .as_ref()
-                .map(|d| d[k])
-                .filter(|d| !d.is_nan()),
+            dihedral: dihedrals.as_ref().map(|d| d[k]).filter(|d| !d.is_nan()),
         })
         .collect();
     let input = LoftInput {

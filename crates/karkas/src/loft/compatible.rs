@@ -36,6 +36,8 @@ const SMOOTHING_WEIGHT: f64 = 1e-3;
 const START_SPANS: usize = 4;
 /// Rounds of knot refinement at most.
 pub(crate) const MAX_ROUNDS: usize = 16;
+/// Sections the knots are refined on before every section is checked.
+const SAMPLE_SECTIONS: usize = 12;
 /// Newton steps per projection of a point onto its curve.
 const NEWTON_STEPS: usize = 3;
 
@@ -66,15 +68,20 @@ pub(crate) fn fit_compatible(sections: &[FitSection]) -> Result<CompatibleFit> {
     let split = sections.iter().any(|s| s.split.is_some());
     let mut breaks = start_breaks(split);
     let mut params: Vec<Vec<f64>> = sections.iter().map(start_parameters).collect();
+    let all: Vec<usize> = (0..sections.len()).collect();
+    // The knots are refined on a few sections spread along the span first, then checked on
+    // all (and refined further on all if any misses the tolerance).
+    let mut active = sample_sections(sections.len());
     let mut rounds = 0;
     loop {
         rounds += 1;
         let knots = clamped(&breaks);
-        let mut controls = Vec::with_capacity(sections.len());
         let mut worst = vec![0.0f64; breaks.len() - 1];
-        let mut deviations = Vec::with_capacity(sections.len());
+        let mut controls = Vec::with_capacity(active.len());
+        let mut deviations = Vec::with_capacity(active.len());
         let mut scratch = Scratch::new(knots.len() - 4);
-        for (section, t) in sections.iter().zip(params.iter_mut()) {
+        for &k in &active {
+            let (section, t) = (&sections[k], &mut params[k]);
             let mut c = fit_section(section, t, &knots, &mut scratch)?;
             project(section, &knots, &c, t, None);
             c = fit_section(section, t, &knots, &mut scratch)?;
@@ -94,13 +101,19 @@ pub(crate) fn fit_compatible(sections: &[FitSection]) -> Result<CompatibleFit> {
             controls.push(c);
         }
         let refine: Vec<usize> = (0..worst.len()).filter(|&k| worst[k] > 1.0).collect();
-        if refine.is_empty() || rounds >= MAX_ROUNDS {
+        let whole = active.len() == sections.len();
+        if whole && (refine.is_empty() || rounds >= MAX_ROUNDS) {
             return Ok(CompatibleFit {
                 knots,
                 controls,
                 deviations,
                 rounds,
             });
+        }
+        if refine.is_empty() || rounds >= MAX_ROUNDS {
+            // The sample is within the tolerance on these knots: check every section.
+            active.clone_from(&all);
+            continue;
         }
         let mut next = Vec::with_capacity(breaks.len() + refine.len());
         for k in 0..breaks.len() - 1 {
@@ -112,6 +125,19 @@ pub(crate) fn fit_compatible(sections: &[FitSection]) -> Result<CompatibleFit> {
         next.push(1.0);
         breaks = next;
     }
+}
+
+/// The sections the knots are first refined on: all of up to [`SAMPLE_SECTIONS`], else that
+/// many spread evenly along the span (the first and the last among them).
+fn sample_sections(count: usize) -> Vec<usize> {
+    if count <= SAMPLE_SECTIONS {
+        return (0..count).collect();
+    }
+    let mut picked: Vec<usize> = (0..SAMPLE_SECTIONS)
+        .map(|j| j * (count - 1) / (SAMPLE_SECTIONS - 1))
+        .collect();
+    picked.dedup();
+    picked
 }
 
 /// The starting breakpoints: [`START_SPANS`] uniform spans per part.
@@ -281,14 +307,84 @@ fn weights(knots: &[f64], s: usize, t: f64, k: usize) -> [f64; 4] {
 /// The point and first two derivatives of the curve `(knots, control)` at `t` in span `s`.
 #[inline]
 fn eval3(knots: &[f64], control: &[Point2], s: usize, t: f64) -> [Point2; 3] {
+    let w = cubic_derivatives(knots, s, t);
     let mut out = [Point2::ZERO; 3];
-    for (k, o) in out.iter_mut().enumerate() {
-        let w = weights(knots, s, t, k);
-        for (a, &wa) in w.iter().enumerate() {
+    for (o, wk) in out.iter_mut().zip(&w) {
+        for (a, &wa) in wk.iter().enumerate() {
             *o = o.add_scaled(wa, control[s - 3 + a]);
         }
     }
     out
+}
+
+/// The values and first two derivatives of the four cubic B-splines nonzero on span `s` at
+/// `t`, in one pass (Piegl and Tiller's algorithm A2.3 for degree 3; the general weights of
+/// [`cubic_span_weights`] take a pass per derivative, three times the work in the projection).
+#[allow(clippy::needless_range_loop)] // the algorithm's triangular tables
+fn cubic_derivatives(knots: &[f64], s: usize, t: f64) -> [[f64; 4]; 3] {
+    const P: usize = 3;
+    let mut ndu = [[0.0f64; 4]; 4];
+    let (mut left, mut right) = ([0.0f64; 4], [0.0f64; 4]);
+    ndu[0][0] = 1.0;
+    for j in 1..=P {
+        left[j] = t - knots[s + 1 - j];
+        right[j] = knots[s + j] - t;
+        let mut saved = 0.0;
+        for r in 0..j {
+            ndu[j][r] = right[r + 1] + left[j - r];
+            let temp = ndu[r][j - 1] / ndu[j][r];
+            ndu[r][j] = saved + right[r + 1] * temp;
+            saved = left[j - r] * temp;
+        }
+        ndu[j][j] = saved;
+    }
+    let mut ders = [[0.0f64; 4]; 3];
+    for j in 0..=P {
+        ders[0][j] = ndu[j][P];
+    }
+    for r in 0..=P {
+        let mut a = [[0.0f64; 4]; 2];
+        let (mut s1, mut s2) = (0usize, 1usize);
+        a[0][0] = 1.0;
+        for k in 1..=2usize {
+            let mut d = 0.0;
+            let rk = r as isize - k as isize;
+            let pk = P - k;
+            if rk >= 0 {
+                a[s2][0] = a[s1][0] / ndu[pk + 1][rk as usize];
+                d = a[s2][0] * ndu[rk as usize][pk];
+            }
+            let j1 = if rk >= -1 { 1 } else { (-rk) as usize };
+            let j2 = if r + 1 <= pk + 1 { k - 1 } else { P - r };
+            for j in j1..=j2 {
+                let idx = (rk + j as isize) as usize;
+                a[s2][j] = (a[s1][j] - a[s1][j - 1]) / ndu[pk + 1][idx];
+                d += a[s2][j] * ndu[idx][pk];
+            }
+            if r <= pk {
+                a[s2][k] = -a[s1][k - 1] / ndu[pk + 1][r];
+                d += a[s2][k] * ndu[r][pk];
+            }
+            ders[k][r] = d;
+            std::mem::swap(&mut s1, &mut s2);
+        }
+    }
+    for j in 0..=P {
+        ders[1][j] *= 3.0;
+        ders[2][j] *= 6.0;
+    }
+    ders
+}
+
+/// The point of the curve at `t` in span `s`.
+#[inline]
+fn point_at(knots: &[f64], control: &[Point2], s: usize, t: f64) -> Point2 {
+    let w = weights(knots, s, t, 0);
+    let mut p = Point2::ZERO;
+    for (a, &wa) in w.iter().enumerate() {
+        p = p.add_scaled(wa, control[s - 3 + a]);
+    }
+    p
 }
 
 /// The first control point whose basis function is nonzero at `t`, and the values of the
@@ -368,7 +464,7 @@ fn project(
         }
         if let Some(m) = measure.as_mut() {
             let s = span_of(knots, count, *ti);
-            let d = eval3(knots, control, s, *ti)[0].distance(p);
+            let d = point_at(knots, control, s, *ti).distance(p);
             // The span of the breakpoints (span s of the knot vector is break span s - 3).
             m(s - 3, d);
         }
@@ -414,6 +510,26 @@ mod tests {
         let lower = side(false);
         upper.extend_from_slice(&lower[1..]);
         upper
+    }
+
+    #[test]
+    fn one_pass_derivatives_equal_the_general_weights() {
+        let knots = clamped(&[0.0, 0.1, 0.15, 0.5, 0.52, 0.9, 1.0]);
+        for s in 3..knots.len() - 4 {
+            for f in [0.0, 0.3, 0.99] {
+                let t = knots[s] + f * (knots[s + 1] - knots[s]);
+                let fast = cubic_derivatives(&knots, s, t);
+                for (k, row) in fast.iter().enumerate() {
+                    let slow = weights(&knots, s, t, k);
+                    for a in 0..4 {
+                        assert!(
+                            (row[a] - slow[a]).abs() < 1e-9 * (1.0 + slow[a].abs()),
+                            "{s} {f} {k} {a}"
+                        );
+                    }
+                }
+            }
+        }
     }
 
     #[test]
