@@ -253,11 +253,6 @@ impl PyLoftSurface {
             .collect();
         points_to_array(py, &pts)
     }
-
-    /// Pickling: the profiles, placements, rule and tolerance.
-    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, pyo3::types::PyTuple>> {
-        crate::pickle::reduce_loft(py, &self.input)
-    }
 }
 
 /// The loft shared between the Python object and its surface interface.

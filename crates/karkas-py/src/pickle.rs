@@ -60,9 +60,17 @@ pub fn restore<'py>(
     target.call(args, kwargs)
 }
 
-/// What `LoftSurface.__reduce__` returns: `karkas.loft` of its profiles, placements, rule and
-/// tolerance (a dihedral not given is NaN).
-pub(crate) fn reduce_loft<'py>(
+#[pymethods]
+impl crate::loft::PyLoftSurface {
+    /// Pickling: `karkas.loft` of the profiles, placements, rule and tolerance (a dihedral
+    /// not given is NaN).
+    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
+        reduce_loft(py, &self.input)
+    }
+}
+
+/// What `LoftSurface.__reduce__` returns.
+fn reduce_loft<'py>(
     py: Python<'py>,
     input: &crate::loft::LoftInput,
 ) -> PyResult<Bound<'py, PyTuple>> {

@@ -355,7 +355,7 @@ fn cubic_derivatives(knots: &[f64], s: usize, t: f64) -> [[f64; 4]; 3] {
                 d = a[s2][0] * ndu[rk as usize][pk];
             }
             let j1 = if rk >= -1 { 1 } else { (-rk) as usize };
-            let j2 = if r + 1 <= pk + 1 { k - 1 } else { P - r };
+            let j2 = if r <= pk { k - 1 } else { P - r };
             for j in j1..=j2 {
                 let idx = (rk + j as isize) as usize;
                 a[s2][j] = (a[s1][j] - a[s1][j - 1]) / ndu[pk + 1][idx];
