@@ -20,6 +20,8 @@ __all__ = [
     "batch",
     "batch_inputs",
     "BicubicSurface",
+    "LoftSurface",
+    "loft",
     "ConvergenceError",
     "CoonsSurface",
     "CubicSpline",

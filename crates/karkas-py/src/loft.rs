@@ -117,6 +117,9 @@ pub struct PyLoftSurface {
 /// ('linear', 3)
 #[pyfunction]
 #[pyo3(signature = (profiles, leading_edges, chords, twists, dihedrals = None, span = "monotone", tolerance = DEFAULT_TOLERANCE))]
+#[pyo3(
+    text_signature = "(profiles, leading_edges, chords, twists, dihedrals=None, span='monotone', tolerance=1e-05)"
+)]
 #[allow(clippy::too_many_arguments)]
 pub fn loft(
     py: Python<'_>,
