@@ -80,7 +80,10 @@ def occ_loft(points, chords):
     from OCP.BRepOffsetAPI import BRepOffsetAPI_ThruSections
     from OCP.GeomAbs import GeomAbs_C2
     from OCP.GeomAPI import GeomAPI_PointsToBSpline
-    from OCP.TColgp import TColgp_Array1OfPnt
+    try:
+        from OCP.TColgp import TColgp_Array1OfPnt
+    except ImportError:  # newer OCP
+        from OCP.collections import Array1_gp_Pnt as TColgp_Array1OfPnt
     from OCP.gp import gp_Pnt
 
     loft = BRepOffsetAPI_ThruSections(False, False, 1e-6)
