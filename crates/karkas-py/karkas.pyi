@@ -20,6 +20,8 @@ __all__ = [
     "batch",
     "batch_inputs",
     "BicubicSurface",
+    "LoftSurface",
+    "loft",
     "ConvergenceError",
     "CoonsSurface",
     "CubicSpline",
@@ -429,6 +431,39 @@ class BicubicSurface(Surface):
     def knots_u(self) -> _Floats: ...
     @property
     def knots_v(self) -> _Floats: ...
+
+@final
+class LoftSurface(Surface):
+    """A surface lofted through placed sections (karkas.loft): u along the span (the stations),
+    v along each section over [0, 1] (leading edge at 0.5)."""
+
+    def __reduce__(self) -> Tuple[object, ...]: ...
+    def section_at(self, station: float, n: int = 200) -> _Floats:
+        """The surface's section at a span station, n points (n, 3)."""
+    @property
+    def stations(self) -> _Floats: ...
+    @property
+    def deviations(self) -> _Floats: ...
+    @property
+    def tolerance_met(self) -> bool: ...
+    @property
+    def control_points(self) -> Tuple[int, int]: ...
+    @property
+    def span(self) -> str: ...
+    @property
+    def tolerance(self) -> float: ...
+
+def loft(
+    profiles: Sequence[ArrayLike],
+    leading_edges: ArrayLike,
+    chords: ArrayLike,
+    twists: ArrayLike,
+    dihedrals: Optional[ArrayLike] = None,
+    span: Literal["monotone", "linear", "spline"] = "monotone",
+    tolerance: float = 1e-5,
+) -> LoftSurface:
+    """Lofts a wing through airfoil profiles in unit chord placed as aerosandbox's WingXSec
+    places them (karkas loft)."""
 
 @final
 class DiscreteSpline:

@@ -47,6 +47,8 @@ enum Command {
     Surface(cmd::SurfaceCommand),
     /// Two-sided Hausdorff distance between point sets or a point set and F(x, y, z) = 0.
     Hausdorff(cmd::hausdorff::HausdorffArgs),
+    /// Loft a surface through sections placed along a span (a wing from its sections table).
+    Loft(cmd::loft::LoftArgs),
     /// Cut a surface (of a grid or of a curve network) by planes: sections and isolines.
     Section(cmd::section::SectionArgs),
     /// Vary one coordinate of a grid through new row sums, column sums and total.
@@ -104,6 +106,7 @@ pub fn run(args: impl IntoIterator<Item = OsString>) -> ExitCode {
         Command::Surface(c) => c.run(),
         Command::Hausdorff(args) => cmd::hausdorff::run(&args),
         Command::Section(args) => cmd::section::run(&args),
+        Command::Loft(args) => cmd::loft::run(&args),
         Command::Vary(args) => cmd::vary::run(&args),
         Command::Demo(args) => demo::run(&args),
         Command::Convert(args) => cmd::convert::run(&args),

@@ -12,6 +12,7 @@
 //! - [`pointset`]: a point set in space from OBJ vertices or CSV columns `x,y,z`;
 //! - [`samples`]: a sampled surface as CSV rows `u,v,x,y,z`, back into its grid;
 //! - [`mask`]: a set of grid cells as CSV rows `i,j` (e.g. the entries a variation keeps).
+//! - [`sections_table`]: a loft's sections as CSV rows `file,x,y,z,chord,twist,dihedral`.
 //! - [`network`]: a family of curves of a curve network as CSV rows `curve,x,y,z`.
 //!
 //! Writing (always atomically, see [`write::write_atomic`]):
@@ -54,6 +55,7 @@ pub mod points;
 pub mod pointset;
 pub mod range;
 pub mod samples;
+pub mod sections_table;
 pub mod skeleton;
 pub mod viewer;
 pub mod write;

@@ -186,7 +186,8 @@ fn kind(e: &karkas::Error) -> Kind {
         | E::SkeletonLength { .. }
         | E::NonFiniteSkeletonPoint { .. }
         | E::OpenPeriodicData { .. }
-        | E::UmbilicRegion { .. } => Kind::Points,
+        | E::UmbilicRegion { .. }
+        | E::LoftSection { .. } => Kind::Points,
         E::InvalidKnot { .. } => Kind::Knots,
         E::InvalidOrder { .. }
         | E::InvalidStep { .. }

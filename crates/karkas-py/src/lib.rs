@@ -34,6 +34,7 @@ mod geometry_interface;
 mod implicit;
 mod limits;
 mod ll;
+mod loft;
 mod measure;
 mod param;
 mod pickle;
@@ -92,6 +93,8 @@ fn karkas_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<surface_eval::PySurfaceDerivative>()?;
     m.add_class::<ll::PyLlSurface>()?;
     m.add_class::<param::PyBicubicSurface>()?;
+    m.add_class::<loft::PyLoftSurface>()?;
+    m.add_function(wrap_pyfunction!(loft::loft, m)?)?;
     m.add_class::<dps::PyDiscreteSpline>()?;
     m.add_class::<dps::PyTubeSurface>()?;
     m.add_class::<coons::PyCoonsSurface>()?;

@@ -21,8 +21,9 @@ use crate::param::{Ends, PyBicubicSurface, PyCubicSpline};
 use crate::section::PySectionCurve;
 
 /// The constructors `_restore` may call: the qualified names the `__reduce__` methods give.
-const CONSTRUCTORS: [&str; 13] = [
+const CONSTRUCTORS: [&str; 14] = [
     "LLCurve",
+    "loft",
     "LLSurface",
     "CubicSpline",
     "HermiteSpline._from_fit",
@@ -57,6 +58,42 @@ pub fn restore<'py>(
         target = target.getattr(part)?;
     }
     target.call(args, kwargs)
+}
+
+#[pymethods]
+impl crate::loft::PyLoftSurface {
+    /// Pickling: `karkas.loft` of the profiles, placements, rule and tolerance (a dihedral
+    /// not given is NaN).
+    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
+        reduce_loft(py, &self.input)
+    }
+}
+
+/// What `LoftSurface.__reduce__` returns.
+fn reduce_loft<'py>(
+    py: Python<'py>,
+    input: &crate::loft::LoftInput,
+) -> PyResult<Bound<'py, PyTuple>> {
+    use crate::convert::points_to_array;
+    let profiles = input
+        .profiles
+        .iter()
+        .map(|p| points_to_array(py, p))
+        .collect::<PyResult<Vec<_>>>()?;
+    let les: Vec<karkas::Point3> = input.placements.iter().map(|p| p.leading_edge).collect();
+    let numbers = |f: &dyn Fn(&karkas::loft::WingPlacement) -> f64| {
+        vector_to_array(py, &input.placements.iter().map(f).collect::<Vec<f64>>())
+    };
+    let args = (
+        profiles,
+        points_to_array(py, &les)?,
+        numbers(&|p| p.chord)?,
+        numbers(&|p| p.twist)?,
+        numbers(&|p| p.dihedral.unwrap_or(f64::NAN))?,
+        input.options.rule.name(),
+        input.options.tolerance,
+    );
+    reduce(py, "loft", args.into_pyobject(py)?, None)
 }
 
 /// What `__reduce__` returns: `(karkas._restore, (name, args[, kwargs]))`.

@@ -574,6 +574,17 @@ pub enum Error {
         /// The smaller.
         k2: f64,
     },
+    /// A section of a loft that cannot be used ([`Loft::new`](crate::loft::Loft::new),
+    /// [`Loft::wing`](crate::loft::Loft::wing)): too few points, not in unit chord, no leading
+    /// edge between its ends, at the station of another, out of order, or without a
+    /// correspondence with the others.
+    #[error("section {section}: {reason}")]
+    LoftSection {
+        /// Index of the section (0-based, in span order).
+        section: usize,
+        /// What is wrong with it.
+        reason: String,
+    },
 }
 
 impl Error {

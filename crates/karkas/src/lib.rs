@@ -26,6 +26,8 @@
 //! - [`geometry`]: arc length and its inverse, curvature and torsion of curves, normals and
 //!   principal curvatures of surfaces, and global closest points on curves and surfaces;
 //! - [`measure`]: the two-sided Hausdorff distance between surfaces and point sets.
+//! - [`loft`]: surfaces through placed sections (wings, blades, hulls): compatible sections
+//!   on one knot vector, spanwise rules, aerosandbox's wing placement.
 //! - [`fit`]: fitting measured points with C^1 cubic Hermite splines (cubic splines of defect
 //!   2) whose second-derivative jumps are bounded (Pavlov).
 //!
@@ -48,6 +50,7 @@ pub mod fit;
 pub mod geometry;
 pub mod implicit;
 pub mod ll;
+pub mod loft;
 pub mod measure;
 pub mod param;
 pub mod section;

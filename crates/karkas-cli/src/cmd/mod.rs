@@ -10,6 +10,7 @@ mod fairness_report;
 mod fit_options;
 mod fit_summary;
 pub mod hausdorff;
+pub mod loft;
 pub mod section;
 pub mod spline_options;
 mod surface_bicubic;

@@ -20,6 +20,7 @@ mod export;
 mod fit_tolerance;
 mod hausdorff;
 mod ll_within;
+mod loft;
 mod meshes;
 mod npy;
 mod output_bounds;

@@ -1,0 +1,293 @@
+//! `karkas loft`: a wing (fin, blade) lofted through the sections of a sections table
+//! (docs/methods.md §7).
+
+use crate::args::{GridSamples, MeshOutput};
+use crate::output::cad::write_cad_surface;
+use crate::output::console::{note, record_all};
+use crate::output::formats::EXACT_SURFACE_FORMATS;
+use crate::output::surface::write_sampled_surface;
+use crate::output::target::{output_format, shown};
+use anyhow::{anyhow, bail, Context, Result};
+use clap::Args;
+use karkas::bspline::BSplineCurve;
+use karkas::loft::{Loft, LoftOptions, SpanRule, WingPlacement, DEFAULT_TOLERANCE};
+use karkas::{Curve, Point2};
+use karkas_io::cad::{iges, step, CadEntity};
+use karkas_io::points::{read_curve_points, CurvePoints};
+use karkas_io::sections_table::{read_sections_table, SectionRow};
+use karkas_io::OutputFormat;
+use serde::Serialize;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+/// Arguments of `karkas loft`.
+#[derive(Debug, Args)]
+#[command(mut_arg("samples", |a| a.value_name("NU,NV").help(
+    "Samples NU,NV along the span and along the sections, uniform in the parameters, ends \
+     included [default: 16 per section along the span, 200 along the sections]"
+)))]
+pub struct LoftArgs {
+    /// The sections table: CSV with the header file,x,y,z,chord,twist[,dihedral], one row per
+    /// section in span order; file is a profile in unit chord (airfoil .dat or x,y CSV)
+    /// relative to the table's folder, x,y,z its leading edge, twist and dihedral in degrees.
+    pub table: PathBuf,
+    /// How the surface runs between sections: linear (ruled, C^0 at the sections), monotone
+    /// (shape-preserving cubic Hermite, C^1, no overshoot) or spline (not-a-knot cubic, C^2,
+    /// may overshoot).
+    #[arg(long, value_name = "RULE", default_value = "monotone", value_parser = parse_rule)]
+    span: SpanRule,
+    /// The largest distance of a section's points from the surface, as a share of its chord.
+    #[arg(long, value_name = "T", default_value_t = DEFAULT_TOLERANCE)]
+    tolerance: f64,
+    /// Span stations (distance from the first leading edge along the leading edges projected
+    /// onto the y-z plane) at which to write the surface's sections into --sections-out.
+    #[arg(long, value_name = "S1,S2,...", value_parser = parse_stations, requires = "sections_out")]
+    sections_at: Option<Stations>,
+    /// Where the sections of --sections-at go: .csv (rows curve,x,y,z, 200 points each), or
+    /// the exact B-spline curves as .step/.stp or .iges/.igs.
+    #[arg(long, value_name = "FILE", requires = "sections_at")]
+    sections_out: Option<PathBuf>,
+    #[command(flatten)]
+    samples: GridSamples,
+    #[command(flatten)]
+    mesh: MeshOutput,
+    /// Print the summary as one JSON object on standard output.
+    #[arg(long)]
+    json: bool,
+    /// Output file: the exact B-spline surface as .step/.stp or .iges/.igs, a mesh (.obj .stl
+    /// .ply .vtk .vts .glb), a picture (.svg .png), a 3-D viewer page (.html) or the samples
+    /// (.csv, u,v,x,y,z).
+    #[arg(short, long)]
+    output: PathBuf,
+}
+
+/// The figures of a loft: the summary line and `--json`.
+#[derive(Debug, Serialize)]
+struct LoftSummary {
+    sections: usize,
+    span: &'static str,
+    control_points: [usize; 2],
+    max_deviation: f64,
+    max_relative_deviation: f64,
+    tolerance: f64,
+    tolerance_met: bool,
+    stations: Vec<f64>,
+    time_ms: f64,
+}
+
+/// The sections whose profiles karkas reads from the table's rows.
+struct Sections {
+    rows: Vec<SectionRow>,
+    profiles: Vec<Vec<Point2>>,
+}
+
+/// Runs `karkas loft`.
+pub fn run(args: &LoftArgs) -> Result<()> {
+    let format = output_format(&args.output, &EXACT_SURFACE_FORMATS)?;
+    args.samples.check()?;
+    args.mesh.check(format)?;
+    if !(args.tolerance.is_finite() && args.tolerance > 0.0) {
+        bail!("--tolerance {}: must be a positive number", args.tolerance);
+    }
+    let sections_format = match &args.sections_out {
+        Some(path) => Some(OutputFormat::from_path(
+            path,
+            &[OutputFormat::Csv, OutputFormat::Step, OutputFormat::Iges],
+        )?),
+        None => None,
+    };
+    let table = args.table.as_path();
+    let sections = read_sections(table)?;
+    let placements: Vec<WingPlacement> = sections
+        .rows
+        .iter()
+        .map(|r| WingPlacement {
+            leading_edge: r.leading_edge,
+            chord: r.chord,
+            twist: r.twist,
+            dihedral: r.dihedral,
+        })
+        .collect();
+    let options = LoftOptions {
+        rule: args.span,
+        tolerance: args.tolerance,
+    };
+    let start = Instant::now();
+    let loft = Loft::wing(&sections.profiles, &placements, &options)
+        .map_err(|e| section_error(table, &sections.rows, e))?;
+    let time_ms = start.elapsed().as_secs_f64() * 1e3;
+    let stations = loft.stations().to_vec();
+    let cuts = match &args.sections_at {
+        Some(at) => Some(cut_sections(&loft, &at.0)?),
+        None => None,
+    };
+    // Everything is checked: write.
+    if let (Some(cuts), Some(path), Some(f)) = (&cuts, &args.sections_out, sections_format) {
+        write_sections(path, f, cuts)?;
+    }
+    let title = format!("loft of {} sections ({})", stations.len(), args.span.name());
+    if format.is_cad() {
+        write_cad_surface(&loft, format, &args.output, table.display())?;
+    } else {
+        let samples = args
+            .samples
+            .samples
+            .unwrap_or((16 * (stations.len() - 1) + 1, 200));
+        write_sampled_surface(
+            &loft,
+            samples,
+            format,
+            &args.output,
+            &title,
+            None,
+            &args.mesh.options(false),
+        )?;
+    }
+    let (nu, nv) = loft.control_counts();
+    let summary = LoftSummary {
+        sections: stations.len(),
+        span: args.span.name(),
+        control_points: [nu, nv],
+        max_deviation: loft.deviations().iter().fold(0.0, |m: f64, &d| m.max(d)),
+        max_relative_deviation: loft.max_relative_deviation(),
+        tolerance: args.tolerance,
+        tolerance_met: loft.tolerance_met(),
+        stations,
+        time_ms,
+    };
+    note(format!(
+        "karkas: loft of {} sections ({}): {nu} x {nv} control points, largest section \
+         deviation {:.3e} of the chord (tolerance {:e}{}), {:.1} ms",
+        summary.sections,
+        summary.span,
+        summary.max_relative_deviation,
+        summary.tolerance,
+        if summary.tolerance_met {
+            ""
+        } else {
+            ", NOT met"
+        },
+        summary.time_ms
+    ));
+    record_all(serde_json::to_value(&summary)?);
+    if args.json && !crate::output::console::is_capturing() {
+        println!("{}", serde_json::to_string(&summary)?);
+    }
+    Ok(())
+}
+
+/// Reads the table and every row's profile, naming the row and the file on error.
+fn read_sections(table: &Path) -> Result<Sections> {
+    let rows = read_sections_table(table)?;
+    let mut profiles = Vec::with_capacity(rows.len());
+    for row in &rows {
+        let at = || row_name(table, row);
+        let points = read_curve_points(&row.path).map_err(|e| anyhow!("{}: {e}", at()))?;
+        match points {
+            CurvePoints::Planar(p) => profiles.push(p),
+            CurvePoints::Spatial(_) => bail!(
+                "{}: a profile has two coordinates (x, y in unit chord), not three",
+                at()
+            ),
+        }
+    }
+    Ok(Sections { rows, profiles })
+}
+
+/// `TABLE: row LINE (FILE)`.
+fn row_name(table: &Path, row: &SectionRow) -> String {
+    format!(
+        "{}: row {} ({})",
+        karkas_io::input::display_name(table).display(),
+        row.line,
+        row.file
+    )
+}
+
+/// The library's error about a section, as the row and file of the table.
+fn section_error(table: &Path, rows: &[SectionRow], e: karkas::Error) -> anyhow::Error {
+    match e {
+        karkas::Error::LoftSection { section, reason } if section < rows.len() => {
+            anyhow!("{}: {reason}", row_name(table, &rows[section]))
+        }
+        other => anyhow!(
+            "{}: {other}",
+            karkas_io::input::display_name(table).display()
+        ),
+    }
+}
+
+/// The surface's sections at the span stations `at`, each inside the span.
+fn cut_sections(loft: &Loft, at: &[f64]) -> Result<Vec<BSplineCurve<3>>> {
+    let stations = loft.stations();
+    let (first, last) = (stations[0], stations[stations.len() - 1]);
+    at.iter()
+        .map(|&s| {
+            if !(first..=last).contains(&s) {
+                bail!("--sections-at {s}: outside the span, which runs from {first} to {last}");
+            }
+            Ok(loft.section_at(s))
+        })
+        .collect()
+}
+
+/// Writes the sections as CSV rows `curve,x,y,z` (200 points each) or exact STEP or IGES.
+fn write_sections(path: &Path, format: OutputFormat, cuts: &[BSplineCurve<3>]) -> Result<()> {
+    match format {
+        OutputFormat::Step | OutputFormat::Iges => {
+            let entities: Vec<CadEntity> = cuts.iter().map(CadEntity::Curve).collect();
+            if format == OutputFormat::Step {
+                step::write_step(path, &entities)?;
+            } else {
+                iges::write_iges(path, &entities)?;
+            }
+        }
+        _ => {
+            let n = 200;
+            karkas_io::write::write_atomic(path, |w| {
+                writeln!(w, "curve,x,y,z")?;
+                for (k, c) in cuts.iter().enumerate() {
+                    for j in 0..n {
+                        let p = c.eval(j as f64 / (n - 1) as f64);
+                        writeln!(w, "{k},{},{},{}", p[0], p[1], p[2])?;
+                    }
+                }
+                Ok(())
+            })
+            .with_context(|| shown(path).display().to_string())?;
+        }
+    }
+    note(format!(
+        "karkas: wrote {} ({} sections)",
+        shown(path).display(),
+        cuts.len()
+    ));
+    Ok(())
+}
+
+/// Parses `--span`.
+fn parse_rule(text: &str) -> Result<SpanRule, String> {
+    text.parse().map_err(|e: karkas::Error| e.to_string())
+}
+
+/// The span stations of `--sections-at`.
+#[derive(Clone, Debug)]
+struct Stations(Vec<f64>);
+
+/// Parses `--sections-at`: finite numbers separated by commas.
+fn parse_stations(text: &str) -> Result<Stations, String> {
+    text.split(',')
+        .map(|s| {
+            let v: f64 = s
+                .trim()
+                .parse()
+                .map_err(|_| format!("'{}' is not a number", s.trim()))?;
+            if v.is_finite() {
+                Ok(v)
+            } else {
+                Err(format!("'{}' is not a finite number", s.trim()))
+            }
+        })
+        .collect::<Result<Vec<f64>, String>>()
+        .map(Stations)
+}

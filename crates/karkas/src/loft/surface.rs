@@ -1,0 +1,306 @@
+//! The loft itself: [`Loft`], a tensor-product B-spline surface through placed sections, and
+//! what it reports (docs/methods.md §7).
+
+use super::compatible::{basis_at, fit_compatible, CompatibleFit, FitSection};
+use super::placement::{wing_frames, SectionFrame, WingPlacement};
+use super::profile::Profile;
+use super::span::{span_surface, KeptLines, SpanRule};
+use crate::bspline::{BSplineCurve, BSplineSurface, ToBSplineSurface};
+use crate::core::{Grid, Interval, Surface};
+use crate::{Error, Point2, Point3, Result};
+
+/// The default tolerance of a loft: the largest distance of a section's points from the
+/// surface, as a share of the section's chord (its scale).
+pub const DEFAULT_TOLERANCE: f64 = 1e-5;
+
+/// One section of a loft: its points in its own plane, where that plane goes in space, its
+/// span station and the length its tolerance is a share of.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LoftSection {
+    /// The points, in order, with the point at `v = 1/2` if any.
+    pub profile: Profile,
+    /// Where the plane coordinates go in space.
+    pub frame: SectionFrame,
+    /// The span station (the surface's `u` at this section); stations must increase.
+    pub station: f64,
+    /// The length the tolerance is a share of (a wing section's chord).
+    pub scale: f64,
+}
+
+/// What a loft is built with.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LoftOptions {
+    /// How the surface runs between sections.
+    pub rule: SpanRule,
+    /// The largest distance of a section's points from the surface, as a share of its scale.
+    pub tolerance: f64,
+}
+
+impl Default for LoftOptions {
+    fn default() -> Self {
+        LoftOptions {
+            rule: SpanRule::default(),
+            tolerance: DEFAULT_TOLERANCE,
+        }
+    }
+}
+
+/// A surface lofted through sections (docs/methods.md §7): `u` runs along the span (the
+/// stations), `v` along each section over `[0, 1]` (an airfoil's leading edge at `v = 1/2`,
+/// its trailing-edge ends at 0 and 1). The surface at `u = station` is the section's fitted
+/// curve, placed; every section's points lie within the tolerance of it unless
+/// [`tolerance_met`](Self::tolerance_met) says otherwise.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Loft {
+    surface: BSplineSurface<3>,
+    stations: Vec<f64>,
+    deviations: Vec<f64>,
+    scales: Vec<f64>,
+    options: LoftOptions,
+    split: bool,
+    rounds: usize,
+}
+
+impl Loft {
+    /// Lofts `sections` (at least two, in span order).
+    ///
+    /// Errors: fewer than two sections, a tolerance that is not positive and finite
+    /// ([`Error::InvalidSetting`]); [`Error::LoftSection`] naming the section for a station
+    /// that is not finite or not after the one before, a scale that is not positive, or a
+    /// section with a middle point (a leading edge) among sections without one or the other
+    /// way round.
+    pub fn new(sections: &[LoftSection], options: &LoftOptions) -> Result<Loft> {
+        if sections.len() < 2 {
+            return Err(Error::TooFewPoints {
+                what: "a loft (sections)",
+                needed: 2,
+                got: sections.len(),
+            });
+        }
+        if !(options.tolerance.is_finite() && options.tolerance > 0.0) {
+            return Err(Error::InvalidSetting {
+                name: "tolerance",
+                value: options.tolerance,
+                reason: "it must be a positive number",
+            });
+        }
+        let bad = |section: usize, reason: String| Error::LoftSection { section, reason };
+        let split = sections[0].profile.split().is_some();
+        for (k, s) in sections.iter().enumerate() {
+            if !s.station.is_finite() {
+                return Err(bad(k, "its station is not finite".into()));
+            }
+            if k > 0 {
+                let before = sections[k - 1].station;
+                if s.station == before {
+                    return Err(bad(
+                        k,
+                        format!(
+                            "two sections at one station: section {} is at {before} too",
+                            k - 1
+                        ),
+                    ));
+                }
+                if s.station < before {
+                    return Err(bad(
+                        k,
+                        format!(
+                            "the stations are out of order: {} comes after section {}'s {before}",
+                            s.station,
+                            k - 1
+                        ),
+                    ));
+                }
+            }
+            if !(s.scale.is_finite() && s.scale > 0.0) {
+                return Err(bad(k, format!("its scale {} is not positive", s.scale)));
+            }
+            if s.profile.split().is_some() != split {
+                return Err(bad(
+                    k,
+                    format!(
+                        "its correspondence with section 0 cannot be made: one has a leading edge \
+                         (a middle point at v = 1/2) and the other {}",
+                        "none"
+                    ),
+                ));
+            }
+        }
+        let fit_sections: Vec<FitSection> = sections
+            .iter()
+            .map(|s| FitSection {
+                points: s.profile.points(),
+                split: s.profile.split(),
+                tolerance: options.tolerance * s.scale / s.frame.stretch().max(f64::MIN_POSITIVE),
+            })
+            .collect();
+        let CompatibleFit {
+            knots,
+            controls,
+            deviations,
+            rounds,
+        } = fit_compatible(&fit_sections)?;
+        let m = controls[0].len();
+        let nets = Grid::from_fn(sections.len(), m, |k, i| {
+            sections[k].frame.place(controls[k][i])
+        });
+        let stations: Vec<f64> = sections.iter().map(|s| s.station).collect();
+        let kept = KeptLines {
+            leading_edge: split.then(|| basis_at(&knots, 0.5)),
+        };
+        let surface = span_surface(options.rule, &stations, &nets, knots, kept)?;
+        // The deviations in model units: at most the plane's by the frame's stretch.
+        let deviations = deviations
+            .iter()
+            .zip(sections)
+            .map(|(d, s)| d * s.frame.stretch())
+            .collect();
+        Ok(Loft {
+            surface,
+            stations,
+            deviations,
+            scales: sections.iter().map(|s| s.scale).collect(),
+            options: *options,
+            split,
+            rounds,
+        })
+    }
+
+    /// Lofts a wing: airfoil `profiles` in unit chord (Selig's order or the other way round)
+    /// placed as aerosandbox's `WingXSec` places them ([`wing_frames`]), at the span stations
+    /// it gives; each section's tolerance is a share of its chord.
+    ///
+    /// Errors: as [`Profile::airfoil`], [`wing_frames`] and [`new`](Self::new), each naming
+    /// the section ([`Error::LoftSection`]); a count of profiles that differs from that of
+    /// placements ([`Error::CountMismatch`]).
+    pub fn wing(
+        profiles: &[Vec<Point2>],
+        placements: &[WingPlacement],
+        options: &LoftOptions,
+    ) -> Result<Loft> {
+        if profiles.len() != placements.len() {
+            return Err(Error::CountMismatch {
+                what: "profiles of a wing (one per placement)",
+                expected: placements.len(),
+                got: profiles.len(),
+            });
+        }
+        let (frames, stations) = wing_frames(placements)?;
+        let sections = profiles
+            .iter()
+            .enumerate()
+            .map(|(k, points)| {
+                let profile = Profile::airfoil(points).map_err(|e| in_section(k, e))?;
+                Ok(LoftSection {
+                    profile,
+                    frame: frames[k],
+                    station: stations[k],
+                    scale: placements[k].chord,
+                })
+            })
+            .collect::<Result<Vec<_>>>()?;
+        Loft::new(&sections, options)
+    }
+
+    /// The B-spline surface (degree 1 or 3 along the span, 3 along the sections).
+    pub fn surface(&self) -> &BSplineSurface<3> {
+        &self.surface
+    }
+
+    /// The span stations of the sections (the surface's `u` at each).
+    pub fn stations(&self) -> &[f64] {
+        &self.stations
+    }
+
+    /// The surface's section at span station `station` (clamped to the span): the curve
+    /// `v -> S(station, v)`.
+    pub fn section_at(&self, station: f64) -> BSplineCurve<3> {
+        self.surface.curve_at_u(station)
+    }
+
+    /// The largest distance of each section's points from the surface at its station, in
+    /// model units (an upper bound: the distance to the foot point the fit found).
+    pub fn deviations(&self) -> &[f64] {
+        &self.deviations
+    }
+
+    /// The largest of [`deviations`](Self::deviations), each over its section's scale.
+    pub fn max_relative_deviation(&self) -> f64 {
+        self.deviations
+            .iter()
+            .zip(&self.scales)
+            .fold(0.0, |m, (d, s)| m.max(d / s))
+    }
+
+    /// True when every section's points lie within the tolerance of the surface.
+    pub fn tolerance_met(&self) -> bool {
+        self.deviations
+            .iter()
+            .zip(&self.scales)
+            .all(|(d, s)| *d <= self.options.tolerance * s * (1.0 + 1e-9))
+    }
+
+    /// What the loft was built with.
+    pub fn options(&self) -> &LoftOptions {
+        &self.options
+    }
+
+    /// The surface's `v` of the sections' leading edges (1/2), when they have one.
+    pub fn leading_edge_v(&self) -> Option<f64> {
+        self.split.then_some(0.5)
+    }
+
+    /// The rounds of knot refinement the sections' fit took.
+    pub fn rounds(&self) -> usize {
+        self.rounds
+    }
+
+    /// The control points along the span and along the sections.
+    pub fn control_counts(&self) -> (usize, usize) {
+        let grid = self.surface.control_points();
+        (grid.rows(), grid.cols())
+    }
+}
+
+/// `e` as the error of section `k`.
+fn in_section(k: usize, e: Error) -> Error {
+    match e {
+        Error::LoftSection { reason, .. } => Error::LoftSection { section: k, reason },
+        other => Error::LoftSection {
+            section: k,
+            reason: other.to_string(),
+        },
+    }
+}
+
+impl Surface<3> for Loft {
+    fn domain_u(&self) -> Interval {
+        self.surface.domain_u()
+    }
+
+    fn domain_v(&self) -> Interval {
+        self.surface.domain_v()
+    }
+
+    fn is_closed_u(&self) -> bool {
+        false
+    }
+
+    fn is_closed_v(&self) -> bool {
+        false
+    }
+
+    fn eval(&self, u: f64, v: f64) -> Point3 {
+        self.surface.eval(u, v)
+    }
+
+    fn deriv(&self, u: f64, v: f64, ku: usize, kv: usize) -> Point3 {
+        self.surface.deriv(u, v, ku, kv)
+    }
+}
+
+impl ToBSplineSurface<3> for Loft {
+    fn to_bspline(&self) -> Result<BSplineSurface<3>> {
+        Ok(self.surface.clone())
+    }
+}
