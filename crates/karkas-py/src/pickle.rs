@@ -21,7 +21,7 @@ use crate::param::{Ends, PyBicubicSurface, PyCubicSpline};
 use crate::section::PySectionCurve;
 
 /// The constructors `_restore` may call: the qualified names the `__reduce__` methods give.
-const CONSTRUCTORS: [&str; 13] = [
+const CONSTRUCTORS: [&str; 14] = [
     "LLCurve",
     "LLSurface",
     "CubicSpline",
@@ -35,6 +35,7 @@ const CONSTRUCTORS: [&str; 13] = [
     "SectionCurve._from_state",
     "ImplicitSurface",
     "HermiteSpline",
+    "FairCurve._from_state",
 ];
 
 /// _restore(name, args, kwargs=None): calls the karkas constructor `name` (e.g.
@@ -60,7 +61,7 @@ pub fn restore<'py>(
 }
 
 /// What `__reduce__` returns: `(karkas._restore, (name, args[, kwargs]))`.
-fn reduce<'py>(
+pub(crate) fn reduce<'py>(
     py: Python<'py>,
     name: &str,
     args: Bound<'py, PyTuple>,

@@ -28,6 +28,8 @@
 //! - [`measure`]: the two-sided Hausdorff distance between surfaces and point sets.
 //! - [`fit`]: fitting measured points with C^1 cubic Hermite splines (cubic splines of defect
 //!   2) whose second-derivative jumps are bounded (Pavlov).
+//! - [`fair`]: the fairest `C^2` cubic B-spline within a hard tolerance of measured points
+//!   (least `∫ (dκ/ds)^2 ds`), or of an existing curve.
 //!
 //! ```
 //! use karkas::{ll::LlCurve, Curve, Point};
@@ -44,6 +46,7 @@ pub mod coons;
 pub mod core;
 pub mod dps;
 mod error;
+pub mod fair;
 pub mod fit;
 pub mod geometry;
 pub mod implicit;

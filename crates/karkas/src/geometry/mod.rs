@@ -19,6 +19,7 @@
 //!   `(P(t) - q) . P'(t) = 0` per candidate segment; large batches share one proof per cell
 //!   of a grid (`nearest_grid`: a run of segments on which the squared distance is convex
 //!   for the whole cell, bounded by `segment_polynomials`).
+//! - [`points_out_of_order`]: whether a point list follows one curve in its order.
 //! - [`surface_frame`]: the unit normal and the principal curvatures and directions from the
 //!   first and second fundamental forms.
 //! - [`surface_nearest`]: the globally nearest point of a surface, candidates from a sampled
@@ -34,6 +35,7 @@ pub mod fairness;
 #[cfg(test)]
 mod fairness_tests;
 mod nearest_grid;
+mod point_order;
 mod polygon_distance;
 mod quadrature;
 mod segment_polynomials;
@@ -48,5 +50,6 @@ pub use curvature_rate::{curvature_rate, curvature_rate_on_side};
 pub use curve_geometry::CurveGeometry;
 pub use curve_nearest::{CurveNearest, CurveProjector};
 pub use fairness::{curvature_profile, curve_fairness, CurvatureSample, CurveFairness};
+pub use point_order::points_out_of_order;
 pub use surface_frame::{normal, principal_curvatures, PrincipalCurvatures};
 pub use surface_nearest::{SurfaceNearest, SurfaceProjector};

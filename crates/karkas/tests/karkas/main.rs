@@ -17,6 +17,7 @@ mod coons_twists;
 mod dps_bspline;
 mod dps_interpolation;
 mod dps_tube;
+mod fair;
 mod fit_adaptive;
 mod fit_dense;
 mod fit_faults;
