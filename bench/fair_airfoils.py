@@ -29,8 +29,10 @@ Figures of every curve, computed here from its B-spline form (SciPy ``BSpline``;
     knot span);
   * the largest distance from the truth (both ways, dense samples).
 
-The truth's counts are those the points can demand at T: the truth (the C^2 interpolant of 4001
-points of the closed-form section, or of the clean file's points) sampled the same way, its
+The truth's counts are those the points can demand at T: the truth (40001 points of the
+closed-form section, curvature by circles through three samples, so that the 4-digit mean
+line's curvature jump stays a jump; or the C^2 interpolant of the clean file's points, sampled
+as above), its
 curvature extrema simplified by persistence: an adjacent pair of extrema (or an extremum and the
 curve end next to it) is dropped while flattening it moves the curve less than T, the move
 estimated as dk L^2 / 8 with L the run of the curve around the pair whose curvature stays
@@ -198,6 +200,27 @@ class Figures:
         return dist
 
 
+class SampledFigures(Figures):
+    """The figures of a curve given by dense samples of its closed form (the NACA truth):
+    curvature by the circle through three consecutive samples, its rate by differences of
+    the curvature, so that a jump of the curvature (a 4-digit mean line's at its highest
+    point) stays a jump, without the ringing an interpolant would add."""
+
+    def __init__(self, points):
+        a, b, c = points[:-2], points[1:-1], points[2:]
+        ab, bc, ca = (np.linalg.norm(b - a, axis=1), np.linalg.norm(c - b, axis=1),
+                      np.linalg.norm(a - c, axis=1))
+        cross = (b - a)[:, 0] * (c - a)[:, 1] - (b - a)[:, 1] * (c - a)[:, 0]
+        k = 2 * cross / (ab * bc * ca)
+        s = np.r_[0.0, np.cumsum(np.linalg.norm(np.diff(points, axis=0), axis=1))][1:-1]
+        self.k = k
+        self.s = s
+        self.rate = np.gradient(k, s)
+        self.length = s[-1] - s[0]
+        self.points = points
+        self.energy = float(np.trapezoid(self.rate**2, s))
+
+
 def sign_changes(values, zero):
     v = values[np.abs(values) > zero]
     return int(np.sum(np.sign(v[1:]) != np.sign(v[:-1])))
@@ -336,22 +359,23 @@ def cases(quick):
     seeds = range(2) if quick else SEEDS
     for code in sections:
         clean = naca(code, beta)
-        dense = naca(code, np.linspace(0, 2 * np.pi, 4001))
-        yield f"naca{code}", clean, truth_from_points(dense), seeds
+        dense = naca(code, np.linspace(0, 2 * np.pi, 40001))
+        yield f"naca{code}", clean, dense, seeds
     for name in files:
         path = CORPUS / f"{name}.dat"
         if not path.exists():
             print(f"skipped {name}: {path} not found", file=sys.stderr)
             continue
         clean = read_dat(path)
-        yield name, clean, truth_from_points(clean), seeds
+        yield name, clean, Figures(truth_from_points(clean)), seeds
 
 
 def run(quick, plot, plot_case):
     rows = []
     shown = {}
-    for name, clean, truth_tck, seeds in cases(quick):
-        truth = Figures(truth_tck)
+    for name, clean, truth, seeds in cases(quick):
+        if isinstance(truth, np.ndarray):
+            truth = SampledFigures(truth)
         for sigma in SIGMAS:
             tol = T_FACTOR * sigma
             demanded = truth.demanded(tol)
