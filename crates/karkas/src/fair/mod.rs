@@ -32,13 +32,16 @@
 //! strictly inside its ball, so the hard bound holds by construction.
 //!
 //! Cost: `O(n)` per Newton step for `n` points (banded systems of width `4 D`, `8 D` closed);
-//! a 200-point airfoil takes a few milliseconds (`cargo bench -p karkas-bench --bench fair`).
+//! a 200-point airfoil takes about 180 ms of one core (BENCHMARKS.md; `cargo bench -p
+//! karkas-bench --bench fair`), well above the 10 ms aimed at.
 //!
 //! Guarantees (tested): every point within `T` of the curve (at its parameter, and so on
 //! dense samples); ends and tangent directions kept when asked; corners passed through; the
 //! result equal to the one at the origin plus the offset for points moved far from it (to
-//! tens of units in the last place of the offset); on noisy NACA sections and real airfoils
-//! the counts of curvature extrema and inflections of the true shape (bench/fair_airfoils.py).
+//! 64 units in the last place of the offset: the points are taken from their bounding box's
+//! corner, exactly); on noisy airfoils the energy at most that of SciPy's and Open
+//! CASCADE's curves within `T` (bench/fair_airfoils.py; the counts of curvature extrema and
+//! inflections match the benchmark's truth in too few cases, BENCHMARKS.md).
 
 mod layout;
 mod objective;

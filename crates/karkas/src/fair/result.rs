@@ -50,20 +50,47 @@ impl<const D: usize> FairCurve<D> {
     }
 }
 
-/// The centre and size the points are scaled by: the middle of their bounding box and its
-/// largest half-side.
-fn frame<const D: usize>(points: &[Point<D>]) -> (Point<D>, f64) {
-    let mut lo = points[0];
-    let mut hi = points[0];
-    for p in points {
-        for d in 0..D {
-            lo[d] = lo[d].min(p[d]);
-            hi[d] = hi[d].max(p[d]);
+/// The frame the points are fairer in: `(p - corner - half) / size`, with `corner` the low
+/// corner of their bounding box, `half` its half-sides and `size` the largest of them.
+///
+/// The corner is made of input coordinates, so `p - corner` and `half` are exact for points
+/// far from the origin (Sterbenz) and the same for points moved by a representable offset:
+/// the fairer then sees the same numbers wherever the points are, and the curve moves with
+/// them to the rounding of the final `corner + ...` (a few units in the last place).
+struct Frame<const D: usize> {
+    corner: Point<D>,
+    half: Point<D>,
+    size: f64,
+}
+
+impl<const D: usize> Frame<D> {
+    fn of(points: &[Point<D>]) -> Self {
+        let mut lo = points[0];
+        let mut hi = points[0];
+        for p in points {
+            for d in 0..D {
+                lo[d] = lo[d].min(p[d]);
+                hi[d] = hi[d].max(p[d]);
+            }
+        }
+        let half = (hi - lo) * 0.5;
+        let size = (0..D).map(|d| half[d]).fold(0.0, f64::max);
+        Frame {
+            corner: lo,
+            half,
+            size,
         }
     }
-    let centre = lo.lerp(hi, 0.5);
-    let size = (0..D).map(|d| 0.5 * (hi[d] - lo[d])).fold(0.0, f64::max);
-    (centre, size)
+
+    /// A point in the fairer's frame.
+    fn to_unit(&self, p: Point<D>) -> Point<D> {
+        ((p - self.corner) - self.half) * (1.0 / self.size)
+    }
+
+    /// A point of the fairer's frame back in the points' frame.
+    fn from_unit(&self, c: Point<D>) -> Point<D> {
+        self.corner + (self.half + c * self.size)
+    }
 }
 
 /// The fairest `C^2` cubic B-spline within `options.tolerance` of every point of `points`
@@ -146,7 +173,8 @@ fn fair_points<const D: usize>(
     options: &FairOptions,
     tangents: Option<[Point<D>; 2]>,
 ) -> Result<FairCurve<D>> {
-    let (centre, size) = frame(points);
+    let frame = Frame::of(points);
+    let size = frame.size;
     if size.is_nan() || size <= 0.0 {
         return Err(Error::TooFewPoints {
             what: "a fair curve (distinct points)",
@@ -154,10 +182,7 @@ fn fair_points<const D: usize>(
             got: 1,
         });
     }
-    let scaled: Vec<Point<D>> = points
-        .iter()
-        .map(|&p| (p - centre) * (1.0 / size))
-        .collect();
+    let scaled: Vec<Point<D>> = points.iter().map(|&p| frame.to_unit(p)).collect();
     let tolerance = options.tolerance / size;
     let n = scaled.len();
     let end = |side: usize| match (options.ends, tangents) {
@@ -228,7 +253,7 @@ fn fair_points<const D: usize>(
     // Join the pieces' clamped B-splines, sharing the corner controls.
     let mut knots: Vec<f64> = Vec::new();
     let mut controls: Vec<Point<D>> = Vec::new();
-    let unscale = |c: &Point<D>| centre + *c * size;
+    let unscale = |c: &Point<D>| frame.from_unit(*c);
     let mut curve = None;
     if pieces.len() == 1 {
         let spline = pieces[0].space.to_bspline(&pieces[0].controls)?;

@@ -311,7 +311,7 @@ pub fn fit_curve<const D: usize>(
     let noise = estimate_noise(&scaled);
     let start = start_parameters_for(&scaled, &options.start, noise.sigma)?;
     fit_checked(&scaled, knots, &weights, start, &options, &noise)
-        .map(|fit| with_warnings(points, unit.restore(fit)))
+        .map(|fit| with_warnings(points, unit.restore(fit, pinned_ends(points, &options))))
 }
 
 /// The standard error of a least-squares spline on `knots` knots (`2 knots` coefficients per
@@ -344,9 +344,24 @@ fn standard_error<const D: usize>(noise: &NoiseEstimate, state: &State<D>, knots
     }
 }
 
+/// The first and last points when `options` pins the ends (the values a restored fit keeps
+/// exactly).
+pub(crate) fn pinned_ends<const D: usize>(
+    points: &[Point<D>],
+    options: &FitOptions,
+) -> Option<[Point<D>; 2]> {
+    match (options.pin_ends, points.first(), points.last()) {
+        (true, Some(&first), Some(&last)) => Some([first, last]),
+        _ => None,
+    }
+}
+
 /// `options` in the units of a fit of points divided by `unit`'s scale: the bound `eps` on
 /// the squared jumps scales with them; the other settings are dimensionless.
-pub(crate) fn in_fit_units(options: &FitOptions, unit: UnitScale) -> Cow<'_, FitOptions> {
+pub(crate) fn in_fit_units<const D: usize>(
+    options: &FitOptions,
+    unit: UnitScale<D>,
+) -> Cow<'_, FitOptions> {
     if unit.scale() == 1.0 {
         return Cow::Borrowed(options);
     }

@@ -27,6 +27,7 @@ mod fit_naca;
 mod fit_noise;
 mod fit_optimality;
 mod fit_parallel;
+mod fit_translation;
 mod geometry;
 mod geometry_batch;
 mod geometry_nearest_batch;
