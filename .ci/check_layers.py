@@ -29,7 +29,7 @@ LAYERS = [
     ["solve", "bspline", "geometry"],
     ["spline"],
     ["ll", "dps", "fit", "param", "implicit"],
-    ["coons", "section", "measure"],
+    ["coons", "section", "measure", "fair"],
     ["loft"],
 ]
 ANYWHERE = {"error"}

@@ -37,10 +37,12 @@ __all__ = [
     "ExpressionError",
     "FileFormatError",
     "fit_curve",
+    "fair_curve",
     "grid_parameters",
     "hausdorff",
     "hausdorff_to_implicit",
     "HermiteSpline",
+    "FairCurve",
     "ImplicitSurface",
     "IncompatibleDataError",
     "KarkasError",
@@ -271,6 +273,48 @@ def fit_curve(
 ) -> HermiteSpline:
     """Fits points (n, d) with a C^1 cubic Hermite spline; give knots (count or array) or
     tolerance. The options and defaults are those of karkas curve fit."""
+
+@final
+class FairCurve(Curve):
+    """The fairest C^2 cubic B-spline within a tolerance of points (fair_curve)."""
+
+    def __reduce__(self) -> Tuple[object, ...]: ...
+    @staticmethod
+    def _from_state(
+        knots: ArrayLike,
+        control_points: ArrayLike,
+        closed: bool,
+        points: ArrayLike,
+        parameters: ArrayLike,
+        distances: ArrayLike,
+        tolerance: float,
+    ) -> FairCurve: ...
+    def report(self) -> dict[str, dict[str, Any]]:
+        """The fairness before and after (the keys of Curve.fairness)."""
+    @property
+    def knots(self) -> _Floats: ...
+    @property
+    def control_points(self) -> _Floats: ...
+    @property
+    def points(self) -> _Floats: ...
+    @property
+    def parameters(self) -> _Floats: ...
+    @property
+    def distances(self) -> _Floats: ...
+    @property
+    def max_distance(self) -> float: ...
+    @property
+    def tolerance(self) -> float: ...
+
+def fair_curve(
+    points: Union[ArrayLike, Curve],
+    tolerance: float,
+    keep_ends: bool = False,
+    keep_tangents: bool = False,
+    corners: Optional[Sequence[int]] = None,
+    closed: bool = False,
+) -> FairCurve:
+    """The fairest C^2 cubic within tolerance of points (n, d) or of a curve (karkas curve fair)."""
 
 @disjoint_base
 class Surface:

@@ -27,6 +27,7 @@ mod export;
 mod export_any;
 mod export_cad;
 mod export_format;
+mod fair;
 mod fairness;
 mod fit;
 mod geometry;
@@ -89,6 +90,8 @@ fn karkas_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<param::PyCubicSpline>()?;
     m.add_class::<fit::PyHermiteSpline>()?;
     m.add_function(wrap_pyfunction!(fit::fit_curve, m)?)?;
+    m.add_class::<fair::PyFairCurve>()?;
+    m.add_function(wrap_pyfunction!(fair::fair_curve, m)?)?;
     m.add_class::<surface::PySurface>()?;
     m.add_class::<surface_eval::PySurfaceDerivative>()?;
     m.add_class::<ll::PyLlSurface>()?;

@@ -36,6 +36,7 @@ const CONSTRUCTORS: [&str; 14] = [
     "SectionCurve._from_state",
     "ImplicitSurface",
     "HermiteSpline",
+    "FairCurve._from_state",
 ];
 
 /// _restore(name, args, kwargs=None): calls the karkas constructor `name` (e.g.
@@ -97,7 +98,7 @@ fn reduce_loft<'py>(
 }
 
 /// What `__reduce__` returns: `(karkas._restore, (name, args[, kwargs]))`.
-fn reduce<'py>(
+pub(crate) fn reduce<'py>(
     py: Python<'py>,
     name: &str,
     args: Bound<'py, PyTuple>,

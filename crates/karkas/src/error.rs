@@ -359,6 +359,16 @@ pub enum Error {
         /// What is wrong.
         problem: String,
     },
+    /// Points that do not follow one curve in their order: many long chords turn back by more
+    /// than 150 degrees, as in a shuffled list ([`points_out_of_order`](crate::geometry::points_out_of_order),
+    /// checked by [`fair_curve`](crate::fair::fair_curve)).
+    #[error(
+        "points not in order ({reversals} long chords turn back; list the points along the curve)"
+    )]
+    PointsOutOfOrder {
+        /// The number of long chords that turn back.
+        reversals: usize,
+    },
     /// A knot (or node, or parameter of a point) that is not finite, out of order, too close
     /// to its neighbour or outside the allowed range: the one error of the one knot validator
     /// [`check_knots`](crate::core::knots::check_knots), whichever method was given the knots

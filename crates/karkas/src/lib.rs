@@ -30,6 +30,8 @@
 //!   on one knot vector, spanwise rules, aerosandbox's wing placement.
 //! - [`fit`]: fitting measured points with C^1 cubic Hermite splines (cubic splines of defect
 //!   2) whose second-derivative jumps are bounded (Pavlov).
+//! - [`fair`]: the fairest `C^2` cubic B-spline within a hard tolerance of measured points
+//!   (least `∫ (dκ/ds)^2 ds`), or of an existing curve.
 //!
 //! ```
 //! use karkas::{ll::LlCurve, Curve, Point};
@@ -46,6 +48,7 @@ pub mod coons;
 pub mod core;
 pub mod dps;
 mod error;
+pub mod fair;
 pub mod fit;
 pub mod geometry;
 pub mod implicit;

@@ -3,6 +3,7 @@
 pub mod convert;
 mod curve_analyze;
 mod curve_dps;
+mod curve_fair;
 mod curve_fit;
 mod curve_ll;
 mod curve_spline;
@@ -32,6 +33,9 @@ pub enum CurveCommand {
     Dps(curve_dps::CurveDpsArgs),
     /// Fit a C^1 cubic spline with bounded second-derivative jumps to measured points.
     Fit(curve_fit::CurveFitArgs),
+    /// The fairest C^2 cubic within a tolerance of every point (least integral of
+    /// (dk/ds)^2), with its fairness before and after.
+    Fair(curve_fair::CurveFairArgs),
     /// Cubic interpolating spline through ordered points (not-a-knot, natural, clamped or
     /// periodic ends; uniform, chord or centripetal parameters).
     Spline(curve_spline::CurveSplineArgs),
@@ -47,6 +51,7 @@ impl CurveCommand {
             CurveCommand::Ll(args) => curve_ll::run(&args),
             CurveCommand::Dps(args) => curve_dps::run(&args),
             CurveCommand::Fit(args) => curve_fit::run(&args),
+            CurveCommand::Fair(args) => curve_fair::run(&args),
             CurveCommand::Analyze(args) => curve_analyze::run(&args),
             CurveCommand::Spline(args) => curve_spline::run(&args),
         }

@@ -10,6 +10,7 @@ mod common;
 mod contract;
 mod convert;
 mod curve_analyze;
+mod curve_fair;
 mod curve_fit;
 mod curve_spline;
 mod demo_hydrofoil;

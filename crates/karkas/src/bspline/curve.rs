@@ -1,7 +1,7 @@
 //! B-spline curves: degree, clamped knot vector, control points, de Boor evaluation.
 
 use crate::core::knots::check_order;
-use crate::core::{Curve, Interval};
+use crate::core::{Curve, Interval, PiecewiseCurve, Side};
 use crate::{Error, Point, Result};
 
 /// The largest degree of a [`BSplineCurve`] or [`BSplineSurface`](super::BSplineSurface):
@@ -140,6 +140,28 @@ impl<const D: usize> BSplineCurve<D> {
         })
     }
 
+    /// One period of a closed curve as a clamped B-spline whose first and last control points
+    /// coincide (to `1e-12` of the largest coordinate); [`is_closed`](Curve::is_closed)
+    /// reports it.
+    ///
+    /// Errors: those of [`new`](Self::new), and ends that do not coincide.
+    pub fn new_closed(degree: usize, knots: Vec<f64>, control: Vec<Point<D>>) -> Result<Self> {
+        let curve = Self::new(degree, knots, control)?;
+        let (first, last) = (curve.control[0], curve.control[curve.control.len() - 1]);
+        let scale = curve
+            .control
+            .iter()
+            .fold(0.0_f64, |a, p| a.max(p.max_abs()));
+        if (first - last).max_abs() > 1e-12 * scale {
+            return Err(Error::InvalidSetting {
+                name: "closed B-spline end gap",
+                value: (first - last).max_abs(),
+                reason: "the first and last control points of a closed curve must coincide",
+            });
+        }
+        Ok(curve.with_closed(true))
+    }
+
     /// Marks the curve as one period of a closed curve (its ends coincide).
     pub(crate) fn with_closed(mut self, closed: bool) -> Self {
         self.closed = closed;
@@ -177,26 +199,6 @@ impl<const D: usize> BSplineCurve<D> {
     }
 }
 
-/// The derivative's degree, knots and control points (degree `p - 1`; degree 0 is
-/// piecewise constant, which [`de_boor`] evaluates as is).
-fn derivative_data<const D: usize>(
-    p: usize,
-    knots: &[f64],
-    control: &[Point<D>],
-) -> (usize, Vec<f64>, Vec<Point<D>>) {
-    let derived = (0..control.len() - 1)
-        .map(|i| {
-            let span = knots[i + p + 1] - knots[i + 1];
-            if span > 0.0 {
-                (control[i + 1] - control[i]) * (p as f64 / span)
-            } else {
-                Point::ZERO
-            }
-        })
-        .collect();
-    (p - 1, knots[1..knots.len() - 1].to_vec(), derived)
-}
-
 /// The distinct values of a sorted knot vector with their multiplicities.
 pub(crate) fn distinct_knots(knots: &[f64]) -> Vec<(f64, usize)> {
     let mut out: Vec<(f64, usize)> = Vec::new();
@@ -209,7 +211,8 @@ pub(crate) fn distinct_knots(knots: &[f64]) -> Vec<(f64, usize)> {
     out
 }
 
-/// Evaluates the `k`-th derivative of the B-spline `(degree, knots, control)` at `t`.
+/// Evaluates the `k`-th derivative of the B-spline `(degree, knots, control)` at `t` (on the
+/// span holding `t`, [`span_deriv`]).
 fn deriv_of<const D: usize>(
     degree: usize,
     knots: &[f64],
@@ -219,16 +222,12 @@ fn deriv_of<const D: usize>(
 ) -> Point<D> {
     let n = control.len();
     let t = t.clamp(knots[degree], knots[n]);
+    let span = find_span(degree, knots, n, t);
     if k == 0 {
-        let span = find_span(degree, knots, n, t);
         let mut work = [Point::ZERO; MAX_DEGREE + 1];
         return de_boor(degree, knots, |i| control[i], span, t, &mut work);
     }
-    if k > degree {
-        return Point::ZERO;
-    }
-    let (p, dk, dc) = derivative_data(degree, knots, control);
-    deriv_of(p, &dk, &dc, t, k - 1)
+    span_deriv(degree, knots, control, span, t, k)
 }
 
 impl<const D: usize> Curve<D> for BSplineCurve<D> {
@@ -259,5 +258,84 @@ impl<const D: usize> Curve<D> for BSplineCurve<D> {
                 .map(|d| self.degree.saturating_sub(d.1))
                 .collect(),
         })
+    }
+}
+
+/// The `k`-th derivative at `t` of the polynomial of span `span` (`knots[span] <= t <=
+/// knots[span + 1]` or its continuation): the span's `p + 1` controls differenced `k` times,
+/// then de Boor's algorithm of degree `p - k` on them (no allocation).
+fn span_deriv<const D: usize>(
+    degree: usize,
+    knots: &[f64],
+    control: &[Point<D>],
+    span: usize,
+    t: f64,
+    k: usize,
+) -> Point<D> {
+    if k > degree {
+        return Point::ZERO;
+    }
+    let mut work = [Point::ZERO; MAX_DEGREE + 1];
+    for (j, w) in work.iter_mut().enumerate().take(degree + 1) {
+        *w = control[span - degree + j];
+    }
+    // Difference k times: after step r, work[j] (j >= r) is the control of degree p - r for
+    // basis index span - degree + j.
+    for r in 1..=k {
+        let p = degree + 1 - r;
+        for j in (r..=degree).rev() {
+            let i = span - degree + j;
+            let denominator = knots[i + p] - knots[i];
+            work[j] = if denominator > 0.0 {
+                (work[j] - work[j - 1]) * (p as f64 / denominator)
+            } else {
+                Point::ZERO
+            };
+        }
+    }
+    let q = degree - k;
+    // De Boor of degree q on work[k..=degree] (basis indices span - q ..= span).
+    for r in 1..=q {
+        for j in (k + r..=degree).rev() {
+            let i = span - degree + j;
+            let denominator = knots[i + q + 1 - r] - knots[i];
+            let alpha = if denominator > 0.0 {
+                (t - knots[i]) / denominator
+            } else {
+                0.0
+            };
+            work[j] = work[j - 1] * (1.0 - alpha) + work[j] * alpha;
+        }
+    }
+    work[degree]
+}
+
+impl<const D: usize> PiecewiseCurve<D> for BSplineCurve<D> {
+    fn breakpoints(&self) -> Vec<f64> {
+        self.distinct_knots().iter().map(|d| d.0).collect()
+    }
+
+    fn continuity(&self) -> usize {
+        let distinct = self.distinct_knots();
+        let n = distinct.len();
+        distinct[1..n - 1]
+            .iter()
+            .map(|d| self.degree.saturating_sub(d.1))
+            .min()
+            .unwrap_or(self.degree)
+    }
+
+    fn deriv_on_side(&self, t: f64, k: usize, side: Side) -> Point<D> {
+        let n = self.control.len();
+        let p = self.degree;
+        let t = t.clamp(self.knots[p], self.knots[n]);
+        let mut span = find_span(p, &self.knots, n, t);
+        if side == Side::Below {
+            // The span ending at t when t is a knot (and not the domain start).
+            while span > p && self.knots[span] >= t {
+                span -= 1;
+            }
+        }
+        span_deriv(p, &self.knots, &self.control, span, t, k)
     }
 }

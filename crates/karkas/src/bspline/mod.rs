@@ -59,3 +59,10 @@ pub trait ToBSplineSurface<const D: usize> {
     /// The B-spline surface equal to this surface over its domain.
     fn to_bspline(&self) -> Result<BSplineSurface<D>>;
 }
+
+impl<const D: usize> ToBSplineCurve<D> for BSplineCurve<D> {
+    /// The curve itself.
+    fn to_bspline(&self) -> Result<BSplineCurve<D>> {
+        Ok(self.clone())
+    }
+}

@@ -48,7 +48,7 @@ use super::guards::with_warnings;
 use super::knots::{start_parameters_for, uniform_with_corners, warm_parameters};
 use super::noise::estimate_noise;
 use super::penalty::{
-    check_inputs, check_settings, fit_checked, in_fit_units, FitEnds, FitOptions,
+    check_inputs, check_settings, fit_checked, in_fit_units, pinned_ends, FitEnds, FitOptions,
     TOLERANCE_SMOOTHING,
 };
 use super::prune::prune;
@@ -164,13 +164,13 @@ pub fn fit_curve_adaptive<const D: usize>(
     let (best, stop, rounds) = adaptive_rounds(&scaled, unit.length(tolerance), &scaled_options)?;
     if stop == AdaptiveStop::Met {
         return Ok(AdaptiveFit {
-            fit: with_warnings(points, unit.restore(best)),
+            fit: with_warnings(points, unit.restore(best, pinned_ends(points, options))),
             tolerance_met: true,
             rounds,
             stop,
         });
     }
-    let mut best = with_warnings(points, unit.restore(best));
+    let mut best = with_warnings(points, unit.restore(best, pinned_ends(points, options)));
     let worst_at = best
         .distances
         .iter()

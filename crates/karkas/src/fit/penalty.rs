@@ -354,7 +354,7 @@ pub fn fit_curve<const D: usize>(
     let noise = estimate_noise(&scaled);
     let start = start_parameters_for(&scaled, &options.start, noise.sigma)?;
     fit_checked(&scaled, knots, &weights, start, &options, &noise)
-        .map(|fit| with_warnings(points, unit.restore(fit)))
+        .map(|fit| with_warnings(points, unit.restore(fit, pinned_ends(points, &options))))
 }
 
 /// The standard error of a least-squares spline on `knots` knots (`2 knots` coefficients per
@@ -387,9 +387,26 @@ fn standard_error<const D: usize>(noise: &NoiseEstimate, state: &State<D>, knots
     }
 }
 
+/// The points `options` pins the ends to (the values a restored fit keeps exactly): the first
+/// and last points for [`FitEnds::Pinned`], their common point for ends that coincide under
+/// [`FitEnds::Auto`] and [`FitEnds::Shared`].
+pub(crate) fn pinned_ends<const D: usize>(
+    points: &[Point<D>],
+    options: &FitOptions,
+) -> Option<[Point<D>; 2]> {
+    match (options.ends, points.first(), points.last()) {
+        (FitEnds::Pinned, Some(&first), Some(&last)) => Some([first, last]),
+        (FitEnds::Auto | FitEnds::Shared, _, _) => shared_end(points).map(|p| [p, p]),
+        _ => None,
+    }
+}
+
 /// `options` in the units of a fit of points divided by `unit`'s scale: the bound `eps` on
 /// the squared jumps scales with them; the other settings are dimensionless.
-pub(crate) fn in_fit_units(options: &FitOptions, unit: UnitScale) -> Cow<'_, FitOptions> {
+pub(crate) fn in_fit_units<const D: usize>(
+    options: &FitOptions,
+    unit: UnitScale<D>,
+) -> Cow<'_, FitOptions> {
     if unit.scale() == 1.0 {
         return Cow::Borrowed(options);
     }

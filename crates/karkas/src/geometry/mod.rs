@@ -22,6 +22,7 @@
 //! - [`enclosed_volume`]: the volume a closed surface encloses (the divergence theorem, by
 //!   Gauss–Legendre on its polynomial cells; planar caps by their area vectors) and the
 //!   plane of a closed polygon.
+//! - [`points_out_of_order`]: whether a point list follows one curve in its order.
 //! - [`surface_frame`]: the unit normal and the principal curvatures and directions from the
 //!   first and second fundamental forms.
 //! - [`surface_nearest`]: the globally nearest point of a surface, candidates from a sampled
@@ -38,6 +39,7 @@ pub mod fairness;
 #[cfg(test)]
 mod fairness_tests;
 mod nearest_grid;
+mod point_order;
 mod polygon_distance;
 mod quadrature;
 mod segment_polynomials;
@@ -53,5 +55,6 @@ pub use curve_geometry::CurveGeometry;
 pub use curve_nearest::{CurveNearest, CurveProjector};
 pub use enclosed_volume::{area_vector, flux_volume, polygon_plane, Plane};
 pub use fairness::{curvature_profile, curve_fairness, CurvatureSample, CurveFairness};
+pub use point_order::points_out_of_order;
 pub use surface_frame::{normal, principal_curvatures, PrincipalCurvatures};
 pub use surface_nearest::{SurfaceNearest, SurfaceProjector};

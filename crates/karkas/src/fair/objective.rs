@@ -1,0 +1,330 @@
+//! The objective of the fairer on a fixed spline space and fixed point parameters, and its
+//! Gauss–Newton gradient and matrix (docs/methods.md §8).
+//!
+//! `Ψ_t(x) = t (E(x) + α R(x)) / 2 - sum_i ln(T^2 - |r(u_i) - p_i|^2)`:
+//!
+//! - `E = ∫ (dκ/ds)^2 ds`, the curvature-variation energy, by four-point Gauss–Legendre
+//!   quadrature on every span of `(dκ/ds)^2 |r'(t)|` (exact for the integrand's polynomial
+//!   part, and the pieces are short). Its residual at a node, `F = dκ/ds sqrt(w |r'|)`, is
+//!   linearized for the Gauss–Newton matrix: its gradient with respect to the node's first
+//!   three derivatives by central differences (exact in `r'''`, on which `F` is linear, and
+//!   in `r''` in the plane, where it is quadratic), then through the basis weights to the
+//!   span's four controls.
+//! - `R = ∫ |r'''(t)|^2 dt`, constant on every span of a cubic, weighted `α` small: `E` does not
+//!   change when the curve is reparameterized, and `R` keeps the parameter even where `E`
+//!   alone would leave it free.
+//! - The logarithmic barrier of the hard bound `|r(u_i) - p_i| < T` (a ball around every point
+//!   at its parameter `u_i`): its gradient and matrix are exact.
+//!
+//! Every term touches the four controls of one span, so the matrix is banded.
+
+use super::layout::{Layout, Row};
+use super::space::{Space, NODES};
+use crate::geometry::curvature_rate::curvature_and_rate;
+use crate::solve::BandedSpd;
+use crate::Point;
+
+/// The Gauss–Legendre weights of the four inner [`NODES`] (positions 1 to 4).
+const GAUSS_WEIGHTS: [f64; 4] = [
+    0.173_927_422_568_726_93,
+    0.326_072_577_431_273_07,
+    0.326_072_577_431_273_07,
+    0.173_927_422_568_726_93,
+];
+/// Nodes per span where the sign of `dκ/ds` is watched: all [`NODES`] (the span's ends
+/// one-sided: `dκ/ds` jumps at a break of a cubic).
+pub(crate) const NODES_PER_SPAN: usize = NODES.len();
+/// Relative step of the central differences in `r'`.
+const DIFFERENCE_STEP: f64 = 1e-5;
+
+/// The fixed data of the objective: the space, the unknowns' layout, the points, their
+/// parameters and the bound.
+pub(crate) struct Objective<'a, const D: usize> {
+    pub(crate) space: &'a Space,
+    pub(crate) layout: &'a Layout<D>,
+    pub(crate) points: &'a [Point<D>],
+    /// The span of every point's parameter and the value weights there.
+    pub(crate) basis: &'a [(usize, [f64; 4])],
+    /// The bound `T`.
+    pub(crate) tolerance: f64,
+    /// The weight `α` of `R`.
+    pub(crate) alpha: f64,
+    /// The sign asked of `dκ/ds` at every quadrature node, if any.
+    pub(crate) shape: Option<&'a Shape>,
+}
+
+/// The signs asked of `dκ/ds` at the quadrature nodes (span by span, node by node; 0 where
+/// free) and the penalty on the wrong sign: `ρ sum w h (min(0, σ F - margin))^2`.
+#[derive(Clone, Debug)]
+pub(crate) struct Shape {
+    pub(crate) signs: Vec<i8>,
+    pub(crate) rho: f64,
+    pub(crate) margin: f64,
+}
+
+/// The samples of the curvature at the quadrature nodes: `κ`, `dκ/ds sqrt(|r'|)` and the
+/// arc position of every node, and the length.
+pub(crate) struct NodeSamples {
+    pub(crate) curvature: Vec<f64>,
+    pub(crate) rate: Vec<f64>,
+    pub(crate) s: Vec<f64>,
+    pub(crate) length: f64,
+}
+
+/// The parts of the objective at one set of controls.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct Parts {
+    /// `E`.
+    pub(crate) energy: f64,
+    /// `R`.
+    pub(crate) smoothness: f64,
+    /// `-sum ln(T^2 - |e_i|^2)`, infinite when a point is not strictly inside its ball.
+    pub(crate) barrier: f64,
+    /// The penalty on the wrong sign of `dκ/ds` (see [`Shape`]).
+    pub(crate) shape: f64,
+}
+
+impl Parts {
+    /// The fairing terms `E + α R` (the barrier's gap is measured against them).
+    pub(crate) fn fairing(&self, alpha: f64) -> f64 {
+        self.energy + alpha * self.smoothness
+    }
+
+    /// `Ψ_t`, with the energy terms halved as the Gauss–Newton model has them.
+    pub(crate) fn value(&self, t: f64, alpha: f64) -> f64 {
+        0.5 * t * (self.energy + alpha * self.smoothness + self.shape) + self.barrier
+    }
+}
+
+/// `dκ/ds sqrt(|r'|)` from the first three derivatives (0 where the speed vanishes).
+fn residual<const D: usize>(d1: Point<D>, d2: Point<D>, d3: Point<D>) -> f64 {
+    let (_, rate) = curvature_and_rate(d1, d2, d3);
+    let value = rate * d1.norm().sqrt();
+    if value.is_finite() {
+        value
+    } else {
+        0.0
+    }
+}
+
+impl<const D: usize> Objective<'_, D> {
+    /// The row of span `k` with the coefficient `coefficient(c)` on its `c`-th control.
+    fn span_row(&self, k: usize, coefficient: impl Fn(usize) -> Point<D>) -> Row<D> {
+        std::array::from_fn(|c| (self.space.control(k, c), coefficient(c)))
+    }
+
+    /// The error `r(u_i) - p_i` of every point, through `f(i, span, weights, error)`.
+    fn errors(&self, controls: &[Point<D>], mut f: impl FnMut(usize, usize, &[f64; 4], Point<D>)) {
+        for (i, ((k, w), &p)) in self.basis.iter().zip(self.points).enumerate() {
+            let value = (0..4).fold(Point::ZERO, |acc, c| {
+                acc.add_scaled(w[c], controls[self.space.control(*k, c)])
+            });
+            f(i, *k, w, value - p);
+        }
+    }
+
+    /// `E`, `R` and the barrier at `controls`.
+    pub(crate) fn parts(&self, controls: &[Point<D>]) -> Parts {
+        let mut parts = Parts::default();
+        for k in 0..self.space.spans() {
+            let h = self.space.width(k);
+            for (node, &w) in GAUSS_WEIGHTS.iter().enumerate() {
+                let d: [Point<D>; 3] =
+                    std::array::from_fn(|j| self.space.eval_node(controls, k, node + 1, j + 1));
+                let f = residual(d[0], d[1], d[2]);
+                parts.energy += w * h * f * f;
+            }
+            if let Some(shape) = self.shape {
+                for q in 0..NODES_PER_SPAN {
+                    let sign = f64::from(shape.signs[k * NODES_PER_SPAN + q]);
+                    if sign == 0.0 {
+                        continue;
+                    }
+                    let d: [Point<D>; 3] =
+                        std::array::from_fn(|j| self.space.eval_node(controls, k, q, j + 1));
+                    let v = sign * residual(d[0], d[1], d[2]) - shape.margin;
+                    if v < 0.0 {
+                        parts.shape += shape.rho * h * v * v / NODES_PER_SPAN as f64;
+                    }
+                }
+            }
+            parts.smoothness += h * self.space.eval_node(controls, k, 0, 3).norm_sq();
+        }
+        let t2 = self.tolerance * self.tolerance;
+        self.errors(controls, |_, _, _, e| {
+            let slack = t2 - e.norm_sq();
+            parts.barrier += if slack > 0.0 {
+                -(slack / t2).ln()
+            } else {
+                f64::INFINITY
+            };
+        });
+        parts
+    }
+
+    /// The Gauss–Newton gradient `g` and matrix `h` of `Ψ_t` at `controls` (overwritten).
+    pub(crate) fn assemble(&self, controls: &[Point<D>], t: f64, g: &mut [f64], h: &mut BandedSpd) {
+        g.fill(0.0);
+        h.clear();
+        let layout = self.layout;
+        for k in 0..self.space.spans() {
+            let width = self.space.width(k);
+            for (node, &w) in GAUSS_WEIGHTS.iter().enumerate() {
+                let d: [Point<D>; 3] =
+                    std::array::from_fn(|j| self.space.eval_node(controls, k, node + 1, j + 1));
+                let f = residual(d[0], d[1], d[2]);
+                let grad = residual_gradient(d);
+                let weights: [[f64; 4]; 3] =
+                    std::array::from_fn(|j| *self.space.node_weights(k, node + 1, j + 1));
+                let row = self.span_row(k, |c| {
+                    (0..3).fold(Point::ZERO, |acc, j| acc.add_scaled(weights[j][c], grad[j]))
+                });
+                layout.add_square(&row, t * w * width, f, g, h);
+            }
+            if let Some(shape) = self.shape {
+                for q in 0..NODES_PER_SPAN {
+                    let sign = f64::from(shape.signs[k * NODES_PER_SPAN + q]);
+                    if sign == 0.0 {
+                        continue;
+                    }
+                    let d: [Point<D>; 3] =
+                        std::array::from_fn(|j| self.space.eval_node(controls, k, q, j + 1));
+                    let v = sign * residual(d[0], d[1], d[2]) - shape.margin;
+                    if v < 0.0 {
+                        let grad = residual_gradient(d);
+                        let weights: [[f64; 4]; 3] =
+                            std::array::from_fn(|j| *self.space.node_weights(k, q, j + 1));
+                        let row = self.span_row(k, |c| {
+                            (0..3)
+                                .fold(Point::ZERO, |acc, j| acc.add_scaled(weights[j][c], grad[j]))
+                                * sign
+                        });
+                        layout.add_square(
+                            &row,
+                            t * shape.rho * width / NODES_PER_SPAN as f64,
+                            v,
+                            g,
+                            h,
+                        );
+                    }
+                }
+            }
+            let third = self.space.eval_node(controls, k, 0, 3);
+            let w3 = *self.space.node_weights(k, 0, 3);
+            for axis in 0..D {
+                let row = self.span_row(k, |c| unit::<D>(axis) * w3[c]);
+                layout.add_square(&row, t * self.alpha * width, third[axis], g, h);
+            }
+        }
+        let t2 = self.tolerance * self.tolerance;
+        self.errors(controls, |_, k, w, e| {
+            let slack = t2 - e.norm_sq();
+            let along = self.span_row(k, |c| e * w[c]);
+            layout.add_gradient(&along, 2.0 / slack, g);
+            layout.add_square(&along, 4.0 / (slack * slack), 0.0, g, h);
+            for axis in 0..D {
+                let row = self.span_row(k, |c| unit::<D>(axis) * w[c]);
+                layout.add_square(&row, 2.0 / slack, 0.0, g, h);
+            }
+        });
+    }
+
+    /// The weighted least-squares terms `sum_i weight_i / 2 |e_i|^2 + λ / 2 R` (the start's
+    /// fit), written into `g` and `h`.
+    pub(crate) fn assemble_least_squares(
+        &self,
+        controls: &[Point<D>],
+        weights: &[f64],
+        lambda: f64,
+        g: &mut [f64],
+        h: &mut BandedSpd,
+    ) {
+        g.fill(0.0);
+        h.clear();
+        let layout = self.layout;
+        for k in 0..self.space.spans() {
+            let third = self.space.eval_node(controls, k, 0, 3);
+            let w3 = *self.space.node_weights(k, 0, 3);
+            for axis in 0..D {
+                let row = self.span_row(k, |c| unit::<D>(axis) * w3[c]);
+                layout.add_square(&row, lambda * self.space.width(k), third[axis], g, h);
+            }
+        }
+        self.errors(controls, |i, k, w, e| {
+            for axis in 0..D {
+                let row = self.span_row(k, |c| unit::<D>(axis) * w[c]);
+                layout.add_square(&row, weights[i], e[axis], g, h);
+            }
+        });
+    }
+
+    /// `κ`, `dκ/ds sqrt(|r'|)` and the arc position at every quadrature node.
+    pub(crate) fn node_samples(&self, controls: &[Point<D>]) -> NodeSamples {
+        let m = self.space.spans();
+        let mut out = NodeSamples {
+            curvature: Vec::with_capacity(m * NODES_PER_SPAN),
+            rate: Vec::with_capacity(m * NODES_PER_SPAN),
+            s: Vec::with_capacity(m * NODES_PER_SPAN),
+            length: 0.0,
+        };
+        let mut start = 0.0;
+        for k in 0..m {
+            let h = self.space.width(k);
+            let mut previous = 0.0;
+            let mut position = start;
+            let mut speed = self.space.eval_node(controls, k, 0, 1).norm();
+            for (q, &s) in NODES.iter().enumerate() {
+                let d: [Point<D>; 3] =
+                    std::array::from_fn(|j| self.space.eval_node(controls, k, q, j + 1));
+                let (kappa, _) = curvature_and_rate(d[0], d[1], d[2]);
+                let now = d[0].norm();
+                position += 0.5 * (speed + now) * (s - previous) * h;
+                (previous, speed) = (s, now);
+                out.curvature.push(kappa);
+                out.rate.push(residual(d[0], d[1], d[2]));
+                out.s.push(position);
+            }
+            start = position;
+        }
+        out.length = start;
+        out
+    }
+
+    /// The distance `|r(u_i) - p_i|` of every point from its parameter's point.
+    pub(crate) fn distances(&self, controls: &[Point<D>]) -> Vec<f64> {
+        let mut out = vec![0.0; self.points.len()];
+        self.errors(controls, |i, _, _, e| out[i] = e.norm());
+        out
+    }
+}
+
+/// The unit vector along `axis`.
+fn unit<const D: usize>(axis: usize) -> Point<D> {
+    let mut p = Point::ZERO;
+    p[axis] = 1.0;
+    p
+}
+
+/// The gradient of [`residual`] with respect to `r'`, `r''` and `r'''`, by central
+/// differences with steps relative to each derivative's size.
+fn residual_gradient<const D: usize>(d: [Point<D>; 3]) -> [Point<D>; 3] {
+    let speed = d[0].norm();
+    std::array::from_fn(|j| {
+        let scale = match j {
+            0 => speed,
+            _ => d[j].norm().max(speed),
+        };
+        let step = DIFFERENCE_STEP * scale.max(f64::MIN_POSITIVE);
+        let mut out = Point::ZERO;
+        for axis in 0..D {
+            let mut plus = d;
+            let mut minus = d;
+            plus[j][axis] += step;
+            minus[j][axis] -= step;
+            out[axis] = (residual(plus[0], plus[1], plus[2])
+                - residual(minus[0], minus[1], minus[2]))
+                / (2.0 * step);
+        }
+        out
+    })
+}

@@ -1,0 +1,313 @@
+//! The faired curve and its report, and the pipeline from points (or a curve) to it: scale,
+//! split at corners, fair every piece, join, scale back.
+
+use super::options::{check, FairEnds, FairOptions};
+use super::piece::{fair_piece, End, Piece};
+use crate::bspline::BSplineCurve;
+use crate::geometry::{curve_fairness, CurveFairness};
+use crate::param::{CubicSpline, CurveParameterization};
+use crate::spline::SplineEnds;
+use crate::{Curve, Error, Point, Result};
+
+/// A faired curve.
+#[derive(Clone, Debug)]
+pub struct FairCurve<const D: usize> {
+    /// The curve: a cubic B-spline on `[0, 1]` (simple inner knots, triple at corners).
+    pub curve: BSplineCurve<D>,
+    /// The points it was faired to (the input points, or the samples of the curve given to
+    /// [`fair_existing_curve`]).
+    pub points: Vec<Point<D>>,
+    /// The parameter of every point on the curve (its foot point).
+    pub parameters: Vec<f64>,
+    /// The distance of every point from the curve at its parameter (at most the tolerance).
+    pub distances: Vec<f64>,
+}
+
+impl<const D: usize> FairCurve<D> {
+    /// The largest distance of a point from the curve.
+    pub fn max_distance(&self) -> f64 {
+        self.distances.iter().fold(0.0, |a, &b| a.max(b))
+    }
+
+    /// The fairness figures of the faired curve, its distance measured to the polygon of
+    /// [`points`](Self::points).
+    pub fn fairness(&self) -> CurveFairness {
+        curve_fairness(&self.curve, &self.points)
+    }
+
+    /// The fairness figures of the curve through the points before fairing: the cubic spline
+    /// through them with chord-length parameters (not-a-knot ends, periodic when closed), or
+    /// `None` when there is none (coincident neighbours).
+    pub fn fairness_before(&self) -> Option<CurveFairness> {
+        let ends = if self.curve.is_closed() {
+            SplineEnds::Periodic
+        } else {
+            SplineEnds::NotAKnot
+        };
+        let spline =
+            CubicSpline::through(&self.points, CurveParameterization::ChordLength, ends).ok()?;
+        Some(curve_fairness(&spline, &self.points))
+    }
+}
+
+/// The frame the points are fairer in: `(p - corner - half) / size`, with `corner` the low
+/// corner of their bounding box, `half` its half-sides and `size` the largest of them.
+///
+/// The corner is made of input coordinates, so `p - corner` and `half` are exact for points
+/// far from the origin (Sterbenz) and the same for points moved by a representable offset:
+/// the fairer then sees the same numbers wherever the points are, and the curve moves with
+/// them to the rounding of the final `corner + ...` (a few units in the last place).
+struct Frame<const D: usize> {
+    corner: Point<D>,
+    half: Point<D>,
+    size: f64,
+}
+
+impl<const D: usize> Frame<D> {
+    fn of(points: &[Point<D>]) -> Self {
+        let mut lo = points[0];
+        let mut hi = points[0];
+        for p in points {
+            for d in 0..D {
+                lo[d] = lo[d].min(p[d]);
+                hi[d] = hi[d].max(p[d]);
+            }
+        }
+        let half = (hi - lo) * 0.5;
+        let size = (0..D).map(|d| half[d]).fold(0.0, f64::max);
+        Frame {
+            corner: lo,
+            half,
+            size,
+        }
+    }
+
+    /// A point in the fairer's frame.
+    fn to_unit(&self, p: Point<D>) -> Point<D> {
+        ((p - self.corner) - self.half) * (1.0 / self.size)
+    }
+
+    /// A point of the fairer's frame back in the points' frame.
+    fn from_unit(&self, c: Point<D>) -> Point<D> {
+        self.corner + (self.half + c * self.size)
+    }
+}
+
+/// The fairest `C^2` cubic B-spline within `options.tolerance` of every point of `points`
+/// (see the module documentation).
+///
+/// Errors: a tolerance that is not positive or below what the coordinates resolve, a
+/// non-finite point, fewer than four points (in any piece between corners), points not in
+/// order ([`Error::PointsOutOfOrder`]), corners that are not inner points in increasing
+/// order, all points equal.
+///
+/// ```
+/// use karkas::fair::{fair_curve, FairOptions};
+/// use karkas::{Curve, Point};
+/// // A parabola with a wave of 1e-3 on it.
+/// let points: Vec<Point<2>> = (0..60)
+///     .map(|i| {
+///         let x = i as f64 / 59.0;
+///         Point([x, x * x + 1e-3 * (40.0 * x).sin()])
+///     })
+///     .collect();
+/// let fair = fair_curve(&points, &FairOptions::new(2e-3)).unwrap();
+/// assert!(fair.max_distance() <= 2e-3);
+/// let (before, after) = (fair.fairness_before().unwrap(), fair.fairness());
+/// assert!(before.curvature_extrema > 10);
+/// assert_eq!(after.curvature_extrema, 0);
+/// assert!(after.fairness_energy < 1e-3 * before.fairness_energy);
+/// ```
+pub fn fair_curve<const D: usize>(
+    points: &[Point<D>],
+    options: &FairOptions,
+) -> Result<FairCurve<D>> {
+    let mut points = points;
+    if options.closed && points.len() > 1 && points[0] == points[points.len() - 1] {
+        points = &points[..points.len() - 1];
+    }
+    check(points, options)?;
+    let tangents = if options.ends == FairEnds::KeptWithTangents {
+        let n = points.len();
+        Some([points[1] - points[0], points[n - 2] - points[n - 1]])
+    } else {
+        None
+    };
+    fair_points(points, options, tangents)
+}
+
+/// Fairs an existing curve: [`fair_curve`] of `samples` points of it at even parameter steps
+/// (closed when the curve is), with its own end tangents when the ends keep tangents.
+/// Its fairness before is [`curve_fairness`] of the curve itself.
+///
+/// Errors: those of [`fair_curve`] on the samples (fewer than four samples among them).
+pub fn fair_existing_curve<C: Curve<D> + ?Sized, const D: usize>(
+    curve: &C,
+    samples: usize,
+    options: &FairOptions,
+) -> Result<FairCurve<D>> {
+    let domain = curve.domain();
+    let closed = curve.is_closed();
+    let count = samples.max(1);
+    let last = if closed {
+        count
+    } else {
+        count.saturating_sub(1).max(1)
+    };
+    let points: Vec<Point<D>> = (0..count)
+        .map(|i| curve.eval(domain.start + (domain.end - domain.start) * i as f64 / last as f64))
+        .collect();
+    let options = FairOptions {
+        closed,
+        ..options.clone()
+    };
+    check(&points, &options)?;
+    let tangents = (options.ends == FairEnds::KeptWithTangents)
+        .then(|| [curve.deriv(domain.start, 1), -curve.deriv(domain.end, 1)]);
+    fair_points(&points, &options, tangents)
+}
+
+/// The pipeline on checked points.
+fn fair_points<const D: usize>(
+    points: &[Point<D>],
+    options: &FairOptions,
+    tangents: Option<[Point<D>; 2]>,
+) -> Result<FairCurve<D>> {
+    let frame = Frame::of(points);
+    let size = frame.size;
+    if size.is_nan() || size <= 0.0 {
+        return Err(Error::TooFewPoints {
+            what: "a fair curve (distinct points)",
+            needed: 2,
+            got: 1,
+        });
+    }
+    let scaled: Vec<Point<D>> = points.iter().map(|&p| frame.to_unit(p)).collect();
+    let tolerance = options.tolerance / size;
+    let n = scaled.len();
+    let end = |side: usize| match (options.ends, tangents) {
+        (FairEnds::Free, _) => End::Free,
+        (FairEnds::KeptWithTangents, Some(t)) if t[side].norm() > 0.0 => {
+            End::Tangent(t[side] * (1.0 / t[side].norm()))
+        }
+        _ => End::Point,
+    };
+    let pieces: Vec<Piece<D>>;
+    let order: Vec<usize>;
+    if options.corners.is_empty() {
+        order = (0..n).collect();
+        pieces = vec![fair_piece(
+            &scaled,
+            tolerance,
+            [end(0), end(1)],
+            options.closed,
+            0.0,
+        )?];
+    } else {
+        // A closed curve starts at its first corner and ends there again.
+        let mut cuts: Vec<usize> = options.corners.clone();
+        let rotated: Vec<usize> = if options.closed {
+            let first = cuts[0];
+            cuts = cuts.iter().map(|c| c - first).collect();
+            cuts.push(n);
+            (first..n).chain(0..=first).collect()
+        } else {
+            cuts.insert(0, 0);
+            cuts.push(n - 1);
+            (0..n).collect()
+        };
+        let mut list = Vec::with_capacity(cuts.len() - 1);
+        let mut start = 0.0;
+        for (k, w) in cuts.windows(2).enumerate() {
+            let ids = &rotated[w[0]..=w[1]];
+            let piece_points: Vec<Point<D>> = ids.iter().map(|&i| scaled[i]).collect();
+            if piece_points.len() < super::options::MIN_POINTS {
+                return Err(Error::TooFewPoints {
+                    what: "a fair curve's piece between corners",
+                    needed: super::options::MIN_POINTS,
+                    got: piece_points.len(),
+                });
+            }
+            let first = if k == 0 && !options.closed {
+                end(0)
+            } else {
+                End::Point
+            };
+            let last = if k + 2 == cuts.len() && !options.closed {
+                end(1)
+            } else {
+                End::Point
+            };
+            let piece = fair_piece(&piece_points, tolerance, [first, last], false, start)?;
+            start = *piece.space.breaks().last().unwrap_or(&start);
+            list.push(piece);
+        }
+        order = rotated;
+        pieces = list;
+    }
+    let total = pieces
+        .last()
+        .map_or(1.0, |p| *p.space.breaks().last().unwrap_or(&1.0));
+    let first_break = pieces[0].space.breaks()[0];
+    let length = total - first_break;
+    // Join the pieces' clamped B-splines, sharing the corner controls.
+    let mut knots: Vec<f64> = Vec::new();
+    let mut controls: Vec<Point<D>> = Vec::new();
+    let unscale = |c: &Point<D>| frame.from_unit(*c);
+    let mut curve = None;
+    if pieces.len() == 1 {
+        let spline = pieces[0].space.to_bspline(&pieces[0].controls)?;
+        let ks: Vec<f64> = spline
+            .knots()
+            .iter()
+            .map(|k| (k - first_break) / length)
+            .collect();
+        let cs: Vec<Point<D>> = spline.control_points().iter().map(unscale).collect();
+        curve = Some(BSplineCurve::new(3, ks, cs)?.with_closed(options.closed));
+    } else {
+        for (k, piece) in pieces.iter().enumerate() {
+            let spline = piece.space.to_bspline(&piece.controls)?;
+            let ks = spline.knots();
+            let cs = spline.control_points();
+            if k == 0 {
+                knots.extend_from_slice(&ks[..ks.len() - 1]);
+                controls.extend(cs.iter().map(unscale));
+            } else {
+                knots.extend_from_slice(&ks[4..ks.len() - 1]);
+                controls.extend(cs[1..].iter().map(unscale));
+            }
+        }
+        knots.push(total);
+        for k in knots.iter_mut() {
+            *k = (*k - first_break) / length;
+        }
+        curve = curve.or(Some(
+            BSplineCurve::new(3, knots, controls)?.with_closed(options.closed),
+        ));
+    }
+    let curve = curve.ok_or(Error::Internal {
+        what: "no fair piece",
+    })?;
+    // The parameters and distances of the input points, in their input order.
+    let mut parameters = vec![0.0; n];
+    let mut distances = vec![0.0; n];
+    for (k, piece) in pieces.iter().enumerate() {
+        let offset: usize = pieces[..k].iter().map(|p| p.params.len() - 1).sum();
+        for (j, &u) in piece.params.iter().enumerate() {
+            let i = order[(offset + j) % order.len()];
+            parameters[i] = (u - first_break) / length;
+            let (span, s) = piece.space.locate(u);
+            distances[i] = piece
+                .space
+                .eval(&piece.controls, span, s, 0)
+                .distance(scaled[i])
+                * size;
+        }
+    }
+    Ok(FairCurve {
+        curve,
+        points: points.to_vec(),
+        parameters,
+        distances,
+    })
+}
