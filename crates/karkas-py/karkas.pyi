@@ -616,7 +616,7 @@ class ImplicitSurface:
 
 def hausdorff(a: ArrayLike, b: Optional[ArrayLike] = None, expr: Optional[str] = None) -> dict:
     """Two-sided Hausdorff distance of point sets (n, 3), (m, 3), or of a and the patch of
-    F = expr = 0 it covers: distance, forward, backward."""
+    F = expr = 0 inside a's bounding box: distance, forward, backward."""
 
 def hausdorff_to_implicit(
     surface: Surface,

@@ -32,7 +32,9 @@ fn hausdorff_dict<'py>(py: Python<'py>, h: &Hausdorff) -> PyResult<Bound<'py, Py
 ///
 /// Nearest neighbours by a k-d tree, O((n + m) log(n + m)). With ``expr`` instead of ``b``:
 /// the distance between ``a`` and the patch of the implicit surface ``expr = 0`` that ``a``
-/// covers, as ``karkas hausdorff A --expr EXPR``.
+/// covers (its part inside the bounding box of ``a``, sampled on a lattice of 64 steps along
+/// the box's largest side, and the closest points of ``a`` on it), as
+/// ``karkas hausdorff A --expr EXPR``.
 ///
 /// Parameters
 /// ----------

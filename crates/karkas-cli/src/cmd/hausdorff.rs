@@ -19,7 +19,9 @@ pub struct HausdorffArgs {
     /// grid i,j,x,y,z or a sampled surface u,v,x,y,z). With --expr, one file (A).
     #[arg(num_args = 1..=2, required = true, value_name = "FILE")]
     inputs: Vec<PathBuf>,
-    /// B as the implicit surface F(x, y, z) = 0 (same syntax as `surface implicit --expr`).
+    /// B as the implicit surface F(x, y, z) = 0 (same syntax as `surface implicit --expr`):
+    /// its part inside A's bounding box, sampled on a lattice of 64 steps along the box's
+    /// largest side, and the closest points of A on it.
     #[arg(long, value_name = "EXPR")]
     expr: Option<String>,
 }
@@ -42,7 +44,7 @@ pub fn run(args: &HausdorffArgs) -> Result<()> {
         (Some(expr), None) => {
             let surface = ExpressionSurface::parse(expr).context("--expr")?;
             let a_name = || display_name(a_path).display().to_string();
-            // The implicit side is the patch A covers: the closest points of A's points.
+            // The implicit side is the patch A covers: F = 0 inside A's bounding box.
             let h = hausdorff_points_implicit(&a, &surface).with_context(a_name)?;
             (h, format!("F = 0 with F = {expr}"), None)
         }

@@ -242,6 +242,19 @@ pub(crate) fn network_surface(
     if kind == Kind::Gordon {
         warn_lagrange_seam(&network);
     }
+    if kind == Kind::Bicubic && files.u_derivs.is_none() {
+        note(format!(
+            "karkas: warning: --kind bicubic without --u-derivs and --v-derivs takes the \
+             cross-boundary derivatives from the two curves of each family ({}), which \
+             misses even a surface the operator reproduces from its own derivatives (a \
+             cubic); give --u-derivs and --v-derivs to interpolate them",
+            if files.twists.is_some() {
+                "their tangents and the --twists at the corners"
+            } else {
+                "their tangents and twists by the spline-of-derivatives rule"
+            }
+        ));
+    }
     let compatibility = if files.repair {
         Compatibility::Repair
     } else {

@@ -92,6 +92,69 @@ fn every_kind_writes_a_surface_through_the_network() {
 }
 
 #[test]
+fn bicubic_without_derivative_files_warns() {
+    // Two curves per family: the cross-boundary derivatives are invented unless given.
+    let dir = temp_dir();
+    let (u, v) = sheet_files(dir.path(), 2);
+    let run = |extra: &[&str]| {
+        let out = dir.path().join("b.csv");
+        let mut args = vec![
+            "surface",
+            "coons",
+            "--kind",
+            "bicubic",
+            "--u-curves",
+            s(&u),
+            "--v-curves",
+            s(&v),
+            "-o",
+            s(&out),
+        ];
+        args.extend_from_slice(extra);
+        let o = karkas(&args);
+        assert!(o.status.success(), "{}", stderr(&o));
+        stderr(&o)
+    };
+    let warned = run(&[]);
+    assert!(
+        warned.contains("warning: --kind bicubic without --u-derivs and --v-derivs"),
+        "{warned}"
+    );
+    // With the derivatives given (those of the sheet, per unit of the parameters over 0..2):
+    // no warning.
+    let du = dir.path().join("du.csv");
+    let dv = dir.path().join("dv.csv");
+    std::fs::write(
+        &du,
+        family(2, |k, t| {
+            [0.0, 2.0, -0.6 * t.sin() * (2.0 * k as f64).sin()]
+        }),
+    )
+    .unwrap();
+    std::fs::write(
+        &dv,
+        family(2, |k, t| [2.0, 0.0, 0.6 * (2.0 * k as f64).cos() * t.cos()]),
+    )
+    .unwrap();
+    let quiet = run(&["--u-derivs", s(&du), "--v-derivs", s(&dv)]);
+    assert!(!quiet.contains("warning"), "{quiet}");
+    // Composite and bilinear surfaces do not warn.
+    assert!(!stderr(&karkas(&[
+        "surface",
+        "coons",
+        "--kind",
+        "bilinear",
+        "--u-curves",
+        s(&u),
+        "--v-curves",
+        s(&v),
+        "-o",
+        s(&dir.path().join("l.csv")),
+    ]))
+    .contains("warning"));
+}
+
+#[test]
 fn obj_output_and_cross_derivative_files() {
     let dir = temp_dir();
     let (u, v) = sheet_files(dir.path(), 1);

@@ -2,7 +2,7 @@
 
 use super::sets::{DirectedDistance, Hausdorff, PointCloud};
 use crate::core::{Interval, Surface};
-use crate::implicit::{closest_point_on, ImplicitSurface};
+use crate::implicit::{closest_point_on, project_onto, ImplicitSurface};
 use crate::{Error, Point3, Result};
 
 /// Newton iterations of a closest-point search on a parametric surface.
@@ -115,10 +115,23 @@ pub fn distance_to_implicit<I: ImplicitSurface + ?Sized>(
     Ok(worst)
 }
 
+/// Lattice steps along the largest side of the points' bounding box at which the patch of
+/// `F = 0` is sampled in [`hausdorff_points_implicit`].
+pub const PATCH_LATTICE_STEPS: usize = 64;
+
 /// The two-sided Hausdorff distance between a point set and the patch of `F = 0` it covers
 /// (the rule of the command line's `hausdorff FILE --expr` and Python's
-/// `hausdorff(a, expr=...)`): forward, [`distance_to_implicit`]; backward, from the closest
-/// points on `F = 0` of the points back to the set.
+/// `hausdorff(a, expr=...)`; Kuznetsov and Filatov's (3.14), docs/methods.md §5).
+///
+/// Forward (set to surface): [`distance_to_implicit`], exact for each point. Backward
+/// (patch to set): the patch is the part of `F = 0` inside the points' axis-aligned bounding
+/// box, together with the closest points on `F = 0` of the points themselves. It is sampled
+/// by the projections ([`project_onto`]) of the nodes of a lattice over the box, with
+/// [`PATCH_LATTICE_STEPS`] steps `h` along its largest side (at most `h` along the others, a
+/// single node across a flat side), from the nodes whose first-order distance `|F| / |grad F|` is at most
+/// `2 h`, kept where they fall in the box; each sample's distance to its nearest point of the
+/// set is exact, so the backward distance is that of the samples, below the patch's own by at
+/// most about `h`.
 ///
 /// Errors: those of [`distance_to_implicit`].
 pub fn hausdorff_points_implicit<I: ImplicitSurface + ?Sized>(
@@ -126,12 +139,69 @@ pub fn hausdorff_points_implicit<I: ImplicitSurface + ?Sized>(
     implicit: &I,
 ) -> Result<Hausdorff> {
     let forward = distance_to_implicit(points, implicit)?;
-    let feet: Vec<Point3> = points
+    let mut patch: Vec<Point3> = points
         .iter()
         .map(|&p| closest_point_on(implicit, p))
         .collect::<Result<_>>()?;
-    let backward = PointCloud::new(points)?.directed_from(&feet);
+    patch.extend(patch_samples(points, implicit));
+    let backward = PointCloud::new(points)?.directed_from(&patch);
     Ok(Hausdorff::new(forward, backward))
+}
+
+/// The samples of `F = 0` inside the bounding box of `points` (finite and not empty): see
+/// [`hausdorff_points_implicit`].
+fn patch_samples<I: ImplicitSurface + ?Sized>(points: &[Point3], implicit: &I) -> Vec<Point3> {
+    let mut lo = points[0];
+    let mut hi = points[0];
+    for p in points {
+        for c in 0..3 {
+            lo[c] = lo[c].min(p[c]);
+            hi[c] = hi[c].max(p[c]);
+        }
+    }
+    let side = hi - lo;
+    let largest = side.max_abs();
+    if !(largest > 0.0 && largest.is_finite()) {
+        return Vec::new();
+    }
+    let h = largest / PATCH_LATTICE_STEPS as f64;
+    // Steps per axis: the side over h, rounded up (0 for a flat side: one node on it).
+    let steps: [usize; 3] = std::array::from_fn(|c| {
+        let s = (side[c] / h).ceil();
+        if s >= 1.0 {
+            (s as usize).min(PATCH_LATTICE_STEPS)
+        } else {
+            0
+        }
+    });
+    let node = |c: usize, k: usize| {
+        if steps[c] == 0 {
+            0.5 * (lo[c] + hi[c])
+        } else {
+            lo[c] + side[c] * k as f64 / steps[c] as f64
+        }
+    };
+    let slack = 1e-12 * (largest + lo.max_abs().max(hi.max_abs()));
+    let inside = |q: Point3| (0..3).all(|c| q[c] >= lo[c] - slack && q[c] <= hi[c] + slack);
+    let mut samples = Vec::new();
+    for i in 0..=steps[0] {
+        for j in 0..=steps[1] {
+            for k in 0..=steps[2] {
+                let p = Point3::new([node(0, i), node(1, j), node(2, k)]);
+                let (f, g) = (implicit.value(p), implicit.gradient(p).norm());
+                if !(f.abs() <= 2.0 * h * g) {
+                    continue;
+                }
+                // A node from which no surface is found, or a singular one, gives no sample.
+                if let Ok(q) = project_onto(implicit, p) {
+                    if inside(q) {
+                        samples.push(q);
+                    }
+                }
+            }
+        }
+    }
+    samples
 }
 
 /// The two-sided Hausdorff distance between `surface` and the patch of `F = 0` given by the
