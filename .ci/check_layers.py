@@ -30,6 +30,7 @@ LAYERS = [
     ["spline"],
     ["ll", "dps", "fit", "param", "implicit"],
     ["coons", "section", "measure"],
+    ["shape"],
 ]
 ANYWHERE = {"error"}
 ONLY = {"bspline": {"core"}}

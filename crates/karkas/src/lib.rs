@@ -51,6 +51,7 @@ pub mod ll;
 pub mod measure;
 pub mod param;
 pub mod section;
+pub mod shape;
 pub mod solve;
 pub mod spline;
 

@@ -4,6 +4,7 @@
 mod bad_input;
 mod batch;
 mod cad;
+mod cad_read;
 mod common;
 mod contract;
 mod convert;

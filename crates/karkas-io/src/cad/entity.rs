@@ -2,7 +2,7 @@
 //! curves and surfaces of karkas (see [`karkas::bspline`]), in 3-D, and the number and knot
 //! formatting both formats share.
 
-use karkas::bspline::{BSplineCurve, BSplineSurface};
+use karkas::bspline::{BSplineCurve, BSplineSurface, NurbsCurve, NurbsSurface};
 use karkas::Point;
 
 use crate::error::IoError;
@@ -17,6 +17,13 @@ pub enum CadEntity<'a> {
     /// A B-spline surface (in STEP: a `B_SPLINE_SURFACE_WITH_KNOTS` as the face of an open
     /// shell, bounded by its four boundary curves; in IGES: entity 128).
     Surface(&'a BSplineSurface<3>),
+    /// A rational B-spline curve (in STEP: the complex instance of `B_SPLINE_CURVE_WITH_KNOTS`
+    /// and `RATIONAL_B_SPLINE_CURVE`; in IGES: entity 126 with its weights).
+    RationalCurve(&'a NurbsCurve<3>),
+    /// A rational B-spline surface (in STEP: the complex instance of
+    /// `B_SPLINE_SURFACE_WITH_KNOTS` and `RATIONAL_B_SPLINE_SURFACE` as a face; in IGES:
+    /// entity 128 with its weights).
+    RationalSurface(&'a NurbsSurface<3>),
 }
 
 /// A curve of dimension `D <= 3` in 3-D space (missing coordinates 0: a planar curve lies
@@ -100,6 +107,8 @@ pub(crate) fn max_coordinate(entities: &[CadEntity<'_>]) -> f64 {
         .map(|e| match e {
             CadEntity::Curve(c) => largest(c.control_points()),
             CadEntity::Surface(s) => largest(s.control_points().as_slice()),
+            CadEntity::RationalCurve(c) => largest(c.control_points()),
+            CadEntity::RationalSurface(s) => largest(s.control_points().as_slice()),
         })
         .fold(0.0, f64::max)
 }

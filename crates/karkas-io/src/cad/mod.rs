@@ -6,6 +6,7 @@
 pub mod dxf;
 pub mod entity;
 pub mod iges;
+pub mod read;
 pub mod step;
 pub mod time_stamp;
 

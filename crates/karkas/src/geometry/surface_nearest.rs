@@ -247,14 +247,13 @@ impl<'a, S: Surface<D> + ?Sized, const D: usize> SurfaceProjector<'a, S, D> {
         let tolerance = self.accuracy.max(floor);
         for _ in 0..MAX_STEPS {
             let r = p - q;
-            let su = s.deriv(u, v, 1, 0);
-            let sv = s.deriv(u, v, 0, 1);
+            let [_, su, sv, suu, suv, svv] = s.second_order(u, v);
             let g = [su.dot(r), sv.dot(r)];
             let gauss = [su.dot(su), su.dot(sv), sv.dot(sv)];
             let full = [
-                gauss[0] + s.deriv(u, v, 2, 0).dot(r),
-                gauss[1] + s.deriv(u, v, 1, 1).dot(r),
-                gauss[2] + s.deriv(u, v, 0, 2).dot(r),
+                gauss[0] + suu.dot(r),
+                gauss[1] + suv.dot(r),
+                gauss[2] + svv.dot(r),
             ];
             let solve = |h: [f64; 3]| {
                 let det = h[0] * h[2] - h[1] * h[1];
