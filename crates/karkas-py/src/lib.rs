@@ -16,6 +16,7 @@
 mod adapters;
 mod batch;
 mod bspline_form;
+mod cad;
 mod convert;
 mod coons;
 mod curve;
@@ -35,6 +36,7 @@ mod implicit;
 mod limits;
 mod ll;
 mod measure;
+mod nurbs;
 mod param;
 mod pickle;
 mod read;
@@ -96,6 +98,11 @@ fn karkas_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<dps::PyTubeSurface>()?;
     m.add_class::<coons::PyCoonsSurface>()?;
     m.add_class::<section::PySectionCurve>()?;
+    m.add_class::<nurbs::PyNurbsCurve>()?;
+    m.add_class::<nurbs::PyNurbsSurface>()?;
+    m.add_class::<cad::PyCadModel>()?;
+    m.add_class::<cad::PyCadFace>()?;
+    m.add_function(wrap_pyfunction!(cad::read_cad, m)?)?;
     m.add_class::<implicit::PyImplicitSurface>()?;
     m.add_function(wrap_pyfunction!(measure::hausdorff, m)?)?;
     m.add_function(wrap_pyfunction!(measure::hausdorff_to_implicit, m)?)?;

@@ -3,7 +3,7 @@
 //! every order by the quotient rule (A4.2), exact sub-curves by knot insertion (A5.1).
 
 use super::rational::{check_general_knots, check_weights, rational_curve_derivatives};
-use super::span_basis::{basis_derivative, span_of, MAX_SPAN};
+use super::span_basis::{local_derivatives, span_of, Homogeneous, Linear, MAX_SPAN};
 use super::{BSplineCurve, ToBSplineCurve};
 use crate::core::{Curve, Interval, PiecewiseCurve, Side};
 use crate::{Error, Point, Result};
@@ -12,8 +12,9 @@ use crate::{Error, Point, Result};
 /// a nondecreasing knot vector of `n + p + 1` values (clamped or not; see
 /// [`check_general_knots`](super::rational)).
 ///
-/// The domain is `[knots[p], knots[n]]`; evaluation outside it clamps the parameter (wraps
-/// it by the period for a closed curve). Equal weights give the polynomial B-spline of the
+/// The domain is `[knots[p], knots[n]]`; outside it an open curve continues its end pieces
+/// (rational functions, whose denominator may vanish far away) and a closed one wraps the
+/// parameter by its period. Equal weights give the polynomial B-spline of the
 /// same control points. Affine maps act on the control points alone.
 ///
 /// ```
@@ -230,34 +231,34 @@ impl<const D: usize> NurbsCurve<D> {
         }
         let p = self.degree;
         let top = (out.len() - 1).min(p);
+        let first = span - p;
+        let mut local = [Homogeneous::<D>::ZERO; MAX_SPAN];
+        for (c, h) in local[..=p].iter_mut().enumerate() {
+            *h = Homogeneous {
+                point: self.weighted[first + c],
+                weight: self.weights[first + c],
+            };
+        }
+        let mut homogeneous = [Homogeneous::<D>::ZERO; MAX_SPAN];
+        local_derivatives(p, &self.knots, span, t, &local, &mut homogeneous[..=top]);
         let mut w = [0.0; MAX_SPAN];
-        let mut basis = [0.0; MAX_SPAN];
         for (k, a) in out.iter_mut().enumerate() {
             if k > top {
                 *a = Point::ZERO;
-                continue;
+            } else {
+                *a = homogeneous[k].point;
+                w[k] = homogeneous[k].weight;
             }
-            basis_derivative(p, &self.knots, span, t, k, &mut basis);
-            let mut sum = Point::ZERO;
-            let mut ws = 0.0;
-            let first = span - p;
-            for (c, &b) in basis[..=p].iter().enumerate() {
-                sum += self.weighted[first + c] * b;
-                ws += self.weights[first + c] * b;
-            }
-            *a = sum;
-            w[k] = ws;
         }
         rational_curve_derivatives(out, &w[..=top]);
     }
 
-    /// `t` wrapped into the domain (closed) or clamped to it.
+    /// `t` wrapped into the domain (closed), or as it is (open: the end pieces continue).
     fn parameter(&self, t: f64) -> f64 {
-        let d = self.domain();
         if self.closed {
-            d.wrap(t)
+            self.domain().wrap(t)
         } else {
-            d.clamp(t)
+            t
         }
     }
 
@@ -559,6 +560,40 @@ mod tests {
             }
         }
         assert_eq!(unit.to_bspline().unwrap(), b);
+    }
+
+    #[test]
+    fn derivatives_keep_their_digits_on_short_spans() {
+        // Spans 1000 times shorter than others, coordinates far from the origin: the second
+        // derivative as the polynomial B-spline's derivative control points give it.
+        let mut breaks = vec![0.0, 0.3, 0.3005, 0.301, 0.3015, 0.6, 1.0];
+        breaks.dedup();
+        let mut knots = vec![0.0; 3];
+        knots.extend(&breaks);
+        knots.extend([1.0; 3]);
+        let n = knots.len() - 4;
+        let control: Vec<Point3> = (0..n)
+            .map(|i| {
+                Point3::new([
+                    100.0 + (i as f64 * 0.9).sin(),
+                    50.0 + 0.3 * i as f64,
+                    (i as f64).sqrt(),
+                ])
+            })
+            .collect();
+        let b = BSplineCurve::new(3, knots.clone(), control.clone()).unwrap();
+        let c = NurbsCurve::new(3, knots, control, vec![1.0; n]).unwrap();
+        let scale = (0..=1000)
+            .map(|k| b.deriv(k as f64 / 1000.0, 2).norm())
+            .fold(0.0, f64::max);
+        for k in 0..=1000 {
+            let t = 0.2995 + 0.0025 * k as f64 / 1000.0;
+            let (x, y) = (c.deriv(t, 2), b.deriv(t, 2));
+            assert!(
+                x.distance(y) < 1e-12 * scale,
+                "t {t}: {x:?} {y:?} (scale {scale})"
+            );
+        }
     }
 
     #[test]

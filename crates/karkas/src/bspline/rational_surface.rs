@@ -3,7 +3,9 @@
 //! (4.15)); partial derivatives of every order by the quotient rule (A4.4).
 
 use super::rational::{check_general_knots, check_weights, rational_surface_derivatives};
-use super::span_basis::{basis_derivative, span_of, MAX_SPAN};
+use super::span_basis::{
+    basis_derivative, local_derivatives, span_of, Homogeneous, Linear, MAX_SPAN,
+};
 use super::{BSplineSurface, NurbsCurve, ToBSplineSurface};
 use crate::core::{Grid, Interval, Surface};
 use crate::{Error, Point, Result};
@@ -12,8 +14,8 @@ use crate::{Error, Point, Result};
 /// column `j` along `v`), positive weights `w_ij`, knot vectors in `u` and `v` (clamped or
 /// not).
 ///
-/// Domain `[knots_u[p], knots_u[nu]] x [knots_v[q], knots_v[nv]]`; parameters outside are
-/// clamped (wrapped in a closed direction). Equal weights give the polynomial B-spline
+/// Domain `[knots_u[p], knots_u[nu]] x [knots_v[q], knots_v[nv]]`; outside it an open
+/// direction continues its end pieces and a closed one wraps the parameter. Equal weights give the polynomial B-spline
 /// surface of the same control grid.
 ///
 /// ```
@@ -206,7 +208,7 @@ impl<const D: usize> NurbsSurface<D> {
     pub fn iso_curve(&self, along_u: bool, at: f64) -> NurbsCurve<D> {
         let (rows, cols) = (self.control.rows(), self.control.cols());
         let (p, knots, _count, lines, fixed_degree, fixed_knots, fixed_count) = if along_u {
-            let v = self.clamp_v(at);
+            let v = self.domain_v().clamp(self.parameter_v(at));
             (
                 self.degree_u,
                 &self.knots_u,
@@ -217,7 +219,7 @@ impl<const D: usize> NurbsSurface<D> {
                 (cols, v),
             )
         } else {
-            let u = self.clamp_u(at);
+            let u = self.domain_u().clamp(self.parameter_u(at));
             (
                 self.degree_v,
                 &self.knots_v,
@@ -259,112 +261,103 @@ impl<const D: usize> NurbsSurface<D> {
         NurbsCurve::from_checked_parts(p, knots.clone(), control, weights).with_closed(closed)
     }
 
-    fn clamp_u(&self, u: f64) -> f64 {
-        let d = self.domain_u();
+    /// `u` wrapped into the domain in a closed direction, as it is in an open one.
+    fn parameter_u(&self, u: f64) -> f64 {
         if self.closed_u {
-            d.wrap(u)
+            self.domain_u().wrap(u)
         } else {
-            d.clamp(u)
+            u
         }
     }
 
-    fn clamp_v(&self, v: f64) -> f64 {
-        let d = self.domain_v();
+    /// `v` wrapped into the domain in a closed direction, as it is in an open one.
+    fn parameter_v(&self, v: f64) -> f64 {
         if self.closed_v {
-            d.wrap(v)
+            self.domain_v().wrap(v)
         } else {
-            d.clamp(v)
+            v
         }
     }
 
     /// The partial derivatives `S_{k,l}` for `k <= nu`, `l <= nv` at `(u, v)` into `out`
     /// (`out[k * (nv + 1) + l]`, which must hold `(nu + 1)(nv + 1)` points).
     pub fn derivatives_into(&self, u: f64, v: f64, nu: usize, nv: usize, out: &mut [Point<D>]) {
-        let (u, v) = (self.clamp_u(u), self.clamp_v(v));
+        let (u, v) = (self.parameter_u(u), self.parameter_v(v));
         let (p, q) = (self.degree_u, self.degree_v);
         let (rows, cols) = (self.control.rows(), self.control.cols());
         let su = span_of(p, &self.knots_u, rows, u);
         let sv = span_of(q, &self.knots_v, cols, v);
         let stride = nv + 1;
-        let mut bu = vec![0.0; (nu + 1) * MAX_SPAN];
-        let mut bv = vec![0.0; (nv + 1) * MAX_SPAN];
-        for k in 0..=nu {
-            basis_derivative(p, &self.knots_u, su, u, k, &mut bu[k * MAX_SPAN..]);
-        }
-        for l in 0..=nv {
-            basis_derivative(q, &self.knots_v, sv, v, l, &mut bv[l * MAX_SPAN..]);
-        }
-        let mut w = vec![0.0; (nu + 1) * stride];
-        // Along v first: for every row of the span, the v-derivatives of its homogeneous line.
-        let mut rows_a = vec![Point::<D>::ZERO; (p + 1) * stride];
-        let mut rows_w = vec![0.0; (p + 1) * stride];
+        // Along v first: the v-derivatives of every row of the span's homogeneous points.
+        let mut rows_d = vec![Homogeneous::<D>::ZERO; (p + 1) * stride];
+        let mut local = [Homogeneous::<D>::ZERO; MAX_SPAN];
         for a in 0..=p {
             let i = su - p + a;
-            for l in 0..=nv {
-                let mut s = Point::ZERO;
-                let mut sw = 0.0;
-                for c in 0..=q {
-                    let j = sv - q + c;
-                    let b = bv[l * MAX_SPAN + c];
-                    s += *self.weighted.get(i, j) * b;
-                    sw += *self.weights.get(i, j) * b;
-                }
-                rows_a[a * stride + l] = s;
-                rows_w[a * stride + l] = sw;
+            for (c, h) in local[..=q].iter_mut().enumerate() {
+                *h = self.homogeneous(i, sv - q + c);
             }
+            local_derivatives(
+                q,
+                &self.knots_v,
+                sv,
+                v,
+                &local,
+                &mut rows_d[a * stride..(a + 1) * stride],
+            );
         }
-        for k in 0..=nu {
-            for l in 0..=nv {
-                let mut s = Point::ZERO;
-                let mut sw = 0.0;
-                for a in 0..=p {
-                    let b = bu[k * MAX_SPAN + a];
-                    s += rows_a[a * stride + l] * b;
-                    sw += rows_w[a * stride + l] * b;
-                }
-                out[k * stride + l] = s;
-                w[k * stride + l] = sw;
+        // Then along u, for every order in v.
+        let mut w = vec![0.0; (nu + 1) * stride];
+        let mut column = vec![Homogeneous::<D>::ZERO; nu + 1];
+        for l in 0..=nv {
+            for (a, h) in local[..=p].iter_mut().enumerate() {
+                *h = rows_d[a * stride + l];
+            }
+            local_derivatives(p, &self.knots_u, su, u, &local, &mut column);
+            for (k, h) in column.iter().enumerate() {
+                out[k * stride + l] = h.point;
+                w[k * stride + l] = h.weight;
             }
         }
         rational_surface_derivatives(&mut out[..(nu + 1) * stride], &w, nu, nv);
     }
 
+    /// The homogeneous control point `(w P, w)` of row `i`, column `j`.
+    #[inline]
+    fn homogeneous(&self, i: usize, j: usize) -> Homogeneous<D> {
+        Homogeneous {
+            point: *self.weighted.get(i, j),
+            weight: *self.weights.get(i, j),
+        }
+    }
+
     /// `[S, S_u, S_v, S_uu, S_uv, S_vv]` at `(u, v)`, without allocating.
     pub fn second_order(&self, u: f64, v: f64) -> SecondOrder<D> {
-        let (u, v) = (self.clamp_u(u), self.clamp_v(v));
+        let (u, v) = (self.parameter_u(u), self.parameter_v(v));
         let (p, q) = (self.degree_u, self.degree_v);
         let (rows, cols) = (self.control.rows(), self.control.cols());
         let su = span_of(p, &self.knots_u, rows, u);
         let sv = span_of(q, &self.knots_v, cols, v);
-        let mut bu = [[0.0; MAX_SPAN]; 3];
-        let mut bv = [[0.0; MAX_SPAN]; 3];
-        for k in 0..3 {
-            basis_derivative(p, &self.knots_u, su, u, k, &mut bu[k]);
-            basis_derivative(q, &self.knots_v, sv, v, k, &mut bv[k]);
+        // The v-derivatives 0..=2 of every row of the span, then those along u.
+        let mut rows_d = [[Homogeneous::<D>::ZERO; 3]; MAX_SPAN];
+        let mut local = [Homogeneous::<D>::ZERO; MAX_SPAN];
+        for (a, row) in rows_d[..=p].iter_mut().enumerate() {
+            let i = su - p + a;
+            for (c, h) in local[..=q].iter_mut().enumerate() {
+                *h = self.homogeneous(i, sv - q + c);
+            }
+            local_derivatives(q, &self.knots_v, sv, v, &local, row);
         }
-        // a[k][l], w[k][l] for k + l <= 2.
         let mut a = [[Point::<D>::ZERO; 3]; 3];
         let mut w = [[0.0; 3]; 3];
-        #[allow(clippy::needless_range_loop)] // r indexes the three basis rows
-        for r in 0..=p {
-            let i = su - p + r;
-            let mut line = [Point::<D>::ZERO; 3];
-            let mut line_w = [0.0; 3];
-            #[allow(clippy::needless_range_loop)] // c indexes the three basis rows
-            for c in 0..=q {
-                let j = sv - q + c;
-                let pw = *self.weighted.get(i, j);
-                let ww = *self.weights.get(i, j);
-                for l in 0..3 {
-                    line[l] += pw * bv[l][c];
-                    line_w[l] += ww * bv[l][c];
-                }
+        let mut column = [Homogeneous::<D>::ZERO; 3];
+        for l in 0..3 {
+            for (x, row) in local[..=p].iter_mut().zip(&rows_d[..=p]) {
+                *x = row[l];
             }
-            for k in 0..3 {
-                for l in 0..3 - k {
-                    a[k][l] += line[l] * bu[k][r];
-                    w[k][l] += line_w[l] * bu[k][r];
-                }
+            local_derivatives(p, &self.knots_u, su, u, &local, &mut column[..3 - l]);
+            for k in 0..3 - l {
+                a[k][l] = column[k].point;
+                w[k][l] = column[k].weight;
             }
         }
         let inv = 1.0 / w[0][0];
@@ -413,7 +406,7 @@ impl<const D: usize> Surface<D> for NurbsSurface<D> {
     }
 
     fn eval(&self, u: f64, v: f64) -> Point<D> {
-        let (u, v) = (self.clamp_u(u), self.clamp_v(v));
+        let (u, v) = (self.parameter_u(u), self.parameter_v(v));
         let (p, q) = (self.degree_u, self.degree_v);
         let (rows, cols) = (self.control.rows(), self.control.cols());
         let su = span_of(p, &self.knots_u, rows, u);

@@ -1,14 +1,22 @@
 //! The `p + 1` B-spline basis functions of any degree `p` that are nonzero on one knot span,
-//! and their derivatives of any order, at one parameter: what rational curves and surfaces
-//! ([`NurbsCurve`](super::NurbsCurve), [`NurbsSurface`](super::NurbsSurface)) weigh their
-//! control points with.
+//! and the derivatives of a B-spline on one span: what rational curves and surfaces
+//! ([`NurbsCurve`](super::NurbsCurve), [`NurbsSurface`](super::NurbsSurface)) are evaluated
+//! with.
 //!
-//! The values are the Cox–de Boor recurrence (Piegl and Tiller, *The NURBS Book*, A2.2). The
-//! `k`-th derivatives follow from the values of degree `p - k` taken back through `k`
-//! differentiation steps `N'_{i,d} = d / (t_{i+d} - t_i) N_{i,d-1} - d / (t_{i+d+1} - t_{i+1})
-//! N_{i+1,d-1}` (their (2.9)), a quotient with a zero divisor counting as zero: the same
-//! numbers as A2.3, without its `(p + 1)^2` table, so any degree up to
-//! [`MAX_DEGREE`](super::MAX_DEGREE) runs on the stack. Cost `O(p^2)` per derivative order.
+//! The values are the Cox–de Boor recurrence (Piegl and Tiller, *The NURBS Book*, A2.2).
+//! [`local_derivatives`] gives the derivatives of a B-spline (of homogeneous points) on one
+//! span the way their (3.4)–(3.8) define them: the span's `p + 1` control points differenced
+//! `k` times, `Q^(k+1)_i = (p - k) (Q^(k)_i - Q^(k)_(i-1)) / (t_(i+p-k) - t_i)`, then weighed
+//! with the basis values of degree `p - k`. It differences the points before scaling by the
+//! knot gaps, where weighing the points with derivatives of basis functions (A2.3 and A3.2)
+//! scales first and subtracts large terms after: on a span a thousand times shorter than the
+//! curve the second derivative by basis derivatives loses six digits more (measured on a
+//! 285-pole wing section against Open CASCADE and a 50-digit reference). Any degree up to
+//! [`MAX_DEGREE`](super::MAX_DEGREE) runs on the stack; cost `O(p^2)` per order.
+//! [`basis_derivative`] keeps the basis functions' own derivatives, for tests and the
+//! polynomial bases.
+
+use core::ops::{Add, Mul, Sub};
 
 use super::MAX_DEGREE;
 
@@ -73,6 +81,108 @@ pub(crate) fn basis_derivative(
             let here = if c > p - d { a(c) * out[c] } else { 0.0 };
             let next = if c < p { a(c + 1) * out[c + 1] } else { 0.0 };
             out[c] = here - next;
+        }
+    }
+}
+
+/// What can be differenced and weighed: a point of the homogeneous numerator with its weight.
+pub(crate) trait Linear:
+    Copy + Add<Output = Self> + Sub<Output = Self> + Mul<f64, Output = Self>
+{
+    /// The zero.
+    const ZERO: Self;
+}
+
+impl Linear for f64 {
+    const ZERO: Self = 0.0;
+}
+
+impl<const D: usize> Linear for crate::Point<D> {
+    const ZERO: Self = crate::Point([0.0; D]);
+}
+
+/// A control point of the homogeneous form: `w P` and `w`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Homogeneous<const D: usize> {
+    pub point: crate::Point<D>,
+    pub weight: f64,
+}
+
+impl<const D: usize> Add for Homogeneous<D> {
+    type Output = Self;
+    fn add(self, o: Self) -> Self {
+        Homogeneous {
+            point: self.point + o.point,
+            weight: self.weight + o.weight,
+        }
+    }
+}
+
+impl<const D: usize> Sub for Homogeneous<D> {
+    type Output = Self;
+    fn sub(self, o: Self) -> Self {
+        Homogeneous {
+            point: self.point - o.point,
+            weight: self.weight - o.weight,
+        }
+    }
+}
+
+impl<const D: usize> Mul<f64> for Homogeneous<D> {
+    type Output = Self;
+    fn mul(self, s: f64) -> Self {
+        Homogeneous {
+            point: self.point * s,
+            weight: self.weight * s,
+        }
+    }
+}
+
+impl<const D: usize> Linear for Homogeneous<D> {
+    const ZERO: Self = Homogeneous {
+        point: crate::Point([0.0; D]),
+        weight: 0.0,
+    };
+}
+
+/// The derivatives `0..out.len()` at `t` of the B-spline of degree `p` over `knots` whose
+/// control points on the span `span` are `local[0..=p]` (the points `span - p ..= span`),
+/// into `out`; orders above `p` are zero. See the module docs.
+pub(crate) fn local_derivatives<T: Linear>(
+    p: usize,
+    knots: &[f64],
+    span: usize,
+    t: f64,
+    local: &[T],
+    out: &mut [T],
+) {
+    let mut work = [T::ZERO; MAX_SPAN];
+    work[..=p].copy_from_slice(&local[..=p]);
+    let mut basis = [0.0; MAX_SPAN];
+    let first = span - p;
+    for (k, slot) in out.iter_mut().enumerate() {
+        if k > p {
+            *slot = T::ZERO;
+            continue;
+        }
+        let d = p - k;
+        basis_derivative(d, knots, span, t, 0, &mut basis);
+        let mut sum = T::ZERO;
+        for (r, &b) in basis[..=d].iter().enumerate() {
+            sum = sum + work[k + r] * b;
+        }
+        *slot = sum;
+        if k < p {
+            // The control points of the next derivative, degree d - 1, on the same knots.
+            for j in (k + 1..=p).rev() {
+                let i = first + j;
+                let gap = knots[i + d] - knots[i];
+                work[j] = if gap > 0.0 {
+                    (work[j] - work[j - 1]) * (d as f64 / gap)
+                } else {
+                    T::ZERO
+                };
+            }
         }
     }
 }

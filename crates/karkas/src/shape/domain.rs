@@ -18,6 +18,7 @@
 
 use super::{Edge, Face, NurbsSurface};
 use crate::core::{Curve, Interval, Surface};
+use crate::geometry::surface_nearest::newton_foot;
 use crate::geometry::SurfaceProjector;
 use crate::{Point3, Result};
 
@@ -28,8 +29,6 @@ const MAX_DEPTH: usize = 8;
 /// The bisection stops when the inverted midpoint is this close (relative to the
 /// rectangle's size) to the polygon's.
 const CHORD_TOLERANCE: f64 = 1e-7;
-/// Newton steps per inversion.
-const NEWTON_STEPS: usize = 30;
 
 /// A closed polygon in a surface's parameters (the last point joins the first).
 #[derive(Clone, Debug, PartialEq)]
@@ -382,9 +381,12 @@ impl<'a> Inverter<'a> {
     /// The parameters of the point of the surface nearest `q`: Newton from the previous
     /// sample, or the global search.
     fn invert(&mut self, q: Point3) -> Result<[f64; 2]> {
+        let s = self.surface;
         if let Some(start) = self.previous {
-            let (uv, distance) = newton(self.surface, q, start);
-            if distance <= 4.0 * self.gap + 1e-9 * self.size {
+            let closed = (s.is_closed_u(), s.is_closed_v());
+            let foot = newton_foot(s, q, (start[0], start[1]), closed, 0.0);
+            if foot.distance <= 4.0 * self.gap + 1e-9 * self.size {
+                let uv = self.unwrap_near([foot.u, foot.v], start);
                 self.previous = Some(uv);
                 return Ok(uv);
             }
@@ -407,56 +409,6 @@ impl<'a> Inverter<'a> {
         self.previous = Some(uv);
         Ok(uv)
     }
-}
-
-/// Newton's method on `|S(u, v) - q|^2 / 2` from `start` (unwrapped in closed directions,
-/// clamped in open ones): the parameters reached and their distance to `q`.
-pub(crate) fn newton(s: &NurbsSurface<3>, q: Point3, start: [f64; 2]) -> ([f64; 2], f64) {
-    let (du, dv) = (s.domain_u(), s.domain_v());
-    let keep = |t: f64, d: Interval, closed: bool| if closed { t } else { d.clamp(t) };
-    let [mut u, mut v] = start;
-    let mut best = s.eval(u, v).distance(q);
-    for _ in 0..NEWTON_STEPS {
-        let [p, su, sv, suu, suv, svv] = s.second_order(u, v);
-        let r = p - q;
-        let g = [su.dot(r), sv.dot(r)];
-        let mut h = [
-            su.dot(su) + suu.dot(r),
-            su.dot(sv) + suv.dot(r),
-            sv.dot(sv) + svv.dot(r),
-        ];
-        let mut det = h[0] * h[2] - h[1] * h[1];
-        if !(det > 0.0 && h[0] > 0.0) {
-            h = [su.dot(su), su.dot(sv), sv.dot(sv)];
-            det = h[0] * h[2] - h[1] * h[1];
-        }
-        if det.is_nan() || det <= 0.0 {
-            break;
-        }
-        let step = [
-            -(h[2] * g[0] - h[1] * g[1]) / det,
-            -(h[0] * g[1] - h[1] * g[0]) / det,
-        ];
-        let mut t = 1.0;
-        let mut moved = false;
-        for _ in 0..20 {
-            let nu = keep(u + t * step[0], du, s.is_closed_u());
-            let nv = keep(v + t * step[1], dv, s.is_closed_v());
-            let d = s.eval(nu, nv).distance(q);
-            if d <= best * (1.0 + 1e-15) {
-                moved = (nu - u).abs() + (nv - v).abs() > 0.0;
-                (u, v, best) = (nu, nv, d);
-                break;
-            }
-            t *= 0.5;
-        }
-        let size = (step[0] * t).abs() / du.length().max(f64::MIN_POSITIVE)
-            + (step[1] * t).abs() / dv.length().max(f64::MIN_POSITIVE);
-        if !moved || size < 1e-15 {
-            break;
-        }
-    }
-    ([u, v], best)
 }
 
 #[cfg(test)]
@@ -544,9 +496,12 @@ mod tests {
     fn newton_finds_the_foot_on_a_cylinder() {
         let s = cylinder(&frame(), 2.0, (0.0, PI), (0.0, 1.0)).unwrap();
         let q = Point3::new([0.0, 3.0, 0.5]);
-        let ([u, v], d) = newton(&s, q, [1.0, 0.2]);
+        let foot = newton_foot(&s, q, (1.0, 0.2), (false, false), 0.0);
+        assert!((foot.distance - 1.0).abs() < 1e-14);
         assert!(
-            (d - 1.0).abs() < 1e-14 && s.eval(u, v).distance(Point3::new([0.0, 2.0, 0.5])) < 1e-14
+            s.eval(foot.u, foot.v)
+                .distance(Point3::new([0.0, 2.0, 0.5]))
+                < 1e-14
         );
     }
 }

@@ -7,12 +7,15 @@
 //! the surface inside its outer loop and outside its inner loops. Where the face lies on the
 //! surface is found once in the surface's parameters ([`FaceDomain`], `trim.rs`): each loop
 //! sampled along its edges, every sample inverted onto the surface, the polygons closed
-//! across periodic directions on the face's side.
+//! across periodic directions on the face's side. [`ShapeProjector`] (`nearest.rs`) finds the
+//! nearest point of the faces to any point, signed where a face bounds a solid.
 
 mod domain;
 mod face;
+mod nearest;
 
 pub use domain::{FaceDomain, ParameterLoop};
 pub use face::{Edge, EdgeLoop, Face, Shape};
+pub use nearest::{ShapeNearest, ShapeProjector};
 
 use crate::bspline::{NurbsCurve, NurbsSurface};

@@ -423,7 +423,11 @@ impl<'a> Geometry<'a> {
                 .part(name)
                 .map(|p| Args::of(self.path, id, instance, p))
         };
-        let simple = args("B_SPLINE_CURVE_WITH_KNOTS").filter(|a| a.params.len() == 9);
+        // A simple instance (one part) has every attribute; its count is checked here.
+        let simple = args("B_SPLINE_CURVE_WITH_KNOTS").filter(|_| instance.parts.len() == 1);
+        if let Some(s) = &simple {
+            s.count(9)?;
+        }
         // The simple instance has every attribute, the name first; a complex instance's
         // B_SPLINE_CURVE part only its own (degree, points, form, closed, self-intersect).
         let (head, knots_part, at): (Args<'_>, Option<Args<'_>>, usize) =
@@ -615,7 +619,10 @@ impl<'a> Geometry<'a> {
                 .part(name)
                 .map(|p| Args::of(self.path, id, instance, p))
         };
-        let simple = args("B_SPLINE_SURFACE_WITH_KNOTS").filter(|a| a.params.len() == 13);
+        let simple = args("B_SPLINE_SURFACE_WITH_KNOTS").filter(|_| instance.parts.len() == 1);
+        if let Some(s) = &simple {
+            s.count(13)?;
+        }
         // As for curves: B_SPLINE_SURFACE's own attributes in a complex instance (degrees,
         // points, form, closed in u and v, self-intersect), every attribute in the simple one.
         let (head, knots_part, at) = match (simple, args("B_SPLINE_SURFACE")) {

@@ -308,6 +308,13 @@ impl Reader<'_, '_> {
                 }
                 Some(b'\'') => break,
                 Some(b'\n') | Some(b'\r') => {}
+                // Part 21 strings hold printable characters (and UTF-8): a control byte
+                // is binary data.
+                Some(c) if (c < 0x20 && c != b'\t') || c == 0x7f => {
+                    return Err(self.error(format!(
+                        "a control byte (0x{c:02x}) in a string: not a STEP text file?"
+                    )))
+                }
                 Some(c) => text.push(c),
             }
             if text.len() > MAX_TOKEN_BYTES {
@@ -686,6 +693,8 @@ mod tests {
         );
         let m = message(&format!("{HEAD}#1=A(1);\n#2=B(\x00);"));
         assert!(m.contains("t.step:7: #2: unexpected byte"), "{m}");
+        let m = message(&format!("{HEAD}#1=A(1);\n#2=B('x\x01y');"));
+        assert!(m.contains("t.step:7: #2: a control byte (0x01)"), "{m}");
         let deep = format!("{HEAD}#1=A({}1{});", "(".repeat(40), ")".repeat(40));
         assert!(message(&deep).contains("nested more than 32"));
         let m = message(&format!("{HEAD}#1=A(1)\n#2=B(2);"));
