@@ -31,6 +31,7 @@ LAYERS = [
     ["ll", "dps", "fit", "param", "implicit"],
     ["coons", "section", "measure", "fair"],
     ["loft"],
+    ["shape"],
 ]
 ANYWHERE = {"error"}
 ONLY = {"bspline": {"core"}}

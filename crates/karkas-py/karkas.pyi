@@ -6,7 +6,7 @@ summaries.
 """
 
 import os
-from typing import Any, Literal, Optional, Sequence, Tuple, Union, overload
+from typing import Any, List, Literal, Optional, Sequence, Tuple, Union, overload
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -22,6 +22,8 @@ __all__ = [
     "BicubicSurface",
     "LoftSurface",
     "loft",
+    "CadFace",
+    "CadModel",
     "ConvergenceError",
     "CoonsSurface",
     "CubicSpline",
@@ -52,9 +54,12 @@ __all__ = [
     "max_input_bytes",
     "max_memory",
     "NoBSplineFormError",
+    "NurbsCurve",
+    "NurbsSurface",
     "OptionError",
     "PointsError",
     "read_airfoil",
+    "read_cad",
     "read_curve",
     "read_grid",
     "read_mask",
@@ -672,6 +677,96 @@ def read_grid(path: _FilePath) -> _Floats:
 def read_network(path: _FilePath) -> list[_Floats]:
     """One family of curves of a curve network, CSV rows curve,x,y,z: one (k, 3) array per
     curve, in the order of the curve numbers (0, 1, ...)."""
+
+@final
+class NurbsCurve(Curve):
+    """A rational B-spline curve: control points (n, d), knots, degree, weights."""
+
+    def __new__(
+        cls,
+        control_points: ArrayLike,
+        knots: ArrayLike,
+        degree: int,
+        weights: Optional[ArrayLike] = None,
+        closed: bool = False,
+    ) -> Self: ...
+    def __reduce__(self) -> Tuple[object, ...]: ...
+    @property
+    def degree(self) -> int: ...
+    @property
+    def knots(self) -> _Floats: ...
+    @property
+    def control_points(self) -> _Floats: ...
+    @property
+    def weights(self) -> _Floats: ...
+    @property
+    def rational(self) -> bool: ...
+
+@final
+class NurbsSurface(Surface):
+    """A rational tensor-product B-spline surface: control grid (nu, nv, d), knots, degrees,
+    weights (nu, nv)."""
+
+    def __new__(
+        cls,
+        control_points: ArrayLike,
+        knots_u: ArrayLike,
+        knots_v: ArrayLike,
+        degree_u: int,
+        degree_v: int,
+        weights: Optional[ArrayLike] = None,
+        closed_u: bool = False,
+        closed_v: bool = False,
+    ) -> Self: ...
+    def __reduce__(self) -> Tuple[object, ...]: ...
+    @property
+    def degrees(self) -> Tuple[int, int]: ...
+    @property
+    def knots_u(self) -> _Floats: ...
+    @property
+    def knots_v(self) -> _Floats: ...
+    @property
+    def control_points(self) -> Any: ...
+    @property
+    def weights(self) -> Any: ...
+    @property
+    def rational(self) -> bool: ...
+
+@final
+class CadFace:
+    """A face of a CAD file: a NurbsSurface inside its loops of edges (no constructor)."""
+
+    @property
+    def surface(self) -> NurbsSurface: ...
+    @property
+    def loops(self) -> List[List[NurbsCurve]]: ...
+    @property
+    def same_sense(self) -> bool: ...
+    @property
+    def bounds_solid(self) -> bool: ...
+    def contains(self, u: float, v: float) -> bool: ...
+
+@final
+class CadModel:
+    """The geometry of a STEP or IGES file (no constructor; read_cad makes it)."""
+
+    @property
+    def faces(self) -> List[CadFace]: ...
+    @property
+    def curves(self) -> List[NurbsCurve]: ...
+    @property
+    def unit(self) -> Tuple[str, float]: ...
+    @property
+    def unread(self) -> List[Tuple[str, int, str]]: ...
+    @property
+    def warning(self) -> Optional[str]: ...
+    @property
+    def format(self) -> str: ...
+    @property
+    def entities(self) -> int: ...
+
+def read_cad(path: _FilePath) -> CadModel:
+    """The faces, free curves, unit and unread entities of a STEP or IGES file."""
 
 def read_mesh(path: _FilePath) -> Tuple[_Floats, NDArray[np.int64]]:
     """A triangle mesh (.obj, .stl binary or ASCII, .ply, by extension): vertices (n, 3)

@@ -194,6 +194,9 @@ impl PyCurve {
                     return Ok(());
                 }
                 let extrapolate = extrapolate.unwrap_or(true);
+                if extrapolate && inner.extrapolates() {
+                    return Ok(());
+                }
                 extend_outside(&ts, domain, nu, extrapolate, dim, flat, || self.bspline())
             })
         })?

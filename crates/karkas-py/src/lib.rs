@@ -16,6 +16,7 @@
 mod adapters;
 mod batch;
 mod bspline_form;
+mod cad;
 mod convert;
 mod coons;
 mod curve;
@@ -37,6 +38,7 @@ mod limits;
 mod ll;
 mod loft;
 mod measure;
+mod nurbs;
 mod param;
 mod pickle;
 mod read;
@@ -102,6 +104,11 @@ fn karkas_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<dps::PyTubeSurface>()?;
     m.add_class::<coons::PyCoonsSurface>()?;
     m.add_class::<section::PySectionCurve>()?;
+    m.add_class::<nurbs::PyNurbsCurve>()?;
+    m.add_class::<nurbs::PyNurbsSurface>()?;
+    m.add_class::<cad::PyCadModel>()?;
+    m.add_class::<cad::PyCadFace>()?;
+    m.add_function(wrap_pyfunction!(cad::read_cad, m)?)?;
     m.add_class::<implicit::PyImplicitSurface>()?;
     m.add_function(wrap_pyfunction!(measure::hausdorff, m)?)?;
     m.add_function(wrap_pyfunction!(measure::hausdorff_to_implicit, m)?)?;

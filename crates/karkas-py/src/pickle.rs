@@ -21,7 +21,7 @@ use crate::param::{Ends, PyBicubicSurface, PyCubicSpline};
 use crate::section::PySectionCurve;
 
 /// The constructors `_restore` may call: the qualified names the `__reduce__` methods give.
-const CONSTRUCTORS: [&str; 14] = [
+const CONSTRUCTORS: [&str; 16] = [
     "LLCurve",
     "loft",
     "LLSurface",
@@ -37,6 +37,8 @@ const CONSTRUCTORS: [&str; 14] = [
     "ImplicitSurface",
     "HermiteSpline",
     "FairCurve._from_state",
+    "NurbsCurve",
+    "NurbsSurface",
 ];
 
 /// _restore(name, args, kwargs=None): calls the karkas constructor `name` (e.g.
@@ -117,6 +119,15 @@ pub(crate) fn reduce<'py>(
         None => PyTuple::new(py, [name.into_pyobject(py)?.into_any(), args.into_any()])?,
     };
     PyTuple::new(py, [restore, call_args.into_any()])
+}
+
+/// What `__reduce__` returns for the constructor `name` called with `args` (no keywords).
+pub(crate) fn reduce_call<'py>(
+    py: Python<'py>,
+    name: &str,
+    args: Bound<'py, PyTuple>,
+) -> PyResult<Bound<'py, PyTuple>> {
+    reduce(py, name, args, None)
 }
 
 /// A grid `(rows, cols, d)` array of row-major points.

@@ -307,6 +307,9 @@ impl PySurface {
                 } else {
                     inner.points_flat(&us, &vs, du, dv, flat)
                 }
+                if rule.extrapolate && inner.extrapolates() {
+                    return Ok(());
+                }
                 rule.extend(&us, &vs, grid, flat, || self.bspline())
             })
         })?

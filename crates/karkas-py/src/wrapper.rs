@@ -38,6 +38,12 @@ pub trait CurveImpl: crate::geometry_interface::CurveGeometryImpl + Send + Sync 
     /// The exact B-spline form over the domain (one period, clamped, for a closed curve), or
     /// the library's reason why there is none.
     fn to_bspline(&self) -> karkas::Result<FlatBSpline>;
+    /// True when the curve's own evaluation continues its end pieces outside the domain (a
+    /// rational B-spline, which has no polynomial form to continue): the base class then
+    /// extrapolates with it.
+    fn extrapolates(&self) -> bool {
+        false
+    }
 }
 
 /// A library object of one of two types: its 2-D or its 3-D form.
@@ -82,6 +88,9 @@ where
     }
     fn to_bspline(&self) -> karkas::Result<FlatBSpline> {
         Ok(FlatBSpline::of(&self.0.to_bspline()?))
+    }
+    fn extrapolates(&self) -> bool {
+        (&self.0 as &dyn std::any::Any).is::<karkas::bspline::NurbsCurve<D>>()
     }
     fn dim(&self) -> usize {
         D
@@ -149,6 +158,11 @@ pub trait SurfaceImpl: crate::geometry_interface::SurfaceGeometryImpl + Send + S
     fn library_surface(&self) -> Option<&dyn std::any::Any> {
         None
     }
+    /// True when the surface's own evaluation continues its end pieces outside the domain
+    /// (a rational B-spline surface).
+    fn extrapolates(&self) -> bool {
+        false
+    }
 }
 
 /// A surface of dimension `D` seen as one in 3-D (used only when `D == 3`: the coordinates
@@ -193,6 +207,9 @@ where
 {
     fn library_surface(&self) -> Option<&dyn std::any::Any> {
         Some(&self.0)
+    }
+    fn extrapolates(&self) -> bool {
+        (&self.0 as &dyn std::any::Any).is::<karkas::bspline::NurbsSurface<D>>()
     }
     fn to_bspline(&self) -> karkas::Result<FlatBSplineSurface> {
         Ok(FlatBSplineSurface::of(&self.0.to_bspline()?))

@@ -168,6 +168,15 @@ def fixtures(directory):
                 f.write(f"{i},{q}," + ",".join(repr(float(x)) for x in p) + "\n")
     o.samples_csv = os.path.join(directory, "samples.csv")
     karkas.export(o.surface, o.samples_csv, samples=(4, 5))
+    w = np.sqrt(0.5)
+    o.nurbs_curve = karkas.NurbsCurve([[1, 0, 0], [1, 1, 0], [0, 1, 0]], [0, 0, 0, 1, 1, 1], 2, [1, w, 1])
+    ring = [[1, 0], [1, 1], [0, 1]]
+    o.nurbs_grid = np.array([[[x, y, 0.0], [x, y, 2.0]] for x, y in ring])
+    o.nurbs_surface = karkas.NurbsSurface(o.nurbs_grid, [0, 0, 0, 1, 1, 1], [0, 0, 1, 1], 2, 1, [[1, 1], [w, w], [1, 1]])
+    o.step = os.path.join(directory, "s.step")
+    karkas.export(o.bicubic, o.step)
+    o.cad = karkas.read_cad(o.step)
+    o.cad_face = o.cad.faces[0]
     o.mask_csv = os.path.join(directory, "mask.csv")
     with open(o.mask_csv, "w") as f:
         f.write("i,j\n0,0\n2,1\n")
@@ -319,6 +328,18 @@ VALID = {
     # The cap in force, so that the valid call leaves it as it was.
     "set_max_input_bytes": lambda o: (karkas.set_max_input_bytes, (karkas.max_input_bytes(),), {}),
     "max_input_bytes": lambda o: (karkas.max_input_bytes, (), {}),
+    # Rational B-splines and CAD files.
+    "NurbsCurve": lambda o: (
+        karkas.NurbsCurve, (o.nurbs_curve.control_points, o.nurbs_curve.knots, 2), {"weights": o.nurbs_curve.weights, "closed": False}
+    ),
+    "NurbsSurface": lambda o: (
+        karkas.NurbsSurface, (o.nurbs_grid, [0, 0, 0, 1, 1, 1], [0, 0, 1, 1], 2, 1),
+        {"weights": o.nurbs_surface.weights, "closed_u": False, "closed_v": False},
+    ),
+    "read_cad": lambda o: (karkas.read_cad, (o.step,), {}),
+    "CadModel": NO_CONSTRUCTOR,
+    "CadFace": NO_CONSTRUCTOR,
+    "CadFace.contains": lambda o: (o.cad_face.contains, (0.5, 0.5), {}),
 }
 
 # The object a property is read from: class name -> attribute of fixtures().
@@ -337,6 +358,10 @@ INSTANCES = {
     "TubeSurface": "tube",
     "SectionCurve": "section",
     "ImplicitSurface": "implicit",
+    "NurbsCurve": "nurbs_curve",
+    "NurbsSurface": "nurbs_surface",
+    "CadModel": "cad",
+    "CadFace": "cad_face",
 }
 
 

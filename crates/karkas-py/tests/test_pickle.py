@@ -85,6 +85,13 @@ MAKERS = {
     ),
     "SectionCurve": lambda: karkas.LLSurface(wavy_grid()).section([0.0, 0.0, 1.0], 0.2)[0],
     "ImplicitSurface": lambda: karkas.ImplicitSurface("x^2 + y^2/4 + z^2 - 1"),
+    "NurbsCurve": lambda: karkas.NurbsCurve(
+        wavy(6), [0.0, 0.0, 0.0, 0.3, 0.5, 0.5, 1.0, 1.0, 1.0], 2, [1.0, 0.5, 2.0, 1.0, 0.7, 1.0]
+    ),
+    "NurbsSurface": lambda: karkas.NurbsSurface(
+        wavy_grid(4, 3), [0.0, 0.0, 0.0, 0.4, 1.0, 1.0, 1.0], [0.0, 0.0, 1.0, 2.0, 2.0], 2, 1,
+        np.linspace(0.5, 2.0, 12).reshape(4, 3), closed_u=False,
+    ),
 }
 
 
@@ -96,7 +103,7 @@ def evaluate(obj):
         t = np.linspace(a - 0.1, b + 0.1, 57)
         out["points"] = obj(t)
         out["d1"] = obj(t, 1)
-        for name in ("order", "interpolating", "within", "largest_deviation", "control_points", "knots", "values", "slopes",
+        for name in ("order", "interpolating", "within", "largest_deviation", "control_points", "knots", "values", "slopes", "weights",
                      "derivatives", "max_distance", "rms_distance", "jump_sum", "tolerance_met",
                      "parameters", "distances"):
             if hasattr(obj, name):
@@ -106,7 +113,7 @@ def evaluate(obj):
         u, v = np.linspace(a, b, 9), np.linspace(c, d, 11)
         out["points"] = obj(u, v)
         out["du"] = obj(u, v, 1, 0)
-        for name in ("order", "interpolating", "within", "largest_deviation", "knots_u", "knots_v", "kind"):
+        for name in ("order", "interpolating", "within", "largest_deviation", "knots_u", "knots_v", "kind", "weights"):
             if hasattr(obj, name):
                 out[name] = getattr(obj, name)
     elif isinstance(obj, karkas.DiscreteSpline):

@@ -385,6 +385,16 @@ pub enum Error {
         /// What is wrong with it.
         reason: &'static str,
     },
+    /// A weight of a rational B-spline ([`NurbsCurve::new`](crate::bspline::NurbsCurve::new),
+    /// [`NurbsSurface::new`](crate::bspline::NurbsSurface::new)) that is not a finite
+    /// positive number.
+    #[error("weight {index} ({}) is invalid: weights must be finite and positive", Shown(*value))]
+    InvalidWeight {
+        /// Index of the weight (0-based; row-major for a surface).
+        index: usize,
+        /// Its value.
+        value: f64,
+    },
     /// A numeric setting or option outside its allowed range (e.g. a negative `eps` or
     /// tolerance in [`fit_curve`](crate::fit::fit_curve), a corner that is not an inner knot,
     /// a tolerance or cell count of [`Sectioner::new`](crate::section::Sectioner::new), the

@@ -57,6 +57,7 @@ pub mod loft;
 pub mod measure;
 pub mod param;
 pub mod section;
+pub mod shape;
 pub mod solve;
 pub mod spline;
 

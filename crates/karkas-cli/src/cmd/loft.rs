@@ -127,7 +127,7 @@ pub fn run(args: &LoftArgs) -> Result<()> {
     }
     let title = format!("loft of {} sections ({})", stations.len(), args.span.name());
     if format.is_cad() {
-        write_cad_surface(&loft, format, &args.output, table.display())?;
+        write_cad_surface(&loft, format, &args.output, table.display(), false)?;
     } else {
         let samples = args
             .samples

@@ -6,6 +6,7 @@ mod batch;
 mod bodies;
 mod cad;
 mod closed_profiles;
+mod cad_read;
 mod common;
 mod contract;
 mod convert;

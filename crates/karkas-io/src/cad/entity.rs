@@ -2,7 +2,7 @@
 //! curves and surfaces of karkas (see [`karkas::bspline`]), in 3-D, and the number and knot
 //! formatting both formats share.
 
-use karkas::bspline::{BSplineCurve, BSplineSurface};
+use karkas::bspline::{BSplineCurve, BSplineSurface, NurbsCurve, NurbsSurface};
 use karkas::Point;
 
 use crate::cad::shell::{CadShell, FaceSurface};
@@ -19,6 +19,13 @@ pub enum CadEntity<'a> {
     /// shell bounded by its boundary curves, with poles and seams as [`CadShell`] makes
     /// them, a solid when the surface closes on itself; in IGES: entity 128).
     Surface(&'a BSplineSurface<3>),
+    /// A rational B-spline curve (in STEP: the complex instance of `B_SPLINE_CURVE_WITH_KNOTS`
+    /// and `RATIONAL_B_SPLINE_CURVE`; in IGES: entity 126 with its weights).
+    RationalCurve(&'a NurbsCurve<3>),
+    /// A rational B-spline surface (in STEP: the complex instance of
+    /// `B_SPLINE_SURFACE_WITH_KNOTS` and `RATIONAL_B_SPLINE_SURFACE` as a face; in IGES:
+    /// entity 128 with its weights).
+    RationalSurface(&'a NurbsSurface<3>),
     /// A shell of B-spline faces and planar caps (in STEP: an open shell, or a solid when
     /// it is closed; in IGES: its faces, entity 128, and its caps, trimmed planes, entity
     /// 144).
@@ -130,6 +137,8 @@ pub(crate) fn max_coordinate(entities: &[CadEntity<'_>]) -> f64 {
                         .map(|e| largest(e.curve.control_points())),
                 )
                 .fold(0.0, f64::max),
+            CadEntity::RationalCurve(c) => largest(c.control_points()),
+            CadEntity::RationalSurface(s) => largest(s.control_points().as_slice()),
         })
         .fold(0.0, f64::max)
 }

@@ -6,7 +6,8 @@
 //! entity), Parameter Data (`P`, data in columns 1–64, the entity's directory pointer in
 //! 66–72) and Terminate (`T`), each line numbered in columns 74–80. Entities are
 //! non-rational (all weights 1, `PROP3 = 1`) and not periodic; a closed karkas curve or
-//! surface direction is written clamped over one period with its closed flag set. Units:
+//! surface direction is written clamped over one period with its closed flag set. Rational
+//! curves and surfaces carry their weights (`PROP3 = 0`) and knots as they are. Units:
 //! millimetres (flag 2). Reals carry 17 significant digits. Surfaces are untrimmed (the
 //! whole parameter rectangle).
 //!
@@ -15,7 +16,7 @@
 use std::fmt::Write as _;
 use std::path::Path;
 
-use karkas::bspline::{BSplineCurve, BSplineSurface};
+use karkas::bspline::{BSplineCurve, BSplineSurface, NurbsCurve, NurbsSurface};
 use karkas::geometry::cross;
 use karkas::{Curve, Grid, Point3, Surface};
 
@@ -64,6 +65,16 @@ fn records(entities: &[CadEntity<'_>]) -> Vec<Record> {
             CadEntity::Surface(s) => out.push(Record {
                 kind: 128,
                 fields: surface_parameters(s),
+                dependent: false,
+            }),
+            CadEntity::RationalCurve(c) => out.push(Record {
+                kind: 126,
+                fields: rational_curve_parameters(c),
+                dependent: false,
+            }),
+            CadEntity::RationalSurface(s) => out.push(Record {
+                kind: 128,
+                fields: rational_surface_parameters(s),
                 dependent: false,
             }),
             CadEntity::Shell(shell) => shell_records(shell, &mut out),
@@ -207,6 +218,66 @@ fn reversed(c: &BSplineCurve<3>) -> BSplineCurve<3> {
     let knots: Vec<f64> = c.knots().iter().rev().map(|&k| a + b - k).collect();
     let control: Vec<Point3> = c.control_points().iter().rev().copied().collect();
     BSplineCurve::new(c.degree(), knots, control).unwrap_or_else(|_| c.clone())
+}
+
+/// Entity 126 of a rational curve: its weights, `PROP3 = 0` unless they are all equal.
+fn rational_curve_parameters(c: &NurbsCurve<3>) -> Vec<String> {
+    let n = c.control_points().len();
+    let planar = c.control_points().iter().all(|p| p[2] == 0.0);
+    let d = c.domain();
+    let mut p = vec![
+        "126".to_owned(),
+        (n - 1).to_string(),
+        c.degree().to_string(),
+        u8::from(planar).to_string(),
+        u8::from(c.is_closed()).to_string(),
+        u8::from(!c.is_rational()).to_string(),
+        "0".to_owned(),
+    ];
+    p.extend(c.knots().iter().map(|&k| real(k)));
+    p.extend(c.weights().iter().map(|&w| real(w)));
+    for q in c.control_points() {
+        p.extend([real(q[0]), real(q[1]), real(q[2])]);
+    }
+    p.extend([real(d.start), real(d.end)]);
+    let normal = if planar { [0.0, 0.0, 1.0] } else { [0.0; 3] };
+    p.extend(normal.iter().map(|&x| real(x)));
+    p
+}
+
+/// Entity 128 of a rational surface: its weights (first index fastest), `PROP3 = 0` unless
+/// they are all equal.
+fn rational_surface_parameters(s: &NurbsSurface<3>) -> Vec<String> {
+    let grid = s.control_points();
+    let (rows, cols) = (grid.rows(), grid.cols());
+    let (du, dv) = (s.domain_u(), s.domain_v());
+    let mut p = vec![
+        "128".to_owned(),
+        (rows - 1).to_string(),
+        (cols - 1).to_string(),
+        s.degree_u().to_string(),
+        s.degree_v().to_string(),
+        u8::from(s.is_closed_u()).to_string(),
+        u8::from(s.is_closed_v()).to_string(),
+        u8::from(!s.is_rational()).to_string(),
+        "0".to_owned(),
+        "0".to_owned(),
+    ];
+    p.extend(s.knots_u().iter().map(|&k| real(k)));
+    p.extend(s.knots_v().iter().map(|&k| real(k)));
+    for j in 0..cols {
+        for i in 0..rows {
+            p.push(real(*s.weights().get(i, j)));
+        }
+    }
+    for j in 0..cols {
+        for i in 0..rows {
+            let q = grid.get(i, j);
+            p.extend([real(q[0]), real(q[1]), real(q[2])]);
+        }
+    }
+    p.extend([real(du.start), real(du.end), real(dv.start), real(dv.end)]);
+    p
 }
 
 fn curve_parameters(c: &BSplineCurve<3>) -> Vec<String> {

@@ -8,6 +8,7 @@ pub mod dxf;
 pub mod entity;
 pub mod iges;
 pub mod shell;
+pub mod read;
 pub mod step;
 pub mod time_stamp;
 

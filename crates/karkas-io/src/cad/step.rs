@@ -12,7 +12,8 @@
 //! `ADVANCED_BREP_SHAPE_REPRESENTATION`: a solid, its faces turned outwards. One product holds all items; lengths are in
 //! millimetres (the data's own unit is not known). Reals carry 17 significant digits, so a
 //! reader gets the same `f64` back. Closed karkas curves and surfaces are written as clamped
-//! B-splines over one period, with their closed flags set (`.T.`).
+//! B-splines over one period, with their closed flags set (`.T.`). Rational curves and
+//! surfaces are the complex instances with `RATIONAL_B_SPLINE_CURVE` / `_SURFACE`.
 //!
 //! Hand-written: the Rust STEP crates either only read or come with a whole CAD kernel;
 //! writing these entities takes a page.
@@ -20,8 +21,8 @@
 use std::fmt::Write as _;
 use std::path::Path;
 
-use karkas::bspline::{BSplineCurve, BSplineSurface};
-use karkas::Point;
+use karkas::bspline::{BSplineCurve, BSplineSurface, NurbsCurve, NurbsSurface};
+use karkas::{Curve, Point, Surface};
 
 use crate::cad::entity::{
     curve_closed, knot_runs, real, surface_closed, surface_shell, write_named, CadEntity,
@@ -172,6 +173,105 @@ impl Data {
     }
 }
 
+/// Rational curves and surfaces: the complex instances of ISO 10303-42 (parts in
+/// alphabetical order), which carry the weights; a NURBS whose weights are equal is written
+/// as the plain `B_SPLINE_..._WITH_KNOTS` of its control points.
+impl Data {
+    fn rational_curve(&mut self, c: &NurbsCurve<3>, name: &str) -> String {
+        let points: Vec<String> = c.control_points().iter().map(|&p| self.point(p)).collect();
+        let (values, counts) = knot_runs(c.knots());
+        let (degree, closed) = (c.degree(), logical(c.is_closed()));
+        let (points, counts, values) = (points.join(","), join_usize(&counts), join_real(&values));
+        if !c.is_rational() {
+            return self.add(format!(
+                "B_SPLINE_CURVE_WITH_KNOTS('{name}',{degree},({points}),.UNSPECIFIED.,{closed},.F.,({counts}),({values}),.UNSPECIFIED.)"
+            ));
+        }
+        self.add(format!(
+            "(BOUNDED_CURVE()B_SPLINE_CURVE({degree},({points}),.UNSPECIFIED.,{closed},.F.)B_SPLINE_CURVE_WITH_KNOTS(({counts}),({values}),.UNSPECIFIED.)CURVE()GEOMETRIC_REPRESENTATION_ITEM()RATIONAL_B_SPLINE_CURVE(({}))REPRESENTATION_ITEM('{name}'))",
+            join_real(c.weights())
+        ))
+    }
+
+    fn rational_surface(&mut self, s: &NurbsSurface<3>, name: &str) -> String {
+        let grid = s.control_points();
+        let rows: Vec<String> = (0..grid.rows())
+            .map(|i| {
+                let row: Vec<String> = grid.row(i).iter().map(|&p| self.point(p)).collect();
+                format!("({})", row.join(","))
+            })
+            .collect();
+        let weights: Vec<String> = (0..grid.rows())
+            .map(|i| format!("({})", join_real(s.weights().row(i))))
+            .collect();
+        let (ku, mu) = knot_runs(s.knots_u());
+        let (kv, mv) = knot_runs(s.knots_v());
+        let head = format!(
+            "{},{},({}),.UNSPECIFIED.,{},{},.F.",
+            s.degree_u(),
+            s.degree_v(),
+            rows.join(","),
+            logical(s.is_closed_u()),
+            logical(s.is_closed_v())
+        );
+        let knots = format!(
+            "({}),({}),({}),({}),.UNSPECIFIED.",
+            join_usize(&mu),
+            join_usize(&mv),
+            join_real(&ku),
+            join_real(&kv)
+        );
+        if !s.is_rational() {
+            return self.add(format!(
+                "B_SPLINE_SURFACE_WITH_KNOTS('{name}',{head},{knots})"
+            ));
+        }
+        self.add(format!(
+            "(BOUNDED_SURFACE()B_SPLINE_SURFACE({head})B_SPLINE_SURFACE_WITH_KNOTS({knots})GEOMETRIC_REPRESENTATION_ITEM()RATIONAL_B_SPLINE_SURFACE(({}))REPRESENTATION_ITEM('{name}')SURFACE())",
+            weights.join(",")
+        ))
+    }
+
+    /// The face of the rational surface `s` bounded by its four boundary iso-curves.
+    fn rational_face(&mut self, s: &NurbsSurface<3>, name: &str) -> String {
+        let surface = self.rational_surface(s, name);
+        let (du, dv) = (s.domain_u(), s.domain_v());
+        let corners = [
+            s.eval(du.start, dv.start),
+            s.eval(du.end, dv.start),
+            s.eval(du.end, dv.end),
+            s.eval(du.start, dv.end),
+        ];
+        let vertices: Vec<String> = corners
+            .iter()
+            .map(|&p| {
+                let point = self.point(p);
+                self.add(format!("VERTEX_POINT('',{point})"))
+            })
+            .collect();
+        let sides = [
+            (s.iso_curve(true, dv.start), 0, 1, true),
+            (s.iso_curve(false, du.end), 1, 2, true),
+            (s.iso_curve(true, dv.end), 3, 2, false),
+            (s.iso_curve(false, du.start), 0, 3, false),
+        ];
+        let edges: Vec<String> = sides
+            .iter()
+            .map(|(curve, a, b, sense)| {
+                let geometry = self.rational_curve(&curve.clone().with_closed(false), "");
+                let edge = self.add(format!(
+                    "EDGE_CURVE('',{},{},{geometry},.T.)",
+                    vertices[*a], vertices[*b]
+                ));
+                self.add(format!("ORIENTED_EDGE('',*,*,{edge},{})", logical(*sense)))
+            })
+            .collect();
+        let edge_loop = self.add(format!("EDGE_LOOP('',({}))", edges.join(",")));
+        let bound = self.add(format!("FACE_OUTER_BOUND('',{edge_loop},.T.)"));
+        self.add(format!("ADVANCED_FACE('{name}',({bound}),{surface},.T.)"))
+    }
+}
+
 /// A STEP logical: `.T.` or `.F.`.
 fn logical(value: bool) -> &'static str {
     if value {
@@ -245,8 +345,16 @@ pub fn step_text(entities: &[CadEntity<'_>], name: &str) -> String {
                 curves.push(data.curve(c, &item));
                 continue;
             }
+            CadEntity::RationalCurve(c) => {
+                curves.push(data.rational_curve(c, &item));
+                continue;
+            }
             CadEntity::Surface(s) => data.shell(&surface_shell(s), &item),
             CadEntity::Shell(shell) => data.shell(shell, &item),
+            CadEntity::RationalSurface(s) => {
+                let face = data.rational_face(s, &item);
+                (data.add(format!("OPEN_SHELL('',({face}))")), false)
+            }
         };
         if closed {
             solids.push(data.add(format!("MANIFOLD_SOLID_BREP('{item}',{shell})")));

@@ -29,14 +29,28 @@
 //! Guarantee: the B-spline evaluates to the same points as the original to rounding (tests
 //! check `1e-12` relative to the data's size, derivatives included).
 //!
+//! Rational B-splines ([`NurbsCurve`], [`NurbsSurface`]: weights, any knot vector, clamped or
+//! not) carry what CAD files give: their evaluation and derivatives of every order follow
+//! Piegl and Tiller's *The NURBS Book* (basis functions A2.2/A2.3 in `span_basis.rs`, the
+//! quotient rule A4.2/A4.4 in `rational.rs`, knot insertion A5.1); [`conic`] and [`sweep`]
+//! convert lines, circles, ellipses, planes, cylinders, cones, spheres, tori, extrusions and
+//! revolutions to them exactly (A7.1, A8.1). Every karkas B-spline is a NURBS with unit
+//! weights ([`NurbsCurve::from_bspline`], [`NurbsSurface::from_bspline`]).
+//!
 //! Hand-written: the B-spline crates available evaluate and fit, but none converts these
 //! piecewise polynomial types with prescribed knot multiplicities; de Boor's algorithm and
 //! blossoming are a few dozen lines.
 
 mod basis;
 mod bezier;
+pub mod conic;
 mod curve;
+mod rational;
+mod rational_curve;
+mod rational_surface;
+mod span_basis;
 mod surface;
+pub mod sweep;
 
 pub use crate::core::PolynomialPieces;
 pub(crate) use basis::cubic_span_weights;
@@ -44,6 +58,8 @@ pub(crate) use bezier::{
     bspline_controls, hermite_curve, knot_vector, split_scalar, tensor_controls,
 };
 pub use curve::{BSplineCurve, MAX_DEGREE};
+pub use rational_curve::NurbsCurve;
+pub use rational_surface::{NurbsSurface, SecondOrder};
 pub use surface::BSplineSurface;
 
 use crate::Result;

@@ -83,7 +83,8 @@ pub trait Curve<const D: usize> {
     }
 }
 
-/// A curve made of polynomial pieces joined at breakpoints.
+/// A curve made of pieces joined at breakpoints: polynomial pieces, or the rational pieces
+/// of a [`NurbsCurve`](crate::bspline::NurbsCurve).
 pub trait PiecewiseCurve<const D: usize>: Curve<D> {
     /// The breakpoints inside the domain and the two domain ends, ascending.
     fn breakpoints(&self) -> Vec<f64>;

@@ -135,6 +135,19 @@ impl<const D: usize> Point<D> {
     }
 }
 
+impl Point<3> {
+    /// The cross product `self x other`.
+    #[inline]
+    pub fn cross(self, other: Self) -> Self {
+        let (a, b) = (self.0, other.0);
+        Point([
+            a[1] * b[2] - a[2] * b[1],
+            a[2] * b[0] - a[0] * b[2],
+            a[0] * b[1] - a[1] * b[0],
+        ])
+    }
+}
+
 impl<const D: usize> From<[f64; D]> for Point<D> {
     fn from(c: [f64; D]) -> Self {
         Point(c)
@@ -247,6 +260,11 @@ mod tests {
         assert_eq!(a.dot(b), 4.0 - 2.0 + 1.5);
         assert_eq!(a.add_scaled(2.0, b), Point([9.0, 0.0, 4.0]));
         assert_eq!(a.lerp(b, 0.5), Point([2.5, 0.5, 1.75]));
+        assert_eq!(
+            Point([1.0, 0.0, 0.0]).cross(Point([0.0, 1.0, 0.0])),
+            Point([0.0, 0.0, 1.0])
+        );
+        assert_eq!(a.cross(b).dot(a), 0.0);
         assert_eq!(Point([3.0, 4.0]).norm(), 5.0);
         assert_eq!(Point([3.0, -7.0]).max_abs(), 7.0);
         assert!(!Point([1.0, f64::NAN]).is_finite());

@@ -22,6 +22,21 @@ pub trait Surface<const D: usize> {
     /// The partial derivative `d^(ku+kv) P / du^ku dv^kv` at `(u, v)`.
     fn deriv(&self, u: f64, v: f64, ku: usize, kv: usize) -> Point<D>;
 
+    /// `[S, S_u, S_v, S_uu, S_uv, S_vv]` at `(u, v)`: the point with its first and second
+    /// partial derivatives, as [`deriv`](Surface::deriv) gives them. Surfaces that locate
+    /// their patch before evaluating override it to locate once (Newton's method on a distance
+    /// needs all six per step).
+    fn second_order(&self, u: f64, v: f64) -> [Point<D>; 6] {
+        [
+            self.eval(u, v),
+            self.deriv(u, v, 1, 0),
+            self.deriv(u, v, 0, 1),
+            self.deriv(u, v, 2, 0),
+            self.deriv(u, v, 1, 1),
+            self.deriv(u, v, 0, 2),
+        ]
+    }
+
     /// Evaluates on the tensor grid `us x vs` into `out`, row-major with `u` outer:
     /// `out[a * vs.len() + b] = P(us[a], vs[b])`.
     ///

@@ -235,108 +235,123 @@ impl<'a, S: Surface<D> + ?Sized, const D: usize> SurfaceProjector<'a, S, D> {
         }
     }
 
-    /// Newton's method on `|S - q|^2 / 2` from `(u0, v0)`.
-    fn newton(&self, q: Point<D>, (u0, v0): (f64, f64)) -> SurfaceNearest<D> {
-        let s = self.surface;
-        let (du, dv) = (s.domain_u(), s.domain_v());
-        let keep = |t: f64, d: Interval, closed: bool| if closed { d.wrap(t) } else { d.clamp(t) };
-        let (mut u, mut v) = (u0, v0);
-        let mut p = s.eval(u, v);
-        let mut dist2 = p.distance_sq(q);
-        let floor = 4.0 * f64::EPSILON * du.length().abs().max(dv.length().abs()).max(1.0);
-        let tolerance = self.accuracy.max(floor);
-        for _ in 0..MAX_STEPS {
-            let r = p - q;
-            let su = s.deriv(u, v, 1, 0);
-            let sv = s.deriv(u, v, 0, 1);
-            let g = [su.dot(r), sv.dot(r)];
-            let gauss = [su.dot(su), su.dot(sv), sv.dot(sv)];
-            let full = [
-                gauss[0] + s.deriv(u, v, 2, 0).dot(r),
-                gauss[1] + s.deriv(u, v, 1, 1).dot(r),
-                gauss[2] + s.deriv(u, v, 0, 2).dot(r),
-            ];
-            let solve = |h: [f64; 3]| {
-                let det = h[0] * h[2] - h[1] * h[1];
-                (det > 0.0 && h[0] > 0.0).then(|| {
-                    (
-                        -(h[2] * g[0] - h[1] * g[1]) / det,
-                        -(h[0] * g[1] - h[1] * g[0]) / det,
-                    )
-                })
-            };
-            let step = solve(full).or_else(|| solve(gauss)).or_else(|| {
-                // A singular first form (a degenerate edge): steepest descent along the
-                // parameter with a non-zero derivative.
-                let (eu, ev) = (gauss[0], gauss[2]);
-                (eu > 0.0 || ev > 0.0).then(|| {
-                    (
-                        if eu > 0.0 { -g[0] / eu } else { 0.0 },
-                        if ev > 0.0 { -g[1] / ev } else { 0.0 },
-                    )
-                })
-            });
-            let Some((mut step_u, mut step_v)) = step else {
-                break;
-            };
-            // Projected Newton: a parameter held at an end of an open direction by a step
-            // pointing out of the domain stays there, and the other one takes the 1-D
-            // Newton step of the restricted problem.
-            let pushed = |t: f64, step: f64, d: Interval, closed: bool| {
-                !closed && ((t <= d.start && step < 0.0) || (t >= d.end && step > 0.0))
-            };
-            let one_d = |g: f64, h: f64, e: f64| {
-                if h > 0.0 {
-                    -g / h
-                } else if e > 0.0 {
-                    -g / e
-                } else {
-                    0.0
-                }
-            };
-            match (
-                pushed(u, step_u, du, self.closed.0),
-                pushed(v, step_v, dv, self.closed.1),
-            ) {
-                (true, true) => break,
-                (true, false) => {
-                    step_u = 0.0;
-                    step_v = one_d(g[1], full[2], gauss[2]);
-                }
-                (false, true) => {
-                    step_v = 0.0;
-                    step_u = one_d(g[0], full[0], gauss[0]);
-                }
-                (false, false) => {}
+    /// Newton's method on `|S - q|^2 / 2` from `(u0, v0)` ([`newton_foot`]).
+    fn newton(&self, q: Point<D>, start: (f64, f64)) -> SurfaceNearest<D> {
+        newton_foot(self.surface, q, start, self.closed, self.accuracy)
+    }
+}
+
+/// Newton's method on `|S(u, v) - q|^2 / 2` from `(u0, v0)`: the full Hessian where it is
+/// positive definite, Gauss–Newton where not, steepest descent where the first form is
+/// singular, steps halved until the distance does not grow; projected in an open direction
+/// (a parameter held at an end by a step pointing out stays there), wrapped in a closed one
+/// (`closed`). Stops when a step is below `accuracy` (4 ulp of the domain at least) or after
+/// 40 steps. The local minimum of the distance it reaches: the foot of `q` on the surface
+/// when started close enough.
+pub(crate) fn newton_foot<S: Surface<D> + ?Sized, const D: usize>(
+    s: &S,
+    q: Point<D>,
+    (u0, v0): (f64, f64),
+    closed: (bool, bool),
+    accuracy: f64,
+) -> SurfaceNearest<D> {
+    let (du, dv) = (s.domain_u(), s.domain_v());
+    let keep = |t: f64, d: Interval, closed: bool| if closed { d.wrap(t) } else { d.clamp(t) };
+    let (mut u, mut v) = (u0, v0);
+    let mut p = s.eval(u, v);
+    let mut dist2 = p.distance_sq(q);
+    let floor = 4.0 * f64::EPSILON * du.length().abs().max(dv.length().abs()).max(1.0);
+    let tolerance = accuracy.max(floor);
+    for _ in 0..MAX_STEPS {
+        let r = p - q;
+        let [_, su, sv, suu, suv, svv] = s.second_order(u, v);
+        let g = [su.dot(r), sv.dot(r)];
+        let gauss = [su.dot(su), su.dot(sv), sv.dot(sv)];
+        let full = [
+            gauss[0] + suu.dot(r),
+            gauss[1] + suv.dot(r),
+            gauss[2] + svv.dot(r),
+        ];
+        let solve = |h: [f64; 3]| {
+            let det = h[0] * h[2] - h[1] * h[1];
+            (det > 0.0 && h[0] > 0.0).then(|| {
+                (
+                    -(h[2] * g[0] - h[1] * g[1]) / det,
+                    -(h[0] * g[1] - h[1] * g[0]) / det,
+                )
+            })
+        };
+        let step = solve(full).or_else(|| solve(gauss)).or_else(|| {
+            // A singular first form (a degenerate edge): steepest descent along the
+            // parameter with a non-zero derivative.
+            let (eu, ev) = (gauss[0], gauss[2]);
+            (eu > 0.0 || ev > 0.0).then(|| {
+                (
+                    if eu > 0.0 { -g[0] / eu } else { 0.0 },
+                    if ev > 0.0 { -g[1] / ev } else { 0.0 },
+                )
+            })
+        });
+        let Some((mut step_u, mut step_v)) = step else {
+            break;
+        };
+        // Projected Newton: a parameter held at an end of an open direction by a step
+        // pointing out of the domain stays there, and the other one takes the 1-D
+        // Newton step of the restricted problem.
+        let pushed = |t: f64, step: f64, d: Interval, closed: bool| {
+            !closed && ((t <= d.start && step < 0.0) || (t >= d.end && step > 0.0))
+        };
+        let one_d = |g: f64, h: f64, e: f64| {
+            if h > 0.0 {
+                -g / h
+            } else if e > 0.0 {
+                -g / e
+            } else {
+                0.0
             }
-            if !(step_u.is_finite() && step_v.is_finite()) {
-                break;
+        };
+        match (
+            pushed(u, step_u, du, closed.0),
+            pushed(v, step_v, dv, closed.1),
+        ) {
+            (true, true) => break,
+            (true, false) => {
+                step_u = 0.0;
+                step_v = one_d(g[1], full[2], gauss[2]);
             }
-            let mut improved = false;
-            for _ in 0..MAX_HALVINGS {
-                let nu = keep(u + step_u, du, self.closed.0);
-                let nv = keep(v + step_v, dv, self.closed.1);
-                let np = s.eval(nu, nv);
-                let nd2 = np.distance_sq(q);
-                // Near the minimum the squared distance changes by the square of the step:
-                // rounding-level changes are accepted so that Newton can finish.
-                if nd2 <= dist2 * (1.0 + 8.0 * f64::EPSILON) {
-                    (u, v, p, dist2) = (nu, nv, np, nd2);
-                    improved = true;
-                    break;
-                }
-                step_u *= 0.5;
-                step_v *= 0.5;
+            (false, true) => {
+                step_v = 0.0;
+                step_u = one_d(g[0], full[0], gauss[0]);
             }
-            if !improved || step_u.abs().max(step_v.abs()) <= tolerance {
-                break;
-            }
+            (false, false) => {}
         }
-        SurfaceNearest {
-            u,
-            v,
-            distance: dist2.sqrt(),
-            point: p,
+        if !(step_u.is_finite() && step_v.is_finite()) {
+            break;
         }
+        let mut improved = false;
+        for _ in 0..MAX_HALVINGS {
+            let nu = keep(u + step_u, du, closed.0);
+            let nv = keep(v + step_v, dv, closed.1);
+            let np = s.eval(nu, nv);
+            let nd2 = np.distance_sq(q);
+            // Near the minimum the squared distance changes by the square of the step:
+            // rounding-level changes are accepted so that Newton can finish.
+            if nd2 <= dist2 * (1.0 + 8.0 * f64::EPSILON) {
+                (u, v, p, dist2) = (nu, nv, np, nd2);
+                improved = true;
+                break;
+            }
+            step_u *= 0.5;
+            step_v *= 0.5;
+        }
+        if !improved || step_u.abs().max(step_v.abs()) <= tolerance {
+            break;
+        }
+    }
+    SurfaceNearest {
+        u,
+        v,
+        distance: dist2.sqrt(),
+        point: p,
     }
 }

@@ -1,0 +1,677 @@
+//! The curves and surfaces of CAD files before they become rational B-splines: lines,
+//! conics and the analytic surfaces, which are unbounded or periodic and become NURBS only
+//! over a stretch of their parameters, the stretch a face's or an edge's bounds give.
+//!
+//! The parameters are those of ISO 10303-42 and Open CASCADE (see
+//! [`karkas::bspline::sweep`]): arc length along a line's unit direction; the angle on a
+//! circle or ellipse from the placement's `x` axis. An edge's stretch comes from its
+//! vertices' parameters; a face's rectangle from its loops: each loop sampled, each sample's
+//! surface parameters found in closed form (angles unwrapped along the loop: a loop that
+//! turns around an axis spans the whole turn), the extremes that fall inside an edge refined
+//! by golden-section search.
+
+use karkas::bspline::conic::{elliptic_arc, line_segment};
+use karkas::bspline::sweep::{cone, cylinder, extrusion, plane, revolution, sphere, torus, Frame};
+use karkas::bspline::{NurbsCurve, NurbsSurface};
+use karkas::geometry::CurveProjector;
+use karkas::{Curve, Point3};
+use std::f64::consts::{FRAC_PI_2, PI, TAU};
+
+/// Samples of an edge when a face's parameter range is measured.
+const RANGE_SAMPLES: usize = 32;
+
+/// A curve as a file defines it.
+#[derive(Clone, Debug)]
+pub(crate) enum BasisCurve {
+    /// A rational B-spline (bounded).
+    Nurbs(NurbsCurve<3>),
+    /// The line `origin + t dir` (`dir` a unit vector).
+    Line { origin: Point3, dir: Point3 },
+    /// The ellipse `c + a cos t x + b sin t y` of a frame (a circle when `a == b`).
+    Conic { frame: Frame, a: f64, b: f64 },
+}
+
+impl BasisCurve {
+    /// The period of a closed curve (a conic, or a B-spline marked closed).
+    pub fn period(&self) -> Option<f64> {
+        match self {
+            BasisCurve::Conic { .. } => Some(TAU),
+            BasisCurve::Nurbs(c) if c.is_closed() => Some(c.domain().length()),
+            _ => None,
+        }
+    }
+
+    /// The parameter of the point of the curve nearest `p` (in `[0, 2π)` on a conic).
+    pub fn parameter_of(&self, p: Point3) -> Result<f64, String> {
+        match self {
+            BasisCurve::Line { origin, dir } => Ok((p - *origin).dot(*dir)),
+            BasisCurve::Conic { frame, a, b } => {
+                let d = p - frame.origin;
+                Ok(((d.dot(frame.y) / b).atan2(d.dot(frame.x) / a)).rem_euclid(TAU))
+            }
+            BasisCurve::Nurbs(c) => CurveProjector::new(c, 0.0)
+                .map(|projector| projector.nearest(p).t)
+                .map_err(|e| e.to_string()),
+        }
+    }
+
+    /// The point at parameter `t`.
+    pub fn point(&self, t: f64) -> Point3 {
+        match self {
+            BasisCurve::Line { origin, dir } => *origin + *dir * t,
+            BasisCurve::Conic { frame, a, b } => {
+                frame.origin + frame.x * (a * t.cos()) + frame.y * (b * t.sin())
+            }
+            BasisCurve::Nurbs(c) => c.eval(t),
+        }
+    }
+
+    /// The curve over `[t0, t1]` (`t0 < t1`, at most a period apart) as a NURBS.
+    pub fn bounded(&self, t0: f64, t1: f64) -> Result<NurbsCurve<3>, String> {
+        match self {
+            BasisCurve::Line { .. } => line_segment(self.point(t0), self.point(t1), (t0, t1)),
+            BasisCurve::Conic { frame, a, b } => {
+                elliptic_arc(frame.origin, frame.x * *a, frame.y * *b, (t0, t1))
+            }
+            BasisCurve::Nurbs(c) => {
+                let d = c.domain();
+                if t0 <= d.start && t1 >= d.end {
+                    return Ok(c.clone());
+                }
+                if c.is_closed() && (t0 < d.start || t1 > d.end) {
+                    return self.wrapped_segment(c, t0, t1).map_err(|e| e.to_string());
+                }
+                c.segment(t0.max(d.start), t1.min(d.end))
+            }
+        }
+        .map_err(|e| e.to_string())
+    }
+
+    /// A stretch of a closed B-spline that crosses its seam: returned over one piece when
+    /// it fits in the domain after a shift by the period, else over the whole domain (the
+    /// stretch is then the whole curve).
+    fn wrapped_segment(
+        &self,
+        c: &NurbsCurve<3>,
+        t0: f64,
+        t1: f64,
+    ) -> karkas::Result<NurbsCurve<3>> {
+        let d = c.domain();
+        let p = d.length();
+        let k = ((t0 - d.start) / p).floor();
+        let (a, b) = (t0 - k * p, t1 - k * p);
+        if b <= d.end {
+            c.segment(a.max(d.start), b.min(d.end))
+        } else {
+            Ok(c.clone().with_closed(false))
+        }
+    }
+
+    /// The curve's own bounded stretch, when it has one without an edge (a B-spline's
+    /// domain, a conic's full turn).
+    pub fn natural_range(&self) -> Option<(f64, f64)> {
+        match self {
+            BasisCurve::Nurbs(c) => Some((c.domain().start, c.domain().end)),
+            BasisCurve::Conic { .. } => Some((0.0, TAU)),
+            BasisCurve::Line { .. } => None,
+        }
+    }
+}
+
+/// A surface as a file defines it.
+#[derive(Clone, Debug)]
+pub(crate) enum BasisSurface {
+    /// A rational B-spline surface (bounded).
+    Nurbs(NurbsSurface<3>),
+    /// The plane `c + u x + v y`.
+    Plane(Frame),
+    /// Cylinder of a radius.
+    Cylinder(Frame, f64),
+    /// Cone of a radius at `v = 0` and a half-angle (radians).
+    Cone(Frame, f64, f64),
+    /// Sphere of a radius.
+    Sphere(Frame, f64),
+    /// Torus of a major and a minor radius.
+    Torus(Frame, f64, f64),
+    /// A profile turned about the axis through a point.
+    Revolution {
+        profile: BasisCurve,
+        origin: Point3,
+        axis: Point3,
+    },
+    /// A curve swept along a unit direction.
+    Extrusion { curve: BasisCurve, dir: Point3 },
+}
+
+/// One loop of a face, sampled: for each edge, its samples `(s, point)` in loop order, `s`
+/// the share of the edge's way (0 and 1 are its vertices), and the function that gives the
+/// point at any share.
+pub(crate) struct SampledEdge<'a> {
+    pub samples: Vec<(f64, Point3)>,
+    pub at: Box<dyn Fn(f64) -> Point3 + 'a>,
+}
+
+impl<'a> SampledEdge<'a> {
+    /// `RANGE_SAMPLES + 1` samples of `at` over `[0, 1]`.
+    pub fn new(at: Box<dyn Fn(f64) -> Point3 + 'a>) -> Self {
+        let samples = (0..=RANGE_SAMPLES)
+            .map(|k| {
+                let s = k as f64 / RANGE_SAMPLES as f64;
+                (s, at(s))
+            })
+            .collect();
+        SampledEdge { samples, at }
+    }
+}
+
+/// How one surface parameter is read off a point: a function, and whether it is an angle
+/// (unwrapped along loops, a full turn when a loop turns around).
+struct Coordinate<'f> {
+    value: &'f dyn Fn(Point3) -> f64,
+    angle: bool,
+}
+
+impl Coordinate<'_> {
+    /// The value at `p`, unwrapped (for an angle) to lie nearest `near`.
+    fn at(&self, p: Point3, near: Option<f64>) -> f64 {
+        let x = (self.value)(p);
+        match (self.angle, near) {
+            (true, Some(n)) => x + ((n - x) / TAU).round() * TAU,
+            _ => x,
+        }
+    }
+
+    /// The range `(lo, hi)` of the coordinate over the loops, and whether it is a full turn.
+    fn range(
+        &self,
+        loops: &[Vec<SampledEdge<'_>>],
+        skip: &dyn Fn(Point3) -> bool,
+    ) -> Option<(f64, f64, bool)> {
+        let mut lo = f64::INFINITY;
+        let mut hi = f64::NEG_INFINITY;
+        let mut full = false;
+        let mut anchor: Option<f64> = None;
+        for edges in loops {
+            let mut previous: Option<f64> = None;
+            let mut first: Option<f64> = None;
+            // The loop's values and where each extreme was met: (edge, sample index).
+            let mut values: Vec<Vec<Option<f64>>> = Vec::new();
+            for edge in edges {
+                let mut row = Vec::with_capacity(edge.samples.len());
+                for &(_, p) in &edge.samples {
+                    if skip(p) {
+                        row.push(None);
+                        continue;
+                    }
+                    let x = self.at(p, previous.or(anchor));
+                    previous = Some(x);
+                    first = first.or(Some(x));
+                    row.push(Some(x));
+                }
+                values.push(row);
+            }
+            let (Some(first), Some(last)) = (first, previous) else {
+                continue;
+            };
+            if self.angle && (last - first).abs() > PI {
+                full = true;
+            }
+            anchor = anchor.or(Some(first));
+            for (e, row) in values.iter().enumerate() {
+                for (k, x) in row.iter().enumerate() {
+                    let Some(x) = *x else { continue };
+                    let n = row.len() - 1;
+                    let refine = |sign: f64| -> f64 {
+                        if k == 0 || k == n || row[k - 1].is_none() || row[k + 1].is_none() {
+                            return x;
+                        }
+                        let edge = &edges[e];
+                        let (a, b) = (edge.samples[k - 1].0, edge.samples[k + 1].0);
+                        let f = |s: f64| sign * self.at((edge.at)(s), Some(x));
+                        sign * golden_max(&f, a, b).max(sign * x)
+                    };
+                    if x < lo {
+                        lo = refine(-1.0);
+                    }
+                    if x > hi {
+                        hi = refine(1.0);
+                    }
+                }
+            }
+        }
+        lo.is_finite().then_some((
+            lo,
+            hi,
+            full || (self.angle && hi - lo >= TAU * (1.0 - 1e-9)),
+        ))
+    }
+}
+
+/// The largest value of `f` on `[a, b]` by golden-section search (60 steps).
+fn golden_max(f: &dyn Fn(f64) -> f64, mut a: f64, mut b: f64) -> f64 {
+    let r = 0.5 * (5f64.sqrt() - 1.0);
+    let mut c = b - r * (b - a);
+    let mut d = a + r * (b - a);
+    let (mut fc, mut fd) = (f(c), f(d));
+    for _ in 0..60 {
+        if fc > fd {
+            b = d;
+            d = c;
+            fd = fc;
+            c = b - r * (b - a);
+            fc = f(c);
+        } else {
+            a = c;
+            c = d;
+            fc = fd;
+            d = a + r * (b - a);
+            fd = f(d);
+        }
+    }
+    fc.max(fd).max(f(a)).max(f(b))
+}
+
+/// An angle range as the surface's: the full turn `[0, 2π]` (or the measured range).
+fn angles(range: Option<(f64, f64, bool)>) -> ((f64, f64), bool) {
+    match range {
+        None => ((0.0, TAU), true),
+        Some((_, _, true)) => ((0.0, TAU), true),
+        Some((lo, hi, false)) => {
+            let shift = (lo / TAU).floor() * TAU;
+            ((lo - shift, hi - shift), false)
+        }
+    }
+}
+
+/// A linear range, refused when the loops give none (an unbounded surface without bounds).
+fn linear(range: Option<(f64, f64, bool)>, what: &str) -> Result<(f64, f64), String> {
+    match range {
+        Some((lo, hi, _)) if hi > lo => Ok((lo, hi)),
+        Some(_) => Err(format!("the bounds of a face on {what} span no area")),
+        None => Err(format!(
+            "{what} is unbounded and has no edges that bound it"
+        )),
+    }
+}
+
+impl BasisSurface {
+    /// The surface over the rectangle `u x v` of its own parameters (angles in radians), as
+    /// a NURBS; a B-spline surface is kept whole.
+    pub fn over(&self, u: (f64, f64), v: (f64, f64)) -> Result<NurbsSurface<3>, String> {
+        let turn = |r: (f64, f64)| r.1 - r.0 >= TAU * (1.0 - 1e-12);
+        let s = match self {
+            BasisSurface::Nurbs(s) => return Ok(s.clone()),
+            BasisSurface::Plane(f) => plane(f, u, v),
+            BasisSurface::Cylinder(f, r) => cylinder(f, *r, u, v),
+            BasisSurface::Cone(f, r, a) => cone(f, *r, *a, u, v),
+            BasisSurface::Sphere(f, r) => sphere(f, *r, u, v),
+            BasisSurface::Torus(f, major, minor) => {
+                return torus(f, *major, *minor, u, v)
+                    .map(|s| s.with_closed(turn(u), turn(v)))
+                    .map_err(|e| e.to_string())
+            }
+            BasisSurface::Revolution {
+                profile,
+                origin,
+                axis,
+            } => revolution(&profile.bounded(v.0, v.1)?, *origin, *axis, u),
+            BasisSurface::Extrusion { curve, dir } => {
+                return extrusion(&curve.bounded(u.0, u.1)?, *dir, v).map_err(|e| e.to_string())
+            }
+        };
+        s.map(|s| s.with_closed(turn(u), false))
+            .map_err(|e| e.to_string())
+    }
+
+    /// The surface over the smallest rectangle of its parameters holding the loops (the
+    /// whole surface when bounded and without loops), as a NURBS with its closed directions
+    /// marked.
+    pub fn bounded(&self, loops: &[Vec<SampledEdge<'_>>]) -> Result<NurbsSurface<3>, String> {
+        let never = |_: Point3| false;
+        match self {
+            BasisSurface::Nurbs(s) => Ok(s.clone()),
+            BasisSurface::Plane(f) => {
+                let u = Coordinate {
+                    value: &|p| (p - f.origin).dot(f.x),
+                    angle: false,
+                }
+                .range(loops, &never);
+                let v = Coordinate {
+                    value: &|p| (p - f.origin).dot(f.y),
+                    angle: false,
+                }
+                .range(loops, &never);
+                plane(f, linear(u, "a plane")?, linear(v, "a plane")?).map_err(|e| e.to_string())
+            }
+            BasisSurface::Cylinder(f, r) => {
+                let near_axis = |p: Point3| radial(f, p) < 1e-9 * r;
+                let (u, full) = angles(
+                    Coordinate {
+                        value: &|p| azimuth(f, p),
+                        angle: true,
+                    }
+                    .range(loops, &near_axis),
+                );
+                let v = Coordinate {
+                    value: &|p| (p - f.origin).dot(f.z),
+                    angle: false,
+                }
+                .range(loops, &never);
+                let s = cylinder(f, *r, u, linear(v, "a cylinder")?).map_err(|e| e.to_string())?;
+                Ok(s.with_closed(full, false))
+            }
+            BasisSurface::Cone(f, r, alpha) => {
+                let scale = r.abs().max(1.0);
+                let near_axis = |p: Point3| radial(f, p) < 1e-9 * scale;
+                let (u, full) = angles(
+                    Coordinate {
+                        value: &|p| azimuth(f, p),
+                        angle: true,
+                    }
+                    .range(loops, &near_axis),
+                );
+                let c = alpha.cos();
+                let v = Coordinate {
+                    value: &|p| (p - f.origin).dot(f.z) / c,
+                    angle: false,
+                }
+                .range(loops, &never);
+                let s = cone(f, *r, *alpha, u, linear(v, "a cone")?).map_err(|e| e.to_string())?;
+                Ok(s.with_closed(full, false))
+            }
+            BasisSurface::Sphere(f, r) => {
+                let near_axis = |p: Point3| radial(f, p) < 1e-9 * r;
+                let (u, full) = angles(
+                    Coordinate {
+                        value: &|p| azimuth(f, p),
+                        angle: true,
+                    }
+                    .range(loops, &near_axis),
+                );
+                let latitude = |p: Point3| ((p - f.origin).dot(f.z) / r).clamp(-1.0, 1.0).asin();
+                let v = if full {
+                    (-FRAC_PI_2, FRAC_PI_2)
+                } else {
+                    linear(
+                        Coordinate {
+                            value: &latitude,
+                            angle: false,
+                        }
+                        .range(loops, &never),
+                        "a sphere",
+                    )?
+                };
+                let s = sphere(f, *r, u, v).map_err(|e| e.to_string())?;
+                Ok(s.with_closed(full, false))
+            }
+            BasisSurface::Torus(f, major, minor) => {
+                let near_axis = |p: Point3| radial(f, p) < 1e-9 * major;
+                let (u, full_u) = angles(
+                    Coordinate {
+                        value: &|p| azimuth(f, p),
+                        angle: true,
+                    }
+                    .range(loops, &near_axis),
+                );
+                let tube = |p: Point3| (p - f.origin).dot(f.z).atan2(radial(f, p) - major);
+                let (v, full_v) = angles(
+                    Coordinate {
+                        value: &tube,
+                        angle: true,
+                    }
+                    .range(loops, &never),
+                );
+                let s = torus(f, *major, *minor, u, v).map_err(|e| e.to_string())?;
+                Ok(s.with_closed(full_u, full_v))
+            }
+            BasisSurface::Revolution {
+                profile,
+                origin,
+                axis,
+            } => {
+                let (v0, v1) = match profile.natural_range() {
+                    Some(r) => r,
+                    None => {
+                        // A line: its parameter where it meets each sample's circle.
+                        let BasisCurve::Line { origin: o, dir } = profile else {
+                            return Err("a surface of revolution of an unbounded curve".into());
+                        };
+                        let along = dir.dot(*axis);
+                        if along.abs() < 1e-12 {
+                            return Err(
+                                "a surface of revolution of a line square to its axis".into()
+                            );
+                        }
+                        let value = |p: Point3| (p - *o).dot(*axis) / along;
+                        linear(
+                            Coordinate {
+                                value: &value,
+                                angle: false,
+                            }
+                            .range(loops, &never),
+                            "a surface of revolution",
+                        )?
+                    }
+                };
+                let g = profile.bounded(v0, v1)?;
+                let mid = g.eval(0.5 * (v0 + v1));
+                let reference = mid - *origin - *axis * (mid - *origin).dot(*axis);
+                let frame = Frame::new(
+                    *origin,
+                    *axis,
+                    if reference.norm() > 0.0 {
+                        reference
+                    } else {
+                        any_normal(*axis)
+                    },
+                )
+                .map_err(|e| e.to_string())?;
+                let near_axis =
+                    |p: Point3| radial(&frame, p) < 1e-12 * (1.0 + (p - *origin).norm());
+                let (u, full) = angles(
+                    Coordinate {
+                        value: &|p| azimuth(&frame, p),
+                        angle: true,
+                    }
+                    .range(loops, &near_axis),
+                );
+                let s = revolution(&g, *origin, *axis, u).map_err(|e| e.to_string())?;
+                Ok(s.with_closed(full, false))
+            }
+            BasisSurface::Extrusion { curve, dir } => {
+                let g = match curve {
+                    BasisCurve::Nurbs(c) => c.clone(),
+                    BasisCurve::Line { origin, dir: e } => {
+                        // u along the line after removing the sweep: p - origin = u e + v d.
+                        let (ee, ed) = (1.0, e.dot(*dir));
+                        let det = ee - ed * ed;
+                        if det.abs() < 1e-12 {
+                            return Err("an extrusion of a line along itself".into());
+                        }
+                        let value = |p: Point3| {
+                            let w = p - *origin;
+                            (w.dot(*e) - ed * w.dot(*dir)) / det
+                        };
+                        let r = linear(
+                            Coordinate {
+                                value: &value,
+                                angle: false,
+                            }
+                            .range(loops, &never),
+                            "an extrusion",
+                        )?;
+                        curve.bounded(r.0, r.1)?
+                    }
+                    BasisCurve::Conic { frame, a, b } => {
+                        let n = frame.z;
+                        let dn = dir.dot(n);
+                        if dn.abs() < 1e-12 {
+                            return Err("an extrusion of a conic along its own plane".into());
+                        }
+                        let value = |p: Point3| {
+                            let q = p - *dir * ((p - frame.origin).dot(n) / dn);
+                            let d = q - frame.origin;
+                            (d.dot(frame.y) / b).atan2(d.dot(frame.x) / a)
+                        };
+                        let (r, _) = angles(
+                            Coordinate {
+                                value: &value,
+                                angle: true,
+                            }
+                            .range(loops, &never),
+                        );
+                        curve.bounded(r.0, r.1)?
+                    }
+                };
+                // v: the distance along the sweep, bounded by the samples against the curve's
+                // control points (the curve lies in their hull).
+                let along = |p: Point3| p.dot(*dir);
+                let (cmin, cmax) = g
+                    .control_points()
+                    .iter()
+                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), c| {
+                        (lo.min(along(*c)), hi.max(along(*c)))
+                    });
+                let v = if let BasisCurve::Nurbs(_) = curve {
+                    let r = Coordinate {
+                        value: &along,
+                        angle: false,
+                    }
+                    .range(loops, &never);
+                    let (lo, hi) = linear(r, "an extrusion")?;
+                    (lo - cmax, hi - cmin)
+                } else {
+                    let value = |p: Point3| match curve {
+                        BasisCurve::Line { origin, dir: e } => {
+                            let w = p - *origin;
+                            let ed = e.dot(*dir);
+                            (w.dot(*dir) - ed * w.dot(*e)) / (1.0 - ed * ed)
+                        }
+                        BasisCurve::Conic { frame, .. } => {
+                            (p - frame.origin).dot(frame.z) / dir.dot(frame.z)
+                        }
+                        BasisCurve::Nurbs(_) => 0.0,
+                    };
+                    linear(
+                        Coordinate {
+                            value: &value,
+                            angle: false,
+                        }
+                        .range(loops, &never),
+                        "an extrusion",
+                    )?
+                };
+                extrusion(&g, *dir, v).map_err(|e| e.to_string())
+            }
+        }
+    }
+}
+
+/// The angle of `p` about `f`'s `z` axis from its `x` axis, in `(-π, π]`.
+fn azimuth(f: &Frame, p: Point3) -> f64 {
+    let d = p - f.origin;
+    d.dot(f.y).atan2(d.dot(f.x))
+}
+
+/// The distance of `p` from `f`'s `z` axis.
+fn radial(f: &Frame, p: Point3) -> f64 {
+    let d = p - f.origin;
+    d.dot(f.x).hypot(d.dot(f.y))
+}
+
+/// A unit vector square to the unit vector `z`.
+pub(crate) fn any_normal(z: Point3) -> Point3 {
+    let trial = if z[0].abs() < 0.9 {
+        Point3::new([1.0, 0.0, 0.0])
+    } else {
+        Point3::new([0.0, 1.0, 0.0])
+    };
+    let x = trial - z * trial.dot(z);
+    x * (1.0 / x.norm())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use karkas::Surface;
+
+    fn frame() -> Frame {
+        Frame::new(
+            Point3::new([1.0, 2.0, 3.0]),
+            Point3::new([0.0, 0.0, 1.0]),
+            Point3::new([1.0, 0.0, 0.0]),
+        )
+        .unwrap()
+    }
+
+    fn circle_edge<'a>(f: &'a Frame, r: f64, z: f64, from: f64, to: f64) -> SampledEdge<'a> {
+        SampledEdge::new(Box::new(move |s| {
+            f.at(
+                r * (from + s * (to - from)).cos(),
+                r * (from + s * (to - from)).sin(),
+                z,
+            )
+        }))
+    }
+
+    #[test]
+    fn a_cylinder_face_takes_the_range_of_its_loops() {
+        let f = frame();
+        // A quarter of the side between z = -1 and z = 2, starting at 300 degrees: the range
+        // crosses the seam and is given from 300 to 390 degrees.
+        let (a, b) = (300f64.to_radians(), 390f64.to_radians());
+        let loops = vec![vec![
+            circle_edge(&f, 2.0, -1.0, a, b),
+            SampledEdge::new(Box::new(move |s| {
+                f.at(2.0 * b.cos(), 2.0 * b.sin(), -1.0 + 3.0 * s)
+            })),
+            circle_edge(&f, 2.0, 2.0, b, a),
+            SampledEdge::new(Box::new(move |s| {
+                f.at(2.0 * a.cos(), 2.0 * a.sin(), 2.0 - 3.0 * s)
+            })),
+        ]];
+        let s = BasisSurface::Cylinder(f, 2.0).bounded(&loops).unwrap();
+        let (du, dv) = (s.domain_u(), s.domain_v());
+        assert!(
+            (du.start - a).abs() < 1e-12 && (du.end - b).abs() < 1e-12,
+            "{du:?}"
+        );
+        assert!(
+            (dv.start + 1.0).abs() < 1e-12 && (dv.end - 2.0).abs() < 1e-12,
+            "{dv:?}"
+        );
+        assert!(!s.is_closed_u());
+        // A loop around the axis: the full turn, closed.
+        let around = vec![
+            vec![circle_edge(&f, 2.0, 0.5, 0.0, TAU)],
+            vec![circle_edge(&f, 2.0, 1.5, TAU, 0.0)],
+        ];
+        let s = BasisSurface::Cylinder(f, 2.0).bounded(&around).unwrap();
+        assert!(s.is_closed_u() && s.domain_u().length() == TAU);
+        assert_eq!((s.domain_v().start, s.domain_v().end), (0.5, 1.5));
+    }
+
+    #[test]
+    fn extremes_inside_an_edge_are_refined() {
+        // An oblique ellipse on a cylinder: its height peaks inside the edge.
+        let f = frame();
+        let loops = vec![vec![SampledEdge::new(Box::new(move |s: f64| {
+            let t = 0.3 + s * TAU;
+            f.at(t.cos(), t.sin(), 0.7 * (t - 1.0).sin())
+        }))]];
+        let s = BasisSurface::Cylinder(f, 1.0).bounded(&loops).unwrap();
+        let dv = s.domain_v();
+        assert!(
+            (dv.start + 0.7).abs() < 1e-12 && (dv.end - 0.7).abs() < 1e-12,
+            "{dv:?}"
+        );
+    }
+
+    #[test]
+    fn unbounded_surfaces_without_edges_are_refused() {
+        let e = BasisSurface::Plane(frame()).bounded(&[]).unwrap_err();
+        assert!(e.contains("unbounded"), "{e}");
+        let s = BasisSurface::Sphere(frame(), 2.0).bounded(&[]).unwrap();
+        assert_eq!(s.domain_v().start, -FRAC_PI_2);
+    }
+}

@@ -1,0 +1,650 @@
+//! IGES 5.3 entities to a karkas [`Shape`]: circular arcs (100), composite curves (102),
+//! lines (110), rational B-spline curves (126) and surfaces (128), curves on a parametric
+//! surface (142) and trimmed surfaces (144), each through its transformation matrix (124).
+//!
+//! A trimmed surface becomes a [`Face`] whose loops are its boundaries: the model-space
+//! curves of each 142 as the edges, and its parameter-space curve, when given, as the loop's
+//! parameter curves (so the face's domain needs no inversion). Independent curves and
+//! surfaces (status: not subordinate) become free curves and whole faces. A B-spline's
+//! parameter range (`V0, V1`) cuts the curve exactly; a surface is kept over its knots'
+//! whole domain (its trims bound it).
+
+use std::collections::{BTreeMap, HashSet};
+use std::io::BufRead;
+use std::path::Path;
+
+use karkas::bspline::conic::{elliptic_arc, line_segment};
+use karkas::bspline::{NurbsCurve, NurbsSurface};
+use karkas::shape::{Edge, EdgeLoop, Face, Shape};
+use karkas::{Curve, Grid, Point3, Surface};
+
+use super::iges_records::{read_records, Entry, Field, IgesFile};
+use super::model::{CadFormat, CadModel, LengthUnit, Unread};
+use crate::error::{IoError, Location};
+
+/// The entity types read.
+const READ: &[i64] = &[100, 102, 110, 124, 126, 128, 142, 144];
+
+/// Geometric entity types karkas does not read, with their names.
+const UNREAD: &[(i64, &str)] = &[
+    (104, "conic arc"),
+    (106, "copious data"),
+    (108, "plane"),
+    (112, "parametric spline curve"),
+    (114, "parametric spline surface"),
+    (118, "ruled surface"),
+    (120, "surface of revolution"),
+    (122, "tabulated cylinder"),
+    (130, "offset curve"),
+    (140, "offset surface"),
+    (141, "boundary"),
+    (143, "bounded surface"),
+    (186, "manifold solid B-rep"),
+    (190, "plane surface"),
+    (192, "right circular cylindrical surface"),
+    (194, "right circular conical surface"),
+    (196, "spherical surface"),
+    (198, "toroidal surface"),
+    (510, "face"),
+    (514, "shell"),
+];
+
+/// An affine map `x -> R x + t`.
+#[derive(Clone, Copy, Debug)]
+struct Affine {
+    r: [[f64; 3]; 3],
+    t: [f64; 3],
+}
+
+impl Affine {
+    const IDENTITY: Affine = Affine {
+        r: [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]],
+        t: [0.0; 3],
+    };
+
+    fn apply(&self, p: Point3) -> Point3 {
+        Point3::new(std::array::from_fn(|i| {
+            self.r[i][0] * p[0] + self.r[i][1] * p[1] + self.r[i][2] * p[2] + self.t[i]
+        }))
+    }
+
+    /// `self` after `inner`.
+    fn after(&self, inner: &Affine) -> Affine {
+        let mut out = Affine::IDENTITY;
+        for i in 0..3 {
+            for j in 0..3 {
+                out.r[i][j] = (0..3).map(|k| self.r[i][k] * inner.r[k][j]).sum();
+            }
+            out.t[i] = (0..3).map(|k| self.r[i][k] * inner.t[k]).sum::<f64>() + self.t[i];
+        }
+        out
+    }
+}
+
+/// The parameters of one entry, read by position (0 is the type number).
+struct Params<'a> {
+    path: &'a Path,
+    pointer: i64,
+    entry: &'a Entry,
+    fields: &'a [Field],
+}
+
+impl Params<'_> {
+    fn error(&self, message: impl AsRef<str>) -> IoError {
+        Location::new(self.path, self.entry.param_line.max(self.entry.line)).error(format!(
+            "directory entry {} (type {}): {}",
+            self.pointer,
+            self.entry.kind,
+            message.as_ref()
+        ))
+    }
+
+    fn number(&self, i: usize) -> Result<f64, IoError> {
+        match self.fields.get(i) {
+            Some(Field::Number(x)) => Ok(*x),
+            Some(Field::Empty) => Ok(0.0),
+            Some(Field::Text(_)) => {
+                Err(self.error(format!("parameter {i} is a string, a number is expected")))
+            }
+            None => Err(self.error(format!(
+                "has {} parameters, at least {} expected",
+                self.fields.len().saturating_sub(1),
+                i
+            ))),
+        }
+    }
+
+    fn int(&self, i: usize) -> Result<i64, IoError> {
+        let x = self.number(i)?;
+        if x.fract() == 0.0 && x.abs() < 1e15 {
+            Ok(x as i64)
+        } else {
+            Err(self.error(format!("parameter {i} is {x}, an integer is expected")))
+        }
+    }
+
+    /// A count parameter in `0..=limit`.
+    fn count(&self, i: usize, limit: i64) -> Result<usize, IoError> {
+        let n = self.int(i)?;
+        if (0..=limit).contains(&n) {
+            Ok(n as usize)
+        } else {
+            Err(self.error(format!(
+                "parameter {i} is {n}, a count in 0..={limit} is expected"
+            )))
+        }
+    }
+
+    fn point(&self, i: usize) -> Result<Point3, IoError> {
+        Ok(Point3::new([
+            self.number(i)?,
+            self.number(i + 1)?,
+            self.number(i + 2)?,
+        ]))
+    }
+}
+
+/// Builds the shape of an IGES file.
+struct Builder<'a> {
+    path: &'a Path,
+    file: &'a IgesFile,
+    visiting: HashSet<i64>,
+    used: HashSet<i64>,
+    unread: BTreeMap<(String, &'static str), usize>,
+}
+
+/// The result of reading an entity: its value or the reason it is skipped.
+enum Got<T> {
+    Read(T),
+    Skip(String, &'static str),
+}
+
+impl<'a> Builder<'a> {
+    fn entry(&self, pointer: i64, from: Option<&Params<'_>>) -> Result<&'a Entry, IoError> {
+        self.file.entries.get(&pointer).ok_or_else(|| {
+            let message =
+                format!("points to directory entry {pointer}, which the file does not have");
+            match from {
+                Some(p) => p.error(message),
+                None => Location::new(self.path, 1).error(message),
+            }
+        })
+    }
+
+    fn params(&self, pointer: i64, from: Option<&Params<'_>>) -> Result<Params<'a>, IoError> {
+        let entry = self.entry(pointer, from)?;
+        let fields = entry.params.as_deref().unwrap_or(&[]);
+        Ok(Params {
+            path: self.path,
+            pointer,
+            entry,
+            fields,
+        })
+    }
+
+    fn enter(&mut self, pointer: i64, from: &Params<'_>) -> Result<(), IoError> {
+        if !self.visiting.insert(pointer) || self.visiting.len() > 64 {
+            return Err(from.error(format!(
+                "points to directory entry {pointer}, which points back to it (a cycle)"
+            )));
+        }
+        self.used.insert(pointer);
+        Ok(())
+    }
+
+    /// The transformation of an entry (its matrix after the matrix's own, up to 16 deep).
+    fn transform(&self, entry: &Entry, p: &Params<'_>) -> Result<Affine, IoError> {
+        let mut out = Affine::IDENTITY;
+        let mut next = entry.transform;
+        let mut depth = 0;
+        while next != 0 {
+            depth += 1;
+            if depth > 16 || next < 0 {
+                return Err(
+                    p.error("a chain of transformation matrices that loops or is not a pointer")
+                );
+            }
+            let m = self.params(next, Some(p))?;
+            if m.entry.kind != 124 {
+                return Err(p.error(format!(
+                    "its transformation matrix is entry {next} of type {}",
+                    m.entry.kind
+                )));
+            }
+            let v: Vec<f64> = (1..=12).map(|i| m.number(i)).collect::<Result<_, _>>()?;
+            let a = Affine {
+                r: [[v[0], v[1], v[2]], [v[4], v[5], v[6]], [v[8], v[9], v[10]]],
+                t: [v[3], v[7], v[11]],
+            };
+            out = a.after(&out);
+            next = m.entry.transform;
+        }
+        Ok(out)
+    }
+
+    /// The curve entity `pointer` as NURBS pieces in model space (several for a composite).
+    fn curve(
+        &mut self,
+        pointer: i64,
+        from: &Params<'_>,
+    ) -> Result<Got<Vec<NurbsCurve<3>>>, IoError> {
+        self.enter(pointer, from)?;
+        let result = self.curve_inner(pointer, from);
+        self.visiting.remove(&pointer);
+        result
+    }
+
+    fn curve_inner(
+        &mut self,
+        pointer: i64,
+        from: &Params<'_>,
+    ) -> Result<Got<Vec<NurbsCurve<3>>>, IoError> {
+        let p = self.params(pointer, Some(from))?;
+        let kind = p.entry.kind;
+        let map = self.transform(p.entry, &p)?;
+        let pieces = match kind {
+            100 => {
+                let zt = p.number(1)?;
+                let c = Point3::new([p.number(2)?, p.number(3)?, zt]);
+                let s = Point3::new([p.number(4)?, p.number(5)?, zt]);
+                let e = Point3::new([p.number(6)?, p.number(7)?, zt]);
+                let r = c.distance(s);
+                if r.is_nan() || r <= 0.0 {
+                    return Err(p.error("a circular arc of radius 0"));
+                }
+                let a0 = (s[1] - c[1]).atan2(s[0] - c[0]);
+                let mut a1 = (e[1] - c[1]).atan2(e[0] - c[0]);
+                while a1 <= a0 + 1e-12 {
+                    a1 += std::f64::consts::TAU;
+                }
+                let x = Point3::new([r, 0.0, 0.0]);
+                let y = Point3::new([0.0, r, 0.0]);
+                vec![elliptic_arc(c, x, y, (a0, a1)).map_err(|m| p.error(m.to_string()))?]
+            }
+            110 => {
+                if p.entry.form != 0 {
+                    return Ok(Got::Skip(
+                        "entity 110 (unbounded line)".into(),
+                        "unbounded line",
+                    ));
+                }
+                let (a, b) = (p.point(1)?, p.point(4)?);
+                let length = a.distance(b);
+                if length.is_nan() || length <= 0.0 {
+                    return Ok(Got::Read(Vec::new()));
+                }
+                vec![line_segment(a, b, (0.0, length)).map_err(|m| p.error(m.to_string()))?]
+            }
+            126 => vec![self.bspline_curve(&p)?],
+            102 => {
+                let n = p.count(1, 1 << 20)?;
+                let mut out = Vec::new();
+                for i in 0..n {
+                    let child = p.int(2 + i)?;
+                    match self.curve(child, &p)? {
+                        Got::Read(mut c) => out.append(&mut c),
+                        skip => return Ok(skip),
+                    }
+                }
+                out
+            }
+            _ => {
+                let name = UNREAD
+                    .iter()
+                    .find(|(k, _)| *k == kind)
+                    .map_or("not a curve karkas reads", |(_, n)| n);
+                return Ok(Got::Skip(
+                    format!("entity {kind} ({name})"),
+                    "curve type not read",
+                ));
+            }
+        };
+        Ok(Got::Read(
+            pieces
+                .into_iter()
+                .map(|c| c.map_points(|q| map.apply(q)))
+                .collect(),
+        ))
+    }
+
+    /// Entity 126.
+    fn bspline_curve(&self, p: &Params<'_>) -> Result<NurbsCurve<3>, IoError> {
+        let k = p.count(1, 1 << 24)?;
+        let m = p.count(2, karkas::bspline::MAX_DEGREE as i64)?;
+        let closed = p.int(4)? == 1;
+        let n = k + 1;
+        let knots_at = 7;
+        let nk = n + m + 1;
+        let weights_at = knots_at + nk;
+        let points_at = weights_at + n;
+        let range_at = points_at + 3 * n;
+        let knots: Vec<f64> = (0..nk)
+            .map(|i| p.number(knots_at + i))
+            .collect::<Result<_, _>>()?;
+        let weights: Vec<f64> = (0..n)
+            .map(|i| p.number(weights_at + i))
+            .collect::<Result<_, _>>()?;
+        let points: Vec<Point3> = (0..n)
+            .map(|i| p.point(points_at + 3 * i))
+            .collect::<Result<_, _>>()?;
+        let (v0, v1) = (p.number(range_at)?, p.number(range_at + 1)?);
+        let c = NurbsCurve::new(m, knots, points, weights).map_err(|e| p.error(e.to_string()))?;
+        let d = c.domain();
+        let c = if (v0 > d.start || v1 < d.end) && v0 < v1 && v0 >= d.start && v1 <= d.end {
+            c.segment(v0, v1).map_err(|e| p.error(e.to_string()))?
+        } else {
+            c
+        };
+        let ends_meet = c.eval(c.domain().start).distance(c.eval(c.domain().end))
+            <= 1e-10
+                * c.control_points()
+                    .iter()
+                    .map(|q| q.distance(c.control_points()[0]))
+                    .fold(0.0, f64::max);
+        Ok(c.with_closed(closed && ends_meet))
+    }
+
+    /// Entity 128 in model space.
+    fn surface(
+        &mut self,
+        pointer: i64,
+        from: &Params<'_>,
+    ) -> Result<Got<NurbsSurface<3>>, IoError> {
+        self.enter(pointer, from)?;
+        self.visiting.remove(&pointer);
+        let p = self.params(pointer, Some(from))?;
+        if p.entry.kind != 128 {
+            let kind = p.entry.kind;
+            let name = UNREAD
+                .iter()
+                .find(|(k, _)| *k == kind)
+                .map_or("not a surface karkas reads", |(_, n)| n);
+            return Ok(Got::Skip(
+                format!("trimmed surfaces on entity {kind} ({name})"),
+                "surface type not read",
+            ));
+        }
+        let k1 = p.count(1, 1 << 20)?;
+        let k2 = p.count(2, 1 << 20)?;
+        let m1 = p.count(3, karkas::bspline::MAX_DEGREE as i64)?;
+        let m2 = p.count(4, karkas::bspline::MAX_DEGREE as i64)?;
+        let (closed_u, closed_v) = (p.int(5)? == 1, p.int(6)? == 1);
+        let (nu, nv) = (k1 + 1, k2 + 1);
+        if nu.saturating_mul(nv) > 1 << 24 {
+            return Err(p.error("more than 2^24 control points"));
+        }
+        let su = 10;
+        let sv = su + nu + m1 + 1;
+        let w = sv + nv + m2 + 1;
+        let pts = w + nu * nv;
+        let knots_u: Vec<f64> = (0..nu + m1 + 1)
+            .map(|i| p.number(su + i))
+            .collect::<Result<_, _>>()?;
+        let knots_v: Vec<f64> = (0..nv + m2 + 1)
+            .map(|i| p.number(sv + i))
+            .collect::<Result<_, _>>()?;
+        // The first index (u) runs fastest.
+        let mut weights = vec![0.0; nu * nv];
+        let mut points = vec![Point3::ZERO; nu * nv];
+        for j in 0..nv {
+            for i in 0..nu {
+                let k = i + nu * j;
+                weights[i * nv + j] = p.number(w + k)?;
+                points[i * nv + j] = p.point(pts + 3 * k)?;
+            }
+        }
+        let map = self.transform(p.entry, &p)?;
+        let control =
+            Grid::from_row_major(nu, nv, points.into_iter().map(|q| map.apply(q)).collect())
+                .map_err(|e| p.error(e.to_string()))?;
+        let weights = Grid::from_row_major(nu, nv, weights).map_err(|e| p.error(e.to_string()))?;
+        let s = NurbsSurface::new((m1, knots_u), (m2, knots_v), control, weights)
+            .map_err(|e| p.error(e.to_string()))?;
+        let closed = |u: bool| {
+            let (du, dv) = (s.domain_u(), s.domain_v());
+            let size = s
+                .control_points()
+                .as_slice()
+                .iter()
+                .map(|q| q.distance(*s.control_points().get(0, 0)))
+                .fold(0.0, f64::max);
+            (0..=8).all(|k| {
+                let t = k as f64 / 8.0;
+                let (a, b) = if u {
+                    let v = dv.start + t * dv.length();
+                    (s.eval(du.start, v), s.eval(du.end, v))
+                } else {
+                    let x = du.start + t * du.length();
+                    (s.eval(x, dv.start), s.eval(x, dv.end))
+                };
+                a.distance(b) <= 1e-10 * size
+            })
+        };
+        let (cu, cv) = (closed_u && closed(true), closed_v && closed(false));
+        Ok(Got::Read(s.with_closed(cu, cv)))
+    }
+
+    /// Entity 142: the loop of model-space edges and the parameter-space curves.
+    fn boundary(
+        &mut self,
+        pointer: i64,
+        from: &Params<'_>,
+        surface: &NurbsSurface<3>,
+        outer: bool,
+    ) -> Result<Got<EdgeLoop>, IoError> {
+        self.enter(pointer, from)?;
+        self.visiting.remove(&pointer);
+        let p = self.params(pointer, Some(from))?;
+        if p.entry.kind != 142 {
+            return Err(p.error("a trimmed surface's boundary must be a curve on a surface (142)"));
+        }
+        let (b, c, pref) = (p.int(3)?, p.int(4)?, p.int(5)?);
+        let mut parameter_curves = Vec::new();
+        if b != 0 && pref != 2 {
+            match self.curve(b, &p)? {
+                Got::Read(pieces) => {
+                    parameter_curves = pieces
+                        .iter()
+                        .map(|c| c.map_points(|q| karkas::Point2::new([q[0], q[1]])))
+                        .collect()
+                }
+                Got::Skip(..) if c != 0 => {}
+                Got::Skip(what, why) => return Ok(Got::Skip(what, why)),
+            }
+        }
+        let edges: Vec<Edge> = if c != 0 {
+            match self.curve(c, &p)? {
+                Got::Read(pieces) => pieces
+                    .into_iter()
+                    .map(|curve| Edge {
+                        curve,
+                        forward: true,
+                    })
+                    .collect(),
+                Got::Skip(what, why) if parameter_curves.is_empty() => {
+                    return Ok(Got::Skip(what, why))
+                }
+                Got::Skip(..) => image_edges(&parameter_curves, surface),
+            }
+        } else if !parameter_curves.is_empty() {
+            image_edges(&parameter_curves, surface)
+        } else {
+            return Err(
+                p.error("a curve on a surface with neither its parameter nor its model curve")
+            );
+        };
+        Ok(Got::Read(EdgeLoop {
+            edges,
+            outer,
+            parameter_curves,
+        }))
+    }
+
+    /// Entity 144.
+    fn trimmed(&mut self, pointer: i64) -> Result<Got<Face>, IoError> {
+        let p = self.params(pointer, None)?;
+        self.used.insert(pointer);
+        let surface = match self.surface(p.int(1)?, &p)? {
+            Got::Read(s) => s,
+            Got::Skip(what, why) => return Ok(Got::Skip(what, why)),
+        };
+        let n1 = p.int(2)?;
+        let n2 = p.count(3, 1 << 20)?;
+        let mut loops = Vec::new();
+        if n1 != 0 {
+            match self.boundary(p.int(4)?, &p, &surface, true)? {
+                Got::Read(l) => loops.push(l),
+                Got::Skip(what, why) => return Ok(Got::Skip(what, why)),
+            }
+        }
+        for i in 0..n2 {
+            match self.boundary(p.int(5 + i)?, &p, &surface, false)? {
+                Got::Read(l) => loops.push(l),
+                Got::Skip(what, why) => return Ok(Got::Skip(what, why)),
+            }
+        }
+        Ok(Got::Read(Face {
+            surface,
+            loops,
+            same_sense: true,
+            bounds_solid: false,
+        }))
+    }
+
+    fn skip(&mut self, what: String, why: &'static str) {
+        *self.unread.entry((what, why)).or_insert(0) += 1;
+    }
+}
+
+/// The model-space images of parameter-space curves on `surface`, as polylines of 64
+/// segments per curve (a composition of NURBS is no NURBS of small degree): the edges of a
+/// boundary whose file gives no model-space curve.
+fn image_edges(curves: &[NurbsCurve<2>], surface: &NurbsSurface<3>) -> Vec<Edge> {
+    curves
+        .iter()
+        .filter_map(|c| {
+            let d = c.domain();
+            let n = 64;
+            let points: Vec<Point3> = (0..=n)
+                .map(|k| {
+                    let q = c.eval(d.uniform(k, n + 1));
+                    surface.eval(q[0], q[1])
+                })
+                .collect();
+            let mut knots = vec![0.0];
+            knots.extend((0..=n).map(|k| k as f64));
+            knots.push(n as f64);
+            NurbsCurve::new(1, knots, points, vec![1.0; n + 1])
+                .ok()
+                .map(|curve| Edge {
+                    curve,
+                    forward: true,
+                })
+        })
+        .collect()
+}
+
+/// The unit of the global section's flag and name.
+fn unit(flag: i64, name: &str) -> LengthUnit {
+    let (name, metres) = match flag {
+        1 => ("inch", 0.0254),
+        2 => ("millimetre", 1e-3),
+        4 => ("foot", 0.3048),
+        5 => ("mile", 1609.344),
+        6 => ("metre", 1.0),
+        7 => ("kilometre", 1e3),
+        8 => ("mil", 2.54e-5),
+        9 => ("micrometre", 1e-6),
+        10 => ("centimetre", 1e-2),
+        11 => ("microinch", 2.54e-8),
+        _ => match name.to_ascii_uppercase().as_str() {
+            "IN" | "INCH" => ("inch", 0.0254),
+            "M" => ("metre", 1.0),
+            "CM" => ("centimetre", 1e-2),
+            "FT" => ("foot", 0.3048),
+            _ => ("millimetre", 1e-3),
+        },
+    };
+    LengthUnit {
+        name: name.into(),
+        metres,
+    }
+}
+
+/// Reads an IGES file.
+pub(crate) fn read_iges(name: &Path, reader: &mut dyn BufRead) -> Result<CadModel, IoError> {
+    let file = read_records(name, reader, &|k| READ.contains(&k))?;
+    let mut b = Builder {
+        path: name,
+        file: &file,
+        visiting: HashSet::new(),
+        used: HashSet::new(),
+        unread: BTreeMap::new(),
+    };
+    let mut shape = Shape::default();
+    let roots: Vec<(i64, i64)> = file
+        .entries
+        .iter()
+        .filter(|(_, e)| e.subordinate == 0 && READ.contains(&e.kind))
+        .map(|(&p, e)| (p, e.kind))
+        .collect();
+    for &(pointer, kind) in &roots {
+        if kind == 144 {
+            match b.trimmed(pointer)? {
+                Got::Read(face) => shape.faces.push(face),
+                Got::Skip(what, why) => b.skip(what, why),
+            }
+        }
+    }
+    for &(pointer, kind) in &roots {
+        if b.used.contains(&pointer) {
+            continue;
+        }
+        let from = b.params(pointer, None)?;
+        match kind {
+            128 => match b.surface(pointer, &from)? {
+                Got::Read(s) => shape.faces.push(Face::whole(s)),
+                Got::Skip(what, why) => b.skip(what, why),
+            },
+            100 | 102 | 110 | 126 => match b.curve(pointer, &from)? {
+                Got::Read(mut c) => shape.curves.append(&mut c),
+                Got::Skip(what, why) => b.skip(what, why),
+            },
+            _ => {}
+        }
+    }
+    let mut unread: Vec<Unread> = b
+        .unread
+        .iter()
+        .map(|((what, why), &count)| Unread {
+            what: what.clone(),
+            count,
+            reason: (*why).to_owned(),
+        })
+        .collect();
+    for (kind, &count) in &file.others {
+        if let Some((_, n)) = UNREAD.iter().find(|(k, _)| k == kind) {
+            unread.push(Unread {
+                what: format!("entity {kind} ({n})"),
+                count,
+                reason: "entity type not read".into(),
+            });
+        }
+    }
+    let mut notes = Vec::new();
+    if file.scale != 1.0 {
+        notes.push(format!(
+            "model space scale {} (coordinates kept as written)",
+            file.scale
+        ));
+    }
+    Ok(CadModel {
+        path: name.to_path_buf(),
+        format: CadFormat::Iges,
+        shape,
+        unit: unit(file.unit_flag, &file.unit_name),
+        unread,
+        notes,
+        entities: file.entries.len(),
+    })
+}

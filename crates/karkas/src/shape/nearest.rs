@@ -1,0 +1,656 @@
+//! The point of a shape's faces nearest to given points: inspection of measured points
+//! against a CAD model.
+//!
+//! Every face is cut into cells of its parameter rectangle, each at most `size / 48` across
+//! (`size` the shape's diagonal; at most 64 x 64 cells a face); a cell keeps its centre point
+//! and a radius bounding its points' distance to the centre (the largest distance to its
+//! corners and edge midpoints, or half the sum of its edges' two-chord lengths, times 1.25: the
+//! bound of [`SurfaceProjector`](crate::geometry::SurfaceProjector)). Cells outside a trimmed
+//! face are dropped, and the edges of trimmed faces are cut into segments kept the same way.
+//! All centres go into one k-d tree (the `kiddo` crate). For a query `q`:
+//!
+//! 1. the nearest point known to lie on the shape (a centre inside its face, or on an edge)
+//!    bounds the distance from above;
+//! 2. every cell or segment whose centre is within that bound plus the largest radius is a
+//!    candidate, its distance bounded from below by `|q - centre| - radius`;
+//! 3. candidates are searched nearest bound first, until the bound exceeds the best distance:
+//!    a cell by Newton's method on the distance from its centre (projected at the surface's
+//!    borders, as in [`SurfaceProjector`](crate::geometry::SurfaceProjector)), accepted when
+//!    the foot lies in the face ([`FaceDomain::contains`]); a segment by Newton's method on
+//!    the edge curve within the edge. A cell of the face found best whose parameters hold the
+//!    best foot is skipped (Newton would find the same point).
+//!
+//! The distance is signed for faces that bound a solid: positive on the side the face's
+//! normal points to (outside), from the normal at the foot (at an edge, the normal of the
+//! face the edge bounds there; near a sharp concave edge the side may then be the other
+//! face's). Cost: building `O(c log c)` for `c` cells; a query a tree search and a few Newton
+//! solves; batches run in parallel.
+
+use kiddo::immutable::float::kdtree::ImmutableKdTree;
+use kiddo::SquaredEuclidean;
+use rayon::prelude::*;
+
+use super::{FaceDomain, Shape};
+use crate::bspline::NurbsCurve;
+use crate::core::{Curve, Interval, Surface};
+use crate::geometry::surface_nearest::newton_foot;
+use crate::geometry::SurfaceProjector;
+use crate::{Point3, Result};
+
+/// Cells across the shape's diagonal: the size of a cell.
+const CELLS_ACROSS: f64 = 48.0;
+/// The most cells along one direction of a face.
+const MAX_CELLS: usize = 64;
+/// The safety factor on a cell's radius (its points are sampled, not bounded).
+const RADIUS_MARGIN: f64 = 1.25;
+/// Batches at least this large run in parallel.
+const PARALLEL_BATCH: usize = 256;
+/// Newton steps on an edge curve.
+const CURVE_STEPS: usize = 40;
+
+/// The point of a shape nearest to a query point.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ShapeNearest {
+    /// The index of the face (in [`Shape::faces`]).
+    pub face: usize,
+    /// The foot's parameters on the face's surface.
+    pub u: f64,
+    /// See [`u`](ShapeNearest::u).
+    pub v: f64,
+    /// The foot point.
+    pub point: Point3,
+    /// The distance from the query point to the shape.
+    pub distance: f64,
+    /// The distance signed by the side of the face (positive outside the solid) for a face
+    /// that bounds a solid; `None` otherwise.
+    pub signed: Option<f64>,
+    /// True when the foot lies on an edge of a trimmed face (found on the edge's curve).
+    pub on_edge: bool,
+}
+
+impl ShapeNearest {
+    /// The result for a query that has none (a non-finite coordinate, an empty shape).
+    pub const UNDEFINED: ShapeNearest = ShapeNearest {
+        face: usize::MAX,
+        u: f64::NAN,
+        v: f64::NAN,
+        point: Point3::new([f64::NAN; 3]),
+        distance: f64::NAN,
+        signed: None,
+        on_edge: false,
+    };
+}
+
+/// Where a cell is.
+#[derive(Clone, Copy, Debug)]
+enum Place {
+    /// A rectangle `u x v` of the face's surface.
+    Surface { u: (f64, f64), v: (f64, f64) },
+    /// A stretch `t` of an edge curve (loop `edge_loop`, edge `edge` of the face), with the
+    /// surface parameters near its middle.
+    Edge {
+        edge_loop: usize,
+        edge: usize,
+        t: (f64, f64),
+        uv: (f64, f64),
+    },
+}
+
+/// A cell of a face or a segment of an edge.
+#[derive(Clone, Copy, Debug)]
+struct Cell {
+    face: usize,
+    place: Place,
+    centre: Point3,
+    radius: f64,
+}
+
+/// A shape prepared for nearest-point queries.
+///
+/// ```
+/// use karkas::bspline::sweep::{sphere, Frame};
+/// use karkas::shape::{Face, Shape, ShapeProjector};
+/// use karkas::Point3;
+/// let frame = Frame::new(Point3::ZERO, Point3::new([0.0, 0.0, 1.0]), Point3::new([1.0, 0.0, 0.0])).unwrap();
+/// let ball = sphere(&frame, 2.0, (0.0, std::f64::consts::TAU), (-1.5707963267948966, 1.5707963267948966))
+///     .unwrap()
+///     .with_closed(true, false);
+/// let mut face = Face::whole(ball);
+/// face.bounds_solid = true;
+/// let shape = Shape { faces: vec![face], curves: vec![] };
+/// let projector = ShapeProjector::new(&shape, 0.0).unwrap();
+/// let near = projector.nearest(Point3::new([0.0, 3.0, 1.0]));
+/// assert!((near.distance - (10f64.sqrt() - 2.0)).abs() < 1e-14);
+/// assert!(near.signed.unwrap() > 0.0);
+/// ```
+pub struct ShapeProjector<'a> {
+    shape: &'a Shape,
+    domains: Vec<FaceDomain>,
+    cells: Vec<Cell>,
+    tree: ImmutableKdTree<f64, u64, 3, 32>,
+    /// Points on the shape (cell centres inside their faces, segment centres): the cell each
+    /// is the centre of.
+    anchors: Vec<usize>,
+    anchor_tree: ImmutableKdTree<f64, u64, 3, 32>,
+    max_radius: f64,
+    accuracy: f64,
+}
+
+impl<'a> ShapeProjector<'a> {
+    /// Prepares `shape` for queries. `accuracy` is the tolerance on the foot parameters
+    /// (non-positive: full precision).
+    ///
+    /// Errors: a face whose samples are not finite ([`Error::NonFiniteArgument`](crate::Error)).
+    pub fn new(shape: &'a Shape, accuracy: f64) -> Result<Self> {
+        let size = shape.size().max(f64::MIN_POSITIVE);
+        let target = size / CELLS_ACROSS;
+        let domains: Vec<FaceDomain> = shape
+            .faces
+            .par_iter()
+            .map(FaceDomain::of)
+            .collect::<Result<_>>()?;
+        let per_face: Vec<(Vec<Cell>, Vec<usize>)> = shape
+            .faces
+            .par_iter()
+            .zip(&domains)
+            .enumerate()
+            .map(|(k, (face, domain))| face_cells(k, face, domain, target, size))
+            .collect::<Result<_>>()?;
+        let mut cells = Vec::new();
+        let mut anchors = Vec::new();
+        for (face_cells, inside) in per_face {
+            let base = cells.len();
+            anchors.extend(inside.into_iter().map(|i| base + i));
+            cells.extend(face_cells);
+        }
+        let max_radius = cells.iter().map(|c| c.radius).fold(0.0, f64::max);
+        let coords: Vec<[f64; 3]> = cells.iter().map(|c| c.centre.0).collect();
+        let anchor_coords: Vec<[f64; 3]> = anchors.iter().map(|&i| cells[i].centre.0).collect();
+        Ok(ShapeProjector {
+            shape,
+            domains,
+            tree: ImmutableKdTree::new_from_slice(&coords),
+            anchor_tree: ImmutableKdTree::new_from_slice(&anchor_coords),
+            cells,
+            anchors,
+            max_radius,
+            accuracy: accuracy.max(0.0),
+        })
+    }
+
+    /// The number of cells and edge segments searched.
+    pub fn cell_count(&self) -> usize {
+        self.cells.len()
+    }
+
+    /// Where face `k` lies in its surface's parameters.
+    pub fn domain(&self, k: usize) -> &FaceDomain {
+        &self.domains[k]
+    }
+
+    /// The nearest point of the shape's faces to `q` ([`ShapeNearest::UNDEFINED`] for a
+    /// non-finite `q` or a shape without faces).
+    pub fn nearest(&self, q: Point3) -> ShapeNearest {
+        if !q.is_finite() || self.anchors.is_empty() {
+            return ShapeNearest::UNDEFINED;
+        }
+        let first = self.anchor_tree.nearest_one::<SquaredEuclidean>(&q.0).item as usize;
+        let anchor = self.cells[self.anchors[first.min(self.anchors.len() - 1)]];
+        let mut best = self.at_centre(&anchor, q);
+        let reach = best.distance + self.max_radius;
+        let mut candidates: Vec<(f64, usize)> = self
+            .tree
+            .within_unsorted::<SquaredEuclidean>(&q.0, reach * reach)
+            .into_iter()
+            .map(|n| {
+                let k = (n.item as usize).min(self.cells.len() - 1);
+                (n.distance.sqrt() - self.cells[k].radius, k)
+            })
+            .filter(|&(lower, _)| lower < best.distance)
+            .collect();
+        candidates.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+        let mut searched_face_foot = false;
+        for (lower, k) in candidates {
+            if lower >= best.distance {
+                break;
+            }
+            let cell = &self.cells[k];
+            if let Place::Surface { u, v } = cell.place {
+                if searched_face_foot
+                    && cell.face == best.face
+                    && !best.on_edge
+                    && (u.0..=u.1).contains(&best.u)
+                    && (v.0..=v.1).contains(&best.v)
+                {
+                    continue;
+                }
+            }
+            if let Some(found) = self.search(cell, q) {
+                if found.distance < best.distance {
+                    searched_face_foot = !found.on_edge;
+                    best = found;
+                }
+            }
+        }
+        self.sign(best, q)
+    }
+
+    /// The nearest points to every point of `qs` (in parallel for large batches).
+    pub fn nearest_all(&self, qs: &[Point3]) -> Vec<ShapeNearest> {
+        if qs.len() < PARALLEL_BATCH {
+            qs.iter().map(|&q| self.nearest(q)).collect()
+        } else {
+            qs.par_iter()
+                .with_min_len(64)
+                .map(|&q| self.nearest(q))
+                .collect()
+        }
+    }
+
+    /// The cell's centre as a result (a point of the shape).
+    fn at_centre(&self, cell: &Cell, q: Point3) -> ShapeNearest {
+        let (u, v, on_edge) = match cell.place {
+            Place::Surface { u, v } => (0.5 * (u.0 + u.1), 0.5 * (v.0 + v.1), false),
+            Place::Edge { uv, .. } => (uv.0, uv.1, true),
+        };
+        ShapeNearest {
+            face: cell.face,
+            u,
+            v,
+            point: cell.centre,
+            distance: cell.centre.distance(q),
+            signed: None,
+            on_edge,
+        }
+    }
+
+    /// The foot of `q` found from `cell`, if it lies on the face.
+    fn search(&self, cell: &Cell, q: Point3) -> Option<ShapeNearest> {
+        let face = &self.shape.faces[cell.face];
+        let s = &face.surface;
+        let closed = (s.is_closed_u(), s.is_closed_v());
+        match cell.place {
+            Place::Surface { u, v } => {
+                let start = (0.5 * (u.0 + u.1), 0.5 * (v.0 + v.1));
+                let foot = newton_foot(s, q, start, closed, self.accuracy);
+                let domain = &self.domains[cell.face];
+                (domain.is_whole() || domain.contains(foot.u, foot.v)).then_some(ShapeNearest {
+                    face: cell.face,
+                    u: foot.u,
+                    v: foot.v,
+                    point: foot.point,
+                    distance: foot.distance,
+                    signed: None,
+                    on_edge: false,
+                })
+            }
+            Place::Edge {
+                edge_loop,
+                edge,
+                t,
+                uv,
+            } => {
+                let curve = &face.loops[edge_loop].edges[edge].curve;
+                let (_, point, distance) = curve_foot(curve, q, t);
+                Some(ShapeNearest {
+                    face: cell.face,
+                    u: uv.0,
+                    v: uv.1,
+                    point,
+                    distance,
+                    signed: None,
+                    on_edge: true,
+                })
+            }
+        }
+    }
+
+    /// `found` with its parameters made exact on an edge (for the normal) and its sign.
+    fn sign(&self, mut found: ShapeNearest, q: Point3) -> ShapeNearest {
+        let face = &self.shape.faces[found.face];
+        if found.on_edge && face.bounds_solid {
+            let s = &face.surface;
+            let closed = (s.is_closed_u(), s.is_closed_v());
+            let foot = newton_foot(s, found.point, (found.u, found.v), closed, 0.0);
+            found.u = foot.u;
+            found.v = foot.v;
+        }
+        if face.bounds_solid {
+            found.signed = face.normal(found.u, found.v).map(|n| {
+                if (q - found.point).dot(n) >= 0.0 {
+                    found.distance
+                } else {
+                    -found.distance
+                }
+            });
+        }
+        found
+    }
+}
+
+/// The cells of face `k` (a face cut into rectangles, plus its edges' segments when it is
+/// trimmed) and the indices of those whose centre lies on the face.
+fn face_cells(
+    k: usize,
+    face: &super::Face,
+    domain: &FaceDomain,
+    target: f64,
+    size: f64,
+) -> Result<(Vec<Cell>, Vec<usize>)> {
+    let s = &face.surface;
+    let (du, dv) = (s.domain_u(), s.domain_v());
+    // The surface's extent along u and v, measured on a 9 x 9 sample.
+    let probe = |n: usize, along_u: bool| -> f64 {
+        (0..=8)
+            .map(|j| {
+                let mut length = 0.0;
+                let mut previous: Option<Point3> = None;
+                for i in 0..=n {
+                    let (a, b) = (i as f64 / n as f64, j as f64 / 8.0);
+                    let p = if along_u {
+                        s.eval(du.start + a * du.length(), dv.start + b * dv.length())
+                    } else {
+                        s.eval(du.start + b * du.length(), dv.start + a * dv.length())
+                    };
+                    if let Some(q) = previous {
+                        length += p.distance(q);
+                    }
+                    previous = Some(p);
+                }
+                length
+            })
+            .fold(0.0, f64::max)
+    };
+    let count = |length: f64| ((length / target).ceil() as usize).clamp(1, MAX_CELLS);
+    let (nu, nv) = (count(probe(32, true)), count(probe(32, false)));
+    // Samples at the cells' corners and midpoints: (2 nu + 1) x (2 nv + 1).
+    let (mu, mv) = (2 * nu + 1, 2 * nv + 1);
+    let us: Vec<f64> = (0..mu).map(|i| du.uniform(i, mu)).collect();
+    let vs: Vec<f64> = (0..mv).map(|j| dv.uniform(j, mv)).collect();
+    let mut grid = vec![Point3::ZERO; mu * mv];
+    s.eval_grid_into(&us, &vs, &mut grid);
+    if grid.iter().any(|p| !p.is_finite()) {
+        return Err(crate::Error::NonFiniteArgument {
+            what: "a sample of a face",
+        });
+    }
+    let at = |i: usize, j: usize| grid[i * mv + j];
+    let whole = domain.is_whole();
+    // Cells that hold a vertex of a trim loop are partly on the face.
+    let mut crossed = vec![false; nu * nv];
+    if !whole {
+        for l in &domain.loops {
+            for p in &l.points {
+                let a = (((p[0] - du.start) / du.length()) * nu as f64).floor();
+                let b = (((p[1] - dv.start) / dv.length()) * nv as f64).floor();
+                if a >= 0.0 && b >= 0.0 && (a as usize) < nu && (b as usize) < nv {
+                    crossed[a as usize * nv + b as usize] = true;
+                }
+            }
+        }
+    }
+    let mut cells = Vec::with_capacity(nu * nv);
+    let mut anchors = Vec::new();
+    for a in 0..nu {
+        for b in 0..nv {
+            let (i, j) = (2 * a + 1, 2 * b + 1);
+            let centre = at(i, j);
+            let mut far: f64 = 0.0;
+            for di in 0..3 {
+                for dj in 0..3 {
+                    far = far.max(centre.distance(at(i + di - 1, j + dj - 1)));
+                }
+            }
+            let two_chords = |p: Point3, m: Point3, q: Point3| p.distance(m) + m.distance(q);
+            let lu = two_chords(at(i - 1, j - 1), at(i, j - 1), at(i + 1, j - 1)).max(two_chords(
+                at(i - 1, j + 1),
+                at(i, j + 1),
+                at(i + 1, j + 1),
+            ));
+            let lv = two_chords(at(i - 1, j - 1), at(i - 1, j), at(i - 1, j + 1)).max(two_chords(
+                at(i + 1, j - 1),
+                at(i + 1, j),
+                at(i + 1, j + 1),
+            ));
+            let radius = RADIUS_MARGIN * far.max(0.5 * (lu + lv)) + 1e-12 * size;
+            let (u0, u1, v0, v1) = (us[i - 1], us[i + 1], vs[j - 1], vs[j + 1]);
+            let centre_inside = whole || domain.contains(us[i], vs[j]);
+            let keep = whole
+                || centre_inside
+                || crossed[a * nv + b]
+                || (0..3)
+                    .any(|di| (0..3).any(|dj| domain.contains(us[i + di - 1], vs[j + dj - 1])));
+            if !keep {
+                continue;
+            }
+            if centre_inside {
+                anchors.push(cells.len());
+            }
+            cells.push(Cell {
+                face: k,
+                place: Place::Surface {
+                    u: (u0, u1),
+                    v: (v0, v1),
+                },
+                centre,
+                radius,
+            });
+        }
+    }
+    if !whole {
+        edge_cells(k, face, target, size, &mut cells, &mut anchors)?;
+    }
+    Ok((cells, anchors))
+}
+
+/// The segments of the edges of a trimmed face, each at most `target` long.
+fn edge_cells(
+    k: usize,
+    face: &super::Face,
+    target: f64,
+    size: f64,
+    cells: &mut Vec<Cell>,
+    anchors: &mut Vec<usize>,
+) -> Result<()> {
+    let s = &face.surface;
+    let projector = SurfaceProjector::new(s, (24, 24), 0.0)?;
+    let closed = (s.is_closed_u(), s.is_closed_v());
+    for (l, edge_loop) in face.loops.iter().enumerate() {
+        for (e, edge) in edge_loop.edges.iter().enumerate() {
+            let c = &edge.curve;
+            let d = c.domain();
+            let samples = 64usize;
+            let pts: Vec<Point3> = (0..=samples)
+                .map(|i| c.eval(d.uniform(i, samples + 1)))
+                .collect();
+            let length: f64 = pts.windows(2).map(|w| w[0].distance(w[1])).sum();
+            let n = ((length / target).ceil() as usize).clamp(1, 4096);
+            let mut uv: Option<(f64, f64)> = None;
+            for i in 0..n {
+                let (t0, t1) = (d.uniform(i, n + 1), d.uniform(i + 1, n + 1));
+                let tm = 0.5 * (t0 + t1);
+                let centre = c.eval(tm);
+                // Half the segment's two-chord length bounds its points' distance to the centre.
+                let span = c.eval(t0).distance(c.eval(0.5 * (t0 + tm)))
+                    + c.eval(0.5 * (t0 + tm)).distance(centre);
+                let span2 = centre.distance(c.eval(0.5 * (tm + t1)))
+                    + c.eval(0.5 * (tm + t1)).distance(c.eval(t1));
+                let radius = RADIUS_MARGIN * span.max(span2) + 1e-12 * size;
+                let foot = match uv {
+                    Some(start) => newton_foot(s, centre, start, closed, 0.0),
+                    None => projector.nearest(centre),
+                };
+                uv = Some((foot.u, foot.v));
+                anchors.push(cells.len());
+                cells.push(Cell {
+                    face: k,
+                    place: Place::Edge {
+                        edge_loop: l,
+                        edge: e,
+                        t: (t0, t1),
+                        uv: (foot.u, foot.v),
+                    },
+                    centre,
+                    radius,
+                });
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The point of `curve` (over its whole domain, the edge) nearest `q` near the stretch `t`:
+/// Newton's method on `|C(t) - q|^2 / 2` from the middle of `t`, clamped to the domain, steps
+/// halved until the distance does not grow. The parameter, the point and the distance.
+fn curve_foot(curve: &NurbsCurve<3>, q: Point3, t: (f64, f64)) -> (f64, Point3, f64) {
+    let d: Interval = curve.domain();
+    let mut x = 0.5 * (t.0 + t.1);
+    let mut p = curve.eval(x);
+    let mut dist2 = p.distance_sq(q);
+    let floor = 4.0 * f64::EPSILON * d.length().max(1.0);
+    for _ in 0..CURVE_STEPS {
+        let [c, c1, c2] = curve.eval_with_derivatives(x);
+        let r = c - q;
+        let g = r.dot(c1);
+        let h = c1.norm_sq() + r.dot(c2);
+        let mut step = if h > 0.0 {
+            -g / h
+        } else if c1.norm_sq() > 0.0 {
+            -g / c1.norm_sq()
+        } else {
+            break;
+        };
+        let mut improved = false;
+        for _ in 0..30 {
+            let nx = d.clamp(x + step);
+            let np = curve.eval(nx);
+            let nd2 = np.distance_sq(q);
+            if nd2 <= dist2 * (1.0 + 8.0 * f64::EPSILON) {
+                (x, p, dist2) = (nx, np, nd2);
+                improved = true;
+                break;
+            }
+            step *= 0.5;
+        }
+        if !improved || step.abs() <= floor {
+            break;
+        }
+    }
+    (x, p, dist2.sqrt())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::bspline::conic::{elliptic_arc, line_segment};
+    use crate::bspline::sweep::{cylinder, plane, Frame};
+    use crate::shape::{Edge, EdgeLoop, Face};
+    use std::f64::consts::TAU;
+
+    fn frame() -> Frame {
+        Frame::new(
+            Point3::ZERO,
+            Point3::new([0.0, 0.0, 1.0]),
+            Point3::new([1.0, 0.0, 0.0]),
+        )
+        .unwrap()
+    }
+
+    /// A square plate [-2, 2]^2 in z = 0 with a round hole of radius 1 at the origin.
+    fn plate_with_hole() -> Shape {
+        let f = frame();
+        let surface = plane(&f, (-2.0, 2.0), (-2.0, 2.0)).unwrap();
+        let corner = |x: f64, y: f64| Point3::new([x, y, 0.0]);
+        let side = |a: Point3, b: Point3| Edge {
+            curve: line_segment(a, b, (0.0, a.distance(b))).unwrap(),
+            forward: true,
+        };
+        let outer = EdgeLoop::new(
+            vec![
+                side(corner(-2.0, -2.0), corner(2.0, -2.0)),
+                side(corner(2.0, -2.0), corner(2.0, 2.0)),
+                side(corner(2.0, 2.0), corner(-2.0, 2.0)),
+                side(corner(-2.0, 2.0), corner(-2.0, -2.0)),
+            ],
+            true,
+        );
+        let hole = EdgeLoop::new(
+            vec![Edge {
+                curve: elliptic_arc(Point3::ZERO, f.x, f.y, (0.0, TAU)).unwrap(),
+                forward: false,
+            }],
+            false,
+        );
+        Shape {
+            faces: vec![Face {
+                surface,
+                loops: vec![outer, hole],
+                same_sense: true,
+                bounds_solid: false,
+            }],
+            curves: vec![],
+        }
+    }
+
+    #[test]
+    fn points_over_a_hole_find_its_rim() {
+        let shape = plate_with_hole();
+        let p = ShapeProjector::new(&shape, 0.0).unwrap();
+        // Above the plate: straight down.
+        let n = p.nearest(Point3::new([1.5, 1.5, 0.3]));
+        assert!((n.distance - 0.3).abs() < 1e-14 && !n.on_edge, "{n:?}");
+        // Above the hole: the rim, at distance sqrt(0.5^2 + 0.3^2) from (0.5, 0, 0.3).
+        let n = p.nearest(Point3::new([0.5, 0.0, 0.3]));
+        assert!((n.distance - 0.5f64.hypot(0.3)).abs() < 1e-13, "{n:?}");
+        assert!(n.on_edge && n.point.distance(Point3::new([1.0, 0.0, 0.0])) < 1e-12);
+        // Far above the centre: every rim point is as near; the distance is sqrt(1 + 4).
+        let n = p.nearest(Point3::new([0.0, 0.0, 2.0]));
+        assert!((n.distance - 5f64.sqrt()).abs() < 1e-12, "{n:?}");
+        assert_eq!(
+            ShapeNearest::UNDEFINED.face,
+            p.nearest(Point3::new([f64::NAN, 0.0, 0.0])).face
+        );
+    }
+
+    #[test]
+    fn distances_equal_a_brute_force_search_and_are_signed_on_solids() {
+        let f = frame();
+        let side = cylinder(&f, 1.0, (0.0, TAU), (0.0, 2.0))
+            .unwrap()
+            .with_closed(true, false);
+        let mut face = Face::whole(side);
+        face.bounds_solid = true;
+        let shape = Shape {
+            faces: vec![face],
+            curves: vec![],
+        };
+        let p = ShapeProjector::new(&shape, 0.0).unwrap();
+        for k in 0..200 {
+            let a = 0.37 * k as f64;
+            let r = 0.2 + 1.6 * ((k * 7) % 11) as f64 / 10.0;
+            let z = -0.5 + 3.0 * ((k * 3) % 13) as f64 / 12.0;
+            let q = Point3::new([r * a.cos(), r * a.sin(), z]);
+            let n = p.nearest(q);
+            // The exact distance to the finite cylinder's side.
+            let radial = r - 1.0;
+            let axial = if z < 0.0 {
+                -z
+            } else if z > 2.0 {
+                z - 2.0
+            } else {
+                0.0
+            };
+            let want = radial.hypot(axial);
+            assert!(
+                (n.distance - want).abs() < 1e-12,
+                "{k}: {q:?} {} {want}",
+                n.distance
+            );
+            let signed = n.signed.unwrap();
+            assert_eq!(signed.abs(), n.distance);
+            if axial == 0.0 && radial.abs() > 1e-9 {
+                assert_eq!(signed > 0.0, radial > 0.0, "{k}");
+            }
+        }
+    }
+}
