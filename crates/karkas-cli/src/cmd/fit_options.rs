@@ -9,10 +9,12 @@
 use crate::output::memory::check_memory;
 use anyhow::{bail, Context, Result};
 use clap::{Args, ValueEnum};
+use karkas::fair::RESOLUTION_ULPS;
 use karkas::fit::{
     fit_curve, fit_curve_adaptive, knots_from_list, CurveFit, FitEnds, FitOptions, PenaltyRule,
     DEFAULT_FAIRNESS,
 };
+use karkas::geometry::points_out_of_order;
 use karkas::Point;
 
 /// The bytes a fit works in per knot, in 3-D (the most): the knot and its spline values and
@@ -157,7 +159,25 @@ impl FitCurveOptions {
         input: &str,
     ) -> Result<CurveFit<D>> {
         let options = self.options();
-        Ok(match (knots, self.tolerance.or(tolerance)) {
+        // A shuffled list gives a page of warnings about empty knot spans: say once what is
+        // wrong instead.
+        if let Some(reversals) = points_out_of_order(points) {
+            return Err(karkas::Error::PointsOutOfOrder { reversals }).context(input.to_owned());
+        }
+        let tolerance = self.tolerance.or(tolerance);
+        if let Some(tol) = tolerance {
+            // The same bound as `curve fair`'s: no fit can be asked closer than the
+            // coordinates resolve.
+            let largest = points.iter().fold(0.0_f64, |a, p| a.max(p.max_abs()));
+            if tol < RESOLUTION_ULPS * f64::EPSILON * largest {
+                bail!(
+                    "{input}: --tolerance {tol:e} is below what the coordinates can resolve \
+                     ({RESOLUTION_ULPS} units in the last place of the largest coordinate, {:.3e})",
+                    RESOLUTION_ULPS * f64::EPSILON * largest
+                );
+            }
+        }
+        Ok(match (knots, tolerance) {
             (Some(knots), _) => fit_curve(points, knots, &options).context(input.to_owned())?,
             (None, Some(tol)) => {
                 fit_curve_adaptive(points, tol, &options)

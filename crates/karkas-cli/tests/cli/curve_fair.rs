@@ -211,3 +211,62 @@ fn bad_input_exits_2_naming_the_cause() {
         None,
     );
 }
+
+/// `curve fit` (every mode) on a shuffled list: one line "points not in order" and exit 2, not
+/// a page of warnings about empty knot spans; a tolerance below what the coordinates resolve:
+/// one line naming it and exit 2; the same points in order are fitted.
+#[test]
+fn curve_fit_refuses_shuffled_points_and_unresolvable_tolerances_in_one_line() {
+    let dir = temp_dir();
+    let text = arc(41);
+    let lines: Vec<&str> = text.lines().skip(1).collect();
+    let mut shuffled = String::from("x,y\n");
+    for i in 0..41 {
+        shuffled.push_str(lines[(i * 17) % 41]);
+        shuffled.push('\n');
+    }
+    let shuffled = write(dir.path(), "shuffled.csv", &shuffled);
+    let ordered = write(dir.path(), "arc.csv", &text);
+    let out = dir.path().join("fit.csv");
+    for mode in [["--tolerance", "1e-3"], ["--knots", "8"]] {
+        let args = [
+            "curve",
+            "fit",
+            s(&shuffled),
+            mode[0],
+            mode[1],
+            "-o",
+            s(&out),
+        ];
+        assert_rejected(
+            &args,
+            &["points not in order", "shuffled.csv"][..],
+            &out,
+            None,
+        );
+    }
+    assert_rejected(
+        &[
+            "curve",
+            "fit",
+            s(&ordered),
+            "--tolerance",
+            "1e-20",
+            "-o",
+            s(&out),
+        ],
+        &["--tolerance", "resolve"][..],
+        &out,
+        None,
+    );
+    let o = karkas(&[
+        "curve",
+        "fit",
+        s(&ordered),
+        "--tolerance",
+        "1e-3",
+        "-o",
+        s(&out),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+}

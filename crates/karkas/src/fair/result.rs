@@ -83,12 +83,12 @@ impl<const D: usize> Frame<D> {
     }
 
     /// A point in the fairer's frame.
-    fn to_unit(&self, p: Point<D>) -> Point<D> {
+    fn unit(&self, p: Point<D>) -> Point<D> {
         ((p - self.corner) - self.half) * (1.0 / self.size)
     }
 
     /// A point of the fairer's frame back in the points' frame.
-    fn from_unit(&self, c: Point<D>) -> Point<D> {
+    fn back(&self, c: Point<D>) -> Point<D> {
         self.corner + (self.half + c * self.size)
     }
 }
@@ -182,7 +182,7 @@ fn fair_points<const D: usize>(
             got: 1,
         });
     }
-    let scaled: Vec<Point<D>> = points.iter().map(|&p| frame.to_unit(p)).collect();
+    let scaled: Vec<Point<D>> = points.iter().map(|&p| frame.unit(p)).collect();
     let tolerance = options.tolerance / size;
     let n = scaled.len();
     let end = |side: usize| match (options.ends, tangents) {
@@ -253,7 +253,7 @@ fn fair_points<const D: usize>(
     // Join the pieces' clamped B-splines, sharing the corner controls.
     let mut knots: Vec<f64> = Vec::new();
     let mut controls: Vec<Point<D>> = Vec::new();
-    let unscale = |c: &Point<D>| frame.from_unit(*c);
+    let unscale = |c: &Point<D>| frame.back(*c);
     let mut curve = None;
     if pieces.len() == 1 {
         let spline = pieces[0].space.to_bspline(&pieces[0].controls)?;
