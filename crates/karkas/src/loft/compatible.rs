@@ -38,6 +38,12 @@ const START_SPANS: usize = 4;
 pub(crate) const MAX_ROUNDS: usize = 16;
 /// Sections the knots are refined on before every section is checked.
 const SAMPLE_SECTIONS: usize = 12;
+/// The share of its tolerance the sample's sections are refined to: sections between them
+/// may lie a little further off on the same knots.
+const SAMPLE_MARGIN: f64 = 0.7;
+/// A Newton step shorter than this share of its knot span ends the projection: the distance
+/// it would still gain is of the order of its square.
+const NEWTON_STOP: f64 = 1e-9;
 /// Newton steps per projection of a point onto its curve.
 const NEWTON_STEPS: usize = 3;
 
@@ -72,15 +78,23 @@ pub(crate) fn fit_compatible(sections: &[FitSection]) -> Result<CompatibleFit> {
     // The knots are refined on a few sections spread along the span first, then checked on
     // all (and refined further on all if any misses the tolerance).
     let mut active = sample_sections(sections.len());
+    // A section fitted on the current knots, kept when the sample's last round leaves the
+    // knots as they are (its fit is then the whole round's fit of it).
+    let mut kept: Vec<Option<(Vec<Point2>, f64)>> = vec![None; sections.len()];
     let mut rounds = 0;
     loop {
         rounds += 1;
+        let whole = active.len() == sections.len();
+        // The sample is refined with a margin, so the check of every section seldom needs
+        // another round over all of them.
+        let limit = if whole { 1.0 } else { SAMPLE_MARGIN };
         let knots = clamped(&breaks);
         let mut worst = vec![0.0f64; breaks.len() - 1];
-        let mut controls = Vec::with_capacity(active.len());
-        let mut deviations = Vec::with_capacity(active.len());
         let mut scratch = Scratch::new(knots.len() - 4);
         for &k in &active {
+            if whole && kept[k].is_some() {
+                continue;
+            }
             let (section, t) = (&sections[k], &mut params[k]);
             let mut c = fit_section(section, t, &knots, &mut scratch)?;
             project(section, &knots, &c, t, None);
@@ -97,12 +111,11 @@ pub(crate) fn fit_compatible(sections: &[FitSection]) -> Result<CompatibleFit> {
                     worst[span] = worst[span].max(d * scale);
                 }),
             );
-            deviations.push(largest);
-            controls.push(c);
+            kept[k] = Some((c, largest));
         }
-        let refine: Vec<usize> = (0..worst.len()).filter(|&k| worst[k] > 1.0).collect();
-        let whole = active.len() == sections.len();
+        let refine: Vec<usize> = (0..worst.len()).filter(|&k| worst[k] > limit).collect();
         if whole && (refine.is_empty() || rounds >= MAX_ROUNDS) {
+            let (controls, deviations) = kept.into_iter().flatten().unzip();
             return Ok(CompatibleFit {
                 knots,
                 controls,
@@ -115,6 +128,7 @@ pub(crate) fn fit_compatible(sections: &[FitSection]) -> Result<CompatibleFit> {
             active.clone_from(&all);
             continue;
         }
+        kept.iter_mut().for_each(|k| *k = None);
         let mut next = Vec::with_capacity(breaks.len() + refine.len());
         for k in 0..breaks.len() - 1 {
             next.push(breaks[k]);
@@ -427,10 +441,12 @@ fn project(
             Some(_) => (0.5, 1.0),
             None => (0.0, 1.0),
         };
-        if !fixed {
+        let mut s = span_of(knots, count, *ti);
+        let dist_sq = if fixed {
+            (point_at(knots, control, s, *ti) - p).norm_sq()
+        } else {
             // Newton's method on the squared distance, each step at most one knot span long
             // and kept only when it brings the point closer (else halved, up to four times).
-            let mut s = span_of(knots, count, *ti);
             let [mut c, mut d1, mut d2] = eval3(knots, control, s, *ti);
             let mut dist_sq = (c - p).norm_sq();
             for _ in 0..NEWTON_STEPS {
@@ -439,7 +455,7 @@ fn project(
                 let h = d1.norm_sq() + r.dot(d2);
                 let reach = knots[s + 1] - knots[s];
                 let mut step = if h > 0.0 { -g / h } else { -g.signum() * reach };
-                if !step.is_finite() {
+                if !step.is_finite() || step.abs() <= NEWTON_STOP * reach {
                     break;
                 }
                 step = step.clamp(-reach, reach);
@@ -461,12 +477,11 @@ fn project(
                     break;
                 }
             }
-        }
+            dist_sq
+        };
         if let Some(m) = measure.as_mut() {
-            let s = span_of(knots, count, *ti);
-            let d = point_at(knots, control, s, *ti).distance(p);
             // The span of the breakpoints (span s of the knot vector is break span s - 3).
-            m(s - 3, d);
+            m(s - 3, dist_sq.sqrt());
         }
     }
 }

@@ -41,6 +41,7 @@ mod ll_properties;
 mod ll_surface;
 mod ll_surface_interp;
 mod ll_within;
+mod loft_hull;
 mod loft_wing;
 mod param_bicubic;
 mod param_condition;
