@@ -23,6 +23,8 @@
 //!   first and second fundamental forms.
 //! - [`surface_nearest`]: the globally nearest point of a surface, candidates from a sampled
 //!   grid in a k-d tree refined by Newton's method.
+//! - [`mesh_parameters`](mod@mesh_parameters): the sample grid of a triangle mesh within a
+//!   chordal tolerance of a surface, refined where it bends.
 
 pub mod arc_length;
 mod arc_length_table;
@@ -33,6 +35,7 @@ pub mod curve_nearest;
 pub mod fairness;
 #[cfg(test)]
 mod fairness_tests;
+pub mod mesh_parameters;
 mod nearest_grid;
 mod polygon_distance;
 mod quadrature;
@@ -48,5 +51,6 @@ pub use curvature_rate::{curvature_rate, curvature_rate_on_side};
 pub use curve_geometry::CurveGeometry;
 pub use curve_nearest::{CurveNearest, CurveProjector};
 pub use fairness::{curvature_profile, curve_fairness, CurvatureSample, CurveFairness};
+pub use mesh_parameters::{mesh_parameters, surface_size, MeshParameters};
 pub use surface_frame::{normal, principal_curvatures, PrincipalCurvatures};
 pub use surface_nearest::{SurfaceNearest, SurfaceProjector};
