@@ -2,27 +2,30 @@
 //! for the discrete periodic splines, which have none.
 
 use super::console::note;
+use crate::args::CadOptions;
 use anyhow::{bail, Context, Result};
 use karkas::bspline::{ToBSplineCurve, ToBSplineSurface};
 use karkas::Point;
-use karkas_io::export::cad::{write_cad_curve_with_points, NO_EXACT_FORM};
+use karkas_io::export::cad::{write_cad_curve_in, NO_EXACT_FORM};
 use karkas_io::OutputFormat;
 use std::path::Path;
 
 /// Writes the exact B-spline form of `curve` as STEP, IGES or DXF (by `format`, one of
 /// [`OutputFormat::CURVE_CAD`]) with the input `points` the curve was made from, which a DXF
-/// holds as POINT entities on layer `POINTS` (STEP and IGES leave them out); `what` names the
-/// input for errors.
+/// holds as POINT entities on layer `POINTS` (STEP and IGES leave them out), in the unit and
+/// at the scale of `cad`; `what` names the input for errors.
 pub fn write_cad_curve<const D: usize>(
     curve: &impl ToBSplineCurve<D>,
     points: &[Point<D>],
     format: OutputFormat,
     output: &Path,
+    cad: &CadOptions,
     what: impl std::fmt::Display,
 ) -> Result<()> {
     let what = what.to_string();
     let bspline = curve.to_bspline().with_context(|| what.clone())?;
-    let spatial = write_cad_curve_with_points(&bspline, points, format, output, Path::new(&what))?;
+    let units = cad.units();
+    let spatial = write_cad_curve_in(&bspline, points, format, output, Path::new(&what), &units)?;
     let shown_points = if format == OutputFormat::Dxf {
         format!(", {} input points", points.len())
     } else {
@@ -39,15 +42,17 @@ pub fn write_cad_curve<const D: usize>(
     Ok(())
 }
 
-/// Writes the exact B-spline form of `surface` as STEP or IGES (by `format`).
+/// Writes the exact B-spline form of `surface` as STEP or IGES (by `format`), in the unit
+/// and at the scale of `cad`.
 pub fn write_cad_surface(
     surface: &impl ToBSplineSurface<3>,
     format: OutputFormat,
     output: &Path,
+    cad: &CadOptions,
     what: impl std::fmt::Display,
 ) -> Result<()> {
     let bspline = surface.to_bspline().with_context(|| what.to_string())?;
-    karkas_io::export::cad::write_cad_surface(&bspline, format, output)?;
+    karkas_io::export::cad::write_cad_surface_in(&bspline, format, output, &cad.units())?;
     let grid = bspline.control_points();
     super::console::record("control_points", vec![grid.rows(), grid.cols()]);
     note(format!(

@@ -3,14 +3,16 @@
 //! removed) and the 3-D viewer page (`.html`).
 
 use super::cad::write_cad_surface;
-use super::memory::{check_memory, surface_output_bytes};
+use super::console::{note, record};
+use super::memory::{check_memory, mesh_sample_budget, surface_output_bytes};
 use super::samples::{default_surface_samples, report_samples};
 use super::target::shown;
+use crate::args::CadOptions;
 use anyhow::Result;
 use karkas::bspline::ToBSplineSurface;
 use karkas::{Grid, Point3, Surface};
 use karkas_io::export::stream;
-use karkas_io::export::surface::SurfaceDrawing;
+use karkas_io::export::surface::{write_surface_at, SurfaceDrawing};
 use karkas_io::mesh::MeshOptions;
 use karkas_io::OutputFormat;
 use std::path::Path;
@@ -56,26 +58,107 @@ pub fn write_sampled_surface(
     Ok(())
 }
 
-/// Writes a surface built from `grid` (read from `input`, which errors name) in the format of
-/// `output`: its exact B-spline form as STEP or IGES, else `samples` (default
-/// [`default_surface_samples`] per grid line) as [`write_sampled_surface`] writes them.
+/// How a command writes the surface it built, besides the format: the samples asked for, how
+/// meshes are written and to which tolerance, the CAD unit and scale.
+pub struct SurfaceWriting<'a> {
+    /// `--samples NU,NV`, if given.
+    pub samples: Option<(usize, usize)>,
+    /// How meshes are written (`--flip-normals`).
+    pub mesh: MeshOptions,
+    /// `--mesh-tolerance`, if given: meshes are sampled where the surface bends.
+    pub tolerance: Option<f64>,
+    /// `--units`, `--scale` of STEP and IGES.
+    pub cad: &'a CadOptions,
+}
+
+/// Writes `surface` (from the input `what` names in errors) at `output` in `format`: its exact
+/// B-spline form as STEP or IGES; a mesh within `--mesh-tolerance` when given; else its
+/// samples (`default` when none are given) as [`write_sampled_surface`] writes them. `title`
+/// captions pictures and the page, which shows `net`.
+pub fn write_any_surface(
+    surface: &(impl Surface<3> + ToBSplineSurface<3> + Sync),
+    format: OutputFormat,
+    output: &Path,
+    writing: &SurfaceWriting<'_>,
+    (default, title, net): ((usize, usize), &str, Option<&Grid<Point3>>),
+    what: impl std::fmt::Display,
+) -> Result<()> {
+    if format.is_cad() {
+        return write_cad_surface(surface, format, output, writing.cad, what);
+    }
+    if let Some(tolerance) = writing.tolerance {
+        if OutputFormat::MESHES.contains(&format) {
+            return write_mesh_within(surface, tolerance, format, output, title, &writing.mesh);
+        }
+    }
+    let samples = writing.samples.unwrap_or(default);
+    write_sampled_surface(surface, samples, format, output, title, net, &writing.mesh)
+}
+
+/// Writes a surface built from `grid` (read from `input`, which errors name) as
+/// [`write_any_surface`] does, `samples` by default [`default_surface_samples`] per grid line.
 pub fn write_grid_surface(
     surface: &(impl Surface<3> + ToBSplineSurface<3> + Sync),
     format: OutputFormat,
     output: &Path,
     (input, grid): (&Path, &Grid<Point3>),
-    samples: Option<(usize, usize)>,
+    writing: &SurfaceWriting<'_>,
+    title: &str,
+) -> Result<()> {
+    let default = (
+        default_surface_samples(grid.rows()),
+        default_surface_samples(grid.cols()),
+    );
+    let drawn = (default, title, Some(grid));
+    write_any_surface(surface, format, output, writing, drawn, input.display())
+}
+
+/// Writes the mesh of `surface` in `format` sampled within `tolerance` of it
+/// ([`karkas::geometry::mesh_parameters`], within the memory cap's samples), and reports the
+/// samples, the deviation reached, and a warning when the cap stopped the refinement first.
+fn write_mesh_within(
+    surface: &(impl Surface<3> + Sync),
+    tolerance: f64,
+    format: OutputFormat,
+    output: &Path,
     title: &str,
     mesh: &MeshOptions,
 ) -> Result<()> {
-    if format.is_cad() {
-        return write_cad_surface(surface, format, output, input.display());
+    let budget = mesh_sample_budget(format);
+    let found = karkas::geometry::mesh_parameters(surface, tolerance, budget);
+    let (nu, nv) = (found.us.len(), found.vs.len());
+    check_memory(
+        &format!(
+            "{}: {nu} x {nv} samples as {}",
+            shown(output).display(),
+            format.extension()
+        ),
+        surface_output_bytes(format, nu, nv),
+    )?;
+    let drawing = SurfaceDrawing {
+        title,
+        net: None,
+        mesh: *mesh,
+    };
+    write_surface_at(surface, (&found.us, &found.vs), format, output, &drawing)?;
+    record("samples", nu * nv);
+    record("mesh_deviation", found.max_deviation);
+    if !found.met {
+        note(format!(
+            "karkas: warning: {}: --mesh-tolerance {tolerance} not met within the memory cap's \
+             {budget} samples: largest deviation {:.3e}",
+            shown(output).display(),
+            found.max_deviation
+        ));
     }
-    let samples = samples.unwrap_or((
-        default_surface_samples(grid.rows()),
-        default_surface_samples(grid.cols()),
+    note(format!(
+        "karkas: wrote {} ({nu} x {nv} samples, {} triangles, largest deviation {:.3e} within \
+         --mesh-tolerance {tolerance})",
+        shown(output).display(),
+        2 * (nu - 1) * (nv - 1),
+        found.max_deviation
     ));
-    write_sampled_surface(surface, samples, format, output, title, Some(grid), mesh)
+    Ok(())
 }
 
 /// Writes the sampled surface `samples` (row-major, `u` outer) at `output` in `format`, which
