@@ -11,7 +11,7 @@ surface (`--samples 161,1201`, CSV); trimesh measures the distance from every sa
 mesh (closest points on the triangles), and the largest must be at most T. Then uniform grids
 (`--samples NU,NV`, the default's way) are measured the same way: the fewest samples along v
 (chordwise) that reach T with the mesh's spanwise samples doubled, and the fewest along u
-(spanwise) with the chordwise ones doubled; a uniform grid of that accuracy needs at least
+(spanwise) with that chordwise count doubled; a uniform grid of that accuracy needs at least
 both, and the adaptive mesh must have fewer triangles than that grid. The figures are
 printed; exit status 1 on failure.
 
@@ -126,7 +126,7 @@ def main():
         return hi
 
     cv = fewest(8, 2 * nv, lambda c: uniform_error(2 * nu, c))
-    cu = fewest(2, 2 * nu, lambda c: uniform_error(c, 2 * nv))
+    cu = fewest(2, 2 * nu, lambda c: uniform_error(c, 2 * cv))
     uniform = 2 * (cu - 1) * (cv - 1)
     error = uniform_error(cu, cv)
     ok = triangles < uniform

@@ -7,7 +7,7 @@
 use std::path::Path;
 
 pub(crate) use crate::dialect::split_fields;
-use crate::dialect::{column_name, parse_number, Separator};
+use crate::dialect::{column_name, parse_number};
 use crate::error::{IoError, Location};
 use crate::input::{excerpt, not_utf8_message, read_line_bytes, MAX_LINE_BYTES};
 
