@@ -48,6 +48,7 @@ __all__ = [
     "ImplicitSurface",
     "IncompatibleDataError",
     "KarkasError",
+    "KarkasWarning",
     "KnotsError",
     "LLCurve",
     "LLSurface",
@@ -113,6 +114,10 @@ class ConvergenceError(KarkasError):
 
 class ExpressionError(KarkasError):
     """An implicit-surface expression that does not parse (the message gives the position)."""
+
+class KarkasWarning(UserWarning):
+    """A warning of karkas about its input (a first column that counts the rows, points far
+    out of order, a header read in order), issued with warnings.warn."""
 
 class FileFormatError(KarkasError):
     """A file whose content the readers cannot read, with the command line's message naming the
@@ -222,10 +227,16 @@ class CubicSpline(Curve):
         t: Optional[ArrayLike] = None,
         parameterization: str = "chord",
         bc: Optional[_Bc] = None,
+        extrapolate: Union[bool, Literal["periodic"], None] = None,
+        *,
+        bc_type: Optional[Any] = None,
     ) -> Self:
-        """bc: 'not-a-knot' (default), 'natural', 'periodic' or ('clamped', d0, d1);
-        parameterization: 'uniform', 'chord' (also 'chord-length', 'chordlength'),
-        'centripetal' (ignored when t is given)."""
+        """bc: 'not-a-knot' (default), 'natural', 'periodic', 'clamped' (zero first
+        derivatives) or ('clamped', d0, d1); bc_type: SciPy's name of bc, also
+        ((1, d0), (1, d1)) and ((2, 0), (2, 0)); extrapolate: what a call with
+        extrapolate=None gives outside the domain (None, True: the end pieces continued;
+        False: NaN; 'periodic': the parameter wrapped); parameterization: 'uniform', 'chord'
+        (also 'chord-length', 'chordlength'), 'centripetal' (ignored when t is given)."""
     def __reduce__(self) -> Tuple[object, ...]: ...
     @property
     def knots(self) -> _Floats: ...
@@ -340,10 +351,22 @@ class Surface:
         grid: bool = True,
         out: Optional[_Floats] = None,
         extrapolate: Optional[bool] = None,
+        *,
+        dx: Optional[int] = None,
+        dy: Optional[int] = None,
     ) -> _Floats:
-        """grid=True: (mu, mv, d) on u x v; grid=False: u.shape + (d,) at the pairs (u, v)."""
-    def derivative(self, du: int = 1, dv: int = 0) -> "SurfaceDerivative":
-        """The partial derivative d^(du+dv) S / du^du dv^dv as a surface object."""
+        """grid=True: (mu, mv, d) on u x v; grid=False: u.shape + (d,) at the pairs (u, v);
+        dx, dy are RectBivariateSpline's names of du, dv."""
+    def derivative(
+        self,
+        du: Optional[int] = None,
+        dv: Optional[int] = None,
+        *,
+        dx: Optional[int] = None,
+        dy: Optional[int] = None,
+    ) -> "SurfaceDerivative":
+        """The partial derivative d^(du+dv) S / du^du dv^dv as a surface object (du 1, dv 0
+        when not given; dx, dy: RectBivariateSpline's names)."""
     def to_bspline(
         self,
     ) -> Tuple[Tuple[_Floats, _Floats], _Floats, Tuple[int, int]]:
@@ -659,13 +682,23 @@ def export_stl(path: _FilePath, grid: ArrayLike) -> None: ...
 def export_curve_csv(path: _FilePath, t: ArrayLike, points: ArrayLike) -> None: ...
 def export_surface_csv(path: _FilePath, u: ArrayLike, v: ArrayLike, grid: ArrayLike) -> None: ...
 
-def read_curve(path: _FilePath) -> _Floats:
+def read_curve(
+    path: _FilePath,
+    *,
+    columns: Optional[Sequence[Union[int, str]]] = None,
+    decimal_comma: bool = False,
+) -> _Floats:
     """The ordered points of a curve file, (n, d) with d 2 or 3, as the command line's curve
-    commands read it: CSV (an optional header naming x, y and optionally z), whitespace
-    columns, or an airfoil .dat (Selig or Lednicer).
+    commands read it: CSV (an optional header naming x, y and optionally z; fields separated
+    by commas, semicolons or tabs, decimal commas where the comma does not separate, quoted
+    fields, units in brackets), whitespace columns, or an airfoil .dat (Selig or Lednicer).
+    columns= chooses the x, y (and z) columns by name or position from 1 (--columns);
+    decimal_comma=True makes the comma a decimal mark (--decimal-comma).
 
     Raises OSError (FileNotFoundError, PermissionError, IsADirectoryError) when the file
-    cannot be opened, FileFormatError ("file:line: ...") when its content cannot be read."""
+    cannot be opened, FileFormatError ("file:line: ...") when its content cannot be read,
+    OptionError for columns= that is not two or three columns. Warns (KarkasWarning) of a
+    first column that counts the rows and of points far out of order."""
 
 def read_airfoil(path: _FilePath) -> Tuple[str, _Floats]:
     """An airfoil .dat file (Selig or Lednicer): its name line and its contour (n, 2) in Selig
@@ -798,11 +831,14 @@ def export(
     comb: bool = False,
     ascii: bool = False,
     flip_normals: bool = False,
+    mesh_tolerance: Optional[float] = None,
 ) -> "os.PathLike[str]":
     """Writes a curve, surface, discrete spline, tube, point list (n, d), grid (nu, nv, 3),
     mesh (vertices, faces) or SciPy B-spline in the format of the path's extension (or
     format=), as the command line writes the same result; returns the path. A curve's .dxf
-    is its exact SPLINE with points= as POINT entities on layer POINTS."""
+    is its exact SPLINE with points= as POINT entities on layer POINTS. A surface's mesh
+    without samples= lies within mesh_tolerance of it (default 1e-4 of its size), sampled
+    where it bends (--mesh-tolerance)."""
 
 def set_max_input_bytes(nbytes: int) -> None:
     """The most memory one read may keep, in bytes, for every reader of the process (default

@@ -5,6 +5,7 @@
 //! A command whose option says something of its own (a different default of `--samples`)
 //! keeps the group and overrides the help text with `#[command(mut_arg(..))]`.
 
+use crate::output::console::note;
 use crate::output::curve::curvature_comb;
 use crate::output::overwrite::ensure_distinct;
 use crate::output::samples::MAX_SAMPLES;
@@ -14,6 +15,9 @@ use karkas::dps::MAX_ORDER;
 use karkas::ll::{LlKernel, LlSurface};
 use karkas::param::GridParameterization;
 use karkas::{Curve, Grid, Point2, Point3};
+use karkas_io::dialect::{ColumnChoice, ReadOptions};
+use karkas_io::export::cad::{CadUnits, LengthUnit};
+use karkas_io::export::samples::{default_curve_samples, unbounded_curve_samples};
 use karkas_io::grid::read_grid;
 use karkas_io::mesh::MeshOptions;
 use karkas_io::OutputFormat;
@@ -37,10 +41,103 @@ impl CurveSamples {
         Ok(())
     }
 
-    /// The count given, else `default()`.
-    pub fn or_else(&self, default: impl FnOnce() -> usize) -> usize {
-        self.samples.unwrap_or_else(default)
+    /// The count given, else the default for `k` points (10 a point, at least 200, at most
+    /// [`karkas_io::export::samples::DEFAULT_CURVE_SAMPLES_BOUND`]: a note says so when the
+    /// bound applies).
+    pub fn resolve(&self, k: usize) -> usize {
+        self.samples.unwrap_or_else(|| {
+            let n = default_curve_samples(k);
+            let full = unbounded_curve_samples(k);
+            if full > n {
+                note(format!(
+                    "karkas: note: {n} samples, the default's bound (10 a point would be \
+                     {full}); --samples N writes N"
+                ));
+            }
+            n
+        })
     }
+}
+
+/// `--units`, `--scale` of the commands that write STEP, IGES or DXF.
+#[derive(Clone, Debug, Default, Args)]
+pub struct CadOptions {
+    /// STEP, IGES, DXF: the length unit the file states, mm, cm, m or in [default: mm in STEP
+    /// and IGES, none in DXF]. The coordinates are written as they are (times --scale): a
+    /// unit chord with --units m is one metre.
+    #[arg(long, value_name = "UNIT", value_parser = parse_unit)]
+    pub units: Option<LengthUnit>,
+    /// STEP, IGES, DXF: multiply every coordinate by S (e.g. --units mm --scale 1000 writes
+    /// points given in metres in millimetres) [default: 1].
+    #[arg(long, value_name = "S", value_parser = parse_finite, allow_hyphen_values = true)]
+    pub scale: Option<f64>,
+}
+
+impl CadOptions {
+    /// The unit and scale the CAD writers take.
+    pub fn units(&self) -> CadUnits {
+        CadUnits {
+            unit: self.units,
+            scale: self.scale.unwrap_or(1.0),
+        }
+    }
+
+    /// Refuses a scale that is not positive, and either option when none of the `formats`
+    /// written is STEP, IGES or DXF.
+    pub fn check(&self, formats: &[OutputFormat]) -> Result<()> {
+        self.units().check().map_err(anyhow::Error::msg)?;
+        let given = if self.units.is_some() {
+            Some("--units")
+        } else if self.scale.is_some() {
+            Some("--scale")
+        } else {
+            None
+        };
+        if let Some(option) = given {
+            if !formats.iter().any(|f| f.is_cad()) {
+                bail!(
+                    "{option}: only STEP, IGES and DXF outputs state a unit and take a scale, \
+                     not .{}",
+                    formats.first().map_or("csv", |f| f.extension())
+                );
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Parses a length unit of `--units`.
+pub fn parse_unit(text: &str) -> Result<LengthUnit, String> {
+    text.parse()
+}
+
+/// `--columns`, `--decimal-comma` of the commands that read curve points.
+#[derive(Clone, Debug, Default, Args)]
+pub struct CurveInputOptions {
+    /// The x, y (and z) columns of the input, by header name or by position counted from 1:
+    /// --columns 2,3, --columns 'Абсцисса,Ордината' (for headers that name no x and y, or
+    /// files with more columns).
+    #[arg(long, value_name = "A,B[,C]", value_parser = parse_columns)]
+    pub columns: Option<ColumnChoice>,
+    /// Numbers are written with a decimal comma (0,5): the comma never separates fields.
+    /// Detected without it in files separated by ';', tabs or spaces.
+    #[arg(long)]
+    pub decimal_comma: bool,
+}
+
+impl CurveInputOptions {
+    /// The reader's options.
+    pub fn read_options(&self) -> ReadOptions {
+        ReadOptions {
+            columns: self.columns.clone(),
+            decimal_comma: self.decimal_comma,
+        }
+    }
+}
+
+/// Parses `--columns A,B[,C]`.
+pub fn parse_columns(text: &str) -> Result<ColumnChoice, String> {
+    text.parse()
 }
 
 /// `--samples NU,NV` of the surface commands.
@@ -63,11 +160,6 @@ impl GridSamples {
         }
         Ok(())
     }
-
-    /// The counts given, else `default()`.
-    pub fn or_else(&self, default: impl FnOnce() -> (usize, usize)) -> (usize, usize) {
-        self.samples.unwrap_or_else(default)
-    }
 }
 
 /// The input grid of the commands that build on a grid of points.
@@ -81,6 +173,14 @@ impl GridInput {
     /// Reads the grid, after refusing an `output` that would overwrite it.
     pub fn read_for(&self, output: &Path) -> Result<Grid<Point3>> {
         read_grid_for(&self.input, output)
+    }
+
+    /// Reads the grid, after refusing any of `outputs` that would overwrite it.
+    pub fn read_for_all(&self, outputs: &[PathBuf]) -> Result<Grid<Point3>> {
+        for output in outputs {
+            ensure_distinct(&self.input, output)?;
+        }
+        Ok(read_grid(&self.input)?)
     }
 }
 
@@ -192,6 +292,14 @@ pub struct MeshOutput {
 }
 
 impl MeshOutput {
+    /// Refuses `--flip-normals` when none of the outputs in `formats` is a mesh.
+    pub fn check_all(&self, formats: &[OutputFormat]) -> Result<()> {
+        match formats.iter().find(|f| OutputFormat::MESHES.contains(f)) {
+            Some(&mesh) => self.check(mesh),
+            None => formats.first().map_or(Ok(()), |&f| self.check(f)),
+        }
+    }
+
     /// Refuses `--flip-normals` for an output in `format` that is not a mesh.
     pub fn check(&self, format: OutputFormat) -> Result<()> {
         if self.flip_normals && !OutputFormat::MESHES.contains(&format) {
@@ -285,19 +393,60 @@ pub struct CapOption {
 }
 
 impl CapOption {
-    /// Refuses `--cap` for an output in `format` that holds no body (CSV, pictures, pages,
-    /// the VTK structured grids).
-    pub fn check(&self, format: OutputFormat) -> Result<()> {
-        let body = format.is_cad()
-            || matches!(
-                format,
-                OutputFormat::Obj | OutputFormat::Stl | OutputFormat::Ply | OutputFormat::Glb
+    /// Refuses `--cap` for an output among `formats` that holds no body (CSV, pictures, pages,
+    /// the VTK structured grids), and with `--mesh-tolerance` (`mesh_tolerance`): capped
+    /// meshes are sampled uniformly.
+    pub fn check(&self, formats: &[OutputFormat], mesh_tolerance: Option<f64>) -> Result<()> {
+        if !self.cap {
+            return Ok(());
+        }
+        if mesh_tolerance.is_some() {
+            bail!(
+                "--cap: capped meshes are sampled uniformly (--samples), not to --mesh-tolerance"
             );
-        if self.cap && !body {
+        }
+        let no_body = formats.iter().find(|format| {
+            !(format.is_cad()
+                || matches!(
+                    format,
+                    OutputFormat::Obj | OutputFormat::Stl | OutputFormat::Ply | OutputFormat::Glb
+                ))
+        });
+        if let Some(format) = no_body {
             bail!(
                 "--cap: only STEP, IGES and the triangle meshes (.step .iges .obj .stl .ply .glb) \
                  hold caps, not .{}",
                 format.extension()
+            );
+        }
+        Ok(())
+    }
+}
+
+/// `--mesh-tolerance` of the commands that mesh a surface they build.
+#[derive(Clone, Debug, Default, Args)]
+pub struct MeshTolerance {
+    /// Meshes (.obj .stl .ply .vtk .vts .glb): sample the surface densely where it bends and
+    /// sparsely where it does not, so that the mesh lies within T (model units) of it,
+    /// instead of the uniform --samples.
+    #[arg(long, value_name = "T", value_parser = parse_finite)]
+    pub mesh_tolerance: Option<f64>,
+}
+
+impl MeshTolerance {
+    /// Refuses a tolerance that is not positive, or given without a mesh among `formats`.
+    pub fn check(&self, formats: &[OutputFormat]) -> Result<()> {
+        let Some(t) = self.mesh_tolerance else {
+            return Ok(());
+        };
+        if t <= 0.0 {
+            bail!("--mesh-tolerance: the tolerance must be positive (model units), got {t}");
+        }
+        if !formats.iter().any(|f| OutputFormat::MESHES.contains(f)) {
+            bail!(
+                "--mesh-tolerance: only meshes (.obj .stl .ply .vtk .vts .glb) are made to a \
+                 tolerance, not .{}",
+                formats.first().map_or("csv", |f| f.extension())
             );
         }
         Ok(())

@@ -5,10 +5,12 @@
 //! Every input path may be `-`, standard input (named `<stdin>` in messages); a command with
 //! several inputs refuses `-` for more than one of them ([`one_standard_input`]).
 
+use crate::args::CurveInputOptions;
+use crate::output::console::note;
 use anyhow::{bail, Result};
 use karkas::Point;
 use karkas_io::input::{display_name, is_stdin};
-use karkas_io::points::{read_curve_points, CurvePoints};
+use karkas_io::points::{read_curve_points_with, CurvePoints};
 use karkas_io::range::check_stray_point;
 use std::path::Path;
 
@@ -82,11 +84,29 @@ pub trait CurveJob {
     fn run<const D: usize>(&self, points: &[Point<D>]) -> Result<()>;
 }
 
-/// Reads the curve points of `input` and runs `job` on them in their dimension.
-pub fn run_on_curve_points(input: &Path, job: &impl CurveJob) -> Result<()> {
-    match read_curve_points(input)? {
+/// Reads the curve points of `input` with the user's `options` (`--columns`,
+/// `--decimal-comma`), prints the reader's warnings, and runs `job` on them in their
+/// dimension.
+pub fn run_on_curve_points(
+    input: &Path,
+    options: &CurveInputOptions,
+    job: &impl CurveJob,
+) -> Result<()> {
+    let read = read_curve_points_with(input, &options.read_options())?;
+    warn_of_reading(input, &read.warnings);
+    match read.points {
         CurvePoints::Planar(points) => job.run(&points),
         CurvePoints::Spatial(points) => job.run(&points),
+    }
+}
+
+/// Prints the warnings a reader gave about `input`, one line each.
+pub fn warn_of_reading(input: &Path, warnings: &[String]) {
+    for warning in warnings {
+        note(format!(
+            "karkas: warning: {}: {warning}",
+            display_name(input).display()
+        ));
     }
 }
 

@@ -1,8 +1,13 @@
 //! Column files of curve points (CSV or whitespace-separated), read in one streaming pass.
 //!
-//! The first content line decides the layout: a header (any field not a number; it must name
-//! `x` and `y`, and `z` makes the points spatial) or the first data row (two columns are
-//! planar points, three spatial ones). Then every line is one of:
+//! The first content line decides the layout: its separator and decimal mark
+//! ([`crate::dialect`]: commas, semicolons, tabs or spaces; decimal commas where the comma
+//! does not separate), and whether it is a header (any field not a number) or the first data
+//! row. A header gives the columns by name (`x`, `y` and, for points in space, `z`; units in
+//! brackets and quotes aside), by `--columns` ([`ReadOptions::columns`]), or, when it names
+//! none of `x`, `y`, `z` and has two or three columns (names in another language), in order,
+//! with a warning. Without a header two columns are planar points and three spatial ones,
+//! unless `--columns` chooses. Then every line is one of:
 //!
 //! - blank or a `#` comment: skipped;
 //! - a data row: as many fields as the first row, the coordinate columns numbers;
@@ -14,9 +19,10 @@
 //!
 //! Speed: the input is read in blocks of whole lines (1 MiB per thread), the next block read
 //! on a thread of its own while the current one is parsed; a block of plain rows (no comment,
-//! no double quote, nothing but the data's fields) is split in pieces parsed in parallel,
+//! nothing but the data's fields, numbers maybe in double quotes) is split in pieces parsed in parallel,
 //! each walked once, row after row, and each coordinate parsed where it starts: a plain
-//! decimal by [`crate::plain_decimal`], any other number by `fast-float2` (both correctly
+//! decimal by [`crate::plain_decimal`] (with the file's decimal mark), any other number by
+//! `fast-float2` (both correctly
 //! rounded, as `str::parse`; tests compare the fast and careful paths on random rows), with no
 //! allocation per row or field. Any other block is read line by line, each line tried the same way and
 //! otherwise split into owned fields to be classified or reported, so line numbers and
@@ -28,11 +34,12 @@
 use std::io::BufRead;
 use std::path::Path;
 
+use crate::dialect::{column_name, join_units, parse_number, ReadOptions, Separator};
 use crate::error::{data_error, IoError, Location};
 use crate::input::{excerpt, MAX_LINE_BYTES};
 use crate::lines::{
-    check_held_at, check_line, first_token, is_number, looks_numeric, parse_coordinate,
-    split_fields, strip_comment, too_long, Block, LineReader,
+    check_held_at, check_line, first_token, looks_numeric, parse_coordinate_with, split_fields,
+    strip_comment, too_long, Block, LineReader,
 };
 use crate::plain_decimal;
 use crate::store::{Growth, Store};
@@ -49,15 +56,26 @@ pub(crate) struct Columns {
 }
 
 impl Columns {
-    /// The columns named `x`, `y` and optionally `z` (case-insensitive) in a header; `None`
-    /// unless both `x` and `y` are there.
+    /// The columns named `x`, `y` and optionally `z` in a header (compared as
+    /// [`column_name`] compares: case, quotes and units aside); `None` unless both `x` and `y`
+    /// are there.
     pub fn from_header(fields: &[String]) -> Option<Columns> {
-        let find = |name: &str| fields.iter().position(|f| f.eq_ignore_ascii_case(name));
+        let names: Vec<String> = fields.iter().map(|f| column_name(f)).collect();
+        let find = |name: &str| names.iter().position(|f| f == name);
         Some(Columns {
             x: find("x")?,
             y: find("y")?,
             z: find("z"),
         })
+    }
+
+    /// The columns of the 0-based `fields` chosen, x first.
+    fn from_fields(fields: &[usize]) -> Columns {
+        Columns {
+            x: fields[0],
+            y: fields[1],
+            z: fields.get(2).copied(),
+        }
     }
 }
 
@@ -69,57 +87,167 @@ pub(crate) enum Either<A, B> {
     Spatial(B),
 }
 
+/// How the columns were found: what the warnings about the columns need to know.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub(crate) enum Found {
+    /// By the header's names `x`, `y`, `z`.
+    ByName,
+    /// By `--columns`.
+    Chosen,
+    /// The first two or three fields of rows without a header.
+    NoHeader,
+    /// In order, the header (quoted) naming none of `x`, `y`, `z`.
+    InOrder(String),
+}
+
 /// How the rows of a column file are laid out, as its first content line says.
 pub(crate) struct Layout {
-    /// Fields split at commas (else at whitespace).
-    pub csv: bool,
+    /// What separates the fields.
+    pub sep: Separator,
+    /// The decimal mark the fast path reads (`b'.'` or `b','`); the careful path reads
+    /// either where the separator allows a decimal comma.
+    pub point: u8,
+    /// True until the decimal mark is known (a header, before the first row).
+    pub point_open: bool,
+    /// A comma in a number field is a decimal comma: the separator is not a comma, or
+    /// `--decimal-comma` says so (then quoted fields may hold them in a comma-separated file).
+    pub comma_decimals: bool,
     /// The number of fields of every data row.
     pub width: usize,
     /// Where the coordinates are.
     pub columns: Columns,
+    /// How they were found.
+    pub found: Found,
     /// The first data row (its line and content), when the first line was not a header.
     pub first_row: Option<(usize, String)>,
+    /// The header's line and text, when there is one.
+    pub header: Option<(usize, String)>,
 }
 
 impl Layout {
-    /// The layout given by the first content line `content` (line `line`) of `name`.
-    pub fn from_first_line(content: &str, line: usize, name: &Path) -> Result<Layout, IoError> {
+    /// The layout given by the first content line `content` (line `line`) of `name`, read with
+    /// the user's `options`.
+    pub fn from_first_line(
+        content: &str,
+        line: usize,
+        name: &Path,
+        options: &ReadOptions,
+    ) -> Result<Layout, IoError> {
         let at = Location::new(name, line);
-        let csv = content.contains(',');
-        let fields = split_fields(content, csv, at)?;
-        let width = fields.len();
-        if !fields.iter().all(|f| is_number(f)) {
-            let columns = Columns::from_header(&fields).ok_or_else(|| {
-                at.error(format!(
-                    "the header '{}' names no 'x' and 'y' columns",
-                    excerpt(&fields.join(","))
-                ))
-            })?;
-            if let Some(name) = duplicated_name(&fields) {
-                return Err(at.error(format!("the header names column '{name}' twice")));
-            }
-            return Ok(Layout {
-                csv,
-                width,
-                columns,
-                first_row: None,
-            });
+        let sep = Separator::of_line(content, options.decimal_comma);
+        let fields = split_fields(content, sep, at)?;
+        let comma = sep.allows_decimal_comma() || options.decimal_comma;
+        if !fields.iter().all(|f| parse_number(f, comma).is_some()) {
+            let fields = if sep == Separator::Whitespace {
+                join_units(fields)
+            } else {
+                fields
+            };
+            return Layout::from_header(fields, sep, line, name, options);
         }
-        let z = match width {
-            2 => None,
-            3 => Some(2),
-            n => {
-                return Err(at.error(format!(
-                    "expected 2 columns (x y) or 3 columns (x y z), found {n}"
-                )))
+        let width = fields.len();
+        let (columns, found) = match &options.columns {
+            Some(choice) => {
+                let chosen = choice.resolve(None, width).map_err(|m| at.error(m))?;
+                (Columns::from_fields(&chosen), Found::Chosen)
+            }
+            None => match width {
+                2 | 3 => (Columns::from_fields(&[0, 1, 2][..width]), Found::NoHeader),
+                n => {
+                    let hint = if options.decimal_comma && content.matches(',').count() > 1 {
+                        " (with --decimal-comma the comma is a decimal mark: separate the \
+                         fields by ';', tabs or spaces)"
+                    } else {
+                        ": choose them with --columns A,B[,C] (positions counted from 1)"
+                    };
+                    return Err(at.error(format!(
+                        "expected 2 columns (x y) or 3 columns (x y z), found {n}{hint}"
+                    )));
+                }
+            },
+        };
+        Ok(Layout {
+            sep,
+            point: decimal_mark(sep, &fields),
+            point_open: false,
+            comma_decimals: comma,
+            width,
+            columns,
+            found,
+            first_row: Some((line, content.to_owned())),
+            header: None,
+        })
+    }
+
+    /// The layout of a file whose header (line `line`, split at `sep`) is `fields`.
+    pub fn from_header(
+        fields: Vec<String>,
+        sep: Separator,
+        line: usize,
+        name: &Path,
+        options: &ReadOptions,
+    ) -> Result<Layout, IoError> {
+        let at = Location::new(name, line);
+        let width = fields.len();
+        let text = excerpt(&fields.join(&sep_text(sep)));
+        let (columns, found) = match &options.columns {
+            Some(choice) => {
+                let chosen = choice
+                    .resolve(Some(&fields), width)
+                    .map_err(|m| at.error(m))?;
+                (Columns::from_fields(&chosen), Found::Chosen)
+            }
+            None => {
+                let names: Vec<String> = fields.iter().map(|f| column_name(f)).collect();
+                if let Some(name) = duplicated_name(&names) {
+                    return Err(at.error(format!("the header names column '{name}' twice")));
+                }
+                let named = names.iter().any(|n| ["x", "y", "z"].contains(&n.as_str()));
+                match Columns::from_header(&fields) {
+                    Some(columns) => (columns, Found::ByName),
+                    None if !named && (2..=3).contains(&width) => (
+                        Columns::from_fields(&[0, 1, 2][..width]),
+                        Found::InOrder(text.clone()),
+                    ),
+                    None => {
+                        return Err(at.error(format!(
+                            "the header '{text}' names no 'x' and 'y' columns: choose them with \
+                             --columns A,B[,C]"
+                        )))
+                    }
+                }
             }
         };
         Ok(Layout {
-            csv,
+            sep,
+            point: b'.',
+            point_open: sep.allows_decimal_comma(),
+            comma_decimals: sep.allows_decimal_comma() || options.decimal_comma,
             width,
-            columns: Columns { x: 0, y: 1, z },
-            first_row: Some((line, content.to_owned())),
+            columns,
+            found,
+            first_row: None,
+            header: Some((line, text)),
         })
+    }
+}
+
+/// How a header's fields are joined again in messages.
+fn sep_text(sep: Separator) -> String {
+    match sep {
+        Separator::Comma => ",".to_owned(),
+        Separator::Semicolon => ";".to_owned(),
+        Separator::Tab | Separator::Whitespace => " ".to_owned(),
+    }
+}
+
+/// The decimal mark of a file separated by `sep` whose first data row has `fields`: a comma
+/// when the separator allows decimal commas and a field holds one.
+fn decimal_mark(sep: Separator, fields: &[String]) -> u8 {
+    if sep.allows_decimal_comma() && fields.iter().any(|f| f.contains(',')) {
+        b','
+    } else {
+        b'.'
     }
 }
 
@@ -130,10 +258,11 @@ pub(crate) fn read_columns<R: BufRead + Send, A: Store<2>, B: Store<3>>(
     layout: Layout,
     size: Option<u64>,
 ) -> Result<Either<A, B>, IoError> {
+    let mut layout = layout;
     let Columns { x, y, z } = layout.columns;
     Ok(match z {
-        None => Either::Planar(collect(lines, &layout, [x, y], size)?),
-        Some(z) => Either::Spatial(collect(lines, &layout, [x, y, z], size)?),
+        None => Either::Planar(collect(lines, &mut layout, [x, y], size)?),
+        Some(z) => Either::Spatial(collect(lines, &mut layout, [x, y, z], size)?),
     })
 }
 
@@ -150,7 +279,7 @@ enum Slow<const D: usize> {
 /// The points of the data rows, coordinate `k` from field `columns[k]`.
 fn collect<R: BufRead + Send, const D: usize, S: Store<D>>(
     lines: &mut LineReader<'_, R>,
-    layout: &Layout,
+    layout: &mut Layout,
     columns: [usize; D],
     size: Option<u64>,
 ) -> Result<S, IoError> {
@@ -170,7 +299,7 @@ fn collect<R: BufRead + Send, const D: usize, S: Store<D>>(
         Ok(())
     };
     if let Some((line, content)) = &layout.first_row {
-        let p = slow_row(content, *line, layout, &slot, name)?;
+        let p = slow_row(content, *line, &*layout, &slot, name)?;
         if let Slow::Point(p) = p {
             push(&mut store, p, lines.consumed(), *line)?;
         }
@@ -199,6 +328,10 @@ fn collect<R: BufRead + Send, const D: usize, S: Store<D>>(
         };
         current = 1 - current;
         after += len as u64;
+        if layout.point_open {
+            settle_decimal_mark(layout, block);
+        }
+        let layout = &*layout;
         let try_fast = notes.is_none();
         let parse = || {
             if try_fast {
@@ -273,9 +406,42 @@ fn collect<R: BufRead + Send, const D: usize, S: Store<D>>(
         }
     }
     if store.len() == 0 {
-        return Err(data_error(name, "no points found"));
+        return Err(data_error(name, nothing_read(layout, notes.as_ref())));
     }
     Ok(store)
+}
+
+/// Settles the decimal mark of a file with a header from the first row of `block` that is
+/// not blank nor a comment: a comma when that row holds one (the separator allows it).
+fn settle_decimal_mark(layout: &mut Layout, block: &[u8]) {
+    let row = block
+        .split(|&b| b == b'\n')
+        .map(|l| l.split(|&b| b == b'#').next().unwrap_or(l))
+        .find(|l| l.iter().any(|b| !b.is_ascii_whitespace()));
+    if let Some(row) = row {
+        if row.contains(&b',') {
+            layout.point = b',';
+        }
+        layout.point_open = false;
+    }
+}
+
+/// What "no points found" says of a column file in `layout` that gave none: the header
+/// alone, or the line where the data ended (the first `note`).
+fn nothing_read(layout: &Layout, note: Option<&(usize, String)>) -> String {
+    let header = match &layout.header {
+        Some((line, text)) => format!("the header '{text}' (line {line})"),
+        None => "the first line".to_owned(),
+    };
+    match note {
+        Some((line, text)) => format!(
+            "no points found: after {header}, line {line} ('{text}') is not a row of {} \
+             numbers separated by {}, and the data end there",
+            layout.width,
+            layout.sep.name()
+        ),
+        None => format!("no points found: {header} and no data rows after it"),
+    }
 }
 
 /// The most pieces a block is parsed in, in parallel.
@@ -329,9 +495,10 @@ fn held_bytes<const D: usize, S: Store<D>>(store: &S) -> u128 {
     (store.len() * D * std::mem::size_of::<f64>()) as u128
 }
 
-/// The point of a plain data row: `layout.width` fields split at commas or whitespace, its
-/// coordinate fields finite numbers; `None` for anything else (a comment, a double quote, a
-/// field that is not a number), which [`slow_row`] then reads.
+/// The point of a plain data row: `layout.width` fields split at the layout's separator, its
+/// coordinate fields finite numbers (maybe in double quotes) with the layout's decimal mark;
+/// `None` for anything else (a comment, another double quote, a field that is not a number),
+/// which [`slow_row`] then reads.
 #[inline]
 fn fast_row<const D: usize>(line: &[u8], layout: &Layout, slot: &[usize]) -> Option<[f64; D]> {
     fast_row_at(line, layout, slot)
@@ -340,21 +507,42 @@ fn fast_row<const D: usize>(line: &[u8], layout: &Layout, slot: &[usize]) -> Opt
 }
 
 /// The point of the plain data row (see [`fast_row`]) that `bytes` start with, and the length
-/// of that row with its end of line (`\n`, or the end of `bytes`). One scan of the bytes finds
-/// the fields; a coordinate is parsed where it starts (the parser finds its end, and never
-/// reads past the end of its line), and the byte after it must end the field.
+/// of that row with its end of line; the row's parser is chosen for the layout's separator
+/// and decimal mark ([`row_at`]).
 #[inline]
 fn fast_row_at<const D: usize>(
     bytes: &[u8],
     layout: &Layout,
     slot: &[usize],
 ) -> Option<([f64; D], usize)> {
+    let width = layout.width;
+    match (layout.sep.byte(), layout.point) {
+        (Some(b','), _) => row_at::<D, b',', b'.'>(bytes, width, slot),
+        (Some(b';'), b',') => row_at::<D, b';', b','>(bytes, width, slot),
+        (Some(b';'), _) => row_at::<D, b';', b'.'>(bytes, width, slot),
+        (Some(b'\t'), b',') => row_at::<D, b'\t', b','>(bytes, width, slot),
+        (Some(b'\t'), _) => row_at::<D, b'\t', b'.'>(bytes, width, slot),
+        (_, b',') => row_at::<D, 0, b','>(bytes, width, slot),
+        _ => row_at::<D, 0, b'.'>(bytes, width, slot),
+    }
+}
+
+/// [`fast_row_at`] for the separator `SEP` (0: runs of whitespace) and the decimal mark
+/// `POINT`. One scan of the bytes finds the fields; a coordinate is parsed where it starts
+/// (the parser finds its end, and never reads past the end of its line), and the byte after
+/// it (after its closing quote, if it opened with one) must end the field.
+#[inline]
+fn row_at<const D: usize, const SEP: u8, const POINT: u8>(
+    bytes: &[u8],
+    width: usize,
+    slot: &[usize],
+) -> Option<([f64; D], usize)> {
     let mut p = [0.0; D];
     let n = bytes.len();
-    let csv = layout.csv;
-    let blank = |b: u8| matches!(b, b' ' | b'\t' | b'\r');
+    let csv = SEP != 0;
+    let blank = |b: u8| matches!(b, b' ' | b'\t' | b'\r') && b != SEP;
     // The end of a field: its separator or the end of the line.
-    let end_of_field = |b: u8| b == b'\n' || if csv { b == b',' } else { blank(b) };
+    let end_of_field = |b: u8| b == b'\n' || if csv { b == SEP } else { blank(b) };
     let skip_blanks = |mut k: usize| {
         while k < n && blank(bytes[k]) {
             k += 1;
@@ -371,8 +559,10 @@ fn fast_row_at<const D: usize>(
         let s = *slot.get(count)?;
         count += 1;
         if s < D {
+            let quoted = bytes.get(k) == Some(&b'"');
+            k += usize::from(quoted);
             let rest = &bytes[k..];
-            let (v, used): (f64, usize) = match plain_decimal::parse(rest) {
+            let (v, used): (f64, usize) = match plain_decimal::parse_with::<POINT>(rest) {
                 Some(plain) => plain,
                 None => fast_float2::parse_partial(rest).ok()?,
             };
@@ -381,6 +571,12 @@ fn fast_row_at<const D: usize>(
             }
             p[s] = v;
             k += used;
+            if quoted {
+                if bytes.get(k) != Some(&b'"') {
+                    return None;
+                }
+                k += 1;
+            }
             if csv {
                 k = skip_blanks(k);
             }
@@ -401,13 +597,13 @@ fn fast_row_at<const D: usize>(
             }
             k = skip_blanks(k + 1);
             if k == n || bytes[k] == b'\n' {
-                // A comma at the end: one more (empty) field.
+                // A separator at the end: one more (empty) field.
                 return None;
             }
         }
     }
     // Here `k` is at the end of the line: its `\n` or the end of `bytes`.
-    (count == layout.width).then_some((p, (k + 1).min(n)))
+    (count == width).then_some((p, (k + 1).min(n)))
 }
 
 /// Classifies a line that is not a plain data row (see the [module docs](self)): a point, a
@@ -420,14 +616,16 @@ fn slow_row<const D: usize>(
     name: &Path,
 ) -> Result<Slow<D>, IoError> {
     let at = Location::new(name, line);
-    let fields = split_fields(content, layout.csv, at)?;
+    let fields = split_fields(content, layout.sep, at)?;
     if fields.iter().all(String::is_empty) {
         return Ok(Slow::Blank);
     }
+    let comma = layout.comma_decimals;
+    let is_number = |f: &String| parse_number(f, comma).is_some();
     let width = layout.width;
     let shaped = fields.len() == width;
     let numeric_first = first_token(content).is_some_and(looks_numeric);
-    let note = !(numeric_first || (shaped && fields.iter().any(|f| is_number(f))));
+    let note = !(numeric_first || (shaped && fields.iter().any(is_number)));
     let is_row = shaped
         && fields
             .iter()
@@ -442,26 +640,32 @@ fn slow_row<const D: usize>(
     let mut p = [0.0; D];
     for (k, (field, &s)) in fields.iter().zip(slot).enumerate() {
         if s < D {
-            p[s] = parse_coordinate(field, k + 1, at)?;
+            p[s] = parse_coordinate_with(field, k + 1, at, comma)?;
         }
     }
     Ok(Slow::Point(p))
 }
 
-/// A coordinate column name (`x`, `y`, `z`) that a header gives twice, if any.
-fn duplicated_name(fields: &[String]) -> Option<&'static str> {
-    ["x", "y", "z"].into_iter().find(|name| {
-        fields
-            .iter()
-            .filter(|f| f.eq_ignore_ascii_case(name))
-            .count()
-            > 1
-    })
+/// A coordinate column name (`x`, `y`, `z`) that a header's `names` (as [`column_name`]
+/// gives them) hold twice, if any.
+fn duplicated_name(names: &[String]) -> Option<&'static str> {
+    ["x", "y", "z"]
+        .into_iter()
+        .find(|name| names.iter().filter(|f| f == name).count() > 1)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Commas or whitespace.
+    fn sep_of(csv: bool) -> Separator {
+        if csv {
+            Separator::Comma
+        } else {
+            Separator::Whitespace
+        }
+    }
 
     #[test]
     fn header_columns_are_found_by_name() {
@@ -484,12 +688,25 @@ mod tests {
         );
         assert_eq!(Columns::from_header(&h("a,b")), None);
         assert_eq!(duplicated_name(&h("x,y,x")), Some("x"));
+        assert_eq!(
+            Columns::from_header(&h("x [mm],\"Y (mm)\"")),
+            Some(Columns {
+                x: 0,
+                y: 1,
+                z: None
+            })
+        );
     }
 
     #[test]
     fn plain_rows_take_the_fast_path() {
         let layout = Layout {
-            csv: true,
+            sep: Separator::Comma,
+            point: b'.',
+            point_open: false,
+            comma_decimals: false,
+            found: Found::ByName,
+            header: None,
             width: 3,
             columns: Columns {
                 x: 1,
@@ -511,7 +728,12 @@ mod tests {
         assert_eq!(fast_row::<2>(b"1,2,3 # c", &layout, &slot), None);
         assert_eq!(fast_row::<2>(b"", &layout, &slot), None);
         let layout = Layout {
-            csv: false,
+            sep: Separator::Whitespace,
+            point: b'.',
+            point_open: false,
+            comma_decimals: false,
+            found: Found::ByName,
+            header: None,
             width: 2,
             columns: Columns {
                 x: 0,
@@ -588,7 +810,12 @@ mod tests {
                 .collect();
             let line = format!("{line}\n");
             let layout = Layout {
-                csv,
+                sep: sep_of(csv),
+                point: b'.',
+                point_open: false,
+                comma_decimals: false,
+                found: Found::ByName,
+                header: None,
                 width: 2,
                 columns: Columns {
                     x: 0,
@@ -602,13 +829,87 @@ mod tests {
             };
             let content = strip_comment(&line).trim();
             let at = Location::new(Path::new("r"), 1);
-            let fields = split_fields(content, csv, at).unwrap();
+            let fields = split_fields(content, sep_of(csv), at).unwrap();
             assert_eq!(fields.len(), 2, "{line:?}");
-            let careful = [0, 1].map(|c| parse_coordinate(&fields[c], c + 1, at).unwrap());
+            let careful =
+                [0, 1].map(|c| parse_coordinate_with(&fields[c], c + 1, at, false).unwrap());
             assert_eq!(fast, careful, "{line:?}");
             agreed += 1;
         }
         assert!(agreed > 100, "{agreed}");
+    }
+
+    #[test]
+    fn semicolons_tabs_and_decimal_commas_agree_with_the_careful_path() {
+        const ALPHABET: &[u8] = b"0123456789012345678901234567890123456789.,;-+e #\t\"x ";
+        let mut state: u64 = 0x2545_f491_4f6c_dd1d;
+        let mut next = move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state
+        };
+        let mut agreed = 0;
+        for k in 0..40_000 {
+            let (sep, sep_text) = if k % 2 == 0 {
+                (Separator::Semicolon, ";")
+            } else {
+                (Separator::Tab, "\t")
+            };
+            let len = (next() % 40) as usize;
+            let mut line: String = (0..len)
+                .map(|_| ALPHABET[(next() % ALPHABET.len() as u64) as usize] as char)
+                .collect();
+            if k % 4 < 2 {
+                let mut number = || {
+                    let digits = 1 + (next() % 20) as usize;
+                    let mut text: String = (0..digits)
+                        .map(|_| char::from(b'0' + (next() % 10) as u8))
+                        .collect();
+                    let point = (next() % (digits as u64 + 2)) as usize;
+                    if point <= digits {
+                        text.insert(point, if next() % 3 == 0 { '.' } else { ',' });
+                    }
+                    match next() % 4 {
+                        0 => format!("-{text}"),
+                        1 => format!("\"{text}\""),
+                        _ => text,
+                    }
+                };
+                line = format!("{}{sep_text}{}", number(), number());
+            }
+            let block = format!("{line}\n1{sep_text}2\n");
+            for point in [b'.', b','] {
+                let layout = Layout {
+                    sep,
+                    point,
+                    point_open: false,
+                    comma_decimals: true,
+                    width: 2,
+                    columns: Columns {
+                        x: 0,
+                        y: 1,
+                        z: None,
+                    },
+                    found: Found::NoHeader,
+                    first_row: None,
+                    header: None,
+                };
+                let Some(points) = fast_lines::<2>(block.as_bytes(), &layout, &[0, 1]) else {
+                    continue;
+                };
+                assert_eq!(points[1], [1.0, 2.0], "{line:?}");
+                let content = strip_comment(&line).trim();
+                let at = Location::new(Path::new("r"), 1);
+                let fields = split_fields(content, sep, at).unwrap();
+                assert_eq!(fields.len(), 2, "{line:?}");
+                let careful = [0, 1].map(|c| parse_coordinate_with(&fields[c], c + 1, at, true));
+                let careful = careful.map(|v| v.unwrap().to_bits());
+                assert_eq!(points[0].map(f64::to_bits), careful, "{line:?}");
+                agreed += 1;
+            }
+        }
+        assert!(agreed > 10_000, "{agreed}");
     }
 
     #[test]
@@ -656,7 +957,12 @@ mod tests {
             }
             let block = format!("{line}\n{}\n", if csv { "1,2" } else { "1 2" });
             let layout = Layout {
-                csv,
+                sep: sep_of(csv),
+                point: b'.',
+                point_open: false,
+                comma_decimals: false,
+                found: Found::ByName,
+                header: None,
                 width: 2,
                 columns: Columns {
                     x: 0,
@@ -672,9 +978,10 @@ mod tests {
             assert_eq!(points[1], [1.0, 2.0], "{line:?}");
             let content = strip_comment(&line).trim();
             let at = Location::new(Path::new("r"), 1);
-            let fields = split_fields(content, csv, at).unwrap();
+            let fields = split_fields(content, sep_of(csv), at).unwrap();
             assert_eq!(fields.len(), 2, "{line:?}");
-            let careful = [0, 1].map(|c| parse_coordinate(&fields[c], c + 1, at).unwrap());
+            let careful =
+                [0, 1].map(|c| parse_coordinate_with(&fields[c], c + 1, at, false).unwrap());
             assert_eq!(
                 points[0].map(f64::to_bits),
                 careful.map(f64::to_bits),

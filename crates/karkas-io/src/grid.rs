@@ -75,7 +75,8 @@ pub(crate) fn parse_indexed(
     path: &Path,
     layout: &IndexedLayout,
 ) -> Result<Grid<Point3>, IoError> {
-    let text = strip_bom(text);
+    let text = crate::dialect::normalized_csv(strip_bom(text));
+    let text = text.as_ref();
     let plain = is_plain(text);
     if plain {
         if let Some(grid) = parse_in_order(text, path, layout) {

@@ -41,6 +41,7 @@
 
 pub mod airfoil;
 pub mod cad;
+pub mod dialect;
 pub mod error;
 pub mod export;
 pub mod format;
@@ -62,6 +63,7 @@ pub mod write;
 
 mod columns;
 mod lines;
+mod order_check;
 mod plain_decimal;
 mod shortest;
 mod store;

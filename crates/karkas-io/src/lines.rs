@@ -6,6 +6,8 @@
 
 use std::path::Path;
 
+pub(crate) use crate::dialect::split_fields;
+use crate::dialect::{column_name, parse_number};
 use crate::error::{IoError, Location};
 use crate::input::{excerpt, not_utf8_message, read_line_bytes, MAX_LINE_BYTES};
 
@@ -272,37 +274,12 @@ pub(crate) fn too_long(name: &Path, line: usize) -> IoError {
     ))
 }
 
-/// The fields of a line's `content` (comment already stripped): split at commas (`csv`,
-/// trimmed; a line with a double quote is read with the `csv` crate, so quoted fields work as
-/// in [`csv_rows`]) or at whitespace. `at` locates a malformed quoted line.
-pub(crate) fn split_fields(
-    content: &str,
-    csv: bool,
-    at: Location<'_>,
-) -> Result<Vec<String>, IoError> {
-    if !csv {
-        return Ok(content.split_whitespace().map(str::to_owned).collect());
-    }
-    if !content.contains('"') {
-        return Ok(content.split(',').map(|f| f.trim().to_owned()).collect());
-    }
-    let mut reader = csv::ReaderBuilder::new()
-        .has_headers(false)
-        .flexible(true)
-        .trim(csv::Trim::All)
-        .from_reader(content.as_bytes());
-    let mut record = csv::StringRecord::new();
-    reader
-        .read_record(&mut record)
-        .map_err(|e| at.error(format!("malformed CSV: {}", excerpt(&e.to_string()))))?;
-    Ok(record.iter().map(str::to_owned).collect())
-}
-
-/// The first field of `content` split at whitespace or commas: what tells a row (damaged or
-/// not) from text.
+/// The first field of `content` split at whitespace, commas or semicolons, without a quote
+/// before it: what tells a row (damaged or not) from text.
 pub(crate) fn first_token(content: &str) -> Option<&str> {
     content
-        .split(|c: char| c == ',' || c.is_whitespace())
+        .split(|c: char| c == ',' || c == ';' || c.is_whitespace())
+        .map(|f| f.trim_start_matches('"'))
         .find(|f| !f.is_empty())
 }
 
@@ -318,7 +295,8 @@ pub(crate) fn looks_numeric(field: &str) -> bool {
 }
 
 /// The 0-based positions of the columns `names` in the header row `header` of `path` (names
-/// matched case-insensitively, other columns ignored); `expected` lists the columns for the
+/// matched as [`column_name`] compares them: case, quotes and units aside; other columns
+/// ignored); `expected` lists the columns for the
 /// messages. Errors: a header of numbers only (no header), a column missing, a column named
 /// twice.
 pub(crate) fn header_columns<const N: usize>(
@@ -337,7 +315,7 @@ pub(crate) fn header_columns<const N: usize>(
             .fields
             .iter()
             .enumerate()
-            .filter(|(_, f)| f.eq_ignore_ascii_case(name))
+            .filter(|(_, f)| column_name(f) == name)
             .map(|(k, _)| k);
         *slot = found.next().ok_or_else(|| {
             at.error(format!(
@@ -374,13 +352,23 @@ pub(crate) fn parse_coordinate(
     column: usize,
     at: Location<'_>,
 ) -> Result<f64, IoError> {
-    match field.trim().parse::<f64>() {
-        Ok(v) if v.is_finite() => Ok(v),
-        Ok(_) => Err(at.error(format!(
+    parse_coordinate_with(field, column, at, false)
+}
+
+/// [`parse_coordinate`], a decimal comma read too when `decimal_comma` ([`parse_number`]).
+pub(crate) fn parse_coordinate_with(
+    field: &str,
+    column: usize,
+    at: Location<'_>,
+    decimal_comma: bool,
+) -> Result<f64, IoError> {
+    match parse_number(field, decimal_comma) {
+        Some(v) if v.is_finite() => Ok(v),
+        Some(_) => Err(at.error(format!(
             "non-finite value '{}' in column {column}",
             excerpt(field)
         ))),
-        Err(_) => Err(at.error(format!(
+        None => Err(at.error(format!(
             "'{}' is not a number (column {column})",
             excerpt(field)
         ))),

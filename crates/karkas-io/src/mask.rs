@@ -29,7 +29,7 @@ pub fn parse_cell_mask(
     rows: usize,
     cols: usize,
 ) -> Result<Grid<bool>, IoError> {
-    let records = csv_rows(strip_bom(text), path)?;
+    let records = csv_rows(&crate::dialect::normalized_csv(strip_bom(text)), path)?;
     let Some((header, data)) = records.split_first() else {
         return Err(data_error(
             path,

@@ -40,7 +40,7 @@ pub fn read_curve_family(path: &Path) -> Result<CurveFamily, IoError> {
 /// Reads a curve family from CSV `text` already in memory; `path` names the file in error
 /// messages.
 pub fn parse_curve_family(text: &str, path: &Path) -> Result<CurveFamily, IoError> {
-    let rows = csv_rows(strip_bom(text), path)?;
+    let rows = csv_rows(&crate::dialect::normalized_csv(strip_bom(text)), path)?;
     let Some((header, data)) = rows.split_first() else {
         return Err(data_error(path, "no curve points found"));
     };

@@ -4,7 +4,7 @@
 //!
 //! Hand-written because the general parsers (`fast-float2`, `str::parse`) read most digits
 //! one at a time and cover every form of a number; this reads the fraction eight digits at a
-//! time and leaves every other form to them ([`parse`] answers `None`). The result is exact:
+//! time and leaves every other form to them ([`parse_with`] answers `None`). The result is exact:
 //! the digits make an integer `w < 10^19` and the value is `w / 10^m` with `10^m < 2^64`;
 //! `w` shifted to 128 bits divided by `10^m` gives a quotient of at least 64 bits, and that
 //! quotient with a sticky bit for a non-zero remainder converts (`u128 as f64`, round to
@@ -14,12 +14,13 @@
 /// The most digits (leading zeros included) a plain decimal has here: `10^19 - 1` fits `u64`.
 const MAX_DIGITS: usize = 19;
 
-/// The value of the plain decimal that `bytes` start with and its length in bytes; `None`
-/// when they start with anything else (no digit before or after the point, an exponent,
-/// more than 19 digits, ...) or when fewer than eight bytes follow a run of digits, for a
-/// general parser to read.
+/// The value of the plain decimal that `bytes` start with, its decimal mark `POINT` (`b'.'`,
+/// or `b','` for a decimal comma), and its length in bytes; `None` when they start with
+/// anything else (no digit before or after the mark, an exponent, more than 19 digits, a
+/// point or comma right after the number, ...) or when fewer than eight bytes follow a run of
+/// digits, for a general parser to read.
 #[inline]
-pub(crate) fn parse(bytes: &[u8]) -> Option<(f64, usize)> {
+pub(crate) fn parse_with<const POINT: u8>(bytes: &[u8]) -> Option<(f64, usize)> {
     let (negative, mut k) = match bytes.first()? {
         b'-' => (true, 1),
         b'+' => (false, 1),
@@ -31,7 +32,7 @@ pub(crate) fn parse(bytes: &[u8]) -> Option<(f64, usize)> {
     }
     k += int_digits;
     let mut frac_digits = 0;
-    if bytes.get(k) == Some(&b'.') {
+    if bytes.get(k) == Some(&POINT) {
         k += 1;
         loop {
             let (run, n) = digit_run(bytes, k)?;
@@ -49,7 +50,7 @@ pub(crate) fn parse(bytes: &[u8]) -> Option<(f64, usize)> {
             return None;
         }
     }
-    if matches!(bytes.get(k), Some(b'e' | b'E' | b'.' | b'_')) {
+    if matches!(bytes.get(k), Some(b'e' | b'E' | b'.' | b'_')) || bytes.get(k) == Some(&POINT) {
         return None;
     }
     let magnitude = scaled(w, frac_digits);
@@ -136,6 +137,11 @@ fn eight_digits(mut v: u64) -> u64 {
 mod tests {
     use super::*;
 
+    /// A plain decimal with a decimal point.
+    fn parse(bytes: &[u8]) -> Option<(f64, usize)> {
+        parse_with::<b'.'>(bytes)
+    }
+
     /// `s` followed by a field separator and spaces, as in a file.
     fn padded(s: &str) -> Vec<u8> {
         format!("{s},        ").into_bytes()
@@ -190,6 +196,9 @@ mod tests {
         ] {
             assert_eq!(parse(&padded(other)), None, "{other:?}");
         }
+        assert_eq!(parse_with::<b','>(b"-0,25;1        "), Some((-0.25, 5)));
+        assert_eq!(parse_with::<b','>(b"0.25;1        "), None);
+        assert_eq!(parse_with::<b','>(b"0,25,1        "), None);
         assert_eq!(eight_digits(u64::from_le_bytes(*b"12345678")), 12_345_678);
         assert_eq!(digit_run(b"1234567,", 0), Some((1_234_567, 7)));
         assert_eq!(digit_run(b"/1234567", 0), Some((0, 0)));

@@ -27,12 +27,15 @@ use std::path::Path;
 use karkas::{Point, Point2, Point3};
 
 use crate::airfoil::AirfoilReader;
-use crate::columns::{read_columns, Either, Layout};
+use crate::columns::{read_columns, Either, Found, Layout};
+use crate::dialect::{join_units, parse_number, Separator};
+pub use crate::dialect::{ColumnChoice, ColumnRef, ReadOptions};
 use crate::error::{IoError, Location};
-use crate::input::{display_name, excerpt, Input};
+use crate::input::{display_name, Input};
 use crate::lines::{
-    check_held_at, first_token, is_number, looks_numeric, strip_comment, LineReader,
+    check_held_at, first_token, looks_numeric, split_fields, strip_comment, LineReader,
 };
+use crate::order_check;
 use crate::range::check_coordinate_range;
 use crate::store::{input_size, Flat, Store};
 
@@ -68,47 +71,129 @@ impl CurvePoints {
     }
 }
 
+/// Curve points as read, and the warnings of the reader about them (one line each, without
+/// the file's name): a first column that counts the rows, points far out of order
+/// ([`crate::order_check`]), a header read in order.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CurveRead<T> {
+    /// The points.
+    pub points: T,
+    /// What the reader noticed, each a sentence for the user.
+    pub warnings: Vec<String>,
+}
+
 /// Reads the curve points of the file at `path` (`-`: standard input; see the
-/// [module docs](self) for the formats), in one pass.
+/// [module docs](self) for the formats), in one pass. The warnings are dropped: see
+/// [`read_curve_points_with`].
 pub fn read_curve_points(path: &Path) -> Result<CurvePoints, IoError> {
+    Ok(read_curve_points_with(path, &ReadOptions::default())?.points)
+}
+
+/// Reads the curve points of the file at `path` (`-`: standard input) with the user's
+/// `options` (`--columns`, `--decimal-comma`), in one pass, with the reader's warnings.
+pub fn read_curve_points_with(
+    path: &Path,
+    options: &ReadOptions,
+) -> Result<CurveRead<CurvePoints>, IoError> {
     let name = display_name(path);
     let mut lines = LineReader::new(Input::open(path)?, &name);
-    Ok(
-        match read_any::<_, Vec<Point2>, Vec<Point3>>(&mut lines, path, input_size(path))? {
-            Either::Planar(p) => CurvePoints::Planar(in_range(p, &name)?),
-            Either::Spatial(p) => CurvePoints::Spatial(in_range(p, &name)?),
-        },
-    )
+    let (either, found) =
+        read_any::<_, Vec<Point2>, Vec<Point3>>(&mut lines, path, input_size(path), options)?;
+    typed(either, &found, &name)
 }
 
 /// Reads the curve points of the file at `path` (`-`: standard input) as one flat array of
 /// coordinates, point after point, and the dimension (2 or 3): the layout NumPy takes without
-/// a copy. Column files are parsed straight into the array.
+/// a copy. Column files are parsed straight into the array. The warnings are dropped: see
+/// [`read_curve_coordinates_with`].
 pub fn read_curve_coordinates(path: &Path) -> Result<(Vec<f64>, usize), IoError> {
+    Ok(read_curve_coordinates_with(path, &ReadOptions::default())?.points)
+}
+
+/// [`read_curve_coordinates`] with the user's `options`, and the reader's warnings.
+pub fn read_curve_coordinates_with(
+    path: &Path,
+    options: &ReadOptions,
+) -> Result<CurveRead<(Vec<f64>, usize)>, IoError> {
     let name = display_name(path);
     let mut lines = LineReader::new(Input::open(path)?, &name);
-    Ok(
-        match read_any::<_, Flat, Flat>(&mut lines, path, input_size(path))? {
-            Either::Planar(p) => (p.0, 2),
-            Either::Spatial(p) => (p.0, 3),
-        },
-    )
-    .and_then(|(flat, dim)| {
-        check_coordinate_range(flat.iter().copied(), &name)?;
-        Ok((flat, dim))
+    let (either, found) = read_any::<_, Flat, Flat>(&mut lines, path, input_size(path), options)?;
+    let (flat, dim) = match either {
+        Either::Planar(p) => (p.0, 2),
+        Either::Spatial(p) => (p.0, 3),
+    };
+    check_coordinate_range(flat.iter().copied(), &name)?;
+    let n = flat.len() / dim;
+    let warnings = warnings_of(n, dim, |k, c| flat[k * dim + c], &found);
+    Ok(CurveRead {
+        points: (flat, dim),
+        warnings,
     })
 }
 
 /// Reads curve points from `text` already in memory; `path` names the file in error messages
 /// and its extension (`.dat`) takes part in recognising the format.
 pub fn parse_curve_points(text: &str, path: &Path) -> Result<CurvePoints, IoError> {
+    Ok(parse_curve_points_with(text, path, &ReadOptions::default())?.points)
+}
+
+/// [`parse_curve_points`] with the user's `options`, and the reader's warnings.
+pub fn parse_curve_points_with(
+    text: &str,
+    path: &Path,
+    options: &ReadOptions,
+) -> Result<CurveRead<CurvePoints>, IoError> {
     let mut lines = LineReader::new(text.as_bytes(), path);
-    Ok(
-        match read_any::<_, Vec<Point2>, Vec<Point3>>(&mut lines, path, Some(text.len() as u64))? {
-            Either::Planar(p) => CurvePoints::Planar(in_range(p, path)?),
-            Either::Spatial(p) => CurvePoints::Spatial(in_range(p, path)?),
-        },
-    )
+    let size = Some(text.len() as u64);
+    let (either, found) = read_any::<_, Vec<Point2>, Vec<Point3>>(&mut lines, path, size, options)?;
+    typed(either, &found, path)
+}
+
+/// The points read, checked for their range, with the warnings about them.
+fn typed(
+    either: Either<Vec<Point2>, Vec<Point3>>,
+    found: &Found,
+    name: &Path,
+) -> Result<CurveRead<CurvePoints>, IoError> {
+    Ok(match either {
+        Either::Planar(p) => {
+            let warnings = warnings_of(p.len(), 2, |k, c| p[k][c], found);
+            CurveRead {
+                points: CurvePoints::Planar(in_range(p, name)?),
+                warnings,
+            }
+        }
+        Either::Spatial(p) => {
+            let warnings = warnings_of(p.len(), 3, |k, c| p[k][c], found);
+            CurveRead {
+                points: CurvePoints::Spatial(in_range(p, name)?),
+                warnings,
+            }
+        }
+    })
+}
+
+/// The warnings about `n` points of dimension `dim` (`coord(k, c)`) whose columns were
+/// `found` so.
+fn warnings_of(
+    n: usize,
+    dim: usize,
+    coord: impl Fn(usize, usize) -> f64,
+    found: &Found,
+) -> Vec<String> {
+    let mut warnings = Vec::new();
+    if let Found::InOrder(header) = found {
+        let names = if dim == 3 { "x, y, z" } else { "x, y" };
+        warnings.push(format!(
+            "the header '{header}' names no x and y columns: its {dim} columns are read in \
+             order as {names} (--columns A,B[,C] chooses others)"
+        ));
+    }
+    if dim == 3 && matches!(found, Found::NoHeader | Found::InOrder(_)) {
+        warnings.extend(order_check::counting_column(n, |k| coord(k, 0)));
+    }
+    warnings.extend(order_check::out_of_order(n, dim, coord));
+    warnings
 }
 
 /// `points`, unless their coordinates are out of karkas's range ([`check_coordinate_range`]).
@@ -118,17 +203,25 @@ fn in_range<const D: usize>(points: Vec<Point<D>>, path: &Path) -> Result<Vec<Po
 }
 
 /// Reads the points of `lines` (the input `path`, of `size` bytes when known) into the store
-/// of their dimension.
+/// of their dimension, read with `options`; with how their columns were found.
 fn read_any<R: BufRead + Send, A: Store<2>, B: Store<3>>(
     lines: &mut LineReader<'_, R>,
     path: &Path,
     size: Option<u64>,
-) -> Result<Either<A, B>, IoError> {
+    options: &ReadOptions,
+) -> Result<(Either<A, B>, Found), IoError> {
     let name = lines.name();
+    let mut seen = 0usize;
     let first = loop {
         let Some((line, text)) = lines.next_line()? else {
-            return Err(crate::error::data_error(name, "no points found"));
+            let message = if seen == 0 {
+                "no points found: the input is empty".to_owned()
+            } else {
+                format!("no points found: its {seen} lines are blank or comments ('#')")
+            };
+            return Err(crate::error::data_error(name, message));
         };
+        seen = line;
         let content = strip_comment(text).trim();
         if !content.is_empty() {
             break (line, content.to_owned(), text.trim().to_owned());
@@ -139,11 +232,13 @@ fn read_any<R: BufRead + Send, A: Store<2>, B: Store<3>>(
         }
     };
     let (line, content, whole) = first;
-    if !first_line_is_a_name(&content) {
-        let layout = Layout::from_first_line(&content, line, name)?;
-        return read_columns(lines, layout, size);
+    if options.columns.is_some() || !first_line_is_a_name(&content, options.decimal_comma) {
+        let layout = Layout::from_first_line(&content, line, name, options)?;
+        let found = layout.found.clone();
+        return Ok((read_columns(lines, layout, size)?, found));
     }
-    // A name: an airfoil, unless comma-separated rows follow (a CSV header without x and y).
+    // A name: an airfoil, unless rows separated by commas or semicolons (or as many fields as
+    // the first line, two or three) follow: the first line is then a column file's header.
     let is_dat = path
         .extension()
         .is_some_and(|e| e.eq_ignore_ascii_case("dat"));
@@ -154,13 +249,11 @@ fn read_any<R: BufRead + Send, A: Store<2>, B: Store<3>>(
         if !decided {
             let row = strip_comment(text).trim();
             if first_token(row).is_some_and(looks_numeric) {
-                if row.contains(',') {
-                    return Err(Location::new(name, line).error(format!(
-                        "the header '{}' names no 'x' and 'y' columns",
-                        excerpt(&content)
-                    )));
-                }
                 decided = true;
+                if let Some(layout) = header_of_rows(&content, line, row, next, name, options)? {
+                    let found = layout.found.clone();
+                    return Ok((read_columns(lines, layout, size)?, found));
+                }
             }
         }
         airfoil.feed(next, text)?;
@@ -174,21 +267,68 @@ fn read_any<R: BufRead + Send, A: Store<2>, B: Store<3>>(
     for p in points {
         store.push(p.0);
     }
-    Ok(Either::Planar(store))
+    Ok((Either::Planar(store), Found::ByName))
+}
+
+/// The layout of a column file whose header is the first content line `header` (line
+/// `line`) when its first row `row` (line `row_line`) is separated by commas or semicolons,
+/// or has as many fields as the header and three of them; `None` for an airfoil (a name, then
+/// pairs separated by spaces).
+fn header_of_rows(
+    header: &str,
+    line: usize,
+    row: &str,
+    row_line: usize,
+    name: &Path,
+    options: &ReadOptions,
+) -> Result<Option<Layout>, IoError> {
+    let row_sep = Separator::of_line(row, options.decimal_comma);
+    let head_sep = Separator::of_line(header, options.decimal_comma);
+    let at = Location::new(name, line);
+    let head_fields = split_fields(header, head_sep, at)?;
+    let head_fields = if head_sep == Separator::Whitespace {
+        join_units(head_fields)
+    } else {
+        head_fields
+    };
+    let row_fields = split_fields(row, row_sep, Location::new(name, row_line))?;
+    let columns = matches!(row_sep, Separator::Comma | Separator::Semicolon)
+        || (row_fields.len() == 3 && head_fields.len() == 3);
+    if !columns {
+        return Ok(None);
+    }
+    let sep = if head_fields.len() == row_fields.len() {
+        row_sep
+    } else {
+        head_sep
+    };
+    let head_fields = if sep == head_sep {
+        head_fields
+    } else {
+        split_fields(header, sep, at)?
+    };
+    let mut layout = Layout::from_header(head_fields, sep, line, name, options)?;
+    layout.first_row = Some((row_line, row.to_owned()));
+    Ok(Some(layout))
 }
 
 /// True when the first content line is neither numbers nor a column header naming `x` and
-/// `y` (split at commas when it holds one, else at whitespace): the name line of an airfoil
-/// (or a mistake).
-fn first_line_is_a_name(first: &str) -> bool {
-    let fields: Vec<String> = if first.contains(',') {
-        first.split(',').map(|f| f.trim().to_owned()).collect()
-    } else {
-        first.split_whitespace().map(str::to_owned).collect()
+/// `y` (split at its separator, [`Separator::of_line`]): the name line of an airfoil, or
+/// the header of a file whose columns are named otherwise.
+fn first_line_is_a_name(first: &str, decimal_comma: bool) -> bool {
+    let sep = Separator::of_line(first, decimal_comma);
+    let Ok(fields) = split_fields(first, sep, Location::new(Path::new(""), 1)) else {
+        return true;
     };
-    if fields.iter().all(|f| is_number(f)) {
+    let comma = sep.allows_decimal_comma() || decimal_comma;
+    if fields.iter().all(|f| parse_number(f, comma).is_some()) {
         return false;
     }
+    let fields = if sep == Separator::Whitespace {
+        join_units(fields)
+    } else {
+        fields
+    };
     crate::columns::Columns::from_header(&fields).is_none()
 }
 
@@ -204,10 +344,14 @@ mod tests {
 
     #[test]
     fn names_and_headers_are_told_apart() {
-        assert!(first_line_is_a_name("NACA 63,3-418"));
-        assert!(first_line_is_a_name("a,b"));
-        assert!(!first_line_is_a_name("t, X ,y"));
-        assert!(!first_line_is_a_name("x y z"));
-        assert!(!first_line_is_a_name("1,2"));
+        assert!(first_line_is_a_name("NACA 63,3-418", false));
+        assert!(first_line_is_a_name("a,b", false));
+        assert!(!first_line_is_a_name("t, X ,y", false));
+        assert!(!first_line_is_a_name("x y z", false));
+        assert!(!first_line_is_a_name("1,2", false));
+        assert!(!first_line_is_a_name("x [mm] y [mm]", false));
+        assert!(!first_line_is_a_name("\"x\",\"y\"", false));
+        assert!(!first_line_is_a_name("x;y", false));
+        assert!(!first_line_is_a_name("0,5\t1,5", false));
     }
 }

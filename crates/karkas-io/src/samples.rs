@@ -21,7 +21,7 @@ pub fn read_surface_samples(path: &Path) -> Result<Grid<Point3>, IoError> {
 
 /// Reads a sampled surface from CSV `text` (see [`read_surface_samples`]).
 pub fn parse_surface_samples(text: &str, path: &Path) -> Result<Grid<Point3>, IoError> {
-    let rows = csv_rows(strip_bom(text), path)?;
+    let rows = csv_rows(&crate::dialect::normalized_csv(strip_bom(text)), path)?;
     let Some((header, data)) = rows.split_first() else {
         return Err(data_error(path, "no surface samples found"));
     };

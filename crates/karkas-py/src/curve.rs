@@ -72,6 +72,54 @@ pub struct PyCurve {
     /// The exact B-spline form, built on first use (by `to_bspline` or by an evaluation
     /// outside the domain).
     pub bspline: OnceLock<karkas::Result<Arc<FlatBSpline>>>,
+    /// What a call with `extrapolate=None` does outside the domain (SciPy's `extrapolate` of
+    /// a constructor).
+    pub extrapolate: Extrapolate,
+}
+
+/// What an open curve gives outside its domain when a call does not say
+/// (`extrapolate=None`): SciPy's `extrapolate` of `CubicSpline` and `BSpline`.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Extrapolate {
+    /// The end pieces continued (`None` or `True`).
+    #[default]
+    Continue,
+    /// NaN (`False`).
+    Nan,
+    /// The parameter wrapped into the domain by its length (`'periodic'`).
+    Periodic,
+}
+
+impl Extrapolate {
+    /// `extrapolate=` of a constructor: None, a bool, or ``'periodic'``.
+    pub fn extract(value: Option<&Bound<'_, PyAny>>) -> PyResult<Extrapolate> {
+        let Some(value) = value.filter(|v| !v.is_none()) else {
+            return Ok(Extrapolate::Continue);
+        };
+        if let Ok(flag) = value.extract::<bool>() {
+            return Ok(if flag {
+                Extrapolate::Continue
+            } else {
+                Extrapolate::Nan
+            });
+        }
+        match value.extract::<String>() {
+            Ok(name) if name == "periodic" => Ok(Extrapolate::Periodic),
+            _ => Err(crate::errors::OptionError::new_err(format!(
+                "extrapolate must be None, True, False or 'periodic', got {}",
+                value.repr()?
+            ))),
+        }
+    }
+
+    /// The value `extrapolate=` gave, for pickling (None for the default).
+    pub fn to_object<'py>(self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        Ok(match self {
+            Extrapolate::Continue => py.None().into_bound(py),
+            Extrapolate::Nan => false.into_pyobject(py)?.to_owned().into_any(),
+            Extrapolate::Periodic => "periodic".into_pyobject(py)?.into_any(),
+        })
+    }
 }
 
 impl PyCurve {
@@ -81,7 +129,14 @@ impl PyCurve {
             inner,
             description,
             bspline: OnceLock::new(),
+            extrapolate: Extrapolate::Continue,
         }
+    }
+
+    /// The curve with `extrapolate` as what a call with `extrapolate=None` does.
+    pub fn with_extrapolate(mut self, extrapolate: Extrapolate) -> Self {
+        self.extrapolate = extrapolate;
+        self
     }
 
     /// The exact B-spline form (built once).

@@ -13,7 +13,7 @@ use pyo3::prelude::*;
 
 use crate::bspline_form::FlatBSpline;
 use crate::convert::{count, maybe_detach, output_array, vector_to_array, write_flat, Params};
-use crate::curve::PyCurve;
+use crate::curve::{Extrapolate, PyCurve};
 use crate::errors::library_error;
 use crate::wrapper::CurveImpl;
 
@@ -183,17 +183,28 @@ impl PyCurve {
         let mut shape = params.shape();
         shape.push(dim);
         let array = output_array(py, out, &shape)?;
-        let ts = params.flat();
         let inner = &self.inner;
         let closed = inner.closed();
         let domain = inner.domain();
+        let rule = match extrapolate {
+            Some(true) => Extrapolate::Continue,
+            Some(false) => Extrapolate::Nan,
+            None => self.extrapolate,
+        };
+        let mut ts = params.flat();
+        if rule == Extrapolate::Periodic && !closed {
+            // SciPy's rule: every parameter wrapped, the domain's end to its start.
+            let (a, b) = domain;
+            let wrap = karkas::Interval::new(a, b);
+            ts = std::borrow::Cow::Owned(ts.iter().map(|&t| wrap.wrap(t)).collect());
+        }
         write_flat(&array, |flat| {
             maybe_detach(py, ts.len(), || {
                 inner.eval_flat(&ts, nu, flat);
                 if closed {
                     return Ok(());
                 }
-                let extrapolate = extrapolate.unwrap_or(true);
+                let extrapolate = rule != Extrapolate::Nan;
                 if extrapolate && inner.extrapolates() {
                     return Ok(());
                 }
@@ -243,12 +254,13 @@ impl PyCurve {
         let description = format!("<karkas.CurveDerivative nu={nu} of {of}");
         Py::new(
             slf.py(),
-            PyClassInitializer::from(PyCurve::new(inner, description)).add_subclass(
-                PyCurveDerivative {
-                    parent: slf.clone().unbind(),
-                    nu,
-                },
-            ),
+            PyClassInitializer::from(
+                PyCurve::new(inner, description).with_extrapolate(base.extrapolate),
+            )
+            .add_subclass(PyCurveDerivative {
+                parent: slf.clone().unbind(),
+                nu,
+            }),
         )
     }
 

@@ -116,6 +116,30 @@ pyo3::create_exception!(
      (set_max_input_bytes). A file that cannot be opened is OSError instead."
 );
 
+pyo3::create_exception!(
+    karkas,
+    KarkasWarning,
+    pyo3::exceptions::PyUserWarning,
+    "A warning of karkas about its input, issued with warnings.warn.\n\
+     \n\
+     The readers warn of a first column that counts the rows (row numbers\n\
+     read as x), of points far out of their order along the curve, and of a\n\
+     header whose columns are read in order; each message names the file and\n\
+     the fix (columns=, sorting the points). A subclass of UserWarning, so\n\
+     warnings.simplefilter(\"error\", karkas.KarkasWarning) makes them errors."
+);
+
+/// Issues every message of `warnings` about the file `name` as a [`KarkasWarning`].
+pub fn warn_all(py: Python<'_>, name: &std::path::Path, warnings: &[String]) -> PyResult<()> {
+    let category = py.get_type::<KarkasWarning>();
+    for warning in warnings {
+        let message =
+            std::ffi::CString::new(format!("{}: {warning}", name.display())).unwrap_or_default();
+        PyErr::warn(py, &category, &message, 1)?;
+    }
+    Ok(())
+}
+
 /// Adds the exception classes to the module `m`.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     let py = m.py();
@@ -131,6 +155,7 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("ExpressionError", py.get_type::<ExpressionError>())?;
     m.add("FileFormatError", py.get_type::<FileFormatError>())?;
     m.add("NoBSplineFormError", py.get_type::<NoBSplineFormError>())?;
+    m.add("KarkasWarning", py.get_type::<KarkasWarning>())?;
     Ok(())
 }
 

@@ -11,7 +11,7 @@ use karkas_io::write::{write_curve_csv, write_surface_csv};
 use pyo3::prelude::*;
 
 use crate::convert::{as_points, by_dim, check_dim3, extract_vector, GridArray, PointsArray};
-use crate::errors::file_error;
+use crate::export_format::write_error;
 
 /// A (nu, nv, 3) grid of points.
 fn grid3(grid: &Bound<'_, PyAny>) -> PyResult<(usize, usize, Vec<Point3>)> {
@@ -54,7 +54,7 @@ fn grid3(grid: &Bound<'_, PyAny>) -> PyResult<(usize, usize, Vec<Point3>)> {
 pub fn export_obj(py: Python<'_>, path: PathBuf, grid: &Bound<'_, PyAny>) -> PyResult<()> {
     let (nu, nv, points) = grid3(grid)?;
     py.detach(|| write_surface_obj(&path, nu, nv, &points))
-        .map_err(file_error)
+        .map_err(write_error)
 }
 
 /// Writes a sampled surface as a binary STL mesh (two triangles a grid cell).
@@ -90,7 +90,7 @@ pub fn export_obj(py: Python<'_>, path: PathBuf, grid: &Bound<'_, PyAny>) -> PyR
 pub fn export_stl(py: Python<'_>, path: PathBuf, grid: &Bound<'_, PyAny>) -> PyResult<()> {
     let (nu, nv, points) = grid3(grid)?;
     py.detach(|| write_surface_stl(&path, nu, nv, &points))
-        .map_err(file_error)
+        .map_err(write_error)
 }
 
 /// Writes curve samples as CSV with the header ``t,x,y`` or ``t,x,y,z``.
@@ -134,7 +134,7 @@ pub fn export_curve_csv(
     let flat = pts.flat();
     by_dim!(dim, D => {
         let p = as_points::<D>(&flat);
-        py.detach(|| write_curve_csv(&path, &ts, p)).map_err(file_error)
+        py.detach(|| write_curve_csv(&path, &ts, p)).map_err(write_error)
     })
 }
 
@@ -178,5 +178,5 @@ pub fn export_surface_csv(
     let (us, vs) = (extract_vector(u, "u")?, extract_vector(v, "v")?);
     let (_, _, points) = grid3(grid)?;
     py.detach(|| write_surface_csv(&path, &us, &vs, &points))
-        .map_err(file_error)
+        .map_err(write_error)
 }

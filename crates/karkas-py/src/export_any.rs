@@ -8,6 +8,8 @@
 use std::path::{Path, PathBuf};
 
 use karkas::bspline::BSplineCurve;
+use karkas::geometry::mesh_parameters::DEFAULT_RELATIVE_TOLERANCE;
+use karkas::geometry::{mesh_parameters, surface_size};
 use karkas::Point3;
 use karkas_io::export::cad::{write_cad_curve_with_points, write_cad_surface, NO_EXACT_FORM};
 use karkas_io::export::curve::{
@@ -19,7 +21,9 @@ use karkas_io::export::formats::{
 };
 use karkas_io::export::mesh::write_triangle_mesh;
 use karkas_io::export::samples::{default_curve_samples, default_surface_samples, MAX_SAMPLES};
-use karkas_io::export::surface::{write_sampled_surface, write_surface, SurfaceDrawing};
+use karkas_io::export::surface::{
+    write_sampled_surface, write_surface, write_surface_at, SurfaceDrawing,
+};
 use karkas_io::mesh::{MeshOptions, TriangleMesh};
 use karkas_io::svg::CurveOverlay;
 use karkas_io::write::write_indexed_grid_csv;
@@ -73,6 +77,11 @@ use crate::surface::PySurface;
 ///     Write STL and PLY as text instead of binary.
 /// flip_normals : bool, default False
 ///     Turn meshes over (reverse the triangles' winding and the normals).
+/// mesh_tolerance : float, optional
+///     Meshes of a surface (OBJ, STL, PLY, VTK, VTS, GLB) without ``samples``: sampled
+///     densely where the surface bends and sparsely where it does not, so that the mesh lies
+///     within this distance of it (model units; the command line's ``--mesh-tolerance``).
+///     Default: ``1e-4`` of the surface's size (the diagonal of its bounding box).
 ///
 /// Returns
 /// -------
@@ -100,10 +109,21 @@ use crate::surface::PySurface;
 /// 'c.csv'
 /// >>> open(os.path.join(d, "c.csv")).readline().strip()
 /// 't,x,y'
+///
+/// A surface meshed within a tolerance: rows dense where it bends, sparse elsewhere.
+///
+/// >>> u, v = np.meshgrid(np.linspace(0, np.pi, 9), np.linspace(0, 2, 5), indexing="ij")
+/// >>> S = karkas.BicubicSurface(np.stack([np.cos(u), np.sin(u), v], axis=-1))
+/// >>> _ = karkas.export(S, os.path.join(d, "s.stl"), mesh_tolerance=1e-3)
+/// >>> try:
+/// ...     karkas.export(c, os.path.join(d, "c.stl"))
+/// ... except karkas.OptionError as e:
+/// ...     print(str(e).split(": ", 1)[1])
+/// a curve has no mesh form (.stl is a mesh, made of surfaces, grids and triangle meshes): write .csv, .svg, .png, .html, .step, .iges, .dxf
 #[pyfunction]
-#[pyo3(signature = (obj, path, *, format = None, samples = None, title = None, points = None, closed_points = false, net = None, comb = false, ascii = false, flip_normals = false))]
+#[pyo3(signature = (obj, path, *, format = None, samples = None, title = None, points = None, closed_points = false, net = None, comb = false, ascii = false, flip_normals = false, mesh_tolerance = None))]
 #[pyo3(
-    text_signature = "(obj, path, *, format=None, samples=None, title=None, points=None, closed_points=False, net=None, comb=False, ascii=False, flip_normals=False)"
+    text_signature = "(obj, path, *, format=None, samples=None, title=None, points=None, closed_points=False, net=None, comb=False, ascii=False, flip_normals=False, mesh_tolerance=None)"
 )]
 #[allow(clippy::too_many_arguments)]
 pub fn export(
@@ -119,8 +139,17 @@ pub fn export(
     comb: bool,
     ascii: bool,
     flip_normals: bool,
+    mesh_tolerance: Option<f64>,
 ) -> PyResult<PathBuf> {
+    if let Some(t) = mesh_tolerance {
+        if !(t > 0.0 && t.is_finite()) {
+            return Err(OptionError::new_err(format!(
+                "mesh_tolerance must be positive and finite (model units), got {t}"
+            )));
+        }
+    }
     let options = Options {
+        mesh_tolerance,
         format,
         samples: samples.map(sample_counts).transpose()?,
         title,
@@ -154,12 +183,25 @@ pub fn export(
     Ok(path)
 }
 
-/// The caption: `options.title`, else the object's repr.
+/// The caption: `options.title`, else what is drawn: the object as its repr describes it
+/// (without the angle brackets, the module and the domain) and the input points drawn over
+/// it, e.g. `LLCurve order=3, closed=False, 12 points in 2-D; its 12 input points in red`.
 fn title_of(obj: &Bound<'_, PyAny>, options: &Options) -> PyResult<String> {
-    match &options.title {
-        Some(t) => Ok(t.clone()),
-        None => Ok(obj.repr()?.to_string()),
+    if let Some(t) = &options.title {
+        return Ok(t.clone());
     }
+    let repr = obj.repr()?.to_string();
+    let what = repr
+        .trim_start_matches('<')
+        .trim_end_matches('>')
+        .trim_start_matches("karkas.");
+    let what = what.split(", domain=").next().unwrap_or(what);
+    Ok(match &options.points {
+        Some((flat, dim)) if *dim > 0 => {
+            format!("{what}; its {} input points in red", flat.len() / dim)
+        }
+        _ => what.to_owned(),
+    })
 }
 
 /// `samples=`: a count, or a pair of counts (a single count for both directions of a
@@ -279,6 +321,10 @@ fn export_surface(
         )));
     }
     let title = title_of(obj, options)?;
+    let view = SurfaceView(&*surface.inner);
+    if OutputFormat::MESHES.contains(&format) && options.samples.is_none() {
+        return export_mesh_within(py, &view, format, path, &title, options);
+    }
     let counts = options.samples.unwrap_or_else(|| match &options.net {
         Some(net) => (
             default_surface_samples(net.rows()),
@@ -291,9 +337,41 @@ fn export_surface(
         net: options.net.as_ref(),
         mesh: options.mesh,
     };
-    let view = SurfaceView(&*surface.inner);
     py.detach(|| write_sampled_surface(&view, counts, format, path, &drawing))
         .map_err(write_error)
+}
+
+/// A surface as a mesh within `options.mesh_tolerance` (default
+/// [`DEFAULT_RELATIVE_TOLERANCE`] of its size), sampled where it bends
+/// ([`mesh_parameters`]), within `karkas.max_memory`.
+fn export_mesh_within(
+    py: Python<'_>,
+    view: &SurfaceView<'_>,
+    format: OutputFormat,
+    path: &Path,
+    title: &str,
+    options: &Options,
+) -> PyResult<()> {
+    // A sample of a mesh: its point, normal, two triangles and the writer's arrays.
+    const BYTES_PER_SAMPLE: u128 = 24 + 130;
+    let budget = match crate::limits::current_cap(py)? {
+        Some(cap) => usize::try_from(cap / BYTES_PER_SAMPLE).unwrap_or(usize::MAX),
+        None => usize::MAX,
+    }
+    .min(MAX_SAMPLES);
+    let drawing = SurfaceDrawing {
+        title,
+        net: options.net.as_ref(),
+        mesh: options.mesh,
+    };
+    py.detach(|| {
+        let tolerance = options
+            .mesh_tolerance
+            .unwrap_or_else(|| DEFAULT_RELATIVE_TOLERANCE * surface_size(view));
+        let found = mesh_parameters(view, tolerance, budget);
+        write_surface_at(view, (&found.us, &found.vs), format, path, &drawing)
+    })
+    .map_err(write_error)
 }
 
 /// A discrete periodic spline: its values as CSV, a picture or the page; no exact form.

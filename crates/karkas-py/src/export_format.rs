@@ -10,7 +10,9 @@ use karkas_io::{IoError, OutputFormat};
 use pyo3::prelude::*;
 
 use crate::convert::{by_dim, GridArray};
-use crate::errors::{file_error, library_error, KarkasError, OptionError};
+use crate::errors::{
+    file_error, library_error, IncompatibleDataError, KarkasError, OptionError, PointsError,
+};
 
 /// What the options of `karkas.export` say about a drawing and a mesh.
 pub struct Options {
@@ -22,17 +24,24 @@ pub struct Options {
     pub(crate) net: Option<Grid<Point3>>,
     pub(crate) comb: bool,
     pub(crate) mesh: MeshOptions,
+    /// `mesh_tolerance=`: meshes of surfaces within it (None: the default).
+    pub(crate) mesh_tolerance: Option<f64>,
 }
 
 /// The format of `path` among `allowed`: `options.format` by name, else the extension; STEP,
 /// IGES and DXF asked of a kind without them are refused with `no_exact` (DXF of a kind with
-/// STEP, a surface, as curves only).
+/// STEP, a surface, as curves only), and a mesh of a kind without one (a curve) says so.
 pub fn choose(
     path: &Path,
     options: &Options,
     allowed: &[OutputFormat],
     no_exact: &str,
 ) -> PyResult<OutputFormat> {
+    let what = if allowed.contains(&OutputFormat::Dxf) {
+        "a curve"
+    } else {
+        "this object"
+    };
     let format = match &options.format {
         Some(name) => named(name)?,
         None => {
@@ -47,6 +56,21 @@ pub fn choose(
         return Err(OptionError::new_err(format!(
             "{}: DXF is written for curves only (write .step or .iges)",
             path.display()
+        )));
+    }
+    if OutputFormat::MESHES.contains(&format)
+        && !allowed.iter().any(|f| OutputFormat::MESHES.contains(f))
+    {
+        let names: Vec<String> = allowed
+            .iter()
+            .map(|f| format!(".{}", f.extension()))
+            .collect();
+        return Err(OptionError::new_err(format!(
+            "{}: {what} has no mesh form (.{} is a mesh, made of surfaces, grids and triangle \
+             meshes): write {}",
+            path.display(),
+            format.extension(),
+            names.join(", ")
         )));
     }
     if format.is_cad() && !allowed.contains(&format) {
@@ -86,12 +110,17 @@ fn named(name: &str) -> PyResult<OutputFormat> {
         })
 }
 
-/// A write error of karkas-io as the Python exception of its kind.
+/// A write error of karkas-io as the Python exception of its kind: `OSError` when the
+/// operating system refused the file, a `KarkasError` subclass (a `ValueError`) when the data
+/// cannot be written: parameters and points of different counts `IncompatibleDataError`, a
+/// mesh that fails its checks `PointsError`, an unknown extension `OptionError`.
 pub fn write_error(e: IoError) -> PyErr {
     match e {
         IoError::Write { .. } | IoError::Open { .. } => file_error(e),
         IoError::UnknownExtension { .. } => OptionError::new_err(e.to_string()),
         IoError::Geometry(g) => library_error(g.source),
+        IoError::LengthMismatch { .. } => IncompatibleDataError::new_err(e.to_string()),
+        IoError::InvalidMesh { .. } => PointsError::new_err(e.to_string()),
         other => KarkasError::new_err(other.to_string()),
     }
 }

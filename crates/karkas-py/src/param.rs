@@ -14,7 +14,7 @@ use crate::convert::{
     as_points, by_dim, count, extract_vector, maybe_detach, points_to_array, py_bool, small_vector,
     vector_to_array, FlatPoints, GridArray, Numbers, PointsArray,
 };
-use crate::curve::PyCurve;
+use crate::curve::{Extrapolate, PyCurve};
 use crate::errors::{library_error, OptionError};
 use crate::surface::PySurface;
 use crate::wrapper::{
@@ -39,18 +39,35 @@ pub enum Ends {
     Clamped(Vec<f64>, Vec<f64>),
 }
 
-/// The end conditions named by `bc`.
+/// The end conditions named by `bc`: a name, `('clamped', start, end)`, or SciPy's pairs
+/// `((order, value), (order, value))` (order 1: clamped; order 2 with zero values: natural).
 fn parse_ends<const D: usize>(bc: &Bound<'_, PyAny>) -> PyResult<SplineEnds<D>> {
     if let Ok(name) = bc.extract::<String>() {
         return match name.as_str() {
             "not-a-knot" => Ok(SplineEnds::NotAKnot),
             "natural" => Ok(SplineEnds::Natural),
             "periodic" => Ok(SplineEnds::Periodic),
+            "clamped" => Ok(SplineEnds::Clamped {
+                start: karkas::Point::ZERO,
+                end: karkas::Point::ZERO,
+            }),
             _ => Err(OptionError::new_err(format!(
-                "unknown bc {name:?} (expected 'not-a-knot', 'natural', 'periodic' or \
-                 ('clamped', start_derivative, end_derivative))"
+                "unknown bc {name:?} (expected 'not-a-knot', 'natural', 'periodic', 'clamped' \
+                 or ('clamped', start_derivative, end_derivative))"
             ))),
         };
+    }
+    if let Ok((start, end)) = bc.extract::<(Bound<'_, PyAny>, Bound<'_, PyAny>)>() {
+        if let (Some(a), Some(b)) = (scipy_end(&start)?, scipy_end(&end)?) {
+            return match (a, b) {
+                (ScipyEnd::Named(a), ScipyEnd::Named(b)) if a == b => parse_ends(&start),
+                (ScipyEnd::Named(_), ScipyEnd::Named(_)) => Err(OptionError::new_err(
+                    "bc_type: ends of different kinds are not supported (both ends \
+                     'not-a-knot', 'natural', 'clamped' or 'periodic')",
+                )),
+                (a, b) => scipy_ends::<D>(a.pair(start.py())?, b.pair(end.py())?),
+            };
+        }
     }
     let (name, start, end): (String, Bound<'_, PyAny>, Bound<'_, PyAny>) =
         bc.extract().map_err(|_| {
@@ -70,6 +87,91 @@ fn parse_ends<const D: usize>(bc: &Bound<'_, PyAny>) -> PyResult<SplineEnds<D>> 
     s.0.copy_from_slice(&start);
     e.0.copy_from_slice(&end);
     Ok(SplineEnds::Clamped { start: s, end: e })
+}
+
+/// One end of SciPy's `bc_type` pairs: a name, or `(order, value)`.
+enum ScipyEnd<'py> {
+    /// `'not-a-knot'`, `'natural'`, `'clamped'`, `'periodic'`.
+    Named(String),
+    /// `(order, value)`.
+    Pair(i64, Bound<'py, PyAny>),
+}
+
+impl<'py> ScipyEnd<'py> {
+    /// The end as `(order, value)`: `'natural'` is `(2, 0)`, `'clamped'` `(1, 0)`; other names
+    /// have no such form (an `OptionError`).
+    fn pair(self, py: Python<'py>) -> PyResult<(i64, Bound<'py, PyAny>)> {
+        let zero = || 0.0f64.into_pyobject(py).map(|z| z.into_any());
+        match self {
+            ScipyEnd::Pair(order, value) => Ok((order, value)),
+            ScipyEnd::Named(name) if name == "natural" => Ok((2, zero()?)),
+            ScipyEnd::Named(name) if name == "clamped" => Ok((1, zero()?)),
+            ScipyEnd::Named(name) => Err(OptionError::new_err(format!(
+                "bc_type: '{name}' at one end needs it at the other end too"
+            ))),
+        }
+    }
+}
+
+/// One end of a `bc_type` pair as SciPy writes it; `None` for anything else.
+fn scipy_end<'py>(end: &Bound<'py, PyAny>) -> PyResult<Option<ScipyEnd<'py>>> {
+    if let Ok(name) = end.extract::<String>() {
+        return Ok(Some(ScipyEnd::Named(name)));
+    }
+    Ok(end
+        .extract::<(i64, Bound<'py, PyAny>)>()
+        .ok()
+        .map(|(order, value)| ScipyEnd::Pair(order, value)))
+}
+
+/// SciPy's end conditions `((order, value), (order, value))`: first derivatives at both ends
+/// (clamped), or zero second derivatives at both (natural). Other forms (a second derivative
+/// other than zero, two kinds of ends) are refused: the library's ends are not-a-knot,
+/// natural, clamped and periodic.
+fn scipy_ends<const D: usize>(
+    (o1, v1): (i64, Bound<'_, PyAny>),
+    (o2, v2): (i64, Bound<'_, PyAny>),
+) -> PyResult<SplineEnds<D>> {
+    let (v1, v2) = (&v1, &v2);
+    let vector = |v: &Bound<'_, PyAny>, what: &str| -> PyResult<karkas::Point<D>> {
+        let values = match v.extract::<f64>() {
+            Ok(x) => vec![x; D],
+            Err(_) => small_vector(v, what)?,
+        };
+        if values.len() != D {
+            return Err(OptionError::new_err(format!(
+                "bc_type: {what} has {} values, the points {D} coordinates",
+                values.len()
+            )));
+        }
+        let mut p = karkas::Point::<D>::ZERO;
+        p.0.copy_from_slice(&values);
+        Ok(p)
+    };
+    match (o1, o2) {
+        (1, 1) => Ok(SplineEnds::Clamped {
+            start: vector(v1, "the start derivative")?,
+            end: vector(v2, "the end derivative")?,
+        }),
+        (2, 2) => {
+            let zero = |v: karkas::Point<D>| v.0.iter().all(|&x| x == 0.0);
+            if zero(vector(v1, "the start second derivative")?)
+                && zero(vector(v2, "the end second derivative")?)
+            {
+                Ok(SplineEnds::Natural)
+            } else {
+                Err(OptionError::new_err(
+                    "bc_type: end second derivatives other than 0 are not supported (the ends \
+                     are 'not-a-knot', 'natural', 'clamped' with given first derivatives, or \
+                     'periodic')",
+                ))
+            }
+        }
+        _ => Err(OptionError::new_err(format!(
+            "bc_type: ends of derivative orders {o1} and {o2} are not supported (both 1: \
+             clamped; both 2 with value 0: natural)"
+        ))),
+    }
 }
 
 /// A cubic interpolating spline through points (C^2), SciPy's ``CubicSpline`` for parametric
@@ -95,8 +197,18 @@ fn parse_ends<const D: usize>(bc: &Bound<'_, PyAny>) -> PyResult<SplineEnds<D>> 
 ///     (square roots of chord lengths); ignored when ``t`` is given.
 /// bc : str or tuple, optional
 ///     The end conditions: ``'not-a-knot'`` (when None), ``'natural'``, ``'periodic'`` (closes
-///     the curve: the first point is appended unless the last repeats it) or
-///     ``('clamped', start_derivative, end_derivative)``.
+///     the curve: the first point is appended unless the last repeats it),
+///     ``('clamped', start_derivative, end_derivative)`` or ``'clamped'`` (zero first
+///     derivatives, as SciPy's).
+/// extrapolate : bool or 'periodic', optional
+///     What a call with ``extrapolate=None`` gives outside the domain of an open spline, as
+///     SciPy's ``CubicSpline``: the end pieces continued (None, True), NaN (False), or the
+///     parameter wrapped into the domain (``'periodic'``).
+/// bc_type : str or tuple, optional
+///     SciPy's name of ``bc`` (give one of the two), also in SciPy's forms: a pair of ends,
+///     each a name or ``(order, value)``, ``((1, start_derivative), (1, end_derivative))``
+///     for clamped ends and ``((2, 0), (2, 0))`` for natural ones (``'clamped'`` is
+///     ``(1, 0)``, ``'natural'`` ``(2, 0)``); the two ends of one kind.
 ///
 /// Raises
 /// ------
@@ -105,7 +217,8 @@ fn parse_ends<const D: usize>(bc: &Bound<'_, PyAny>) -> PyResult<SplineEnds<D>> 
 /// KnotsError
 ///     ``t`` is not finite and strictly increasing, or not one per point.
 /// OptionError
-///     An unknown ``parameterization`` or ``bc``.
+///     An unknown ``parameterization``, ``bc`` or ``extrapolate``; ``bc`` and ``bc_type``
+///     both given; end second derivatives other than zero (``((2, v), ...)``).
 ///
 /// Examples
 /// --------
@@ -116,12 +229,16 @@ fn parse_ends<const D: usize>(bc: &Bound<'_, PyAny>) -> PyResult<SplineEnds<D>> 
 /// >>> bool(np.allclose(c(c.knots), pts))
 /// True
 ///
-/// It equals SciPy's interpolant on the same parameters:
+/// It equals SciPy's interpolant on the same parameters, and takes SciPy's names:
 ///
 /// >>> from scipy.interpolate import CubicSpline
 /// >>> s = np.linspace(0.0, 3.0, 11)
 /// >>> bool(np.allclose(c(s), CubicSpline([0.0, 1.0, 2.0, 3.0], pts)(s), atol=1e-12))
 /// True
+/// >>> n = karkas.CubicSpline(pts, t=[0, 1, 2, 3], bc_type="natural", extrapolate=False)
+/// >>> sp = CubicSpline([0, 1, 2, 3], pts, bc_type="natural", extrapolate=False)
+/// >>> bool(np.allclose(n(s), sp(s), atol=1e-12)), bool(np.isnan(n(4.0)).all())
+/// (True, True)
 #[pyclass(extends = PyCurve, module = "karkas", name = "CubicSpline", frozen)]
 pub struct PyCubicSpline {
     /// The parameters given (None: computed by the parameterization).
@@ -156,15 +273,32 @@ impl PyCubicSpline {
 #[pymethods]
 impl PyCubicSpline {
     #[new]
-    #[pyo3(signature = (points, t = None, parameterization = CurveParameterization::default().name(), bc = None))]
-    #[pyo3(text_signature = "(points, t=None, parameterization='chord', bc=None)")]
+    #[pyo3(signature = (points, t = None, parameterization = CurveParameterization::default().name(), bc = None, extrapolate = None, *, bc_type = None))]
+    #[pyo3(
+        text_signature = "(points, t=None, parameterization='chord', bc=None, extrapolate=None, *, bc_type=None)"
+    )]
+    #[allow(clippy::too_many_arguments)]
     fn py_new(
         py: Python<'_>,
         points: &Bound<'_, PyAny>,
         t: Option<&Bound<'_, PyAny>>,
         parameterization: &str,
         bc: Option<&Bound<'_, PyAny>>,
+        extrapolate: Option<&Bound<'_, PyAny>>,
+        bc_type: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<PyClassInitializer<Self>> {
+        let extrapolate = Extrapolate::extract(extrapolate)?;
+        let bc = match (
+            bc.filter(|b| !b.is_none()),
+            bc_type.filter(|b| !b.is_none()),
+        ) {
+            (Some(_), Some(_)) => {
+                return Err(OptionError::new_err(
+                    "give the end conditions as bc or as bc_type (SciPy's name), not both",
+                ))
+            }
+            (bc, bc_type) => bc.or(bc_type),
+        };
         let (pts, dim) = PointsArray::extract_checked(points, "points")?;
         let rule = parse_parameterization(parameterization)?;
         let knots = t.map(|t| extract_vector(t, "t")).transpose()?;
@@ -207,7 +341,8 @@ impl PyCubicSpline {
         let description = format!(
             "<karkas.CubicSpline bc='{bc_name}', parameterization='{params}', {knot_count} knots in {dim}-D"
         );
-        Ok(PyClassInitializer::from(PyCurve::new(inner, description)).add_subclass(sub))
+        let base = PyCurve::new(inner, description).with_extrapolate(extrapolate);
+        Ok(PyClassInitializer::from(base).add_subclass(sub))
     }
 
     /// The knots t_0 < ... < t_{n-1}.

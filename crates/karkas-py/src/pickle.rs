@@ -205,6 +205,7 @@ impl PyCubicSpline {
             t,
             this.parameterization.as_str(),
             bc,
+            slf.as_super().get().extrapolate.to_object(py)?,
         );
         reduce(py, "CubicSpline", args.into_pyobject(py)?, None)
     }

@@ -28,12 +28,21 @@ use crate::errors::{FileFormatError, OptionError};
 /// Reads the ordered points of a curve file, as the command line's ``curve`` commands do.
 ///
 /// CSV (an optional header naming ``x``, ``y`` and optionally ``z``), whitespace-separated
-/// columns, or an airfoil .dat (Selig or Lednicer).
+/// columns, or an airfoil .dat (Selig or Lednicer). Files as spreadsheets write them are read
+/// too: fields separated by ``;`` or tabs, decimal commas (``0,5``) where the comma does not
+/// separate the fields, quoted fields, units in brackets in the header (``x [mm]``); a header
+/// of two or three columns that names none of ``x``, ``y``, ``z`` is read in order.
 ///
 /// Parameters
 /// ----------
 /// path : str or os.PathLike
 ///     The file (``-`` is a file named ``-``, not standard input).
+/// columns : sequence of int or str, optional
+///     The x, y (and z) columns by header name or by position counted from 1, as the command
+///     line's ``--columns``: ``(2, 3)``, ``("Абсцисса", "Ордината")``.
+/// decimal_comma : bool, optional
+///     The numbers are written with a decimal comma: the comma never separates fields (as
+///     ``--decimal-comma``; detected without it in files separated by ``;``, tabs or spaces).
 ///
 /// Returns
 /// -------
@@ -47,6 +56,14 @@ use crate::errors::{FileFormatError, OptionError};
 ///     ``IsADirectoryError``, ...), with ``errno``, ``strerror`` and ``filename`` set.
 /// FileFormatError
 ///     The content cannot be read (the command line's message, ``file:line: ...``).
+/// OptionError
+///     ``columns`` is not two or three names or positions.
+///
+/// Warns
+/// -----
+/// KarkasWarning
+///     A first column that counts the rows (``0, 1, 2, ...``: row numbers read as x), points
+///     far out of their order along the curve, or a header read in order.
 ///
 /// Examples
 /// --------
@@ -55,15 +72,73 @@ use crate::errors::{FileFormatError, OptionError};
 /// array([[0., 0.],
 ///        [1., 2.],
 ///        [2., 1.]])
+/// >>> _ = open("excel.csv", "w").write("x [mm];y [mm]\n0,5;1\n1,5;2,25\n2;0\n")
+/// >>> karkas.read_curve("excel.csv")
+/// array([[0.5 , 1.  ],
+///        [1.5 , 2.25],
+///        [2.  , 0.  ]])
+/// >>> _ = open("i.csv", "w").write("n,a,b\n1,0,0\n2,1,2\n3,2,1\n")
+/// >>> karkas.read_curve("i.csv", columns=("a", "b"))
+/// array([[0., 0.],
+///        [1., 2.],
+///        [2., 1.]])
 #[pyfunction]
-#[pyo3(text_signature = "(path)")]
-pub fn read_curve(py: Python<'_>, path: PathBuf) -> PyResult<Bound<'_, PyArray2<f64>>> {
+#[pyo3(signature = (path, *, columns = None, decimal_comma = false))]
+#[pyo3(text_signature = "(path, *, columns=None, decimal_comma=False)")]
+pub fn read_curve<'py>(
+    py: Python<'py>,
+    path: PathBuf,
+    columns: Option<Vec<ColumnArg>>,
+    decimal_comma: bool,
+) -> PyResult<Bound<'py, PyArray2<f64>>> {
     let path = file_path(path)?;
-    let (flat, dim) = py
-        .detach(|| karkas_io::points::read_curve_coordinates(&path))
+    let options = karkas_io::points::ReadOptions {
+        columns: column_choice(columns)?,
+        decimal_comma,
+    };
+    let read = py
+        .detach(|| karkas_io::points::read_curve_coordinates_with(&path, &options))
         .map_err(read_error)?;
+    crate::errors::warn_all(py, &path, &read.warnings)?;
+    let (flat, dim) = read.points;
     let rows = flat.len() / dim.max(1);
     PyArray1::from_vec(py, flat).reshape([rows, dim])
+}
+
+/// One column of ``columns=``: a position counted from 1 or a header name.
+#[derive(FromPyObject)]
+pub enum ColumnArg {
+    /// A position counted from 1.
+    Position(i64),
+    /// A header name.
+    Name(String),
+}
+
+/// The library's column choice of ``columns=``, or an ``OptionError`` naming what is wrong.
+fn column_choice(
+    columns: Option<Vec<ColumnArg>>,
+) -> PyResult<Option<karkas_io::points::ColumnChoice>> {
+    use karkas_io::points::{ColumnChoice, ColumnRef};
+    let Some(columns) = columns else {
+        return Ok(None);
+    };
+    let refs = columns
+        .into_iter()
+        .map(|c| match c {
+            ColumnArg::Position(k) if k >= 1 => Ok(ColumnRef::Position(k as usize)),
+            ColumnArg::Position(k) => Err(OptionError::new_err(format!(
+                "columns: positions count from 1, got {k}"
+            ))),
+            ColumnArg::Name(name) => Ok(ColumnRef::Name(name)),
+        })
+        .collect::<PyResult<Vec<_>>>()?;
+    let count = refs.len();
+    ColumnChoice::new(refs).map(Some).ok_or_else(|| {
+        OptionError::new_err(format!(
+            "columns: give two or three columns (x, y and z; names or positions from 1), got \
+             {count}"
+        ))
+    })
 }
 
 /// Reads an airfoil .dat file, Selig or Lednicer layout.

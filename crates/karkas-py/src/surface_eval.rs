@@ -223,6 +223,24 @@ fn result_shape(su: Vec<usize>, sv: Vec<usize>, grid: bool, d: usize) -> PyResul
     }
 }
 
+/// The orders `(du, dv)`, or `RectBivariateSpline`'s `dx`, `dy` in their place (one name of
+/// each); an `OptionError` for both names or a negative order.
+fn scipy_orders(
+    (du, dv): (i64, i64),
+    (dx, dy): (Option<i64>, Option<i64>),
+) -> PyResult<(usize, usize)> {
+    let pick = |ours: i64, theirs: Option<i64>, names: &str| match theirs {
+        Some(_) if ours != 0 => Err(crate::errors::OptionError::new_err(format!(
+            "{names}: give the order once (du and dx, dv and dy are the same order)"
+        ))),
+        Some(order) => Ok(order),
+        None => Ok(ours),
+    };
+    let du = pick(du, dx, "du, dx")?;
+    let dv = pick(dv, dy, "dv, dy")?;
+    Ok((count(du, "du")?, count(dv, "dv")?))
+}
+
 #[pymethods]
 impl PySurface {
     /// The surface or a partial derivative at parameters ``(u, v)``.
@@ -234,6 +252,9 @@ impl PySurface {
     ///     ``grid=False``.
     /// du, dv : int, optional
     ///     The orders of the partial derivative ``d^(du+dv) S / du^du dv^dv`` (0, 0: points).
+    /// dx, dy : int, optional
+    ///     ``RectBivariateSpline``'s names of ``du`` and ``dv`` (keywords; give one name of
+    ///     each).
     /// grid : bool, optional
     ///     True: the grid ``u x v`` (u outer), shape ``(mu, mv, d)``; False: the pairs
     ///     ``(u[i], v[i])``, shape ``u.shape + (d,)``.
@@ -252,7 +273,7 @@ impl PySurface {
     /// Raises
     /// ------
     /// OptionError
-    ///     A negative ``du`` or ``dv``.
+    ///     A negative ``du`` or ``dv``, or ``du`` and ``dx`` (``dv`` and ``dy``) both given.
     /// KarkasError
     ///     Parameters of the wrong shapes, or a bad ``out``.
     /// NoBSplineFormError
@@ -268,7 +289,9 @@ impl PySurface {
     /// (2, 3, 3)
     /// >>> S(0.5, 0.5, du=1, grid=False).shape
     /// (3,)
-    #[pyo3(signature = (u, v, du = 0, dv = 0, grid = true, out = None, extrapolate = None))]
+    /// >>> bool(np.array_equal(S(0.5, 0.5, dx=1, dy=1), S(0.5, 0.5, du=1, dv=1)))
+    /// True
+    #[pyo3(signature = (u, v, du = 0, dv = 0, grid = true, out = None, extrapolate = None, *, dx = None, dy = None))]
     #[allow(clippy::too_many_arguments)]
     fn __call__<'py>(
         &self,
@@ -280,8 +303,10 @@ impl PySurface {
         grid: bool,
         out: Option<Bound<'py, PyAny>>,
         extrapolate: Option<bool>,
+        dx: Option<i64>,
+        dy: Option<i64>,
     ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-        let (du, dv) = (count(du, "du")?, count(dv, "dv")?);
+        let (du, dv) = scipy_orders((du, dv), (dx, dy))?;
         let pu = Params::extract(u, "u")?;
         let pv = Params::extract(v, "v")?;
         let d = self.inner.dim();
@@ -323,6 +348,8 @@ impl PySurface {
     /// ----------
     /// du, dv : int, optional
     ///     The orders of the derivative in u (default 1) and v (default 0).
+    /// dx, dy : int, optional
+    ///     ``RectBivariateSpline``'s names of ``du`` and ``dv`` (keywords).
     ///
     /// Returns
     /// -------
@@ -342,9 +369,20 @@ impl PySurface {
     /// >>> Su = S.derivative()
     /// >>> bool(np.allclose(Su(0.2, 0.7), S(0.2, 0.7, du=1)))
     /// True
-    #[pyo3(signature = (du = 1, dv = 0))]
-    fn derivative(slf: &Bound<'_, Self>, du: i64, dv: i64) -> PyResult<Py<PySurfaceDerivative>> {
-        let (du, dv) = (count(du, "du")?, count(dv, "dv")?);
+    #[pyo3(signature = (du = None, dv = None, *, dx = None, dy = None))]
+    fn derivative(
+        slf: &Bound<'_, Self>,
+        du: Option<i64>,
+        dv: Option<i64>,
+        dx: Option<i64>,
+        dy: Option<i64>,
+    ) -> PyResult<Py<PySurfaceDerivative>> {
+        let or_default = |ours: Option<i64>, theirs: Option<i64>, default: i64| match theirs {
+            Some(_) => ours.unwrap_or(0),
+            None => ours.unwrap_or(default),
+        };
+        let (du, dv) = (or_default(du, dx, 1), or_default(dv, dy, 0));
+        let (du, dv) = scipy_orders((du, dv), (dx, dy))?;
         let base = slf.get();
         let inner: Arc<dyn SurfaceImpl> = Arc::new(DerivativeSurface {
             parent: base.inner.clone(),

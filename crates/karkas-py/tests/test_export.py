@@ -42,6 +42,8 @@ def test_export_errors(tmp_path):
         karkas.export_obj(tmp_path / "s.obj", np.zeros((3, 3, 2)))
     with pytest.raises(OSError):
         karkas.export_obj(tmp_path / "missing" / "s.obj", np.zeros((3, 3, 3)))
-    with pytest.raises(OSError):
+    # Parameters and points of different counts: a data error (a ValueError), not OSError.
+    with pytest.raises(karkas.IncompatibleDataError, match="3 parameters for 4 points"):
         karkas.export_curve_csv(tmp_path / "c.csv", np.zeros(3), np.zeros((4, 2)))
+    assert issubclass(karkas.IncompatibleDataError, ValueError)
     assert not (tmp_path / "c.csv").exists()

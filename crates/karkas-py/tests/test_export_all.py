@@ -99,7 +99,20 @@ def test_ll_surface_matches_cli(tmp_path, ext):
     run_cli("surface", "ll", src, "-o", cli_out)
     S = karkas.LLSurface(GRID, order=3)
     title = f"LL surface, L = 3, {GRID.shape[0]} x {GRID.shape[1]} grid"
-    karkas.export(S, py_out, title=title, net=GRID)
+    # Meshes default to a tolerance in Python; the command line's default samples asked for.
+    samples = (max(50, 4 * GRID.shape[0]), max(50, 4 * GRID.shape[1]))
+    karkas.export(S, py_out, title=title, net=GRID, samples=samples)
+    same_bytes(cli_out, py_out)
+
+
+@needs_cli
+@pytest.mark.parametrize("ext", ["obj", "stl", "ply", "glb"])
+def test_meshes_to_a_tolerance_match_cli(tmp_path, ext):
+    src = tmp_path / "grid.csv"
+    write_grid(src, GRID)
+    cli_out, py_out = tmp_path / f"cli.{ext}", tmp_path / f"py.{ext}"
+    run_cli("surface", "bicubic", src, "--mesh-tolerance", "1e-3", "-o", cli_out)
+    karkas.export(karkas.BicubicSurface(GRID), py_out, mesh_tolerance=1e-3)
     same_bytes(cli_out, py_out)
 
 
@@ -116,7 +129,8 @@ def test_mesh_options_match_cli(tmp_path, ext, flip):
     same_bytes(cli_out, py_out)
     # OBJ's flipped rows take another path in the writer.
     run_cli("surface", "bicubic", src, "-o", tmp_path / "cli.obj", *(["--flip-normals"] if flip else []))
-    karkas.export(S, tmp_path / "py.obj", net=GRID, flip_normals=flip)
+    samples = (max(50, 4 * GRID.shape[0]), max(50, 4 * GRID.shape[1]))
+    karkas.export(S, tmp_path / "py.obj", net=GRID, flip_normals=flip, samples=samples)
     same_bytes(tmp_path / "cli.obj", tmp_path / "py.obj")
 
 

@@ -27,7 +27,7 @@ use karkas_io::grid::parse_grid;
 use karkas_io::input::{display_name, Input as Source};
 use karkas_io::mesh::TriangleMesh;
 use karkas_io::mesh::{read_mesh, read_mesh_from, MeshOptions};
-use karkas_io::points::{parse_curve_points, CurvePoints};
+use karkas_io::points::{parse_curve_points_with, CurvePoints, ReadOptions};
 use karkas_io::samples::parse_surface_samples;
 use karkas_io::svg::CurveOverlay;
 use karkas_io::write::write_grid_csv;
@@ -184,10 +184,14 @@ fn read_input(path: &Path) -> Result<Input> {
         Some(h) if h.contains(&"u".to_owned()) && h.contains(&"v".to_owned()) => {
             Ok(Input::Grid(parse_surface_samples(&text, &name)?, false))
         }
-        _ => Ok(match parse_curve_points(&text, &name)? {
-            CurvePoints::Planar(points) => Input::Curve(to_space(&points), true),
-            CurvePoints::Spatial(points) => Input::Curve(points, false),
-        }),
+        _ => {
+            let read = parse_curve_points_with(&text, &name, &ReadOptions::default())?;
+            crate::input::warn_of_reading(&name, &read.warnings);
+            Ok(match read.points {
+                CurvePoints::Planar(points) => Input::Curve(to_space(&points), true),
+                CurvePoints::Spatial(points) => Input::Curve(points, false),
+            })
+        }
     }
 }
 
@@ -202,20 +206,14 @@ fn looks_like_a_mesh(input: &mut Source) -> Result<bool> {
     Ok(karkas_io::mesh::is_mesh_prefix(prefix))
 }
 
-/// The lower-case fields of the first content line of CSV `text` with a header (a line with
-/// a field that is not a number); `None` when there is none.
+/// The names of the first content line of CSV `text` with a header (a line with a field that
+/// is not a number; lower case, units and quotes aside, split at its separator:
+/// [`karkas_io::dialect::header_names`]); `None` when there is none.
 fn csv_header(text: &str) -> Option<Vec<String>> {
     let line = text
         .trim_start_matches('\u{feff}')
         .lines()
         .map(|l| l.split('#').next().unwrap_or("").trim())
         .find(|l| !l.is_empty())?;
-    let fields: Vec<String> = line
-        .split(',')
-        .map(|f| f.trim().to_ascii_lowercase())
-        .collect();
-    fields
-        .iter()
-        .any(|f| f.parse::<f64>().is_err())
-        .then_some(fields)
+    karkas_io::dialect::header_names(line)
 }

@@ -7,7 +7,7 @@ use super::curve_ll::build_ll;
 use super::fairness_report::{write_profiles, MethodReport};
 use super::fit_options::FitCurveOptions;
 use super::spline_options::{EndsKind, SplineOptions};
-use crate::args::check_ll_order;
+use crate::args::{check_ll_order, CurveInputOptions};
 use crate::input::{curve_points, run_on_curve_points, CurveJob};
 use crate::output::console::note;
 use crate::output::memory::check_memory;
@@ -64,7 +64,7 @@ pub struct CurveAnalyzeArgs {
     #[arg(long, value_enum, value_delimiter = ',', value_name = "M1,M2,...")]
     compare: Option<Vec<Method>>,
     /// Close the curve, for every method (ll --closed, spline with periodic ends; the fit
-    /// makes open curves only).
+    /// makes open curves only). --ends periodic says the same.
     #[arg(long)]
     closed: bool,
     /// LL: the order L (at least 1): pieces of degree 2L.
@@ -77,6 +77,8 @@ pub struct CurveAnalyzeArgs {
     spline: SplineOptions,
     #[command(flatten)]
     fit: FitCurveOptions,
+    #[command(flatten)]
+    read: CurveInputOptions,
     /// The curvature against the arc length of every method: .csv (method,t,s,curvature;
     /// both one-sided values at a knot) or a plot (.svg, .png).
     #[arg(short, long)]
@@ -95,6 +97,8 @@ struct Job<'a> {
     spline: SplineOptions,
     knots: Option<Vec<f64>>,
     format: Option<OutputFormat>,
+    /// `--closed`, or `--ends periodic`.
+    closed: bool,
 }
 
 /// Runs `karkas curve analyze`.
@@ -125,8 +129,15 @@ pub fn run(args: &CurveAnalyzeArgs) -> Result<()> {
     let knots = args.fit.check()?;
     let spline = spline_options(args)?;
     check_unused(args, &methods)?;
-    if args.closed && methods.contains(&Method::Fit) {
-        bail!("--closed: the fit makes open curves only; leave fit out of --method/--compare");
+    // Periodic ends say that the curve is closed, as --closed does.
+    let closed = args.closed || spline.ends == EndsKind::Periodic;
+    if closed && methods.contains(&Method::Fit) {
+        let option = if args.closed {
+            "--closed"
+        } else {
+            "--ends periodic"
+        };
+        bail!("{option}: the fit makes open curves only; leave fit out of --method/--compare");
     }
     let job = Job {
         args,
@@ -134,8 +145,9 @@ pub fn run(args: &CurveAnalyzeArgs) -> Result<()> {
         spline,
         knots,
         format,
+        closed,
     };
-    run_on_curve_points(&args.input, &job)
+    run_on_curve_points(&args.input, &args.read, &job)
 }
 
 /// The spline's options with `--closed` applied (periodic ends).
@@ -144,10 +156,7 @@ fn spline_options(args: &CurveAnalyzeArgs) -> Result<SplineOptions> {
     spline.check()?;
     match (args.closed, spline.ends) {
         (true, EndsKind::NotAKnot) => spline.ends = EndsKind::Periodic,
-        (true, EndsKind::Periodic) | (false, EndsKind::NotAKnot) => {}
-        (false, EndsKind::Periodic) => {
-            bail!("--ends periodic closes the spline: give --closed, which closes every method")
-        }
+        (_, EndsKind::Periodic) | (false, EndsKind::NotAKnot) => {}
         (true, ends) => bail!(
             "--closed: a closed spline has periodic ends, not --ends {}",
             ends.name()
@@ -253,7 +262,7 @@ impl CurveJob for Job<'_> {
                     let curve = build_ll(
                         points,
                         args.order,
-                        args.closed,
+                        self.closed,
                         args.interpolate,
                         &args.input,
                     )?;

@@ -1,7 +1,7 @@
 //! `karkas curve dps`: a closed discrete curve, the discrete periodic spline through (or with
 //! poles at) the input points (Malozemov et al., docs/methods.md §3).
 
-use crate::args::{check_dps_order, check_dps_step};
+use crate::args::{check_dps_order, check_dps_step, CurveInputOptions};
 use crate::input::{curve_points, run_on_curve_points, CurveJob};
 use crate::output::cad::refuse_cad_for_discrete;
 use crate::output::curve::curve_output_bytes;
@@ -9,7 +9,7 @@ use crate::output::formats::CURVE_FORMATS;
 use crate::output::memory::check_memory;
 use crate::output::overwrite::ensure_distinct;
 use crate::output::samples::{report_samples, MAX_SAMPLES};
-use crate::output::target::output_format;
+use crate::output::target::output_formats;
 use anyhow::{bail, Result};
 use clap::Args;
 use karkas::dps::DiscreteSpline;
@@ -34,25 +34,31 @@ pub struct CurveDpsArgs {
     /// Input points (m of them, at least 2): CSV or whitespace columns x,y[,z], or an airfoil
     /// .dat.
     input: PathBuf,
+    #[command(flatten)]
+    read: CurveInputOptions,
     /// Output file: .csv (j,x,y[,z]), a picture of the closed curve over its points (.svg,
-    /// .png) or a 3-D viewer page (.html).
-    #[arg(short, long)]
-    output: PathBuf,
+    /// .png) or a 3-D viewer page (.html). Repeat -o for several outputs of one curve.
+    #[arg(short, long, required = true)]
+    output: Vec<PathBuf>,
 }
 
 /// Runs `karkas curve dps`.
 pub fn run(args: &CurveDpsArgs) -> Result<()> {
-    refuse_cad_for_discrete(&args.output, &OutputFormat::CURVE_CAD)?;
-    let format = output_format(&args.output, &CURVE_FORMATS)?;
+    for output in &args.output {
+        refuse_cad_for_discrete(output, &OutputFormat::CURVE_CAD)?;
+    }
+    let formats = output_formats(&args.output, &CURVE_FORMATS)?;
     check_dps_order("--order", args.order)?;
     check_dps_step("--n", args.step)?;
-    ensure_distinct(&args.input, &args.output)?;
-    run_on_curve_points(&args.input, &(args, format))
+    for output in &args.output {
+        ensure_distinct(&args.input, output)?;
+    }
+    run_on_curve_points(&args.input, &args.read, &(args, &formats[..]))
 }
 
-impl CurveJob for (&CurveDpsArgs, OutputFormat) {
+impl CurveJob for (&CurveDpsArgs, &[OutputFormat]) {
     fn run<const D: usize>(&self, points: &[Point<D>]) -> Result<()> {
-        let (args, format) = *self;
+        let (args, formats) = *self;
         curve_points(&args.input, points)?;
         let m = points.len();
         let period = m.saturating_mul(args.step);
@@ -63,10 +69,12 @@ impl CurveJob for (&CurveDpsArgs, OutputFormat) {
             );
         }
         // The values, and as much again for the spline's work.
-        check_memory(
-            &format!("curve dps: {period} values"),
-            curve_output_bytes::<D>(format, period + m) + period as u128 * 8 * D as u128,
-        )?;
+        for &format in formats {
+            check_memory(
+                &format!("curve dps: {period} values"),
+                curve_output_bytes::<D>(format, period + m) + period as u128 * 8 * D as u128,
+            )?;
+        }
         let build = if args.poles {
             DiscreteSpline::from_poles
         } else {
@@ -97,8 +105,10 @@ impl CurveJob for (&CurveDpsArgs, OutputFormat) {
             picture: &picture,
             page: &page,
         };
-        write_discrete_curve(&args.output, format, &values, points, &titles)?;
-        report_samples(&args.output, period);
+        for (output, &format) in args.output.iter().zip(formats) {
+            write_discrete_curve(output, format, &values, points, &titles)?;
+            report_samples(output, period);
+        }
         Ok(())
     }
 }

@@ -1,7 +1,7 @@
 //! `karkas curve fair`: the fairest C^2 cubic B-spline within a tolerance of every input point
 //! (least ∫ (dκ/ds)^2 ds; docs/methods.md §8), with its fairness before and after.
 
-use crate::args::{CombOption, CurveSamples};
+use crate::args::{CadOptions, CombOption, CurveInputOptions, CurveSamples};
 use crate::input::{curve_points, run_on_curve_points, CurveJob};
 use crate::output::cad::write_cad_curve;
 use crate::output::console::{note, record_all};
@@ -9,7 +9,7 @@ use crate::output::curve::{curve_output_bytes, write_sampled_curve};
 use crate::output::formats::EXACT_CURVE_FORMATS;
 use crate::output::memory::check_memory;
 use crate::output::overwrite::ensure_distinct;
-use crate::output::samples::{default_curve_samples, sample_curve};
+use crate::output::samples::sample_curve;
 use crate::output::target::{output_format, shown};
 use anyhow::{bail, Context, Result};
 use clap::Args;
@@ -61,6 +61,10 @@ pub struct CurveFairArgs {
     json: bool,
     #[command(flatten)]
     samples: CurveSamples,
+    #[command(flatten)]
+    read: CurveInputOptions,
+    #[command(flatten)]
+    cad: CadOptions,
     /// Output: .csv (t,x,y[,z] samples of the curve), a picture .svg or .png (points, curve,
     /// deviation whiskers; x-y projection), a 3-D viewer page (.html), or the exact B-spline
     /// curve as .step/.stp, .iges/.igs or .dxf.
@@ -139,7 +143,8 @@ pub fn run(args: &CurveFairArgs) -> Result<()> {
             bail!("--report: must differ from the output file");
         }
     }
-    run_on_curve_points(&args.input, &(args, format))
+    args.cad.check(&[format])?;
+    run_on_curve_points(&args.input, &args.read, &(args, format))
 }
 
 impl CurveJob for (&CurveFairArgs, OutputFormat) {
@@ -179,7 +184,7 @@ impl CurveJob for (&CurveFairArgs, OutputFormat) {
             after: Figures::new(&after, fair.max_distance()),
             seconds,
         };
-        let n = args.samples.or_else(|| default_curve_samples(after.pieces));
+        let n = args.samples.resolve(2 * after.pieces);
         check_memory(
             &format!("curve fair: {n} samples"),
             curve_output_bytes::<D>(format, n + points.len()),
@@ -194,7 +199,7 @@ impl CurveJob for (&CurveFairArgs, OutputFormat) {
             })?;
         }
         let what = if format.is_cad() {
-            write_cad_curve(&fair.curve, points, format, &args.output, &input)?;
+            write_cad_curve(&fair.curve, points, format, &args.output, &args.cad, &input)?;
             "the exact B-spline".to_string()
         } else {
             let (ts, samples) = sample_curve(&fair.curve, n);

@@ -3,7 +3,7 @@
 
 use super::fit_options::FitCurveOptions;
 use super::fit_summary::FitSummary;
-use crate::args::{CombOption, CurveSamples};
+use crate::args::{CadOptions, CombOption, CurveInputOptions, CurveSamples};
 use crate::input::{run_on_curve_points, CurveJob};
 use crate::output::cad::write_cad_curve;
 use crate::output::console::note;
@@ -11,16 +11,15 @@ use crate::output::curve::{curve_output_bytes, write_sampled_curve};
 use crate::output::formats::EXACT_CURVE_FORMATS;
 use crate::output::memory::check_memory;
 use crate::output::overwrite::ensure_distinct;
-use crate::output::samples::default_curve_samples;
 use crate::output::samples::sample_curve;
-use crate::output::target::{output_format, shown};
+use crate::output::target::{output_formats, shown};
 use anyhow::{bail, Result};
 use clap::Args;
 use karkas::fit::CurveFit;
 use karkas::{Curve, Point, Point2};
 use karkas_io::write::write_atomic;
 use karkas_io::OutputFormat;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 /// Arguments of `karkas curve fit`.
@@ -43,12 +42,16 @@ pub struct CurveFitArgs {
     json: bool,
     #[command(flatten)]
     samples: CurveSamples,
+    #[command(flatten)]
+    read: CurveInputOptions,
     /// Output: .csv (t,x,y[,z] samples of the curve), a picture .svg or .png (points, curve,
     /// deviation whiskers; x-y projection) a 3-D viewer page (.html), or
     /// the exact B-spline curve as .step/.stp, .iges/.igs or .dxf (a SPLINE with the input
-    /// points; planar curves in z = 0).
-    #[arg(short, long)]
-    output: PathBuf,
+    /// points; planar curves in z = 0). Repeat -o for several outputs of one fit.
+    #[arg(short, long, required = true)]
+    output: Vec<PathBuf>,
+    #[command(flatten)]
+    cad: CadOptions,
     #[command(flatten)]
     comb: CombOption,
     /// Per-point deviations as CSV: point,t,distance.
@@ -58,25 +61,28 @@ pub struct CurveFitArgs {
 
 /// Runs `karkas curve fit`.
 pub fn run(args: &CurveFitArgs) -> Result<()> {
-    let format = output_format(&args.output, &EXACT_CURVE_FORMATS)?;
+    let formats = output_formats(&args.output, &EXACT_CURVE_FORMATS)?;
     let knots = args.fit.check()?;
     args.samples.check()?;
+    args.cad.check(&formats)?;
     if args.fit.knots.is_none() && args.fit.tolerance.is_none() {
         bail!("give the knots (--knots T1,...,TN) or a tolerance (--tolerance TOL)");
     }
-    ensure_distinct(&args.input, &args.output)?;
+    for output in &args.output {
+        ensure_distinct(&args.input, output)?;
+    }
     if let Some(report) = &args.report {
         ensure_distinct(&args.input, report)?;
-        if report == &args.output {
+        if args.output.contains(report) {
             bail!("--report: must differ from the output file");
         }
     }
-    run_on_curve_points(&args.input, &(args, format, knots))
+    run_on_curve_points(&args.input, &args.read, &(args, formats, knots))
 }
 
-impl CurveJob for (&CurveFitArgs, OutputFormat, Option<Vec<f64>>) {
+impl CurveJob for (&CurveFitArgs, Vec<OutputFormat>, Option<Vec<f64>>) {
     fn run<const D: usize>(&self, points: &[Point<D>]) -> Result<()> {
-        let (args, format, knots) = (self.0, self.1, &self.2);
+        let (args, formats, knots) = (self.0, &self.1, &self.2);
         let input = || args.input.display().to_string();
         let started = Instant::now();
         let fit: CurveFit<D> = args.fit.fit(points, knots.as_deref(), None, &input())?;
@@ -85,13 +91,13 @@ impl CurveJob for (&CurveFitArgs, OutputFormat, Option<Vec<f64>>) {
         for warning in &fit.warnings {
             note(format!("karkas: warning: {warning}"));
         }
-        let n = args
-            .samples
-            .or_else(|| default_curve_samples(2 * fit.spline.pieces()));
-        check_memory(
-            &format!("curve fit: {n} samples"),
-            curve_output_bytes::<D>(format, n + points.len()),
-        )?;
+        let n = args.samples.resolve(2 * fit.spline.pieces());
+        for &format in formats {
+            check_memory(
+                &format!("curve fit: {n} samples"),
+                curve_output_bytes::<D>(format, n + points.len()),
+            )?;
+        }
         let (ts, samples) = sample_curve(&fit.spline, n);
         if let Some(report) = &args.report {
             write_atomic(report, |w| {
@@ -102,27 +108,25 @@ impl CurveJob for (&CurveFitArgs, OutputFormat, Option<Vec<f64>>) {
                 Ok(())
             })?;
         }
-        if format.is_cad() {
-            write_cad_curve(
-                &fit.spline,
-                points,
-                format,
-                &args.output,
-                args.input.display(),
-            )?;
-        } else {
-            write_fit_picture_or_samples(args, format, points, &fit, (&ts, &samples))?;
+        for (output, &format) in args.output.iter().zip(formats) {
+            if format.is_cad() {
+                let what = args.input.display();
+                write_cad_curve(&fit.spline, points, format, output, &args.cad, what)?;
+            } else {
+                let samples = (&ts[..], &samples[..]);
+                write_fit_picture_or_samples(args, output, format, points, &fit, samples)?;
+            }
+            let what = if format.is_cad() {
+                "the exact B-spline".to_string()
+            } else {
+                format!("{n} samples")
+            };
+            note(format!(
+                "karkas: wrote {} ({what}); {}",
+                shown(output).display(),
+                summary.line()
+            ));
         }
-        let what = if format.is_cad() {
-            "the exact B-spline".to_string()
-        } else {
-            format!("{n} samples")
-        };
-        note(format!(
-            "karkas: wrote {} ({what}); {}",
-            shown(&args.output).display(),
-            summary.line()
-        ));
         crate::output::console::record_all(serde_json::to_value(&summary)?);
         if args.json && !crate::output::console::is_capturing() {
             println!("{}", serde_json::to_string(&summary)?);
@@ -135,6 +139,7 @@ impl CurveJob for (&CurveFitArgs, OutputFormat, Option<Vec<f64>>) {
 /// whiskers and the comb).
 fn write_fit_picture_or_samples<const D: usize>(
     args: &CurveFitArgs,
+    output: &Path,
     format: OutputFormat,
     points: &[Point<D>],
     fit: &CurveFit<D>,
@@ -156,7 +161,7 @@ fn write_fit_picture_or_samples<const D: usize>(
         points.len(),
         fit.max_distance()
     );
-    let (output, overlay) = (&args.output, (&comb[..], &whiskers[..]));
+    let overlay = (&comb[..], &whiskers[..]);
     let samples = (ts, samples);
     write_sampled_curve(output, format, &title, samples, points, false, overlay)?;
     Ok(())

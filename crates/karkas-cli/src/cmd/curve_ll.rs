@@ -1,6 +1,6 @@
 //! `karkas curve ll`: the LL curve of an ordered point list (Aulchenko et al., docs/methods.md §1.2).
 
-use crate::args::{check_ll_order, CombOption, CurveSamples};
+use crate::args::{check_ll_order, CadOptions, CombOption, CurveInputOptions, CurveSamples};
 use crate::input::{curve_points, run_on_curve_points, CurveJob};
 use crate::output::cad::write_cad_curve;
 use crate::output::console::{note, record};
@@ -8,16 +8,15 @@ use crate::output::curve::{curve_output_bytes, write_sampled_curve};
 use crate::output::formats::STREAMED_CURVE_FORMATS;
 use crate::output::memory::check_memory;
 use crate::output::overwrite::ensure_distinct;
-use crate::output::samples::sample_curve;
-use crate::output::samples::{default_curve_samples, report_samples, MAX_SAMPLES};
-use crate::output::target::output_format;
+use crate::output::samples::{report_samples, sample_curve};
+use crate::output::target::output_formats;
 use anyhow::{bail, Context, Result};
 use clap::Args;
 use karkas::ll::{LlCurve, WithinFit};
 use karkas::{Curve, Point, Point2};
 use karkas_io::export::stream;
 use karkas_io::OutputFormat;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// Arguments of `karkas curve ll`.
 #[derive(Debug, Args)]
@@ -46,13 +45,17 @@ pub struct CurveLlArgs {
     samples: CurveSamples,
     /// Input points: CSV or whitespace columns x,y[,z], or an airfoil .dat (Selig or Lednicer).
     input: PathBuf,
+    #[command(flatten)]
+    read: CurveInputOptions,
     /// Output file: .csv (t,x,y[,z]), .npy (the samples' points, an (n, dim) float64 array),
     /// a picture of the curve over its points (.svg, .png; x-y projection) a 3-D viewer page
     /// (.html), or
     /// the exact B-spline curve as .step/.stp, .iges/.igs or .dxf (a SPLINE with the input
-    /// points; planar curves in z = 0).
-    #[arg(short, long)]
-    output: PathBuf,
+    /// points; planar curves in z = 0). Repeat -o for several outputs of one curve.
+    #[arg(short, long, required = true)]
+    output: Vec<PathBuf>,
+    #[command(flatten)]
+    cad: CadOptions,
     #[command(flatten)]
     comb: CombOption,
     /// Pictures: draw a whisker from every input point to the curve at its node.
@@ -62,17 +65,20 @@ pub struct CurveLlArgs {
 
 /// Runs `karkas curve ll`.
 pub fn run(args: &CurveLlArgs) -> Result<()> {
-    let format = output_format(&args.output, &STREAMED_CURVE_FORMATS)?;
+    let formats = output_formats(&args.output, &STREAMED_CURVE_FORMATS)?;
     check_ll_order(args.order)?;
     check_within(args.within)?;
     args.samples.check()?;
-    ensure_distinct(&args.input, &args.output)?;
-    run_on_curve_points(&args.input, &(args, format))
+    args.cad.check(&formats)?;
+    for output in &args.output {
+        ensure_distinct(&args.input, output)?;
+    }
+    run_on_curve_points(&args.input, &args.read, &(args, &formats[..]))
 }
 
-impl CurveJob for (&CurveLlArgs, OutputFormat) {
+impl CurveJob for (&CurveLlArgs, &[OutputFormat]) {
     fn run<const D: usize>(&self, points: &[Point<D>]) -> Result<()> {
-        let (args, format) = *self;
+        let (args, formats) = *self;
         curve_points(&args.input, points)?;
         if args.closed {
             crate::output::console::warn_near_miss("--closed", points);
@@ -89,54 +95,67 @@ impl CurveJob for (&CurveLlArgs, OutputFormat) {
                 &args.input,
             )?,
         };
-        if format.is_cad() {
-            return write_cad_curve(&curve, points, format, &args.output, args.input.display());
+        for (output, &format) in args.output.iter().zip(formats) {
+            write_ll(args, &curve, points, output, format)?;
         }
-        let n = args
-            .samples
-            .or_else(|| default_curve_samples(points.len()).min(MAX_SAMPLES));
-        // The cap is checked against the samples held, as before CSV and .npy were written
-        // block by block (they take one block now): the same requests pass as before.
-        check_memory(
-            &format!("curve ll: {n} samples"),
-            curve_output_bytes::<D>(format, n + points.len()),
-        )?;
-        if stream::streams(format) {
-            stream::write_curve_samples(&curve, n, format, &args.output)?;
-            report_samples(&args.output, n);
-            return Ok(());
-        }
-        let (ts, samples) = sample_curve(&curve, n);
-        let variant = match (args.interpolate, args.within) {
-            (true, _) => "interpolating ".to_owned(),
-            (false, Some(d)) => format!("within {d} "),
-            (false, None) => String::new(),
-        };
-        let title = format!(
-            "{variant}LL curve, L = {}, {} points",
-            args.order,
-            points.len()
-        );
-        let comb = args.comb.teeth(&curve, &ts);
-        let whiskers = if args.whiskers {
-            node_whiskers(&curve, points)
-        } else {
-            Vec::new()
-        };
-        let (output, overlay) = (&args.output, (&comb[..], &whiskers[..]));
-        let samples = (&ts[..], &samples[..]);
-        write_sampled_curve(
-            output,
-            format,
-            &title,
-            samples,
-            points,
-            args.closed,
-            overlay,
-        )?;
-        report_samples(&args.output, n);
         Ok(())
     }
+}
+
+/// Writes the LL `curve` of `points` to `output` in `format`.
+fn write_ll<const D: usize>(
+    args: &CurveLlArgs,
+    curve: &LlCurve<D>,
+    points: &[Point<D>],
+    output: &Path,
+    format: OutputFormat,
+) -> Result<()> {
+    if format.is_cad() {
+        let what = args.input.display();
+        return write_cad_curve(curve, points, format, output, &args.cad, what);
+    }
+    let n = args.samples.resolve(points.len());
+    // The cap is checked against the samples held, as before CSV and .npy were written
+    // block by block (they take one block now): the same requests pass as before.
+    check_memory(
+        &format!("curve ll: {n} samples"),
+        curve_output_bytes::<D>(format, n + points.len()),
+    )?;
+    if stream::streams(format) {
+        stream::write_curve_samples(curve, n, format, output)?;
+        report_samples(output, n);
+        return Ok(());
+    }
+    let (ts, samples) = sample_curve(curve, n);
+    let variant = match (args.interpolate, args.within) {
+        (true, _) => "interpolating ".to_owned(),
+        (false, Some(d)) => format!("within {d} "),
+        (false, None) => String::new(),
+    };
+    let title = format!(
+        "{variant}LL curve, L = {}, {} points",
+        args.order,
+        points.len()
+    );
+    let comb = args.comb.teeth(curve, &ts);
+    let whiskers = if args.whiskers {
+        node_whiskers(curve, points)
+    } else {
+        Vec::new()
+    };
+    let overlay = (&comb[..], &whiskers[..]);
+    let samples = (&ts[..], &samples[..]);
+    write_sampled_curve(
+        output,
+        format,
+        &title,
+        samples,
+        points,
+        args.closed,
+        overlay,
+    )?;
+    report_samples(output, n);
+    Ok(())
 }
 
 /// The LL curve of `points` (approximating, or interpolating when `interpolate`), errors

@@ -3,7 +3,7 @@
 //! (3.10)–(3.12); docs/methods.md §5). The options are [`SplineOptions`], shared with the
 //! commands that offer the spline as a method.
 
-use crate::args::{CombOption, CurveSamples};
+use crate::args::{CadOptions, CombOption, CurveInputOptions, CurveSamples};
 use crate::cmd::spline_options::SplineOptions;
 use crate::input::{curve_points, run_on_curve_points, CurveJob};
 use crate::output::cad::write_cad_curve;
@@ -11,14 +11,14 @@ use crate::output::curve::{curve_output_bytes, write_sampled_curve};
 use crate::output::formats::EXACT_CURVE_FORMATS;
 use crate::output::memory::check_memory;
 use crate::output::overwrite::ensure_distinct;
-use crate::output::samples::{default_curve_samples, report_samples, sample_curve, MAX_SAMPLES};
-use crate::output::target::output_format;
+use crate::output::samples::{report_samples, sample_curve};
+use crate::output::target::output_formats;
 use anyhow::Result;
 use clap::Args;
 use karkas::param::CubicSpline;
 use karkas::{Curve, Point, Point2};
 use karkas_io::OutputFormat;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// Arguments of `karkas curve spline`.
 #[derive(Debug, Args)]
@@ -29,12 +29,16 @@ pub struct CurveSplineArgs {
     samples: CurveSamples,
     /// Input points: CSV or whitespace columns x,y[,z], or an airfoil .dat (Selig or Lednicer).
     input: PathBuf,
+    #[command(flatten)]
+    read: CurveInputOptions,
     /// Output file: .csv (t,x,y[,z] in the spline's parameter), a picture of the curve over
     /// its points (.svg, .png; x-y projection), a 3-D viewer page (.html), or the exact
     /// B-spline curve as .step/.stp, .iges/.igs or .dxf (a SPLINE with the input points on
-    /// their own layer; planar curves in z = 0).
-    #[arg(short, long)]
-    output: PathBuf,
+    /// their own layer; planar curves in z = 0). Repeat -o for several outputs of one spline.
+    #[arg(short, long, required = true)]
+    output: Vec<PathBuf>,
+    #[command(flatten)]
+    cad: CadOptions,
     #[command(flatten)]
     comb: CombOption,
     /// Pictures: draw a whisker from every input point to the curve at its knot (of zero
@@ -45,54 +49,70 @@ pub struct CurveSplineArgs {
 
 /// Runs `karkas curve spline`.
 pub fn run(args: &CurveSplineArgs) -> Result<()> {
-    let format = output_format(&args.output, &EXACT_CURVE_FORMATS)?;
+    let formats = output_formats(&args.output, &EXACT_CURVE_FORMATS)?;
     args.spline.check()?;
     args.samples.check()?;
-    ensure_distinct(&args.input, &args.output)?;
-    run_on_curve_points(&args.input, &(args, format))
+    args.cad.check(&formats)?;
+    for output in &args.output {
+        ensure_distinct(&args.input, output)?;
+    }
+    run_on_curve_points(&args.input, &args.read, &(args, &formats[..]))
 }
 
-impl CurveJob for (&CurveSplineArgs, OutputFormat) {
+impl CurveJob for (&CurveSplineArgs, &[OutputFormat]) {
     fn run<const D: usize>(&self, points: &[Point<D>]) -> Result<()> {
-        let (args, format) = *self;
+        let (args, formats) = *self;
         curve_points(&args.input, points)?;
         let curve = args.spline.build(points, &args.input)?;
-        if format.is_cad() {
-            return write_cad_curve(&curve, points, format, &args.output, args.input.display());
+        for (output, &format) in args.output.iter().zip(formats) {
+            write_spline(args, &curve, points, output, format)?;
         }
-        let n = args
-            .samples
-            .or_else(|| default_curve_samples(points.len()).min(MAX_SAMPLES));
-        check_memory(
-            &format!("curve spline: {n} samples"),
-            curve_output_bytes::<D>(format, n + points.len()),
-        )?;
-        let (ts, samples) = sample_curve(&curve, n);
-        let title = format!(
-            "cubic spline, {}, {} points",
-            args.spline.describe(),
-            points.len()
-        );
-        let comb = args.comb.teeth(&curve, &ts);
-        let whiskers = if args.whiskers {
-            knot_whiskers(&curve)
-        } else {
-            Vec::new()
-        };
-        let (output, overlay) = (&args.output, (&comb[..], &whiskers[..]));
-        let samples = (&ts[..], &samples[..]);
-        write_sampled_curve(
-            output,
-            format,
-            &title,
-            samples,
-            points,
-            curve.is_closed(),
-            overlay,
-        )?;
-        report_samples(&args.output, n);
         Ok(())
     }
+}
+
+/// Writes the spline `curve` through `points` to `output` in `format`.
+fn write_spline<const D: usize>(
+    args: &CurveSplineArgs,
+    curve: &CubicSpline<D>,
+    points: &[Point<D>],
+    output: &Path,
+    format: OutputFormat,
+) -> Result<()> {
+    if format.is_cad() {
+        let what = args.input.display();
+        return write_cad_curve(curve, points, format, output, &args.cad, what);
+    }
+    let n = args.samples.resolve(points.len());
+    check_memory(
+        &format!("curve spline: {n} samples"),
+        curve_output_bytes::<D>(format, n + points.len()),
+    )?;
+    let (ts, samples) = sample_curve(curve, n);
+    let title = format!(
+        "cubic spline, {}, {} points",
+        args.spline.describe(),
+        points.len()
+    );
+    let comb = args.comb.teeth(curve, &ts);
+    let whiskers = if args.whiskers {
+        knot_whiskers(curve)
+    } else {
+        Vec::new()
+    };
+    let overlay = (&comb[..], &whiskers[..]);
+    let samples = (&ts[..], &samples[..]);
+    write_sampled_curve(
+        output,
+        format,
+        &title,
+        samples,
+        points,
+        curve.is_closed(),
+        overlay,
+    )?;
+    report_samples(output, n);
+    Ok(())
 }
 
 /// Whiskers (x-y projection) from every interpolated point to the curve at its knot.

@@ -1,11 +1,11 @@
 //! `karkas loft`: a wing (fin, blade) lofted through the sections of a sections table
 //! (docs/methods.md §7).
 
-use crate::args::{GridSamples, MeshOutput};
+use crate::args::{CadOptions, CapOption, GridSamples, MeshOutput};
 use crate::output::cad::write_cad_surface;
 use crate::output::console::{note, record_all};
 use crate::output::formats::EXACT_SURFACE_FORMATS;
-use crate::output::surface::write_sampled_surface;
+use crate::output::surface::{write_capped_mesh, write_sampled_surface};
 use crate::output::target::{output_format, shown};
 use anyhow::{anyhow, bail, Context, Result};
 use clap::Args;
@@ -51,6 +51,10 @@ pub struct LoftArgs {
     samples: GridSamples,
     #[command(flatten)]
     mesh: MeshOutput,
+    #[command(flatten)]
+    cap: CapOption,
+    #[command(flatten)]
+    cad: CadOptions,
     /// Print the summary as one JSON object on standard output.
     #[arg(long)]
     json: bool,
@@ -86,6 +90,8 @@ pub fn run(args: &LoftArgs) -> Result<()> {
     let format = output_format(&args.output, &EXACT_SURFACE_FORMATS)?;
     args.samples.check()?;
     args.mesh.check(format)?;
+    args.cap.check(&[format], None)?;
+    args.cad.check(&[format])?;
     if !(args.tolerance.is_finite() && args.tolerance > 0.0) {
         bail!("--tolerance {}: must be a positive number", args.tolerance);
     }
@@ -127,21 +133,38 @@ pub fn run(args: &LoftArgs) -> Result<()> {
     }
     let title = format!("loft of {} sections ({})", stations.len(), args.span.name());
     if format.is_cad() {
-        write_cad_surface(&loft, format, &args.output, table.display(), false)?;
+        write_cad_surface(
+            &loft,
+            format,
+            &args.output,
+            &args.cad,
+            table.display(),
+            args.cap.cap,
+        )?;
     } else {
         let samples = args
             .samples
             .samples
             .unwrap_or((16 * (stations.len() - 1) + 1, 200));
-        write_sampled_surface(
-            &loft,
-            samples,
-            format,
-            &args.output,
-            &title,
-            None,
-            &args.mesh.options(false),
-        )?;
+        if args.cap.cap {
+            write_capped_mesh(
+                &loft,
+                samples,
+                format,
+                &args.output,
+                &args.mesh.options(false),
+            )?;
+        } else {
+            write_sampled_surface(
+                &loft,
+                samples,
+                format,
+                &args.output,
+                &title,
+                None,
+                &args.mesh.options(false),
+            )?;
+        }
     }
     let (nu, nv) = loft.control_counts();
     let summary = LoftSummary {

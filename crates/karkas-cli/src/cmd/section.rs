@@ -198,7 +198,8 @@ pub fn run(args: &SectionArgs) -> Result<()> {
                 tolerance: None,
                 repair: false,
             };
-            let (surface, u_family, v_family) = network_surface(kind, &files, &args.output)?;
+            let (surface, u_family, v_family) =
+                network_surface(kind, &files, std::slice::from_ref(&args.output))?;
             let points: Vec<Point3> = u_family
                 .curves
                 .iter()

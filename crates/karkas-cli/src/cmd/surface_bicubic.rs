@@ -2,13 +2,13 @@
 //! parameters (Kuznetsov and Filatov, docs/methods.md §5).
 
 use crate::args::{
-    parse_whole, CapOption, ClosedUv, CreaseUv, GridInput, GridParamOption, GridSamples,
-    MeshOutput, ParamKind,
+    parse_whole, CadOptions, CapOption, ClosedUv, CreaseUv, GridInput, GridParamOption,
+    GridSamples, MeshOutput, MeshTolerance, ParamKind,
 };
 use crate::input::grid_points;
 use crate::output::formats::EXACT_SURFACE_FORMATS;
-use crate::output::surface::write_grid_surface;
-use crate::output::target::output_format;
+use crate::output::surface::{write_grid_surface, SurfaceWriting};
+use crate::output::target::output_formats;
 use anyhow::{bail, Context, Result};
 use clap::Args;
 use karkas::param::{BicubicSurface, ConditionSummary, GridParameterization};
@@ -44,20 +44,27 @@ pub struct SurfaceBicubicArgs {
     /// smallest and mean measure over the nodes and the worst node.
     #[arg(long)]
     report: bool,
+    #[command(flatten)]
+    tolerance: MeshTolerance,
     /// Output file: .csv (u,v,x,y,z in the chosen parameters), a mesh (.obj .stl .ply .vtk .vts .glb), a picture
     /// (.svg .png) a 3-D viewer page (.html), or the
-    /// exact B-spline surface as .step/.stp or .iges/.igs.
-    #[arg(short, long)]
-    output: PathBuf,
+    /// exact B-spline surface as .step/.stp or .iges/.igs. Repeat -o for several outputs of
+    /// one surface.
+    #[arg(short, long, required = true)]
+    output: Vec<PathBuf>,
+    #[command(flatten)]
+    cad: CadOptions,
 }
 
 /// Runs `karkas surface bicubic`.
 pub fn run(args: &SurfaceBicubicArgs) -> Result<()> {
-    let format = output_format(&args.output, &EXACT_SURFACE_FORMATS)?;
+    let formats = output_formats(&args.output, &EXACT_SURFACE_FORMATS)?;
     args.samples.check()?;
-    args.mesh.check(format)?;
-    args.cap.check(format)?;
-    let grid = args.crease.apply(args.grid.read_for(&args.output)?)?;
+    args.mesh.check_all(&formats)?;
+    args.tolerance.check(&formats)?;
+    args.cad.check(&formats)?;
+    args.cap.check(&formats, args.tolerance.mesh_tolerance)?;
+    let grid = args.crease.apply(args.grid.read_for_all(&args.output)?)?;
     grid_points(&args.grid.input, grid.as_slice())?;
     let (closed_u, closed_v) = (args.closed.closed_u, args.closed.closed_v);
     let rule = parameterization(args.param.kind(), args.origin, (grid.rows(), grid.cols()))?;
@@ -68,15 +75,17 @@ pub fn run(args: &SurfaceBicubicArgs) -> Result<()> {
     }
     let title = format!("bicubic surface, {} x {} grid", grid.rows(), grid.cols());
     let input = (args.grid.input.as_path(), &grid);
-    write_grid_surface(
-        &surface,
-        format,
-        &args.output,
-        input,
-        args.samples.samples,
-        &title,
-        (&args.mesh.options(false), args.cap.cap),
-    )
+    let writing = SurfaceWriting {
+        samples: args.samples.samples,
+        mesh: args.mesh.options(false),
+        tolerance: args.tolerance.mesh_tolerance,
+        cap: args.cap.cap,
+        cad: &args.cad,
+    };
+    for (output, &format) in args.output.iter().zip(&formats) {
+        write_grid_surface(&surface, format, output, input, &writing, &title)?;
+    }
+    Ok(())
 }
 
 /// The rule of `--param` with the origin node of `--origin` (`--param chord` only, inside the

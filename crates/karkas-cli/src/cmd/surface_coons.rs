@@ -5,15 +5,14 @@
 //! cubic splines in the point-index parameter, warped so that the crossings sit at common
 //! node values in `[0, 1]`); the surface's parameters `u`, `v` are those node values.
 
-use crate::args::{CapOption, GridSamples, MeshOutput};
+use crate::args::{CadOptions, CapOption, GridSamples, MeshOutput, MeshTolerance};
 use crate::input::one_standard_input;
-use crate::output::cad::write_cad_surface;
 use crate::output::console::note;
 use crate::output::formats::EXACT_SURFACE_FORMATS;
 use crate::output::overwrite::ensure_distinct;
 use crate::output::samples::default_surface_samples;
-use crate::output::surface::{write_capped_mesh, write_sampled_surface};
-use crate::output::target::output_format;
+use crate::output::surface::{write_any_surface, SurfaceWriting};
+use crate::output::target::output_formats;
 use anyhow::{anyhow, bail, Context, Result};
 use clap::{Args, ValueEnum};
 use karkas::coons::{
@@ -91,19 +90,27 @@ pub struct SurfaceCoonsArgs {
     mesh: MeshOutput,
     #[command(flatten)]
     cap: CapOption,
+    #[command(flatten)]
+    mesh_tolerance: MeshTolerance,
     /// Output file: .csv (u,v,x,y,z), a mesh (.obj .stl .ply .vtk .vts .glb), a picture
     /// (.svg .png) a 3-D viewer page (.html), or the
-    /// exact B-spline surface as .step/.stp or .iges/.igs.
-    #[arg(short, long)]
-    output: PathBuf,
+    /// exact B-spline surface as .step/.stp or .iges/.igs. Repeat -o for several outputs of
+    /// one surface.
+    #[arg(short, long, required = true)]
+    output: Vec<PathBuf>,
+    #[command(flatten)]
+    cad: CadOptions,
 }
 
 /// Runs `karkas surface coons`.
 pub fn run(args: &SurfaceCoonsArgs) -> Result<()> {
-    let format = output_format(&args.output, &EXACT_SURFACE_FORMATS)?;
+    let formats = output_formats(&args.output, &EXACT_SURFACE_FORMATS)?;
     args.samples.check()?;
-    args.mesh.check(format)?;
-    args.cap.check(format)?;
+    args.mesh.check_all(&formats)?;
+    args.mesh_tolerance.check(&formats)?;
+    args.cad.check(&formats)?;
+    args.cap
+        .check(&formats, args.mesh_tolerance.mesh_tolerance)?;
     let files = NetworkFiles {
         u_curves: &args.u_curves,
         v_curves: &args.v_curves,
@@ -114,36 +121,31 @@ pub fn run(args: &SurfaceCoonsArgs) -> Result<()> {
         repair: args.repair,
     };
     let (surface, u_family, v_family) = network_surface(args.kind, &files, &args.output)?;
-    if format.is_cad() {
-        let what = format!("{}, {}", args.u_curves.display(), args.v_curves.display());
-        return write_cad_surface(&surface, format, &args.output, what, args.cap.cap);
-    }
-
     let longest = |f: &CurveFamily| f.curves.iter().map(Vec::len).max().unwrap_or(0);
-    let (nu, nv) = args.samples.or_else(|| {
-        (
-            default_surface_samples(longest(&u_family)),
-            default_surface_samples(longest(&v_family)),
-        )
-    });
-    if args.cap.cap {
-        return write_capped_mesh(
-            &surface,
-            (nu, nv),
-            format,
-            &args.output,
-            &args.mesh.options(false),
-        );
+    let default = (
+        default_surface_samples(longest(&u_family)),
+        default_surface_samples(longest(&v_family)),
+    );
+    let kind = args.kind.to_possible_value();
+    let title = format!(
+        "{} Coons surface, {} u-curves x {} v-curves",
+        kind.as_ref().map_or("", |k| k.get_name()),
+        u_family.curves.len(),
+        v_family.curves.len()
+    );
+    let writing = SurfaceWriting {
+        samples: args.samples.samples,
+        mesh: args.mesh.options(false),
+        tolerance: args.mesh_tolerance.mesh_tolerance,
+        cap: args.cap.cap,
+        cad: &args.cad,
+    };
+    let what = format!("{}, {}", args.u_curves.display(), args.v_curves.display());
+    for (output, &format) in args.output.iter().zip(&formats) {
+        let drawn = (default, title.as_str(), None);
+        write_any_surface(&surface, format, output, &writing, drawn, &what)?;
     }
-    write_sampled_surface(
-        &surface,
-        (nu, nv),
-        format,
-        &args.output,
-        "karkas surface",
-        None,
-        &args.mesh.options(false),
-    )
+    Ok(())
 }
 
 /// The files of a curve network (`--u-curves`, `--v-curves`, the optional `--u-derivs`,
@@ -165,7 +167,7 @@ pub(crate) struct NetworkFiles<'a> {
 pub(crate) fn network_surface(
     kind: Kind,
     files: &NetworkFiles<'_>,
-    output: &Path,
+    outputs: &[PathBuf],
 ) -> Result<(CoonsSurface<3>, CurveFamily, CurveFamily)> {
     if files.u_derivs.is_some() != files.v_derivs.is_some() {
         bail!("--u-derivs and --v-derivs go together: give both or neither");
@@ -196,7 +198,9 @@ pub(crate) fn network_surface(
         .chain(files.v_derivs)
         .chain(files.twists);
     for input in inputs {
-        ensure_distinct(input, output)?;
+        for output in outputs {
+            ensure_distinct(input, output)?;
+        }
     }
 
     let u_family = read_family(files.u_curves)?;

@@ -1,11 +1,14 @@
 //! `karkas surface ll`: the LL surface of a grid of points (Aulchenko et al., docs/methods.md §1.3).
 
 use super::curve_ll::{check_within, report_within};
-use crate::args::{CapOption, CreaseUv, GridInput, GridSamples, LlSurfaceOptions, MeshOutput};
+use crate::args::{
+    CadOptions, CapOption, CreaseUv, GridInput, GridSamples, LlSurfaceOptions, MeshOutput,
+    MeshTolerance,
+};
 use crate::input::grid_points;
 use crate::output::formats::STREAMED_SURFACE_FORMATS;
-use crate::output::surface::write_grid_surface;
-use crate::output::target::output_format;
+use crate::output::surface::{write_grid_surface, SurfaceWriting};
+use crate::output::target::output_formats;
 use anyhow::{Context, Result};
 use clap::Args;
 use karkas::ll::LlSurface;
@@ -37,23 +40,30 @@ pub struct SurfaceLlArgs {
     cap: CapOption,
     #[command(flatten)]
     crease: CreaseUv,
+    #[command(flatten)]
+    tolerance: MeshTolerance,
     /// Output file: .csv (u,v,x,y,z), .npy (the samples' points, an (nu, nv, 3) float64
     /// array), a mesh (.obj .stl .ply .vtk .vts .glb), a picture
     /// (.svg .png) a 3-D viewer page (.html), or the
-    /// exact B-spline surface as .step/.stp or .iges/.igs.
-    #[arg(short, long)]
-    output: PathBuf,
+    /// exact B-spline surface as .step/.stp or .iges/.igs. Repeat -o for several outputs of
+    /// one surface.
+    #[arg(short, long, required = true)]
+    output: Vec<PathBuf>,
+    #[command(flatten)]
+    cad: CadOptions,
 }
 
 /// Runs `karkas surface ll`.
 pub fn run(args: &SurfaceLlArgs) -> Result<()> {
-    let format = output_format(&args.output, &STREAMED_SURFACE_FORMATS)?;
+    let formats = output_formats(&args.output, &STREAMED_SURFACE_FORMATS)?;
     args.ll.check()?;
     check_within(args.within)?;
     args.samples.check()?;
-    args.mesh.check(format)?;
-    args.cap.check(format)?;
-    let grid = args.crease.apply(args.grid.read_for(&args.output)?)?;
+    args.mesh.check_all(&formats)?;
+    args.tolerance.check(&formats)?;
+    args.cad.check(&formats)?;
+    args.cap.check(&formats, args.tolerance.mesh_tolerance)?;
+    let grid = args.crease.apply(args.grid.read_for_all(&args.output)?)?;
     grid_points(&args.grid.input, grid.as_slice())?;
     let surface = match args.within {
         Some(distance) => {
@@ -82,13 +92,15 @@ pub fn run(args: &SurfaceLlArgs) -> Result<()> {
         grid.cols()
     );
     let input = (args.grid.input.as_path(), &grid);
-    write_grid_surface(
-        &surface,
-        format,
-        &args.output,
-        input,
-        args.samples.samples,
-        &title,
-        (&args.mesh.options(false), args.cap.cap),
-    )
+    let writing = SurfaceWriting {
+        samples: args.samples.samples,
+        mesh: args.mesh.options(false),
+        tolerance: args.tolerance.mesh_tolerance,
+        cap: args.cap.cap,
+        cad: &args.cad,
+    };
+    for (output, &format) in args.output.iter().zip(&formats) {
+        write_grid_surface(&surface, format, output, input, &writing, &title)?;
+    }
+    Ok(())
 }

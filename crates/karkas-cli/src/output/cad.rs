@@ -2,28 +2,31 @@
 //! for the discrete periodic splines, which have none.
 
 use super::console::note;
+use crate::args::CadOptions;
 use anyhow::{anyhow, bail, Context, Result};
 use karkas::bspline::{ToBSplineCurve, ToBSplineSurface};
 use karkas::Point;
 use karkas_io::cad::CadShell;
-use karkas_io::export::cad::{write_cad_curve_with_points, NO_EXACT_FORM};
+use karkas_io::export::cad::{scaled_surface, write_cad_curve_in, NO_EXACT_FORM};
 use karkas_io::OutputFormat;
 use std::path::Path;
 
 /// Writes the exact B-spline form of `curve` as STEP, IGES or DXF (by `format`, one of
 /// [`OutputFormat::CURVE_CAD`]) with the input `points` the curve was made from, which a DXF
-/// holds as POINT entities on layer `POINTS` (STEP and IGES leave them out); `what` names the
-/// input for errors.
+/// holds as POINT entities on layer `POINTS` (STEP and IGES leave them out), in the unit and
+/// at the scale of `cad`; `what` names the input for errors.
 pub fn write_cad_curve<const D: usize>(
     curve: &impl ToBSplineCurve<D>,
     points: &[Point<D>],
     format: OutputFormat,
     output: &Path,
+    cad: &CadOptions,
     what: impl std::fmt::Display,
 ) -> Result<()> {
     let what = what.to_string();
     let bspline = curve.to_bspline().with_context(|| what.clone())?;
-    let spatial = write_cad_curve_with_points(&bspline, points, format, output, Path::new(&what))?;
+    let units = cad.units();
+    let spatial = write_cad_curve_in(&bspline, points, format, output, Path::new(&what), &units)?;
     let shown_points = if format == OutputFormat::Dxf {
         format!(", {} input points", points.len())
     } else {
@@ -40,27 +43,30 @@ pub fn write_cad_curve<const D: usize>(
     Ok(())
 }
 
-/// Writes the exact B-spline form of `surface` as STEP or IGES (by `format`): one face, with
-/// no edge at its poles and one seam edge for a closed direction; with `cap`, every open
-/// boundary loop closed by a planar face (an error naming `--cap` when a loop is not planar
-/// or there is none). A closed result is a solid in STEP, its faces turned outwards, and its
-/// volume is reported.
+/// Writes the exact B-spline form of `surface` as STEP or IGES (by `format`), in the unit
+/// and at the scale of `cad`: one face, with no edge at its poles and one seam edge for a
+/// closed direction; with `cap`, every open boundary loop closed by a planar face (an error
+/// naming `--cap` when a loop is not planar or there is none). A closed result is a solid in
+/// STEP, its faces turned outwards, and its volume (in the file's coordinates) is reported.
 pub fn write_cad_surface(
     surface: &impl ToBSplineSurface<3>,
     format: OutputFormat,
     output: &Path,
+    cad: &CadOptions,
     what: impl std::fmt::Display,
     cap: bool,
 ) -> Result<()> {
     let bspline = surface.to_bspline().with_context(|| what.to_string())?;
-    let mut shell = CadShell::of_surfaces(std::slice::from_ref(&bspline));
+    let units = cad.units();
+    let scaled = scaled_surface(&bspline, units.scale).with_context(|| what.to_string())?;
+    let mut shell = CadShell::of_surfaces(std::slice::from_ref(&scaled));
     let caps = if cap {
         shell.cap_free_loops().map_err(|e| anyhow!("--cap: {e}"))?
     } else {
         Vec::new()
     };
     let volume = shell.is_closed().then(|| shell.orient_outward());
-    karkas_io::export::cad::write_cad_shell(&shell, format, output)?;
+    karkas_io::export::cad::write_cad_shell(&shell, format, output, units.cad_unit())?;
     let grid = bspline.control_points();
     super::console::record("control_points", vec![grid.rows(), grid.cols()]);
     let mut body = String::new();

@@ -43,13 +43,28 @@ pub fn set_output_cap(bytes: u64) {
 
 pub use karkas_io::picture::budget::parse_size;
 
+/// The cap in force, in bytes.
+pub fn memory_cap() -> u64 {
+    match MAX_MEMORY.load(Ordering::Relaxed) {
+        0 => DEFAULT_MAX_MEMORY,
+        cap => cap,
+    }
+}
+
+/// The most samples of a surface a mesh in `format` may have within the cap (and
+/// [`karkas_io::export::samples::MAX_SAMPLES`]).
+pub fn mesh_sample_budget(format: OutputFormat) -> usize {
+    let per_sample = surface_output_bytes(format, 1, 1).max(1);
+    let fit = u128::from(memory_cap()) / per_sample;
+    usize::try_from(fit)
+        .unwrap_or(usize::MAX)
+        .min(karkas_io::export::samples::MAX_SAMPLES)
+}
+
 /// Fails early when `request` (e.g. "curve ll: 50000000 samples") needs `bytes` of output
 /// buffers, more than the cap.
 pub fn check_memory(request: &str, bytes: u128) -> Result<()> {
-    let cap = match MAX_MEMORY.load(Ordering::Relaxed) {
-        0 => DEFAULT_MAX_MEMORY,
-        cap => cap,
-    };
+    let cap = memory_cap();
     if bytes > u128::from(cap) {
         bail!(
             "{request} would need {} of memory, above the cap of {} (raise it with --max-memory \

@@ -3,7 +3,7 @@
 
 use super::console::note;
 pub use karkas_io::export::samples::{
-    default_curve_samples, default_surface_samples, sample_curve, sample_surface, MAX_SAMPLES,
+    default_surface_samples, sample_curve, sample_surface, MAX_SAMPLES,
 };
 use std::path::Path;
 

@@ -4,15 +4,16 @@
 
 use super::cad::write_cad_surface;
 use super::console::{note, record};
-use super::memory::{check_memory, surface_output_bytes};
+use super::memory::{check_memory, mesh_sample_budget, surface_output_bytes};
 use super::samples::{default_surface_samples, report_samples};
 use super::target::shown;
+use crate::args::CadOptions;
 use anyhow::{anyhow, Result};
 use karkas::bspline::ToBSplineSurface;
 use karkas::{Grid, Point3, Surface};
 use karkas_io::export::samples::sample_surface;
 use karkas_io::export::stream;
-use karkas_io::export::surface::SurfaceDrawing;
+use karkas_io::export::surface::{write_surface_at, SurfaceDrawing};
 use karkas_io::mesh::{body_mesh, write_mesh_as, MeshOptions};
 use karkas_io::OutputFormat;
 use std::path::Path;
@@ -58,30 +59,113 @@ pub fn write_sampled_surface(
     Ok(())
 }
 
-/// Writes a surface built from `grid` (read from `input`, which errors name) in the format of
-/// `output`: its exact B-spline form as STEP or IGES, else `samples` (default
-/// [`default_surface_samples`] per grid line) as [`write_sampled_surface`] writes them; `cap`
-/// closes the open planar boundary loops (`--cap`).
+/// How a command writes the surface it built, besides the format: the samples asked for, how
+/// meshes are written and to which tolerance, whether open planar loops are capped, the CAD
+/// unit and scale.
+pub struct SurfaceWriting<'a> {
+    /// `--samples NU,NV`, if given.
+    pub samples: Option<(usize, usize)>,
+    /// How meshes are written (`--flip-normals`).
+    pub mesh: MeshOptions,
+    /// `--mesh-tolerance`, if given: meshes are sampled where the surface bends.
+    pub tolerance: Option<f64>,
+    /// `--cap`: every open planar boundary loop closed (STEP, IGES and triangle meshes).
+    pub cap: bool,
+    /// `--units`, `--scale` of STEP and IGES.
+    pub cad: &'a CadOptions,
+}
+
+/// Writes `surface` (from the input `what` names in errors) at `output` in `format`: its exact
+/// B-spline form as STEP or IGES; a closed mesh with `--cap`; a mesh within `--mesh-tolerance`
+/// when given; else its samples (`default` when none are given) as [`write_sampled_surface`]
+/// writes them. `title` captions pictures and the page, which shows `net`.
+pub fn write_any_surface(
+    surface: &(impl Surface<3> + ToBSplineSurface<3> + Sync),
+    format: OutputFormat,
+    output: &Path,
+    writing: &SurfaceWriting<'_>,
+    (default, title, net): ((usize, usize), &str, Option<&Grid<Point3>>),
+    what: impl std::fmt::Display,
+) -> Result<()> {
+    if format.is_cad() {
+        return write_cad_surface(surface, format, output, writing.cad, what, writing.cap);
+    }
+    let samples = writing.samples.unwrap_or(default);
+    if writing.cap {
+        return write_capped_mesh(surface, samples, format, output, &writing.mesh);
+    }
+    if let Some(tolerance) = writing.tolerance {
+        if OutputFormat::MESHES.contains(&format) {
+            return write_mesh_within(surface, tolerance, format, output, title, &writing.mesh);
+        }
+    }
+    write_sampled_surface(surface, samples, format, output, title, net, &writing.mesh)
+}
+
+/// Writes a surface built from `grid` (read from `input`, which errors name) as
+/// [`write_any_surface`] does, `samples` by default [`default_surface_samples`] per grid line.
 pub fn write_grid_surface(
     surface: &(impl Surface<3> + ToBSplineSurface<3> + Sync),
     format: OutputFormat,
     output: &Path,
     (input, grid): (&Path, &Grid<Point3>),
-    samples: Option<(usize, usize)>,
+    writing: &SurfaceWriting<'_>,
     title: &str,
-    (mesh, cap): (&MeshOptions, bool),
 ) -> Result<()> {
-    if format.is_cad() {
-        return write_cad_surface(surface, format, output, input.display(), cap);
-    }
-    let samples = samples.unwrap_or((
+    let default = (
         default_surface_samples(grid.rows()),
         default_surface_samples(grid.cols()),
-    ));
-    if cap {
-        return write_capped_mesh(surface, samples, format, output, mesh);
+    );
+    let drawn = (default, title, Some(grid));
+    write_any_surface(surface, format, output, writing, drawn, input.display())
+}
+
+/// Writes the mesh of `surface` in `format` sampled within `tolerance` of it
+/// ([`karkas::geometry::mesh_parameters`], within the memory cap's samples), and reports the
+/// samples, the deviation reached, and a warning when the cap stopped the refinement first.
+fn write_mesh_within(
+    surface: &(impl Surface<3> + Sync),
+    tolerance: f64,
+    format: OutputFormat,
+    output: &Path,
+    title: &str,
+    mesh: &MeshOptions,
+) -> Result<()> {
+    let budget = mesh_sample_budget(format);
+    let found = karkas::geometry::mesh_parameters(surface, tolerance, budget);
+    let (nu, nv) = (found.us.len(), found.vs.len());
+    check_memory(
+        &format!(
+            "{}: {nu} x {nv} samples as {}",
+            shown(output).display(),
+            format.extension()
+        ),
+        surface_output_bytes(format, nu, nv),
+    )?;
+    let drawing = SurfaceDrawing {
+        title,
+        net: None,
+        mesh: *mesh,
+    };
+    write_surface_at(surface, (&found.us, &found.vs), format, output, &drawing)?;
+    record("samples", nu * nv);
+    record("mesh_deviation", found.max_deviation);
+    if !found.met {
+        note(format!(
+            "karkas: warning: {}: --mesh-tolerance {tolerance} not met within the memory cap's \
+             {budget} samples: largest deviation {:.3e}",
+            shown(output).display(),
+            found.max_deviation
+        ));
     }
-    write_sampled_surface(surface, samples, format, output, title, Some(grid), mesh)
+    note(format!(
+        "karkas: wrote {} ({nu} x {nv} samples, {} triangles, largest deviation {:.3e} within \
+         --mesh-tolerance {tolerance})",
+        shown(output).display(),
+        2 * (nu - 1) * (nv - 1),
+        found.max_deviation
+    ));
+    Ok(())
 }
 
 /// Samples `surface` on a uniform `nu x nv` grid and writes it to `output` as a closed mesh

@@ -10,7 +10,7 @@ use anyhow::{bail, Result};
 use karkas_io::write::{is_stdout, output_name};
 use karkas_io::OutputFormat;
 use std::io::IsTerminal;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::sync::OnceLock;
 
 /// The format of `--format`, set once from the command line.
@@ -56,6 +56,49 @@ pub fn output_format(output: &Path, allowed: &[OutputFormat]) -> Result<OutputFo
         );
     }
     Ok(format)
+}
+
+/// The formats of a command's outputs (`-o`, repeatable: one computation, every output),
+/// each one of `allowed`, as [`output_format`] gives them, with two rules for several
+/// outputs: `--format` names the format of standard output (`-o -`) only, each file taking
+/// its extension's; and no output may be given twice, standard output included.
+pub fn output_formats(outputs: &[PathBuf], allowed: &[OutputFormat]) -> Result<Vec<OutputFormat>> {
+    if outputs.len() < 2 {
+        return outputs.iter().map(|o| output_format(o, allowed)).collect();
+    }
+    for (k, a) in outputs.iter().enumerate() {
+        if outputs[..k].iter().any(|b| same_output(a, b)) {
+            bail!(
+                "-o {}: given twice (each output is written once)",
+                output_name(a).display()
+            );
+        }
+    }
+    outputs
+        .iter()
+        .map(|o| {
+            if is_stdout(o) {
+                output_format(o, allowed)
+            } else {
+                Ok(OutputFormat::from_path(o, allowed)?)
+            }
+        })
+        .collect()
+}
+
+/// True when the outputs `a` and `b` are one: both standard output, or one path.
+fn same_output(a: &Path, b: &Path) -> bool {
+    match (is_stdout(a), is_stdout(b)) {
+        (true, true) => true,
+        (false, false) => {
+            a == b
+                || std::path::absolute(a)
+                    .ok()
+                    .zip(std::path::absolute(b).ok())
+                    .is_some_and(|(x, y)| x == y)
+        }
+        _ => false,
+    }
 }
 
 /// True for the formats written as bytes rather than text (STL and PLY by default).

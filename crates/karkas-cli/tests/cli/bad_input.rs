@@ -67,7 +67,7 @@ fn empty_file() {
     refused(
         &[("pts.csv", "")],
         &["curve", "ll", "pts.csv", "-o", "out.csv"],
-        "pts.csv: no points found",
+        "pts.csv: no points found: the input is empty",
     );
 }
 
@@ -76,7 +76,7 @@ fn header_only() {
     refused(
         &[("pts.csv", "x,y\n")],
         &["curve", "ll", "pts.csv", "-o", "out.csv"],
-        "pts.csv: no points found",
+        "pts.csv: no points found: the header 'x,y' (line 1) and no data rows after it",
     );
 }
 

@@ -312,7 +312,10 @@ fn bad_input_exits_2_naming_the_problem() {
             vec![s(&input), "--method", "fit", "--knots", "0,0.5,0.4,1"],
             "--knots",
         ),
-        (vec![s(&input), "--ends", "periodic"], "--closed"),
+        (
+            vec![s(&input), "--compare", "spline,fit", "--ends", "periodic"],
+            "--ends periodic: the fit makes open curves only",
+        ),
         (vec![s(&input), "-o", "k.txt"], "txt"),
         (vec![s(&input), "-o", s(&input)], "naca.csv"),
         (
@@ -329,6 +332,22 @@ fn bad_input_exits_2_naming_the_problem() {
         assert!(!stderr(&o).contains("panicked"), "{args:?}");
     }
     assert!(!dir.path().join("k.txt").exists());
+    // Periodic ends say the curve is closed: the same figures as --closed.
+    let periodic = karkas(&[
+        "curve",
+        "analyze",
+        s(&input),
+        "--ends",
+        "periodic",
+        "--json",
+    ]);
+    let closed = karkas(&["curve", "analyze", s(&input), "--closed", "--json"]);
+    assert_eq!(periodic.status.code(), Some(0), "{}", stderr(&periodic));
+    let figures = |o: &std::process::Output| {
+        let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+        v["spline"].clone()
+    };
+    assert_eq!(figures(&periodic), figures(&closed));
     let one = write(dir.path(), "one.csv", "x,y\n1,2\n");
     let o = karkas(&["curve", "analyze", s(&one)]);
     assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));

@@ -29,6 +29,7 @@
 //! lost on small curves) and brings `image`, `chrono`, `uuid` and `num` along; the subset
 //! needed here is a few hundred lines of group codes.
 
+use crate::cad::units::LengthUnit;
 use karkas::bspline::BSplineCurve;
 use karkas::Point3;
 use std::fmt::Write as _;
@@ -87,12 +88,18 @@ mod handle {
     pub const FIRST_ENTITY: u32 = 0x100;
 }
 
-/// The text of the DXF drawing of `curve`.
+/// The text of the DXF drawing of `curve`, without a unit (`$INSUNITS 0`).
 pub fn dxf_text(curve: &DxfCurve<'_>) -> String {
+    dxf_text_in(curve, None)
+}
+
+/// [`dxf_text`] stating the length unit `unit` in `$INSUNITS` ([`crate::cad::units`]).
+pub fn dxf_text_in(curve: &DxfCurve<'_>, unit: Option<LengthUnit>) -> String {
     let mut dxf = Dxf::default();
     let (low, high) = extents(curve);
     let entity_count = 1 + curve.points.len() as u32;
-    dxf.header(low, high, handle::FIRST_ENTITY + entity_count);
+    let units = unit.map_or(0, LengthUnit::dxf);
+    dxf.header(low, high, handle::FIRST_ENTITY + entity_count, units);
     dxf.pair(0, "SECTION");
     dxf.pair(2, "CLASSES");
     dxf.pair(0, "ENDSEC");
@@ -171,7 +178,7 @@ impl Dxf {
         self.pair(code, format!("{h:X}"));
     }
 
-    fn header(&mut self, low: Point3, high: Point3, seed: u32) {
+    fn header(&mut self, low: Point3, high: Point3, seed: u32, units: u32) {
         self.pair(0, "SECTION");
         self.pair(2, "HEADER");
         self.pair(9, "$ACADVER");
@@ -184,9 +191,10 @@ impl Dxf {
         self.coordinates(10, low);
         self.pair(9, "$EXTMAX");
         self.coordinates(10, high);
-        // Unitless: the coordinates are the input's, in whatever unit it was measured.
+        // Unitless (0) unless a unit is given: the coordinates are the input's, in whatever
+        // unit it was measured.
         self.pair(9, "$INSUNITS");
-        self.pair(70, 0);
+        self.pair(70, units);
         self.pair(9, "$HANDSEED");
         self.pair(5, format!("{seed:X}"));
         self.pair(0, "ENDSEC");

@@ -13,6 +13,7 @@
 //!
 //! Hand-written: no maintained Rust crate writes IGES without a whole CAD kernel.
 
+use crate::cad::units::LengthUnit;
 use std::fmt::Write as _;
 use std::path::Path;
 
@@ -375,8 +376,13 @@ fn record(text: &mut String, data: &str, section: char, number: usize) {
     let _ = writeln!(text, "{data:<72}{section}{number:>7}");
 }
 
-/// The text of an IGES file holding `entities`, named `name`.
+/// The text of an IGES file holding `entities`, named `name`, lengths in millimetres.
 pub fn iges_text(entities: &[CadEntity<'_>], name: &str) -> String {
+    iges_text_in(entities, name, LengthUnit::Millimetre)
+}
+
+/// [`iges_text`] with the length unit `unit` ([`crate::cad::units`]).
+pub fn iges_text_in(entities: &[CadEntity<'_>], name: &str, unit: LengthUnit) -> String {
     let mut text = String::new();
     let start = [format!("karkas exact B-spline export: {name}")];
     for (k, line) in start.iter().enumerate() {
@@ -398,8 +404,8 @@ pub fn iges_text(entities: &[CadEntity<'_>], name: &str) -> String {
         "15".to_owned(),
         hollerith("karkas"),
         real(1.0),
-        "2".to_owned(),
-        hollerith("MM"),
+        unit.iges().0.to_string(),
+        hollerith(unit.iges().1),
         "1".to_owned(),
         real(1.0),
         hollerith(&stamp),

@@ -29,6 +29,7 @@ use crate::cad::entity::{
 };
 use crate::cad::shell::{CadShell, FaceSurface};
 use crate::cad::time_stamp::FileStamp;
+use crate::cad::units::LengthUnit;
 use crate::error::IoError;
 
 /// The entity instances of a STEP data section, numbered from 1.
@@ -299,8 +300,14 @@ fn step_string(name: &str) -> String {
         .replace('\'', "''")
 }
 
-/// The text of a STEP file holding `entities`, named `name` (the product's name).
+/// The text of a STEP file holding `entities`, named `name` (the product's name), lengths in
+/// millimetres.
 pub fn step_text(entities: &[CadEntity<'_>], name: &str) -> String {
+    step_text_in(entities, name, LengthUnit::Millimetre)
+}
+
+/// [`step_text`] with the length unit `unit` ([`crate::cad::units`]).
+pub fn step_text_in(entities: &[CadEntity<'_>], name: &str, unit: LengthUnit) -> String {
     let name = step_string(name);
     let mut data = Data { lines: Vec::new() };
     let app = data
@@ -321,7 +328,7 @@ pub fn step_text(entities: &[CadEntity<'_>], name: &str) -> String {
         "PRODUCT_DEFINITION('design','',{formation},{definition_context})"
     ));
     let shape = data.add(format!("PRODUCT_DEFINITION_SHAPE('','',{definition})"));
-    let length = data.add("(LENGTH_UNIT()NAMED_UNIT(*)SI_UNIT(.MILLI.,.METRE.))".into());
+    let length = unit.step_instances(&mut |e| data.add(e));
     let angle = data.add("(NAMED_UNIT(*)PLANE_ANGLE_UNIT()SI_UNIT($,.RADIAN.))".into());
     let solid = data.add("(NAMED_UNIT(*)SI_UNIT($,.STERADIAN.)SOLID_ANGLE_UNIT())".into());
     let uncertainty = data.add(format!(

@@ -1,12 +1,13 @@
 //! The exact B-spline forms of curves and surfaces as STEP or IGES, and of curves as DXF
 //! (with their input points).
 
-use crate::cad::dxf::{dxf_text, DxfCurve};
+use crate::cad::dxf::{dxf_text_in, DxfCurve};
+pub use crate::cad::units::{CadUnits, LengthUnit};
 use crate::cad::{
     curve_closed, curve_in_space, CadEntity, CadError, CadShell, FaceSurface, MAX_CAD_DEGREE,
 };
-use crate::iges::iges_text;
-use crate::step::step_text;
+use crate::iges::iges_text_in;
+use crate::step::step_text_in;
 use crate::write::write_atomic;
 use crate::{GeometryError, IoError, OutputFormat};
 use karkas::bspline::{BSplineCurve, BSplineSurface};
@@ -34,11 +35,25 @@ pub fn write_cad_curve_with_points<const D: usize>(
     output: &Path,
     what: &Path,
 ) -> Result<BSplineCurve<3>, IoError> {
+    write_cad_curve_in(bspline, points, format, output, what, &CadUnits::default())
+}
+
+/// [`write_cad_curve_with_points`] stating the length unit and scaling the coordinates as
+/// `units` says ([`crate::cad::units`]).
+pub fn write_cad_curve_in<const D: usize>(
+    bspline: &BSplineCurve<D>,
+    points: &[Point<D>],
+    format: OutputFormat,
+    output: &Path,
+    what: &Path,
+    units: &CadUnits,
+) -> Result<BSplineCurve<3>, IoError> {
     let format = format.allowed_for(output, &OutputFormat::CURVE_CAD)?;
     if format != OutputFormat::Dxf {
         check_degree(bspline.degree(), format, output)?;
     }
-    let (text, spatial) = cad_curve_text(bspline, points, format, file_name(output), what)?;
+    let (text, spatial) =
+        cad_curve_text_in(bspline, points, format, file_name(output), what, units)?;
     write_atomic(output, |out| out.write_all(text.as_bytes()))?;
     Ok(spatial)
 }
@@ -55,10 +70,23 @@ pub fn cad_curve_text<const D: usize>(
     name: &str,
     what: &Path,
 ) -> Result<(String, BSplineCurve<3>), IoError> {
+    cad_curve_text_in(bspline, points, format, name, what, &CadUnits::default())
+}
+
+/// [`cad_curve_text`] stating the length unit and scaling the coordinates as `units` says.
+pub fn cad_curve_text_in<const D: usize>(
+    bspline: &BSplineCurve<D>,
+    points: &[Point<D>],
+    format: OutputFormat,
+    name: &str,
+    what: &Path,
+    units: &CadUnits,
+) -> Result<(String, BSplineCurve<3>), IoError> {
     let spatial = curve_in_space(bspline).map_err(|e| match e {
         CadError::Geometry(source) => geometry(what, source),
         other => crate::error::data_error(what, other.to_string()),
     })?;
+    let spatial = scaled_curve(spatial, units.scale).map_err(|e| geometry(what, e))?;
     if format != OutputFormat::Dxf {
         let target = format!("{name}.{}", format.extension());
         check_degree(spatial.degree(), format, Path::new(&target))?;
@@ -66,16 +94,17 @@ pub fn cad_curve_text<const D: usize>(
     let entities = [CadEntity::Curve(&spatial)];
     let text = match format {
         OutputFormat::Dxf => {
-            let points: Vec<Point3> = points.iter().map(in_space).collect();
-            dxf_text(&DxfCurve {
+            let points: Vec<Point3> = points.iter().map(|p| in_space(p) * units.scale).collect();
+            let curve = DxfCurve {
                 spline: &spatial,
                 closed: bspline.is_closed() || curve_closed(&spatial),
                 planar: D < 3,
                 points: &points,
-            })
+            };
+            dxf_text_in(&curve, units.unit)
         }
-        OutputFormat::Iges => iges_text(&entities, name),
-        _ => step_text(&entities, name),
+        OutputFormat::Iges => iges_text_in(&entities, name, units.cad_unit()),
+        _ => step_text_in(&entities, name, units.cad_unit()),
     };
     Ok((text, spatial))
 }
@@ -90,22 +119,41 @@ pub fn cad_surface_text(
     format: OutputFormat,
     name: &str,
 ) -> Result<String, IoError> {
+    cad_surface_text_in(bspline, format, name, &CadUnits::default())
+}
+
+/// [`cad_surface_text`] stating the length unit and scaling the coordinates as `units` says.
+pub fn cad_surface_text_in(
+    bspline: &BSplineSurface<3>,
+    format: OutputFormat,
+    name: &str,
+    units: &CadUnits,
+) -> Result<String, IoError> {
     let target = format!("{name}.{}", format.extension());
     check_degree(
         bspline.degree_u().max(bspline.degree_v()),
         format,
         Path::new(&target),
     )?;
+    let scaled;
+    let bspline = if units.scale == 1.0 {
+        bspline
+    } else {
+        scaled =
+            scaled_surface(bspline, units.scale).map_err(|e| geometry(Path::new(&target), e))?;
+        &scaled
+    };
     let entities = [CadEntity::Surface(bspline)];
     Ok(match format {
-        OutputFormat::Iges => iges_text(&entities, name),
-        _ => step_text(&entities, name),
+        OutputFormat::Iges => iges_text_in(&entities, name, units.cad_unit()),
+        _ => step_text_in(&entities, name, units.cad_unit()),
     })
 }
 
 /// The text of the STEP or IGES file (by `format`) of the shell `shell` (a solid in STEP when
-/// it is closed), the product named `name`: byte for byte what [`write_cad_shell`] writes to a
-/// file of that stem.
+/// it is closed), the product named `name`, its coordinates stated in `unit` (as they are:
+/// scale the faces before building the shell, [`scaled_surface`]): byte for byte what
+/// [`write_cad_shell`] writes to a file of that stem.
 ///
 /// Errors: a face of a degree above [`MAX_CAD_DEGREE`] ([`IoError::Data`] naming the file
 /// `name`.ext).
@@ -113,6 +161,7 @@ pub fn cad_shell_text(
     shell: &CadShell,
     format: OutputFormat,
     name: &str,
+    unit: LengthUnit,
 ) -> Result<String, IoError> {
     let target = format!("{name}.{}", format.extension());
     let degree = shell
@@ -127,21 +176,49 @@ pub fn cad_shell_text(
     check_degree(degree, format, Path::new(&target))?;
     let entities = [CadEntity::Shell(shell)];
     Ok(match format {
-        OutputFormat::Iges => iges_text(&entities, name),
-        _ => step_text(&entities, name),
+        OutputFormat::Iges => iges_text_in(&entities, name, unit),
+        _ => step_text_in(&entities, name, unit),
     })
 }
 
 /// Writes the shell `shell` at `output` as STEP (a solid when it is closed) or IGES (its
-/// faces), by `format`.
+/// faces), by `format`, its coordinates stated in `unit`.
 pub fn write_cad_shell(
     shell: &CadShell,
     format: OutputFormat,
     output: &Path,
+    unit: LengthUnit,
 ) -> Result<(), IoError> {
     let format = format.allowed_for(output, &OutputFormat::CAD)?;
-    let text = cad_shell_text(shell, format, file_name(output))?;
+    let text = cad_shell_text(shell, format, file_name(output), unit)?;
     write_atomic(output, |out| out.write_all(text.as_bytes()))
+}
+
+/// `surface` with its control points multiplied by `scale` (a copy of `surface` for 1).
+pub fn scaled_surface(
+    surface: &BSplineSurface<3>,
+    scale: f64,
+) -> Result<BSplineSurface<3>, karkas::Error> {
+    let mut grid = surface.control_points().clone();
+    if scale != 1.0 {
+        for p in grid.as_mut_slice() {
+            *p *= scale;
+        }
+    }
+    BSplineSurface::new(
+        (surface.degree_u(), surface.knots_u().to_vec()),
+        (surface.degree_v(), surface.knots_v().to_vec()),
+        grid,
+    )
+}
+
+/// `curve` with its control points multiplied by `scale` (`curve` itself for 1).
+fn scaled_curve(curve: BSplineCurve<3>, scale: f64) -> Result<BSplineCurve<3>, karkas::Error> {
+    if scale == 1.0 {
+        return Ok(curve);
+    }
+    let control = curve.control_points().iter().map(|&p| p * scale).collect();
+    BSplineCurve::new(curve.degree(), curve.knots().to_vec(), control)
 }
 
 /// Refuses a B-spline of a degree above [`MAX_CAD_DEGREE`] for STEP and IGES.
@@ -183,9 +260,19 @@ pub fn write_cad_surface(
     format: OutputFormat,
     output: &Path,
 ) -> Result<(), IoError> {
+    write_cad_surface_in(bspline, format, output, &CadUnits::default())
+}
+
+/// [`write_cad_surface`] stating the length unit and scaling the coordinates as `units` says.
+pub fn write_cad_surface_in(
+    bspline: &BSplineSurface<3>,
+    format: OutputFormat,
+    output: &Path,
+    units: &CadUnits,
+) -> Result<(), IoError> {
     let format = format.allowed_for(output, &OutputFormat::CAD)?;
     check_degree(bspline.degree_u().max(bspline.degree_v()), format, output)?;
-    let text = cad_surface_text(bspline, format, file_name(output))?;
+    let text = cad_surface_text_in(bspline, format, file_name(output), units)?;
     write_atomic(output, |out| out.write_all(text.as_bytes()))
 }
 

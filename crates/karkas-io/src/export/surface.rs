@@ -80,6 +80,27 @@ fn is_body(nu: usize, nv: usize, samples: &[Point3]) -> bool {
     seams.closed_u || seams.closed_v || GridPoles::detect(nu, nv, samples).any()
 }
 
+/// Samples `surface` at the parameters `us` x `vs` (e.g. those of
+/// [`karkas::geometry::mesh_parameters`], for a mesh within a tolerance) and writes the
+/// samples at `output` in `format` as [`write_surface`] writes a grid.
+pub fn write_surface_at(
+    surface: &impl Surface<3>,
+    (us, vs): (&[f64], &[f64]),
+    format: OutputFormat,
+    output: &Path,
+    drawing: &SurfaceDrawing<'_>,
+) -> Result<(), IoError> {
+    let mut points = vec![Point3::ZERO; us.len() * vs.len()];
+    surface.eval_grid_into(us, vs, &mut points);
+    let grid = Grid::from_row_major(us.len(), vs.len(), points).map_err(|source| {
+        IoError::Geometry(Box::new(crate::GeometryError {
+            path: output.to_path_buf(),
+            source,
+        }))
+    })?;
+    write_surface(output, format, &grid, drawing)
+}
+
 /// Writes the grid of points `samples` (row-major, `u` outer) at `output` in `format`, one of
 /// [`SURFACE_FORMATS`]: the `i,j,x,y,z` CSV, a mesh of its quads (split into triangles), a
 /// picture of the shaded surface with its isoparametric lines, or the viewer page.

@@ -143,13 +143,38 @@ pub fn render_curve_svg_with(
         let tips = comb.teeth.iter().map(|t| t.0[1]);
         chart.polyline("comb-envelope", tips, ENVELOPE, 1.0);
     }
+    // The points under the curve, and small enough between their neighbours to leave it in
+    // sight: the curve is never hidden by them.
+    let radius = dot_radius(chart.frame(), plot.input);
+    chart.dots("input", finite(plot.input), RED, radius);
     chart.polyline("curve", plot.curve.iter().map(|p| (p[0], p[1])), BLUE, 2.0);
     for w in overlay.whiskers {
         chart.polyline("whisker", w.map(|p| (p[0], p[1])), WHISKER, 2.0);
     }
-    chart.dots("input", finite(plot.input), RED, 3.0);
     Ok(chart.finish())
 }
+
+/// The radius in pixels of the dots of the input `points` in `frame`: 3, or less where the
+/// points crowd, a third of the median pixel distance between neighbours (at least 0.75), so
+/// that a dense input leaves the curve through it in sight between its dots.
+pub fn dot_radius(frame: &Frame, points: &[Point2]) -> f64 {
+    let px: Vec<(f64, f64)> = finite(points).map(|p| frame.to_px(p)).collect();
+    let mut gaps: Vec<f64> = px
+        .windows(2)
+        .map(|w| (w[1].0 - w[0].0).hypot(w[1].1 - w[0].1))
+        .filter(|g| *g > 0.0)
+        .collect();
+    if gaps.is_empty() {
+        return MAX_DOT_RADIUS;
+    }
+    let mid = gaps.len() / 2;
+    gaps.select_nth_unstable_by(mid, f64::total_cmp);
+    (gaps[mid] / 3.0).clamp(MIN_DOT_RADIUS, MAX_DOT_RADIUS)
+}
+
+/// The largest and smallest radius of an input dot, in pixels.
+const MAX_DOT_RADIUS: f64 = 3.0;
+const MIN_DOT_RADIUS: f64 = 0.75;
 
 /// The larger side of the bounding box of the finite `points` (0 for none).
 fn extent(points: &[Point2]) -> f64 {

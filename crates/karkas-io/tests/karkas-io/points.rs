@@ -4,7 +4,9 @@ use std::path::Path;
 
 use karkas::{Point, Point2, Point3};
 use karkas_io::airfoil::parse_airfoil;
-use karkas_io::points::{parse_curve_points, read_curve_points, CurvePoints};
+use karkas_io::points::{
+    parse_curve_points, parse_curve_points_with, read_curve_points, CurvePoints, ReadOptions,
+};
 use karkas_io::IoError;
 
 use crate::util::scratch;
@@ -202,7 +204,7 @@ fn empty_files_have_no_points() {
     for text in ["", "\n\n", "# only a comment\n", "x,y\n"] {
         let e = parse_curve_points(text, Path::new("e.csv")).unwrap_err();
         assert!(matches!(e, IoError::Data { .. }), "{e:?}");
-        assert_eq!(e.to_string(), "e.csv: no points found");
+        assert!(e.to_string().starts_with("e.csv: no points found: "), "{e}");
     }
 }
 
@@ -210,15 +212,32 @@ fn empty_files_have_no_points() {
 fn one_column_is_an_error() {
     assert_eq!(
         error("1\n2\n3\n", "one.txt"),
-        "one.txt:1: expected 2 columns (x y) or 3 columns (x y z), found 1"
+        "one.txt:1: expected 2 columns (x y) or 3 columns (x y z), found 1: choose them with \
+         --columns A,B[,C] (positions counted from 1)"
     );
 }
 
 #[test]
 fn header_without_x_and_y_is_an_error() {
-    let e = parse_curve_points("# c\na,b\n0,0\n1,1\n", Path::new("h.csv")).unwrap_err();
-    assert!(matches!(e, IoError::Parse { line: 2, .. }), "{e:?}");
-    assert!(e.to_string().contains("names no 'x' and 'y'"), "{e}");
+    // Two or three columns named otherwise are read in order, with a warning.
+    let options = ReadOptions::default();
+    let read =
+        parse_curve_points_with("# c\na,b\n0,0\n1,1\n", Path::new("h.csv"), &options).unwrap();
+    assert_eq!(read.points.len(), 2);
+    assert!(
+        read.warnings[0].contains("read in order as x, y"),
+        "{read:?}"
+    );
+    // More columns, or a header naming y but no x: refused, naming --columns.
+    for text in ["# c\na,b,c,d\n0,0,0,0\n", "# c\nt,y\n0,0\n"] {
+        let e = parse_curve_points(text, Path::new("h.csv")).unwrap_err();
+        assert!(matches!(e, IoError::Parse { line: 2, .. }), "{e:?}");
+        let e = e.to_string();
+        assert!(
+            e.contains("names no 'x' and 'y'") && e.contains("--columns"),
+            "{e}"
+        );
+    }
 }
 
 #[test]

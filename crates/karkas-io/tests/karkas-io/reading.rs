@@ -7,7 +7,10 @@ use std::path::Path;
 use karkas::{Point, Point2};
 use karkas_io::airfoil::{parse_airfoil, read_airfoil};
 use karkas_io::points::CurvePoints;
-use karkas_io::points::{parse_curve_points, read_curve_coordinates, read_curve_points};
+use karkas_io::points::{
+    parse_curve_points, parse_curve_points_with, read_curve_coordinates, read_curve_points,
+    ReadOptions,
+};
 
 use crate::util::scratch;
 
@@ -61,12 +64,17 @@ fn the_name_is_the_whole_first_line_whatever_the_extension() {
     }
     let foil = parse_airfoil(&text, Path::new("f.csv")).unwrap();
     assert_eq!(foil.name, "NACA 63,3-418 # modified");
-    // Comma-separated rows after a first line without x and y: a CSV header, refused.
-    let e = error("NACA 63,3-418\n1,0\n0,0\n1,1\n", "f.csv");
-    assert_eq!(
-        e,
-        "f.csv:1: the header 'NACA 63,3-418' names no 'x' and 'y' columns"
-    );
+    // Comma-separated rows after a first line without x and y: a CSV header, its two
+    // columns read in order.
+    let read = parse_curve_points_with(
+        "NACA 63,3-418\n1,0\n0,0\n1,1\n",
+        Path::new("f.csv"),
+        &ReadOptions::default(),
+    )
+    .unwrap();
+    let expected = vec![Point([1.0, 0.0]), Point([0.0, 0.0]), Point([1.0, 1.0])];
+    assert_eq!(read.points, CurvePoints::Planar(expected));
+    assert!(read.warnings[0].contains("'NACA 63,3-418'"), "{read:?}");
 }
 
 #[test]

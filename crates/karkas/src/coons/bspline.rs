@@ -50,8 +50,12 @@ fn direction_pieces<const D: usize>(
             .ok_or_else(|| Error::NotExactlyConvertible {
                 what,
                 reason: format!(
-                    "curve {index} is not a piecewise polynomial of the surface parameter \
-                     (a curve of unknown type, or reparameterized by a nonlinear warp)"
+                    "curve {index} is not a polynomial of the surface parameter (a curve given \
+                     by points is re-timed to meet the other family when its crossings are not \
+                     at the same point numbers as on the other curves of its family): for an \
+                     exact STEP or IGES form give every curve of a family as many points \
+                     between consecutive crossings (resample them), or write a mesh to a \
+                     tolerance (--mesh-tolerance; mesh_tolerance= in Python)"
                 ),
             })?;
         sources.push(pieces);

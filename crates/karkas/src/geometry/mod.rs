@@ -27,6 +27,8 @@
 //!   first and second fundamental forms.
 //! - [`surface_nearest`]: the globally nearest point of a surface, candidates from a sampled
 //!   grid in a k-d tree refined by Newton's method.
+//! - [`mesh_parameters`](mod@mesh_parameters): the sample grid of a triangle mesh within a
+//!   chordal tolerance of a surface, refined where it bends.
 
 pub mod arc_length;
 mod arc_length_table;
@@ -38,6 +40,7 @@ pub mod enclosed_volume;
 pub mod fairness;
 #[cfg(test)]
 mod fairness_tests;
+pub mod mesh_parameters;
 mod nearest_grid;
 mod point_order;
 mod polygon_distance;
@@ -55,6 +58,7 @@ pub use curve_geometry::CurveGeometry;
 pub use curve_nearest::{CurveNearest, CurveProjector};
 pub use enclosed_volume::{area_vector, flux_volume, polygon_plane, Plane};
 pub use fairness::{curvature_profile, curve_fairness, CurvatureSample, CurveFairness};
+pub use mesh_parameters::{mesh_parameters, surface_size, MeshParameters};
 pub use point_order::points_out_of_order;
 pub use surface_frame::{normal, principal_curvatures, PrincipalCurvatures};
 pub use surface_nearest::{SurfaceNearest, SurfaceProjector};

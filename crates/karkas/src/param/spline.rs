@@ -36,7 +36,10 @@ pub struct CubicSpline<const D: usize> {
 impl<const D: usize> CubicSpline<D> {
     /// The cubic spline through `(knots[k], values[k])` with end conditions `ends`.
     ///
-    /// Errors: fewer than 2 points (3 when periodic), lengths that differ
+    /// Periodic ends through two knots (one value, repeated) give the constant, as SciPy's
+    /// `CubicSpline` does.
+    ///
+    /// Errors: fewer than 2 points, lengths that differ
     /// ([`Error::CountMismatch`]), knots not finite and strictly increasing or closer than
     /// `1e-12` of their span ([`Error::InvalidKnot`]), or so close that the values'
     /// differences over them overflow the slopes (`InvalidKnot` naming the knot that ends
@@ -57,7 +60,8 @@ impl<const D: usize> CubicSpline<D> {
     ) -> Result<Self> {
         let n = knots.len();
         let periodic = matches!(ends, SplineEnds::Periodic);
-        let needed = if periodic { 3 } else { 2 };
+        // Periodic through two knots is the constant of the one value (as SciPy's).
+        let needed = 2;
         if n < needed {
             return Err(Error::TooFewPoints {
                 what: "a cubic spline",

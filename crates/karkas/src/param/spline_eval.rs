@@ -119,10 +119,15 @@ fn unit_weights<T: Lane, const ORDER: usize>(s: T) -> [T; 4] {
 /// One coordinate of the `ORDER`-th derivative on a piece of step `h` (`inv_h = 1 / h`):
 /// the combination in `s`, then one factor `1 / h` per order (the weights `1 / h^k` of the
 /// basis in `t` overflow or underflow for steps near `1e150` or `1e-150`, the derivative
-/// itself does not).
+/// itself does not). The values enter through their difference (the weights of `y_k` and
+/// `y_{k+1}` sum to 1 for the values and to 0 for the derivatives), so that values offset
+/// far from zero keep their digits: `y_k + (y_{k+1} - y_k) w_2 + ...`.
 #[inline(always)]
 fn combine<T: Lane, const ORDER: usize>(w: &[T; 4], [y0, m0, y1, m1]: [T; 4], h: T, inv_h: T) -> T {
-    let mut d = y0 * w[0] + y1 * w[2] + (m0 * h) * w[1] + (m1 * h) * w[3];
+    let mut d = (y1 - y0) * w[2] + (m0 * h) * w[1] + (m1 * h) * w[3];
+    if ORDER == 0 {
+        d = y0 + d;
+    }
     for _ in 0..ORDER {
         d = d * inv_h;
     }

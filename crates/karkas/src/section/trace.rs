@@ -191,9 +191,18 @@ impl<S: Surface<D> + ?Sized, F: LevelFunction<D>, const D: usize> Tracer<'_, S, 
         sign: f64,
     ) -> Option<Tangent<D>> {
         let [gu, gv] = probe.dg;
-        let velocity = probe.d[0] * gv - probe.d[1] * gu;
+        // The direction (F_v, -F_u) scaled by the larger of the two: the velocity is then of
+        // the surface's size, not its square, so that neither it nor its length overflows
+        // or underflows for surfaces near 1e80 or 1e-80 (and well beyond).
+        let scale = gu.abs().max(gv.abs());
+        let (su, sv) = if scale > 0.0 && scale.is_finite() {
+            (gu / scale, gv / scale)
+        } else {
+            (gu, gv)
+        };
+        let velocity = probe.d[0] * sv - probe.d[1] * su;
         let speed = velocity.norm();
-        let surface_gradient = (gu * gu + gv * gv).sqrt();
+        let surface_gradient = gu.hypot(gv);
         let reference = probe.grad_norm * (probe.d[0].norm() + probe.d[1].norm());
         // Written so that NaN counts as singular.
         let regular = surface_gradient > SINGULAR * reference && speed > 0.0 && speed.is_finite();
@@ -201,7 +210,7 @@ impl<S: Surface<D> + ?Sized, F: LevelFunction<D>, const D: usize> Tracer<'_, S, 
             return None;
         }
         let mut t = Tangent {
-            param: [gv / speed, -gu / speed],
+            param: [sv / speed, -su / speed],
             space: velocity * (1.0 / speed),
             orientation: 1.0,
         };

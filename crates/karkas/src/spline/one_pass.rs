@@ -1,5 +1,6 @@
 //! The not-a-knot slopes of one line of values in a single pass (no stored factorization).
 
+use super::system::{row_rhs, tap_sum};
 use crate::{Error, Point, Result};
 
 /// The slopes of one line of not-a-knot values (`n = knots.len() >= 4`) in a single pass:
@@ -55,7 +56,7 @@ pub(crate) fn not_a_knot_slopes<const D: usize>(
         let up = upper * inv_pivot;
         *up_r = up;
         previous = up;
-        let rhs = values[k - 1] * weights[0] + values[k] * weights[1] + values[k + 1] * weights[2];
+        let rhs = row_rhs(values[k - 1], values[k], values[k + 1], weights);
         slopes[k] = if r == 0 {
             rhs * inv_pivot
         } else {
@@ -69,10 +70,7 @@ pub(crate) fn not_a_knot_slopes<const D: usize>(
     }
     // The not-a-knot end slopes (3.11), (3.12) from the solved ones.
     let (gs2, ge2) = (gs * gs, ge * ge);
-    let combine = |taps: [(usize, f64); 3]| {
-        taps.iter()
-            .fold(Point::ZERO, |s, &(k, w)| s.add_scaled(w, values[k]))
-    };
+    let combine = |taps: [(usize, f64); 3]| tap_sum(&taps, |k| values[k]);
     let start = [
         (0, -2.0 / h0),
         (1, 2.0 / h0 + 2.0 * gs2 / h1),

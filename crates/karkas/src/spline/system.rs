@@ -4,7 +4,8 @@
 //! on the knots only, so the system is factored once (Thomas algorithm, plus the
 //! Sherman–Morrison vector when periodic) and then solves any number of lines of values: a
 //! bicubic surface solves all its columns in one sweep over contiguous grid rows. The
-//! right-hand sides are formed on the fly from the values.
+//! right-hand sides are formed on the fly from the differences of the values ([`row_rhs`]),
+//! so that values offset far from zero keep their digits.
 
 use super::SplineEnds;
 
@@ -16,6 +17,29 @@ pub(super) type Taps = [(usize, f64); 3];
 /// The weights of `y_{c-1}, y_c, y_{c+1}` in the right-hand side of the row of unknown `c`
 /// (`c - 1` wraps to `p - 1` in a periodic system; a weight beyond the ends is zero).
 pub(super) type Weights = [f64; 3];
+
+/// The right-hand side `w_0 y_{c-1} + w_1 y_c + w_2 y_{c+1}` of a row whose weights sum to
+/// zero (every row's do: constant values have zero slopes), formed from the differences of
+/// the values, `w_2 (y_{c+1} - y_c) - w_0 (y_c - y_{c-1})`: values far from zero (`1e8` plus
+/// a ripple) keep their digits, where the weighted sum of the raw values would cancel them.
+#[inline]
+pub(super) fn row_rhs<const D: usize>(
+    ya: Point<D>,
+    yc: Point<D>,
+    yb: Point<D>,
+    w: Weights,
+) -> Point<D> {
+    (yb - yc) * w[2] - (yc - ya) * w[0]
+}
+
+/// `sum w y_k` over `taps` (weights summing to zero), formed from the differences to the
+/// middle tap's value, as [`row_rhs`] forms a row's.
+#[inline]
+pub(super) fn tap_sum<const D: usize>(taps: &Taps, y: impl Fn(usize) -> Point<D>) -> Point<D> {
+    let middle = y(taps[1].0);
+    taps.iter()
+        .fold(Point::ZERO, |s, &(k, w)| s.add_scaled(w, y(k) - middle))
+}
 
 /// How the slopes follow from the solved unknowns.
 #[derive(Clone, Debug, PartialEq)]
@@ -43,6 +67,9 @@ pub(super) enum Shape {
     },
     /// Periodic with two distinct points: `2 m_0 + m_1 = r_0`, `m_0 + 2 m_1 = r_1`.
     CyclicPair,
+    /// Periodic through one point (its value twice, as SciPy's `CubicSpline` takes it): the
+    /// constant, every slope zero.
+    Constant,
 }
 
 /// The rows of a tridiagonal system being assembled.
@@ -88,8 +115,8 @@ pub(crate) struct SlopeSystem {
 }
 
 impl SlopeSystem {
-    /// Factors the system of `knots` (strictly increasing, at least 2; at least 3 when
-    /// periodic) for the end conditions `ends` (only their kind matters here: clamped slopes
+    /// Factors the system of `knots` (strictly increasing, at least 2; periodic through 2
+    /// knots: the constant) for the end conditions `ends` (only their kind matters here: clamped slopes
     /// are given to [`solve`](Self::solve)).
     pub(crate) fn new<const D: usize>(knots: &[f64], ends: &SplineEnds<D>) -> Result<Self> {
         let n = knots.len();
@@ -181,15 +208,9 @@ impl SlopeSystem {
                     ends: None,
                 }
             }
+            SplineEnds::Periodic if n == 2 => Shape::Constant,
             SplineEnds::Periodic => {
                 let p = n - 1;
-                if p < 2 {
-                    return Err(Error::TooFewPoints {
-                        what: "a periodic cubic spline (distinct points)",
-                        needed: 2,
-                        got: p,
-                    });
-                }
                 for i in 0..p {
                     let prev = if i == 0 { p - 1 } else { i - 1 };
                     let (lambda, mu, taps) = inner(h[prev], h[i]);
@@ -317,14 +338,15 @@ impl SlopeSystem {
         let n = self.n;
         debug_assert!(values.len() == n * width && slopes.len() == n * width);
         let at = |k: usize, line: usize| values[k * width + line];
-        let combine = |taps: &Taps, line: usize| {
-            taps.iter()
-                .fold(Point::ZERO, |s, &(k, w)| s.add_scaled(w, at(k, line)))
-        };
+        let combine = |taps: &Taps, line: usize| tap_sum(taps, |k| at(k, line));
         let delta = |k: usize, h: f64, line: usize| (at(k + 1, line) - at(k, line)) * (1.0 / h);
         let first = match &self.shape {
             Shape::Tridiagonal { first, .. } => *first,
             Shape::Parabola { .. } => 1,
+            Shape::Constant => {
+                slopes.fill(Point::ZERO);
+                return;
+            }
             Shape::Segment { h } => {
                 for line in 0..width {
                     let d = delta(0, *h, line);
@@ -351,24 +373,24 @@ impl SlopeSystem {
                 (Some(pk), true) => {
                     let (a, b) = (line_of(pk), line_of(c + 1));
                     for (((s, &ya), &yc), &yb) in row.iter_mut().zip(a).zip(center).zip(b) {
-                        *s = ya * w[0] + yc * w[1] + yb * w[2];
+                        *s = row_rhs(ya, yc, yb, *w);
                     }
                 }
                 (Some(pk), false) => {
                     for ((s, &ya), &yc) in row.iter_mut().zip(line_of(pk)).zip(center) {
-                        *s = ya * w[0] + yc * w[1];
+                        *s = row_rhs(ya, yc, yc, *w);
                     }
                 }
                 (None, _) => {
                     for ((s, &yc), &yb) in row.iter_mut().zip(center).zip(line_of(c + 1)) {
-                        *s = yc * w[1] + yb * w[2];
+                        *s = row_rhs(yc, yc, yb, *w);
                     }
                 }
             }
         }
         let span = first * width..(first + len) * width;
         match &self.shape {
-            Shape::Segment { .. } => {}
+            Shape::Segment { .. } | Shape::Constant => {}
             Shape::Parabola { h } => {
                 for line in 0..width {
                     let m1 = slopes[width + line];

@@ -69,6 +69,8 @@ impl SlopeSystem {
                 self.sweep_transposed(&mut x);
                 self.add_rows_transposed(1, &x, weights);
             }
+            // Every slope zero: no weight of any value.
+            Shape::Constant => {}
             Shape::CyclicPair => {
                 // m_0 = (2 r_0 - r_1) / 3, m_1 = (2 r_1 - r_0) / 3, m_2 = m_0.
                 let c0 = c[0] + c[2];
