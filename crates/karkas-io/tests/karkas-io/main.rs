@@ -1,6 +1,7 @@
 //! The integration tests of karkas-io, one binary: one module per reader or writer, shared
 //! helpers in [`util`].
 
+mod cad_hostile;
 mod errors;
 mod grid;
 mod indexed_csv;
