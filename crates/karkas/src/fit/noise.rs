@@ -206,7 +206,8 @@ fn noise_sigma<const D: usize>(points: &[Point<D>], unit: f64) -> f64 {
     let rung_at = |k: usize| ladder.get(k - 1).copied().flatten();
     let mut k = floor;
     while let (Some(here), Some(next)) = (rung_at(k), rung_at(k + 1)) {
-        if !(next.sigma <= FLAT_RISE * here.sigma) {
+        let flat = next.sigma <= FLAT_RISE * here.sigma;
+        if !flat {
             break;
         }
         let noisy = here.pairs >= MIN_PAIRS

@@ -80,8 +80,11 @@ fn window_residual<const D: usize>(
         c[j] = r.add_scaled(-s[j], d);
         // Order 1 compares the middle point with the line through the other two, wherever it
         // projects; from order 2 on the window must be a graph over its chord.
-        if k > 1 && j > 0 && !(s[j] > s[j - 1]) {
-            return None;
+        if k > 1 && j > 0 {
+            let increasing = s[j] > s[j - 1];
+            if !increasing {
+                return None;
+            }
         }
     }
     // The other points: every j but the middle k.
@@ -153,20 +156,17 @@ fn window_residual<const D: usize>(
 /// where it is not (numerically) positive definite or not finite.
 fn quadratic_form_of_inverse<const D: usize>(mut c: [[f64; D]; D], e: Point<D>) -> Option<f64> {
     for j in 0..D {
-        let mut diagonal = c[j][j];
-        for m in 0..j {
-            diagonal -= c[j][m] * c[j][m];
-        }
+        let diagonal = c[j][..j].iter().fold(c[j][j], |d, x| d - x * x);
         if !(diagonal > 0.0 && diagonal.is_finite()) {
             return None;
         }
         let pivot = diagonal.sqrt();
         c[j][j] = pivot;
         for i in j + 1..D {
-            let mut entry = c[i][j];
-            for m in 0..j {
-                entry -= c[i][m] * c[j][m];
-            }
+            let entry = c[i][..j]
+                .iter()
+                .zip(&c[j][..j])
+                .fold(c[i][j], |e, (a, b)| e - a * b);
             c[i][j] = entry / pivot;
         }
     }
@@ -190,7 +190,8 @@ fn transported<const D: usize>(v: Point<D>, from: Point<D>, to: Point<D>) -> Poi
     let cos = from.dot(to);
     let normal = to.add_scaled(-cos, from);
     let length = normal.norm();
-    if !(length > 1e-12) {
+    let turns = length > 1e-12;
+    if !turns {
         return if cos < 0.0 { -v } else { v };
     }
     let w = normal * (1.0 / length);

@@ -189,7 +189,8 @@ fn patch_samples<I: ImplicitSurface + ?Sized>(points: &[Point3], implicit: &I) -
             for k in 0..=steps[2] {
                 let p = Point3::new([node(0, i), node(1, j), node(2, k)]);
                 let (f, g) = (implicit.value(p), implicit.gradient(p).norm());
-                if !(f.abs() <= 2.0 * h * g) {
+                let near = f.abs() <= 2.0 * h * g;
+                if !near {
                     continue;
                 }
                 // A node from which no surface is found, or a singular one, gives no sample.

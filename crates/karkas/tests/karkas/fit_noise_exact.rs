@@ -23,7 +23,7 @@ enum Shape {
     /// Two turns of an Archimedean spiral.
     Spiral,
     /// Half the ellipse 1 x 0.6 closed by its major axis: two corners.
-    DShape,
+    Dome,
     /// Two turns of a helix (3-D).
     Helix,
 }
@@ -37,7 +37,7 @@ const SHAPES: [Shape; 10] = [
     Shape::NacaFromNose(0.0, 0.0, 0.12),
     Shape::NacaFromNose(0.04, 0.4, 0.15),
     Shape::Spiral,
-    Shape::DShape,
+    Shape::Dome,
     Shape::Helix,
 ];
 
@@ -66,7 +66,7 @@ fn exact(shape: Shape, n: usize) -> Vec<Point3> {
                 let a = 4.0 * PI * s(i) + 0.5;
                 Point3::new([a * a.cos(), a * a.sin(), 0.0])
             }
-            Shape::DShape => {
+            Shape::Dome => {
                 let arc = n * 2 / 3;
                 if i < arc {
                     let a = PI * i as f64 / (arc - 1) as f64;
@@ -257,7 +257,7 @@ fn on_exact_points_every_default_is_the_papers_method() {
             let mut knots = uniform_knots(pieces + 1);
             let mut corners = Vec::new();
             let corner_index = match shape {
-                Shape::DShape => Some(n * 2 / 3 - 1),
+                Shape::Dome => Some(n * 2 / 3 - 1),
                 Shape::NacaFromNose(..) => Some((n - 1) / 2),
                 _ => None,
             };
