@@ -8,6 +8,7 @@
 use crate::args::CurveInputOptions;
 use crate::output::console::note;
 use anyhow::{bail, Result};
+use karkas::geometry::points_out_of_order;
 use karkas::Point;
 use karkas_io::input::{display_name, is_stdin};
 use karkas_io::points::{read_curve_points_with, CurvePoints};
@@ -82,18 +83,31 @@ fn spread<const D: usize>(points: &[Point<D>]) -> Spread {
 pub trait CurveJob {
     /// Does the work on `points`.
     fn run<const D: usize>(&self, points: &[Point<D>]) -> Result<()>;
+
+    /// True when the job refuses points out of order itself, in one line ("points not in
+    /// order"): the reader's warnings are then not printed for such points.
+    fn refuses_disorder(&self) -> bool {
+        false
+    }
 }
 
 /// Reads the curve points of `input` with the user's `options` (`--columns`,
-/// `--decimal-comma`), prints the reader's warnings, and runs `job` on them in their
-/// dimension.
+/// `--decimal-comma`), prints the reader's warnings (unless the job refuses the points as out
+/// of order), and runs `job` on them in their dimension.
 pub fn run_on_curve_points(
     input: &Path,
     options: &CurveInputOptions,
     job: &impl CurveJob,
 ) -> Result<()> {
     let read = read_curve_points_with(input, &options.read_options())?;
-    warn_of_reading(input, &read.warnings);
+    let refused = job.refuses_disorder()
+        && match &read.points {
+            CurvePoints::Planar(points) => points_out_of_order(points).is_some(),
+            CurvePoints::Spatial(points) => points_out_of_order(points).is_some(),
+        };
+    if !refused {
+        warn_of_reading(input, &read.warnings);
+    }
     match read.points {
         CurvePoints::Planar(points) => job.run(&points),
         CurvePoints::Spatial(points) => job.run(&points),

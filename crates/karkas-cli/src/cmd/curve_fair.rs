@@ -148,6 +148,10 @@ pub fn run(args: &CurveFairArgs) -> Result<()> {
 }
 
 impl CurveJob for (&CurveFairArgs, OutputFormat) {
+    fn refuses_disorder(&self) -> bool {
+        true
+    }
+
     fn run<const D: usize>(&self, points: &[Point<D>]) -> Result<()> {
         let (args, format) = (self.0, self.1);
         let input = args.input.display().to_string();

@@ -81,6 +81,10 @@ pub fn run(args: &CurveFitArgs) -> Result<()> {
 }
 
 impl CurveJob for (&CurveFitArgs, Vec<OutputFormat>, Option<Vec<f64>>) {
+    fn refuses_disorder(&self) -> bool {
+        true
+    }
+
     fn run<const D: usize>(&self, points: &[Point<D>]) -> Result<()> {
         let (args, formats, knots) = (self.0, &self.1, &self.2);
         let input = || args.input.display().to_string();

@@ -9,7 +9,7 @@
 
 use crate::common::Rng;
 use crate::fit_reference::naca;
-use karkas::fit::{fit_curve, fit_curve_adaptive, uniform_knots, FitOptions};
+use karkas::fit::{fit_curve, fit_curve_adaptive, uniform_knots, FitEnds, FitOptions};
 use karkas::{Curve, Point};
 use std::f64::consts::PI;
 
@@ -46,7 +46,7 @@ fn every_mode<const D: usize>(points: &[Point<D>]) -> Vec<(&'static str, Vec<Poi
             "pinned ends",
             knots.clone(),
             FitOptions {
-                pin_ends: true,
+                ends: FitEnds::Pinned,
                 ..FitOptions::default()
             },
         ),
@@ -54,7 +54,7 @@ fn every_mode<const D: usize>(points: &[Point<D>]) -> Vec<(&'static str, Vec<Poi
             "free ends",
             knots.clone(),
             FitOptions {
-                estimated_ends: false,
+                ends: FitEnds::Free,
                 ..FitOptions::default()
             },
         ),
