@@ -24,7 +24,8 @@ poles closed by fans, seams welded, caps, normals outwards), with no triangle of
 its volume within 1e-3 of Open CASCADE's volume of the STEP solid. One line per file with the
 counts; exit 1 on any failure. One case per kind of body and method of the acceptance (ll,
 bicubic and coons on the ellipsoid, a fuselage, a capped tube, the capped aircraft, the
-creased capped wing), small enough to run in well under two minutes.
+creased capped wing, a wing lofted through two sharp-edged NACA sections by `karkas loft
+--cap`), small enough to run in well under two minutes.
 
 Usage: python3 tests/cad/check_bodies.py [--karkas target/release/karkas] [--keep DIR]
 """
@@ -147,6 +148,34 @@ def wing(i, j, rows=9, cols=61):
     return 0.3 * span + chord * x, chord * y, span
 
 
+def loft_table(folder):
+    """A two-section wing table for `karkas loft`: NACA 2412 root and 0009 tip in unit chord,
+    their trailing edges closed to a point (first point = last), swept, tapered and twisted."""
+    def naca(m, p, t, n=61):
+        points = []
+        for k in range(2 * n - 1):
+            b = math.pi * abs(k - (n - 1)) / (n - 1)
+            x = (1 - math.cos(b)) / 2
+            yt = 5 * t * (0.2969 * math.sqrt(x) - 0.126 * x - 0.3516 * x**2 + 0.2843 * x**3
+                          - 0.1036 * x**4)
+            if p == 0:
+                yc = 0.0
+            elif x < p:
+                yc = m / p**2 * (2 * p * x - x * x)
+            else:
+                yc = m / (1 - p) ** 2 * ((1 - 2 * p) + 2 * p * x - x * x)
+            points.append((x, yc + yt if k < n - 1 else yc - yt))
+        points[-1] = points[0]
+        return points
+    for name, (m, p, t) in {"root.dat": (0.02, 0.4, 0.12), "tip.dat": (0.0, 0.0, 0.09)}.items():
+        with open(os.path.join(folder, name), "w") as f:
+            f.write(name + "\n" + "".join(f"{x:.10f} {y:.10f}\n" for x, y in naca(m, p, t)))
+    table = os.path.join(folder, "loft.csv")
+    with open(table, "w") as f:
+        f.write("file,x,y,z,chord,twist\nroot.dat,0,0,0,1.5,2\ntip.dat,0.4,4,0.2,0.8,-1\n")
+    return table
+
+
 def closed_mesh_volume(csv_path):
     """The volume of the sampled surface (u,v,x,y,z, u outer) closed by fans at its first and
     last rows (the caps), by the divergence theorem on its triangles."""
@@ -263,6 +292,7 @@ def main():
                   ["surface", "bicubic", "--closed-v", "--cap", os.path.join(folder, "tube.csv")]))
     cases.append(("aircraft-ll-capped", "aircraft",
                   ["surface", "ll", "--closed-v", "--cap", aircraft]))
+    cases.append(("wing-loft-capped", "loft", ["loft", "--cap", loft_table(folder)]))
     failures = 0
     for name, grid, command in cases:
         started = time.monotonic()

@@ -21,7 +21,7 @@ use crate::param::{Ends, PyBicubicSurface, PyCubicSpline};
 use crate::section::PySectionCurve;
 
 /// The constructors `_restore` may call: the qualified names the `__reduce__` methods give.
-const CONSTRUCTORS: [&str; 16] = [
+const CONSTRUCTORS: [&str; 17] = [
     "LLCurve",
     "loft",
     "LLSurface",
