@@ -228,6 +228,11 @@ impl PyLoftSurface {
     /// numpy.ndarray
     ///     float64, shape ``(n, 3)``.
     ///
+    /// Raises
+    /// ------
+    /// OptionError
+    ///     ``n`` outside 2..=1000000, or a station that is not finite.
+    ///
     /// Examples
     /// --------
     /// >>> x = 0.5 * (1 + np.cos(np.linspace(0, 2 * np.pi, 41)))

@@ -177,6 +177,9 @@ def fixtures(directory):
     karkas.export(o.bicubic, o.step)
     o.cad = karkas.read_cad(o.step)
     o.cad_face = o.cad.faces[0]
+    o.profile = np.vstack([upper, lower])
+    o.loft_surface = karkas.loft([o.profile, o.profile], [[0.0, 0.0, 0.0], [0.1, 2.0, 0.0]], [1.0, 0.8], [0.0, 1.0])
+    o.fair = karkas.fair_curve(o.pts3, 0.05)
     o.mask_csv = os.path.join(directory, "mask.csv")
     with open(o.mask_csv, "w") as f:
         f.write("i,j\n0,0\n2,1\n")
@@ -340,6 +343,21 @@ VALID = {
     "CadModel": NO_CONSTRUCTOR,
     "CadFace": NO_CONSTRUCTOR,
     "CadFace.contains": lambda o: (o.cad_face.contains, (0.5, 0.5), {}),
+    # Lofts and fair curves.
+    "loft": lambda o: (
+        karkas.loft,
+        ([o.profile, o.profile], [[0.0, 0.0, 0.0], [0.1, 2.0, 0.0]], [1.0, 0.8], [0.0, 1.0]),
+        {"dihedrals": None, "span": "monotone", "tolerance": 1e-4},
+    ),
+    "LoftSurface": NO_CONSTRUCTOR,
+    "LoftSurface.section_at": lambda o: (o.loft_surface.section_at, (1.0,), {"n": 50}),
+    "fair_curve": lambda o: (
+        karkas.fair_curve,
+        (o.pts3, 0.05),
+        {"keep_ends": False, "keep_tangents": False, "corners": None, "closed": False},
+    ),
+    "FairCurve": NO_CONSTRUCTOR,
+    "FairCurve.report": lambda o: (o.fair.report, (), {}),
 }
 
 # The object a property is read from: class name -> attribute of fixtures().
@@ -362,6 +380,8 @@ INSTANCES = {
     "NurbsSurface": "nurbs_surface",
     "CadModel": "cad",
     "CadFace": "cad_face",
+    "LoftSurface": "loft_surface",
+    "FairCurve": "fair",
 }
 
 
