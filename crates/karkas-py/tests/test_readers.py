@@ -466,7 +466,9 @@ BAD_FILES = [
         "x,y\n0,0\n1,nan\n2,0\n",
         ["curve", "ll", "pts.csv", "-o", "out.csv"],
     ),
-    (karkas.read_curve, "pts.csv", "a,b\n0,0\n", ["curve", "ll", "pts.csv", "-o", "out.csv"]),
+    # A header naming no x and y columns is read by position (with a warning); a cell that is
+    # not a number is refused, naming the line and column.
+    (karkas.read_curve, "pts.csv", "a,b\n0,zero\n", ["curve", "ll", "pts.csv", "-o", "out.csv"]),
     (karkas.read_curve, "pts.csv", "", ["curve", "ll", "pts.csv", "-o", "out.csv"]),
     (karkas.read_curve, "none.csv", None, ["curve", "ll", "none.csv", "-o", "out.csv"]),
     (
