@@ -453,6 +453,56 @@ impl MeshTolerance {
     }
 }
 
+/// `--close-te` of the curve commands: the straight segment from the curve's end back to its
+/// start (a blunt trailing edge), written with the curve as one closed wire.
+#[derive(Debug, Args)]
+pub struct CloseTeOption {
+    /// STEP, IGES, DXF: close the curve with the straight segment from its end back to its
+    /// start (a blunt trailing edge), written as one closed B-spline curve with a corner at
+    /// each end of the segment (a planar face's boundary). Other outputs keep the open curve.
+    #[arg(long)]
+    pub close_te: bool,
+}
+
+impl CloseTeOption {
+    /// Refuses `--close-te` when none of the `formats` written is STEP, IGES or DXF, or
+    /// with `closing` (an option of the command that closes the curve itself, when given).
+    pub fn check(&self, formats: &[OutputFormat], closing: Option<&str>) -> Result<()> {
+        if !self.close_te {
+            return Ok(());
+        }
+        if let Some(other) = closing {
+            bail!("--close-te: the curve is already closed by {other}");
+        }
+        if !formats.iter().any(|f| f.is_cad()) {
+            bail!(
+                "--close-te: only STEP, IGES and DXF outputs carry the closing segment, not .{}",
+                formats.first().map_or("csv", |f| f.extension())
+            );
+        }
+        Ok(())
+    }
+
+    /// Refuses `--close-te` on `points` whose first and last points coincide (within
+    /// [`karkas::fit::SHARED_END_TOLERANCE`] of their size: a sharp trailing edge, where the
+    /// curve closes without a segment); `input` names the points.
+    pub fn check_points<const D: usize>(
+        &self,
+        points: &[karkas::Point<D>],
+        input: &Path,
+    ) -> Result<()> {
+        if self.close_te && karkas::fit::shared_end(points).is_some() {
+            bail!(
+                "{}: --close-te: the first and last points coincide (within {:e} of the \
+                 size): the curve closes there without a segment",
+                input.display(),
+                karkas::fit::SHARED_END_TOLERANCE
+            );
+        }
+        Ok(())
+    }
+}
+
 /// `--comb` of the curve pictures.
 #[derive(Debug, Args)]
 pub struct CombOption {

@@ -203,7 +203,14 @@ impl CurveJob for (&CurveFairArgs, OutputFormat) {
             })?;
         }
         let what = if format.is_cad() {
-            write_cad_curve(&fair.curve, points, format, &args.output, &args.cad, &input)?;
+            write_cad_curve(
+                &fair.curve,
+                points,
+                format,
+                &args.output,
+                (&args.cad, false),
+                &input,
+            )?;
             "the exact B-spline".to_string()
         } else {
             let (ts, samples) = sample_curve(&fair.curve, n);

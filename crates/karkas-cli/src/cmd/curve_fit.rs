@@ -3,10 +3,10 @@
 
 use super::fit_options::FitCurveOptions;
 use super::fit_summary::FitSummary;
-use crate::args::{CadOptions, CombOption, CurveInputOptions, CurveSamples};
+use crate::args::{CadOptions, CloseTeOption, CombOption, CurveInputOptions, CurveSamples};
 use crate::input::{run_on_curve_points, CurveJob};
 use crate::output::cad::write_cad_curve;
-use crate::output::console::note;
+use crate::output::console::{note, warn_open_near_miss};
 use crate::output::curve::{curve_output_bytes, write_sampled_curve};
 use crate::output::formats::EXACT_CURVE_FORMATS;
 use crate::output::memory::check_memory;
@@ -53,6 +53,8 @@ pub struct CurveFitArgs {
     #[command(flatten)]
     cad: CadOptions,
     #[command(flatten)]
+    close: CloseTeOption,
+    #[command(flatten)]
     comb: CombOption,
     /// Per-point deviations as CSV: point,t,distance.
     #[arg(long, value_name = "DEV.csv")]
@@ -65,6 +67,7 @@ pub fn run(args: &CurveFitArgs) -> Result<()> {
     let knots = args.fit.check()?;
     args.samples.check()?;
     args.cad.check(&formats)?;
+    args.close.check(&formats, None)?;
     if args.fit.knots.is_none() && args.fit.tolerance.is_none() {
         bail!("give the knots (--knots T1,...,TN) or a tolerance (--tolerance TOL)");
     }
@@ -88,6 +91,14 @@ impl CurveJob for (&CurveFitArgs, Vec<OutputFormat>, Option<Vec<f64>>) {
     fn run<const D: usize>(&self, points: &[Point<D>]) -> Result<()> {
         let (args, formats, knots) = (self.0, &self.1, &self.2);
         let input = || args.input.display().to_string();
+        args.close.check_points(points, &args.input)?;
+        if !(args.fit.free_ends || args.close.close_te) {
+            warn_open_near_miss(
+                points,
+                "--close-te closes it with the straight segment between them in STEP, IGES and \
+                 DXF (repeat the first point exactly as the last to close it at that point)",
+            );
+        }
         let started = Instant::now();
         let fit: CurveFit<D> = args.fit.fit(points, knots.as_deref(), None, &input())?;
         let fit_time = started.elapsed();
@@ -115,7 +126,8 @@ impl CurveJob for (&CurveFitArgs, Vec<OutputFormat>, Option<Vec<f64>>) {
         for (output, &format) in args.output.iter().zip(formats) {
             if format.is_cad() {
                 let what = args.input.display();
-                write_cad_curve(&fit.spline, points, format, output, &args.cad, what)?;
+                let cad = (&args.cad, args.close.close_te);
+                write_cad_curve(&fit.spline, points, format, output, cad, what)?;
             } else {
                 let samples = (&ts[..], &samples[..]);
                 write_fit_picture_or_samples(args, output, format, points, &fit, samples)?;

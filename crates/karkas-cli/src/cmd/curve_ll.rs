@@ -1,6 +1,8 @@
 //! `karkas curve ll`: the LL curve of an ordered point list (Aulchenko et al., docs/methods.md §1.2).
 
-use crate::args::{check_ll_order, CadOptions, CombOption, CurveInputOptions, CurveSamples};
+use crate::args::{
+    check_ll_order, CadOptions, CloseTeOption, CombOption, CurveInputOptions, CurveSamples,
+};
 use crate::input::{curve_points, run_on_curve_points, CurveJob};
 use crate::output::cad::write_cad_curve;
 use crate::output::console::{note, record};
@@ -57,6 +59,8 @@ pub struct CurveLlArgs {
     #[command(flatten)]
     cad: CadOptions,
     #[command(flatten)]
+    close: CloseTeOption,
+    #[command(flatten)]
     comb: CombOption,
     /// Pictures: draw a whisker from every input point to the curve at its node.
     #[arg(long)]
@@ -70,6 +74,8 @@ pub fn run(args: &CurveLlArgs) -> Result<()> {
     check_within(args.within)?;
     args.samples.check()?;
     args.cad.check(&formats)?;
+    args.close
+        .check(&formats, args.closed.then_some("--closed"))?;
     for output in &args.output {
         ensure_distinct(&args.input, output)?;
     }
@@ -80,6 +86,7 @@ impl CurveJob for (&CurveLlArgs, &[OutputFormat]) {
     fn run<const D: usize>(&self, points: &[Point<D>]) -> Result<()> {
         let (args, formats) = *self;
         curve_points(&args.input, points)?;
+        args.close.check_points(points, &args.input)?;
         if args.closed {
             crate::output::console::warn_near_miss("--closed", points);
         }
@@ -112,7 +119,8 @@ fn write_ll<const D: usize>(
 ) -> Result<()> {
     if format.is_cad() {
         let what = args.input.display();
-        return write_cad_curve(curve, points, format, output, &args.cad, what);
+        let cad = (&args.cad, args.close.close_te);
+        return write_cad_curve(curve, points, format, output, cad, what);
     }
     let n = args.samples.resolve(points.len());
     // The cap is checked against the samples held, as before CSV and .npy were written

@@ -3,8 +3,8 @@
 //! (3.10)–(3.12); docs/methods.md §5). The options are [`SplineOptions`], shared with the
 //! commands that offer the spline as a method.
 
-use crate::args::{CadOptions, CombOption, CurveInputOptions, CurveSamples};
-use crate::cmd::spline_options::SplineOptions;
+use crate::args::{CadOptions, CloseTeOption, CombOption, CurveInputOptions, CurveSamples};
+use crate::cmd::spline_options::{EndsKind, SplineOptions};
 use crate::input::{curve_points, run_on_curve_points, CurveJob};
 use crate::output::cad::write_cad_curve;
 use crate::output::curve::{curve_output_bytes, write_sampled_curve};
@@ -40,6 +40,8 @@ pub struct CurveSplineArgs {
     #[command(flatten)]
     cad: CadOptions,
     #[command(flatten)]
+    close: CloseTeOption,
+    #[command(flatten)]
     comb: CombOption,
     /// Pictures: draw a whisker from every input point to the curve at its knot (of zero
     /// length up to rounding: the spline passes through its points).
@@ -53,6 +55,8 @@ pub fn run(args: &CurveSplineArgs) -> Result<()> {
     args.spline.check()?;
     args.samples.check()?;
     args.cad.check(&formats)?;
+    let periodic = (args.spline.ends == EndsKind::Periodic).then_some("--ends periodic");
+    args.close.check(&formats, periodic)?;
     for output in &args.output {
         ensure_distinct(&args.input, output)?;
     }
@@ -63,6 +67,7 @@ impl CurveJob for (&CurveSplineArgs, &[OutputFormat]) {
     fn run<const D: usize>(&self, points: &[Point<D>]) -> Result<()> {
         let (args, formats) = *self;
         curve_points(&args.input, points)?;
+        args.close.check_points(points, &args.input)?;
         let curve = args.spline.build(points, &args.input)?;
         for (output, &format) in args.output.iter().zip(formats) {
             write_spline(args, &curve, points, output, format)?;
@@ -81,7 +86,8 @@ fn write_spline<const D: usize>(
 ) -> Result<()> {
     if format.is_cad() {
         let what = args.input.display();
-        return write_cad_curve(curve, points, format, output, &args.cad, what);
+        let cad = (&args.cad, args.close.close_te);
+        return write_cad_curve(curve, points, format, output, cad, what);
     }
     let n = args.samples.resolve(points.len());
     check_memory(

@@ -14,17 +14,24 @@ use std::path::Path;
 /// Writes the exact B-spline form of `curve` as STEP, IGES or DXF (by `format`, one of
 /// [`OutputFormat::CURVE_CAD`]) with the input `points` the curve was made from, which a DXF
 /// holds as POINT entities on layer `POINTS` (STEP and IGES leave them out), in the unit and
-/// at the scale of `cad`; `what` names the input for errors.
+/// at the scale of `cad`; with `close`, the curve closed by the straight segment from its end
+/// to its start ([`karkas::bspline::BSplineCurve::closed_by_segment`], `--close-te`); `what` names the input
+/// for errors.
 pub fn write_cad_curve<const D: usize>(
     curve: &impl ToBSplineCurve<D>,
     points: &[Point<D>],
     format: OutputFormat,
     output: &Path,
-    cad: &CadOptions,
+    (cad, close): (&CadOptions, bool),
     what: impl std::fmt::Display,
 ) -> Result<()> {
     let what = what.to_string();
-    let bspline = curve.to_bspline().with_context(|| what.clone())?;
+    let mut bspline = curve.to_bspline().with_context(|| what.clone())?;
+    if close {
+        bspline = bspline
+            .closed_by_segment()
+            .with_context(|| format!("{what}: --close-te"))?;
+    }
     let units = cad.units();
     let spatial = write_cad_curve_in(&bspline, points, format, output, Path::new(&what), &units)?;
     let shown_points = if format == OutputFormat::Dxf {
@@ -34,8 +41,13 @@ pub fn write_cad_curve<const D: usize>(
     };
     super::console::record("degree", spatial.degree());
     super::console::record("control_points", spatial.control_points().len());
+    let closed = if close {
+        ", closed by the trailing-edge segment"
+    } else {
+        ""
+    };
     note(format!(
-        "karkas: wrote {} (B-spline curve of degree {}, {} control points{shown_points})",
+        "karkas: wrote {} (B-spline curve of degree {}, {} control points{shown_points}{closed})",
         super::target::shown(output).display(),
         spatial.degree(),
         spatial.control_points().len()

@@ -89,8 +89,37 @@ pub const NEAR_MISS_SHARE: f64 = 1e-2;
 /// most [`NEAR_MISS_SHARE`] of the diagonal of the points' bounding box. The curve then closes
 /// through a short extra piece between them rather than at the point the user meant.
 pub fn warn_near_miss<const D: usize>(option: &str, points: &[karkas::Point<D>]) {
+    if let Some((gap, size)) = near_miss(points, 1e-12) {
+        note(format!(
+            "karkas: warning: {option}: the last point is {gap:.1e} from the first ({:.1e} of \
+             the size): the curve closes through a short piece between them; repeat the first \
+             point exactly to close at it",
+            gap / size
+        ));
+    }
+}
+
+/// Warns when the ends of an open curve through `points` nearly meet: the last point misses
+/// the first by more than the rule that makes them one point
+/// ([`karkas::fit::SHARED_END_TOLERANCE`] of the diagonal of the points' bounding box) and by
+/// at most [`NEAR_MISS_SHARE`] of it. The curve then stays open (a blunt trailing edge, or a
+/// sharp one given with a small error); `remedy` names the option that closes it.
+pub fn warn_open_near_miss<const D: usize>(points: &[karkas::Point<D>], remedy: &str) {
+    if let Some((gap, size)) = near_miss(points, karkas::fit::SHARED_END_TOLERANCE) {
+        note(format!(
+            "karkas: warning: the last point is {gap:.1e} from the first ({:.1e} of the \
+             size): the curve stays open there; {remedy}",
+            gap / size
+        ));
+    }
+}
+
+/// The distance of the last of `points` from the first and the diagonal of their bounding
+/// box, when the distance is above `least` of the diagonal (and of the largest coordinate)
+/// and at most [`NEAR_MISS_SHARE`] of it.
+fn near_miss<const D: usize>(points: &[karkas::Point<D>], least: f64) -> Option<(f64, f64)> {
     let (Some(&first), Some(&last)) = (points.first(), points.last()) else {
-        return;
+        return None;
     };
     let scale = points.iter().fold(1.0f64, |m, p| m.max(p.max_abs()));
     let (mut low, mut high) = ([f64::INFINITY; D], [f64::NEG_INFINITY; D]);
@@ -105,14 +134,8 @@ pub fn warn_near_miss<const D: usize>(option: &str, points: &[karkas::Point<D>])
         .sum::<f64>()
         .sqrt();
     let gap = first.distance(last);
-    if gap > 1e-12 * scale && gap <= NEAR_MISS_SHARE * size {
-        note(format!(
-            "karkas: warning: {option}: the last point is {gap:.1e} from the first ({:.1e} of \
-             the size): the curve closes through a short piece between them; repeat the first \
-             point exactly to close at it",
-            gap / size
-        ));
-    }
+    (points.len() > 2 && gap > 1e-12 * scale && gap > least * size && gap <= NEAR_MISS_SHARE * size)
+        .then_some((gap, size))
 }
 
 #[cfg(test)]

@@ -3,7 +3,7 @@
 //! closes a curve whose ends miss each other by a little warns with the distance (README,
 //! "curve fit", "Closed profiles").
 
-use crate::common::{karkas, read_csv, s, stderr, temp_dir, write};
+use crate::common::{assert_rejected, karkas, read_csv, s, stderr, temp_dir, write};
 
 /// A NACA 00xx-like section with a sharp trailing edge, `n` points per surface in Selig order
 /// (upper surface from the trailing edge to the nose, then the lower one back).
@@ -109,4 +109,237 @@ fn a_closing_option_warns_of_ends_that_nearly_meet() {
     let input = write(dir.path(), "closed.csv", &text.replace("1.002,0", "1,0"));
     let o = karkas(&["curve", "ll", "--closed", s(&input), "-o", s(&out)]);
     assert!(!stderr(&o).contains("warning"), "{}", stderr(&o));
+}
+
+/// [`sharp_foil`] with a blunt trailing edge: the upper surface raised and the lower one
+/// lowered by `half` times x, so the edge at x = 1 is `2 half` thick.
+fn blunt_foil(n: usize, half: f64) -> String {
+    let mut text = String::from("x,y\n");
+    // Rows 0..=n are the upper surface, the rest the lower one.
+    for (k, row) in sharp_foil(n).lines().skip(1).enumerate() {
+        let (x, y) = row.split_once(',').unwrap();
+        let (x, y): (f64, f64) = (x.parse().unwrap(), y.parse().unwrap());
+        let sign = if k <= n { 1.0 } else { -1.0 };
+        text.push_str(&format!("{x},{}\n", y + sign * half * x));
+    }
+    text
+}
+
+#[test]
+fn the_default_fit_warns_of_ends_that_nearly_meet() {
+    let dir = temp_dir();
+    let out = dir.path().join("c.csv");
+    let fit = |input: &std::path::Path, extra: &[&str]| {
+        let mut args = vec!["curve", "fit", "--tolerance", "1e-4"];
+        args.extend_from_slice(extra);
+        args.extend([s(input), "-o", s(&out)]);
+        let o = karkas(&args);
+        assert!(o.status.success(), "{}", stderr(&o));
+        stderr(&o)
+    };
+    // A blunt edge 2e-3 thick on a unit chord (diagonal sqrt(1 + 0.122^2) ~ 1.0075).
+    let blunt = write(dir.path(), "blunt.csv", &blunt_foil(40, 1e-3));
+    let err = fit(&blunt, &[]);
+    let line = err
+        .lines()
+        .find(|l| l.contains("warning: the last point is"))
+        .unwrap_or_else(|| panic!("no warning: {err}"));
+    assert!(
+        line.contains("the last point is 2.0e-3 from the first (2.0e-3 of the size)"),
+        "{line}"
+    );
+    assert!(line.contains("--close-te"), "{line}");
+    // --pin-ends keeps the ends apart too: the same warning.
+    assert!(fit(&blunt, &["--pin-ends"]).contains("warning: the last point is 2.0e-3"));
+    // Asked to stay free, or closed by the segment: nothing to say.
+    assert!(!fit(&blunt, &["--free-ends"]).contains("the last point is"));
+    // A sharp edge given with a small error (1e-5 apart, above the 1e-6 rule) warns too.
+    let almost = write(dir.path(), "almost.csv", &blunt_foil(40, 5e-6));
+    assert!(
+        fit(&almost, &[]).contains("warning: the last point is 1.0e-5 from the first"),
+        "{}",
+        fit(&almost, &[])
+    );
+    // Ends that coincide (the rule) or lie far apart (above 1e-2 of the size) say nothing.
+    let sharp = write(dir.path(), "sharp.csv", &sharp_foil(40));
+    assert!(!fit(&sharp, &[]).contains("the last point is"));
+    let open = write(dir.path(), "open.csv", &blunt_foil(40, 1e-2));
+    assert!(!fit(&open, &[]).contains("the last point is"));
+}
+
+/// The numbers of a STEP entity's argument list, flattened in order.
+fn step_numbers(text: &str) -> Vec<f64> {
+    text.split(|c: char| !(c.is_ascii_digit() || "+-.E".contains(c)))
+        .filter_map(|t| t.parse().ok())
+        .collect()
+}
+
+#[test]
+fn close_te_writes_a_blunt_trailing_edge_as_one_closed_curve() {
+    let dir = temp_dir();
+    let input = write(dir.path(), "blunt.csv", &blunt_foil(40, 1e-3));
+    for method in [
+        vec!["curve", "fit", "--tolerance", "1e-4"],
+        vec!["curve", "spline"],
+        vec!["curve", "ll", "--interpolate"],
+    ] {
+        let step = dir.path().join("c.step");
+        let dxf = dir.path().join("c.dxf");
+        let iges = dir.path().join("c.iges");
+        let mut args = method.clone();
+        args.extend([
+            "--close-te",
+            s(&input),
+            "-o",
+            s(&step),
+            "-o",
+            s(&dxf),
+            "-o",
+            s(&iges),
+        ]);
+        let o = karkas(&args);
+        assert!(o.status.success(), "{method:?}: {}", stderr(&o));
+        assert!(
+            stderr(&o).contains("closed by the trailing-edge segment"),
+            "{}",
+            stderr(&o)
+        );
+        assert!(!stderr(&o).contains("warning"), "{}", stderr(&o));
+        let text = std::fs::read_to_string(&step).unwrap();
+        // One curve, flagged closed, with a corner (multiplicity = degree) where the
+        // segment starts.
+        let prefix = "=B_SPLINE_CURVE_WITH_KNOTS(";
+        let curves: Vec<&str> = text.lines().filter(|l| l.contains(prefix)).collect();
+        assert_eq!(curves.len(), 1, "{method:?}");
+        assert!(curves[0].contains(",.T.,.F.,"), "{}", curves[0]);
+        let degree: usize = curves[0].split(',').nth(1).unwrap().parse().unwrap();
+        let counts = curves[0].split(".T.,.F.,(").nth(1).unwrap();
+        let counts: Vec<usize> = counts[..counts.find(')').unwrap()]
+            .split(',')
+            .map(|c| c.parse().unwrap())
+            .collect();
+        assert_eq!(counts.last(), Some(&(degree + 1)));
+        assert_eq!(counts[counts.len() - 2], degree, "{counts:?}");
+        // The control points, by the references in the curve's list: the last degree + 1
+        // run along the edge segment (collinear, inside |y| <= 1e-3 + the fit's deviation),
+        // and the first and last are the same point.
+        let coordinates = |id: &str| -> [f64; 2] {
+            let line = text
+                .lines()
+                .find(|l| l.starts_with(&format!("{id}=CARTESIAN_POINT(")))
+                .unwrap();
+            let v = step_numbers(&line[line.find(",(").unwrap()..]);
+            [v[0], v[1]]
+        };
+        let list = &curves[0][curves[0].find("(#").unwrap() + 1..];
+        let list = &list[..list.find(')').unwrap()];
+        let points: Vec<[f64; 2]> = list.split(',').map(coordinates).collect();
+        let n = points.len();
+        assert_eq!(points[0], points[n - 1]);
+        let (a, b) = (points[n - degree - 1], points[n - 1]);
+        assert!(
+            (a[0] - 1.0).abs() < 1e-4 && (a[1] + 1e-3).abs() < 1e-4,
+            "{a:?}"
+        );
+        assert!(
+            (b[0] - 1.0).abs() < 1e-4 && (b[1] - 1e-3).abs() < 1e-4,
+            "{b:?}"
+        );
+        for p in &points[n - degree - 1..] {
+            let cross = (p[0] - a[0]) * (b[1] - a[1]) - (p[1] - a[1]) * (b[0] - a[0]);
+            assert!(cross.abs() < 1e-15, "{method:?}: {p:?} off the segment");
+        }
+        // The DXF: one SPLINE, its closed flag (70: bit 1) set.
+        let dxf_text = std::fs::read_to_string(&dxf).unwrap();
+        let lines: Vec<&str> = dxf_text.lines().map(str::trim).collect();
+        let splines = lines.iter().filter(|l| **l == "SPLINE").count();
+        assert_eq!(splines, 1);
+        let at = lines.iter().position(|l| *l == "SPLINE").unwrap();
+        let flag = lines[at..]
+            .windows(2)
+            .find(|w| w[0] == "70")
+            .map(|w| w[1].parse::<u32>().unwrap())
+            .unwrap();
+        assert_eq!(flag & 1, 1, "DXF flag {flag}");
+        // The IGES: one entity 126, flagged closed (PROP2 = 1).
+        let iges_text = std::fs::read_to_string(&iges).unwrap();
+        let entity: String = iges_text
+            .lines()
+            .filter(|l| l.len() == 80 && &l[72..73] == "P" && l[65..72].trim() == "1")
+            .map(|l| l[..64].trim_end())
+            .collect();
+        let fields: Vec<&str> = entity.split(',').collect();
+        assert_eq!(fields[0], "126");
+        assert_eq!(fields[4], "1", "closed flag: {entity}");
+    }
+}
+
+#[test]
+fn close_te_refuses_where_it_cannot_apply() {
+    let dir = temp_dir();
+    let blunt = write(dir.path(), "blunt.csv", &blunt_foil(20, 1e-3));
+    let sharp = write(dir.path(), "sharp.csv", &sharp_foil(20));
+    let step = dir.path().join("c.step");
+    let csv = dir.path().join("c.csv");
+    // The segment exists only in CAD outputs.
+    assert_rejected(
+        &[
+            "curve",
+            "fit",
+            "--tolerance",
+            "1e-4",
+            "--close-te",
+            s(&blunt),
+            "-o",
+            s(&csv),
+        ],
+        &["--close-te", "STEP, IGES and DXF"][..],
+        &csv,
+        None,
+    );
+    // A curve closed otherwise.
+    assert_rejected(
+        &[
+            "curve",
+            "ll",
+            "--closed",
+            "--close-te",
+            s(&blunt),
+            "-o",
+            s(&step),
+        ],
+        &["--close-te", "--closed"][..],
+        &step,
+        None,
+    );
+    assert_rejected(
+        &[
+            "curve",
+            "spline",
+            "--ends",
+            "periodic",
+            "--close-te",
+            s(&blunt),
+            "-o",
+            s(&step),
+        ],
+        &["--close-te", "--ends periodic"][..],
+        &step,
+        None,
+    );
+    // A sharp edge: nothing to close.
+    for method in [
+        vec!["curve", "fit", "--tolerance", "1e-4"],
+        vec!["curve", "spline"],
+        vec!["curve", "ll"],
+    ] {
+        let mut args = method.clone();
+        args.extend(["--close-te", s(&sharp), "-o", s(&step)]);
+        assert_rejected(
+            &args,
+            &["--close-te", "coincide", "sharp.csv"][..],
+            &step,
+            None,
+        );
+    }
 }

@@ -162,6 +162,61 @@ impl<const D: usize> BSplineCurve<D> {
         Ok(curve.with_closed(true))
     }
 
+    /// The closed curve made of this curve and the straight segment from its end back to its
+    /// start (a blunt trailing edge closed by the edge): one clamped B-spline of the same
+    /// degree, closed ([`is_closed`](Curve::is_closed)), whose knot at the end of this curve
+    /// gets multiplicity `p` (a `C^0` corner there; the start is the other corner). The
+    /// segment's `p + 1` control points are evenly spaced on it, so its parameter runs
+    /// linearly, over a share of the domain equal to its length over the control polygon's.
+    ///
+    /// Errors: ends that already coincide (within `1e-12` of the largest coordinate:
+    /// nothing to close, [`Error::InvalidSetting`]).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::bspline::BSplineCurve;
+    /// use karkas::{Curve, Point};
+    /// // A quadratic arch from (0, 0) to (2, 0), closed by the segment along the x axis.
+    /// let arch = BSplineCurve::new(
+    ///     2,
+    ///     vec![0.0, 0.0, 0.0, 1.0, 1.0, 1.0],
+    ///     vec![Point([0.0, 0.0]), Point([1.0, 2.0]), Point([2.0, 0.0])],
+    /// )?;
+    /// let closed = arch.closed_by_segment()?;
+    /// assert!(closed.is_closed());
+    /// let end = closed.domain().end;
+    /// assert_eq!(closed.eval(end), Point([0.0, 0.0]));
+    /// assert_eq!(closed.eval(1.0), Point([2.0, 0.0]));
+    /// // Halfway along the segment (parameter linear on it).
+    /// let middle = closed.eval(0.5 * (1.0 + end));
+    /// assert!((middle - Point([1.0, 0.0])).max_abs() < 1e-12);
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
+    pub fn closed_by_segment(&self) -> Result<Self> {
+        let p = self.degree;
+        let n = self.control.len();
+        let (first, last) = (self.control[0], self.control[n - 1]);
+        let scale = self.control.iter().fold(0.0_f64, |a, q| a.max(q.max_abs()));
+        let gap = first.distance(last);
+        if gap <= 1e-12 * scale {
+            return Err(Error::InvalidSetting {
+                name: "closing segment",
+                value: gap,
+                reason: "the ends of the curve already coincide: there is no segment to close",
+            });
+        }
+        let polygon: f64 = self.control.windows(2).map(|w| w[0].distance(w[1])).sum();
+        let (start, end) = (self.knots[p], self.knots[n]);
+        let closing = end + (end - start) * gap / polygon.max(gap);
+        let mut knots = self.knots[..n + p].to_vec();
+        knots.extend(std::iter::repeat_n(closing, p + 1));
+        let mut control = self.control.clone();
+        control.extend((1..p).map(|k| last.lerp(first, k as f64 / p as f64)));
+        control.push(first);
+        Self::new_closed(p, knots, control)
+    }
+
     /// Marks the curve as one period of a closed curve (its ends coincide).
     pub(crate) fn with_closed(mut self, closed: bool) -> Self {
         self.closed = closed;
