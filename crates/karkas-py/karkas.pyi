@@ -448,8 +448,11 @@ class LLSurface(Surface):
         closed_v: bool = False,
         interpolate: bool = False,
         within: Optional[float] = None,
+        crease_u: bool = False,
+        crease_v: bool = False,
     ) -> Self:
-        """The defaults are those of karkas surface ll; within=D as its --within D."""
+        """The defaults are those of karkas surface ll; within=D as its --within D;
+        crease_u/crease_v as its --crease-u/--crease-v (a C^0 seam)."""
     def __reduce__(self) -> Tuple[object, ...]: ...
     @staticmethod
     def interpolate(
@@ -483,10 +486,12 @@ class BicubicSurface(Surface):
         closed_u: bool = False,
         closed_v: bool = False,
         origin: Optional[Tuple[int, int]] = None,
+        crease_u: bool = False,
+        crease_v: bool = False,
     ) -> Self:
         """parameterization (karkas surface bicubic --param): 'uniform', 'chord', 'averaged'
         (also 'averaged-chord'), 'centripetal'; origin (--origin I,J): the origin node (i, j)
-        of 'chord'."""
+        of 'chord'; crease_u/crease_v (--crease-u/--crease-v): closed with a C^0 seam."""
     def __reduce__(self) -> Tuple[object, ...]: ...
     def condition_measure(self) -> _Floats:
         """The condition measure (2.4) of the parameters at every node, (nu, nv), in [0, 1];
@@ -832,13 +837,16 @@ def export(
     ascii: bool = False,
     flip_normals: bool = False,
     mesh_tolerance: Optional[float] = None,
+    cap: bool = False,
 ) -> "os.PathLike[str]":
     """Writes a curve, surface, discrete spline, tube, point list (n, d), grid (nu, nv, 3),
     mesh (vertices, faces) or SciPy B-spline in the format of the path's extension (or
     format=), as the command line writes the same result; returns the path. A curve's .dxf
     is its exact SPLINE with points= as POINT entities on layer POINTS. A surface's mesh
     without samples= lies within mesh_tolerance of it (default 1e-4 of its size), sampled
-    where it bends (--mesh-tolerance)."""
+    where it bends (--mesh-tolerance). cap=True (a surface in STEP, IGES or a triangle mesh)
+    closes its open planar boundary loops with planar faces (--cap): a closed solid in STEP,
+    a closed mesh sampled uniformly."""
 
 def set_max_input_bytes(nbytes: int) -> None:
     """The most memory one read may keep, in bytes, for every reader of the process (default

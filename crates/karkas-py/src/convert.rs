@@ -324,6 +324,31 @@ pub fn flatten<const D: usize>(points: &[Point<D>]) -> &[f64] {
     bytemuck::cast_slice(points)
 }
 
+/// `grid` closed with a crease (a `C^0` seam) in the directions `crease` (`crease_u`,
+/// `crease_v`): its first row (column) appended after the last unless the last repeats it
+/// ([`Grid::closed`]), to be interpolated as an open direction, as the command line's
+/// `--crease-u/--crease-v`. A crease in a direction also asked `closed` (periodic) is an
+/// `OptionError`; fewer than 3 distinct lines a `PointsError`.
+pub fn creased<const D: usize>(
+    grid: Grid<Point<D>>,
+    crease: (bool, bool),
+    closed: (bool, bool),
+) -> PyResult<Grid<Point<D>>> {
+    for (name, asked, periodic) in [("u", crease.0, closed.0), ("v", crease.1, closed.1)] {
+        if asked && periodic {
+            return Err(OptionError::new_err(format!(
+                "crease_{name} and closed_{name} exclude each other: a crease closes the \
+                 direction with a C^0 seam, closed_{name} with a smooth (periodic) one"
+            )));
+        }
+    }
+    if !(crease.0 || crease.1) {
+        return Ok(grid);
+    }
+    grid.closed(crease.0, crease.1, "a creased direction (grid lines)")
+        .map_err(library_error)
+}
+
 /// `n` uniformly spaced parameters over `(a, b)`, ends included.
 pub fn uniform((a, b): (f64, f64), n: usize) -> Vec<f64> {
     (0..n)

@@ -10,8 +10,11 @@ use std::path::{Path, PathBuf};
 use karkas::bspline::BSplineCurve;
 use karkas::geometry::mesh_parameters::DEFAULT_RELATIVE_TOLERANCE;
 use karkas::geometry::{mesh_parameters, surface_size};
-use karkas::Point3;
-use karkas_io::export::cad::{write_cad_curve_with_points, write_cad_surface, NO_EXACT_FORM};
+use karkas::{Grid, Point3};
+use karkas_io::cad::CadShell;
+use karkas_io::export::cad::{
+    write_cad_curve_with_points, write_cad_shell, write_cad_surface, CadUnits, NO_EXACT_FORM,
+};
 use karkas_io::export::curve::{
     write_curve, write_curve_figure, write_discrete_curve, CurveDrawing, DiscreteTitles,
 };
@@ -20,11 +23,13 @@ use karkas_io::export::formats::{
     SURFACE_FORMATS,
 };
 use karkas_io::export::mesh::write_triangle_mesh;
-use karkas_io::export::samples::{default_curve_samples, default_surface_samples, MAX_SAMPLES};
+use karkas_io::export::samples::{
+    default_curve_samples, default_surface_samples, sample_surface, MAX_SAMPLES,
+};
 use karkas_io::export::surface::{
     write_sampled_surface, write_surface, write_surface_at, SurfaceDrawing,
 };
-use karkas_io::mesh::{MeshOptions, TriangleMesh};
+use karkas_io::mesh::{body_mesh, write_mesh_as, MeshOptions, TriangleMesh};
 use karkas_io::svg::CurveOverlay;
 use karkas_io::write::write_indexed_grid_csv;
 use karkas_io::OutputFormat;
@@ -82,6 +87,13 @@ use crate::surface::PySurface;
 ///     densely where the surface bends and sparsely where it does not, so that the mesh lies
 ///     within this distance of it (model units; the command line's ``--mesh-tolerance``).
 ///     Default: ``1e-4`` of the surface's size (the diagonal of its bounding box).
+/// cap : bool, default False
+///     A surface in STEP, IGES or a triangle mesh (OBJ, STL, PLY, GLB): close every open
+///     boundary loop that lies in a plane (a wing's root and tip, a tube's ends) with a planar
+///     face, as the command line's ``--cap``. STEP then holds a closed solid
+///     (``MANIFOLD_SOLID_BREP``), IGES the faces and the caps (trimmed planes), meshes are
+///     closed and turned outwards, sampled uniformly (``samples``). A body closed by its poles
+///     and seams is written as a solid without it.
 ///
 /// Returns
 /// -------
@@ -94,7 +106,9 @@ use crate::surface::PySurface;
 ///     The extension or `format` is not one the object can be written in; STEP, IGES or DXF
 ///     for an object without an exact piecewise polynomial form (discrete periodic splines,
 ///     point lists, grids, meshes); DXF for a surface; `flip_normals` for a format that is not
-///     a mesh; `points` of another dimension than a curve's.
+///     a mesh; `points` of another dimension than a curve's; `cap` for an object that is not a
+///     surface, a format that holds no body, with `mesh_tolerance`, or a surface whose open
+///     boundary is not a planar loop (or that has none).
 /// TypeError
 ///     `obj` is none of the kinds above.
 /// OSError
@@ -120,10 +134,20 @@ use crate::surface::PySurface;
 /// ... except karkas.OptionError as e:
 /// ...     print(str(e).split(": ", 1)[1])
 /// a curve has no mesh form (.stl is a mesh, made of surfaces, grids and triangle meshes): write .csv, .svg, .png, .html, .step, .iges, .dxf
+///
+/// A tube capped at both ends: a closed solid in STEP, a closed mesh in STL.
+///
+/// >>> t = np.linspace(0, 2 * np.pi, 13)[:-1]
+/// >>> rings = np.array([[[np.cos(a), np.sin(a), z] for a in t] for z in (0.0, 1.0, 2.0)])
+/// >>> tube = karkas.BicubicSurface(rings, closed_v=True)
+/// >>> _ = karkas.export(tube, os.path.join(d, "tube.step"), cap=True)
+/// >>> "MANIFOLD_SOLID_BREP" in open(os.path.join(d, "tube.step")).read()
+/// True
+/// >>> _ = karkas.export(tube, os.path.join(d, "tube.stl"), cap=True, samples=(20, 60))
 #[pyfunction]
-#[pyo3(signature = (obj, path, *, format = None, samples = None, title = None, points = None, closed_points = false, net = None, comb = false, ascii = false, flip_normals = false, mesh_tolerance = None))]
+#[pyo3(signature = (obj, path, *, format = None, samples = None, title = None, points = None, closed_points = false, net = None, comb = false, ascii = false, flip_normals = false, mesh_tolerance = None, cap = false))]
 #[pyo3(
-    text_signature = "(obj, path, *, format=None, samples=None, title=None, points=None, closed_points=False, net=None, comb=False, ascii=False, flip_normals=False, mesh_tolerance=None)"
+    text_signature = "(obj, path, *, format=None, samples=None, title=None, points=None, closed_points=False, net=None, comb=False, ascii=False, flip_normals=False, mesh_tolerance=None, cap=False)"
 )]
 #[allow(clippy::too_many_arguments)]
 pub fn export(
@@ -140,6 +164,7 @@ pub fn export(
     ascii: bool,
     flip_normals: bool,
     mesh_tolerance: Option<f64>,
+    cap: bool,
 ) -> PyResult<PathBuf> {
     if let Some(t) = mesh_tolerance {
         if !(t > 0.0 && t.is_finite()) {
@@ -162,7 +187,14 @@ pub fn export(
             flip_normals,
         },
     };
-    if let Ok(curve) = obj.cast::<PyCurve>() {
+    if cap {
+        let Ok(surface) = obj.cast::<PySurface>() else {
+            return Err(OptionError::new_err(
+                "cap: only surfaces have boundary loops to cap",
+            ));
+        };
+        export_capped(py, obj, surface.get(), &path, &options)?;
+    } else if let Ok(curve) = obj.cast::<PyCurve>() {
         export_curve(py, obj, curve.get(), &path, &options)?;
     } else if let Ok(surface) = obj.cast::<PySurface>() {
         export_surface(py, obj, surface.get(), &path, &options)?;
@@ -339,6 +371,69 @@ fn export_surface(
     };
     py.detach(|| write_sampled_surface(&view, counts, format, path, &drawing))
         .map_err(write_error)
+}
+
+/// A surface with its open planar boundary loops capped (`cap=True`, the command line's
+/// `--cap`): STEP or IGES as a shell of its B-spline face and planar caps (a solid when it
+/// closes, turned outwards), or a closed triangle mesh sampled uniformly
+/// ([`body_mesh`]). Other formats, `mesh_tolerance`, and loops that are not planar (or none)
+/// are refused naming `cap`.
+fn export_capped(
+    py: Python<'_>,
+    obj: &Bound<'_, PyAny>,
+    surface: &PySurface,
+    path: &Path,
+    options: &Options,
+) -> PyResult<()> {
+    let no_exact = "this surface has no exact piecewise polynomial form";
+    let format = choose(path, options, &EXACT_SURFACE_FORMATS, no_exact)?;
+    let refuse = |why: String| OptionError::new_err(format!("cap: {why}"));
+    if format.is_cad() {
+        let b = bspline_surface(obj, no_exact)?;
+        return py.detach(|| {
+            let mut shell = CadShell::of_surfaces(std::slice::from_ref(&b));
+            shell.cap_free_loops().map_err(|e| refuse(e.to_string()))?;
+            if shell.is_closed() {
+                shell.orient_outward();
+            }
+            let unit = CadUnits::default().cad_unit();
+            write_cad_shell(&shell, format, path, unit).map_err(write_error)
+        });
+    }
+    if !matches!(
+        format,
+        OutputFormat::Obj | OutputFormat::Stl | OutputFormat::Ply | OutputFormat::Glb
+    ) {
+        return Err(refuse(format!(
+            "only STEP, IGES and the triangle meshes (.step .iges .obj .stl .ply .glb) hold \
+             caps, not .{}",
+            format.extension()
+        )));
+    }
+    if options.mesh_tolerance.is_some() {
+        return Err(refuse(
+            "capped meshes are sampled uniformly (samples), not to mesh_tolerance".to_string(),
+        ));
+    }
+    let (nu, nv) = options.samples.unwrap_or_else(|| match &options.net {
+        Some(net) => (
+            default_surface_samples(net.rows()),
+            default_surface_samples(net.cols()),
+        ),
+        None => (default_surface_samples(0), default_surface_samples(0)),
+    });
+    if nu.saturating_mul(nv) > MAX_SAMPLES {
+        return Err(OptionError::new_err(format!(
+            "samples: at most {MAX_SAMPLES} samples can be written"
+        )));
+    }
+    let view = SurfaceView(&*surface.inner);
+    py.detach(|| {
+        let (_, _, samples) = sample_surface(&view, nu, nv);
+        let grid = Grid::from_row_major(nu, nv, samples).map_err(library_error)?;
+        let (body, _) = body_mesh(&grid, true).map_err(|e| refuse(e.to_string()))?;
+        write_mesh_as(format, path, &body, &options.mesh).map_err(write_error)
+    })
 }
 
 /// A surface as a mesh within `options.mesh_tolerance` (default

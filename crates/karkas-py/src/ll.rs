@@ -12,8 +12,8 @@ use numpy::{AllowTypeChange, PyArrayDyn, PyArrayLike2, PyUntypedArrayMethods};
 use pyo3::prelude::*;
 
 use crate::convert::{
-    as_points, by_dim, count, maybe_detach, py_bool, real_array, small_vector, variant, write_flat,
-    FlatPoints, GridArray, PointsArray,
+    as_points, by_dim, count, creased, flatten, maybe_detach, py_bool, real_array, small_vector,
+    variant, write_flat, FlatPoints, GridArray, PointsArray,
 };
 use crate::curve::PyCurve;
 use crate::errors::{library_error, OptionError, PointsError};
@@ -241,6 +241,11 @@ impl PyLlCurve {
 ///     Pass within this distance (model units, Euclidean) of every grid point at its node,
 ///     keeping the order (as ``karkas surface ll --within``; see ``LLCurve``). Not with
 ///     ``interpolate=True``.
+/// crease_u, crease_v : bool, optional
+///     Close the surface in ``u`` (``v``) with a crease, a ``C^0`` seam (a sharp trailing
+///     edge stays sharp): the first row (column) is appended after the last unless the last
+///     repeats it, and the direction is treated as an open one (``karkas surface ll
+///     --crease-u/--crease-v``). Not with ``closed_u`` (``closed_v``): an ``OptionError``.
 ///
 /// Raises
 /// ------
@@ -262,6 +267,16 @@ impl PyLlCurve {
 /// True
 /// >>> S.sample(4, 6).shape
 /// (4, 6, 3)
+///
+/// A ring of sharp-edged sections closed with a crease: the first column is repeated at the
+/// end, so the surface meets itself at the edge, with a corner there.
+///
+/// >>> t = np.linspace(0, 2 * np.pi, 9)[:-1]
+/// >>> lens = np.array([[[np.cos(a), 0.3 * np.sin(a) * abs(np.sin(a)), z] for a in t] for z in range(4)])
+/// >>> W = karkas.LLSurface(lens, interpolate=True, crease_v=True)
+/// >>> (a, b), (c, e) = W.domain_u, W.domain_v
+/// >>> bool(np.allclose(W(a, c), W(a, e))), bool(np.allclose(W(a, c), lens[0, 0]))
+/// (True, True)
 #[pyclass(extends = PySurface, module = "karkas", name = "LLSurface", frozen)]
 pub struct PyLlSurface {
     /// The order L (the surface is C^L).
@@ -293,17 +308,19 @@ impl PyLlSurface {
         closed_u: bool,
         closed_v: bool,
         (interpolating, within): (bool, Option<f64>),
+        crease: (bool, bool),
     ) -> PyResult<PyClassInitializer<Self>> {
         check_within(interpolating, within)?;
         let (g, dim) = GridArray::extract_checked(grid, "grid")?;
         let order = count(order, "order")?;
-        let (rows, cols, inner, largest_deviation): (
+        let (rows, cols, inner, largest_deviation, coords): (
             usize,
             usize,
             Arc<dyn SurfaceImpl>,
             Option<f64>,
+            Vec<f64>,
         ) = by_dim!(dim, D => {
-            let grid = g.grid::<D>()?;
+            let grid = creased(g.grid::<D>()?, crease, (closed_u, closed_v))?;
             let (surface, largest) = maybe_detach(py, grid.rows() * grid.cols(), || match within {
                 Some(distance) => LlSurface::<D>::within(&grid, order, closed_u, closed_v, distance)
                     .map(|fit| (fit.shape, Some(fit.largest_deviation))),
@@ -312,12 +329,11 @@ impl PyLlSurface {
                 None => LlSurface::<D>::new(&grid, order, closed_u, closed_v).map(|s| (s, None)),
             })
             .map_err(library_error)?;
-            (grid.rows(), grid.cols(), Arc::new(WrappedSurface::<_, D>(surface)), largest)
+            let coords = flatten(grid.as_slice()).to_vec();
+            (grid.rows(), grid.cols(), Arc::new(WrappedSurface::<_, D>(surface)), largest, coords)
         });
-        let given = FlatPoints {
-            coords: g.flat().into_owned(),
-            dim,
-        };
+        // A creased grid is kept closed by its appended line: it rebuilds as an open one.
+        let given = FlatPoints { coords, dim };
         let description = format!(
             "<karkas.LLSurface {}order={order}, closed_u={}, closed_v={}{}, {rows}x{cols} grid in {dim}-D",
             variant(interpolating),
@@ -344,10 +360,11 @@ impl PyLlSurface {
 #[pymethods]
 impl PyLlSurface {
     #[new]
-    #[pyo3(signature = (grid, order = DEFAULT_ORDER as i64, closed_u = false, closed_v = false, interpolate = false, within = None))]
+    #[pyo3(signature = (grid, order = DEFAULT_ORDER as i64, closed_u = false, closed_v = false, interpolate = false, within = None, crease_u = false, crease_v = false))]
     #[pyo3(
-        text_signature = "(grid, order=3, closed_u=False, closed_v=False, interpolate=False, within=None)"
+        text_signature = "(grid, order=3, closed_u=False, closed_v=False, interpolate=False, within=None, crease_u=False, crease_v=False)"
     )]
+    #[allow(clippy::too_many_arguments)]
     fn py_new(
         py: Python<'_>,
         grid: &Bound<'_, PyAny>,
@@ -356,8 +373,19 @@ impl PyLlSurface {
         closed_v: bool,
         interpolate: bool,
         within: Option<f64>,
+        crease_u: bool,
+        crease_v: bool,
     ) -> PyResult<PyClassInitializer<Self>> {
-        Self::build(py, grid, order, closed_u, closed_v, (interpolate, within))
+        let variant = (interpolate, within);
+        Self::build(
+            py,
+            grid,
+            order,
+            closed_u,
+            closed_v,
+            variant,
+            (crease_u, crease_v),
+        )
     }
 
     /// The interpolating LL surface: through every grid point at its node.
@@ -404,7 +432,15 @@ impl PyLlSurface {
     ) -> PyResult<Py<Self>> {
         Py::new(
             py,
-            Self::build(py, grid, order, closed_u, closed_v, (true, None))?,
+            Self::build(
+                py,
+                grid,
+                order,
+                closed_u,
+                closed_v,
+                (true, None),
+                (false, false),
+            )?,
         )
     }
 }

@@ -11,8 +11,8 @@ use numpy::PyArrayDyn;
 use pyo3::prelude::*;
 
 use crate::convert::{
-    as_points, by_dim, count, extract_vector, maybe_detach, points_to_array, py_bool, small_vector,
-    vector_to_array, FlatPoints, GridArray, Numbers, PointsArray,
+    as_points, by_dim, count, creased, extract_vector, maybe_detach, points_to_array, py_bool,
+    small_vector, vector_to_array, FlatPoints, GridArray, Numbers, PointsArray,
 };
 use crate::curve::{Extrapolate, PyCurve};
 use crate::errors::{library_error, OptionError};
@@ -460,6 +460,11 @@ pub struct BicubicInput {
 ///     ``(i, j)``: the origin node of ``'chord'`` (the paper's ``(i*, j*)``, the command
 ///     line's ``--origin I,J``): ``u`` is the chord length along column ``j``, ``v`` along row
 ///     ``i``, both zero at the node. Default ``(0, 0)``.
+/// crease_u, crease_v : bool, optional
+///     Close the surface in ``u`` (``v``) with a crease, a ``C^0`` seam (a wing's sharp
+///     trailing edge stays sharp): the first row (column) is appended after the last unless
+///     the last repeats it, and the direction is interpolated as an open one (``karkas
+///     surface bicubic --crease-u/--crease-v``). Not with ``closed_u`` (``closed_v``).
 ///
 /// Raises
 /// ------
@@ -467,7 +472,7 @@ pub struct BicubicInput {
 ///     Too few grid points, a non-finite coordinate, coinciding neighbours, or a wrong shape.
 /// OptionError
 ///     An unknown ``parameterization``, an ``origin`` outside the grid or given with another
-///     parameterization than ``'chord'``.
+///     parameterization than ``'chord'``; a crease in a direction also closed.
 ///
 /// Examples
 /// --------
@@ -476,6 +481,20 @@ pub struct BicubicInput {
 /// >>> S.knots_u, S.knots_v
 /// (array([0., 1., 2.]), array([0., 1., 2., 3.]))
 /// >>> bool(np.allclose(S(S.knots_u, S.knots_v), grid))
+/// True
+///
+/// A wing of sharp-edged sections closed with a crease at the trailing edge, capped at root
+/// and tip into a solid:
+///
+/// >>> t = np.linspace(0, 2 * np.pi, 13)[:-1]
+/// >>> foil = np.stack([0.5 + 0.5 * np.cos(t), 0.06 * np.sin(t) * (1 - np.cos(t)) ** 0.5], axis=-1)
+/// >>> wing = np.array([[[x, y, z] for x, y in foil] for z in (0.0, 1.0, 2.0)])
+/// >>> W = karkas.BicubicSurface(wing, crease_v=True)
+/// >>> W.knots_v.size
+/// 13
+/// >>> import os, tempfile
+/// >>> path = karkas.export(W, os.path.join(tempfile.mkdtemp(), "wing.step"), cap=True)
+/// >>> "MANIFOLD_SOLID_BREP" in open(path).read()
 /// True
 #[pyclass(extends = PySurface, module = "karkas", name = "BicubicSurface", frozen)]
 pub struct PyBicubicSurface {
@@ -526,9 +545,10 @@ impl PyBicubicSurface {
         closed_u: bool,
         closed_v: bool,
         origin: Option<(i64, i64)>,
+        crease: (bool, bool),
     ) -> PyResult<PyClassInitializer<Self>> {
         let (g, dim) = GridArray::extract_checked(grid, "grid")?;
-        let input = BicubicInput {
+        let mut input = BicubicInput {
             shape: g.rows_cols(),
             how: how.clone().map(str::to_string),
             closed: (closed_u, closed_v),
@@ -542,9 +562,11 @@ impl PyBicubicSurface {
             Err((ku, kv)) => ("given knots".to_string(), GridParameters::Knots(ku, kv)),
         };
         let (sub, inner, rows, cols): (Self, Arc<dyn SurfaceImpl>, usize, usize) = by_dim!(dim, D => {
-            // One copy of the input: the surface keeps it as its values.
-            let grid = g.grid::<D>()?;
+            // One copy of the input: the surface keeps it as its values. A creased grid is
+            // closed by its appended line and pickled as the open grid it then is.
+            let grid = creased(g.grid::<D>()?, crease, (closed_u, closed_v))?;
             let (rows, cols) = (grid.rows(), grid.cols());
+            input.shape = (rows, cols);
             let surface = maybe_detach(py, rows * cols, || match &parameters {
                 GridParameters::Knots(ku, kv) => BicubicSurface::<D>::from_grid_knots(grid, ku, kv, closed_u, closed_v),
                 GridParameters::Rule(rule) => BicubicSurface::<D>::from_grid(grid, *rule, closed_u, closed_v),
@@ -569,10 +591,11 @@ impl PyBicubicSurface {
 #[pymethods]
 impl PyBicubicSurface {
     #[new]
-    #[pyo3(signature = (grid, parameterization = GridParameterization::DEFAULT_NAME, closed_u = false, closed_v = false, origin = None))]
+    #[pyo3(signature = (grid, parameterization = GridParameterization::DEFAULT_NAME, closed_u = false, closed_v = false, origin = None, crease_u = false, crease_v = false))]
     #[pyo3(
-        text_signature = "(grid, parameterization='chord', closed_u=False, closed_v=False, origin=None)"
+        text_signature = "(grid, parameterization='chord', closed_u=False, closed_v=False, origin=None, crease_u=False, crease_v=False)"
     )]
+    #[allow(clippy::too_many_arguments)]
     fn py_new(
         py: Python<'_>,
         grid: &Bound<'_, PyAny>,
@@ -580,8 +603,12 @@ impl PyBicubicSurface {
         closed_u: bool,
         closed_v: bool,
         origin: Option<(i64, i64)>,
+        crease_u: bool,
+        crease_v: bool,
     ) -> PyResult<PyClassInitializer<Self>> {
-        Self::build(py, grid, Ok(parameterization), closed_u, closed_v, origin)
+        let how = Ok(parameterization);
+        let crease = (crease_u, crease_v);
+        Self::build(py, grid, how, closed_u, closed_v, origin, crease)
     }
 
     /// How well the parameters condition the continuation system at every node (Kuznetsov
@@ -665,7 +692,15 @@ impl PyBicubicSurface {
         let kv = extract_vector(knots_v, "knots_v")?;
         Py::new(
             py,
-            Self::build(py, grid, Err((ku, kv)), closed_u, closed_v, None)?,
+            Self::build(
+                py,
+                grid,
+                Err((ku, kv)),
+                closed_u,
+                closed_v,
+                None,
+                (false, false),
+            )?,
         )
     }
 }

@@ -211,13 +211,20 @@ pub fn cap_open_loops(mesh: &mut TriangleMesh) -> Result<Vec<MeshCap>, CapError>
             // Ear clipping left part of the polygon out (it crosses itself).
             return Err(not_planar(deviation));
         }
+        let twice = |t: &[usize]| {
+            let (a, b, c) = (t[0], t[1], t[2]);
+            (flat[2 * b] - flat[2 * a]) * (flat[2 * c + 1] - flat[2 * a + 1])
+                - (flat[2 * c] - flat[2 * a]) * (flat[2 * b + 1] - flat[2 * a + 1])
+        };
+        // Ear clipping gives every triangle the same winding: turn them all by the sign of
+        // their sum (the polygon's), not one by one, since a sliver over collinear points
+        // (a straight trailing edge) has a signed area that is rounding.
+        let total: f64 = corners.chunks_exact(3).map(twice).sum();
         let mut area = 0.0;
         for t in corners.chunks_exact(3) {
             let (a, b, c) = (t[0], t[1], t[2]);
-            let twice = (flat[2 * b] - flat[2 * a]) * (flat[2 * c + 1] - flat[2 * a + 1])
-                - (flat[2 * c] - flat[2 * a]) * (flat[2 * b + 1] - flat[2 * a + 1]);
-            let (b, c) = if twice >= 0.0 { (b, c) } else { (c, b) };
-            area += 0.5 * twice.abs();
+            let (b, c) = if total >= 0.0 { (b, c) } else { (c, b) };
+            area += 0.5 * twice(t).abs();
             added.push([vertices[a], vertices[b], vertices[c]]);
         }
         caps.push(MeshCap { vertices, area });
@@ -506,6 +513,32 @@ mod tests {
             assert!((cap.area - section).abs() < 1e-12, "{}", cap.area);
         }
         assert!((body.volume.unwrap() - section).abs() < 1e-12);
+    }
+
+    #[test]
+    fn a_loop_with_a_long_straight_run_is_capped_with_one_winding() {
+        // A half ellipse closed by a straight side of 299 collinear samples (and a short
+        // blunt edge), far from the origin, where ear clipping leaves slivers whose signed
+        // area is rounding.
+        let mut outline: Vec<[f64; 2]> = (0..=40)
+            .map(|k| {
+                let phi = std::f64::consts::PI * k as f64 / 40.0;
+                [phi.cos(), 0.06 * phi.sin()]
+            })
+            .collect();
+        outline.extend((1..300).map(|k| {
+            let s = k as f64 / 300.0;
+            [-1.0 + 2.0 * s, -1e-3 * s]
+        }));
+        let nv = outline.len() + 1;
+        let grid = Grid::from_fn(3, nv, |a, b| {
+            let [y, z] = outline[b % outline.len()];
+            Point3::new([700.0 + a as f64, 300.0 + y, -50.0 + z])
+        });
+        let (mesh, body) = body_mesh(&grid, true).unwrap();
+        assert_eq!(body.caps.len(), 2);
+        assert!(is_closed(&mesh), "the caps' winding is not consistent");
+        assert!(body.volume.unwrap() > 0.0);
     }
 
     #[test]

@@ -32,12 +32,9 @@ impl<const D: usize> Grid<Point<D>> {
     /// The grid closed in the closed directions: a last line that repeats the first (relative
     /// tolerance `1e-12`) becomes an exact copy of it, otherwise the first line is appended.
     /// A closed direction needs 3 distinct lines (else [`Error::TooFewPoints`] naming `what`).
-    pub(crate) fn closed(
-        &self,
-        closed_u: bool,
-        closed_v: bool,
-        what: &'static str,
-    ) -> Result<Self> {
+    /// A grid closed this way and then interpolated as an open one has a `C^0` seam (a
+    /// crease) where the first line is repeated.
+    pub fn closed(&self, closed_u: bool, closed_v: bool, what: &'static str) -> Result<Self> {
         if !closed_u && !closed_v {
             return Ok(self.clone());
         }
