@@ -404,7 +404,7 @@ fn a_table_of_offsets_lofts_a_hull_near_the_analytic_one() {
         let mut worst = 0.0f64;
         for r in &rows {
             let (x, y, z) = (r[1] - x0, r[2], r[3]);
-            assert!(z >= -0.0625 - 1e-9 && z <= 1e-9, "{r:?}");
+            assert!((-0.0625 - 1e-9..=1e-9).contains(&z), "{r:?}");
             assert!(y >= -1e-9, "{r:?}");
             worst = worst.max((y - wigley(x, z)).abs());
         }
