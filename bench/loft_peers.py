@@ -13,10 +13,13 @@ the surface read back from STEP (karkas) or built (Open CASCADE) with GeomAPI_Pr
 as a share of its section's chord.
 
     RAYON_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 python3 bench/loft_peers.py [--quick]
+        [--sizes 11,101] [--rounds 3]
 
---quick: 11, 101 and 1,000 sections, 3 interleaved rounds (else 11, 101, 301, 1,000 and 7).
+--quick: 11, 101 and 1,000 sections, 3 interleaved rounds (else 11, 101, 301, 1,000 and 7);
+--sizes and --rounds choose them (Open CASCADE runs up to 101 sections).
 """
 
+import argparse
 import os
 import statistics
 import sys
@@ -163,15 +166,23 @@ def median_time(f, repeat):
 
 
 def main():
-    quick = "--quick" in sys.argv
-    repeat = 3 if quick else 7
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--quick", action="store_true")
+    parser.add_argument("--sizes", help="section counts, e.g. 11,101")
+    parser.add_argument("--rounds", type=int, help="interleaved rounds")
+    args = parser.parse_args()
+    quick = args.quick
+    repeat = args.rounds or (3 if quick else 7)
+    sizes = [11, 101, 1000] if quick else [11, 101, 301, 1000]
+    if args.sizes:
+        sizes = [int(n) for n in args.sizes.split(",")]
     print("# karkas.loft (monotone, tolerance 1e-5 of the chord) and ThruSections, 200 points a section")
     print("# times: median wall ms / median process CPU ms; OCC/karkas is the CPU-time ratio")
     print(
         "sections | karkas ms wall/CPU | karkas CPU ms/section | karkas poles | karkas worst/chord"
         " | OCC ms wall/CPU | OCC poles | OCC worst/chord | OCC/karkas"
     )
-    for n in [11, 101, 1000] if quick else [11, 101, 301, 1000]:
+    for n in sizes:
         profiles, les, chords, twists = wing(n)
         run_karkas = lambda: karkas.loft(profiles, les, chords, twists)
         S = run_karkas()

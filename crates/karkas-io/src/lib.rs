@@ -51,6 +51,7 @@ pub mod mask;
 pub mod mesh;
 pub mod network;
 pub mod npy;
+pub mod offsets_table;
 pub mod picture;
 pub mod points;
 pub mod pointset;
@@ -59,6 +60,7 @@ pub mod samples;
 pub mod sections_table;
 pub mod skeleton;
 pub mod viewer;
+pub mod windio;
 pub mod write;
 
 mod columns;

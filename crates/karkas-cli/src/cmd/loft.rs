@@ -1,5 +1,5 @@
-//! `karkas loft`: a wing (fin, blade) lofted through the sections of a sections table
-//! (docs/methods.md §7).
+//! `karkas loft`: a wing (fin, blade) lofted through the sections of a sections table, or a
+//! wind-turbine blade through the airfoils of a windIO turbine file (docs/methods.md §7).
 
 use crate::args::{CadOptions, CapOption, GridSamples, MeshOutput};
 use crate::output::cad::write_cad_surface;
@@ -10,11 +10,16 @@ use crate::output::target::{output_format, shown};
 use anyhow::{anyhow, bail, Context, Result};
 use clap::Args;
 use karkas::bspline::BSplineCurve;
-use karkas::loft::{Loft, LoftOptions, SpanRule, WingPlacement, DEFAULT_TOLERANCE};
-use karkas::{Curve, Point2};
+use karkas::loft::{
+    Loft, LoftOptions, LoftSection, Profile, SectionFrame, SpanRule, WingPlacement,
+    DEFAULT_TOLERANCE,
+};
+use karkas::{Curve, Point2, Point3};
 use karkas_io::cad::{iges, step, CadEntity};
+use karkas_io::offsets_table::read_offsets_table;
 use karkas_io::points::{read_curve_points, CurvePoints};
 use karkas_io::sections_table::{read_sections_table, SectionRow};
+use karkas_io::windio::read_windio_blade;
 use karkas_io::OutputFormat;
 use serde::Serialize;
 use std::path::{Path, PathBuf};
@@ -30,7 +35,27 @@ pub struct LoftArgs {
     /// The sections table: CSV with the header file,x,y,z,chord,twist[,dihedral], one row per
     /// section in span order; file is a profile in unit chord (airfoil .dat or x,y CSV)
     /// relative to the table's folder, x,y,z its leading edge, twist and dihedral in degrees.
-    pub table: PathBuf,
+    #[arg(
+        required_unless_present_any = ["windio", "offsets"],
+        conflicts_with_all = ["windio", "offsets"]
+    )]
+    pub table: Option<PathBuf>,
+    /// Loft the blade of a windIO (version 2) turbine file instead of a sections table: one
+    /// section per entry of components.blade.outer_shape.airfoils, at its spanwise_position,
+    /// placed as windIO places it (chord, twist, section_offset_y and _x, normal to the
+    /// reference axis, in the file's units), and between airfoils through a section at every
+    /// grid position of the distributions (the neighbouring airfoils blended linearly). Stations
+    /// are the position times the length of the reference axis; --json lists the airfoils' as
+    /// airfoil_stations.
+    #[arg(long, value_name = "TURBINE.yaml", conflicts_with = "offsets")]
+    pub windio: Option<PathBuf>,
+    /// Loft a hull from a ship's table of offsets instead: CSV with the header
+    /// station,waterline,half_breadth, the rows of a station together from the keel up,
+    /// stations increasing; each station's section lies in its plane x = station with y the
+    /// half-breadth and z the waterline: the half hull y >= 0. The tolerance is a share of the
+    /// beam (twice the largest half-breadth).
+    #[arg(long, value_name = "OFFSETS.csv")]
+    pub offsets: Option<PathBuf>,
     /// How the surface runs between sections: linear (ruled, C^0 at the sections), monotone
     /// (shape-preserving cubic Hermite, C^1, no overshoot) or spline (not-a-knot cubic, C^2,
     /// may overshoot).
@@ -76,6 +101,9 @@ struct LoftSummary {
     tolerance: f64,
     tolerance_met: bool,
     stations: Vec<f64>,
+    /// The stations of a windIO blade's airfoils (the other stations are its grid positions).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    airfoil_stations: Option<Vec<f64>>,
     time_ms: f64,
 }
 
@@ -83,6 +111,67 @@ struct LoftSummary {
 struct Sections {
     rows: Vec<SectionRow>,
     profiles: Vec<Vec<Point2>>,
+}
+
+/// A loft, the file it came from, the time it took (milliseconds) and, for a windIO blade, the
+/// stations of its airfoils.
+type Built = (Loft, PathBuf, f64, Option<Vec<f64>>);
+
+/// The loft of the table's sections or of a windIO blade.
+fn build_loft(args: &LoftArgs, options: &LoftOptions) -> Result<Built> {
+    if let Some(path) = &args.windio {
+        let blade = read_windio_blade(path)?;
+        let profiles: Vec<Vec<Point2>> = blade.sections.iter().map(|s| s.profile.clone()).collect();
+        let positions: Vec<f64> = blade.sections.iter().map(|s| s.position).collect();
+        let start = Instant::now();
+        let loft = Loft::blade(&profiles, &positions, &blade.shape, options).map_err(|e| {
+            let name = karkas_io::input::display_name(path);
+            match e {
+                karkas::Error::LoftSection { section, reason }
+                    if section < blade.sections.len() =>
+                {
+                    let s = &blade.sections[section];
+                    anyhow!(
+                        "{}: airfoil {} ('{}' at spanwise_position {}): {reason}",
+                        name.display(),
+                        section + 1,
+                        s.airfoil,
+                        s.position
+                    )
+                }
+                other => anyhow!("{}: {other}", name.display()),
+            }
+        })?;
+        let time_ms = start.elapsed().as_secs_f64() * 1e3;
+        let length = blade.shape.axis_length();
+        let airfoils = positions.iter().map(|s| s * length).collect();
+        return Ok((loft, path.clone(), time_ms, Some(airfoils)));
+    }
+    if let Some(path) = &args.offsets {
+        let start = Instant::now();
+        let loft = offsets_loft(path, options)?;
+        let time_ms = start.elapsed().as_secs_f64() * 1e3;
+        return Ok((loft, path.clone(), time_ms, None));
+    }
+    let Some(table) = args.table.as_deref() else {
+        bail!("give a sections table, --windio or --offsets");
+    };
+    let sections = read_sections(table)?;
+    let placements: Vec<WingPlacement> = sections
+        .rows
+        .iter()
+        .map(|r| WingPlacement {
+            leading_edge: r.leading_edge,
+            chord: r.chord,
+            twist: r.twist,
+            dihedral: r.dihedral,
+        })
+        .collect();
+    let start = Instant::now();
+    let loft = Loft::wing(&sections.profiles, &placements, options)
+        .map_err(|e| section_error(table, &sections.rows, e))?;
+    let time_ms = start.elapsed().as_secs_f64() * 1e3;
+    Ok((loft, table.to_path_buf(), time_ms, None))
 }
 
 /// Runs `karkas loft`.
@@ -102,26 +191,12 @@ pub fn run(args: &LoftArgs) -> Result<()> {
         )?),
         None => None,
     };
-    let table = args.table.as_path();
-    let sections = read_sections(table)?;
-    let placements: Vec<WingPlacement> = sections
-        .rows
-        .iter()
-        .map(|r| WingPlacement {
-            leading_edge: r.leading_edge,
-            chord: r.chord,
-            twist: r.twist,
-            dihedral: r.dihedral,
-        })
-        .collect();
     let options = LoftOptions {
         rule: args.span,
         tolerance: args.tolerance,
     };
-    let start = Instant::now();
-    let loft = Loft::wing(&sections.profiles, &placements, &options)
-        .map_err(|e| section_error(table, &sections.rows, e))?;
-    let time_ms = start.elapsed().as_secs_f64() * 1e3;
+    let (loft, source, time_ms, airfoil_stations) = build_loft(args, &options)?;
+    let table = source.as_path();
     let stations = loft.stations().to_vec();
     let cuts = match &args.sections_at {
         Some(at) => Some(cut_sections(&loft, &at.0)?),
@@ -176,6 +251,7 @@ pub fn run(args: &LoftArgs) -> Result<()> {
         tolerance: args.tolerance,
         tolerance_met: loft.tolerance_met(),
         stations,
+        airfoil_stations,
         time_ms,
     };
     note(format!(
@@ -197,6 +273,60 @@ pub fn run(args: &LoftArgs) -> Result<()> {
         println!("{}", serde_json::to_string(&summary)?);
     }
     Ok(())
+}
+
+/// The half hull of the table of offsets at `path`.
+fn offsets_loft(path: &Path, options: &LoftOptions) -> Result<Loft> {
+    let table = read_offsets_table(path)?;
+    let name = karkas_io::input::display_name(path);
+    let beam = 2.0
+        * table
+            .iter()
+            .flat_map(|s| s.offsets.iter().map(|p| p[0]))
+            .fold(0.0f64, f64::max);
+    if beam <= 0.0 {
+        bail!("{}: every half-breadth is 0: no hull", name.display());
+    }
+    let at = |k: usize| {
+        format!(
+            "{}: station {} (line {})",
+            name.display(),
+            table[k].station,
+            table[k].line
+        )
+    };
+    let sections = table
+        .iter()
+        .enumerate()
+        .map(|(k, s)| {
+            let profile =
+                Profile::open(&s.offsets).map_err(|e| anyhow!("{}: {}", at(k), loft_reason(e)))?;
+            Ok(LoftSection {
+                profile,
+                frame: SectionFrame {
+                    origin: Point3::new([s.station, 0.0, 0.0]),
+                    x_axis: Point3::new([0.0, 1.0, 0.0]),
+                    y_axis: Point3::new([0.0, 0.0, 1.0]),
+                },
+                station: s.station,
+                scale: beam,
+            })
+        })
+        .collect::<Result<Vec<_>>>()?;
+    Loft::new(&sections, options).map_err(|e| match e {
+        karkas::Error::LoftSection { section, reason } if section < table.len() => {
+            anyhow!("{}: {reason}", at(section))
+        }
+        other => anyhow!("{}: {other}", name.display()),
+    })
+}
+
+/// The reason of a section's error, without the section number the library gives it.
+fn loft_reason(e: karkas::Error) -> String {
+    match e {
+        karkas::Error::LoftSection { reason, .. } => reason,
+        other => other.to_string(),
+    }
 }
 
 /// Reads the table and every row's profile, naming the row and the file on error.

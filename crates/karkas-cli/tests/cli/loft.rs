@@ -191,3 +191,263 @@ fn bad_tables_exit_2_naming_the_row_and_the_file_and_write_nothing() {
         Some("before"),
     );
 }
+
+/// A small windIO blade: a prebent reference axis, three airfoils (a NACA 0012 and a
+/// thicker NACA 0021, 41 points each) at `positions`.
+fn windio_blade(positions: [f64; 3]) -> String {
+    let foil = |t: f64| {
+        let (mut xs, mut ys) = (Vec::new(), Vec::new());
+        for k in 0..41 {
+            let a = std::f64::consts::PI * k as f64 / 20.0;
+            let x = 0.5 * (1.0 + a.cos());
+            let h = 5.0
+                * t
+                * (0.2969 * x.sqrt() - 0.126 * x - 0.3516 * x * x + 0.2843 * x.powi(3)
+                    - 0.1036 * x.powi(4));
+            xs.push(format!("{x}"));
+            ys.push(format!("{}", if k <= 20 { h } else { -h }));
+        }
+        format!("{{x: [{}], y: [{}]}}", xs.join(", "), ys.join(", "))
+    };
+    format!(
+        "windIO_version: '2.0'\nname: test blade\ncomponents:\n  blade:\n    reference_axis:\n      \
+         x: {{grid: &g [0.0, 0.5, 1.0], values: [0.0, -0.2, -1.0]}}\n      \
+         y: {{grid: [0.0, 1.0], values: [0.0, 0.0]}}\n      \
+         z: {{grid: *g, values: [0.0, 10.0, 20.0]}}\n    outer_shape:\n      \
+         chord: {{grid: *g, values: [2.0, 2.4, 0.8]}}\n      \
+         twist: {{grid: *g, values: [12.0, 4.0, -1.0]}}\n      \
+         section_offset_y: {{grid: *g, values: [1.0, 0.7, 0.2]}}\n      airfoils:\n        \
+         - {{name: thick, spanwise_position: {}}}\n        \
+         - {{name: thin, spanwise_position: {}}}\n        \
+         - {{name: thin, spanwise_position: {}}}\nairfoils:\n  \
+         - {{name: thick, coordinates: {}}}\n  - {{name: thin, coordinates: {}}}\n",
+        positions[0],
+        positions[1],
+        positions[2],
+        foil(0.21),
+        foil(0.12)
+    )
+}
+
+#[test]
+fn a_windio_blade_lofts_through_its_airfoils_at_their_positions() {
+    let dir = temp_dir();
+    let yaml = write(dir.path(), "blade.yaml", &windio_blade([0.0, 0.4, 1.0]));
+    let out = dir.path().join("blade.step");
+    let o = karkas(&["loft", "--windio", s(&yaml), "-o", s(&out), "--json"]);
+    assert!(o.status.success(), "{}", crate::common::stderr(&o));
+    let json: serde_json::Value = serde_json::from_str(stdout(&o).trim()).unwrap();
+    // The three airfoils and the grid position 0.5 between the second and the third.
+    assert_eq!(json["sections"], 4);
+    assert_eq!(json["tolerance_met"], true);
+    // Stations: the positions times the axis length (a little over 20 for the prebent axis).
+    let stations: Vec<f64> = json["airfoil_stations"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|v| v.as_f64().unwrap())
+        .collect();
+    assert_eq!(stations[0], 0.0);
+    assert!(stations[2] > 20.0 && stations[2] < 20.2, "{stations:?}");
+    assert!(
+        (stations[1] - 0.4 * stations[2]).abs() < 1e-12,
+        "{stations:?}"
+    );
+    assert!(std::fs::read_to_string(&out)
+        .unwrap()
+        .contains("B_SPLINE_SURFACE_WITH_KNOTS"));
+    // The root section at the surface's first row: leading edge 1 upstream of the axis,
+    // turned by the 12 degrees twist into the wind (-x).
+    let cuts = dir.path().join("root.csv");
+    let o = karkas(&[
+        "loft",
+        "--windio",
+        s(&yaml),
+        "-o",
+        s(&dir.path().join("b.obj")),
+        "--sections-at",
+        "0",
+        "--sections-out",
+        s(&cuts),
+    ]);
+    assert!(o.status.success(), "{}", crate::common::stderr(&o));
+    let (_, rows) = read_csv(&cuts);
+    let (sin, cos) = 12f64.to_radians().sin_cos();
+    let expected = [-sin, -cos, 0.0];
+    let nearest = rows
+        .iter()
+        .map(|r| {
+            (0..3)
+                .map(|k| (r[k + 1] - expected[k]).powi(2))
+                .sum::<f64>()
+                .sqrt()
+        })
+        .fold(f64::INFINITY, f64::min);
+    assert!(nearest < 0.015, "{nearest}");
+}
+
+#[test]
+fn bad_windio_files_exit_2_naming_the_file_and_write_nothing() {
+    let dir = temp_dir();
+    let d = dir.path();
+    let out = d.join("out.step");
+    let good = windio_blade([0.0, 0.4, 1.0]);
+    let cases: Vec<(String, Vec<&str>)> = vec![
+        (
+            good.replace("name: thick, spanwise", "name: gone, spanwise"),
+            vec!["blade.yaml", "'gone'"],
+        ),
+        (
+            windio_blade([0.0, 0.4, 0.4]),
+            vec!["blade.yaml", "airfoil 3 ('thin' at spanwise_position 0.4)"],
+        ),
+        (
+            windio_blade([0.0, 0.6, 0.4]),
+            vec!["blade.yaml", "airfoil 3", "not after"],
+        ),
+        (
+            windio_blade([0.0, 0.4, 1.5]),
+            vec!["blade.yaml", "outside [0, 1]"],
+        ),
+        (
+            good.replace("values: [2.0, 2.4, 0.8]", "values: [2.0, 2.4]"),
+            vec!["blade.yaml", "outer_shape.chord"],
+        ),
+        (
+            good.replace("outer_shape:", "outer_shape_bem:"),
+            vec!["blade.yaml", "windIO 1"],
+        ),
+        (
+            good.replace("airfoils:\n  -", "airfoils: [\n  -"),
+            vec!["blade.yaml:"],
+        ),
+        ("name: [1, 2".to_owned(), vec!["blade.yaml"]),
+    ];
+    for (text, needles) in cases {
+        let path = write(d, "blade.yaml", &text);
+        assert_rejected(
+            &["loft", "--windio", s(&path), "-o", s(&out)],
+            &needles[..],
+            &out,
+            None,
+        );
+    }
+    let path = write(d, "blade.yaml", &good);
+    assert_rejected(
+        &[
+            "loft",
+            "--windio",
+            s(&d.join("missing.yaml")),
+            "-o",
+            s(&out),
+        ],
+        &["missing.yaml"][..],
+        &out,
+        None,
+    );
+    // A table and --windio at once: refused.
+    let o = karkas(&["loft", s(&path), "--windio", s(&path), "-o", s(&out)]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(!out.exists());
+}
+
+/// The Wigley hull (length 1, beam 0.1, draught 0.0625) as a table of offsets of
+/// `stations` x `waterlines`, midship at `x0`.
+fn wigley_offsets(stations: usize, waterlines: usize, x0: f64) -> String {
+    let mut text = String::from("station,waterline,half_breadth\n");
+    for i in 0..stations {
+        let x = -0.5 + i as f64 / (stations - 1) as f64;
+        for j in 0..waterlines {
+            let z = -0.0625 + 0.0625 * j as f64 / (waterlines - 1) as f64;
+            let hb = wigley(x, z);
+            text.push_str(&format!("{},{z},{hb}\n", x0 + x));
+        }
+    }
+    text
+}
+
+/// The Wigley hull's half-breadth.
+fn wigley(x: f64, z: f64) -> f64 {
+    0.05 * (1.0 - 4.0 * x * x) * (1.0 - (z / 0.0625).powi(2))
+}
+
+#[test]
+fn a_table_of_offsets_lofts_a_hull_near_the_analytic_one() {
+    let dir = temp_dir();
+    let x0 = 250.0;
+    let table = write(dir.path(), "wigley.csv", &wigley_offsets(21, 11, x0));
+    {
+        let out = dir.path().join("hull.step");
+        let cuts = dir.path().join("cuts.csv");
+        let args = vec![
+            "loft",
+            "--offsets",
+            s(&table),
+            "-o",
+            s(&out),
+            "--json",
+            "--sections-at",
+            "249.525,249.8,250.125,250.46",
+            "--sections-out",
+            s(&cuts),
+        ];
+        let o = karkas(&args);
+        assert!(o.status.success(), "{}", crate::common::stderr(&o));
+        let json: serde_json::Value = serde_json::from_str(stdout(&o).trim()).unwrap();
+        assert_eq!(json["sections"], 21);
+        assert_eq!(json["tolerance_met"], true);
+        // Between the stations, the surface's sections against the analytic hull: the
+        // half-breadth at the section's height within 2e-3 of the beam (the table's own
+        // spacing; the loft's offsets themselves are within 1e-5 of the beam).
+        let (_, rows) = read_csv(&cuts);
+        assert_eq!(rows.len(), 800);
+        let mut worst = 0.0f64;
+        for r in &rows {
+            let (x, y, z) = (r[1] - x0, r[2], r[3]);
+            assert!((-0.0625 - 1e-9..=1e-9).contains(&z), "{r:?}");
+            assert!(y >= -1e-9, "{r:?}");
+            worst = worst.max((y - wigley(x, z)).abs());
+        }
+        assert!(worst < 2e-4, "{worst}");
+    }
+}
+
+#[test]
+fn bad_tables_of_offsets_exit_2_naming_the_station_and_write_nothing() {
+    let dir = temp_dir();
+    let d = dir.path();
+    let out = d.join("hull.step");
+    let good = wigley_offsets(5, 6, 0.0);
+    let cases: Vec<(String, Vec<&str>)> = vec![
+        (
+            good.replace("-0.25,", "-0.6,"),
+            vec!["o.csv:", "out of order"],
+        ),
+        (
+            good.replacen("-0.5,-0.05,", "-0.5,-0.0625,", 1),
+            vec!["o.csv:", "not above"],
+        ),
+        (good.replacen(",0\n", ",-1\n", 1), vec!["o.csv:", "negative"]),
+        (
+            "station,waterline,half_breadth\n0,0,0.1\n0,1,0.2\n0,2,0.2\n1,0,0.1\n1,1,0.1\n1,2,0.1\n"
+                .to_owned(),
+            vec!["o.csv: station 0 (line 2)", "at least 5 points"],
+        ),
+        ("station,waterline\n0,0\n".to_owned(), vec!["half_breadth"]),
+    ];
+    for (text, needles) in cases {
+        let path = write(d, "o.csv", &text);
+        assert_rejected(
+            &["loft", "--offsets", s(&path), "-o", s(&out)],
+            &needles[..],
+            &out,
+            None,
+        );
+    }
+    assert_rejected(
+        &["loft", "--offsets", s(&d.join("none.csv")), "-o", s(&out)],
+        &["none.csv"][..],
+        &out,
+        None,
+    );
+}

@@ -19,8 +19,9 @@
 //! [`MAX_ROUNDS`] rounds have passed (the deviation reached is reported either way).
 //!
 //! Complexity: each round is `O(n)` in the total number of points `n` (two fits and two
-//! projections per section); the rounds number about `log2` of the knots needed over the
-//! starting knots.
+//! projections per section; one of each for a section that starts from its neighbours'
+//! parameters and meets the tolerance at once); the rounds number about `log2` of the knots
+//! needed over the starting knots.
 
 use crate::bspline::cubic_span_weights;
 use crate::solve::BandedLeastSquares;
@@ -77,7 +78,8 @@ pub(crate) fn fit_compatible(sections: &[FitSection]) -> Result<CompatibleFit> {
     let all: Vec<usize> = (0..sections.len()).collect();
     // The knots are refined on a few sections spread along the span first, then checked on
     // all (and refined further on all if any misses the tolerance).
-    let mut active = sample_sections(sections.len());
+    let sample = sample_sections(sections.len());
+    let mut active = sample.clone();
     // A section fitted on the current knots, kept when the sample's last round leaves the
     // knots as they are (its fit is then the whole round's fit of it).
     let mut kept: Vec<Option<(Vec<Point2>, f64)>> = vec![None; sections.len()];
@@ -91,26 +93,29 @@ pub(crate) fn fit_compatible(sections: &[FitSection]) -> Result<CompatibleFit> {
         let knots = clamped(&breaks);
         let mut worst = vec![0.0f64; breaks.len() - 1];
         let mut scratch = Scratch::new(knots.len() - 4);
+        let mut local = vec![0.0f64; worst.len()];
         for &k in &active {
             if whole && kept[k].is_some() {
                 continue;
             }
+            // In the check of every section, a section between two of the sample with as many
+            // points starts from their foot-point parameters, interpolated: its first fit is
+            // then usually within the tolerance, and the second fit is saved.
+            let guessed = whole && guess_parameters(k, &sample, sections, &mut params);
             let (section, t) = (&sections[k], &mut params[k]);
             let mut c = fit_section(section, t, &knots, &mut scratch)?;
-            project(section, &knots, &c, t, None);
-            c = fit_section(section, t, &knots, &mut scratch)?;
-            let mut largest = 0.0f64;
-            let scale = 1.0 / section.tolerance;
-            project(
-                section,
-                &knots,
-                &c,
-                t,
-                Some(&mut |span, d| {
-                    largest = largest.max(d);
-                    worst[span] = worst[span].max(d * scale);
-                }),
-            );
+            if !guessed {
+                project(section, &knots, &c, t, None);
+                c = fit_section(section, t, &knots, &mut scratch)?;
+            }
+            let mut largest = measure(section, &knots, &c, t, &mut local);
+            if guessed && largest > section.tolerance {
+                c = fit_section(section, t, &knots, &mut scratch)?;
+                largest = measure(section, &knots, &c, t, &mut local);
+            }
+            for (w, l) in worst.iter_mut().zip(&local) {
+                *w = w.max(*l);
+            }
             kept[k] = Some((c, largest));
         }
         let refine: Vec<usize> = (0..worst.len()).filter(|&k| worst[k] > limit).collect();
@@ -139,6 +144,59 @@ pub(crate) fn fit_compatible(sections: &[FitSection]) -> Result<CompatibleFit> {
         next.push(1.0);
         breaks = next;
     }
+}
+
+/// Projects the section's points onto its curve (see [`project`]) and returns the largest
+/// distance; `local[span]` becomes the largest distance in each break span over the section's
+/// tolerance.
+fn measure(
+    section: &FitSection,
+    knots: &[f64],
+    control: &[Point2],
+    t: &mut [f64],
+    local: &mut [f64],
+) -> f64 {
+    local.iter_mut().for_each(|l| *l = 0.0);
+    let mut largest = 0.0f64;
+    let scale = 1.0 / section.tolerance;
+    project(
+        section,
+        knots,
+        control,
+        t,
+        Some(&mut |span, d| {
+            largest = largest.max(d);
+            local[span] = local[span].max(d * scale);
+        }),
+    );
+    largest
+}
+
+/// Sets section `k`'s parameters to those of the sample's sections around it interpolated
+/// by index, when both have as many points as it and the same split; false (nothing set)
+/// otherwise.
+fn guess_parameters(
+    k: usize,
+    sample: &[usize],
+    sections: &[FitSection],
+    params: &mut [Vec<f64>],
+) -> bool {
+    let after = sample.partition_point(|&j| j < k);
+    if after == 0 || after >= sample.len() || sample[after] == k {
+        return false;
+    }
+    let (a, b) = (sample[after - 1], sample[after]);
+    let n = sections[k].points.len();
+    let alike = |j: usize| sections[j].points.len() == n && sections[j].split == sections[k].split;
+    if !(alike(a) && alike(b)) {
+        return false;
+    }
+    let w = (k - a) as f64 / (b - a) as f64;
+    let (ta, tb) = (params[a].clone(), params[b].clone());
+    for ((t, x), y) in params[k].iter_mut().zip(ta).zip(tb) {
+        *t = x + w * (y - x);
+    }
+    true
 }
 
 /// The sections the knots are first refined on: all of up to [`SAMPLE_SECTIONS`], else that

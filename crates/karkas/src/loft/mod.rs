@@ -12,7 +12,8 @@
 //!    foot-point parameter correction and knots halved where a point is off, as Piegl and
 //!    Tiller fit curves to a tolerance (The NURBS Book, §9.4) but on one knot vector for all.
 //! 2. **Placement** ([`SectionFrame`], [`wing_frames`]): each section's plane goes into space
-//!    by an affine map, for a wing exactly as aerosandbox's `WingXSec` places it.
+//!    by an affine map, for a wing exactly as aerosandbox's `WingXSec` places it, for a
+//!    wind-turbine blade as windIO places it ([`BladeShape`]).
 //! 3. **Spanwise rule** ([`SpanRule`]): ruled, shape-preserving cubic Hermite (Fritsch and
 //!    Carlson) or not-a-knot cubic (Kuznetsov and Filatov's splines, formulas (3.10)–(3.12)) in
 //!    the span direction, through the placed control points.
@@ -54,12 +55,14 @@
 //! # Ok::<(), karkas::Error>(())
 //! ```
 
+mod blade;
 mod compatible;
 mod placement;
 mod profile;
 mod span;
 mod surface;
 
+pub use blade::{blade_frames, BladeShape, Distribution};
 pub use placement::{wing_frames, SectionFrame, WingPlacement};
 pub use profile::{Profile, MIN_SECTION_POINTS, UNIT_CHORD_SLACK};
 pub use span::{pchip_slopes, SpanRule};

@@ -1,6 +1,7 @@
 //! The loft itself: [`Loft`], a tensor-product B-spline surface through placed sections, and
 //! what it reports (docs/methods.md §7).
 
+use super::blade::{blade_frames, BladeShape};
 use super::compatible::{basis_at, fit_compatible, CompatibleFit, FitSection};
 use super::placement::{wing_frames, SectionFrame, WingPlacement};
 use super::profile::Profile;
@@ -70,6 +71,31 @@ impl Loft {
     /// section with a middle point (a leading edge) among sections without one or the other
     /// way round.
     pub fn new(sections: &[LoftSection], options: &LoftOptions) -> Result<Loft> {
+        let (fit, split) = Loft::fit(sections, options)?;
+        let nets = Grid::from_fn(sections.len(), fit.controls[0].len(), |k, i| {
+            sections[k].frame.place(fit.controls[k][i])
+        });
+        // The deviations in model units: at most the plane's by the frame's stretch.
+        let deviations = fit
+            .deviations
+            .iter()
+            .zip(sections)
+            .map(|(d, s)| d * s.frame.stretch())
+            .collect();
+        Loft::assemble(
+            options,
+            (split, fit.rounds),
+            fit.knots,
+            nets,
+            sections.iter().map(|s| s.station).collect(),
+            deviations,
+            sections.iter().map(|s| s.scale).collect(),
+        )
+    }
+
+    /// Checks `sections` (see [`new`](Self::new)) and fits them on one knot vector; true
+    /// when they have a middle point.
+    fn fit(sections: &[LoftSection], options: &LoftOptions) -> Result<(CompatibleFit, bool)> {
         if sections.len() < 2 {
             return Err(Error::TooFewPoints {
                 what: "a loft (sections)",
@@ -134,32 +160,28 @@ impl Loft {
                 tolerance: options.tolerance * s.scale / s.frame.stretch().max(f64::MIN_POSITIVE),
             })
             .collect();
-        let CompatibleFit {
-            knots,
-            controls,
-            deviations,
-            rounds,
-        } = fit_compatible(&fit_sections)?;
-        let m = controls[0].len();
-        let nets = Grid::from_fn(sections.len(), m, |k, i| {
-            sections[k].frame.place(controls[k][i])
-        });
-        let stations: Vec<f64> = sections.iter().map(|s| s.station).collect();
+        Ok((fit_compatible(&fit_sections)?, split))
+    }
+
+    /// The loft of the placed control nets `nets` (a row per station) on the sections' knots.
+    fn assemble(
+        options: &LoftOptions,
+        (split, rounds): (bool, usize),
+        knots: Vec<f64>,
+        nets: Grid<Point3>,
+        stations: Vec<f64>,
+        deviations: Vec<f64>,
+        scales: Vec<f64>,
+    ) -> Result<Loft> {
         let kept = KeptLines {
             leading_edge: split.then(|| basis_at(&knots, 0.5)),
         };
         let surface = span_surface(options.rule, &stations, &nets, knots, kept)?;
-        // The deviations in model units: at most the plane's by the frame's stretch.
-        let deviations = deviations
-            .iter()
-            .zip(sections)
-            .map(|(d, s)| d * s.frame.stretch())
-            .collect();
         Ok(Loft {
             surface,
             stations,
             deviations,
-            scales: sections.iter().map(|s| s.scale).collect(),
+            scales,
             options: *options,
             split,
             rounds,
@@ -186,20 +208,91 @@ impl Loft {
             });
         }
         let (frames, stations) = wing_frames(placements)?;
-        let sections = profiles
-            .iter()
-            .enumerate()
-            .map(|(k, points)| {
-                let profile = Profile::airfoil(points).map_err(|e| in_section(k, e))?;
-                Ok(LoftSection {
-                    profile,
-                    frame: frames[k],
-                    station: stations[k],
-                    scale: placements[k].chord,
-                })
-            })
-            .collect::<Result<Vec<_>>>()?;
-        Loft::new(&sections, options)
+        let chords: Vec<f64> = placements.iter().map(|p| p.chord).collect();
+        Loft::new(
+            &airfoil_sections(profiles, &frames, &stations, &chords)?,
+            options,
+        )
+    }
+
+    /// Lofts a wind-turbine blade: airfoil `profiles` in unit chord at the nondimensional
+    /// `positions` along its reference axis, placed as windIO places them ([`blade_frames`]);
+    /// each section's tolerance is a share of its chord. Between two airfoils the surface
+    /// also passes through a section at every grid position of the shape's distributions
+    /// (chord, twist, offsets, reference axis), placed there as windIO places it, whose
+    /// profile is the two airfoils' fitted curves blended linearly in the position (their
+    /// control points, on the shared knots): the chord, twist, offsets and axis then follow
+    /// the file's distributions along the whole span, not only at the airfoils. Those
+    /// sections have no points of their own: their [`deviations`](Self::deviations) are 0.
+    ///
+    /// Errors: as [`Profile::airfoil`], [`blade_frames`] and [`new`](Self::new), each naming
+    /// the section ([`Error::LoftSection`]); a count of profiles that differs from that of
+    /// positions ([`Error::CountMismatch`]); a chord that is not positive at a grid position
+    /// ([`Error::InvalidSetting`]).
+    pub fn blade(
+        profiles: &[Vec<Point2>],
+        positions: &[f64],
+        shape: &BladeShape,
+        options: &LoftOptions,
+    ) -> Result<Loft> {
+        if profiles.len() != positions.len() {
+            return Err(Error::CountMismatch {
+                what: "profiles of a blade (one per position)",
+                expected: positions.len(),
+                got: profiles.len(),
+            });
+        }
+        let (frames, stations, chords) = blade_frames(shape, positions)?;
+        let sections = airfoil_sections(profiles, &frames, &stations, &chords)?;
+        let (fit, split) = Loft::fit(&sections, options)?;
+        let length = shape.axis_length();
+        let mut rows: Vec<Vec<Point3>> = Vec::new();
+        let (mut at, mut deviations, mut scales) = (Vec::new(), Vec::new(), Vec::new());
+        for (k, &s) in positions.iter().enumerate() {
+            if k > 0 {
+                let (a, b) = (&fit.controls[k - 1], &fit.controls[k]);
+                for g in shape.grid_between(positions[k - 1], s) {
+                    let w = (g - positions[k - 1]) / (s - positions[k - 1]);
+                    let (frame, chord) = shape.frame(g);
+                    if !(chord.is_finite() && chord > 0.0) {
+                        return Err(Error::InvalidSetting {
+                            name: "chord",
+                            value: chord,
+                            reason: "the chord between two airfoils must be positive",
+                        });
+                    }
+                    rows.push(
+                        a.iter()
+                            .zip(b)
+                            .map(|(&p, &q)| frame.place(p + (q - p) * w))
+                            .collect(),
+                    );
+                    at.push(g * length);
+                    deviations.push(0.0);
+                    scales.push(chord);
+                }
+            }
+            rows.push(
+                fit.controls[k]
+                    .iter()
+                    .map(|&p| frames[k].place(p))
+                    .collect(),
+            );
+            at.push(stations[k]);
+            deviations.push(fit.deviations[k] * frames[k].stretch());
+            scales.push(chords[k]);
+        }
+        let m = rows[0].len();
+        let nets = Grid::from_fn(rows.len(), m, |k, i| rows[k][i]);
+        Loft::assemble(
+            options,
+            (split, fit.rounds),
+            fit.knots,
+            nets,
+            at,
+            deviations,
+            scales,
+        )
     }
 
     /// The B-spline surface (degree 1 or 3 along the span, 3 along the sections).
@@ -260,6 +353,28 @@ impl Loft {
         let grid = self.surface.control_points();
         (grid.rows(), grid.cols())
     }
+}
+
+/// Airfoil sections: each profile read by [`Profile::airfoil`], with its frame, station and
+/// chord (its scale).
+fn airfoil_sections(
+    profiles: &[Vec<Point2>],
+    frames: &[SectionFrame],
+    stations: &[f64],
+    chords: &[f64],
+) -> Result<Vec<LoftSection>> {
+    profiles
+        .iter()
+        .enumerate()
+        .map(|(k, points)| {
+            Ok(LoftSection {
+                profile: Profile::airfoil(points).map_err(|e| in_section(k, e))?,
+                frame: frames[k],
+                station: stations[k],
+                scale: chords[k],
+            })
+        })
+        .collect()
 }
 
 /// `e` as the error of section `k`.
