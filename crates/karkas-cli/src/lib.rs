@@ -47,6 +47,15 @@ enum Command {
     Surface(cmd::SurfaceCommand),
     /// Two-sided Hausdorff distance between point sets or a point set and F(x, y, z) = 0.
     Hausdorff(cmd::hausdorff::HausdorffArgs),
+    /// Distances of measured points to a CAD model's faces (STEP or IGES): summary, worst
+    /// points, CSV report.
+    ///
+    /// Each point's distance to the nearest face, signed where the face bounds a solid
+    /// (positive outside). Standard output: `points N`, `max`, `rms`, `mean`, the percentiles
+    /// `p50 p90 p95 p99 p99.9` of the distance (nearest rank), `signed ...` (when signed) and
+    /// one `worst K point I distance D [signed S] at x,y,z face F foot x,y,z` line per
+    /// farthest point. Exit 2 on a bad model or points file, naming the file and line.
+    Inspect(cmd::inspect::InspectArgs),
     /// Loft a surface through sections placed along a span (a wing from its sections table).
     Loft(cmd::loft::LoftArgs),
     /// Cut a surface (of a grid or of a curve network) by planes: sections and isolines.
@@ -105,6 +114,7 @@ pub fn run(args: impl IntoIterator<Item = OsString>) -> ExitCode {
         Command::Curve(c) => c.run(),
         Command::Surface(c) => c.run(),
         Command::Hausdorff(args) => cmd::hausdorff::run(&args),
+        Command::Inspect(args) => cmd::inspect::run(&args),
         Command::Section(args) => cmd::section::run(&args),
         Command::Loft(args) => cmd::loft::run(&args),
         Command::Vary(args) => cmd::vary::run(&args),

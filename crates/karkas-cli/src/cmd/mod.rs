@@ -11,6 +11,7 @@ mod fairness_report;
 mod fit_options;
 mod fit_summary;
 pub mod hausdorff;
+pub mod inspect;
 pub mod loft;
 pub mod section;
 pub mod spline_options;

@@ -22,6 +22,7 @@ mod dxf;
 mod export;
 mod fit_tolerance;
 mod hausdorff;
+mod inspect;
 mod ll_within;
 mod loft;
 mod meshes;

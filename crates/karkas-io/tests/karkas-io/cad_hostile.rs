@@ -98,6 +98,57 @@ fn dangling_references_and_binary_bytes_name_the_entity_and_line() {
     assert!(read(&raw, CadFormat::Step).is_err());
 }
 
+/// A STEP file of `data` lines (after the header karkas writes).
+fn step_with(data: &str) -> String {
+    let text = sample(CadFormat::Step);
+    let start = text.find("DATA;\n").unwrap() + 6;
+    format!("{}{data}ENDSEC;\nEND-ISO-10303-21;\n", &text[..start])
+}
+
+#[test]
+fn step_reference_cycles_are_refused_with_entity_and_line() {
+    let head = "#1=CARTESIAN_POINT('',(0.,0.,0.));\n#2=DIRECTION('',(1.,0.,0.));\n\
+                #3=VECTOR('',#2,1.);\n#4=LINE('',#1,#3);\n";
+    // Two trimmed curves trimming each other, in a curve set and on their own (no instance
+    // outside the cycle refers to either).
+    for set in ["#7=GEOMETRIC_CURVE_SET('',(#5,#6));\n", ""] {
+        let text = step_with(&format!(
+            "{head}#5=TRIMMED_CURVE('',#6,(PARAMETER_VALUE(0.)),(PARAMETER_VALUE(1.)),.T.,\
+             .PARAMETER.);\n#6=TRIMMED_CURVE('',#5,(PARAMETER_VALUE(0.)),\
+             (PARAMETER_VALUE(1.)),.T.,.PARAMETER.);\n{set}"
+        ));
+        let line = text.lines().position(|l| l.starts_with("#6=")).unwrap() + 1;
+        let m = message(&text, CadFormat::Step);
+        assert!(m.contains("cycle"), "{m}");
+        assert!(
+            m.contains(&format!("h.cad:{line}:")) && m.contains("#6 (TRIMMED_CURVE)"),
+            "{m}"
+        );
+    }
+    // A curve referring to itself, and a longer cycle through a point.
+    let text = step_with(&format!(
+        "{head}#5=TRIMMED_CURVE('',#5,(PARAMETER_VALUE(0.)),(PARAMETER_VALUE(1.)),.T.,\
+         .PARAMETER.);\n"
+    ));
+    assert!(message(&text, CadFormat::Step).contains("#5 (TRIMMED_CURVE): refers to #5"));
+    let text = step_with(
+        "#1=CARTESIAN_POINT('',(0.,0.,0.));\n#2=DIRECTION('',(1.,0.,0.));\n\
+         #3=VECTOR('',#2,1.);\n#4=LINE('',#1,#3);\n\
+         #5=AXIS2_PLACEMENT_3D('',#1,#8,#2);\n#8=DIRECTION('',(#5));\n\
+         #9=CIRCLE('',#5,1.);\n",
+    );
+    let m = message(&text, CadFormat::Step);
+    assert!(m.contains("cycle") && m.contains("#8 (DIRECTION)"), "{m}");
+    // The same curves without the cycle read.
+    let text = step_with(&format!(
+        "{head}#5=TRIMMED_CURVE('',#4,(PARAMETER_VALUE(0.)),(PARAMETER_VALUE(1.)),.T.,\
+         .PARAMETER.);\n#6=TRIMMED_CURVE('',#5,(PARAMETER_VALUE(0.2)),\
+         (PARAMETER_VALUE(0.8)),.T.,.PARAMETER.);\n#7=GEOMETRIC_CURVE_SET('',(#6));\n"
+    ));
+    let model = read(text.as_bytes(), CadFormat::Step).unwrap();
+    assert_eq!(model.shape.curves.len(), 1);
+}
+
 #[test]
 fn iges_cycles_and_bad_pointers_are_refused() {
     let text = sample(CadFormat::Iges);

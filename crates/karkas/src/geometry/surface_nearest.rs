@@ -314,7 +314,19 @@ pub(crate) fn newton_foot<S: Surface<D> + ?Sized, const D: usize>(
             pushed(u, step_u, du, closed.0),
             pushed(v, step_v, dv, closed.1),
         ) {
-            (true, true) => break,
+            // At a corner: the 1-D step along an edge of the domain when it points inside
+            // (the full step may leave across both ends while one gradient points in).
+            (true, true) => {
+                let along_v = one_d(g[1], full[2], gauss[2]);
+                let along_u = one_d(g[0], full[0], gauss[0]);
+                if along_v != 0.0 && !pushed(v, along_v, dv, closed.1) {
+                    (step_u, step_v) = (0.0, along_v);
+                } else if along_u != 0.0 && !pushed(u, along_u, du, closed.0) {
+                    (step_u, step_v) = (along_u, 0.0);
+                } else {
+                    break;
+                }
+            }
             (true, false) => {
                 step_u = 0.0;
                 step_v = one_d(g[1], full[2], gauss[2]);

@@ -585,7 +585,7 @@ pub(crate) fn read_iges(name: &Path, reader: &mut dyn BufRead) -> Result<CadMode
     let roots: Vec<(i64, i64)> = file
         .entries
         .iter()
-        .filter(|(_, e)| e.subordinate == 0 && READ.contains(&e.kind))
+        .filter(|(_, e)| (e.subordinate == 0 || e.kind == 144) && READ.contains(&e.kind))
         .map(|(&p, e)| (p, e.kind))
         .collect();
     for &(pointer, kind) in &roots {

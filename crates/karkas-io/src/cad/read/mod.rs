@@ -19,6 +19,7 @@ mod iges_build;
 mod iges_records;
 mod model;
 mod step_args;
+mod step_cycles;
 mod step_geometry;
 mod step_read;
 mod step_syntax;

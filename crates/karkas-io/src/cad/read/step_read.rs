@@ -6,7 +6,7 @@ use std::io::BufRead;
 use std::path::Path;
 
 use super::model::{CadFormat, CadModel, Unread};
-use super::{step_geometry, step_syntax, step_topology, step_units};
+use super::{step_cycles, step_geometry, step_syntax, step_topology, step_units};
 use crate::error::IoError;
 
 /// Reads a STEP file.
@@ -18,6 +18,7 @@ pub(crate) fn read_step(name: &Path, reader: &mut dyn BufRead) -> Result<CadMode
             || step_units::UNIT_TYPES.contains(&n)
     };
     let exchange = step_syntax::read_exchange(name, reader, &wanted)?;
+    step_cycles::refuse_cycles(name, &exchange)?;
     let units = step_units::units(name, &exchange)?;
     let mut topology = step_topology::Topology::new(name, &exchange, units.radians);
     let shape = topology.shape()?;

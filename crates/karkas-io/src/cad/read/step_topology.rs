@@ -18,8 +18,9 @@ use karkas::{Curve, Point3};
 
 use super::analytic::{BasisCurve, BasisSurface, SampledEdge};
 use super::step_args::Args;
+use super::step_cycles::push_refs;
 use super::step_geometry::{read, Geometry, Outcome, Unread, CURVE_TYPES, SURFACE_TYPES};
-use super::step_syntax::{Exchange, Value};
+use super::step_syntax::Exchange;
 use crate::error::IoError;
 
 /// The topology entity types read.
@@ -336,9 +337,11 @@ impl<'a> Topology<'a> {
             if instance.parts.iter().any(|p| SETS.contains(&&*p.name)) {
                 continue;
             }
+            let mut refs = Vec::new();
             for p in &instance.parts {
-                collect_refs(&p.params, &mut used);
+                push_refs(&p.params, &mut refs);
             }
+            used.extend(refs);
         }
         let mut names: Vec<&str> = CURVE_TYPES.to_vec();
         names.push("COMPOSITE_CURVE");
@@ -422,20 +425,6 @@ impl<'a> Topology<'a> {
                 self.skip(u);
                 Ok(None)
             }
-        }
-    }
-}
-
-/// Every reference in `values`.
-fn collect_refs(values: &[Value], out: &mut HashSet<u64>) {
-    for v in values {
-        match v {
-            Value::Ref(r) => {
-                out.insert(*r);
-            }
-            Value::List(l) => collect_refs(l, out),
-            Value::Typed(_, inner) => collect_refs(std::slice::from_ref(inner), out),
-            _ => {}
         }
     }
 }

@@ -1,0 +1,229 @@
+//! `karkas inspect PART.step --points SCAN.csv`: the distance of measured points to a CAD
+//! model's faces, signed where a face bounds a solid.
+//!
+//! The model is read by `karkas_io::cad::read::read_cad` (STEP or IGES, told by content),
+//! the points by `karkas_io::pointset::read_point_set`; every point is projected onto the
+//! nearest face by `karkas::shape::ShapeProjector` (in parallel). The summary goes to
+//! standard output (to standard error when the CSV report goes there), the report to `-o`.
+
+use anyhow::{bail, Context, Result};
+use clap::Args;
+use karkas::shape::{ShapeNearest, ShapeProjector};
+use karkas::Point3;
+use karkas_io::cad::read::read_cad;
+use karkas_io::input::display_name;
+use karkas_io::pointset::read_point_set;
+use karkas_io::write::{is_stdout, write_atomic};
+use karkas_io::OutputFormat;
+use std::fmt::Write as _;
+use std::io::Write as _;
+use std::path::PathBuf;
+
+use crate::input::one_standard_input;
+use crate::output::console::note;
+use crate::output::memory::check_memory;
+use crate::output::overwrite::ensure_distinct;
+use crate::output::target::output_format;
+
+/// The header of the CSV report (a contract for scripts).
+pub const REPORT_HEADER: &str =
+    "point,x,y,z,distance,signed_distance,face,u,v,foot_x,foot_y,foot_z,on_edge";
+
+/// The percentiles of the distance the summary gives.
+const PERCENTILES: [f64; 5] = [50.0, 90.0, 95.0, 99.0, 99.9];
+
+/// Arguments of `karkas inspect`.
+#[derive(Debug, Args)]
+pub struct InspectArgs {
+    /// The CAD model: a STEP (AP203/AP214/AP242) or IGES 5.3 file, told by its content. Its
+    /// faces (B-spline, NURBS and analytic surfaces, trimmed by their edges) are the
+    /// reference; a face of a closed shell has an outside, and distances to it are signed.
+    model: PathBuf,
+    /// The measured points: CSV or whitespace columns x,y,z (any header naming x, y, z) or
+    /// the vertices of an .obj mesh, in the model's length unit (coordinates as the file
+    /// writes them; the unit is named on standard error). `-` is standard input.
+    #[arg(long, value_name = "FILE")]
+    points: PathBuf,
+    /// The CSV report, one row per point in input order, header
+    /// `point,x,y,z,distance,signed_distance,face,u,v,foot_x,foot_y,foot_z,on_edge`:
+    /// `point` the 0-based index of the point, `distance` its distance to the nearest face
+    /// (>= 0), `signed_distance` the same signed (positive outside the solid; empty where the
+    /// face bounds no solid), `face` the 0-based index of that face in the file's order
+    /// (karkas's CadModel.shape.faces), `u,v` the foot's parameters on the face's surface,
+    /// `foot_x..z` the nearest point, `on_edge` 1 where the foot lies on a trimming edge.
+    /// `-o -` writes it to standard output (the summary then goes to standard error).
+    #[arg(short, long, value_name = "REPORT.csv")]
+    output: Option<PathBuf>,
+    /// How many of the farthest points the summary lists.
+    #[arg(long, default_value_t = 10, value_name = "N")]
+    worst: usize,
+}
+
+/// Runs `karkas inspect`.
+pub fn run(args: &InspectArgs) -> Result<()> {
+    one_standard_input(&[("MODEL", &args.model), ("--points", &args.points)])?;
+    if let Some(output) = &args.output {
+        output_format(output, &[OutputFormat::Csv])?;
+        ensure_distinct(&args.model, output)?;
+        ensure_distinct(&args.points, output)?;
+    }
+    let model = read_cad(&args.model)?;
+    let model_name = display_name(&args.model);
+    if let Some(warning) = model.warning() {
+        note(format!("karkas: warning: {warning}"));
+    }
+    if model.shape.faces.is_empty() {
+        bail!(
+            "{}: the model has no faces to measure against ({} curves)",
+            model_name.display(),
+            model.shape.curves.len()
+        );
+    }
+    let points = read_point_set(&args.points)?;
+    if points.is_empty() {
+        bail!("{}: no points", display_name(&args.points).display());
+    }
+    // The report's rows (about 13 numbers of 24 bytes) and the results held meanwhile.
+    check_memory(
+        &format!("inspect {}", args.points.display()),
+        points.len() as u128 * 400,
+    )?;
+    let start = std::time::Instant::now();
+    let projector = ShapeProjector::new(&model.shape, 0.0)
+        .with_context(|| format!("{}: a face cannot be sampled", model_name.display()))?;
+    let prepared = start.elapsed().as_secs_f64();
+    let found = projector.nearest_all(&points);
+    note(format!(
+        "karkas: {} ({} faces, unit {}), {} ({} points): faces prepared in {prepared:.3} s, \
+         points projected in {:.3} s",
+        model_name.display(),
+        model.shape.faces.len(),
+        model.unit.name,
+        display_name(&args.points).display(),
+        points.len(),
+        start.elapsed().as_secs_f64() - prepared
+    ));
+    let summary = summary(&points, &found, args.worst);
+    let report_to_stdout = args.output.as_deref().is_some_and(is_stdout);
+    if let Some(output) = &args.output {
+        write_atomic(output, |out| write_report(out, &points, &found))?;
+    }
+    if report_to_stdout {
+        eprint!("{summary}");
+    } else {
+        std::io::stdout()
+            .lock()
+            .write_all(summary.as_bytes())
+            .context("cannot write to standard output")?;
+    }
+    Ok(())
+}
+
+/// The `p`-th percentile of the sorted `values` by the nearest rank: the smallest value at
+/// least `p` percent of the values do not exceed.
+fn percentile(sorted: &[f64], p: f64) -> f64 {
+    let n = sorted.len();
+    let rank = ((p / 100.0) * n as f64).ceil() as usize;
+    sorted[rank.clamp(1, n) - 1]
+}
+
+/// The summary: counts, largest, RMS and mean distance, percentiles, the signed range, and
+/// the `worst` farthest points.
+fn summary(points: &[Point3], found: &[ShapeNearest], worst: usize) -> String {
+    let mut sorted: Vec<f64> = found.iter().map(|f| f.distance).collect();
+    sorted.sort_by(f64::total_cmp);
+    let n = sorted.len() as f64;
+    let rms = (sorted.iter().map(|d| d * d).sum::<f64>() / n).sqrt();
+    let mean = sorted.iter().sum::<f64>() / n;
+    let mut text = String::new();
+    let _ = writeln!(text, "points {}", points.len());
+    let _ = writeln!(text, "max {}", sorted[sorted.len() - 1]);
+    let _ = writeln!(text, "rms {rms}");
+    let _ = writeln!(text, "mean {mean}");
+    for p in PERCENTILES {
+        let _ = writeln!(text, "p{p} {}", percentile(&sorted, p));
+    }
+    let signed: Vec<f64> = found.iter().filter_map(|f| f.signed).collect();
+    if !signed.is_empty() {
+        let low = signed.iter().copied().fold(f64::INFINITY, f64::min);
+        let high = signed.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        let _ = writeln!(
+            text,
+            "signed {} points, min {low}, max {high}, outside {}, inside {}",
+            signed.len(),
+            signed.iter().filter(|&&s| s > 0.0).count(),
+            signed.iter().filter(|&&s| s < 0.0).count()
+        );
+    }
+    let mut order: Vec<usize> = (0..found.len()).collect();
+    order.sort_by(|&a, &b| {
+        found[b]
+            .distance
+            .total_cmp(&found[a].distance)
+            .then(a.cmp(&b))
+    });
+    for (rank, &k) in order.iter().take(worst).enumerate() {
+        let (q, f) = (points[k], &found[k]);
+        let signed = f
+            .signed
+            .map_or_else(String::new, |s| format!(" signed {s}"));
+        let _ = writeln!(
+            text,
+            "worst {} point {k} distance {}{signed} at {},{},{} face {} foot {},{},{}",
+            rank + 1,
+            f.distance,
+            q[0],
+            q[1],
+            q[2],
+            f.face,
+            f.point[0],
+            f.point[1],
+            f.point[2],
+        );
+    }
+    text
+}
+
+/// Writes the CSV report ([`REPORT_HEADER`]).
+fn write_report(
+    out: &mut dyn std::io::Write,
+    points: &[Point3],
+    found: &[ShapeNearest],
+) -> std::io::Result<()> {
+    let mut out = std::io::BufWriter::new(out);
+    writeln!(out, "{REPORT_HEADER}")?;
+    for (k, (q, f)) in points.iter().zip(found).enumerate() {
+        let signed = f.signed.map_or_else(String::new, |s| format!("{s:?}"));
+        writeln!(
+            out,
+            "{k},{:?},{:?},{:?},{:?},{signed},{},{:?},{:?},{:?},{:?},{:?},{}",
+            q[0],
+            q[1],
+            q[2],
+            f.distance,
+            f.face,
+            f.u,
+            f.v,
+            f.point[0],
+            f.point[1],
+            f.point[2],
+            u8::from(f.on_edge)
+        )?;
+    }
+    out.flush()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::percentile;
+
+    #[test]
+    fn percentiles_by_nearest_rank() {
+        let v: Vec<f64> = (1..=10).map(f64::from).collect();
+        assert_eq!(percentile(&v, 50.0), 5.0);
+        assert_eq!(percentile(&v, 90.0), 9.0);
+        assert_eq!(percentile(&v, 95.0), 10.0);
+        assert_eq!(percentile(&v, 99.9), 10.0);
+        assert_eq!(percentile(&[3.0], 50.0), 3.0);
+    }
+}
