@@ -5,6 +5,8 @@ stubtest-allowlist.txt). The docstrings of the module itself are the reference; 
 summaries.
 """
 
+from __future__ import annotations
+
 import os
 from typing import Any, List, Literal, Optional, Sequence, Tuple, Union, overload
 

@@ -5,7 +5,7 @@
         --dir CORPUS/files [--limit N] [--jobs 2]
 
 A file has a sharp trailing edge when its first and last points coincide within 1e-6 of the
-diagonal of the points' bounding box (the rule karkas applies, README "curve fit"); the
+diagonal of the points' bounding box (the rule karkas applies, docs/reference/contract.md, "curve fit"); the
 points are read back from `karkas curve spline FILE -o S.csv`, whose first and last samples
 are the first and last points. Each such file goes through
 

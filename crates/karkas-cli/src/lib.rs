@@ -14,9 +14,10 @@ mod cmd;
 mod demo;
 mod input;
 mod output;
+mod reference;
 
 use clap::error::ErrorKind;
-use clap::{Parser, Subcommand};
+use clap::{CommandFactory, Parser, Subcommand};
 use std::ffi::OsString;
 use std::process::ExitCode;
 
@@ -80,6 +81,19 @@ enum Command {
 /// and returns the exit status: 0 on success, 1 when a batch finished with failed inputs, 2
 /// on any error.
 pub fn run(args: impl IntoIterator<Item = OsString>) -> ExitCode {
+    let args: Vec<OsString> = args.into_iter().collect();
+    // `karkas --markdown-help`: the book's command-line reference (hidden; see `reference`).
+    if args.len() == 2 && args[1] == "--markdown-help" {
+        let text = reference::markdown(&Cli::command());
+        return match std::io::Write::write_all(&mut std::io::stdout(), text.as_bytes()) {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => ExitCode::SUCCESS,
+            Err(e) => {
+                eprintln!("karkas: error: standard output: {e}");
+                ExitCode::from(2)
+            }
+        };
+    }
     let cli = match Cli::try_parse_from(args) {
         Ok(cli) => cli,
         // --help, --version, and a command given without its subcommand: clap's own output.
@@ -135,5 +149,28 @@ pub fn run(args: impl IntoIterator<Item = OsString>) -> ExitCode {
             eprintln!("karkas: error: {}", output::message::error_line(&e));
             ExitCode::from(2)
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use clap::CommandFactory;
+
+    /// The committed command-line reference equals what the binary generates; after changing
+    /// a help text or adding an option, regenerate it with
+    /// `cargo run --release -- --markdown-help > docs/reference/command-line.md`.
+    #[test]
+    fn committed_reference_is_current() {
+        let path = concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/../../docs/reference/command-line.md"
+        );
+        let committed = std::fs::read_to_string(path).unwrap_or_default();
+        let generated = super::reference::markdown(&super::Cli::command());
+        assert!(
+            committed == generated,
+            "docs/reference/command-line.md is stale: regenerate it with \
+             `cargo run --release -- --markdown-help > docs/reference/command-line.md`"
+        );
     }
 }

@@ -30,7 +30,7 @@
 //! Lednicer counts; a Selig point has `x <= 1` on a unit chord. Both are returned in Selig
 //! order, one closed-looking loop, which is what a curve through the points wants.
 //!
-//! The reader takes one line at a time ([`AirfoilReader`]), so a file is read in one pass
+//! The reader takes one line at a time (`AirfoilReader`), so a file is read in one pass
 //! and only its points are kept.
 //!
 //! Hand-written: no crate reads these files, and the format is a few lines of whitespace

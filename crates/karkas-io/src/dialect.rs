@@ -18,7 +18,7 @@
 //!
 //! Hand-written: the `csv` crate reads one separator given in advance and no decimal commas;
 //! telling the dialect from the content is what this module adds (quoted fields are still
-//! read by the `csv` crate, [`split_fields`]).
+//! read by the `csv` crate, `split_fields`).
 
 use std::borrow::Cow;
 use std::fmt;

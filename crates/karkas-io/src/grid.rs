@@ -8,7 +8,7 @@
 //! formats; quoted fields are read with the `csv` crate, plain lines split at commas without
 //! it (no allocation per field, no map of cells: a million-cell grid reads in a fraction of a
 //! second). Cells in row-major order, as programs write them, go straight into the grid, and
-//! a large text of them is read in pieces in parallel ([`parse_in_order`]).
+//! a large text of them is read in pieces in parallel (`parse_in_order`).
 //!
 //! The same layout with other index names holds the skeleton curves of a tube
 //! (the `skeleton` module); the parser here serves both.

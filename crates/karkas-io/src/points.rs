@@ -14,12 +14,12 @@
 //!   are whitespace pairs (or the file is a `.dat`); followed by comma-separated rows it is
 //!   a CSV header that names no `x` and `y` columns, an error.
 //!
-//! Column files follow the rules of [`crate::columns`]: `#` comments and blank lines
+//! Column files follow the rules of `columns.rs`: `#` comments and blank lines
 //! skipped, notes after the data ignored, damaged rows refused naming their line.
 //!
 //! Every input is opened once and read in one pass ([`crate::input::Input`]; `-` is standard
 //! input, named `<stdin>` in messages), so pipes, FIFOs and `<(...)` work. Memory is the
-//! points themselves plus one line ([`crate::store`]), charged against the memory cap.
+//! points themselves plus one line (`store.rs`), charged against the memory cap.
 
 use std::io::BufRead;
 use std::path::Path;
@@ -73,7 +73,7 @@ impl CurvePoints {
 
 /// Curve points as read, and the warnings of the reader about them (one line each, without
 /// the file's name): a first column that counts the rows, points far out of order
-/// ([`crate::order_check`]), a header read in order.
+/// (`order_check.rs`), a header read in order.
 #[derive(Clone, Debug, PartialEq)]
 pub struct CurveRead<T> {
     /// The points.

@@ -13,7 +13,7 @@
 //! message ever names it: errors name only the destination.
 //!
 //! CSV is written with the `csv` crate. Numbers use Rust's shortest round-trip formatting of
-//! `f64` (`{}`, written fast by [`crate::shortest`]), so a file read back gives bit-identical
+//! `f64` (`{}`, written fast by `shortest.rs`), so a file read back gives bit-identical
 //! values.
 
 use std::fs::{File, OpenOptions};

@@ -1,6 +1,6 @@
 """Every method at every scale from Python: data times s in 1e-150..1e150 give s times the unit
 result; the fit in tolerance mode exactly at power-of-two scales; coordinates past 1e152 or
-below 1e-152 raise karkas.PointsError saying they are out of range (README, "Scale")."""
+below 1e-152 raise karkas.PointsError saying they are out of range (docs/reference/bad-input.md, "Scale")."""
 
 import numpy as np
 import pytest

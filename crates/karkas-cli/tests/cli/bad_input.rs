@@ -1,4 +1,4 @@
-//! The README's bad-input table, one test per row: the command, the input, the exact one-line
+//! The bad-input table (docs/reference/bad-input.md), one test per row: the command, the input, the exact one-line
 //! error (naming the file and line or cell) and exit status 2; an output file that existed
 //! before is left byte for byte as it was, and nothing panics. The huge- and tiny-coordinate
 //! rows are the cases that work: the methods are linear in the coordinates.

@@ -1,6 +1,6 @@
 //! Bodies as CAD takes them: a pole is a vertex (no edge), a closed direction one seam edge
 //! used twice, `--cap` closes planar open boundary loops, and a closed shell is a STEP solid
-//! whose volume the command reports (README, "Command line", `--cap`). Open CASCADE's reading
+//! whose volume the command reports (docs/reference/contract.md, `--cap`). Open CASCADE's reading
 //! of the same files (BRepCheck, areas, volumes) is checked by tests/cad/check_bodies.py.
 
 use crate::common::{grid_csv, karkas, s, stderr, temp_dir, write};

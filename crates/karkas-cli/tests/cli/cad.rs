@@ -1,5 +1,5 @@
 //! The CLI contract of the exact CAD outputs: `.step`/`.stp` and `.iges`/`.igs` for every
-//! command whose result is a piecewise polynomial (README, "Command line"); a clear error for
+//! command whose result is a piecewise polynomial (docs/reference/contract.md); a clear error for
 //! the discrete periodic splines and for Coons networks without an exact form.
 
 use crate::common::{grid_csv, karkas, s, stderr, temp_dir, write};

@@ -1,7 +1,7 @@
 //! Closed profiles: a first and last point that coincide (a sharp trailing edge) close every
 //! curve method's curve at that point; `--free-ends` keeps a fit's ends free; an option that
-//! closes a curve whose ends miss each other by a little warns with the distance (README,
-//! "curve fit", "Closed profiles").
+//! closes a curve whose ends miss each other by a little warns with the distance
+//! (docs/reference/contract.md, "curve fit", "Closed profiles").
 
 use crate::common::{assert_rejected, karkas, read_csv, s, stderr, temp_dir, write};
 

@@ -1,4 +1,4 @@
-//! The CLI contract of `karkas curve ll` and `karkas surface ll` (README, "Command line"):
+//! The CLI contract of `karkas curve ll` and `karkas surface ll` (docs/reference/contract.md):
 //! options, CSV headers, parameters, and exit code 2 with no output on bad input.
 
 use crate::common::{assert_rejected, karkas, read_csv, s, stderr, temp_dir, write};

@@ -1,4 +1,4 @@
-//! Every command at every scale (README, "Scale"): data multiplied by `s` anywhere in
+//! Every command at every scale (docs/reference/bad-input.md, "Scale"): data multiplied by `s` anywhere in
 //! 1e-150..1e150 give the unit result times `s` (lengths), `s^0` (parameters of uniform
 //! rules, counts), or another power (curvature `1/s`), to 1e-12 relative; coordinates past
 //! the limits (largest magnitude above 1e152 or below 1e-152) are refused with exit 2 and a

@@ -1,4 +1,4 @@
-//! The CLI contract of `karkas section` (README, "Command line"): options, the CSV header
+//! The CLI contract of `karkas section` (docs/reference/contract.md): options, the CSV header
 //! `section,t,x,y,z`, section numbering, pictures, and exit code 2 with no output on bad input.
 
 use crate::common::{assert_rejected, grid_csv, karkas, read_csv, s, stderr, temp_dir, write};

@@ -1,4 +1,4 @@
-//! The CLI contract of `karkas vary` (README, "Command line"): the varied grid meets the sums,
+//! The CLI contract of `karkas vary` (docs/reference/contract.md): the varied grid meets the sums,
 //! keeps the mask's cells and the other coordinates, and bad input exits 2 with no output.
 
 use crate::common::{assert_rejected, grid_csv, karkas, read_csv, s, stderr, temp_dir, write};

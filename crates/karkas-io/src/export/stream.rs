@@ -2,7 +2,7 @@
 //! CSV, and `.npy` arrays, in blocks of [`BLOCK`] samples.
 //!
 //! Each block is evaluated (the library's batch evaluation, itself parallel), formatted in
-//! parallel chunks into byte buffers ([`crate::shortest`] for the numbers), and written in
+//! parallel chunks into byte buffers (`shortest.rs` for the numbers), and written in
 //! order before the next block starts: memory stays a few megabytes whatever the number of
 //! samples, and the file is the one [`write_curve_csv`](crate::write::write_curve_csv) and
 //! [`write_surface_csv`](crate::write::write_surface_csv) write from samples held in memory,

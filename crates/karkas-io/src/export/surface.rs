@@ -81,7 +81,7 @@ fn is_body(nu: usize, nv: usize, samples: &[Point3]) -> bool {
 }
 
 /// Samples `surface` at the parameters `us` x `vs` (e.g. those of
-/// [`karkas::geometry::mesh_parameters`], for a mesh within a tolerance) and writes the
+/// [`karkas::geometry::mesh_parameters()`], for a mesh within a tolerance) and writes the
 /// samples at `output` in `format` as [`write_surface`] writes a grid.
 pub fn write_surface_at(
     surface: &impl Surface<3>,

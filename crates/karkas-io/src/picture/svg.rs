@@ -1,7 +1,7 @@
 //! A picture of a planar curve over the points it was made from, as SVG.
 //!
 //! SVG because it opens in every browser and stays sharp at any zoom. Drawn on a
-//! [`Chart`](crate::picture::chart::Chart) into a string in memory (coordinates to a
+//! [`Chart`] into a string in memory (coordinates to a
 //! hundredth of a pixel, ticks and labels in model units), then written with
 //! [`write_atomic`]. The axes have equal scales (a circle looks round), so the picture shows
 //! the true shape of the curve: the plot ranges are the bounding box of curve and points

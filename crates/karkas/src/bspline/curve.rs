@@ -127,6 +127,17 @@ impl<const D: usize> BSplineCurve<D> {
     /// Errors: degree 0, fewer than `degree + 1` control points, a knot count that does not
     /// match, knots that are not finite, decrease, are not clamped, span an empty domain or
     /// repeat more than `degree` times inside; a non-finite control point.
+    ///
+    /// ```
+    /// use karkas::bspline::BSplineCurve;
+    /// use karkas::{Curve, Point};
+    ///
+    /// // The quadratic Bezier arc from (0, 0) to (2, 0) with its middle control point at (1, 2).
+    /// let control = vec![Point([0.0, 0.0]), Point([1.0, 2.0]), Point([2.0, 0.0])];
+    /// let curve = BSplineCurve::new(2, vec![0.0, 0.0, 0.0, 1.0, 1.0, 1.0], control)?;
+    /// assert!(curve.eval(0.5).distance(Point([1.0, 1.0])) < 1e-12);
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn new(degree: usize, knots: Vec<f64>, control: Vec<Point<D>>) -> Result<Self> {
         check_knots(degree, &knots, control.len())?;
         if let Some(index) = control.iter().position(|p| !p.is_finite()) {

@@ -10,7 +10,7 @@ use crate::{Error, Point, Result};
 
 /// A rational B-spline curve of degree `p`: control points `P_i`, positive weights `w_i` and
 /// a nondecreasing knot vector of `n + p + 1` values (clamped or not; see
-/// [`check_general_knots`](super::rational)).
+/// `check_general_knots` in `bspline/rational.rs`).
 ///
 /// The domain is `[knots[p], knots[n]]`; outside it an open curve continues its end pieces
 /// (rational functions, whose denominator may vanish far away) and a closed one wraps the

@@ -47,6 +47,15 @@ impl<const D: usize> PolylineCurve<D> {
     /// `t_{K-1} = 1`, steps proportional to the distances between consecutive points.
     ///
     /// Errors: as [`new`](Self::new); two consecutive points that coincide.
+    ///
+    /// ```
+    /// use karkas::coons::PolylineCurve;
+    /// use karkas::{Curve, Point};
+    ///
+    /// let line = PolylineCurve::chord_length(&[Point([0.0, 0.0]), Point([3.0, 0.0]), Point([3.0, 1.0])])?;
+    /// assert!(line.eval(0.75).distance(Point([3.0, 0.0])) < 1e-12); // 3 of the length 4
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn chord_length(points: &[Point<D>]) -> Result<Self> {
         if let Some(index) = points.iter().position(|p| !p.is_finite()) {
             return Err(Error::NonFinitePoint { index });

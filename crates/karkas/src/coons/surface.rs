@@ -128,6 +128,28 @@ impl<const D: usize> CoonsSurface<D> {
     ///
     /// `compatibility` is a tolerance (`f64`, [`Compatibility::Check`]) or
     /// [`Compatibility::Repair`].
+    ///
+    /// The bilinear Coons patch of four straight edges (Lagrange blending on the nodes 0 and 1) is
+    /// the hyperbolic paraboloid through the corners:
+    ///
+    /// ```
+    /// use std::sync::Arc;
+    /// use karkas::coons::{curve_ref, CoonsSurface, FamilyRef, LagrangeBlending, PolylineCurve};
+    /// use karkas::{Point, Surface};
+    ///
+    /// let edge = |a: [f64; 3], b: [f64; 3]| -> karkas::Result<_> {
+    ///     Ok(curve_ref(PolylineCurve::new(&[Point(a), Point(b)], &[0.0, 1.0])?))
+    /// };
+    /// let (p00, p10, p01, p11) = ([0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [1.0, 1.0, 1.0]);
+    /// let u: FamilyRef = Arc::new(LagrangeBlending::new(&[0.0, 1.0])?);
+    /// let v: FamilyRef = Arc::new(LagrangeBlending::new(&[0.0, 1.0])?);
+    /// let v_curves = vec![edge(p00, p01)?, edge(p10, p11)?]; // at u = 0 and u = 1
+    /// let u_curves = vec![edge(p00, p10)?, edge(p01, p11)?]; // at v = 0 and v = 1
+    /// let patch = CoonsSurface::new(u, v, v_curves, u_curves, 1e-9)?;
+    /// let mid = patch.eval(0.5, 0.5);
+    /// assert!((mid.0[2] - 0.25).abs() < 1e-12); // z = u v
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn new(
         u_family: FamilyRef,
         v_family: FamilyRef,

@@ -15,6 +15,15 @@ pub struct Grid<T> {
 
 impl<T> Grid<T> {
     /// Wraps row-major `data`; fails unless `data.len() == rows * cols`.
+    ///
+    /// ```
+    /// use karkas::Grid;
+    ///
+    /// let grid = Grid::from_row_major(2, 2, vec![1, 2, 3, 4])?;
+    /// assert_eq!(*grid.get(1, 0), 3);
+    /// assert!(Grid::from_row_major(2, 3, vec![1, 2, 3]).is_err());
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn from_row_major(rows: usize, cols: usize, data: Vec<T>) -> Result<Self, Error> {
         if rows.checked_mul(cols) != Some(data.len()) {
             return Err(Error::GridShape {
@@ -27,6 +36,14 @@ impl<T> Grid<T> {
     }
 
     /// A grid filled by `f(i, j)`.
+    ///
+    /// ```
+    /// use karkas::Grid;
+    ///
+    /// let grid = Grid::from_fn(2, 3, |i, j| 10 * i + j);
+    /// assert_eq!((grid.rows(), grid.cols()), (2, 3));
+    /// assert_eq!(*grid.get(1, 2), 12);
+    /// ```
     pub fn from_fn(rows: usize, cols: usize, mut f: impl FnMut(usize, usize) -> T) -> Self {
         let mut data = Vec::with_capacity(rows * cols);
         for i in 0..rows {

@@ -11,6 +11,15 @@ pub struct Interval {
 
 impl Interval {
     /// The interval `[start, end]`.
+    ///
+    /// ```
+    /// use karkas::Interval;
+    ///
+    /// let domain = Interval::new(0.0, 2.0);
+    /// assert_eq!(domain.length(), 2.0);
+    /// assert!(domain.contains(1.5));
+    /// assert_eq!(domain.uniform(1, 3), 1.0); // the middle of three uniform parameters
+    /// ```
     pub const fn new(start: f64, end: f64) -> Self {
         Interval { start, end }
     }

@@ -36,6 +36,14 @@ impl<const D: usize> Point<D> {
 
     /// Wraps coordinates.
     #[inline]
+    ///
+    /// ```
+    /// use karkas::Point;
+    ///
+    /// let p = Point::new([3.0, 4.0]);
+    /// assert_eq!(p, Point([3.0, 4.0]));
+    /// assert_eq!(p.norm(), 5.0);
+    /// ```
     pub const fn new(coords: [f64; D]) -> Self {
         Point(coords)
     }

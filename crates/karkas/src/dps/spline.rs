@@ -60,6 +60,22 @@ impl<const D: usize> DiscreteSpline<D> {
     /// `sum_j ||Delta^r x(j)||^2` (the extremal property of the paper).
     ///
     /// Errors: as [`from_poles`](Self::from_poles).
+    ///
+    /// ```
+    /// use karkas::dps::DiscreteSpline;
+    /// use karkas::Point;
+    ///
+    /// // A closed discrete curve of order 3 through 6 nodes, 10 values between nodes.
+    /// let nodes: Vec<Point<2>> = (0..6)
+    ///     .map(|k| {
+    ///         let a = std::f64::consts::TAU * k as f64 / 6.0;
+    ///         Point([a.cos(), a.sin()])
+    ///     })
+    ///     .collect();
+    /// let spline = DiscreteSpline::interpolating(&nodes, 3, 10)?;
+    /// assert_eq!(spline.poles().len(), 6);
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn interpolating(nodes: &[Point<D>], order: usize, n: usize) -> Result<Self> {
         let mut plan = InterpolationPlan::new(nodes.len(), n, order)?;
         let mut poles = vec![Point::ZERO; nodes.len()];

@@ -23,7 +23,7 @@
 //! ([`FairOptions::corners`]) split the curve into pieces faired apart and joined `C^0`
 //! at the corner points (triple knots).
 //!
-//! Method (see [`solver`] and [`objective`]): the points are centred and scaled to size one
+//! Method (see `fair/solver.rs` and `fair/objective.rs`): the points are centred and scaled to size one
 //! (so that the result moves with the points and does not depend on their units),
 //! parameterized by chord length; a least-squares spline, reweighted until every point is
 //! within `0.9 T` of its parameter's point, starts a logarithmic-barrier method on

@@ -146,6 +146,25 @@ pub struct AdaptiveFit<const D: usize> {
 ///
 /// Errors: a tolerance that is not positive and finite ([`Error::InvalidSetting`]), and those
 /// of [`fit_curve`](super::fit_curve) for the first fit.
+///
+/// A sine arc fitted to 1e-5 with as few knots as that needs:
+///
+/// ```
+/// use karkas::fit::{fit_curve_adaptive, FitOptions};
+/// use karkas::Point;
+///
+/// let points: Vec<Point<2>> = (0..=60)
+///     .map(|k| {
+///         let x = k as f64 / 60.0;
+///         Point([x, (3.0 * x).sin()])
+///     })
+///     .collect();
+/// let result = fit_curve_adaptive(&points, 1e-5, &FitOptions::default())?;
+/// assert!(result.tolerance_met);
+/// assert!(result.fit.distances.iter().all(|&d| d <= 1e-5));
+/// assert!(result.fit.spline.knots().len() < 20);
+/// # Ok::<(), karkas::Error>(())
+/// ```
 pub fn fit_curve_adaptive<const D: usize>(
     points: &[Point<D>],
     tolerance: f64,

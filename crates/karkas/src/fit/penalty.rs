@@ -177,7 +177,7 @@ pub enum FitEnds {
     /// are pinned at that point, so that the curve closes there with a corner; other ends of
     /// a noisy fit are held on their tangent lines where the points towards them say they lie
     /// (noisy points beyond an end pull it outward; two ends that the noise does not tell
-    /// apart are held at their common point: [`super::ends`]); the ends of a fit on exact
+    /// apart are held at their common point: `fit/ends.rs`); the ends of a fit on exact
     /// points lie where the foot points put them.
     #[default]
     Auto,
@@ -343,6 +343,24 @@ pub(crate) fn check_settings(options: &FitOptions) -> Result<()> {
 /// [`Error::SingularSystem`] when the points cannot determine the spline (possible only
 /// without the bending term, `fairness: 0`: the unconstrained fit then needs points on every
 /// piece, about three per pair of neighbouring pieces).
+///
+/// Forty-one points of a half circle on five uniform knots:
+///
+/// ```
+/// use karkas::fit::{fit_curve, FitOptions};
+/// use karkas::{Curve, Point};
+///
+/// let points: Vec<Point<2>> = (0..=40)
+///     .map(|k| {
+///         let a = std::f64::consts::PI * k as f64 / 40.0;
+///         Point([a.cos(), a.sin()])
+///     })
+///     .collect();
+/// let fit = fit_curve(&points, &[0.0, 0.25, 0.5, 0.75, 1.0], &FitOptions::default())?;
+/// assert!(fit.distances.iter().all(|&d| d < 1e-3));
+/// assert!((fit.spline.eval(0.5).norm() - 1.0).abs() < 1e-3);
+/// # Ok::<(), karkas::Error>(())
+/// ```
 pub fn fit_curve<const D: usize>(
     points: &[Point<D>],
     knots: &[f64],

@@ -75,7 +75,7 @@ pub fn area_vector(curve: &impl Curve<3>, breaks: &[f64], pieces: usize) -> Poin
 /// A plane: a point on it and its unit normal.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Plane {
-    /// A point of the plane (for [`best_plane`], the points' centroid).
+    /// A point of the plane (for [`polygon_plane`], the points' centroid).
     pub origin: Point3,
     /// The unit normal.
     pub normal: Point3,

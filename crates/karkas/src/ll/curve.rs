@@ -54,6 +54,17 @@ impl<const D: usize> LlCurve<D> {
     ///
     /// Errors: fewer than 3 points (3 distinct ones when closed), a non-finite coordinate,
     /// `order` outside `1..=64`.
+    ///
+    /// ```
+    /// use karkas::{ll::LlCurve, Curve, Point};
+    ///
+    /// let pts = [Point([0.0, 0.0]), Point([1.0, 1.0]), Point([2.0, 0.0]), Point([3.0, 1.0])];
+    /// let curve = LlCurve::new(&pts, 5, false)?; // order 5: C^5, open
+    /// let d = curve.domain(); // [1/5, 4/5]: the first and last nodes
+    /// assert!(curve.eval(d.start).distance(pts[0]) < 1e-12);
+    /// assert!(curve.eval(d.end).distance(pts[3]) < 1e-12);
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn new(points: &[Point<D>], order: usize, closed: bool) -> Result<Self> {
         let kernel = LlKernel::new(order)?;
         let control = Self::support_polygon(points, closed)?;
@@ -63,6 +74,18 @@ impl<const D: usize> LlCurve<D> {
     /// The interpolating LL curve: passes through every point of `points` at its node
     /// `t_i = i/(K+1)`. The control polygon is found by the `O(K)` solve of system (6).
     /// Same closing rule and errors as [`new`](Self::new).
+    ///
+    /// ```
+    /// use karkas::{ll::LlCurve, Curve, Point};
+    ///
+    /// let pts = [Point([0.0, 0.0]), Point([1.0, 1.0]), Point([2.0, 0.0]), Point([3.0, 1.0])];
+    /// let curve = LlCurve::interpolating(&pts, 3, false)?;
+    /// for (i, p) in pts.iter().enumerate() {
+    ///     let node = (i + 1) as f64 / (pts.len() + 1) as f64; // t_i = i / (K + 1), from 1
+    ///     assert!(curve.eval(node).distance(*p) < 1e-12);
+    /// }
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn interpolating(points: &[Point<D>], order: usize, closed: bool) -> Result<Self> {
         let kernel = LlKernel::new(order)?;
         let mut control = Self::support_polygon(points, closed)?;

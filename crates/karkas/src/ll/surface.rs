@@ -43,6 +43,18 @@ impl<const D: usize> LlSurface<D> {
     ///
     /// Errors: fewer than 3 rows or columns (3 distinct when closed), a non-finite point
     /// (named by its cell), `order` outside `1..=64`.
+    ///
+    /// ```
+    /// use karkas::{ll::LlSurface, Grid, Point, Surface};
+    ///
+    /// // A 6 x 8 grid of the plane z = x + y: the LL surface of a plane is that plane.
+    /// let grid = Grid::from_fn(6, 8, |i, j| Point([i as f64, j as f64, (i + j) as f64]));
+    /// let surface = LlSurface::new(&grid, 3, false, false)?;
+    /// let (u, v) = (surface.domain_u().uniform(3, 7), surface.domain_v().uniform(2, 5));
+    /// let p = surface.eval(u, v);
+    /// assert!((p.0[2] - (p.0[0] + p.0[1])).abs() < 1e-9);
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn new(
         grid: &Grid<Point<D>>,
         order: usize,

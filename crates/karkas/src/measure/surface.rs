@@ -127,7 +127,7 @@ pub const PATCH_LATTICE_STEPS: usize = 64;
 /// (patch to set): the patch is the part of `F = 0` inside the points' axis-aligned bounding
 /// box, together with the closest points on `F = 0` of the points themselves. It is sampled
 /// by the projections ([`project_onto`]) of the nodes of a lattice over the box, with
-/// [`PATCH_LATTICE_STEPS`] steps `h` along its largest side (at most `h` along the others, a
+/// `PATCH_LATTICE_STEPS` (64) steps `h` along its largest side (at most `h` along the others, a
 /// single node across a flat side), from the nodes whose first-order distance `|F| / |grad F|` is at most
 /// `2 h`, kept where they fall in the box; each sample's distance to its nearest point of the
 /// set is exact, so the backward distance is that of the samples, below the patch's own by at

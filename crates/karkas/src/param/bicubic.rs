@@ -62,6 +62,20 @@ impl<const D: usize> BicubicSurface<D> {
     /// (named by its cell), coincident consecutive lines ([`Error::CoincidentGridLines`]),
     /// parameters closer than `1e-12` of their span ([`Error::InvalidKnot`], e.g. from one far
     /// outlier).
+    ///
+    /// ```
+    /// use karkas::param::{BicubicSurface, GridParameterization};
+    /// use karkas::{Grid, Point, Surface};
+    ///
+    /// // Nodes of z = x y on a 5 x 7 grid; uniform parameters u = i, v = j.
+    /// let grid = Grid::from_fn(5, 7, |i, j| Point([i as f64, j as f64, (i * j) as f64]));
+    /// let surface = BicubicSurface::new(&grid, GridParameterization::Uniform, false, false)?;
+    /// let p = surface.eval(2.0, 3.0); // a node: the surface passes through it
+    /// assert!(p.distance(Point([2.0, 3.0, 6.0])) < 1e-12);
+    /// let q = surface.eval(1.5, 2.5); // between nodes: a bicubic reproduces x y exactly
+    /// assert!((q.0[2] - 1.5 * 2.5).abs() < 1e-12);
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn new(
         grid: &Grid<Point<D>>,
         parameterization: GridParameterization,

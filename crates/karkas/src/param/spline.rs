@@ -46,6 +46,18 @@ impl<const D: usize> CubicSpline<D> {
     /// the smallest gap), a non-finite value or clamped end derivative, and for periodic
     /// ends a last value that does not repeat the first (relative tolerance `1e-12`,
     /// [`Error::OpenPeriodicData`]).
+    ///
+    /// ```
+    /// use karkas::param::{CubicSpline, SplineEnds};
+    /// use karkas::{Curve, Point};
+    ///
+    /// // Not-a-knot ends reproduce a cubic: y = x^3 through five points.
+    /// let knots = [0.0, 1.0, 2.0, 3.0, 4.0];
+    /// let values: Vec<Point<1>> = knots.iter().map(|&x: &f64| Point([x.powi(3)])).collect();
+    /// let spline = CubicSpline::new(&knots, &values, SplineEnds::NotAKnot)?;
+    /// assert!((spline.eval(2.5).0[0] - 2.5f64.powi(3)).abs() < 1e-12);
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn new(knots: &[f64], values: &[Point<D>], ends: SplineEnds<D>) -> Result<Self> {
         Self::from_owned(knots.to_vec(), values.to_vec(), ends, false)
     }
@@ -138,6 +150,25 @@ impl<const D: usize> CubicSpline<D> {
     /// appended.
     ///
     /// Errors: those of [`curve_parameters`] and [`new`](Self::new).
+    ///
+    /// ```
+    /// use karkas::param::{CubicSpline, CurveParameterization, SplineEnds};
+    /// use karkas::{Curve, Point};
+    ///
+    /// // A closed curve through eight points of the unit circle, C^2 across the seam.
+    /// let pts: Vec<Point<2>> = (0..8)
+    ///     .map(|k| {
+    ///         let a = std::f64::consts::TAU * k as f64 / 8.0;
+    ///         Point([a.cos(), a.sin()])
+    ///     })
+    ///     .collect();
+    /// let curve = CubicSpline::through(&pts, CurveParameterization::ChordLength, SplineEnds::Periodic)?;
+    /// assert!(curve.is_closed());
+    /// let d = curve.domain();
+    /// assert!(curve.eval(d.start).distance(curve.eval(d.end)) < 1e-12);
+    /// assert!((curve.eval(d.uniform(1, 3)).norm() - 1.0).abs() < 1e-2);
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn through(
         points: &[Point<D>],
         parameterization: CurveParameterization,
