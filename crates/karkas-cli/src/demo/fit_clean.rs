@@ -196,31 +196,4 @@ mod tests {
             clean.fit.jump_sum
         );
     }
-
-    /// The points are exact (on the closed-form section), so the noise reads 0 and the default
-    /// fit is the paper's method (`--smoothing 0`) to round-off: its largest deviation 0.0175 and
-    /// 0.050 from the true contour, the figures of an independent rebuild of the paper's method
-    /// (a chord-residual noise estimate made the default fit ten times worse: 0.171 and 0.345).
-    #[test]
-    fn the_default_fit_of_the_clean_points_is_the_papers_method() {
-        let clean = clean_fit().unwrap();
-        assert_eq!(clean.fit.noise.sigma, 0.0, "{:?}", clean.fit.noise);
-        let paper = fit_curve(
-            &clean.points,
-            &KNOTS,
-            &FitOptions {
-                eps: EPS,
-                smoothing: Some(0.0),
-                ..Default::default()
-            },
-        )
-        .unwrap();
-        let size = clean.fit.noise.size;
-        for (a, b) in clean.fit.spline.values().iter().zip(paper.spline.values()) {
-            assert!(a.distance(*b) <= 1e-9 * size, "{a:?} {b:?}");
-        }
-        assert!((clean.fit.max_distance() / 0.0175 - 1.0).abs() < 0.02);
-        let truth = clean.fit_to_truth.0.max(clean.truth_to_fit.0);
-        assert!((truth / 0.050 - 1.0).abs() < 0.03, "{truth}");
-    }
 }

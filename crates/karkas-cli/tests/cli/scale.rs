@@ -6,8 +6,7 @@
 //!
 //! The tolerance mode of `curve fit` is compared at power-of-two scales, where the scaled
 //! input is exact: it decides to add and remove knots, and its result moves by about 2e-11
-//! when the unit points are perturbed by one ulp, which a decimal scale's rounding does. So is
-//! the fit on given knots of exact points (see [`exact_scale`]).
+//! when the unit points are perturbed by one ulp, which a decimal scale's rounding does.
 
 use crate::common::{karkas, s, stderr, stdout, temp_dir, write};
 use proptest::prelude::*;
@@ -165,24 +164,6 @@ fn scaled_difference(unit: &Output, scaled: &Output, scale: f64) -> Option<f64> 
 struct Job {
     name: &'static str,
     run: fn(&Path, f64) -> Result<Output, String>,
-    /// Compared at the power of two nearest the scale towards 1 (see [`exact_scale`]).
-    power_of_two: bool,
-}
-
-/// The scale a job is compared at: `scale` itself, or for a job marked `power_of_two` the
-/// power of two next to it towards 1, where the scaled input is exact. The fit on given
-/// knots of the 15 exact points of [`curve_rows`] is the paper's method (the noise estimate
-/// reads them as exact), whose objective is nearly flat along the curve (the foot points
-/// slide, held only by the fairness floor): its result moves by up to 1.3e-10 of the size
-/// when the unit points are perturbed by one ulp (measured over three random perturbations;
-/// 2e-13 with `--fairness 1e-7`), which a decimal scale's rounding does; at powers of two
-/// it is equivariant to round-off, like the tolerance mode.
-fn exact_scale(job: &Job, scale: f64) -> f64 {
-    if job.power_of_two {
-        2f64.powi(scale.log2().trunc() as i32)
-    } else {
-        scale
-    }
 }
 
 /// Runs `args` and reads the output file `out` (CSV) or, when `out` is `None`, standard output.
@@ -284,47 +265,38 @@ fn analyze_json(input: &Path) -> Result<serde_json::Value, String> {
 const JOBS: &[Job] = &[
     Job {
         name: "curve ll",
-        power_of_two: false,
         run: |d, k| curve_job(d, k, &["curve", "ll"]),
     },
     Job {
         name: "curve ll --interpolate",
-        power_of_two: false,
         run: |d, k| curve_job(d, k, &["curve", "ll", "--interpolate"]),
     },
     Job {
         name: "curve dps",
-        power_of_two: false,
         run: |d, k| curve_job(d, k, &["curve", "dps", "--order", "2", "--n", "4"]),
     },
     Job {
         name: "curve spline",
-        power_of_two: false,
         run: |d, k| curve_job(d, k, &["curve", "spline"]),
     },
     Job {
         name: "curve fit --knots",
-        power_of_two: true,
         run: |d, k| curve_job(d, k, &["curve", "fit", "--knots", "5"]),
     },
     Job {
         name: "curve analyze --json",
-        power_of_two: false,
         run: analyze_job,
     },
     Job {
         name: "surface ll",
-        power_of_two: false,
         run: |d, k| grid_job(d, k, &["surface", "ll"], &[]),
     },
     Job {
         name: "surface bicubic",
-        power_of_two: false,
         run: |d, k| grid_job(d, k, &["surface", "bicubic"], &[]),
     },
     Job {
         name: "surface coons --kind gordon",
-        power_of_two: false,
         run: |d, k| {
             let (u, v) = network_rows();
             let u = write_scaled(d, "u.csv", "curve,x,y,z", &u, 1, k);
@@ -335,7 +307,6 @@ const JOBS: &[Job] = &[
     },
     Job {
         name: "section",
-        power_of_two: false,
         run: |d, k| {
             grid_job(
                 d,
@@ -347,7 +318,6 @@ const JOBS: &[Job] = &[
     },
     Job {
         name: "vary",
-        power_of_two: false,
         run: |d, k| {
             let rows: Vec<String> = (0..6)
                 .map(|r| format!("{:e}", 0.1 * k * r as f64))
@@ -370,7 +340,6 @@ const JOBS: &[Job] = &[
     },
     Job {
         name: "hausdorff",
-        power_of_two: false,
         run: |d, k| {
             let a = write_scaled(d, "a.csv", "x,y,z", &curve_rows(), 0, k);
             // Shifted by different amounts, so that one point is farthest (no ties).
@@ -388,7 +357,6 @@ const JOBS: &[Job] = &[
 /// Runs every job at unit scale and at `scale`; each must agree to `tolerance`.
 fn check_every_job(scale: f64, tolerance: f64) -> Result<(), TestCaseError> {
     for job in JOBS {
-        let scale = exact_scale(job, scale);
         let (unit_dir, scaled_dir) = (temp_dir(), temp_dir());
         let unit = (job.run)(unit_dir.path(), 1.0)
             .map_err(|e| TestCaseError::fail(format!("{}: {e}", job.name)))?;
@@ -444,7 +412,6 @@ fn coordinates_at_the_limits_work_and_past_them_are_refused() {
         .filter(|j| j.name.starts_with("curve") || j.name == "hausdorff")
     {
         for scale in [within_high, within_low] {
-            let scale = exact_scale(job, scale);
             let (unit_dir, scaled_dir) = (temp_dir(), temp_dir());
             let unit = (job.run)(unit_dir.path(), 1.0).unwrap();
             let scaled = (job.run)(scaled_dir.path(), scale)

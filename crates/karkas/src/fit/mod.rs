@@ -70,7 +70,6 @@ mod hermite;
 mod knots;
 mod newton;
 mod noise;
-mod noise_ladder;
 mod order;
 mod penalty;
 mod power;

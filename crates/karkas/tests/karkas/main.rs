@@ -25,7 +25,6 @@ mod fit_guards;
 mod fit_limits;
 mod fit_naca;
 mod fit_noise;
-mod fit_noise_exact;
 mod fit_optimality;
 mod fit_parallel;
 mod fit_translation;
