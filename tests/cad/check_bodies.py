@@ -178,10 +178,13 @@ def loft_table(folder):
 
 def closed_mesh_volume(csv_path):
     """The volume of the sampled surface (u,v,x,y,z, u outer) closed by fans at its first and
-    last rows (the caps), by the divergence theorem on its triangles."""
+    last rows (the caps), by the divergence theorem on its triangles. The first column is
+    repeated after the last: the strip between them closes a blunt trailing edge (and has no
+    area where the two coincide)."""
     data = np.loadtxt(csv_path, delimiter=",", skiprows=1)
     nu = len(np.unique(data[:, 0]))
     p = data[:, 2:].reshape(nu, -1, 3)
+    p = np.concatenate([p, p[:, :1]], axis=1)
     a, b, c, d = p[:-1, :-1], p[1:, :-1], p[1:, 1:], p[:-1, 1:]
     six = (np.einsum("...i,...i", a, np.cross(b, c)) + np.einsum("...i,...i", a, np.cross(c, d)))
     total = float(six.sum())
@@ -293,6 +296,10 @@ def main():
     cases.append(("aircraft-ll-capped", "aircraft",
                   ["surface", "ll", "--closed-v", "--cap", aircraft]))
     cases.append(("wing-loft-capped", "loft", ["loft", "--cap", loft_table(folder)]))
+    # The shipped wing: three NACA files with blunt trailing edges, tapered, twisted, swept
+    # and with dihedral; --cap adds the flat trailing-edge face and closes root and tip.
+    cases.append(("wing-loft-blunt-capped", "loft",
+                  ["loft", "--cap", os.path.join(ROOT, "data", "loft-wing", "wing.csv")]))
     failures = 0
     for name, grid, command in cases:
         started = time.monotonic()

@@ -2,19 +2,19 @@
 //! wind-turbine blade through the airfoils of a windIO turbine file (docs/methods.md §7).
 
 use crate::args::{CadOptions, CapOption, GridSamples, MeshOutput};
-use crate::output::cad::write_cad_surface;
+use crate::output::cad::write_cad_faces;
 use crate::output::console::{note, record_all};
 use crate::output::formats::EXACT_SURFACE_FORMATS;
 use crate::output::surface::{write_capped_mesh, write_sampled_surface};
 use crate::output::target::{output_format, shown};
 use anyhow::{anyhow, bail, Context, Result};
 use clap::Args;
-use karkas::bspline::BSplineCurve;
+use karkas::bspline::{BSplineCurve, BSplineSurface, ToBSplineSurface};
 use karkas::loft::{
     Loft, LoftOptions, LoftSection, Profile, SectionFrame, SpanRule, WingPlacement,
     DEFAULT_TOLERANCE,
 };
-use karkas::{Curve, Point2, Point3};
+use karkas::{Curve, Grid, Point2, Point3, Surface};
 use karkas_io::cad::{iges, step, CadEntity};
 use karkas_io::offsets_table::read_offsets_table;
 use karkas_io::points::{read_curve_points, CurvePoints};
@@ -207,9 +207,18 @@ pub fn run(args: &LoftArgs) -> Result<()> {
         write_sections(path, f, cuts)?;
     }
     let title = format!("loft of {} sections ({})", stations.len(), args.span.name());
+    let blunt = args.cap.cap && blunt_trailing_edge(&loft);
     if format.is_cad() {
-        write_cad_surface(
-            &loft,
+        let bspline = loft
+            .to_bspline()
+            .with_context(|| table.display().to_string())?;
+        let strip = match blunt {
+            true => vec![trailing_edge_strip(&bspline)?],
+            false => Vec::new(),
+        };
+        write_cad_faces(
+            &bspline,
+            &strip,
             format,
             &args.output,
             &args.cad,
@@ -228,6 +237,7 @@ pub fn run(args: &LoftArgs) -> Result<()> {
                 format,
                 &args.output,
                 &args.mesh.options(false),
+                blunt,
             )?;
         } else {
             write_sampled_surface(
@@ -443,4 +453,41 @@ fn parse_stations(text: &str) -> Result<Stations, String> {
         })
         .collect::<Result<Vec<f64>, String>>()
         .map(Stations)
+}
+
+/// Whether every section's trailing edge is blunt: the surface's edges `v = 0` (upper trailing
+/// edge) and `v = 1` (lower) apart at every station, by more than 1e-9 of the wing's size. A
+/// wing that is sharp somewhere keeps its edges (a sharp edge closes by itself).
+fn blunt_trailing_edge(loft: &Loft) -> bool {
+    let (span, section) = (loft.domain_u(), loft.domain_v());
+    let (first, last) = (span.start, span.end);
+    let (upper, lower) = (section.start, section.end);
+    let size = loft
+        .eval(first, upper)
+        .distance(loft.eval(last, upper))
+        .max(
+            loft.eval(first, upper)
+                .distance(loft.eval(first, 0.5 * (upper + lower))),
+        );
+    (0..=64).all(|k| {
+        let u = first + (last - first) * k as f64 / 64.0;
+        loft.eval(u, upper).distance(loft.eval(u, lower)) > 1e-9 * size
+    })
+}
+
+/// The flat face of a blunt trailing edge: the ruled surface from the lower trailing-edge line
+/// (`v = 1` of `wing`) to the upper one (`v = 0`), on `wing`'s span knots and with its
+/// trailing-edge control points, so that the two faces share their edges exactly and `--cap`
+/// closes the root and the tip by planar faces (section plus edge segment).
+fn trailing_edge_strip(wing: &BSplineSurface<3>) -> Result<BSplineSurface<3>> {
+    let net = wing.control_points();
+    let last = net.cols() - 1;
+    let points = (0..net.rows())
+        .flat_map(|i| [*net.get(i, last), *net.get(i, 0)])
+        .collect();
+    Ok(BSplineSurface::new(
+        (wing.degree_u(), wing.knots_u().to_vec()),
+        (1, vec![0.0, 0.0, 1.0, 1.0]),
+        Grid::from_row_major(net.rows(), 2, points)?,
+    )?)
 }

@@ -4,7 +4,7 @@
 use super::console::note;
 use crate::args::CadOptions;
 use anyhow::{anyhow, bail, Context, Result};
-use karkas::bspline::{ToBSplineCurve, ToBSplineSurface};
+use karkas::bspline::{BSplineSurface, ToBSplineCurve, ToBSplineSurface};
 use karkas::Point;
 use karkas_io::cad::CadShell;
 use karkas_io::export::cad::{scaled_surface, write_cad_curve_in, NO_EXACT_FORM};
@@ -69,9 +69,27 @@ pub fn write_cad_surface(
     cap: bool,
 ) -> Result<()> {
     let bspline = surface.to_bspline().with_context(|| what.to_string())?;
+    write_cad_faces(&bspline, &[], format, output, cad, what, cap)
+}
+
+/// Writes `bspline` with the further faces `more` (sharing its edges, e.g. a blunt trailing
+/// edge's strip) as one shell, as [`write_cad_surface`] writes one surface; the summary line
+/// describes `bspline`.
+pub fn write_cad_faces(
+    bspline: &BSplineSurface<3>,
+    more: &[BSplineSurface<3>],
+    format: OutputFormat,
+    output: &Path,
+    cad: &CadOptions,
+    what: impl std::fmt::Display,
+    cap: bool,
+) -> Result<()> {
     let units = cad.units();
-    let scaled = scaled_surface(&bspline, units.scale).with_context(|| what.to_string())?;
-    let mut shell = CadShell::of_surfaces(std::slice::from_ref(&scaled));
+    let scaled = std::iter::once(bspline)
+        .chain(more)
+        .map(|s| scaled_surface(s, units.scale).with_context(|| what.to_string()))
+        .collect::<Result<Vec<_>>>()?;
+    let mut shell = CadShell::of_surfaces(&scaled);
     let caps = if cap {
         shell.cap_free_loops().map_err(|e| anyhow!("--cap: {e}"))?
     } else {

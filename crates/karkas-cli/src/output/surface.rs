@@ -92,7 +92,7 @@ pub fn write_any_surface(
     }
     let samples = writing.samples.unwrap_or(default);
     if writing.cap {
-        return write_capped_mesh(surface, samples, format, output, &writing.mesh);
+        return write_capped_mesh(surface, samples, format, output, &writing.mesh, false);
     }
     if let Some(tolerance) = writing.tolerance {
         if OutputFormat::MESHES.contains(&format) {
@@ -172,13 +172,15 @@ fn write_mesh_within(
 /// in `format` (OBJ, STL, PLY or glTF: `--cap`): its poles closed by fans, its seams welded,
 /// every open boundary loop closed by the triangles of its planar polygon and the whole
 /// turned outwards (`karkas_io::mesh::body_mesh`); reports the caps and the enclosed volume.
-/// A loop that is not planar, or no open loop, is an error naming `--cap`.
+/// A loop that is not planar, or no open loop, is an error naming `--cap`. `close_v` closes
+/// the `v` direction first by the strip from the last sample column back to the first.
 pub fn write_capped_mesh(
     surface: &(impl Surface<3> + Sync),
     (nu, nv): (usize, usize),
     format: OutputFormat,
     output: &Path,
     mesh: &MeshOptions,
+    close_v: bool,
 ) -> Result<()> {
     check_memory(
         &format!(
@@ -189,7 +191,15 @@ pub fn write_capped_mesh(
         surface_output_bytes(format, nu, nv) + (nu as u128 + nv as u128) * 8,
     )?;
     let (_, _, samples) = sample_surface(surface, nu, nv);
-    let grid = Grid::from_row_major(nu, nv, samples)?;
+    let grid = if close_v {
+        // The first sample column again after the last: the strip between them closes the
+        // direction (a blunt trailing edge's flat face), and the seam is welded.
+        let rows = samples.chunks(nv);
+        let closed = rows.flat_map(|row| row.iter().chain(&row[..1]).copied());
+        Grid::from_row_major(nu, nv + 1, closed.collect())?
+    } else {
+        Grid::from_row_major(nu, nv, samples)?
+    };
     let (body, figures) = body_mesh(&grid, true).map_err(|e| anyhow!("--cap: {e}"))?;
     write_mesh_as(format, output, &body, mesh)?;
     record("caps", figures.caps.len());

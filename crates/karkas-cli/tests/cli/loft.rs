@@ -40,6 +40,38 @@ fn the_shipped_wing_lofts_within_the_tolerance_and_reports_in_json() {
     assert!(crate::common::stderr(&o).contains("largest section deviation"));
 }
 
+/// The shipped wing's trailing edges are blunt: `--cap` adds the flat trailing-edge face
+/// between them and closes root and tip, a closed solid (four faces) whose volume the mesh
+/// of the same command agrees with; Open CASCADE's verdict is `tests/cad/check_bodies.py`'s.
+#[test]
+fn a_blunt_edged_wing_caps_into_a_closed_solid_with_its_trailing_edge_face() {
+    let dir = temp_dir();
+    let table = wing_dir().join("wing.csv");
+    let volume = |name: &str| {
+        let out = dir.path().join(name);
+        let o = karkas(&["loft", "--cap", s(&table), "-o", s(&out)]);
+        let err = crate::common::stderr(&o);
+        assert!(o.status.success(), "{err}");
+        let at = err.find("enclosed volume ").expect("a volume") + "enclosed volume ".len();
+        let figure = err[at..]
+            .split(|c: char| c == ')' || c.is_whitespace())
+            .next()
+            .unwrap();
+        (err.clone(), figure.parse::<f64>().unwrap(), out)
+    };
+    let (err, solid, step) = volume("wing.step");
+    assert!(err.contains("2 planar caps, closed solid"), "{err}");
+    let text = std::fs::read_to_string(step).unwrap();
+    assert!(text.contains("MANIFOLD_SOLID_BREP"));
+    assert_eq!(text.matches("ADVANCED_FACE(").count(), 4); // wing, trailing edge, two caps
+    let (err, meshed, _) = volume("wing.stl");
+    assert!(err.contains("closed mesh"), "{err}");
+    assert!(
+        (meshed - solid).abs() <= 1e-3 * solid,
+        "mesh {meshed}, solid {solid}"
+    );
+}
+
 #[test]
 fn sections_at_span_stations_pass_through_the_placed_leading_edges() {
     let dir = temp_dir();
