@@ -207,7 +207,10 @@ pub fn run(args: &LoftArgs) -> Result<()> {
         write_sections(path, f, cuts)?;
     }
     let title = format!("loft of {} sections ({})", stations.len(), args.span.name());
-    let blunt = args.cap.cap && blunt_trailing_edge(&loft);
+    let blunt = match args.cap.cap {
+        true => trailing_edges(&loft)?,
+        false => false,
+    };
     if format.is_cad() {
         let bspline = loft
             .to_bspline()
@@ -455,10 +458,27 @@ fn parse_stations(text: &str) -> Result<Stations, String> {
         .map(Stations)
 }
 
-/// Whether every section's trailing edge is blunt: the surface's edges `v = 0` (upper trailing
-/// edge) and `v = 1` (lower) apart at every station, by more than 1e-9 of the wing's size. A
-/// wing that is sharp somewhere keeps its edges (a sharp edge closes by itself).
-fn blunt_trailing_edge(loft: &Loft) -> bool {
+/// Whether `--cap` needs the flat trailing-edge face: true where every section's trailing edge
+/// is blunt, false where every one is sharp (the edge closes by itself); a wing blunt at some
+/// stations and sharp at others cannot be capped by planar faces, an error naming `--cap`.
+fn trailing_edges(loft: &Loft) -> Result<bool> {
+    let gaps = trailing_edge_gaps(loft);
+    if gaps.iter().all(|&blunt| blunt) {
+        return Ok(true);
+    }
+    if gaps.iter().all(|&blunt| !blunt) {
+        return Ok(false);
+    }
+    bail!(
+        "--cap: the trailing edge is blunt at some sections and sharp at others; a closed \
+         solid needs every section sharp (first point = last) or every one blunt"
+    )
+}
+
+/// For 65 stations evenly along the span, whether the trailing edge is blunt there: the
+/// surface's edges `v = 0` (upper trailing edge) and `v = 1` (lower) more than 1e-9 of the
+/// wing's size apart.
+fn trailing_edge_gaps(loft: &Loft) -> Vec<bool> {
     let (span, section) = (loft.domain_u(), loft.domain_v());
     let (first, last) = (span.start, span.end);
     let (upper, lower) = (section.start, section.end);
@@ -469,10 +489,12 @@ fn blunt_trailing_edge(loft: &Loft) -> bool {
             loft.eval(first, upper)
                 .distance(loft.eval(first, 0.5 * (upper + lower))),
         );
-    (0..=64).all(|k| {
-        let u = first + (last - first) * k as f64 / 64.0;
-        loft.eval(u, upper).distance(loft.eval(u, lower)) > 1e-9 * size
-    })
+    (0..=64)
+        .map(|k| {
+            let u = first + (last - first) * k as f64 / 64.0;
+            loft.eval(u, upper).distance(loft.eval(u, lower)) > 1e-9 * size
+        })
+        .collect()
 }
 
 /// The flat face of a blunt trailing edge: the ruled surface from the lower trailing-edge line

@@ -70,6 +70,20 @@ fn a_blunt_edged_wing_caps_into_a_closed_solid_with_its_trailing_edge_face() {
         (meshed - solid).abs() <= 1e-3 * solid,
         "mesh {meshed}, solid {solid}"
     );
+    // A sharp tip on a blunt root cannot be capped by planar faces: one line naming --cap.
+    let mixed = temp_dir();
+    let tip = std::fs::read_to_string(wing_dir().join("naca0009.dat")).unwrap();
+    let first = tip.lines().nth(1).unwrap().to_string();
+    std::fs::write(mixed.path().join("sharp.dat"), format!("{tip}{first}\n")).unwrap();
+    let table = wing_with_table(
+        mixed.path(),
+        &format!("{HEADER}naca4415.dat,0,0,0,1.6,2,\nsharp.dat,0.9,6,0.45,0.6,-3,\n"),
+    );
+    let out = mixed.path().join("mixed.step");
+    let o = karkas(&["loft", "--cap", s(&table), "-o", s(&out)]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(crate::common::stderr(&o).contains("--cap: the trailing edge is blunt at some"));
+    assert!(!out.exists());
 }
 
 #[test]
