@@ -12,6 +12,7 @@
 
 mod domain;
 mod face;
+mod inside;
 mod nearest;
 
 pub use domain::{FaceDomain, ParameterLoop};

@@ -30,6 +30,7 @@ use kiddo::immutable::float::kdtree::ImmutableKdTree;
 use kiddo::SquaredEuclidean;
 use rayon::prelude::*;
 
+use super::inside::InsideIndex;
 use super::{FaceDomain, Shape};
 use crate::bspline::NurbsCurve;
 use crate::core::{Curve, Interval, Surface};
@@ -126,6 +127,8 @@ struct Cell {
 pub struct ShapeProjector<'a> {
     shape: &'a Shape,
     domains: Vec<FaceDomain>,
+    /// The faces' inside tests.
+    insides: Vec<InsideIndex>,
     cells: Vec<Cell>,
     tree: ImmutableKdTree<f64, u64, 3, 32>,
     /// Points on the shape (cell centres inside their faces, segment centres): the cell each
@@ -149,12 +152,13 @@ impl<'a> ShapeProjector<'a> {
             .par_iter()
             .map(FaceDomain::of)
             .collect::<Result<_>>()?;
+        let insides: Vec<InsideIndex> = domains.par_iter().map(InsideIndex::new).collect();
         let per_face: Vec<(Vec<Cell>, Vec<usize>)> = shape
             .faces
             .par_iter()
-            .zip(&domains)
+            .zip(domains.par_iter().zip(&insides))
             .enumerate()
-            .map(|(k, (face, domain))| face_cells(k, face, domain, target, size))
+            .map(|(k, (face, (domain, inside)))| face_cells(k, face, domain, inside, target, size))
             .collect::<Result<_>>()?;
         let mut cells = Vec::new();
         let mut anchors = Vec::new();
@@ -169,6 +173,7 @@ impl<'a> ShapeProjector<'a> {
         Ok(ShapeProjector {
             shape,
             domains,
+            insides,
             tree: ImmutableKdTree::new_from_slice(&coords),
             anchor_tree: ImmutableKdTree::new_from_slice(&anchor_coords),
             cells,
@@ -273,16 +278,17 @@ impl<'a> ShapeProjector<'a> {
             Place::Surface { u, v } => {
                 let start = (0.5 * (u.0 + u.1), 0.5 * (v.0 + v.1));
                 let foot = newton_foot(s, q, start, closed, self.accuracy);
-                let domain = &self.domains[cell.face];
-                (domain.is_whole() || domain.contains(foot.u, foot.v)).then_some(ShapeNearest {
-                    face: cell.face,
-                    u: foot.u,
-                    v: foot.v,
-                    point: foot.point,
-                    distance: foot.distance,
-                    signed: None,
-                    on_edge: false,
-                })
+                self.insides[cell.face]
+                    .contains(foot.u, foot.v)
+                    .then_some(ShapeNearest {
+                        face: cell.face,
+                        u: foot.u,
+                        v: foot.v,
+                        point: foot.point,
+                        distance: foot.distance,
+                        signed: None,
+                        on_edge: false,
+                    })
             }
             Place::Edge {
                 edge_loop,
@@ -334,6 +340,7 @@ fn face_cells(
     k: usize,
     face: &super::Face,
     domain: &FaceDomain,
+    inside: &InsideIndex,
     target: f64,
     size: f64,
 ) -> Result<(Vec<Cell>, Vec<usize>)> {
@@ -414,12 +421,12 @@ fn face_cells(
             ));
             let radius = RADIUS_MARGIN * far.max(0.5 * (lu + lv)) + 1e-12 * size;
             let (u0, u1, v0, v1) = (us[i - 1], us[i + 1], vs[j - 1], vs[j + 1]);
-            let centre_inside = whole || domain.contains(us[i], vs[j]);
+            let centre_inside = whole || inside.contains(us[i], vs[j]);
             let keep = whole
                 || centre_inside
                 || crossed[a * nv + b]
                 || (0..3)
-                    .any(|di| (0..3).any(|dj| domain.contains(us[i + di - 1], vs[j + dj - 1])));
+                    .any(|di| (0..3).any(|dj| inside.contains(us[i + di - 1], vs[j + dj - 1])));
             if !keep {
                 continue;
             }
