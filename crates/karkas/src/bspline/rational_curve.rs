@@ -3,7 +3,7 @@
 //! every order by the quotient rule (A4.2), exact sub-curves by knot insertion (A5.1).
 
 use super::rational::{check_general_knots, check_weights, rational_curve_derivatives};
-use super::span_basis::{local_derivatives, span_of, Homogeneous, Linear, MAX_SPAN};
+use super::span_basis::{local_derivatives, span_of, Homogeneous, Linear, MAX_SPAN, SMALL_SPAN};
 use super::{BSplineCurve, ToBSplineCurve};
 use crate::core::{Curve, Interval, PiecewiseCurve, Side};
 use crate::{Error, Point, Result};
@@ -226,22 +226,32 @@ impl<const D: usize> NurbsCurve<D> {
     /// [`derivatives_into`](Self::derivatives_into) with the rational piece of knot span
     /// `span` (continued to `t`).
     fn derivatives_on_span(&self, t: f64, span: usize, out: &mut [Point<D>]) {
+        if self.degree < SMALL_SPAN {
+            self.derivatives_on_span_in::<SMALL_SPAN>(t, span, out);
+        } else {
+            self.derivatives_on_span_in::<MAX_SPAN>(t, span, out);
+        }
+    }
+
+    /// [`derivatives_on_span`](Self::derivatives_on_span) with working arrays of `N` values
+    /// (more than the degree).
+    fn derivatives_on_span_in<const N: usize>(&self, t: f64, span: usize, out: &mut [Point<D>]) {
         if out.is_empty() {
             return;
         }
         let p = self.degree;
         let top = (out.len() - 1).min(p);
         let first = span - p;
-        let mut local = [Homogeneous::<D>::ZERO; MAX_SPAN];
+        let mut local = [Homogeneous::<D>::ZERO; N];
         for (c, h) in local[..=p].iter_mut().enumerate() {
             *h = Homogeneous {
                 point: self.weighted[first + c],
                 weight: self.weights[first + c],
             };
         }
-        let mut homogeneous = [Homogeneous::<D>::ZERO; MAX_SPAN];
+        let mut homogeneous = [Homogeneous::<D>::ZERO; N];
         local_derivatives(p, &self.knots, span, t, &local, &mut homogeneous[..=top]);
-        let mut w = [0.0; MAX_SPAN];
+        let mut w = [0.0; N];
         for (k, a) in out.iter_mut().enumerate() {
             if k > top {
                 *a = Point::ZERO;

@@ -4,7 +4,7 @@
 
 use super::rational::{check_general_knots, check_weights, rational_surface_derivatives};
 use super::span_basis::{
-    basis_derivative, local_derivatives, span_of, Homogeneous, Linear, MAX_SPAN,
+    basis_derivative, local_derivatives, span_of, Homogeneous, Linear, MAX_SPAN, SMALL_SPAN,
 };
 use super::{BSplineSurface, NurbsCurve, ToBSplineSurface};
 use crate::core::{Grid, Interval, Surface};
@@ -332,14 +332,52 @@ impl<const D: usize> NurbsSurface<D> {
 
     /// `[S, S_u, S_v, S_uu, S_uv, S_vv]` at `(u, v)`, without allocating.
     pub fn second_order(&self, u: f64, v: f64) -> SecondOrder<D> {
+        if self.degree_u < SMALL_SPAN && self.degree_v < SMALL_SPAN {
+            self.second_order_in::<SMALL_SPAN>(u, v)
+        } else {
+            self.second_order_in::<MAX_SPAN>(u, v)
+        }
+    }
+
+    /// The point at `(u, v)` with working arrays of `N` values (more than either degree).
+    fn eval_in<const N: usize>(&self, u: f64, v: f64) -> Point<D> {
+        let (u, v) = (self.parameter_u(u), self.parameter_v(v));
+        let (p, q) = (self.degree_u, self.degree_v);
+        let (rows, cols) = (self.control.rows(), self.control.cols());
+        let su = span_of(p, &self.knots_u, rows, u);
+        let sv = span_of(q, &self.knots_v, cols, v);
+        let mut bu = [0.0; N];
+        let mut bv = [0.0; N];
+        basis_derivative(p, &self.knots_u, su, u, 0, &mut bu);
+        basis_derivative(q, &self.knots_v, sv, v, 0, &mut bv);
+        let mut a = Point::ZERO;
+        let mut w = 0.0;
+        for (r, &bur) in bu[..=p].iter().enumerate() {
+            let i = su - p + r;
+            let mut line = Point::ZERO;
+            let mut line_w = 0.0;
+            for (c, &b) in bv[..=q].iter().enumerate() {
+                let j = sv - q + c;
+                line += *self.weighted.get(i, j) * b;
+                line_w += *self.weights.get(i, j) * b;
+            }
+            a += line * bur;
+            w += line_w * bur;
+        }
+        a * (1.0 / w)
+    }
+
+    /// [`second_order`](NurbsSurface::second_order) with working arrays of `N` values (more
+    /// than either degree).
+    fn second_order_in<const N: usize>(&self, u: f64, v: f64) -> SecondOrder<D> {
         let (u, v) = (self.parameter_u(u), self.parameter_v(v));
         let (p, q) = (self.degree_u, self.degree_v);
         let (rows, cols) = (self.control.rows(), self.control.cols());
         let su = span_of(p, &self.knots_u, rows, u);
         let sv = span_of(q, &self.knots_v, cols, v);
         // The v-derivatives 0..=2 of every row of the span, then those along u.
-        let mut rows_d = [[Homogeneous::<D>::ZERO; 3]; MAX_SPAN];
-        let mut local = [Homogeneous::<D>::ZERO; MAX_SPAN];
+        let mut rows_d = [[Homogeneous::<D>::ZERO; 3]; N];
+        let mut local = [Homogeneous::<D>::ZERO; N];
         for (a, row) in rows_d[..=p].iter_mut().enumerate() {
             let i = su - p + a;
             for (c, h) in local[..=q].iter_mut().enumerate() {
@@ -406,30 +444,11 @@ impl<const D: usize> Surface<D> for NurbsSurface<D> {
     }
 
     fn eval(&self, u: f64, v: f64) -> Point<D> {
-        let (u, v) = (self.parameter_u(u), self.parameter_v(v));
-        let (p, q) = (self.degree_u, self.degree_v);
-        let (rows, cols) = (self.control.rows(), self.control.cols());
-        let su = span_of(p, &self.knots_u, rows, u);
-        let sv = span_of(q, &self.knots_v, cols, v);
-        let mut bu = [0.0; MAX_SPAN];
-        let mut bv = [0.0; MAX_SPAN];
-        basis_derivative(p, &self.knots_u, su, u, 0, &mut bu);
-        basis_derivative(q, &self.knots_v, sv, v, 0, &mut bv);
-        let mut a = Point::ZERO;
-        let mut w = 0.0;
-        for (r, &bur) in bu[..=p].iter().enumerate() {
-            let i = su - p + r;
-            let mut line = Point::ZERO;
-            let mut line_w = 0.0;
-            for (c, &b) in bv[..=q].iter().enumerate() {
-                let j = sv - q + c;
-                line += *self.weighted.get(i, j) * b;
-                line_w += *self.weights.get(i, j) * b;
-            }
-            a += line * bur;
-            w += line_w * bur;
+        if self.degree_u < SMALL_SPAN && self.degree_v < SMALL_SPAN {
+            self.eval_in::<SMALL_SPAN>(u, v)
+        } else {
+            self.eval_in::<MAX_SPAN>(u, v)
         }
-        a * (1.0 / w)
     }
 
     fn deriv(&self, u: f64, v: f64, ku: usize, kv: usize) -> Point<D> {

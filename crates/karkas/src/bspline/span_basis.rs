@@ -23,11 +23,31 @@ use super::MAX_DEGREE;
 /// The most basis functions on one span: `MAX_DEGREE + 1`.
 pub(crate) const MAX_SPAN: usize = MAX_DEGREE + 1;
 
+/// The working arrays of spans of degree below this are this long, not [`MAX_SPAN`]: zeroing
+/// arrays of `MAX_SPAN` on every evaluation cost more than the arithmetic of a low degree.
+pub(crate) const SMALL_SPAN: usize = 16;
+
 /// Writes the `k`-th derivatives of the basis functions of degree `p` that are nonzero on the
 /// span `span` (`knots[span] <= t < knots[span + 1]`, `p <= span`, `span + p + 1 <
 /// knots.len()`) at `t` into `out[0..=p]`: `out[c]` belongs to the function (and control
 /// point) `span - p + c`. Zero for `k > p`. `out` must hold `p + 1` values.
 pub(crate) fn basis_derivative(
+    p: usize,
+    knots: &[f64],
+    span: usize,
+    t: f64,
+    k: usize,
+    out: &mut [f64],
+) {
+    if p < SMALL_SPAN {
+        basis_derivative_in::<SMALL_SPAN>(p, knots, span, t, k, out);
+    } else {
+        basis_derivative_in::<MAX_SPAN>(p, knots, span, t, k, out);
+    }
+}
+
+/// [`basis_derivative`] with working arrays of `N > p` values.
+fn basis_derivative_in<const N: usize>(
     p: usize,
     knots: &[f64],
     span: usize,
@@ -42,9 +62,9 @@ pub(crate) fn basis_derivative(
     }
     let q = p - k;
     // Cox–de Boor of degree q: n[r] = N_{span - q + r, q}(t), r = 0..=q.
-    let mut left = [0.0; MAX_SPAN];
-    let mut right = [0.0; MAX_SPAN];
-    let mut n = [0.0; MAX_SPAN];
+    let mut left = [0.0; N];
+    let mut right = [0.0; N];
+    let mut n = [0.0; N];
     n[0] = 1.0;
     for j in 1..=q {
         left[j] = t - knots[span + 1 - j];
@@ -156,9 +176,25 @@ pub(crate) fn local_derivatives<T: Linear>(
     local: &[T],
     out: &mut [T],
 ) {
-    let mut work = [T::ZERO; MAX_SPAN];
+    if p < SMALL_SPAN {
+        local_derivatives_in::<T, SMALL_SPAN>(p, knots, span, t, local, out);
+    } else {
+        local_derivatives_in::<T, MAX_SPAN>(p, knots, span, t, local, out);
+    }
+}
+
+/// [`local_derivatives`] with working arrays of `N > p` values.
+fn local_derivatives_in<T: Linear, const N: usize>(
+    p: usize,
+    knots: &[f64],
+    span: usize,
+    t: f64,
+    local: &[T],
+    out: &mut [T],
+) {
+    let mut work = [T::ZERO; N];
     work[..=p].copy_from_slice(&local[..=p]);
-    let mut basis = [0.0; MAX_SPAN];
+    let mut basis = [0.0; N];
     let first = span - p;
     for (k, slot) in out.iter_mut().enumerate() {
         if k > p {
@@ -166,7 +202,7 @@ pub(crate) fn local_derivatives<T: Linear>(
             continue;
         }
         let d = p - k;
-        basis_derivative(d, knots, span, t, 0, &mut basis);
+        basis_derivative_in::<N>(d, knots, span, t, 0, &mut basis);
         let mut sum = T::ZERO;
         for (r, &b) in basis[..=d].iter().enumerate() {
             sum = sum + work[k + r] * b;
