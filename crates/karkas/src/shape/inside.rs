@@ -63,7 +63,7 @@ impl InsideIndex {
             scale: 0.0,
             strips: vec![Vec::new()],
         };
-        if segments.is_empty() || !(high > low) || !low.is_finite() || !high.is_finite() {
+        if segments.is_empty() || high <= low || !low.is_finite() || !high.is_finite() {
             index.strips[0] = segments;
             return index;
         }
