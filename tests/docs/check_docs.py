@@ -19,6 +19,10 @@ Every page runs in a fresh folder holding links to the repository's data/ and ex
 blocks in order, the Python blocks of a page in one namespace (the interpreter running this
 script must import karkas: the wheel's venv).
 
+Pictures: every image a page names (`![alt](path)` or `<img src="path">` outside code blocks,
+other than web addresses) must exist, relative to the page; every file under docs/images/
+must be named by some page and stay under 300 KB (docs/images/regenerate.sh remakes them).
+
 Usage: tests/docs/check_docs.py --karkas target/release/karkas [PAGE.md ...]
 (default: README.md and every page under docs/ listed in docs/SUMMARY.md).
 """
@@ -160,6 +164,40 @@ def readme_shape(failures: list[str]) -> None:
             failures.append(f"README.md:{number}: {len(line)} characters, at most 200 outside code")
 
 
+IMAGE = re.compile(r"!\[[^\]]*\]\(([^)\s]+)[^)]*\)|<img[^>]*\ssrc=\"([^\"]+)\"")
+IMAGE_LIMIT = 300 * 1024
+
+
+def images(pages: list[Path], failures: list[str]) -> int:
+    """Every picture a page names exists; every file of docs/images/ is named and small."""
+    named: set[Path] = set()
+    for page in pages:
+        fence = False
+        for number, line in enumerate(page.read_text(encoding="utf-8").split("\n"), 1):
+            if line.lstrip().startswith("```"):
+                fence = not fence
+                continue
+            if fence:
+                continue
+            for m in IMAGE.finditer(line):
+                target = m.group(1) or m.group(2)
+                if re.match(r"^[a-z]+:", target):
+                    continue
+                path = (page.parent / target.split("#")[0]).resolve()
+                named.add(path)
+                if not path.is_file():
+                    failures.append(f"{page.relative_to(REPO)}:{number}: picture {target} is missing")
+    folder = REPO / "docs" / "images"
+    for path in sorted(folder.glob("*")) if folder.is_dir() else []:
+        if path.suffix.lower() not in (".png", ".svg", ".jpg", ".gif", ".webp"):
+            continue
+        if path.resolve() not in named:
+            failures.append(f"{path.relative_to(REPO)}: no page shows it")
+        if path.stat().st_size > IMAGE_LIMIT:
+            failures.append(f"{path.relative_to(REPO)}: {path.stat().st_size} bytes, at most {IMAGE_LIMIT}")
+    return len(named)
+
+
 def pages_of_book() -> list[Path]:
     summary = (REPO / "docs" / "SUMMARY.md").read_text(encoding="utf-8")
     pages = [REPO / "docs" / p for p in re.findall(r"\]\(([^)]+\.md)\)", summary)]
@@ -181,6 +219,7 @@ def main() -> int:
     pages = [p.resolve() for p in args.pages] or pages_of_book()
     failures: list[str] = []
     readme_shape(failures)
+    pictures = images(pages_of_book(), failures)
     totals = {"commands": 0, "python": 0, "shown": 0}
     start = time.monotonic()
     here = os.getcwd()
@@ -208,7 +247,8 @@ def main() -> int:
     for f in failures:
         print(f"FAIL {f}\n", file=sys.stderr)
     print(f"docs: {len(pages)} pages, {totals['commands']} commands and {totals['python']} Python "
-          f"examples run, {totals['shown']} blocks shown only; {len(failures)} failures "
+          f"examples run, {totals['shown']} blocks shown only, {pictures} pictures found; "
+          f"{len(failures)} failures "
           f"({time.monotonic() - start:.1f} s)")
     return 1 if failures else 0
 
