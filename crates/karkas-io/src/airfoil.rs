@@ -114,7 +114,7 @@ pub(crate) struct AirfoilReader<'p> {
 
 impl<'p> AirfoilReader<'p> {
     /// A reader of the file `path` (named in errors).
-    pub fn new(path: &'p Path) -> Self {
+    pub(crate) fn new(path: &'p Path) -> Self {
         AirfoilReader {
             path,
             stage: Stage::Name,

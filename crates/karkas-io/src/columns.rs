@@ -59,7 +59,7 @@ impl Columns {
     /// The columns named `x`, `y` and optionally `z` in a header (compared as
     /// [`column_name`] compares: case, quotes and units aside); `None` unless both `x` and `y`
     /// are there.
-    pub fn from_header(fields: &[String]) -> Option<Columns> {
+    pub(crate) fn from_header(fields: &[String]) -> Option<Columns> {
         let names: Vec<String> = fields.iter().map(|f| column_name(f)).collect();
         let find = |name: &str| names.iter().position(|f| f == name);
         Some(Columns {
@@ -127,7 +127,7 @@ pub(crate) struct Layout {
 impl Layout {
     /// The layout given by the first content line `content` (line `line`) of `name`, read with
     /// the user's `options`.
-    pub fn from_first_line(
+    pub(crate) fn from_first_line(
         content: &str,
         line: usize,
         name: &Path,
@@ -180,7 +180,7 @@ impl Layout {
     }
 
     /// The layout of a file whose header (line `line`, split at `sep`) is `fields`.
-    pub fn from_header(
+    pub(crate) fn from_header(
         fields: Vec<String>,
         sep: Separator,
         line: usize,

@@ -76,6 +76,16 @@ impl Separator {
     /// is not all numbers) is comma-separated when it holds a comma; else tab-separated when
     /// its names hold spaces between the tabs (`X coordinate<TAB>Y coordinate`); else
     /// space-separated.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas_io::dialect::Separator;
+    ///
+    /// assert_eq!(Separator::of_line("0.5;1,25", false), Separator::Semicolon);
+    /// assert_eq!(Separator::of_line("0.5,1.25", false), Separator::Comma);
+    /// assert_eq!(Separator::of_line("0,5 1,25", false), Separator::Whitespace); // decimal commas
+    /// ```
     pub fn of_line(content: &str, decimal_comma: bool) -> Separator {
         let unquoted = outside_quotes(content);
         if unquoted.contains(';') {
@@ -148,6 +158,16 @@ pub struct ColumnChoice(Vec<ColumnRef>);
 impl ColumnChoice {
     /// The choice of the columns `refs`, two (x, y) or three (x, y, z); `None` for another
     /// number.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas_io::dialect::{ColumnChoice, ColumnRef};
+    ///
+    /// let choice = ColumnChoice::new(vec![ColumnRef::Position(2), ColumnRef::Name("y".into())]);
+    /// assert!(choice.is_some());
+    /// assert!(ColumnChoice::new(vec![ColumnRef::Position(1)]).is_none()); // x alone
+    /// ```
     pub fn new(refs: Vec<ColumnRef>) -> Option<ColumnChoice> {
         (2..=3).contains(&refs.len()).then_some(ColumnChoice(refs))
     }

@@ -151,6 +151,17 @@ pub struct GeometryError {
 
 impl IoError {
     /// An [`IoError::Geometry`]: the library refused what `path` holds.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use std::path::Path;
+    /// use karkas_io::IoError;
+    ///
+    /// let refused = karkas::Error::NonFinitePoint { index: 3 };
+    /// let error = IoError::geometry(Path::new("wing.csv"), refused);
+    /// assert!(error.to_string().contains("wing.csv"));
+    /// ```
     pub fn geometry(path: &Path, source: karkas::Error) -> IoError {
         IoError::Geometry(Box::new(GeometryError {
             path: path.to_path_buf(),
@@ -196,6 +207,16 @@ pub struct Location<'a> {
 
 impl<'a> Location<'a> {
     /// Line `line` (1-based) of `path`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use std::path::Path;
+    /// use karkas_io::Location;
+    ///
+    /// let at = Location::new(Path::new("wing.csv"), 3);
+    /// assert_eq!((at.path, at.line), (Path::new("wing.csv"), 3));
+    /// ```
     pub fn new(path: &'a Path, line: usize) -> Self {
         Location { path, line }
     }

@@ -80,6 +80,18 @@ impl OutputFormat {
 
     /// The format named by the extension of `path` (case-insensitive), if it is one of
     /// `allowed`; otherwise [`IoError::UnknownExtension`] listing the allowed extensions.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use std::path::Path;
+    /// use karkas_io::OutputFormat;
+    ///
+    /// let allowed = [OutputFormat::Csv, OutputFormat::Svg];
+    /// assert_eq!(OutputFormat::from_path(Path::new("curve.SVG"), &allowed)?, OutputFormat::Svg);
+    /// assert!(OutputFormat::from_path(Path::new("curve.step"), &allowed).is_err()); // not allowed here
+    /// # Ok::<(), karkas_io::IoError>(())
+    /// ```
     pub fn from_path(path: &Path, allowed: &[OutputFormat]) -> Result<OutputFormat, IoError> {
         let extension = path.extension().and_then(|e| e.to_str());
         allowed

@@ -95,6 +95,16 @@ impl std::fmt::Debug for Input {
 
 impl Input {
     /// Opens `path` (`-`: standard input) for one buffered pass.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use std::path::Path;
+    /// use karkas_io::input::Input;
+    ///
+    /// let missing = Input::open(Path::new("no-such-folder/points.csv"));
+    /// assert!(missing.unwrap_err().to_string().contains("points.csv")); // the error names the file
+    /// ```
     pub fn open(path: &Path) -> Result<Input, IoError> {
         let name = display_name(path);
         let mut size = 0;
@@ -113,6 +123,16 @@ impl Input {
     }
 
     /// An input reading from `reader` (e.g. bytes already in memory), named `name`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas_io::input::Input;
+    ///
+    /// let mut input = Input::from_reader("inline.csv", &b"x,y\n0,1\n"[..]);
+    /// assert_eq!(input.read_text()?, "x,y\n0,1\n");
+    /// # Ok::<(), karkas_io::IoError>(())
+    /// ```
     pub fn from_reader(name: impl Into<PathBuf>, reader: impl BufRead + Send + 'static) -> Input {
         Input {
             name: name.into(),

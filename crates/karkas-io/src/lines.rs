@@ -118,7 +118,7 @@ pub(crate) struct LineReader<'p, R> {
 
 impl<'p, R: std::io::BufRead> LineReader<'p, R> {
     /// The lines of `reader`; `name` names the input in errors.
-    pub fn new(reader: R, name: &'p Path) -> Self {
+    pub(crate) fn new(reader: R, name: &'p Path) -> Self {
         LineReader {
             reader,
             name,

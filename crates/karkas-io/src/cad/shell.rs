@@ -129,6 +129,16 @@ pub struct CadShell {
 
 impl CadShell {
     /// An empty shell whose vertices coincide within `tolerance` (model units).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas_io::cad::CadShell;
+    ///
+    /// let shell = CadShell::new(1e-6);
+    /// assert_eq!(shell.tolerance(), 1e-6);
+    /// assert!(shell.faces().is_empty() && shell.vertices().is_empty());
+    /// ```
     pub fn new(tolerance: f64) -> CadShell {
         CadShell {
             tolerance: tolerance.max(0.0),
@@ -138,6 +148,22 @@ impl CadShell {
 
     /// The shell of the patches `surfaces`, with the tolerance [`SHELL_RELATIVE_TOLERANCE`]
     /// of their control points' extent.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::bspline::BSplineSurface;
+    /// use karkas::{Grid, Point};
+    /// use karkas_io::cad::CadShell;
+    ///
+    /// // One square patch: one face, four corners, four edges, an open shell.
+    /// let control = Grid::from_fn(2, 2, |i, j| Point([i as f64, j as f64, 0.0]));
+    /// let linear = (1, vec![0.0, 0.0, 1.0, 1.0]);
+    /// let shell = CadShell::of_surfaces(&[BSplineSurface::new(linear.clone(), linear, control)?]);
+    /// assert_eq!((shell.faces().len(), shell.vertices().len(), shell.edges().len()), (1, 4, 4));
+    /// assert!(!shell.is_closed());
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn of_surfaces(surfaces: &[BSplineSurface<3>]) -> CadShell {
         let points = surfaces
             .iter()

@@ -21,12 +21,31 @@ pub struct FileStamp {
 impl FileStamp {
     /// `SOURCE_DATE_EPOCH` when it holds a valid moment, otherwise the clock (the Unix epoch if
     /// the clock stands before it).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas_io::cad::time_stamp::FileStamp;
+    ///
+    /// // The clock or SOURCE_DATE_EPOCH: either way a moment spelled like any other.
+    /// let now = FileStamp::now();
+    /// assert_eq!(now.iso8601().len(), FileStamp::EPOCH.iso8601().len());
+    /// ```
     pub fn now() -> Self {
         Self::fixed_or_clock(std::env::var(SOURCE_DATE_EPOCH).ok().as_deref())
     }
 
     /// The moment `fixed` names (whole seconds since the Unix epoch, as `SOURCE_DATE_EPOCH`
     /// holds it) when it is valid, otherwise the clock.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas_io::cad::time_stamp::FileStamp;
+    ///
+    /// let fixed = FileStamp::fixed_or_clock(Some("86400"));
+    /// assert!(fixed.iso8601().starts_with("1970-01-02"));
+    /// ```
     pub fn fixed_or_clock(fixed: Option<&str>) -> Self {
         let fixed = fixed
             .and_then(|text| text.trim().parse::<i64>().ok())
@@ -46,6 +65,16 @@ impl FileStamp {
 
     /// The moment `seconds` after 1970-01-01 UTC, or `None` outside the years 0..=9999 that
     /// both formats can spell.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas_io::cad::time_stamp::FileStamp;
+    ///
+    /// let stamp = FileStamp::from_unix_seconds(0).expect("the epoch is in range");
+    /// assert!(stamp.iso8601().starts_with("1970-01-01"));
+    /// assert!(FileStamp::from_unix_seconds(i64::MAX).is_none());
+    /// ```
     pub fn from_unix_seconds(seconds: i64) -> Option<Self> {
         let moment = OffsetDateTime::from_unix_timestamp(seconds).ok()?;
         (0..=9999)

@@ -48,7 +48,7 @@ pub(crate) struct GridPoles {
 
 impl GridPoles {
     /// The pole lines of the `nu x nv` grid `points` (see the module docs).
-    pub fn detect(nu: usize, nv: usize, points: &[Point3]) -> GridPoles {
+    pub(crate) fn detect(nu: usize, nv: usize, points: &[Point3]) -> GridPoles {
         if nu < 2 || nv < 2 || nu.checked_mul(nv) != Some(points.len()) {
             return GridPoles::default();
         }

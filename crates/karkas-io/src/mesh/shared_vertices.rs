@@ -26,7 +26,7 @@ pub(crate) struct SharedVertices<'a> {
 
 impl<'a> SharedVertices<'a> {
     /// The mesh `mesh` (assumed valid), its grid seams welded when it has a grid shape.
-    pub fn of(mesh: &'a TriangleMesh) -> SharedVertices<'a> {
+    pub(crate) fn of(mesh: &'a TriangleMesh) -> SharedVertices<'a> {
         let mesh = if has_poles(mesh) {
             Cow::Owned(weld_grid_mesh(mesh))
         } else {

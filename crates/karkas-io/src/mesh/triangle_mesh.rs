@@ -36,6 +36,18 @@ pub struct TriangleMesh {
 impl TriangleMesh {
     /// The mesh of a sampled surface grid (see the module docs); an error
     /// ([`MeshError::TooManyVertices`]) when the grid has `2^32` or more samples.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::{Grid, Point};
+    /// use karkas_io::mesh::TriangleMesh;
+    ///
+    /// // A 3 x 4 grid of samples: 12 vertices and 2 x 3 cells of two triangles each.
+    /// let grid = Grid::from_fn(3, 4, |i, j| Point([i as f64, j as f64, 0.0]));
+    /// let mesh = TriangleMesh::from_grid(&grid).expect("a small grid");
+    /// assert_eq!((mesh.positions.len(), mesh.triangles.len()), (12, 12));
+    /// ```
     pub fn from_grid(grid: &Grid<Point3>) -> Result<TriangleMesh, MeshError> {
         let (nu, nv) = (grid.rows(), grid.cols());
         let points = grid.as_slice();

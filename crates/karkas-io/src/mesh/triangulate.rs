@@ -56,7 +56,7 @@ impl GridSeams {
     /// The seams of the `nu x nv` grid `points` (`points.len() == nu * nv`): a direction is
     /// closed when its last line of samples is its first within `1e-12` times the largest
     /// coordinate (at least 1). O(nu + nv) after one pass for the scale.
-    pub fn detect(nu: usize, nv: usize, points: &[Point3]) -> GridSeams {
+    pub(crate) fn detect(nu: usize, nv: usize, points: &[Point3]) -> GridSeams {
         if nu.checked_mul(nv) != Some(points.len()) {
             return GridSeams::open(nu, nv);
         }
@@ -74,7 +74,7 @@ impl GridSeams {
     }
 
     /// A grid without seams (every sample its own vertex).
-    pub fn open(nu: usize, nv: usize) -> GridSeams {
+    pub(crate) fn open(nu: usize, nv: usize) -> GridSeams {
         GridSeams {
             nu,
             nv,

@@ -65,6 +65,16 @@ pub struct Frame {
 impl Frame {
     /// The frame showing `points` (their bounding box padded by [`PADDING`]) with equal
     /// scales, with `legend_lines` lines of legend under the caption.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas_io::picture::chart::Frame;
+    ///
+    /// let frame = Frame::new([(0.0, 0.0), (2.0, 1.0)].into_iter(), 0);
+    /// let (left, right) = (frame.to_px((0.0, 0.0)), frame.to_px((2.0, 0.0)));
+    /// assert!(right.0 > left.0 && (right.1 - left.1).abs() < 1e-9); // x grows to the right
+    /// ```
     pub fn new(points: impl Iterator<Item = (f64, f64)>, legend_lines: usize) -> Frame {
         let (x, y) = padded_bounds(points);
         let top = TOP + LEGEND_LINE * legend_lines as f64;
@@ -113,6 +123,17 @@ pub struct Chart {
 impl Chart {
     /// Starts a chart titled `title` over `frame`: background, caption, `legend`, grid,
     /// ticks, tick labels and the axis names `axes`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas_io::picture::chart::{Chart, Frame, LegendEntry};
+    ///
+    /// let frame = Frame::new([(0.0, 0.0), (1.0, 1.0)].into_iter(), 1);
+    /// let legend = [LegendEntry { rgb: (0, 0, 255), text: "curve".into() }];
+    /// let svg = Chart::new("A title", ("x", "y"), frame, &legend).finish();
+    /// assert!(svg.starts_with("<svg") && svg.contains("A title") && svg.trim_end().ends_with("</svg>"));
+    /// ```
     pub fn new(title: &str, axes: (&str, &str), frame: Frame, legend: &[LegendEntry]) -> Chart {
         let (w, h) = frame.size;
         let mut svg = String::with_capacity(16 * 1024);

@@ -41,6 +41,19 @@ impl ScaledComb {
     /// The comb of the `teeth` (each a foot on the curve and the curvature vector there:
     /// length the curvature, pointing away from the centre of curvature) of a curve whose
     /// extent (the larger side of its bounding box) is `extent`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::Point;
+    /// use karkas_io::picture::comb::ScaledComb;
+    ///
+    /// // Two teeth of curvature 1 and 2 on a curve 10 across.
+    /// let teeth = [[Point([0.0, 0.0]), Point([0.0, 1.0])], [Point([1.0, 0.0]), Point([0.0, 2.0])]];
+    /// let comb = ScaledComb::new(&teeth, 10.0);
+    /// assert_eq!(comb.teeth.len(), 2);
+    /// assert!(comb.factor > 0.0 && comb.clipped == 0);
+    /// ```
     pub fn new(teeth: &[[karkas::Point2; 2]], extent: f64) -> ScaledComb {
         let finite: Vec<&[karkas::Point2; 2]> = teeth
             .iter()

@@ -156,6 +156,21 @@ impl<const D: usize> BSplineCurve<D> {
     /// reports it.
     ///
     /// Errors: those of [`new`](Self::new), and ends that do not coincide.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::bspline::BSplineCurve;
+    /// use karkas::{Curve, Point};
+    ///
+    /// // A unit square as a closed polyline (degree 1): the last control point repeats the first.
+    /// let square = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0], [0.0, 0.0]].map(Point);
+    /// let knots = vec![0.0, 0.0, 1.0, 2.0, 3.0, 4.0, 4.0];
+    /// let closed = BSplineCurve::new_closed(1, knots.clone(), square.to_vec())?;
+    /// assert!(closed.is_closed());
+    /// assert!(BSplineCurve::new_closed(1, knots, square[..4].iter().chain(&square[1..2]).copied().collect()).is_err());
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn new_closed(degree: usize, knots: Vec<f64>, control: Vec<Point<D>>) -> Result<Self> {
         let curve = Self::new(degree, knots, control)?;
         let (first, last) = (curve.control[0], curve.control[curve.control.len() - 1]);

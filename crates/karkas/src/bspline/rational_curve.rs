@@ -53,6 +53,20 @@ impl<const D: usize> NurbsCurve<D> {
     /// empty domain or repeat too often ([`Error::InvalidKnot`]), a non-finite control point
     /// ([`Error::NonFinitePoint`]), a weight that is not finite and positive
     /// ([`Error::InvalidWeight`]).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::bspline::NurbsCurve;
+    /// use karkas::{Curve, Point};
+    ///
+    /// // The quarter circle as a rational quadratic: the middle weight is cos(45 degrees).
+    /// let control = vec![Point([1.0, 0.0]), Point([1.0, 1.0]), Point([0.0, 1.0])];
+    /// let weights = vec![1.0, std::f64::consts::FRAC_1_SQRT_2, 1.0];
+    /// let arc = NurbsCurve::new(2, vec![0.0, 0.0, 0.0, 1.0, 1.0, 1.0], control, weights)?;
+    /// assert!((arc.eval(0.3).norm() - 1.0).abs() < 1e-12);
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn new(
         degree: usize,
         knots: Vec<f64>,
@@ -102,6 +116,20 @@ impl<const D: usize> NurbsCurve<D> {
     }
 
     /// The polynomial B-spline `curve` with every weight 1 (exactly the same curve).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::bspline::{BSplineCurve, NurbsCurve};
+    /// use karkas::{Curve, Point};
+    ///
+    /// let control = vec![Point([0.0, 0.0]), Point([1.0, 2.0]), Point([2.0, 0.0])];
+    /// let curve = BSplineCurve::new(2, vec![0.0, 0.0, 0.0, 1.0, 1.0, 1.0], control)?;
+    /// let nurbs = NurbsCurve::from_bspline(&curve);
+    /// assert!(!nurbs.is_rational());
+    /// assert!(nurbs.eval(0.25).distance(curve.eval(0.25)) < 1e-14);
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn from_bspline(curve: &BSplineCurve<D>) -> Self {
         let n = curve.control_points().len();
         NurbsCurve {

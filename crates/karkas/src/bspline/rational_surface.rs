@@ -62,6 +62,23 @@ impl<const D: usize> NurbsSurface<D> {
     /// Errors: as [`NurbsCurve::new`] in each direction; a weight grid of another shape
     /// ([`Error::CountMismatch`]); a non-finite control point ([`Error::NonFiniteCell`]); a
     /// weight that is not finite and positive ([`Error::InvalidWeight`], row-major index).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::bspline::NurbsSurface;
+    /// use karkas::{Grid, Point, Surface};
+    ///
+    /// // The bilinear patch z = u v with unit weights.
+    /// let control = Grid::from_fn(2, 2, |i, j| Point([i as f64, j as f64, (i * j) as f64]));
+    /// let weights = Grid::from_fn(2, 2, |_, _| 1.0);
+    /// let linear = (1, vec![0.0, 0.0, 1.0, 1.0]);
+    /// let patch = NurbsSurface::new(linear.clone(), linear.clone(), control.clone(), weights)?;
+    /// assert!(patch.eval(0.5, 0.5).distance(Point([0.5, 0.5, 0.25])) < 1e-14);
+    /// let bad = Grid::from_fn(2, 2, |_, _| -1.0);
+    /// assert!(NurbsSurface::new(linear.clone(), linear, control, bad).is_err());
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn new(
         (degree_u, knots_u): (usize, Vec<f64>),
         (degree_v, knots_v): (usize, Vec<f64>),
@@ -101,6 +118,20 @@ impl<const D: usize> NurbsSurface<D> {
     }
 
     /// The polynomial B-spline surface `surface` with every weight 1.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::bspline::{BSplineSurface, NurbsSurface};
+    /// use karkas::{Grid, Point, Surface};
+    ///
+    /// let control = Grid::from_fn(2, 2, |i, j| Point([i as f64, j as f64, (i * j) as f64]));
+    /// let linear = (1, vec![0.0, 0.0, 1.0, 1.0]);
+    /// let surface = BSplineSurface::new(linear.clone(), linear, control)?;
+    /// let nurbs = NurbsSurface::from_bspline(&surface);
+    /// assert!(nurbs.eval(0.2, 0.7).distance(surface.eval(0.2, 0.7)) < 1e-14);
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn from_bspline(surface: &BSplineSurface<D>) -> Self {
         let control = surface.control_points().clone();
         NurbsSurface {

@@ -27,6 +27,22 @@ impl<const D: usize> BSplineSurface<D> {
     ///
     /// Errors: as [`BSplineCurve::new`] in each direction; a non-finite control point
     /// ([`Error::NonFiniteCell`]).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::bspline::BSplineSurface;
+    /// use karkas::{Grid, Point, Surface};
+    ///
+    /// // The bilinear patch through (0,0,0), (1,0,0), (0,1,0), (1,1,1): z = u v.
+    /// let control = Grid::from_fn(2, 2, |i, j| Point([i as f64, j as f64, (i * j) as f64]));
+    /// let linear = (1, vec![0.0, 0.0, 1.0, 1.0]);
+    /// let patch = BSplineSurface::new(linear.clone(), linear.clone(), control.clone())?;
+    /// assert!(patch.eval(0.5, 0.5).distance(Point([0.5, 0.5, 0.25])) < 1e-14);
+    /// // Three knots are too few for two control points of degree 1.
+    /// assert!(BSplineSurface::new((1, vec![0.0, 1.0, 1.0]), linear, control).is_err());
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn new(
         (degree_u, knots_u): (usize, Vec<f64>),
         (degree_v, knots_v): (usize, Vec<f64>),

@@ -44,6 +44,20 @@ impl Frame {
     ///
     /// Errors: a non-finite input, a zero axis, or a reference direction parallel to the
     /// axis ([`Error::InvalidSetting`]).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::bspline::sweep::Frame;
+    /// use karkas::Point;
+    ///
+    /// // The reference direction is made orthogonal to the axis.
+    /// let frame = Frame::new(Point([0.0; 3]), Point([0.0, 0.0, 2.0]), Point([1.0, 0.0, 1.0]))?;
+    /// assert!(frame.x.distance(Point([1.0, 0.0, 0.0])) < 1e-14);
+    /// assert!(frame.y.distance(Point([0.0, 1.0, 0.0])) < 1e-14);
+    /// assert!(Frame::new(Point([0.0; 3]), Point([0.0, 0.0, 1.0]), Point([0.0, 0.0, 3.0])).is_err());
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn new(origin: Point3, z: Point3, x: Point3) -> Result<Frame> {
         let bad = |reason| Error::InvalidSetting {
             name: "a placement's axis",

@@ -42,6 +42,29 @@ impl<const D: usize> core::fmt::Debug for SurfaceCrossDerivative<D> {
 impl<const D: usize> SurfaceCrossDerivative<D> {
     /// The cross-derivative of `surface` along the line `u = at` ([`Along::V`]) or `v = at`
     /// ([`Along::U`]).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use std::sync::Arc;
+    /// use karkas::coons::{curve_ref, Along, CoonsSurface, CurveNetwork, NetworkAxis, PolylineCurve, SurfaceCrossDerivative};
+    /// use karkas::{Curve, Point};
+    ///
+    /// let edge = |a: [f64; 3], b: [f64; 3]| -> karkas::Result<_> {
+    ///     Ok(curve_ref(PolylineCurve::new(&[Point(a), Point(b)], &[0.0, 1.0])?))
+    /// };
+    /// let (p00, p10, p01, p11) = ([0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [1.0, 1.0, 1.0]);
+    /// let axis = || NetworkAxis::open(vec![0.0, 1.0]);
+    /// let network = CurveNetwork::new(
+    ///     axis()?, vec![edge(p00, p01)?, edge(p10, p11)?],
+    ///     axis()?, vec![edge(p00, p10)?, edge(p01, p11)?],
+    /// )?;
+    /// // The bilinear patch is (u, v, u v): along u = 0 its u-derivative is (1, 0, v).
+    /// let patch = Arc::new(CoonsSurface::bilinear(&network, 1e-9)?);
+    /// let across = SurfaceCrossDerivative::new(patch, Along::V, 0.0);
+    /// assert!(across.eval(0.5).distance(Point([1.0, 0.0, 0.5])) < 1e-12);
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn new(surface: Arc<CoonsSurface<D>>, along: Along, at: f64) -> Self {
         SurfaceCrossDerivative { surface, along, at }
     }

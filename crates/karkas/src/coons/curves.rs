@@ -38,6 +38,20 @@ impl<const D: usize> core::fmt::Debug for AffineCurve<D> {
 
 impl<const D: usize> AffineCurve<D> {
     /// `inner` over `domain` (a nonempty finite interval, as the callers guarantee).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::coons::{curve_ref, AffineCurve, PolylineCurve};
+    /// use karkas::{Curve, Interval, Point};
+    ///
+    /// let segment = PolylineCurve::new(&[Point([0.0, 0.0]), Point([2.0, 0.0])], &[0.0, 1.0])?;
+    /// // The same segment run over [0, 4] instead of [0, 1].
+    /// let stretched = AffineCurve::new(curve_ref(segment), Interval::new(0.0, 4.0));
+    /// assert_eq!(stretched.domain().end, 4.0);
+    /// assert!(stretched.eval(1.0).distance(Point([0.5, 0.0])) < 1e-14);
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn new(inner: CurveRef<D>, domain: Interval) -> Self {
         let own = inner.domain();
         AffineCurve {

@@ -23,6 +23,27 @@ impl<const D: usize> CoonsSurface<D> {
     ///
     /// Errors: another network shape ([`Error::NotFourSided`]); incompatible corners
     /// ([`Error::IncompatibleCurves`]).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::coons::{curve_ref, CoonsSurface, CurveNetwork, NetworkAxis, PolylineCurve};
+    /// use karkas::{Point, Surface};
+    ///
+    /// let edge = |a: [f64; 3], b: [f64; 3]| -> karkas::Result<_> {
+    ///     Ok(curve_ref(PolylineCurve::new(&[Point(a), Point(b)], &[0.0, 1.0])?))
+    /// };
+    /// let (p00, p10, p01, p11) = ([0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [1.0, 1.0, 1.0]);
+    /// let axis = || NetworkAxis::open(vec![0.0, 1.0]);
+    /// let network = CurveNetwork::new(
+    ///     axis()?, vec![edge(p00, p01)?, edge(p10, p11)?],
+    ///     axis()?, vec![edge(p00, p10)?, edge(p01, p11)?],
+    /// )?;
+    /// // Four straight edges: the hyperbolic paraboloid z = u v.
+    /// let patch = CoonsSurface::bilinear(&network, 1e-9)?;
+    /// assert!(patch.eval(0.5, 0.5).distance(Point([0.5, 0.5, 0.25])) < 1e-12);
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn bilinear(
         network: &CurveNetwork<D>,
         compatibility: impl Into<Compatibility>,
@@ -56,6 +77,28 @@ impl<const D: usize> CoonsSurface<D> {
     ///
     /// Errors: another network shape ([`Error::NotFourSided`]); cross-derivative counts other
     /// than two ([`Error::CountMismatch`]); a violation of (8) ([`Error::IncompatibleCurves`]).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::coons::{curve_ref, CoonsSurface, CurveNetwork, NetworkAxis, PolylineCurve};
+    /// use karkas::{Point, Surface};
+    ///
+    /// let edge = |a: [f64; 3], b: [f64; 3]| -> karkas::Result<_> {
+    ///     Ok(curve_ref(PolylineCurve::new(&[Point(a), Point(b)], &[0.0, 1.0])?))
+    /// };
+    /// let (p00, p10, p01, p11) = ([0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [1.0, 1.0, 1.0]);
+    /// let axis = || NetworkAxis::open(vec![0.0, 1.0]);
+    /// let network = CurveNetwork::new(
+    ///     axis()?, vec![edge(p00, p01)?, edge(p10, p11)?],
+    ///     axis()?, vec![edge(p00, p10)?, edge(p01, p11)?],
+    /// )?;
+    /// let patch = CoonsSurface::bicubic(&network, None, 1e-9)?;
+    /// // The surface passes through its boundary curves.
+    /// assert!(patch.eval(1.0, 0.5).distance(Point([1.0, 0.5, 0.5])) < 1e-12);
+    /// assert!(patch.eval(0.5, 0.0).distance(Point([0.5, 0.0, 0.0])) < 1e-12);
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn bicubic(
         network: &CurveNetwork<D>,
         cross: Option<&CrossDerivatives<D>>,
@@ -97,6 +140,34 @@ impl<const D: usize> CoonsSurface<D> {
     ///
     /// Errors: a violation of (8) at a crossing ([`Error::IncompatibleCurves`] naming the
     /// v-curve and u-curve).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::coons::{curve_ref, CoonsSurface, CurveNetwork, NetworkAxis, PolylineCurve};
+    /// use karkas::{Point, Surface};
+    ///
+    /// // Three v-curves and two u-curves of the plane z = 0.
+    /// let edge = |a: [f64; 3], b: [f64; 3], c: [f64; 3]| -> karkas::Result<_> {
+    ///     Ok(curve_ref(PolylineCurve::new(&[Point(a), Point(b), Point(c)], &[0.0, 1.0, 2.0])?))
+    /// };
+    /// let v_curves = vec![
+    ///     edge([0.0, 0.0, 0.0], [0.0, 0.5, 0.0], [0.0, 1.0, 0.0])?,
+    ///     edge([1.0, 0.0, 0.0], [1.0, 0.5, 0.0], [1.0, 1.0, 0.0])?,
+    ///     edge([2.0, 0.0, 0.0], [2.0, 0.5, 0.0], [2.0, 1.0, 0.0])?,
+    /// ];
+    /// let u_curves = vec![
+    ///     edge([0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [2.0, 0.0, 0.0])?,
+    ///     edge([0.0, 1.0, 0.0], [1.0, 1.0, 0.0], [2.0, 1.0, 0.0])?,
+    /// ];
+    /// let network = CurveNetwork::new(
+    ///     NetworkAxis::uniform(3, false)?, v_curves,
+    ///     NetworkAxis::open(vec![0.0, 2.0])?, u_curves,
+    /// )?;
+    /// let surface = CoonsSurface::gordon(&network, 1e-9)?;
+    /// assert!(surface.eval(1.5, 1.0).distance(Point([1.5, 0.5, 0.0])) < 1e-12);
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn gordon(
         network: &CurveNetwork<D>,
         compatibility: impl Into<Compatibility>,
@@ -123,6 +194,28 @@ impl<const D: usize> CoonsSurface<D> {
     /// periodic splines in a closed one (`C^2` across the seam).
     ///
     /// Errors: as [`gordon`](Self::gordon).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::coons::{curve_ref, CoonsSurface, CurveNetwork, NetworkAxis, PolylineCurve};
+    /// use karkas::param::SplineEnds;
+    /// use karkas::{Point, Surface};
+    ///
+    /// let edge = |a: [f64; 3], b: [f64; 3]| -> karkas::Result<_> {
+    ///     Ok(curve_ref(PolylineCurve::new(&[Point(a), Point(b)], &[0.0, 1.0])?))
+    /// };
+    /// let (p00, p10, p01, p11) = ([0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [1.0, 1.0, 1.0]);
+    /// let axis = || NetworkAxis::open(vec![0.0, 1.0]);
+    /// let network = CurveNetwork::new(
+    ///     axis()?, vec![edge(p00, p01)?, edge(p10, p11)?],
+    ///     axis()?, vec![edge(p00, p10)?, edge(p01, p11)?],
+    /// )?;
+    /// // On two nodes the natural cubic spline blending is linear: the bilinear patch z = u v.
+    /// let patch = CoonsSurface::gordon_spline(&network, SplineEnds::Natural, 1e-9)?;
+    /// assert!(patch.eval(0.5, 0.5).distance(Point([0.5, 0.5, 0.25])) < 1e-12);
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn gordon_spline(
         network: &CurveNetwork<D>,
         ends: SplineEnds,
@@ -163,6 +256,27 @@ impl<const D: usize> CoonsSurface<D> {
     /// Errors: cross-derivative counts that differ from the curve counts
     /// ([`Error::CountMismatch`]); a violation of (11)
     /// ([`Error::IncompatibleCurves`] naming the curves and the condition).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::coons::{curve_ref, CoonsSurface, CurveNetwork, NetworkAxis, PolylineCurve};
+    /// use karkas::{Point, Surface};
+    ///
+    /// let edge = |a: [f64; 3], b: [f64; 3]| -> karkas::Result<_> {
+    ///     Ok(curve_ref(PolylineCurve::new(&[Point(a), Point(b)], &[0.0, 1.0])?))
+    /// };
+    /// let (p00, p10, p01, p11) = ([0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [1.0, 1.0, 1.0]);
+    /// let axis = || NetworkAxis::open(vec![0.0, 1.0]);
+    /// let network = CurveNetwork::new(
+    ///     axis()?, vec![edge(p00, p01)?, edge(p10, p11)?],
+    ///     axis()?, vec![edge(p00, p10)?, edge(p01, p11)?],
+    /// )?;
+    /// let patch = CoonsSurface::composite(&network, None, 1e-9)?;
+    /// assert!(patch.eval(1.0, 1.0).distance(Point(p11)) < 1e-12);
+    /// assert!(patch.eval(0.0, 0.5).distance(Point([0.0, 0.5, 0.0])) < 1e-12);
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn composite(
         network: &CurveNetwork<D>,
         cross: Option<&CrossDerivatives<D>>,

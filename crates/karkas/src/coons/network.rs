@@ -25,6 +25,17 @@ pub struct NetworkAxis {
 
 impl NetworkAxis {
     /// An open direction with `nodes` (at least two, finite, strictly increasing).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::coons::NetworkAxis;
+    ///
+    /// let axis = NetworkAxis::open(vec![0.0, 0.5, 2.0])?;
+    /// assert_eq!(axis.period(), None);
+    /// assert!(NetworkAxis::open(vec![1.0, 0.0]).is_err());
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn open(nodes: Vec<f64>) -> Result<Self> {
         check_nodes(&nodes, 2, "an open network direction")?;
         Ok(NetworkAxis {
@@ -35,6 +46,19 @@ impl NetworkAxis {
 
     /// A closed direction with `nodes` (at least three, strictly increasing) and `period`:
     /// the last node must lie below `nodes[0] + period`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::coons::NetworkAxis;
+    ///
+    /// let axis = NetworkAxis::closed(vec![0.0, 1.0, 2.0], 3.0)?;
+    /// assert!(axis.is_closed());
+    /// assert_eq!(axis.period(), Some(3.0));
+    /// // The last node must lie below nodes[0] + period.
+    /// assert!(NetworkAxis::closed(vec![0.0, 1.0, 2.0], 2.0).is_err());
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn closed(nodes: Vec<f64>, period: f64) -> Result<Self> {
         check_nodes(&nodes, 3, "a closed network direction")?;
         let end = nodes[0] + period;
@@ -53,6 +77,18 @@ impl NetworkAxis {
 
     /// The paper's integer nodes `0, 1, ..., count - 1` (open, `count >= 2`) or, closed, the
     /// same with period `count` (`count >= 3`).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::coons::NetworkAxis;
+    ///
+    /// let axis = NetworkAxis::uniform(4, true)?;
+    /// assert_eq!(axis.nodes(), &[0.0, 1.0, 2.0, 3.0]);
+    /// assert_eq!(axis.period(), Some(4.0));
+    /// assert!(NetworkAxis::uniform(2, true).is_err());
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn uniform(count: usize, closed: bool) -> Result<Self> {
         let nodes: Vec<f64> = (0..count).map(|i| i as f64).collect();
         if closed {
@@ -129,6 +165,27 @@ impl<const D: usize> CurveNetwork<D> {
     /// Errors: curve counts that differ from the node counts ([`Error::CountMismatch`]); an
     /// open v-curve when the `v` direction is closed, or a closed one when it is open (same
     /// for u-curves; [`Error::CurveClosure`]).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::coons::{curve_ref, CurveNetwork, NetworkAxis, PolylineCurve};
+    /// use karkas::Point;
+    ///
+    /// let edge = |a: [f64; 3], b: [f64; 3]| -> karkas::Result<_> {
+    ///     Ok(curve_ref(PolylineCurve::new(&[Point(a), Point(b)], &[0.0, 1.0])?))
+    /// };
+    /// let (p00, p10, p01, p11) = ([0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [1.0, 1.0, 1.0]);
+    /// let axis = || NetworkAxis::open(vec![0.0, 1.0]);
+    /// let network = CurveNetwork::new(
+    ///     axis()?, vec![edge(p00, p01)?, edge(p10, p11)?],
+    ///     axis()?, vec![edge(p00, p10)?, edge(p01, p11)?],
+    /// )?;
+    /// assert_eq!(network.v_curves().len(), 2);
+    /// // One v-curve for two u nodes.
+    /// assert!(CurveNetwork::new(axis()?, vec![edge(p00, p01)?], axis()?, vec![edge(p00, p10)?, edge(p01, p11)?]).is_err());
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn new(
         u_axis: NetworkAxis,
         v_curves: Vec<CurveRef<D>>,
@@ -233,6 +290,30 @@ impl<const D: usize> CrossDerivatives<D> {
     /// When `surface` interpolates the network (a Gordon surface, by Proposition 1), these
     /// satisfy the compatibility conditions (11) by construction: `A_i(v_j) = S_u(u_i, v_j) =
     /// b_j'(u_i)`, `B_j(u_i) = a_i'(v_j)`, and `A_i'(v_j) = S_uv(u_i, v_j) = B_j'(u_i)`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use std::sync::Arc;
+    /// use karkas::coons::{curve_ref, CoonsSurface, CrossDerivatives, CurveNetwork, NetworkAxis, PolylineCurve};
+    /// use karkas::{Curve, Point};
+    ///
+    /// let edge = |a: [f64; 3], b: [f64; 3]| -> karkas::Result<_> {
+    ///     Ok(curve_ref(PolylineCurve::new(&[Point(a), Point(b)], &[0.0, 1.0])?))
+    /// };
+    /// let (p00, p10, p01, p11) = ([0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [1.0, 1.0, 1.0]);
+    /// let axis = || NetworkAxis::open(vec![0.0, 1.0]);
+    /// let network = CurveNetwork::new(
+    ///     axis()?, vec![edge(p00, p01)?, edge(p10, p11)?],
+    ///     axis()?, vec![edge(p00, p10)?, edge(p01, p11)?],
+    /// )?;
+    /// let patch = Arc::new(CoonsSurface::bilinear(&network, 1e-9)?);
+    /// let cross = CrossDerivatives::from_surface(patch, &network);
+    /// // S = (u, v, u v): dS/du along u = 1 is (1, 0, v).
+    /// assert_eq!(cross.v_curves.len(), 2);
+    /// assert!(cross.v_curves[1].eval(0.5).distance(Point([1.0, 0.0, 0.5])) < 1e-12);
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn from_surface(surface: Arc<CoonsSurface<D>>, network: &CurveNetwork<D>) -> Self {
         let across = |along: Along, nodes: &[f64]| -> Vec<CurveRef<D>> {
             nodes

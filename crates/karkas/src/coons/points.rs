@@ -108,6 +108,22 @@ impl<const D: usize> PointNetwork<D> {
     /// common point, a pair meeting more than once, or crossings out of order; crossings too
     /// unevenly spaced along a curve ([`Error::NetworkCurve`] around
     /// [`Error::UnevenCrossings`]); an LL order outside `1..=64`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::coons::{CurveFit, PointNetwork, POINT_NETWORK_TOLERANCE};
+    /// use karkas::Point;
+    ///
+    /// // Three lines x = 0, 1, 2 and three lines y = 0, 1, 2 of the plane z = 0, crossing at integers.
+    /// let line = |f: &dyn Fn(f64) -> [f64; 3]| (0..=4).map(|k| Point(f(k as f64 / 2.0))).collect::<Vec<_>>();
+    /// let v_curves: Vec<_> = (0..3).map(|i| line(&move |t| [i as f64, t, 0.0])).collect();
+    /// let u_curves: Vec<_> = (0..3).map(|j| line(&move |t| [t, j as f64, 0.0])).collect();
+    /// let network = PointNetwork::new(&v_curves, &u_curves, CurveFit::CubicSpline, POINT_NETWORK_TOLERANCE)?;
+    /// assert_eq!(network.network().u_axis().nodes().len(), 3);
+    /// assert!(PointNetwork::new(&v_curves, &u_curves, CurveFit::Ll(0), POINT_NETWORK_TOLERANCE).is_err());
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn new(
         v_curves: &[Vec<Point<D>>],
         u_curves: &[Vec<Point<D>>],

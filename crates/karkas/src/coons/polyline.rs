@@ -24,6 +24,19 @@ impl<const D: usize> PolylineCurve<D> {
     ///
     /// Errors: fewer than two points, lengths that differ ([`Error::CountMismatch`]), a
     /// non-finite coordinate, parameters not finite and strictly increasing.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::coons::PolylineCurve;
+    /// use karkas::{Curve, Point};
+    ///
+    /// let points = [Point([0.0, 0.0]), Point([1.0, 0.0]), Point([1.0, 2.0])];
+    /// let polyline = PolylineCurve::new(&points, &[0.0, 1.0, 3.0])?;
+    /// assert!(polyline.eval(2.0).distance(Point([1.0, 1.0])) < 1e-14);
+    /// assert!(PolylineCurve::new(&points, &[0.0, 1.0]).is_err()); // one parameter per point
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn new(points: &[Point<D>], params: &[f64]) -> Result<Self> {
         if points.len() != params.len() {
             return Err(Error::CountMismatch {

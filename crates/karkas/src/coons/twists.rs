@@ -79,6 +79,29 @@ impl<const D: usize> CrossDerivatives<D> {
     ///
     /// Errors: a grid whose shape is not (v-curves) x (u-curves) ([`Error::CountMismatch`]);
     /// a non-finite twist ([`Error::NonFiniteCell`]).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::coons::{curve_ref, CrossDerivatives, CurveNetwork, NetworkAxis, PolylineCurve};
+    /// use karkas::{Grid, Point};
+    ///
+    /// let edge = |a: [f64; 3], b: [f64; 3]| -> karkas::Result<_> {
+    ///     Ok(curve_ref(PolylineCurve::new(&[Point(a), Point(b)], &[0.0, 1.0])?))
+    /// };
+    /// let (p00, p10, p01, p11) = ([0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [1.0, 1.0, 1.0]);
+    /// let axis = || NetworkAxis::open(vec![0.0, 1.0]);
+    /// let network = CurveNetwork::new(
+    ///     axis()?, vec![edge(p00, p01)?, edge(p10, p11)?],
+    ///     axis()?, vec![edge(p00, p10)?, edge(p01, p11)?],
+    /// )?;
+    /// let twists = Grid::from_fn(2, 2, |_, _| Point([0.0, 0.0, 1.0]));
+    /// let cross = CrossDerivatives::from_twists(&network, &twists)?;
+    /// assert_eq!((cross.v_curves.len(), cross.u_curves.len()), (2, 2));
+    /// let wrong_shape = Grid::from_fn(3, 2, |_, _| Point([0.0, 0.0, 1.0]));
+    /// assert!(CrossDerivatives::from_twists(&network, &wrong_shape).is_err());
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn from_twists(network: &CurveNetwork<D>, twists: &Grid<Point<D>>) -> Result<Self> {
         let (u_axis, v_axis) = (network.u_axis(), network.v_axis());
         let (m, n) = (u_axis.nodes().len(), v_axis.nodes().len());
@@ -134,6 +157,27 @@ impl<const D: usize> CrossDerivatives<D> {
 
     /// The cross-derivative curves of [`from_twists`](Self::from_twists) with the twists of
     /// [`derived_twists`]: what every constructor uses when no cross-derivatives are given.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::coons::{curve_ref, CrossDerivatives, CurveNetwork, NetworkAxis, PolylineCurve};
+    /// use karkas::{Curve, Point};
+    ///
+    /// let edge = |a: [f64; 3], b: [f64; 3]| -> karkas::Result<_> {
+    ///     Ok(curve_ref(PolylineCurve::new(&[Point(a), Point(b)], &[0.0, 1.0])?))
+    /// };
+    /// let (p00, p10, p01, p11) = ([0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [1.0, 1.0, 1.0]);
+    /// let axis = || NetworkAxis::open(vec![0.0, 1.0]);
+    /// let network = CurveNetwork::new(
+    ///     axis()?, vec![edge(p00, p01)?, edge(p10, p11)?],
+    ///     axis()?, vec![edge(p00, p10)?, edge(p01, p11)?],
+    /// )?;
+    /// let cross = CrossDerivatives::derived(&network)?;
+    /// // A_0(v_0) is the u-curve's tangent at the corner (0, 0): (1, 0, 0).
+    /// assert!(cross.v_curves[0].eval(0.0).distance(Point([1.0, 0.0, 0.0])) < 1e-12);
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn derived(network: &CurveNetwork<D>) -> Result<Self> {
         Self::from_twists(network, &derived_twists(network)?)
     }

@@ -76,6 +76,17 @@ impl Knots {
     ///
     /// Errors: too few knots ([`Error::TooFewPoints`] naming `what`), a knot that is not
     /// finite or not greater than the one before it ([`Error::InvalidKnot`]).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::core::Knots;
+    ///
+    /// let knots = Knots::new(vec![0.0, 0.5, 2.0], 2, "breakpoints")?;
+    /// assert_eq!((knots.domain().start, knots.domain().end), (0.0, 2.0));
+    /// assert!(Knots::new(vec![0.0, 0.0, 1.0], 2, "breakpoints").is_err()); // not increasing
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn new(values: Vec<f64>, needed: usize, what: &'static str) -> Result<Self> {
         check_knots(&values, needed.max(2), what)?;
         Ok(Knots(values))

@@ -18,6 +18,15 @@ pub struct PolynomialPieces {
 
 impl PolynomialPieces {
     /// Pieces of degree `degree` on `breaks` with the same continuity at every inner one.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::core::PolynomialPieces;
+    ///
+    /// let pieces = PolynomialPieces::uniform_continuity(3, vec![0.0, 1.0, 2.0, 3.0], 2);
+    /// assert_eq!(pieces.continuity, vec![2, 2]); // one per inner breakpoint
+    /// ```
     pub fn uniform_continuity(degree: usize, breaks: Vec<f64>, continuity: usize) -> Self {
         let inner = breaks.len().saturating_sub(2);
         PolynomialPieces {
@@ -46,6 +55,19 @@ impl PolynomialPieces {
     /// the domain (those closer than `1e-10` of the domain length to one already taken are
     /// merged into it), the largest degree, and at each breakpoint the smallest continuity
     /// of the sources that break there.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::core::PolynomialPieces;
+    /// use karkas::Interval;
+    ///
+    /// let a = PolynomialPieces::uniform_continuity(3, vec![0.0, 1.0, 2.0], 2);
+    /// let b = PolynomialPieces::uniform_continuity(1, vec![0.0, 0.5, 2.0], 0);
+    /// let both = PolynomialPieces::merge(&[a, b], Interval::new(0.0, 2.0));
+    /// assert_eq!(both.breaks, vec![0.0, 0.5, 1.0, 2.0]);
+    /// assert_eq!((both.degree, both.continuity.clone()), (3, vec![0, 2]));
+    /// ```
     pub fn merge(sources: &[PolynomialPieces], domain: Interval) -> Self {
         let tolerance = 1e-10 * domain.length();
         let degree = sources.iter().map(|s| s.degree).max().unwrap_or(1);

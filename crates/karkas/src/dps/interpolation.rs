@@ -78,6 +78,17 @@ impl InterpolationPlan {
     ///
     /// Errors: `m < 2`, `n < 2`, `order` outside `1..=`[`MAX_ORDER`](super::MAX_ORDER), `m n`
     /// overflowing.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::dps::InterpolationPlan;
+    ///
+    /// let plan = InterpolationPlan::new(8, 4, 2)?;
+    /// assert_eq!((plan.nodes(), plan.step(), plan.order()), (8, 4, 2));
+    /// assert!(InterpolationPlan::new(1, 4, 2).is_err());
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn new(m: usize, n: usize, order: usize) -> Result<Self> {
         check_period(m, n, order, "a discrete periodic spline")?;
         let mut planner = RealFftPlanner::<f64>::new();

@@ -40,6 +40,20 @@ impl<const D: usize> DiscreteSpline<D> {
     ///
     /// Errors: fewer than 2 poles, `n < 2`, `order` outside `1..=`[`MAX_ORDER`](super::MAX_ORDER),
     /// a non-finite pole, `m n` overflowing.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::dps::DiscreteSpline;
+    /// use karkas::Point;
+    ///
+    /// let poles = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]].map(Point);
+    /// let spline = DiscreteSpline::from_poles(&poles, 2, 5)?;
+    /// assert_eq!(spline.period(), 20); // m n values per period
+    /// assert_eq!(spline.to_values().len(), 20);
+    /// assert!(DiscreteSpline::from_poles(&poles, 2, 1).is_err()); // n < 2
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn from_poles(poles: &[Point<D>], order: usize, n: usize) -> Result<Self> {
         check_period(poles.len(), n, order, "a discrete periodic spline")?;
         if let Some(index) = poles.iter().position(|p| !p.is_finite()) {

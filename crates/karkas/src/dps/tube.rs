@@ -66,6 +66,26 @@ impl<const D: usize> TubeSurface<D> {
     /// curves not of `N1 = m1 n1`; a non-finite point; a pair with `f_i(j n2)` farther than
     /// [`COMPATIBILITY_TOLERANCE`] (times the skeleton's size) from `g_j(i n1)`, reported as
     /// [`Error::IncompatibleSkeleton`] naming the first such pair.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::dps::TubeSurface;
+    /// use karkas::{Grid, Point};
+    ///
+    /// // A torus sampled on 6 x 6 points; the skeleton is every second line each way (m1 = m2 = 3).
+    /// let (n1, n2) = (2, 2);
+    /// let torus = |p: usize, q: usize| {
+    ///     let (a, b) = (p as f64 * std::f64::consts::TAU / 6.0, q as f64 * std::f64::consts::TAU / 6.0);
+    ///     Point([(2.0 + b.cos()) * a.cos(), (2.0 + b.cos()) * a.sin(), b.sin()])
+    /// };
+    /// let along = Grid::from_fn(3, 6, |i, q| torus(i * n1, q));
+    /// let across = Grid::from_fn(3, 6, |j, p| torus(p, j * n2));
+    /// let tube = TubeSurface::new(&along, &across, n1, n2, 2, 2)?;
+    /// assert_eq!(tube.periods(), (6, 6));
+    /// assert!(tube.value(2, 4).distance(torus(2, 4)) < 1e-9); // it passes through the skeleton
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn new(
         along: &Grid<Point<D>>,
         across: &Grid<Point<D>>,

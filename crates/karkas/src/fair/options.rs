@@ -41,6 +41,16 @@ pub struct FairOptions {
 impl FairOptions {
     /// Options with tolerance `tolerance` and everything else by default: free ends, no
     /// corners, open.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::fair::{FairEnds, FairOptions};
+    ///
+    /// let options = FairOptions::new(1e-3);
+    /// assert_eq!(options.tolerance, 1e-3);
+    /// assert!(matches!(options.ends, FairEnds::Free) && !options.closed && options.corners.is_empty());
+    /// ```
     pub fn new(tolerance: f64) -> Self {
         FairOptions {
             tolerance,

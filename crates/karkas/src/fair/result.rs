@@ -141,6 +141,23 @@ pub fn fair_curve<const D: usize>(
 /// Its fairness before is [`curve_fairness`] of the curve itself.
 ///
 /// Errors: those of [`fair_curve`] on the samples (fewer than four samples among them).
+///
+/// # Examples
+///
+/// ```
+/// use karkas::bspline::BSplineCurve;
+/// use karkas::fair::{fair_existing_curve, FairOptions};
+/// use karkas::Point;
+///
+/// // A cubic with a small wiggle; fairing moves no sample farther than the tolerance.
+/// let control = [[0.0, 0.0], [1.0, 0.3], [2.0, -0.1], [3.0, 0.4], [4.0, 0.0]].map(Point);
+/// let knots = vec![0.0, 0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0, 1.0];
+/// let curve = BSplineCurve::new(3, knots, control.to_vec())?;
+/// let faired = fair_existing_curve(&curve, 40, &FairOptions::new(0.05))?;
+/// assert_eq!(faired.points.len(), 40);
+/// assert!(faired.max_distance() <= 0.05 * (1.0 + 1e-9));
+/// # Ok::<(), karkas::Error>(())
+/// ```
 pub fn fair_existing_curve<C: Curve<D> + ?Sized, const D: usize>(
     curve: &C,
     samples: usize,

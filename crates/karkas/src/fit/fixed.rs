@@ -35,7 +35,7 @@ struct PieceIndex {
 }
 
 impl PieceIndex {
-    pub fn new(points: usize, pieces: usize) -> Self {
+    pub(crate) fn new(points: usize, pieces: usize) -> Self {
         PieceIndex {
             order: vec![0; points],
             start: vec![0; pieces + 1],
@@ -78,7 +78,7 @@ pub(crate) struct FixedScratch<const D: usize> {
 }
 
 impl<const D: usize> FixedScratch<D> {
-    pub fn new(points: usize, pieces: usize) -> Self {
+    pub(crate) fn new(points: usize, pieces: usize) -> Self {
         let parallel = points >= PARALLEL_THRESHOLD;
         FixedScratch {
             index: PieceIndex::new(points, pieces),

@@ -30,7 +30,7 @@ pub(crate) struct Gradient {
 
 impl Gradient {
     /// A zero gradient of `unknowns` entries.
-    pub fn new(unknowns: usize) -> Self {
+    pub(crate) fn new(unknowns: usize) -> Self {
         Gradient {
             base: vec![0.0; unknowns],
             base_abs: vec![0.0; unknowns],

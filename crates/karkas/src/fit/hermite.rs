@@ -76,6 +76,21 @@ impl<const D: usize> HermiteSpline<D> {
     /// Errors: fewer than 2 knots; knots not finite or not strictly increasing
     /// ([`Error::InvalidKnot`]); `values` or `derivatives` of another length than `knots`;
     /// a non-finite value or derivative.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::fit::HermiteSpline;
+    /// use karkas::{Curve, Point};
+    ///
+    /// // One cubic piece from (0, 0) to (1, 0) with unit tangents along x: the straight segment.
+    /// let values = vec![Point([0.0, 0.0]), Point([1.0, 0.0])];
+    /// let tangents = vec![Point([1.0, 0.0]), Point([1.0, 0.0])];
+    /// let spline = HermiteSpline::new(vec![0.0, 1.0], values.clone(), tangents.clone())?;
+    /// assert!(spline.eval(0.25).distance(Point([0.25, 0.0])) < 1e-14);
+    /// assert!(HermiteSpline::new(vec![1.0, 0.0], values, tangents).is_err());
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn new(knots: Vec<f64>, values: Vec<Point<D>>, derivatives: Vec<Point<D>>) -> Result<Self> {
         check_knots(&knots, 2, "a Hermite spline (knots)")?;
         for (what, got) in [

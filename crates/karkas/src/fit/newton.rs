@@ -65,7 +65,7 @@ pub(crate) struct NewtonModel<const D: usize> {
 
 impl<const D: usize> NewtonModel<D> {
     /// Buffers for `unknowns` coefficients on `pieces` pieces and `points` data points.
-    pub fn new(unknowns: usize, pieces: usize, points: usize) -> Self {
+    pub(crate) fn new(unknowns: usize, pieces: usize, points: usize) -> Self {
         NewtonModel {
             hessian: BandedSpd::new(unknowns, 5 * D + 1),
             separable: vec![0.0; pieces * 16],

@@ -20,7 +20,7 @@ pub(crate) struct PowerForm<const D: usize> {
 
 impl<const D: usize> PowerForm<D> {
     /// The power form of `spline`.
-    pub fn new(spline: &HermiteSpline<D>) -> Self {
+    pub(crate) fn new(spline: &HermiteSpline<D>) -> Self {
         let mut form = PowerForm {
             knots: spline.knots().to_vec(),
             coef: vec![[Point::ZERO; 4]; spline.pieces()],

@@ -57,7 +57,7 @@ impl Taper {
     /// The taper for the fairness part `fairness` and the noise part `smoothing` of `lambda`
     /// on `n` points: the noise part falls to [`NOISE_KEPT_AT_ENDS`] of itself at the ends
     /// over [`TAPER_WIDTHS`] of the smoothing's reach `(smoothing / n)^(1/4)`.
-    pub fn towards_ends(fairness: f64, smoothing: f64, n: usize) -> Taper {
+    pub(crate) fn towards_ends(fairness: f64, smoothing: f64, n: usize) -> Taper {
         let total = fairness + smoothing;
         if !(smoothing > 0.0 && total.is_finite()) {
             return Taper::NONE;
@@ -152,7 +152,7 @@ pub(crate) struct OrderScratch {
 
 impl<const D: usize> State<D> {
     /// A state on `knots` with zero coefficients and the given parameters.
-    pub fn blank(knots: &[f64], params: Vec<f64>) -> Self {
+    pub(crate) fn blank(knots: &[f64], params: Vec<f64>) -> Self {
         let n = knots.len();
         State {
             spline: HermiteSpline::from_parts(

@@ -110,7 +110,7 @@ pub(crate) struct Stop {
 
 impl Stop {
     /// At most `max_iterations`, settled at `tolerance`; every other rule off.
-    pub fn new(max_iterations: usize, tolerance: f64) -> Self {
+    pub(crate) fn new(max_iterations: usize, tolerance: f64) -> Self {
         Stop {
             max_iterations,
             tolerance,
@@ -144,7 +144,7 @@ pub(crate) struct Solver<'a, const D: usize> {
 impl<'a, const D: usize> Solver<'a, D> {
     /// A solver for `problem` on the knots of `template` (whose coefficients only size the
     /// buffers).
-    pub fn new(problem: Problem<'a, D>, template: &HermiteSpline<D>) -> Self {
+    pub(crate) fn new(problem: Problem<'a, D>, template: &HermiteSpline<D>) -> Self {
         let n_knots = template.knots().len();
         let pieces = n_knots - 1;
         let unknowns = 2 * n_knots * D;

@@ -43,6 +43,21 @@ impl ArcLengthTable {
     /// Measures every piece of `curve` (its breakpoints, or 16 parts per unit of domain when
     /// it has none) to within `accuracy` in all (absolute, in length units; non-positive asks
     /// for the best the quadrature gives).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::bspline::BSplineCurve;
+    /// use karkas::geometry::ArcLengthTable;
+    /// use karkas::Point;
+    ///
+    /// // The polyline (0, 0) - (3, 0) - (3, 4) is 7 long.
+    /// let control = vec![Point([0.0, 0.0]), Point([3.0, 0.0]), Point([3.0, 4.0])];
+    /// let polyline = BSplineCurve::new(1, vec![0.0, 0.0, 1.0, 2.0, 2.0], control)?;
+    /// let table = ArcLengthTable::new(&polyline, 1e-12);
+    /// assert!((table.total() - 7.0).abs() < 1e-9);
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn new<C: Curve<D> + ?Sized, const D: usize>(curve: &C, accuracy: f64) -> Self {
         let domain = curve.domain();
         let closed = curve.is_closed() && domain.length() > 0.0;

@@ -115,6 +115,20 @@ impl<'a, C: Curve<D> + ?Sized, const D: usize> CurveProjector<'a, C, D> {
     ///
     /// Errors: a non-finite domain or a sample of the curve that is not finite
     /// ([`Error::NonFiniteArgument`]).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::bspline::BSplineCurve;
+    /// use karkas::geometry::CurveProjector;
+    /// use karkas::Point;
+    ///
+    /// let segment = BSplineCurve::new(1, vec![0.0, 0.0, 1.0, 1.0], vec![Point([0.0, 0.0]), Point([2.0, 0.0])])?;
+    /// let projector = CurveProjector::new(&segment, 0.0)?;
+    /// let foot = projector.nearest(Point([0.5, 1.0]));
+    /// assert!((foot.t - 0.25).abs() < 1e-12 && (foot.distance - 1.0).abs() < 1e-12);
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn new(curve: &'a C, accuracy: f64) -> Result<Self> {
         let domain = curve.domain();
         if !domain.start.is_finite() || !domain.end.is_finite() {

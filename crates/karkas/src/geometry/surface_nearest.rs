@@ -96,6 +96,23 @@ impl<'a, S: Surface<D> + ?Sized, const D: usize> SurfaceProjector<'a, S, D> {
     ///
     /// Errors: a non-finite domain or a grid point that is not finite
     /// ([`Error::NonFiniteArgument`]).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::bspline::BSplineSurface;
+    /// use karkas::geometry::SurfaceProjector;
+    /// use karkas::{Grid, Point};
+    ///
+    /// // The unit square of the plane z = 0, parameterized by (x, y).
+    /// let control = Grid::from_fn(2, 2, |i, j| Point([i as f64, j as f64, 0.0]));
+    /// let linear = (1, vec![0.0, 0.0, 1.0, 1.0]);
+    /// let square = BSplineSurface::new(linear.clone(), linear, control)?;
+    /// let projector = SurfaceProjector::new(&square, (4, 4), 0.0)?;
+    /// let foot = projector.nearest(Point([0.3, 0.4, 1.0]));
+    /// assert!((foot.u - 0.3).abs() < 1e-9 && (foot.v - 0.4).abs() < 1e-9 && (foot.distance - 1.0).abs() < 1e-9);
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn new(surface: &'a S, cells: (usize, usize), accuracy: f64) -> Result<Self> {
         let (du, dv) = (surface.domain_u(), surface.domain_v());
         if ![du.start, du.end, dv.start, dv.end]

@@ -44,6 +44,20 @@ impl SurfaceFrame {
     /// formulas give the frame of the level set `F = F(point)` through it).
     ///
     /// Errors: [`Error::SingularPoint`] where the gradient vanishes or is not finite.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::implicit::{Sphere, SurfaceFrame};
+    /// use karkas::Point;
+    ///
+    /// // Every point of a sphere of radius 2 is umbilic with both curvatures of size 1/2.
+    /// let frame = SurfaceFrame::at(&Sphere { radius: 2.0 }, Point([0.0, 0.0, 2.0]))?;
+    /// assert!(frame.is_umbilic());
+    /// assert!((frame.mean_curvature().abs() - 0.5).abs() < 1e-12);
+    /// assert!(SurfaceFrame::at(&Sphere { radius: 2.0 }, Point([0.0, 0.0, 0.0])).is_err()); // no gradient
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn at<S: ImplicitSurface + ?Sized>(surface: &S, point: Point3) -> Result<Self> {
         let g = surface.gradient(point);
         let norm = g.norm();

@@ -73,6 +73,22 @@ pub struct NetSpec {
 
 impl NetSpec {
     /// A spec with 32 substeps and open `v` lines.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::implicit::{trace_net, Cylinder, NetDirections, NetSpec};
+    /// use karkas::Point;
+    ///
+    /// let spec = NetSpec::new(Point([1.0, 0.0, 0.0]), NetDirections::Principal, (4, 3), (0.1, 0.1));
+    /// assert_eq!((spec.substeps, spec.closed_v), (32, false));
+    /// // On a cylinder of radius 1 the lines of curvature are circles and generators: every node
+    /// // stays on the cylinder.
+    /// let net = trace_net(&Cylinder { radius: 1.0 }, &spec)?;
+    /// assert_eq!((net.rows(), net.cols()), (4, 3));
+    /// assert!(net.as_slice().iter().all(|p| (p.0[0].hypot(p.0[1]) - 1.0).abs() < 1e-9));
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn new(
         start: Point3,
         directions: NetDirections,

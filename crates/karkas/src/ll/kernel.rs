@@ -63,6 +63,17 @@ fn falling_factorial(n: usize, r: usize) -> f64 {
 
 impl LlKernel {
     /// The kernel of order `order` (`1 <= order <= MAX_ORDER`).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::ll::LlKernel;
+    ///
+    /// let kernel = LlKernel::new(3)?;
+    /// assert_eq!(kernel.order(), 3);
+    /// assert!(LlKernel::new(0).is_err());
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn new(order: usize) -> Result<Self> {
         if order == 0 {
             return Err(Error::InvalidOrder {

@@ -67,6 +67,20 @@ impl<const D: usize> LlSurface<D> {
     /// The interpolating LL surface: passes through every grid point at its node. Solves the
     /// tridiagonal system (6) along every row, then every column. Same rules as
     /// [`new`](Self::new).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::{ll::LlSurface, Grid, Point, Surface};
+    ///
+    /// // Through every node of a 5 x 6 grid of the saddle z = x y.
+    /// let grid = Grid::from_fn(5, 6, |i, j| Point([i as f64, j as f64, (i * j) as f64]));
+    /// let surface = LlSurface::interpolating(&grid, 2, false, false)?;
+    /// // The nodes spread evenly over the domain: node (2, 3) of the 5 x 6 grid.
+    /// let (u, v) = (surface.domain_u().uniform(2, 5), surface.domain_v().uniform(3, 6));
+    /// assert!(surface.eval(u, v).distance(*grid.get(2, 3)) < 1e-9);
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn interpolating(
         grid: &Grid<Point<D>>,
         order: usize,

@@ -81,6 +81,16 @@ impl SumTargets {
     /// The paper's parameters: the first `n - 1` row sums, the first `m - 1` column sums and
     /// the total `Q`; the last row and column take the rest (`P_n = Q - sum P_i`, `R_m = Q -
     /// sum R_j`).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::ll::SumTargets;
+    ///
+    /// let targets = SumTargets::with_total(&[1.0, 2.0], &[4.0], 10.0);
+    /// assert_eq!(targets.rows, vec![1.0, 2.0, 7.0]);
+    /// assert_eq!(targets.columns, vec![4.0, 6.0]);
+    /// ```
     pub fn with_total(rows_but_last: &[f64], columns_but_last: &[f64], total: f64) -> Self {
         let complete = |sums: &[f64]| {
             let mut all = sums.to_vec();

@@ -179,6 +179,18 @@ impl<const D: usize> LlSurface<D> {
     ///
     /// Errors: those of [`new`](Self::new), and [`Error::InvalidSetting`] for a distance that
     /// is not positive and finite.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::{ll::LlSurface, Grid, Point};
+    ///
+    /// let grid = Grid::from_fn(6, 6, |i, j| Point([i as f64, j as f64, ((i * j) % 3) as f64]));
+    /// let fit = LlSurface::within(&grid, 2, false, false, 0.1)?;
+    /// assert!(fit.largest_deviation <= 0.1 * (1.0 + 1e-9));
+    /// assert!(LlSurface::within(&grid, 2, false, false, -1.0).is_err());
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn within(
         grid: &Grid<Point<D>>,
         order: usize,

@@ -45,6 +45,17 @@ impl Distribution {
     /// points ([`Error::TooFewPoints`]), an entry that is not finite ([`Error::NonFiniteEntry`],
     /// grid and values entries counted together), a grid that does not increase strictly
     /// ([`Error::InvalidSetting`] with the offending grid value).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::loft::Distribution;
+    ///
+    /// let chord = Distribution::new(vec![0.0, 0.5, 1.0], vec![2.0, 1.5, 1.0])?;
+    /// assert_eq!(chord.at(0.5, 0), 1.5); // through its values
+    /// assert!(Distribution::new(vec![0.0, 0.0], vec![1.0, 2.0]).is_err()); // grid not increasing
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn new(grid: Vec<f64>, values: Vec<f64>) -> Result<Distribution> {
         if grid.len() != values.len() {
             return Err(Error::CountMismatch {
@@ -85,6 +96,17 @@ impl Distribution {
     }
 
     /// A constant distribution over `[0, 1]`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::loft::Distribution;
+    ///
+    /// let twist = Distribution::constant(3.0)?;
+    /// assert_eq!((twist.at(0.7, 0), twist.at(0.7, 1)), (3.0, 0.0));
+    /// assert!(Distribution::constant(f64::NAN).is_err());
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn constant(value: f64) -> Result<Distribution> {
         Distribution::new(vec![0.0, 1.0], vec![value, value])
     }

@@ -34,6 +34,27 @@ impl Profile {
     /// leading edge with fewer than two points between it and either end
     /// ([`Error::InvalidSetting`]-free messages in [`Error::LoftSection`] of section 0; the
     /// loft renumbers them).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::loft::Profile;
+    /// use karkas::Point;
+    ///
+    /// // A symmetric section in unit chord, in Selig's order: trailing edge, upper side, leading
+    /// // edge, lower side, trailing edge.
+    /// let foil: Vec<_> = (0..=40)
+    ///     .map(|k| {
+    ///         let a = k as f64 * std::f64::consts::TAU / 40.0;
+    ///         Point([(1.0 + a.cos()) / 2.0, 0.06 * a.sin()])
+    ///     })
+    ///     .collect();
+    /// let profile = Profile::airfoil(&foil)?;
+    /// let split = profile.split().expect("an airfoil has a leading edge");
+    /// assert!(profile.points()[split].distance(Point([0.0, 0.0])) < 1e-12); // the leading edge
+    /// assert!(Profile::airfoil(&foil[..4]).is_err()); // too few points
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn airfoil(points: &[Point2]) -> Result<Profile> {
         check_points(points)?;
         let bad = |reason: String| Error::LoftSection { section: 0, reason };
@@ -83,6 +104,20 @@ impl Profile {
 
     /// An open section without a fixed middle (a hull's half section from the keel up):
     /// chord-length parameters over the whole of `[0, 1]`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::loft::Profile;
+    /// use karkas::Point;
+    ///
+    /// // A hull's half section from the keel up.
+    /// let half = [[0.0, 0.0], [0.5, 0.1], [0.8, 0.4], [1.0, 1.0], [1.0, 1.5]].map(Point);
+    /// let profile = Profile::open(&half)?;
+    /// assert_eq!((profile.points().len(), profile.split()), (5, None));
+    /// assert!(Profile::open(&half[..3]).is_err());
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn open(points: &[Point2]) -> Result<Profile> {
         check_points(points)?;
         Ok(Profile {
@@ -95,6 +130,20 @@ impl Profile {
     /// A section whose point `split` sits at `v = 1/2` (a whole hull section's keel).
     ///
     /// Errors: as [`open`](Self::open), and a split with fewer than two points on either side.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::loft::Profile;
+    /// use karkas::Point;
+    ///
+    /// // A whole hull section, port to starboard over the keel at point 3.
+    /// let whole = [[-1.0, 1.0], [-0.9, 0.4], [-0.5, 0.1], [0.0, 0.0], [0.5, 0.1], [0.9, 0.4], [1.0, 1.0]].map(Point);
+    /// let profile = Profile::split_at(&whole, 3)?;
+    /// assert_eq!(profile.split(), Some(3));
+    /// assert!(Profile::split_at(&whole, 1).is_err()); // one point before the split
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn split_at(points: &[Point2], split: usize) -> Result<Profile> {
         check_points(points)?;
         if split < 2 || split + 3 > points.len() {

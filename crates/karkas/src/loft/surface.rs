@@ -70,6 +70,33 @@ impl Loft {
     /// that is not finite or not after the one before, a scale that is not positive, or a
     /// section with a middle point (a leading edge) among sections without one or the other
     /// way round.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::loft::{Loft, LoftOptions, LoftSection, Profile, SectionFrame};
+    /// use karkas::Point;
+    ///
+    /// let foil: Vec<_> = (0..=40)
+    ///     .map(|k| {
+    ///         let a = k as f64 * std::f64::consts::TAU / 40.0;
+    ///         Point([(1.0 + a.cos()) / 2.0, 0.06 * a.sin()])
+    ///     })
+    ///     .collect();
+    /// let profile = Profile::airfoil(&foil)?;
+    /// // The section in the plane z = station, its chord along x.
+    /// let section = |z: f64| LoftSection {
+    ///     profile: profile.clone(),
+    ///     frame: SectionFrame { origin: Point([0.0, 0.0, z]), x_axis: Point([1.0, 0.0, 0.0]), y_axis: Point([0.0, 1.0, 0.0]) },
+    ///     station: z,
+    ///     scale: 1.0,
+    /// };
+    /// let loft = Loft::new(&[section(0.0), section(2.0)], &LoftOptions::default())?;
+    /// assert_eq!(loft.stations(), &[0.0, 2.0]);
+    /// assert!(loft.tolerance_met());
+    /// assert!(Loft::new(&[section(0.0)], &LoftOptions::default()).is_err()); // one section
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn new(sections: &[LoftSection], options: &LoftOptions) -> Result<Loft> {
         let (fit, split) = Loft::fit(sections, options)?;
         let nets = Grid::from_fn(sections.len(), fit.controls[0].len(), |k, i| {
@@ -195,6 +222,32 @@ impl Loft {
     /// Errors: as [`Profile::airfoil`], [`wing_frames`] and [`new`](Self::new), each naming
     /// the section ([`Error::LoftSection`]); a count of profiles that differs from that of
     /// placements ([`Error::CountMismatch`]).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::loft::{Loft, LoftOptions, WingPlacement};
+    /// use karkas::Point;
+    ///
+    /// let foil: Vec<_> = (0..=40)
+    ///     .map(|k| {
+    ///         let a = k as f64 * std::f64::consts::TAU / 40.0;
+    ///         Point([(1.0 + a.cos()) / 2.0, 0.06 * a.sin()])
+    ///     })
+    ///     .collect();
+    /// // A tapered wing: chord 1 at the root, 0.7 at the tip 3 units out along y.
+    /// let placements = [(0.0, 1.0), (3.0, 0.7)].map(|(y, chord)| WingPlacement {
+    ///     leading_edge: Point([0.0, y, 0.0]),
+    ///     chord,
+    ///     twist: 0.0,
+    ///     dihedral: None,
+    /// });
+    /// let wing = Loft::wing(&[foil.clone(), foil.clone()], &placements, &LoftOptions::default())?;
+    /// assert_eq!(wing.stations().len(), 2);
+    /// assert!(wing.tolerance_met());
+    /// assert!(Loft::wing(&[foil], &placements, &LoftOptions::default()).is_err()); // one profile, two placements
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn wing(
         profiles: &[Vec<Point2>],
         placements: &[WingPlacement],
@@ -229,6 +282,33 @@ impl Loft {
     /// the section ([`Error::LoftSection`]); a count of profiles that differs from that of
     /// positions ([`Error::CountMismatch`]); a chord that is not positive at a grid position
     /// ([`Error::InvalidSetting`]).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::loft::{BladeShape, Distribution, Loft, LoftOptions};
+    /// use karkas::Point;
+    ///
+    /// let foil: Vec<_> = (0..=40)
+    ///     .map(|k| {
+    ///         let a = k as f64 * std::f64::consts::TAU / 40.0;
+    ///         Point([(1.0 + a.cos()) / 2.0, 0.06 * a.sin()])
+    ///     })
+    ///     .collect();
+    /// // A straight blade 10 long along z, its chord falling from 2 to 1.
+    /// let constant = Distribution::constant;
+    /// let shape = BladeShape {
+    ///     reference_axis: [constant(0.0)?, constant(0.0)?, Distribution::new(vec![0.0, 1.0], vec![0.0, 10.0])?],
+    ///     chord: Distribution::new(vec![0.0, 1.0], vec![2.0, 1.0])?,
+    ///     twist: constant(0.0)?,
+    ///     section_offset_y: constant(0.5)?,
+    ///     section_offset_x: None,
+    /// };
+    /// let blade = Loft::blade(&[foil.clone(), foil], &[0.0, 1.0], &shape, &LoftOptions::default())?;
+    /// assert!(blade.tolerance_met());
+    /// assert!(Loft::blade(&[], &[0.0, 1.0], &shape, &LoftOptions::default()).is_err());
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn blade(
         profiles: &[Vec<Point2>],
         positions: &[f64],

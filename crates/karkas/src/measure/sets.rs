@@ -17,6 +17,20 @@ pub struct Hausdorff {
 
 impl Hausdorff {
     /// Combines the two directions.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::measure::{DirectedDistance, Hausdorff};
+    /// use karkas::Point;
+    ///
+    /// let origin = Point([0.0; 3]);
+    /// let forward = DirectedDistance { distance: 1.0, from: origin, to: Point([1.0, 0.0, 0.0]) };
+    /// let backward = DirectedDistance { distance: 2.0, from: Point([0.0, 2.0, 0.0]), to: origin };
+    /// let both = Hausdorff::new(forward, backward);
+    /// assert_eq!(both.distance, 2.0);
+    /// assert_eq!(both.worst().from, Point([0.0, 2.0, 0.0]));
+    /// ```
     pub fn new(forward: DirectedDistance, backward: DirectedDistance) -> Self {
         Hausdorff {
             distance: forward.distance.max(backward.distance),
@@ -79,6 +93,18 @@ impl PointCloud {
     ///
     /// Errors: an empty set ([`Error::TooFewPoints`]), a non-finite point
     /// ([`Error::NonFinitePoint`]).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::measure::PointCloud;
+    /// use karkas::Point;
+    ///
+    /// let cloud = PointCloud::new(&[Point([0.0; 3]), Point([1.0, 0.0, 0.0]), Point([0.0, 5.0, 0.0])])?;
+    /// assert_eq!(cloud.nearest(Point([0.9, 0.2, 0.0])), 1);
+    /// assert!(PointCloud::new(&[]).is_err());
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn new(points: &[Point3]) -> Result<Self> {
         if points.is_empty() {
             return Err(Error::TooFewPoints {

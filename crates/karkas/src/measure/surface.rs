@@ -26,6 +26,23 @@ impl ClosestPoint {
     /// `(u0, v0)` (Gauss–Newton where the Hessian is not positive definite, steps halved until
     /// the distance decreases). Parameters stay in the domain: clamped in an open direction,
     /// wrapped in a closed one. A local search: start it from a nearby sample.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::bspline::BSplineSurface;
+    /// use karkas::measure::ClosestPoint;
+    /// use karkas::{Grid, Point};
+    ///
+    /// // The unit square of the plane z = 0, parameterized by (x, y).
+    /// let control = Grid::from_fn(2, 2, |i, j| Point([i as f64, j as f64, 0.0]));
+    /// let linear = (1, vec![0.0, 0.0, 1.0, 1.0]);
+    /// let square = BSplineSurface::new(linear.clone(), linear, control)?;
+    /// let foot = ClosestPoint::search(&square, Point([0.3, 0.4, 1.0]), (0.5, 0.5));
+    /// assert!((foot.distance - 1.0).abs() < 1e-9);
+    /// assert!((foot.u - 0.3).abs() < 1e-6 && (foot.v - 0.4).abs() < 1e-6); // a local search
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn search<S: Surface<3> + ?Sized>(surface: &S, q: Point3, (u0, v0): (f64, f64)) -> Self {
         let (du, dv) = (surface.domain_u(), surface.domain_v());
         let keep = |t: f64, d: Interval, closed: bool| if closed { d.wrap(t) } else { d.clamp(t) };

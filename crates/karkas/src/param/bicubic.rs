@@ -89,6 +89,19 @@ impl<const D: usize> BicubicSurface<D> {
 
     /// [`new`](Self::new) on an owned grid: an open surface keeps `grid` as its values
     /// without copying it (a closed direction copies it once, to close it).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::param::{BicubicSurface, GridParameterization};
+    /// use karkas::{Grid, Point, Surface};
+    ///
+    /// let grid = Grid::from_fn(4, 3, |i, j| Point([i as f64, j as f64, (i * j) as f64]));
+    /// let surface = BicubicSurface::from_grid(grid, GridParameterization::Uniform, false, false)?;
+    /// // Uniform parameters: node (i, j) sits at (u, v) = (i, j).
+    /// assert!(surface.eval(2.0, 1.0).distance(Point([2.0, 1.0, 2.0])) < 1e-12);
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn from_grid(
         grid: Grid<Point<D>>,
         parameterization: GridParameterization,
@@ -125,6 +138,19 @@ impl<const D: usize> BicubicSurface<D> {
     /// Errors: as [`new`](Self::new), plus knots that do not fit the grid
     /// ([`Error::CountMismatch`]) or do not increase ([`Error::InvalidKnot`]), a closed
     /// direction whose last line does not repeat the first ([`Error::OpenPeriodicData`]).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::param::BicubicSurface;
+    /// use karkas::{Grid, Point, Surface};
+    ///
+    /// let grid = Grid::from_fn(3, 2, |i, j| Point([i as f64, j as f64, 0.0]));
+    /// let surface = BicubicSurface::from_knots(&grid, &[0.0, 1.0, 4.0], &[0.0, 2.0], false, false)?;
+    /// assert!(surface.eval(4.0, 2.0).distance(Point([2.0, 1.0, 0.0])) < 1e-12);
+    /// assert!(BicubicSurface::from_knots(&grid, &[0.0, 1.0], &[0.0, 2.0], false, false).is_err());
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn from_knots(
         grid: &Grid<Point<D>>,
         knots_u: &[f64],
@@ -139,6 +165,18 @@ impl<const D: usize> BicubicSurface<D> {
 
     /// [`from_knots`](Self::from_knots) on an owned grid: an open surface keeps `grid` as
     /// its values without copying it.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::param::BicubicSurface;
+    /// use karkas::{Grid, Point, Surface};
+    ///
+    /// let grid = Grid::from_fn(3, 2, |i, j| Point([i as f64, j as f64, 0.0]));
+    /// let surface = BicubicSurface::from_grid_knots(grid, &[0.0, 1.0, 4.0], &[0.0, 2.0], false, false)?;
+    /// assert!(surface.eval(1.0, 0.0).distance(Point([1.0, 0.0, 0.0])) < 1e-12);
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn from_grid_knots(
         grid: Grid<Point<D>>,
         knots_u: &[f64],

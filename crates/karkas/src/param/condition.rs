@@ -61,6 +61,19 @@ impl ConditionSummary {
     /// The summary of `measures` over rows `0..rows` and columns `0..cols` (a closed
     /// direction passes one less than stored, so that its seam counts once). A NaN measure
     /// counts as the worst. `None` for an empty range.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::param::ConditionSummary;
+    /// use karkas::Grid;
+    ///
+    /// let measures = Grid::from_row_major(2, 2, vec![1.0, 0.5, 0.9, 0.7])?;
+    /// let summary = ConditionSummary::of(&measures, 2, 2).expect("four nodes");
+    /// assert_eq!((summary.min, summary.worst, summary.nodes), (0.5, (0, 1), 4));
+    /// assert!(ConditionSummary::of(&measures, 0, 2).is_none());
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn of(measures: &Grid<f64>, rows: usize, cols: usize) -> Option<ConditionSummary> {
         let (rows, cols) = (rows.min(measures.rows()), cols.min(measures.cols()));
         let nodes = rows * cols;

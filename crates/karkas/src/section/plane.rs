@@ -36,6 +36,18 @@ impl<const D: usize> Plane<D> {
     /// stored normalized: `normal / |normal|`, `offset / |normal|`).
     ///
     /// Errors: [`Error::InvalidPlane`] for a zero or non-finite normal or a non-finite offset.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::section::Plane;
+    /// use karkas::Point;
+    ///
+    /// let plane = Plane::new(Point([0.0, 0.0, 2.0]), 4.0)?; // 2 z = 4, stored as z = 2
+    /// assert_eq!((plane.normal(), plane.offset()), (Point([0.0, 0.0, 1.0]), 2.0));
+    /// assert!(Plane::new(Point([0.0; 3]), 1.0).is_err());
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn new(normal: Point<D>, offset: f64) -> Result<Self> {
         if !normal.is_finite() || !offset.is_finite() {
             return Err(Error::InvalidPlane {
@@ -57,6 +69,18 @@ impl<const D: usize> Plane<D> {
     /// The plane `p[axis] = value`: the isoline of one coordinate (`axis = 0` for `x = value`).
     ///
     /// Errors: [`Error::InvalidPlane`] for `axis >= D` or a non-finite value.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::section::Plane;
+    /// use karkas::Point;
+    ///
+    /// let plane = Plane::<3>::coordinate(0, 1.5)?; // x = 1.5
+    /// assert_eq!((plane.normal(), plane.offset()), (Point([1.0, 0.0, 0.0]), 1.5));
+    /// assert!(Plane::<3>::coordinate(3, 1.5).is_err());
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn coordinate(axis: usize, value: f64) -> Result<Self> {
         if axis >= D {
             return Err(Error::InvalidPlane {

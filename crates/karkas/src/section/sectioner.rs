@@ -78,6 +78,24 @@ impl<'s, S: Surface<D> + ?Sized, const D: usize> Sectioner<'s, S, D> {
     /// not positive and finite or below [`MIN_RELATIVE_TOLERANCE`] of the surface's size, a
     /// zero step budget; [`Error::InvalidDomain`] for a surface whose
     /// parameter domain is empty or not finite.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::bspline::BSplineSurface;
+    /// use karkas::section::{Plane, SectionOptions, Sectioner};
+    /// use karkas::{Grid, Point};
+    ///
+    /// // The saddle patch z = x y over the unit square, cut by the plane x = 0.5.
+    /// let control = Grid::from_fn(2, 2, |i, j| Point([i as f64, j as f64, (i * j) as f64]));
+    /// let linear = (1, vec![0.0, 0.0, 1.0, 1.0]);
+    /// let patch = BSplineSurface::new(linear.clone(), linear, control)?;
+    /// let sectioner = Sectioner::new(&patch, &SectionOptions::default())?;
+    /// let section = sectioner.plane(&Plane::coordinate(0, 0.5)?);
+    /// assert_eq!(section.curves.len(), 1);
+    /// assert!(section.curves[0].points.iter().all(|p| (p.0[2] - 0.5 * p.0[1]).abs() < 1e-6));
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn new(surface: &'s S, options: &SectionOptions) -> Result<Self> {
         for (name, cells) in [("cells_u", options.cells.0), ("cells_v", options.cells.1)] {
             if !(3..=MAX_CELLS).contains(&cells) {

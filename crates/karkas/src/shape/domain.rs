@@ -66,6 +66,21 @@ impl FaceDomain {
     /// The domain of `face`: its loops inverted onto its surface (see the module docs).
     ///
     /// Errors: a surface whose samples are not finite (from the global search).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::bspline::{BSplineSurface, NurbsSurface};
+    /// use karkas::shape::{Face, FaceDomain};
+    /// use karkas::{Grid, Point};
+    ///
+    /// let control = Grid::from_fn(2, 2, |i, j| Point([2.0 * i as f64, j as f64, 0.0]));
+    /// let square = BSplineSurface::new((1, vec![0.0, 0.0, 1.0, 1.0]), (1, vec![0.0, 0.0, 1.0, 1.0]), control)?;
+    /// let domain = FaceDomain::of(&Face::whole(NurbsSurface::from_bspline(&square)))?;
+    /// assert_eq!((domain.u.start, domain.u.end, domain.v.end), (0.0, 1.0, 1.0));
+    /// assert!(domain.loops.is_empty()); // a whole face: no trimming loops
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn of(face: &Face) -> Result<FaceDomain> {
         let s = &face.surface;
         let (du, dv) = (s.domain_u(), s.domain_v());

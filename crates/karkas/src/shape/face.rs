@@ -45,6 +45,15 @@ pub struct EdgeLoop {
 
 impl EdgeLoop {
     /// A loop of `edges` (in loop order), without parameter curves.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::shape::EdgeLoop;
+    ///
+    /// let outer = EdgeLoop::new(Vec::new(), true);
+    /// assert!(outer.outer && outer.edges.is_empty() && outer.parameter_curves.is_empty());
+    /// ```
     pub fn new(edges: Vec<Edge>, outer: bool) -> EdgeLoop {
         EdgeLoop {
             edges,
@@ -90,6 +99,22 @@ pub struct Face {
 
 impl Face {
     /// A face that is the whole of `surface`, normal `S_u x S_v`, bounding no solid.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::bspline::{BSplineSurface, NurbsSurface};
+    /// use karkas::shape::Face;
+    /// use karkas::{Grid, Point};
+    ///
+    /// let control = Grid::from_fn(2, 2, |i, j| Point([i as f64, j as f64, 0.0]));
+    /// let square = BSplineSurface::new((1, vec![0.0, 0.0, 1.0, 1.0]), (1, vec![0.0, 0.0, 1.0, 1.0]), control)?;
+    /// let face = Face::whole(NurbsSurface::from_bspline(&square));
+    /// assert!(face.loops.is_empty() && !face.bounds_solid);
+    /// // Its normal is S_u x S_v: +z for this square.
+    /// assert!(face.normal(0.5, 0.5).unwrap().distance(Point([0.0, 0.0, 1.0])) < 1e-12);
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn whole(surface: NurbsSurface<3>) -> Face {
         Face {
             surface,

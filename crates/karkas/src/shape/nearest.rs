@@ -144,6 +144,24 @@ impl<'a> ShapeProjector<'a> {
     /// (non-positive: full precision).
     ///
     /// Errors: a face whose samples are not finite ([`Error::NonFiniteArgument`](crate::Error)).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::bspline::{BSplineSurface, NurbsSurface};
+    /// use karkas::shape::{Face, Shape, ShapeProjector};
+    /// use karkas::{Grid, Point};
+    ///
+    /// // One face: the unit square of the plane z = 0.
+    /// let control = Grid::from_fn(2, 2, |i, j| Point([i as f64, j as f64, 0.0]));
+    /// let linear = (1, vec![0.0, 0.0, 1.0, 1.0]);
+    /// let square = NurbsSurface::from_bspline(&BSplineSurface::new(linear.clone(), linear, control)?);
+    /// let shape = Shape { faces: vec![Face::whole(square)], curves: Vec::new() };
+    /// let projector = ShapeProjector::new(&shape, 0.0)?;
+    /// let foot = projector.nearest(Point([0.3, 0.4, 2.0]));
+    /// assert!((foot.distance - 2.0).abs() < 1e-9 && foot.face == 0);
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn new(shape: &'a Shape, accuracy: f64) -> Result<Self> {
         let size = shape.size().max(f64::MIN_POSITIVE);
         let target = size / CELLS_ACROSS;

@@ -22,6 +22,23 @@ pub struct BandedSpd {
 
 impl BandedSpd {
     /// A zero `size x size` matrix with `width` stored diagonals (the main one included).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::solve::BandedSpd;
+    ///
+    /// // [[4, 2], [2, 5]] x = [8, 12] has x = [1, 2].
+    /// let mut matrix = BandedSpd::new(2, 2);
+    /// matrix.add(0, 0, 4.0);
+    /// matrix.add(1, 0, 2.0);
+    /// matrix.add(1, 1, 5.0);
+    /// matrix.factor()?;
+    /// let mut x = [8.0, 12.0];
+    /// matrix.solve_factored(&mut x);
+    /// assert!((x[0] - 1.0).abs() < 1e-12 && (x[1] - 2.0).abs() < 1e-12);
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn new(size: usize, width: usize) -> Self {
         let width = width.max(1);
         BandedSpd {

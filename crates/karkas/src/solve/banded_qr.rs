@@ -46,6 +46,23 @@ pub struct BandedLeastSquares {
 impl BandedLeastSquares {
     /// An empty problem with `cols` unknowns, rows at most `width` columns wide, and
     /// `rhs_cols` right-hand sides.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::solve::BandedLeastSquares;
+    ///
+    /// // The least-squares constant through 1, 2 and 6 is their mean, 3.
+    /// let mut problem = BandedLeastSquares::new(1, 1, 1);
+    /// for y in [1.0, 2.0, 6.0] {
+    ///     problem.add_row(0, &[1.0], &[y]);
+    /// }
+    /// let mut x = [0.0];
+    /// problem.solve(&mut x)?;
+    /// assert!((x[0] - 3.0).abs() < 1e-12);
+    /// assert!((problem.residual_sq()[0] - 14.0).abs() < 1e-9); // 4 + 1 + 9
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn new(cols: usize, width: usize, rhs_cols: usize) -> Self {
         let width = width.max(1);
         BandedLeastSquares {

@@ -153,7 +153,7 @@ pub(crate) struct SampledEdge<'a> {
 
 impl<'a> SampledEdge<'a> {
     /// `RANGE_SAMPLES + 1` samples of `at` over `[0, 1]`.
-    pub fn new(at: Box<dyn Fn(f64) -> Point3 + 'a>) -> Self {
+    pub(crate) fn new(at: Box<dyn Fn(f64) -> Point3 + 'a>) -> Self {
         let samples = (0..=RANGE_SAMPLES)
             .map(|k| {
                 let s = k as f64 / RANGE_SAMPLES as f64;

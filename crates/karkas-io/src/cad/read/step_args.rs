@@ -17,7 +17,7 @@ pub(crate) struct Args<'a> {
 
 impl<'a> Args<'a> {
     /// The part `part` of `instance` number `id`.
-    pub fn of(path: &'a Path, id: u64, instance: &'a Instance, part: &'a Part) -> Self {
+    pub(crate) fn of(path: &'a Path, id: u64, instance: &'a Instance, part: &'a Part) -> Self {
         Args {
             path,
             id,

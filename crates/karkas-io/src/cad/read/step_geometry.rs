@@ -115,7 +115,7 @@ pub(crate) struct Geometry<'a> {
 impl<'a> Geometry<'a> {
     /// A resolver over `exchange` (of the file `path`) whose angles are in units of `angle`
     /// radians.
-    pub fn new(path: &'a Path, exchange: &'a Exchange, angle: f64) -> Self {
+    pub(crate) fn new(path: &'a Path, exchange: &'a Exchange, angle: f64) -> Self {
         Geometry {
             path,
             exchange,

@@ -80,7 +80,7 @@ pub(crate) struct Topology<'a> {
 
 impl<'a> Topology<'a> {
     /// A builder over `exchange` whose angles are in units of `radians`.
-    pub fn new(path: &'a Path, exchange: &'a Exchange, radians: f64) -> Self {
+    pub(crate) fn new(path: &'a Path, exchange: &'a Exchange, radians: f64) -> Self {
         Topology {
             geometry: Geometry::new(path, exchange, radians),
             path,

@@ -21,6 +21,17 @@ pub struct CubicHermiteBlending {
 
 impl CubicHermiteBlending {
     /// The family on `[a, b]`; fails unless `a < b` are finite.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::coons::{BlendingFamily, CubicHermiteBlending};
+    ///
+    /// let family = CubicHermiteBlending::new(0.0, 2.0)?;
+    /// assert_eq!(family.len(), 4); // values and derivatives at both ends
+    /// assert!(CubicHermiteBlending::new(1.0, 1.0).is_err());
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn new(a: f64, b: f64) -> Result<Self> {
         check_knots(&[a, b], 2, "a cubic Hermite blending family")?;
         Ok(CubicHermiteBlending {
@@ -92,6 +103,17 @@ pub struct PiecewiseHermiteBlending {
 impl PiecewiseHermiteBlending {
     /// The family on `nodes` (at least two, finite, strictly increasing): `2 * nodes.len()`
     /// functions.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::coons::{BlendingFamily, PiecewiseHermiteBlending};
+    ///
+    /// let family = PiecewiseHermiteBlending::new(&[0.0, 1.0, 3.0])?;
+    /// assert_eq!(family.len(), 6);
+    /// assert!(PiecewiseHermiteBlending::new(&[0.0, 2.0, 1.0]).is_err());
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn new(nodes: &[f64]) -> Result<Self> {
         check_knots(nodes, 2, "a piecewise Hermite blending family")?;
         let functionals = nodes

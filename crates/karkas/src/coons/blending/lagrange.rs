@@ -26,6 +26,18 @@ pub struct LagrangeBlending {
 
 impl LagrangeBlending {
     /// The family on `nodes` (at least two, finite, strictly increasing).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::coons::{BlendingFamily, LagrangeBlending};
+    ///
+    /// let family = LagrangeBlending::new(&[0.0, 0.5, 1.0])?;
+    /// assert_eq!(family.len(), 3);
+    /// assert_eq!((family.domain().start, family.domain().end), (0.0, 1.0));
+    /// assert!(LagrangeBlending::new(&[0.0]).is_err());
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn new(nodes: &[f64]) -> Result<Self> {
         check_knots(nodes, 2, "a Lagrange blending family")?;
         let inverse_denominators = nodes

@@ -33,6 +33,18 @@ impl LlBlending {
     /// The family of order `order` on `count` nodes over `[start, end]`, open or closed.
     ///
     /// Errors: fewer than 3 nodes, `start < end` not finite, `order` outside `1..=64`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::coons::{BlendingFamily, LlBlending};
+    ///
+    /// let family = LlBlending::new(0.0, 1.0, 5, 2, false)?;
+    /// assert_eq!(family.len(), 5);
+    /// assert!(!family.is_periodic());
+    /// assert!(LlBlending::new(0.0, 1.0, 2, 2, false).is_err()); // fewer than 3 nodes
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn new(start: f64, end: f64, count: usize, order: usize, closed: bool) -> Result<Self> {
         if count < 3 {
             return Err(Error::TooFewPoints {

@@ -40,6 +40,19 @@ impl SplineBlending {
     /// Errors: fewer than two nodes (four, one of them the closing node, when periodic), a
     /// non-finite node, nodes not strictly increasing ([`Error::InvalidKnot`]), clamped ends
     /// ([`Error::UnsupportedEnds`]: the functions blend values only).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::coons::{BlendingFamily, SplineBlending};
+    /// use karkas::param::SplineEnds;
+    ///
+    /// let family = SplineBlending::new(&[0.0, 1.0, 2.0, 3.0], SplineEnds::Natural)?;
+    /// assert_eq!(family.len(), 4);
+    /// let clamped = SplineEnds::Clamped { start: karkas::Point([0.0]), end: karkas::Point([0.0]) };
+    /// assert!(SplineBlending::new(&[0.0, 1.0, 2.0], clamped).is_err());
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn new(nodes: &[f64], ends: SplineEnds) -> Result<Self> {
         if let SplineEnds::Clamped { .. } = ends {
             return Err(Error::UnsupportedEnds {

@@ -26,7 +26,7 @@ pub(crate) struct Samples<const D: usize> {
 impl<const D: usize> Samples<D> {
     /// Samples `spline` on every piece: [`BASE_STEPS`] uniform steps, each halved while the
     /// tangent turns more than [`MAX_STEP_TURN`] over it (judged at its midpoint).
-    pub fn of(spline: &HermiteSpline<D>) -> Self {
+    pub(crate) fn of(spline: &HermiteSpline<D>) -> Self {
         let knots = spline.knots();
         let mut raw: Vec<(f64, Point<D>, Point<D>)> = Vec::with_capacity(spline.pieces() * 20);
         let at = |piece: usize, s: f64| {

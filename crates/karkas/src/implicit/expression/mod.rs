@@ -42,6 +42,19 @@ impl ExpressionSurface {
     /// Errors: [`Error::ExpressionParse`] with the 1-based character position of the first
     /// problem (an unknown name, a missing operand or parenthesis, a stray character, nesting
     /// deeper than 32 levels, more than 1000 characters).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::implicit::{ExpressionSurface, ImplicitSurface};
+    /// use karkas::Point;
+    ///
+    /// let sphere = ExpressionSurface::parse("x*x + y*y + z*z - 4")?;
+    /// assert_eq!(sphere.value(Point([2.0, 0.0, 0.0])), 0.0);
+    /// assert!(sphere.gradient(Point([0.0, 2.0, 0.0])).distance(Point([0.0, 4.0, 0.0])) < 1e-12);
+    /// assert!(ExpressionSurface::parse("x +").is_err());
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn parse(text: &str) -> Result<Self> {
         if text.chars().count() > MAX_LENGTH {
             return Err(Error::ExpressionParse {
