@@ -30,6 +30,11 @@ DEMO = {
     "foil-00000.dat": ROOT / "data" / "batch-foils" / "foil-00000.dat",
     "contour-53.csv": ROOT / "data" / "contour-53.csv",
     "aircraft-15x31.csv": ROOT / "data" / "aircraft-15x31.csv",
+    # The demo wing of the loft: its sections table first, then the profiles it names.
+    "loft-wing/wing.csv": ROOT / "data" / "loft-wing" / "wing.csv",
+    "loft-wing/naca4415.dat": ROOT / "data" / "loft-wing" / "naca4415.dat",
+    "loft-wing/naca2412.dat": ROOT / "data" / "loft-wing" / "naca2412.dat",
+    "loft-wing/naca0009.dat": ROOT / "data" / "loft-wing" / "naca0009.dat",
 }
 
 

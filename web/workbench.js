@@ -2,7 +2,9 @@
 // Curves: the points on a 2-D canvas with each method's curve and curvature comb, and the
 // curvature against arc length below; drag a point or move a slider and everything is
 // rebuilt by the library (WebAssembly). Grids and networks: the surface in 3-D with a
-// section by a movable plane. Exports go through the command line's writers.
+// section by a movable plane. Lofts: a sections table and its profiles lofted into a wing in
+// 3-D; a section's chord, twist and leading edge move with sliders and the loft is rebuilt.
+// Exports go through the command line's writers.
 import init, * as K from 'karkas-wasm';
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
@@ -18,13 +20,17 @@ const SAMPLES = 400;
 const CURVE_EXPORTS = ['step', 'iges', 'dxf', 'csv', 'svg', 'points'];
 const SURFACE_EXPORTS = ['step', 'iges', 'obj', 'stl'];
 
+const LOFT_TOLERANCE = 1e-5;
+const LOFT_FIELDS = ['x', 'y', 'z', 'chord', 'twist'];
+
 const state = {
   kind: null, name: '', text: '', dim: 2, coords: [], box: null,
-  network: null, grid: null, surface: null, mesh: null,
+  network: null, grid: null, surface: null, mesh: null, loft: null,
   options: {
     order: 3, closed: false, ends: 'not-a-knot', param: 'chord', tolerance: 1e-3, eps: 0,
     corners: '', comb: true, methods: Object.fromEntries(METHODS.map((m) => [m[0], m[3]])),
     'surface-method': 'll', 'network-kind': 'gordon', 'section-axis': 'x', section: 0.5,
+    'loft-rule': 'monotone',
   },
   curves: {}, errors: [], lastUpdateMs: 0, dragging: -1,
 };
@@ -69,11 +75,63 @@ function kindOf(text, name) {
   const head = first.trim().toLowerCase();
   if (/^(i|row)\s*,\s*(j|col)\b/.test(head)) return 'grid';
   if (/^curve\s*,/.test(head)) return 'network';
+  if (/^file\s*,/.test(head)) return 'loft';
   return 'curve';
+}
+
+const isSurface = (kind) => kind === 'grid' || kind === 'network' || kind === 'loft';
+
+/** Loads the sections table `text` (file `name`) and the profiles it names, looked up by
+ * their names in `profiles` (name: text; a name may carry a folder, matched by its last part). */
+function loadLoft(text, name, profiles) {
+  try {
+    const table = K.readSectionsTable(text, name);
+    const files = table.files(), lines = Array.from(table.lines());
+    const placements = Array.from(table.placements());
+    table.free();
+    const byName = {};
+    for (const [n, t] of Object.entries(profiles)) byName[n.split(/[\\/]/).pop()] = t;
+    const coords = [], counts = [];
+    files.forEach((file, k) => {
+      const at = `${name}: row ${lines[k]} (${file})`;
+      const profile = byName[file.split(/[\\/]/).pop()];
+      if (profile === undefined) throw new Error(`karkas: error: ${at}: the profile file is missing: drop it with the table`);
+      let input;
+      try {
+        input = K.readCurve(profile, file);
+      } catch (e) {
+        throw new Error(`karkas: error: ${at}: ${String(e.message || e).replace(/^karkas: error: /, '')}`);
+      }
+      const dim = input.dim(), c = input.coords();
+      input.free();
+      if (dim !== 2) throw new Error(`karkas: error: ${at}: a profile has two coordinates (x, y in unit chord), not three`);
+      coords.push(...c);
+      counts.push(c.length / 2);
+    });
+    state.loft = {
+      files, lines, base: placements, placements: [...placements], selected: 0,
+      coords: new Float64Array(coords), counts: new Uint32Array(counts),
+      labels: files.map((f, k) => `${name}: row ${lines[k]} (${f})`).join('\n'),
+      buildMs: 0, controls: [], deviation: NaN, toleranceMet: false, stations: [], curves: [],
+    };
+  } catch (e) {
+    showError(String(e.message || e), text);
+    return false;
+  }
+  state.kind = 'loft';
+  state.name = name;
+  state.text = text;
+  if (three) three.framed = false;
+  showError('');
+  setMode();
+  fillLoftControls();
+  update();
+  return state.errors.length === 0;
 }
 
 function load(text, name) {
   const kind = kindOf(text, name);
+  if (kind === 'loft') return loadLoft(text, name, demoProfiles(name));
   try {
     if (kind === 'grid') {
       state.grid = K.readGrid(text, name);
@@ -115,6 +173,11 @@ function loadNetwork(uText, uName, vText, vName) {
 async function loadFiles(files) {
   const list = Array.from(files).sort((a, b) => a.name.localeCompare(b.name));
   const texts = await Promise.all(list.map((f) => f.text()));
+  const table = list.findIndex((f, k) => kindOf(texts[k], f.name) === 'loft');
+  if (table >= 0) {
+    const profiles = Object.fromEntries(list.map((f, k) => [f.name, texts[k]]));
+    return loadLoft(texts[table], list[table].name, profiles);
+  }
   if (list.length >= 2) {
     // The file whose name says "v" holds the v-curves.
     const v = list.findIndex((f) => /(^|[^a-z])v([^a-z]|$)|v[-_]?curves/i.test(f.name));
@@ -168,6 +231,24 @@ function update() {
         errors.push(`${label}: ${e.message || e}`);
       }
     }
+  } else if (state.kind === 'loft') {
+    const L = state.loft;
+    try {
+      const begun = performance.now();
+      state.surface = K.buildLoft(L.coords, L.counts, new Float64Array(L.placements),
+        state.options['loft-rule'], LOFT_TOLERANCE, L.labels, state.name);
+      L.buildMs = performance.now() - begun;
+      L.controls = Array.from(state.surface.loftControls());
+      L.deviation = state.surface.loftDeviation();
+      L.toleranceMet = state.surface.loftToleranceMet();
+      L.stations = Array.from(state.surface.loftStations());
+      L.curves = Array.from(state.surface.loftSectionCurves());
+      state.mesh = { nu: 80, nv: 121, positions: state.surface.samples(80, 121) };
+    } catch (e) {
+      state.mesh = null;
+      L.controls = [];
+      errors.push(String(e.message || e));
+    }
   } else if (state.kind === 'grid' || state.kind === 'network') {
     try {
       state.surface = state.kind === 'grid'
@@ -179,13 +260,21 @@ function update() {
       errors.push(String(e.message || e));
     }
   }
-  if (errors.length) showError(errors.join('\n'), state.kind === 'curve' ? '' : state.text);
+  if (errors.length) showError(errors.join('\n'), state.kind === 'curve' || state.kind === 'loft' ? '' : state.text);
   else if (state.errors.length) showError('');
   draw();
   state.lastUpdateMs = performance.now() - started;
   const sizes = Object.entries(state.curves)
     .map(([id, c]) => `${id}: degree ${c.view.degree()}, ${c.view.poles()} poles`).join('; ');
   $('status').textContent = `${state.name}: ${state.kind === 'curve' ? `${state.coords.length / state.dim} points; ${sizes}` : ''} update ${state.lastUpdateMs.toFixed(1)} ms`;
+  if (state.kind === 'loft') {
+    const L = state.loft;
+    $('loft-summary').textContent = L.controls.length
+      ? `${L.counts.length} sections; ${L.controls[0]} x ${L.controls[1]} control points; largest section deviation ` +
+        `${L.deviation.toExponential(2)} of the chord (tolerance ${LOFT_TOLERANCE}${L.toleranceMet ? ', met' : ', NOT met'}); ` +
+        `loft ${L.buildMs.toFixed(1)} ms`
+      : 'no loft';
+  }
 }
 
 // ---- the 2-D view ----------------------------------------------------------------------------
@@ -232,7 +321,7 @@ function percentile(values, p) {
 }
 
 function draw() {
-  const is3d = state.kind === 'grid' || state.kind === 'network';
+  const is3d = isSurface(state.kind);
   $('view').style.display = is3d ? 'none' : 'block';
   $('view3d').style.display = is3d ? 'block' : 'none';
   $('curvature-plot').style.display = is3d ? 'none' : 'block';
@@ -392,8 +481,43 @@ function drawSurface() {
   geometry.computeVertexNormals();
   geometry.computeBoundingBox();
   group.add(new THREE.Mesh(geometry, new THREE.MeshStandardMaterial({ color: 0x8fb3d9, side: THREE.DoubleSide, roughness: 0.6 })));
-  // The section plane and the section.
   const box = geometry.boundingBox;
+  if (state.kind === 'loft') drawLoftSections();
+  else drawSectionPlane(box);
+  if (!three.framed) {
+    const size = new THREE.Vector3(); box.getSize(size);
+    const centre = new THREE.Vector3(); box.getCenter(centre);
+    const r = 0.5 * size.length() || 1;
+    camera.position.set(centre.x + 1.6 * r, centre.y - 2.2 * r, centre.z + 1.4 * r);
+    controls.target.copy(centre);
+    camera.near = r * 1e-3; camera.far = r * 100;
+    camera.updateProjectionMatrix();
+    controls.update();
+    three.framed = true;
+  }
+  renderer.render(scene, camera);
+}
+
+/** A loft's sections: the surface at every station, the chosen one in red. */
+function drawLoftSections() {
+  const L = state.loft, n = 121;
+  if (L.curves.length !== 3 * n * L.counts.length) return;
+  L.files.forEach((_, k) => {
+    const points = [];
+    for (let j = 0; j + 1 < n; j++) {
+      const a = 3 * (k * n + j);
+      points.push(...L.curves.slice(a, a + 6));
+    }
+    const lines = new THREE.BufferGeometry();
+    lines.setAttribute('position', new THREE.Float32BufferAttribute(points, 3));
+    const color = k === L.selected ? 0xd62728 : 0x333333;
+    three.group.add(new THREE.LineSegments(lines, new THREE.LineBasicMaterial({ color })));
+  });
+}
+
+/** The section plane and the surface's section by it. */
+function drawSectionPlane(box) {
+  const { group } = three;
   const axis = { x: 0, y: 1, z: 2 }[state.options['section-axis']];
   const lo = box.min.getComponent(axis), hi = box.max.getComponent(axis);
   const offset = lo + state.options.section * (hi - lo);
@@ -426,16 +550,6 @@ function drawSurface() {
   if (axis === 0) plane.rotation.y = Math.PI / 2;
   if (axis === 1) plane.rotation.x = Math.PI / 2;
   group.add(plane);
-  if (!three.framed) {
-    const r = 0.5 * size.length() || 1;
-    camera.position.set(centre.x + 1.6 * r, centre.y - 2.2 * r, centre.z + 1.4 * r);
-    controls.target.copy(centre);
-    camera.near = r * 1e-3; camera.far = r * 100;
-    camera.updateProjectionMatrix();
-    controls.update();
-    three.framed = true;
-  }
-  renderer.render(scene, camera);
 }
 
 // ---- exports ----------------------------------------------------------------------------
@@ -447,7 +561,7 @@ function firstCurve() {
 
 function exportText(format) {
   const name = stem(state.name || 'karkas');
-  if (state.kind === 'grid' || state.kind === 'network') {
+  if (isSurface(state.kind)) {
     if (!state.surface) throw new Error('karkas: error: no surface to export');
     if (SURFACE_EXPORTS.includes(format)) return state.surface.export(format, name, state.name);
     throw new Error(`karkas: error: a surface exports as ${SURFACE_EXPORTS.join(', ')}`);
@@ -485,9 +599,10 @@ function download(format) {
 // ---- controls ----------------------------------------------------------------------------
 
 function setMode() {
-  const surface = state.kind === 'grid' || state.kind === 'network';
+  const surface = isSurface(state.kind);
   document.getElementById('curve-controls').classList.toggle('hidden', surface);
-  document.getElementById('surface-controls').classList.toggle('hidden', !surface);
+  document.getElementById('surface-controls').classList.toggle('hidden', !surface || state.kind === 'loft');
+  document.getElementById('loft-controls').classList.toggle('hidden', state.kind !== 'loft');
   const select = $('export-format');
   select.textContent = '';
   for (const f of surface ? SURFACE_EXPORTS : CURVE_EXPORTS) select.append(new Option(f === 'points' ? 'points (CSV)' : f.toUpperCase(), f));
@@ -521,6 +636,85 @@ function syncControls() {
   $('network-kind').value = o['network-kind'];
   $('section-axis').value = o['section-axis'];
   $('section').value = o.section;
+  $('loft-rule').value = o['loft-rule'];
+}
+
+// ---- the loft's sections ----------------------------------------------------------------------------
+
+/** The profiles of the demo data beside the sections table `name` (same folder). */
+function demoProfiles(name) {
+  const folder = name.includes('/') ? name.slice(0, name.lastIndexOf('/') + 1) : '';
+  return Object.fromEntries(Object.entries(demos).filter(([n]) => n.startsWith(folder) && n !== name));
+}
+
+/** The sliders' ranges around the chosen section's table values, and its values. */
+function fillLoftControls() {
+  const L = state.loft;
+  const select = $('loft-section');
+  select.textContent = '';
+  L.files.forEach((f, k) => select.append(new Option(`${k + 1}: ${f} (row ${L.lines[k]})`, String(k))));
+  select.value = String(L.selected);
+  const k = L.selected, base = L.base.slice(6 * k, 6 * k + 6);
+  // The wing's size: the largest chord or leading-edge distance from the first section.
+  let size = 0;
+  for (let i = 0; i < L.files.length; i++) {
+    size = Math.max(size, L.base[6 * i + 3]);
+    for (let d = 0; d < 3; d++) size = Math.max(size, Math.abs(L.base[6 * i + d] - L.base[d]));
+  }
+  const range = (id, lo, hi, step) => Object.assign($(id), { min: lo, max: hi, step });
+  range('loft-chord', 0.25 * base[3], 2 * base[3], base[3] / 400);
+  for (const [d, axis] of ['x', 'y', 'z'].entries()) range(`loft-${axis}`, base[d] - 0.25 * size, base[d] + 0.25 * size, size / 2000);
+  syncLoftControls();
+}
+
+function syncLoftControls() {
+  const L = state.loft, k = L.selected;
+  LOFT_FIELDS.forEach((field) => {
+    const value = L.placements[6 * k + LOFT_FIELDS.indexOf(field)];
+    $(`loft-${field}`).value = value;
+    document.getElementById(`loft-${field}-value`).textContent = Number(value).toPrecision(4);
+  });
+}
+
+/** Sets `field` (`x`, `y`, `z`, `chord`, `twist`) of section `k` and rebuilds the loft. */
+function setLoftSection(k, field, value) {
+  const L = state.loft;
+  if (state.kind !== 'loft' || !(k >= 0 && k < L.files.length) || !LOFT_FIELDS.includes(field)) return false;
+  L.placements[6 * k + LOFT_FIELDS.indexOf(field)] = Number(value);
+  if (L.selected !== k) { L.selected = k; fillLoftControls(); } else syncLoftControls();
+  update();
+  return state.errors.length === 0;
+}
+
+/** What the page shows of the loft (for tests): the summary and the section curves. */
+function loftState() {
+  const L = state.loft;
+  if (state.kind !== 'loft' || !L) return null;
+  const n = 121, sections = [];
+  for (let k = 0; 3 * n * (k + 1) <= L.curves.length; k++) {
+    const points = [];
+    for (let j = 0; j < n; j++) points.push(L.curves.slice(3 * (k * n + j), 3 * (k * n + j) + 3));
+    sections.push(points);
+  }
+  return { sections: L.counts.length, controls: L.controls, deviation: L.deviation,
+    toleranceMet: L.toleranceMet, stations: L.stations, placements: [...L.placements],
+    selected: L.selected, buildMs: L.buildMs, curves: sections,
+    mesh: state.mesh ? { nu: state.mesh.nu, nv: state.mesh.nv, positions: Array.from(state.mesh.positions) } : null };
+}
+
+/** Rebuilds the loft `rounds` times, turning the chosen section's twist by 0.1 degrees back
+ * and forth as a slider does; the loft's times (ms: median, 95th percentile). */
+function benchLoft(rounds = 40) {
+  const L = state.loft;
+  if (state.kind !== 'loft') throw new Error('load a sections table first');
+  const k = L.selected, twist = L.placements[6 * k + 4], times = [];
+  for (let r = 0; r < rounds; r++) {
+    setLoftSection(k, 'twist', twist + (r % 2 ? 0.1 : -0.1));
+    times.push(L.buildMs);
+  }
+  setLoftSection(k, 'twist', twist);
+  const at = (v, p) => [...v].sort((a, b) => a - b)[Math.floor(p * (v.length - 1) + 0.5)];
+  return { rounds, sections: L.counts.length, controls: L.controls, median: at(times, 0.5), p95: at(times, 0.95) };
 }
 
 function wire() {
@@ -543,13 +737,26 @@ function wire() {
   $('network-kind').addEventListener('change', (e) => setOption('network-kind', e.target.value));
   $('section-axis').addEventListener('change', (e) => setOption('section-axis', e.target.value));
   $('section').addEventListener('input', (e) => setOption('section', Number(e.target.value)));
+  $('loft-rule').addEventListener('change', (e) => setOption('loft-rule', e.target.value));
+  $('loft-section').addEventListener('change', (e) => {
+    state.loft.selected = Number(e.target.value);
+    fillLoftControls();
+    draw();
+  });
+  for (const field of LOFT_FIELDS) {
+    $(`loft-${field}`).addEventListener('input', (e) => setLoftSection(state.loft.selected, field, e.target.value));
+  }
+  $('loft-reset').addEventListener('click', () => {
+    state.loft.placements = [...state.loft.base];
+    fillLoftControls();
+    update();
+  });
   $('export').addEventListener('click', () => download($('export-format').value));
   $('file').addEventListener('change', (e) => loadFiles(e.target.files));
   const drop = $('drop');
   for (const type of ['dragenter', 'dragover']) document.body.addEventListener(type, (e) => { e.preventDefault(); drop.classList.add('over'); });
   document.body.addEventListener('dragleave', () => drop.classList.remove('over'));
   document.body.addEventListener('drop', (e) => { e.preventDefault(); drop.classList.remove('over'); loadFiles(e.dataTransfer.files); });
-  const demos = JSON.parse(document.getElementById('karkas-demo').textContent);
   const select = $('demo');
   for (const name of Object.keys(demos)) select.append(new Option(name, name));
   select.addEventListener('change', () => load(demos[select.value], select.value));
@@ -581,7 +788,6 @@ function wire() {
   canvas.addEventListener('pointerup', end);
   canvas.addEventListener('pointercancel', end);
   window.addEventListener('resize', () => draw());
-  return demos;
 }
 
 function movePoint(index, x, y) {
@@ -662,9 +868,10 @@ function bench(points = 200, drags = 20, moves = 10) {
 
 // ---- start ----------------------------------------------------------------------------
 
+const demos = JSON.parse(document.getElementById('karkas-demo').textContent);
 const wasm = Uint8Array.from(atob(document.getElementById('karkas-wasm').textContent.trim()), (c) => c.charCodeAt(0));
 const ready = init({ module_or_path: wasm }).then(() => {
-  const demos = wire();
+  wire();
   setMode();
   syncControls();
   const first = Object.keys(demos)[0];
@@ -677,7 +884,11 @@ window.karkasWorkbench = {
   ready,
   load,
   loadNetwork,
+  loadLoft,
   movePoint,
+  setLoftSection,
+  loft: loftState,
+  benchLoft,
   setOption,
   curves,
   pointOnScreen,

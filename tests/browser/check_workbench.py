@@ -14,7 +14,13 @@ it exports with the command line's files for the same points and options.
 6. Loads the shipped grid: the LL surface in 3-D with a section; its STEP and OBJ equal
    `karkas surface ll --order 3`'s, its STL is a mesh. Then a curve network of two files: the Gordon surface,
    its STEP equal to `karkas surface coons --kind gordon`'s.
-7. Keeps a screenshot (--screenshot).
+7. Picks the shipped demo wing (a sections table and three airfoils): the loft in 3-D with its
+   summary, within its tolerance, its STEP `karkas loft`'s (numbers within 1e-9); turns the tip's twist with
+   its slider: the tip section turns by the change, the root and middle sections stay where they
+   were, and with the ruled (linear) rule nothing inboard of the middle section moves; times the
+   rebuild (`benchLoft`, median of 40). A table dropped without its profiles: the row and file
+   named.
+8. Keeps a screenshot (--screenshot).
 
 Usage: check_workbench.py PAGE --karkas BIN [--screenshot OUT.png]
 Needs Python Playwright, Pillow and NumPy, and the system Chromium (/usr/bin/chromium or
@@ -39,6 +45,7 @@ ROOT = pathlib.Path(__file__).resolve().parent.parent.parent
 AIRFOIL = ROOT / "data" / "batch-foils" / "foil-00000.dat"
 DAMAGED = ROOT / "data" / "batch-foils" / "damaged-002.dat"
 GRID = ROOT / "data" / "aircraft-15x31.csv"
+WING = ROOT / "data" / "loft-wing" / "wing.csv"
 
 
 def without_time_stamp(text):
@@ -72,6 +79,95 @@ def cli_text(karkas, args, points_text, name, ext, work):
     subprocess.run([karkas, *args, str(source), "-o", str(out)], check=True,
                    capture_output=True)
     return out.read_text()
+
+
+def set_slider(page, testid, value):
+    """Moves the range input `testid` to `value` as a user's drag does (an input event)."""
+    page.evaluate("""([id, v]) => { const e = document.querySelector(`[data-testid="${id}"]`);
+        e.value = String(v); e.dispatchEvent(new Event('input', { bubbles: true })); }""", [testid, value])
+
+
+def check_loft(page, karkas, work, check):
+    """Step 7: the shipped demo wing lofted, a twist changed with its slider; returns the
+    median rebuild time (ms)."""
+    page.select_option('[data-testid="demo"]', "loft-wing/wing.csv")
+    page.wait_for_function("window.karkasWorkbench.state().kind === 'loft'")
+    loft = page.evaluate("window.karkasWorkbench.loft()")
+    state = page.evaluate("window.karkasWorkbench.state()")
+    check(state["errors"] == [], f"loft: errors {state['errors']}")
+    check(page.locator('[data-testid="view3d"]').is_visible(), "loft: no 3-D view")
+    check(page.locator('[data-testid="loft-section"] option').count() == 3, "loft: not 3 sections to choose")
+    check(loft["sections"] == 3 and loft["toleranceMet"] and 0 < loft["deviation"] <= 1e-5,
+          f"loft: {loft['sections']} sections, deviation {loft['deviation']}")
+    check(len(loft["controls"]) == 2 and loft["controls"][0] >= 4 and loft["controls"][1] >= 10,
+          f"loft: control points {loft['controls']}")
+    summary = page.locator('[data-testid="loft-summary"]').inner_text()
+    check(f"{loft['controls'][0]} x {loft['controls'][1]} control points" in summary
+          and "largest section deviation" in summary and " ms" in summary, f"loft summary: {summary!r}")
+    # The page's STEP is `karkas loft`'s for the same table: the same entities, the numbers
+    # within 1e-9 (the wing is 6 long): WebAssembly's sine and cosine of the twist differ
+    # from the native ones in the last bit, and the sections' fit carries that to about 1e-11.
+    from_page = without_time_stamp(page.evaluate("window.karkasWorkbench.export('step')"))
+    subprocess.run([karkas, "loft", str(WING), "-o", str(work / "wing.step")], check=True,
+                   capture_output=True)
+    from_cli = without_time_stamp((work / "wing.step").read_text())
+    number = r"-?\d+\.\d*(?:E[-+]?\d+)?"
+    page_numbers = [float(x) for x in re.findall(number, from_page)]
+    cli_numbers = [float(x) for x in re.findall(number, from_cli)]
+    same = (re.split(number, from_page) == re.split(number, from_cli)
+            and len(page_numbers) == len(cli_numbers) > 100
+            and max(abs(a - b) for a, b in zip(page_numbers, cli_numbers)) <= 1e-9)
+    check(same, "loft STEP from the page differs from the command line's")
+    # The sliders show the chosen section's table values.
+    page.select_option('[data-testid="loft-section"]', "2")
+    twist = float(page.locator('[data-testid="loft-twist"]').input_value())
+    check(abs(twist - (-3.0)) < 1e-9, f"loft: the tip's twist slider reads {twist}, the table -3")
+    stations = loft["stations"]
+    for rule in ("monotone", "linear"):
+        page.select_option('[data-testid="loft-rule"]', rule)
+        set_slider(page, "loft-twist", -3.0)
+        before = page.evaluate("window.karkasWorkbench.loft()")
+        set_slider(page, "loft-twist", 2.0)
+        after = page.evaluate("window.karkasWorkbench.loft()")
+        check(after["placements"][2 * 6 + 4] == 2.0 and after["selected"] == 2,
+              f"loft {rule}: the slider did not set the tip's twist: {after['placements']}")
+        check(page.evaluate("window.karkasWorkbench.state().errors") == [], f"loft {rule}: errors")
+        curves_before = [numpy.array(c) for c in before["curves"]]
+        curves_after = [numpy.array(c) for c in after["curves"]]
+        moved = [float(numpy.abs(a - b).max()) for a, b in zip(curves_before, curves_after)]
+        check(moved[0] < 1e-12 and moved[1] < 1e-12, f"loft {rule}: root or middle section moved {moved}")
+        # The tip's chord line (leading edge, the middle of 121 points, to the trailing edge's
+        # middle) turned 5 degrees nose up about the span.
+        def pitch(c):
+            chord = (c[0] + c[-1]) / 2 - c[60]
+            return numpy.degrees(numpy.arctan2(chord[2], chord[0]))
+        turn = pitch(curves_before[2]) - pitch(curves_after[2])
+        check(abs(turn - 5.0) < 0.05, f"loft {rule}: the tip turned {turn:.3f} degrees, not 5")
+        mesh_b = numpy.array(before["mesh"]["positions"]).reshape(before["mesh"]["nu"], -1, 3)
+        mesh_a = numpy.array(after["mesh"]["positions"]).reshape(after["mesh"]["nu"], -1, 3)
+        rows = numpy.abs(mesh_a - mesh_b).max(axis=(1, 2))
+        u = numpy.linspace(stations[0], stations[-1], len(rows))
+        check(rows[-1] > 0.01, f"loft {rule}: the surface did not move at the tip ({rows[-1]})")
+        inboard = rows[u <= stations[1] + 1e-9].max()
+        if rule == "linear":
+            check(inboard < 1e-12, f"loft linear: the surface moved inboard of the middle section ({inboard})")
+        else:
+            check(rows[0] < 1e-12, f"loft monotone: the surface moved at the root ({rows[0]})")
+    page.select_option('[data-testid="loft-rule"]', "monotone")
+    page.click('[data-testid="loft-reset"]')
+    bench = page.evaluate("window.karkasWorkbench.benchLoft(40)")
+    check(bench["median"] > 0, f"loft benchmark: {bench}")
+    # The table alone: its first row's profile is missing.
+    page.evaluate("""([text, name]) => {
+        const data = new DataTransfer();
+        data.items.add(new File([text], name, { type: 'text/csv' }));
+        document.body.dispatchEvent(new DragEvent('drop', { dataTransfer: data, bubbles: true }));
+    }""", [WING.read_text(), "lonely.csv"])
+    page.wait_for_timeout(300)
+    shown = page.locator('[data-testid="errors"]').inner_text()
+    check("lonely.csv: row 2 (naca4415.dat)" in shown and "missing" in shown,
+          f"a table without profiles: {shown!r}")
+    return bench["median"]
 
 
 def main():
@@ -202,6 +298,8 @@ def main():
                         str(work / "u.step")], check=True, capture_output=True)
         from_cli = without_time_stamp((work / "u.step").read_text())
         check(from_page == from_cli, "network STEP from the page differs from the command line's")
+
+        loft_rebuild_ms = check_loft(page, args.karkas, work, check)
         browser.close()
 
     for line in problems:
@@ -209,7 +307,9 @@ def main():
     if not problems:
         print("check_workbench: ok (airfoil loaded, dragged, curves and curvature plot changed; "
               "STEP, IGES, DXF, CSV, surface STEP and OBJ, network STEP equal the command line's; "
-              "errors as the command line's; surfaces with sections)")
+              "errors as the command line's; surfaces with sections; the demo wing lofted, its STEP within 1e-9 of "
+              f"equal to karkas loft's, a twist slider moving its tip only; loft rebuild "
+              f"{loft_rebuild_ms:.1f} ms median)")
     return 1 if problems else 0
 
 

@@ -21,6 +21,7 @@ EXAMPLES = [
     "param-cylinder-hyperboloid",
     "param-angle-sweep",
     "param-relay",
+    "loft-wing",
 ]
 
 

@@ -9,6 +9,7 @@
 //! browser, the library's parallel paths run on the one thread (rayon's fallback).
 
 pub mod curves;
+pub mod loft;
 pub mod surfaces;
 
 use std::path::Path;
@@ -19,7 +20,7 @@ use karkas_io::OutputFormat;
 use wasm_bindgen::prelude::*;
 
 use curves::{build_curve, BuiltCurve, CurveRequest};
-use surfaces::{grid_surface, network_surface, BuiltSurface};
+use surfaces::{grid_surface, loft_surface, network_surface, BuiltSurface};
 
 /// An error as the command line words it (`karkas: error: ` and the message).
 fn refusal(message: impl std::fmt::Display) -> JsError {
@@ -164,7 +165,20 @@ fn points<const D: usize>(coords: &[f64]) -> Vec<Point<D>> {
 #[wasm_bindgen]
 pub struct SurfaceView {
     built: Box<dyn BuiltSurface>,
+    loft: Option<LoftFacts>,
 }
+
+/// What the page shows of a loft beside its surface.
+struct LoftFacts {
+    controls: (usize, usize),
+    max_relative_deviation: f64,
+    tolerance_met: bool,
+    stations: Vec<f64>,
+    curves: Vec<f64>,
+}
+
+/// Points a section's curve is drawn with.
+const STATION_CURVE_POINTS: usize = 121;
 
 #[wasm_bindgen]
 impl SurfaceView {
@@ -184,6 +198,40 @@ impl SurfaceView {
         }
         let format = cad_format(format, &OutputFormat::CAD)?;
         self.built.cad(format, name, input).map_err(refusal)
+    }
+    /// A loft's control points along the span and along the sections (empty for the other
+    /// surfaces).
+    #[wasm_bindgen(js_name = loftControls)]
+    pub fn loft_controls(&self) -> Vec<u32> {
+        self.loft.as_ref().map_or(Vec::new(), |f| {
+            vec![f.controls.0 as u32, f.controls.1 as u32]
+        })
+    }
+    /// A loft's largest distance of a section's points from the surface at its station, as a
+    /// share of that section's chord (NaN for the other surfaces).
+    #[wasm_bindgen(js_name = loftDeviation)]
+    pub fn loft_deviation(&self) -> f64 {
+        self.loft
+            .as_ref()
+            .map_or(f64::NAN, |f| f.max_relative_deviation)
+    }
+    /// True when every section of a loft is within its tolerance.
+    #[wasm_bindgen(js_name = loftToleranceMet)]
+    pub fn loft_tolerance_met(&self) -> bool {
+        self.loft.as_ref().is_some_and(|f| f.tolerance_met)
+    }
+    /// A loft's span stations (empty for the other surfaces).
+    #[wasm_bindgen(js_name = loftStations)]
+    pub fn loft_stations(&self) -> Vec<f64> {
+        self.loft
+            .as_ref()
+            .map_or(Vec::new(), |f| f.stations.clone())
+    }
+    /// The surface's curve at every station of a loft, 121 points of 3 numbers each,
+    /// section after section (empty for the other surfaces).
+    #[wasm_bindgen(js_name = loftSectionCurves)]
+    pub fn loft_section_curves(&self) -> Vec<f64> {
+        self.loft.as_ref().map_or(Vec::new(), |f| f.curves.clone())
     }
 }
 
@@ -209,6 +257,7 @@ pub fn build_grid_surface(
     let grid = karkas::Grid::from_row_major(rows, cols, points).map_err(refusal)?;
     Ok(SurfaceView {
         built: grid_surface(&grid, method, order, input).map_err(refusal)?,
+        loft: None,
     })
 }
 
@@ -229,5 +278,85 @@ pub fn build_network_surface(
     let input = format!("{u_name}, {v_name}");
     Ok(SurfaceView {
         built: network_surface(&u, &v, kind, &input).map_err(refusal)?,
+        loft: None,
+    })
+}
+
+/// The rows of a sections table (`file,x,y,z,chord,twist[,dihedral]`) read by the command
+/// line's reader.
+#[wasm_bindgen]
+pub struct SectionsTable {
+    files: Vec<String>,
+    lines: Vec<u32>,
+    placements: Vec<f64>,
+}
+
+#[wasm_bindgen]
+impl SectionsTable {
+    /// The profile files, as the table names them, in span order.
+    pub fn files(&self) -> Vec<String> {
+        self.files.clone()
+    }
+    /// The table's line of every row.
+    pub fn lines(&self) -> Vec<u32> {
+        self.lines.clone()
+    }
+    /// Six numbers a row: `x, y, z, chord, twist, dihedral` (NaN: none given).
+    pub fn placements(&self) -> Vec<f64> {
+        self.placements.clone()
+    }
+}
+
+/// Reads the sections table `name` whose text is `text`.
+#[wasm_bindgen(js_name = readSectionsTable)]
+pub fn read_sections_table(text: &str, name: &str) -> Result<SectionsTable, JsError> {
+    let rows =
+        karkas_io::sections_table::parse_sections_table(text, Path::new(name), Path::new(""))
+            .map_err(refusal)?;
+    Ok(SectionsTable {
+        files: rows.iter().map(|r| r.file.clone()).collect(),
+        lines: rows.iter().map(|r| r.line as u32).collect(),
+        placements: loft::row_placements(&rows),
+    })
+}
+
+/// The wing lofted through the profiles `coords` (`x, y` pairs in unit chord, `counts[k]`
+/// points for section `k`, in span order) placed by `placements` (six numbers a section:
+/// `x, y, z` of the leading edge, chord, twist and dihedral in degrees, NaN for none), as
+/// `karkas loft` builds it with `--span rule --tolerance tolerance`; `labels` (one line a
+/// section) name the sections in errors, `input` the rest.
+#[wasm_bindgen(js_name = buildLoft)]
+pub fn build_loft(
+    coords: &[f64],
+    counts: &[u32],
+    placements: &[f64],
+    rule: &str,
+    tolerance: f64,
+    labels: &str,
+    input: &str,
+) -> Result<SurfaceView, JsError> {
+    let placements = loft::placements(placements).map_err(refusal)?;
+    let counts: Vec<usize> = counts.iter().map(|&n| n as usize).collect();
+    let labels: Vec<String> = labels.lines().map(str::to_owned).collect();
+    let built = loft::wing_loft(
+        coords,
+        &counts,
+        &placements,
+        rule,
+        tolerance,
+        &labels,
+        input,
+    )
+    .map_err(refusal)?;
+    let facts = LoftFacts {
+        controls: built.loft.control_counts(),
+        max_relative_deviation: built.loft.max_relative_deviation(),
+        tolerance_met: built.loft.tolerance_met(),
+        stations: built.loft.stations().to_vec(),
+        curves: built.station_curves(STATION_CURVE_POINTS),
+    };
+    Ok(SurfaceView {
+        built: loft_surface(built.loft, built.samples),
+        loft: Some(facts),
     })
 }

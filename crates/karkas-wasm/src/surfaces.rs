@@ -129,6 +129,12 @@ pub fn grid_surface(
     })
 }
 
+/// The surface of a loft, its default sample counts `samples` (along the span, along the
+/// sections).
+pub fn loft_surface(loft: karkas::loft::Loft, samples: (usize, usize)) -> Box<dyn BuiltSurface> {
+    Box::new(Built(loft, samples))
+}
+
 /// The Gordon surface (`kind` `gordon`, or `bilinear` Coons) of the network of `u` curves
 /// (lines `v = const`, in order of `v`) and `v` curves, each interpolated by a cubic spline.
 pub fn network_surface(

@@ -32,7 +32,7 @@ pub struct ExampleOutcome {
 }
 
 /// The papers, by seed number: the section titles of docs/methods.md.
-const PAPERS: [(&str, &str); 5] = [
+const PAPERS: [(&str, &str); 6] = [
     (
         "000",
         "LL-approximation of curves and surfaces (Aulchenko, Latypov, Nikulichev)",
@@ -53,6 +53,7 @@ const PAPERS: [(&str, &str); 5] = [
         "004",
         "Parameterization and bicubic interpolation of surfaces (Kuznetsov, Filatov)",
     ),
+    ("loft", "Lofting a wing through its sections (karkas)"),
 ];
 
 /// `report.json`: the whole run.
@@ -300,7 +301,8 @@ pub fn render_html(outcomes: &[ExampleOutcome], seconds: f64) -> String {
         "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n\
          <title>karkas demo: the five papers' examples</title>\n<style>{STYLE}</style>\n\
          </head>\n<body>\n<h1>karkas demo</h1>\n<p>Every example of the five papers behind \
-         karkas, reproduced by <code>karkas demo</code> (version {}) in {seconds:.2} s. \
+         karkas, reproduced by <code>karkas demo</code> (version {}) in {seconds:.2} s, \
+         and the loft of the shipped wing. \
          The numbers are also in <a href=\"report.json\">report.json</a>.</p>",
         env!("CARGO_PKG_VERSION")
     );

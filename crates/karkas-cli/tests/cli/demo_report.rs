@@ -1,11 +1,13 @@
-//! `karkas demo`: the report lists every example of the five papers, the cylinder row of
-//! Kuznetsov and Filatov's table lands where the paper's figure is, and every file the report names exists.
+//! `karkas demo`: the report lists every example of the five papers and the loft of the
+//! shipped wing, the cylinder row of Kuznetsov and Filatov's table lands where the paper's
+//! figure is, the wing's rows meet the loft's acceptance, and every file the report names
+//! exists.
 
 use crate::common::{karkas, s, stderr, temp_dir};
 use serde_json::Value;
 
 /// The examples the demo promises (issue contract: scripts read report.json by these ids).
-const EXAMPLES: [&str; 11] = [
+const EXAMPLES: [&str; 12] = [
     "ll-contour",
     "ll-aircraft",
     "coons-fig3",
@@ -17,6 +19,7 @@ const EXAMPLES: [&str; 11] = [
     "param-cylinder-hyperboloid",
     "param-angle-sweep",
     "param-relay",
+    "loft-wing",
 ];
 
 #[test]
@@ -78,6 +81,7 @@ fn demo_writes_a_complete_report() {
     check_angle_sweep(examples);
 
     check_relaid_frames(examples);
+    check_loft_wing(&out, examples);
 
     let html = std::fs::read_to_string(out.join("index.html")).unwrap();
     for seed in ["000", "001", "002", "003", "004"] {
@@ -255,4 +259,62 @@ fn check_relaid_frames(examples: &[Value]) {
             }
         }
     }
+}
+
+/// The shipped wing's loft: 3 sections; every input point within 1e-5 of the chord of the
+/// surface at its station (none beyond); the leading and trailing edges through the placed
+/// sections; on 1000 spanwise lines no chord, twist or leading edge outside its neighbours'
+/// range and no crossing trailing edges; the control points of a cubic across the span
+/// (2 x 3 - 2 rows with double knots at the inner station) and of a fit along the sections.
+fn check_loft_wing(out: &std::path::Path, examples: &[Value]) {
+    let wing = examples
+        .iter()
+        .find(|e| e["id"] == "loft-wing")
+        .expect("the loft-wing example");
+    assert_eq!(wing["seed"], "loft");
+    let rows = wing["rows"].as_array().unwrap();
+    let value = |start: &str| {
+        let row = rows
+            .iter()
+            .find(|r| r["measure"].as_str().unwrap().starts_with(start))
+            .unwrap_or_else(|| panic!("no row {start} in {rows:?}"));
+        assert_eq!(row["example"], "loft: shipped wing, 3 sections");
+        row["karkas"].as_f64().unwrap()
+    };
+    assert_eq!(value("sections"), 3.0);
+    let (along_span, along_sections) = (
+        value("control points along the span"),
+        value("control points along the sections"),
+    );
+    assert!((4.0..=10.0).contains(&along_span), "{along_span}");
+    assert!((10.0..=200.0).contains(&along_sections), "{along_sections}");
+    let worst = value("largest distance of an input point");
+    assert!(worst > 0.0 && worst <= 1e-5, "{worst}");
+    assert_eq!(value("input points farther than the tolerance"), 0.0);
+    assert!(value("leading-edge line off") < 1e-12);
+    assert!(value("trailing-edge lines off") < 1e-12);
+    assert_eq!(
+        value("1000 spanwise lines with chord, twist or leading edge"),
+        0.0
+    );
+    assert_eq!(
+        value("1000 spanwise lines whose trailing-edge branches cross"),
+        0.0
+    );
+    // The shipped files are written beside the report, as data/loft-wing has them.
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../data/loft-wing");
+    for (written, shipped) in [
+        ("loft-wing.csv", "wing.csv"),
+        ("loft-wing-naca4415.dat", "naca4415.dat"),
+        ("loft-wing-naca2412.dat", "naca2412.dat"),
+        ("loft-wing-naca0009.dat", "naca0009.dat"),
+    ] {
+        assert_eq!(
+            std::fs::read(out.join(written)).unwrap(),
+            std::fs::read(root.join(shipped)).unwrap(),
+            "{written}"
+        );
+    }
+    let html = std::fs::read_to_string(out.join("index.html")).unwrap();
+    assert!(html.contains("id=\"seed-loft\""));
 }
