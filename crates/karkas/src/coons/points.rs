@@ -137,15 +137,19 @@ impl<const D: usize> PointNetwork<D> {
     /// use karkas::coons::{CurveFit, PointNetwork, CROSSING_TOLERANCE};
     /// use karkas::{Curve, Point};
     ///
-    /// // Two closed diamond sections (u-curves, at z = 0 and 1) and four straight v-curves.
+    /// // Three closed diamond sections (u-curves, at z = 0, 1, 2: a closed family needs
+    /// // three) and four straight v-curves through their corners.
     /// let corner = |k: usize, z: f64| {
     ///     let (x, y) = [(1.0, 0.0), (0.0, 0.2), (-1.0, 0.0), (0.0, -0.2)][k % 4];
     ///     Point([x, y, z])
     /// };
-    /// let u_curves: Vec<Vec<Point<3>>> =
-    ///     [0.0, 1.0].iter().map(|&z| (0..5).map(|k| corner(k, z)).collect()).collect();
-    /// let v_curves: Vec<Vec<Point<3>>> =
-    ///     (0..4).map(|k| vec![corner(k, 0.0), corner(k, 1.0)]).collect();
+    /// let u_curves: Vec<Vec<Point<3>>> = [0.0, 1.0, 2.0]
+    ///     .iter()
+    ///     .map(|&z| (0..5).map(|k| corner(k, z)).collect())
+    ///     .collect();
+    /// let v_curves: Vec<Vec<Point<3>>> = (0..4)
+    ///     .map(|k| vec![corner(k, 0.0), corner(k, 1.0), corner(k, 2.0)])
+    ///     .collect();
     /// let net = PointNetwork::with_creases(
     ///     &v_curves, &u_curves, CurveFit::CubicSpline, CROSSING_TOLERANCE, (true, false),
     /// )?;
