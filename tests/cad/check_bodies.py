@@ -10,7 +10,9 @@ bicubic`) and the demo's aircraft grid (`data/aircraft-15x31.csv`, closed across
 symmetry by `--closed-v`, `surface ll`) capped at both ends by `--cap`; a tapered wing of
 sharp-trailing-edge sections closed around by `--crease-v` (`surface bicubic`; a
 C^0 seam at the edge: the tangents on its two sides must differ by more than 5 degrees on
-the finely sampled surface) and capped at root and tip. Each file is read by Open
+the finely sampled surface) and capped at root and tip; the same wing as a curve network
+(closed sections whose points crowd at the nose only, spanwise lines) through `surface coons
+--kind gordon-spline --crease-v --cap`. Each file is read by Open
 CASCADE (cadquery-ocp): BRepCheck_Analyzer must find the shape valid; the STEP file must hold
 one solid; the face area (GProp) must be within 1e-3 of the area of the same surface finely
 sampled by karkas (a 400 x 400 CSV, triangulated here, caps added as the areas the command
@@ -132,20 +134,46 @@ def ellipsoid_network(folder, rings=13, meridians=16, per=4):
     return paths
 
 
-def wing(i, j, rows=9, cols=61):
+def wing(i, j, rows=9, cols=61, crowd_te=True):
     """A tapered wing: NACA 0012-like sections with a sharp trailing edge at (chord, 0), each
-    in Selig order (the trailing edge first and last), at spans z = 0..4."""
+    in Selig order (the trailing edge first and last), at spans z = 0..4; points crowded at
+    the nose and the trailing edge (cosine spacing), or at the nose only."""
     span = 4.0 * i / (rows - 1)
     chord = 2.0 - 0.25 * span
     half = (cols - 1) // 2
     k = abs(j - half)  # 0 at the nose, half at the trailing edge
-    x = 0.5 * (1.0 - math.cos(math.pi * k / half))
+    if crowd_te:
+        x = 0.5 * (1.0 - math.cos(math.pi * k / half))
+    else:
+        x = 1.0 - math.cos(0.5 * math.pi * k / half)
     t = 0.6 * (0.2969 * math.sqrt(x) - 0.1260 * x - 0.3516 * x * x + 0.2843 * x ** 3
                - 0.1036 * x ** 4)
     if k == half:
         t = 0.0
     y = t if j < half else -t
     return 0.3 * span + chord * x, chord * y, span
+
+
+def wing_network(folder, rows=9, cols=61):
+    """The wing of `wing` as a curve network: v-curves are its closed sections (Selig order,
+    the sharp trailing edge first and last), u-curves the spanwise lines through each
+    section point (the trailing edge's first). The points crowd at the nose only: the
+    network's curves take their parameter from the point index, and points crowding at a
+    creased trailing edge make a hook there (see docs/reference/contract.md)."""
+    paths = []
+    for name, count, steps, at in (
+        ("v", rows, cols, lambda i, j: wing(i, j, rows, cols, crowd_te=False)),
+        ("u", cols - 1, rows, lambda j, i: wing(i, j, rows, cols, crowd_te=False)),
+    ):
+        path = os.path.join(folder, f"wing-{name}.csv")
+        with open(path, "w", newline="") as f:
+            w = csv.writer(f)
+            w.writerow(["curve", "x", "y", "z"])
+            for curve in range(count):
+                for k in range(steps):
+                    w.writerow([curve, *(repr(x) for x in at(curve, k))])
+        paths.append(path)
+    return paths
 
 
 def loft_table(folder):
@@ -280,6 +308,10 @@ def main():
     # One case per body and method of the acceptance (the CLI tests cover the other pairs).
     cases.append(("wing-bicubic-crease-capped", "wing",
                   ["surface", "bicubic", "--crease-v", "--cap", wing_csv]))
+    wing_v, wing_u = wing_network(folder)
+    cases.append(("wing-coons-crease-capped", "wing",
+                  ["surface", "coons", "--kind", "gordon-spline", "--crease-v", "--cap",
+                   "--u-curves", wing_u, "--v-curves", wing_v]))
     ellipsoid_csv = os.path.join(folder, "ellipsoid.csv")
     cases.append(("ellipsoid-ll", "ellipsoid",
                   ["surface", "ll", "--interpolate", "--closed-v", ellipsoid_csv]))

@@ -11,6 +11,7 @@ use crate::output::formats::STREAMED_CURVE_FORMATS;
 use crate::output::memory::check_memory;
 use crate::output::overwrite::ensure_distinct;
 use crate::output::samples::{report_samples, sample_curve};
+use crate::output::self_crossing::warn_self_crossing;
 use crate::output::target::output_formats;
 use anyhow::{bail, Context, Result};
 use clap::Args;
@@ -102,6 +103,14 @@ impl CurveJob for (&CurveLlArgs, &[OutputFormat]) {
                 &args.input,
             )?,
         };
+        let remedy = if args.interpolate {
+            "the interpolating LL curve takes its points at evenly spaced parameters and \
+             overshoots where they lie very unevenly apart: the approximating LL curve (without \
+             --interpolate), curve spline or curve fit follow them"
+        } else {
+            "look at the points there (out of order, or a sharp turn)"
+        };
+        warn_self_crossing(&curve, points, &args.input, remedy);
         for (output, &format) in args.output.iter().zip(formats) {
             write_ll(args, &curve, points, output, format)?;
         }

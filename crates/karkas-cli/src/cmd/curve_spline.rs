@@ -12,6 +12,7 @@ use crate::output::formats::EXACT_CURVE_FORMATS;
 use crate::output::memory::check_memory;
 use crate::output::overwrite::ensure_distinct;
 use crate::output::samples::{report_samples, sample_curve};
+use crate::output::self_crossing::warn_self_crossing;
 use crate::output::target::output_formats;
 use anyhow::Result;
 use clap::Args;
@@ -69,6 +70,9 @@ impl CurveJob for (&CurveSplineArgs, &[OutputFormat]) {
         curve_points(&args.input, points)?;
         args.close.check_points(points, &args.input)?;
         let curve = args.spline.build(points, &args.input)?;
+        let remedy = "look at the points there (out of order, or very unevenly apart: curve fit \
+                      follows such points)";
+        warn_self_crossing(&curve, points, &args.input, remedy);
         for (output, &format) in args.output.iter().zip(formats) {
             write_spline(args, &curve, points, output, format)?;
         }

@@ -197,6 +197,7 @@ pub fn run(args: &SectionArgs) -> Result<()> {
                 twists: None,
                 tolerance: None,
                 repair: false,
+                creases: (false, false),
             };
             let (surface, u_family, v_family) =
                 network_surface(kind, &files, std::slice::from_ref(&args.output))?;

@@ -84,6 +84,16 @@ pub struct SurfaceCoonsArgs {
     /// the twists) are moved to their mean, and the largest correction is reported.
     #[arg(long, conflicts_with = "tolerance")]
     repair: bool,
+    /// Close the surface in u with a crease (a C^0 seam, e.g. a wing's sharp trailing edge):
+    /// the closed u-curves (last point repeating the first) are interpolated as open curves
+    /// from their crossing with v-curve 0 round to it again, and v-curve 0 is used again at
+    /// u = 1. Needs closed u-curves; not with --u-derivs, --v-derivs or --twists.
+    #[arg(long)]
+    crease_u: bool,
+    /// Close the surface in v with a crease, as --crease-u: the closed v-curves are
+    /// interpolated as open curves from u-curve 0 round to it again. Needs closed v-curves.
+    #[arg(long)]
+    crease_v: bool,
     #[command(flatten)]
     samples: GridSamples,
     #[command(flatten)]
@@ -119,6 +129,7 @@ pub fn run(args: &SurfaceCoonsArgs) -> Result<()> {
         twists: args.twists.as_deref(),
         tolerance: args.tolerance,
         repair: args.repair,
+        creases: (args.crease_u, args.crease_v),
     };
     let (surface, u_family, v_family) = network_surface(args.kind, &files, &args.output)?;
     let longest = |f: &CurveFamily| f.curves.iter().map(Vec::len).max().unwrap_or(0);
@@ -159,6 +170,8 @@ pub(crate) struct NetworkFiles<'a> {
     pub twists: Option<&'a Path>,
     pub tolerance: Option<f64>,
     pub repair: bool,
+    /// `--crease-u`, `--crease-v`.
+    pub creases: (bool, bool),
 }
 
 /// Reads the network of `files` (none of which may be `output`) and builds its surface of
@@ -205,17 +218,19 @@ pub(crate) fn network_surface(
 
     let u_family = read_family(files.u_curves)?;
     let v_family = read_family(files.v_curves)?;
+    check_creases(files, &u_family, &v_family)?;
     let places = Files {
         u: files.u_curves,
         v: files.v_curves,
         u_family: &u_family,
         v_family: &v_family,
     };
-    let network = PointNetwork::new(
+    let network = PointNetwork::with_creases(
         &v_family.curves,
         &u_family.curves,
         CurveFit::CubicSpline,
         CROSSING_TOLERANCE,
+        files.creases,
     )
     .map_err(|e| places.explain(e))?;
     let cross = match (files.u_derivs, files.v_derivs) {
@@ -306,6 +321,63 @@ fn warn_lagrange_seam(network: &PointNetwork<3>) {
             closed.join(" and ")
         ));
     }
+}
+
+/// Refuses `--crease-u` (`--crease-v`) unless the u-curves (v-curves) of the network are
+/// closed, and with cross-derivative data (one vector per point cannot give both sides of a
+/// crease): one line naming the option.
+fn check_creases(files: &NetworkFiles<'_>, u: &CurveFamily, v: &CurveFamily) -> Result<()> {
+    let (crease_u, crease_v) = files.creases;
+    if !(crease_u || crease_v) {
+        return Ok(());
+    }
+    let option = if crease_u { "--crease-u" } else { "--crease-v" };
+    if files.u_derivs.is_some() || files.twists.is_some() {
+        let given = if files.twists.is_some() {
+            "--twists"
+        } else {
+            "--u-derivs and --v-derivs"
+        };
+        bail!(
+            "{option}: not with {given} (one vector per point cannot give both sides of a \
+             crease)"
+        );
+    }
+    for (crease, option, family, path, name) in [
+        (crease_u, "--crease-u", u, files.u_curves, "u-curve"),
+        (crease_v, "--crease-v", v, files.v_curves, "v-curve"),
+    ] {
+        if !crease {
+            continue;
+        }
+        // The library's closing rule (a relative 1e-12 of the model size), measured here to
+        // name the curve and the distance.
+        let all = u.curves.iter().chain(&v.curves).flatten();
+        let (mut low, mut high) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
+        for p in all {
+            for c in 0..3 {
+                low[c] = low[c].min(p[c]);
+                high[c] = high[c].max(p[c]);
+            }
+        }
+        let size = (0..3)
+            .map(|c| (high[c] - low[c]).max(0.0).powi(2))
+            .sum::<f64>()
+            .sqrt();
+        for (k, (curve, line)) in family.curves.iter().zip(&family.first_lines).enumerate() {
+            let (first, last) = (curve[0], curve[curve.len() - 1]);
+            let gap = (first - last).max_abs();
+            if curve.len() < 4 || gap > 1e-12 * size {
+                bail!(
+                    "{option}: a crease closes the {name}s' direction, but {}:{line} ({name} \
+                     {k}) is open (its last point is {gap:.3e} from its first; repeat the first \
+                     point exactly as the last to close it)",
+                    path.display()
+                );
+            }
+        }
+    }
+    Ok(())
 }
 
 /// Prints the largest correction of `--repair` (the command has no JSON summary).

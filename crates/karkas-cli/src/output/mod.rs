@@ -10,5 +10,6 @@ pub mod memory;
 pub mod message;
 pub mod overwrite;
 pub mod samples;
+pub mod self_crossing;
 pub mod surface;
 pub mod target;

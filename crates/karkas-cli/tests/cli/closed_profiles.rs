@@ -343,3 +343,79 @@ fn close_te_refuses_where_it_cannot_apply() {
         );
     }
 }
+
+/// Whether the polyline through `p` crosses itself (two segments that are not neighbours
+/// cross properly), by trying every pair: the test's own check, independent of karkas's sweep.
+fn polyline_crosses(p: &[[f64; 2]]) -> bool {
+    let orient = |o: [f64; 2], a: [f64; 2], b: [f64; 2]| {
+        (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
+    };
+    (0..p.len() - 1).any(|i| {
+        (i + 2..p.len() - 1).any(|j| {
+            let (a, b, c, d) = (p[i], p[i + 1], p[j], p[j + 1]);
+            orient(a, b, c) * orient(a, b, d) < 0.0 && orient(c, d, a) * orient(c, d, b) < 0.0
+        })
+    })
+}
+
+#[test]
+fn a_curve_that_loops_where_the_points_do_not_is_named_in_one_warning() {
+    let dir = temp_dir();
+    // A sharp foil with one more point 3.8e-4 from the nose, its neighbours 1e-2 away (as in
+    // the corpus's s4022.dat): evenly spaced node parameters overshoot into a loop there.
+    let plain = sharp_foil(15);
+    let looping: String = plain
+        .lines()
+        .flat_map(|l| {
+            let extra = (l == "0,0").then_some("0.00001,0.00038");
+            extra.into_iter().chain([l])
+        })
+        .map(|l| format!("{l}\n"))
+        .collect();
+    assert_eq!(looping.lines().count(), plain.lines().count() + 1);
+    let input = write(dir.path(), "loop.csv", &looping);
+    let samples = dir.path().join("s.csv");
+    let o = karkas(&[
+        "curve",
+        "ll",
+        "--interpolate",
+        s(&input),
+        "--samples",
+        "4000",
+        "-o",
+        s(&samples),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let err = stderr(&o);
+    let warnings: Vec<&str> = err.lines().filter(|l| l.contains("warning")).collect();
+    assert_eq!(warnings.len(), 1, "{err}");
+    assert!(
+        warnings[0].contains("loop.csv: the curve crosses itself 1 time where the points do not")
+            && warnings[0].contains("without --interpolate"),
+        "{err}"
+    );
+    let (_, rows) = read_csv(&samples);
+    let curve: Vec<[f64; 2]> = rows.iter().map(|r| [r[1], r[2]]).collect();
+    assert!(polyline_crosses(&curve), "the samples do not cross: {err}");
+    // The same foil without the extra point, and the approximating LL curve and the spline
+    // through it, do not loop: no warning, and their samples do not cross.
+    let clean = write(dir.path(), "clean.csv", &plain);
+    let runs: [(&[&str], &std::path::Path); 3] = [
+        (&["curve", "ll", "--interpolate"], &clean),
+        (&["curve", "ll"], &input),
+        (&["curve", "spline"], &input),
+    ];
+    for (command, file) in runs {
+        let args = [command, &[s(file), "--samples", "4000", "-o", s(&samples)]].concat();
+        let o = karkas(&args);
+        assert!(o.status.success(), "{command:?}: {}", stderr(&o));
+        assert!(
+            !stderr(&o).contains("crosses itself"),
+            "{command:?}: {}",
+            stderr(&o)
+        );
+        let (_, rows) = read_csv(&samples);
+        let curve: Vec<[f64; 2]> = rows.iter().map(|r| [r[1], r[2]]).collect();
+        assert!(!polyline_crosses(&curve), "{command:?} crosses");
+    }
+}

@@ -38,6 +38,9 @@ struct Parameterization {
     closed: bool,
     /// Index of the point the closed curve is rotated to start at.
     rotation: usize,
+    /// A closed point list interpolated as an open curve from its crossing with curve 0 of
+    /// the other family round to it again: a `C^0` seam there (a crease).
+    crease: bool,
     fit: CurveFit,
     domain: Interval,
     warp: Option<Warp>,
@@ -82,6 +85,8 @@ pub struct PointNetwork<const D: usize> {
     network: CurveNetwork<D>,
     v_params: Vec<Parameterization>,
     u_params: Vec<Parameterization>,
+    /// Whether a direction is creased ([`PointNetwork::with_creases`]).
+    creased: bool,
 }
 
 /// One family's curves: distinct points, closedness, and which family it is for messages.
@@ -130,6 +135,56 @@ impl<const D: usize> PointNetwork<D> {
         fit: CurveFit,
         tolerance: f64,
     ) -> Result<Self> {
+        Self::with_creases(v_curves, u_curves, fit, tolerance, (false, false))
+    }
+
+    /// The network of [`new`](Self::new) with a crease (a `C^0` seam) in the closed
+    /// directions asked by `(crease_u, crease_v)`: for `crease_u` the closed u-curves are
+    /// interpolated as open curves from their crossing with v-curve 0 round to it again, and
+    /// v-curve 0 is repeated as the last v-curve at `u = 1`; the `u` direction is then open,
+    /// with nodes `u_0 = 0, ..., u_{m-1}, 1`, and the surface meets itself along v-curve 0
+    /// with a jump of its tangent across it (a sharp trailing edge stays sharp). Same for
+    /// `crease_v` with the v-curves and u-curve 0.
+    ///
+    /// Errors: those of [`new`](Self::new), and a crease in a direction whose curves are not
+    /// closed ([`Error::OpenPeriodicData`]).
+    ///
+    /// ```
+    /// use karkas::coons::{CurveFit, PointNetwork, CROSSING_TOLERANCE};
+    /// use karkas::{Curve, Point};
+    ///
+    /// // Three closed diamond sections (u-curves, at z = 0, 1, 2: a closed family needs
+    /// // three) and four straight v-curves through their corners.
+    /// let corner = |k: usize, z: f64| {
+    ///     let (x, y) = [(1.0, 0.0), (0.0, 0.2), (-1.0, 0.0), (0.0, -0.2)][k % 4];
+    ///     Point([x, y, z])
+    /// };
+    /// let u_curves: Vec<Vec<Point<3>>> = [0.0, 1.0, 2.0]
+    ///     .iter()
+    ///     .map(|&z| (0..5).map(|k| corner(k, z)).collect())
+    ///     .collect();
+    /// let v_curves: Vec<Vec<Point<3>>> = (0..4)
+    ///     .map(|k| vec![corner(k, 0.0), corner(k, 1.0), corner(k, 2.0)])
+    ///     .collect();
+    /// let net = PointNetwork::with_creases(
+    ///     &v_curves, &u_curves, CurveFit::CubicSpline, CROSSING_TOLERANCE, (true, false),
+    /// )?;
+    /// let network = net.network();
+    /// assert!(!network.u_axis().is_closed());
+    /// assert_eq!(network.u_axis().nodes(), &[0.0, 0.25, 0.5, 0.75, 1.0]);
+    /// // The u-curve at z = 0 starts and ends at the sharp corner (1, 0, 0).
+    /// let b = &network.u_curves()[0];
+    /// assert!(b.eval(0.0).distance(Point([1.0, 0.0, 0.0])) < 1e-12);
+    /// assert!(b.eval(1.0).distance(Point([1.0, 0.0, 0.0])) < 1e-12);
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
+    pub fn with_creases(
+        v_curves: &[Vec<Point<D>>],
+        u_curves: &[Vec<Point<D>>],
+        fit: CurveFit,
+        tolerance: f64,
+        (crease_u, crease_v): (bool, bool),
+    ) -> Result<Self> {
         if let CurveFit::Ll(order) = fit {
             LlKernel::new(order)?;
         }
@@ -143,6 +198,17 @@ impl<const D: usize> PointNetwork<D> {
         let size = model_size(v_curves.iter().chain(u_curves).flatten());
         let v_family = family("v-curve", v_curves, size)?;
         let u_family = family("u-curve", u_curves, size)?;
+        for (crease, closed, what) in [
+            (crease_u, u_family.closed, "a network creased in u"),
+            (crease_v, v_family.closed, "a network creased in v"),
+        ] {
+            if crease && !closed {
+                return Err(Error::OpenPeriodicData {
+                    what,
+                    item: "point of every curve along that direction",
+                });
+            }
+        }
         let crossings = find_crossings(&v_family, &u_family, tolerance * size, size)?;
         let (m, n) = (v_curves.len(), u_curves.len());
 
@@ -191,33 +257,38 @@ impl<const D: usize> PointNetwork<D> {
         let u_nodes: Vec<f64> = (0..m)
             .map(|i| (0..n).map(|j| on_u[i * n + j]).sum::<f64>() / n as f64)
             .collect();
-        let axis = |nodes: Vec<f64>, closed: bool| {
-            if closed {
+        // A creased direction is open, its first node (0) repeated at 1 (the period).
+        let axis = |mut nodes: Vec<f64>, closed: bool, crease: bool| {
+            if crease {
+                nodes.push(1.0);
+                NetworkAxis::open(nodes)
+            } else if closed {
                 NetworkAxis::closed(nodes, 1.0)
             } else {
                 NetworkAxis::open(nodes)
             }
         };
-        let v_axis = axis(v_nodes, v_family.closed)?;
-        let u_axis = axis(u_nodes, u_family.closed)?;
+        let v_axis = axis(v_nodes, v_family.closed, crease_v)?;
+        let u_axis = axis(u_nodes, u_family.closed, crease_u)?;
 
-        let parameterize = |count: usize,
+        let parameterize = |(count, crossings): (usize, usize),
                             given: &[Vec<Point<D>>],
-                            closed: bool,
+                            (closed, crease): (bool, bool),
                             rotation: &[usize],
                             axis: &NetworkAxis,
                             target: &dyn Fn(usize, usize) -> f64,
                             name: &'static str|
          -> Result<Vec<Parameterization>> {
             let nodes = axis.nodes_with_seam();
+            let closed = closed && !crease;
             (0..count)
                 .map(|c| {
                     let targets: Vec<f64> = (0..nodes.len())
                         .map(|k| {
-                            if k < axis.nodes().len() {
+                            if k < crossings {
                                 target(c, k)
                             } else {
-                                1.0 // the closing node of a closed curve
+                                1.0 // the closing node of a closed or creased curve
                             }
                         })
                         .collect();
@@ -240,6 +311,7 @@ impl<const D: usize> PointNetwork<D> {
                         given: given[c].len(),
                         closed,
                         rotation: rotation[c],
+                        crease,
                         fit,
                         domain: axis.domain(),
                         warp,
@@ -247,28 +319,35 @@ impl<const D: usize> PointNetwork<D> {
                 })
                 .collect()
         };
-        let v_params = parameterize(
-            m,
+        let mut v_params = parameterize(
+            (m, n),
             v_curves,
-            v_family.closed,
+            (v_family.closed, crease_v),
             &v_rotation,
             &v_axis,
             &|i, j| on_v[i * n + j],
             "v-curve",
         )?;
-        let u_params = parameterize(
-            n,
+        let mut u_params = parameterize(
+            (n, m),
             u_curves,
-            u_family.closed,
+            (u_family.closed, crease_u),
             &u_rotation,
             &u_axis,
             &|j, i| on_u[i * n + j],
             "u-curve",
         )?;
+        // A crease repeats curve 0 of the other family at the closing node.
+        if crease_u {
+            v_params.push(v_params[0].clone());
+        }
+        if crease_v {
+            u_params.push(u_params[0].clone());
+        }
         let build = |params: &[Parameterization], lists: &[Vec<Point<D>>]| {
             params
                 .iter()
-                .zip(lists)
+                .zip(lists.iter().chain(lists.first()))
                 .map(|(p, pts)| p.curve(pts))
                 .collect::<Result<Vec<_>>>()
         };
@@ -282,6 +361,7 @@ impl<const D: usize> PointNetwork<D> {
             network,
             v_params,
             u_params,
+            creased: crease_u || crease_v,
         })
     }
 
@@ -299,12 +379,19 @@ impl<const D: usize> PointNetwork<D> {
     /// Errors: counts of curves or vectors that differ from the network's
     /// ([`Error::CountMismatch`], for vectors inside [`Error::NetworkCurve`]), a non-finite
     /// vector ([`Error::NetworkCurve`] around [`Error::NonFinitePoint`]), a closed curve's last
-    /// vector differing from its first ([`Error::UnclosedCrossDerivative`]).
+    /// vector differing from its first ([`Error::UnclosedCrossDerivative`]); a creased network
+    /// ([`Error::UnsupportedEnds`]: one vector per point cannot give the two sides of a crease).
     pub fn cross_derivatives(
         &self,
         v_derivs: &[Vec<Point<D>>],
         u_derivs: &[Vec<Point<D>>],
     ) -> Result<CrossDerivatives<D>> {
+        if self.creased {
+            return Err(Error::UnsupportedEnds {
+                what: "cross-derivative data of a network",
+                ends: "creased",
+            });
+        }
         // (family, what is counted, the family of the curves' cross-derivatives)
         type Names = (&'static str, &'static str, &'static str);
         let build =
@@ -379,13 +466,10 @@ impl<const D: usize> PointNetwork<D> {
 impl Parameterization {
     /// The curve through `values` (given like the curve's points) in the network parameter.
     fn curve<const D: usize>(&self, values: &[Point<D>]) -> Result<CurveRef<D>> {
-        let k = if self.closed {
-            self.given - 1
-        } else {
-            self.given
-        };
+        let repeats = self.closed || self.crease;
+        let k = if repeats { self.given - 1 } else { self.given };
         let mut control: Vec<Point<D>> = (0..k).map(|c| values[(c + self.rotation) % k]).collect();
-        if self.closed {
+        if repeats {
             control.push(control[0]);
         }
         Ok(match self.fit {
