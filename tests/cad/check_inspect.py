@@ -5,8 +5,9 @@ solid classifier.
 
 Open CASCADE (cadquery-ocp) builds and writes the models: a plate with a grid of blind
 cylindrical holes (a solid of trimmed planes and cylinders, offset from the origin; STEP and
-NURBS IGES), an analytic sphere (STEP) and a B-spline surface face (an open shell: distances
-unsigned; STEP and IGES). For each, 600 points spread over the model's bounding box
+NURBS IGES), an analytic sphere (STEP), a whole torus (STEP, and NURBS IGES), two faces swept from a
+hyperbola's and a parabola's arcs (an open shell, STEP) and a B-spline surface face (an open
+shell: distances unsigned; STEP and IGES). For each, 600 points spread over the model's bounding box
 grown by a fifth, and 600 near its faces (within 2% of its size), go through
 `karkas inspect MODEL --points P.csv -o REPORT.csv`; Open CASCADE measures each point's
 distance to the shape (BRepExtrema_DistShapeShape with a vertex) and, for solids, classifies it
@@ -33,14 +34,15 @@ from OCP.BRep import BRep_Builder
 from OCP.Bnd import Bnd_Box
 from OCP.BRepAlgoAPI import BRepAlgoAPI_Cut
 from OCP.BRepBndLib import BRepBndLib
-from OCP.BRepBuilderAPI import (BRepBuilderAPI_MakeFace, BRepBuilderAPI_MakeVertex,
+from OCP.BRepBuilderAPI import (BRepBuilderAPI_MakeEdge, BRepBuilderAPI_MakeFace, BRepBuilderAPI_MakeVertex,
                                 BRepBuilderAPI_NurbsConvert)
 from OCP.BRepClass3d import BRepClass3d_SolidClassifier
 from OCP.BRepExtrema import BRepExtrema_DistShapeShape
-from OCP.BRepPrimAPI import BRepPrimAPI_MakeBox, BRepPrimAPI_MakeCylinder, BRepPrimAPI_MakeSphere
+from OCP.BRepPrimAPI import (BRepPrimAPI_MakeBox, BRepPrimAPI_MakeCylinder, BRepPrimAPI_MakePrism,
+                             BRepPrimAPI_MakeSphere, BRepPrimAPI_MakeTorus)
 from OCP.GeomAbs import GeomAbs_C2
 from OCP.GeomAPI import GeomAPI_PointsToBSplineSurface
-from OCP.gp import gp_Ax2, gp_Dir, gp_Pnt
+from OCP.gp import gp_Ax2, gp_Dir, gp_Hypr, gp_Parab, gp_Pnt, gp_Vec
 from OCP.IFSelect import IFSelect_RetDone
 from OCP.IGESControl import IGESControl_Writer
 from OCP.STEPControl import STEPControl_AsIs, STEPControl_Writer
@@ -99,18 +101,34 @@ def bspline_face():
     return BRepBuilderAPI_MakeFace(surface, 1e-9).Face()
 
 
+def conic_extrusions():
+    """Two faces swept from a hyperbola's and a parabola's arcs (STEP HYPERBOLA, PARABOLA in
+    SURFACE_OF_LINEAR_EXTRUSION): an open shell."""
+    ax2 = gp_Ax2(gp_Pnt(3.0, -1.0, 2.0), gp_Dir(0.2, 0.3, 1.0), gp_Dir(1.0, 0.0, -0.2))
+    compound = TopoDS_Compound()
+    builder = BRep_Builder()
+    builder.MakeCompound(compound)
+    for edge in (BRepBuilderAPI_MakeEdge(gp_Hypr(ax2, 2.0, 1.0), -1.0, 1.5).Edge(),
+                 BRepBuilderAPI_MakeEdge(gp_Parab(ax2, 0.7), -2.0, 3.0).Edge()):
+        builder.Add(compound, BRepPrimAPI_MakePrism(edge, gp_Vec(0.3, 0.2, 5.0)).Shape())
+    return compound
+
+
 def cases():
     """(name, shape, is_solid, formats). IGES gets the plate as NURBS faces (entity 128):
     karkas does not read IGES's analytic planes (108) and surfaces of revolution (120). IGES
-    faces (entity 144) bound no solid: their distances are unsigned. Not here: a whole torus
-    (one face bounded by its two seam edges, each used twice), whose face karkas does not yet
-    place in its parameters (every foot found on a seam edge)."""
+    faces (entity 144) bound no solid: their distances are unsigned. The torus is one face
+    bounded by its two seam circles, each used twice, with a tilted axis off the origin."""
     plate = holed_plate()
+    torus = BRepPrimAPI_MakeTorus(gp_Ax2(gp_Pnt(1.0, 2.0, 3.0), gp_Dir(0.3, -0.2, 1.0)), 5.0, 1.5).Shape()
     return [
         ("plate-holes", plate, True, ("step",)),
         ("plate-holes-nurbs", BRepBuilderAPI_NurbsConvert(plate, True).Shape(), True, ("igs",)),
         ("sphere", BRepPrimAPI_MakeSphere(gp_Pnt(1.0, 2.0, -3.0), 3.0).Shape(), True, ("step",)),
         ("bspline-face", bspline_face(), False, ("step", "igs")),
+        ("torus", torus, True, ("step",)),
+        ("torus-nurbs", BRepBuilderAPI_NurbsConvert(torus, True).Shape(), True, ("igs",)),
+        ("conic-extrusions", conic_extrusions(), False, ("step",)),
     ]
 
 

@@ -1,4 +1,4 @@
-//! Lines, circles and ellipses as exact rational B-splines (Piegl and Tiller, *The NURBS
+//! Lines, circles, ellipses, hyperbolas and parabolas as exact rational B-splines (Piegl and Tiller, *The NURBS
 //! Book*, §7.3, A7.1): what CAD files give as analytic curves, and the generatrices of the
 //! analytic surfaces of [`sweep`](super::sweep).
 //!
@@ -109,11 +109,130 @@ pub(crate) fn check_sweep(start: f64, end: f64) -> Result<()> {
     Ok(())
 }
 
+/// The hyperbolic arc `c + cosh t x + sinh t y` for `t` from `start` to `end` (`start <
+/// end`, both finite): a rational quadratic in pieces of at most 1 in `t`, each with its end
+/// points on the branch, the middle control point `c + (cosh m x + sinh m y) / cosh(Δ/2)`
+/// where the end tangents meet (`m` the piece's middle, `Δ` its length) and the middle weight
+/// `cosh(Δ/2)` (Piegl and Tiller, §7.5). The parameter equals `t` at the splits.
+///
+/// Errors: `start` and `end` not finite or not increasing ([`Error::InvalidSetting`]); a
+/// non-finite centre or axis ([`Error::NonFinitePoint`]).
+pub fn hyperbolic_arc<const D: usize>(
+    c: Point<D>,
+    x: Point<D>,
+    y: Point<D>,
+    (start, end): (f64, f64),
+) -> Result<NurbsCurve<D>> {
+    check_open_range(start, end)?;
+    let n = ((end - start) * (1.0 - 4.0 * f64::EPSILON)).ceil().max(1.0) as usize;
+    let delta = (end - start) / n as f64;
+    let w = (0.5 * delta).cosh();
+    let at = |t: f64| c + x * t.cosh() + y * t.sinh();
+    let split = |k: usize| {
+        if k == n {
+            end
+        } else {
+            start + delta * k as f64
+        }
+    };
+    let mut control = vec![at(start)];
+    let mut weights = vec![1.0];
+    let mut knots = vec![start; 3];
+    for k in 0..n {
+        let mid = start + delta * (k as f64 + 0.5);
+        control.push(c + (x * mid.cosh() + y * mid.sinh()) * (1.0 / w));
+        weights.push(w);
+        control.push(at(split(k + 1)));
+        weights.push(1.0);
+        if k + 1 < n {
+            knots.extend([split(k + 1); 2]);
+        }
+    }
+    knots.extend([end; 3]);
+    NurbsCurve::new(2, knots, control, weights)
+}
+
+/// The parabolic arc `c + t² x + t y` for `t` from `start` to `end` (`start < end`, both
+/// finite): one quadratic Bézier piece (a polynomial curve, so its parameter is `t`), the
+/// middle control point where the end tangents meet.
+///
+/// Errors: as [`hyperbolic_arc`].
+pub fn parabolic_arc<const D: usize>(
+    c: Point<D>,
+    x: Point<D>,
+    y: Point<D>,
+    (start, end): (f64, f64),
+) -> Result<NurbsCurve<D>> {
+    check_open_range(start, end)?;
+    let at = |t: f64| c + x * (t * t) + y * t;
+    let tangent = x * (2.0 * start) + y;
+    let middle = at(start) + tangent * (0.5 * (end - start));
+    NurbsCurve::new(
+        2,
+        vec![start, start, start, end, end, end],
+        vec![at(start), middle, at(end)],
+        vec![1.0; 3],
+    )
+}
+
+/// Fails unless `start < end` are finite.
+fn check_open_range(start: f64, end: f64) -> Result<()> {
+    if start.is_finite() && end.is_finite() && start < end {
+        Ok(())
+    } else {
+        Err(Error::InvalidSetting {
+            name: "an arc's end parameter",
+            value: end,
+            reason: "the parameters must be finite and increase",
+        })
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::{Curve, Point3};
     use std::f64::consts::PI;
+
+    #[test]
+    fn hyperbolic_and_parabolic_arcs_lie_on_their_curves_and_meet_the_splits() {
+        let c = Point3::new([4.0, -2.0, 0.5]);
+        let x = Point3::new([0.0, 3.0, 0.0]);
+        let y = Point3::new([0.0, 0.0, 1.5]);
+        for (a, b) in [(-2.5, 3.1), (0.0, 0.4), (1.0, 1.0 + 1e-3), (-7.0, -6.0)] {
+            let h = hyperbolic_arc(c, x, y, (a, b)).unwrap();
+            let p = parabolic_arc(c, x, y, (a, b)).unwrap();
+            assert_eq!((h.domain().start, h.domain().end), (a, b));
+            assert_eq!((p.domain().start, p.domain().end), (a, b));
+            let size = 3.0 * a.abs().max(b.abs()).cosh();
+            for k in 0..=400 {
+                let t = h.domain().uniform(k, 401);
+                // On the branch: ((q - c).x / |x|^2)^2 - ((q - c).y / |y|^2)^2 = 1, x side > 0.
+                let d = h.eval(t) - c;
+                let (ch, sh) = (d.dot(x) / 9.0, d.dot(y) / 2.25);
+                assert!(
+                    (ch * ch - sh * sh - 1.0).abs() < 1e-12 * size * size,
+                    "t {t}"
+                );
+                assert!(ch > 0.0 && d.dot(Point3::new([1.0, 0.0, 0.0])).abs() < 1e-12);
+                // The parabola's parameter is t itself.
+                let q = c + x * (t * t) + y * t;
+                assert!(p.eval(t).distance(q) < 1e-12 * (1.0 + t * t) * 3.0, "t {t}");
+            }
+            let n = ((b - a) * (1.0 - 4.0 * f64::EPSILON)).ceil().max(1.0) as usize;
+            for k in 0..=n {
+                let t = if k == n {
+                    b
+                } else {
+                    a + (b - a) * k as f64 / n as f64
+                };
+                let q = c + x * t.cosh() + y * t.sinh();
+                assert!(h.eval(t).distance(q) < 1e-12 * size, "split {t}");
+            }
+        }
+        assert!(hyperbolic_arc(c, x, y, (1.0, 1.0)).is_err());
+        assert!(parabolic_arc(c, x, y, (0.0, f64::NAN)).is_err());
+    }
 
     #[test]
     fn circle_arcs_lie_on_the_circle_and_meet_the_angles_at_the_splits() {

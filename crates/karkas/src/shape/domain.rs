@@ -99,7 +99,7 @@ impl FaceDomain {
             let mut moved = 0.0f64;
             let start = edge_loop.edges.first().map(|e| e.point_along(0.0));
             if !edge_loop.parameter_curves.is_empty() {
-                sample_parameter_curves(&edge_loop.parameter_curves, &mut points);
+                sample_parameter_curves(&edge_loop.parameter_curves, s, &mut points);
                 if points.len() >= 3 {
                     let (closed, mut loop_turns) = close_loop(points, s, face.same_sense);
                     domain.loops.push(closed);
@@ -286,13 +286,34 @@ fn complete_turns(domain: &mut FaceDomain, turns: &[Turn]) {
 }
 
 /// Samples a loop given in the surface's parameters: each curve at `8 (n + 2)` points for
-/// `n` control points (at least 32), consecutive duplicates dropped.
-fn sample_parameter_curves(curves: &[crate::bspline::NurbsCurve<2>], out: &mut Vec<[f64; 2]>) {
+/// `n` control points (at least 32), consecutive duplicates dropped. In a closed direction
+/// each curve is moved by whole periods to start where the one before it ends: a writer may
+/// give the two uses of a seam on either side of the period (Open CASCADE's IGES of a whole
+/// torus runs its four pieces from `(2 pi, 2 pi)` to `(0, 2 pi)`, then from `(2 pi, 0)`).
+fn sample_parameter_curves(
+    curves: &[crate::bspline::NurbsCurve<2>],
+    s: &NurbsSurface<3>,
+    out: &mut Vec<[f64; 2]>,
+) {
+    let periods = [
+        s.is_closed_u().then(|| s.domain_u().length()),
+        s.is_closed_v().then(|| s.domain_v().length()),
+    ];
     for c in curves {
         let d = c.domain();
+        let mut shift = [0.0; 2];
+        if let Some(&last) = out.last() {
+            let start = c.eval(d.start).0;
+            for (axis, period) in periods.iter().enumerate() {
+                if let Some(period) = period {
+                    shift[axis] = ((last[axis] - start[axis]) / period).round() * period;
+                }
+            }
+        }
         let n = (8 * (c.control_points().len() + 2)).max(32);
         for k in 0..=n {
-            let p = c.eval(d.uniform(k, n + 1)).0;
+            let q = c.eval(d.uniform(k, n + 1)).0;
+            let p = [q[0] + shift[0], q[1] + shift[1]];
             if out.last() != Some(&p) {
                 out.push(p);
             }
@@ -504,6 +525,50 @@ mod tests {
             (4.0, 2.5, false),
         ] {
             assert_eq!(d.contains(u, v), inside, "({u}, {v})");
+        }
+    }
+
+    /// A whole torus (major radius 5, minor 1.5) bounded as Open CASCADE writes it: one loop
+    /// of its two seam circles, each used backwards and then forwards.
+    fn whole_torus() -> Face {
+        use crate::bspline::sweep::torus;
+        let f = frame();
+        let surface = torus(&f, 5.0, 1.5, (0.0, 2.0 * PI), (0.0, 2.0 * PI))
+            .unwrap()
+            .with_closed(true, true);
+        // The tube's circle at u = 0, and the outer circle at v = 0.
+        let tube =
+            elliptic_arc(f.at(5.0, 0.0, 0.0), f.x * 1.5, f.z * 1.5, (0.0, 2.0 * PI)).unwrap();
+        let outer = elliptic_arc(f.origin, f.x * 6.5, f.y * 6.5, (0.0, 2.0 * PI)).unwrap();
+        Face {
+            surface,
+            loops: vec![EdgeLoop::new(
+                vec![
+                    edge(tube.clone(), false),
+                    edge(outer.clone(), false),
+                    edge(tube, true),
+                    edge(outer, true),
+                ],
+                true,
+            )],
+            same_sense: true,
+            bounds_solid: true,
+        }
+    }
+
+    #[test]
+    fn a_whole_torus_bounded_by_its_seams_is_the_whole_rectangle() {
+        let d = FaceDomain::of(&whole_torus()).unwrap();
+        assert!(
+            d.is_whole(),
+            "{:?}",
+            d.loops
+                .iter()
+                .map(|l| (l.points.len(), l.double_area()))
+                .collect::<Vec<_>>()
+        );
+        for (u, v) in [(0.1, 0.1), (3.0, 3.0), (6.2, 1.0), (1.0, 6.2)] {
+            assert!(d.contains(u, v), "({u}, {v})");
         }
     }
 

@@ -4,13 +4,14 @@
 //!
 //! The parameters are those of ISO 10303-42 and Open CASCADE (see
 //! [`karkas::bspline::sweep`]): arc length along a line's unit direction; the angle on a
-//! circle or ellipse from the placement's `x` axis. An edge's stretch comes from its
+//! circle or ellipse from the placement's `x` axis; `t` of `a cosh t x + b sinh t y` on a
+//! hyperbola and of `f (t² x + 2 t y)` on a parabola. An edge's stretch comes from its
 //! vertices' parameters; a face's rectangle from its loops: each loop sampled, each sample's
 //! surface parameters found in closed form (angles unwrapped along the loop: a loop that
 //! turns around an axis spans the whole turn), the extremes that fall inside an edge refined
 //! by golden-section search.
 
-use karkas::bspline::conic::{elliptic_arc, line_segment};
+use karkas::bspline::conic::{elliptic_arc, hyperbolic_arc, line_segment, parabolic_arc};
 use karkas::bspline::sweep::{cone, cylinder, extrusion, plane, revolution, sphere, torus, Frame};
 use karkas::bspline::{NurbsCurve, NurbsSurface};
 use karkas::geometry::CurveProjector;
@@ -29,6 +30,10 @@ pub(crate) enum BasisCurve {
     Line { origin: Point3, dir: Point3 },
     /// The ellipse `c + a cos t x + b sin t y` of a frame (a circle when `a == b`).
     Conic { frame: Frame, a: f64, b: f64 },
+    /// The hyperbola's branch `c + a cosh t x + b sinh t y` of a frame.
+    Hyperbola { frame: Frame, a: f64, b: f64 },
+    /// The parabola `c + f (t² x + 2 t y)` of a frame and a focal distance `f`.
+    Parabola { frame: Frame, focal: f64 },
 }
 
 impl BasisCurve {
@@ -49,6 +54,12 @@ impl BasisCurve {
                 let d = p - frame.origin;
                 Ok(((d.dot(frame.y) / b).atan2(d.dot(frame.x) / a)).rem_euclid(TAU))
             }
+            BasisCurve::Hyperbola { frame, b, .. } => {
+                Ok(((p - frame.origin).dot(frame.y) / b).asinh())
+            }
+            BasisCurve::Parabola { frame, focal } => {
+                Ok((p - frame.origin).dot(frame.y) / (2.0 * focal))
+            }
             BasisCurve::Nurbs(c) => CurveProjector::new(c, 0.0)
                 .map(|projector| projector.nearest(p).t)
                 .map_err(|e| e.to_string()),
@@ -62,6 +73,12 @@ impl BasisCurve {
             BasisCurve::Conic { frame, a, b } => {
                 frame.origin + frame.x * (a * t.cos()) + frame.y * (b * t.sin())
             }
+            BasisCurve::Hyperbola { frame, a, b } => {
+                frame.origin + frame.x * (a * t.cosh()) + frame.y * (b * t.sinh())
+            }
+            BasisCurve::Parabola { frame, focal } => {
+                frame.origin + frame.x * (focal * t * t) + frame.y * (2.0 * focal * t)
+            }
             BasisCurve::Nurbs(c) => c.eval(t),
         }
     }
@@ -73,6 +90,15 @@ impl BasisCurve {
             BasisCurve::Conic { frame, a, b } => {
                 elliptic_arc(frame.origin, frame.x * *a, frame.y * *b, (t0, t1))
             }
+            BasisCurve::Hyperbola { frame, a, b } => {
+                hyperbolic_arc(frame.origin, frame.x * *a, frame.y * *b, (t0, t1))
+            }
+            BasisCurve::Parabola { frame, focal } => parabolic_arc(
+                frame.origin,
+                frame.x * *focal,
+                frame.y * (2.0 * focal),
+                (t0, t1),
+            ),
             BasisCurve::Nurbs(c) => {
                 let d = c.domain();
                 if t0 <= d.start && t1 >= d.end {
@@ -113,7 +139,9 @@ impl BasisCurve {
         match self {
             BasisCurve::Nurbs(c) => Some((c.domain().start, c.domain().end)),
             BasisCurve::Conic { .. } => Some((0.0, TAU)),
-            BasisCurve::Line { .. } => None,
+            BasisCurve::Line { .. }
+            | BasisCurve::Hyperbola { .. }
+            | BasisCurve::Parabola { .. } => None,
         }
     }
 }
@@ -502,24 +530,31 @@ impl BasisSurface {
                         )?;
                         curve.bounded(r.0, r.1)?
                     }
-                    BasisCurve::Conic { frame, a, b } => {
+                    BasisCurve::Conic { frame, .. }
+                    | BasisCurve::Hyperbola { frame, .. }
+                    | BasisCurve::Parabola { frame, .. } => {
                         let n = frame.z;
                         let dn = dir.dot(n);
                         if dn.abs() < 1e-12 {
                             return Err("an extrusion of a conic along its own plane".into());
                         }
+                        // The curve's parameter of the point where the sweep through `p`
+                        // meets the curve's plane.
                         let value = |p: Point3| {
                             let q = p - *dir * ((p - frame.origin).dot(n) / dn);
-                            let d = q - frame.origin;
-                            (d.dot(frame.y) / b).atan2(d.dot(frame.x) / a)
+                            curve.parameter_of(q).unwrap_or(f64::NAN)
                         };
-                        let (r, _) = angles(
-                            Coordinate {
-                                value: &value,
-                                angle: true,
-                            }
-                            .range(loops, &never),
-                        );
+                        let periodic = matches!(curve, BasisCurve::Conic { .. });
+                        let range = Coordinate {
+                            value: &value,
+                            angle: periodic,
+                        }
+                        .range(loops, &never);
+                        let r = if periodic {
+                            angles(range).0
+                        } else {
+                            linear(range, "an extrusion")?
+                        };
                         curve.bounded(r.0, r.1)?
                     }
                 };
@@ -547,7 +582,9 @@ impl BasisSurface {
                             let ed = e.dot(*dir);
                             (w.dot(*dir) - ed * w.dot(*e)) / (1.0 - ed * ed)
                         }
-                        BasisCurve::Conic { frame, .. } => {
+                        BasisCurve::Conic { frame, .. }
+                        | BasisCurve::Hyperbola { frame, .. }
+                        | BasisCurve::Parabola { frame, .. } => {
                             (p - frame.origin).dot(frame.z) / dir.dot(frame.z)
                         }
                         BasisCurve::Nurbs(_) => 0.0,

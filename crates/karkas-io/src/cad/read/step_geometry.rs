@@ -22,6 +22,8 @@ pub(crate) const CURVE_TYPES: &[&str] = &[
     "LINE",
     "CIRCLE",
     "ELLIPSE",
+    "HYPERBOLA",
+    "PARABOLA",
     "B_SPLINE_CURVE_WITH_KNOTS",
     "B_SPLINE_CURVE",
     "BEZIER_CURVE",
@@ -56,8 +58,6 @@ pub(crate) const UNREAD_GEOMETRY: &[&str] = &[
     "OFFSET_CURVE_2D",
     "PCURVE",
     "COMPOSITE_CURVE",
-    "HYPERBOLA",
-    "PARABOLA",
     "CLOTHOID",
     "OFFSET_SURFACE",
     "CURVE_BOUNDED_SURFACE",
@@ -318,6 +318,23 @@ impl<'a> Geometry<'a> {
                     },
                     parameter_scale: self.angle,
                 }))
+            }
+            "HYPERBOLA" => {
+                a.count(4)?;
+                let frame = self.placement(a.reference(1)?, &a)?;
+                let semi = Self::length(&a, 2, "a semi-axis")?;
+                let imaginary = Self::length(&a, 3, "a semi-imaginary axis")?;
+                plain(BasisCurve::Hyperbola {
+                    frame,
+                    a: semi,
+                    b: imaginary,
+                })
+            }
+            "PARABOLA" => {
+                a.count(3)?;
+                let frame = self.placement(a.reference(1)?, &a)?;
+                let focal = Self::length(&a, 2, "a focal distance")?;
+                plain(BasisCurve::Parabola { frame, focal })
             }
             "POLYLINE" => {
                 a.count(2)?;
