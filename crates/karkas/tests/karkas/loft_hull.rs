@@ -190,7 +190,7 @@ fn the_mirrored_hull_is_symmetric_with_its_keel_at_half() {
     assert_eq!(whole.control_counts().1, 2 * half.control_counts().1 - 1);
     for &u in &[0.0, 0.7, 2.0] {
         let keel = whole.eval(u, 0.5);
-        assert_eq!(keel[1], 0.0);
+        assert!(keel[1].abs() < 1e-15, "{keel:?}");
         assert!(keel[2].abs() < 1e-12, "{keel:?}");
         for k in 0..=50 {
             let v = 0.5 * k as f64 / 50.0;
