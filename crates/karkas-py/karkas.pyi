@@ -24,6 +24,7 @@ __all__ = [
     "BicubicSurface",
     "LoftSurface",
     "loft",
+    "loft_windio",
     "CadFace",
     "CadModel",
     "ConvergenceError",
@@ -531,6 +532,9 @@ class LoftSurface(Surface):
     def span(self) -> str: ...
     @property
     def tolerance(self) -> float: ...
+    @property
+    def airfoil_stations(self) -> Optional[_Floats]:
+        """The stations of a windIO blade's airfoils (karkas.loft_windio); None for a wing."""
 
 def loft(
     profiles: Sequence[ArrayLike],
@@ -543,6 +547,14 @@ def loft(
 ) -> LoftSurface:
     """Lofts a wing through airfoil profiles in unit chord placed as aerosandbox's WingXSec
     places them (karkas loft)."""
+
+def loft_windio(
+    path: _FilePath,
+    span: Literal["monotone", "linear", "spline"] = "monotone",
+    tolerance: float = 1e-5,
+) -> LoftSurface:
+    """Lofts the blade of a windIO 2 turbine file as windIO places its airfoils (karkas loft
+    --windio)."""
 
 @final
 class DiscreteSpline:

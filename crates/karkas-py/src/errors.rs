@@ -165,7 +165,13 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
 /// base class `KarkasError`.
 pub fn library_error(e: karkas::Error) -> PyErr {
     let message = e.to_string();
-    match kind(&e) {
+    library_error_saying(&e, message)
+}
+
+/// A library error as the exception of its kind, carrying `message` (e.g. the library's
+/// message prefixed with the file and the item it came from).
+pub fn library_error_saying(e: &karkas::Error, message: String) -> PyErr {
+    match kind(e) {
         Kind::Points => PointsError::new_err(message),
         Kind::Knots => KnotsError::new_err(message),
         Kind::Option => OptionError::new_err(message),

@@ -100,6 +100,7 @@ fn karkas_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<param::PyBicubicSurface>()?;
     m.add_class::<loft::PyLoftSurface>()?;
     m.add_function(wrap_pyfunction!(loft::loft, m)?)?;
+    m.add_function(wrap_pyfunction!(loft::loft_windio, m)?)?;
     m.add_class::<dps::PyDiscreteSpline>()?;
     m.add_class::<dps::PyTubeSurface>()?;
     m.add_class::<coons::PyCoonsSurface>()?;

@@ -1,6 +1,8 @@
 //! `karkas.loft` and `LoftSurface`: a wing lofted through airfoil sections placed as
-//! aerosandbox places them (the library's [`karkas::loft`]).
+//! aerosandbox places them, and `karkas.loft_windio`: the blade of a windIO turbine file (the
+//! library's [`karkas::loft`], karkas-io's windIO reader).
 
+use std::path::PathBuf;
 use std::sync::Arc;
 
 use karkas::loft::{Loft, LoftOptions, SpanRule, WingPlacement, DEFAULT_TOLERANCE};
@@ -11,16 +13,28 @@ use pyo3::prelude::*;
 use crate::convert::{
     as_points, extract_vector, object_list, points3, points_to_array, Numbers, PointsArray,
 };
-use crate::errors::{library_error, OptionError, PointsError};
+use crate::errors::{library_error, library_error_saying, OptionError, PointsError};
+use crate::read::{file_path, read_error};
 use crate::surface::PySurface;
 use crate::wrapper::{SurfaceImpl, WrappedSurface};
 
 /// What a loft was built from (for pickling).
 #[derive(Clone, Debug)]
 pub(crate) struct LoftInput {
-    pub profiles: Vec<Vec<Point2>>,
-    pub placements: Vec<WingPlacement>,
+    pub source: LoftSource,
     pub options: LoftOptions,
+}
+
+/// The sections a loft was built from.
+#[derive(Clone, Debug)]
+pub(crate) enum LoftSource {
+    /// Airfoil profiles and their placements (`karkas.loft`).
+    Wing {
+        profiles: Vec<Vec<Point2>>,
+        placements: Vec<WingPlacement>,
+    },
+    /// The blade of a windIO turbine file (`karkas.loft_windio`).
+    Windio { path: PathBuf },
 }
 
 /// A surface lofted through placed sections, as returned by :func:`karkas.loft`.
@@ -63,6 +77,10 @@ pub struct PyLoftSurface {
     /// The tolerance, as a share of each section's chord.
     #[pyo3(get)]
     tolerance: f64,
+    /// The span stations of a windIO blade's airfoils (its other sections are at the
+    /// positions of its distributions' grids); None for a wing.
+    #[pyo3(get)]
+    airfoil_stations: Option<Numbers>,
     pub(crate) input: LoftInput,
     loft: Arc<Loft>,
 }
@@ -174,19 +192,153 @@ pub fn loft(
             dihedral: dihedrals.as_ref().map(|d| d[k]).filter(|d| !d.is_nan()),
         })
         .collect();
+    let options = LoftOptions { rule, tolerance };
+    let loft = py
+        .detach(|| Loft::wing(&foils, &placements, &options))
+        .map_err(library_error)?;
     let input = LoftInput {
-        profiles: foils,
-        placements,
-        options: LoftOptions { rule, tolerance },
+        source: LoftSource::Wing {
+            profiles: foils,
+            placements,
+        },
+        options,
     };
-    Py::new(py, PyLoftSurface::build(py, input)?)
+    Py::new(py, PyLoftSurface::build(loft, input, None))
+}
+
+/// Lofts the blade of a windIO turbine file, as ``karkas loft --windio`` does.
+///
+/// The file's ``components.blade`` (windIO 2: ``reference_axis`` and ``outer_shape``) and its
+/// ``airfoils`` are read; each airfoil listed in ``outer_shape.airfoils`` is placed at its
+/// ``spanwise_position`` along the reference axis with the chord, twist and section offsets
+/// the distributions give there (PCHIP in their grids), its plane normal to the axis, as
+/// windIO places it. Between two airfoils the surface also passes through a section at every
+/// grid position of the distributions, placed the same way, whose profile blends the two
+/// airfoils' fitted sections linearly. Stations are the positions times the reference axis's
+/// length; ``v`` runs as in :func:`karkas.loft` (leading edge at 0.5).
+///
+/// Parameters
+/// ----------
+/// path : str or os.PathLike
+///     The windIO turbine file (YAML).
+/// span : {'monotone', 'linear', 'spline'}, optional
+///     How the surface runs between sections, as in :func:`karkas.loft`.
+/// tolerance : float, optional
+///     The largest distance of a section's points from the surface, as a share of its chord.
+///
+/// Returns
+/// -------
+/// LoftSurface
+///     ``airfoil_stations`` holds the stations of the file's airfoils.
+///
+/// Raises
+/// ------
+/// FileFormatError
+///     YAML that does not parse (with its line), a windIO 1 blade, a missing field, a
+///     distribution whose arrays differ in length or whose grid does not increase, an airfoil
+///     placed that the file does not define (the message names the file).
+/// PointsError
+///     Two airfoils at one position, positions out of order or outside [0, 1], an airfoil
+///     with too few points or no leading edge between its ends (the message names the file,
+///     the airfoil and its position).
+/// OptionError
+///     An unknown ``span`` or a tolerance that is not positive.
+/// OSError
+///     A file that cannot be opened (``FileNotFoundError``, ...).
+///
+/// Examples
+/// --------
+/// A blade 20 long with two airfoils (windIO files give them with many more points):
+///
+/// >>> import os, tempfile
+/// >>> beta = np.linspace(0, 2 * np.pi, 41)
+/// >>> x = 0.5 * (1 + np.cos(beta))
+/// >>> def foil(t):
+/// ...     y = 5 * t * (0.2969 * np.sqrt(x) - 0.126 * x - 0.3516 * x**2 + 0.2843 * x**3 - 0.1036 * x**4)
+/// ...     return f"{{x: {x.tolist()}, y: {np.where(beta <= np.pi, y, -y).tolist()}}}"
+/// >>> text = f'''windIO_version: '2.0'
+/// ... components:
+/// ...   blade:
+/// ...     reference_axis:
+/// ...       x: {{grid: [0.0, 1.0], values: [0.0, 0.0]}}
+/// ...       y: {{grid: [0.0, 1.0], values: [0.0, 0.0]}}
+/// ...       z: {{grid: [0.0, 1.0], values: [0.0, 20.0]}}
+/// ...     outer_shape:
+/// ...       chord: {{grid: [0.0, 1.0], values: [2.0, 0.8]}}
+/// ...       twist: {{grid: [0.0, 1.0], values: [10.0, 0.0]}}
+/// ...       section_offset_y: {{grid: [0.0, 1.0], values: [0.5, 0.2]}}
+/// ...       airfoils:
+/// ...         - {{name: root, spanwise_position: 0.0}}
+/// ...         - {{name: tip, spanwise_position: 1.0}}
+/// ... airfoils:
+/// ...   - {{name: root, coordinates: {foil(0.24)}}}
+/// ...   - {{name: tip, coordinates: {foil(0.12)}}}
+/// ... '''
+/// >>> with tempfile.TemporaryDirectory() as d:
+/// ...     path = os.path.join(d, "blade.yaml")
+/// ...     with open(path, "w") as f:
+/// ...         _ = f.write(text)
+/// ...     blade = karkas.loft_windio(path)
+/// >>> blade.tolerance_met, blade.airfoil_stations.tolist()
+/// (True, [0.0, 20.0])
+///
+/// The root's leading edge is 0.5 upstream of the axis, turned 10 degrees into the wind (-x):
+///
+/// >>> le = blade(0.0, 0.5)
+/// >>> bool(np.allclose(le, [-0.5 * np.sin(np.radians(10)), -0.5 * np.cos(np.radians(10)), 0], atol=1e-9))
+/// True
+#[pyfunction]
+#[pyo3(signature = (path, span = "monotone", tolerance = DEFAULT_TOLERANCE))]
+#[pyo3(text_signature = "(path, span='monotone', tolerance=1e-05)")]
+pub fn loft_windio(
+    py: Python<'_>,
+    path: PathBuf,
+    span: &str,
+    tolerance: f64,
+) -> PyResult<Py<PyLoftSurface>> {
+    let rule: SpanRule = span.parse().map_err(library_error)?;
+    let options = LoftOptions { rule, tolerance };
+    let path = file_path(path)?;
+    let (loft, airfoils) = py.detach(|| windio_loft(&path, &options))?;
+    let input = LoftInput {
+        source: LoftSource::Windio { path },
+        options,
+    };
+    Py::new(py, PyLoftSurface::build(loft, input, Some(airfoils)))
+}
+
+/// The loft of the windIO blade at `path` and its airfoils' stations.
+fn windio_loft(path: &std::path::Path, options: &LoftOptions) -> PyResult<(Loft, Vec<f64>)> {
+    let blade = karkas_io::windio::read_windio_blade(path).map_err(read_error)?;
+    let profiles: Vec<Vec<Point2>> = blade.sections.iter().map(|s| s.profile.clone()).collect();
+    let positions: Vec<f64> = blade.sections.iter().map(|s| s.position).collect();
+    let loft = Loft::blade(&profiles, &positions, &blade.shape, options).map_err(|e| {
+        let name = karkas_io::input::display_name(path);
+        let message = match &e {
+            karkas::Error::LoftSection { section, reason } if *section < blade.sections.len() => {
+                let s = &blade.sections[*section];
+                format!(
+                    "{}: airfoil {} ('{}' at spanwise_position {}): {reason}",
+                    name.display(),
+                    section + 1,
+                    s.airfoil,
+                    s.position
+                )
+            }
+            other => format!("{}: {other}", name.display()),
+        };
+        library_error_saying(&e, message)
+    })?;
+    let length = blade.shape.axis_length();
+    Ok((loft, positions.iter().map(|s| s * length).collect()))
 }
 
 impl PyLoftSurface {
-    fn build(py: Python<'_>, input: LoftInput) -> PyResult<PyClassInitializer<Self>> {
-        let loft = py
-            .detach(|| Loft::wing(&input.profiles, &input.placements, &input.options))
-            .map_err(library_error)?;
+    fn build(
+        loft: Loft,
+        input: LoftInput,
+        airfoil_stations: Option<Vec<f64>>,
+    ) -> PyClassInitializer<Self> {
         let loft = Arc::new(loft);
         let description = format!(
             "<karkas.LoftSurface span='{}', {} sections, {}x{} control points",
@@ -202,11 +354,12 @@ impl PyLoftSurface {
             control_points: loft.control_counts(),
             span: input.options.rule.name(),
             tolerance: input.options.tolerance,
+            airfoil_stations: airfoil_stations.map(Numbers),
             input,
             loft: Arc::clone(&loft),
         };
         let inner: Arc<dyn SurfaceImpl> = Arc::new(WrappedSurface::<_, 3>(SharedLoft(loft)));
-        Ok(PyClassInitializer::from(PySurface::new(inner, description)).add_subclass(sub))
+        PyClassInitializer::from(PySurface::new(inner, description)).add_subclass(sub)
     }
 }
 

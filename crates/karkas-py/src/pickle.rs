@@ -21,9 +21,10 @@ use crate::param::{Ends, PyBicubicSurface, PyCubicSpline};
 use crate::section::PySectionCurve;
 
 /// The constructors `_restore` may call: the qualified names the `__reduce__` methods give.
-const CONSTRUCTORS: [&str; 17] = [
+const CONSTRUCTORS: [&str; 18] = [
     "LLCurve",
     "loft",
+    "loft_windio",
     "LLSurface",
     "CubicSpline",
     "HermiteSpline._from_fit",
@@ -66,7 +67,8 @@ pub fn restore<'py>(
 #[pymethods]
 impl crate::loft::PyLoftSurface {
     /// Pickling: `karkas.loft` of the profiles, placements, rule and tolerance (a dihedral
-    /// not given is NaN).
+    /// not given is NaN), or `karkas.loft_windio` of the file's path (read again when
+    /// unpickled).
     fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
         reduce_loft(py, &self.input)
     }
@@ -78,14 +80,28 @@ fn reduce_loft<'py>(
     input: &crate::loft::LoftInput,
 ) -> PyResult<Bound<'py, PyTuple>> {
     use crate::convert::points_to_array;
-    let profiles = input
-        .profiles
+    use crate::loft::LoftSource;
+    let (profiles, placements) = match &input.source {
+        LoftSource::Wing {
+            profiles,
+            placements,
+        } => (profiles, placements),
+        LoftSource::Windio { path } => {
+            let args = (
+                path.clone(),
+                input.options.rule.name(),
+                input.options.tolerance,
+            );
+            return reduce(py, "loft_windio", args.into_pyobject(py)?, None);
+        }
+    };
+    let profiles = profiles
         .iter()
         .map(|p| points_to_array(py, p))
         .collect::<PyResult<Vec<_>>>()?;
-    let les: Vec<karkas::Point3> = input.placements.iter().map(|p| p.leading_edge).collect();
+    let les: Vec<karkas::Point3> = placements.iter().map(|p| p.leading_edge).collect();
     let numbers = |f: &dyn Fn(&karkas::loft::WingPlacement) -> f64| {
-        vector_to_array(py, &input.placements.iter().map(f).collect::<Vec<f64>>())
+        vector_to_array(py, &placements.iter().map(f).collect::<Vec<f64>>())
     };
     let args = (
         profiles,

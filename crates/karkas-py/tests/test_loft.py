@@ -174,3 +174,148 @@ def test_pickles_and_exports(tmp_path):
     assert coefs.shape[:2] == S.control_points
     karkas.export(S, str(tmp_path / "w.stl"))
     assert (tmp_path / "w.stl").stat().st_size > 0
+
+
+# karkas.loft_windio: a small prebent blade written here, its airfoils placed by the test as
+# windIO describes (numpy and SciPy's PCHIP, not karkas), and the reference IEA-15-240-RWT
+# blade when the windIO package is installed.
+
+
+def foil_yaml(t, n=41):
+    beta = np.linspace(0.0, 2.0 * np.pi, n)
+    x = 0.5 * (1.0 + np.cos(beta))
+    y = 5 * t * (0.2969 * np.sqrt(x) - 0.126 * x - 0.3516 * x**2 + 0.2843 * x**3 - 0.1036 * x**4)
+    y = np.where(beta <= np.pi, y, -y)
+    return "{x: [%s], y: [%s]}" % (", ".join(map(repr, x.tolist())), ", ".join(map(repr, y.tolist())))
+
+
+def blade_yaml(positions=(0.0, 0.4, 1.0)):
+    return (
+        "windIO_version: '2.0'\nname: test blade\ncomponents:\n  blade:\n    reference_axis:\n"
+        "      x: {grid: &g [0.0, 0.5, 1.0], values: [0.0, -0.2, -1.0]}\n"
+        "      y: {grid: [0.0, 1.0], values: [0.0, 0.0]}\n"
+        "      z: {grid: *g, values: [0.0, 10.0, 20.0]}\n"
+        "    outer_shape:\n"
+        "      chord: {grid: *g, values: [2.0, 2.4, 0.8]}\n"
+        "      twist: {grid: *g, values: [12.0, 4.0, -1.0]}\n"
+        "      section_offset_y: {grid: *g, values: [1.0, 0.7, 0.2]}\n"
+        "      airfoils:\n"
+        f"        - {{name: thick, spanwise_position: {positions[0]}}}\n"
+        f"        - {{name: thin, spanwise_position: {positions[1]}}}\n"
+        f"        - {{name: thin, spanwise_position: {positions[2]}}}\n"
+        f"airfoils:\n  - {{name: thick, coordinates: {foil_yaml(0.21)}}}\n"
+        f"  - {{name: thin, coordinates: {foil_yaml(0.12)}}}\n"
+    )
+
+
+def windio_place(blade, s, xa, ya):
+    """Unit-chord points placed at the nondimensional position s as windIO 2 places them:
+    P = r(s) + My(b) Mx(a) Rz(-(twist + rz)) (c y + ox, c x - oy, 0), the axis's PCHIP tangent
+    the section's normal (as tests/cad/check_windio_blade.py places the IEA blades)."""
+    from scipy.interpolate import PchipInterpolator
+
+    def pchip(d):
+        return PchipInterpolator(np.asarray(d["grid"], float), np.asarray(d["values"], float))
+
+    axis = [pchip(blade["reference_axis"][k]) for k in "xyz"]
+    shape = blade["outer_shape"]
+    chord, twist, oy = (float(pchip(shape[k])(s)) for k in ("chord", "twist", "section_offset_y"))
+    ox = float(pchip(shape["section_offset_x"])(s)) if "section_offset_x" in shape else 0.0
+    r = np.array([float(a(s)) for a in axis])
+    t = np.array([float(a.derivative()(s)) for a in axis])
+    t /= np.linalg.norm(t)
+    a, b = np.arcsin(-t[1]), np.arctan2(t[0], t[2])
+    mx = np.array([[1, 0, 0], [0, np.cos(a), -np.sin(a)], [0, np.sin(a), np.cos(a)]])
+    my = np.array([[np.cos(b), 0, np.sin(b)], [0, 1, 0], [-np.sin(b), 0, np.cos(b)]])
+    mxy = my @ mx
+    rz = np.radians(twist) + np.arctan2(mxy[0, 1], mxy[0, 0])
+    rot = np.array([[np.cos(rz), np.sin(rz), 0], [-np.sin(rz), np.cos(rz), 0], [0, 0, 1]])
+    local = np.c_[chord * ya + ox, chord * xa - oy, np.zeros_like(xa)]
+    return r + local @ (mxy @ rot).T, chord
+
+
+def axis_length(blade, n=200001):
+    from scipy.interpolate import PchipInterpolator
+
+    s = np.linspace(0.0, 1.0, n)
+    xyz = np.column_stack(
+        [PchipInterpolator(blade["reference_axis"][k]["grid"], blade["reference_axis"][k]["values"])(s) for k in "xyz"]
+    )
+    return float(np.linalg.norm(np.diff(xyz, axis=0), axis=1).sum())
+
+
+def check_blade_through_its_airfoils(S, turbine, tolerance=1e-5):
+    blade = turbine["components"]["blade"]
+    coords = {a["name"]: a["coordinates"] for a in turbine["airfoils"]}
+    entries = blade["outer_shape"]["airfoils"]
+    length = axis_length(blade)
+    assert len(S.airfoil_stations) == len(entries)
+    worst = 0.0
+    for station, entry in zip(S.airfoil_stations, entries):
+        s = float(entry["spanwise_position"])
+        # The station: the position times the axis length (the length by SciPy's PCHIP).
+        assert abs(station - s * length) < 1e-6 * length, (station, s * length)
+        c = coords[entry["name"]]
+        points, chord = windio_place(blade, s, np.asarray(c["x"], float), np.asarray(c["y"], float))
+        worst = max(worst, distance_to_section(S, station, points, n=4001).max() / chord)
+    assert worst <= tolerance * (1 + 1e-6), worst
+    return worst
+
+
+def test_loft_windio_passes_through_the_airfoils_as_windio_places_them(tmp_path):
+    import yaml
+
+    path = tmp_path / "blade.yaml"
+    path.write_text(blade_yaml())
+    S = karkas.loft_windio(path)
+    assert isinstance(S, karkas.LoftSurface)
+    assert S.tolerance_met and S.span == "monotone" and S.tolerance == 1e-5
+    # The three airfoils and the grid position 0.5 between the second and the third.
+    assert len(S.stations) == 4
+    check_blade_through_its_airfoils(S, yaml.safe_load(path.read_text()))
+    # The options of `karkas loft --windio`, and a str path.
+    T = karkas.loft_windio(str(path), span="linear", tolerance=1e-4)
+    assert (T.span, T.tolerance, T.tolerance_met) == ("linear", 1e-4, True)
+    assert T.control_points[1] <= S.control_points[1]
+    # Pickled as the file's path, read again.
+    U = pickle.loads(pickle.dumps(S))
+    assert U.control_points == S.control_points
+    uv = np.linspace(0.0, 1.0, 7)
+    assert np.array_equal(U(S.stations[-1] * uv, uv), S(S.stations[-1] * uv, uv))
+
+
+def test_loft_windio_lofts_the_iea_15_blade_as_the_command_line():
+    windIO = pytest.importorskip("windIO")
+    from pathlib import Path
+
+    path = Path(windIO.__file__).parent / "examples" / "turbine" / "IEA-15-240-RWT.yaml"
+    S = karkas.loft_windio(path)
+    assert S.tolerance_met
+    # The figures `karkas loft --windio` reports for this file.
+    assert S.control_points == (122, 232) and len(S.stations) == 61
+    check_blade_through_its_airfoils(S, windIO.load_yaml(str(path)))
+
+
+def test_loft_windio_errors_name_the_file(tmp_path):
+    missing = tmp_path / "missing.yaml"
+    with pytest.raises(FileNotFoundError):
+        karkas.loft_windio(missing)
+    cases = [
+        (blade_yaml().replace("name: thick, spanwise", "name: gone, spanwise"), karkas.FileFormatError, ["gone"]),
+        (blade_yaml().replace("chord: {grid: *g, values: [2.0, 2.4, 0.8]}", "chord: [2.0]"), karkas.FileFormatError, []),
+        ("components: [1\n", karkas.FileFormatError, ["line"]),
+        (blade_yaml((0.0, 0.4, 0.4)), karkas.PointsError, ["airfoil 3 ('thin' at spanwise_position 0.4)"]),
+        (blade_yaml((0.0, 0.6, 0.4)), karkas.PointsError, ["airfoil 3", "not after"]),
+    ]
+    for k, (text, error, words) in enumerate(cases):
+        path = tmp_path / f"bad{k}.yaml"
+        path.write_text(text)
+        with pytest.raises(error) as info:
+            karkas.loft_windio(path)
+        assert isinstance(info.value, karkas.KarkasError)
+        message = str(info.value)
+        assert f"bad{k}.yaml" in message, message
+        for w in words:
+            assert w in message, message
+    with pytest.raises(karkas.OptionError):
+        karkas.loft_windio(tmp_path / "bad0.yaml", span="cubic")

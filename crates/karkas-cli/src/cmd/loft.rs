@@ -56,6 +56,14 @@ pub struct LoftArgs {
     /// beam (twice the largest half-breadth).
     #[arg(long, value_name = "OFFSETS.csv")]
     pub offsets: Option<PathBuf>,
+    /// With --offsets: the whole hull, the half hull and its mirror image about the centre
+    /// plane y = 0 as one surface. Its sections run from the port deck edge (v = 0) down to the
+    /// keel (v = 0.5, where the sides may meet at an angle: a knot of full multiplicity) and up
+    /// to the starboard deck edge (v = 1); a keel at half-breadth 0 is shared by both sides, a
+    /// flat bottom (half-breadth above 0 at the lowest waterline) is the straight line between
+    /// the sides over v in [0.45, 0.55].
+    #[arg(long, requires = "offsets")]
+    pub mirror: bool,
     /// How the surface runs between sections: linear (ruled, C^0 at the sections), monotone
     /// (shape-preserving cubic Hermite, C^1, no overshoot) or spline (not-a-knot cubic, C^2,
     /// may overshoot).
@@ -119,6 +127,9 @@ type Built = (Loft, PathBuf, f64, Option<Vec<f64>>);
 
 /// The loft of the table's sections or of a windIO blade.
 fn build_loft(args: &LoftArgs, options: &LoftOptions) -> Result<Built> {
+    if args.mirror && args.offsets.is_none() {
+        bail!("--mirror mirrors a half hull: give it with --offsets OFFSETS.csv");
+    }
     if let Some(path) = &args.windio {
         let blade = read_windio_blade(path)?;
         let profiles: Vec<Vec<Point2>> = blade.sections.iter().map(|s| s.profile.clone()).collect();
@@ -149,7 +160,10 @@ fn build_loft(args: &LoftArgs, options: &LoftOptions) -> Result<Built> {
     }
     if let Some(path) = &args.offsets {
         let start = Instant::now();
-        let loft = offsets_loft(path, options)?;
+        let mut loft = offsets_loft(path, options)?;
+        if args.mirror {
+            loft = loft.mirrored(1)?;
+        }
         let time_ms = start.elapsed().as_secs_f64() * 1e3;
         return Ok((loft, path.clone(), time_ms, None));
     }

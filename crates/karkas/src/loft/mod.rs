@@ -57,6 +57,7 @@
 
 mod blade;
 mod compatible;
+mod mirror;
 mod placement;
 mod profile;
 mod span;

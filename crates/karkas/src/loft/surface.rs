@@ -53,13 +53,13 @@ impl Default for LoftOptions {
 /// [`tolerance_met`](Self::tolerance_met) says otherwise.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Loft {
-    surface: BSplineSurface<3>,
-    stations: Vec<f64>,
-    deviations: Vec<f64>,
-    scales: Vec<f64>,
-    options: LoftOptions,
-    split: bool,
-    rounds: usize,
+    pub(super) surface: BSplineSurface<3>,
+    pub(super) stations: Vec<f64>,
+    pub(super) deviations: Vec<f64>,
+    pub(super) scales: Vec<f64>,
+    pub(super) options: LoftOptions,
+    pub(super) split: bool,
+    pub(super) rounds: usize,
 }
 
 impl Loft {

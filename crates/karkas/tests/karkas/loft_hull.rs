@@ -151,3 +151,77 @@ fn wigley_hull_from_its_offsets_within_the_tolerance_order() {
     assert!(h(41, SpanRule::Monotone, 0.0) < 2e-4, "{rows:?}");
     assert!(h(41, SpanRule::Spline, 0.0) < 2e-5, "{rows:?}");
 }
+
+// The whole hull from the half (`Loft::mirrored`): a V-shaped hull whose sides meet at the
+// keel at an angle, and one with a flat bottom.
+
+/// A V-shaped hull of two stations: half sections from the keel at `(bottom, 0)` out to
+/// the deck edge at `(1, 1)`, leaving the keel at about 45 degrees.
+fn v_half_hull(bottom_half_breadth: f64) -> Loft {
+    let sections: Vec<LoftSection> = [0.0, 2.0]
+        .iter()
+        .map(|&x| {
+            let points: Vec<Point2> = (0..9)
+                .map(|k| {
+                    let z = k as f64 / 8.0;
+                    let y = (z + 0.3 * z * z) / 1.3;
+                    Point2::new([bottom_half_breadth + (1.0 - bottom_half_breadth) * y, z])
+                })
+                .collect();
+            LoftSection {
+                profile: Profile::open(&points).unwrap(),
+                frame: SectionFrame {
+                    origin: Point3::new([x, 0.0, 0.0]),
+                    x_axis: Point3::new([0.0, 1.0, 0.0]),
+                    y_axis: Point3::new([0.0, 0.0, 1.0]),
+                },
+                station: x,
+                scale: 2.0,
+            }
+        })
+        .collect();
+    Loft::new(&sections, &LoftOptions::default()).unwrap()
+}
+
+#[test]
+fn the_mirrored_hull_is_symmetric_with_its_keel_at_half() {
+    let half = v_half_hull(0.0);
+    let whole = half.mirrored(1).unwrap();
+    assert_eq!(whole.control_counts().1, 2 * half.control_counts().1 - 1);
+    for &u in &[0.0, 0.7, 2.0] {
+        let keel = whole.eval(u, 0.5);
+        assert!(keel[1].abs() < 1e-15, "{keel:?}");
+        assert!(keel[2].abs() < 1e-12, "{keel:?}");
+        for k in 0..=50 {
+            let v = 0.5 * k as f64 / 50.0;
+            let (p, q) = (whole.eval(u, 0.5 - v), whole.eval(u, 0.5 + v));
+            assert!((p[1] + q[1]).abs() < 1e-12 && (p[2] - q[2]).abs() < 1e-12);
+            // The starboard half is the half loft.
+            let h = half.eval(u, 2.0 * v);
+            assert!(q.distance(h) < 1e-12, "{q:?} {h:?}");
+        }
+    }
+    // A corner at the keel: the port side comes down (z falls with v), the starboard side
+    // goes up, both steeper than about 27 degrees.
+    let (l, r) = (
+        whole.deriv(1.0, 0.5 - 1e-9, 0, 1),
+        whole.deriv(1.0, 0.5 + 1e-9, 0, 1),
+    );
+    assert!(l[1] > 0.0 && r[1] > 0.0, "{l:?} {r:?}");
+    assert!(l[2] < -0.5 * l[1] && r[2] > 0.5 * r[1], "{l:?} {r:?}");
+    assert!(v_half_hull(0.0).mirrored(3).is_err());
+}
+
+#[test]
+fn a_flat_bottom_joins_the_halves_by_a_line() {
+    let half = v_half_hull(0.3);
+    let whole = half.mirrored(1).unwrap();
+    assert_eq!(whole.control_counts().1, 2 * half.control_counts().1 + 2);
+    for k in 0..=10 {
+        let v = 0.45 + 0.1 * k as f64 / 10.0;
+        let p = whole.eval(1.0, v);
+        assert!(p[2].abs() < 1e-12, "{p:?}");
+        assert!((p[1] - 0.3 * (v - 0.5) / 0.05).abs() < 1e-12, "{p:?}");
+    }
+    assert!(whole.mirrored(1).is_err());
+}
