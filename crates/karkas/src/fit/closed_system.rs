@@ -89,7 +89,7 @@ impl<const D: usize> PeriodicSystem<D> {
     /// tangent `T` of the last curve at the point; `None` or the first point: the
     /// identity), plus `p sum_L delta_L |J_L|^2` (`deltas` per knot `0..M`) and
     /// `lambda int |R''|^2`.
-    #[allow(clippy::too_many_arguments)]
+    #[allow(clippy::needless_range_loop)] // knots mod M index the rows and deltas alike
     pub fn solve(
         &mut self,
         points: &[Point<D>],
@@ -222,7 +222,7 @@ pub(crate) fn periodic_foot_point<const D: usize>(
         let g = residual.dot(first);
         let curvature = first.norm_sq() + residual.dot(second);
         let speed = first.norm_sq();
-        if !(speed > 0.0) {
+        if speed.is_nan() || speed <= 0.0 {
             break;
         }
         let mut step = -g / if curvature > 0.0 { curvature } else { speed };

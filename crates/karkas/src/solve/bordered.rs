@@ -131,6 +131,7 @@ impl BorderedSpd {
     ///
     /// # Panics
     /// When `b.len()` is not the order of the matrix.
+    #[allow(clippy::needless_range_loop)] // index arithmetic on the factor reads clearer
     pub fn solve_factored(&self, b: &mut [f64]) {
         let (n, m) = (self.band.size(), self.border);
         assert_eq!(b.len(), n + m, "right-hand side of the wrong length");
