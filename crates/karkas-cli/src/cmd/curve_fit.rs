@@ -13,9 +13,9 @@ use crate::output::memory::check_memory;
 use crate::output::overwrite::ensure_distinct;
 use crate::output::samples::sample_curve;
 use crate::output::target::{output_formats, shown};
-use anyhow::{bail, Result};
+use anyhow::{bail, Context, Result};
 use clap::Args;
-use karkas::fit::CurveFit;
+use karkas::fit::{closed_bspline, CurveFit};
 use karkas::{Curve, Point, Point2};
 use karkas_io::write::write_atomic;
 use karkas_io::OutputFormat;
@@ -35,8 +35,18 @@ pub struct CurveFitArgs {
     input: PathBuf,
     #[command(flatten)]
     fit: FitCurveOptions,
+    /// Fit a closed contour (a frame, a section of a fuselage or hull): one periodic spline,
+    /// C^1 across the seam (a cubic of defect 2 is C^1 at every knot; its second derivative
+    /// jumps by what --eps allows), the seam at the first point (t = 0, held there), the
+    /// period's parameters started by closed chord length. --knots gives the knots of one
+    /// period (0 = T1 < ... < TN = 1; --corner 0 makes the seam a corner); --tolerance
+    /// inserts knots in every piece, the seam's included. A last point that repeats the first
+    /// is dropped. STEP, IGES and DXF get one closed B-spline; CSV and pictures the closed
+    /// curve. Needs at least 3 points and a point per piece.
+    #[arg(long, conflicts_with_all = ["pin_ends", "free_ends", "close_te"])]
+    closed: bool,
     /// Also print the summary as one JSON object on standard output (keys input, points,
-    /// knots, max_deviation, rms_deviation, f, p, noise, bending_weight, tolerance,
+    /// knots, closed, max_deviation, rms_deviation, f, p, noise, bending_weight, tolerance,
     /// tolerance_met, warnings, seconds).
     #[arg(long)]
     json: bool,
@@ -92,7 +102,7 @@ impl CurveJob for (&CurveFitArgs, Vec<OutputFormat>, Option<Vec<f64>>) {
         let (args, formats, knots) = (self.0, &self.1, &self.2);
         let input = || args.input.display().to_string();
         args.close.check_points(points, &args.input)?;
-        if !(args.fit.free_ends || args.close.close_te) {
+        if !(args.fit.free_ends || args.close.close_te || args.closed) {
             warn_open_near_miss(
                 points,
                 "--close-te closes it with the straight segment between them in STEP, IGES and \
@@ -100,9 +110,14 @@ impl CurveJob for (&CurveFitArgs, Vec<OutputFormat>, Option<Vec<f64>>) {
             );
         }
         let started = Instant::now();
-        let fit: CurveFit<D> = args.fit.fit(points, knots.as_deref(), None, &input())?;
+        let fit: CurveFit<D> = if args.closed {
+            args.fit.fit_closed(points, knots.as_deref(), &input())?
+        } else {
+            args.fit.fit(points, knots.as_deref(), None, &input())?
+        };
         let fit_time = started.elapsed();
-        let summary = FitSummary::new(input(), &fit, args.fit.tolerance, fit_time);
+        let mut summary = FitSummary::new(input(), &fit, args.fit.tolerance, fit_time);
+        summary.closed = args.closed;
         for warning in &fit.warnings {
             note(format!("karkas: warning: {warning}"));
         }
@@ -127,7 +142,12 @@ impl CurveJob for (&CurveFitArgs, Vec<OutputFormat>, Option<Vec<f64>>) {
             if format.is_cad() {
                 let what = args.input.display();
                 let cad = (&args.cad, args.close.close_te);
-                write_cad_curve(&fit.spline, points, format, output, cad, what)?;
+                if args.closed {
+                    let closed = closed_bspline(&fit.spline).context("--closed")?;
+                    write_cad_curve(&closed, points, format, output, cad, what)?;
+                } else {
+                    write_cad_curve(&fit.spline, points, format, output, cad, what)?;
+                }
             } else {
                 let samples = (&ts[..], &samples[..]);
                 write_fit_picture_or_samples(args, output, format, points, &fit, samples)?;
@@ -172,13 +192,22 @@ fn write_fit_picture_or_samples<const D: usize>(
         .collect();
     let comb = args.comb.teeth(&fit.spline, ts);
     let title = format!(
-        "defect-2 cubic spline fit, {} knots, {} points, max deviation {:.3e}",
+        "{}defect-2 cubic spline fit, {} knots, {} points, max deviation {:.3e}",
+        if args.closed { "closed " } else { "" },
         fit.spline.knots().len(),
         points.len(),
         fit.max_distance()
     );
     let overlay = (&comb[..], &whiskers[..]);
     let samples = (ts, samples);
-    write_sampled_curve(output, format, &title, samples, points, false, overlay)?;
+    write_sampled_curve(
+        output,
+        format,
+        &title,
+        samples,
+        points,
+        args.closed,
+        overlay,
+    )?;
     Ok(())
 }

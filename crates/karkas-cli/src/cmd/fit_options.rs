@@ -11,8 +11,8 @@ use anyhow::{bail, Context, Result};
 use clap::{Args, ValueEnum};
 use karkas::fair::RESOLUTION_ULPS;
 use karkas::fit::{
-    fit_curve, fit_curve_adaptive, knots_from_list, CurveFit, FitEnds, FitOptions, PenaltyRule,
-    DEFAULT_FAIRNESS,
+    fit_closed_curve, fit_closed_curve_adaptive, fit_curve, fit_curve_adaptive, knots_from_list,
+    CurveFit, FitEnds, FitOptions, PenaltyRule, DEFAULT_FAIRNESS,
 };
 use karkas::geometry::points_out_of_order;
 use karkas::Point;
@@ -165,6 +165,51 @@ impl FitCurveOptions {
             return Err(karkas::Error::PointsOutOfOrder { reversals }).context(input.to_owned());
         }
         let tolerance = self.tolerance.or(tolerance);
+        self.check_resolution(points, tolerance, input)?;
+        Ok(match (knots, tolerance) {
+            (Some(knots), _) => fit_curve(points, knots, &options).context(input.to_owned())?,
+            (None, Some(tol)) => {
+                fit_curve_adaptive(points, tol, &options)
+                    .context(input.to_owned())?
+                    .fit
+            }
+            (None, None) => {
+                bail!("give the knots (--knots T1,...,TN) or a tolerance (--tolerance TOL)")
+            }
+        })
+    }
+
+    /// The closed (periodic) fit of `points` (`--closed`, docs/methods.md §4 "Closed
+    /// curves"): on `knots` of one period, or to the tolerance; errors name `--closed`.
+    pub fn fit_closed<const D: usize>(
+        &self,
+        points: &[Point<D>],
+        knots: Option<&[f64]>,
+        input: &str,
+    ) -> Result<CurveFit<D>> {
+        let options = self.options();
+        self.check_resolution(points, self.tolerance, input)?;
+        let context = || format!("{input}: --closed");
+        Ok(match (knots, self.tolerance) {
+            (Some(knots), _) => fit_closed_curve(points, knots, &options).with_context(context)?,
+            (None, Some(tol)) => {
+                fit_closed_curve_adaptive(points, tol, &options)
+                    .with_context(context)?
+                    .fit
+            }
+            (None, None) => {
+                bail!("give the knots (--knots T1,...,TN) or a tolerance (--tolerance TOL)")
+            }
+        })
+    }
+
+    /// Refuses a tolerance below what the coordinates of `points` resolve.
+    fn check_resolution<const D: usize>(
+        &self,
+        points: &[Point<D>],
+        tolerance: Option<f64>,
+        input: &str,
+    ) -> Result<()> {
         if let Some(tol) = tolerance {
             // The same bound as `curve fair`'s: no fit can be asked closer than the
             // coordinates resolve.
@@ -177,16 +222,6 @@ impl FitCurveOptions {
                 );
             }
         }
-        Ok(match (knots, tolerance) {
-            (Some(knots), _) => fit_curve(points, knots, &options).context(input.to_owned())?,
-            (None, Some(tol)) => {
-                fit_curve_adaptive(points, tol, &options)
-                    .context(input.to_owned())?
-                    .fit
-            }
-            (None, None) => {
-                bail!("give the knots (--knots T1,...,TN) or a tolerance (--tolerance TOL)")
-            }
-        })
+        Ok(())
     }
 }

@@ -24,8 +24,11 @@ pub struct FitSummary {
     pub input: String,
     /// The number of points.
     pub points: usize,
-    /// The number of knots.
+    /// The number of knots (a closed fit: those of one period, its seam counted at both
+    /// ends).
     pub knots: usize,
+    /// A closed (periodic) fit (`--closed`).
+    pub closed: bool,
     /// The largest distance of a point from the curve.
     pub max_deviation: f64,
     /// The root mean square of the distances.
@@ -61,6 +64,7 @@ impl FitSummary {
             input,
             points: fit.distances.len(),
             knots: fit.spline.knots().len(),
+            closed: false,
             max_deviation,
             rms_deviation: fit.rms_distance(),
             f: fit.jump_sum,

@@ -13,6 +13,7 @@ mod convert;
 mod curve_analyze;
 mod curve_fair;
 mod curve_fit;
+mod curve_fit_closed;
 mod curve_spline;
 mod demo_hydrofoil;
 mod demo_report;

@@ -32,6 +32,8 @@
 //!   knot into every piece whose worst point lies beyond the tolerance, round after round)
 //!   until a tolerance on the largest deviation holds, or the deviation stalls (noise), with
 //!   a warning naming the best fit reached.
+//! - [`fit_closed_curve`], [`fit_closed_curve_adaptive`]: the same spline periodic over a
+//!   closed contour, `C^1` across the seam (docs/methods.md §4, "Closed curves").
 //!
 //! Why the bending term: the foot-point distances do not change when the points slide
 //! along the curve, so the unconstrained problem is nearly flat along reparameterizations:
@@ -60,6 +62,8 @@
 
 mod adaptive;
 mod bspline;
+mod closed;
+mod closed_system;
 mod coarse;
 mod ends;
 mod faults;
@@ -84,6 +88,7 @@ mod through_points;
 mod unit_scale;
 
 pub use adaptive::{fit_curve_adaptive, AdaptiveFit, AdaptiveStop};
+pub use closed::{closed_bspline, fit_closed_curve, fit_closed_curve_adaptive};
 pub use guards::{
     polyline_crossings, shape_warnings, PolylineCrossing, HOOK_TURNING, TURNING_MARGIN,
     TURNING_RELATIVE,

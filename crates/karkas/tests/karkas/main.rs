@@ -19,6 +19,7 @@ mod dps_interpolation;
 mod dps_tube;
 mod fair;
 mod fit_adaptive;
+mod fit_closed;
 mod fit_dense;
 mod fit_faults;
 mod fit_guards;
