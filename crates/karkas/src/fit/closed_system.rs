@@ -29,7 +29,7 @@ pub(crate) struct PeriodicSystem<const D: usize> {
 
 impl<const D: usize> PeriodicSystem<D> {
     /// The system on `knots` (`0 = T_0 < ... < T_M = 1`, `M >= 2`).
-    pub fn new(knots: &[f64]) -> Self {
+    pub(crate) fn new(knots: &[f64]) -> Self {
         let m = knots.len() - 1;
         PeriodicSystem {
             knots: knots.to_vec(),

@@ -35,6 +35,24 @@ pub struct BorderedSpd {
 impl BorderedSpd {
     /// A zero matrix of order `inner + border` whose first `inner` unknowns form a band of
     /// `width` stored diagonals.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::solve::BorderedSpd;
+    ///
+    /// // [[4, 1, 1], [1, 4, 1], [1, 1, 4]] x = [6, 6, 6] has x = [1, 1, 1]: a band of two
+    /// // unknowns and a border of one, as the seam of a cyclic system.
+    /// let mut matrix = BorderedSpd::new(2, 2, 1);
+    /// for (i, j, value) in [(0, 0, 4.0), (1, 0, 1.0), (1, 1, 4.0), (2, 0, 1.0), (2, 1, 1.0), (2, 2, 4.0)] {
+    ///     matrix.add(i, j, value);
+    /// }
+    /// matrix.factor()?;
+    /// let mut x = [6.0, 6.0, 6.0];
+    /// matrix.solve_factored(&mut x);
+    /// assert!(x.iter().all(|v| (v - 1.0).abs() < 1e-12), "{x:?}");
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
     pub fn new(inner: usize, width: usize, border: usize) -> Self {
         BorderedSpd {
             band: BandedSpd::new(inner, width),
