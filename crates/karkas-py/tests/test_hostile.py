@@ -102,6 +102,29 @@ def _torus_skeleton(m1=4, m2=6, n1=4, n2=4, R=3.0, r=1.0):
     return along, across
 
 
+def _windio_blade(profile):
+    """A windIO 2 file of a blade 20 long with `profile` at its root and tip."""
+    coordinates = f"{{x: {profile[:, 0].tolist()}, y: {profile[:, 1].tolist()}}}"
+    return f"""windIO_version: '2.0'
+components:
+  blade:
+    reference_axis:
+      x: {{grid: [0.0, 1.0], values: [0.0, 0.0]}}
+      y: {{grid: [0.0, 1.0], values: [0.0, 0.0]}}
+      z: {{grid: [0.0, 1.0], values: [0.0, 20.0]}}
+    outer_shape:
+      chord: {{grid: [0.0, 1.0], values: [2.0, 0.8]}}
+      twist: {{grid: [0.0, 1.0], values: [10.0, 0.0]}}
+      section_offset_y: {{grid: [0.0, 1.0], values: [0.5, 0.2]}}
+      airfoils:
+        - {{name: root, spanwise_position: 0.0}}
+        - {{name: tip, spanwise_position: 1.0}}
+airfoils:
+  - {{name: root, coordinates: {coordinates}}}
+  - {{name: tip, coordinates: {coordinates}}}
+"""
+
+
 def _network():
     s = np.linspace(0.0, 1.0, 5)
     xs = ys = np.linspace(0.0, 1.0, 3)
@@ -180,6 +203,9 @@ def fixtures(directory):
     o.profile = np.vstack([upper, lower])
     o.loft_surface = karkas.loft([o.profile, o.profile], [[0.0, 0.0, 0.0], [0.1, 2.0, 0.0]], [1.0, 0.8], [0.0, 1.0])
     o.fair = karkas.fair_curve(o.pts3, 0.05)
+    o.windio = os.path.join(directory, "blade.yaml")
+    with open(o.windio, "w") as f:
+        f.write(_windio_blade(o.profile))
     o.mask_csv = os.path.join(directory, "mask.csv")
     with open(o.mask_csv, "w") as f:
         f.write("i,j\n0,0\n2,1\n")
@@ -349,6 +375,7 @@ VALID = {
         ([o.profile, o.profile], [[0.0, 0.0, 0.0], [0.1, 2.0, 0.0]], [1.0, 0.8], [0.0, 1.0]),
         {"dihedrals": None, "span": "monotone", "tolerance": 1e-4},
     ),
+    "loft_windio": lambda o: (karkas.loft_windio, (o.windio,), {"span": "monotone", "tolerance": 1e-4}),
     "LoftSurface": NO_CONSTRUCTOR,
     "LoftSurface.section_at": lambda o: (o.loft_surface.section_at, (1.0,), {"n": 50}),
     "fair_curve": lambda o: (
