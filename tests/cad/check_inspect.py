@@ -35,6 +35,7 @@ from OCP.Bnd import Bnd_Box
 from OCP.BRepAlgoAPI import BRepAlgoAPI_Cut
 from OCP.BRepBndLib import BRepBndLib
 from OCP.BRepBuilderAPI import (BRepBuilderAPI_MakeEdge, BRepBuilderAPI_MakeFace, BRepBuilderAPI_MakeVertex,
+                                BRepBuilderAPI_MakeWire,
                                 BRepBuilderAPI_NurbsConvert)
 from OCP.BRepClass3d import BRepClass3d_SolidClassifier
 from OCP.BRepExtrema import BRepExtrema_DistShapeShape
@@ -42,7 +43,7 @@ from OCP.BRepPrimAPI import (BRepPrimAPI_MakeBox, BRepPrimAPI_MakeCylinder, BRep
                              BRepPrimAPI_MakeSphere, BRepPrimAPI_MakeTorus)
 from OCP.GeomAbs import GeomAbs_C2
 from OCP.GeomAPI import GeomAPI_PointsToBSplineSurface
-from OCP.gp import gp_Ax2, gp_Dir, gp_Hypr, gp_Parab, gp_Pnt, gp_Vec
+from OCP.gp import gp_Ax2, gp_Circ, gp_Dir, gp_Hypr, gp_Parab, gp_Pnt, gp_Vec
 from OCP.IFSelect import IFSelect_RetDone
 from OCP.IGESControl import IGESControl_Writer
 from OCP.STEPControl import STEPControl_AsIs, STEPControl_Writer
@@ -114,6 +115,15 @@ def conic_extrusions():
     return compound
 
 
+def tilted_disc():
+    """A disc bounded by one full circle on one vertex, its axis a rounding away from -z as in
+    a FreeCAD library file (SOT404.stp): the vertex's angle is -6e-16, just below a turn."""
+    axis = gp_Ax2(gp_Pnt(-4.423929967573, 2.553033135614, 2.24866721196),
+                  gp_Dir(-1.898746e-16, 3.798993e-17, -1.0), gp_Dir(-1.0, 6.106227e-16, 1.898746e-16))
+    edge = BRepBuilderAPI_MakeEdge(gp_Circ(axis, 0.5)).Edge()
+    return BRepBuilderAPI_MakeFace(BRepBuilderAPI_MakeWire(edge).Wire()).Face()
+
+
 def cases():
     """(name, shape, is_solid, formats). IGES gets the plate as NURBS faces (entity 128):
     karkas does not read IGES's analytic planes (108) and surfaces of revolution (120). IGES
@@ -129,6 +139,7 @@ def cases():
         ("torus", torus, True, ("step",)),
         ("torus-nurbs", BRepBuilderAPI_NurbsConvert(torus, True).Shape(), True, ("igs",)),
         ("conic-extrusions", conic_extrusions(), False, ("step",)),
+        ("tilted-disc", tilted_disc(), False, ("step",)),
     ]
 
 

@@ -450,7 +450,9 @@ fn edge_curve(
             if hi <= lo + 1e-12 * p || (size <= 1e-9 * span && (hi - lo).abs() < 1e-6 * p) {
                 hi = lo + p;
             }
-            while hi - lo > p {
+            // More than a turn by more than rounding: `lo + p - lo` exceeds `p` by an ulp when
+            // `lo` lies just below a turn (a full circle whose vertex is at angle -6e-16).
+            while hi - lo > p * (1.0 + 1e-12) {
                 hi -= p;
             }
             if let BasisCurve::Nurbs(c) = curve {
@@ -482,4 +484,35 @@ fn edge_curve(
         }
     }
     Ok(Some((curve.bounded(lo, hi)?, along)))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use karkas::bspline::sweep::Frame;
+
+    #[test]
+    fn a_full_circle_on_one_vertex_just_below_a_turn_is_the_whole_circle() {
+        // The vertex's angle is -6.1e-16 (rem_euclid: just below 2 pi), so lo + 2 pi - lo
+        // rounds one ulp above 2 pi.
+        let z = Point3::new([-1.898746e-16, 3.798993e-17, -1.0]);
+        let x = Point3::new([-1.0, 6.106227e-16, 1.898746e-16]);
+        let centre = Point3::new([-4.423929967573, 2.553033135614, 2.24866721196]);
+        let frame = Frame::new(centre, z, x).unwrap();
+        let circle = BasisCurve::Conic {
+            frame,
+            a: 0.5,
+            b: 0.5,
+        };
+        let vertex = Point3::new([-4.923929967573, 2.553033135614, 2.24866721196]);
+        for same_sense in [true, false] {
+            let (curve, _) = edge_curve(&circle, vertex, vertex, same_sense)
+                .unwrap()
+                .unwrap();
+            let d = curve.domain();
+            assert!((d.length() - std::f64::consts::TAU).abs() < 1e-12, "{d:?}");
+            let opposite = curve.eval(d.start + 0.5 * d.length());
+            assert!((opposite.distance(vertex) - 1.0).abs() < 1e-12);
+        }
+    }
 }
