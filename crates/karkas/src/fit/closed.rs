@@ -99,9 +99,11 @@ pub fn fit_closed_curve<const D: usize>(
     Ok(unit.restore(fit, None))
 }
 
-/// Fits a closed curve with knots placed until every point lies within `tolerance` (see
-/// the [module docs](self)); `options` as for [`fit_closed_curve`], the corners becoming
-/// knots. When the tolerance is not met, the best fit carries a
+/// Fits a closed curve with knots placed until every point lies within `tolerance`: a few
+/// uniform knots, then a knot at the middle of every piece (the seam's included) whose worst
+/// point lies beyond the tolerance, round after round, until the tolerance holds, the
+/// deviation stalls, or there is a knot per two points; `options` as for
+/// [`fit_closed_curve`], the corners becoming knots. When the tolerance is not met, the best fit carries a
 /// [`FitWarningKind::ToleranceNotMet`].
 ///
 /// Errors: a tolerance that is not positive and finite, and those of [`fit_closed_curve`].
