@@ -1,29 +1,37 @@
 #!/usr/bin/env python3
-"""karkas on real STEP and IGES files shipped in Debian packages: files read, entities, faces,
-edges and curves converted, and what was not read, with reasons.
+"""karkas on real STEP and IGES files shipped in registry packages (Debian, PyPI, npm): files
+read, entities, faces, edges and curves converted, and what was not read, with reasons.
 
-The packages (Debian 12, `apt-get download`, about 33 MB together): occt-misc (Open CASCADE's
-sample data: 2 STEP, 2 IGES), freecad-common (FreeCAD's IDF library of electronic parts: 27
-STEP, 5 IGES) and kicad-demos (KiCad's demo 3-D models: 4 STEP). Every .step/.stp/.iges/.igs
-file in them is read by the `cad_census` example of karkas-io (one JSON line a file); this
-script sums them and prints the tables of docs/cad-files.md. Exit status 1 when a file is
-refused, or fewer files are read than --expect-read.
+The packages (about 90 MB together):
+- Debian 12 (`apt-get download`): occt-misc (Open CASCADE's sample data: 2 STEP, 2 IGES),
+  freecad-common (FreeCAD's IDF library of electronic parts: 28 STEP, 4 IGES) and kicad-demos
+  (KiCad's demo 3-D models: 4 STEP);
+- PyPI (`pip download --no-deps`, the wheel unpacked): gmsh 4.15.2 (the examples of its API and
+  boolean operations: 6 STEP) and pyiges 0.3.4 (its examples: 2 IGES);
+- npm (`npm pack`): occt-import-js 0.0.23 (its test files: 54 STEP and IGES, among them the
+  CAx Implementor Forum's round-robin models written by several CAD systems).
+Every .step/.stp/.iges/.igs file in them is read by the `cad_census` example of karkas-io (one
+JSON line a file); this script sums them and prints the tables of docs/cad-files.md. Exit
+status 1 when a file is refused, or fewer files are read than --expect-read.
 
     cargo build --release -p karkas-io --example cad_census
     python3 tests/cad/registry_files.py --census target/release/examples/cad_census \
-        [--cache DIR] [--expect-read 40]
+        [--cache DIR] [--expect-read 104]
 
-Not run in CI (the download); the files stay in --cache (default ~/.cache/karkas-cad-files).
+Not run in CI (the downloads); the files stay in --cache (default ~/.cache/karkas-cad-files).
 """
 
 import argparse
 import collections
 import json
 import os
+import shutil
 import subprocess
 import sys
 
 PACKAGES = ["occt-misc", "freecad-common", "kicad-demos"]
+PYPI = ["gmsh==4.15.2", "pyiges==0.3.4"]
+NPM = ["occt-import-js@0.0.23"]
 EXTENSIONS = (".step", ".stp", ".iges", ".igs")
 
 
@@ -40,6 +48,26 @@ def fetch(cache):
                                stdout=subprocess.DEVNULL)
                 debs = [f for f in os.listdir(cache) if f.startswith(package + "_") and f.endswith(".deb")]
             subprocess.run(["dpkg", "-x", os.path.join(cache, sorted(debs)[-1]), folder], check=True)
+        files = []
+        for root, _, names in os.walk(folder):
+            files += [os.path.join(root, n) for n in names if n.lower().endswith(EXTENSIONS)]
+        out[package] = sorted(files)
+    for spec in PYPI + NPM:
+        package = spec.replace("==", "@").split("@")[0]
+        folder = os.path.join(cache, package)
+        if not os.path.isdir(folder):
+            download = os.path.join(cache, "download-" + package)
+            os.makedirs(download, exist_ok=True)
+            if spec in PYPI:
+                subprocess.run([sys.executable, "-m", "pip", "download", "--no-deps", "-q", "-d",
+                                download, spec], check=True)
+                archive = [f for f in os.listdir(download) if f.endswith(".whl")][0]
+                shutil.unpack_archive(os.path.join(download, archive), folder, "zip")
+            else:
+                subprocess.run(["npm", "pack", "--silent", spec], cwd=download, check=True,
+                               stdout=subprocess.DEVNULL)
+                archive = [f for f in os.listdir(download) if f.endswith(".tgz")][0]
+                shutil.unpack_archive(os.path.join(download, archive), folder, "gztar")
         files = []
         for root, _, names in os.walk(folder):
             files += [os.path.join(root, n) for n in names if n.lower().endswith(EXTENSIONS)]

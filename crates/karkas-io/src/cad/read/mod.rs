@@ -187,6 +187,112 @@ mod tests {
         }
     }
 
+    /// `text` with its instance `from(...)` rewritten as `to(...)` keeping the first `keep`
+    /// attributes (a subtype whose knots are implied drops the knot attributes).
+    fn implied_form(text: &str, from: &str, to: &str, keep: usize) -> String {
+        let start = text.find(&format!("{from}(")).unwrap();
+        let open = start + from.len();
+        let (mut depth, mut commas, mut cut, mut end) = (0, 0, None, None);
+        for (k, c) in text[open..].char_indices() {
+            match c {
+                '(' => depth += 1,
+                ')' => {
+                    depth -= 1;
+                    if depth == 0 {
+                        end = Some(open + k);
+                        break;
+                    }
+                }
+                ',' if depth == 1 => {
+                    commas += 1;
+                    if commas == keep {
+                        cut = Some(open + k);
+                    }
+                }
+                _ => {}
+            }
+        }
+        let (cut, end) = (cut.unwrap(), end.unwrap());
+        format!("{}{to}{}{}", &text[..start], &text[open..cut], &text[end..])
+    }
+
+    #[test]
+    fn bezier_uniform_and_quasi_uniform_forms_read_with_the_knots_they_imply() {
+        // The knots ISO 10303-42 implies, written out: a Bezier curve of degree 3 in two
+        // pieces, a uniform curve of degree 2 (knots from -2 by 1), a quasi-uniform surface of
+        // degrees 2 x 1 and a Bezier surface of one piece each way.
+        let pt = |k: usize, j: usize| {
+            Point3::new([
+                k as f64 * 0.75,
+                (k * j + 1) as f64 / 3.0,
+                (k * k) as f64 / 7.0 - j as f64,
+            ])
+        };
+        let bezier = NurbsCurve::new(
+            3,
+            vec![0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 2.0, 2.0, 2.0, 2.0],
+            (0..7).map(|k| pt(k, 0)).collect(),
+            vec![1.0; 7],
+        )
+        .unwrap();
+        let uniform = NurbsCurve::new(
+            2,
+            (-2..=5).map(f64::from).collect(),
+            (0..5).map(|k| pt(k, 1)).collect(),
+            vec![1.0; 5],
+        )
+        .unwrap();
+        let quasi = NurbsSurface::new(
+            (2, vec![0.0, 0.0, 0.0, 1.0, 2.0, 3.0, 3.0, 3.0]),
+            (1, vec![0.0, 0.0, 1.0, 2.0, 3.0, 3.0]),
+            Grid::from_fn(5, 4, pt),
+            Grid::from_fn(5, 4, |_, _| 1.0),
+        )
+        .unwrap();
+        let bezier_surface = NurbsSurface::new(
+            (2, vec![0.0, 0.0, 0.0, 1.0, 1.0, 1.0]),
+            (1, vec![0.0, 0.0, 1.0, 1.0]),
+            Grid::from_fn(3, 2, pt),
+            Grid::from_fn(3, 2, |_, _| 1.0),
+        )
+        .unwrap();
+        let cases: [(CadEntity<'_>, &str); 4] = [
+            (CadEntity::RationalCurve(&bezier), "BEZIER_CURVE"),
+            (CadEntity::RationalCurve(&uniform), "UNIFORM_CURVE"),
+            (CadEntity::RationalSurface(&quasi), "QUASI_UNIFORM_SURFACE"),
+            (
+                CadEntity::RationalSurface(&bezier_surface),
+                "BEZIER_SURFACE",
+            ),
+        ];
+        for (entity, subtype) in cases {
+            let explicit = crate::step::step_text(&[entity], "n");
+            let text = match entity {
+                CadEntity::RationalCurve(_) => {
+                    implied_form(&explicit, "B_SPLINE_CURVE_WITH_KNOTS", subtype, 6)
+                }
+                _ => implied_form(&explicit, "B_SPLINE_SURFACE_WITH_KNOTS", subtype, 8),
+            };
+            assert!(text.contains(&format!("{subtype}(")) && text.len() < explicit.len());
+            let (a, b) = (
+                read_text(&explicit, CadFormat::Step),
+                read_text(&text, CadFormat::Step),
+            );
+            assert!(b.warning().is_none(), "{subtype}: {:?}", b.warning());
+            match entity {
+                CadEntity::RationalCurve(c) => {
+                    same_curve(&b.shape.curves[0], c);
+                    same_curve(&b.shape.curves[0], &a.shape.curves[0]);
+                }
+                CadEntity::RationalSurface(s) => {
+                    same_surface(&b.shape.faces[0].surface, s);
+                    same_surface(&b.shape.faces[0].surface, &a.shape.faces[0].surface);
+                }
+                _ => unreachable!(),
+            }
+        }
+    }
+
     #[test]
     fn formats_are_told_by_content() {
         let mut step = "\n ISO-10303-21;".as_bytes();

@@ -11,7 +11,7 @@ use karkas::{Curve, Grid, Point3};
 
 use super::analytic::{any_normal, BasisCurve, BasisSurface};
 use super::step_args::{real_of, Args};
-use super::step_syntax::{Exchange, Instance, Value};
+use super::step_syntax::{Exchange, Instance, Part, Value};
 use crate::error::IoError;
 
 /// How deep references may nest (a face, its loops, edges, curves, points: about 8).
@@ -48,6 +48,9 @@ pub(crate) const SURFACE_TYPES: &[&str] = &[
     "SURFACE_OF_LINEAR_EXTRUSION",
     "B_SPLINE_SURFACE_WITH_KNOTS",
     "B_SPLINE_SURFACE",
+    "BEZIER_SURFACE",
+    "UNIFORM_SURFACE",
+    "QUASI_UNIFORM_SURFACE",
     "RECTANGULAR_TRIMMED_SURFACE",
 ];
 
@@ -62,9 +65,6 @@ pub(crate) const UNREAD_GEOMETRY: &[&str] = &[
     "OFFSET_SURFACE",
     "CURVE_BOUNDED_SURFACE",
     "DEGENERATE_TOROIDAL_SURFACE",
-    "BEZIER_SURFACE",
-    "UNIFORM_SURFACE",
-    "QUASI_UNIFORM_SURFACE",
     "RECTANGULAR_COMPOSITE_SURFACE",
     "CYLINDRICAL_POINT",
 ];
@@ -440,11 +440,26 @@ impl<'a> Geometry<'a> {
                 .part(name)
                 .map(|p| Args::of(self.path, id, instance, p))
         };
-        // A simple instance (one part) has every attribute; its count is checked here.
-        let simple = args("B_SPLINE_CURVE_WITH_KNOTS").filter(|_| instance.parts.len() == 1);
-        if let Some(s) = &simple {
-            s.count(9)?;
-        }
+        // A simple instance (one part) has every attribute; its count is checked here. The
+        // subtypes whose knots are implied (Bezier, uniform, quasi-uniform) have B_SPLINE_CURVE's
+        // attributes only.
+        let one = instance.parts.len() == 1;
+        let simple = match (
+            args("B_SPLINE_CURVE_WITH_KNOTS"),
+            implied_simple(instance, IMPLIED_CURVES),
+        ) {
+            (Some(s), _) if one => {
+                s.count(9)?;
+                Some(s)
+            }
+            (_, Some(part)) if one => {
+                let s = Args::of(self.path, id, instance, part);
+                s.count(6)?;
+                Some(s)
+            }
+            _ => None,
+        };
+        let explicit = args("B_SPLINE_CURVE_WITH_KNOTS").is_some();
         // The simple instance has every attribute, the name first; a complex instance's
         // B_SPLINE_CURVE part only its own (degree, points, form, closed, self-intersect).
         let (head, knots_part, at): (Args<'_>, Option<Args<'_>>, usize) =
@@ -467,7 +482,7 @@ impl<'a> Geometry<'a> {
             .map(|&r| self.point(r, &head))
             .collect::<Result<Vec<_>, _>>()?;
         let n = points.len();
-        let knots = if at == 1 {
+        let knots = if at == 1 && explicit {
             expand_knots(&head, 6, 7)?
         } else if let Some(k) = &knots_part {
             k.count(3)?;
@@ -636,10 +651,23 @@ impl<'a> Geometry<'a> {
                 .part(name)
                 .map(|p| Args::of(self.path, id, instance, p))
         };
-        let simple = args("B_SPLINE_SURFACE_WITH_KNOTS").filter(|_| instance.parts.len() == 1);
-        if let Some(s) = &simple {
-            s.count(13)?;
-        }
+        let one = instance.parts.len() == 1;
+        let simple = match (
+            args("B_SPLINE_SURFACE_WITH_KNOTS"),
+            implied_simple(instance, IMPLIED_SURFACES),
+        ) {
+            (Some(s), _) if one => {
+                s.count(13)?;
+                Some(s)
+            }
+            (_, Some(part)) if one => {
+                let s = Args::of(self.path, id, instance, part);
+                s.count(8)?;
+                Some(s)
+            }
+            _ => None,
+        };
+        let explicit = args("B_SPLINE_SURFACE_WITH_KNOTS").is_some();
         // As for curves: B_SPLINE_SURFACE's own attributes in a complex instance (degrees,
         // points, form, closed in u and v, self-intersect), every attribute in the simple one.
         let (head, knots_part, at) = match (simple, args("B_SPLINE_SURFACE")) {
@@ -683,7 +711,7 @@ impl<'a> Geometry<'a> {
         if nu == 0 || nv == 0 {
             return Err(head.error("a B-spline surface without control points"));
         }
-        let (knots_u, knots_v) = if at == 1 {
+        let (knots_u, knots_v) = if at == 1 && explicit {
             (expand_knots(&head, 8, 10)?, expand_knots(&head, 9, 11)?)
         } else if let Some(k) = &knots_part {
             k.count(5)?;
@@ -804,6 +832,17 @@ fn expand_knots(a: &Args<'_>, m: usize, k: usize) -> Result<Vec<f64>, IoError> {
         knots.extend(std::iter::repeat_n(x, n as usize));
     }
     Ok(knots)
+}
+
+/// The curve subtypes whose knots are implied rather than listed.
+const IMPLIED_CURVES: &[&str] = &["BEZIER_CURVE", "UNIFORM_CURVE", "QUASI_UNIFORM_CURVE"];
+
+/// The surface subtypes whose knots are implied rather than listed.
+const IMPLIED_SURFACES: &[&str] = &["BEZIER_SURFACE", "UNIFORM_SURFACE", "QUASI_UNIFORM_SURFACE"];
+
+/// The part of `instance` named by one of `names` (a subtype with implied knots), if any.
+fn implied_simple<'i>(instance: &'i Instance, names: &[&str]) -> Option<&'i Part> {
+    names.iter().find_map(|n| instance.part(n))
 }
 
 /// The knots a Bezier, uniform or quasi-uniform B-spline implies (ISO 10303-42).
