@@ -14,7 +14,10 @@ distance to the shape (BRepExtrema_DistShapeShape with a vertex) and, for solids
 (BRepClass3d_SolidClassifier, STEP solids: a point inside must have a negative signed
 distance, a point outside a positive one; points within 1e-7 of the boundary are not
 classified; IGES faces bound no solid and must be unsigned). One line per
-model; exit status 1 on any failure.
+model; exit status 1 on any failure. Where karkas's distance is smaller than Open CASCADE's,
+karkas's foot point must lie on Open CASCADE's shape (Open CASCADE's own distance to it within
+the tolerance): then the smaller distance is attained on the shape and is counted as a minimum
+Open CASCADE missed.
 
 Usage: python3 tests/cad/check_inspect.py --karkas target/release/karkas [--keep DIR]
 """
@@ -52,11 +55,11 @@ from OCP.TopExp import TopExp_Explorer
 from OCP.TopoDS import TopoDS_Compound
 
 try:  # OCP 7.7
-    from OCP.TColgp import TColgp_Array2OfPnt as Array2OfPnt
+    from OCP.TColgp import TColgp_Array1OfPnt as Array1OfPnt, TColgp_Array2OfPnt as Array2OfPnt
 except ImportError:  # OCP 8: NCollection arrays
-    from OCP.collections import Array2_gp_Pnt as Array2OfPnt
+    from OCP.collections import Array1_gp_Pnt as Array1OfPnt, Array2_gp_Pnt as Array2OfPnt
 
-TOLERANCE = 1e-9
+TOLERANCE = 1e-9  # model units; for IGES files 1e-9 of the model's size (see check)
 POINTS = 600
 
 
@@ -124,9 +127,34 @@ def tilted_disc():
     return BRepBuilderAPI_MakeFace(BRepBuilderAPI_MakeWire(edge).Wire()).Face()
 
 
+def vase(skew=False):
+    """A B-spline profile turned 250 degrees about a tilted axis off the origin: one face on a
+    surface of revolution (IGES entity 120 with a B-spline generatrix, 126). The profile lies
+    in a half-plane through the axis, as a revolved sketch does; `skew` moves it off that
+    plane (a space curve turned about the axis)."""
+    from OCP.BRepPrimAPI import BRepPrimAPI_MakeRevol
+    from OCP.GeomAPI import GeomAPI_PointsToBSpline
+    from OCP.gp import gp_Ax1
+    origin = np.array([1.0, -2.0, 0.5])
+    a = np.array([0.1, 0.05, 1.0]) / np.linalg.norm([0.1, 0.05, 1.0])
+    x = np.cross([0.0, 1.0, 0.0], a)
+    x /= np.linalg.norm(x)
+    y = np.cross(a, x)
+    profile = [(2.0, 0.0, 0.0), (3.0, 0.3, 1.0), (2.2, 0.1, 2.5), (2.8, -0.2, 4.0)]
+    array = Array1OfPnt(1, len(profile))
+    for k, (r, off, h) in enumerate(profile):
+        q = origin + r * x + (off if skew else 0.0) * y + h * a
+        array.SetValue(k + 1, gp_Pnt(*q))
+    curve = GeomAPI_PointsToBSpline(array).Curve()
+    edge = BRepBuilderAPI_MakeEdge(curve).Edge()
+    axis = gp_Ax1(gp_Pnt(*origin), gp_Dir(*a))
+    return BRepPrimAPI_MakeRevol(edge, axis, math.radians(250.0)).Shape()
+
+
 def cases():
     """(name, shape, is_solid, formats). IGES gets the plate as NURBS faces (entity 128):
-    karkas does not read IGES's analytic planes (108) and surfaces of revolution (120). IGES
+    karkas does not read IGES's analytic planes (108). The torus and the vase reach IGES as
+    surfaces of revolution (entity 120) of an arc and of a B-spline. IGES
     faces (entity 144) bound no solid: their distances are unsigned. The torus is one face
     bounded by its two seam circles, each used twice, with a tilted axis off the origin."""
     plate = holed_plate()
@@ -136,7 +164,9 @@ def cases():
         ("plate-holes-nurbs", BRepBuilderAPI_NurbsConvert(plate, True).Shape(), True, ("igs",)),
         ("sphere", BRepPrimAPI_MakeSphere(gp_Pnt(1.0, 2.0, -3.0), 3.0).Shape(), True, ("step",)),
         ("bspline-face", bspline_face(), False, ("step", "igs")),
-        ("torus", torus, True, ("step",)),
+        ("torus", torus, True, ("step", "igs")),
+        ("vase", vase(), False, ("step", "igs")),
+        ("skew-vase", vase(skew=True), False, ("step", "igs")),
         ("torus-nurbs", BRepBuilderAPI_NurbsConvert(torus, True).Shape(), True, ("igs",)),
         ("conic-extrusions", conic_extrusions(), False, ("step",)),
         ("tilted-disc", tilted_disc(), False, ("step",)),
@@ -197,21 +227,32 @@ def run_karkas(karkas, model, points, folder):
         rows = list(csv.DictReader(f))
     distance = np.array([float(r["distance"]) for r in rows])
     signed = np.array([float(r["signed_distance"]) if r["signed_distance"] else np.nan for r in rows])
-    return distance, signed
+    feet = np.array([[float(r[k]) for k in ("foot_x", "foot_y", "foot_z")] for r in rows])
+    return distance, signed, feet
 
 
 def check(karkas, name, shape, solid, path, rng, folder):
     points, size = probe_points(shape, rng)
     start = time.time()
-    distance, signed = run_karkas(karkas, path, points, folder)
+    distance, signed, feet = run_karkas(karkas, path, points, folder)
     karkas_time = time.time() - start
     start = time.time()
     reference = occ_distances(shape, points)
     occ_time = time.time() - start
+    # Open CASCADE's IGES carries 10 significant digits: a surface of revolution's axis and
+    # angles (entity 120) move by about 1e-10 of the model's size in the file.
+    tolerance = TOLERANCE * max(1.0, size) if path.endswith(".igs") else TOLERANCE
+    # Where karkas is nearer than Open CASCADE, karkas's foot must lie on Open CASCADE's shape:
+    # then karkas's distance is attained on the shape and Open CASCADE's extrema missed it
+    # (BRepExtrema misses an interior minimum on a B-spline edge of the skew vase).
+    nearer = np.flatnonzero(distance < reference - tolerance)
+    on_shape = occ_distances(shape, feet[nearer]) <= tolerance if len(nearer) else np.array([], bool)
+    missed = int(on_shape.sum())
+    reference[nearer[on_shape]] = distance[nearer[on_shape]]
     error = np.abs(distance - reference)
     worst = int(np.argmax(error))
     problems = []
-    if error[worst] > TOLERANCE:
+    if error[worst] > tolerance:
         problems.append(f"point {worst} {points[worst].tolist()}: karkas {distance[worst]!r}, "
                         f"OCC {reference[worst]!r}")
     wrong_side = 0
@@ -236,7 +277,9 @@ def check(karkas, name, shape, solid, path, rng, folder):
     status = "FAIL" if problems else "ok  "
     sides = f", sign agrees on {classified - wrong_side}/{classified}" if solid else ""
     print(f"{status} {os.path.basename(path)}: {len(points)} points, size {size:.3g}, "
-          f"largest difference {error[worst]:.1e}{sides}; karkas {karkas_time:.2f}s, "
+          f"largest difference {error[worst]:.1e}{sides}"
+          + (f", {missed} nearer feet on OCC's shape that OCC missed" if missed else "")
+          + f"; karkas {karkas_time:.2f}s, "
           f"OCC {occ_time:.2f}s" + (f"; {problems[0]}" if problems else ""))
     return not problems
 

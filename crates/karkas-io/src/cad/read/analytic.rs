@@ -14,7 +14,7 @@
 use karkas::bspline::conic::{elliptic_arc, hyperbolic_arc, line_segment, parabolic_arc};
 use karkas::bspline::sweep::{cone, cylinder, extrusion, plane, revolution, sphere, torus, Frame};
 use karkas::bspline::{NurbsCurve, NurbsSurface};
-use karkas::geometry::CurveProjector;
+use karkas::geometry::{CurveProjector, SurfaceProjector};
 use karkas::{Curve, Point3};
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
@@ -496,9 +496,31 @@ impl BasisSurface {
                 .map_err(|e| e.to_string())?;
                 let near_axis =
                     |p: Point3| radial(&frame, p) < 1e-12 * (1.0 + (p - *origin).norm());
+                // The turn that carries the profile onto a point: its azimuth when the profile
+                // lies in the half-plane of the frame's x (a revolved sketch); otherwise the
+                // azimuth less that of the profile's point on the same circle, found by
+                // projecting onto the whole turn (whose v is the profile's parameter).
+                let size = g.control_points().iter().map(|q| (*q - *origin).norm());
+                let size = size.fold(0.0, f64::max);
+                let in_half_plane = g.control_points().iter().all(|q| {
+                    let d = *q - *origin;
+                    d.dot(frame.y).abs() <= 1e-12 * size && d.dot(frame.x) >= -1e-12 * size
+                });
+                let whole;
+                let projector = if in_half_plane {
+                    None
+                } else {
+                    whole =
+                        revolution(&g, *origin, *axis, (0.0, TAU)).map_err(|e| e.to_string())?;
+                    Some(SurfaceProjector::new(&whole, (64, 16), 0.0).map_err(|e| e.to_string())?)
+                };
+                let turn = |p: Point3| match &projector {
+                    None => azimuth(&frame, p),
+                    Some(s) => azimuth(&frame, p) - azimuth(&frame, g.eval(s.nearest(p).v)),
+                };
                 let (u, full) = angles(
                     Coordinate {
-                        value: &|p| azimuth(&frame, p),
+                        value: &turn,
                         angle: true,
                     }
                     .range(loops, &near_axis),
@@ -686,6 +708,48 @@ mod tests {
         let s = BasisSurface::Cylinder(f, 2.0).bounded(&around).unwrap();
         assert!(s.is_closed_u() && s.domain_u().length() == TAU);
         assert_eq!((s.domain_v().start, s.domain_v().end), (0.5, 1.5));
+    }
+
+    #[test]
+    fn a_profile_off_the_axis_plane_turns_through_the_loops_range() {
+        // A line from (2, 0, 0) to (2, 1, 3) in the frame (not in a plane through the z axis)
+        // turned from 0 to 250 degrees: the bottom circle starts at azimuth 0, the top one at
+        // atan(1/2); both span 250 degrees of turn.
+        let f = frame();
+        let (p0, p1) = (f.at(2.0, 0.0, 0.0), f.at(2.0, 1.0, 3.0));
+        let profile = BasisCurve::Nurbs(line_segment(p0, p1, (0.0, 1.0)).unwrap());
+        let end = 250f64.to_radians();
+        let top = 0.5f64.atan();
+        let r = 5f64.sqrt();
+        let line_at = move |turn: f64, s: f64| {
+            let (x, y, z) = (2.0, s, 3.0 * s);
+            let (c, sn) = (turn.cos(), turn.sin());
+            f.at(c * x - sn * y, sn * x + c * y, z)
+        };
+        let loops = vec![vec![
+            circle_edge(&f, 2.0, 0.0, 0.0, end),
+            SampledEdge::new(Box::new(move |s| line_at(end, s))),
+            circle_edge(&f, r, 3.0, top + end, top),
+            SampledEdge::new(Box::new(move |s| line_at(0.0, 1.0 - s))),
+        ]];
+        let surface = BasisSurface::Revolution {
+            profile,
+            origin: f.origin,
+            axis: f.z,
+        };
+        let s = surface.bounded(&loops).unwrap();
+        let du = s.domain_u();
+        assert!(
+            (du.start).abs() < 1e-9 && (du.end - end).abs() < 1e-9,
+            "{du:?}"
+        );
+        let dv = s.domain_v();
+        for k in 0..=4 {
+            let v = dv.start + dv.length() * k as f64 / 4.0;
+            let t = (v - dv.start) / dv.length();
+            assert!(s.eval(du.start, v).distance(line_at(0.0, t)) < 1e-12);
+            assert!(s.eval(du.end, v).distance(line_at(end, t)) < 1e-12);
+        }
     }
 
     #[test]

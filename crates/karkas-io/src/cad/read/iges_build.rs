@@ -14,6 +14,7 @@ use std::io::BufRead;
 use std::path::Path;
 
 use karkas::bspline::conic::{elliptic_arc, line_segment};
+use karkas::bspline::sweep::revolution;
 use karkas::bspline::{NurbsCurve, NurbsSurface};
 use karkas::shape::{Edge, EdgeLoop, Face, Shape};
 use karkas::{Curve, Grid, Point3, Surface};
@@ -23,7 +24,7 @@ use super::model::{CadFormat, CadModel, LengthUnit, Unread};
 use crate::error::{IoError, Location};
 
 /// The entity types read.
-const READ: &[i64] = &[100, 102, 110, 124, 126, 128, 142, 144];
+const READ: &[i64] = &[100, 102, 110, 120, 124, 126, 128, 142, 144];
 
 /// Geometric entity types karkas does not read, with their names.
 const UNREAD: &[(i64, &str)] = &[
@@ -33,7 +34,6 @@ const UNREAD: &[(i64, &str)] = &[
     (112, "parametric spline curve"),
     (114, "parametric spline surface"),
     (118, "ruled surface"),
-    (120, "surface of revolution"),
     (122, "tabulated cylinder"),
     (130, "offset curve"),
     (140, "offset surface"),
@@ -344,15 +344,20 @@ impl<'a> Builder<'a> {
         Ok(c.with_closed(closed && ends_meet))
     }
 
-    /// Entity 128 in model space.
+    /// Entity 128 or 120 in model space.
     fn surface(
         &mut self,
         pointer: i64,
         from: &Params<'_>,
     ) -> Result<Got<NurbsSurface<3>>, IoError> {
         self.enter(pointer, from)?;
-        self.visiting.remove(&pointer);
         let p = self.params(pointer, Some(from))?;
+        if p.entry.kind == 120 {
+            let s = self.revolution(&p);
+            self.visiting.remove(&pointer);
+            return s;
+        }
+        self.visiting.remove(&pointer);
         if p.entry.kind != 128 {
             let kind = p.entry.kind;
             let name = UNREAD
@@ -424,6 +429,39 @@ impl<'a> Builder<'a> {
         Ok(Got::Read(s.with_closed(cu, cv)))
     }
 
+    /// Entity 120: the generatrix (one line, arc or B-spline) turned about the axis line from
+    /// the start to the terminate angle (radians, right-handed about the axis's direction from
+    /// its first point to its second), exactly as a rational surface whose `u` is the angle
+    /// at its knots and `v` the generatrix's parameter ([`revolution`]). Its parameter space
+    /// is not IGES's (whose angle is linear), so the faces it carries are bounded by their
+    /// model-space curves.
+    fn revolution(&mut self, p: &Params<'_>) -> Result<Got<NurbsSurface<3>>, IoError> {
+        let one = |got: Got<Vec<NurbsCurve<3>>>, what: &str| match got {
+            Got::Read(mut pieces) if pieces.len() == 1 => Ok(Ok(pieces.remove(0))),
+            Got::Read(pieces) => Err(p.error(format!(
+                "a surface of revolution's {what} must be one curve, got {} pieces",
+                pieces.len()
+            ))),
+            Got::Skip(what, why) => Ok(Err(Got::Skip(what, why))),
+        };
+        let axis = match one(self.curve(p.int(1)?, p)?, "axis")? {
+            Ok(c) => c,
+            Err(skip) => return Ok(skip),
+        };
+        let generatrix = match one(self.curve(p.int(2)?, p)?, "generatrix")? {
+            Ok(c) => c,
+            Err(skip) => return Ok(skip),
+        };
+        let (start, end) = (p.number(3)?, p.number(4)?);
+        let map = self.transform(p.entry, p)?;
+        let d = axis.domain();
+        let (a, b) = (map.apply(axis.eval(d.start)), map.apply(axis.eval(d.end)));
+        let profile = generatrix.map_points(|q| map.apply(q));
+        let s = revolution(&profile, a, b - a, (start, end)).map_err(|e| p.error(e.to_string()))?;
+        let whole = ((end - start) - std::f64::consts::TAU).abs() <= 1e-9;
+        Ok(Got::Read(s.with_closed(whole, false)))
+    }
+
     /// Entity 142: the loop of model-space edges and the parameter-space curves.
     fn boundary(
         &mut self,
@@ -431,6 +469,7 @@ impl<'a> Builder<'a> {
         from: &Params<'_>,
         surface: &NurbsSurface<3>,
         outer: bool,
+        own_parameters: bool,
     ) -> Result<Got<EdgeLoop>, IoError> {
         self.enter(pointer, from)?;
         self.visiting.remove(&pointer);
@@ -440,7 +479,13 @@ impl<'a> Builder<'a> {
         }
         let (b, c, pref) = (p.int(3)?, p.int(4)?, p.int(5)?);
         let mut parameter_curves = Vec::new();
-        if b != 0 && pref != 2 {
+        if !own_parameters && c == 0 {
+            return Ok(Got::Skip(
+                "trimmed surfaces on entity 120 bounded in parameter space only".into(),
+                "the face's loop has no model-space curve",
+            ));
+        }
+        if b != 0 && pref != 2 && own_parameters {
             match self.curve(b, &p)? {
                 Got::Read(pieces) => {
                     parameter_curves = pieces
@@ -484,7 +529,10 @@ impl<'a> Builder<'a> {
     fn trimmed(&mut self, pointer: i64) -> Result<Got<Face>, IoError> {
         let p = self.params(pointer, None)?;
         self.used.insert(pointer);
-        let surface = match self.surface(p.int(1)?, &p)? {
+        let basis = p.int(1)?;
+        // A surface of revolution's parameters differ from IGES's: its loops are inverted.
+        let own_parameters = self.params(basis, Some(&p))?.entry.kind != 120;
+        let surface = match self.surface(basis, &p)? {
             Got::Read(s) => s,
             Got::Skip(what, why) => return Ok(Got::Skip(what, why)),
         };
@@ -492,13 +540,13 @@ impl<'a> Builder<'a> {
         let n2 = p.count(3, 1 << 20)?;
         let mut loops = Vec::new();
         if n1 != 0 {
-            match self.boundary(p.int(4)?, &p, &surface, true)? {
+            match self.boundary(p.int(4)?, &p, &surface, true, own_parameters)? {
                 Got::Read(l) => loops.push(l),
                 Got::Skip(what, why) => return Ok(Got::Skip(what, why)),
             }
         }
         for i in 0..n2 {
-            match self.boundary(p.int(5 + i)?, &p, &surface, false)? {
+            match self.boundary(p.int(5 + i)?, &p, &surface, false, own_parameters)? {
                 Got::Read(l) => loops.push(l),
                 Got::Skip(what, why) => return Ok(Got::Skip(what, why)),
             }
@@ -602,7 +650,7 @@ pub(crate) fn read_iges(name: &Path, reader: &mut dyn BufRead) -> Result<CadMode
         }
         let from = b.params(pointer, None)?;
         match kind {
-            128 => match b.surface(pointer, &from)? {
+            120 | 128 => match b.surface(pointer, &from)? {
                 Got::Read(s) => shape.faces.push(Face::whole(s)),
                 Got::Skip(what, why) => b.skip(what, why),
             },

@@ -445,10 +445,13 @@ fn edge_curve(
     let size = start.distance(end);
     match curve.period() {
         Some(p) => {
-            // Same vertex (or the same point): the whole turn from it.
+            // Same vertex (or the same point): the whole turn from it. Two vertices whose
+            // stretch passes the curve's parameter 0 (from 300 to 30 degrees): on past a turn.
             let span = curve.point(lo).distance(curve.point(lo + 0.5 * p));
-            if hi <= lo + 1e-12 * p || (size <= 1e-9 * span && (hi - lo).abs() < 1e-6 * p) {
+            if hi.to_bits() == lo.to_bits() || (size <= 1e-9 * span && (hi - lo).abs() < 1e-6 * p) {
                 hi = lo + p;
+            } else if hi <= lo + 1e-12 * p {
+                hi += p;
             }
             // More than a turn by more than rounding: `lo + p - lo` exceeds `p` by an ulp when
             // `lo` lies just below a turn (a full circle whose vertex is at angle -6e-16).
@@ -490,6 +493,43 @@ fn edge_curve(
 mod tests {
     use super::*;
     use karkas::bspline::sweep::Frame;
+
+    #[test]
+    fn an_arc_across_the_circles_parameter_zero_is_the_short_way_round() {
+        // From 300 to 30 degrees (90 degrees through 0), and the same arc's vertex just below
+        // a turn (an angle of -4e-6 rad, as Open CASCADE writes a revolved profile's circle).
+        let frame = Frame::new(
+            Point3::new([1.0, -2.0, 0.5]),
+            Point3::new([0.1, 0.05, 1.0]),
+            Point3::new([1.0, 0.0, 0.0]),
+        )
+        .unwrap();
+        let circle = BasisCurve::Conic {
+            frame,
+            a: 2.0,
+            b: 2.0,
+        };
+        for (from, to, length) in [(300.0f64, 30.0f64, 90.0f64), (-0.00023, 249.99977, 250.0)] {
+            let (a, b) = (
+                circle.point(from.to_radians()),
+                circle.point(to.to_radians()),
+            );
+            for same_sense in [true, false] {
+                let (start, end) = if same_sense { (a, b) } else { (b, a) };
+                let (curve, along) = edge_curve(&circle, start, end, same_sense)
+                    .unwrap()
+                    .unwrap();
+                let d = curve.domain();
+                assert!(
+                    (d.length() - length.to_radians()).abs() < 1e-9,
+                    "{from} to {to}: {d:?}"
+                );
+                assert_eq!(along, same_sense);
+                let ends = [curve.eval(d.start), curve.eval(d.end)];
+                assert!(ends[0].distance(a) < 1e-12 && ends[1].distance(b) < 1e-12);
+            }
+        }
+    }
 
     #[test]
     fn a_full_circle_on_one_vertex_just_below_a_turn_is_the_whole_circle() {
