@@ -25,8 +25,8 @@
 //!
 //! The loft's span station of a section is `s` times the reference axis's length.
 
+use super::pchip::pchip_slopes;
 use super::placement::SectionFrame;
-use super::span::pchip_slopes;
 use crate::spline::hermite_basis;
 use crate::{Error, Point3, Result};
 

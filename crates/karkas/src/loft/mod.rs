@@ -58,13 +58,16 @@
 mod blade;
 mod compatible;
 mod mirror;
+mod pchip;
+mod placed_slopes;
 mod placement;
 mod profile;
 mod span;
 mod surface;
 
 pub use blade::{blade_frames, BladeShape, Distribution};
+pub use pchip::pchip_slopes;
 pub use placement::{wing_frames, SectionFrame, WingPlacement};
 pub use profile::{Profile, MIN_SECTION_POINTS, UNIT_CHORD_SLACK};
-pub use span::{pchip_slopes, SpanRule};
+pub use span::SpanRule;
 pub use surface::{Loft, LoftOptions, LoftSection, DEFAULT_TOLERANCE};

@@ -21,10 +21,13 @@
 
 #![allow(clippy::needless_range_loop)] // slopes and values of a grid's columns by station
 
+use super::pchip::pchip_slopes;
+use super::placed_slopes::placed_slopes;
+use super::placement::SectionFrame;
 use crate::bspline::{hermite_curve, BSplineSurface, ToBSplineCurve};
 use crate::core::Grid;
 use crate::param::{CubicSpline, SplineEnds};
-use crate::{Error, Point3, Result};
+use crate::{Error, Point2, Point3, Result};
 
 /// How the surface runs between sections.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -73,8 +76,11 @@ impl std::str::FromStr for SpanRule {
 /// combination `weights` of the control points from `first`, and the trailing-edge pair (the
 /// first and last control points).
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct KeptLines {
+pub(crate) struct KeptLines<'a> {
     pub leading_edge: Option<(usize, [f64; 4])>,
+    /// The sections' frames and their control points in their planes, when the loft knows
+    /// them: the slopes are then taken through the placement (`placed_slopes.rs`).
+    pub placement: Option<(&'a [SectionFrame], &'a Grid<Point2>)>,
 }
 
 /// The surface over the span `stations` through the placed control nets `nets` (row `k`
@@ -135,34 +141,33 @@ pub(crate) fn span_surface(
 /// The monotone rule's slopes of every control point at every station (see the module docs).
 fn monotone_slopes(stations: &[f64], nets: &Grid<Point3>, kept: KeptLines) -> Grid<Point3> {
     let (n, m) = (nets.rows(), nets.cols());
-    let mut slopes = Grid::from_fn(n, m, |_, _| Point3::ZERO);
-    let mut values = vec![0.0; n];
-    let mut out = vec![0.0; n];
-    for i in 0..m {
-        for c in 0..3 {
-            for k in 0..n {
-                values[k] = nets.get(k, i)[c];
-            }
-            pchip_slopes(stations, &values, &mut out);
-            for k in 0..n {
-                slopes.get_mut(k, i)[c] = out[k];
-            }
-        }
-    }
-    // The trailing edge: its middle and its gap, each interpolated on its own.
+    let placed = kept.placement.and_then(|(frames, profiles)| {
+        placed_slopes(stations, frames, profiles, kept.leading_edge)
+    });
+    let through_placement = placed.is_some();
+    let mut slopes = placed.unwrap_or_else(|| coordinate_slopes(stations, nets));
+    // The trailing edge: its middle (through the placement, or interpolated on its own) and
+    // its gap, interpolated on its own.
     for c in 0..3 {
-        let (mut mid, mut gap) = (vec![0.0; n], vec![0.0; n]);
-        for k in 0..n {
-            let (a, b) = (nets.get(k, 0)[c], nets.get(k, m - 1)[c]);
-            mid[k] = 0.5 * (a + b);
-            gap[k] = a - b;
-        }
-        let (mut dm, mut dg) = (vec![0.0; n], vec![0.0; n]);
-        pchip_slopes(stations, &mid, &mut dm);
+        let gap: Vec<f64> = (0..n)
+            .map(|k| nets.get(k, 0)[c] - nets.get(k, m - 1)[c])
+            .collect();
+        let mid: Vec<f64> = (0..n)
+            .map(|k| 0.5 * (nets.get(k, 0)[c] + nets.get(k, m - 1)[c]))
+            .collect();
+        let (mut dg, mut dm) = (vec![0.0; n], vec![0.0; n]);
         pchip_slopes(stations, &gap, &mut dg);
+        if through_placement {
+            for k in 0..n {
+                dm[k] = 0.5 * (slopes.get(k, 0)[c] + slopes.get(k, m - 1)[c]);
+            }
+        } else {
+            pchip_slopes(stations, &mid, &mut dm);
+        }
         for k in 0..n {
-            slopes.get_mut(k, 0)[c] = dm[k] + 0.5 * dg[k];
-            slopes.get_mut(k, m - 1)[c] = dm[k] - 0.5 * dg[k];
+            let mid = dm[k];
+            slopes.get_mut(k, 0)[c] = mid + 0.5 * dg[k];
+            slopes.get_mut(k, m - 1)[c] = mid - 0.5 * dg[k];
         }
     }
     // The leading edge: the least change of its control points' slopes that gives it the
@@ -187,42 +192,24 @@ fn monotone_slopes(stations: &[f64], nets: &Grid<Point3>, kept: KeptLines) -> Gr
     slopes
 }
 
-/// The slopes of the shape-preserving piecewise cubic Hermite interpolant of `(x, y)`
-/// (Fritsch and Carlson's, with SciPy's `PchipInterpolator` choices: the weighted harmonic
-/// mean of the neighbouring secants inside, zero where they differ in sign, and the
-/// shape-preserving three-point formula at the ends; the secant for two points).
-pub fn pchip_slopes(x: &[f64], y: &[f64], out: &mut [f64]) {
-    let n = x.len();
-    debug_assert!(n >= 2 && y.len() == n && out.len() == n);
-    let h = |k: usize| x[k + 1] - x[k];
-    let delta = |k: usize| (y[k + 1] - y[k]) / h(k);
-    if n == 2 {
-        out[0] = delta(0);
-        out[1] = delta(0);
-        return;
-    }
-    for k in 1..n - 1 {
-        let (d0, d1) = (delta(k - 1), delta(k));
-        out[k] = if d0 * d1 <= 0.0 {
-            0.0
-        } else {
-            let (h0, h1) = (h(k - 1), h(k));
-            let (w1, w2) = (2.0 * h1 + h0, h1 + 2.0 * h0);
-            (w1 + w2) / (w1 / d0 + w2 / d1)
-        };
-    }
-    let edge = |h0: f64, h1: f64, d0: f64, d1: f64| -> f64 {
-        let d = ((2.0 * h0 + h1) * d0 - h0 * d1) / (h0 + h1);
-        if d.signum() != d0.signum() || d0 == 0.0 {
-            0.0
-        } else if d0.signum() != d1.signum() && d.abs() > 3.0 * d0.abs() {
-            3.0 * d0
-        } else {
-            d
+/// Fritsch and Carlson's slopes of every coordinate of every control point on its own.
+fn coordinate_slopes(stations: &[f64], nets: &Grid<Point3>) -> Grid<Point3> {
+    let (n, m) = (nets.rows(), nets.cols());
+    let mut slopes = Grid::from_fn(n, m, |_, _| Point3::ZERO);
+    let mut values = vec![0.0; n];
+    let mut out = vec![0.0; n];
+    for i in 0..m {
+        for c in 0..3 {
+            for k in 0..n {
+                values[k] = nets.get(k, i)[c];
+            }
+            pchip_slopes(stations, &values, &mut out);
+            for k in 0..n {
+                slopes.get_mut(k, i)[c] = out[k];
+            }
         }
-    };
-    out[0] = edge(h(0), h(1), delta(0), delta(1));
-    out[n - 1] = edge(h(n - 2), h(n - 3), delta(n - 2), delta(n - 3));
+    }
+    slopes
 }
 
 #[cfg(test)]

@@ -99,8 +99,8 @@ impl Loft {
     /// ```
     pub fn new(sections: &[LoftSection], options: &LoftOptions) -> Result<Loft> {
         let (fit, split) = Loft::fit(sections, options)?;
-        let nets = Grid::from_fn(sections.len(), fit.controls[0].len(), |k, i| {
-            sections[k].frame.place(fit.controls[k][i])
+        let profiles = Grid::from_fn(sections.len(), fit.controls[0].len(), |k, i| {
+            fit.controls[k][i]
         });
         // The deviations in model units: at most the plane's by the frame's stretch.
         let deviations = fit
@@ -113,7 +113,7 @@ impl Loft {
             options,
             (split, fit.rounds),
             fit.knots,
-            nets,
+            (sections.iter().map(|s| s.frame).collect(), profiles),
             sections.iter().map(|s| s.station).collect(),
             deviations,
             sections.iter().map(|s| s.scale).collect(),
@@ -190,18 +190,23 @@ impl Loft {
         Ok((fit_compatible(&fit_sections)?, split))
     }
 
-    /// The loft of the placed control nets `nets` (a row per station) on the sections' knots.
+    /// The loft of the control nets `profiles` (a row per station, in the sections' planes)
+    /// placed by `frames`, on the sections' knots.
     fn assemble(
         options: &LoftOptions,
         (split, rounds): (bool, usize),
         knots: Vec<f64>,
-        nets: Grid<Point3>,
+        (frames, profiles): (Vec<SectionFrame>, Grid<Point2>),
         stations: Vec<f64>,
         deviations: Vec<f64>,
         scales: Vec<f64>,
     ) -> Result<Loft> {
+        let nets = Grid::from_fn(profiles.rows(), profiles.cols(), |k, i| {
+            frames[k].place(*profiles.get(k, i))
+        });
         let kept = KeptLines {
             leading_edge: split.then(|| basis_at(&knots, 0.5)),
+            placement: Some((&frames, &profiles)),
         };
         let surface = span_surface(options.rule, &stations, &nets, knots, kept)?;
         Ok(Loft {
@@ -326,7 +331,8 @@ impl Loft {
         let sections = airfoil_sections(profiles, &frames, &stations, &chords)?;
         let (fit, split) = Loft::fit(&sections, options)?;
         let length = shape.axis_length();
-        let mut rows: Vec<Vec<Point3>> = Vec::new();
+        let mut rows: Vec<Vec<Point2>> = Vec::new();
+        let mut placed = Vec::new();
         let (mut at, mut deviations, mut scales) = (Vec::new(), Vec::new(), Vec::new());
         for (k, &s) in positions.iter().enumerate() {
             if k > 0 {
@@ -341,34 +347,26 @@ impl Loft {
                             reason: "the chord between two airfoils must be positive",
                         });
                     }
-                    rows.push(
-                        a.iter()
-                            .zip(b)
-                            .map(|(&p, &q)| frame.place(p + (q - p) * w))
-                            .collect(),
-                    );
+                    rows.push(a.iter().zip(b).map(|(&p, &q)| p + (q - p) * w).collect());
+                    placed.push(frame);
                     at.push(g * length);
                     deviations.push(0.0);
                     scales.push(chord);
                 }
             }
-            rows.push(
-                fit.controls[k]
-                    .iter()
-                    .map(|&p| frames[k].place(p))
-                    .collect(),
-            );
+            rows.push(fit.controls[k].clone());
+            placed.push(frames[k]);
             at.push(stations[k]);
             deviations.push(fit.deviations[k] * frames[k].stretch());
             scales.push(chords[k]);
         }
         let m = rows[0].len();
-        let nets = Grid::from_fn(rows.len(), m, |k, i| rows[k][i]);
+        let profiles = Grid::from_fn(rows.len(), m, |k, i| rows[k][i]);
         Loft::assemble(
             options,
             (split, fit.rounds),
             fit.knots,
-            nets,
+            (placed, profiles),
             at,
             deviations,
             scales,
