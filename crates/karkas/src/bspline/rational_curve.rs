@@ -3,7 +3,9 @@
 //! every order by the quotient rule (A4.2), exact sub-curves by knot insertion (A5.1).
 
 use super::rational::{check_general_knots, check_weights, rational_curve_derivatives};
-use super::span_basis::{local_derivatives, span_of, Homogeneous, Linear, MAX_SPAN, SMALL_SPAN};
+use super::span_basis::{
+    local_derivatives, span_of, Homogeneous, Linear, MAX_SPAN, SMALL_SPAN, TINY_SPAN,
+};
 use super::{BSplineCurve, ToBSplineCurve};
 use crate::core::{Curve, Interval, PiecewiseCurve, Side};
 use crate::{Error, Point, Result};
@@ -254,7 +256,9 @@ impl<const D: usize> NurbsCurve<D> {
     /// [`derivatives_into`](Self::derivatives_into) with the rational piece of knot span
     /// `span` (continued to `t`).
     fn derivatives_on_span(&self, t: f64, span: usize, out: &mut [Point<D>]) {
-        if self.degree < SMALL_SPAN {
+        if self.degree < TINY_SPAN {
+            self.derivatives_on_span_in::<TINY_SPAN>(t, span, out);
+        } else if self.degree < SMALL_SPAN {
             self.derivatives_on_span_in::<SMALL_SPAN>(t, span, out);
         } else {
             self.derivatives_on_span_in::<MAX_SPAN>(t, span, out);

@@ -5,6 +5,7 @@
 use super::rational::{check_general_knots, check_weights, rational_surface_derivatives};
 use super::span_basis::{
     basis_derivative, local_derivatives, span_of, Homogeneous, Linear, MAX_SPAN, SMALL_SPAN,
+    TINY_SPAN,
 };
 use super::{BSplineSurface, NurbsCurve, ToBSplineSurface};
 use crate::core::{Grid, Interval, Surface};
@@ -363,7 +364,9 @@ impl<const D: usize> NurbsSurface<D> {
 
     /// `[S, S_u, S_v, S_uu, S_uv, S_vv]` at `(u, v)`, without allocating.
     pub fn second_order(&self, u: f64, v: f64) -> SecondOrder<D> {
-        if self.degree_u < SMALL_SPAN && self.degree_v < SMALL_SPAN {
+        if self.degree_u < TINY_SPAN && self.degree_v < TINY_SPAN {
+            self.second_order_in::<TINY_SPAN>(u, v)
+        } else if self.degree_u < SMALL_SPAN && self.degree_v < SMALL_SPAN {
             self.second_order_in::<SMALL_SPAN>(u, v)
         } else {
             self.second_order_in::<MAX_SPAN>(u, v)
@@ -475,7 +478,9 @@ impl<const D: usize> Surface<D> for NurbsSurface<D> {
     }
 
     fn eval(&self, u: f64, v: f64) -> Point<D> {
-        if self.degree_u < SMALL_SPAN && self.degree_v < SMALL_SPAN {
+        if self.degree_u < TINY_SPAN && self.degree_v < TINY_SPAN {
+            self.eval_in::<TINY_SPAN>(u, v)
+        } else if self.degree_u < SMALL_SPAN && self.degree_v < SMALL_SPAN {
             self.eval_in::<SMALL_SPAN>(u, v)
         } else {
             self.eval_in::<MAX_SPAN>(u, v)

@@ -27,6 +27,11 @@ pub(crate) const MAX_SPAN: usize = MAX_DEGREE + 1;
 /// arrays of `MAX_SPAN` on every evaluation cost more than the arithmetic of a low degree.
 pub(crate) const SMALL_SPAN: usize = 16;
 
+/// The working arrays of spans of degree below this (lines, conics, cubics: most of what CAD
+/// files hold) are this long: zeroing and copying arrays of [`SMALL_SPAN`] still cost more than
+/// the arithmetic of degrees 1 to 3.
+pub(crate) const TINY_SPAN: usize = 4;
+
 /// Writes the `k`-th derivatives of the basis functions of degree `p` that are nonzero on the
 /// span `span` (`knots[span] <= t < knots[span + 1]`, `p <= span`, `span + p + 1 <
 /// knots.len()`) at `t` into `out[0..=p]`: `out[c]` belongs to the function (and control
@@ -39,7 +44,9 @@ pub(crate) fn basis_derivative(
     k: usize,
     out: &mut [f64],
 ) {
-    if p < SMALL_SPAN {
+    if p < TINY_SPAN {
+        basis_derivative_in::<TINY_SPAN>(p, knots, span, t, k, out);
+    } else if p < SMALL_SPAN {
         basis_derivative_in::<SMALL_SPAN>(p, knots, span, t, k, out);
     } else {
         basis_derivative_in::<MAX_SPAN>(p, knots, span, t, k, out);
@@ -176,7 +183,9 @@ pub(crate) fn local_derivatives<T: Linear>(
     local: &[T],
     out: &mut [T],
 ) {
-    if p < SMALL_SPAN {
+    if p < TINY_SPAN {
+        local_derivatives_in::<T, TINY_SPAN>(p, knots, span, t, local, out);
+    } else if p < SMALL_SPAN {
         local_derivatives_in::<T, SMALL_SPAN>(p, knots, span, t, local, out);
     } else {
         local_derivatives_in::<T, MAX_SPAN>(p, knots, span, t, local, out);

@@ -5,7 +5,7 @@
 //! most 2^12 gaps per edge). A sample is inverted onto the surface by Newton's method from
 //! the previous sample's parameters, or by a global search ([`SurfaceProjector`]) for the
 //! first sample of a loop and wherever Newton lands farther than the edge lies from the
-//! surface. In a closed (periodic) direction the parameters are unwrapped along the loop; a
+//! surface; on a plane, in closed form (`flat.rs`). In a closed (periodic) direction the parameters are unwrapped along the loop; a
 //! loop that turns once around that direction (a cap of a cylinder's side, the rim of a
 //! hemisphere) is closed along the high side of the parameter rectangle, and when the face
 //! does not lie on the high side of the highest such loop (to the left of a loop seen from
@@ -16,6 +16,7 @@
 //! A point is inside the face when a ray from it crosses the loops an odd number of times.
 //! A face whose only loop runs along the rectangle's border is the whole surface.
 
+use super::flat::Flat;
 use super::{Edge, Face, NurbsSurface};
 use crate::core::{Curve, Interval, Surface};
 use crate::geometry::surface_nearest::newton_foot;
@@ -324,6 +325,8 @@ fn sample_parameter_curves(
 /// Inverts points of a face's edges onto its surface.
 struct Inverter<'a> {
     surface: &'a NurbsSurface<3>,
+    /// The surface's affine form when it is a plane: feet in closed form.
+    flat: Option<Flat>,
     projector: Option<SurfaceProjector<'a, NurbsSurface<3>, 3>>,
     /// The size of the surface's control net.
     size: f64,
@@ -342,6 +345,7 @@ impl<'a> Inverter<'a> {
         let (du, dv) = (surface.domain_u(), surface.domain_v());
         Ok(Inverter {
             surface,
+            flat: Flat::of(surface),
             projector: None,
             size,
             uv_size: du.length().hypot(dv.length()),
@@ -414,9 +418,13 @@ impl<'a> Inverter<'a> {
         p
     }
 
-    /// The parameters of the point of the surface nearest `q`: Newton from the previous
-    /// sample, or the global search.
+    /// The parameters of the point of the surface nearest `q`: the orthogonal projection on
+    /// a plane, else Newton from the previous sample, or the global search.
     fn invert(&mut self, q: Point3) -> Result<[f64; 2]> {
+        if let Some((u, v)) = self.flat.and_then(|flat| flat.foot(q)) {
+            self.previous = Some([u, v]);
+            return Ok([u, v]);
+        }
         let s = self.surface;
         if let Some(start) = self.previous {
             let closed = (s.is_closed_u(), s.is_closed_v());

@@ -18,7 +18,11 @@
 //!    borders, as in [`SurfaceProjector`](crate::geometry::SurfaceProjector)), accepted when
 //!    the foot lies in the face ([`FaceDomain::contains`]); a segment by Newton's method on
 //!    the edge curve within the edge. A cell of the face found best whose parameters hold the
-//!    best foot is skipped (Newton would find the same point).
+//!    best foot is skipped (Newton would find the same point). A face on a plane (`flat.rs`,
+//!    in closed form) or a whole cylinder (`cylinder.rs`) is solved once, at its first
+//!    candidate cell or segment: its other cells would give the same foot, and when that
+//!    foot lies in the face it is nearer than the face's edges, whose segments are then
+//!    skipped too.
 //!
 //! The distance is signed for faces that bound a solid: positive on the side the face's
 //! normal points to (outside), from the normal at the foot (at an edge, the normal of the
@@ -30,12 +34,14 @@ use kiddo::immutable::float::kdtree::ImmutableKdTree;
 use kiddo::SquaredEuclidean;
 use rayon::prelude::*;
 
+use super::cylinder::is_whole_cylinder;
+use super::flat::Flat;
 use super::inside::InsideIndex;
 use super::{FaceDomain, Shape};
 use crate::bspline::NurbsCurve;
 use crate::core::{Curve, Interval, Surface};
 use crate::geometry::surface_nearest::newton_foot;
-use crate::geometry::SurfaceProjector;
+use crate::geometry::{SurfaceNearest, SurfaceProjector};
 use crate::{Point3, Result};
 
 /// Cells across the shape's diagonal: the size of a cell.
@@ -106,6 +112,17 @@ struct Cell {
     radius: f64,
 }
 
+impl Cell {
+    /// The surface parameters Newton's method starts from: the cell's centre, or the
+    /// segment's middle.
+    fn start(&self) -> (f64, f64) {
+        match self.place {
+            Place::Surface { u, v } => (0.5 * (u.0 + u.1), 0.5 * (v.0 + v.1)),
+            Place::Edge { uv, .. } => uv,
+        }
+    }
+}
+
 /// A shape prepared for nearest-point queries.
 ///
 /// ```
@@ -129,6 +146,11 @@ pub struct ShapeProjector<'a> {
     domains: Vec<FaceDomain>,
     /// The faces' inside tests.
     insides: Vec<InsideIndex>,
+    /// The affine form of each face on a plane.
+    flats: Vec<Option<Flat>>,
+    /// Faces whose surface has one local minimum of the distance (planes, whole cylinders):
+    /// searched once per query.
+    once: Vec<bool>,
     cells: Vec<Cell>,
     tree: ImmutableKdTree<f64, u64, 3, 32>,
     /// Points on the shape (cell centres inside their faces, segment centres): the cell each
@@ -171,6 +193,13 @@ impl<'a> ShapeProjector<'a> {
             .map(FaceDomain::of)
             .collect::<Result<_>>()?;
         let insides: Vec<InsideIndex> = domains.par_iter().map(InsideIndex::new).collect();
+        let flats: Vec<Option<Flat>> = shape.faces.iter().map(|f| Flat::of(&f.surface)).collect();
+        let once = shape
+            .faces
+            .iter()
+            .zip(&flats)
+            .map(|(f, flat)| flat.is_some() || is_whole_cylinder(&f.surface))
+            .collect();
         let per_face: Vec<(Vec<Cell>, Vec<usize>)> = shape
             .faces
             .par_iter()
@@ -192,6 +221,8 @@ impl<'a> ShapeProjector<'a> {
             shape,
             domains,
             insides,
+            flats,
+            once,
             tree: ImmutableKdTree::new_from_slice(&coords),
             anchor_tree: ImmutableKdTree::new_from_slice(&anchor_coords),
             cells,
@@ -233,12 +264,35 @@ impl<'a> ShapeProjector<'a> {
             .collect();
         candidates.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
         let mut searched_face_foot = false;
+        // Faces with one foot searched (see `flat.rs`, `cylinder.rs`), and whether their foot
+        // lies in the face.
+        let mut once_faces: Vec<(usize, bool)> = Vec::new();
         for (lower, k) in candidates {
             if lower >= best.distance {
                 break;
             }
             let cell = &self.cells[k];
-            if let Place::Surface { u, v } = cell.place {
+            if self.once[cell.face] {
+                let inside = match once_faces.iter().find(|f| f.0 == cell.face) {
+                    Some(&(_, inside)) => inside,
+                    None => {
+                        let found = self.surface_foot(cell.face, cell.start(), q);
+                        once_faces.push((cell.face, found.is_some()));
+                        if let Some(found) = found {
+                            if found.distance < best.distance {
+                                searched_face_foot = true;
+                                best = found;
+                            }
+                        }
+                        found.is_some()
+                    }
+                };
+                // The face's one foot is searched; when it lies in the face it is nearer
+                // than every point of the face's edges too.
+                if inside || matches!(cell.place, Place::Surface { .. }) {
+                    continue;
+                }
+            } else if let Place::Surface { u, v } = cell.place {
                 if searched_face_foot
                     && cell.face == best.face
                     && !best.on_edge
@@ -287,27 +341,43 @@ impl<'a> ShapeProjector<'a> {
         }
     }
 
+    /// The foot of `q` on face `k`'s surface found from the parameters `start` (in closed
+    /// form on a plane), if it lies on the face.
+    fn surface_foot(&self, k: usize, start: (f64, f64), q: Point3) -> Option<ShapeNearest> {
+        let s = &self.shape.faces[k].surface;
+        let foot = match self.flats[k].and_then(|flat| flat.foot(q)) {
+            Some((u, v)) => {
+                let point = s.eval(u, v);
+                SurfaceNearest {
+                    u,
+                    v,
+                    distance: point.distance(q),
+                    point,
+                }
+            }
+            None => {
+                let closed = (s.is_closed_u(), s.is_closed_v());
+                newton_foot(s, q, start, closed, self.accuracy)
+            }
+        };
+        self.insides[k]
+            .contains(foot.u, foot.v)
+            .then_some(ShapeNearest {
+                face: k,
+                u: foot.u,
+                v: foot.v,
+                point: foot.point,
+                distance: foot.distance,
+                signed: None,
+                on_edge: false,
+            })
+    }
+
     /// The foot of `q` found from `cell`, if it lies on the face.
     fn search(&self, cell: &Cell, q: Point3) -> Option<ShapeNearest> {
         let face = &self.shape.faces[cell.face];
-        let s = &face.surface;
-        let closed = (s.is_closed_u(), s.is_closed_v());
         match cell.place {
-            Place::Surface { u, v } => {
-                let start = (0.5 * (u.0 + u.1), 0.5 * (v.0 + v.1));
-                let foot = newton_foot(s, q, start, closed, self.accuracy);
-                self.insides[cell.face]
-                    .contains(foot.u, foot.v)
-                    .then_some(ShapeNearest {
-                        face: cell.face,
-                        u: foot.u,
-                        v: foot.v,
-                        point: foot.point,
-                        distance: foot.distance,
-                        signed: None,
-                        on_edge: false,
-                    })
-            }
+            Place::Surface { .. } => self.surface_foot(cell.face, cell.start(), q),
             Place::Edge {
                 edge_loop,
                 edge,
