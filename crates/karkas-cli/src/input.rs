@@ -13,6 +13,7 @@ use karkas::Point;
 use karkas_io::input::{display_name, is_stdin};
 use karkas_io::points::{read_curve_points_with, CurvePoints};
 use karkas_io::range::check_stray_point;
+use karkas_io::OutputFormat;
 use std::path::Path;
 
 /// Refuses standard input (`-`) for more than one of a command's `inputs` (the options or
@@ -88,6 +89,22 @@ pub trait CurveJob {
     /// order"): the reader's warnings are then not printed for such points.
     fn refuses_disorder(&self) -> bool {
         false
+    }
+}
+
+/// A curve command's work on the points of its input: the command's arguments and the format
+/// of each of its outputs (in the order of the arguments' `-o`).
+pub struct CurveCommand<'a, A> {
+    /// The command's arguments.
+    pub args: &'a A,
+    /// The format of each output.
+    pub formats: &'a [OutputFormat],
+}
+
+impl<'a, A> CurveCommand<'a, A> {
+    /// The work of the command with `args` writing in `formats`.
+    pub fn new(args: &'a A, formats: &'a [OutputFormat]) -> Self {
+        Self { args, formats }
     }
 }
 

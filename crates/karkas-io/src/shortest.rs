@@ -52,6 +52,12 @@ pub fn push(out: &mut Vec<u8>, v: f64) {
             }
         }
     }
+    push_digits(out, v, text);
+}
+
+/// Appends `v` (finite, not zero) from `ryu`'s `text` when its digits must be taken apart:
+/// an exponent to lay out as a plain decimal, or a possible tie to round up.
+fn push_digits(out: &mut Vec<u8>, v: f64, text: &[u8]) {
     let (negative, text) = match text.split_first() {
         Some((b'-', rest)) => (true, rest),
         _ => (false, text),
@@ -106,7 +112,12 @@ pub fn push(out: &mut Vec<u8>, v: f64) {
             end -= 1;
         }
     }
-    let digits = &digits[start..end];
+    lay_out(out, negative, &digits[start..end], point);
+}
+
+/// Appends the plain decimal of the `digits` with the point after `point` of them (before
+/// them when not positive), `-` in front when `negative`.
+fn lay_out(out: &mut Vec<u8>, negative: bool, digits: &[u8], point: i64) {
     if negative {
         out.push(b'-');
     }

@@ -6,16 +6,16 @@ use karkas::coons::{
     CoonsKind, CoonsSurface, CrossDerivatives, CurveFit, PointNetwork, CROSSING_TOLERANCE,
     POINT_NETWORK_TOLERANCE,
 };
-use karkas::Point;
+use karkas::{Grid, Point};
 use pyo3::prelude::*;
 
 use crate::convert::{
     as_points, by_dim, check_dim, count, object_list, FlatPoints, GridArray, Int, PointsArray,
 };
+use crate::erased::{SurfaceImpl, WrappedSurface};
 use crate::errors::{library_error, OptionError, PointsError};
 use crate::limits::{bytes_of, check_memory};
 use crate::surface::PySurface;
-use crate::wrapper::{SurfaceImpl, WrappedSurface};
 
 /// A list of point arrays (each (k, d)) as karkas point lists of dimension `D`.
 ///
@@ -164,6 +164,56 @@ fn given(lists: &[Bound<'_, PyAny>], what: &str) -> PyResult<Vec<FlatPoints>> {
         .collect()
 }
 
+/// The fit of the curves' points from `fit=`: `None` or `'spline'`, or `('ll', order)`.
+fn curve_fit(fit: Option<Bound<'_, PyAny>>) -> PyResult<CurveFit> {
+    let Some(f) = fit else {
+        return Ok(CurveFit::CubicSpline);
+    };
+    if let Ok(name) = f.extract::<String>() {
+        return match name.as_str() {
+            "spline" => Ok(CurveFit::CubicSpline),
+            _ => Err(OptionError::new_err(format!(
+                "unknown fit {name:?} (expected 'spline' or ('ll', order))"
+            ))),
+        };
+    }
+    let (name, order): (String, Int) = f
+        .extract()
+        .map_err(|_| OptionError::new_err("fit must be 'spline' or ('ll', order)"))?;
+    if name != "ll" {
+        return Err(OptionError::new_err(
+            "fit must be 'spline' or ('ll', order)",
+        ));
+    }
+    Ok(CurveFit::Ll(count(order, "order")?))
+}
+
+/// Refuses `twists=` where `kind` does not use them, or given with `u_derivs` and `v_derivs`.
+fn check_twists(kind: CoonsKind, twists: bool, derivs: bool) -> PyResult<()> {
+    if twists && !kind.takes_cross_derivatives() {
+        return Err(OptionError::new_err(
+            "twists are used only by kind 'bicubic' and 'composite'",
+        ));
+    }
+    if twists && derivs {
+        return Err(OptionError::new_err(
+            "give twists or u_derivs and v_derivs, not both",
+        ));
+    }
+    Ok(())
+}
+
+/// The twists `t` as a grid of points of dimension `D`, the curves' dimension.
+fn twists_grid<const D: usize>(t: &GridArray) -> PyResult<Grid<Point<D>>> {
+    if t.dim() != D {
+        return Err(PointsError::new_err(format!(
+            "twists have {} coordinates per point, expected {D}",
+            t.dim()
+        )));
+    }
+    t.grid::<D>()
+}
+
 #[pymethods]
 impl PyCoonsSurface {
     #[new]
@@ -184,44 +234,13 @@ impl PyCoonsSurface {
         tolerance: f64,
         twists: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<PyClassInitializer<Self>> {
-        let fit = match fit {
-            None => CurveFit::CubicSpline,
-            Some(f) => {
-                if let Ok(name) = f.extract::<String>() {
-                    match name.as_str() {
-                        "spline" => CurveFit::CubicSpline,
-                        _ => {
-                            return Err(OptionError::new_err(format!(
-                                "unknown fit {name:?} (expected 'spline' or ('ll', order))"
-                            )))
-                        }
-                    }
-                } else {
-                    let (name, order): (String, Int) = f.extract().map_err(|_| {
-                        OptionError::new_err("fit must be 'spline' or ('ll', order)")
-                    })?;
-                    if name != "ll" {
-                        return Err(OptionError::new_err(
-                            "fit must be 'spline' or ('ll', order)",
-                        ));
-                    }
-                    CurveFit::Ll(count(order, "order")?)
-                }
-            }
-        };
+        let fit = curve_fit(fit)?;
         let kind: CoonsKind = kind.parse().map_err(library_error)?;
-        if twists.is_some() {
-            if !kind.takes_cross_derivatives() {
-                return Err(OptionError::new_err(
-                    "twists are used only by kind 'bicubic' and 'composite'",
-                ));
-            }
-            if u_derivs.is_some() || v_derivs.is_some() {
-                return Err(OptionError::new_err(
-                    "give twists or u_derivs and v_derivs, not both",
-                ));
-            }
-        }
+        check_twists(
+            kind,
+            twists.is_some(),
+            u_derivs.is_some() || v_derivs.is_some(),
+        )?;
         let twists = twists
             .map(|t| GridArray::extract(t, "twists"))
             .transpose()?;
@@ -255,16 +274,7 @@ impl PyCoonsSurface {
                 (None, None) => None,
                 _ => return Err(OptionError::new_err("give both u_derivs and v_derivs, or neither")),
             };
-            let twists = match &twists {
-                Some(t) if t.dim() != D => {
-                    return Err(PointsError::new_err(format!(
-                        "twists have {} coordinates per point, expected {D}",
-                        t.dim()
-                    )))
-                }
-                Some(t) => Some(t.grid::<D>()?),
-                None => None,
-            };
+            let twists = twists.as_ref().map(twists_grid::<D>).transpose()?;
             let surface = py.detach(|| -> karkas::Result<CoonsSurface<D>> {
                 let network = PointNetwork::new(&v, &u, fit, crossing_tolerance)?;
                 let cross = match (&derivs, &twists) {

@@ -12,12 +12,12 @@ use karkas::Curve;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-use crate::adapters::CurveView;
 use crate::convert::{as_points, by_dim, extract_vector, FlatPoints, Numbers, PointsArray};
 use crate::curve::PyCurve;
+use crate::erased::CurveView;
+use crate::erased::{CurveImpl, Wrapped};
 use crate::errors::{library_error, OptionError};
 use crate::limits::{bytes_of, check_memory};
-use crate::wrapper::{CurveImpl, Wrapped};
 
 /// Bytes the fairer works in per point (the spline, its banded systems, the report's
 /// samples), in 3-D.

@@ -8,9 +8,9 @@ use pyo3::prelude::*;
 
 use crate::convert::{as_points, by_dim, extract_vector, FlatPoints, Numbers, PointsArray};
 use crate::curve::PyCurve;
+use crate::erased::{CurveImpl, Wrapped};
 use crate::errors::{library_error, KnotsError, OptionError};
 use crate::limits::{bytes_of, check_memory};
-use crate::wrapper::{CurveImpl, Wrapped};
 
 /// A C^1 cubic Hermite spline (a cubic spline of defect 2) on [0, 1]: the result of
 /// ``fit_curve``, with its values and derivatives at its knots and the fit's figures.

@@ -1,44 +1,37 @@
 //! Curve and surface geometry on the base classes: arc length and its inverse, curvature and
 //! torsion, projection of points onto curves; unit normals, principal curvatures and
 //! projection of points onto surfaces (the library's [`karkas::geometry`]).
+//!
+//! Also `Curve.fairness(points=None)` on every curve class: the library's fairness figures
+//! ([`karkas::geometry::curve_fairness`]) as a dict with the keys of `karkas curve analyze
+//! --json`.
+//!
+//! And the same methods on derivative curves and surfaces: a derivative object is seen as a library curve or surface evaluating
+//! its parent's higher derivatives, and handed to the same generic code as every other class.
+
+use std::sync::Arc;
 
 use karkas::geometry::{
     self, ArcLengthTable, CurveGeometry, CurveProjector, PrincipalCurvatures, SurfaceProjector,
 };
-use karkas::{Curve, Interval, PiecewiseCurve, Point3, Surface};
+use karkas::{Curve, Interval, PiecewiseCurve, Point, Point3, Side, Surface};
 use numpy::PyArrayDyn;
 use pyo3::prelude::*;
-use pyo3::types::{PyFloat, PyTuple};
+use pyo3::types::{PyDict, PyFloat, PyTuple};
 
-use crate::convert::{as_points, as_points_mut, maybe_detach, Params, PointsArray};
-use crate::curve::PyCurve;
+use crate::convert::{as_points, as_points_mut, by_dim, maybe_detach, Params, PointsArray};
+use crate::curve::{DerivativeCurve, PyCurve};
+use crate::erased::{
+    CurveGeometryImpl, CurveImpl, CurveLift, Lift, SurfaceGeometryImpl, SurfaceImpl, Wrapped,
+    WrappedSurface,
+};
 use crate::errors::{library_error, KarkasError, OptionError, PointsError};
-pub use crate::geometry_interface::{CurveGeometryImpl, SurfaceGeometryImpl};
 use crate::limits::{bytes_of, check_memory, zeros};
-use crate::surface::PySurface;
-use crate::wrapper::{lift, Lift, Wrapped, WrappedSurface};
+use crate::surface::{DerivativeSurface, PySurface};
 
 /// Batches of at least this many lengths measure the curve's pieces once
 /// ([`ArcLengthTable`]) instead of integrating from `t0` for each.
 const TABLE_BATCH: usize = 16;
-
-/// A curve of dimension `D <= 3` seen as one in 3-D (missing coordinates zero).
-struct CurveLift<'a, C, const D: usize>(&'a C);
-
-impl<C: Curve<D>, const D: usize> Curve<3> for CurveLift<'_, C, D> {
-    fn domain(&self) -> Interval {
-        self.0.domain()
-    }
-    fn is_closed(&self) -> bool {
-        self.0.is_closed()
-    }
-    fn eval(&self, t: f64) -> Point3 {
-        lift(self.0.eval(t))
-    }
-    fn deriv(&self, t: f64, k: usize) -> Point3 {
-        lift(self.0.deriv(t, k))
-    }
-}
 
 impl<C, const D: usize> CurveGeometryImpl for Wrapped<C, D>
 where
@@ -688,5 +681,225 @@ impl PySurface {
             parts.push(array_of(py, &[n, d], &feet)?);
         }
         PyTuple::new(py, parts)
+    }
+}
+
+/// Bytes the figures work in per piece of the curve (its samples and their derivatives).
+const BYTES_PER_PIECE: u128 = 80 * 64;
+
+#[pymethods]
+impl PyCurve {
+    /// How fair the curve is: the figures a designer reads off a curvature plot.
+    ///
+    /// Curvature extrema are the sign changes of dk/ds over dense samples of every polynomial
+    /// piece, both one-sided limits at every breakpoint included (an extremum on a knot
+    /// counts); values below ``1e-8 (k_max + 1/L) / L`` are rounding noise. Inflections are
+    /// the sign changes of the signed curvature in 2-D, the zeros of the curvature in 3-D.
+    /// The same figures as ``karkas curve analyze --json``.
+    ///
+    /// Parameters
+    /// ----------
+    /// points : array_like, shape (n, d), optional
+    ///     The points the curve was made from: ``max_distance_to_polygon`` is the largest
+    ///     distance of the curve from their polyline (closed for a closed curve).
+    ///
+    /// Returns
+    /// -------
+    /// dict
+    ///     ``length``, ``curvature_min``, ``curvature_max``, ``curvature_extrema`` (int),
+    ///     ``inflections`` (int), ``max_distance_to_polygon`` (None without points),
+    ///     ``fairness_energy`` (the integral of (dk/ds)^2 over the arc length), ``pieces``
+    ///     (int) and ``curvature_jump`` (the largest jump of the curvature at a breakpoint).
+    ///
+    /// Raises
+    /// ------
+    /// PointsError
+    ///     When ``points`` is not (n, d) with the curve's d.
+    ///
+    /// Examples
+    /// --------
+    /// >>> import numpy as np, karkas
+    /// >>> s = np.linspace(0, 2 * np.pi, 41)
+    /// >>> c = karkas.CubicSpline(np.c_[2 * np.cos(s), 2 * np.sin(s)], t=s, bc="periodic")
+    /// >>> f = c.fairness(c(s[:-1]))
+    /// >>> f["inflections"], round(f["length"], 4), round(f["curvature_max"], 2)
+    /// (0, 12.5664, 0.5)
+    #[pyo3(signature = (points = None))]
+    fn fairness<'py>(
+        &self,
+        py: Python<'py>,
+        points: Option<&Bound<'py, PyAny>>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let d = self.inner.dim();
+        let flat = match points {
+            None => Vec::new(),
+            Some(points) => {
+                let array = PointsArray::extract(points, "points")?;
+                if array.dim() != d {
+                    return Err(PointsError::new_err(format!(
+                        "points must have {d} coordinates like the curve (got {})",
+                        array.dim()
+                    )));
+                }
+                array.flat().into_owned()
+            }
+        };
+        let pieces = self.inner.breakpoints().len();
+        check_memory(
+            py,
+            &format!("the fairness of a curve of {pieces} pieces"),
+            bytes_of(&[pieces], BYTES_PER_PIECE),
+        )?;
+        let inner = &self.inner;
+        let f = py.detach(|| inner.fairness(&flat));
+        let out = PyDict::new(py);
+        out.set_item("length", f.length)?;
+        out.set_item("curvature_min", f.curvature_min)?;
+        out.set_item("curvature_max", f.curvature_max)?;
+        out.set_item("curvature_extrema", f.curvature_extrema)?;
+        out.set_item("inflections", f.inflections)?;
+        let distance = f.max_distance_to_polygon;
+        out.set_item(
+            "max_distance_to_polygon",
+            distance.is_finite().then_some(distance),
+        )?;
+        out.set_item("fairness_energy", f.fairness_energy)?;
+        out.set_item("pieces", f.pieces)?;
+        out.set_item("curvature_jump", f.curvature_jump)?;
+        Ok(out)
+    }
+}
+
+/// The `nu`-th derivative of a curve of dimension `D` as a library curve.
+struct DerivativeOf<const D: usize> {
+    parent: Arc<dyn CurveImpl>,
+    nu: usize,
+}
+
+impl<const D: usize> Curve<D> for DerivativeOf<D> {
+    fn domain(&self) -> Interval {
+        let (a, b) = self.parent.domain();
+        Interval::new(a, b)
+    }
+    fn is_closed(&self) -> bool {
+        self.parent.closed()
+    }
+    fn eval(&self, t: f64) -> Point<D> {
+        self.deriv(t, 0)
+    }
+    fn deriv(&self, t: f64, k: usize) -> Point<D> {
+        let mut p = Point::<D>::ZERO;
+        self.parent.eval_flat(&[t], k + self.nu, &mut p.0);
+        p
+    }
+}
+
+impl<const D: usize> PiecewiseCurve<D> for DerivativeOf<D> {
+    fn breakpoints(&self) -> Vec<f64> {
+        self.parent.breakpoints()
+    }
+    fn continuity(&self) -> usize {
+        self.parent.continuity().saturating_sub(self.nu)
+    }
+    fn deriv_on_side(&self, t: f64, k: usize, _side: Side) -> Point<D> {
+        self.deriv(t, k)
+    }
+}
+
+impl DerivativeCurve {
+    /// Runs `f` on this derivative seen as a wrapped library curve of its dimension.
+    fn with_curve<R>(&self, f: impl FnOnce(&dyn CurveGeometryImpl) -> R) -> R {
+        let (parent, nu) = (self.parent.clone(), self.nu);
+        by_dim!(self.parent.dim(), D => f(&Wrapped::<_, D>(DerivativeOf::<D> { parent, nu })))
+    }
+}
+
+impl CurveGeometryImpl for DerivativeCurve {
+    fn arc_lengths(&self, t0: f64, t1s: &[f64], tol: f64, out: &mut [f64]) {
+        self.with_curve(|c| c.arc_lengths(t0, t1s, tol, out))
+    }
+    fn inverse_arc_lengths(&self, t0: f64, lengths: &[f64], tol: f64, out: &mut [f64]) {
+        self.with_curve(|c| c.inverse_arc_lengths(t0, lengths, tol, out))
+    }
+    fn curvatures(&self, ts: &[f64], out: &mut [f64]) {
+        self.with_curve(|c| c.curvatures(ts, out))
+    }
+    fn torsions(&self, ts: &[f64], out: &mut [f64]) -> bool {
+        self.with_curve(|c| c.torsions(ts, out))
+    }
+    fn fairness(&self, points: &[f64]) -> karkas::geometry::CurveFairness {
+        self.with_curve(|c| c.fairness(points))
+    }
+    fn project(
+        &self,
+        qs: &[f64],
+        tol: f64,
+        t: &mut [f64],
+        distance: &mut [f64],
+        foot: &mut [f64],
+    ) -> karkas::Result<()> {
+        self.with_curve(|c| c.project(qs, tol, t, distance, foot))
+    }
+}
+
+/// The partial derivative `(du, dv)` of a surface of dimension `D` as a library surface.
+struct PartialOf<const D: usize> {
+    parent: Arc<dyn SurfaceImpl>,
+    du: usize,
+    dv: usize,
+}
+
+impl<const D: usize> Surface<D> for PartialOf<D> {
+    fn domain_u(&self) -> Interval {
+        let (a, b) = self.parent.domain_u();
+        Interval::new(a, b)
+    }
+    fn domain_v(&self) -> Interval {
+        let (a, b) = self.parent.domain_v();
+        Interval::new(a, b)
+    }
+    fn is_closed_u(&self) -> bool {
+        self.parent.closed().0
+    }
+    fn is_closed_v(&self) -> bool {
+        self.parent.closed().1
+    }
+    fn eval(&self, u: f64, v: f64) -> Point<D> {
+        self.deriv(u, v, 0, 0)
+    }
+    fn deriv(&self, u: f64, v: f64, ku: usize, kv: usize) -> Point<D> {
+        let mut p = Point::<D>::ZERO;
+        self.parent
+            .points_flat(&[u], &[v], ku + self.du, kv + self.dv, &mut p.0);
+        p
+    }
+}
+
+impl DerivativeSurface {
+    /// Runs `f` on this derivative seen as a wrapped library surface of its dimension.
+    fn with_surface<R>(&self, f: impl FnOnce(&dyn SurfaceGeometryImpl) -> R) -> R {
+        let (parent, du, dv) = (self.parent.clone(), self.du, self.dv);
+        by_dim!(self.parent.dim(), D => f(&WrappedSurface::<_, D>(PartialOf::<D> { parent, du, dv })))
+    }
+}
+
+impl SurfaceGeometryImpl for DerivativeSurface {
+    fn normals(&self, us: &[f64], vs: &[f64], out: &mut [f64]) {
+        self.with_surface(|s| s.normals(us, vs, out))
+    }
+    fn principal(&self, us: &[f64], vs: &[f64]) -> Vec<PrincipalCurvatures> {
+        self.with_surface(|s| s.principal(us, vs))
+    }
+    fn project(
+        &self,
+        qs: &[f64],
+        cells: (usize, usize),
+        tol: f64,
+        u: &mut [f64],
+        v: &mut [f64],
+        distance: &mut [f64],
+        foot: &mut [f64],
+    ) -> karkas::Result<()> {
+        self.with_surface(|s| s.project(qs, cells, tol, u, v, distance, foot))
     }
 }

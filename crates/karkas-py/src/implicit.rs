@@ -49,6 +49,60 @@ pub struct PyImplicitSurface {
     pub surface: ExpressionSurface,
 }
 
+/// The steps of `trace_net`: `steps=(hu, hv)`, or `step=h` or `step=(hu, hv)`.
+fn net_steps(steps: Option<(f64, f64)>, step: Option<&Bound<'_, PyAny>>) -> PyResult<(f64, f64)> {
+    Ok(match (steps, step) {
+        (Some(s), None) => s,
+        (None, Some(h)) => match h.extract::<f64>() {
+            Ok(h) => (h, h),
+            Err(_) => h
+                .extract::<(f64, f64)>()
+                .map_err(|_| OptionError::new_err("step must be a number H or a pair (HU, HV)"))?,
+        },
+        _ => return Err(OptionError::new_err("give steps or step, one of them")),
+    })
+}
+
+/// The directions of `trace_net`: `directions` (and `angle`, `plane_normal`), or `turn`
+/// (degrees) for `'turned'`.
+fn net_directions(
+    directions: &str,
+    angle: f64,
+    plane_normal: Option<Bound<'_, PyAny>>,
+    turn: Option<f64>,
+) -> PyResult<NetDirections> {
+    let (directions, angle) = match turn {
+        None => (directions, angle),
+        Some(_) if directions != "principal" || angle != 0.0 => {
+            return Err(OptionError::new_err(
+                "turn is the angle of directions='turned' in degrees: give turn, or directions and angle",
+            ))
+        }
+        Some(0.0) => ("principal", 0.0),
+        Some(t) => ("turned", t.to_radians()),
+    };
+    Ok(match directions {
+        "principal" => NetDirections::Principal,
+        "turned" => NetDirections::Turned { angle },
+        "turned-u" => NetDirections::TurnedU { angle },
+        "turned-v" => NetDirections::TurnedV { angle },
+        "plane-sections" => NetDirections::PlaneSections {
+            plane_normal: point3(
+                &small_vector(
+                    &plane_normal.ok_or_else(|| OptionError::new_err("'plane-sections' needs plane_normal"))?,
+                    "plane_normal",
+                )?,
+                "plane_normal",
+            )?,
+        },
+        other => {
+            return Err(OptionError::new_err(format!(
+                "unknown directions {other:?} (expected 'principal', 'turned', 'turned-u', 'turned-v' or 'plane-sections')"
+            )))
+        }
+    })
+}
+
 #[pymethods]
 impl PyImplicitSurface {
     #[new]
@@ -274,46 +328,8 @@ impl PyImplicitSurface {
         step: Option<&Bound<'py, PyAny>>,
         turn: Option<f64>,
     ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-        let steps = match (steps, step) {
-            (Some(s), None) => s,
-            (None, Some(h)) => match h.extract::<f64>() {
-                Ok(h) => (h, h),
-                Err(_) => h.extract::<(f64, f64)>().map_err(|_| {
-                    OptionError::new_err("step must be a number H or a pair (HU, HV)")
-                })?,
-            },
-            _ => return Err(OptionError::new_err("give steps or step, one of them")),
-        };
-        let (directions, angle) = match turn {
-            None => (directions, angle),
-            Some(_) if directions != "principal" || angle != 0.0 => {
-                return Err(OptionError::new_err(
-                    "turn is the angle of directions='turned' in degrees: give turn, or directions and angle",
-                ))
-            }
-            Some(0.0) => ("principal", 0.0),
-            Some(t) => ("turned", t.to_radians()),
-        };
-        let directions = match directions {
-            "principal" => NetDirections::Principal,
-            "turned" => NetDirections::Turned { angle },
-            "turned-u" => NetDirections::TurnedU { angle },
-            "turned-v" => NetDirections::TurnedV { angle },
-            "plane-sections" => NetDirections::PlaneSections {
-                plane_normal: point3(
-                    &small_vector(
-                        &plane_normal.ok_or_else(|| OptionError::new_err("'plane-sections' needs plane_normal"))?,
-                        "plane_normal",
-                    )?,
-                    "plane_normal",
-                )?,
-            },
-            other => {
-                return Err(OptionError::new_err(format!(
-                    "unknown directions {other:?} (expected 'principal', 'turned', 'turned-u', 'turned-v' or 'plane-sections')"
-                )))
-            }
-        };
+        let steps = net_steps(steps, step)?;
+        let directions = net_directions(directions, angle, plane_normal, turn)?;
         let nodes = (count(nodes.0, "nodes")?, count(nodes.1, "nodes")?);
         // The traced grid and the returned array.
         check_memory(

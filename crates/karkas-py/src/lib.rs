@@ -6,33 +6,28 @@
 //! the GIL released too. Bad input raises `karkas.KarkasError` (a `ValueError`) or one of its
 //! typed subclasses, with the library's message (see `errors`).
 //!
-//! One file per library module (`ll`, `param`, `fit`, `dps`, `coons`, `implicit`, `section`,
-//! `measure`) plus `export` and `read` (karkas-io's writers and readers) and `geometry` (arc
-//! length, curvature, normals and projection on the base classes); the memory cap
-//! `karkas.max_memory` and checked array allocation in `limits`; the base classes
-//! `Curve` and `Surface` in `curve` and `surface` over the dimension-free interfaces of
-//! `wrapper`; arrays in `convert`; exceptions in `errors`.
+//! One file per library module (`ll`, `param`, `fit`, `fair`, `dps`, `coons`, `implicit`,
+//! `section`, `measure`, `loft`, `nurbs`) plus `export`, `read` and
+//! `cad` (karkas-io's writers and readers), `batch` (the command line's batch jobs), `geometry`
+//! (arc length, curvature, normals, projection and fairness on the base classes), `pickle` and
+//! `repr_html` (Python's protocols); the memory cap `karkas.max_memory` and checked array
+//! allocation in `limits`; the base classes `Curve` and `Surface` in `curve` and `surface` over
+//! the dimension-erased layer `erased`; the B-spline form on flat buffers in `bspline`; arrays
+//! in `convert`; exceptions in `errors`.
 
-mod adapters;
 mod batch;
-mod bspline_form;
+mod bspline;
 mod cad;
 mod convert;
 mod coons;
 mod curve;
-mod curve_eval;
-mod derivative_geometry;
 mod dps;
+mod erased;
 mod errors;
 mod export;
-mod export_any;
-mod export_cad;
-mod export_format;
 mod fair;
-mod fairness;
 mod fit;
 mod geometry;
-mod geometry_interface;
 mod implicit;
 mod limits;
 mod ll;
@@ -42,14 +37,9 @@ mod nurbs;
 mod param;
 mod pickle;
 mod read;
-mod read_more;
-mod relay;
 mod repr_html;
 mod section;
-mod section_defaults;
 mod surface;
-mod surface_eval;
-mod wrapper;
 
 use pyo3::prelude::*;
 
@@ -87,7 +77,7 @@ fn karkas_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("max_memory", limits::initial_max_memory()?)?;
     errors::register(m)?;
     m.add_class::<curve::PyCurve>()?;
-    m.add_class::<curve_eval::PyCurveDerivative>()?;
+    m.add_class::<curve::PyCurveDerivative>()?;
     m.add_class::<ll::PyLlCurve>()?;
     m.add_class::<param::PyCubicSpline>()?;
     m.add_class::<fit::PyHermiteSpline>()?;
@@ -95,7 +85,7 @@ fn karkas_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<fair::PyFairCurve>()?;
     m.add_function(wrap_pyfunction!(fair::fair_curve, m)?)?;
     m.add_class::<surface::PySurface>()?;
-    m.add_class::<surface_eval::PySurfaceDerivative>()?;
+    m.add_class::<surface::PySurfaceDerivative>()?;
     m.add_class::<ll::PyLlSurface>()?;
     m.add_class::<param::PyBicubicSurface>()?;
     m.add_class::<loft::PyLoftSurface>()?;
@@ -116,8 +106,8 @@ fn karkas_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(ll::vary, m)?)?;
     m.add_function(wrap_pyfunction!(param::curve_parameters, m)?)?;
     m.add_function(wrap_pyfunction!(param::grid_parameters, m)?)?;
-    m.add_function(wrap_pyfunction!(relay::relay_grid, m)?)?;
-    m.add_function(wrap_pyfunction!(export_any::export, m)?)?;
+    m.add_function(wrap_pyfunction!(param::relay_grid, m)?)?;
+    m.add_function(wrap_pyfunction!(export::export, m)?)?;
     m.add_function(wrap_pyfunction!(export::export_obj, m)?)?;
     m.add_function(wrap_pyfunction!(export::export_stl, m)?)?;
     m.add_function(wrap_pyfunction!(export::export_curve_csv, m)?)?;
@@ -127,10 +117,10 @@ fn karkas_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(read::read_grid, m)?)?;
     m.add_function(wrap_pyfunction!(read::read_network, m)?)?;
     m.add_function(wrap_pyfunction!(read::read_mesh, m)?)?;
-    m.add_function(wrap_pyfunction!(read_more::read_skeleton, m)?)?;
-    m.add_function(wrap_pyfunction!(read_more::read_point_set, m)?)?;
-    m.add_function(wrap_pyfunction!(read_more::read_surface_samples, m)?)?;
-    m.add_function(wrap_pyfunction!(read_more::read_mask, m)?)?;
+    m.add_function(wrap_pyfunction!(read::read_skeleton, m)?)?;
+    m.add_function(wrap_pyfunction!(read::read_point_set, m)?)?;
+    m.add_function(wrap_pyfunction!(read::read_surface_samples, m)?)?;
+    m.add_function(wrap_pyfunction!(read::read_mask, m)?)?;
     m.add_function(wrap_pyfunction!(read::set_max_input_bytes, m)?)?;
     m.add_function(wrap_pyfunction!(read::max_input_bytes, m)?)?;
     m.add_function(wrap_pyfunction!(pickle::restore, m)?)?;

@@ -1,5 +1,9 @@
 //! The LL approximation (Aulchenko, Latypov, Nikulichev): the Python classes `LLCurve` and
 //! `LLSurface`, and the surface variation method `vary`.
+//!
+//! Also `LLSurface.section`, with the command line's default cells (`karkas section --method ll`):
+//! 2 per grid line in each direction, at least 16 ([`karkas::section::cells_for_grid`]),
+//! instead of the fixed default of `Surface.section`.
 
 use std::sync::Arc;
 
@@ -16,10 +20,10 @@ use crate::convert::{
     variant, write_flat, FlatPoints, GridArray, PointsArray,
 };
 use crate::curve::PyCurve;
+use crate::erased::{CurveImpl, SurfaceImpl, Wrapped, WrappedSurface};
 use crate::errors::{library_error, OptionError, PointsError};
 use crate::limits::{bytes_of, check_memory, shape_text, zeros};
 use crate::surface::PySurface;
-use crate::wrapper::{CurveImpl, SurfaceImpl, Wrapped, WrappedSurface};
 
 /// The LL approximation of a support polygon (Aulchenko, Latypov, Nikulichev): a C^L curve
 /// that never oscillates more than its polygon.
@@ -578,4 +582,60 @@ pub fn vary<'py>(
     let out = zeros(py, &[n, m])?;
     write_flat(&out, |flat| flat.copy_from_slice(varied.as_slice()))?;
     Ok(out)
+}
+
+#[pymethods]
+impl PyLlSurface {
+    /// Where the plane ``normal . x = offset`` cuts the surface, as polylines on it.
+    ///
+    /// As ``Surface.section``, with the command line's default search grid (``karkas section
+    /// --method ll``): ``cells=None`` means 2 cells per grid line in each direction, at least 16.
+    ///
+    /// Parameters
+    /// ----------
+    /// normal : sequence of float
+    ///     The plane's normal, ``d`` coordinates (need not be a unit vector).
+    /// offset : float
+    ///     The plane is ``normal . x = offset``.
+    /// tolerance : float, optional
+    ///     The largest chord error of the polylines; None: 1e-4 of the diagonal of the
+    ///     surface's bounding box.
+    /// cells : tuple of int, optional
+    ///     The ``(nu, nv)`` cells of the search grid; None: the command line's default.
+    ///
+    /// Returns
+    /// -------
+    /// list of SectionCurve
+    ///     The connected pieces of the section (empty when the plane misses the surface).
+    ///
+    /// Raises
+    /// ------
+    /// OptionError
+    ///     ``normal`` has the wrong number of coordinates or is zero, or ``tolerance`` or
+    ///     ``cells`` is out of range.
+    /// ConvergenceError
+    ///     The continuation could not follow the section.
+    ///
+    /// Examples
+    /// --------
+    /// >>> grid = np.array([[[i, j, i * j] for j in range(5)] for i in range(5)], float)
+    /// >>> S = karkas.LLSurface(grid, order=3)
+    /// >>> pieces = S.section([1.0, 0.0, 0.0], 2.0)
+    /// >>> len(pieces)
+    /// 1
+    /// >>> bool(np.allclose(pieces[0].points[:, 0], 2.0))
+    /// True
+    #[pyo3(signature = (normal, offset, tolerance = None, cells = None))]
+    fn section<'py>(
+        slf: &Bound<'py, Self>,
+        normal: &Bound<'py, PyAny>,
+        offset: f64,
+        tolerance: Option<f64>,
+        cells: Option<(usize, usize)>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let (rows, cols) = slf.get().shape;
+        let cells = cells.unwrap_or_else(|| karkas::section::cells_for_grid(rows, cols));
+        let base = slf.py().get_type::<PySurface>().getattr("section")?;
+        base.call1((slf, normal, offset, tolerance, cells))
+    }
 }

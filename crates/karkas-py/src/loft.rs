@@ -13,10 +13,10 @@ use pyo3::prelude::*;
 use crate::convert::{
     as_points, extract_vector, object_list, points3, points_to_array, Numbers, PointsArray,
 };
+use crate::erased::{SurfaceImpl, WrappedSurface};
 use crate::errors::{library_error, library_error_saying, OptionError, PointsError};
 use crate::read::{file_path, read_error};
 use crate::surface::PySurface;
-use crate::wrapper::{SurfaceImpl, WrappedSurface};
 
 /// What a loft was built from (for pickling).
 #[derive(Clone, Debug)]

@@ -14,9 +14,9 @@ use crate::convert::{
     as_points, by_dim, extract_vector, py_bool, FlatPoints, GridArray, Numbers, PointsArray,
 };
 use crate::curve::PyCurve;
+use crate::erased::{CurveImpl, SurfaceImpl, Wrapped, WrappedSurface};
 use crate::errors::{library_error, OptionError};
 use crate::surface::PySurface;
-use crate::wrapper::{CurveImpl, SurfaceImpl, Wrapped, WrappedSurface};
 
 /// A rational B-spline (NURBS) curve in 2-D or 3-D: control points, weights, a knot vector
 /// (clamped or not) and a degree; exact circles, ellipses and every B-spline.

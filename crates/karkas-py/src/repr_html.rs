@@ -10,9 +10,9 @@ use karkas_io::export::surface::{render_surface_html, SurfaceDrawing};
 use karkas_io::mesh::MeshOptions;
 use pyo3::prelude::*;
 
-use crate::adapters::{CurveView, SurfaceView};
 use crate::convert::by_dim;
 use crate::curve::PyCurve;
+use crate::erased::{CurveView, SurfaceView};
 use crate::errors::{library_error, KarkasError};
 use crate::surface::PySurface;
 

@@ -113,25 +113,7 @@ pub fn run(batch: &Batch) -> Result<Outcome> {
         Vec::new()
     };
     let earlier: HashMap<&str, &Record> = before.iter().map(|r| (r.input.as_str(), r)).collect();
-    // Each input's earlier record when it needs no new run: recorded ok, with the very
-    // outputs this job writes (another --format or --report runs again), all present.
-    let done: Vec<Option<&Record>> = batch
-        .inputs
-        .iter()
-        .zip(&batch.bases)
-        .map(|(input, base)| {
-            let outputs: Vec<String> = batch
-                .job
-                .outputs(base)
-                .iter()
-                .map(|o| o.display().to_string())
-                .collect();
-            earlier
-                .get(input.display().to_string().as_str())
-                .filter(|r| r.is_done() && r.outputs == outputs)
-                .copied()
-        })
-        .collect();
+    let done = already_done(batch, &earlier);
     let todo: Vec<(&PathBuf, &PathBuf)> = batch
         .inputs
         .iter()
@@ -142,25 +124,7 @@ pub fn run(batch: &Batch) -> Result<Outcome> {
         .collect();
     let journal = results::Journal::open(&path, batch.resume, batch.results_file)?;
     let bar = progress_bar(batch, todo.len())?;
-    let mut builder = rayon::ThreadPoolBuilder::new();
-    if let Some(jobs) = batch.jobs {
-        builder = builder.num_threads(jobs);
-    }
-    let pool = builder.build().context("cannot start the worker threads")?;
-    let fresh: Vec<Record> = pool.install(|| {
-        todo.par_iter()
-            .with_max_len(1)
-            .map(|(input, base)| {
-                let record = batch.job.run(input, base);
-                if let (Some(error), true) = (&record.error, batch.progress) {
-                    bar.suspend(|| eprintln!("karkas: error: {error}"));
-                }
-                let appended = journal.append(&record);
-                bar.inc(1);
-                appended.map(|()| record)
-            })
-            .collect::<Result<Vec<Record>>>()
-    })?;
+    let fresh = run_inputs(batch, &todo, &journal, &bar)?;
     bar.finish_and_clear();
     // The fresh records come in the order of `todo`, the inputs not done.
     let mut fresh = fresh.into_iter();
@@ -183,6 +147,57 @@ pub fn run(batch: &Batch) -> Result<Outcome> {
         failed,
         records,
         seconds: started.elapsed().as_secs_f64(),
+    })
+}
+
+/// Each input's earlier record in `earlier` when it needs no new run: recorded ok, with the
+/// very outputs this job writes (another --format or --report runs again), all present.
+fn already_done<'a>(batch: &Batch, earlier: &HashMap<&str, &'a Record>) -> Vec<Option<&'a Record>> {
+    batch
+        .inputs
+        .iter()
+        .zip(&batch.bases)
+        .map(|(input, base)| {
+            let outputs: Vec<String> = batch
+                .job
+                .outputs(base)
+                .iter()
+                .map(|o| o.display().to_string())
+                .collect();
+            earlier
+                .get(input.display().to_string().as_str())
+                .filter(|r| r.is_done() && r.outputs == outputs)
+                .copied()
+        })
+        .collect()
+}
+
+/// Runs the inputs `todo` on the batch's worker threads, each record appended to `journal`
+/// as it comes; the records in the order of `todo`.
+fn run_inputs(
+    batch: &Batch,
+    todo: &[(&PathBuf, &PathBuf)],
+    journal: &results::Journal,
+    bar: &ProgressBar,
+) -> Result<Vec<Record>> {
+    let mut builder = rayon::ThreadPoolBuilder::new();
+    if let Some(jobs) = batch.jobs {
+        builder = builder.num_threads(jobs);
+    }
+    let pool = builder.build().context("cannot start the worker threads")?;
+    pool.install(|| {
+        todo.par_iter()
+            .with_max_len(1)
+            .map(|(input, base)| {
+                let record = batch.job.run(input, base);
+                if let (Some(error), true) = (&record.error, batch.progress) {
+                    bar.suspend(|| eprintln!("karkas: error: {error}"));
+                }
+                let appended = journal.append(&record);
+                bar.inc(1);
+                appended.map(|()| record)
+            })
+            .collect::<Result<Vec<Record>>>()
     })
 }
 

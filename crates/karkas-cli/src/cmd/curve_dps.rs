@@ -2,7 +2,7 @@
 //! poles at) the input points (Malozemov et al., docs/methods.md §3).
 
 use crate::args::{check_dps_order, check_dps_step, CurveInputOptions};
-use crate::input::{curve_points, run_on_curve_points, CurveJob};
+use crate::input::{curve_points, run_on_curve_points, CurveCommand, CurveJob};
 use crate::output::cad::refuse_cad_for_discrete;
 use crate::output::curve::curve_output_bytes;
 use crate::output::formats::CURVE_FORMATS;
@@ -53,12 +53,12 @@ pub fn run(args: &CurveDpsArgs) -> Result<()> {
     for output in &args.output {
         ensure_distinct(&args.input, output)?;
     }
-    run_on_curve_points(&args.input, &args.read, &(args, &formats[..]))
+    run_on_curve_points(&args.input, &args.read, &CurveCommand::new(args, &formats))
 }
 
-impl CurveJob for (&CurveDpsArgs, &[OutputFormat]) {
+impl CurveJob for CurveCommand<'_, CurveDpsArgs> {
     fn run<const D: usize>(&self, points: &[Point<D>]) -> Result<()> {
-        let (args, formats) = *self;
+        let Self { args, formats } = *self;
         curve_points(&args.input, points)?;
         let m = points.len();
         let period = m.saturating_mul(args.step);

@@ -5,21 +5,21 @@ use crate::args::{CadOptions, CombOption, CurveInputOptions, CurveSamples};
 use crate::input::{curve_points, run_on_curve_points, CurveJob};
 use crate::output::cad::write_cad_curve;
 use crate::output::console::{note, record_all};
-use crate::output::curve::{curve_output_bytes, write_sampled_curve};
+use crate::output::curve::{curve_output_bytes, whiskers, write_curve_samples};
 use crate::output::formats::EXACT_CURVE_FORMATS;
 use crate::output::memory::check_memory;
 use crate::output::overwrite::ensure_distinct;
-use crate::output::samples::sample_curve;
 use crate::output::target::{output_format, shown};
 use anyhow::{bail, Context, Result};
 use clap::Args;
 use karkas::fair::{fair_curve, FairCurve, FairEnds, FairOptions};
 use karkas::geometry::CurveFairness;
-use karkas::{Point, Point2};
+use karkas::Point;
+use karkas_io::export::curve::CurveDrawing;
 use karkas_io::write::write_atomic;
 use karkas_io::OutputFormat;
 use serde::Serialize;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 /// Bytes the fairer works in per point (the spline, its banded systems and the report's
@@ -144,35 +144,29 @@ pub fn run(args: &CurveFairArgs) -> Result<()> {
         }
     }
     args.cad.check(&[format])?;
-    run_on_curve_points(&args.input, &args.read, &(args, format))
+    run_on_curve_points(&args.input, &args.read, &FairJob { args, format })
 }
 
-impl CurveJob for (&CurveFairArgs, OutputFormat) {
+/// `curve fair` on the points of its input: the arguments and the output's format.
+struct FairJob<'a> {
+    args: &'a CurveFairArgs,
+    format: OutputFormat,
+}
+
+impl CurveJob for FairJob<'_> {
     fn refuses_disorder(&self) -> bool {
         true
     }
 
     fn run<const D: usize>(&self, points: &[Point<D>]) -> Result<()> {
-        let (args, format) = (self.0, self.1);
+        let Self { args, format } = *self;
         let input = args.input.display().to_string();
         curve_points(&args.input, points)?;
         check_memory(
             &format!("curve fair of {} points", points.len()),
             (points.len() as u128).saturating_mul(FAIR_BYTES_PER_POINT),
         )?;
-        let ends = if args.keep_tangents {
-            FairEnds::KeptWithTangents
-        } else if args.keep_ends {
-            FairEnds::Kept
-        } else {
-            FairEnds::Free
-        };
-        let options = FairOptions {
-            tolerance: args.tolerance,
-            ends,
-            corners: args.corners.iter().map(|c| c - 1).collect(),
-            closed: args.closed,
-        };
+        let options = fair_options(args);
         let started = Instant::now();
         let fair: FairCurve<D> = fair_curve(points, &options).with_context(|| input.clone())?;
         let seconds = started.elapsed().as_secs_f64();
@@ -194,54 +188,9 @@ impl CurveJob for (&CurveFairArgs, OutputFormat) {
             curve_output_bytes::<D>(format, n + points.len()),
         )?;
         if let Some(report) = &args.report {
-            write_atomic(report, |w| {
-                writeln!(w, "point,t,distance")?;
-                for (i, (t, d)) in fair.parameters.iter().zip(&fair.distances).enumerate() {
-                    writeln!(w, "{},{t},{d}", i + 1)?;
-                }
-                Ok(())
-            })?;
+            write_report(report, &fair)?;
         }
-        let what = if format.is_cad() {
-            write_cad_curve(
-                &fair.curve,
-                points,
-                format,
-                &args.output,
-                (&args.cad, false),
-                &input,
-            )?;
-            "the exact B-spline".to_string()
-        } else {
-            let (ts, samples) = sample_curve(&fair.curve, n);
-            let whiskers: Vec<[Point2; 2]> = fair
-                .parameters
-                .iter()
-                .zip(points)
-                .map(|(&t, p)| {
-                    let f = karkas::Curve::eval(&fair.curve, t);
-                    [Point2::new([p[0], p[1]]), Point2::new([f[0], f[1]])]
-                })
-                .collect();
-            let comb = args.comb.teeth(&fair.curve, &ts);
-            let title = format!(
-                "fair C2 cubic, {} pieces, {} points, max deviation {:.3e} (T {:.3e})",
-                after.pieces,
-                points.len(),
-                fair.max_distance(),
-                args.tolerance
-            );
-            write_sampled_curve(
-                &args.output,
-                format,
-                &title,
-                (&ts, &samples),
-                points,
-                args.closed,
-                (&comb, &whiskers),
-            )?;
-            format!("{n} samples")
-        };
+        let what = write_fair_curve(args, format, &fair, points, (n, after.pieces))?;
         note(format!(
             "karkas: wrote {} ({what}); before: {}; after: {}; faired in {:.1} ms",
             shown(&args.output).display(),
@@ -255,4 +204,75 @@ impl CurveJob for (&CurveFairArgs, OutputFormat) {
         }
         Ok(())
     }
+}
+
+/// The library's options of `curve fair` from its arguments.
+fn fair_options(args: &CurveFairArgs) -> FairOptions {
+    let ends = if args.keep_tangents {
+        FairEnds::KeptWithTangents
+    } else if args.keep_ends {
+        FairEnds::Kept
+    } else {
+        FairEnds::Free
+    };
+    FairOptions {
+        tolerance: args.tolerance,
+        ends,
+        corners: args.corners.iter().map(|c| c - 1).collect(),
+        closed: args.closed,
+    }
+}
+
+/// Writes `--report`: every point's parameter and distance to the fair curve.
+fn write_report<const D: usize>(report: &Path, fair: &FairCurve<D>) -> Result<()> {
+    Ok(write_atomic(report, |w| {
+        writeln!(w, "point,t,distance")?;
+        for (i, (t, d)) in fair.parameters.iter().zip(&fair.distances).enumerate() {
+            writeln!(w, "{},{t},{d}", i + 1)?;
+        }
+        Ok(())
+    })?)
+}
+
+/// Writes the fair curve of `points` (of `pieces` pieces) to the output in `format` (`n`
+/// samples, or the exact B-spline in a CAD format), and says what was written.
+fn write_fair_curve<const D: usize>(
+    args: &CurveFairArgs,
+    format: OutputFormat,
+    fair: &FairCurve<D>,
+    points: &[Point<D>],
+    (n, pieces): (usize, usize),
+) -> Result<String> {
+    let input = args.input.display().to_string();
+    Ok(if format.is_cad() {
+        write_cad_curve(
+            &fair.curve,
+            points,
+            format,
+            &args.output,
+            (&args.cad, false),
+            &input,
+        )?;
+        "the exact B-spline".to_string()
+    } else {
+        let whiskers = whiskers(
+            &fair.curve,
+            points.iter().zip(fair.parameters.iter().copied()),
+        );
+        let title = format!(
+            "fair C2 cubic, {} pieces, {} points, max deviation {:.3e} (T {:.3e})",
+            pieces,
+            points.len(),
+            fair.max_distance(),
+            args.tolerance
+        );
+        let drawing = CurveDrawing {
+            title: &title,
+            input: points,
+            closed_input: args.closed,
+            comb: args.comb.comb,
+        };
+        write_curve_samples(&args.output, format, (&fair.curve, n), &drawing, &whiskers)?;
+        format!("{n} samples")
+    })
 }

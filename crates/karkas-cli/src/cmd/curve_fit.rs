@@ -7,7 +7,7 @@ use crate::args::{CadOptions, CloseTeOption, CombOption, CurveInputOptions, Curv
 use crate::input::{run_on_curve_points, CurveJob};
 use crate::output::cad::write_cad_curve;
 use crate::output::console::{note, warn_open_near_miss};
-use crate::output::curve::{curve_output_bytes, write_sampled_curve};
+use crate::output::curve::{curve_output_bytes, whiskers, write_sampled_curve};
 use crate::output::formats::EXACT_CURVE_FORMATS;
 use crate::output::memory::check_memory;
 use crate::output::overwrite::ensure_distinct;
@@ -16,7 +16,7 @@ use crate::output::target::{output_formats, shown};
 use anyhow::{bail, Context, Result};
 use clap::Args;
 use karkas::fit::{closed_bspline, CurveFit};
-use karkas::{Curve, Point, Point2};
+use karkas::Point;
 use karkas_io::write::write_atomic;
 use karkas_io::OutputFormat;
 use std::path::{Path, PathBuf};
@@ -90,16 +90,29 @@ pub fn run(args: &CurveFitArgs) -> Result<()> {
             bail!("--report: must differ from the output file");
         }
     }
-    run_on_curve_points(&args.input, &args.read, &(args, formats, knots))
+    let job = FitJob {
+        args,
+        formats,
+        knots,
+    };
+    run_on_curve_points(&args.input, &args.read, &job)
 }
 
-impl CurveJob for (&CurveFitArgs, Vec<OutputFormat>, Option<Vec<f64>>) {
+/// `curve fit` on the points of its input: the arguments, the format of each output and the
+/// knots given (none: the tolerance picks them).
+struct FitJob<'a> {
+    args: &'a CurveFitArgs,
+    formats: Vec<OutputFormat>,
+    knots: Option<Vec<f64>>,
+}
+
+impl CurveJob for FitJob<'_> {
     fn refuses_disorder(&self) -> bool {
         true
     }
 
     fn run<const D: usize>(&self, points: &[Point<D>]) -> Result<()> {
-        let (args, formats, knots) = (self.0, &self.1, &self.2);
+        let (args, formats, knots) = (self.args, &self.formats, &self.knots);
         let input = || args.input.display().to_string();
         args.close.check_points(points, &args.input)?;
         if !(args.fit.free_ends || args.close.close_te || args.closed) {
@@ -181,15 +194,10 @@ fn write_fit_picture_or_samples<const D: usize>(
     fit: &CurveFit<D>,
     (ts, samples): (&[f64], &[Point<D>]),
 ) -> Result<()> {
-    let whiskers: Vec<[Point2; 2]> = fit
-        .parameters
-        .iter()
-        .zip(points)
-        .map(|(&t, p)| {
-            let f = fit.spline.eval(t);
-            [Point2::new([p[0], p[1]]), Point2::new([f[0], f[1]])]
-        })
-        .collect();
+    let whiskers = whiskers(
+        &fit.spline,
+        points.iter().zip(fit.parameters.iter().copied()),
+    );
     let comb = args.comb.teeth(&fit.spline, ts);
     let title = format!(
         "{}defect-2 cubic spline fit, {} knots, {} points, max deviation {:.3e}",

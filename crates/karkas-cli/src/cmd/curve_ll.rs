@@ -3,20 +3,21 @@
 use crate::args::{
     check_ll_order, CadOptions, CloseTeOption, CombOption, CurveInputOptions, CurveSamples,
 };
-use crate::input::{curve_points, run_on_curve_points, CurveJob};
+use crate::input::{curve_points, run_on_curve_points, CurveCommand, CurveJob};
 use crate::output::cad::write_cad_curve;
 use crate::output::console::{note, record};
-use crate::output::curve::{curve_output_bytes, write_sampled_curve};
+use crate::output::curve::{curve_output_bytes, whiskers, write_curve_samples};
 use crate::output::formats::STREAMED_CURVE_FORMATS;
 use crate::output::memory::check_memory;
 use crate::output::overwrite::ensure_distinct;
-use crate::output::samples::{report_samples, sample_curve};
+use crate::output::samples::report_samples;
 use crate::output::self_crossing::warn_self_crossing;
 use crate::output::target::output_formats;
 use anyhow::{bail, Context, Result};
 use clap::Args;
 use karkas::ll::{LlCurve, WithinFit};
 use karkas::{Curve, Point, Point2};
+use karkas_io::export::curve::CurveDrawing;
 use karkas_io::export::stream;
 use karkas_io::OutputFormat;
 use std::path::{Path, PathBuf};
@@ -80,12 +81,12 @@ pub fn run(args: &CurveLlArgs) -> Result<()> {
     for output in &args.output {
         ensure_distinct(&args.input, output)?;
     }
-    run_on_curve_points(&args.input, &args.read, &(args, &formats[..]))
+    run_on_curve_points(&args.input, &args.read, &CurveCommand::new(args, &formats))
 }
 
-impl CurveJob for (&CurveLlArgs, &[OutputFormat]) {
+impl CurveJob for CurveCommand<'_, CurveLlArgs> {
     fn run<const D: usize>(&self, points: &[Point<D>]) -> Result<()> {
-        let (args, formats) = *self;
+        let Self { args, formats } = *self;
         curve_points(&args.input, points)?;
         args.close.check_points(points, &args.input)?;
         if args.closed {
@@ -143,7 +144,6 @@ fn write_ll<const D: usize>(
         report_samples(output, n);
         return Ok(());
     }
-    let (ts, samples) = sample_curve(curve, n);
     let variant = match (args.interpolate, args.within) {
         (true, _) => "interpolating ".to_owned(),
         (false, Some(d)) => format!("within {d} "),
@@ -154,23 +154,17 @@ fn write_ll<const D: usize>(
         args.order,
         points.len()
     );
-    let comb = args.comb.teeth(curve, &ts);
-    let whiskers = if args.whiskers {
-        node_whiskers(curve, points)
-    } else {
-        Vec::new()
+    let whiskers = match args.whiskers {
+        true => node_whiskers(curve, points),
+        false => Vec::new(),
     };
-    let overlay = (&comb[..], &whiskers[..]);
-    let samples = (&ts[..], &samples[..]);
-    write_sampled_curve(
-        output,
-        format,
-        &title,
-        samples,
-        points,
-        args.closed,
-        overlay,
-    )?;
+    let drawing = CurveDrawing {
+        title: &title,
+        input: points,
+        closed_input: args.closed,
+        comb: args.comb.comb,
+    };
+    write_curve_samples(output, format, (curve, n), &drawing, &whiskers)?;
     report_samples(output, n);
     Ok(())
 }
@@ -244,14 +238,9 @@ fn build_ll_within<const D: usize>(
 /// its domain).
 fn node_whiskers<const D: usize>(curve: &LlCurve<D>, points: &[Point<D>]) -> Vec<[Point2; 2]> {
     let (axis, domain) = (curve.axis(), curve.domain());
-    points
+    let nodes = points
         .iter()
         .enumerate()
-        .map(|(k, p)| (p, axis.node(k + 1)))
-        .filter(|(_, t)| domain.contains(*t))
-        .map(|(p, t)| {
-            let q = curve.eval(t);
-            [Point2::new([p[0], p[1]]), Point2::new([q[0], q[1]])]
-        })
-        .collect()
+        .map(|(k, p)| (p, axis.node(k + 1)));
+    whiskers(curve, nodes.filter(|(_, t)| domain.contains(*t)))
 }

@@ -5,19 +5,20 @@
 
 use crate::args::{CadOptions, CloseTeOption, CombOption, CurveInputOptions, CurveSamples};
 use crate::cmd::spline_options::{EndsKind, SplineOptions};
-use crate::input::{curve_points, run_on_curve_points, CurveJob};
+use crate::input::{curve_points, run_on_curve_points, CurveCommand, CurveJob};
 use crate::output::cad::write_cad_curve;
-use crate::output::curve::{curve_output_bytes, write_sampled_curve};
+use crate::output::curve::{curve_output_bytes, whiskers, write_curve_samples};
 use crate::output::formats::EXACT_CURVE_FORMATS;
 use crate::output::memory::check_memory;
 use crate::output::overwrite::ensure_distinct;
-use crate::output::samples::{report_samples, sample_curve};
+use crate::output::samples::report_samples;
 use crate::output::self_crossing::warn_self_crossing;
 use crate::output::target::output_formats;
 use anyhow::Result;
 use clap::Args;
 use karkas::param::CubicSpline;
-use karkas::{Curve, Point, Point2};
+use karkas::{Curve, Point};
+use karkas_io::export::curve::CurveDrawing;
 use karkas_io::OutputFormat;
 use std::path::{Path, PathBuf};
 
@@ -61,12 +62,12 @@ pub fn run(args: &CurveSplineArgs) -> Result<()> {
     for output in &args.output {
         ensure_distinct(&args.input, output)?;
     }
-    run_on_curve_points(&args.input, &args.read, &(args, &formats[..]))
+    run_on_curve_points(&args.input, &args.read, &CurveCommand::new(args, &formats))
 }
 
-impl CurveJob for (&CurveSplineArgs, &[OutputFormat]) {
+impl CurveJob for CurveCommand<'_, CurveSplineArgs> {
     fn run<const D: usize>(&self, points: &[Point<D>]) -> Result<()> {
-        let (args, formats) = *self;
+        let Self { args, formats } = *self;
         curve_points(&args.input, points)?;
         args.close.check_points(points, &args.input)?;
         let curve = args.spline.build(points, &args.input)?;
@@ -98,42 +99,23 @@ fn write_spline<const D: usize>(
         &format!("curve spline: {n} samples"),
         curve_output_bytes::<D>(format, n + points.len()),
     )?;
-    let (ts, samples) = sample_curve(curve, n);
     let title = format!(
         "cubic spline, {}, {} points",
         args.spline.describe(),
         points.len()
     );
-    let comb = args.comb.teeth(curve, &ts);
-    let whiskers = if args.whiskers {
-        knot_whiskers(curve)
-    } else {
-        Vec::new()
+    let feet = curve.values().iter().zip(curve.knots().iter().copied());
+    let whiskers = match args.whiskers {
+        true => whiskers(curve, feet),
+        false => Vec::new(),
     };
-    let overlay = (&comb[..], &whiskers[..]);
-    let samples = (&ts[..], &samples[..]);
-    write_sampled_curve(
-        output,
-        format,
-        &title,
-        samples,
-        points,
-        curve.is_closed(),
-        overlay,
-    )?;
+    let drawing = CurveDrawing {
+        title: &title,
+        input: points,
+        closed_input: curve.is_closed(),
+        comb: args.comb.comb,
+    };
+    write_curve_samples(output, format, (curve, n), &drawing, &whiskers)?;
     report_samples(output, n);
     Ok(())
-}
-
-/// Whiskers (x-y projection) from every interpolated point to the curve at its knot.
-fn knot_whiskers<const D: usize>(curve: &CubicSpline<D>) -> Vec<[Point2; 2]> {
-    curve
-        .knots()
-        .iter()
-        .zip(curve.values())
-        .map(|(&t, p)| {
-            let q = curve.eval(t);
-            [Point2::new([p[0], p[1]]), Point2::new([q[0], q[1]])]
-        })
-        .collect()
 }

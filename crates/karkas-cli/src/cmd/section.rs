@@ -183,81 +183,92 @@ pub fn run(args: &SectionArgs) -> Result<()> {
     }
     let cuts = planes(args)?;
     match (args.method, &args.input) {
-        (SurfaceMethod::Coons, _) => {
-            let (Some(u_curves), Some(v_curves), Some(kind)) =
-                (&args.u_curves, &args.v_curves, args.kind)
-            else {
-                bail!("--method coons needs --kind, --u-curves U.csv and --v-curves V.csv");
-            };
-            let files = NetworkFiles {
-                u_curves,
-                v_curves,
-                u_derivs: None,
-                v_derivs: None,
-                twists: None,
-                tolerance: None,
-                repair: false,
-                creases: (false, false),
-            };
-            let (surface, u_family, v_family) =
-                network_surface(kind, &files, std::slice::from_ref(&args.output))?;
-            let points: Vec<Point3> = u_family
-                .curves
-                .iter()
-                .chain(&v_family.curves)
-                .flatten()
-                .copied()
-                .collect();
-            let longest = |curves: &[Vec<Point3>]| curves.iter().map(Vec::len).max().unwrap_or(0);
-            let kind_name = kind
-                .to_possible_value()
-                .map_or_else(String::new, |v| v.get_name().to_owned());
-            let source = Source {
-                diagonal: diagonal(&points),
-                lines: (longest(&u_family.curves), longest(&v_family.curves)),
-                title: format!(
-                    "the {kind_name} surface of {}, {}",
-                    file_name(u_curves),
-                    file_name(v_curves)
-                ),
-            };
-            cut(args, format, &cuts, &surface, &source)
-        }
-        (method, Some(input)) => {
-            let grid = read_grid_for(input, &args.output)?;
-            grid_points(input, grid.as_slice())?;
-            let source = Source {
-                diagonal: diagonal(grid.as_slice()),
-                lines: (grid.rows(), grid.cols()),
-                title: String::new(),
-            };
-            if method == SurfaceMethod::Bicubic {
-                let (closed_u, closed_v) = (args.ll.closed.closed_u, args.ll.closed.closed_v);
-                let param = args.param.kind();
-                let surface = BicubicSurface::new(&grid, param.to_library(), closed_u, closed_v)
-                    .with_context(|| input.display().to_string())?;
-                let param_name = param
-                    .to_possible_value()
-                    .map_or_else(String::new, |v| v.get_name().to_owned());
-                let title = format!(
-                    "the bicubic surface ({param_name} parameters) of {}",
-                    file_name(input)
-                );
-                cut(args, format, &cuts, &surface, &Source { title, ..source })
-            } else {
-                let surface = args.ll.build(&grid, input)?;
-                let title = format!(
-                    "the LL surface (L = {}) of {}",
-                    args.ll.order(),
-                    file_name(input)
-                );
-                cut(args, format, &cuts, &surface, &Source { title, ..source })
-            }
-        }
+        (SurfaceMethod::Coons, _) => cut_network(args, format, &cuts),
+        (method, Some(input)) => cut_grid(args, format, &cuts, method, input),
         (method, None) => bail!(
             "--method {} needs INPUT_GRID, the grid CSV to build the surface from",
             method.name()
         ),
+    }
+}
+
+/// `--method coons`: builds the surface of the network `--u-curves`, `--v-curves` and cuts it.
+fn cut_network(args: &SectionArgs, format: OutputFormat, cuts: &[Cut]) -> Result<()> {
+    let (Some(u_curves), Some(v_curves), Some(kind)) = (&args.u_curves, &args.v_curves, args.kind)
+    else {
+        bail!("--method coons needs --kind, --u-curves U.csv and --v-curves V.csv");
+    };
+    let files = NetworkFiles {
+        u_curves,
+        v_curves,
+        u_derivs: None,
+        v_derivs: None,
+        twists: None,
+        tolerance: None,
+        repair: false,
+        creases: (false, false),
+    };
+    let (surface, u_family, v_family) =
+        network_surface(kind, &files, std::slice::from_ref(&args.output))?;
+    let points: Vec<Point3> = u_family
+        .curves
+        .iter()
+        .chain(&v_family.curves)
+        .flatten()
+        .copied()
+        .collect();
+    let longest = |curves: &[Vec<Point3>]| curves.iter().map(Vec::len).max().unwrap_or(0);
+    let kind_name = kind
+        .to_possible_value()
+        .map_or_else(String::new, |v| v.get_name().to_owned());
+    let source = Source {
+        diagonal: diagonal(&points),
+        lines: (longest(&u_family.curves), longest(&v_family.curves)),
+        title: format!(
+            "the {kind_name} surface of {}, {}",
+            file_name(u_curves),
+            file_name(v_curves)
+        ),
+    };
+    cut(args, format, cuts, &surface, &source)
+}
+
+/// `--method ll` and `--method bicubic`: builds the surface of the grid `input` and cuts it.
+fn cut_grid(
+    args: &SectionArgs,
+    format: OutputFormat,
+    cuts: &[Cut],
+    method: SurfaceMethod,
+    input: &Path,
+) -> Result<()> {
+    let grid = read_grid_for(input, &args.output)?;
+    grid_points(input, grid.as_slice())?;
+    let source = Source {
+        diagonal: diagonal(grid.as_slice()),
+        lines: (grid.rows(), grid.cols()),
+        title: String::new(),
+    };
+    if method == SurfaceMethod::Bicubic {
+        let (closed_u, closed_v) = (args.ll.closed.closed_u, args.ll.closed.closed_v);
+        let param = args.param.kind();
+        let surface = BicubicSurface::new(&grid, param.to_library(), closed_u, closed_v)
+            .with_context(|| input.display().to_string())?;
+        let param_name = param
+            .to_possible_value()
+            .map_or_else(String::new, |v| v.get_name().to_owned());
+        let title = format!(
+            "the bicubic surface ({param_name} parameters) of {}",
+            file_name(input)
+        );
+        cut(args, format, cuts, &surface, &Source { title, ..source })
+    } else {
+        let surface = args.ll.build(&grid, input)?;
+        let title = format!(
+            "the LL surface (L = {}) of {}",
+            args.ll.order(),
+            file_name(input)
+        );
+        cut(args, format, cuts, &surface, &Source { title, ..source })
     }
 }
 
@@ -367,49 +378,7 @@ fn cut<S: Surface<3>>(
     }
     match format {
         OutputFormat::Csv => write_sections_csv(&args.output, &lines)?,
-        _ => {
-            let (nu, nv) = (mesh_samples(rows), mesh_samples(cols));
-            let (_, _, mesh) = sample_surface(surface, nu, nv);
-            let labels: Vec<String> = groups
-                .iter()
-                .zip(GROUPS)
-                .map(|(g, (name, _))| match g.len() {
-                    1 => format!("{name} (1 piece)"),
-                    n => format!("{name} ({n} pieces)"),
-                })
-                .collect();
-            let curves: Vec<SceneCurves<'_>> = groups
-                .iter()
-                .zip(GROUPS)
-                .zip(&labels)
-                .filter(|((g, _), _)| !g.is_empty())
-                .map(|((g, (_, rgb)), label)| SceneCurves {
-                    label,
-                    lines: g,
-                    rgb,
-                    width: 1.6,
-                })
-                .collect();
-            let title = format!("{} sections of {}", cuts.len(), source.title);
-            let scene = Scene {
-                title: &title,
-                mesh: SceneMesh {
-                    rows: nu,
-                    cols: nv,
-                    points: &mesh,
-                },
-                curves: &curves,
-                view: View {
-                    azimuth: args.view.0,
-                    elevation: args.view.1,
-                },
-            };
-            if format == OutputFormat::Png {
-                write_scene_png(&args.output, &scene)?;
-            } else {
-                write_scene_svg(&args.output, &scene)?;
-            }
-        }
+        _ => write_picture(args, format, surface, source, (cuts.len(), &groups))?,
     }
     crate::output::console::record("pieces", lines.len());
     crate::output::console::record("planes", cuts.len());
@@ -419,6 +388,58 @@ fn cut<S: Surface<3>>(
         lines.len(),
         cuts.len()
     ));
+    Ok(())
+}
+
+/// Draws the sections `groups` of `planes` planes over `surface` as the picture `format`.
+fn write_picture<S: Surface<3>>(
+    args: &SectionArgs,
+    format: OutputFormat,
+    surface: &S,
+    source: &Source,
+    (planes, groups): (usize, &[Vec<Vec<Point3>>; 4]),
+) -> Result<()> {
+    let (nu, nv) = (mesh_samples(source.lines.0), mesh_samples(source.lines.1));
+    let (_, _, mesh) = sample_surface(surface, nu, nv);
+    let labels: Vec<String> = groups
+        .iter()
+        .zip(GROUPS)
+        .map(|(g, (name, _))| match g.len() {
+            1 => format!("{name} (1 piece)"),
+            n => format!("{name} ({n} pieces)"),
+        })
+        .collect();
+    let curves: Vec<SceneCurves<'_>> = groups
+        .iter()
+        .zip(GROUPS)
+        .zip(&labels)
+        .filter(|((g, _), _)| !g.is_empty())
+        .map(|((g, (_, rgb)), label)| SceneCurves {
+            label,
+            lines: g,
+            rgb,
+            width: 1.6,
+        })
+        .collect();
+    let title = format!("{planes} sections of {}", source.title);
+    let scene = Scene {
+        title: &title,
+        mesh: SceneMesh {
+            rows: nu,
+            cols: nv,
+            points: &mesh,
+        },
+        curves: &curves,
+        view: View {
+            azimuth: args.view.0,
+            elevation: args.view.1,
+        },
+    };
+    if format == OutputFormat::Png {
+        write_scene_png(&args.output, &scene)?;
+    } else {
+        write_scene_svg(&args.output, &scene)?;
+    }
     Ok(())
 }
 

@@ -59,11 +59,8 @@ pub struct SurfaceBicubicArgs {
 /// Runs `karkas surface bicubic`.
 pub fn run(args: &SurfaceBicubicArgs) -> Result<()> {
     let formats = output_formats(&args.output, &EXACT_SURFACE_FORMATS)?;
-    args.samples.check()?;
-    args.mesh.check_all(&formats)?;
-    args.tolerance.check(&formats)?;
-    args.cad.check(&formats)?;
-    args.cap.check(&formats, args.tolerance.mesh_tolerance)?;
+    let options = (&args.samples, &args.mesh, &args.tolerance);
+    let writing = SurfaceWriting::checked(&formats, options, &args.cap, &args.cad)?;
     let grid = args.crease.apply(args.grid.read_for_all(&args.output)?)?;
     grid_points(&args.grid.input, grid.as_slice())?;
     let (closed_u, closed_v) = (args.closed.closed_u, args.closed.closed_v);
@@ -75,13 +72,6 @@ pub fn run(args: &SurfaceBicubicArgs) -> Result<()> {
     }
     let title = format!("bicubic surface, {} x {} grid", grid.rows(), grid.cols());
     let input = (args.grid.input.as_path(), &grid);
-    let writing = SurfaceWriting {
-        samples: args.samples.samples,
-        mesh: args.mesh.options(false),
-        tolerance: args.tolerance.mesh_tolerance,
-        cap: args.cap.cap,
-        cad: &args.cad,
-    };
     for (output, &format) in args.output.iter().zip(&formats) {
         write_grid_surface(&surface, format, output, input, &writing, &title)?;
     }

@@ -115,12 +115,8 @@ pub struct SurfaceCoonsArgs {
 /// Runs `karkas surface coons`.
 pub fn run(args: &SurfaceCoonsArgs) -> Result<()> {
     let formats = output_formats(&args.output, &EXACT_SURFACE_FORMATS)?;
-    args.samples.check()?;
-    args.mesh.check_all(&formats)?;
-    args.mesh_tolerance.check(&formats)?;
-    args.cad.check(&formats)?;
-    args.cap
-        .check(&formats, args.mesh_tolerance.mesh_tolerance)?;
+    let options = (&args.samples, &args.mesh, &args.mesh_tolerance);
+    let writing = SurfaceWriting::checked(&formats, options, &args.cap, &args.cad)?;
     let files = NetworkFiles {
         u_curves: &args.u_curves,
         v_curves: &args.v_curves,
@@ -144,13 +140,6 @@ pub fn run(args: &SurfaceCoonsArgs) -> Result<()> {
         u_family.curves.len(),
         v_family.curves.len()
     );
-    let writing = SurfaceWriting {
-        samples: args.samples.samples,
-        mesh: args.mesh.options(false),
-        tolerance: args.mesh_tolerance.mesh_tolerance,
-        cap: args.cap.cap,
-        cad: &args.cad,
-    };
     let what = format!("{}, {}", args.u_curves.display(), args.v_curves.display());
     for (output, &format) in args.output.iter().zip(&formats) {
         let drawn = (default, title.as_str(), None);

@@ -58,11 +58,8 @@ pub fn run(args: &SurfaceLlArgs) -> Result<()> {
     let formats = output_formats(&args.output, &STREAMED_SURFACE_FORMATS)?;
     args.ll.check()?;
     check_within(args.within)?;
-    args.samples.check()?;
-    args.mesh.check_all(&formats)?;
-    args.tolerance.check(&formats)?;
-    args.cad.check(&formats)?;
-    args.cap.check(&formats, args.tolerance.mesh_tolerance)?;
+    let options = (&args.samples, &args.mesh, &args.tolerance);
+    let writing = SurfaceWriting::checked(&formats, options, &args.cap, &args.cad)?;
     let grid = args.crease.apply(args.grid.read_for_all(&args.output)?)?;
     grid_points(&args.grid.input, grid.as_slice())?;
     let surface = match args.within {
@@ -92,13 +89,6 @@ pub fn run(args: &SurfaceLlArgs) -> Result<()> {
         grid.cols()
     );
     let input = (args.grid.input.as_path(), &grid);
-    let writing = SurfaceWriting {
-        samples: args.samples.samples,
-        mesh: args.mesh.options(false),
-        tolerance: args.tolerance.mesh_tolerance,
-        cap: args.cap.cap,
-        cad: &args.cad,
-    };
     for (output, &format) in args.output.iter().zip(&formats) {
         write_grid_surface(&surface, format, output, input, &writing, &title)?;
     }

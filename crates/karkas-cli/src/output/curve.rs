@@ -4,7 +4,10 @@
 use super::memory::check_memory;
 use super::target::shown;
 use anyhow::Result;
-use karkas::{Point, Point2};
+use karkas::{Curve, Point, Point2};
+use karkas_io::export::curve as io;
+use karkas_io::export::curve::CurveDrawing;
+use karkas_io::export::samples::sample_curve;
 use karkas_io::picture::budget;
 use karkas_io::svg::CurveOverlay;
 use karkas_io::viewer::PAGE_POINT;
@@ -13,8 +16,9 @@ use std::path::Path;
 
 pub use karkas_io::export::curve::{curvature_comb, to_space};
 
-/// Writes the samples `ts`, `curve` of a curve in `format`: the `t,x,y[,z]` CSV, else as
-/// [`write_curve_figure`] does with the curvature comb and whiskers `overlay`.
+/// Writes the samples `ts`, `curve` of a curve in `format` as karkas-io's
+/// [`write_sampled_curve`](io::write_sampled_curve) does, a picture or page after the memory
+/// check of [`write_curve_figure`].
 pub fn write_sampled_curve<const D: usize>(
     output: &Path,
     format: OutputFormat,
@@ -24,15 +28,63 @@ pub fn write_sampled_curve<const D: usize>(
     closed_input: bool,
     (comb, whiskers): (&[[Point2; 2]], &[[Point2; 2]]),
 ) -> Result<()> {
-    if format == OutputFormat::Csv {
-        return Ok(karkas_io::write::write_curve_csv(output, ts, curve)?);
+    if format != OutputFormat::Csv {
+        let overlay = CurveOverlay { comb, whiskers };
+        check_figure_memory::<D>(output, format, (curve.len(), input.len()), &overlay)?;
     }
-    let overlay = CurveOverlay { comb, whiskers };
-    write_curve_figure(output, format, title, curve, input, closed_input, &overlay)
+    let (samples, overlay) = ((ts, curve), (comb, whiskers));
+    Ok(io::write_sampled_curve(
+        output,
+        format,
+        title,
+        samples,
+        input,
+        closed_input,
+        overlay,
+    )?)
 }
 
-/// Writes a curve picture (`.svg`, `.png`: x-y projection, equal axis scales) or the viewer
-/// page (`.html`, in space) of the samples `curve` over the `input` points.
+/// Samples `curve` at `n` uniform parameters and writes the samples in `format` as
+/// [`write_sampled_curve`] does: drawn as `drawing` asks, with the `whiskers`.
+pub fn write_curve_samples<const D: usize>(
+    output: &Path,
+    format: OutputFormat,
+    (curve, n): (&impl Curve<D>, usize),
+    drawing: &CurveDrawing<'_, D>,
+    whiskers: &[[Point2; 2]],
+) -> Result<()> {
+    let (ts, samples) = sample_curve(curve, n);
+    let comb = match drawing.comb {
+        true => curvature_comb(curve, &ts),
+        false => Vec::new(),
+    };
+    let (title, closed) = (drawing.title, drawing.closed_input);
+    let overlay = (&comb[..], whiskers);
+    write_sampled_curve(
+        output,
+        format,
+        title,
+        (&ts, &samples),
+        drawing.input,
+        closed,
+        overlay,
+    )
+}
+
+/// Whiskers (x-y projection) from every point `p` of `feet` to `curve` at its parameter `t`.
+pub fn whiskers<'a, const D: usize>(
+    curve: &impl Curve<D>,
+    feet: impl IntoIterator<Item = (&'a Point<D>, f64)>,
+) -> Vec<[Point2; 2]> {
+    let flat = |p: Point<D>| Point2::new([p[0], p[1]]);
+    feet.into_iter()
+        .map(|(&p, t)| [flat(p), flat(curve.eval(t))])
+        .collect()
+}
+
+/// Writes a curve picture or the viewer page as karkas-io's
+/// [`write_curve_figure`](io::write_curve_figure) does, after a check that it fits in the
+/// memory cap.
 pub fn write_curve_figure<const D: usize>(
     output: &Path,
     format: OutputFormat,
@@ -42,16 +94,8 @@ pub fn write_curve_figure<const D: usize>(
     closed_input: bool,
     overlay: &CurveOverlay<'_>,
 ) -> Result<()> {
-    check_memory(
-        &format!(
-            "{}: a curve of {} points as {}",
-            shown(output).display(),
-            curve.len(),
-            format.extension()
-        ),
-        figure_bytes::<D>(format, curve.len() + input.len(), overlay),
-    )?;
-    Ok(karkas_io::export::curve::write_curve_figure(
+    check_figure_memory::<D>(output, format, (curve.len(), input.len()), overlay)?;
+    Ok(io::write_curve_figure(
         output,
         format,
         title,
@@ -60,6 +104,23 @@ pub fn write_curve_figure<const D: usize>(
         closed_input,
         overlay,
     )?)
+}
+
+/// Fails when a picture or page of a curve of `curve` samples over `input` points (with
+/// `overlay`) in `format` would take more than the memory cap.
+fn check_figure_memory<const D: usize>(
+    output: &Path,
+    format: OutputFormat,
+    (curve, input): (usize, usize),
+    overlay: &CurveOverlay<'_>,
+) -> Result<()> {
+    let name = shown(output);
+    let request = format!(
+        "{}: a curve of {curve} points as {}",
+        name.display(),
+        format.extension()
+    );
+    check_memory(&request, figure_bytes::<D>(format, curve + input, overlay))
 }
 
 /// What `points` samples of a curve (held as `Point<D>` with their parameters) take written in

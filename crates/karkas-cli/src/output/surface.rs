@@ -7,7 +7,7 @@ use super::console::{note, record};
 use super::memory::{check_memory, mesh_sample_budget, surface_output_bytes};
 use super::samples::{default_surface_samples, report_samples};
 use super::target::shown;
-use crate::args::CadOptions;
+use crate::args::{CadOptions, CapOption, GridSamples, MeshOutput, MeshTolerance};
 use anyhow::{anyhow, Result};
 use karkas::bspline::ToBSplineSurface;
 use karkas::{Grid, Point3, Surface};
@@ -35,14 +35,7 @@ pub fn write_sampled_surface(
     net: Option<&Grid<Point3>>,
     mesh: &MeshOptions,
 ) -> Result<()> {
-    check_memory(
-        &format!(
-            "{}: {nu} x {nv} samples as {}",
-            shown(output).display(),
-            format.extension()
-        ),
-        surface_output_bytes(format, nu, nv) + (nu as u128 + nv as u128) * 8,
-    )?;
+    check_samples(output, format, (nu, nv), true)?;
     if stream::streams(format) {
         // Checked as held (the same requests pass as before); written block by block.
         stream::write_surface_samples(surface, (nu, nv), format, output)?;
@@ -59,6 +52,28 @@ pub fn write_sampled_surface(
     Ok(())
 }
 
+/// Fails when writing `nu x nv` surface samples to `output` in `format` (with their
+/// parameters when `parameters`) would take more than the memory cap.
+fn check_samples(
+    output: &Path,
+    format: OutputFormat,
+    (nu, nv): (usize, usize),
+    parameters: bool,
+) -> Result<()> {
+    let name = shown(output);
+    let request = format!(
+        "{}: {nu} x {nv} samples as {}",
+        name.display(),
+        format.extension()
+    );
+    let held = if parameters {
+        (nu as u128 + nv as u128) * 8
+    } else {
+        0
+    };
+    check_memory(&request, surface_output_bytes(format, nu, nv) + held)
+}
+
 /// How a command writes the surface it built, besides the format: the samples asked for, how
 /// meshes are written and to which tolerance, whether open planar loops are capped, the CAD
 /// unit and scale.
@@ -73,6 +88,30 @@ pub struct SurfaceWriting<'a> {
     pub cap: bool,
     /// `--units`, `--scale` of STEP and IGES.
     pub cad: &'a CadOptions,
+}
+
+impl<'a> SurfaceWriting<'a> {
+    /// The options of a command writing `formats`, each checked against them (in this order:
+    /// `--samples`, `--flip-normals`, `--mesh-tolerance`, `--units` and `--scale`, `--cap`).
+    pub fn checked(
+        formats: &[OutputFormat],
+        (samples, mesh, tolerance): (&GridSamples, &MeshOutput, &MeshTolerance),
+        cap: &CapOption,
+        cad: &'a CadOptions,
+    ) -> Result<Self> {
+        samples.check()?;
+        mesh.check_all(formats)?;
+        tolerance.check(formats)?;
+        cad.check(formats)?;
+        cap.check(formats, tolerance.mesh_tolerance)?;
+        Ok(Self {
+            samples: samples.samples,
+            mesh: mesh.options(false),
+            tolerance: tolerance.mesh_tolerance,
+            cap: cap.cap,
+            cad,
+        })
+    }
 }
 
 /// Writes `surface` (from the input `what` names in errors) at `output` in `format`: its exact
@@ -134,14 +173,7 @@ fn write_mesh_within(
     let budget = mesh_sample_budget(format);
     let found = karkas::geometry::mesh_parameters(surface, tolerance, budget);
     let (nu, nv) = (found.us.len(), found.vs.len());
-    check_memory(
-        &format!(
-            "{}: {nu} x {nv} samples as {}",
-            shown(output).display(),
-            format.extension()
-        ),
-        surface_output_bytes(format, nu, nv),
-    )?;
+    check_samples(output, format, (nu, nv), false)?;
     let drawing = SurfaceDrawing {
         title,
         net: None,
@@ -182,14 +214,7 @@ pub fn write_capped_mesh(
     mesh: &MeshOptions,
     close_v: bool,
 ) -> Result<()> {
-    check_memory(
-        &format!(
-            "{}: {nu} x {nv} samples as {}",
-            shown(output).display(),
-            format.extension()
-        ),
-        surface_output_bytes(format, nu, nv) + (nu as u128 + nv as u128) * 8,
-    )?;
+    check_samples(output, format, (nu, nv), true)?;
     let (_, _, samples) = sample_surface(surface, nu, nv);
     let grid = if close_v {
         // The first sample column again after the last: the strip between them closes the

@@ -141,11 +141,14 @@ pub fn parse_ply(bytes: &[u8], path: &Path) -> Result<TriangleMesh, IoError> {
     parse_body(&header, reader, path)
 }
 
-/// Reads the header of a PLY file from `reader` up to its `end_header` line.
-fn read_header<R: BufRead + ?Sized>(reader: &mut R, path: &Path) -> Result<Header, IoError> {
-    let mut buf = Vec::new();
+/// Reads the first line of a PLY file into `buf`: `ply`, else the error that this is no PLY.
+fn read_magic<R: BufRead + ?Sized>(
+    reader: &mut R,
+    path: &Path,
+    buf: &mut Vec<u8>,
+) -> Result<(), IoError> {
     let not_ply = |what: &str| data_error(path, format!("not a PLY file: {what}"));
-    match read_line_bytes(reader, path, &mut buf, 1) {
+    match read_line_bytes(reader, path, buf, 1) {
         Ok(true) => {}
         Ok(false) => return Err(not_ply("the input is empty")),
         Err(_) => {
@@ -154,11 +157,18 @@ fn read_header<R: BufRead + ?Sized>(reader: &mut R, path: &Path) -> Result<Heade
             ))
         }
     }
-    let first = String::from_utf8_lossy(&buf);
+    let first = String::from_utf8_lossy(buf);
     if first.trim() != "ply" {
         let first = excerpt(first.trim_end_matches(['\r', '\n']));
         return Err(not_ply(&format!("the first line is '{first}'")));
     }
+    Ok(())
+}
+
+/// Reads the header of a PLY file from `reader` up to its `end_header` line.
+fn read_header<R: BufRead + ?Sized>(reader: &mut R, path: &Path) -> Result<Header, IoError> {
+    let mut buf = Vec::new();
+    read_magic(reader, path, &mut buf)?;
     let mut format = None;
     let mut elements: Vec<Element> = Vec::new();
     let mut header_bytes = buf.len();
@@ -339,29 +349,8 @@ fn parse_body(header: &Header, body_bytes: &[u8], path: &Path) -> Result<Triangl
         let mut list = Vec::new();
         let mut face_list = Vec::new();
         for _ in 0..count {
-            let mut is_polygon = false;
-            for (k, property) in element.properties.iter().enumerate() {
-                match property.list_count {
-                    None => values[k] = body.value(property.scalar).ok_or_else(truncated)?,
-                    Some(count_type) => {
-                        let items = body.value(count_type).ok_or_else(truncated)?;
-                        if !(0.0..=MAX_LIST_ITEMS).contains(&items) || items.fract() != 0.0 {
-                            return Err(truncated());
-                        }
-                        list.clear();
-                        for _ in 0..items as usize {
-                            list.push(body.value(property.scalar).ok_or_else(truncated)?);
-                        }
-                        if is_face
-                            && (property.name == "vertex_indices"
-                                || property.name == "vertex_index")
-                        {
-                            std::mem::swap(&mut face_list, &mut list);
-                            is_polygon = true;
-                        }
-                    }
-                }
-            }
+            let lists = (&mut list, &mut face_list);
+            let is_polygon = read_row(&mut body, element, &mut values, lists, &truncated)?;
             if is_vertex {
                 let get = |i: [Option<usize>; 3]| i.map(|k| k.map_or(0.0, |k| values[k]));
                 let p = Point3::new(get(xyz));
@@ -391,6 +380,40 @@ fn parse_body(header: &Header, body_bytes: &[u8], path: &Path) -> Result<Triangl
         grid: None,
     }
     .checked_read(path)
+}
+
+/// Reads one row of `element` from `body`: its scalar properties into `values`, and its lists
+/// into `list`, a face's vertex indices into `face` (then true).
+fn read_row(
+    body: &mut PlyBody<'_>,
+    element: &Element,
+    values: &mut [f64],
+    (list, face): (&mut Vec<f64>, &mut Vec<f64>),
+    truncated: &impl Fn() -> IoError,
+) -> Result<bool, IoError> {
+    let is_face = element.name == "face";
+    let mut is_polygon = false;
+    for (k, property) in element.properties.iter().enumerate() {
+        match property.list_count {
+            None => values[k] = body.value(property.scalar).ok_or_else(truncated)?,
+            Some(count_type) => {
+                let items = body.value(count_type).ok_or_else(truncated)?;
+                if !(0.0..=MAX_LIST_ITEMS).contains(&items) || items.fract() != 0.0 {
+                    return Err(truncated());
+                }
+                list.clear();
+                for _ in 0..items as usize {
+                    list.push(body.value(property.scalar).ok_or_else(truncated)?);
+                }
+                if is_face && (property.name == "vertex_indices" || property.name == "vertex_index")
+                {
+                    std::mem::swap(face, list);
+                    is_polygon = true;
+                }
+            }
+        }
+    }
+    Ok(is_polygon)
 }
 
 /// Adds the triangles of the polygon `corners` (vertex indices as read): the fan from its

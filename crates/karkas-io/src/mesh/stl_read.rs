@@ -192,14 +192,7 @@ fn parse_ascii<R: BufRead + ?Sized>(
         line += 1;
         let more =
             read_line_bytes(reader, path, &mut buf, line).map_err(|e| match damaged_binary {
-                Some(n) => decode(
-                    path,
-                    format!(
-                    "it starts with 'solid' but holds binary data, and its size is not 84 + 50 \
-                     x {n} bytes for the {n} triangles its binary header counts (a damaged \
-                     binary STL)"
-                ),
-                ),
+                Some(n) => damaged(path, n),
                 None => e,
             })?;
         if !more {
@@ -230,20 +223,7 @@ fn parse_ascii<R: BufRead + ?Sized>(
                 let Some(corners) = facet.as_mut() else {
                     return Err(at("'vertex' outside a facet".to_owned()));
                 };
-                let values: Vec<&str> = words.by_ref().take(4).collect();
-                if values.len() != 3 {
-                    return Err(at(format!(
-                        "'vertex' needs 3 numbers, found {}",
-                        values.len()
-                    )));
-                }
-                let mut p = Point3::ZERO;
-                for (c, v) in values.iter().enumerate() {
-                    p[c] = match v.parse::<f64>() {
-                        Ok(x) if x.is_finite() => x,
-                        _ => return Err(at(format!("'{}' is not a finite number", excerpt(v)))),
-                    };
-                }
+                let p = vertex_point(words).map_err(at)?;
                 if corners.len() >= 1 << 16 {
                     return Err(at("a facet of more than 65536 vertices".to_owned()));
                 }
@@ -278,6 +258,34 @@ fn parse_ascii<R: BufRead + ?Sized>(
         ));
     }
     mesh.finish(path)
+}
+
+/// The error of binary data in a file that starts with `solid` and whose binary header counts
+/// `n` triangles, but whose size does not fit them.
+fn damaged(path: &Path, n: u64) -> IoError {
+    decode(
+        path,
+        format!(
+            "it starts with 'solid' but holds binary data, and its size is not 84 + 50 x {n} \
+             bytes for the {n} triangles its binary header counts (a damaged binary STL)"
+        ),
+    )
+}
+
+/// The point of an ASCII STL `vertex` line from the `words` after its keyword.
+fn vertex_point<'a>(words: impl Iterator<Item = &'a str>) -> Result<Point3, String> {
+    let values: Vec<&str> = words.take(4).collect();
+    if values.len() != 3 {
+        return Err(format!("'vertex' needs 3 numbers, found {}", values.len()));
+    }
+    let mut p = Point3::ZERO;
+    for (c, v) in values.iter().enumerate() {
+        p[c] = match v.parse::<f64>() {
+            Ok(x) if x.is_finite() => x,
+            _ => return Err(format!("'{}' is not a finite number", excerpt(v))),
+        };
+    }
+    Ok(p)
 }
 
 /// A mesh built corner by corner, equal corners merged into one vertex.

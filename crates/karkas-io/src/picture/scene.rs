@@ -203,6 +203,40 @@ pub fn render_scene_svg(scene: &Scene<'_>) -> String {
     } else {
         &[]
     };
+    let (camera, height, size) = frame(scene, mesh_points);
+    let picture = (DRAWING_WIDTH + 2.0 * MARGIN, height + TOP + BOTTOM);
+
+    let mut svg = String::with_capacity(64 * mesh_points.len() + 4096);
+    let _ = write!(
+        svg,
+        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w:.0}" height="{h:.0}" viewBox="0 0 {w:.0} {h:.0}">"#,
+        w = picture.0,
+        h = picture.1
+    );
+    let _ = write!(
+        svg,
+        r#"<rect width="100%" height="100%" fill="white"/><text x="{x:.1}" y="34" font-family="sans-serif" font-size="20" text-anchor="middle">{}</text>"#,
+        escape(scene.title),
+        x = picture.0 / 2.0
+    );
+    let _ = write!(svg, r#"<g transform="translate({MARGIN},{TOP})">"#);
+    let cells = mesh_cells(mesh.rows, mesh.cols, mesh_points, &camera);
+    write_cells(&mut svg, &cells);
+    let depth = DepthBuffer::of_cells(&camera, &cells);
+    let slack = DEPTH_SLACK * size;
+    write_curves(&mut svg, scene.curves, &camera, &depth, slack);
+    svg.push_str("</g>");
+    write_scale_bar(&mut svg, &camera, scene.view, TOP + height + 16.0);
+    write_triad(&mut svg, &camera, (picture.0 - 70.0, TOP + height + 50.0));
+    write_legend(&mut svg, scene.curves, picture.1 - 16.0);
+    svg.push_str("</svg>\n");
+    svg
+}
+
+/// The camera that fits the finite `mesh_points` and the scene's curves into the drawing
+/// area, the drawing area's height in pixels, and the size of the model (the largest distance
+/// from its first point).
+fn frame(scene: &Scene<'_>, mesh_points: &[Point3]) -> (Camera, f64, f64) {
     let (right, up, toward) = scene.view.frame();
     let all = mesh_points
         .iter()
@@ -242,35 +276,26 @@ pub fn render_scene_svg(scene: &Scene<'_>) -> String {
         width: DRAWING_WIDTH as usize,
         height: height.ceil() as usize,
     };
-    let picture = (DRAWING_WIDTH + 2.0 * MARGIN, height + TOP + BOTTOM);
+    (camera, height, size)
+}
 
-    let mut svg = String::with_capacity(64 * mesh_points.len() + 4096);
-    let _ = write!(
-        svg,
-        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w:.0}" height="{h:.0}" viewBox="0 0 {w:.0} {h:.0}">"#,
-        w = picture.0,
-        h = picture.1
-    );
-    let _ = write!(
-        svg,
-        r#"<rect width="100%" height="100%" fill="white"/><text x="{x:.1}" y="34" font-family="sans-serif" font-size="20" text-anchor="middle">{}</text>"#,
-        escape(scene.title),
-        x = picture.0 / 2.0
-    );
-    let _ = write!(svg, r#"<g transform="translate({MARGIN},{TOP})">"#);
-    let cells = mesh_cells(mesh.rows, mesh.cols, mesh_points, &camera);
-    write_cells(&mut svg, &cells);
-    let depth = DepthBuffer::of_cells(&camera, &cells);
-    let slack = DEPTH_SLACK * size;
-    for group in scene.curves {
+/// Draws the visible runs of every line of `curves`, a group of polylines a curve group.
+fn write_curves(
+    svg: &mut String,
+    curves: &[SceneCurves<'_>],
+    camera: &Camera,
+    depth: &DepthBuffer,
+    slack: f64,
+) {
+    for group in curves {
         let (r, g, b) = group.rgb;
         let _ = write!(
-            svg,
+            *svg,
             r#"<g fill="none" stroke="rgb({r},{g},{b})" stroke-width="{:.2}" stroke-linejoin="round" stroke-linecap="round">"#,
             group.width
         );
         for line in group.lines {
-            for run in visible_runs(line, &camera, &depth, slack) {
+            for run in visible_runs(line, camera, depth, slack) {
                 svg.push_str(r#"<polyline points=""#);
                 for (k, (x, y)) in run.iter().enumerate() {
                     let sep = if k == 0 { "" } else { " " };
@@ -281,12 +306,6 @@ pub fn render_scene_svg(scene: &Scene<'_>) -> String {
         }
         svg.push_str("</g>");
     }
-    svg.push_str("</g>");
-    write_scale_bar(&mut svg, &camera, scene.view, TOP + height + 16.0);
-    write_triad(&mut svg, &camera, (picture.0 - 70.0, TOP + height + 50.0));
-    write_legend(&mut svg, scene.curves, picture.1 - 16.0);
-    svg.push_str("</svg>\n");
-    svg
 }
 
 /// One mesh cell in pixels: corners, depth of its centre, grey level.

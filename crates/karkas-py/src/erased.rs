@@ -1,23 +1,33 @@
-//! The dimension-free interfaces behind the base classes `Curve` and `Surface`.
+//! The dimension-erased layer: karkas curves and surfaces of either dimension behind one
+//! interface, and that interface seen again as a karkas curve or surface of a fixed dimension.
 //!
 //! A karkas curve or surface has its dimension `D` as a type parameter; Python objects do not.
-//! [`Wrapped`] and [`WrappedSurface`] put a library object of either dimension behind
-//! [`CurveImpl`] and [`SurfaceImpl`], which evaluate whole parameter arrays into flat output
-//! buffers (one dynamic call per batch, the library's `eval_into` inside). Every concrete class
-//! hands its base class one of these.
+//! - Erasing: [`Wrapped`] and [`WrappedSurface`] put a library object of either dimension
+//!   behind [`CurveImpl`] and [`SurfaceImpl`], which evaluate whole parameter arrays into flat
+//!   output buffers (one dynamic call per batch, the library's `eval_into` inside), and behind
+//!   the geometry interfaces [`CurveGeometryImpl`] and [`SurfaceGeometryImpl`] (arc length,
+//!   curvature, projection; normals, principal curvatures, projection; implemented for the
+//!   library's types in `geometry`). Every concrete class hands its base class one of these.
+//! - Lifting back: [`CurveView`] and [`SurfaceView`] see an erased curve or surface as a karkas
+//!   curve of dimension `D` or a surface in space, for karkas-io's writers (sampled with the
+//!   library's own uniform parameters, [`karkas::Curve::sample_into`], so that a file written
+//!   from Python is the file the command line writes); [`CurveLift`] and [`Lift`] see a plane
+//!   curve or surface in space (a derivative object, seen as a library curve or surface of
+//!   its parent's higher derivatives, is in `geometry`).
 
 use karkas::bspline::{ToBSplineCurve, ToBSplineSurface, MAX_DEGREE};
+use karkas::geometry::{CurveFairness, PrincipalCurvatures};
 use karkas::implicit::ExpressionSurface;
 use karkas::measure::{hausdorff_surface_implicit, Hausdorff};
 use karkas::section::{plane_section, Plane, SectionOptions};
-use karkas::{Interval, PiecewiseCurve, Point, Point3, Surface};
+use karkas::{Curve, Interval, PiecewiseCurve, Point, Point3, Surface};
 
-use crate::bspline_form::{FlatBSpline, FlatBSplineSurface};
+use crate::bspline::{FlatBSpline, FlatBSplineSurface};
 use crate::convert::as_points_mut;
 use crate::section::PySectionCurve;
 
 /// A karkas curve of either dimension, evaluated on flat buffers.
-pub trait CurveImpl: crate::geometry_interface::CurveGeometryImpl + Send + Sync {
+pub trait CurveImpl: CurveGeometryImpl + Send + Sync {
     /// The dimension `d` (2 or 3).
     fn dim(&self) -> usize;
     /// The parameter domain `(a, b)`.
@@ -122,7 +132,7 @@ where
     }
 }
 /// A karkas surface of either dimension, evaluated on flat buffers.
-pub trait SurfaceImpl: crate::geometry_interface::SurfaceGeometryImpl + Send + Sync {
+pub trait SurfaceImpl: SurfaceGeometryImpl + Send + Sync {
     /// The dimension `d` (2 or 3).
     fn dim(&self) -> usize;
     /// The `u` domain.
@@ -162,6 +172,24 @@ pub trait SurfaceImpl: crate::geometry_interface::SurfaceGeometryImpl + Send + S
     /// (a rational B-spline surface).
     fn extrapolates(&self) -> bool {
         false
+    }
+}
+
+/// A curve of dimension `D <= 3` seen as one in 3-D (missing coordinates zero).
+pub(crate) struct CurveLift<'a, C, const D: usize>(pub(crate) &'a C);
+
+impl<C: Curve<D>, const D: usize> Curve<3> for CurveLift<'_, C, D> {
+    fn domain(&self) -> Interval {
+        self.0.domain()
+    }
+    fn is_closed(&self) -> bool {
+        self.0.is_closed()
+    }
+    fn eval(&self, t: f64) -> Point3 {
+        lift(self.0.eval(t))
+    }
+    fn deriv(&self, t: f64, k: usize) -> Point3 {
+        lift(self.0.deriv(t, k))
     }
 }
 
@@ -274,5 +302,136 @@ where
                 self.0.deriv(u, v, ku, kv)
             };
         }
+    }
+}
+
+/// The geometry of a curve of either dimension on flat buffers.
+pub trait CurveGeometryImpl {
+    /// The arc length from `t0` to every `t1s[i]` into `out[i]`, each to `tol`.
+    fn arc_lengths(&self, t0: f64, t1s: &[f64], tol: f64, out: &mut [f64]);
+    /// The parameter after walking `lengths[i]` from `t0`, into `out[i]`.
+    fn inverse_arc_lengths(&self, t0: f64, lengths: &[f64], tol: f64, out: &mut [f64]);
+    /// The curvature at every `ts[i]` into `out[i]`.
+    fn curvatures(&self, ts: &[f64], out: &mut [f64]);
+    /// The torsion at every `ts[i]` into `out[i]` (3-D only: false otherwise).
+    fn torsions(&self, ts: &[f64], out: &mut [f64]) -> bool;
+    /// The fairness figures, the distance measured to the polygon of the flat `points`.
+    fn fairness(&self, points: &[f64]) -> CurveFairness;
+    /// The nearest points to the flat points `qs` (`dim` coordinates each): parameters,
+    /// distances, and foot points (flat).
+    fn project(
+        &self,
+        qs: &[f64],
+        tol: f64,
+        t: &mut [f64],
+        distance: &mut [f64],
+        foot: &mut [f64],
+    ) -> karkas::Result<()>;
+}
+
+/// The geometry of a surface of either dimension on flat buffers (parameters as pairs).
+pub trait SurfaceGeometryImpl {
+    /// The unit normal at every `(us[i], vs[i])` into `out[3 i..3 i + 3]`.
+    fn normals(&self, us: &[f64], vs: &[f64], out: &mut [f64]);
+    /// The principal curvatures and directions at every `(us[i], vs[i])`.
+    fn principal(&self, us: &[f64], vs: &[f64]) -> Vec<PrincipalCurvatures>;
+    /// The nearest points to the flat points `qs`: `u`, `v`, distances, foot points.
+    #[allow(clippy::too_many_arguments)]
+    fn project(
+        &self,
+        qs: &[f64],
+        cells: (usize, usize),
+        tol: f64,
+        u: &mut [f64],
+        v: &mut [f64],
+        distance: &mut [f64],
+        foot: &mut [f64],
+    ) -> karkas::Result<()>;
+}
+
+/// A curve of the base class `Curve` of dimension `D` (checked by the caller) as a karkas
+/// curve.
+pub struct CurveView<'a, const D: usize>(pub &'a dyn CurveImpl);
+
+impl<const D: usize> CurveView<'_, D> {
+    fn at(&self, t: f64, k: usize) -> Point<D> {
+        let mut out = [Point::<D>::ZERO];
+        self.deriv_into(&[t], k, &mut out);
+        out[0]
+    }
+}
+
+impl<const D: usize> Curve<D> for CurveView<'_, D> {
+    fn domain(&self) -> Interval {
+        let (a, b) = self.0.domain();
+        Interval::new(a, b)
+    }
+    fn is_closed(&self) -> bool {
+        self.0.closed()
+    }
+    fn eval(&self, t: f64) -> Point<D> {
+        self.at(t, 0)
+    }
+    fn deriv(&self, t: f64, k: usize) -> Point<D> {
+        self.at(t, k)
+    }
+    fn eval_into(&self, ts: &[f64], out: &mut [Point<D>]) {
+        self.deriv_into(ts, 0, out);
+    }
+    fn deriv_into(&self, ts: &[f64], k: usize, out: &mut [Point<D>]) {
+        self.0.eval_flat(ts, k, bytemuck::cast_slice_mut(out));
+    }
+}
+
+/// A surface of the base class `Surface` as a karkas surface in space (planar surfaces in
+/// `z = 0`).
+pub struct SurfaceView<'a>(pub &'a dyn SurfaceImpl);
+
+impl SurfaceView<'_> {
+    /// The derivative `(ku, kv)` on the grid `us x vs` in space.
+    fn grid(&self, us: &[f64], vs: &[f64], ku: usize, kv: usize, out: &mut [Point3]) {
+        if self.0.dim() == 3 {
+            self.0
+                .grid_flat(us, vs, ku, kv, bytemuck::cast_slice_mut(out));
+            return;
+        }
+        let d = self.0.dim();
+        let mut flat = vec![0.0; us.len() * vs.len() * d];
+        self.0.grid_flat(us, vs, ku, kv, &mut flat);
+        for (p, q) in out.iter_mut().zip(flat.chunks_exact(d)) {
+            *p = Point3::ZERO;
+            p.0[..d].copy_from_slice(q);
+        }
+    }
+    fn at(&self, u: f64, v: f64, ku: usize, kv: usize) -> Point3 {
+        let mut out = [Point3::ZERO];
+        self.grid(&[u], &[v], ku, kv, &mut out);
+        out[0]
+    }
+}
+
+impl Surface<3> for SurfaceView<'_> {
+    fn domain_u(&self) -> Interval {
+        let (a, b) = self.0.domain_u();
+        Interval::new(a, b)
+    }
+    fn domain_v(&self) -> Interval {
+        let (a, b) = self.0.domain_v();
+        Interval::new(a, b)
+    }
+    fn is_closed_u(&self) -> bool {
+        self.0.closed().0
+    }
+    fn is_closed_v(&self) -> bool {
+        self.0.closed().1
+    }
+    fn eval(&self, u: f64, v: f64) -> Point3 {
+        self.at(u, v, 0, 0)
+    }
+    fn deriv(&self, u: f64, v: f64, ku: usize, kv: usize) -> Point3 {
+        self.at(u, v, ku, kv)
+    }
+    fn eval_grid_into(&self, us: &[f64], vs: &[f64], out: &mut [Point3]) {
+        self.grid(us, vs, 0, 0, out);
     }
 }
