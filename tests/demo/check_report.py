@@ -139,6 +139,20 @@ def main() -> int:
         failures.append("no single cylinder row")
     elif not 0.008 <= cylinder[0]["karkas"] <= 0.013:
         failures.append(f"cylinder row {cylinder[0]['karkas']} outside 0.008..0.013")
+    # Chashnikov's figures 1 and 2 (coons-fig3): the pictures, and the blending functions'
+    # extreme values against the Hermite cubics' closed form (1 at the node; 4/27, the peak of
+    # s (1 - s)^2 at s = 1/3).
+    fig3 = next((e for e in report["examples"] if e["id"] == "coons-fig3"), None)
+    for name in ("coons-blending-fig1.svg", "coons-blending-fig2.svg"):
+        if fig3 is None or name not in fig3["pictures"]:
+            failures.append(f"coons-fig3: picture {name} missing")
+    for label, expected, tolerance in [
+        ("001 fig. 1: blending function H_2i, i = 2", 1.0, 1e-12),
+        ("001 fig. 2: blending function H_2i+1, i = 2", 4 / 27, 1e-4),
+    ]:
+        found = [r["karkas"] for r in rows if r["example"] == label]
+        if len(found) != 1 or abs(found[0] - expected) > tolerance:
+            failures.append(f"{label}: {found} is not {expected}")
     failures += kuznetsov_filatov_statements(
         {
             r["example"]: r

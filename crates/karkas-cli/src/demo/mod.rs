@@ -72,7 +72,8 @@ const STEPS: [Step; 12] = [
         id: "coons-fig3",
         seed: "001",
         title: "The curve network of figure 3 (3 x 3 curves): Lagrange and spline Gordon \
-                surfaces and the composite Coons surface",
+                surfaces and the composite Coons surface; the blending functions of figures 1 \
+                and 2",
         note: Some(
             "The paper prints pictures, not figures: the network is cut from a closed-form \
              body, and the distances to that body are measured.",
