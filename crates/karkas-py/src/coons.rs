@@ -13,7 +13,7 @@ use crate::convert::{
     as_points, by_dim, check_dim, count, object_list, FlatPoints, GridArray, Int, PointsArray,
 };
 use crate::erased::{SurfaceImpl, WrappedSurface};
-use crate::errors::{library_error, OptionError, PointsError};
+use crate::errors::{library_error, KarkasWarning, OptionError, PointsError};
 use crate::limits::{bytes_of, check_memory};
 use crate::surface::PySurface;
 
@@ -106,6 +106,13 @@ fn first_dim(lists: &[Bound<'_, PyAny>], what: &str) -> PyResult<usize> {
 /// OptionError
 ///     An unknown ``kind`` or ``fit``, derivatives for one family only, or twists with
 ///     derivatives or with a kind that takes neither.
+///
+/// Warns
+/// -----
+/// KarkasWarning
+///     ``kind='bicubic'`` without ``u_derivs`` and ``v_derivs``: the cross-boundary
+///     derivatives are then taken from the two curves of each family, and even a cubic
+///     surface is missed.
 ///
 /// Examples
 /// --------
@@ -265,6 +272,14 @@ impl PyCoonsSurface {
             fit,
             tolerances: (crossing_tolerance, tolerance),
         };
+        if kind.name() == "bicubic" && u_derivs.is_none() {
+            // The same warning as `karkas surface coons --kind bicubic`.
+            let message = c"kind 'bicubic' without u_derivs and v_derivs takes the cross-boundary \
+                derivatives from the two curves of each family (their tangents and the twists), \
+                which misses even a surface the operator reproduces from its own derivatives (a \
+                cubic); give u_derivs and v_derivs (--u-derivs/--v-derivs) to interpolate them";
+            PyErr::warn(py, &py.get_type::<KarkasWarning>(), message, 1)?;
+        }
         let dim = first_dim(&v_curves, "v_curves")?;
         let (inner, counts): (Arc<dyn SurfaceImpl>, (usize, usize)) = by_dim!(dim, D => {
             let v = point_lists::<D>(&v_curves, "v_curves")?;

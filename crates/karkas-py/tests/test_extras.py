@@ -53,6 +53,21 @@ def test_coons_errors():
         karkas.CoonsSurface(u_curves=u, v_curves=v, kind="composite", u_derivs=u)
 
 
+def test_bicubic_coons_without_derivatives_warns_naming_them():
+    v, u = paraboloid_network()
+    v, u = [v[0], v[-1]], [u[0], u[-1]]
+    with pytest.warns(karkas.KarkasWarning, match="u_derivs and v_derivs") as caught:
+        karkas.CoonsSurface(u_curves=u, v_curves=v, kind="bicubic")
+    assert len(caught) == 1
+    import warnings
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        karkas.CoonsSurface(u_curves=u, v_curves=v, kind="bilinear")
+        v5, u5 = paraboloid_network()
+        karkas.CoonsSurface(u_curves=u5, v_curves=v5, kind="composite")
+
+
 def test_plane_section_lies_on_the_plane_and_the_surface():
     x = np.linspace(0, 1, 8)
     X, Y = np.meshgrid(x, x, indexing="ij")

@@ -11,8 +11,8 @@ use super::coons_data::{
 use crate::output::samples::sample_surface;
 use anyhow::Result;
 use karkas::coons::{
-    Along, CoonsSurface, CrossDerivatives, CurveFit, CurveNetwork, NetworkAxis, PointNetwork,
-    SplineEnds, DEFAULT_TOLERANCE,
+    Along, BlendingFamily, CoonsSurface, CrossDerivatives, CurveFit, CurveNetwork, NetworkAxis,
+    PiecewiseHermiteBlending, PointNetwork, SplineEnds, DEFAULT_TOLERANCE,
 };
 use karkas::{Point2, Point3, Surface};
 use karkas_io::obj::write_surface_obj;
@@ -115,6 +115,86 @@ pub fn figure_3(out: &Output) -> Result<Vec<Finding>> {
         ],
         3,
     )
+    .and_then(|mut findings| {
+        findings.extend(blending_figures(out)?);
+        Ok(findings)
+    })
+}
+
+/// Chashnikov's figures 1 and 2: the piecewise Hermite blending functions `H^u_{2i}` and
+/// `H^u_{2i+1}` of (17) (the library's family of the composite Coons surface) on the integer
+/// nodes `0..4`, drawn for `i = 2`, with their extreme values as rows: `H_{2i}` peaks at 1 at
+/// its node, `H_{2i+1}` at `4/27` (`u = i -+ 1/3`, where the Hermite cubics `s (1 - s)^2` and
+/// `-s^2 (1 - s)` peak).
+fn blending_figures(out: &Output) -> Result<Vec<Finding>> {
+    const NODES: [f64; 5] = [0.0, 1.0, 2.0, 3.0, 4.0];
+    const I: usize = 2;
+    const SAMPLES: usize = 801;
+    let family = PiecewiseHermiteBlending::new(&NODES)?;
+    let mut weights = vec![0.0; family.len()];
+    let (mut value, mut slope) = (Vec::new(), Vec::new());
+    for k in 0..SAMPLES {
+        let t = NODES[4] * k as f64 / (SAMPLES - 1) as f64;
+        let nonzero = family.eval_into(t, 0, &mut weights);
+        let weight = |j: usize| {
+            if nonzero.contains(&j) {
+                weights[j]
+            } else {
+                0.0
+            }
+        };
+        value.push(Point2::new([t, weight(2 * I)]));
+        slope.push(Point2::new([t, weight(2 * I + 1)]));
+    }
+    let axis = vec![vec![Point2::new([0.0, 0.0]), Point2::new([NODES[4], 0.0])]];
+    let mut findings = Vec::new();
+    for (figure, name, file, line, measure) in [
+        (
+            1,
+            "H_2i",
+            "coons-blending-fig1.svg",
+            &value,
+            "largest value (1 at its node u = i)",
+        ),
+        (
+            2,
+            "H_2i+1",
+            "coons-blending-fig2.svg",
+            &slope,
+            "largest |value| (4/27 at u = i -+ 1/3)",
+        ),
+    ] {
+        let title = format!(
+            "Chashnikov, fig. {figure}: the blending function {name} of (17) for i = {I} on the \
+             nodes 0..4 (cubic Hermite pieces)"
+        );
+        write_lines_svg(
+            &out.file(file),
+            &LinesPlot {
+                title: &title,
+                axes: ("u", name),
+                groups: &[
+                    LineGroup {
+                        lines: &axis,
+                        rgb: (150, 150, 150),
+                        width: 1,
+                    },
+                    LineGroup {
+                        lines: std::slice::from_ref(line),
+                        rgb: (20, 60, 200),
+                        width: 2,
+                    },
+                ],
+            },
+        )?;
+        let peak = line.iter().map(|p| p[1].abs()).fold(0.0, f64::max);
+        findings.push(Finding::new(
+            format!("001 fig. {figure}: blending function {name}, i = {I}"),
+            measure,
+            peak,
+        ));
+    }
+    Ok(findings)
 }
 
 /// The checks of surfaces through a network cut from `body`: the largest miss of a network

@@ -72,7 +72,8 @@ const STEPS: [Step; 12] = [
         id: "coons-fig3",
         seed: "001",
         title: "The curve network of figure 3 (3 x 3 curves): Lagrange and spline Gordon \
-                surfaces and the composite Coons surface",
+                surfaces and the composite Coons surface; the blending functions of figures 1 \
+                and 2",
         note: Some(
             "The paper prints pictures, not figures: the network is cut from a closed-form \
              body, and the distances to that body are measured.",
@@ -146,16 +147,25 @@ const STEPS: [Step; 12] = [
         title: "Cylinder and one-sheet hyperboloid, 5 x 9 frames along the lines of curvature \
                 and turned away from them: Hausdorff errors of the bicubic interpolant",
         note: Some(
-            "The paper does not say exactly how its turned frames were laid; they are laid as \
-             docs/methods.md §5 states. What the rows show: the cylinder along its lines of \
-             curvature lands near the paper's 0.011; both families turned raise the error \
-             as in the paper, though less. Not reproduced: with the generator alone turned \
-             by 30 or 45 deg the error barely rises (the paper: eightfold; the cause is not \
-             measured: the paper's turned lines are not known); the hyperboloid along its lines of curvature gives about a third of the paper's 0.03 \
-             and its turned meridian about a seventh of 0.078 (the paper states neither its \
-             end conditions nor its layout; karkas's are not-a-knot). The helix frame, not in \
-             the paper, beats the lines of curvature on the cylinder: the paper's conclusion \
-             holds for its own frames, not as a rule.",
+            "The paper does not say exactly how its turned frames were laid, nor its end \
+             conditions; the frames are laid as docs/methods.md §5 states and every frame is \
+             measured twice: with not-a-knot ends (the paper's (3.10)-(3.12)) and with natural \
+             ends (rows marked so; every frame but the plane sections agrees with a SciPy \
+             CubicSpline rebuild, tests/demo/kf_rebuild.py). Reproduced within 30%: the cylinder along its lines of \
+             curvature with not-a-knot ends (0.0093, paper 0.011) and the hyperboloid along its \
+             lines of curvature with natural ends (0.032, paper 0.03); no one end condition \
+             gives both (natural ends: cylinder 0.031; not-a-knot: hyperboloid 0.0095). Not \
+             reproduced: the eightfold rise with the generator alone turned by 30 or 45 deg \
+             (paper 0.011 to 0.086 and 0.09): here 1.02 and 1.18 times with not-a-knot ends, \
+             1.13 and 1.39 with natural ends, because the worst point stays at the seam of the \
+             closed circles (the open ends of every row), which the turned generator leaves as \
+             they are; both families turned (0.026 and 0.061, natural 0.035 and 0.054; paper \
+             0.089 and 0.267) and the turned meridian (0.0115, natural 0.048; paper 0.078) rise \
+             less than the paper's. The paper's frames along the lines of curvature beat its \
+             turned frames under both end conditions, but its conclusion does not hold as a \
+             rule: the helix frame (both families turned 30 deg, not in the paper) beats the \
+             lines of curvature on the cylinder under both (0.0055 against 0.0093, natural \
+             0.026 against 0.031).",
         ),
         run: param::run,
     },
@@ -178,8 +188,9 @@ const STEPS: [Step; 12] = [
              family turned by a small angle the worst point can stay at the seam of the first \
              circle, which every frame shares, so the error ties with 0 deg there. At 75 deg \
              the stretched step (0.5 / cos 75 deg = 1.93) puts consecutive nodes of a \
-             generator helix 107 deg apart around the axis, which the cubic through them \
-             cannot follow.",
+             generator helix 107 deg apart around the axis: the cubics along the helices cut \
+             inside the cylinder and the error, 0.19, is eight times the 60 deg frame's (a \
+             SciPy rebuild of the same nodes gives the same figure).",
         ),
         run: param::angle_sweep,
     },

@@ -11,7 +11,7 @@ use super::param_experiment::{
 };
 use crate::output::samples::sample_surface;
 use anyhow::{Context, Result};
-use karkas::param::BicubicSurface;
+use karkas::param::{BicubicEnds, BicubicSurface};
 use karkas::{Point3, Surface};
 use karkas_io::obj::write_surface_obj;
 use karkas_io::scene::{write_scene_svg, Scene, SceneCurves, SceneMesh, View};
@@ -26,6 +26,30 @@ pub fn run(out: &Output) -> Result<Vec<Finding>> {
         .chain(std::iter::once(helix_experiment()))
     {
         findings.push(experiment(out, &row)?);
+    }
+    // The same frames with natural ends (zero second derivative at the open ends of every
+    // line): the end conditions the paper does not state, measured beside its own.
+    let rows: Vec<SeedExperiment> = seed_experiments()
+        .into_iter()
+        .chain(std::iter::once(helix_experiment()))
+        .collect();
+    let natural = rows
+        .par_iter()
+        .map(|row| {
+            row.run_with_ends(BicubicEnds::Natural)
+                .with_context(|| format!("Kuznetsov and Filatov, {}, natural ends", row.label))
+        })
+        .collect::<Result<Vec<_>>>()?;
+    for (row, outcome) in rows.iter().zip(natural) {
+        let finding = Finding::new(
+            format!("004 {}, natural ends", row.label),
+            "two-sided Hausdorff error, 5 x 9 frame",
+            outcome.error.distance,
+        );
+        findings.push(match row.paper_error {
+            Some(p) => finding.paper(p),
+            None => finding,
+        });
     }
     Ok(findings)
 }

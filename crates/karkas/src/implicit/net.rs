@@ -397,14 +397,37 @@ pub fn trace_net<S: ImplicitSurface + ?Sized>(surface: &S, spec: &NetSpec) -> Re
         });
     }
     let mut grid = Grid::from_fn(nu, nv, |_, _| Point3::ZERO);
-    // The spine, carrying the v direction along so that every row starts the same way.
+    // The spine, node by node, with its tangent at every node (carried continuously by the
+    // tracing): every row starts on the same side of the spine as the first, whatever the
+    // spine turns between two nodes.
     let mut spine = vec![start; nu];
-    let du = initial_direction(surface, &spec.directions, Family::U, start)?;
-    trace_line(surface, spec, Family::U, 0, start, du, hu, &mut spine[1..])?;
+    let mut spine_tangents = vec![Point3::ZERO; nu];
+    spine_tangents[0] = initial_direction(surface, &spec.directions, Family::U, start)?;
+    for i in 1..nu {
+        let (x, d) = (spine[i - 1], spine_tangents[i - 1]);
+        spine_tangents[i] = trace_line(surface, spec, Family::U, 0, x, d, hu, &mut spine[i..=i])
+            .map_err(|e| match e {
+                Error::ContinuationFailed { line, reason, .. } => Error::ContinuationFailed {
+                    line,
+                    node: i,
+                    reason,
+                },
+                other => other,
+            })?;
+    }
     let mut dv_prev = initial_direction(surface, &spec.directions, Family::V, start)?;
+    let side = |node: Point3, du: Point3, dv: Point3| -> Result<f64> {
+        Ok(SurfaceFrame::at(surface, node)?.normal.dot(cross(du, dv)))
+    };
+    let start_side = side(start, spine_tangents[0], dv_prev)?;
     let mut row = vec![Point3::ZERO; nv - 1];
     for (i, &node) in spine.iter().enumerate() {
-        let dv = direction(surface, &spec.directions, Family::V, node, dv_prev)?;
+        let mut dv = direction(surface, &spec.directions, Family::V, node, dv_prev)?;
+        // The v direction by continuity alone flips when the spine turns by more than a
+        // right angle around the surface between two nodes (a steep helix on a cylinder).
+        if side(node, spine_tangents[i], dv)? * start_side < 0.0 {
+            dv = -dv;
+        }
         dv_prev = dv;
         let h = if spec.closed_v {
             loop_length(
@@ -451,6 +474,38 @@ mod tests {
                 let a = TAU * j as f64 / 8.0;
                 let expected = Point3::new([a.cos(), a.sin(), 0.5 * i as f64]);
                 assert!(g.get(i, j).distance(expected) < 1e-8, "node ({i}, {j})");
+            }
+        }
+    }
+
+    #[test]
+    fn every_row_runs_the_same_way_however_steep_the_spine() {
+        // The generator turned by 75 degrees into a helix, its step stretched to
+        // 0.5 / cos 75 = 1.93 so that its nodes stay on the circles z = 0.5 i: consecutive
+        // spine nodes are 107 degrees apart around the axis, yet every closed circle starts
+        // at its spine node and runs counter-clockwise like the first, as in closed form.
+        for (degrees, closed) in [(75.0f64, true), (60.0, true), (75.0, false)] {
+            let a = degrees.to_radians();
+            let c = Cylinder { radius: 1.0 };
+            let mut spec = NetSpec::new(
+                Point3::new([1.0, 0.0, 0.0]),
+                NetDirections::TurnedU { angle: a },
+                (5, 9),
+                (0.5 / a.cos(), TAU / 8.0),
+            );
+            spec.closed_v = closed;
+            let g = trace_net(&c, &spec).unwrap();
+            let sign = g.get(0, 1)[1].signum();
+            for i in 0..5 {
+                for j in 0..9 {
+                    let phi = sign * (TAU * j as f64 / 8.0 - 0.5 * i as f64 * a.tan());
+                    let expected = Point3::new([phi.cos(), phi.sin(), 0.5 * i as f64]);
+                    assert!(
+                        g.get(i, j).distance(expected) < 1e-6,
+                        "{degrees} deg, node ({i}, {j}): {:?}",
+                        g.get(i, j)
+                    );
+                }
             }
         }
     }

@@ -32,6 +32,20 @@ use crate::core::{Grid, Interval, PiecewiseSurface, Side, Surface};
 use crate::spline::{SlopeSystem, SplineEnds};
 use crate::{Error, Point, Result};
 
+/// The end conditions of the open directions of a [`BicubicSurface`] (a closed direction is
+/// periodic whatever they are).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum BicubicEnds {
+    /// The third derivative is continuous across the second and the second-to-last grid line
+    /// (Kuznetsov and Filatov's (3.10)–(3.12); SciPy's `not-a-knot`): a bicubic polynomial is
+    /// reproduced exactly.
+    #[default]
+    NotAKnot,
+    /// The second derivative across the boundary is zero on every open boundary line (SciPy's
+    /// `natural`): the surface flattens towards its open edges.
+    Natural,
+}
+
 /// A bicubic interpolating spline surface over a grid `r_ij` (row `i` at `u_i`, column `j`
 /// at `v_j`), each direction open (not-a-knot ends) or closed (periodic).
 ///
@@ -85,6 +99,42 @@ impl<const D: usize> BicubicSurface<D> {
         grid.check_points(2, WHAT)?;
         let grid = grid.closed(closed_u, closed_v, WHAT_CLOSED)?;
         Self::on_closed_grid(grid, parameterization, closed_u, closed_v)
+    }
+
+    /// [`new`](Self::new) with the end conditions `ends` in every open direction (`new` is
+    /// this with [`BicubicEnds::NotAKnot`]).
+    ///
+    /// Errors: as [`new`](Self::new).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::param::{BicubicEnds, BicubicSurface, GridParameterization};
+    /// use karkas::{Grid, Point, Surface};
+    ///
+    /// // z = x^3 along u: not-a-knot ends reproduce the cubic, natural ends bend it.
+    /// let grid = Grid::from_fn(5, 2, |i, j| Point([i as f64, j as f64, (i * i * i) as f64]));
+    /// let (u, v) = (GridParameterization::Uniform, false);
+    /// let exact = BicubicSurface::with_ends(&grid, u, v, v, BicubicEnds::NotAKnot)?;
+    /// let natural = BicubicSurface::with_ends(&grid, u, v, v, BicubicEnds::Natural)?;
+    /// assert!((exact.eval(0.5, 0.0).0[2] - 0.125).abs() < 1e-12);
+    /// assert!((natural.eval(0.5, 0.0).0[2] - 0.125).abs() > 1e-2);
+    /// assert!(natural.eval(1.0, 1.0).distance(Point([1.0, 1.0, 1.0])) < 1e-12);
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
+    pub fn with_ends(
+        grid: &Grid<Point<D>>,
+        parameterization: GridParameterization,
+        closed_u: bool,
+        closed_v: bool,
+        ends: BicubicEnds,
+    ) -> Result<Self> {
+        grid.check_points(2, WHAT)?;
+        let grid = grid.closed(closed_u, closed_v, WHAT_CLOSED)?;
+        let (us, vs) = grid_parameters(&grid, parameterization)?;
+        check_parameters(&us)?;
+        check_parameters(&vs)?;
+        Self::build_with_ends(grid, us, vs, closed_u, closed_v, ends)
     }
 
     /// [`new`](Self::new) on an owned grid: an open surface keeps `grid` as its values
@@ -241,11 +291,30 @@ impl<const D: usize> BicubicSurface<D> {
         closed_u: bool,
         closed_v: bool,
     ) -> Result<Self> {
+        Self::build_with_ends(
+            grid,
+            knots_u,
+            knots_v,
+            closed_u,
+            closed_v,
+            BicubicEnds::NotAKnot,
+        )
+    }
+
+    /// [`build`](Self::build) with the end conditions `open_ends` in the open directions.
+    fn build_with_ends(
+        grid: Grid<Point<D>>,
+        knots_u: Vec<f64>,
+        knots_v: Vec<f64>,
+        closed_u: bool,
+        closed_v: bool,
+        open_ends: BicubicEnds,
+    ) -> Result<Self> {
         let ends = |closed: bool| -> SplineEnds<D> {
-            if closed {
-                SplineEnds::Periodic
-            } else {
-                SplineEnds::NotAKnot
+            match (closed, open_ends) {
+                (true, _) => SplineEnds::Periodic,
+                (false, BicubicEnds::NotAKnot) => SplineEnds::NotAKnot,
+                (false, BicubicEnds::Natural) => SplineEnds::Natural,
             }
         };
         let (ends_u, ends_v) = (ends(closed_u), ends(closed_v));

@@ -47,7 +47,7 @@ mod spline;
 mod spline_eval;
 
 pub use crate::spline::SplineEnds;
-pub use bicubic::BicubicSurface;
+pub use bicubic::{BicubicEnds, BicubicSurface};
 pub use condition::{condition_measure, ConditionSummary};
 pub use parameterization::{
     curve_parameters, grid_parameters, CurveParameterization, GridParameterization,
