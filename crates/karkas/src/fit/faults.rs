@@ -219,7 +219,7 @@ impl<'a, const D: usize> Mend<'a, D> {
     }
 }
 
-/// 1. More smoothing on the same knots: it evens out a wiggle that the knots allow between
+/// Step 1: More smoothing on the same knots: it evens out a wiggle that the knots allow between
 /// sparse points.
 fn smoother<const D: usize>(mend: &Mend<'_, D>) -> Result<Option<CurveFit<D>>> {
     let asked = mend.repairs.asked;
@@ -238,14 +238,14 @@ fn smoother<const D: usize>(mend: &Mend<'_, D>) -> Result<Option<CurveFit<D>>> {
     }))
 }
 
-/// 1. The same knots from the starting parameters: the refinement carries each round's foot
+/// Step 1: The same knots from the starting parameters: the refinement carries each round's foot
 /// parameters to the next, and a loop made on coarse knots can stay.
 fn from_start<const D: usize>(mend: &Mend<'_, D>) -> Result<Option<CurveFit<D>>> {
     let start = mend.start()?.to_vec();
     Ok(mend.sound_refit(mend.fit.spline.knots(), start, &mend.options))
 }
 
-/// 2. Uniform knots, as many as the fit has and more up to the cap (small problems only).
+/// Step 2: Uniform knots, as many as the fit has and more up to the cap (small problems only).
 fn uniform<const D: usize>(mend: &Mend<'_, D>) -> Result<Option<CurveFit<D>>> {
     if !mend.small {
         return Ok(None);
@@ -262,7 +262,7 @@ fn uniform<const D: usize>(mend: &Mend<'_, D>) -> Result<Option<CurveFit<D>>> {
     )
 }
 
-/// 3. Knots at the faults, round after round; each round's fit, when still faulty, also from
+/// Step 3: Knots at the faults, round after round; each round's fit, when still faulty, also from
 /// the starting parameters with the bending weight raised ([`FAULT_FAIRNESS`]).
 fn at_faults<const D: usize>(mend: &Mend<'_, D>) -> Result<Option<CurveFit<D>>> {
     let (points, options) = (mend.points, &mend.options);
@@ -300,7 +300,7 @@ fn at_faults<const D: usize>(mend: &Mend<'_, D>) -> Result<Option<CurveFit<D>>> 
     Ok(None)
 }
 
-/// 4. A knot taken out beside a span that holds no point: such spans let the curve wiggle.
+/// Step 4: A knot taken out beside a span that holds no point: such spans let the curve wiggle.
 fn beside_empty_spans<const D: usize>(mend: &Mend<'_, D>) -> Result<Option<CurveFit<D>>> {
     let knots = mend.fit.spline.knots();
     Ok(knots_beside_empty_spans(mend.fit)
@@ -313,7 +313,7 @@ fn beside_empty_spans<const D: usize>(mend: &Mend<'_, D>) -> Result<Option<Curve
         }))
 }
 
-/// 5. A curve through some of the points that turns as they do, its inflecting pieces
+/// Step 5: A curve through some of the points that turns as they do, its inflecting pieces
 /// rounder first, its points within the tolerance or, when the fit missed it, within the
 /// fit's deviation (it could meet any tolerance by following the points one by one).
 fn through_some_points<const D: usize>(mend: &Mend<'_, D>) -> Result<Option<CurveFit<D>>> {
@@ -351,7 +351,7 @@ fn uniform_refit<const D: usize>(
     }
     let tries = UNIFORM_WORK / (starts.len() * points.len());
     Ok(counts.take(tries.max(1)).find_map(|count| {
-        let even = uniform_with_corners(count, &options.corners);
+        let even = uniform_with_corners(count, options.corners);
         starts
             .iter()
             .find_map(|from| refit(session, &even, from.clone(), &plain).filter(&sound))

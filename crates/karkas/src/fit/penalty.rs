@@ -509,7 +509,7 @@ pub(crate) fn fit_checked<const D: usize>(
     run.solver.project(&mut state);
     if options.penalty == PenaltyRule::ActiveBound {
         match run.active_bound(&mut state, p)? {
-            Active::Met(met, p) => return Ok(run.finish(met, p, seed_bound)),
+            Active::Met(met, p) => return Ok(run.finish(*met, p, seed_bound)),
             // Not settled in the window (iteration cap): hold the p found, raised if need be,
             // but never below the paper's p* (a search that collapsed towards 0 would
             // otherwise leave the paper's rule 40 decades short).
@@ -536,7 +536,7 @@ fn reference_knots(knots: &[f64], weights: &[f64]) -> Vec<f64> {
 /// How the active bound ended.
 enum Active<const D: usize> {
     /// Within the window of the bound: the fit and its `p`.
-    Met(State<D>, f64),
+    Met(Box<State<D>>, f64),
     /// Outside it (iteration cap): the `p` found.
     Missed(f64),
 }
@@ -643,7 +643,7 @@ impl<'a, const D: usize> Run<'a, D> {
         state.spline.jump_penalty(self.weights)
     }
 
-    /// 1. The unconstrained fit, into `state`: `true` when it meets the bound (the answer).
+    /// Step 1: The unconstrained fit, into `state`: `true` when it meets the bound (the answer).
     ///
     /// First with every foot point free (the Newton model is exact for free foot points, and
     /// converges in a few steps, see [`Run::free_phase`]), then with the parameters ordered
@@ -751,7 +751,7 @@ impl<'a, const D: usize> Run<'a, D> {
         Ok(())
     }
 
-    /// 3. The active bound, from the fit at the paper's `p*` in `state` (stiff, so that the
+    /// Step 3: The active bound, from the fit at the paper's `p*` in `state` (stiff, so that the
     /// foot points settle on a smooth curve first): `p` is then chosen at every Newton step,
     /// and the fit polished ([`Run::polish`]).
     fn active_bound(&mut self, state: &mut State<D>, p: f64) -> Result<Active<D>> {
@@ -799,7 +799,7 @@ impl<'a, const D: usize> Run<'a, D> {
                 .0;
             let f = self.jumps(&polished);
             if f <= eps && f >= lowest {
-                return Ok(Active::Met(polished, p));
+                return Ok(Active::Met(Box::new(polished), p));
             }
             let miss = f.max(f64::MIN_POSITIVE).ln() - ln_target;
             if let Some((ln_p0, miss0)) = last {
@@ -810,7 +810,10 @@ impl<'a, const D: usize> Run<'a, D> {
             last = Some((ln_p, miss));
             ln_p -= miss / slope;
         }
-        Ok(Active::Met(std::mem::replace(state, polished), found))
+        Ok(Active::Met(
+            Box::new(std::mem::replace(state, polished)),
+            found,
+        ))
     }
 
     /// The paper's rule from `state`: `p`, times 10 until the bound holds.
