@@ -12,15 +12,10 @@ use clap::{Args, ValueEnum};
 use karkas::fair::RESOLUTION_ULPS;
 use karkas::fit::{
     fit_closed_curve, fit_closed_curve_adaptive, fit_curve, fit_curve_adaptive, knots_from_list,
-    CurveFit, FitEnds, FitOptions, PenaltyRule, DEFAULT_FAIRNESS,
+    work_bytes_per_knot, CurveFit, FitEnds, FitOptions, PenaltyRule, DEFAULT_FAIRNESS,
 };
 use karkas::geometry::points_out_of_order;
 use karkas::Point;
-
-/// The bytes a fit works in per knot, in 3-D (the most): the knot and its spline values and
-/// derivatives, the Newton solver's per-piece blocks, its vectors and the banded normal
-/// equations (`8 (32 + 48 d^2 + 2 d (16 + 8 d))` with `d = 3`).
-const FIT_BYTES_PER_KNOT: u128 = 8 * (32 + 48 * 9 + 6 * (16 + 24));
 
 /// The options of a constrained cubic fit.
 #[derive(Clone, Debug, Args)]
@@ -103,7 +98,8 @@ impl FitCurveOptions {
             if count.fract() == 0.0 && *count >= 2.0 {
                 check_memory(
                     &format!("--knots {count}"),
-                    (*count as u128).saturating_mul(FIT_BYTES_PER_KNOT),
+                    // In 3-D, the most.
+                    (*count as u128).saturating_mul(work_bytes_per_knot(3)),
                 )?;
             }
         }

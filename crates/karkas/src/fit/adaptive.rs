@@ -47,13 +47,15 @@ use super::faults::{sound_fit, Repairs};
 use super::guards::with_warnings;
 use super::knots::{start_parameters_for, uniform_with_corners, warm_parameters};
 use super::noise::estimate_noise;
+use super::penalty::Settings;
 use super::penalty::{
-    check_inputs, check_settings, fit_checked, in_fit_units, pinned_ends, FitEnds, FitOptions,
+    check_inputs, check_settings, fit_checked, pinned_ends, FitEnds, FitOptions,
     TOLERANCE_SMOOTHING,
 };
 use super::prune::prune;
 use super::refine::{refined_knots, worst_per_piece};
 use super::result::{CurveFit, FitWarning, FitWarningKind};
+use super::session::Session;
 use super::unit_scale::UnitScale;
 use crate::{Error, Point, Result};
 
@@ -177,9 +179,9 @@ pub fn fit_curve_adaptive<const D: usize>(
             reason: "must be positive and finite",
         });
     }
-    check_settings(options)?;
+    check_settings(&Settings::of(options))?;
     let unit = UnitScale::of(points);
-    let (scaled, scaled_options) = (unit.points(points), in_fit_units(options, unit));
+    let (scaled, scaled_options) = (unit.points(points), Settings::in_fit_units(options, unit));
     let (best, stop, rounds) = adaptive_rounds(&scaled, unit.length(tolerance), &scaled_options)?;
     if stop == AdaptiveStop::Met {
         return Ok(AdaptiveFit {
@@ -223,7 +225,7 @@ pub fn fit_curve_adaptive<const D: usize>(
 fn adaptive_rounds<const D: usize>(
     points: &[Point<D>],
     tolerance: f64,
-    options: &FitOptions,
+    options: &Settings<'_>,
 ) -> Result<(CurveFit<D>, AdaptiveStop, usize)> {
     let asked = options.smoothing.unwrap_or(TOLERANCE_SMOOTHING);
     let iterations = options.max_iterations;
@@ -235,7 +237,7 @@ fn adaptive_rounds<const D: usize>(
     // The ends are not held at an estimate: every point, the first and the last included,
     // must come within the tolerance. Ends that coincide are pinned there (a closed
     // profile), unless the caller freed them.
-    let options = &FitOptions {
+    let options = &Settings {
         max_iterations: options.max_iterations.min(ROUND_ITERATIONS),
         ends: match options.ends {
             FitEnds::Auto => FitEnds::Shared,
@@ -246,30 +248,30 @@ fn adaptive_rounds<const D: usize>(
         } else {
             asked
         }),
-        ..options.clone()
+        ..*options
     };
-    let start = start_parameters_for(points, &options.start, sigma)?;
-    let knots = first_knots(points.len(), &options.corners);
+    let start = start_parameters_for(points, options.start, sigma)?;
+    let knots = first_knots(points.len(), options.corners);
     let weights = check_inputs(points, &knots, options)?;
     let first = fit_checked(points, &knots, &weights, start, options, &noise)?;
+    // The points are checked: every refit from here on checks only its knots.
+    let session = Session { points, noise };
     let cap = (points.len() / 2).max(knots.len());
     let mut rounds = 1;
-    let (mut stop, mut best) = refine(points, tolerance, options, cap, first, &mut rounds)?;
+    let (mut stop, mut best) = refine(&session, tolerance, options, cap, first, &mut rounds)?;
     let held_off = matches!(stop, AdaptiveStop::Stalled | AdaptiveStop::NoiseLevel);
     if held_off && options.smoothing.is_some_and(|s| s > 0.0) {
         // The smoothing is sized by the noise estimated from the points, which on sparse
         // points is partly the curve's own bending: go on without it from the best fit.
-        let plain = &FitOptions {
+        let plain = &Settings {
             smoothing: Some(0.0),
-            ..options.clone()
+            ..*options
         };
-        let knots = best.spline.knots();
-        let weights = check_inputs(points, knots, plain)?;
         let start = warm_parameters(&best.parameters);
-        let refit = fit_checked(points, knots, &weights, start, plain, &noise)?;
+        let refit = session.refit(best.spline.knots(), start, plain)?;
         rounds += 1;
         let kept = best;
-        (stop, best) = refine(points, tolerance, plain, cap, refit, &mut rounds)?;
+        (stop, best) = refine(&session, tolerance, plain, cap, refit, &mut rounds)?;
         if stop != AdaptiveStop::Met && kept.max_distance() <= best.max_distance() * KEEP_FEWER {
             best = kept;
         }
@@ -280,13 +282,13 @@ fn adaptive_rounds<const D: usize>(
         iterations,
         through_points: stop != AdaptiveStop::NoiseLevel,
     };
-    best = sound_fit(points, tolerance, options, repairs, best)?;
+    best = sound_fit(&session, tolerance, options, repairs, best)?;
     if best.max_distance() <= tolerance {
         // (The repair of a faulty fit can meet the tolerance that the rounds did not.)
         stop = AdaptiveStop::Met;
     }
     if stop == AdaptiveStop::Met {
-        best = prune(points, tolerance, options, best, warm_parameters)?;
+        best = prune(&session, tolerance, options, best, warm_parameters)?;
     }
     Ok((best, stop, rounds))
 }
@@ -295,9 +297,9 @@ fn adaptive_rounds<const D: usize>(
 /// fit to keep: the one that met the tolerance, or the one with the lowest largest deviation
 /// (an earlier one with fewer knots when within [`KEEP_FEWER`]).
 fn refine<const D: usize>(
-    points: &[Point<D>],
+    session: &Session<'_, D>,
     tolerance: f64,
-    options: &FitOptions,
+    options: &Settings<'_>,
     cap: usize,
     mut fit: CurveFit<D>,
     rounds: &mut usize,
@@ -339,9 +341,8 @@ fn refine<const D: usize>(
             if added == 0 {
                 break None;
             }
-            let weights = check_inputs(points, &finer, options)?;
             let start = warm_parameters(&fit.parameters);
-            match fit_checked(points, &finer, &weights, start, options, &fit.noise) {
+            match session.refit(&finer, start, options) {
                 Ok(next) => break Some(next),
                 // Without the bending term a split can leave a piece undetermined: try
                 // fewer new knots, the worst pieces first.
@@ -367,4 +368,66 @@ fn refine<const D: usize>(
 /// The first knots: a few uniform ones (up to 4 pieces, one per four points) and the corners.
 fn first_knots(points: usize, corners: &[f64]) -> Vec<f64> {
     uniform_with_corners((points / 4).clamp(1, 4) + 1, corners)
+}
+
+#[cfg(test)]
+mod checked_once {
+    use crate::fit::noise::estimate_noise;
+    use crate::fit::penalty::checks;
+    use crate::fit::penalty::Settings;
+    use crate::fit::prune::prune;
+    use crate::fit::session::Session;
+    use crate::fit::{fit_curve, fit_curve_adaptive, uniform_knots, FitOptions};
+    use crate::Point;
+
+    /// 120 points of a thin, cambered profile-like curve (sharp at one end, blunt at the
+    /// other): the tolerance fit needs several rounds of knots.
+    fn profile() -> Vec<Point<2>> {
+        (0..120)
+            .map(|i| {
+                let s = i as f64 / 119.0;
+                let x = 1.0 - (std::f64::consts::PI * s).cos();
+                let thickness = 0.12 * (x / 2.0).sqrt() * (1.0 - x / 2.0);
+                Point([x, 0.05 * (std::f64::consts::PI * s).sin() + thickness])
+            })
+            .collect()
+    }
+
+    #[test]
+    fn a_tolerance_fit_checks_its_points_once() {
+        let points = profile();
+        let before = checks::so_far();
+        let result = fit_curve_adaptive(&points, 1e-6, &FitOptions::default()).unwrap();
+        // Several rounds: each refit would count once more if it checked the points.
+        assert!(result.rounds >= 3, "{} rounds", result.rounds);
+        assert_eq!(checks::so_far() - before, 1);
+    }
+
+    #[test]
+    fn a_fit_on_given_knots_checks_its_points_once() {
+        let points = profile();
+        let before = checks::so_far();
+        fit_curve(&points, &uniform_knots(9), &FitOptions::default()).unwrap();
+        assert_eq!(checks::so_far() - before, 1);
+    }
+
+    #[test]
+    fn the_pruning_refits_without_checking_the_points() {
+        let points = profile();
+        let noise = estimate_noise(&points);
+        let session = Session {
+            points: &points,
+            noise,
+        };
+        let defaults = FitOptions::default();
+        let options = Settings::of(&defaults);
+        let start = crate::fit::start_parameters(&points, options.start).unwrap();
+        let fit = session.refit(&uniform_knots(30), start, &options).unwrap();
+        let before = checks::so_far();
+        let tolerance = 2.0 * fit.max_distance();
+        let pruned = prune(&session, tolerance, &options, fit, |t| t.to_vec()).unwrap();
+        // Knots came out (every removal is a refit), and none of the refits checked the points.
+        assert!(pruned.spline.knots().len() < 30);
+        assert_eq!(checks::so_far(), before);
+    }
 }

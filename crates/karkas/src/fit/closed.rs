@@ -34,7 +34,8 @@ use super::adaptive::{AdaptiveFit, AdaptiveStop};
 use super::closed_system::{periodic_foot_point, periodic_jumps, PeriodicSystem};
 use super::knots::{check_knots, uniform_with_corners, MIN_KNOT_SPACING};
 use super::noise::estimate_noise;
-use super::penalty::{check_settings, in_fit_units, shared_end, FitOptions, DEFAULT_SMOOTHING};
+use super::penalty::Settings;
+use super::penalty::{check_settings, shared_end, FitOptions, DEFAULT_SMOOTHING};
 use super::result::{CurveFit, FitWarning, FitWarningKind};
 use super::unit_scale::UnitScale;
 use crate::bspline::{BSplineCurve, ToBSplineCurve};
@@ -87,12 +88,12 @@ pub fn fit_closed_curve<const D: usize>(
 ) -> Result<CurveFit<D>> {
     let points = one_period(points)?;
     check_knots(knots)?;
-    check_settings(options)?;
+    check_settings(&Settings::of(options))?;
     let deltas = seam_deltas(knots, &options.corners)?;
     check_count(points, knots.len() - 1)?;
     let unit = UnitScale::of(points);
     let scaled = unit.points(points);
-    let scaled_options = in_fit_units(options, unit);
+    let scaled_options = Settings::in_fit_units(options, unit);
     let smoothing = options.smoothing.unwrap_or(DEFAULT_SMOOTHING);
     let params = closed_chord_length(&scaled)?;
     let fit = fit_period(&scaled, knots, &deltas, &scaled_options, smoothing, params)?;
@@ -137,14 +138,14 @@ pub fn fit_closed_curve_adaptive<const D: usize>(
         });
     }
     let points = one_period(points)?;
-    check_settings(options)?;
+    check_settings(&Settings::of(options))?;
     let n = points.len();
     let mut knots = uniform_with_corners((n / 4).clamp(3, 6) + 1, &options.corners);
     seam_deltas(&knots, &options.corners)?;
     check_count(points, knots.len() - 1)?;
     let unit = UnitScale::of(points);
     let scaled = unit.points(points);
-    let scaled_options = in_fit_units(options, unit);
+    let scaled_options = Settings::in_fit_units(options, unit);
     // The open fit's tolerance-mode smoothing (0.3) holds a coarse closed frame away from
     // its tolerance (the noise estimate reads its bends as noise): the given-knots default.
     let smoothing = options.smoothing.unwrap_or(DEFAULT_SMOOTHING);
@@ -174,21 +175,11 @@ pub fn fit_closed_curve_adaptive<const D: usize>(
         if since_better >= STALLED_ROUNDS {
             break AdaptiveStop::Stalled;
         }
-        let pieces = knots.len() - 1;
-        let mut beyond = vec![false; pieces];
-        for (&t, &d) in fit.parameters.iter().zip(&fit.distances) {
-            if d > tol {
-                beyond[fit.spline.locate(t).0.min(pieces - 1)] = true;
-            }
-        }
-        let middles: Vec<f64> = (0..pieces)
-            .filter(|&k| beyond[k] && knots[k + 1] - knots[k] > 2.0 * MIN_KNOT_SPACING)
-            .map(|k| 0.5 * (knots[k] + knots[k + 1]))
-            .collect();
+        let middles = middles_beyond(&fit, &knots, tol);
         if middles.is_empty() {
             break AdaptiveStop::NoSplittablePiece;
         }
-        if 2 * (pieces + middles.len()) > n {
+        if 2 * (knots.len() - 1 + middles.len()) > n {
             break AdaptiveStop::KnotCap;
         }
         knots.extend(middles);
@@ -204,20 +195,7 @@ pub fn fit_closed_curve_adaptive<const D: usize>(
     let mut fit = unit.restore(best, None);
     let tolerance_met = stop == AdaptiveStop::Met;
     if !tolerance_met {
-        let worst_at = (0..fit.distances.len())
-            .max_by(|&a, &b| fit.distances[a].total_cmp(&fit.distances[b]))
-            .unwrap_or(0);
-        let message = format!(
-            "tolerance {tolerance:e} not met: the best closed fit reached max deviation {:.3e} \
-             with {} knots (stopped: {stop:?})",
-            fit.max_distance(),
-            fit.spline.knots().len(),
-        );
-        fit.warnings.push(FitWarning {
-            kind: FitWarningKind::ToleranceNotMet,
-            parameter: fit.parameters[worst_at],
-            message,
-        });
+        warn_unmet(&mut fit, tolerance, stop);
     }
     Ok(AdaptiveFit {
         fit,
@@ -225,6 +203,40 @@ pub fn fit_closed_curve_adaptive<const D: usize>(
         rounds,
         stop,
     })
+}
+
+/// The middles of the pieces of `knots` whose worst point of `fit` lies beyond `tol`, where
+/// the piece is long enough to split.
+fn middles_beyond<const D: usize>(fit: &CurveFit<D>, knots: &[f64], tol: f64) -> Vec<f64> {
+    let pieces = knots.len() - 1;
+    let mut beyond = vec![false; pieces];
+    for (&t, &d) in fit.parameters.iter().zip(&fit.distances) {
+        if d > tol {
+            beyond[fit.spline.locate(t).0.min(pieces - 1)] = true;
+        }
+    }
+    (0..pieces)
+        .filter(|&k| beyond[k] && knots[k + 1] - knots[k] > 2.0 * MIN_KNOT_SPACING)
+        .map(|k| 0.5 * (knots[k] + knots[k + 1]))
+        .collect()
+}
+
+/// Adds to `fit` the warning that `tolerance` was not met (the rounds ended on `stop`).
+fn warn_unmet<const D: usize>(fit: &mut CurveFit<D>, tolerance: f64, stop: AdaptiveStop) {
+    let worst_at = (0..fit.distances.len())
+        .max_by(|&a, &b| fit.distances[a].total_cmp(&fit.distances[b]))
+        .unwrap_or(0);
+    let message = format!(
+        "tolerance {tolerance:e} not met: the best closed fit reached max deviation {:.3e} \
+         with {} knots (stopped: {stop:?})",
+        fit.max_distance(),
+        fit.spline.knots().len(),
+    );
+    fit.warnings.push(FitWarning {
+        kind: FitWarningKind::ToleranceNotMet,
+        parameter: fit.parameters[worst_at],
+        message,
+    });
 }
 
 /// The closed B-spline of a closed fit's spline (degree 3, inner knots doubled, first and
@@ -323,12 +335,13 @@ fn closed_chord_length<const D: usize>(points: &[Point<D>]) -> Result<Vec<f64>> 
     Ok(params)
 }
 
-/// The fit of one period on points brought to unit size, from `params`.
+/// The fit of one period on points brought to unit size, from `params`: the alternation at
+/// `p = 0`, then, when the jumps exceed `eps`, at the paper's `p*` times 10 until they do not.
 fn fit_period<const D: usize>(
     points: &[Point<D>],
     knots: &[f64],
     deltas: &[f64],
-    options: &FitOptions,
+    options: &Settings<'_>,
     smoothing: f64,
     mut params: Vec<f64>,
 ) -> Result<CurveFit<D>> {
@@ -337,81 +350,21 @@ fn fit_period<const D: usize>(
     closed_loop.push(points[0]);
     let noise = estimate_noise(&closed_loop);
     let lambda = noise.bending_weight(points.len(), m, options.fairness, smoothing);
-    let mut system = PeriodicSystem::new(knots);
-    let mut iterations = 0;
-    let mut run = |p: f64, params: &mut Vec<f64>| -> Result<Alternation<D>> {
-        let mut last: Option<Alternation<D>> = None;
-        let mut stalls = 0;
-        for _ in 0..options.max_iterations.max(1) {
-            iterations += 1;
-            let tangents: Option<Vec<Point<D>>> = last.as_ref().map(|l| {
-                params
-                    .iter()
-                    .map(|&t| {
-                        let d = crate::Curve::deriv(&l.spline, t, 1);
-                        d * (1.0 / d.norm().max(f64::MIN_POSITIVE))
-                    })
-                    .collect()
-            });
-            let metric = tangents.as_deref().map(|t| (t, ALONG_WEIGHT));
-            let mut trial_params = params.clone();
-            let mut next = step(
-                &mut system,
-                points,
-                &mut trial_params,
-                metric,
-                deltas,
-                (p, lambda),
-                options,
-            )?;
-            if let Some(l) = &last {
-                if next.objective > l.objective {
-                    // The squared-distance step overshot: the plain alternation step, which
-                    // never raises the objective.
-                    trial_params = params.clone();
-                    next = step(
-                        &mut system,
-                        points,
-                        &mut trial_params,
-                        None,
-                        deltas,
-                        (p, lambda),
-                        options,
-                    )?;
-                }
-            }
-            let gain = last
-                .as_ref()
-                .map_or(f64::INFINITY, |l| l.objective - next.objective);
-            if next.objective.is_finite()
-                && last.as_ref().is_none_or(|l| next.objective <= l.objective)
-            {
-                *params = trial_params;
-                last = Some(next);
-            }
-            let objective = last.as_ref().map_or(0.0, |l| l.objective);
-            if gain <= SETTLED * objective {
-                stalls += 1;
-            } else {
-                stalls = 0;
-            }
-            if stalls >= 2 || !options.foot_points {
-                break;
-            }
-        }
-        last.ok_or(Error::InvalidSetting {
-            name: "max_iterations",
-            value: 0.0,
-            reason: "must be at least 1",
-        })
+    let mut period = Period {
+        system: PeriodicSystem::new(knots),
+        points,
+        deltas,
+        lambda,
+        options,
+        iterations: 0,
     };
-    let mut result = run(0.0, &mut params)?;
+    let mut result = period.alternate(0.0, &mut params)?;
     let (mut penalty, mut seed_bound) = (0.0, 0.0);
     if options.eps.is_finite() && result.jump_sum > options.eps {
         seed_bound = result.data / options.eps;
         penalty = seed_bound.max(f64::MIN_POSITIVE);
         for _ in 0..PENALTY_RAISES {
-            result = run(penalty, &mut params)?;
+            result = period.alternate(penalty, &mut params)?;
             if result.jump_sum <= options.eps {
                 break;
             }
@@ -432,10 +385,100 @@ fn fit_period<const D: usize>(
         bending_weight: lambda,
         bending_energy: result.bending,
         bending_shares: vec![1.0; m],
-        iterations,
+        iterations: period.iterations,
         noise,
         warnings: Vec::new(),
     })
+}
+
+/// The fit of one period under way: its periodic system, data and iterations spent.
+struct Period<'a, const D: usize> {
+    system: PeriodicSystem<D>,
+    points: &'a [Point<D>],
+    deltas: &'a [f64],
+    lambda: f64,
+    options: &'a Settings<'a>,
+    iterations: usize,
+}
+
+impl<const D: usize> Period<'_, D> {
+    /// Alternates at the penalty `p` from `params` (kept up to date) until the objective
+    /// stalls twice or the iterations run out: each step in the squared-distance metric
+    /// along the last spline's tangents, the plain step where that one overshot.
+    fn alternate(&mut self, p: f64, params: &mut Vec<f64>) -> Result<Alternation<D>> {
+        let mut last: Option<Alternation<D>> = None;
+        let mut stalls = 0;
+        for _ in 0..self.options.max_iterations.max(1) {
+            self.iterations += 1;
+            let tangents = last.as_ref().map(|l| unit_tangents(&l.spline, params));
+            let metric = tangents.as_deref().map(|t| (t, ALONG_WEIGHT));
+            let mut trial_params = params.clone();
+            let mut next = self.step(&mut trial_params, metric, p)?;
+            if let Some(l) = &last {
+                if next.objective > l.objective {
+                    // The squared-distance step overshot: the plain alternation step, which
+                    // never raises the objective.
+                    trial_params = params.clone();
+                    next = self.step(&mut trial_params, None, p)?;
+                }
+            }
+            let gain = last
+                .as_ref()
+                .map_or(f64::INFINITY, |l| l.objective - next.objective);
+            if next.objective.is_finite()
+                && last.as_ref().is_none_or(|l| next.objective <= l.objective)
+            {
+                *params = trial_params;
+                last = Some(next);
+            }
+            let objective = last.as_ref().map_or(0.0, |l| l.objective);
+            if gain <= SETTLED * objective {
+                stalls += 1;
+            } else {
+                stalls = 0;
+            }
+            if stalls >= 2 || !self.options.foot_points {
+                break;
+            }
+        }
+        last.ok_or(Error::InvalidSetting {
+            name: "max_iterations",
+            value: 0.0,
+            reason: "must be at least 1",
+        })
+    }
+
+    /// One [`step`] of this period's fit at the penalty `p`.
+    fn step(
+        &mut self,
+        params: &mut [f64],
+        metric: Option<(&[Point<D>], f64)>,
+        p: f64,
+    ) -> Result<Alternation<D>> {
+        step(
+            &mut self.system,
+            self.points,
+            params,
+            metric,
+            self.deltas,
+            (p, self.lambda),
+            self.options,
+        )
+    }
+}
+
+/// The unit tangents of `spline` at `params`.
+fn unit_tangents<const D: usize>(
+    spline: &super::HermiteSpline<D>,
+    params: &[f64],
+) -> Vec<Point<D>> {
+    params
+        .iter()
+        .map(|&t| {
+            let d = crate::Curve::deriv(spline, t, 1);
+            d * (1.0 / d.norm().max(f64::MIN_POSITIVE))
+        })
+        .collect()
 }
 
 /// The outcome of one alternation.
@@ -457,7 +500,7 @@ fn step<const D: usize>(
     metric: Option<(&[Point<D>], f64)>,
     deltas: &[f64],
     (p, lambda): (f64, f64),
-    options: &FitOptions,
+    options: &Settings<'_>,
 ) -> Result<Alternation<D>> {
     let m = deltas.len() - 1;
     let spline = system.solve(points, params, metric, deltas, p, lambda)?;

@@ -53,11 +53,14 @@ use super::guards::shape_faults;
 use super::knots::{
     start_parameters_for, uniform_with_corners, warm_parameters, StartParameters, MIN_KNOT_SPACING,
 };
-use super::penalty::{check_inputs, fit_checked, FitOptions, TOLERANCE_SMOOTHING};
+use super::penalty::Settings;
+use super::penalty::TOLERANCE_SMOOTHING;
 use super::refine::worst_per_piece;
 use super::result::CurveFit;
+use super::session::Session;
 use super::through_points::{through_points, INFLECTING_SHARES};
 use crate::{Point, Result};
+use std::cell::OnceCell;
 use std::ops::RangeInclusive;
 
 /// Smoothing tried, in turn, as multiples of the smoothing asked for (or of the default
@@ -98,171 +101,272 @@ pub(crate) struct Repairs {
 
 /// `fit`, or the first refit that neither crosses itself nor turns more than its points and
 /// whose largest deviation is within `tolerance` or, when `fit` is not, within
-/// [`UNMET_SLACK`] of `fit`'s (see the module docs).
+/// [`UNMET_SLACK`] of `fit`'s: the repairs of the module docs tried in turn ([`repairs`]).
 pub(crate) fn sound_fit<const D: usize>(
-    points: &[Point<D>],
+    session: &Session<'_, D>,
     tolerance: f64,
-    options: &FitOptions,
+    options: &Settings<'_>,
     repairs: Repairs,
     fit: CurveFit<D>,
 ) -> Result<CurveFit<D>> {
-    let Repairs {
-        asked,
-        cap,
-        iterations,
-        ..
-    } = repairs;
-    let faults = shape_faults(points, &fit);
+    let faults = shape_faults(session.points, &fit);
     if faults.is_empty() {
         return Ok(fit);
     }
-    let small = points.len() * cap <= REPAIR_WORK;
-    let options = &FitOptions {
-        max_iterations: if small {
-            iterations
-        } else {
-            options.max_iterations
-        },
-        ..options.clone()
+    let repaired = {
+        let mend = Mend::new(*session, tolerance, options, repairs, &fit, faults);
+        let mut repaired = None;
+        for repair in self::repairs::<D>() {
+            repaired = repair(&mend)?;
+            if repaired.is_some() {
+                break;
+            }
+        }
+        repaired
     };
-    let bound = tolerance.max(fit.max_distance() * UNMET_SLACK);
-    let sound = |trial: &CurveFit<D>| {
-        trial.max_distance() <= bound && shape_faults(points, trial).is_empty()
-    };
-    let knots = fit.spline.knots();
-    // 1. More smoothing on the same knots; the same knots from the starting parameters (the
-    // refinement carries each round's foot parameters to the next, and a loop made on coarse
-    // knots can stay).
+    Ok(repaired.unwrap_or(fit))
+}
+
+/// A repair: the sound refit it finds, if any.
+type Repair<const D: usize> = fn(&Mend<'_, D>) -> Result<Option<CurveFit<D>>>;
+
+/// The repairs, in the order they are tried (see the module docs).
+fn repairs<const D: usize>() -> [Repair<D>; 6] {
+    [
+        smoother,
+        from_start,
+        uniform,
+        at_faults,
+        beside_empty_spans,
+        through_some_points,
+    ]
+}
+
+/// What every repair of a faulty fit works from.
+struct Mend<'a, const D: usize> {
+    /// The checked points.
+    session: Session<'a, D>,
+    points: &'a [Point<D>],
+    /// The settings of every refit (on small problems, run to convergence).
+    options: Settings<'a>,
+    repairs: Repairs,
+    /// The faulty fit.
+    fit: &'a CurveFit<D>,
+    /// Its fault parameters.
+    faults: Vec<f64>,
+    /// The largest deviation a sound refit may have.
+    bound: f64,
+    /// Whether the problem is small ([`REPAIR_WORK`]).
+    small: bool,
+    /// The starting parameters of the points, once a repair asks for them.
+    start: OnceCell<Vec<f64>>,
+}
+
+impl<'a, const D: usize> Mend<'a, D> {
+    fn new(
+        session: Session<'a, D>,
+        tolerance: f64,
+        options: &Settings<'a>,
+        repairs: Repairs,
+        fit: &'a CurveFit<D>,
+        faults: Vec<f64>,
+    ) -> Self {
+        let points = session.points;
+        let small = points.len() * repairs.cap <= REPAIR_WORK;
+        let options = Settings {
+            max_iterations: if small {
+                repairs.iterations
+            } else {
+                options.max_iterations
+            },
+            ..*options
+        };
+        Mend {
+            session,
+            points,
+            options,
+            repairs,
+            fit,
+            faults,
+            bound: tolerance.max(fit.max_distance() * UNMET_SLACK),
+            small,
+            start: OnceCell::new(),
+        }
+    }
+
+    /// Whether `trial` is within the bound and without faults.
+    fn sound(&self, trial: &CurveFit<D>) -> bool {
+        trial.max_distance() <= self.bound && shape_faults(self.points, trial).is_empty()
+    }
+
+    /// The starting parameters of the points (chord lengths by default).
+    fn start(&self) -> Result<&[f64]> {
+        if let Some(start) = self.start.get() {
+            return Ok(start);
+        }
+        let start = start_parameters_for(self.points, self.options.start, self.fit.noise.sigma)?;
+        Ok(self.start.get_or_init(|| start))
+    }
+
+    /// The sound refit on `knots` from the parameters `start` with `options`, if it is one.
+    fn sound_refit(
+        &self,
+        knots: &[f64],
+        start: Vec<f64>,
+        options: &Settings<'_>,
+    ) -> Option<CurveFit<D>> {
+        refit(&self.session, knots, start, options).filter(|t| self.sound(t))
+    }
+}
+
+/// Step 1: More smoothing on the same knots: it evens out a wiggle that the knots allow between
+/// sparse points.
+fn smoother<const D: usize>(mend: &Mend<'_, D>) -> Result<Option<CurveFit<D>>> {
+    let asked = mend.repairs.asked;
     let unit = if asked > 0.0 {
         asked
     } else {
         TOLERANCE_SMOOTHING
     };
-    let smoothed = FAULT_SMOOTHING.iter().find_map(|factor| {
-        let smoother = FitOptions {
+    Ok(FAULT_SMOOTHING.iter().find_map(|factor| {
+        let smoother = Settings {
             smoothing: Some(unit * factor),
-            ..options.clone()
+            ..mend.options
         };
-        refit(
-            points,
-            knots,
-            warm_parameters(&fit.parameters),
-            &smoother,
-            &fit,
-        )
-        .filter(sound)
-    });
-    if let Some(trial) = smoothed {
-        return Ok(trial);
+        let from = warm_parameters(&mend.fit.parameters);
+        mend.sound_refit(mend.fit.spline.knots(), from, &smoother)
+    }))
+}
+
+/// Step 1: The same knots from the starting parameters: the refinement carries each round's foot
+/// parameters to the next, and a loop made on coarse knots can stay.
+fn from_start<const D: usize>(mend: &Mend<'_, D>) -> Result<Option<CurveFit<D>>> {
+    let start = mend.start()?.to_vec();
+    Ok(mend.sound_refit(mend.fit.spline.knots(), start, &mend.options))
+}
+
+/// Step 2: Uniform knots, as many as the fit has and more up to the cap (small problems only).
+fn uniform<const D: usize>(mend: &Mend<'_, D>) -> Result<Option<CurveFit<D>>> {
+    if !mend.small {
+        return Ok(None);
     }
-    let start = start_parameters_for(points, &options.start, fit.noise.sigma)?;
-    if let Some(trial) = refit(points, knots, start.clone(), options, &fit).filter(sound) {
-        return Ok(trial);
-    }
-    // 2. Uniform knots, as many as the fit has and more up to the cap.
-    if small {
-        if let Some(trial) = uniform_refit(points, knots.len()..=cap, &start, options, &fit, sound)?
-        {
-            return Ok(trial);
-        }
-    }
-    // 3. Knots at the faults, round after round.
-    let mut last = (knots.to_vec(), fit.parameters.clone(), faults);
+    let counts = mend.fit.spline.knots().len()..=mend.repairs.cap;
+    let sound = |trial: &CurveFit<D>| mend.sound(trial);
+    uniform_refit(
+        &mend.session,
+        counts,
+        mend.start()?,
+        &mend.options,
+        mend.fit,
+        sound,
+    )
+}
+
+/// Step 3: Knots at the faults, round after round; each round's fit, when still faulty, also from
+/// the starting parameters with the bending weight raised ([`FAULT_FAIRNESS`]).
+fn at_faults<const D: usize>(mend: &Mend<'_, D>) -> Result<Option<CurveFit<D>>> {
+    let (points, options) = (mend.points, &mend.options);
+    let start = mend.start()?;
+    let mut last = (
+        mend.fit.spline.knots().to_vec(),
+        mend.fit.parameters.clone(),
+        mend.faults.clone(),
+    );
     for _ in 0..FAULT_ROUNDS {
         let (knots, parameters, faults) = &last;
         let finer = split_at(knots, faults);
-        if finer.len() == knots.len() || finer.len() > cap {
+        if finer.len() == knots.len() || finer.len() > mend.repairs.cap {
             break;
         }
-        let Some(trial) = refit(points, &finer, warm_parameters(parameters), options, &fit) else {
+        let Some(trial) = refit(&mend.session, &finer, warm_parameters(parameters), options) else {
             break;
         };
-        if sound(&trial) {
-            return Ok(trial);
+        if mend.sound(&trial) {
+            return Ok(Some(trial));
         }
         let stiffer = FAULT_FAIRNESS.iter().find_map(|factor| {
-            let stiffer = FitOptions {
+            let stiffer = Settings {
                 fairness: options.fairness * factor,
-                ..options.clone()
+                ..*options
             };
-            refit(points, &finer, start.clone(), &stiffer, &fit).filter(sound)
+            mend.sound_refit(&finer, start.to_vec(), &stiffer)
         });
-        if let Some(trial) = stiffer {
-            return Ok(trial);
+        if stiffer.is_some() {
+            return Ok(stiffer);
         }
         let faults = shape_faults(points, &trial);
         last = (finer, trial.parameters, faults);
     }
-    // 4. A knot taken out beside a span that holds no point: such spans let the curve wiggle.
-    for at in knots_beside_empty_spans(&fit) {
-        let mut fewer = knots.to_vec();
-        fewer.remove(at);
-        let trial = refit(
-            points,
-            &fewer,
-            warm_parameters(&fit.parameters),
-            options,
-            &fit,
-        );
-        if let Some(trial) = trial.filter(sound) {
-            return Ok(trial);
-        }
-    }
-    // 5. A curve through some of the points that turns as they do, its inflecting pieces
-    // rounder first, its points within the tolerance or, when the fit missed it, within the
-    // fit's deviation (it could meet any tolerance by following the points one by one).
+    Ok(None)
+}
+
+/// Step 4: A knot taken out beside a span that holds no point: such spans let the curve wiggle.
+fn beside_empty_spans<const D: usize>(mend: &Mend<'_, D>) -> Result<Option<CurveFit<D>>> {
+    let knots = mend.fit.spline.knots();
+    Ok(knots_beside_empty_spans(mend.fit)
+        .into_iter()
+        .find_map(|at| {
+            let mut fewer = knots.to_vec();
+            fewer.remove(at);
+            let from = warm_parameters(&mend.fit.parameters);
+            mend.sound_refit(&fewer, from, &mend.options)
+        }))
+}
+
+/// Step 5: A curve through some of the points that turns as they do, its inflecting pieces
+/// rounder first, its points within the tolerance or, when the fit missed it, within the
+/// fit's deviation (it could meet any tolerance by following the points one by one).
+fn through_some_points<const D: usize>(mend: &Mend<'_, D>) -> Result<Option<CurveFit<D>>> {
+    let options = &mend.options;
     let plain = options.corners.is_empty() && options.foot_points && options.eps.is_infinite();
-    if small && plain && repairs.through_points {
-        let through = INFLECTING_SHARES.iter().find_map(|&share| {
-            through_points(points, bound, share, options, &fit.noise).filter(sound)
-        });
-        if let Some(trial) = through {
-            return Ok(trial);
-        }
+    if !(mend.small && plain && mend.repairs.through_points) {
+        return Ok(None);
     }
-    Ok(fit)
+    Ok(INFLECTING_SHARES.iter().find_map(|&share| {
+        through_points(mend.points, mend.bound, share, options, &mend.fit.noise)
+            .filter(|t| mend.sound(t))
+    }))
 }
 
 /// The first sound fit (`sound`) on uniform knots, their count from `counts` in turn (as
 /// many as [`UNIFORM_WORK`] allows), with no smoothing, from the parameters `start` and then
 /// from centripetal ones (unless `start` is centripetal already).
 fn uniform_refit<const D: usize>(
-    points: &[Point<D>],
+    session: &Session<'_, D>,
     counts: RangeInclusive<usize>,
     start: &[f64],
-    options: &FitOptions,
+    options: &Settings<'_>,
     fit: &CurveFit<D>,
     sound: impl Fn(&CurveFit<D>) -> bool,
 ) -> Result<Option<CurveFit<D>>> {
-    let plain = FitOptions {
+    let plain = Settings {
         smoothing: Some(0.0),
-        ..options.clone()
+        ..*options
     };
+    let points = session.points;
     let mut starts = vec![start.to_vec()];
-    if options.start != StartParameters::Centripetal {
+    if *options.start != StartParameters::Centripetal {
         let centripetal = StartParameters::Centripetal;
         starts.push(start_parameters_for(points, &centripetal, fit.noise.sigma)?);
     }
     let tries = UNIFORM_WORK / (starts.len() * points.len());
     Ok(counts.take(tries.max(1)).find_map(|count| {
-        let even = uniform_with_corners(count, &options.corners);
+        let even = uniform_with_corners(count, options.corners);
         starts
             .iter()
-            .find_map(|from| refit(points, &even, from.clone(), &plain, fit).filter(&sound))
+            .find_map(|from| refit(session, &even, from.clone(), &plain).filter(&sound))
     }))
 }
 
-/// The fit of `points` on `knots` from the parameters `start`, with the noise estimate of
-/// `fit`; `None` when it cannot be made (a repair is optional: `fit` stands).
+/// The fit of the session's points on `knots` from the parameters `start`; `None` when it
+/// cannot be made (a repair is optional: the faulty fit stands).
 fn refit<const D: usize>(
-    points: &[Point<D>],
+    session: &Session<'_, D>,
     knots: &[f64],
     start: Vec<f64>,
-    options: &FitOptions,
-    fit: &CurveFit<D>,
+    options: &Settings<'_>,
 ) -> Option<CurveFit<D>> {
-    let weights = check_inputs(points, knots, options).ok()?;
-    fit_checked(points, knots, &weights, start, options, &fit.noise).ok()
+    session.refit(knots, start, options).ok()
 }
 
 /// The inner knots that bound a knot span holding no point's foot parameter.

@@ -81,7 +81,6 @@ pub(crate) fn accumulate_gradient<const D: usize>(
     out: &mut Gradient,
 ) {
     let spline = &state.spline;
-    let knots = spline.knots();
     for v in [
         &mut out.base,
         &mut out.base_abs,
@@ -90,6 +89,23 @@ pub(crate) fn accumulate_gradient<const D: usize>(
     ] {
         v.fill(0.0);
     }
+    add_all_points(problem, state, out);
+    add_jumps(problem, spline, out);
+    if problem.bending > 0.0 {
+        add_bending(problem, spline, out);
+    }
+    let unknowns = out.base.len();
+    for j in 0..unknowns {
+        if pinned(problem, unknowns, j) {
+            out.base[j] = 0.0;
+            out.jump[j] = 0.0;
+        }
+    }
+}
+
+/// The data terms of every point added to `out` (in fixed parts on many points, summed in
+/// order).
+fn add_all_points<const D: usize>(problem: &Problem<D>, state: &State<D>, out: &mut Gradient) {
     let n = problem.points.len();
     if n < PARALLEL_THRESHOLD {
         add_points(problem, state, 0..n, &mut out.base, &mut out.base_abs);
@@ -117,6 +133,11 @@ pub(crate) fn accumulate_gradient<const D: usize>(
             }
         }
     }
+}
+
+/// The jump terms `w_L J_L dJ_L/dq` added to `out`.
+fn add_jumps<const D: usize>(problem: &Problem<D>, spline: &HermiteSpline<D>, out: &mut Gradient) {
+    let knots = spline.knots();
     for l in 1..knots.len() - 1 {
         let w = problem.delta[l];
         if w.is_nan() || w <= 0.0 {
@@ -133,30 +154,30 @@ pub(crate) fn accumulate_gradient<const D: usize>(
             }
         }
     }
-    if problem.bending > 0.0 {
-        for k in 0..knots.len() - 1 {
-            let lambda = problem.bending_on(knots, k);
-            let g = bending_gram(knots[k + 1] - knots[k]);
-            let q = piece_coefficients(spline, k);
-            let base = 2 * k * D;
-            for (a, row) in g.iter().enumerate() {
-                let gq = row
-                    .iter()
-                    .zip(&q)
-                    .fold(Point::<D>::ZERO, |acc, (&gab, qb)| acc.add_scaled(gab, *qb));
-                for c in 0..D {
-                    let term = lambda * gq[c];
-                    out.base[base + a * D + c] += term;
-                    out.base_abs[base + a * D + c] += term.abs();
-                }
+}
+
+/// The bending terms `lambda G q` of every piece added to `out`.
+fn add_bending<const D: usize>(
+    problem: &Problem<D>,
+    spline: &HermiteSpline<D>,
+    out: &mut Gradient,
+) {
+    let knots = spline.knots();
+    for k in 0..knots.len() - 1 {
+        let lambda = problem.bending_on(knots, k);
+        let g = bending_gram(knots[k + 1] - knots[k]);
+        let q = piece_coefficients(spline, k);
+        let base = 2 * k * D;
+        for (a, row) in g.iter().enumerate() {
+            let gq = row
+                .iter()
+                .zip(&q)
+                .fold(Point::<D>::ZERO, |acc, (&gab, qb)| acc.add_scaled(gab, *qb));
+            for c in 0..D {
+                let term = lambda * gq[c];
+                out.base[base + a * D + c] += term;
+                out.base_abs[base + a * D + c] += term.abs();
             }
-        }
-    }
-    let unknowns = out.base.len();
-    for j in 0..unknowns {
-        if pinned(problem, unknowns, j) {
-            out.base[j] = 0.0;
-            out.jump[j] = 0.0;
         }
     }
 }

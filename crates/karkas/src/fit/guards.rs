@@ -35,11 +35,11 @@ use crossings::{crossing, crossings, Crossing};
 use sampling::Samples;
 
 /// The turning the curve may have beyond the point polygon's, in radians.
-pub const TURNING_MARGIN: f64 = 0.1;
+pub(crate) const TURNING_MARGIN: f64 = 0.1;
 /// The turning the curve may have beyond the point polygon's, as a fraction of it.
-pub const TURNING_RELATIVE: f64 = 0.05;
+pub(crate) const TURNING_RELATIVE: f64 = 0.05;
 /// The excess turning over a run of points that makes a hook or a loop, in radians.
-pub const HOOK_TURNING: f64 = 0.5;
+pub(crate) const HOOK_TURNING: f64 = 0.5;
 /// Points of slack either way when a crossing of the curve is matched to one of the polygon.
 const CROSSING_SLACK: usize = 2;
 /// Warnings of one kind given one by one; the rest are counted in one more.

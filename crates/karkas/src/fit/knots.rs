@@ -11,12 +11,12 @@ use crate::{Error, Point, Result};
 
 /// The smallest allowed distance between two knots of a fit (in the parameter, whose range
 /// is `[0, 1]`). The paper's own grid has knots `0.004` apart.
-pub const MIN_KNOT_SPACING: f64 = 1e-6;
+pub(crate) const MIN_KNOT_SPACING: f64 = 1e-6;
 
 /// Checks a knot grid for a fit: the rules of every knot sequence
 /// ([`crate::core::knots::check_knots`]: finite, strictly increasing, at least two), and the
-/// fit's own: `T_1 = 0`, `T_N = 1`, every knot in `[0, 1]` and at least [`MIN_KNOT_SPACING`]
-/// from the one before it.
+/// fit's own: `T_1 = 0`, `T_N = 1`, every knot in `[0, 1]` and at least `1e-6` from the one
+/// before it.
 ///
 /// Errors: [`Error::TooFewPoints`] for fewer than two knots, [`Error::InvalidKnot`] naming
 /// the first offending knot otherwise (at one knot, a range rule before the order, the order

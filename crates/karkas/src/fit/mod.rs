@@ -83,24 +83,19 @@ mod project_all;
 mod prune;
 mod refine;
 mod result;
+mod session;
 mod solver;
 mod through_points;
 mod unit_scale;
 
 pub use adaptive::{fit_curve_adaptive, AdaptiveFit, AdaptiveStop};
 pub use closed::{closed_bspline, fit_closed_curve, fit_closed_curve_adaptive};
-pub use guards::{
-    polyline_crossings, shape_warnings, PolylineCrossing, HOOK_TURNING, TURNING_MARGIN,
-    TURNING_RELATIVE,
-};
+pub use guards::{polyline_crossings, shape_warnings, PolylineCrossing};
 pub use hermite::HermiteSpline;
-pub use knots::{
-    check_knots, knots_from_list, start_parameters, uniform_knots, StartParameters,
-    MIN_KNOT_SPACING,
-};
+pub use knots::{check_knots, knots_from_list, start_parameters, uniform_knots, StartParameters};
 pub use noise::{estimate_noise, NoiseEstimate};
 pub use penalty::{
-    fit_curve, shared_end, FitEnds, FitOptions, PenaltyRule, DEFAULT_FAIRNESS,
+    fit_curve, shared_end, work_bytes_per_knot, FitEnds, FitOptions, PenaltyRule, DEFAULT_FAIRNESS,
     DEFAULT_SETTLE_TOLERANCE, DEFAULT_SMOOTHING, SHARED_END_TOLERANCE, TOLERANCE_SMOOTHING,
 };
 pub use result::{CurveFit, FitWarning, FitWarningKind};

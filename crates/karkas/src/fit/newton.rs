@@ -179,6 +179,40 @@ impl<const D: usize> NewtonModel<D> {
         mu: f64,
         safe: bool,
     ) -> Result<f64> {
+        self.fill_hessian(problem, state, p, safe);
+        let unknowns = self.step.len();
+        let pinned = |j: usize| pinned(problem, unknowns, j);
+        let k_mat = &mut self.hessian;
+        let size = k_mat.size();
+        let floor = (0..size).fold(0.0f64, |m, j| m.max(k_mat.diagonal(j))) * 1e-12;
+        for j in 0..size {
+            if pinned(j) {
+                self.damping[j] = 0.0;
+                k_mat.add(j, j, 1.0);
+                continue;
+            }
+            let d = mu * k_mat.diagonal(j).max(floor);
+            self.damping[j] = d;
+            k_mat.add(j, j, d);
+        }
+        k_mat.factor()?;
+        for (j, x) in self.step.iter_mut().enumerate() {
+            *x = -self.gradient.at(j, p);
+        }
+        k_mat.solve_factored(&mut self.step);
+        // F(q + x) - F(q) ~ 2 g.x + x^T K x = g.x - x^T M x for (K + M) x = -g.
+        let mut predicted = 0.0;
+        for j in 0..size {
+            let x = self.step[j];
+            predicted += -self.gradient.at(j, p) * x + self.damping[j] * x * x;
+        }
+        Ok(predicted)
+    }
+
+    /// The Hessian `K` of the Newton model at `p` into `self.hessian`, from the assembled
+    /// blocks (the safe coupling when `safe`), the bending terms and the jump terms; pinned
+    /// unknowns left out.
+    fn fill_hessian(&mut self, problem: &Problem<D>, state: &State<D>, p: f64, safe: bool) {
         let spline = &state.spline;
         let knots = spline.knots();
         let w4 = 4 * D;
@@ -233,30 +267,6 @@ impl<const D: usize> NewtonModel<D> {
                 }
             }
         }
-        let size = k_mat.size();
-        let floor = (0..size).fold(0.0f64, |m, j| m.max(k_mat.diagonal(j))) * 1e-12;
-        for j in 0..size {
-            if pinned(j) {
-                self.damping[j] = 0.0;
-                k_mat.add(j, j, 1.0);
-                continue;
-            }
-            let d = mu * k_mat.diagonal(j).max(floor);
-            self.damping[j] = d;
-            k_mat.add(j, j, d);
-        }
-        k_mat.factor()?;
-        for (j, x) in self.step.iter_mut().enumerate() {
-            *x = -self.gradient.at(j, p);
-        }
-        k_mat.solve_factored(&mut self.step);
-        // F(q + x) - F(q) ~ 2 g.x + x^T K x = g.x - x^T M x for (K + M) x = -g.
-        let mut predicted = 0.0;
-        for j in 0..size {
-            let x = self.step[j];
-            predicted += -self.gradient.at(j, p) * x + self.damping[j] * x * x;
-        }
-        Ok(predicted)
     }
 
     /// `f` of the spline of `state` moved by the step in `self.step`.
@@ -306,65 +316,72 @@ impl<const D: usize> NewtonModel<D> {
         mu: f64,
         safe: bool,
     ) -> Result<(f64, f64)> {
-        let ln_target = target.ln();
-        let phi = |s: &mut Self, x: f64| -> Result<f64> {
-            s.newton_step(problem, state, x.exp(), mu, safe)?;
-            Ok(s.jump_sum_after_step(problem, state)
-                .max(f64::MIN_POSITIVE)
-                .ln()
-                - ln_target)
+        let search = Search {
+            problem,
+            state,
+            ln_target: target.ln(),
+            mu,
+            safe,
         };
         let start = if guess > 0.0 && guess.is_finite() {
             guess.ln()
         } else {
             0.0
         };
+        let p = match self.bracket(&search, start)? {
+            Bracket::Around(bracket) => self.regula_falsi(&search, bracket)?.exp(),
+            Bracket::Ended(p) => p,
+        };
+        let predicted = self.newton_step(problem, state, p, mu, safe)?;
+        Ok((p, predicted))
+    }
+
+    /// The bracket around the root of `phi` ([`Search::phi`], decreasing in `x = ln p`),
+    /// stepping by decades from `start`.
+    fn bracket(&mut self, search: &Search<'_, '_, D>, start: f64) -> Result<Bracket> {
         let decade = std::f64::consts::LN_10;
-        let first = phi(self, start)?;
-        // phi decreases with x: bracket a sign change, lo with phi > 0, hi with phi <= 0.
-        let (mut lo, mut f_lo, mut hi, mut f_hi);
+        let first = search.phi(self, start)?;
         let mut x = start;
         if first > 0.0 {
-            (lo, f_lo) = (start, first);
+            let (mut lo, mut f_lo) = (start, first);
             loop {
                 x += decade;
-                let v = phi(self, x)?;
+                let v = search.phi(self, x)?;
                 if v <= 0.0 {
-                    (hi, f_hi) = (x, v);
-                    break;
+                    return Ok(Bracket::Around([lo, f_lo, x, v]));
                 }
                 if v >= f_lo - SATURATED {
                     // A tenfold penalty no longer lowers the jump sum of the step (the
                     // damping limits it): the target is out of reach of this step, and a
                     // larger penalty would only grow without use.
-                    let predicted = self.newton_step(problem, state, lo.exp(), mu, safe)?;
-                    return Ok((lo.exp(), predicted));
+                    return Ok(Bracket::Ended(lo.exp()));
                 }
                 (lo, f_lo) = (x, v);
                 if x > start + BRACKET_DECADES as f64 * decade {
                     // The target is out of reach: the largest penalty tried.
-                    let predicted = self.newton_step(problem, state, x.exp(), mu, safe)?;
-                    return Ok((x.exp(), predicted));
-                }
-            }
-        } else {
-            (hi, f_hi) = (start, first);
-            loop {
-                x -= decade;
-                let v = phi(self, x)?;
-                if v > 0.0 {
-                    (lo, f_lo) = (x, v);
-                    break;
-                }
-                (hi, f_hi) = (x, v);
-                if x < start - BRACKET_DECADES as f64 * decade {
-                    // The bound is not active for this model.
-                    let predicted = self.newton_step(problem, state, 0.0, mu, safe)?;
-                    return Ok((0.0, predicted));
+                    return Ok(Bracket::Ended(x.exp()));
                 }
             }
         }
-        // Illinois-modified regula falsi; hi stays on the feasible side.
+        let (mut hi, mut f_hi) = (start, first);
+        loop {
+            x -= decade;
+            let v = search.phi(self, x)?;
+            if v > 0.0 {
+                return Ok(Bracket::Around([x, v, hi, f_hi]));
+            }
+            (hi, f_hi) = (x, v);
+            if x < start - BRACKET_DECADES as f64 * decade {
+                // The bound is not active for this model.
+                return Ok(Bracket::Ended(0.0));
+            }
+        }
+    }
+
+    /// The root of `phi` in the bracket `[lo, phi(lo), hi, phi(hi)]` by the
+    /// Illinois-modified regula falsi; `hi` stays on the feasible side and is returned.
+    fn regula_falsi(&mut self, search: &Search<'_, '_, D>, bracket: [f64; 4]) -> Result<f64> {
+        let [mut lo, mut f_lo, mut hi, mut f_hi] = bracket;
         let mut side = 0i8;
         for _ in 0..SEARCH_STEPS {
             if f_hi.abs() < 1e-6 || hi - lo < 1e-13 * (1.0 + hi.abs()) {
@@ -374,7 +391,7 @@ impl<const D: usize> NewtonModel<D> {
             if !(x > lo && x < hi) {
                 x = 0.5 * (lo + hi);
             }
-            let v = phi(self, x)?;
+            let v = search.phi(self, x)?;
             if v <= 0.0 {
                 (hi, f_hi) = (x, v);
                 if side == 1 {
@@ -389,9 +406,38 @@ impl<const D: usize> NewtonModel<D> {
                 side = -1;
             }
         }
-        let p = hi.exp();
-        let predicted = self.newton_step(problem, state, p, mu, safe)?;
-        Ok((p, predicted))
+        Ok(hi)
+    }
+}
+
+/// The outcome of [`NewtonModel::bracket`].
+enum Bracket {
+    /// `[lo, phi(lo), hi, phi(hi)]`: `lo` with `phi > 0`, `hi` with `phi <= 0`.
+    Around([f64; 4]),
+    /// The search ended on this `p` without a root: the target out of reach of this step,
+    /// or the bound not active for this model (`p = 0`).
+    Ended(f64),
+}
+
+/// The search of [`NewtonModel::target_step`] for its `p`.
+struct Search<'s, 'a, const D: usize> {
+    problem: &'s Problem<'a, D>,
+    state: &'s State<D>,
+    /// `ln` of the jump sum aimed at.
+    ln_target: f64,
+    mu: f64,
+    safe: bool,
+}
+
+impl<const D: usize> Search<'_, '_, D> {
+    /// `ln f - ln target` after the Newton step of `model` at `p = e^x`.
+    fn phi(&self, model: &mut NewtonModel<D>, x: f64) -> Result<f64> {
+        model.newton_step(self.problem, self.state, x.exp(), self.mu, self.safe)?;
+        Ok(model
+            .jump_sum_after_step(self.problem, self.state)
+            .max(f64::MIN_POSITIVE)
+            .ln()
+            - self.ln_target)
     }
 }
 
@@ -449,33 +495,8 @@ impl<const D: usize> BlockKernel<'_, '_, D> {
             if !free {
                 continue;
             }
-            let b1 = hermite_basis(s, h, 1);
-            let b2 = hermite_basis(s, h, 2);
-            let q = piece_coefficients(spline, k);
-            let (mut e, mut d1, mut d2) = (-*r, Point::<D>::ZERO, Point::<D>::ZERO);
-            for a in 0..4 {
-                e = e.add_scaled(b0[a], q[a]);
-                d1 = d1.add_scaled(b1[a], q[a]);
-                d2 = d2.add_scaled(b2[a], q[a]);
-            }
-            let speed_sq = d1.norm_sq();
-            let exact = speed_sq + e.dot(d2);
-            if speed_sq <= 0.0 {
+            let Some(point) = coupling(spline, (k, local), t, (s, h), r, &b0) else {
                 continue;
-            }
-            // `v` in the interleaved layout: entry `a D + c`.
-            let mut v = [[0.0; D]; 4];
-            for (a, va) in v.iter_mut().enumerate() {
-                for c in 0..D {
-                    va[c] = b0[a] * d1[c] + b1[a] * e[c];
-                }
-            }
-            let point = Run {
-                local,
-                t,
-                v,
-                exact,
-                safe: exact.max(speed_sq),
             };
             match &mut run {
                 Some(open) if projection.ordered && open.t == t && open.local == local => {
@@ -492,6 +513,47 @@ impl<const D: usize> BlockKernel<'_, '_, D> {
             done.subtract(coupled, coupled_safe);
         }
     }
+}
+
+/// The coupling term of the free point `r` at `t` on piece `k` (`local` in the range of
+/// pieces filled), at `s` of the piece of length `h` (`b0` its basis values); `None` where
+/// the curve does not move (zero speed).
+fn coupling<const D: usize>(
+    spline: &super::hermite::HermiteSpline<D>,
+    (k, local): (usize, usize),
+    t: f64,
+    (s, h): (f64, f64),
+    r: &Point<D>,
+    b0: &[f64; 4],
+) -> Option<Run<D>> {
+    let b1 = hermite_basis(s, h, 1);
+    let b2 = hermite_basis(s, h, 2);
+    let q = piece_coefficients(spline, k);
+    let (mut e, mut d1, mut d2) = (-*r, Point::<D>::ZERO, Point::<D>::ZERO);
+    for a in 0..4 {
+        e = e.add_scaled(b0[a], q[a]);
+        d1 = d1.add_scaled(b1[a], q[a]);
+        d2 = d2.add_scaled(b2[a], q[a]);
+    }
+    let speed_sq = d1.norm_sq();
+    let exact = speed_sq + e.dot(d2);
+    if speed_sq <= 0.0 {
+        return None;
+    }
+    // `v` in the interleaved layout: entry `a D + c`.
+    let mut v = [[0.0; D]; 4];
+    for (a, va) in v.iter_mut().enumerate() {
+        for c in 0..D {
+            va[c] = b0[a] * d1[c] + b1[a] * e[c];
+        }
+    }
+    Some(Run {
+        local,
+        t,
+        v,
+        exact,
+        safe: exact.max(speed_sq),
+    })
 }
 
 /// The coupling term of one point, or of a run of points pooled to one parameter by the

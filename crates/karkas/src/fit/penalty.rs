@@ -43,7 +43,6 @@ use super::result::CurveFit;
 use super::solver::{Penalty, Solver, Stop};
 use super::unit_scale::UnitScale;
 use crate::{Curve, Error, Point, Result};
-use std::borrow::Cow;
 
 /// Iterations spent on the feasible reference `q*` of the paper's bound.
 const REFERENCE_ITERATIONS: usize = 5;
@@ -241,12 +240,15 @@ impl Default for FitOptions {
     }
 }
 
-/// Checks the points and settings shared by every fit; returns `delta_L` per knot.
+/// Checks the points, the knots and the settings of a fit call; returns `delta_L` per knot.
+/// Runs once per public fit call: its refits check only their knots ([`knot_weights`]).
 pub(crate) fn check_inputs<const D: usize>(
     points: &[Point<D>],
     knots: &[f64],
-    options: &FitOptions,
+    options: &Settings<'_>,
 ) -> Result<Vec<f64>> {
+    #[cfg(test)]
+    checks::count();
     if points.len() < 3 {
         return Err(Error::TooFewPoints {
             what: "a fit",
@@ -259,10 +261,22 @@ pub(crate) fn check_inputs<const D: usize>(
     }
     check_knots(knots)?;
     check_settings(options)?;
+    corner_weights(knots, options.corners)
+}
+
+/// Checks `knots` of a refit (its points and settings checked by [`check_inputs`]); returns
+/// `delta_L` per knot.
+pub(crate) fn knot_weights(knots: &[f64], corners: &[f64]) -> Result<Vec<f64>> {
+    check_knots(knots)?;
+    corner_weights(knots, corners)
+}
+
+/// `delta_L` per knot: 1, 0 at the end knots and at the `corners` (each an inner knot).
+fn corner_weights(knots: &[f64], corners: &[f64]) -> Result<Vec<f64>> {
     let mut weights = vec![1.0; knots.len()];
     weights[0] = 0.0;
     weights[knots.len() - 1] = 0.0;
-    for &corner in &options.corners {
+    for &corner in corners {
         let at = knots[1..knots.len() - 1]
             .iter()
             .position(|&k| (k - corner).abs() <= 1e-9)
@@ -276,8 +290,29 @@ pub(crate) fn check_inputs<const D: usize>(
     Ok(weights)
 }
 
+/// The count of [`check_inputs`] calls on this thread, for the tests that a fit call checks
+/// its inputs once.
+#[cfg(test)]
+pub(crate) mod checks {
+    use std::cell::Cell;
+
+    thread_local! {
+        static CHECKS: Cell<usize> = const { Cell::new(0) };
+    }
+
+    /// Counts one check.
+    pub(crate) fn count() {
+        CHECKS.with(|c| c.set(c.get() + 1));
+    }
+
+    /// The checks on this thread so far.
+    pub(crate) fn so_far() -> usize {
+        CHECKS.with(Cell::get)
+    }
+}
+
 /// Checks `eps`, the tolerance on it, the iteration count and the corner values.
-pub(crate) fn check_settings(options: &FitOptions) -> Result<()> {
+pub(crate) fn check_settings(options: &Settings<'_>) -> Result<()> {
     if options.eps.is_nan() || options.eps <= 0.0 {
         return Err(Error::InvalidSetting {
             name: "eps",
@@ -322,7 +357,7 @@ pub(crate) fn check_settings(options: &FitOptions) -> Result<()> {
             reason: "must be at least 1",
         });
     }
-    for &corner in &options.corners {
+    for &corner in options.corners {
         if !(corner > 0.0 && corner < 1.0) {
             return Err(Error::InvalidSetting {
                 name: "corner",
@@ -332,6 +367,22 @@ pub(crate) fn check_settings(options: &FitOptions) -> Result<()> {
         }
     }
     Ok(())
+}
+
+/// The bytes a fit works in per knot of its spline in `dimension` coordinates: the knot and
+/// its spline values and derivatives, the Newton solver's per-piece blocks (16 and `16 d^2`
+/// numbers, twice), its vectors of `2 d` unknowns and the banded normal equations (bandwidth
+/// `4 d`): `8 (32 + 48 d^2 + 2 d (16 + 8 d))`. A front end checks a count of knots against
+/// the memory it allows before the knots are made.
+///
+/// ```
+/// use karkas::fit::work_bytes_per_knot;
+/// assert_eq!(work_bytes_per_knot(2), 2816);
+/// assert_eq!(work_bytes_per_knot(3), 5632);
+/// ```
+pub fn work_bytes_per_knot(dimension: usize) -> u128 {
+    let d = dimension as u128;
+    8 * (32 + 48 * d * d + 2 * d * (16 + 8 * d))
 }
 
 /// Fits a C^1 cubic Hermite spline on `knots` (`0 = T_1 < ... < T_N = 1`) to the ordered
@@ -366,13 +417,14 @@ pub fn fit_curve<const D: usize>(
     knots: &[f64],
     options: &FitOptions,
 ) -> Result<CurveFit<D>> {
-    let weights = check_inputs(points, knots, options)?;
+    let weights = check_inputs(points, knots, &Settings::of(options))?;
     let unit = UnitScale::of(points);
-    let (scaled, options) = (unit.points(points), in_fit_units(options, unit));
+    let scaled = unit.points(points);
+    let settings = Settings::in_fit_units(options, unit);
     let noise = estimate_noise(&scaled);
-    let start = start_parameters_for(&scaled, &options.start, noise.sigma)?;
-    fit_checked(&scaled, knots, &weights, start, &options, &noise)
-        .map(|fit| with_warnings(points, unit.restore(fit, pinned_ends(points, &options))))
+    let start = start_parameters_for(&scaled, settings.start, noise.sigma)?;
+    fit_checked(&scaled, knots, &weights, start, &settings, &noise)
+        .map(|fit| with_warnings(points, unit.restore(fit, pinned_ends(points, options))))
 }
 
 /// The standard error of a least-squares spline on `knots` knots (`2 knots` coefficients per
@@ -419,172 +471,57 @@ pub(crate) fn pinned_ends<const D: usize>(
     }
 }
 
-/// `options` in the units of a fit of points divided by `unit`'s scale: the bound `eps` on
-/// the squared jumps scales with them; the other settings are dimensionless.
-pub(crate) fn in_fit_units<const D: usize>(
-    options: &FitOptions,
-    unit: UnitScale<D>,
-) -> Cow<'_, FitOptions> {
-    if unit.scale() == 1.0 {
-        return Cow::Borrowed(options);
-    }
-    Cow::Owned(FitOptions {
-        eps: unit.squared_length(options.eps),
-        ..options.clone()
-    })
-}
-
-/// The fit after the inputs were checked, `noise` estimated from the points.
+/// The fit after the inputs were checked, `noise` estimated from the points: the
+/// unconstrained fit ([`Run::unconstrained`]); when its jumps exceed the bound, the paper's
+/// bound `p*` from a feasible reference ([`feasible_reference`]), then the active bound
+/// ([`Run::active_bound`]) or the paper's rule ([`Run::paper_rule`]).
 pub(crate) fn fit_checked<const D: usize>(
     points: &[Point<D>],
     knots: &[f64],
     weights: &[f64],
     start: Vec<f64>,
-    options: &FitOptions,
+    options: &Settings<'_>,
     noise: &NoiseEstimate,
 ) -> Result<CurveFit<D>> {
-    let noise = *noise;
-    let (fairness, smoothing) = noise.bending_parts(
-        points.len(),
-        knots.len() - 1,
-        options.fairness,
-        options.smoothing.unwrap_or(DEFAULT_SMOOTHING),
-    );
-    let mut problem = Problem {
-        points,
-        delta: weights,
-        bending: fairness + smoothing,
-        taper: Taper::towards_ends(fairness, smoothing, points.len()),
-        pins: match options.ends {
-            FitEnds::Pinned => Some([points[0], points[points.len() - 1]]),
-            FitEnds::Auto | FitEnds::Shared => shared_end(points).map(|p| [p, p]),
-            FitEnds::Free => None,
-        },
-        foot_points: options.foot_points,
-        ordered: options.ordered,
-    };
-    let stop = Stop {
-        floor: SETTLED_SHARE_OF_SIZE * noise.size,
-        ..Stop::new(options.max_iterations, options.settle_tolerance)
-    };
     let mut state = State::<D>::blank(knots, start.clone());
-    let mut solver = Solver::new(
-        Problem {
-            ordered: false,
-            ..problem
-        },
-        &state.spline,
-    );
-    let mut iterations = 0;
-    let bending_weight = problem.bending;
-    let taper = problem.taper;
-    let finish = |state: State<D>, p: f64, seed_bound: f64, iterations: usize| CurveFit {
-        jump_sum: state.spline.jump_penalty(weights),
-        bending_energy: taper.bending_energy(&state.spline),
-        bending_shares: knots.windows(2).map(|w| taper.share(w[0], w[1])).collect(),
-        bending_weight,
-        data_term: state.data_term(),
-        distances: state.dist_sq.iter().map(|d| d.sqrt()).collect(),
-        parameters: state.params,
-        spline: state.spline,
-        penalty: p,
-        seed_bound,
-        weights: weights.to_vec(),
-        iterations,
-        noise,
-        warnings: Vec::new(),
-    };
-    let f_of = |s: &State<D>| s.spline.jump_penalty(weights);
-
-    // 1. The unconstrained fit: first with every foot point free (the Newton model is exact
-    // for free foot points, and converges in a few steps; with the ordered phase to follow,
-    // until a step lowers `F` by less than FREE_DECREASE_PER_COEFFICIENT sigma^2 per
-    // coefficient and FREE_DECREASE_SHARE of `F`), then with the parameters ordered from
-    // there (runs pooled out of order) for at most ORDERED_ITERATIONS steps: every projection
-    // orders the parameters, so the result is ordered however many steps run, and the pooled
-    // runs, which the model treats as free foot points, slow it down; it also ends on a step
-    // that hardly moves the curve (MOVE_SHARE).
-    // Dense points start from the fit of a subset ([`warm_start`]). Between the two phases
-    // the ends of a noisy fit are pinned at their estimates ([`super::ends`]); they stay
-    // pinned for the rest of the fit, the constrained one included.
-    let free = Problem {
-        ordered: false,
-        ..problem
-    };
-    let first = match warm_start(&free, &start, stop, &mut state) {
-        Some(done) => {
-            iterations += done;
-            Ok(())
-        }
-        None => solver.solve_fixed(&mut state, 0.0),
-    };
-    match first {
-        Ok(()) => {
-            solver.project(&mut state);
-            let coefficients = (2 * D * knots.len()) as f64;
-            let hand_over = FREE_DECREASE_PER_COEFFICIENT * coefficients * noise.sigma.powi(2);
-            let free_stop = Stop {
-                min_decrease: if problem.ordered && hand_over.is_finite() {
-                    hand_over
-                } else {
-                    0.0
-                },
-                decrease_share: FREE_DECREASE_SHARE,
-                ..stop
-            };
-            iterations += solver
-                .minimize(&mut state, Penalty::Fixed(0.0), free_stop)?
-                .0;
-            let estimate =
-                options.ends == FitEnds::Auto && problem.pins.is_none() && problem.foot_points;
-            if let Some(pins) = estimate
-                .then(|| end_pins(points, noise.sigma, &state.spline))
-                .flatten()
-            {
-                // From here on the ends are held where the points say (see `ends`).
-                problem.pins = Some(pins);
-                solver.set_pins(pins, &mut state);
-                if !problem.ordered {
-                    solver.project(&mut state);
-                    iterations += solver.minimize(&mut state, Penalty::Fixed(0.0), stop)?.0;
-                }
-            }
-            if problem.ordered {
-                solver.set_ordered(true);
-                solver.project(&mut state);
-                let ordered = Stop {
-                    max_iterations: stop.max_iterations.min(ORDERED_ITERATIONS),
-                    min_gain: ORDERED_MIN_GAIN,
-                    min_move: MOVE_SHARE * standard_error(&noise, &state, knots.len()),
-                    ..stop
-                };
-                iterations += solver.minimize(&mut state, Penalty::Fixed(0.0), ordered)?.0;
-            }
-            if f_of(&state) <= options.eps {
-                return Ok(finish(
-                    projected(&mut solver, problem.ordered, state),
-                    0.0,
-                    0.0,
-                    iterations,
-                ));
-            }
-        }
-        Err(e) if options.eps.is_infinite() => return Err(e),
-        Err(_) => {
-            // Too few points for the unconstrained fit: start from the fit with the jumps
-            // held to zero (always determined when the points determine one cubic).
-            state.params.copy_from_slice(&start);
-            solver.solve_fixed(&mut state, 1.0)?;
-            solver.project(&mut state);
-        }
+    let mut run = Run::new(points, knots, weights, start, *options, *noise, &state);
+    if run.unconstrained(&mut state)? {
+        return Ok(run.finish(state, 0.0, 0.0));
     }
-
     // The constrained fit runs with free foot points (with ordered ones the search for `p`
     // creeps: the pooled runs slow the Newton model down); its parameters are ordered at the
     // end, the spline kept.
-    solver.set_ordered(false);
-
+    run.solver.set_ordered(false);
     // 2. The paper's bound from a feasible q*: the fit on the knots {0, corners, 1}.
+    let coarse = reference_knots(knots, weights);
+    let (reference, exact) = feasible_reference(run.problem, &coarse, knots, &run.start, run.stop);
+    if reference <= 0.0 {
+        // The points lie exactly on a spline without bounded jumps: it is the answer.
+        return Ok(run.finish(exact, 0.0, 0.0));
+    }
+    let seed_bound = reference / options.eps;
+    // The constrained fit starts again from the starting parameters: the unconstrained fit
+    // can be far from the bound, and its foot points no guide.
+    let mut p = seed_bound;
+    state.params.copy_from_slice(&run.start);
+    state.piece.fill(0);
+    run.solver.solve_fixed(&mut state, p)?;
+    run.solver.project(&mut state);
+    if options.penalty == PenaltyRule::ActiveBound {
+        match run.active_bound(&mut state, p)? {
+            Active::Met(met, p) => return Ok(run.finish(*met, p, seed_bound)),
+            // Not settled in the window (iteration cap): hold the p found, raised if need be,
+            // but never below the paper's p* (a search that collapsed towards 0 would
+            // otherwise leave the paper's rule 40 decades short).
+            Active::Missed(found) => p = found.max(seed_bound).max(f64::MIN_POSITIVE),
+        }
+    }
+    run.paper_rule(state, p, seed_bound)
+}
+
+/// The knots `{0, corners, 1}` of `knots` (`weights` 0 at a corner): a spline on them has no
+/// jump at any knot with `delta_L = 1`.
+fn reference_knots(knots: &[f64], weights: &[f64]) -> Vec<f64> {
     let mut coarse: Vec<f64> = knots
         .iter()
         .zip(weights)
@@ -593,103 +530,311 @@ pub(crate) fn fit_checked<const D: usize>(
         .map(|(_, (&k, _))| k)
         .collect();
     coarse.dedup();
-    let (reference, exact) = feasible_reference(problem, &coarse, knots, &start, stop);
-    if reference <= 0.0 {
-        // The points lie exactly on a spline without bounded jumps: it is the answer.
-        return Ok(finish(
-            projected(&mut solver, problem.ordered, exact),
-            0.0,
-            0.0,
-            iterations,
-        ));
+    coarse
+}
+
+/// How the active bound ended.
+enum Active<const D: usize> {
+    /// Within the window of the bound: the fit and its `p`.
+    Met(Box<State<D>>, f64),
+    /// Outside it (iteration cap): the `p` found.
+    Missed(f64),
+}
+
+/// One fit on given knots under way: the problem, its solver, the stopping rule and the
+/// iterations spent.
+struct Run<'a, const D: usize> {
+    points: &'a [Point<D>],
+    knots: &'a [f64],
+    weights: &'a [f64],
+    start: Vec<f64>,
+    options: Settings<'a>,
+    noise: NoiseEstimate,
+    problem: Problem<'a, D>,
+    solver: Solver<'a, D>,
+    stop: Stop,
+    iterations: usize,
+}
+
+impl<'a, const D: usize> Run<'a, D> {
+    /// The problem of `options` on `points` and `knots`, its bending weight from `noise`, and
+    /// its solver on the spline of `state`.
+    fn new(
+        points: &'a [Point<D>],
+        knots: &'a [f64],
+        weights: &'a [f64],
+        start: Vec<f64>,
+        options: Settings<'a>,
+        noise: NoiseEstimate,
+        state: &State<D>,
+    ) -> Self {
+        let (fairness, smoothing) = noise.bending_parts(
+            points.len(),
+            knots.len() - 1,
+            options.fairness,
+            options.smoothing.unwrap_or(DEFAULT_SMOOTHING),
+        );
+        let problem = Problem {
+            points,
+            delta: weights,
+            bending: fairness + smoothing,
+            taper: Taper::towards_ends(fairness, smoothing, points.len()),
+            pins: match options.ends {
+                FitEnds::Pinned => Some([points[0], points[points.len() - 1]]),
+                FitEnds::Auto | FitEnds::Shared => shared_end(points).map(|p| [p, p]),
+                FitEnds::Free => None,
+            },
+            foot_points: options.foot_points,
+            ordered: options.ordered,
+        };
+        let stop = Stop {
+            floor: SETTLED_SHARE_OF_SIZE * noise.size,
+            ..Stop::new(options.max_iterations, options.settle_tolerance)
+        };
+        let solver = Solver::new(
+            Problem {
+                ordered: false,
+                ..problem
+            },
+            &state.spline,
+        );
+        Run {
+            points,
+            knots,
+            weights,
+            start,
+            options,
+            noise,
+            problem,
+            solver,
+            stop,
+            iterations: 0,
+        }
     }
-    let eps = options.eps;
-    let seed_bound = reference / eps;
-    // The constrained fit starts again from the starting parameters: the unconstrained fit
-    // can be far from the bound, and its foot points no guide.
-    let restart = |state: &mut State<D>| {
-        state.params.copy_from_slice(&start);
-        state.piece.fill(0);
-    };
-    let mut p = seed_bound;
-    restart(&mut state);
-    solver.solve_fixed(&mut state, p)?;
-    solver.project(&mut state);
-    if options.penalty == PenaltyRule::ActiveBound {
-        // 3. The active bound, from the fit at the paper's p* (stiff, so that the foot points
-        // settle on a smooth curve first): p is then chosen at every Newton step.
+
+    /// The result from `state` at the penalty `p` (every point projected once more).
+    fn finish(&mut self, state: State<D>, p: f64, seed_bound: f64) -> CurveFit<D> {
+        let state = projected(&mut self.solver, self.problem.ordered, state);
+        let taper = self.problem.taper;
+        CurveFit {
+            jump_sum: state.spline.jump_penalty(self.weights),
+            bending_energy: taper.bending_energy(&state.spline),
+            bending_shares: self
+                .knots
+                .windows(2)
+                .map(|w| taper.share(w[0], w[1]))
+                .collect(),
+            bending_weight: self.problem.bending,
+            data_term: state.data_term(),
+            distances: state.dist_sq.iter().map(|d| d.sqrt()).collect(),
+            parameters: state.params,
+            spline: state.spline,
+            penalty: p,
+            seed_bound,
+            weights: self.weights.to_vec(),
+            iterations: self.iterations,
+            noise: self.noise,
+            warnings: Vec::new(),
+        }
+    }
+
+    /// `f`, the weighted sum of squared jumps of `state`.
+    fn jumps(&self, state: &State<D>) -> f64 {
+        state.spline.jump_penalty(self.weights)
+    }
+
+    /// Step 1: The unconstrained fit, into `state`: `true` when it meets the bound (the answer).
+    ///
+    /// First with every foot point free (the Newton model is exact for free foot points, and
+    /// converges in a few steps, see [`Run::free_phase`]), then with the parameters ordered
+    /// from there ([`Run::ordered_phase`]). Dense points start from the fit of a subset
+    /// ([`warm_start`]). Between the two phases the ends of a noisy fit are pinned at their
+    /// estimates ([`Run::estimated_ends`]); they stay pinned for the rest of the fit, the
+    /// constrained one included. Too few points for it: `state` is the fit with the jumps
+    /// held to zero.
+    fn unconstrained(&mut self, state: &mut State<D>) -> Result<bool> {
+        let free = Problem {
+            ordered: false,
+            ..self.problem
+        };
+        let first = match warm_start(&free, &self.start, self.stop, state) {
+            Some(done) => {
+                self.iterations += done;
+                Ok(())
+            }
+            None => self.solver.solve_fixed(state, 0.0),
+        };
+        match first {
+            Ok(()) => {
+                self.free_phase(state)?;
+                self.estimated_ends(state)?;
+                if self.problem.ordered {
+                    self.ordered_phase(state)?;
+                }
+                Ok(self.jumps(state) <= self.options.eps)
+            }
+            Err(e) if self.options.eps.is_infinite() => Err(e),
+            Err(_) => {
+                // Too few points for the unconstrained fit: start from the fit with the jumps
+                // held to zero (always determined when the points determine one cubic).
+                state.params.copy_from_slice(&self.start);
+                self.solver.solve_fixed(state, 1.0)?;
+                self.solver.project(state);
+                Ok(false)
+            }
+        }
+    }
+
+    /// The free phase: every foot point free; with the ordered phase to follow, until a step
+    /// lowers `F` by less than [`FREE_DECREASE_PER_COEFFICIENT`] `sigma^2` per coefficient
+    /// and [`FREE_DECREASE_SHARE`] of `F`.
+    fn free_phase(&mut self, state: &mut State<D>) -> Result<()> {
+        self.solver.project(state);
+        let coefficients = (2 * D * self.knots.len()) as f64;
+        let hand_over = FREE_DECREASE_PER_COEFFICIENT * coefficients * self.noise.sigma.powi(2);
+        let free_stop = Stop {
+            min_decrease: if self.problem.ordered && hand_over.is_finite() {
+                hand_over
+            } else {
+                0.0
+            },
+            decrease_share: FREE_DECREASE_SHARE,
+            ..self.stop
+        };
+        self.iterations += self
+            .solver
+            .minimize(state, Penalty::Fixed(0.0), free_stop)?
+            .0;
+        Ok(())
+    }
+
+    /// The ends of a noisy fit under [`FitEnds::Auto`], not pinned otherwise, held from here
+    /// on where the points say ([`end_pins`]); without the ordered phase the free fit runs
+    /// again from there.
+    fn estimated_ends(&mut self, state: &mut State<D>) -> Result<()> {
+        let estimate = self.options.ends == FitEnds::Auto
+            && self.problem.pins.is_none()
+            && self.problem.foot_points;
+        let Some(pins) = estimate
+            .then(|| end_pins(self.points, self.noise.sigma, &state.spline))
+            .flatten()
+        else {
+            return Ok(());
+        };
+        self.problem.pins = Some(pins);
+        self.solver.set_pins(pins, state);
+        if !self.problem.ordered {
+            self.solver.project(state);
+            self.iterations += self
+                .solver
+                .minimize(state, Penalty::Fixed(0.0), self.stop)?
+                .0;
+        }
+        Ok(())
+    }
+
+    /// The ordered phase: the parameters ordered (runs pooled out of order) for at most
+    /// [`ORDERED_ITERATIONS`] steps. Every projection orders the parameters, so the result is
+    /// ordered however many steps run, and the pooled runs, which the model treats as free
+    /// foot points, slow it down; it also ends on a step that hardly moves the curve
+    /// ([`MOVE_SHARE`]).
+    fn ordered_phase(&mut self, state: &mut State<D>) -> Result<()> {
+        self.solver.set_ordered(true);
+        self.solver.project(state);
+        let ordered = Stop {
+            max_iterations: self.stop.max_iterations.min(ORDERED_ITERATIONS),
+            min_gain: ORDERED_MIN_GAIN,
+            min_move: MOVE_SHARE * standard_error(&self.noise, state, self.knots.len()),
+            ..self.stop
+        };
+        self.iterations += self.solver.minimize(state, Penalty::Fixed(0.0), ordered)?.0;
+        Ok(())
+    }
+
+    /// Step 3: The active bound, from the fit at the paper's `p*` in `state` (stiff, so that the
+    /// foot points settle on a smooth curve first): `p` is then chosen at every Newton step,
+    /// and the fit polished ([`Run::polish`]).
+    fn active_bound(&mut self, state: &mut State<D>, p: f64) -> Result<Active<D>> {
+        let stop = self.stop;
+        let (eps, tolerance) = (self.options.eps, self.options.eps_tolerance);
         let settle = Stop {
             tolerance: stop.tolerance.max(DEFAULT_SETTLE_TOLERANCE),
             ..stop
         };
-        iterations += solver.minimize(&mut state, Penalty::Fixed(p), settle)?.0;
-        let lowest = (1.0 - options.eps_tolerance) * eps;
+        self.iterations += self.solver.minimize(state, Penalty::Fixed(p), settle)?.0;
+        let lowest = (1.0 - tolerance) * eps;
         let penalty = Penalty::Target {
-            target: penalty_target(eps, options.eps_tolerance),
+            target: penalty_target(eps, tolerance),
             lowest,
             highest: eps,
             guess: p,
         };
-        let (done, found) = solver.minimize(&mut state, penalty, stop)?;
-        iterations += done;
-        let f = f_of(&state);
+        let (done, found) = self.solver.minimize(state, penalty, stop)?;
+        self.iterations += done;
+        let f = self.jumps(state);
         if f <= eps && f >= lowest {
-            // The search for p rides on the steps, so the p found is the multiplier only to
-            // the accuracy of that search: the fit is polished at p held (a stationary point
-            // of H + lambda S + p f), p moved by secant steps on ln f against ln p until
-            // f lands in the window again.
-            let ln_target = penalty_target(eps, options.eps_tolerance).ln();
-            let (mut ln_p, mut slope, mut last) = (found.ln(), -1.0, None::<(f64, f64)>);
-            let mut polished = state.clone();
-            // (p = 0: the bound is not active for the model, nothing to polish.)
-            let steps = if found > 0.0 { POLISH_STEPS } else { 0 };
-            for _ in 0..steps {
-                let p = ln_p.exp();
-                iterations += solver.minimize(&mut polished, Penalty::Fixed(p), stop)?.0;
-                let f = f_of(&polished);
-                if f <= eps && f >= lowest {
-                    return Ok(finish(
-                        projected(&mut solver, problem.ordered, polished),
-                        p,
-                        seed_bound,
-                        iterations,
-                    ));
-                }
-                let miss = f.max(f64::MIN_POSITIVE).ln() - ln_target;
-                if let Some((ln_p0, miss0)) = last {
-                    if ln_p != ln_p0 && miss != miss0 {
-                        slope = ((miss - miss0) / (ln_p - ln_p0)).min(-1e-3);
-                    }
-                }
-                last = Some((ln_p, miss));
-                ln_p -= miss / slope;
+            return self.polish(state, found);
+        }
+        Ok(Active::Missed(found))
+    }
+
+    /// The fit of the active bound polished. The search for `p` rides on the steps, so the
+    /// `found` is the multiplier only to the accuracy of that search: the fit is polished at
+    /// `p` held (a stationary point of `H + lambda S + p f`), `p` moved by secant steps on
+    /// `ln f` against `ln p` until `f` lands in the window again; when it does not within
+    /// [`POLISH_STEPS`], `state` at `found` stands.
+    fn polish(&mut self, state: &mut State<D>, found: f64) -> Result<Active<D>> {
+        let (eps, tolerance) = (self.options.eps, self.options.eps_tolerance);
+        let lowest = (1.0 - tolerance) * eps;
+        let ln_target = penalty_target(eps, tolerance).ln();
+        let (mut ln_p, mut slope, mut last) = (found.ln(), -1.0, None::<(f64, f64)>);
+        let mut polished = state.clone();
+        // (p = 0: the bound is not active for the model, nothing to polish.)
+        let steps = if found > 0.0 { POLISH_STEPS } else { 0 };
+        for _ in 0..steps {
+            let p = ln_p.exp();
+            self.iterations += self
+                .solver
+                .minimize(&mut polished, Penalty::Fixed(p), self.stop)?
+                .0;
+            let f = self.jumps(&polished);
+            if f <= eps && f >= lowest {
+                return Ok(Active::Met(Box::new(polished), p));
             }
-            return Ok(finish(
-                projected(&mut solver, problem.ordered, state),
-                found,
-                seed_bound,
-                iterations,
-            ));
+            let miss = f.max(f64::MIN_POSITIVE).ln() - ln_target;
+            if let Some((ln_p0, miss0)) = last {
+                if ln_p != ln_p0 && miss != miss0 {
+                    slope = ((miss - miss0) / (ln_p - ln_p0)).min(-1e-3);
+                }
+            }
+            last = Some((ln_p, miss));
+            ln_p -= miss / slope;
         }
-        // Not settled in the window (iteration cap): hold the p found, raised if need be, but
-        // never below the paper's p* (a search that collapsed towards 0 would otherwise
-        // leave the paper's rule 40 decades short).
-        p = found.max(seed_bound).max(f64::MIN_POSITIVE);
+        Ok(Active::Met(
+            Box::new(std::mem::replace(state, polished)),
+            found,
+        ))
     }
-    // The paper's rule: p = p*, times 10 until the bound holds.
-    for _ in 0..=40 {
-        iterations += solver.minimize(&mut state, Penalty::Fixed(p), stop)?.0;
-        if f_of(&state) <= eps {
-            return Ok(finish(
-                projected(&mut solver, problem.ordered, state),
-                p,
-                seed_bound,
-                iterations,
-            ));
+
+    /// The paper's rule from `state`: `p`, times 10 until the bound holds.
+    fn paper_rule(
+        mut self,
+        mut state: State<D>,
+        mut p: f64,
+        seed_bound: f64,
+    ) -> Result<CurveFit<D>> {
+        for _ in 0..=40 {
+            self.iterations += self
+                .solver
+                .minimize(&mut state, Penalty::Fixed(p), self.stop)?
+                .0;
+            if self.jumps(&state) <= self.options.eps {
+                return Ok(self.finish(state, p, seed_bound));
+            }
+            p *= 10.0;
         }
-        p *= 10.0;
+        Err(unreachable_bound(self.options.eps))
     }
-    Err(unreachable_bound(eps))
 }
 
 /// `state` with every point projected once more onto its spline, the parameters ordered when
@@ -774,4 +919,80 @@ fn feasible_reference<const D: usize>(
     super::project_all::project(problem.points, problem.projection(), &mut lifted, &mut form);
     let value = lifted.data_term() + problem.bending_term(&lifted.spline);
     (value, lifted)
+}
+
+// The settings one fit runs with: the caller's options in the units of the fit, with the
+// decisions the library takes for its own rounds and refits (fewer iterations, shared ends,
+// more smoothing, a stiffer bending weight) made on this private copy, never on the public
+// options.
+
+/// [`FitOptions`] as one fit runs with them: every field but the corners and the starting
+/// rule copied (the struct is `Copy`, so an internal decision is a struct update, not a
+/// clone of the caller's options), `eps` in the units of the fit.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Settings<'a> {
+    /// The bound on the jump sum, in the units of the fit.
+    pub eps: f64,
+    pub corners: &'a [f64],
+    pub penalty: PenaltyRule,
+    pub start: &'a StartParameters,
+    pub foot_points: bool,
+    pub max_iterations: usize,
+    pub eps_tolerance: f64,
+    pub fairness: f64,
+    pub ends: FitEnds,
+    pub settle_tolerance: f64,
+    pub ordered: bool,
+    pub smoothing: Option<f64>,
+}
+
+impl<'a> Settings<'a> {
+    /// `options` for points divided by `unit`'s scale: the bound `eps` on the squared jumps
+    /// scales with them; the other settings are dimensionless.
+    pub(crate) fn in_fit_units<const D: usize>(
+        options: &'a FitOptions,
+        unit: UnitScale<D>,
+    ) -> Self {
+        let eps = if unit.scale() == 1.0 {
+            options.eps
+        } else {
+            unit.squared_length(options.eps)
+        };
+        Settings {
+            eps,
+            ..Settings::of(options)
+        }
+    }
+
+    /// `options` as they are.
+    pub(crate) fn of(options: &'a FitOptions) -> Self {
+        let FitOptions {
+            eps,
+            ref corners,
+            penalty,
+            ref start,
+            foot_points,
+            max_iterations,
+            eps_tolerance,
+            fairness,
+            ends,
+            settle_tolerance,
+            ordered,
+            smoothing,
+        } = *options;
+        Settings {
+            eps,
+            corners,
+            penalty,
+            start,
+            foot_points,
+            max_iterations,
+            eps_tolerance,
+            fairness,
+            ends,
+            settle_tolerance,
+            ordered,
+            smoothing,
+        }
+    }
 }

@@ -190,14 +190,11 @@ impl<const D: usize> Descent<D> {
         (self.t, 2.0 * self.cur.d)
     }
 
-    /// One step of the descent; `false` once it has ended (then it changes nothing).
+    /// Moves the bracket of the minimum and the window of knots by the sign of the slope at
+    /// the current parameter; `false` when the descent ends there (no slope, or a minimum at
+    /// an end of the domain).
     #[inline]
-    fn advance(&mut self, curve: &PowerForm<D>) -> bool {
-        if self.steps >= MAX_STEPS {
-            return false;
-        }
-        self.steps += 1;
-        let knots = curve.knots();
+    fn narrow(&mut self, knots: &[f64]) -> bool {
         let (first, last) = (knots[0], knots[knots.len() - 1]);
         let (t, cur) = (self.t, self.cur);
         if cur.g < 0.0 {
@@ -205,7 +202,6 @@ impl<const D: usize> Descent<D> {
         } else if cur.g > 0.0 {
             self.right = t;
         } else {
-            self.steps = MAX_STEPS;
             return false;
         }
         if self.left >= self.right {
@@ -217,7 +213,6 @@ impl<const D: usize> Descent<D> {
             }
         }
         if (t <= first && cur.g >= 0.0) || (t >= last && cur.g <= 0.0) {
-            self.steps = MAX_STEPS;
             return false; // a minimum at an end of the domain
         }
         if t <= knots[self.lo_knot] && cur.g > 0.0 && self.lo_knot > 0 {
@@ -226,20 +221,29 @@ impl<const D: usize> Descent<D> {
         if t >= knots[self.hi_knot] && cur.g < 0.0 && self.hi_knot + 1 < knots.len() {
             self.hi_knot += 1;
         }
+        true
+    }
+
+    /// The Newton step's parameter (NaN when the model is not convex) and the parameter to
+    /// try next: the Newton step inside the window and the bracket, an end of the domain it
+    /// points past, else the middle towards the descent; `None` when the Newton step is below
+    /// the resolution of `t`.
+    #[inline]
+    fn next_parameter(&self, knots: &[f64]) -> Option<(f64, f64)> {
+        let (first, last) = (knots[0], knots[knots.len() - 1]);
+        let (t, cur) = (self.t, self.cur);
         let a = knots[self.lo_knot].max(self.left);
         let b = knots[self.hi_knot].min(self.right);
-        let bracketed = self.left.is_finite() && self.right.is_finite();
         let newton = if cur.h > 0.0 {
             let delta = cur.g / cur.h;
             if delta.abs() <= 4.0 * f64::EPSILON * t.abs().max(f64::MIN_POSITIVE) {
-                self.steps = MAX_STEPS;
-                return false; // the Newton step is below the resolution of t: converged
+                return None;
             }
             t - delta
         } else {
             f64::NAN
         };
-        let mut next_t = if newton > a && newton < b {
+        let next_t = if newton > a && newton < b {
             newton
         } else if newton >= b && b == last && t < last {
             last // Newton points past the end of the domain: try the end itself
@@ -249,6 +253,27 @@ impl<const D: usize> Descent<D> {
             0.5 * (a + t)
         } else {
             0.5 * (t + b)
+        };
+        Some((newton, next_t))
+    }
+
+    /// One step of the descent; `false` once it has ended (then it changes nothing).
+    #[inline]
+    fn advance(&mut self, curve: &PowerForm<D>) -> bool {
+        if self.steps >= MAX_STEPS {
+            return false;
+        }
+        self.steps += 1;
+        let knots = curve.knots();
+        if !self.narrow(knots) {
+            self.steps = MAX_STEPS;
+            return false;
+        }
+        let (t, cur) = (self.t, self.cur);
+        let bracketed = self.left.is_finite() && self.right.is_finite();
+        let Some((newton, mut next_t)) = self.next_parameter(knots) else {
+            self.steps = MAX_STEPS;
+            return false; // the Newton step is below the resolution of t: converged
         };
         // A Newton step that moves the curve point by less than half the distance is in the
         // quadratic regime: there d changes below its own rounding, so it is not checked.

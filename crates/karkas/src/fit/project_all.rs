@@ -118,6 +118,56 @@ fn order_parameters<const D: usize>(
     state.data_term()
 }
 
+/// Projects the point of chunk index `j` (point `first + j`), or it and the next as a pair
+/// of free points (see `foot_point_pair`), adding their squared distances to `sum`; returns
+/// how many were projected.
+fn project_next<const D: usize>(
+    form: &PowerForm<D>,
+    points: &[Point<D>],
+    projection: Projection,
+    (first, j): (usize, usize),
+    (params, dist_sq, piece): (&mut [f64], &mut [f64], &mut [usize]),
+    sum: &mut f64,
+) -> usize {
+    let (n, len, i) = (points.len(), params.len(), first + j);
+    if j + 1 < len && projection.is_free(i, n) && projection.is_free(i + 1, n) {
+        let (pa, pb) = piece[j..].split_at_mut(1);
+        let [a, b] = foot_point_pair(
+            form,
+            [points[i], points[i + 1]],
+            [params[j], params[j + 1]],
+            [&mut pa[0], &mut pb[0]],
+        );
+        (params[j], dist_sq[j]) = a;
+        (params[j + 1], dist_sq[j + 1]) = b;
+        *sum += a.1;
+        *sum += b.1;
+        return 2;
+    }
+    let r = points[i];
+    if projection.is_free(i, n) {
+        (params[j], dist_sq[j]) = foot_point_near(form, r, params[j], &mut piece[j]);
+    } else {
+        piece[j] = form.piece_near(params[j], piece[j]);
+        dist_sq[j] = form.point(piece[j], params[j]).distance_sq(r);
+    }
+    *sum += dist_sq[j];
+    1
+}
+
+/// Lock-free `done += sum` on the bits of an `f64`.
+fn add_to(done: &AtomicU64, sum: f64) {
+    let mut old = done.load(Ordering::Relaxed);
+    while let Err(now) = done.compare_exchange_weak(
+        old,
+        (f64::from_bits(old) + sum).to_bits(),
+        Ordering::Relaxed,
+        Ordering::Relaxed,
+    ) {
+        old = now;
+    }
+}
+
 /// [`project_within`] without the ordering.
 fn project_each<const D: usize>(
     points: &[Point<D>],
@@ -139,32 +189,8 @@ fn project_each<const D: usize>(
         let mut sum = 0.0;
         let mut j = 0;
         while j < len {
-            let i = first + j;
-            // Two free points at a time (see `foot_point_pair`), in order.
-            let taken = if j + 1 < len && projection.is_free(i, n) && projection.is_free(i + 1, n) {
-                let (pa, pb) = piece[j..].split_at_mut(1);
-                let [a, b] = foot_point_pair(
-                    form,
-                    [points[i], points[i + 1]],
-                    [params[j], params[j + 1]],
-                    [&mut pa[0], &mut pb[0]],
-                );
-                (params[j], dist_sq[j]) = a;
-                (params[j + 1], dist_sq[j + 1]) = b;
-                sum += a.1;
-                sum += b.1;
-                2
-            } else {
-                let r = points[i];
-                if projection.is_free(i, n) {
-                    (params[j], dist_sq[j]) = foot_point_near(form, r, params[j], &mut piece[j]);
-                } else {
-                    piece[j] = form.piece_near(params[j], piece[j]);
-                    dist_sq[j] = form.point(piece[j], params[j]).distance_sq(r);
-                }
-                sum += dist_sq[j];
-                1
-            };
+            let slices = (&mut *params, &mut *dist_sq, &mut *piece);
+            let taken = project_next(form, points, projection, (first, j), slices, &mut sum);
             j += taken;
             if j % 64 < taken
                 && (abandoned.load(Ordering::Relaxed)
@@ -174,16 +200,7 @@ fn project_each<const D: usize>(
                 return None;
             }
         }
-        // Lock-free `done += sum`.
-        let mut old = done.load(Ordering::Relaxed);
-        while let Err(now) = done.compare_exchange_weak(
-            old,
-            (f64::from_bits(old) + sum).to_bits(),
-            Ordering::Relaxed,
-            Ordering::Relaxed,
-        ) {
-            old = now;
-        }
+        add_to(&done, sum);
         Some(sum)
     };
     if n < PARALLEL_THRESHOLD {

@@ -5,9 +5,11 @@
 //! knots at most [`PRUNE_WORK`]).
 
 use super::guards::shape_faults;
-use super::penalty::{check_inputs, fit_checked, FitOptions};
+use super::penalty::Settings;
+use super::penalty::{fit_checked, knot_weights};
 use super::result::CurveFit;
-use crate::{Point, Result};
+use super::session::Session;
+use crate::Result;
 
 /// The largest product of points and knots for which the pass runs.
 pub(crate) const PRUNE_WORK: usize = 200_000;
@@ -15,12 +17,13 @@ pub(crate) const PRUNE_WORK: usize = 200_000;
 /// `fit` (which meets `tolerance`) with the inner knots it does not need removed, the
 /// corners kept.
 pub(crate) fn prune<const D: usize>(
-    points: &[Point<D>],
+    session: &Session<'_, D>,
     tolerance: f64,
-    options: &FitOptions,
+    options: &Settings<'_>,
     mut fit: CurveFit<D>,
     start: impl Fn(&[f64]) -> Vec<f64>,
 ) -> Result<CurveFit<D>> {
+    let points = session.points;
     if points.len() * fit.spline.knots().len() > PRUNE_WORK {
         return Ok(fit);
     }
@@ -37,7 +40,7 @@ pub(crate) fn prune<const D: usize>(
         }
         let mut fewer = knots.to_vec();
         fewer.remove(at);
-        let weights = check_inputs(points, &fewer, options)?;
+        let weights = knot_weights(&fewer, options.corners)?;
         let trial = fit_checked(
             points,
             &fewer,

@@ -291,7 +291,8 @@ impl<'a, const D: usize> Solver<'a, D> {
 
     /// Minimizes `F` from `state` (whose parameters are already foot points, or fixed
     /// ones), with `p` held or chosen per step (see [`Penalty`]); returns the iterations done
-    /// and the final `p`.
+    /// and the final `p`. Each iteration tries damped Newton steps ([`Solver::newton_tries`])
+    /// and, when none lowers `F`, one alternation step ([`Solver::alternation_step`]).
     ///
     /// Errors: [`Error::SingularSystem`] when the parameters are held and the least-squares
     /// problem does not determine the spline.
@@ -323,16 +324,14 @@ impl<'a, const D: usize> Solver<'a, D> {
                 f >= lo && f <= hi
             }
         };
-        let mut mu = INITIAL_DAMPING;
         // Which model goes first: the exact one, until a step of the exact model failed
         // where the safe one at the same damping succeeded.
-        let mut prefer_safe = false;
+        let mut damping = Damping {
+            mu: INITIAL_DAMPING,
+            prefer_safe: false,
+        };
         let mut stalls = 0;
         let mut last_gradient = f64::INFINITY;
-        // Whether the accepted step moved the curve across itself by less than `min_move`.
-        let still = |old: &State<D>, new: &State<D>| {
-            stop.min_move > 0.0 && new.spline.moved_across(&old.spline) < stop.min_move
-        };
         for iteration in 0..stop.max_iterations {
             self.model.assemble(&self.problem, state);
             let (g, scale) = self.model.gradient().size(p);
@@ -340,93 +339,28 @@ impl<'a, const D: usize> Solver<'a, D> {
                 stalls = 0;
             }
             last_gradient = g;
-            let mut current = self.objective(state, p);
+            let current = self.objective(state, p);
             if !current.is_finite() || (g <= GRADIENT_TOLERANCE * scale && in_window(state)) {
                 return Ok((iteration, p));
             }
-            let mut gained = None;
-            let mut progress = false;
-            let mut settled = false;
-            let mut unmoved = false;
-            // Each damping is tried with both models, the preferred one first.
-            'tries: for attempt in 0..2 * DAMPING_TRIES {
-                let safe = (attempt % 2 == 1) != prefer_safe;
-                let problem = &self.problem;
-                let tried = match penalty {
-                    Penalty::Fixed(p) => self
-                        .model
-                        .newton_step(problem, state, p, mu, safe)
-                        .map(|x| (p, x)),
-                    Penalty::Target { target, .. } => {
-                        self.model.target_step(problem, state, target, p, mu, safe)
-                    }
-                };
-                let mu_tried = mu;
-                if attempt % 2 == 1 {
-                    mu = (mu * 8.0).max(1e-10);
-                }
-                let (p_try, predicted) = match tried {
-                    Ok(found) => found,
-                    Err(Error::SingularSystem { .. }) => continue 'tries,
-                    Err(e) => return Err(e),
-                };
-                let before = if p_try == p {
-                    current
-                } else {
-                    self.objective(state, p_try)
-                };
-                let budget = before + 8.0 * f64::EPSILON * before.abs();
-                let value = self.step_into_trial(state, p_try, budget);
-                let lower = value < before;
-                // Near the minimum F stops changing in floating point before the gradient
-                // vanishes: there a step that keeps F to rounding and shrinks the gradient
-                // is taken.
-                let level = !lower && value <= before + 4.0 * f64::EPSILON * before.abs() && {
-                    accumulate_gradient(&self.problem, &self.trial, &mut self.trial_gradient);
-                    self.trial_gradient.size(p_try).0
-                        < GRADIENT_PROGRESS * self.model.gradient().size(p_try).0
-                };
-                if lower || level {
-                    prefer_safe |= safe && attempt % 2 == 1;
-                    let ratio = (before - value) / predicted.max(f64::MIN_POSITIVE);
-                    mu = if ratio > 0.75 {
-                        (mu_tried * 0.25).max(1e-15)
-                    } else if ratio < 0.25 {
-                        mu_tried * 2.0
-                    } else {
-                        mu_tried
-                    };
-                    settled = mu_tried <= SETTLED_DAMPING
-                        && settled_distances(&state.dist_sq, &self.trial.dist_sq, stop);
-                    unmoved = still(state, &self.trial);
-                    std::mem::swap(state, &mut self.trial);
-                    gained = Some(before - value);
-                    progress = before - value > PROGRESS * value.abs();
-                    p = p_try;
-                    current = value;
-                    break 'tries;
-                }
+            let step = match self.newton_tries(state, penalty, p, current, &mut damping, stop)? {
+                Some(step) => Some(step),
+                None => self.alternation_step(state, p, current, &mut damping, stop),
+            };
+            if let Some(step) = &step {
+                p = step.p;
             }
-            if gained.is_none() {
-                let value = self.alternation_into_trial(state, p);
-                if value < current {
-                    unmoved = still(state, &self.trial);
-                    std::mem::swap(state, &mut self.trial);
-                    gained = Some(current - value);
-                    progress = current - value > PROGRESS * value.abs();
-                }
-                mu = mu.max(1e-4);
-            }
-            if !progress {
+            if !step.as_ref().is_some_and(|s| s.progress) {
                 stalls += 1;
             }
             if stalls > STALLS {
                 return Ok((iteration + 1, p));
             }
-            if gained.is_some() && (settled || unmoved) && in_window(state) {
-                return Ok((iteration + 1, p));
-            }
-            if let Some(gain) = gained {
+            if let Some(step) = step {
+                if (step.settled || step.unmoved) && in_window(state) {
+                    return Ok((iteration + 1, p));
+                }
+                let (gain, current) = (step.gain, step.value);
                 let small = gain < stop.min_gain * current.abs()
                     || (gain < stop.min_decrease && gain < stop.decrease_share * current.abs());
                 if small && in_window(state) {
@@ -436,6 +370,139 @@ impl<'a, const D: usize> Solver<'a, D> {
         }
         Ok((stop.max_iterations, p))
     }
+
+    /// One damped Newton step from `state` (whose `F` at `p` is `current`), taken into
+    /// `state`: each damping is tried with both models, the preferred one first; `None` when
+    /// no damping lowers `F`.
+    fn newton_tries(
+        &mut self,
+        state: &mut State<D>,
+        penalty: Penalty,
+        p: f64,
+        current: f64,
+        damping: &mut Damping,
+        stop: Stop,
+    ) -> Result<Option<Accepted>> {
+        for attempt in 0..2 * DAMPING_TRIES {
+            let safe = (attempt % 2 == 1) != damping.prefer_safe;
+            let problem = &self.problem;
+            let mu = damping.mu;
+            let tried = match penalty {
+                Penalty::Fixed(p) => self
+                    .model
+                    .newton_step(problem, state, p, mu, safe)
+                    .map(|x| (p, x)),
+                Penalty::Target { target, .. } => {
+                    self.model.target_step(problem, state, target, p, mu, safe)
+                }
+            };
+            if attempt % 2 == 1 {
+                damping.mu = (mu * 8.0).max(1e-10);
+            }
+            let (p_try, predicted) = match tried {
+                Ok(found) => found,
+                Err(Error::SingularSystem { .. }) => continue,
+                Err(e) => return Err(e),
+            };
+            let before = if p_try == p {
+                current
+            } else {
+                self.objective(state, p_try)
+            };
+            let budget = before + 8.0 * f64::EPSILON * before.abs();
+            let value = self.step_into_trial(state, p_try, budget);
+            let lower = value < before;
+            // Near the minimum F stops changing in floating point before the gradient
+            // vanishes: there a step that keeps F to rounding and shrinks the gradient is
+            // taken.
+            let level = !lower && value <= before + 4.0 * f64::EPSILON * before.abs() && {
+                accumulate_gradient(&self.problem, &self.trial, &mut self.trial_gradient);
+                self.trial_gradient.size(p_try).0
+                    < GRADIENT_PROGRESS * self.model.gradient().size(p_try).0
+            };
+            if lower || level {
+                damping.prefer_safe |= safe && attempt % 2 == 1;
+                let ratio = (before - value) / predicted.max(f64::MIN_POSITIVE);
+                damping.mu = if ratio > 0.75 {
+                    (mu * 0.25).max(1e-15)
+                } else if ratio < 0.25 {
+                    mu * 2.0
+                } else {
+                    mu
+                };
+                let settled = mu <= SETTLED_DAMPING
+                    && settled_distances(&state.dist_sq, &self.trial.dist_sq, stop);
+                let unmoved = still(stop, state, &self.trial);
+                std::mem::swap(state, &mut self.trial);
+                return Ok(Some(Accepted {
+                    gain: before - value,
+                    progress: before - value > PROGRESS * value.abs(),
+                    settled,
+                    unmoved,
+                    p: p_try,
+                    value,
+                }));
+            }
+        }
+        Ok(None)
+    }
+
+    /// One alternation step from `state` (whose `F` at `p` is `current`), taken into `state`
+    /// when it lowers `F`; the damping raised to at least `1e-4` for the next Newton step.
+    fn alternation_step(
+        &mut self,
+        state: &mut State<D>,
+        p: f64,
+        current: f64,
+        damping: &mut Damping,
+        stop: Stop,
+    ) -> Option<Accepted> {
+        let value = self.alternation_into_trial(state, p);
+        damping.mu = damping.mu.max(1e-4);
+        if value >= current || value.is_nan() {
+            return None;
+        }
+        let unmoved = still(stop, state, &self.trial);
+        std::mem::swap(state, &mut self.trial);
+        Some(Accepted {
+            gain: current - value,
+            progress: current - value > PROGRESS * value.abs(),
+            settled: false,
+            unmoved,
+            p,
+            value: current,
+        })
+    }
+}
+
+/// The damping of the Newton steps, carried from step to step.
+struct Damping {
+    /// The Levenberg-Marquardt damping of the next try.
+    mu: f64,
+    /// Whether the safe model goes first.
+    prefer_safe: bool,
+}
+
+/// A step taken by [`Solver::minimize`].
+struct Accepted {
+    /// How much it lowered `F`.
+    gain: f64,
+    /// Whether that is more than rounding.
+    progress: bool,
+    /// Whether no distance moved by more than the tolerance of the stop.
+    settled: bool,
+    /// Whether it moved the curve across itself by less than `min_move`.
+    unmoved: bool,
+    /// The penalty after the step.
+    p: f64,
+    /// `F` that the stopping rules compare the gain with.
+    value: f64,
+}
+
+/// Whether the accepted step from `old` to `new` moved the curve across itself by less than
+/// `stop.min_move`.
+fn still<const D: usize>(stop: Stop, old: &State<D>, new: &State<D>) -> bool {
+    stop.min_move > 0.0 && new.spline.moved_across(&old.spline) < stop.min_move
 }
 
 /// Whether no distance changed by more than `stop.tolerance` times the RMS of the new

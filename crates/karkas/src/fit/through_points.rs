@@ -29,7 +29,8 @@
 use super::hermite::HermiteSpline;
 use super::knots::MIN_KNOT_SPACING;
 use super::noise::NoiseEstimate;
-use super::penalty::{check_inputs, FitOptions, DEFAULT_SMOOTHING};
+use super::penalty::Settings;
+use super::penalty::{knot_weights, DEFAULT_SMOOTHING};
 use super::power::PowerForm;
 use super::problem::Taper;
 use super::project::foot_point_near;
@@ -62,7 +63,7 @@ pub(crate) fn through_points<const D: usize>(
     points: &[Point<D>],
     tolerance: f64,
     inflecting: f64,
-    options: &FitOptions,
+    options: &Settings<'_>,
     noise: &NoiseEstimate,
 ) -> Option<CurveFit<D>> {
     let n = points.len();
@@ -247,7 +248,7 @@ impl<const D: usize> Nodes<'_, D> {
         &self,
         at: &[usize],
         total: f64,
-        options: &FitOptions,
+        options: &Settings<'_>,
         noise: &NoiseEstimate,
     ) -> Option<CurveFit<D>> {
         let m = at.len();
@@ -292,7 +293,7 @@ impl<const D: usize> Nodes<'_, D> {
         );
         let taper = Taper::towards_ends(fairness, smoothing, n);
         let weights =
-            check_inputs(self.points, &knots, options).unwrap_or_else(|_| vec![0.0; knots.len()]);
+            knot_weights(&knots, options.corners).unwrap_or_else(|_| vec![0.0; knots.len()]);
         let fit = CurveFit {
             jump_sum: spline.jump_penalty(&weights),
             bending_energy: taper.bending_energy(&spline),
@@ -369,7 +370,7 @@ mod tests {
             points,
             tolerance,
             inflecting,
-            &FitOptions::default(),
+            &Settings::of(&crate::fit::FitOptions::default()),
             &noise,
         )
         .unwrap()
