@@ -73,10 +73,10 @@ fn demo_writes_a_complete_report() {
         .flat_map(|e| e["rows"].as_array().unwrap())
         .filter(|r| r["paper"].is_number())
         .count();
-    // Kuznetsov and Filatov: 7 table entries and the 7 printed points of the angle sweep;
-    // Pavlov: 20 per-point deviations and their maximum, and the largest deviation beside the
-    // clean hydrofoil's.
-    assert_eq!(paper_rows, 7 + 7 + 21 + 1);
+    // Kuznetsov and Filatov: 7 table entries, the same 7 frames with natural ends and the 7
+    // printed points of the angle sweep; Pavlov: 20 per-point deviations and their maximum,
+    // and the largest deviation beside the clean hydrofoil's.
+    assert_eq!(paper_rows, 7 + 7 + 7 + 21 + 1);
     crate::demo_hydrofoil::check_clean_hydrofoil(&out, examples);
     check_angle_sweep(examples);
 
