@@ -496,9 +496,10 @@ class BicubicSurface(Surface):
         (also 'averaged-chord'), 'centripetal'; origin (--origin I,J): the origin node (i, j)
         of 'chord'; crease_u/crease_v (--crease-u/--crease-v): closed with a C^0 seam."""
     def __reduce__(self) -> Tuple[object, ...]: ...
-    def condition_measure(self) -> _Floats:
+    def condition_measure(self, paper: bool = False) -> _Floats:
         """The condition measure (2.4) of the parameters at every node, (nu, nv), in [0, 1];
-        1 for arc lengths along orthogonal directions (karkas surface bicubic --report)."""
+        1 for arc lengths along orthogonal directions (karkas surface bicubic --report);
+        paper=True: the paper's |D| itself, the sine of the angle between the lines."""
     @staticmethod
     def from_knots(
         grid: ArrayLike,

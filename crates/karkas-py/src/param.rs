@@ -628,11 +628,23 @@ impl PyBicubicSurface {
     /// smaller otherwise: ``tan(theta / 2)`` for unit tangents at an angle ``theta``,
     /// ``min(1, a, b) / max(1, a, b)`` for orthogonal tangents of lengths ``a``, ``b``.
     ///
+    /// Parameters
+    /// ----------
+    /// paper : bool, optional
+    ///     The paper's own ``|D|`` of (2.4) instead (rows scaled to unit length): the sine of
+    ///     the angle between the parameter lines, ``sqrt(E G - F^2) / sqrt(E G)``, blind to
+    ///     stretched parameters (the second line of ``--report``).
+    ///
     /// Returns
     /// -------
     /// numpy.ndarray
     ///     float64, shape ``(nu, nv)`` of the grid (a closed direction includes its repeated
     ///     seam line, like ``knots_u``, ``knots_v``), values in ``[0, 1]``.
+    ///
+    /// Raises
+    /// ------
+    /// TypeError
+    ///     If ``paper`` is not a bool.
     ///
     /// Examples
     /// --------
@@ -643,10 +655,16 @@ impl PyBicubicSurface {
     /// >>> stretched = karkas.BicubicSurface(grid * [2.0, 1.0, 1.0], "uniform")
     /// >>> bool(np.allclose(stretched.condition_measure(), 0.5))
     /// True
-    fn condition_measure<'py>(slf: &Bound<'py, Self>) -> PyResult<Bound<'py, PyAny>> {
-        let measures = match bicubic_of(slf.as_super().get())? {
-            BicubicRef::D2(s) => s.condition_measures(),
-            BicubicRef::D3(s) => s.condition_measures(),
+    /// >>> bool(np.allclose(stretched.condition_measure(paper=True), 1.0))
+    /// True
+    #[pyo3(signature = (paper = false))]
+    #[pyo3(text_signature = "($self, paper=False)")]
+    fn condition_measure<'py>(slf: &Bound<'py, Self>, paper: bool) -> PyResult<Bound<'py, PyAny>> {
+        let measures = match (bicubic_of(slf.as_super().get())?, paper) {
+            (BicubicRef::D2(s), false) => s.condition_measures(),
+            (BicubicRef::D3(s), false) => s.condition_measures(),
+            (BicubicRef::D2(s), true) => s.paper_condition_measures(),
+            (BicubicRef::D3(s), true) => s.paper_condition_measures(),
         };
         let flat = vector_to_array(slf.py(), measures.as_slice())?;
         flat.call_method1("reshape", ((measures.rows(), measures.cols()),))

@@ -43,3 +43,30 @@ def test_a_stretched_parameter_and_a_closed_seam():
     m = karkas.BicubicSurface(ring, closed_v=True).condition_measure()
     assert m.shape == (3, 9)
     assert np.all((m > 0.9) & (m <= 1.0))
+
+
+def papers_d(wu, wv):
+    """|det [alpha; beta; n]| of (2.3)-(2.4) with the dual rows scaled to unit length, by NumPy."""
+    n = np.cross(wu, wv)
+    n /= np.linalg.norm(n)
+    dual = np.linalg.inv(np.stack([wu, wv, n], 1))  # rows: alpha, beta, n
+    alpha, beta = dual[0] / np.linalg.norm(dual[0]), dual[1] / np.linalg.norm(dual[1])
+    return abs(np.linalg.det(np.stack([alpha, beta, n])))
+
+
+def test_the_papers_measure_is_the_determinant_of_unit_rows():
+    # A curved, skewed and stretched grid: node tangents from the surface's own derivatives.
+    xs, ys = np.array([0.0, 0.6, 1.5, 2.0, 3.2]), np.array([0.0, 0.5, 1.4, 2.2])
+    x, y = np.meshgrid(xs, ys, indexing="ij")
+    grid = np.stack([x + 0.4 * y, 1.7 * y, 0.3 * x * x - 0.2 * x * y], -1)
+    s = karkas.BicubicSurface(grid, "uniform")
+    d = s.condition_measure(paper=True)
+    ku, kv = s.knots_u, s.knots_v
+    for i, u in enumerate(ku):
+        for j, v in enumerate(kv):
+            wu = s(u, v, du=1, grid=False)
+            wv = s(u, v, dv=1, grid=False)
+            assert abs(d[i, j] - papers_d(np.ravel(wu), np.ravel(wv))) < 1e-12
+    # Not 1 (the lines are skewed) and not the extension (the parameters are stretched).
+    assert d.min() < 0.99
+    assert np.all(np.abs(d - s.condition_measure()) > 1e-3)

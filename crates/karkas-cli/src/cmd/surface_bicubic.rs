@@ -41,7 +41,9 @@ pub struct SurfaceBicubicArgs {
     crease: CreaseUv,
     /// Print to standard error how well the parameters condition the continuation system
     /// (Kuznetsov and Filatov's measure (2.4), 1 for arc lengths along orthogonal lines): the
-    /// smallest and mean measure over the nodes and the worst node.
+    /// smallest and mean measure over the nodes and the worst node, then the same for the
+    /// paper's |D| itself (the sine of the angle between the parameter lines, blind to
+    /// stretched parameters).
     #[arg(long)]
     report: bool,
     #[command(flatten)]
@@ -69,6 +71,10 @@ pub fn run(args: &SurfaceBicubicArgs) -> Result<()> {
         .with_context(|| args.grid.input.display().to_string())?;
     if args.report {
         eprintln!("karkas: {}", condition_report(&surface.condition_summary()));
+        eprintln!(
+            "karkas: {}",
+            paper_report(&surface.paper_condition_summary())
+        );
     }
     let title = format!("bicubic surface, {} x {} grid", grid.rows(), grid.cols());
     let input = (args.grid.input.as_path(), &grid);
@@ -121,6 +127,17 @@ fn condition_report(summary: &ConditionSummary) -> String {
     format!(
         "condition measure of the parameters: min {:.6} at node (i={i}, j={j}), mean {:.6} over \
          {} nodes (1 = arc lengths along orthogonal lines)",
+        summary.min, summary.mean, summary.nodes
+    )
+}
+
+/// The second line of `--report`: `the paper's |D| (2.4) of the parameters: min M at node
+/// (i=I, j=J), mean A over N nodes (the sine of the angle between the parameter lines)`.
+fn paper_report(summary: &ConditionSummary) -> String {
+    let (i, j) = summary.worst;
+    format!(
+        "the paper's |D| (2.4) of the parameters: min {:.6} at node (i={i}, j={j}), mean {:.6} \
+         over {} nodes (the sine of the angle between the parameter lines; blind to stretch)",
         summary.min, summary.mean, summary.nodes
     )
 }

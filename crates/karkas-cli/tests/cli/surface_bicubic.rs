@@ -185,9 +185,14 @@ fn python_spellings_of_the_parameterization() {
 
 /// The number after `key ` in the `--report` line of `err`.
 fn reported(err: &str, key: &str) -> f64 {
+    reported_on(err, "condition measure", key)
+}
+
+/// The number after `key ` in the line of `err` that contains `line_key`.
+fn reported_on(err: &str, line_key: &str, key: &str) -> f64 {
     let line = err
         .lines()
-        .find(|l| l.contains("condition measure"))
+        .find(|l| l.contains(line_key))
         .unwrap_or_else(|| panic!("no report in {err}"));
     let rest = line.split(&format!("{key} ")).nth(1).unwrap();
     rest.split([' ', ',']).next().unwrap().parse().unwrap()
@@ -213,6 +218,9 @@ fn report_gives_the_condition_measure_of_the_parameters() {
         assert!((reported(&err, "min") - expected).abs() < 2e-6, "{err}");
         assert!((reported(&err, "mean") - expected).abs() < 2e-6, "{err}");
         assert!(err.contains("over 20 nodes"), "{err}");
+        // The paper's |D| (2.4): the sine of the angle between the lines, 1 and sin 60.
+        let paper = reported_on(&err, "the paper's |D|", "min");
+        assert!((paper - deg.to_radians().sin()).abs() < 2e-6, "{err}");
     }
     // Uniform parameters on rows 2 apart: the u tangents are stretched to 2, measure 1/2; the
     // worst node is named.
@@ -232,6 +240,11 @@ fn report_gives_the_condition_measure_of_the_parameters() {
     let err = stderr(&o);
     assert!((reported(&err, "min") - 0.5).abs() < 2e-6, "{err}");
     assert!(err.contains("at node (i="), "{err}");
+    // The paper's |D| does not see the stretch: the lines stay orthogonal.
+    assert!(
+        (reported_on(&err, "the paper's |D|", "min") - 1.0).abs() < 2e-6,
+        "{err}"
+    );
     // Without --report nothing is said about it.
     let o = karkas(&["surface", "bicubic", s(&input), "-o", s(&out)]);
     assert!(!stderr(&o).contains("condition measure"));

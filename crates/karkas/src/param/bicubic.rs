@@ -21,7 +21,9 @@
 //! row once (`O(M)`), then costs 4 multiply-adds per point; the `v` weights of every sample
 //! column are computed once per call.
 
-use super::condition::{node_measures, ConditionSummary};
+use super::condition::{
+    condition_measure, node_measures, paper_condition_measure, ConditionSummary,
+};
 use super::grid_controls::control_net;
 use super::parameterization::{grid_parameters, GridParameterization};
 use super::spline::{check_parameters, overflow_at_smallest_gap};
@@ -375,6 +377,35 @@ impl<const D: usize> BicubicSurface<D> {
     /// tangents `W_u`, `W_v` (`1` exactly for arc lengths along orthogonal directions,
     /// Theorem 2.1; smaller for skewed or stretched parameters). `O(N M)`.
     pub fn condition_measures(&self) -> Grid<f64> {
+        self.node_measures_by(condition_measure)
+    }
+
+    /// The paper's own measure (2.4), `|D|` for unit rows, at every node of the (closed)
+    /// grid: the sine of the angle between the parameter lines
+    /// ([`paper_condition_measure`](super::paper_condition_measure)); it does not see
+    /// stretched parameters, which [`condition_measures`](Self::condition_measures) does.
+    /// `O(N M)`.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use karkas::param::{BicubicSurface, GridParameterization};
+    /// use karkas::{Grid, Point};
+    ///
+    /// // Rows 2 apart with uniform parameters: orthogonal lines (|D| = 1), stretched u (1/2).
+    /// let grid = Grid::from_fn(3, 3, |i, j| Point([2.0 * i as f64, j as f64, 0.0]));
+    /// let s = BicubicSurface::new(&grid, GridParameterization::Uniform, false, false)?;
+    /// assert!(s.paper_condition_measures().as_slice().iter().all(|&d| (d - 1.0).abs() < 1e-12));
+    /// assert!((s.condition_summary().min - 0.5).abs() < 1e-12);
+    /// assert!((s.paper_condition_summary().min - 1.0).abs() < 1e-12);
+    /// # Ok::<(), karkas::Error>(())
+    /// ```
+    pub fn paper_condition_measures(&self) -> Grid<f64> {
+        self.node_measures_by(paper_condition_measure)
+    }
+
+    /// The measure `measure` of the node tangents at every node of the (closed) grid.
+    fn node_measures_by(&self, measure: fn(Point<D>, Point<D>) -> f64) -> Grid<f64> {
         // The value and first-derivative weights of every node line, computed once.
         let lines = |count: usize, weights: &dyn Fn(usize, f64, usize) -> [f64; 4]| {
             (0..count)
@@ -386,24 +417,35 @@ impl<const D: usize> BicubicSurface<D> {
         };
         let rows = lines(self.knots_u().len(), &|i, s, k| self.weights_u(i, s, k));
         let cols = lines(self.knots_v().len(), &|j, t, k| self.weights_v(j, t, k));
-        node_measures(rows.len(), cols.len(), |i, j| {
+        let tangents = |i: usize, j: usize| {
             let ((ci, u0, u1), (cj, v0, v1)) = (&rows[i], &cols[j]);
             (
                 self.combine_on_cell(*ci, *cj, u1, v0),
                 self.combine_on_cell(*ci, *cj, u0, v1),
             )
-        })
+        };
+        node_measures(rows.len(), cols.len(), tangents, measure)
     }
 
     /// The smallest and mean condition measure of [`condition_measures`](Self::condition_measures)
     /// and the worst node, over the distinct nodes (a closed direction's repeated seam line
     /// counted once).
     pub fn condition_summary(&self) -> ConditionSummary {
-        let measures = self.condition_measures();
+        self.summary_of(&self.condition_measures())
+    }
+
+    /// [`condition_summary`](Self::condition_summary) of the paper's measure
+    /// [`paper_condition_measures`](Self::paper_condition_measures).
+    pub fn paper_condition_summary(&self) -> ConditionSummary {
+        self.summary_of(&self.paper_condition_measures())
+    }
+
+    /// The summary of node `measures` over the distinct nodes.
+    fn summary_of(&self, measures: &Grid<f64>) -> ConditionSummary {
         let rows = measures.rows() - usize::from(self.closed_u);
         let cols = measures.cols() - usize::from(self.closed_v);
         // A grid has at least 2 lines in each direction (3 distinct when closed): never empty.
-        ConditionSummary::of(&measures, rows, cols).unwrap_or(ConditionSummary {
+        ConditionSummary::of(measures, rows, cols).unwrap_or(ConditionSummary {
             min: f64::NAN,
             mean: f64::NAN,
             worst: (0, 0),

@@ -24,6 +24,12 @@
 //! `tan(theta / 2)` (for unit rows this is `|D| / (1 + sqrt(1 - D^2))`, increasing with the
 //! paper's `|D| = sin theta`); orthogonal tangents of lengths `a`, `b` give
 //! `min(1, a, b) / max(1, a, b)`. `O(1)` per point, `O(N M)` per grid.
+//!
+//! The paper's own measure is kept beside it ([`paper_condition_measure`]): with the rows
+//! scaled to unit length, `|D| = |det [alpha; beta; n]|` is the sine of the angle between the
+//! rows, which (each row being orthogonal to the other tangent) is the sine of the angle
+//! between `W_u` and `W_v`: `|D| = sqrt(E G - F^2) / sqrt(E G)`. It sees skew only, not
+//! stretch, which is why the extension above is what karkas reports first.
 
 use crate::core::Grid;
 use crate::Point;
@@ -42,6 +48,37 @@ pub fn condition_measure<const D: usize>(wu: Point<D>, wv: Point<D>) -> f64 {
     let smallest = if largest > 0.0 { det / largest } else { 0.0 };
     let (s1, s2) = (largest.sqrt(), smallest.sqrt());
     s2.min(1.0) / s1.max(1.0)
+}
+
+/// Kuznetsov and Filatov's measure (2.4) itself at a point with tangents `wu = W_u`,
+/// `wv = W_v`: `|D| = |Delta| / d` for the rows `alpha`, `beta` of (2.3) scaled to unit
+/// length, which is `|sin theta|` for the angle `theta` between `W_u` and `W_v`,
+/// `sqrt(E G - F^2) / sqrt(E G)`. In `[0, 1]`: `1` for orthogonal tangents of any lengths,
+/// `0` for parallel ones or a zero tangent; NaN for a non-finite tangent. Unlike
+/// [`condition_measure`] it does not see stretched parameters (unit rows are the paper's
+/// premise (2.2)).
+///
+/// # Examples
+///
+/// ```
+/// use karkas::param::{condition_measure, paper_condition_measure};
+/// use karkas::Point3;
+///
+/// let (wu, wv) = (Point3::new([2.0, 0.0, 0.0]), Point3::new([1.0, 1.0, 0.0]));
+/// // 45 degrees apart: |D| = sin 45; the extension also sees the stretch of W_u.
+/// assert!((paper_condition_measure(wu, wv) - 0.5f64.sqrt()).abs() < 1e-15);
+/// assert!(condition_measure(wu, wv) < 0.5);
+/// ```
+pub fn paper_condition_measure<const D: usize>(wu: Point<D>, wv: Point<D>) -> f64 {
+    let (e, f, g) = (wu.dot(wu), wu.dot(wv), wv.dot(wv));
+    let eg = e * g;
+    if !eg.is_finite() || !f.is_finite() {
+        return f64::NAN;
+    }
+    if eg <= 0.0 {
+        return 0.0;
+    }
+    ((eg - f * f).max(0.0) / eg).sqrt().min(1.0)
 }
 
 /// The condition measures of a grid of nodes, summarized.
@@ -98,15 +135,17 @@ impl ConditionSummary {
     }
 }
 
-/// The measures of every node of a grid from its tangents `(W_u, W_v)`, row-major.
+/// The measures of every node of a grid from its tangents `(W_u, W_v)`, row-major, by
+/// `measure` ([`condition_measure`] or [`paper_condition_measure`]).
 pub(super) fn node_measures<const D: usize>(
     rows: usize,
     cols: usize,
     tangents: impl Fn(usize, usize) -> (Point<D>, Point<D>),
+    measure: fn(Point<D>, Point<D>) -> f64,
 ) -> Grid<f64> {
     Grid::from_fn(rows, cols, |i, j| {
         let (wu, wv) = tangents(i, j);
-        condition_measure(wu, wv)
+        measure(wu, wv)
     })
 }
 
@@ -136,6 +175,38 @@ mod tests {
         assert!((condition_measure(ex * 0.5, ey * 3.0) - 0.5 / 3.0).abs() < 1e-16);
         assert_eq!(condition_measure(ex, ex * 2.0), 0.0);
         assert_eq!(condition_measure(Point3::ZERO, ey), 0.0);
+    }
+
+    #[test]
+    fn the_papers_measure_is_the_sine_of_the_angle_between_the_tangents() {
+        // Checked against the determinant of (2.3) with the dual rows scaled to unit length.
+        let (ex, ey) = (Point3::new([1.0, 0.0, 0.0]), Point3::new([0.0, 1.0, 0.0]));
+        let n = Point3::new([0.0, 0.0, 1.0]);
+        for (deg, a, b) in [
+            (90.0f64, 1.0, 1.0),
+            (60.0, 2.0, 0.5),
+            (15.0, 3.0, 7.0),
+            (120.0, 1.0, 0.1),
+        ] {
+            let t = deg.to_radians();
+            let (wu, wv) = (ex * a, (ex * t.cos() + ey * t.sin()) * b);
+            // Dual rows in the plane: alpha . wv = 0, beta . wu = 0, each then unit.
+            let alpha = Point3::new([wv.0[1], -wv.0[0], 0.0]);
+            let beta = Point3::new([wu.0[1], -wu.0[0], 0.0]);
+            let (alpha, beta) = (alpha * (1.0 / alpha.norm()), beta * (1.0 / beta.norm()));
+            let det = alpha.0[0] * (beta.0[1] * n.0[2] - beta.0[2] * n.0[1])
+                - alpha.0[1] * (beta.0[0] * n.0[2] - beta.0[2] * n.0[0])
+                + alpha.0[2] * (beta.0[0] * n.0[1] - beta.0[1] * n.0[0]);
+            let d = paper_condition_measure(wu, wv);
+            assert!((d - det.abs()).abs() < 1e-15, "{deg}: {d} vs {det}");
+            assert!((d - t.sin().abs()).abs() < 1e-15, "{deg}");
+        }
+        // Blind to stretch, where the extension is not.
+        assert_eq!(paper_condition_measure(ex * 5.0, ey), 1.0);
+        assert!((condition_measure(ex * 5.0, ey) - 0.2).abs() < 1e-16);
+        assert_eq!(paper_condition_measure(ex, ex * 2.0), 0.0);
+        assert_eq!(paper_condition_measure(Point3::ZERO, ey), 0.0);
+        assert!(paper_condition_measure(Point3::new([f64::NAN, 0.0, 0.0]), ey).is_nan());
     }
 
     #[test]

@@ -17,7 +17,9 @@
 //!   direction;
 //! - [`condition_measure`], [`BicubicSurface::condition_measures`]: how well the parameters
 //!   condition the continuation system (2.3), the paper's measure (2.4) extended to tangents
-//!   of any length (`1` exactly for arc lengths along orthogonal directions, Theorem 2.1).
+//!   of any length (`1` exactly for arc lengths along orthogonal directions, Theorem 2.1);
+//!   [`paper_condition_measure`], [`BicubicSurface::paper_condition_measures`]: the paper's
+//!   `|D|` itself (the sine of the angle between the parameter lines).
 //! - [`relay_grid`]: a grid re-laid along the lines of curvature of its own bicubic
 //!   interpolant, spaced by arc length (the paper's best parameters, Theorem 2.1).
 //!
@@ -48,7 +50,7 @@ mod spline_eval;
 
 pub use crate::spline::SplineEnds;
 pub use bicubic::{BicubicEnds, BicubicSurface};
-pub use condition::{condition_measure, ConditionSummary};
+pub use condition::{condition_measure, paper_condition_measure, ConditionSummary};
 pub use parameterization::{
     curve_parameters, grid_parameters, CurveParameterization, GridParameterization,
 };
