@@ -289,6 +289,7 @@ def fit_curve(
     smoothing: Optional[float] = None,
     penalty: Literal["active", "paper"] = "active",
     free_ends: bool = False,
+    closed: bool = False,
 ) -> HermiteSpline:
     """Fits points (n, d) with a C^1 cubic Hermite spline; give knots (count or array) or
     tolerance. The options and defaults are those of karkas curve fit."""

@@ -37,7 +37,16 @@ only the files of those names (e.g. s4022.dat). A face that Open CASCADE refuses
 failure of the closure when karkas said why: the command's one-line warning that "the curve
 crosses itself ... where the points do not" (an interpolant with evenly spaced parameters
 loops where the points lie very unevenly apart: s4022.dat through `curve ll --interpolate`)
-makes it "warned", counted apart; a face failure without that warning fails. The last line
+makes it "warned", counted apart; a face failure without that warning fails. A crossing of
+the branches where the points themselves cross (the polygon through the points, read
+independently of karkas by aerosandbox's `get_file_coordinates`, has upper minus lower
+thickness < -1e-9 of the chord over the same last 20%) is counted apart as "points" (the data
+cross; no curve through them can avoid it; so are that method's face failures), not as a
+failure. tests/corpus/known_crossings.txt
+lists the crossings whose cause is known and stated there (a method's own overshoot, measured
+the same by an independent reference), each with a bound on its depth: a listed file and
+method whose branches cross by no more than the bound (and whose faces fail only with it) is
+"known", counted apart; deeper, or any file or method not listed, fails. The last line
 reads 'closed profiles: N sharp files of M, ...' with the counts of each failure; exit 1 on
 any failure.
 """
@@ -80,6 +89,21 @@ METHODS = {
     "ll": ["curve", "ll", "--interpolate"],
 }
 HERE = Path(__file__).resolve().parent
+KNOWN_LIST = HERE / "known_crossings.txt"
+
+
+def known_crossings():
+    """{(file name, method): depth bound} from known_crossings.txt."""
+    known = {}
+    if KNOWN_LIST.exists():
+        for line in KNOWN_LIST.read_text().splitlines():
+            fields = line.split("#")[0].split()
+            if fields:
+                known[(fields[0], fields[1])] = float(fields[2])
+    return known
+
+
+KNOWN = known_crossings()
 # The line karkas prints when a curve crosses itself where its points do not.
 CROSSES = "the curve crosses itself"
 
@@ -122,6 +146,22 @@ def crossing(p):
         q = q[np.argsort(q[:, 0], kind="stable")]
         return np.interp(xs, q[:, 0], q[:, 1])
     return min(0.0, float((branch(upper) - branch(lower)).min()) / chord)
+
+
+def points_crossing(path):
+    """The crossing depth (as `crossing`) of the polygon through the file's own points, read
+    by aerosandbox (independently of karkas), or None when aerosandbox cannot read them."""
+    try:
+        from aerosandbox.geometry.airfoil.airfoil_families import get_file_coordinates
+        return crossing(np.asarray(get_file_coordinates(str(path)), dtype=float))
+    except Exception:  # noqa: BLE001 - unreadable by the reference reader: not classified
+        return None
+
+
+def points_depth_text(depth):
+    if depth is None:
+        return "not read"
+    return "no crossing" if depth >= -CROSSING else f"crosses by {-depth:.2e} of the chord"
 
 
 def read_edges(path):
@@ -204,7 +244,8 @@ def check_blunt(binary, path, folder):
                 face = BRepBuilderAPI_MakeFace(wire.Wire(), True) if wire.IsDone() else None
                 if face is None or not face.IsDone() or not wire.Wire().Closed() \
                         or not BRepCheck_Analyzer(face.Face()).IsValid():
-                    kind = "warned" if CROSSES in said else "face"
+                    kind = ("warned" if CROSSES in said else "points" if data_cross
+                            else "known" if known and depth < -CROSSING else "face")
                     failures.append(f"{kind}: {name}.{ext}: no valid planar face (blunt)")
                     continue
                 area = face_area(face.Face())
@@ -238,14 +279,24 @@ def check_file(binary, path, folder):
             if gap > CLOSED:
                 failures.append(f"open: {name} ends {gap:.2e} of the size apart")
             depth = crossing(q)
+            bound = KNOWN.get((path.name, name))
+            known = bound is not None and -depth <= bound
+            data_cross = False
             if depth < -CROSSING:
-                failures.append(f"crossing: {name} branches cross by {-depth:.2e} of the chord")
+                data = points_crossing(path)
+                data_cross = data is not None and data < -CROSSING
+                kind = "points" if data_cross else "crossing"
+                if kind == "crossing" and known:
+                    kind = "known"
+                failures.append(f"{kind}: {name} branches cross by {-depth:.2e} of the chord "
+                                f"(the points' polygon: {points_depth_text(data)})")
             for ext in ("step", "iges", "dxf"):
                 cad = out / f"{name}.{ext}"
                 karkas(binary, [*command, str(path), "-o", str(cad)])
                 edges = dxf_edges(cad) if ext == "dxf" else read_edges(cad)
                 if not planar_face_valid(edges):
-                    kind = "warned" if CROSSES in said else "face"
+                    kind = ("warned" if CROSSES in said else "points" if data_cross
+                            else "known" if known and depth < -CROSSING else "face")
                     failures.append(f"{kind}: {name}.{ext}: no valid planar face")
         except Exception as e:  # noqa: BLE001
             failures.append(f"error: {name}: {e}")
@@ -277,7 +328,7 @@ def main():
         chosen = even_sample(sharp, args.limit)
         chosen_blunt = [] if args.sharp_only else even_sample(blunt, args.blunt_limit)
         counts = {"open": 0, "crossing": 0, "face": 0, "wire": 0, "area": 0, "error": 0,
-                  "warned": 0}
+                  "warned": 0, "points": 0, "known": 0}
         checks = [(chosen, check_file), (chosen_blunt, check_blunt)]
         for paths, check in checks:
             # Each file's failures as soon as it is done (in order), for long runs.
@@ -291,9 +342,15 @@ def main():
                     if kind == "warned":
                         print(f"warned {path.name}: {f} (the command warned that the curve "
                               "crosses itself)", flush=True)
+                    elif kind == "known":
+                        print(f"known {path.name}: {f} (within its bound in "
+                              f"{KNOWN_LIST.name})", flush=True)
+                    elif kind == "points":
+                        print(f"points {path.name}: {f} (the points themselves cross)",
+                              flush=True)
                     else:
                         print(f"FAIL {path.name}: {f}", flush=True)
-    total = sum(v for k, v in counts.items() if k != "warned")
+    total = sum(v for k, v in counts.items() if k not in ("warned", "points", "known"))
     print(f"closed profiles: {len(sharp)} sharp files of {len(files)}, {len(chosen)} checked "
           f"with fit, spline and ll --interpolate (x STEP, IGES, DXF); {len(blunt)} blunt "
           f"files (ends within {NEAR:g} of the size), {len(chosen_blunt)} checked with "

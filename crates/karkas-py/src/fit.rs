@@ -151,6 +151,13 @@ fn fit_bytes(points: usize, knots: usize, dim: usize) -> u128 {
 ///     How the penalty p is chosen when ``eps`` is given, as ``karkas curve fit --penalty``:
 ///     "active" (default) lowers p until the bound holds with equality (the constrained
 ///     optimum); "paper" is Pavlov's rule p = H(q*) / eps, times 10 until the bound holds.
+/// closed : bool, optional
+///     Fit a closed contour with one periodic spline, C^1 across the seam (as ``karkas curve
+///     fit --closed``): the seam at the first point (t = 0), closed chord-length start,
+///     ``knots`` those of one period (a corner at 0 makes the seam a corner), ``tolerance``
+///     inserting knots in every piece, the seam's included; a last point repeating the first
+///     is dropped. The result's value and derivative at 1 equal those at 0. Not with
+///     ``pin_ends`` or ``free_ends``; with ``eps`` the penalty follows the paper's rule.
 ///
 /// Returns
 /// -------
@@ -165,7 +172,8 @@ fn fit_bytes(points: usize, knots: usize, dim: usize) -> u128 {
 /// KnotsError
 ///     Knots not strictly increasing from 0 to 1, or fewer than 2.
 /// OptionError
-///     Both or neither of ``knots`` and ``tolerance``, or an option out of range.
+///     Both or neither of ``knots`` and ``tolerance``, an option out of range, or
+///     ``closed`` with ``pin_ends`` or ``free_ends``.
 ///
 /// Examples
 /// --------
@@ -178,10 +186,19 @@ fn fit_bytes(points: usize, knots: usize, dim: usize) -> u128 {
 /// >>> g = karkas.fit_curve(np.column_stack([s, np.sin(6 * s)]), tolerance=1e-3)
 /// >>> g.tolerance_met
 /// True
+///
+/// A closed ellipse, periodic and C^1 across the seam:
+///
+/// >>> u = np.linspace(0.0, 2.0 * np.pi, 40, endpoint=False)
+/// >>> e = karkas.fit_curve(np.column_stack([3 * np.cos(u), np.sin(u)]), knots=13, closed=True)
+/// >>> bool(np.allclose(e(0.0), e(1.0))), bool(np.allclose(e(0.0, nu=1), e(1.0, nu=1)))
+/// (True, True)
+/// >>> bool(e.max_distance < 1e-3)
+/// True
 #[pyfunction]
-#[pyo3(signature = (points, knots = None, tolerance = None, eps = None, pin_ends = false, corners = None, fairness = DEFAULT_FAIRNESS, smoothing = None, penalty = "active", free_ends = false))]
+#[pyo3(signature = (points, knots = None, tolerance = None, eps = None, pin_ends = false, corners = None, fairness = DEFAULT_FAIRNESS, smoothing = None, penalty = "active", free_ends = false, closed = false))]
 #[pyo3(
-    text_signature = "(points, knots=None, tolerance=None, eps=None, pin_ends=False, corners=None, fairness=3e-11, smoothing=None, penalty='active', free_ends=False)"
+    text_signature = "(points, knots=None, tolerance=None, eps=None, pin_ends=False, corners=None, fairness=3e-11, smoothing=None, penalty='active', free_ends=False, closed=False)"
 )]
 #[allow(clippy::too_many_arguments)]
 pub fn fit_curve(
@@ -196,6 +213,7 @@ pub fn fit_curve(
     smoothing: Option<f64>,
     penalty: &str,
     free_ends: bool,
+    closed: bool,
 ) -> PyResult<Py<PyHermiteSpline>> {
     let penalty = match penalty {
         "active" => fit::PenaltyRule::ActiveBound,
@@ -237,6 +255,11 @@ pub fn fit_curve(
     if pin_ends && free_ends {
         return Err(OptionError::new_err("give pin_ends or free_ends, not both"));
     }
+    if closed && (pin_ends || free_ends) {
+        return Err(OptionError::new_err(
+            "closed: a closed fit has no ends to pin or free (give closed or pin_ends/free_ends)",
+        ));
+    }
     let mut options = FitOptions {
         ends: if pin_ends {
             FitEnds::Pinned
@@ -270,6 +293,13 @@ pub fn fit_curve(
         let (result, met) = py
             .detach(|| -> karkas::Result<(fit::CurveFit<D>, Option<bool>)> {
                 match &target {
+                    Target::Knots(knots) if closed => {
+                        Ok((fit::fit_closed_curve(p, knots, &options)?, None))
+                    }
+                    Target::Tolerance(tol) if closed => {
+                        let a = fit::fit_closed_curve_adaptive(p, *tol, &options)?;
+                        Ok((a.fit, Some(a.tolerance_met)))
+                    }
                     Target::Knots(knots) => Ok((fit::fit_curve(p, knots, &options)?, None)),
                     Target::Tolerance(tol) => {
                         let a = fit::fit_curve_adaptive(p, *tol, &options)?;

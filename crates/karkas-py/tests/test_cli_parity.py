@@ -184,6 +184,36 @@ def test_curve_fit(tmp_path, wavy_file, options, kwargs):
     close(dev[:, 2], f.distances)
 
 
+@pytest.mark.parametrize("options, kwargs", [(["--knots", 13], dict(knots=13)), (["--tolerance", 1e-4], dict(tolerance=1e-4))])
+@pytest.mark.parametrize("scale, offset", [(1.0, (0.0, 0.0)), (40.0, (-300.0, 125.0))])
+def test_closed_curve_fit(tmp_path, options, kwargs, scale, offset):
+    """fit_curve(..., closed=True) is the command's `curve fit --closed`: a periodic fit of
+    an ellipse, closed and C^1 at the seam (to round-off), equal to the CLI's samples and
+    deviations to 1e-12, and close to the ellipse."""
+    u = np.linspace(0.0, 2.0 * np.pi, 48, endpoint=False)
+    pts = scale * np.column_stack([3.0 * np.cos(u), np.sin(u + 0.2 * np.sin(u))]) + offset
+    path = write_curve(tmp_path / "ellipse.csv", pts)
+    out, report = tmp_path / "out.csv", tmp_path / "dev.csv"
+    cli("curve", "fit", path, "--closed", "-o", out, "--samples", 97, "--report", report, *options)
+    header, rows = read_csv(out)
+    assert header == ["t", "x", "y"]
+    f = karkas.fit_curve(pts, closed=True, **kwargs)
+    close(rows[:, 1:], f(rows[:, 0]))
+    dev_header, dev = read_csv(report)
+    close(dev[:, 1], f.parameters)
+    close(dev[:, 2], f.distances)
+    size = 6.0 * scale
+    np.testing.assert_allclose(f(0.0), f(1.0), rtol=0, atol=1e-12 * size)
+    np.testing.assert_allclose(f(0.0, nu=1), f(1.0, nu=1), rtol=0, atol=1e-9 * size)
+    assert f.max_distance < 1e-2 * size
+    assert np.linalg.norm(f(0.0, nu=1)) > 1.0 * scale  # a real tangent, not a stalled seam
+    # The open fit of the same points does not close: the option is what closes the curve.
+    g = karkas.fit_curve(pts, **kwargs)
+    assert np.linalg.norm(g(0.0) - g(1.0)) > 1e-3 * size
+    with pytest.raises(karkas.OptionError, match="closed"):
+        karkas.fit_curve(pts, closed=True, pin_ends=True, **kwargs)
+
+
 @pytest.mark.parametrize("poles", [False, True])
 def test_curve_dps(tmp_path, wavy_file, poles):
     out = tmp_path / "out.csv"

@@ -249,7 +249,7 @@ VALID = {
     "fit_curve": lambda o: (
         karkas.fit_curve,
         (o.pts3,),
-        {"knots": 5, "tolerance": None, "eps": None, "pin_ends": False, "corners": None, "fairness": 3e-11, "smoothing": 0.3, "free_ends": False},
+        {"knots": 5, "tolerance": None, "eps": None, "pin_ends": False, "corners": None, "fairness": 3e-11, "smoothing": 0.3, "free_ends": False, "closed": False},
     ),
     "curve_parameters": lambda o: (karkas.curve_parameters, (o.pts3,), {"parameterization": "chord"}),
     # Surfaces.
@@ -568,6 +568,10 @@ def nested_calls(o):
         ),
         "fit corners huge": lambda: karkas.fit_curve(o.pts3, knots=5, corners=huge),
         "fit knots huge": lambda: karkas.fit_curve(o.pts3, knots=huge),
+        "fit closed knots huge": lambda: karkas.fit_curve(o.pts3, knots=huge, closed=True),
+        "fit closed tolerance tiny": lambda: karkas.fit_curve(o.pts3, tolerance=1e-300, closed=True),
+        "fit closed two points": lambda: karkas.fit_curve(o.pts3[:2], knots=5, closed=True),
+        "fit closed pinned": lambda: karkas.fit_curve(o.pts3, knots=5, closed=True, pin_ends=True),
         "vary fixed wrong shape": lambda: karkas.vary(
             np.ones((3, 4)), [4.0] * 3, [3.0] * 4, fixed=np.ones((2, 2), bool)
         ),

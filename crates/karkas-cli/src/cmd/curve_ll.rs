@@ -48,6 +48,9 @@ pub struct CurveLlArgs {
     #[command(flatten)]
     samples: CurveSamples,
     /// Input points: CSV or whitespace columns x,y[,z], or an airfoil .dat (Selig or Lednicer).
+    /// A first and last point within 1e-6 of the diagonal of the points' bounding box are one
+    /// point (a sharp trailing edge; the rule of curve fit): the curve's ends meet there, at
+    /// their midpoint (not with --closed).
     input: PathBuf,
     #[command(flatten)]
     read: CurveInputOptions,
@@ -92,6 +95,15 @@ impl CurveJob for CurveCommand<'_, CurveLlArgs> {
         if args.closed {
             crate::output::console::warn_near_miss("--closed", points);
         }
+        // Ends that coincide by the shared-end rule meet exactly (the library's rule; the
+        // written input points say the same).
+        let shared;
+        let points = if args.closed {
+            points
+        } else {
+            shared = karkas::core::with_shared_end(points);
+            &shared
+        };
         let curve = match args.within {
             Some(distance) => {
                 build_ll_within(points, args.order, args.closed, distance, &args.input)?

@@ -30,6 +30,9 @@ pub struct CurveSplineArgs {
     #[command(flatten)]
     samples: CurveSamples,
     /// Input points: CSV or whitespace columns x,y[,z], or an airfoil .dat (Selig or Lednicer).
+    /// A first and last point within 1e-6 of the diagonal of the points' bounding box are one
+    /// point (a sharp trailing edge; the rule of curve fit): the curve's ends meet there, at
+    /// their midpoint (not with --ends periodic).
     input: PathBuf,
     #[command(flatten)]
     read: CurveInputOptions,
@@ -70,6 +73,15 @@ impl CurveJob for CurveCommand<'_, CurveSplineArgs> {
         let Self { args, formats } = *self;
         curve_points(&args.input, points)?;
         args.close.check_points(points, &args.input)?;
+        // Ends that coincide by the shared-end rule meet exactly (the library's rule; the
+        // written input points say the same).
+        let shared;
+        let points = if args.spline.ends::<D>()?.is_periodic() {
+            points
+        } else {
+            shared = karkas::core::with_shared_end(points);
+            &shared
+        };
         let curve = args.spline.build(points, &args.input)?;
         let remedy = "look at the points there (out of order, or very unevenly apart: curve fit \
                       follows such points)";

@@ -78,6 +78,69 @@ fn every_curve_method_closes_a_sharp_trailing_edge_at_its_point() {
     assert_ne!(first, last);
 }
 
+/// `sharp_foil(n)` with its first and last points pushed apart across the edge (in y) to
+/// `share` of the diagonal of the points' bounding box (the shared-end rule's measure).
+fn foil_with_gap(n: usize, share: f64) -> String {
+    let text = sharp_foil(n);
+    let mut rows: Vec<[f64; 2]> = text
+        .lines()
+        .skip(1)
+        .map(|l| {
+            let mut v = l.split(',').map(|c| c.parse::<f64>().unwrap());
+            [v.next().unwrap(), v.next().unwrap()]
+        })
+        .collect();
+    let (lo, hi) = rows
+        .iter()
+        .fold(([f64::MAX; 2], [f64::MIN; 2]), |(lo, hi), p| {
+            (
+                [lo[0].min(p[0]), lo[1].min(p[1])],
+                [hi[0].max(p[0]), hi[1].max(p[1])],
+            )
+        });
+    let diagonal = (hi[0] - lo[0]).hypot(hi[1] - lo[1]);
+    let last = rows.len() - 1;
+    rows[0][1] = 0.5 * share * diagonal;
+    rows[last][1] = -0.5 * share * diagonal;
+    let mut out = String::from("x,y\n");
+    for p in rows {
+        out.push_str(&format!("{:e},{:e}\n", p[0], p[1]));
+    }
+    out
+}
+
+#[test]
+fn every_curve_method_closes_ends_within_the_shared_end_rule_and_none_beyond_it() {
+    // sg6041.dat's ends are 9.95e-7 of its size apart: the fit closed them, the spline and
+    // the LL curve did not. 0.99e-6 closes in every method, 1.01e-6 in none.
+    let dir = temp_dir();
+    let out = dir.path().join("c.csv");
+    for (share, closes) in [(0.99e-6, true), (1.01e-6, false)] {
+        let input = write(dir.path(), "gap.csv", &foil_with_gap(40, share));
+        for method in [
+            vec!["curve", "fit", "--tolerance", "1e-4"],
+            vec!["curve", "fit", "--knots", "12"],
+            vec!["curve", "spline"],
+            vec!["curve", "spline", "--ends", "natural"],
+            vec!["curve", "ll", "--interpolate"],
+            vec!["curve", "ll"],
+            vec!["curve", "ll", "--within", "1e-4"],
+        ] {
+            let mut args = method.clone();
+            args.extend([s(&input), "-o", s(&out)]);
+            let o = karkas(&args);
+            assert!(o.status.success(), "{method:?}: {}", stderr(&o));
+            let (first, last) = ends(&out);
+            let gap = (first[0] - last[0]).hypot(first[1] - last[1]);
+            if closes {
+                assert!(gap <= 1e-15, "{share:e} {method:?}: ends {gap:e} apart");
+            } else {
+                assert!(gap > 1e-7, "{share:e} {method:?}: ends {gap:e} apart");
+            }
+        }
+    }
+}
+
 #[test]
 fn a_closing_option_warns_of_ends_that_nearly_meet() {
     let dir = temp_dir();

@@ -11,6 +11,7 @@ pub(crate) mod parallel;
 mod pieces;
 mod point;
 mod sampling;
+mod shared_end;
 mod surface;
 
 pub use curve::{Curve, PiecewiseCurve, Side};
@@ -21,4 +22,5 @@ pub use pieces::PolynomialPieces;
 pub use point::{Point, Point2, Point3};
 pub use sampling::uniform_into;
 pub(crate) use sampling::{assert_buffer_len, assert_grid_len};
+pub use shared_end::{shared_end, with_shared_end, SHARED_END_TOLERANCE};
 pub use surface::{ParameterLine, PiecewiseSurface, Surface};

@@ -44,6 +44,8 @@ use super::solver::{Penalty, Solver, Stop};
 use super::unit_scale::UnitScale;
 use crate::{Curve, Error, Point, Result};
 
+pub use crate::core::{shared_end, SHARED_END_TOLERANCE};
+
 /// Iterations spent on the feasible reference `q*` of the paper's bound.
 const REFERENCE_ITERATIONS: usize = 5;
 /// The free phase of the unconstrained fit, when the ordered phase follows it, stops once a
@@ -189,36 +191,6 @@ pub enum FitEnds {
     Pinned,
     /// Where the foot points put them, whether the end points coincide or not.
     Free,
-}
-
-/// The first and last points of a curve coincide (its ends are one point: a closed profile)
-/// when they lie within this fraction of the diagonal of the points' bounding box.
-pub const SHARED_END_TOLERANCE: f64 = 1e-6;
-
-/// The common point of the first and last points when they coincide (within
-/// [`SHARED_END_TOLERANCE`] of the points' size; their midpoint), else `None`.
-pub fn shared_end<const D: usize>(points: &[Point<D>]) -> Option<Point<D>> {
-    let (first, last) = (*points.first()?, *points.last()?);
-    if points.len() < 3 {
-        return None;
-    }
-    let gap = first.distance(last);
-    (gap <= SHARED_END_TOLERANCE * points_size(points)).then(|| first.lerp(last, 0.5))
-}
-
-/// The diagonal of the bounding box of `points`.
-fn points_size<const D: usize>(points: &[Point<D>]) -> f64 {
-    let (mut low, mut high) = ([f64::INFINITY; D], [f64::NEG_INFINITY; D]);
-    for p in points {
-        for c in 0..D {
-            low[c] = low[c].min(p[c]);
-            high[c] = high[c].max(p[c]);
-        }
-    }
-    (0..D)
-        .map(|c| (high[c] - low[c]).powi(2))
-        .sum::<f64>()
-        .sqrt()
 }
 
 impl Default for FitOptions {

@@ -20,7 +20,7 @@ use super::prefilter::interpolation_controls;
 use crate::core::lanes::{f64x4, load4, CmpGt, CmpLt, LANES};
 use crate::core::parallel::for_each_chunk;
 use crate::core::PolynomialPieces;
-use crate::core::{Curve, Interval, PiecewiseCurve, Side};
+use crate::core::{with_shared_end, Curve, Interval, PiecewiseCurve, Side};
 use crate::{Error, Point, Result};
 
 /// One segment in power form: `P(xi) = a + xi b + h(xi) c`.
@@ -50,7 +50,10 @@ impl<const D: usize> LlCurve<D> {
     ///
     /// With `closed`, the polygon is closed: if the last point repeats the first it is the
     /// paper's `r_K = r_1`; otherwise the last point is joined to the first (K counts the
-    /// repeated point either way).
+    /// repeated point either way). An open polygon whose first and last points coincide by
+    /// the shared-end rule ([`crate::core::shared_end`]: within `1e-6` of the points' size,
+    /// a sharp trailing edge) has both replaced by their midpoint, so the curve's ends meet
+    /// there exactly.
     ///
     /// Errors: fewer than 3 points (3 distinct ones when closed), a non-finite coordinate,
     /// `order` outside `1..=64`.
@@ -96,7 +99,11 @@ impl<const D: usize> LlCurve<D> {
     /// Validates and, when `closed`, closes the input polygon.
     pub(super) fn support_polygon(points: &[Point<D>], closed: bool) -> Result<Vec<Point<D>>> {
         validate(points, "an LL curve")?;
-        let mut control = points.to_vec();
+        let mut control = if closed {
+            points.to_vec()
+        } else {
+            with_shared_end(points).into_owned()
+        };
         if closed {
             let scale = model_scale(points);
             let repeats = coincide(points[0], points[points.len() - 1], scale);

@@ -13,7 +13,7 @@ use super::spline_eval::{piece_near, piece_of, Pieces, UniformGuess};
 use crate::core::knots::{check_knots, check_min_gap, Knots};
 use crate::core::lanes::{f64x4, load4, CmpGe, CmpLt, LANES};
 use crate::core::parallel::for_each_chunk;
-use crate::core::{Curve, Interval, PiecewiseCurve, Side};
+use crate::core::{with_shared_end, Curve, Interval, PiecewiseCurve, Side};
 use crate::spline::{hermite_basis, not_a_knot_slopes, periodic_slopes, SlopeSystem, SplineEnds};
 use crate::{Error, Point, Result};
 
@@ -147,7 +147,9 @@ impl<const D: usize> CubicSpline<D> {
     /// The cubic spline through `points` with parameters by the rule `parameterization`
     /// (starting at 0). With periodic ends the curve is closed: if the last point repeats the
     /// first (relative tolerance `1e-12`) it is the seam, otherwise the first point is
-    /// appended.
+    /// appended. With other ends, a first and last point that coincide by the shared-end rule
+    /// ([`crate::core::shared_end`]: within `1e-6` of the points' size, a sharp trailing edge)
+    /// are both replaced by their midpoint, so the curve closes there exactly with a corner.
     ///
     /// Errors: those of [`curve_parameters`] and [`new`](Self::new).
     ///
@@ -176,12 +178,15 @@ impl<const D: usize> CubicSpline<D> {
     ) -> Result<Self> {
         // Room for the seam point: no second copy of the points when it is appended.
         let mut pts = Vec::with_capacity(points.len() + 1);
-        pts.extend_from_slice(points);
-        if matches!(ends, SplineEnds::Periodic) && !pts.is_empty() {
-            let last = pts[pts.len() - 1];
-            if last != pts[0] && (last - pts[0]).max_abs() > 1e-12 * max_abs(&pts) {
-                pts.push(pts[0]);
+        if matches!(ends, SplineEnds::Periodic) {
+            pts.extend_from_slice(points);
+            if let (Some(&first), Some(&last)) = (pts.first(), pts.last()) {
+                if last != first && (last - first).max_abs() > 1e-12 * max_abs(&pts) {
+                    pts.push(first);
+                }
             }
+        } else {
+            pts.extend_from_slice(&with_shared_end(points));
         }
         // curve_parameters fails on any point that is not finite.
         let knots = curve_parameters(&pts, parameterization)?;

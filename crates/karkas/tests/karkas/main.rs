@@ -51,4 +51,5 @@ mod robust_properties;
 mod section_poles;
 mod section_tolerance;
 mod sections;
+mod shared_end;
 mod variation;
