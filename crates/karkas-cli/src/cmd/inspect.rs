@@ -184,33 +184,61 @@ fn summary(points: &[Point3], found: &[ShapeNearest], worst: usize) -> String {
     text
 }
 
-/// Writes the CSV report ([`REPORT_HEADER`]).
+/// Rows of the report formatted at once (in parallel, then written in order).
+const ROWS_PER_CHUNK: usize = 8192;
+
+/// Writes the CSV report ([`REPORT_HEADER`]). Rows are formatted in parallel chunks and
+/// written in input order.
 fn write_report(
     out: &mut dyn std::io::Write,
     points: &[Point3],
     found: &[ShapeNearest],
 ) -> std::io::Result<()> {
+    use rayon::prelude::*;
     let mut out = std::io::BufWriter::new(out);
     writeln!(out, "{REPORT_HEADER}")?;
-    for (k, (q, f)) in points.iter().zip(found).enumerate() {
-        let signed = f.signed.map_or_else(String::new, |s| format!("{s:?}"));
-        writeln!(
-            out,
-            "{k},{:?},{:?},{:?},{:?},{signed},{},{:?},{:?},{:?},{:?},{:?},{}",
-            q[0],
-            q[1],
-            q[2],
-            f.distance,
-            f.face,
-            f.u,
-            f.v,
-            f.point[0],
-            f.point[1],
-            f.point[2],
-            u8::from(f.on_edge)
-        )?;
+    let rows = points.len().min(found.len());
+    let chunks = rows.div_ceil(ROWS_PER_CHUNK);
+    // Two chunks per thread at a time bound the memory the formatted rows take.
+    let batch = 2 * rayon::current_num_threads().max(1);
+    for first in (0..chunks).step_by(batch) {
+        let texts: Vec<String> = (first..(first + batch).min(chunks))
+            .into_par_iter()
+            .map(|c| {
+                let start = c * ROWS_PER_CHUNK;
+                let end = (start + ROWS_PER_CHUNK).min(rows);
+                let mut text = String::with_capacity(200 * (end - start));
+                for k in start..end {
+                    report_row(&mut text, k, points[k], &found[k]);
+                }
+                text
+            })
+            .collect();
+        for text in texts {
+            out.write_all(text.as_bytes())?;
+        }
     }
     out.flush()
+}
+
+/// Appends row `k` of the report.
+fn report_row(text: &mut String, k: usize, q: Point3, f: &ShapeNearest) {
+    let signed = f.signed.map_or_else(String::new, |s| format!("{s:?}"));
+    let _ = writeln!(
+        text,
+        "{k},{:?},{:?},{:?},{:?},{signed},{},{:?},{:?},{:?},{:?},{:?},{}",
+        q[0],
+        q[1],
+        q[2],
+        f.distance,
+        f.face,
+        f.u,
+        f.v,
+        f.point[0],
+        f.point[1],
+        f.point[2],
+        u8::from(f.on_edge)
+    );
 }
 
 #[cfg(test)]

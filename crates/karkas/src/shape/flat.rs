@@ -28,6 +28,12 @@ pub(super) struct Flat {
     v: (f64, f64),
     /// The inverse of the first fundamental form `[a.a a.b; a.b b.b]` (symmetric).
     inverse: [f64; 3],
+    /// True when `a` and `b` are orthogonal (to `1e-15`): the distance then separates into a
+    /// quadratic of `u` and one of `v`, and its minimum over the rectangle is the projection
+    /// with each parameter clamped to its interval.
+    orthogonal: bool,
+    /// The unit normal `a x b / |a x b|`.
+    normal: Point3,
 }
 
 impl Flat {
@@ -71,6 +77,11 @@ impl Flat {
         if det.is_nan() || det <= 1e-12 * aa * bb {
             return None;
         }
+        let normal = a.cross(b);
+        let length = normal.norm();
+        if length.is_nan() || length <= 0.0 {
+            return None;
+        }
         Some(Flat {
             origin: p00,
             a,
@@ -78,6 +89,8 @@ impl Flat {
             u,
             v,
             inverse: [bb / det, -ab / det, aa / det],
+            orthogonal: ab.abs() <= 1e-15 * (aa * bb).sqrt(),
+            normal: normal * (1.0 / length),
         })
     }
 
@@ -90,6 +103,30 @@ impl Flat {
         let u = self.u.0 + (i00 * ra + i01 * rb);
         let v = self.v.0 + (i01 * ra + i11 * rb);
         ((self.u.0..=self.u.1).contains(&u) && (self.v.0..=self.v.1).contains(&v)).then_some((u, v))
+    }
+
+    /// The parameters of the patch's point nearest `q`: the projection when it lies in the
+    /// rectangle, else (on an orthogonal patch) the projection clamped to the rectangle;
+    /// `None` for a point beyond the rectangle of a skew patch.
+    pub(super) fn nearest(&self, q: Point3) -> Option<(f64, f64)> {
+        let r = q - self.origin;
+        let (ra, rb) = (r.dot(self.a), r.dot(self.b));
+        let [i00, i01, i11] = self.inverse;
+        let u = self.u.0 + (i00 * ra + i01 * rb);
+        let v = self.v.0 + (i01 * ra + i11 * rb);
+        let inside = (self.u.0..=self.u.1).contains(&u) && (self.v.0..=self.v.1).contains(&v);
+        (inside || self.orthogonal)
+            .then(|| (u.clamp(self.u.0, self.u.1), v.clamp(self.v.0, self.v.1)))
+    }
+
+    /// The patch's point at `(u, v)`.
+    pub(super) fn point(&self, u: f64, v: f64) -> Point3 {
+        self.origin + self.a * (u - self.u.0) + self.b * (v - self.v.0)
+    }
+
+    /// The unit normal `S_u x S_v / |S_u x S_v|`.
+    pub(super) fn normal(&self) -> Point3 {
+        self.normal
     }
 }
 
@@ -117,8 +154,17 @@ mod tests {
             assert!((fu - u).abs() < 1e-12 && (fv - v).abs() < 1e-12, "{k}");
             assert!((s.eval(fu, fv).distance(q) - h.abs()).abs() < 1e-12, "{k}");
         }
-        // Beyond the rectangle: no foot.
-        assert!(flat.foot(s.eval(-3.0, 1.0) - frame.x * 0.1).is_none());
+        // Beyond the rectangle: no foot; the nearest point is on its side.
+        let beyond = s.eval(-3.0, 1.7) - frame.x * 0.1 + n * 0.3;
+        assert!(flat.foot(beyond).is_none());
+        let (nu, nv) = flat.nearest(beyond).unwrap();
+        assert!((nu + 3.0).abs() < 1e-12 && (nv - 1.7).abs() < 1e-12);
+        assert!(flat.point(nu, nv).distance(s.eval(-3.0, 1.7)) < 1e-12);
+        let corner = s.eval(5.0, 2.5) + frame.x * 0.2 + frame.y * 0.4 - n * 3.0;
+        assert_eq!(flat.nearest(corner), Some((5.0, 2.5)));
+        let su_sv = s.second_order(0.5, 1.5);
+        let normal = su_sv[1].cross(su_sv[2]);
+        assert!((flat.normal() - normal * (1.0 / normal.norm())).norm() < 1e-15);
         // A cylinder is not flat.
         let round = cylinder(&frame, 1.0, (0.0, 1.0), (0.0, 1.0)).unwrap();
         assert!(Flat::of(&round).is_none());

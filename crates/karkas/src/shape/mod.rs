@@ -10,8 +10,10 @@
 //! across periodic directions on the face's side. [`ShapeProjector`] (`nearest.rs`) finds the
 //! nearest point of the faces to any point, signed where a face bounds a solid.
 
+mod bounds;
 mod cylinder;
 mod domain;
+mod edge_form;
 mod face;
 mod flat;
 mod inside;

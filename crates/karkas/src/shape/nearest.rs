@@ -7,34 +7,42 @@
 //! corners and edge midpoints, or half the sum of its edges' two-chord lengths, times 1.25: the
 //! bound of [`SurfaceProjector`](crate::geometry::SurfaceProjector)). Cells outside a trimmed
 //! face are dropped, and the edges of trimmed faces are cut into segments kept the same way.
-//! All centres go into one k-d tree (the `kiddo` crate). For a query `q`:
+//! All centres go into one k-d tree (the `kiddo` crate), and each face's cells, and each of its
+//! edges' segments, into a box (`bounds.rs`); the faces' boxes into a tree of boxes. For a
+//! query `q`:
 //!
 //! 1. the nearest point known to lie on the shape (a centre inside its face, or on an edge)
 //!    bounds the distance from above;
-//! 2. every cell or segment whose centre is within that bound plus the largest radius is a
-//!    candidate, its distance bounded from below by `|q - centre| - radius`;
-//! 3. candidates are searched nearest bound first, until the bound exceeds the best distance:
-//!    a cell by Newton's method on the distance from its centre (projected at the surface's
-//!    borders, as in [`SurfaceProjector`](crate::geometry::SurfaceProjector)), accepted when
-//!    the foot lies in the face ([`FaceDomain::contains`]); a segment by Newton's method on
-//!    the edge curve within the edge. A cell of the face found best whose parameters hold the
-//!    best foot is skipped (Newton would find the same point). A face on a plane (`flat.rs`,
-//!    in closed form) or a whole cylinder (`cylinder.rs`) is solved once, at its first
-//!    candidate cell or segment: its other cells would give the same foot, and when that
-//!    foot lies in the face it is nearer than the face's edges, whose segments are then
-//!    skipped too.
+//! 2. the faces whose box is nearer than that bound are visited nearest box first, until the
+//!    box's distance reaches the best distance found;
+//! 3. a face on a plane (`flat.rs`) or a whole cylinder (`cylinder.rs`) has one local minimum
+//!    of the distance: it is solved once, in closed form. When that foot lies in the face it
+//!    is the face's nearest point (nearer than its edges); when not, the face's nearest point
+//!    is on its edges, searched by their boxes: a straight edge or a whole circle in closed
+//!    form (`edge_form.rs`), any other edge by Newton's method on the edge curve from each of
+//!    its segments whose lower bound `|q - centre| - radius` is below the best distance;
+//! 4. the cells of the other faces within the bound plus the largest radius are taken from the
+//!    k-d tree and searched nearest lower bound first, until the bound exceeds the best
+//!    distance: a cell by Newton's method on the distance from its centre (projected at the
+//!    surface's borders, as in [`SurfaceProjector`](crate::geometry::SurfaceProjector)),
+//!    accepted when the foot lies in the face ([`FaceDomain::contains`]); a segment by Newton's
+//!    method on the edge curve within the edge. A cell of the face found best whose parameters
+//!    hold the best foot is skipped (Newton would find the same point).
 //!
 //! The distance is signed for faces that bound a solid: positive on the side the face's
 //! normal points to (outside), from the normal at the foot (at an edge, the normal of the
 //! face the edge bounds there; near a sharp concave edge the side may then be the other
-//! face's). Cost: building `O(c log c)` for `c` cells; a query a tree search and a few Newton
-//! solves; batches run in parallel.
+//! face's; on a plane or a cylinder the normal is taken in closed form). Cost: building
+//! `O(c log c)` for `c` cells; a query a tree search, the closed forms of the one or two
+//! nearest faces and a few Newton solves on other faces; batches run in parallel.
 
 use kiddo::immutable::float::kdtree::ImmutableKdTree;
 use kiddo::SquaredEuclidean;
 use rayon::prelude::*;
 
-use super::cylinder::is_whole_cylinder;
+use super::bounds::{Bounds, BoxTree};
+use super::cylinder::Round;
+use super::edge_form::EdgeForm;
 use super::flat::Flat;
 use super::inside::InsideIndex;
 use super::{FaceDomain, Shape};
@@ -54,6 +62,9 @@ const RADIUS_MARGIN: f64 = 1.25;
 const PARALLEL_BATCH: usize = 256;
 /// Newton steps on an edge curve.
 const CURVE_STEPS: usize = 40;
+/// The most surface cells of a face scanned for the start of Newton's method on a face solved
+/// once a query (a larger face is scanned at a stride).
+const START_SCAN: usize = 256;
 
 /// The point of a shape nearest to a query point.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -123,6 +134,74 @@ impl Cell {
     }
 }
 
+/// Where a face's cells lie in [`ShapeProjector::cells`] and the boxes that bound them.
+#[derive(Clone, Debug)]
+struct FaceParts {
+    /// A box holding the face (all its cells).
+    bounds: Bounds,
+    /// Its surface cells.
+    surface: std::ops::Range<usize>,
+    /// Its edges: a box holding each edge's segments, where they lie, and the edge's closed
+    /// form.
+    edges: Vec<(Bounds, std::ops::Range<usize>, EdgeForm)>,
+}
+
+impl FaceParts {
+    /// The parts of the cells `cells[range]` (one face's: surface cells, then edge segments
+    /// edge by edge).
+    fn of(face: &super::Face, cells: &[Cell], range: std::ops::Range<usize>) -> FaceParts {
+        let mut bounds = Bounds::EMPTY;
+        let mut surface_end = range.start;
+        let mut edges: Vec<(Bounds, std::ops::Range<usize>, EdgeForm)> = Vec::new();
+        let mut last: Option<(usize, usize)> = None;
+        for i in range.clone() {
+            let cell = &cells[i];
+            bounds.hold(cell.centre, cell.radius);
+            match cell.place {
+                Place::Surface { .. } => surface_end = i + 1,
+                Place::Edge {
+                    edge_loop, edge, ..
+                } => {
+                    if last != Some((edge_loop, edge)) {
+                        let form = EdgeForm::of(&face.loops[edge_loop].edges[edge].curve);
+                        edges.push((Bounds::EMPTY, i..i, form));
+                        last = Some((edge_loop, edge));
+                    }
+                    if let Some((b, r, _)) = edges.last_mut() {
+                        b.hold(cell.centre, cell.radius);
+                        r.end = i + 1;
+                    }
+                }
+            }
+        }
+        FaceParts {
+            bounds,
+            surface: range.start..surface_end,
+            edges,
+        }
+    }
+}
+
+/// A face's surface in closed form.
+#[derive(Clone, Debug)]
+enum Form {
+    /// A parallelogram of a plane (`flat.rs`).
+    Flat(Flat),
+    /// A whole turn of a circular cylinder (`cylinder.rs`).
+    Round(Round),
+    /// Any other surface.
+    Other,
+}
+
+/// Working lists of one query, kept between queries of a batch.
+#[derive(Default)]
+struct Scratch {
+    /// Faces by lower bound.
+    faces: Vec<(f64, usize)>,
+    /// Cells by lower bound.
+    cells: Vec<(f64, usize)>,
+}
+
 /// A shape prepared for nearest-point queries.
 ///
 /// ```
@@ -146,12 +225,16 @@ pub struct ShapeProjector<'a> {
     domains: Vec<FaceDomain>,
     /// The faces' inside tests.
     insides: Vec<InsideIndex>,
-    /// The affine form of each face on a plane.
-    flats: Vec<Option<Flat>>,
+    /// The closed form of each face on a plane or a whole cylinder.
+    forms: Vec<Form>,
     /// Faces whose surface has one local minimum of the distance (planes, whole cylinders):
     /// searched once per query.
     once: Vec<bool>,
     cells: Vec<Cell>,
+    /// Per face: where its cells lie in `cells` and the boxes that bound it and its edges.
+    parts: Vec<FaceParts>,
+    /// The faces' boxes.
+    face_tree: BoxTree,
     tree: ImmutableKdTree<f64, u64, 3, 32>,
     /// Points on the shape (cell centres inside their faces, segment centres): the cell each
     /// is the centre of.
@@ -193,13 +276,16 @@ impl<'a> ShapeProjector<'a> {
             .map(FaceDomain::of)
             .collect::<Result<_>>()?;
         let insides: Vec<InsideIndex> = domains.par_iter().map(InsideIndex::new).collect();
-        let flats: Vec<Option<Flat>> = shape.faces.iter().map(|f| Flat::of(&f.surface)).collect();
-        let once = shape
+        let forms: Vec<Form> = shape
             .faces
             .iter()
-            .zip(&flats)
-            .map(|(f, flat)| flat.is_some() || is_whole_cylinder(&f.surface))
+            .map(|f| match (Flat::of(&f.surface), Round::of(&f.surface)) {
+                (Some(flat), _) => Form::Flat(flat),
+                (None, Some(round)) => Form::Round(round),
+                (None, None) => Form::Other,
+            })
             .collect();
+        let once = forms.iter().map(|f| !matches!(f, Form::Other)).collect();
         let per_face: Vec<(Vec<Cell>, Vec<usize>)> = shape
             .faces
             .par_iter()
@@ -209,11 +295,14 @@ impl<'a> ShapeProjector<'a> {
             .collect::<Result<_>>()?;
         let mut cells = Vec::new();
         let mut anchors = Vec::new();
-        for (face_cells, inside) in per_face {
+        let mut parts = Vec::with_capacity(per_face.len());
+        for (face, (face_cells, inside)) in shape.faces.iter().zip(per_face) {
             let base = cells.len();
             anchors.extend(inside.into_iter().map(|i| base + i));
             cells.extend(face_cells);
+            parts.push(FaceParts::of(face, &cells, base..cells.len()));
         }
+        let face_tree = BoxTree::new(parts.iter().map(|p| p.bounds).collect());
         let max_radius = cells.iter().map(|c| c.radius).fold(0.0, f64::max);
         let coords: Vec<[f64; 3]> = cells.iter().map(|c| c.centre.0).collect();
         let anchor_coords: Vec<[f64; 3]> = anchors.iter().map(|&i| cells[i].centre.0).collect();
@@ -221,11 +310,13 @@ impl<'a> ShapeProjector<'a> {
             shape,
             domains,
             insides,
-            flats,
+            forms,
             once,
             tree: ImmutableKdTree::new_from_slice(&coords),
             anchor_tree: ImmutableKdTree::new_from_slice(&anchor_coords),
             cells,
+            parts,
+            face_tree,
             anchors,
             max_radius,
             accuracy: accuracy.max(0.0),
@@ -245,54 +336,173 @@ impl<'a> ShapeProjector<'a> {
     /// The nearest point of the shape's faces to `q` ([`ShapeNearest::UNDEFINED`] for a
     /// non-finite `q` or a shape without faces).
     pub fn nearest(&self, q: Point3) -> ShapeNearest {
+        self.nearest_with(q, &mut Scratch::default())
+    }
+
+    /// [`nearest`](ShapeProjector::nearest) with working lists kept between queries.
+    ///
+    /// The faces are visited by increasing lower bound (their box, `bounds.rs`) until it
+    /// reaches the best distance found. A face solved once a query (a plane, a whole
+    /// cylinder) gives its one foot, or when that lies outside the face, its edges' nearest
+    /// point; the other faces' cells are searched from the k-d tree afterwards, as one list.
+    fn nearest_with(&self, q: Point3, scratch: &mut Scratch) -> ShapeNearest {
         if !q.is_finite() || self.anchors.is_empty() {
             return ShapeNearest::UNDEFINED;
         }
         let first = self.anchor_tree.nearest_one::<SquaredEuclidean>(&q.0).item as usize;
         let anchor = self.cells[self.anchors[first.min(self.anchors.len() - 1)]];
         let mut best = self.at_centre(&anchor, q);
+        scratch.faces.clear();
+        self.face_tree.within(q, best.distance, &mut scratch.faces);
+        scratch
+            .faces
+            .sort_unstable_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+        let mut general = false;
+        for i in 0..scratch.faces.len() {
+            let (lower, k) = scratch.faces[i];
+            if lower >= best.distance {
+                break;
+            }
+            if self.once[k] {
+                self.search_once(k, q, &mut best, &mut scratch.cells);
+            } else {
+                general = true;
+            }
+        }
+        if general {
+            self.search_cells(q, &mut best, &mut scratch.cells);
+        }
+        self.sign(best, q)
+    }
+
+    /// Searches face `k`, solved once a query: its one foot, or when that lies outside the
+    /// face, its edges (the nearest point of the face is then on its border).
+    fn search_once(
+        &self,
+        k: usize,
+        q: Point3,
+        best: &mut ShapeNearest,
+        candidates: &mut Vec<(f64, usize)>,
+    ) {
+        let part = &self.parts[k];
+        if let Some(found) = self.surface_foot(k, || self.once_start(k, q), q) {
+            if found.distance < best.distance {
+                *best = found;
+            }
+            return;
+        }
+        candidates.clear();
+        for (bounds, range, form) in &part.edges {
+            if bounds.distance(q) >= best.distance {
+                continue;
+            }
+            if let Some(point) = form.nearest(q) {
+                let distance = point.distance(q);
+                if distance < best.distance {
+                    let (u, v) = self.edge_parameters(k, point, range.clone());
+                    *best = ShapeNearest {
+                        face: k,
+                        u,
+                        v,
+                        point,
+                        distance,
+                        signed: None,
+                        on_edge: true,
+                    };
+                }
+                continue;
+            }
+            for i in range.clone() {
+                let lower = self.cells[i].centre.distance(q) - self.cells[i].radius;
+                if lower < best.distance {
+                    candidates.push((lower, i));
+                }
+            }
+        }
+        candidates.sort_unstable_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+        for &(lower, i) in candidates.iter() {
+            if lower >= best.distance {
+                break;
+            }
+            if let Some(found) = self.search(&self.cells[i], q) {
+                if found.distance < best.distance {
+                    *best = found;
+                }
+            }
+        }
+    }
+
+    /// The surface parameters of `point`, on an edge of face `k` whose segments are
+    /// `cells[segments]`: in closed form on a plane or a cylinder, else those kept with the
+    /// segment whose centre is nearest.
+    fn edge_parameters(
+        &self,
+        k: usize,
+        point: Point3,
+        segments: std::ops::Range<usize>,
+    ) -> (f64, f64) {
+        let closed = match &self.forms[k] {
+            Form::Flat(flat) => flat.nearest(point),
+            Form::Round(round) => round.foot(point).map(|(u, v, _)| (u, v)),
+            Form::Other => None,
+        };
+        closed.unwrap_or_else(|| {
+            let mut pick = (f64::INFINITY, segments.start);
+            for i in segments {
+                let d = self.cells[i].centre.distance_sq(point);
+                if d < pick.0 {
+                    pick = (d, i);
+                }
+            }
+            self.cells[pick.1].start()
+        })
+    }
+
+    /// Where Newton's method starts on face `k` (solved once a query): the surface cell of
+    /// least lower bound, among at most [`START_SCAN`] of its cells.
+    fn once_start(&self, k: usize, q: Point3) -> (f64, f64) {
+        let range = self.parts[k].surface.clone();
+        if range.is_empty() {
+            let d = &self.domains[k];
+            return (0.5 * (d.u.start + d.u.end), 0.5 * (d.v.start + d.v.end));
+        }
+        let stride = range.len().div_ceil(START_SCAN);
+        let mut pick = (f64::INFINITY, range.start);
+        for i in range.step_by(stride) {
+            let lower = self.cells[i].centre.distance(q) - self.cells[i].radius;
+            if lower < pick.0 {
+                pick = (lower, i);
+            }
+        }
+        self.cells[pick.1].start()
+    }
+
+    /// Searches the cells of the faces not solved once a query, within reach of `best`, by
+    /// increasing lower bound.
+    fn search_cells(&self, q: Point3, best: &mut ShapeNearest, candidates: &mut Vec<(f64, usize)>) {
         let reach = best.distance + self.max_radius;
-        let mut candidates: Vec<(f64, usize)> = self
+        candidates.clear();
+        for n in self
             .tree
             .within_unsorted::<SquaredEuclidean>(&q.0, reach * reach)
-            .into_iter()
-            .map(|n| {
-                let k = (n.item as usize).min(self.cells.len() - 1);
-                (n.distance.sqrt() - self.cells[k].radius, k)
-            })
-            .filter(|&(lower, _)| lower < best.distance)
-            .collect();
+        {
+            let k = (n.item as usize).min(self.cells.len() - 1);
+            if self.once[self.cells[k].face] {
+                continue;
+            }
+            let lower = n.distance.sqrt() - self.cells[k].radius;
+            if lower < best.distance {
+                candidates.push((lower, k));
+            }
+        }
         candidates.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
         let mut searched_face_foot = false;
-        // Faces with one foot searched (see `flat.rs`, `cylinder.rs`), and whether their foot
-        // lies in the face.
-        let mut once_faces: Vec<(usize, bool)> = Vec::new();
-        for (lower, k) in candidates {
+        for &(lower, k) in candidates.iter() {
             if lower >= best.distance {
                 break;
             }
             let cell = &self.cells[k];
-            if self.once[cell.face] {
-                let inside = match once_faces.iter().find(|f| f.0 == cell.face) {
-                    Some(&(_, inside)) => inside,
-                    None => {
-                        let found = self.surface_foot(cell.face, cell.start(), q);
-                        once_faces.push((cell.face, found.is_some()));
-                        if let Some(found) = found {
-                            if found.distance < best.distance {
-                                searched_face_foot = true;
-                                best = found;
-                            }
-                        }
-                        found.is_some()
-                    }
-                };
-                // The face's one foot is searched; when it lies in the face it is nearer
-                // than every point of the face's edges too.
-                if inside || matches!(cell.place, Place::Surface { .. }) {
-                    continue;
-                }
-            } else if let Place::Surface { u, v } = cell.place {
+            if let Place::Surface { u, v } = cell.place {
                 if searched_face_foot
                     && cell.face == best.face
                     && !best.on_edge
@@ -305,21 +515,25 @@ impl<'a> ShapeProjector<'a> {
             if let Some(found) = self.search(cell, q) {
                 if found.distance < best.distance {
                     searched_face_foot = !found.on_edge;
-                    best = found;
+                    *best = found;
                 }
             }
         }
-        self.sign(best, q)
     }
 
     /// The nearest points to every point of `qs` (in parallel for large batches).
     pub fn nearest_all(&self, qs: &[Point3]) -> Vec<ShapeNearest> {
         if qs.len() < PARALLEL_BATCH {
-            qs.iter().map(|&q| self.nearest(q)).collect()
+            let mut scratch = Scratch::default();
+            qs.iter()
+                .map(|&q| self.nearest_with(q, &mut scratch))
+                .collect()
         } else {
             qs.par_iter()
                 .with_min_len(64)
-                .map(|&q| self.nearest(q))
+                .map_init(Scratch::default, |scratch, &q| {
+                    self.nearest_with(q, scratch)
+                })
                 .collect()
         }
     }
@@ -341,23 +555,30 @@ impl<'a> ShapeProjector<'a> {
         }
     }
 
-    /// The foot of `q` on face `k`'s surface found from the parameters `start` (in closed
-    /// form on a plane), if it lies on the face.
-    fn surface_foot(&self, k: usize, start: (f64, f64), q: Point3) -> Option<ShapeNearest> {
+    /// The foot of `q` on face `k`'s surface found from the parameters `start` gives (in
+    /// closed form on a plane), if it lies on the face.
+    fn surface_foot(
+        &self,
+        k: usize,
+        start: impl FnOnce() -> (f64, f64),
+        q: Point3,
+    ) -> Option<ShapeNearest> {
         let s = &self.shape.faces[k].surface;
-        let foot = match self.flats[k].and_then(|flat| flat.foot(q)) {
-            Some((u, v)) => {
-                let point = s.eval(u, v);
-                SurfaceNearest {
-                    u,
-                    v,
-                    distance: point.distance(q),
-                    point,
-                }
-            }
+        let closed_form = match &self.forms[k] {
+            Form::Flat(flat) => flat.nearest(q).map(|(u, v)| (u, v, flat.point(u, v))),
+            Form::Round(round) => round.foot(q),
+            Form::Other => None,
+        };
+        let foot = match closed_form {
+            Some((u, v, point)) => SurfaceNearest {
+                u,
+                v,
+                distance: point.distance(q),
+                point,
+            },
             None => {
                 let closed = (s.is_closed_u(), s.is_closed_v());
-                newton_foot(s, q, start, closed, self.accuracy)
+                newton_foot(s, q, start(), closed, self.accuracy)
             }
         };
         self.insides[k]
@@ -377,7 +598,7 @@ impl<'a> ShapeProjector<'a> {
     fn search(&self, cell: &Cell, q: Point3) -> Option<ShapeNearest> {
         let face = &self.shape.faces[cell.face];
         match cell.place {
-            Place::Surface { .. } => self.surface_foot(cell.face, cell.start(), q),
+            Place::Surface { .. } => self.surface_foot(cell.face, || cell.start(), q),
             Place::Edge {
                 edge_loop,
                 edge,
@@ -402,22 +623,46 @@ impl<'a> ShapeProjector<'a> {
     /// `found` with its parameters made exact on an edge (for the normal) and its sign.
     fn sign(&self, mut found: ShapeNearest, q: Point3) -> ShapeNearest {
         let face = &self.shape.faces[found.face];
-        if found.on_edge && face.bounds_solid {
-            let s = &face.surface;
-            let closed = (s.is_closed_u(), s.is_closed_v());
-            let foot = newton_foot(s, found.point, (found.u, found.v), closed, 0.0);
-            found.u = foot.u;
-            found.v = foot.v;
+        if !face.bounds_solid {
+            return found;
         }
-        if face.bounds_solid {
-            found.signed = face.normal(found.u, found.v).map(|n| {
-                if (q - found.point).dot(n) >= 0.0 {
-                    found.distance
-                } else {
-                    -found.distance
+        let sense = if face.same_sense { 1.0 } else { -1.0 };
+        let normal = match &self.forms[found.face] {
+            Form::Flat(flat) => {
+                if found.on_edge {
+                    if let Some((u, v)) = flat.nearest(found.point) {
+                        (found.u, found.v) = (u, v);
+                    }
                 }
-            });
-        }
+                Some(flat.normal() * sense)
+            }
+            Form::Round(round) => {
+                if found.on_edge {
+                    if let Some((u, v, _)) = round.foot(found.point) {
+                        (found.u, found.v) = (u, v);
+                    }
+                }
+                Some(round.normal(found.point) * sense).filter(|n| n.is_finite())
+            }
+            Form::Other => None,
+        };
+        let normal = normal.or_else(|| {
+            if found.on_edge {
+                let s = &face.surface;
+                let closed = (s.is_closed_u(), s.is_closed_v());
+                let foot = newton_foot(s, found.point, (found.u, found.v), closed, 0.0);
+                found.u = foot.u;
+                found.v = foot.v;
+            }
+            face.normal(found.u, found.v)
+        });
+        found.signed = normal.map(|n| {
+            if (q - found.point).dot(n) >= 0.0 {
+                found.distance
+            } else {
+                -found.distance
+            }
+        });
         found
     }
 }
@@ -746,6 +991,185 @@ mod tests {
             if axial == 0.0 && radial.abs() > 1e-9 {
                 assert_eq!(signed > 0.0, radial > 0.0, "{k}");
             }
+        }
+    }
+
+    /// A block of `scale` about `offset`: a plate `[-2, 2]^2` at z = 0 with a round hole of
+    /// radius 1, the hole's wall (a whole cylinder down to z = -1), its bottom (a disc: a plane
+    /// trimmed by a circle) and a twisted bilinear patch beside the plate (searched by cells).
+    fn holed_block(scale: f64, offset: Point3) -> Shape {
+        use crate::bspline::{BSplineSurface, NurbsSurface};
+        use crate::Grid;
+        let at = |x: f64, y: f64, z: f64| offset + Point3::new([x, y, z]) * scale;
+        let f = Frame::new(
+            at(0.0, 0.0, 0.0),
+            Point3::new([0.0, 0.0, 1.0]),
+            Point3::new([1.0, 0.0, 0.0]),
+        )
+        .unwrap();
+        let low = Frame::new(at(0.0, 0.0, -1.0), f.z, f.x).unwrap();
+        let side = |a: Point3, b: Point3| Edge {
+            curve: line_segment(a, b, (0.0, a.distance(b))).unwrap(),
+            forward: true,
+        };
+        let circle = |frame: &Frame, forward: bool| Edge {
+            curve: elliptic_arc(frame.origin, frame.x * scale, frame.y * scale, (0.0, TAU))
+                .unwrap(),
+            forward,
+        };
+        let outer = EdgeLoop::new(
+            vec![
+                side(at(-2.0, -2.0, 0.0), at(2.0, -2.0, 0.0)),
+                side(at(2.0, -2.0, 0.0), at(2.0, 2.0, 0.0)),
+                side(at(2.0, 2.0, 0.0), at(-2.0, 2.0, 0.0)),
+                side(at(-2.0, 2.0, 0.0), at(-2.0, -2.0, 0.0)),
+            ],
+            true,
+        );
+        let top = Face {
+            surface: plane(&f, (-2.0 * scale, 2.0 * scale), (-2.0 * scale, 2.0 * scale)).unwrap(),
+            loops: vec![outer, EdgeLoop::new(vec![circle(&f, false)], false)],
+            same_sense: true,
+            bounds_solid: false,
+        };
+        let wall = Face::whole(
+            cylinder(&low, scale, (0.0, TAU), (0.0, scale))
+                .unwrap()
+                .with_closed(true, false),
+        );
+        let bottom = Face {
+            surface: plane(&low, (-scale, scale), (-scale, scale)).unwrap(),
+            loops: vec![EdgeLoop::new(vec![circle(&low, true)], true)],
+            same_sense: true,
+            bounds_solid: false,
+        };
+        let twisted = Grid::from_fn(2, 2, |i, j| {
+            at(
+                3.0 + i as f64,
+                -1.0 + 2.0 * j as f64,
+                if i == j { 0.5 } else { -0.5 },
+            )
+        });
+        let linear = (1, vec![0.0, 0.0, 1.0, 1.0]);
+        let patch = NurbsSurface::from_bspline(
+            &BSplineSurface::new(linear.clone(), linear, twisted).unwrap(),
+        );
+        Shape {
+            faces: vec![top, wall, bottom, Face::whole(patch)],
+            curves: vec![],
+        }
+    }
+
+    /// Uniform numbers in `[0, 1)` from a fixed seed.
+    fn uniform(seed: u64) -> impl FnMut() -> f64 {
+        let mut state = seed;
+        move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 11) as f64 / (1u64 << 53) as f64
+        }
+    }
+
+    #[test]
+    fn face_and_edge_boxes_never_exceed_the_distance_to_their_points() {
+        for (scale, offset) in [(1.0, Point3::ZERO), (1e3, Point3::new([1e4, -1e4, 1e4]))] {
+            let shape = holed_block(scale, offset);
+            let p = ShapeProjector::new(&shape, 0.0).unwrap();
+            let mut next = uniform(0x9e37_79b9_7f4a_7c15);
+            // Points of every face (inside its domain) and of every edge.
+            let mut on_faces: Vec<(usize, Option<usize>, Point3)> = Vec::new();
+            for (k, face) in shape.faces.iter().enumerate() {
+                let (du, dv) = (face.surface.domain_u(), face.surface.domain_v());
+                for _ in 0..400 {
+                    let (u, v) = (
+                        du.start + next() * du.length(),
+                        dv.start + next() * dv.length(),
+                    );
+                    if p.insides[k].contains(u, v) {
+                        on_faces.push((k, None, face.surface.eval(u, v)));
+                    }
+                }
+                for (e, (_, range, _)) in p.parts[k].edges.iter().enumerate() {
+                    let Place::Edge {
+                        edge_loop, edge, ..
+                    } = p.cells[range.start].place
+                    else {
+                        panic!("a surface cell among the edges");
+                    };
+                    let c = &face.loops[edge_loop].edges[edge].curve;
+                    for i in 0..=50 {
+                        on_faces.push((k, Some(e), c.eval(c.domain().uniform(i, 51))));
+                    }
+                }
+            }
+            assert!(on_faces.len() > 1000);
+            let size = shape.size();
+            for _ in 0..300 {
+                let q = offset
+                    + Point3::new([next() - 0.5, next() - 0.5, next() - 0.6]) * (12.0 * scale);
+                for &(k, e, point) in &on_faces {
+                    let d = q.distance(point);
+                    let face = p.parts[k].bounds.distance(q);
+                    assert!(face <= d, "face {k}: {face} > {d} at {q:?}");
+                    if let Some(e) = e {
+                        let edge = p.parts[k].edges[e].0.distance(q);
+                        assert!(edge <= d + 1e-12 * size, "edge {e} of {k}: {edge} > {d}");
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn the_search_by_face_equals_a_search_of_every_cell() {
+        for (scale, offset, noise) in [
+            (1.0, Point3::ZERO, 0.05),
+            (1.0, Point3::ZERO, 0.5),
+            (1e3, Point3::new([1e4, -1e4, 1e4]), 0.05),
+            (1e3, Point3::new([1e4, -1e4, 1e4]), 0.5),
+        ] {
+            let shape = holed_block(scale, offset);
+            let size = shape.size();
+            let p = ShapeProjector::new(&shape, 0.0).unwrap();
+            assert!(p.once[0] && p.once[1] && p.once[2] && !p.once[3]);
+            let mut next = uniform(0x2545_f491_4f6c_dd1d);
+            let mut faces_seen = [0usize; 4];
+            for k in 0..1500 {
+                // Near a random cell's centre, or anywhere around the block.
+                let q = if k % 4 == 0 {
+                    offset
+                        + Point3::new([next() - 0.5, next() - 0.5, next() - 0.6]) * (14.0 * scale)
+                } else {
+                    let c = p.cells[(next() * p.cells.len() as f64) as usize].centre;
+                    c + Point3::new([next() - 0.5, next() - 0.5, next() - 0.5])
+                        * (2.0 * noise * size)
+                };
+                let n = p.nearest(q);
+                // Every cell and edge segment of every face, and every once-solved face.
+                let mut brute = f64::INFINITY;
+                for cell in &p.cells {
+                    if let Some(found) = p.search(cell, q) {
+                        brute = brute.min(found.distance);
+                    }
+                }
+                for (f, once) in p.once.iter().enumerate() {
+                    if *once {
+                        if let Some(found) = p.surface_foot(f, || p.once_start(f, q), q) {
+                            brute = brute.min(found.distance);
+                        }
+                    }
+                }
+                assert!(
+                    (n.distance - brute).abs() <= 1e-12 * size,
+                    "{scale} {noise} {k}: {q:?} {} {brute}",
+                    n.distance
+                );
+                assert!((q.distance(n.point) - n.distance).abs() <= 1e-12 * size);
+                faces_seen[n.face] += 1;
+            }
+            // Every face is the nearest to some of the points.
+            assert!(faces_seen.iter().all(|&c| c > 10), "{faces_seen:?}");
         }
     }
 }
