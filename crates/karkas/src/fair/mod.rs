@@ -43,6 +43,7 @@
 //! CASCADE's curves within `T` (bench/fair_airfoils.py; the counts of curvature extrema and
 //! inflections match the benchmark's truth in too few cases, BENCHMARKS.md).
 
+mod blocks;
 mod layout;
 mod objective;
 mod options;
