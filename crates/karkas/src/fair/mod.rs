@@ -31,9 +31,10 @@
 //! parameters moved to the foot points between stages. Every iterate keeps every point
 //! strictly inside its ball, so the hard bound holds by construction.
 //!
-//! Cost: `O(n)` per Newton step for `n` points (banded systems of width `4 D`, `8 D` closed);
-//! a 200-point airfoil takes about 180 ms of one core (BENCHMARKS.md; `cargo bench -p
-//! karkas-bench --bench fair`), well above the 10 ms aimed at.
+//! Cost: `O(n)` per Newton step for `n` points (banded systems of width `4 D`, `8 D` closed),
+//! about 200 Newton steps for a noisy airfoil, three quarters of them in the shape passes; a
+//! 200-point airfoil takes 35-90 ms of one core on a loaded machine (BENCHMARKS.md, "Fairing
+//! speed"; `cargo bench -p karkas-bench --bench fair`), still above the 10 ms aimed at.
 //!
 //! Guarantees (tested): every point within `T` of the curve (at its parameter, and so on
 //! dense samples); ends and tangent directions kept when asked; corners passed through; the
