@@ -32,9 +32,10 @@
 //! strictly inside its ball, so the hard bound holds by construction.
 //!
 //! Cost: `O(n)` per Newton step for `n` points (banded systems of width `4 D`, `8 D` closed),
-//! about 200 Newton steps for a noisy airfoil, three quarters of them in the shape passes; a
-//! 200-point airfoil takes 35-90 ms of one core on a loaded machine (BENCHMARKS.md, "Fairing
-//! speed"; `cargo bench -p karkas-bench --bench fair`), still above the 10 ms aimed at.
+//! but about 480 Newton steps for a noisy airfoil (every barrier stage runs its cap: the
+//! parameters move after every step); a 200-point airfoil takes 120-210 ms of one core
+//! (BENCHMARKS.md, "Fairing speed"; `cargo bench -p karkas-bench --bench fair`), well above the
+//! 10 ms aimed at.
 //!
 //! Guarantees (tested): every point within `T` of the curve (at its parameter, and so on
 //! dense samples); ends and tangent directions kept when asked; corners passed through; the

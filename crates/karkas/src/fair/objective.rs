@@ -342,7 +342,7 @@ fn residual_gradient_exact<const D: usize>(d: [Point<D>; 3]) -> [Point<D>; 3] {
     } else {
         let q = d2.norm_sq();
         let w = (v2 * q - a * a).max(0.0).sqrt();
-        if !(w > 1e-6 * (v2 * q).sqrt()) {
+        if w.is_nan() || w <= 1e-6 * (v2 * q).sqrt() {
             return residual_gradient(d);
         }
         let (g, h) = (d2.dot(d3), d1.dot(d3));

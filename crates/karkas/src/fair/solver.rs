@@ -7,9 +7,9 @@
 //!    between rounds.
 //! 2. **Barrier**: for `t = t_0, 10 t_0, ...`, Newton's method on `Ψ_t` (Gauss–Newton matrix,
 //!    backtracking until `Ψ_t` falls by a quarter of the predicted decrease, every trial point
-//!    strictly inside every ball) with the parameters held, then the parameters moved to the
-//!    foot points (which only brings every point nearer); until `n / t`, the duality gap of
-//!    the convexified problem, is below `10^-3 E`.
+//!    strictly inside every ball), then the parameters moved to the foot points (which only
+//!    brings every point nearer); until `n / t`, the duality gap of the convexified problem,
+//!    is below `10^-3 E`.
 //!
 //! Every iterate keeps every point strictly within `T` of its parameter's point, hence of the
 //! curve: the bound is held by construction, not checked after the fact.
@@ -210,21 +210,15 @@ impl<const D: usize> Solve<'_, D> {
 
     /// Barrier stages from `t`, at most `stages` of them, until the gap is small; returns the
     /// last `t`.
-    ///
-    /// Within a stage the point parameters stay put, so that Newton's method minimizes one
-    /// function and converges in a few steps; they move to the foot points at the stage's end
-    /// (moving them after every step makes the steps creep: each one chases a new function).
     fn stages(&mut self, mut t: f64, stages: usize) -> f64 {
         let size = self.layout.size();
         let mut g = vec![0.0; size];
         let mut h = BandedSpd::new(size, self.layout.width());
-        let mut trial = vec![0.0; size];
+        let mut x = self.layout.unknowns(&self.controls);
         let mut trial_controls = self.controls.clone();
         let mut blocks = Blocks::new(self.space.spans());
         let n = self.points.len() as f64;
         for stage in 0..stages {
-            let mut x = self.layout.unknowns(&self.controls);
-            let mut before = self.objective().parts(&self.controls).value(t, self.alpha);
             for _ in 0..NEWTON_STEPS {
                 let objective = self.objective();
                 objective.assemble(&self.controls, t, &mut blocks, &mut g, &mut h);
@@ -235,17 +229,15 @@ impl<const D: usize> Solve<'_, D> {
                 if decrement.is_nan() || decrement <= NEWTON_DECREMENT {
                     break;
                 }
+                let before = objective.parts(&self.controls).value(t, self.alpha);
                 let mut step = 1.0;
                 let mut accepted = false;
                 while step > 1e-10 {
-                    for ((out, a), b) in trial.iter_mut().zip(&x).zip(&dx) {
-                        *out = a + step * b;
-                    }
+                    let trial: Vec<f64> = x.iter().zip(&dx).map(|(a, b)| a + step * b).collect();
                     self.layout.controls_into(&trial, &mut trial_controls);
                     let after = objective.parts(&trial_controls).value(t, self.alpha);
                     if after.is_finite() && after <= before - 0.25 * step * decrement {
-                        std::mem::swap(&mut x, &mut trial);
-                        before = after;
+                        x = trial;
                         accepted = true;
                         break;
                     }
@@ -255,8 +247,10 @@ impl<const D: usize> Solve<'_, D> {
                     break;
                 }
                 self.controls.copy_from_slice(&trial_controls);
+                self.project();
             }
             self.project();
+            x = self.layout.unknowns(&self.controls);
             let parts = self.objective().parts(&self.controls);
             if n / t <= BARRIER_GAP * parts.fairing(self.alpha) || stage + 1 == stages {
                 break;
