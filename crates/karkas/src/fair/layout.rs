@@ -133,6 +133,18 @@ impl<const D: usize> Layout<D> {
         }
     }
 
+    /// The unknown that axis `axis` of control `j` moves with, and its coefficient (`None`
+    /// for a held control).
+    #[inline]
+    pub(crate) fn unknown(&self, j: usize, axis: usize) -> Option<(usize, f64)> {
+        let o = self.offsets[j];
+        match self.kinds[j] {
+            Control::Free => Some((o + axis, 1.0)),
+            Control::Held(_) => None,
+            Control::Along { direction, .. } => Some((o, direction[axis])),
+        }
+    }
+
     /// The unknowns a row touches with their coefficients (at most `4 D`), written into
     /// `out`; returns how many.
     fn scatter(&self, row: &Row<D>, out: &mut [(usize, f64); 32]) -> usize {
@@ -178,15 +190,6 @@ impl<const D: usize> Layout<D> {
                 let twice = if i == j { 2.0 } else { 1.0 };
                 h.add(i, j, twice * weight * vi * vj);
             }
-        }
-    }
-
-    /// Adds `value * row` to the gradient `g` only.
-    pub(crate) fn add_gradient(&self, row: &Row<D>, value: f64, g: &mut [f64]) {
-        let mut entries = [(0, 0.0); 32];
-        let len = self.scatter(row, &mut entries);
-        for &(i, vi) in &entries[..len] {
-            g[i] += value * vi;
         }
     }
 }

@@ -31,9 +31,11 @@
 //! parameters moved to the foot points between stages. Every iterate keeps every point
 //! strictly inside its ball, so the hard bound holds by construction.
 //!
-//! Cost: `O(n)` per Newton step for `n` points (banded systems of width `4 D`, `8 D` closed);
-//! a 200-point airfoil takes about 180 ms of one core (BENCHMARKS.md; `cargo bench -p
-//! karkas-bench --bench fair`), well above the 10 ms aimed at.
+//! Cost: `O(n)` per Newton step for `n` points (banded systems of width `4 D`, `8 D` closed),
+//! but about 480 Newton steps for a noisy airfoil (every barrier stage runs its cap: the
+//! parameters move after every step); a 200-point airfoil takes 120-210 ms of one core
+//! (BENCHMARKS.md, "Fairing speed"; `cargo bench -p karkas-bench --bench fair`), well above the
+//! 10 ms aimed at.
 //!
 //! Guarantees (tested): every point within `T` of the curve (at its parameter, and so on
 //! dense samples); ends and tangent directions kept when asked; corners passed through; the
@@ -43,6 +45,7 @@
 //! CASCADE's curves within `T` (bench/fair_airfoils.py; the counts of curvature extrema and
 //! inflections match the benchmark's truth in too few cases, BENCHMARKS.md).
 
+mod blocks;
 mod layout;
 mod objective;
 mod options;

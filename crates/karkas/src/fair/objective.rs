@@ -7,17 +7,19 @@
 //!   quadrature on every span of `(dκ/ds)^2 |r'(t)|` (exact for the integrand's polynomial
 //!   part, and the pieces are short). Its residual at a node, `F = dκ/ds sqrt(w |r'|)`, is
 //!   linearized for the Gauss–Newton matrix: its gradient with respect to the node's first
-//!   three derivatives by central differences (exact in `r'''`, on which `F` is linear, and
-//!   in `r''` in the plane, where it is quadratic), then through the basis weights to the
-//!   span's four controls.
+//!   three derivatives in closed form (by central differences only where a space curve's
+//!   curvature vanishes and `F` is not differentiable), then through the basis weights to
+//!   the span's four controls.
 //! - `R = ∫ |r'''(t)|^2 dt`, constant on every span of a cubic, weighted `α` small: `E` does not
 //!   change when the curve is reparameterized, and `R` keeps the parameter even where `E`
 //!   alone would leave it free.
 //! - The logarithmic barrier of the hard bound `|r(u_i) - p_i| < T` (a ball around every point
 //!   at its parameter `u_i`): its gradient and matrix are exact.
 //!
-//! Every term touches the four controls of one span, so the matrix is banded.
+//! Every term touches the four controls of one span, so the matrix is banded (the terms are
+//! summed span by span first, `fair/blocks.rs`).
 
+use super::blocks::Blocks;
 use super::layout::{Layout, Row};
 use super::space::{Space, NODES};
 use crate::geometry::curvature_rate::curvature_and_rate;
@@ -162,24 +164,33 @@ impl<const D: usize> Objective<'_, D> {
         parts
     }
 
-    /// The Gauss–Newton gradient `g` and matrix `h` of `Ψ_t` at `controls` (overwritten).
-    pub(crate) fn assemble(&self, controls: &[Point<D>], t: f64, g: &mut [f64], h: &mut BandedSpd) {
-        g.fill(0.0);
-        h.clear();
-        let layout = self.layout;
-        for k in 0..self.space.spans() {
-            let width = self.space.width(k);
+    /// The Gauss–Newton gradient `g` and matrix `h` of `Ψ_t` at `controls` (overwritten),
+    /// gathered span by span in `blocks`.
+    pub(crate) fn assemble(
+        &self,
+        controls: &[Point<D>],
+        t: f64,
+        blocks: &mut Blocks<D>,
+        g: &mut [f64],
+        h: &mut BandedSpd,
+    ) {
+        blocks.clear();
+        let space = self.space;
+        // The row of `F` at node `q` of span `k` through its derivatives' gradient `grad`.
+        let row = |k: usize, q: usize, grad: &[Point<D>; 3]| -> [Point<D>; 4] {
+            let weights: [&[f64; 4]; 3] = std::array::from_fn(|j| space.node_weights(k, q, j + 1));
+            std::array::from_fn(|c| {
+                (0..3).fold(Point::ZERO, |acc, j| acc.add_scaled(weights[j][c], grad[j]))
+            })
+        };
+        for k in 0..space.spans() {
+            let width = space.width(k);
             for (node, &w) in GAUSS_WEIGHTS.iter().enumerate() {
                 let d: [Point<D>; 3] =
-                    std::array::from_fn(|j| self.space.eval_node(controls, k, node + 1, j + 1));
+                    std::array::from_fn(|j| space.eval_node(controls, k, node + 1, j + 1));
                 let f = residual(d[0], d[1], d[2]);
-                let grad = residual_gradient(d);
-                let weights: [[f64; 4]; 3] =
-                    std::array::from_fn(|j| *self.space.node_weights(k, node + 1, j + 1));
-                let row = self.span_row(k, |c| {
-                    (0..3).fold(Point::ZERO, |acc, j| acc.add_scaled(weights[j][c], grad[j]))
-                });
-                layout.add_square(&row, t * w * width, f, g, h);
+                let grad = residual_gradient_exact(d);
+                blocks.add_square(k, &row(k, node + 1, &grad), t * w * width, f);
             }
             if let Some(shape) = self.shape {
                 for q in 0..NODES_PER_SPAN {
@@ -188,45 +199,34 @@ impl<const D: usize> Objective<'_, D> {
                         continue;
                     }
                     let d: [Point<D>; 3] =
-                        std::array::from_fn(|j| self.space.eval_node(controls, k, q, j + 1));
+                        std::array::from_fn(|j| space.eval_node(controls, k, q, j + 1));
                     let v = sign * residual(d[0], d[1], d[2]) - shape.margin;
                     if v < 0.0 {
-                        let grad = residual_gradient(d);
-                        let weights: [[f64; 4]; 3] =
-                            std::array::from_fn(|j| *self.space.node_weights(k, q, j + 1));
-                        let row = self.span_row(k, |c| {
-                            (0..3)
-                                .fold(Point::ZERO, |acc, j| acc.add_scaled(weights[j][c], grad[j]))
-                                * sign
-                        });
-                        layout.add_square(
-                            &row,
+                        let grad = residual_gradient_exact(d).map(|p| p * sign);
+                        blocks.add_square(
+                            k,
+                            &row(k, q, &grad),
                             t * shape.rho * width / NODES_PER_SPAN as f64,
                             v,
-                            g,
-                            h,
                         );
                     }
                 }
             }
-            let third = self.space.eval_node(controls, k, 0, 3);
-            let w3 = *self.space.node_weights(k, 0, 3);
-            for axis in 0..D {
-                let row = self.span_row(k, |c| unit::<D>(axis) * w3[c]);
-                layout.add_square(&row, t * self.alpha * width, third[axis], g, h);
-            }
+            let third = space.eval_node(controls, k, 0, 3);
+            let w3 = space.node_weights(k, 0, 3);
+            let weight = t * self.alpha * width;
+            blocks.add_gradient(k, &w3.map(|c| third * c), weight);
+            blocks.add_isotropic(k, w3, weight);
         }
         let t2 = self.tolerance * self.tolerance;
         self.errors(controls, |_, k, w, e| {
             let slack = t2 - e.norm_sq();
-            let along = self.span_row(k, |c| e * w[c]);
-            layout.add_gradient(&along, 2.0 / slack, g);
-            layout.add_square(&along, 4.0 / (slack * slack), 0.0, g, h);
-            for axis in 0..D {
-                let row = self.span_row(k, |c| unit::<D>(axis) * w[c]);
-                layout.add_square(&row, 2.0 / slack, 0.0, g, h);
-            }
+            let along = w.map(|c| e * c);
+            blocks.add_gradient(k, &along, 2.0 / slack);
+            blocks.add_square(k, &along, 4.0 / (slack * slack), 0.0);
+            blocks.add_isotropic(k, w, 2.0 / slack);
         });
+        blocks.scatter(space, self.layout, g, h);
     }
 
     /// The weighted least-squares terms `sum_i weight_i / 2 |e_i|^2 + λ / 2 R` (the start's
@@ -305,6 +305,80 @@ fn unit<const D: usize>(axis: usize) -> Point<D> {
     p
 }
 
+/// The gradient of [`residual`] with respect to `r'`, `r''` and `r'''` in closed form.
+///
+/// With `v2 = |r'|^2`, `a = r' . r''` and `F = N v2^(-11/4)`:
+///
+/// - in the plane, `N = c' v2 - 3 c a` with `c = r' x r''` and `c' = r' x r'''`;
+/// - in space, `N = w' v2 - 3 w a` with `w = sqrt(v2 |r''|^2 - a^2)` and
+///   `w' = (v2 (r'' . r''') - a (r' . r''')) / w`; where `w` is below `1e-6` of
+///   `|r'| |r''|` (a zero of the curvature, where `F` has a corner) the central differences of
+///   [`residual_gradient`] stand in.
+///
+/// Zero where `r' = 0`.
+fn residual_gradient_exact<const D: usize>(d: [Point<D>; 3]) -> [Point<D>; 3] {
+    let [d1, d2, d3] = d;
+    let v2 = d1.norm_sq();
+    if !(v2.is_finite() && v2 > 0.0) {
+        return [Point::ZERO; 3];
+    }
+    let a = d1.dot(d2);
+    let inv = v2.powf(-2.75);
+    let (n, dn) = if D == 2 {
+        // `perp(q)` turns `q` a quarter: d/dq (p x q) = perp(p), d/dp (p x q) = -perp(q).
+        let perp = |p: Point<D>| {
+            let mut out = Point::ZERO;
+            out[0] = -p[1];
+            out[1] = p[0];
+            out
+        };
+        let c = d1[0] * d2[1] - d1[1] * d2[0];
+        let dc = d1[0] * d3[1] - d1[1] * d3[0];
+        let n = dc * v2 - 3.0 * c * a;
+        let dn1 = -perp(d3) * v2 + d1 * (2.0 * dc) - (-perp(d2) * a + d2 * c) * 3.0;
+        let dn2 = (perp(d1) * a + d1 * c) * -3.0;
+        let dn3 = perp(d1) * v2;
+        (n, [dn1, dn2, dn3])
+    } else {
+        let q = d2.norm_sq();
+        let w = (v2 * q - a * a).max(0.0).sqrt();
+        if w.is_nan() || w <= 1e-6 * (v2 * q).sqrt() {
+            return residual_gradient(d);
+        }
+        let (g, h) = (d2.dot(d3), d1.dot(d3));
+        let p = v2 * g - a * h;
+        let wp = p / w;
+        let dw = [
+            (d1 * q - d2 * a) * (1.0 / w),
+            (d2 * v2 - d1 * a) * (1.0 / w),
+            Point::ZERO,
+        ];
+        let dp = [
+            d1 * (2.0 * g) - d2 * h - d3 * a,
+            d3 * v2 - d1 * h,
+            d2 * v2 - d1 * a,
+        ];
+        let dv2 = [d1 * 2.0, Point::ZERO, Point::ZERO];
+        let da = [d2, d1, Point::ZERO];
+        let n = wp * v2 - 3.0 * w * a;
+        let dn: [Point<D>; 3] = std::array::from_fn(|j| {
+            let dwp = dp[j] * (1.0 / w) - dw[j] * (p / (w * w));
+            dwp * v2 + dv2[j] * wp - dw[j] * (3.0 * a) - da[j] * (3.0 * w)
+        });
+        (n, dn)
+    };
+    let grad = [
+        dn[0] * inv - d1 * (5.5 * n * inv / v2),
+        dn[1] * inv,
+        dn[2] * inv,
+    ];
+    if grad.iter().all(|g| g.is_finite()) {
+        grad
+    } else {
+        [Point::ZERO; 3]
+    }
+}
+
 /// The gradient of [`residual`] with respect to `r'`, `r''` and `r'''`, by central
 /// differences with steps relative to each derivative's size.
 fn residual_gradient<const D: usize>(d: [Point<D>; 3]) -> [Point<D>; 3] {
@@ -327,4 +401,64 @@ fn residual_gradient<const D: usize>(d: [Point<D>; 3]) -> [Point<D>; 3] {
         }
         out
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Derivative triples of many directions and sizes (a fixed xorshift).
+    fn triples<const D: usize>() -> Vec<[Point<D>; 3]> {
+        let mut state = 0x2545_F491_4F6C_DD1Du64;
+        let mut next = move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+        };
+        (0..300)
+            .map(|i| {
+                let scale = [1.0, 30.0, 900.0][i % 3];
+                std::array::from_fn(|j| {
+                    let mut p = Point::ZERO;
+                    for axis in 0..D {
+                        p[axis] = next() * f64::powi(scale, j as i32);
+                    }
+                    p
+                })
+            })
+            .collect()
+    }
+
+    fn agrees<const D: usize>() {
+        for d in triples::<D>() {
+            let exact = residual_gradient_exact(d);
+            let differences = residual_gradient(d);
+            // Each part's effect on F, |dF/dr^(j)| |r^(j)|, against the largest of them.
+            let size = differences
+                .iter()
+                .zip(&d)
+                .map(|(g, x)| g.norm() * x.norm())
+                .fold(0.0_f64, f64::max);
+            for j in 0..3 {
+                let error = (exact[j] - differences[j]).norm() * d[j].norm();
+                assert!(
+                    error <= 1e-6 * size,
+                    "D = {D}, derivative {j}: {:?} against {:?}",
+                    exact[j],
+                    differences[j]
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn exact_gradient_agrees_with_differences_in_the_plane() {
+        agrees::<2>();
+    }
+
+    #[test]
+    fn exact_gradient_agrees_with_differences_in_space() {
+        agrees::<3>();
+    }
 }

@@ -19,6 +19,7 @@
 //! solvers factor a sparse KKT system anew at every step and would own the
 //! non-convex outer loop no better.
 
+use super::blocks::Blocks;
 use super::layout::Layout;
 use super::objective::{Objective, Shape};
 use super::shape::demanded_signs;
@@ -215,11 +216,12 @@ impl<const D: usize> Solve<'_, D> {
         let mut h = BandedSpd::new(size, self.layout.width());
         let mut x = self.layout.unknowns(&self.controls);
         let mut trial_controls = self.controls.clone();
+        let mut blocks = Blocks::new(self.space.spans());
         let n = self.points.len() as f64;
         for stage in 0..stages {
             for _ in 0..NEWTON_STEPS {
                 let objective = self.objective();
-                objective.assemble(&self.controls, t, &mut g, &mut h);
+                objective.assemble(&self.controls, t, &mut blocks, &mut g, &mut h);
                 let Some(dx) = Self::newton_step(&mut h, &g) else {
                     break;
                 };
