@@ -283,30 +283,13 @@ fn collect<R: BufRead + Send, const D: usize, S: Store<D>>(
     columns: [usize; D],
     size: Option<u64>,
 ) -> Result<S, IoError> {
-    let name = lines.name();
-    let growth = Growth { size };
-    // slot[k]: which coordinate field k holds, or D for none.
-    let mut slot = vec![D; layout.width];
-    for (c, &k) in columns.iter().enumerate() {
-        slot[k] = c;
-    }
-    let mut store = S::default();
-    let push = |store: &mut S, p: [f64; D], consumed: u64, line: usize| -> Result<(), IoError> {
-        if store.len() == store.capacity() {
-            growth.grow(store, 1, consumed, Location::new(name, line))?;
-        }
-        store.push(p);
-        Ok(())
-    };
+    let mut rows = Rows::<D, S>::new(lines.name(), Growth { size }, layout.width, columns);
     if let Some((line, content)) = &layout.first_row {
-        let p = slow_row(content, *line, &*layout, &slot, name)?;
-        if let Slow::Point(p) = p {
-            push(&mut store, p, lines.consumed(), *line)?;
+        if let Slow::Point(p) = slow_row(content, *line, &*layout, &rows.slot, rows.name)? {
+            rows.push(p, lines.consumed(), *line)?;
         }
     }
-    let mut skipped: u128 = 0;
-    let mut notes: Option<(usize, String)> = None;
-    let mut line = lines.line();
+    rows.line = lines.line();
     let mut after = lines.consumed();
     // Two blocks: one parsed while the next is read on another thread.
     let mut blocks = [Vec::new(), Vec::new()];
@@ -316,7 +299,7 @@ fn collect<R: BufRead + Send, const D: usize, S: Store<D>>(
     let mut current = 0;
     loop {
         let len = match next {
-            Block::TooLong => return Err(too_long(name, line + 1)),
+            Block::TooLong => return Err(too_long(rows.name, rows.line + 1)),
             Block::Lines(0) => break,
             Block::Lines(len) => len,
         };
@@ -332,10 +315,11 @@ fn collect<R: BufRead + Send, const D: usize, S: Store<D>>(
             settle_decimal_mark(layout, block);
         }
         let layout = &*layout;
-        let try_fast = notes.is_none();
+        let try_fast = rows.notes.is_none();
+        let slot = &rows.slot;
         let parse = || {
             if try_fast {
-                fast_block::<D>(block, layout, &slot)
+                fast_block::<D>(block, layout, slot)
             } else {
                 None
             }
@@ -353,62 +337,137 @@ fn collect<R: BufRead + Send, const D: usize, S: Store<D>>(
             Ok(read) => read?,
             Err(panic) => std::panic::resume_unwind(panic),
         };
-        if let Some(pieces) = fast {
-            let count = pieces.iter().map(Vec::len).sum();
-            if store.capacity() - store.len() < count {
-                let at = Location::new(name, line + count);
-                growth.grow(&mut store, count, after, at)?;
-            }
-            for piece in &pieces {
-                store.extend_from(piece);
-            }
-            line += count;
-            continue;
+        match fast {
+            Some(pieces) => rows.take_pieces(&pieces, after)?,
+            None => rows.read_carefully(block, after, layout)?,
         }
+    }
+    rows.finish(layout)
+}
+
+/// The data rows read so far: the points, the line reached, and the first note met (after
+/// which every row must be a note).
+struct Rows<'p, const D: usize, S> {
+    name: &'p Path,
+    growth: Growth,
+    /// `slot[k]`: which coordinate field `k` holds, or `D` for none.
+    slot: Vec<usize>,
+    store: S,
+    line: usize,
+    /// Bytes of blank lines and notes passed over.
+    skipped: u128,
+    notes: Option<(usize, String)>,
+}
+
+impl<'p, const D: usize, S: Store<D>> Rows<'p, D, S> {
+    fn new(name: &'p Path, growth: Growth, width: usize, columns: [usize; D]) -> Self {
+        let mut slot = vec![D; width];
+        for (c, &k) in columns.iter().enumerate() {
+            slot[k] = c;
+        }
+        Rows {
+            name,
+            growth,
+            slot,
+            store: S::default(),
+            line: 0,
+            skipped: 0,
+            notes: None,
+        }
+    }
+
+    /// Adds the point of `line`, the points up to it taking the first `consumed` bytes.
+    fn push(&mut self, p: [f64; D], consumed: u64, line: usize) -> Result<(), IoError> {
+        if self.store.len() == self.store.capacity() {
+            let at = Location::new(self.name, line);
+            self.growth.grow(&mut self.store, 1, consumed, at)?;
+        }
+        self.store.push(p);
+        Ok(())
+    }
+
+    /// Adds a block's points parsed on the fast path, the block ending at byte `after`.
+    fn take_pieces(&mut self, pieces: &[Vec<[f64; D]>], after: u64) -> Result<(), IoError> {
+        let count = pieces.iter().map(Vec::len).sum();
+        if self.store.capacity() - self.store.len() < count {
+            let at = Location::new(self.name, self.line + count);
+            self.growth.grow(&mut self.store, count, after, at)?;
+        }
+        for piece in pieces {
+            self.store.extend_from(piece);
+        }
+        self.line += count;
+        Ok(())
+    }
+
+    /// Reads a block line by line (the block ending at byte `after`): plain rows on the fast
+    /// path, the others (blank, quoted, notes) on the careful one.
+    fn read_carefully(&mut self, block: &[u8], after: u64, layout: &Layout) -> Result<(), IoError> {
+        let name = self.name;
         let mut consumed = after - block.len() as u64;
         for bytes in block.split_inclusive(|&b| b == b'\n') {
-            line += 1;
+            self.line += 1;
+            let line = self.line;
             consumed += bytes.len() as u64;
             if bytes.len() > MAX_LINE_BYTES + 1 {
                 return Err(too_long(name, line));
             }
-            if notes.is_none() {
-                if let Some(p) = fast_row(bytes, layout, &slot) {
-                    push(&mut store, p, consumed, line)?;
+            if self.notes.is_none() {
+                if let Some(p) = fast_row(bytes, layout, &self.slot) {
+                    self.push(p, consumed, line)?;
                     continue;
                 }
             }
             let text = check_line(name, line, bytes)?;
             let content = strip_comment(text).trim();
             if content.is_empty() {
-                skipped += text.len() as u128 + 1;
-                if skipped > 1 << 16 {
-                    check_held_at(name, line, skipped + held_bytes::<D, S>(&store))?;
+                self.skipped += text.len() as u128 + 1;
+                if self.skipped > 1 << 16 {
+                    self.check_held()?;
                 }
                 continue;
             }
-            let at = Location::new(name, line);
-            match (&notes, slow_row(content, line, layout, &slot, name)?) {
+            match (
+                &self.notes,
+                slow_row(content, line, layout, &self.slot, name)?,
+            ) {
                 (_, Slow::Blank) => {}
-                (None, Slow::Point(p)) => push(&mut store, p, consumed, line)?,
-                (None, Slow::Note) => notes = Some((line, excerpt(content))),
+                (None, Slow::Point(p)) => self.push(p, consumed, line)?,
+                (None, Slow::Note) => self.notes = Some((line, excerpt(content))),
                 (Some((first, note)), Slow::Point(_)) => {
-                    return Err(at.error(format!(
+                    return Err(Location::new(name, line).error(format!(
                         "a data row after the notes that begin on line {first} ('{note}'): notes \
                          may only follow the data (remove them or start them with '#')"
                     )))
                 }
                 (Some(_), Slow::Note) => {
-                    skipped += text.len() as u128 + 1;
-                    check_held_at(name, line, skipped + held_bytes::<D, S>(&store))?;
+                    self.skipped += text.len() as u128 + 1;
+                    self.check_held()?;
                 }
             }
         }
+        Ok(())
     }
-    if store.len() == 0 {
-        return Err(data_error(name, nothing_read(layout, notes.as_ref())));
+
+    /// Fails when the points and the bytes passed over exceed the memory cap.
+    fn check_held(&self) -> Result<(), IoError> {
+        check_held_at(
+            self.name,
+            self.line,
+            self.skipped + held_bytes::<D, S>(&self.store),
+        )
     }
-    Ok(store)
+
+    /// The points, refused when there are none.
+    fn finish(self, layout: &Layout) -> Result<S, IoError> {
+        if self.store.len() == 0 {
+            return Err(data_error(
+                self.name,
+                nothing_read(layout, self.notes.as_ref()),
+            ));
+        }
+        Ok(self.store)
+    }
 }
 
 /// Settles the decimal mark of a file with a header from the first row of `block` that is

@@ -117,15 +117,7 @@ pub fn read_windio_blade(path: &Path) -> Result<WindioBlade, IoError> {
 /// span that the file does not define, airfoil coordinates whose `x` and `y` differ in
 /// length, no airfoils placed.
 pub fn parse_windio_blade(text: &str, path: &Path) -> Result<WindioBlade, IoError> {
-    let turbine: Turbine =
-        serde_norway::from_str(strip_bom(text)).map_err(|e| match e.location() {
-            Some(at) => IoError::Parse {
-                path: path.to_path_buf(),
-                line: at.line(),
-                message: format!("not a windIO turbine: {e}"),
-            },
-            None => data_error(path, format!("not a windIO turbine: {e}")),
-        })?;
+    let turbine = parse_turbine(text, path)?;
     let blade = turbine.components.blade;
     let (Some(axis), Some(outer)) = (blade.reference_axis, blade.outer_shape) else {
         return Err(data_error(
@@ -166,46 +158,67 @@ pub fn parse_windio_blade(text: &str, path: &Path) -> Result<WindioBlade, IoErro
         .airfoils
         .iter()
         .enumerate()
-        .map(|(k, at)| {
-            let Some(airfoil) = turbine.airfoils.iter().find(|a| a.name == at.name) else {
-                return Err(data_error(
-                    path,
-                    format!(
-                        "components.blade.outer_shape.airfoils entry {} places the airfoil '{}', \
-                         which the file's airfoils do not define",
-                        k + 1,
-                        at.name
-                    ),
-                ));
-            };
-            let c = &airfoil.coordinates;
-            if c.x.len() != c.y.len() {
-                return Err(data_error(
-                    path,
-                    format!(
-                        "airfoil '{}': coordinates.x has {} entries and coordinates.y {}",
-                        at.name,
-                        c.x.len(),
-                        c.y.len()
-                    ),
-                ));
-            }
-            Ok(BladeSection {
-                airfoil: at.name.clone(),
-                position: at.spanwise_position,
-                profile: c
-                    .x
-                    .iter()
-                    .zip(&c.y)
-                    .map(|(&x, &y)| Point2::new([x, y]))
-                    .collect(),
-            })
-        })
+        .map(|(k, at)| blade_section(path, k, at, &turbine.airfoils))
         .collect::<Result<Vec<_>, IoError>>()?;
     Ok(WindioBlade {
         name: turbine.name,
         shape,
         sections,
+    })
+}
+
+/// The turbine of a windIO file, a YAML error named by its line.
+fn parse_turbine(text: &str, path: &Path) -> Result<Turbine, IoError> {
+    serde_norway::from_str(strip_bom(text)).map_err(|e| match e.location() {
+        Some(at) => IoError::Parse {
+            path: path.to_path_buf(),
+            line: at.line(),
+            message: format!("not a windIO turbine: {e}"),
+        },
+        None => data_error(path, format!("not a windIO turbine: {e}")),
+    })
+}
+
+/// The section of entry `k` of the blade's airfoil placements: the airfoil it names, among
+/// the file's `airfoils`, at its spanwise position.
+fn blade_section(
+    path: &Path,
+    k: usize,
+    at: &AirfoilAt,
+    airfoils: &[Airfoil],
+) -> Result<BladeSection, IoError> {
+    let Some(airfoil) = airfoils.iter().find(|a| a.name == at.name) else {
+        return Err(data_error(
+            path,
+            format!(
+                "components.blade.outer_shape.airfoils entry {} places the airfoil '{}', \
+                 which the file's airfoils do not define",
+                k + 1,
+                at.name
+            ),
+        ));
+    };
+    let c = &airfoil.coordinates;
+    if c.x.len() != c.y.len() {
+        return Err(data_error(
+            path,
+            format!(
+                "airfoil '{}': coordinates.x has {} entries and coordinates.y {}",
+                at.name,
+                c.x.len(),
+                c.y.len()
+            ),
+        ));
+    }
+    Ok(BladeSection {
+        airfoil: at.name.clone(),
+        position: at.spanwise_position,
+        profile: c
+            .x
+            .iter()
+            .zip(&c.y)
+            .map(|(&x, &y)| Point2::new([x, y]))
+            .collect(),
     })
 }
 

@@ -234,116 +234,175 @@ pub fn knot(out: &Output) -> Result<Vec<Finding>> {
         None,
         Vec::new(),
     )?;
+    let pictures = KnotPictures::new(&along, &across);
+    pictures.skeleton(out)?;
+    pictures.wireframe(out, &tube)?;
+    pictures.scene(out, &closed)?;
+    knot_findings(&tube, &along, &across)
+}
 
-    let camera = Camera::new();
-    let closed_line = |points: &[Point3]| -> Vec<Point3> {
-        points.iter().chain(points.first()).copied().collect()
-    };
-    let projected = |lines: &[Vec<Point3>]| -> Vec<Vec<Point2>> {
-        lines
-            .iter()
-            .map(|l| l.iter().map(|&p| camera.project(p)).collect())
-            .collect()
-    };
-    let along_3d: Vec<Vec<Point3>> = (0..along.rows())
-        .map(|i| closed_line(along.row(i)))
-        .collect();
-    let across_3d: Vec<Vec<Point3>> = (0..across.rows())
-        .map(|j| closed_line(across.row(j)))
-        .collect();
-    let (along_lines, across_lines) = (projected(&along_3d), projected(&across_3d));
-    let (red, blue) = ((200, 30, 30), (20, 60, 200));
-    let skeleton_groups = |width| {
+/// A closed polyline through `points`: the first point again at the end.
+fn closed_line(points: &[Point3]) -> Vec<Point3> {
+    points.iter().chain(points.first()).copied().collect()
+}
+
+const RED: (u8, u8, u8) = (200, 30, 30);
+const BLUE: (u8, u8, u8) = (20, 60, 200);
+
+/// The knot's skeleton as closed lines in space and seen by the pictures' camera.
+struct KnotPictures {
+    camera: Camera,
+    along_3d: Vec<Vec<Point3>>,
+    across_3d: Vec<Vec<Point3>>,
+    along_lines: Vec<Vec<Point2>>,
+    across_lines: Vec<Vec<Point2>>,
+    axes: (String, String),
+}
+
+impl KnotPictures {
+    fn new(along: &Grid<Point3>, across: &Grid<Point3>) -> Self {
+        let camera = Camera::new();
+        let along_3d: Vec<Vec<Point3>> = (0..along.rows())
+            .map(|i| closed_line(along.row(i)))
+            .collect();
+        let across_3d: Vec<Vec<Point3>> = (0..across.rows())
+            .map(|j| closed_line(across.row(j)))
+            .collect();
+        let (along_lines, across_lines) = (
+            project_lines(&camera, &along_3d),
+            project_lines(&camera, &across_3d),
+        );
+        let axes = View {
+            azimuth: AZIMUTH,
+            elevation: ELEVATION,
+        }
+        .axis_names();
+        KnotPictures {
+            camera,
+            along_3d,
+            across_3d,
+            along_lines,
+            across_lines,
+            axes,
+        }
+    }
+
+    fn skeleton_groups(&self, width: u32) -> [LineGroup<'_>; 2] {
         [
             LineGroup {
-                lines: &along_lines,
-                rgb: red,
+                lines: &self.along_lines,
+                rgb: RED,
                 width,
             },
             LineGroup {
-                lines: &across_lines,
-                rgb: blue,
+                lines: &self.across_lines,
+                rgb: BLUE,
                 width,
             },
         ]
-    };
-    let (picture_across, picture_up) = View {
-        azimuth: AZIMUTH,
-        elevation: ELEVATION,
     }
-    .axis_names();
-    write_lines_svg(
-        &out.file("knot-skeleton.svg"),
-        &LinesPlot {
-            title:
-                "Malozemov et al.'s fig. 3: the skeleton, 2 curves along (red) and 3 across (blue)",
-            axes: (&picture_across, &picture_up),
-            groups: &skeleton_groups(2),
-        },
-    )?;
 
+    fn skeleton(&self, out: &Output) -> Result<()> {
+        write_lines_svg(
+            &out.file("knot-skeleton.svg"),
+            &LinesPlot {
+                title:
+                    "Malozemov et al.'s fig. 3: the skeleton, 2 curves along (red) and 3 across (blue)",
+                axes: (&self.axes.0, &self.axes.1),
+                groups: &self.skeleton_groups(2),
+            },
+        )?;
+        Ok(())
+    }
+
+    /// The tube's lines of constant `p` and `q` behind the skeleton in bold.
+    fn wireframe(&self, out: &Output, tube: &TubeSurface<3>) -> Result<()> {
+        let (big_n1, big_n2) = tube.periods();
+        let values = tube.values();
+        let p_lines: Vec<Vec<Point3>> = (0..big_n1).map(|p| closed_line(values.row(p))).collect();
+        let q_lines: Vec<Vec<Point3>> = (0..big_n2)
+            .map(|q| {
+                let ring: Vec<Point3> = (0..big_n1).map(|p| *values.get(p, q)).collect();
+                closed_line(&ring)
+            })
+            .collect();
+        let [bold_along, bold_across] = self.skeleton_groups(3);
+        write_lines_svg(
+            &out.file("knot-tube-wireframe.svg"),
+            &LinesPlot {
+                title:
+                    "Malozemov et al.: the knotted tube by formula (3), wireframe, skeleton in bold",
+                axes: (&self.axes.0, &self.axes.1),
+                groups: &[
+                    LineGroup {
+                        lines: &project_lines(&self.camera, &q_lines),
+                        rgb: (170, 170, 170),
+                        width: 1,
+                    },
+                    LineGroup {
+                        lines: &project_lines(&self.camera, &p_lines),
+                        rgb: (110, 110, 110),
+                        width: 1,
+                    },
+                    bold_along,
+                    bold_across,
+                ],
+            },
+        )?;
+        Ok(())
+    }
+
+    fn scene(&self, out: &Output, closed: &Grid<Point3>) -> Result<()> {
+        let skeleton = [
+            SceneCurves {
+                label: "curves along",
+                lines: &self.along_3d,
+                rgb: RED,
+                width: 3.0,
+            },
+            SceneCurves {
+                label: "curves across",
+                lines: &self.across_3d,
+                rgb: BLUE,
+                width: 3.0,
+            },
+        ];
+        write_scene_svg(
+            &out.file("knot-tube.svg"),
+            &Scene {
+                title:
+                    "Malozemov et al.'s fig. 4: the knotted tube by formula (3), skeleton in bold",
+                mesh: SceneMesh {
+                    rows: closed.rows(),
+                    cols: closed.cols(),
+                    points: closed.as_slice(),
+                },
+                curves: &skeleton,
+                view: View {
+                    azimuth: AZIMUTH,
+                    elevation: ELEVATION,
+                },
+            },
+        )?;
+        Ok(())
+    }
+}
+
+fn project_lines(camera: &Camera, lines: &[Vec<Point3>]) -> Vec<Vec<Point2>> {
+    lines
+        .iter()
+        .map(|l| l.iter().map(|&p| camera.project(p)).collect())
+        .collect()
+}
+
+/// The skeleton's compatibility and how closely the tube passes through its curves
+/// (condition 2).
+fn knot_findings(
+    tube: &TubeSurface<3>,
+    along: &Grid<Point3>,
+    across: &Grid<Point3>,
+) -> Result<Vec<Finding>> {
     let (big_n1, big_n2) = tube.periods();
-    let values = tube.values();
-    let p_lines: Vec<Vec<Point3>> = (0..big_n1).map(|p| closed_line(values.row(p))).collect();
-    let q_lines: Vec<Vec<Point3>> = (0..big_n2)
-        .map(|q| {
-            let ring: Vec<Point3> = (0..big_n1).map(|p| *values.get(p, q)).collect();
-            closed_line(&ring)
-        })
-        .collect();
-    let [bold_along, bold_across] = skeleton_groups(3);
-    write_lines_svg(
-        &out.file("knot-tube-wireframe.svg"),
-        &LinesPlot {
-            title: "Malozemov et al.: the knotted tube by formula (3), wireframe, skeleton in bold",
-            axes: (&picture_across, &picture_up),
-            groups: &[
-                LineGroup {
-                    lines: &projected(&q_lines),
-                    rgb: (170, 170, 170),
-                    width: 1,
-                },
-                LineGroup {
-                    lines: &projected(&p_lines),
-                    rgb: (110, 110, 110),
-                    width: 1,
-                },
-                bold_along,
-                bold_across,
-            ],
-        },
-    )?;
-    let skeleton = [
-        SceneCurves {
-            label: "curves along",
-            lines: &along_3d,
-            rgb: red,
-            width: 3.0,
-        },
-        SceneCurves {
-            label: "curves across",
-            lines: &across_3d,
-            rgb: blue,
-            width: 3.0,
-        },
-    ];
-    write_scene_svg(
-        &out.file("knot-tube.svg"),
-        &Scene {
-            title: "Malozemov et al.'s fig. 4: the knotted tube by formula (3), skeleton in bold",
-            mesh: SceneMesh {
-                rows: closed.rows(),
-                cols: closed.cols(),
-                points: closed.as_slice(),
-            },
-            curves: &skeleton,
-            view: View {
-                azimuth: AZIMUTH,
-                elevation: ELEVATION,
-            },
-        },
-    )?;
-
     let along_error = (0..TUBE_M1)
         .flat_map(|i| (0..big_n2).map(move |q| (i, q)))
         .map(|(i, q)| tube.value(i * TUBE_N1, q).distance(*along.get(i, q)))
@@ -356,7 +415,7 @@ pub fn knot(out: &Output) -> Result<Vec<Finding>> {
         Finding::new(
             "002 knotted tube, 2 x 5 by 3 x 40",
             "skeleton max |f_i(j n2) - g_j(i n1)|",
-            compatibility_residual(&along, &across, TUBE_N1, TUBE_N2)?,
+            compatibility_residual(along, across, TUBE_N1, TUBE_N2)?,
         ),
         Finding::new(
             "002 knotted tube, 2 x 5 by 3 x 40",

@@ -8,7 +8,7 @@ use super::common::{Finding, Output};
 use crate::output::samples::sample_curve;
 use anyhow::{Context, Result};
 use karkas::fit::polyline_crossings;
-use karkas::fit::{fit_curve, FitOptions, PenaltyRule};
+use karkas::fit::{fit_curve, CurveFit, FitOptions, PenaltyRule};
 use karkas::{Curve, Point2};
 use karkas_io::svg::{write_fit_svg, FitPlot};
 use karkas_io::write::{write_atomic, write_curve_csv};
@@ -39,6 +39,8 @@ const HYDROFOIL: [(f64, f64, f64); 20] = [
 const KNOTS: [f64; 5] = [0.0, 0.445, 0.449, 0.587, 1.0];
 const EPS: f64 = 0.01;
 
+const EXAMPLE: &str = "003 hydrofoil, 5 knots, eps = 0.01";
+
 /// Runs the example into `out`.
 pub fn run(out: &Output) -> Result<Vec<Finding>> {
     let points: Vec<Point2> = HYDROFOIL
@@ -64,7 +66,20 @@ pub fn run(out: &Output) -> Result<Vec<Finding>> {
         },
     )
     .context("hydrofoil fit")?;
-    let example = "003 hydrofoil, 5 knots, eps = 0.01";
+    let per_point = write_deviations(out, &seed, &active)?;
+    write_fit(out, &points, &active)?;
+    let mut findings = summary(&points, &seed, &active);
+    findings.extend(per_point);
+    Ok(findings)
+}
+
+/// The table of each point's deviation under both penalties beside the paper's, and the
+/// findings of the active bound's.
+fn write_deviations(
+    out: &Output,
+    seed: &CurveFit<2>,
+    active: &CurveFit<2>,
+) -> Result<Vec<Finding>> {
     let mut table = String::from("point,x,y,paper_dR,t,distance_seed_p,distance_active_p\n");
     let mut per_point = Vec::with_capacity(HYDROFOIL.len());
     for (i, &(x, y, paper)) in HYDROFOIL.iter().enumerate() {
@@ -77,7 +92,7 @@ pub fn run(out: &Output) -> Result<Vec<Finding>> {
         ));
         per_point.push(
             Finding::new(
-                example,
+                EXAMPLE,
                 format!(
                     "deviation of point {} ({x:.2}, {y:.2}), bound active",
                     i + 1
@@ -91,6 +106,11 @@ pub fn run(out: &Output) -> Result<Vec<Finding>> {
     write_atomic(&out.file("hydrofoil-fit-deviations.csv"), |w| {
         w.write_all(table.as_bytes())
     })?;
+    Ok(per_point)
+}
+
+/// The fitted curve's samples and its picture with the points and their feet.
+fn write_fit(out: &Output, points: &[Point2], active: &CurveFit<2>) -> Result<()> {
     let n = 1000;
     let (ts, samples) = sample_curve(&active.spline, n);
     write_curve_csv(&out.file("hydrofoil-fit.csv"), &ts, &samples)?;
@@ -104,12 +124,17 @@ pub fn run(out: &Output) -> Result<Vec<Finding>> {
         &FitPlot {
             title: "Pavlov's printed hydrofoil (its points cross themselves), eps = 0.01",
             curve: &samples,
-            points: &points,
+            points,
             feet: &feet,
             reference: &[],
         },
     )?;
-    let crossings = polyline_crossings(&points);
+    Ok(())
+}
+
+/// The points' self-crossings, and the deviations, jumps and penalties of both fits.
+fn summary(points: &[Point2], seed: &CurveFit<2>, active: &CurveFit<2>) -> Vec<Finding> {
+    let crossings = polyline_crossings(points);
     let places: Vec<String> = crossings
         .iter()
         .map(|c| {
@@ -124,9 +149,9 @@ pub fn run(out: &Output) -> Result<Vec<Finding>> {
             )
         })
         .collect();
-    let mut findings = vec![
+    vec![
         Finding::new(
-            example,
+            EXAMPLE,
             format!(
                 "self-crossings of the points' polygon (segments {})",
                 places.join("; ")
@@ -134,26 +159,24 @@ pub fn run(out: &Output) -> Result<Vec<Finding>> {
             crossings.len() as f64,
         ),
         Finding::new(
-            example,
+            EXAMPLE,
             "max deviation, bound active",
             active.max_distance(),
         )
         .paper(0.71),
         Finding::new(
-            example,
+            EXAMPLE,
             "max deviation, Pavlov's p = H(q*)/eps",
             seed.max_distance(),
         ),
         Finding::new(
-            example,
+            EXAMPLE,
             "f = sum J_L^2 achieved (bound active)",
             active.jump_sum,
         ),
-        Finding::new(example, "penalty p (bound active)", active.penalty),
-        Finding::new(example, "Pavlov's p = H(q*)/eps", seed.penalty),
-    ];
-    findings.extend(per_point);
-    Ok(findings)
+        Finding::new(EXAMPLE, "penalty p (bound active)", active.penalty),
+        Finding::new(EXAMPLE, "Pavlov's p = H(q*)/eps", seed.penalty),
+    ]
 }
 
 #[cfg(test)]

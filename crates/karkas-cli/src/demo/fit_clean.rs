@@ -72,7 +72,16 @@ pub fn clean_fit() -> Result<CleanFit> {
 /// Runs the example into `out`.
 pub fn run(out: &Output) -> Result<Vec<Finding>> {
     let clean = clean_fit()?;
-    let fit = &clean.fit;
+    let per_point = write_point_table(out, &clean.fit)?;
+    write_fit_pictures(out, &clean)?;
+    let mut findings = summary(&clean);
+    findings.extend(per_point);
+    Ok(findings)
+}
+
+/// The table of each point's side, chord position and deviation, and the findings of the
+/// deviations.
+fn write_point_table(out: &Output, fit: &CurveFit<2>) -> Result<Vec<Finding>> {
     let sampled = sampled_points();
     let mut table = String::from("point,x,y,surface,chord_position,t,distance\n");
     let mut per_point = Vec::with_capacity(sampled.len());
@@ -101,6 +110,13 @@ pub fn run(out: &Output) -> Result<Vec<Finding>> {
     write_atomic(&out.file("hydrofoil-clean-points.csv"), |w| {
         w.write_all(table.as_bytes())
     })?;
+    Ok(per_point)
+}
+
+/// The fitted curve's samples, the true contour, and the pictures of both with the points,
+/// whole and at the nose.
+fn write_fit_pictures(out: &Output, clean: &CleanFit) -> Result<()> {
+    let fit = &clean.fit;
     let (ts, samples) = sample_curve(&fit.spline, 1000);
     write_curve_csv(&out.file("hydrofoil-clean-fit.csv"), &ts, &samples)?;
     let mut truth_csv = String::from("x,y\n");
@@ -145,8 +161,15 @@ pub fn run(out: &Output) -> Result<Vec<Finding>> {
             reference: &nose(&clean.truth),
         },
     )?;
+    Ok(())
+}
+
+/// The deviations of the points, the distances between the fitted curve and the truth both
+/// ways, the jump sum and the penalty.
+fn summary(clean: &CleanFit) -> Vec<Finding> {
+    let fit = &clean.fit;
     let at = |p: Point2| format!("({:.1}, {:.1})", p[0], p[1]);
-    let mut findings = vec![
+    vec![
         Finding::new(EXAMPLE, "max point deviation", fit.max_distance()).paper(0.71),
         Finding::new(EXAMPLE, "RMS point deviation", fit.rms_distance()),
         Finding::new(
@@ -167,9 +190,7 @@ pub fn run(out: &Output) -> Result<Vec<Finding>> {
         ),
         Finding::new(EXAMPLE, "f = sum J_L^2 achieved (eps = 0.01)", fit.jump_sum),
         Finding::new(EXAMPLE, "penalty p", fit.penalty),
-    ];
-    findings.extend(per_point);
-    Ok(findings)
+    ]
 }
 
 #[cfg(test)]

@@ -8,7 +8,7 @@ use crate::output::samples::{sample_curve, sample_surface};
 use anyhow::Result;
 use karkas::ll::{LlCurve, LlSurface};
 use karkas::section::{Plane, Section, SectionOptions, Sectioner};
-use karkas::{Curve, Point2, Point3, Surface};
+use karkas::{Curve, Grid, Point2, Point3, Surface};
 use karkas_io::obj::write_surface_obj;
 use karkas_io::scene::{write_scene_png, write_scene_svg, Scene, SceneCurves, SceneMesh, View};
 use karkas_io::svg::{write_curve_svg, write_lines_svg, CurvePlot, LineGroup, LinesPlot};
@@ -119,92 +119,10 @@ pub fn aircraft(out: &Output) -> Result<Vec<Finding>> {
     let grid = aircraft_15x31();
     write_text(&out.file("aircraft-15x31.csv"), &grid_csv(&grid))?;
     let surface = LlSurface::new(&grid, ORDER, false, false)?;
+    let sections = AircraftSections::cut(&surface, &grid)?;
+    sections.write_views(out, &surface, &grid)?;
+    sections.write_body_plan(out)?;
     let (au, av) = (surface.axis_u(), surface.axis_v());
-
-    // Sections by true planes: x = const (the paper's fast path, formula (21)) and
-    // y = const (traced). Two cells per LL segment for the start points.
-    let options = SectionOptions {
-        cells: (2 * grid.rows(), 2 * grid.cols()),
-        ..SectionOptions::default()
-    };
-    let sectioner = Sectioner::new(&surface, &options)?;
-    let mut plane_error = 0.0f64;
-    let mut all_fast = true;
-    let mut cut = |axis: usize, value: f64| -> Result<Vec<Vec<Point3>>> {
-        let plane = Plane::coordinate(axis, value)?;
-        let section = sectioner.plane(&plane);
-        all_fast &= axis != 0 || section.fast_path;
-        for p in section.curves.iter().flat_map(|c| &c.points) {
-            plane_error = plane_error.max((p[axis] - value).abs());
-        }
-        Ok(polylines(&section))
-    };
-    let mut stations = Vec::new();
-    for i in 0..STATIONS {
-        stations.extend(cut(0, grid.get(i, 0)[0])?);
-    }
-    let mut buttocks = Vec::new();
-    for y in buttock_lines() {
-        buttocks.extend(cut(1, y)?);
-    }
-    let (nu, nv) = (141, 121);
-    let (_, _, mesh) = sample_surface(&surface, nu, nv);
-    write_surface_obj(&out.file("aircraft-ll5.obj"), nu, nv, &mesh)?;
-    let scene = Scene {
-        title: "Aulchenko et al.: LL surface, L = 5, of the aircraft-like body (right half): \
-                15 sections x = const, 11 sections y = const",
-        mesh: SceneMesh {
-            rows: nu,
-            cols: nv,
-            points: &mesh,
-        },
-        curves: &[
-            SceneCurves {
-                label: "x = 0, 1, ..., 14",
-                lines: &stations,
-                rgb: (20, 60, 200),
-                width: 1.6,
-            },
-            SceneCurves {
-                label: "y = 0.25, 0.75, ..., 5.25",
-                lines: &buttocks,
-                rgb: (200, 40, 30),
-                width: 1.6,
-            },
-        ],
-        view: AIRCRAFT_VIEW,
-    };
-    write_scene_svg(&out.file("aircraft-ll5-view.svg"), &scene)?;
-    write_viewer(
-        out,
-        "aircraft-ll5.html",
-        "Aulchenko et al.: LL surface, L = 5, of the aircraft-like body, with its sections",
-        (nu, nv),
-        &mesh,
-        Some(grid.clone()),
-        vec![
-            ("sections x = const", stations.clone()),
-            ("sections y = const", buttocks.clone()),
-        ],
-    )?;
-    write_scene_png(&out.file("aircraft-ll5-view.png"), &scene)?;
-    let body_plan: Vec<Vec<Point2>> = stations
-        .iter()
-        .map(|s| s.iter().map(|p| Point2::new([p[1], p[2]])).collect())
-        .collect();
-    write_lines_svg(
-        &out.file("aircraft-ll5-sections.svg"),
-        &LinesPlot {
-            title: "Aulchenko et al.: the 15 sections x = const (body plan, y-z)",
-            axes: ("y", "z"),
-            groups: &[LineGroup {
-                lines: &body_plan,
-                rgb: (20, 60, 200),
-                width: 1,
-            }],
-        },
-    )?;
-
     let corner_error = [(0, 0), (0, 30), (14, 0), (14, 30)]
         .iter()
         .map(|&(i, j)| {
@@ -222,13 +140,13 @@ pub fn aircraft(out: &Output) -> Result<Vec<Finding>> {
         Finding::new(
             "000 aircraft sections",
             "max distance of section points from their plane",
-            plane_error,
+            sections.plane_error,
         ),
         Finding::new(
             "000 aircraft sections",
             "pieces: x = const (all by the fast path (21))",
-            if all_fast {
-                stations.len() as f64
+            if sections.all_fast {
+                sections.stations.len() as f64
             } else {
                 f64::NAN
             },
@@ -236,7 +154,123 @@ pub fn aircraft(out: &Output) -> Result<Vec<Finding>> {
         Finding::new(
             "000 aircraft sections",
             "pieces: y = const (traced)",
-            buttocks.len() as f64,
+            sections.buttocks.len() as f64,
         ),
     ])
+}
+
+/// The aircraft's sections by true planes: x = const (the paper's fast path, formula (21))
+/// and y = const (traced).
+struct AircraftSections {
+    stations: Vec<Vec<Point3>>,
+    buttocks: Vec<Vec<Point3>>,
+    /// The largest distance of a section point from its plane.
+    plane_error: f64,
+    /// Whether every x = const section took the fast path.
+    all_fast: bool,
+}
+
+impl AircraftSections {
+    /// Cuts at the grid's stations and the buttock lines, two cells per LL segment for the
+    /// start points.
+    fn cut(surface: &LlSurface<3>, grid: &Grid<Point3>) -> Result<Self> {
+        let options = SectionOptions {
+            cells: (2 * grid.rows(), 2 * grid.cols()),
+            ..SectionOptions::default()
+        };
+        let sectioner = Sectioner::new(surface, &options)?;
+        let mut plane_error = 0.0f64;
+        let mut all_fast = true;
+        let mut cut = |axis: usize, value: f64| -> Result<Vec<Vec<Point3>>> {
+            let plane = Plane::coordinate(axis, value)?;
+            let section = sectioner.plane(&plane);
+            all_fast &= axis != 0 || section.fast_path;
+            for p in section.curves.iter().flat_map(|c| &c.points) {
+                plane_error = plane_error.max((p[axis] - value).abs());
+            }
+            Ok(polylines(&section))
+        };
+        let mut stations = Vec::new();
+        for i in 0..STATIONS {
+            stations.extend(cut(0, grid.get(i, 0)[0])?);
+        }
+        let mut buttocks = Vec::new();
+        for y in buttock_lines() {
+            buttocks.extend(cut(1, y)?);
+        }
+        Ok(AircraftSections {
+            stations,
+            buttocks,
+            plane_error,
+            all_fast,
+        })
+    }
+
+    /// The surface with its sections: mesh, picture, viewer.
+    fn write_views(&self, out: &Output, surface: &LlSurface<3>, grid: &Grid<Point3>) -> Result<()> {
+        let (nu, nv) = (141, 121);
+        let (_, _, mesh) = sample_surface(surface, nu, nv);
+        write_surface_obj(&out.file("aircraft-ll5.obj"), nu, nv, &mesh)?;
+        let scene = Scene {
+            title: "Aulchenko et al.: LL surface, L = 5, of the aircraft-like body (right half): \
+                    15 sections x = const, 11 sections y = const",
+            mesh: SceneMesh {
+                rows: nu,
+                cols: nv,
+                points: &mesh,
+            },
+            curves: &[
+                SceneCurves {
+                    label: "x = 0, 1, ..., 14",
+                    lines: &self.stations,
+                    rgb: (20, 60, 200),
+                    width: 1.6,
+                },
+                SceneCurves {
+                    label: "y = 0.25, 0.75, ..., 5.25",
+                    lines: &self.buttocks,
+                    rgb: (200, 40, 30),
+                    width: 1.6,
+                },
+            ],
+            view: AIRCRAFT_VIEW,
+        };
+        write_scene_svg(&out.file("aircraft-ll5-view.svg"), &scene)?;
+        write_viewer(
+            out,
+            "aircraft-ll5.html",
+            "Aulchenko et al.: LL surface, L = 5, of the aircraft-like body, with its sections",
+            (nu, nv),
+            &mesh,
+            Some(grid.clone()),
+            vec![
+                ("sections x = const", self.stations.clone()),
+                ("sections y = const", self.buttocks.clone()),
+            ],
+        )?;
+        write_scene_png(&out.file("aircraft-ll5-view.png"), &scene)?;
+        Ok(())
+    }
+
+    /// The body plan: the x = const sections seen along x.
+    fn write_body_plan(&self, out: &Output) -> Result<()> {
+        let body_plan: Vec<Vec<Point2>> = self
+            .stations
+            .iter()
+            .map(|s| s.iter().map(|p| Point2::new([p[1], p[2]])).collect())
+            .collect();
+        write_lines_svg(
+            &out.file("aircraft-ll5-sections.svg"),
+            &LinesPlot {
+                title: "Aulchenko et al.: the 15 sections x = const (body plan, y-z)",
+                axes: ("y", "z"),
+                groups: &[LineGroup {
+                    lines: &body_plan,
+                    rgb: (20, 60, 200),
+                    width: 1,
+                }],
+            },
+        )?;
+        Ok(())
+    }
 }

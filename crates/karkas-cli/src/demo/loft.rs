@@ -256,59 +256,7 @@ pub fn run(out: &Output) -> Result<Vec<Finding>> {
     let (placement, crossings) = monotone_violations(&loft);
     let (rows, cols) = loft.control_counts();
 
-    let (nu, nv) = (61, 121);
-    let (_, _, mesh) = sample_surface(&loft, nu, nv);
-    let sections: Vec<Vec<Point3>> = loft
-        .stations()
-        .iter()
-        .map(|&u| {
-            (0..nv)
-                .map(|j| loft.eval(u, j as f64 / (nv - 1) as f64))
-                .collect()
-        })
-        .collect();
-    let edges: Vec<Vec<Point3>> = [0.0, 0.5, 1.0]
-        .iter()
-        .map(|&v| {
-            (0..nu)
-                .map(|i| loft.eval(span_u(&loft, i, nu), v))
-                .collect()
-        })
-        .collect();
-    let scene = Scene {
-        title: "The shipped wing lofted through its 3 sections (monotone spanwise rule)",
-        mesh: SceneMesh {
-            rows: nu,
-            cols: nv,
-            points: &mesh,
-        },
-        curves: &[
-            SceneCurves {
-                label: "sections",
-                lines: &sections,
-                rgb: (200, 40, 30),
-                width: 1.6,
-            },
-            SceneCurves {
-                label: "leading and trailing edges",
-                lines: &edges,
-                rgb: (20, 60, 200),
-                width: 1.2,
-            },
-        ],
-        view: WING_VIEW,
-    };
-    write_scene_svg(&out.file("loft-wing-view.svg"), &scene)?;
-    write_viewer(
-        out,
-        "loft-wing.html",
-        "The shipped wing lofted through its 3 sections",
-        (nu, nv),
-        &mesh,
-        None,
-        vec![("sections", sections.clone()), ("edges", edges.clone())],
-    )?;
-
+    write_wing_views(out, &loft)?;
     let e = EXAMPLE;
     Ok(vec![
         Finding::new(e, "sections", profiles.len() as f64),
@@ -353,6 +301,59 @@ pub fn run(out: &Output) -> Result<Vec<Finding>> {
         ),
         Finding::new(e, "loft time, ms", ms).detail(),
     ])
+}
+
+/// The wing's mesh with its sections and edges: picture and viewer.
+fn write_wing_views(out: &Output, loft: &Loft) -> Result<()> {
+    let (nu, nv) = (61, 121);
+    let (_, _, mesh) = sample_surface(loft, nu, nv);
+    let sections: Vec<Vec<Point3>> = loft
+        .stations()
+        .iter()
+        .map(|&u| {
+            (0..nv)
+                .map(|j| loft.eval(u, j as f64 / (nv - 1) as f64))
+                .collect()
+        })
+        .collect();
+    let edges: Vec<Vec<Point3>> = [0.0, 0.5, 1.0]
+        .iter()
+        .map(|&v| (0..nu).map(|i| loft.eval(span_u(loft, i, nu), v)).collect())
+        .collect();
+    let scene = Scene {
+        title: "The shipped wing lofted through its 3 sections (monotone spanwise rule)",
+        mesh: SceneMesh {
+            rows: nu,
+            cols: nv,
+            points: &mesh,
+        },
+        curves: &[
+            SceneCurves {
+                label: "sections",
+                lines: &sections,
+                rgb: (200, 40, 30),
+                width: 1.6,
+            },
+            SceneCurves {
+                label: "leading and trailing edges",
+                lines: &edges,
+                rgb: (20, 60, 200),
+                width: 1.2,
+            },
+        ],
+        view: WING_VIEW,
+    };
+    write_scene_svg(&out.file("loft-wing-view.svg"), &scene)?;
+    write_viewer(
+        out,
+        "loft-wing.html",
+        "The shipped wing lofted through its 3 sections",
+        (nu, nv),
+        &mesh,
+        None,
+        vec![("sections", sections.clone()), ("edges", edges.clone())],
+    )?;
+    Ok(())
 }
 
 /// The `i`-th of `n` stations spread evenly over the loft's span.

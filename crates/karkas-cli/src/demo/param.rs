@@ -17,6 +17,7 @@ use karkas_io::obj::write_surface_obj;
 use karkas_io::scene::{write_scene_svg, Scene, SceneCurves, SceneMesh, View};
 use karkas_io::write::write_grid_csv;
 use rayon::prelude::*;
+use std::fmt::Write as _;
 
 /// Runs the seven rows of the paper's table and the extra helix frame into `out`.
 pub fn run(out: &Output) -> Result<Vec<Finding>> {
@@ -200,81 +201,18 @@ fn turn_name(turn: Turn) -> &'static str {
 /// orders of magnitude), one polyline per surface and series (each starting at its surface's
 /// 0 degree frame), the paper's printed errors as hollow squares.
 fn sweep_chart(frames: &[SweepFrame], errors: &[f64]) -> String {
-    use std::fmt::Write as _;
-    let (width, height, left, right, top, bottom) = (760.0, 440.0, 70.0, 230.0, 40.0, 50.0);
-    let (low, high) = errors
-        .iter()
-        .chain(frames.iter().filter_map(|f| f.paper_error.as_ref()))
-        .filter(|e| **e > 0.0 && e.is_finite())
-        .fold((f64::INFINITY, 0.0f64), |(lo, hi), &e| {
-            (lo.min(e), hi.max(e))
-        });
-    // Whole decades around the figures.
-    let (decade_low, decade_high) = if low <= high {
-        let a = low.log10().floor();
-        (a, high.log10().ceil().max(a + 1.0))
-    } else {
-        (-3.0, 0.0)
-    };
-    let x = |deg: f64| left + (width - left - right) * deg / 90.0;
-    let y = |e: f64| {
-        let t = (e.max(1e-300).log10() - decade_low) / (decade_high - decade_low);
-        height - bottom - (height - top - bottom) * t
-    };
+    let plot = SweepPlot::around(frames, errors);
     let mut svg = format!(
-        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{width}\" height=\"{height}\" \
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{}\" height=\"{}\" \
          font-family=\"sans-serif\" font-size=\"12\">\n<rect width=\"100%\" height=\"100%\" \
-         fill=\"white\"/>\n<text x=\"{left}\" y=\"22\" font-size=\"14\">Kuznetsov and \
+         fill=\"white\"/>\n<text x=\"{}\" y=\"22\" font-size=\"14\">Kuznetsov and \
          Filatov, figures 3.2 and 3.3: Hausdorff error of the 5 x 9 frame against the turning \
-         angle</text>\n"
+         angle</text>\n",
+        SweepPlot::WIDTH,
+        SweepPlot::HEIGHT,
+        SweepPlot::LEFT
     );
-    // Axes, ticks every 15 degrees and at 1, 2 and 5 of every decade of the error.
-    let (x0, x1) = (x(0.0), x(90.0));
-    let (y0, y1) = (y(10f64.powf(decade_low)), y(10f64.powf(decade_high)));
-    let _ = writeln!(
-        svg,
-        "<path d=\"M{x0},{y1} L{x0},{y0} L{x1},{y0}\" stroke=\"black\" fill=\"none\"/>"
-    );
-    for deg in (0..=90).step_by(15) {
-        let px = x(f64::from(deg));
-        let _ = writeln!(
-            svg,
-            "<line x1=\"{px}\" y1=\"{y0}\" x2=\"{px}\" y2=\"{}\" stroke=\"black\"/>\
-             <text x=\"{px}\" y=\"{}\" text-anchor=\"middle\">{deg}</text>",
-            y0 + 5.0,
-            y0 + 18.0
-        );
-    }
-    let mut decade = decade_low;
-    while decade <= decade_high {
-        for mantissa in [1.0, 2.0, 5.0] {
-            let e = mantissa * 10f64.powf(decade);
-            if decade == decade_high && mantissa > 1.0 {
-                break;
-            }
-            let py = y(e);
-            let digits = (-decade).max(0.0) as usize;
-            let _ = writeln!(
-                svg,
-                "<line x1=\"{}\" y1=\"{py}\" x2=\"{x0}\" y2=\"{py}\" stroke=\"black\"/>\
-                 <text x=\"{}\" y=\"{}\" text-anchor=\"end\">{e:.digits$}</text>",
-                x0 - 5.0,
-                x0 - 8.0,
-                py + 4.0,
-            );
-        }
-        decade += 1.0;
-    }
-    let _ = writeln!(
-        svg,
-        "<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">angle to the lines of curvature, \
-         degrees</text>\n<text x=\"16\" y=\"{}\" transform=\"rotate(-90 16 {})\" \
-         text-anchor=\"middle\">Hausdorff error (logarithmic scale)</text>",
-        0.5 * (x0 + x1),
-        height - 10.0,
-        0.5 * (y0 + y1),
-        0.5 * (y0 + y1)
-    );
+    plot.axes(&mut svg);
     let series = [
         (
             SeedSurface::Cylinder,
@@ -302,11 +240,135 @@ fn sweep_chart(frames: &[SweepFrame], errors: &[f64]) -> String {
         ),
     ];
     for (k, (surface, turn, colour, name)) in series.into_iter().enumerate() {
+        plot.series(&mut svg, frames, errors, (surface, turn), colour);
+        plot.legend_entry(&mut svg, k, colour, name);
+    }
+    plot.zero_degree_paper_points(&mut svg, frames, errors);
+    let x1 = plot.x(90.0);
+    let _ = writeln!(
+        svg,
+        "<rect x=\"{}\" y=\"{}\" width=\"8\" height=\"8\" stroke=\"black\" fill=\"none\"/>\
+         <text x=\"{}\" y=\"{}\">the paper's printed error</text>\n</svg>",
+        x1 + 28.0,
+        SweepPlot::TOP + 80.0 - 4.0,
+        x1 + 50.0,
+        SweepPlot::TOP + 84.0
+    );
+    svg
+}
+
+/// The sweep chart's frame: angle across, whole decades of the error up.
+struct SweepPlot {
+    decade_low: f64,
+    decade_high: f64,
+}
+
+impl SweepPlot {
+    const WIDTH: f64 = 760.0;
+    const HEIGHT: f64 = 440.0;
+    const LEFT: f64 = 70.0;
+    const RIGHT: f64 = 230.0;
+    const TOP: f64 = 40.0;
+    const BOTTOM: f64 = 50.0;
+
+    /// Whole decades around the errors and the paper's figures.
+    fn around(frames: &[SweepFrame], errors: &[f64]) -> Self {
+        let (low, high) = errors
+            .iter()
+            .chain(frames.iter().filter_map(|f| f.paper_error.as_ref()))
+            .filter(|e| **e > 0.0 && e.is_finite())
+            .fold((f64::INFINITY, 0.0f64), |(lo, hi), &e| {
+                (lo.min(e), hi.max(e))
+            });
+        let (decade_low, decade_high) = if low <= high {
+            let a = low.log10().floor();
+            (a, high.log10().ceil().max(a + 1.0))
+        } else {
+            (-3.0, 0.0)
+        };
+        SweepPlot {
+            decade_low,
+            decade_high,
+        }
+    }
+
+    fn x(&self, deg: f64) -> f64 {
+        Self::LEFT + (Self::WIDTH - Self::LEFT - Self::RIGHT) * deg / 90.0
+    }
+
+    fn y(&self, e: f64) -> f64 {
+        let t = (e.max(1e-300).log10() - self.decade_low) / (self.decade_high - self.decade_low);
+        Self::HEIGHT - Self::BOTTOM - (Self::HEIGHT - Self::TOP - Self::BOTTOM) * t
+    }
+
+    /// Axes, ticks every 15 degrees and at 1, 2 and 5 of every decade of the error.
+    fn axes(&self, svg: &mut String) {
+        let (x0, x1) = (self.x(0.0), self.x(90.0));
+        let (y0, y1) = (
+            self.y(10f64.powf(self.decade_low)),
+            self.y(10f64.powf(self.decade_high)),
+        );
+        let _ = writeln!(
+            svg,
+            "<path d=\"M{x0},{y1} L{x0},{y0} L{x1},{y0}\" stroke=\"black\" fill=\"none\"/>"
+        );
+        for deg in (0..=90).step_by(15) {
+            let px = self.x(f64::from(deg));
+            let _ = writeln!(
+                svg,
+                "<line x1=\"{px}\" y1=\"{y0}\" x2=\"{px}\" y2=\"{}\" stroke=\"black\"/>\
+                 <text x=\"{px}\" y=\"{}\" text-anchor=\"middle\">{deg}</text>",
+                y0 + 5.0,
+                y0 + 18.0
+            );
+        }
+        let mut decade = self.decade_low;
+        while decade <= self.decade_high {
+            for mantissa in [1.0, 2.0, 5.0] {
+                let e = mantissa * 10f64.powf(decade);
+                if decade == self.decade_high && mantissa > 1.0 {
+                    break;
+                }
+                let py = self.y(e);
+                let digits = (-decade).max(0.0) as usize;
+                let _ = writeln!(
+                    svg,
+                    "<line x1=\"{}\" y1=\"{py}\" x2=\"{x0}\" y2=\"{py}\" stroke=\"black\"/>\
+                     <text x=\"{}\" y=\"{}\" text-anchor=\"end\">{e:.digits$}</text>",
+                    x0 - 5.0,
+                    x0 - 8.0,
+                    py + 4.0,
+                );
+            }
+            decade += 1.0;
+        }
+        let _ = writeln!(
+            svg,
+            "<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">angle to the lines of curvature, \
+             degrees</text>\n<text x=\"16\" y=\"{}\" transform=\"rotate(-90 16 {})\" \
+             text-anchor=\"middle\">Hausdorff error (logarithmic scale)</text>",
+            0.5 * (x0 + x1),
+            Self::HEIGHT - 10.0,
+            0.5 * (y0 + y1),
+            0.5 * (y0 + y1)
+        );
+    }
+
+    /// One surface's series: its polyline from its 0 degree frame, and the paper's printed
+    /// errors as hollow squares.
+    fn series(
+        &self,
+        svg: &mut String,
+        frames: &[SweepFrame],
+        errors: &[f64],
+        (surface, turn): (SeedSurface, Turn),
+        colour: &str,
+    ) {
         let points: Vec<(f64, f64)> = frames
             .iter()
             .zip(errors)
             .filter(|(f, _)| f.surface == surface && (f.turn == turn || f.turn == Turn::None))
-            .map(|(f, &e)| (x(f64::from(f.degrees)), y(e)))
+            .map(|(f, &e)| (self.x(f64::from(f.degrees)), self.y(e)))
             .collect();
         let path: Vec<String> = points
             .iter()
@@ -328,7 +390,7 @@ fn sweep_chart(frames: &[SweepFrame], errors: &[f64]) -> String {
             .filter(|f| f.surface == surface && f.turn == turn)
         {
             if let Some(p) = f.paper_error {
-                let (a, b) = (x(f64::from(f.degrees)), y(p));
+                let (a, b) = (self.x(f64::from(f.degrees)), self.y(p));
                 let _ = writeln!(
                     svg,
                     "<rect x=\"{:.1}\" y=\"{:.1}\" width=\"8\" height=\"8\" stroke=\"{colour}\" \
@@ -338,7 +400,12 @@ fn sweep_chart(frames: &[SweepFrame], errors: &[f64]) -> String {
                 );
             }
         }
-        let ly = top + 20.0 * k as f64;
+    }
+
+    /// Line `k` of the legend.
+    fn legend_entry(&self, svg: &mut String, k: usize, colour: &str, name: &str) {
+        let x1 = self.x(90.0);
+        let ly = Self::TOP + 20.0 * k as f64;
         let _ = writeln!(
             svg,
             "<line x1=\"{}\" y1=\"{ly}\" x2=\"{}\" y2=\"{ly}\" stroke=\"{colour}\" \
@@ -349,30 +416,23 @@ fn sweep_chart(frames: &[SweepFrame], errors: &[f64]) -> String {
             ly + 4.0
         );
     }
-    // The 0 degree frames' paper points (shared by both series of a surface).
-    for (f, _) in frames
-        .iter()
-        .zip(errors)
-        .filter(|(f, _)| f.turn == Turn::None)
-    {
-        if let Some(p) = f.paper_error {
-            let _ = writeln!(
-                svg,
-                "<rect x=\"{:.1}\" y=\"{:.1}\" width=\"8\" height=\"8\" stroke=\"black\" \
-                 stroke-width=\"1.5\" fill=\"none\"/>",
-                x(0.0) - 4.0,
-                y(p) - 4.0
-            );
+
+    /// The 0 degree frames' paper points (shared by both series of a surface).
+    fn zero_degree_paper_points(&self, svg: &mut String, frames: &[SweepFrame], errors: &[f64]) {
+        for (f, _) in frames
+            .iter()
+            .zip(errors)
+            .filter(|(f, _)| f.turn == Turn::None)
+        {
+            if let Some(p) = f.paper_error {
+                let _ = writeln!(
+                    svg,
+                    "<rect x=\"{:.1}\" y=\"{:.1}\" width=\"8\" height=\"8\" stroke=\"black\" \
+                     stroke-width=\"1.5\" fill=\"none\"/>",
+                    self.x(0.0) - 4.0,
+                    self.y(p) - 4.0
+                );
+            }
         }
     }
-    let _ = writeln!(
-        svg,
-        "<rect x=\"{}\" y=\"{}\" width=\"8\" height=\"8\" stroke=\"black\" fill=\"none\"/>\
-         <text x=\"{}\" y=\"{}\">the paper's printed error</text>\n</svg>",
-        x1 + 28.0,
-        top + 80.0 - 4.0,
-        x1 + 50.0,
-        top + 84.0
-    );
-    svg
 }

@@ -145,25 +145,7 @@ fn relay_case(
     // A dense input's re-laid frame lies elsewhere on the surface than the table's
     // principal frame: it is compared with the principal frame of its own region.
     let principal = if dense { same_region } else { principal };
-    let words: Vec<&str> = row
-        .label
-        .split(|c: char| !c.is_ascii_alphanumeric())
-        .filter(|w| !w.is_empty())
-        .collect();
-    let (rows, cols) = (input.nodes.rows(), input.nodes.cols());
-    let (name, example, label) = if dense {
-        (
-            format!("004-relaid-{}-from-{rows}x{cols}", words.join("-")),
-            format!("004 {}, re-laid from {rows} x {cols}", row.label),
-            format!("{}, re-laid from {rows} x {cols} nodes", row.label),
-        )
-    } else {
-        (
-            format!("004-relaid-{}", words.join("-")),
-            format!("004 {}", row.label),
-            row.label.to_string(),
-        )
-    };
+    let (name, example, label) = case_names(row, input, dense);
     write_grid_csv(&out.file(format!("{name}-nodes.csv")), &relaid.nodes)?;
     write_picture(out, &name, &label, &relaid.nodes, relaid_error)?;
     findings.push(
@@ -196,6 +178,34 @@ fn relay_case(
     };
     findings.push(Finding::new(&example, measure, principal).detail());
     Ok(())
+}
+
+/// The file name, the report's example and the picture's label of a case: the row's
+/// label, with the input's size when dense.
+fn case_names(
+    row: &SeedExperiment,
+    input: &ExperimentOutcome,
+    dense: bool,
+) -> (String, String, String) {
+    let words: Vec<&str> = row
+        .label
+        .split(|c: char| !c.is_ascii_alphanumeric())
+        .filter(|w| !w.is_empty())
+        .collect();
+    let (rows, cols) = (input.nodes.rows(), input.nodes.cols());
+    if dense {
+        (
+            format!("004-relaid-{}-from-{rows}x{cols}", words.join("-")),
+            format!("004 {}, re-laid from {rows} x {cols}", row.label),
+            format!("{}, re-laid from {rows} x {cols} nodes", row.label),
+        )
+    } else {
+        (
+            format!("004-relaid-{}", words.join("-")),
+            format!("004 {}", row.label),
+            row.label.to_string(),
+        )
+    }
 }
 
 /// Re-lays a dense input with the principal frame's arc-length steps, or when its net does not

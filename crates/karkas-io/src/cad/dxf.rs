@@ -224,7 +224,23 @@ impl Dxf {
         use handle::*;
         self.pair(0, "SECTION");
         self.pair(2, "TABLES");
+        self.viewport_table(low, high);
+        self.linetype_table();
+        self.layer_table();
+        self.style_table();
+        self.table("VIEW", VIEW_TABLE, 0);
+        self.pair(0, "ENDTAB");
+        self.table("UCS", UCS_TABLE, 0);
+        self.pair(0, "ENDTAB");
+        self.appid_table();
+        self.dimstyle_table();
+        self.block_record_table();
+        self.pair(0, "ENDSEC");
+    }
 
+    /// The active viewport, centred on the drawing's box `low..high`.
+    fn viewport_table(&mut self, low: Point3, high: Point3) {
+        use handle::*;
         self.table("VPORT", VPORT_TABLE, 1);
         self.record(
             "VPORT",
@@ -249,7 +265,10 @@ impl Dxf {
         self.real(40, height);
         self.real(41, 1.5);
         self.pair(0, "ENDTAB");
+    }
 
+    fn linetype_table(&mut self) {
+        use handle::*;
         self.table("LTYPE", LTYPE_TABLE, 3);
         for (h, (name, description)) in LTYPES.into_iter().zip([
             ("ByBlock", ""),
@@ -265,9 +284,12 @@ impl Dxf {
             self.real(40, 0.0);
         }
         self.pair(0, "ENDTAB");
+    }
 
+    /// Layer 0 white, the curve white, the points red.
+    fn layer_table(&mut self) {
+        use handle::*;
         self.table("LAYER", LAYER_TABLE, 3);
-        // Layer 0 white, the curve white, the points red.
         for (h, (name, color)) in
             LAYERS
                 .into_iter()
@@ -281,7 +303,10 @@ impl Dxf {
             self.pair(370, -3);
         }
         self.pair(0, "ENDTAB");
+    }
 
+    fn style_table(&mut self) {
+        use handle::*;
         self.table("STYLE", STYLE_TABLE, 1);
         self.record(
             "STYLE",
@@ -299,18 +324,19 @@ impl Dxf {
         self.pair(3, "txt");
         self.pair(4, "");
         self.pair(0, "ENDTAB");
+    }
 
-        self.table("VIEW", VIEW_TABLE, 0);
-        self.pair(0, "ENDTAB");
-        self.table("UCS", UCS_TABLE, 0);
-        self.pair(0, "ENDTAB");
-
+    fn appid_table(&mut self) {
+        use handle::*;
         self.table("APPID", APPID_TABLE, 1);
         self.record("APPID", APPID_ACAD, APPID_TABLE, "AcDbRegAppTableRecord");
         self.pair(2, "ACAD");
         self.pair(70, 0);
         self.pair(0, "ENDTAB");
+    }
 
+    fn dimstyle_table(&mut self) {
+        use handle::*;
         self.table("DIMSTYLE", DIMSTYLE_TABLE, 1);
         self.pair(100, "AcDbDimStyleTable");
         self.record(
@@ -322,7 +348,10 @@ impl Dxf {
         self.pair(2, "Standard");
         self.pair(70, 0);
         self.pair(0, "ENDTAB");
+    }
 
+    fn block_record_table(&mut self) {
+        use handle::*;
         self.table("BLOCK_RECORD", BLOCK_RECORD_TABLE, 2);
         for (h, name) in [
             (MODEL_SPACE_RECORD, "*Model_Space"),
@@ -337,7 +366,6 @@ impl Dxf {
             self.pair(2, name);
         }
         self.pair(0, "ENDTAB");
-        self.pair(0, "ENDSEC");
     }
 
     fn blocks(&mut self) {

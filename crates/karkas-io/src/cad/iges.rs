@@ -18,13 +18,13 @@ use std::fmt::Write as _;
 use std::path::Path;
 
 use karkas::bspline::{BSplineCurve, BSplineSurface, NurbsCurve, NurbsSurface};
-use karkas::geometry::cross;
+use karkas::geometry::{cross, Plane};
 use karkas::{Curve, Grid, Point3, Surface};
 
 use crate::cad::entity::{
     curve_closed, max_coordinate, real, surface_closed, write_named, CadEntity,
 };
-use crate::cad::shell::{CadShell, FaceSurface};
+use crate::cad::shell::{CadShell, FaceSurface, ShellFace};
 use crate::cad::time_stamp::FileStamp;
 use crate::error::IoError;
 
@@ -119,98 +119,117 @@ fn shell_records(shell: &CadShell, out: &mut Vec<Record>) {
                 }
             })
             .collect();
-        // The patch: the bounding rectangle of the loop in the plane's axes, widened by a
-        // hundredth, its normal the face's.
-        let x = plane.x_axis();
-        let normal = if face.same_sense {
-            plane.normal
-        } else {
-            -plane.normal
-        };
-        let y = cross(normal, x);
-        let (mut low, mut high) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
-        for p in curves.iter().flat_map(|c| c.control_points()) {
-            let d = *p - plane.origin;
-            for (c, axis) in [x, y].iter().enumerate() {
-                low[c] = low[c].min(d.dot(*axis));
-                high[c] = high[c].max(d.dot(*axis));
-            }
+        if let Some(patch) = cap_patch(&plane, face, &curves) {
+            trimmed_cap_records(&patch, &curves, out);
         }
-        let margin = 0.01 * (high[0] - low[0]).max(high[1] - low[1]);
-        let grid = Grid::from_fn(2, 2, |i, j| {
-            let a = if i == 0 {
-                low[0] - margin
-            } else {
-                high[0] + margin
-            };
-            let b = if j == 0 {
-                low[1] - margin
-            } else {
-                high[1] + margin
-            };
-            plane.origin + x * a + y * b
-        });
-        let Ok(patch) = BSplineSurface::new(
-            (1, vec![0.0, 0.0, 1.0, 1.0]),
-            (1, vec![0.0, 0.0, 1.0, 1.0]),
-            grid,
-        ) else {
-            continue;
-        };
-        let surface = out.len();
-        out.push(Record {
-            kind: 128,
-            fields: surface_parameters(&patch),
-            dependent: true,
-        });
-        let mut pieces = Vec::new();
-        for c in &curves {
-            pieces.push(pointer(out.len()));
-            out.push(Record {
-                kind: 126,
-                fields: curve_parameters(c),
-                dependent: true,
-            });
+    }
+}
+
+/// The patch of a planar cap: the bounding rectangle of its loop `curves` in the plane's
+/// axes, widened by a hundredth, its normal the face's.
+fn cap_patch(
+    plane: &Plane,
+    face: &ShellFace,
+    curves: &[BSplineCurve<3>],
+) -> Option<BSplineSurface<3>> {
+    let x = plane.x_axis();
+    let normal = if face.same_sense {
+        plane.normal
+    } else {
+        -plane.normal
+    };
+    let y = cross(normal, x);
+    let (mut low, mut high) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+    for p in curves.iter().flat_map(|c| c.control_points()) {
+        let d = *p - plane.origin;
+        for (c, axis) in [x, y].iter().enumerate() {
+            low[c] = low[c].min(d.dot(*axis));
+            high[c] = high[c].max(d.dot(*axis));
         }
-        let boundary = if pieces.len() == 1 {
-            pieces[0].clone()
+    }
+    let margin = 0.01 * (high[0] - low[0]).max(high[1] - low[1]);
+    let grid = Grid::from_fn(2, 2, |i, j| {
+        let a = if i == 0 {
+            low[0] - margin
         } else {
-            let mut fields = vec!["102".to_owned(), pieces.len().to_string()];
-            fields.extend(pieces);
-            out.push(Record {
-                kind: 102,
-                fields,
-                dependent: true,
-            });
-            pointer(out.len() - 1)
+            high[0] + margin
         };
-        // Curve on a surface: unspecified creation, the plane, no parameter-space curve, the
-        // model-space curve, which is preferred.
+        let b = if j == 0 {
+            low[1] - margin
+        } else {
+            high[1] + margin
+        };
+        plane.origin + x * a + y * b
+    });
+    BSplineSurface::new(
+        (1, vec![0.0, 0.0, 1.0, 1.0]),
+        (1, vec![0.0, 0.0, 1.0, 1.0]),
+        grid,
+    )
+    .ok()
+}
+
+/// The records of a planar cap: its patch (128), its boundary `curves` (126, joined by a
+/// composite curve, 102, when more than one), the curve on the patch (142) and the trimmed
+/// surface (144).
+fn trimmed_cap_records(
+    patch: &BSplineSurface<3>,
+    curves: &[BSplineCurve<3>],
+    out: &mut Vec<Record>,
+) {
+    let surface = out.len();
+    out.push(Record {
+        kind: 128,
+        fields: surface_parameters(patch),
+        dependent: true,
+    });
+    let mut pieces = Vec::new();
+    for c in curves {
+        pieces.push(pointer(out.len()));
         out.push(Record {
-            kind: 142,
-            fields: vec![
-                "142".into(),
-                "0".into(),
-                pointer(surface),
-                "0".into(),
-                boundary,
-                "2".into(),
-            ],
+            kind: 126,
+            fields: curve_parameters(c),
             dependent: true,
-        });
-        let on_surface = pointer(out.len() - 1);
-        out.push(Record {
-            kind: 144,
-            fields: vec![
-                "144".into(),
-                pointer(surface),
-                "1".into(),
-                "0".into(),
-                on_surface,
-            ],
-            dependent: false,
         });
     }
+    let boundary = if pieces.len() == 1 {
+        pieces[0].clone()
+    } else {
+        let mut fields = vec!["102".to_owned(), pieces.len().to_string()];
+        fields.extend(pieces);
+        out.push(Record {
+            kind: 102,
+            fields,
+            dependent: true,
+        });
+        pointer(out.len() - 1)
+    };
+    // Curve on a surface: unspecified creation, the plane, no parameter-space curve, the
+    // model-space curve, which is preferred.
+    out.push(Record {
+        kind: 142,
+        fields: vec![
+            "142".into(),
+            "0".into(),
+            pointer(surface),
+            "0".into(),
+            boundary,
+            "2".into(),
+        ],
+        dependent: true,
+    });
+    let on_surface = pointer(out.len() - 1);
+    out.push(Record {
+        kind: 144,
+        fields: vec![
+            "144".into(),
+            pointer(surface),
+            "1".into(),
+            "0".into(),
+            on_surface,
+        ],
+        dependent: false,
+    });
 }
 
 /// The curve `c` run backwards over the same domain.
@@ -389,8 +408,35 @@ pub fn iges_text_in(entities: &[CadEntity<'_>], name: &str, unit: LengthUnit) ->
         let line: String = line.chars().filter(char::is_ascii).take(G_WIDTH).collect();
         record(&mut text, &line, 'S', k + 1);
     }
+    let global_lines = pack(&global_parameters(entities, name, unit), G_WIDTH);
+    for (k, line) in global_lines.iter().enumerate() {
+        record(&mut text, line, 'G', k + 1);
+    }
+    let (directory, parameter_lines) = directory_and_parameters(entities);
+    for (k, [a, b]) in directory.iter().enumerate() {
+        record(&mut text, a, 'D', 2 * k + 1);
+        record(&mut text, b, 'D', 2 * k + 2);
+    }
+    for (k, (line, de)) in parameter_lines.iter().enumerate() {
+        let data = format!("{line:<64} {de:>7}");
+        record(&mut text, &data, 'P', k + 1);
+    }
+    let terminate = format!(
+        "S{:>7}G{:>7}D{:>7}P{:>7}",
+        start.len(),
+        global_lines.len(),
+        2 * directory.len(),
+        parameter_lines.len()
+    );
+    record(&mut text, &terminate, 'T', 1);
+    text
+}
+
+/// The global section's parameters: delimiters, names, precision, unit, date, resolution
+/// and the largest coordinate.
+fn global_parameters(entities: &[CadEntity<'_>], name: &str, unit: LengthUnit) -> [String; 25] {
     let stamp = FileStamp::now().iges();
-    let global = [
+    [
         "1H,".to_owned(),
         "1H;".to_owned(),
         hollerith("karkas"),
@@ -416,13 +462,14 @@ pub fn iges_text_in(entities: &[CadEntity<'_>], name: &str, unit: LengthUnit) ->
         "11".to_owned(),
         "0".to_owned(),
         hollerith(&stamp),
-    ];
-    let global_lines = pack(&global, G_WIDTH);
-    for (k, line) in global_lines.iter().enumerate() {
-        record(&mut text, line, 'G', k + 1);
-    }
+    ]
+}
 
-    // Parameter lines of every entity, then the directory pointing at them.
+/// The directory entries (two lines each) of every entity, and the parameter lines they
+/// point at, each with its entry's pointer.
+fn directory_and_parameters(
+    entities: &[CadEntity<'_>],
+) -> (Vec<[String; 2]>, Vec<(String, usize)>) {
     let mut parameter_lines: Vec<(String, usize)> = Vec::new();
     let mut directory: Vec<[String; 2]> = Vec::new();
     for (k, entity) in records(entities).iter().enumerate() {
@@ -454,23 +501,7 @@ pub fn iges_text_in(entities: &[CadEntity<'_>], name: &str, unit: LengthUnit) ->
             ),
         ]);
     }
-    for (k, [a, b]) in directory.iter().enumerate() {
-        record(&mut text, a, 'D', 2 * k + 1);
-        record(&mut text, b, 'D', 2 * k + 2);
-    }
-    for (k, (line, de)) in parameter_lines.iter().enumerate() {
-        let data = format!("{line:<64} {de:>7}");
-        record(&mut text, &data, 'P', k + 1);
-    }
-    let terminate = format!(
-        "S{:>7}G{:>7}D{:>7}P{:>7}",
-        start.len(),
-        global_lines.len(),
-        2 * directory.len(),
-        parameter_lines.len()
-    );
-    record(&mut text, &terminate, 'T', 1);
-    text
+    (directory, parameter_lines)
 }
 
 /// Writes `entities` to the IGES file `path` (atomically; see

@@ -310,91 +310,141 @@ pub fn step_text(entities: &[CadEntity<'_>], name: &str) -> String {
 pub fn step_text_in(entities: &[CadEntity<'_>], name: &str, unit: LengthUnit) -> String {
     let name = step_string(name);
     let mut data = Data { lines: Vec::new() };
-    let app = data
-        .add("APPLICATION_CONTEXT('core data for automotive mechanical design processes')".into());
-    data.add(format!(
-        "APPLICATION_PROTOCOL_DEFINITION('international standard','automotive_design',2000,{app})"
-    ));
-    let product_context = data.add(format!("PRODUCT_CONTEXT('',{app},'mechanical')"));
-    let product = data.add(format!("PRODUCT('{name}','{name}','',({product_context}))"));
-    data.add(format!(
-        "PRODUCT_RELATED_PRODUCT_CATEGORY('part',$,({product}))"
-    ));
-    let formation = data.add(format!("PRODUCT_DEFINITION_FORMATION('','',{product})"));
-    let definition_context = data.add(format!(
-        "PRODUCT_DEFINITION_CONTEXT('part definition',{app},'design')"
-    ));
-    let definition = data.add(format!(
-        "PRODUCT_DEFINITION('design','',{formation},{definition_context})"
-    ));
-    let shape = data.add(format!("PRODUCT_DEFINITION_SHAPE('','',{definition})"));
-    let length = unit.step_instances(&mut |e| data.add(e));
-    let angle = data.add("(NAMED_UNIT(*)PLANE_ANGLE_UNIT()SI_UNIT($,.RADIAN.))".into());
-    let solid = data.add("(NAMED_UNIT(*)SI_UNIT($,.STERADIAN.)SOLID_ANGLE_UNIT())".into());
-    let uncertainty = data.add(format!(
-        "UNCERTAINTY_MEASURE_WITH_UNIT(LENGTH_MEASURE(1.E-07),{length},'distance_accuracy_value','confusion accuracy')"
-    ));
-    let context = data.add(format!(
-        "(GEOMETRIC_REPRESENTATION_CONTEXT(3)GLOBAL_UNCERTAINTY_ASSIGNED_CONTEXT(({uncertainty}))GLOBAL_UNIT_ASSIGNED_CONTEXT(({length},{angle},{solid}))REPRESENTATION_CONTEXT('karkas','3D'))"
-    ));
-    let origin = data.point(Point([0.0, 0.0, 0.0]));
-    let z = data.add("DIRECTION('',(0.,0.,1.))".into());
-    let x = data.add("DIRECTION('',(1.,0.,0.))".into());
-    let placement = data.add(format!("AXIS2_PLACEMENT_3D('',{origin},{z},{x})"));
+    let shape = data.product(&name);
+    let context = data.context(unit);
+    let placement = data.origin_placement();
+    let items = data.items(entities, &name);
+    data.representations(&items, (&name, &shape, &context, &placement));
+    exchange_text(&name, &data)
+}
 
-    let mut curves = Vec::new();
-    let mut open_shells = Vec::new();
-    let mut solids = Vec::new();
-    for (k, entity) in entities.iter().enumerate() {
-        let item = format!("{name}_{k}");
-        let (shell, closed) = match entity {
-            CadEntity::Curve(c) => {
-                curves.push(data.curve(c, &item));
-                continue;
+/// The representation items of a file's entities: curves, open shells and solids.
+struct Items {
+    curves: Vec<String>,
+    open_shells: Vec<String>,
+    solids: Vec<String>,
+}
+
+impl Data {
+    /// The product `name` and its definition, down to its shape (returned).
+    fn product(&mut self, name: &str) -> String {
+        let app = self.add(
+            "APPLICATION_CONTEXT('core data for automotive mechanical design processes')".into(),
+        );
+        self.add(format!(
+            "APPLICATION_PROTOCOL_DEFINITION('international standard','automotive_design',2000,{app})"
+        ));
+        let product_context = self.add(format!("PRODUCT_CONTEXT('',{app},'mechanical')"));
+        let product = self.add(format!("PRODUCT('{name}','{name}','',({product_context}))"));
+        self.add(format!(
+            "PRODUCT_RELATED_PRODUCT_CATEGORY('part',$,({product}))"
+        ));
+        let formation = self.add(format!("PRODUCT_DEFINITION_FORMATION('','',{product})"));
+        let definition_context = self.add(format!(
+            "PRODUCT_DEFINITION_CONTEXT('part definition',{app},'design')"
+        ));
+        let definition = self.add(format!(
+            "PRODUCT_DEFINITION('design','',{formation},{definition_context})"
+        ));
+        self.add(format!("PRODUCT_DEFINITION_SHAPE('','',{definition})"))
+    }
+
+    /// The geometric context: units (lengths in `unit`, angles in radians) and uncertainty.
+    fn context(&mut self, unit: LengthUnit) -> String {
+        let length = unit.step_instances(&mut |e| self.add(e));
+        let angle = self.add("(NAMED_UNIT(*)PLANE_ANGLE_UNIT()SI_UNIT($,.RADIAN.))".into());
+        let solid = self.add("(NAMED_UNIT(*)SI_UNIT($,.STERADIAN.)SOLID_ANGLE_UNIT())".into());
+        let uncertainty = self.add(format!(
+            "UNCERTAINTY_MEASURE_WITH_UNIT(LENGTH_MEASURE(1.E-07),{length},'distance_accuracy_value','confusion accuracy')"
+        ));
+        self.add(format!(
+            "(GEOMETRIC_REPRESENTATION_CONTEXT(3)GLOBAL_UNCERTAINTY_ASSIGNED_CONTEXT(({uncertainty}))GLOBAL_UNIT_ASSIGNED_CONTEXT(({length},{angle},{solid}))REPRESENTATION_CONTEXT('karkas','3D'))"
+        ))
+    }
+
+    /// The placement at the origin with the global axes.
+    fn origin_placement(&mut self) -> String {
+        let origin = self.point(Point([0.0, 0.0, 0.0]));
+        let z = self.add("DIRECTION('',(0.,0.,1.))".into());
+        let x = self.add("DIRECTION('',(1.,0.,0.))".into());
+        self.add(format!("AXIS2_PLACEMENT_3D('',{origin},{z},{x})"))
+    }
+
+    /// The items of `entities`, named `name_k`.
+    fn items(&mut self, entities: &[CadEntity<'_>], name: &str) -> Items {
+        let mut curves = Vec::new();
+        let mut open_shells = Vec::new();
+        let mut solids = Vec::new();
+        for (k, entity) in entities.iter().enumerate() {
+            let item = format!("{name}_{k}");
+            let (shell, closed) = match entity {
+                CadEntity::Curve(c) => {
+                    curves.push(self.curve(c, &item));
+                    continue;
+                }
+                CadEntity::RationalCurve(c) => {
+                    curves.push(self.rational_curve(c, &item));
+                    continue;
+                }
+                CadEntity::Surface(s) => self.shell(&surface_shell(s), &item),
+                CadEntity::Shell(shell) => self.shell(shell, &item),
+                CadEntity::RationalSurface(s) => {
+                    let face = self.rational_face(s, &item);
+                    (self.add(format!("OPEN_SHELL('',({face}))")), false)
+                }
+            };
+            if closed {
+                solids.push(self.add(format!("MANIFOLD_SOLID_BREP('{item}',{shell})")));
+            } else {
+                open_shells.push(shell);
             }
-            CadEntity::RationalCurve(c) => {
-                curves.push(data.rational_curve(c, &item));
-                continue;
-            }
-            CadEntity::Surface(s) => data.shell(&surface_shell(s), &item),
-            CadEntity::Shell(shell) => data.shell(shell, &item),
-            CadEntity::RationalSurface(s) => {
-                let face = data.rational_face(s, &item);
-                (data.add(format!("OPEN_SHELL('',({face}))")), false)
-            }
-        };
-        if closed {
-            solids.push(data.add(format!("MANIFOLD_SOLID_BREP('{item}',{shell})")));
-        } else {
-            open_shells.push(shell);
+        }
+        Items {
+            curves,
+            open_shells,
+            solids,
         }
     }
-    let mut representations = Vec::new();
-    if !curves.is_empty() {
-        let set = data.add(format!("GEOMETRIC_CURVE_SET('',({}))", curves.join(",")));
-        representations.push(data.add(format!(
-            "GEOMETRICALLY_BOUNDED_WIREFRAME_SHAPE_REPRESENTATION('{name}',({placement},{set}),{context})"
-        )));
-    }
-    if !open_shells.is_empty() {
-        let model = data.add(format!(
-            "SHELL_BASED_SURFACE_MODEL('',({}))",
-            open_shells.join(",")
-        ));
-        representations.push(data.add(format!(
-            "MANIFOLD_SURFACE_SHAPE_REPRESENTATION('{name}',({placement},{model}),{context})"
-        )));
-    }
-    if !solids.is_empty() {
-        representations.push(data.add(format!(
-            "ADVANCED_BREP_SHAPE_REPRESENTATION('{name}',({placement},{}),{context})",
-            solids.join(",")
-        )));
-    }
-    for r in representations {
-        data.add(format!("SHAPE_DEFINITION_REPRESENTATION({shape},{r})"));
-    }
 
+    /// One shape representation per kind of item, each bound to the product's shape.
+    fn representations(
+        &mut self,
+        items: &Items,
+        (name, shape, context, placement): (&str, &str, &str, &str),
+    ) {
+        let mut representations = Vec::new();
+        if !items.curves.is_empty() {
+            let set = self.add(format!(
+                "GEOMETRIC_CURVE_SET('',({}))",
+                items.curves.join(",")
+            ));
+            representations.push(self.add(format!(
+                "GEOMETRICALLY_BOUNDED_WIREFRAME_SHAPE_REPRESENTATION('{name}',({placement},{set}),{context})"
+            )));
+        }
+        if !items.open_shells.is_empty() {
+            let model = self.add(format!(
+                "SHELL_BASED_SURFACE_MODEL('',({}))",
+                items.open_shells.join(",")
+            ));
+            representations.push(self.add(format!(
+                "MANIFOLD_SURFACE_SHAPE_REPRESENTATION('{name}',({placement},{model}),{context})"
+            )));
+        }
+        if !items.solids.is_empty() {
+            representations.push(self.add(format!(
+                "ADVANCED_BREP_SHAPE_REPRESENTATION('{name}',({placement},{}),{context})",
+                items.solids.join(",")
+            )));
+        }
+        for r in representations {
+            self.add(format!("SHAPE_DEFINITION_REPRESENTATION({shape},{r})"));
+        }
+    }
+}
+
+/// The exchange file: its header and the data section.
+fn exchange_text(name: &str, data: &Data) -> String {
     let mut text = String::new();
     text.push_str("ISO-10303-21;\nHEADER;\n");
     text.push_str("FILE_DESCRIPTION(('karkas exact B-spline export'),'2;1');\n");

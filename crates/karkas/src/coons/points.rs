@@ -185,158 +185,35 @@ impl<const D: usize> PointNetwork<D> {
         tolerance: f64,
         (crease_u, crease_v): (bool, bool),
     ) -> Result<Self> {
-        if let CurveFit::Ll(order) = fit {
-            LlKernel::new(order)?;
-        }
-        if !(tolerance.is_finite() && tolerance >= 0.0) {
-            return Err(Error::InvalidSetting {
-                name: "tolerance",
-                value: tolerance,
-                reason: "the crossing tolerance must be a finite number >= 0",
-            });
-        }
+        check_settings(fit, tolerance)?;
         let size = model_size(v_curves.iter().chain(u_curves).flatten());
         let v_family = family("v-curve", v_curves, size)?;
         let u_family = family("u-curve", u_curves, size)?;
-        for (crease, closed, what) in [
-            (crease_u, u_family.closed, "a network creased in u"),
-            (crease_v, v_family.closed, "a network creased in v"),
-        ] {
-            if crease && !closed {
-                return Err(Error::OpenPeriodicData {
-                    what,
-                    item: "point of every curve along that direction",
-                });
-            }
-        }
+        check_creases(&v_family, crease_v, &u_family, crease_u)?;
         let crossings = find_crossings(&v_family, &u_family, tolerance * size, size)?;
         let (m, n) = (v_curves.len(), u_curves.len());
-
-        // Rotate closed curves to start at their crossing with curve 0 of the other family.
-        let v_rotation: Vec<usize> = (0..m)
-            .map(|i| {
-                if v_family.closed {
-                    crossings[i * n].0
-                } else {
-                    0
-                }
-            })
-            .collect();
-        let u_rotation: Vec<usize> = (0..n)
-            .map(|j| if u_family.closed { crossings[j].1 } else { 0 })
-            .collect();
+        let v = Side::new(v_family, crease_v, (0..m).map(|i| crossings[i * n].0));
+        let u = Side::new(u_family, crease_u, (0..n).map(|j| crossings[j].1));
         // Crossing parameters: on v-curve i at u-curve j, and on u-curve j at v-curve i.
-        let normalised = |index: usize, rotation: usize, curve: &[Point<D>], closed: bool| {
-            let k = distinct_len(curve, closed);
-            let index = (index + k - rotation) % k;
-            if closed {
-                index as f64 / k as f64
-            } else {
-                index as f64 / (k - 1) as f64
-            }
-        };
         let on_v: Vec<f64> = (0..m * n)
-            .map(|c| {
-                let i = c / n;
-                normalised(crossings[c].0, v_rotation[i], &v_curves[i], v_family.closed)
-            })
+            .map(|c| v.normalised(c / n, crossings[c].0))
             .collect();
         let on_u: Vec<f64> = (0..m * n)
-            .map(|c| {
-                let j = c % n;
-                normalised(crossings[c].1, u_rotation[j], &u_curves[j], u_family.closed)
-            })
+            .map(|c| u.normalised(c % n, crossings[c].1))
             .collect();
         check_order(&on_v, m, n, false)?;
         check_order(&on_u, m, n, true)?;
-
         // Node values: v_j averages the v-curves' crossing parameters with u-curve j.
-        let v_nodes: Vec<f64> = (0..n)
+        let v_nodes = (0..n)
             .map(|j| (0..m).map(|i| on_v[i * n + j]).sum::<f64>() / m as f64)
             .collect();
-        let u_nodes: Vec<f64> = (0..m)
+        let u_nodes = (0..m)
             .map(|i| (0..n).map(|j| on_u[i * n + j]).sum::<f64>() / n as f64)
             .collect();
-        // A creased direction is open, its first node (0) repeated at 1 (the period).
-        let axis = |mut nodes: Vec<f64>, closed: bool, crease: bool| {
-            if crease {
-                nodes.push(1.0);
-                NetworkAxis::open(nodes)
-            } else if closed {
-                NetworkAxis::closed(nodes, 1.0)
-            } else {
-                NetworkAxis::open(nodes)
-            }
-        };
-        let v_axis = axis(v_nodes, v_family.closed, crease_v)?;
-        let u_axis = axis(u_nodes, u_family.closed, crease_u)?;
-
-        let parameterize = |(count, crossings): (usize, usize),
-                            given: &[Vec<Point<D>>],
-                            (closed, crease): (bool, bool),
-                            rotation: &[usize],
-                            axis: &NetworkAxis,
-                            target: &dyn Fn(usize, usize) -> f64,
-                            name: &'static str|
-         -> Result<Vec<Parameterization>> {
-            let nodes = axis.nodes_with_seam();
-            let closed = closed && !crease;
-            (0..count)
-                .map(|c| {
-                    let targets: Vec<f64> = (0..nodes.len())
-                        .map(|k| {
-                            if k < crossings {
-                                target(c, k)
-                            } else {
-                                1.0 // the closing node of a closed or creased curve
-                            }
-                        })
-                        .collect();
-                    let same = targets
-                        .iter()
-                        .zip(&nodes)
-                        .all(|(s, v)| (s - v).abs() <= SAME_PARAMETER);
-                    let warp = if same {
-                        None
-                    } else {
-                        Some(Warp::new(&nodes, &targets, closed).map_err(|e| {
-                            Error::NetworkCurve {
-                                family: name,
-                                curve: c,
-                                source: Box::new(e),
-                            }
-                        })?)
-                    };
-                    Ok(Parameterization {
-                        given: given[c].len(),
-                        closed,
-                        rotation: rotation[c],
-                        crease,
-                        fit,
-                        domain: axis.domain(),
-                        warp,
-                    })
-                })
-                .collect()
-        };
-        let mut v_params = parameterize(
-            (m, n),
-            v_curves,
-            (v_family.closed, crease_v),
-            &v_rotation,
-            &v_axis,
-            &|i, j| on_v[i * n + j],
-            "v-curve",
-        )?;
-        let mut u_params = parameterize(
-            (n, m),
-            u_curves,
-            (u_family.closed, crease_u),
-            &u_rotation,
-            &u_axis,
-            &|j, i| on_u[i * n + j],
-            "u-curve",
-        )?;
+        let v_axis = v.axis(v_nodes)?;
+        let u_axis = u.axis(u_nodes)?;
+        let mut v_params = v.parameterize(fit, &v_axis, n, &|i, j| on_v[i * n + j])?;
+        let mut u_params = u.parameterize(fit, &u_axis, m, &|j, i| on_u[i * n + j])?;
         // A crease repeats curve 0 of the other family at the closing node.
         if crease_u {
             v_params.push(v_params[0].clone());
@@ -344,18 +221,11 @@ impl<const D: usize> PointNetwork<D> {
         if crease_v {
             u_params.push(u_params[0].clone());
         }
-        let build = |params: &[Parameterization], lists: &[Vec<Point<D>>]| {
-            params
-                .iter()
-                .zip(lists.iter().chain(lists.first()))
-                .map(|(p, pts)| p.curve(pts))
-                .collect::<Result<Vec<_>>>()
-        };
         let network = CurveNetwork::new(
             u_axis,
-            build(&v_params, v_curves)?,
+            network_curves(&v_params, v_curves)?,
             v_axis,
-            build(&u_params, u_curves)?,
+            network_curves(&u_params, u_curves)?,
         )?;
         Ok(PointNetwork {
             network,
@@ -493,6 +363,151 @@ impl Parameterization {
             }
         })
     }
+}
+
+/// Refuses an LL order the kernel does not have and a crossing tolerance that is not a
+/// finite number `>= 0`.
+fn check_settings(fit: CurveFit, tolerance: f64) -> Result<()> {
+    if let CurveFit::Ll(order) = fit {
+        LlKernel::new(order)?;
+    }
+    if !(tolerance.is_finite() && tolerance >= 0.0) {
+        return Err(Error::InvalidSetting {
+            name: "tolerance",
+            value: tolerance,
+            reason: "the crossing tolerance must be a finite number >= 0",
+        });
+    }
+    Ok(())
+}
+
+/// Refuses a crease along a direction whose curves are open.
+fn check_creases<const D: usize>(
+    v_family: &Family<'_, D>,
+    crease_v: bool,
+    u_family: &Family<'_, D>,
+    crease_u: bool,
+) -> Result<()> {
+    for (crease, closed, what) in [
+        (crease_u, u_family.closed, "a network creased in u"),
+        (crease_v, v_family.closed, "a network creased in v"),
+    ] {
+        if crease && !closed {
+            return Err(Error::OpenPeriodicData {
+                what,
+                item: "point of every curve along that direction",
+            });
+        }
+    }
+    Ok(())
+}
+
+/// One family placed on the network: whether it is creased, and the point each closed curve
+/// is rotated to start at (its crossing with curve 0 of the other family).
+struct Side<'a, const D: usize> {
+    family: Family<'a, D>,
+    crease: bool,
+    rotation: Vec<usize>,
+}
+
+impl<'a, const D: usize> Side<'a, D> {
+    fn new(family: Family<'a, D>, crease: bool, starts: impl Iterator<Item = usize>) -> Self {
+        let closed = family.closed;
+        let rotation = starts.map(|k| if closed { k } else { 0 }).collect();
+        Side {
+            family,
+            crease,
+            rotation,
+        }
+    }
+
+    /// The parameter in `[0, 1]` of point `index` of curve `curve` after its rotation.
+    fn normalised(&self, curve: usize, index: usize) -> f64 {
+        let closed = self.family.closed;
+        let k = distinct_len(&self.family.curves[curve], closed);
+        let index = (index + k - self.rotation[curve]) % k;
+        if closed {
+            index as f64 / k as f64
+        } else {
+            index as f64 / (k - 1) as f64
+        }
+    }
+
+    /// The network axis through `nodes`: a creased direction is open, its first node (0)
+    /// repeated at 1 (the period).
+    fn axis(&self, mut nodes: Vec<f64>) -> Result<NetworkAxis> {
+        if self.crease {
+            nodes.push(1.0);
+            NetworkAxis::open(nodes)
+        } else if self.family.closed {
+            NetworkAxis::closed(nodes, 1.0)
+        } else {
+            NetworkAxis::open(nodes)
+        }
+    }
+
+    /// How each curve becomes a curve of the network parameter: warped so that its
+    /// `crossings` crossings, at `target(curve, k)` of its own parameter, sit on the nodes.
+    fn parameterize(
+        &self,
+        fit: CurveFit,
+        axis: &NetworkAxis,
+        crossings: usize,
+        target: &dyn Fn(usize, usize) -> f64,
+    ) -> Result<Vec<Parameterization>> {
+        let nodes = axis.nodes_with_seam();
+        let closed = self.family.closed && !self.crease;
+        let given = self.family.curves;
+        (0..given.len())
+            .map(|c| {
+                let targets: Vec<f64> = (0..nodes.len())
+                    .map(|k| {
+                        if k < crossings {
+                            target(c, k)
+                        } else {
+                            1.0 // the closing node of a closed or creased curve
+                        }
+                    })
+                    .collect();
+                let same = targets
+                    .iter()
+                    .zip(&nodes)
+                    .all(|(s, v)| (s - v).abs() <= SAME_PARAMETER);
+                let warp = if same {
+                    None
+                } else {
+                    Some(
+                        Warp::new(&nodes, &targets, closed).map_err(|e| Error::NetworkCurve {
+                            family: self.family.name,
+                            curve: c,
+                            source: Box::new(e),
+                        })?,
+                    )
+                };
+                Ok(Parameterization {
+                    given: given[c].len(),
+                    closed,
+                    rotation: self.rotation[c],
+                    crease: self.crease,
+                    fit,
+                    domain: axis.domain(),
+                    warp,
+                })
+            })
+            .collect()
+    }
+}
+
+/// The curves of a family through their points, a creased family's curve 0 again last.
+fn network_curves<const D: usize>(
+    params: &[Parameterization],
+    lists: &[Vec<Point<D>>],
+) -> Result<Vec<CurveRef<D>>> {
+    params
+        .iter()
+        .zip(lists.iter().chain(lists.first()))
+        .map(|(p, pts)| p.curve(pts))
+        .collect()
 }
 
 /// The diagonal of the bounding box of `points` (at least the smallest positive number).

@@ -183,38 +183,8 @@ impl<const D: usize> CoonsSurface<D> {
         (closed_u, closed_v): (bool, bool),
         names: Names<'_>,
     ) -> Result<Self> {
-        let (m, n) = (u_family.len(), v_family.len());
-        for (direction, count) in [("u", m), ("v", n)] {
-            if count == 0 {
-                return Err(Error::EmptyBlendingFamily { direction });
-            }
-        }
-        let counts = [
-            (
-                "functionals of the u-blending family (one per function)",
-                m,
-                u_family.functionals().len(),
-            ),
-            (
-                "functionals of the v-blending family (one per function)",
-                n,
-                v_family.functionals().len(),
-            ),
-            ("v-curves (one per u-blending function)", m, v_curves.len()),
-            ("u-curves (one per v-blending function)", n, u_curves.len()),
-        ];
-        Error::check_counts(&counts)?;
-        let tolerance = match compatibility {
-            Compatibility::Check(t) => t,
-            Compatibility::Repair => 0.0,
-        };
-        if !(tolerance.is_finite() && tolerance >= 0.0) {
-            return Err(Error::InvalidSetting {
-                name: "tolerance",
-                value: tolerance,
-                reason: "the compatibility tolerance must be a finite number >= 0",
-            });
-        }
+        check_sizes(&u_family, &v_family, v_curves.len(), u_curves.len())?;
+        let tolerance = check_tolerance(compatibility)?;
         let (du, dv) = (u_family.domain(), v_family.domain());
         let v_curves: Vec<CurveRef<D>> = v_curves
             .into_iter()
@@ -230,58 +200,25 @@ impl<const D: usize> CoonsSurface<D> {
             .iter()
             .flat_map(|l| u_curves.iter().map(move |g| l.apply(g.as_ref())))
             .collect();
-
-        let size = model_size(&v_curves, lu, dv, &u_curves, lv, du);
-        let (hu, hv) = (
-            smallest_spacing(u_family.as_ref()),
-            smallest_spacing(v_family.as_ref()),
-        );
+        let conditions = Conditions {
+            lu,
+            lv,
+            size: model_size(&v_curves, lu, dv, &u_curves, lv, du),
+            hu: smallest_spacing(u_family.as_ref()),
+            hv: smallest_spacing(v_family.as_ref()),
+            names: &names,
+        };
         if compatibility == Compatibility::Repair {
-            let scale = |i: usize, j: usize| {
-                size / hu.powi(lu[i].order() as i32) / hv.powi(lv[j].order() as i32)
-            };
-            let describe = |i: usize, j: usize| {
-                format!(
-                    "{} of {} and {} of {}",
-                    lu[i].describe('u'),
-                    (names.u_curve)(j),
-                    lv[j].describe('v'),
-                    (names.v_curve)(i)
-                )
-            };
             return Ok(repaired(
                 (u_family.clone(), v_family.clone()),
                 (v_curves, u_curves),
                 corners,
                 (closed_u, closed_v),
-                &scale,
-                &describe,
+                &|i, j| conditions.scale(i, j),
+                &|i, j| conditions.describe(i, j),
             ));
         }
-        for (i, (f, li)) in v_curves.iter().zip(lu).enumerate() {
-            for (j, lj) in lv.iter().enumerate() {
-                let mismatch = corners[i * n + j].distance(lj.apply(f.as_ref()));
-                let allowed =
-                    tolerance * size / hu.powi(li.order() as i32) / hv.powi(lj.order() as i32);
-                // NaN (a non-finite curve) fails too.
-                if mismatch.is_nan() || mismatch > allowed {
-                    let (first, second) = ((names.v_curve)(i), (names.u_curve)(j));
-                    return Err(Error::IncompatibleCurves {
-                        condition: format!(
-                            "{} of {second} and {} of {first}",
-                            li.describe('u'),
-                            lj.describe('v')
-                        ),
-                        first,
-                        second,
-                        u: li.at(),
-                        v: lj.at(),
-                        mismatch,
-                        tolerance: allowed,
-                    });
-                }
-            }
-        }
+        conditions.check(&v_curves, &corners, tolerance)?;
         Ok(CoonsSurface {
             u_family,
             v_family,
@@ -446,6 +383,122 @@ impl<const D: usize> CoonsSurface<D> {
             sum = sum.add_scaled(hv[j], q);
         }
         sum
+    }
+}
+
+/// Refuses empty blending families and counts of functionals or curves that differ from
+/// the families' functions.
+fn check_sizes(
+    u_family: &FamilyRef,
+    v_family: &FamilyRef,
+    v_curves: usize,
+    u_curves: usize,
+) -> Result<()> {
+    let (m, n) = (u_family.len(), v_family.len());
+    for (direction, count) in [("u", m), ("v", n)] {
+        if count == 0 {
+            return Err(Error::EmptyBlendingFamily { direction });
+        }
+    }
+    let counts = [
+        (
+            "functionals of the u-blending family (one per function)",
+            m,
+            u_family.functionals().len(),
+        ),
+        (
+            "functionals of the v-blending family (one per function)",
+            n,
+            v_family.functionals().len(),
+        ),
+        ("v-curves (one per u-blending function)", m, v_curves),
+        ("u-curves (one per v-blending function)", n, u_curves),
+    ];
+    Error::check_counts(&counts)
+}
+
+/// The tolerance of the compatibility check (0 when repairing), refused when not a finite
+/// number `>= 0`.
+fn check_tolerance(compatibility: Compatibility) -> Result<f64> {
+    let tolerance = match compatibility {
+        Compatibility::Check(t) => t,
+        Compatibility::Repair => 0.0,
+    };
+    if !(tolerance.is_finite() && tolerance >= 0.0) {
+        return Err(Error::InvalidSetting {
+            name: "tolerance",
+            value: tolerance,
+            reason: "the compatibility tolerance must be a finite number >= 0",
+        });
+    }
+    Ok(tolerance)
+}
+
+/// The compatibility conditions (8) of a network: condition `(i, j)` sets functional `i` of
+/// the u-family on u-curve `j` against functional `j` of the v-family on v-curve `i`, its
+/// mismatch measured against the model size over the smallest node spacings to the orders.
+struct Conditions<'a, 'n> {
+    lu: &'a [super::Functional],
+    lv: &'a [super::Functional],
+    size: f64,
+    hu: f64,
+    hv: f64,
+    names: &'a Names<'n>,
+}
+
+impl Conditions<'_, '_> {
+    /// The scale of condition `(i, j)`'s mismatch.
+    fn scale(&self, i: usize, j: usize) -> f64 {
+        self.size
+            / self.hu.powi(self.lu[i].order() as i32)
+            / self.hv.powi(self.lv[j].order() as i32)
+    }
+
+    /// Condition `(i, j)` in words.
+    fn describe(&self, i: usize, j: usize) -> String {
+        format!(
+            "{} of {} and {} of {}",
+            self.lu[i].describe('u'),
+            (self.names.u_curve)(j),
+            self.lv[j].describe('v'),
+            (self.names.v_curve)(i)
+        )
+    }
+
+    /// Refuses a mismatch beyond `tolerance` times the scale (and a NaN, from a non-finite
+    /// curve), naming the curves and the condition.
+    fn check<const D: usize>(
+        &self,
+        v_curves: &[CurveRef<D>],
+        corners: &[Point<D>],
+        tolerance: f64,
+    ) -> Result<()> {
+        let n = self.lv.len();
+        for (i, (f, li)) in v_curves.iter().zip(self.lu).enumerate() {
+            for (j, lj) in self.lv.iter().enumerate() {
+                let mismatch = corners[i * n + j].distance(lj.apply(f.as_ref()));
+                let allowed = tolerance * self.size
+                    / self.hu.powi(li.order() as i32)
+                    / self.hv.powi(lj.order() as i32);
+                if mismatch.is_nan() || mismatch > allowed {
+                    let (first, second) = ((self.names.v_curve)(i), (self.names.u_curve)(j));
+                    return Err(Error::IncompatibleCurves {
+                        condition: format!(
+                            "{} of {second} and {} of {first}",
+                            li.describe('u'),
+                            lj.describe('v')
+                        ),
+                        first,
+                        second,
+                        u: li.at(),
+                        v: lj.at(),
+                        mismatch,
+                        tolerance: allowed,
+                    });
+                }
+            }
+        }
+        Ok(())
     }
 }
 

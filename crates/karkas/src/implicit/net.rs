@@ -345,6 +345,59 @@ fn loop_length<S: ImplicitSurface + ?Sized>(
 /// [`Error::SingularPoint`] at the start; [`Error::ContinuationFailed`] when a line cannot
 /// be continued.
 pub fn trace_net<S: ImplicitSurface + ?Sized>(surface: &S, spec: &NetSpec) -> Result<Grid<Point3>> {
+    check_spec(spec)?;
+    let (nu, nv) = spec.nodes;
+    let (hu, hv) = spec.steps;
+    let start = project_onto(surface, spec.start)?;
+    if start.distance(spec.start) > hu.max(hv) {
+        return Err(Error::NoSurfaceNear {
+            point: spec.start.0,
+            residual: surface.value(spec.start).abs(),
+        });
+    }
+    let mut grid = Grid::from_fn(nu, nv, |_, _| Point3::ZERO);
+    let (spine, spine_tangents) = trace_spine(surface, spec, start)?;
+    let mut dv_prev = initial_direction(surface, &spec.directions, Family::V, start)?;
+    let side = |node: Point3, du: Point3, dv: Point3| -> Result<f64> {
+        Ok(SurfaceFrame::at(surface, node)?.normal.dot(cross(du, dv)))
+    };
+    let start_side = side(start, spine_tangents[0], dv_prev)?;
+    let mut row = vec![Point3::ZERO; nv - 1];
+    for (i, &node) in spine.iter().enumerate() {
+        let mut dv = direction(surface, &spec.directions, Family::V, node, dv_prev)?;
+        // The v direction by continuity alone flips when the spine turns by more than a
+        // right angle around the surface between two nodes (a steep helix on a cylinder).
+        if side(node, spine_tangents[i], dv)? * start_side < 0.0 {
+            dv = -dv;
+        }
+        dv_prev = dv;
+        let h = if spec.closed_v {
+            loop_length(
+                surface,
+                spec,
+                i + 1,
+                node,
+                dv,
+                hv / spec.substeps.max(1) as f64,
+            )? / (nv - 1) as f64
+        } else {
+            hv
+        };
+        trace_line(surface, spec, Family::V, i + 1, node, dv, h, &mut row)?;
+        if spec.closed_v {
+            row[nv - 2] = node;
+        }
+        *grid.get_mut(i, 0) = node;
+        for (j, p) in row.iter().enumerate() {
+            *grid.get_mut(i, j + 1) = *p;
+        }
+    }
+    Ok(grid)
+}
+
+/// Refuses a net smaller than `2 x 2` or larger than `10^8` nodes, steps that are not
+/// positive and finite, a non-finite angle or plane normal, and a non-finite start.
+fn check_spec(spec: &NetSpec) -> Result<()> {
     let (nu, nv) = spec.nodes;
     let (hu, hv) = spec.steps;
     if nu < 2 || nv < 2 || nu.saturating_mul(nv) > 100_000_000 {
@@ -389,17 +442,19 @@ pub fn trace_net<S: ImplicitSurface + ?Sized>(surface: &S, spec: &NetSpec) -> Re
             what: "the start point",
         });
     }
-    let start = project_onto(surface, spec.start)?;
-    if start.distance(spec.start) > hu.max(hv) {
-        return Err(Error::NoSurfaceNear {
-            point: spec.start.0,
-            residual: surface.value(spec.start).abs(),
-        });
-    }
-    let mut grid = Grid::from_fn(nu, nv, |_, _| Point3::ZERO);
-    // The spine, node by node, with its tangent at every node (carried continuously by the
-    // tracing): every row starts on the same side of the spine as the first, whatever the
-    // spine turns between two nodes.
+    Ok(())
+}
+
+/// The spine, node by node, with its tangent at every node (carried continuously by the
+/// tracing): every row starts on the same side of the spine as the first, whatever the
+/// spine turns between two nodes.
+fn trace_spine<S: ImplicitSurface + ?Sized>(
+    surface: &S,
+    spec: &NetSpec,
+    start: Point3,
+) -> Result<(Vec<Point3>, Vec<Point3>)> {
+    let nu = spec.nodes.0;
+    let hu = spec.steps.0;
     let mut spine = vec![start; nu];
     let mut spine_tangents = vec![Point3::ZERO; nu];
     spine_tangents[0] = initial_direction(surface, &spec.directions, Family::U, start)?;
@@ -415,42 +470,7 @@ pub fn trace_net<S: ImplicitSurface + ?Sized>(surface: &S, spec: &NetSpec) -> Re
                 other => other,
             })?;
     }
-    let mut dv_prev = initial_direction(surface, &spec.directions, Family::V, start)?;
-    let side = |node: Point3, du: Point3, dv: Point3| -> Result<f64> {
-        Ok(SurfaceFrame::at(surface, node)?.normal.dot(cross(du, dv)))
-    };
-    let start_side = side(start, spine_tangents[0], dv_prev)?;
-    let mut row = vec![Point3::ZERO; nv - 1];
-    for (i, &node) in spine.iter().enumerate() {
-        let mut dv = direction(surface, &spec.directions, Family::V, node, dv_prev)?;
-        // The v direction by continuity alone flips when the spine turns by more than a
-        // right angle around the surface between two nodes (a steep helix on a cylinder).
-        if side(node, spine_tangents[i], dv)? * start_side < 0.0 {
-            dv = -dv;
-        }
-        dv_prev = dv;
-        let h = if spec.closed_v {
-            loop_length(
-                surface,
-                spec,
-                i + 1,
-                node,
-                dv,
-                hv / spec.substeps.max(1) as f64,
-            )? / (nv - 1) as f64
-        } else {
-            hv
-        };
-        trace_line(surface, spec, Family::V, i + 1, node, dv, h, &mut row)?;
-        if spec.closed_v {
-            row[nv - 2] = node;
-        }
-        *grid.get_mut(i, 0) = node;
-        for (j, p) in row.iter().enumerate() {
-            *grid.get_mut(i, j + 1) = *p;
-        }
-    }
-    Ok(grid)
+    Ok((spine, spine_tangents))
 }
 
 #[cfg(test)]

@@ -202,18 +202,7 @@ pub fn vary(
 ) -> Result<Grid<f64>> {
     let (n, m) = (matrix.rows(), matrix.cols());
     check_input(matrix, fixed, targets, options)?;
-    let rows_total: f64 = targets.rows.iter().sum();
-    let columns_total: f64 = targets.columns.iter().sum();
-    let magnitude = matrix.as_slice().iter().map(|r| r.abs()).sum::<f64>()
-        + targets.rows.iter().map(|r| r.abs()).sum::<f64>()
-        + targets.columns.iter().map(|r| r.abs()).sum::<f64>();
-    let tolerance = SUM_TOLERANCE * magnitude.max(f64::MIN_POSITIVE);
-    if (rows_total - columns_total).abs() > tolerance {
-        return Err(Error::InconsistentTotals {
-            rows_total,
-            columns_total,
-        });
-    }
+    let (rows_total, tolerance) = consistent_totals(matrix, targets)?;
     let reference = reference_matrix(matrix, rows_total, options.scale_with_total)?;
     let weight = |i: usize, j: usize| match (*fixed.get(i, j), options.fixed_entries) {
         (false, _) => 1.0,
@@ -231,66 +220,112 @@ pub fn vary(
     let blocks = Blocks::new(n, m, |i, j| weight(i, j) > 0.0);
     blocks.check(&reference, targets, &row_change, &column_change, tolerance)?;
 
-    // Unknowns: alpha_i of every row and beta_j of every column in a block with free entries,
-    // but for the gauge beta_j = 0 of the last column of each block.
-    let mut unknown_of_row = vec![None; n];
-    let mut unknown_of_column = vec![None; m];
-    let mut count = 0;
-    for (i, slot) in unknown_of_row.iter_mut().enumerate() {
-        if blocks.has_edges(i) {
-            *slot = Some(count);
-            count += 1;
-        }
-    }
-    for (j, slot) in unknown_of_column.iter_mut().enumerate() {
-        if blocks.has_edges(n + j) && !blocks.is_gauge_column(j) {
-            *slot = Some(count);
-            count += 1;
-        }
-    }
-    let mut system = DMatrix::<f64>::zeros(count, count);
-    let mut rhs = DVector::<f64>::zeros(count);
-    for (i, a) in unknown_of_row.iter().enumerate() {
-        if let Some(a) = *a {
-            rhs[a] = row_change[i];
-        }
-    }
-    for (j, b) in unknown_of_column.iter().enumerate() {
-        if let Some(b) = *b {
-            rhs[b] = column_change[j];
-        }
-    }
-    for (i, &a) in unknown_of_row.iter().enumerate() {
-        for (j, &b) in unknown_of_column.iter().enumerate() {
-            let w = weight(i, j);
-            if w == 0.0 {
-                continue;
-            }
-            if let Some(a) = a {
-                system[(a, a)] += w;
-            }
-            if let Some(b) = b {
-                system[(b, b)] += w;
-            }
-            if let (Some(a), Some(b)) = (a, b) {
-                system[(a, b)] += w;
-                system[(b, a)] += w;
-            }
-        }
-    }
-    let multipliers = if count == 0 {
-        rhs
-    } else {
-        let cholesky = system
-            .cholesky()
-            .ok_or(Error::SingularSystem { row: 0, pivot: 0.0 })?;
-        cholesky.solve(&rhs)
-    };
-    let alpha = |i: usize| unknown_of_row[i].map_or(0.0, |a| multipliers[a]);
-    let beta = |j: usize| unknown_of_column[j].map_or(0.0, |b| multipliers[b]);
+    let unknowns = Unknowns::new(&blocks, n, m);
+    let multipliers = unknowns.solve(&weight, &row_change, &column_change)?;
+    let alpha = |i: usize| unknowns.of_row[i].map_or(0.0, |a| multipliers[a]);
+    let beta = |j: usize| unknowns.of_column[j].map_or(0.0, |b| multipliers[b]);
     Ok(Grid::from_fn(n, m, |i, j| {
         reference.get(i, j) - weight(i, j) * (alpha(i) + beta(j))
     }))
+}
+
+/// The total of the target sums (rows and columns agree within the tolerance returned,
+/// relative to the data's magnitude).
+fn consistent_totals(matrix: &Grid<f64>, targets: &SumTargets) -> Result<(f64, f64)> {
+    let rows_total: f64 = targets.rows.iter().sum();
+    let columns_total: f64 = targets.columns.iter().sum();
+    let magnitude = matrix.as_slice().iter().map(|r| r.abs()).sum::<f64>()
+        + targets.rows.iter().map(|r| r.abs()).sum::<f64>()
+        + targets.columns.iter().map(|r| r.abs()).sum::<f64>();
+    let tolerance = SUM_TOLERANCE * magnitude.max(f64::MIN_POSITIVE);
+    if (rows_total - columns_total).abs() > tolerance {
+        return Err(Error::InconsistentTotals {
+            rows_total,
+            columns_total,
+        });
+    }
+    Ok((rows_total, tolerance))
+}
+
+/// The unknowns of the variation: `alpha_i` of every row and `beta_j` of every column in a
+/// block with free entries, but for the gauge `beta_j = 0` of the last column of each block.
+struct Unknowns {
+    of_row: Vec<Option<usize>>,
+    of_column: Vec<Option<usize>>,
+    count: usize,
+}
+
+impl Unknowns {
+    fn new(blocks: &Blocks, n: usize, m: usize) -> Self {
+        let mut of_row = vec![None; n];
+        let mut of_column = vec![None; m];
+        let mut count = 0;
+        for (i, slot) in of_row.iter_mut().enumerate() {
+            if blocks.has_edges(i) {
+                *slot = Some(count);
+                count += 1;
+            }
+        }
+        for (j, slot) in of_column.iter_mut().enumerate() {
+            if blocks.has_edges(n + j) && !blocks.is_gauge_column(j) {
+                *slot = Some(count);
+                count += 1;
+            }
+        }
+        Unknowns {
+            of_row,
+            of_column,
+            count,
+        }
+    }
+
+    /// The multipliers that give each row and column sum its change:
+    /// `sum_j w_ij (alpha_i + beta_j) = d_i`, and likewise for the columns.
+    fn solve(
+        &self,
+        weight: &dyn Fn(usize, usize) -> f64,
+        row_change: &[f64],
+        column_change: &[f64],
+    ) -> Result<DVector<f64>> {
+        let count = self.count;
+        let mut system = DMatrix::<f64>::zeros(count, count);
+        let mut rhs = DVector::<f64>::zeros(count);
+        for (i, a) in self.of_row.iter().enumerate() {
+            if let Some(a) = *a {
+                rhs[a] = row_change[i];
+            }
+        }
+        for (j, b) in self.of_column.iter().enumerate() {
+            if let Some(b) = *b {
+                rhs[b] = column_change[j];
+            }
+        }
+        for (i, &a) in self.of_row.iter().enumerate() {
+            for (j, &b) in self.of_column.iter().enumerate() {
+                let w = weight(i, j);
+                if w == 0.0 {
+                    continue;
+                }
+                if let Some(a) = a {
+                    system[(a, a)] += w;
+                }
+                if let Some(b) = b {
+                    system[(b, b)] += w;
+                }
+                if let (Some(a), Some(b)) = (a, b) {
+                    system[(a, b)] += w;
+                    system[(b, a)] += w;
+                }
+            }
+        }
+        if count == 0 {
+            return Ok(rhs);
+        }
+        let cholesky = system
+            .cholesky()
+            .ok_or(Error::SingularSystem { row: 0, pivot: 0.0 })?;
+        Ok(cholesky.solve(&rhs))
+    }
 }
 
 /// Validates sizes, finiteness and the penalty.

@@ -180,7 +180,52 @@ pub fn relay_surface<S: Surface<3> + ?Sized>(
     substeps: usize,
     size_scale: f64,
 ) -> Result<RelaidGrid> {
-    let (m, n) = size;
+    check_request(size, start_index, steps)?;
+    let p0 = [start_uv.0, start_uv.1];
+    let domain = start_domain(surface, p0);
+    if !domain.contains(p0, 0.0) {
+        return Err(Error::InvalidSetting {
+            name: "the start parameter u",
+            value: start_uv.0,
+            reason: "the start must lie in the surface's domain",
+        });
+    }
+    let field = Field {
+        surface,
+        inverse_size: if size_scale.is_finite() && size_scale > 0.0 {
+            1.0 / size_scale
+        } else {
+            0.0
+        },
+        domain,
+    };
+    let (dir_u, dir_v, sign) = field.start_directions(p0)?;
+    let mut net = NetLayout {
+        field: &field,
+        start: p0,
+        dir_u,
+        dir_v,
+        sign,
+        size,
+        start_index,
+        steps: (0.0, 0.0),
+        substeps: substeps.max(1),
+    };
+    net.steps = match steps {
+        Some(h) => h,
+        None => net.probed_steps()?,
+    };
+    let rounds = if steps.is_some() { 1 } else { SHRINK_ROUNDS };
+    net.relay(rounds)
+}
+
+/// Refuses a grid smaller than `2 x 2`, a start node outside it and steps that are not
+/// positive and finite.
+fn check_request(
+    (m, n): (usize, usize),
+    start_index: (usize, usize),
+    steps: Option<(f64, f64)>,
+) -> Result<()> {
     if m < 2 || n < 2 {
         return Err(Error::InvalidGridSize {
             what: "re-laid grid",
@@ -209,9 +254,13 @@ pub fn relay_surface<S: Surface<3> + ?Sized>(
             }
         }
     }
+    Ok(())
+}
+
+/// The surface's domain as the net sees it: a closed direction spans half a period each way
+/// from the start `p0` (the surface wraps).
+fn start_domain<S: Surface<3> + ?Sized>(surface: &S, p0: [f64; 2]) -> Domain {
     let (du, dv) = (surface.domain_u(), surface.domain_v());
-    let p0 = [start_uv.0, start_uv.1];
-    // A closed direction: half a period each way from the start (the surface wraps).
     let range = |closed: bool, start: f64, end: f64, at: f64| {
         if closed {
             let half = 0.5 * (end - start);
@@ -220,103 +269,10 @@ pub fn relay_surface<S: Surface<3> + ?Sized>(
             (start, end)
         }
     };
-    let domain = Domain {
+    Domain {
         u: range(surface.is_closed_u(), du.start, du.end, p0[0]),
         v: range(surface.is_closed_v(), dv.start, dv.end, p0[1]),
-    };
-    if !domain.contains(p0, 0.0) {
-        return Err(Error::InvalidSetting {
-            name: "the start parameter u",
-            value: start_uv.0,
-            reason: "the start must lie in the surface's domain",
-        });
     }
-    let field = Field {
-        surface,
-        inverse_size: if size_scale.is_finite() && size_scale > 0.0 {
-            1.0 / size_scale
-        } else {
-            0.0
-        },
-        domain,
-    };
-    let substeps = substeps.max(1);
-    // The two families at the start: u the principal direction closer to W_u.
-    let (d1, d2, normal) = field.principal_pair(p0)?;
-    let su = surface.deriv(p0[0], p0[1], 1, 0);
-    let sv = surface.deriv(p0[0], p0[1], 0, 1);
-    let (mut dir_u, mut dir_v) = if d1.dot(su).abs() >= d2.dot(su).abs() {
-        (d1, d2)
-    } else {
-        (d2, d1)
-    };
-    if dir_u.dot(su) < 0.0 {
-        dir_u = -dir_u;
-    }
-    if dir_v.dot(sv) < 0.0 {
-        dir_v = -dir_v;
-    }
-    // v = sign n x u; then u = -sign n x v.
-    let sign = if dir_v.dot(cross(normal, dir_u)) >= 0.0 {
-        1.0
-    } else {
-        -1.0
-    };
-    let (i0, j0) = start_index;
-    let (mut hu, mut hv) = match steps {
-        Some(h) => h,
-        None => {
-            let probe = field.domain.diagonal() / 400.0;
-            let along = |d: Point3, count: usize| -> Result<f64> {
-                if count == 0 {
-                    return Ok(f64::INFINITY);
-                }
-                let line = field.polyline(p0, d, probe, f64::INFINITY, 0.0)?;
-                Ok(line.length / count as f64)
-            };
-            let hu = along(dir_u, m - 1 - i0)?.min(along(-dir_u, i0)?);
-            let hv = along(dir_v, n - 1 - j0)?.min(along(-dir_v, j0)?);
-            (hu, hv)
-        }
-    };
-    let rounds = if steps.is_some() { 1 } else { SHRINK_ROUNDS };
-    let mut last_error = None;
-    for _ in 0..rounds {
-        let net = NetLayout {
-            field: &field,
-            start: p0,
-            dir_u,
-            dir_v,
-            sign,
-            size,
-            start_index,
-            steps: (hu, hv),
-            substeps,
-        };
-        match net.lay() {
-            Ok(parameters) => {
-                let nodes = Grid::from_fn(m, n, |i, j| {
-                    let [u, v] = *parameters.get(i, j);
-                    surface.eval(u, v)
-                });
-                return Ok(RelaidGrid {
-                    nodes,
-                    parameters,
-                    steps: (hu, hv),
-                    start: start_index,
-                });
-            }
-            Err(e @ Error::ContinuationFailed { .. }) => {
-                last_error = Some(e);
-                hu *= SHRINK;
-                hv *= SHRINK;
-            }
-            Err(e) => return Err(e),
-        }
-    }
-    Err(last_error.unwrap_or(Error::Internal {
-        what: "the relay made no attempt",
-    }))
 }
 
 /// The largest distance between two corners of the grid's bounding box.
@@ -430,6 +386,32 @@ impl<S: Surface<3> + ?Sized> Field<'_, S> {
             });
         }
         Ok((pc.dir1, pc.dir2, pc.normal))
+    }
+
+    /// The two families at the start `p0`: `u` the principal direction closer to `W_u`,
+    /// each turned along its parameter, and the sign with `dir_v = sign n x dir_u`.
+    fn start_directions(&self, p0: [f64; 2]) -> Result<(Point3, Point3, f64)> {
+        let (d1, d2, normal) = self.principal_pair(p0)?;
+        let su = self.surface.deriv(p0[0], p0[1], 1, 0);
+        let sv = self.surface.deriv(p0[0], p0[1], 0, 1);
+        let (mut dir_u, mut dir_v) = if d1.dot(su).abs() >= d2.dot(su).abs() {
+            (d1, d2)
+        } else {
+            (d2, d1)
+        };
+        if dir_u.dot(su) < 0.0 {
+            dir_u = -dir_u;
+        }
+        if dir_v.dot(sv) < 0.0 {
+            dir_v = -dir_v;
+        }
+        // v = sign n x u; then u = -sign n x v.
+        let sign = if dir_v.dot(cross(normal, dir_u)) >= 0.0 {
+            1.0
+        } else {
+            -1.0
+        };
+        Ok((dir_u, dir_v, sign))
     }
 
     /// The principal direction continuing `previous` at `p`, and its parameter velocity
@@ -551,28 +533,71 @@ struct NetLayout<'a, 'b, S: ?Sized> {
 }
 
 impl<S: Surface<3> + ?Sized> NetLayout<'_, '_, S> {
+    /// The steps that fit the grid's nodes on the lines through the start, probed in small
+    /// steps to where each line ends.
+    fn probed_steps(&self) -> Result<(f64, f64)> {
+        let (m, n) = self.size;
+        let (i0, j0) = self.start_index;
+        let probe = self.field.domain.diagonal() / 400.0;
+        let along = |d: Point3, count: usize| -> Result<f64> {
+            if count == 0 {
+                return Ok(f64::INFINITY);
+            }
+            let line = self
+                .field
+                .polyline(self.start, d, probe, f64::INFINITY, 0.0)?;
+            Ok(line.length / count as f64)
+        };
+        let hu = along(self.dir_u, m - 1 - i0)?.min(along(-self.dir_u, i0)?);
+        let hv = along(self.dir_v, n - 1 - j0)?.min(along(-self.dir_v, j0)?);
+        Ok((hu, hv))
+    }
+
+    /// The net in at most `rounds` attempts, the steps shrunk after each that fails to
+    /// continue a line.
+    fn relay(mut self, rounds: usize) -> Result<RelaidGrid> {
+        let (m, n) = self.size;
+        let mut last_error = None;
+        for _ in 0..rounds {
+            match self.lay() {
+                Ok(parameters) => {
+                    let nodes = Grid::from_fn(m, n, |i, j| {
+                        let [u, v] = *parameters.get(i, j);
+                        self.field.surface.eval(u, v)
+                    });
+                    return Ok(RelaidGrid {
+                        nodes,
+                        parameters,
+                        steps: self.steps,
+                        start: self.start_index,
+                    });
+                }
+                Err(e @ Error::ContinuationFailed { .. }) => {
+                    last_error = Some(e);
+                    self.steps.0 *= SHRINK;
+                    self.steps.1 *= SHRINK;
+                }
+                Err(e) => return Err(e),
+            }
+        }
+        Err(last_error.unwrap_or(Error::Internal {
+            what: "the relay made no attempt",
+        }))
+    }
+
     /// The parameters of every node. Errors: [`Error::ContinuationFailed`] naming the row
     /// (`line`) and column (`node`) that could not be placed, or the umbilic met.
     fn lay(&self) -> Result<Grid<[f64; 2]>> {
         let (m, n) = self.size;
         let (i0, j0) = self.start_index;
         let (hu, hv) = self.steps;
-        let f = self.field;
-        let name = |line: usize, node: usize| {
-            move |e: Error| match e {
-                Error::ContinuationFailed { reason, .. } => {
-                    Error::ContinuationFailed { line, node, reason }
-                }
-                other => other,
-            }
-        };
         // Spine (u line through the start) and rib (v line through it), with directions.
         let spine = self
             .line_nodes(self.dir_u, hu, i0, m)
-            .map_err(name(i0, j0))?;
+            .map_err(at_node(i0, j0))?;
         let rib = self
             .line_nodes(self.dir_v, hv, j0, n)
-            .map_err(name(i0, j0))?;
+            .map_err(at_node(i0, j0))?;
         let mut params = Grid::from_fn(m, n, |_, _| [f64::NAN; 2]);
         for (i, &(p, _)) in spine.iter().enumerate() {
             *params.get_mut(i, j0) = p;
@@ -580,11 +605,35 @@ impl<S: Surface<3> + ?Sized> NetLayout<'_, '_, S> {
         for (j, &(p, _)) in rib.iter().enumerate() {
             *params.get_mut(i0, j) = p;
         }
-        // The u lines through the rib nodes, towards smaller and larger i.
-        let (sub_u, sub_v) = (hu / self.substeps as f64, hv / self.substeps as f64);
+        let u_lines = self.u_lines(&rib)?;
+        for (i, &(p, d_u)) in spine.iter().enumerate() {
+            if i == i0 {
+                continue;
+            }
+            let normal = normal(self.field.surface, p[0], p[1]);
+            let d_v = cross(normal, d_u) * self.sign;
+            for (dir, js) in [
+                (d_v, (j0 + 1..n).collect::<Vec<_>>()),
+                (-d_v, (0..j0).rev().collect::<Vec<_>>()),
+            ] {
+                if !js.is_empty() {
+                    self.place_on_v_line(i, (p, dir), &js, &u_lines, &mut params)?;
+                }
+            }
+        }
+        Ok(params)
+    }
+
+    /// The u lines through the rib nodes, towards smaller and larger `i` (none through the
+    /// start, whose u line is the spine).
+    fn u_lines(&self, rib: &[([f64; 2], Point3)]) -> Result<Vec<UnderAndOver>> {
+        let (m, _) = self.size;
+        let (i0, j0) = self.start_index;
+        let hu = self.steps.0;
+        let f = self.field;
+        let sub_u = hu / self.substeps as f64;
         let reach_u = 2.0 * hu * (m as f64) + hu;
-        let reach_v = 2.0 * hv * (n as f64) + hv;
-        let mut u_lines = Vec::with_capacity(n);
+        let mut u_lines = Vec::with_capacity(rib.len());
         for (j, &(p, d_v)) in rib.iter().enumerate() {
             if j == j0 {
                 u_lines.push((None, None));
@@ -595,57 +644,60 @@ impl<S: Surface<3> + ?Sized> NetLayout<'_, '_, S> {
             let up = (i0 + 1 < m)
                 .then(|| f.polyline(p, d_u, sub_u, reach_u, LINE_SLACK))
                 .transpose()
-                .map_err(name(i0, j))?;
+                .map_err(at_node(i0, j))?;
             let down = (i0 > 0)
                 .then(|| f.polyline(p, -d_u, sub_u, reach_u, LINE_SLACK))
                 .transpose()
-                .map_err(name(i0, j))?;
+                .map_err(at_node(i0, j))?;
             u_lines.push((down, up));
         }
-        for (i, &(p, d_u)) in spine.iter().enumerate() {
-            if i == i0 {
-                continue;
-            }
-            let normal = normal(f.surface, p[0], p[1]);
-            let d_v = cross(normal, d_u) * self.sign;
-            for (dir, js) in [
-                (d_v, (j0 + 1..n).collect::<Vec<_>>()),
-                (-d_v, (0..j0).rev().collect::<Vec<_>>()),
-            ] {
-                if js.is_empty() {
-                    continue;
-                }
-                let line = f
-                    .polyline(p, dir, sub_v, reach_v, LINE_SLACK)
-                    .map_err(name(i, j0))?;
-                let mut from = 0;
-                for j in js {
-                    let crossing_line = if i > i0 {
-                        u_lines[j].1.as_ref()
-                    } else {
-                        u_lines[j].0.as_ref()
-                    };
-                    let Some(other) = crossing_line else {
-                        return Err(Error::Internal {
-                            what: "a u line of the re-laid net was not traced",
-                        });
-                    };
-                    let found = first_crossing(&line.points[from..], &other.points)
-                        .filter(|(_, q)| f.domain.contains(*q, NODE_SLACK));
-                    let Some((k, point)) = found else {
-                        return Err(Error::ContinuationFailed {
-                            line: i,
-                            node: j,
-                            reason: "the lines of curvature through the node do not meet \
-                                     inside the input surface's domain",
-                        });
-                    };
-                    from += k;
-                    *params.get_mut(i, j) = point;
-                }
-            }
+        Ok(u_lines)
+    }
+
+    /// Places the nodes `js` of row `i`: the v line from the spine node `(p, dir)` traced,
+    /// and each node where it first meets the u line of its column.
+    fn place_on_v_line(
+        &self,
+        i: usize,
+        (p, dir): ([f64; 2], Point3),
+        js: &[usize],
+        u_lines: &[UnderAndOver],
+        params: &mut Grid<[f64; 2]>,
+    ) -> Result<()> {
+        let (_, n) = self.size;
+        let (i0, j0) = self.start_index;
+        let hv = self.steps.1;
+        let f = self.field;
+        let reach_v = 2.0 * hv * (n as f64) + hv;
+        let line = f
+            .polyline(p, dir, hv / self.substeps as f64, reach_v, LINE_SLACK)
+            .map_err(at_node(i, j0))?;
+        let mut from = 0;
+        for &j in js {
+            let crossing_line = if i > i0 {
+                u_lines[j].1.as_ref()
+            } else {
+                u_lines[j].0.as_ref()
+            };
+            let Some(other) = crossing_line else {
+                return Err(Error::Internal {
+                    what: "a u line of the re-laid net was not traced",
+                });
+            };
+            let found = first_crossing(&line.points[from..], &other.points)
+                .filter(|(_, q)| f.domain.contains(*q, NODE_SLACK));
+            let Some((k, point)) = found else {
+                return Err(Error::ContinuationFailed {
+                    line: i,
+                    node: j,
+                    reason: "the lines of curvature through the node do not meet \
+                             inside the input surface's domain",
+                });
+            };
+            from += k;
+            *params.get_mut(i, j) = point;
         }
-        Ok(params)
+        Ok(())
     }
 
     /// The `count` nodes of the line through the start along `d` with step `h`, the start at
@@ -664,6 +716,19 @@ impl<S: Surface<3> + ?Sized> NetLayout<'_, '_, S> {
         out.push((self.start, d));
         out.extend(f.nodes(self.start, d, h, count - 1 - at, self.substeps)?);
         Ok(out)
+    }
+}
+
+/// A u line through a rib node: its parts towards smaller and larger `i`.
+type UnderAndOver = (Option<Polyline>, Option<Polyline>);
+
+/// Names a continuation failure by the row (`line`) and column (`node`) it happened at.
+fn at_node(line: usize, node: usize) -> impl Fn(Error) -> Error {
+    move |e: Error| match e {
+        Error::ContinuationFailed { reason, .. } => {
+            Error::ContinuationFailed { line, node, reason }
+        }
+        other => other,
     }
 }
 

@@ -95,6 +95,26 @@ pub(crate) enum Ending {
     Stopped(SectionWarning),
 }
 
+/// What one attempted step of a trace came to.
+enum Step<const D: usize> {
+    /// Accepted.
+    Accepted(Accepted<D>),
+    /// Refused: try again with the step scaled by the factor.
+    Shrink(f64),
+    /// The trace ends.
+    End(Ending),
+}
+
+/// An accepted step: the new point and its tangent, the chord's length, the chord's
+/// deviation from the curve, and the border the point lies on.
+struct Accepted<const D: usize> {
+    next: Probe<D>,
+    next_tangent: Tangent<D>,
+    length: f64,
+    deviation: f64,
+    border: Option<usize>,
+}
+
 /// The continuation of the level set of `level` on `surface`.
 pub(crate) struct Tracer<'a, S: ?Sized, F, const D: usize> {
     pub(crate) surface: &'a S,
@@ -256,49 +276,20 @@ impl<S: Surface<D> + ?Sized, F: LevelFunction<D>, const D: usize> Tracer<'_, S, 
                 let (u, v) = self.at(current.s);
                 return Ending::Stopped(SectionWarning::StepTooSmall { u, v });
             }
-            let (prediction, border) = self.predict(&current, &tangent, h);
-            let Some((prediction, border)) = prediction.map(|p| (p, border)) else {
-                return Ending::Border; // on the border, heading out
-            };
-            let Some((next, moved, border)) = self.corrected_inside(prediction, border) else {
-                h *= 0.5;
-                continue;
-            };
-            let chord = next.point - current.point;
-            let length = chord.norm();
-            if self.grid.pole_at(next.s).is_some() {
-                // A pole on the level set: the whole line is one point, where the curve ends
-                // (and is joined to the curve leaving it; see `scan.rs`).
-                if moved > 0.5 * h || length.is_nan() || length <= 0.0 {
-                    h *= 0.5;
+            let Accepted {
+                next,
+                next_tangent,
+                length,
+                deviation,
+                border,
+            } = match self.step(&current, &tangent, (h, sign), out) {
+                Step::Accepted(accepted) => accepted,
+                Step::Shrink(factor) => {
+                    h *= factor;
                     continue;
                 }
-                out.push(next.node());
-                return Ending::Border;
-            }
-            let Some(next_tangent) = self.tangent(&next, Some(&tangent), sign) else {
-                if moved <= 0.5 * h && length > 0.0 {
-                    out.push(next.node());
-                }
-                let (u, v) = self.at(next.s);
-                return Ending::Stopped(SectionWarning::SingularPoint { u, v });
+                Step::End(ending) => return ending,
             };
-            let turn = angle(tangent.space, next_tangent.space);
-            let heading = if length > 0.0 {
-                angle(tangent.space, chord * (1.0 / length))
-            } else {
-                0.0
-            };
-            let moved_forward = length > 0.0; // false for NaN
-            if moved > 0.5 * h || turn > MAX_TURN || heading > MAX_TURN || !moved_forward {
-                h *= 0.5;
-                continue;
-            }
-            let deviation = length * turn / 8.0;
-            if deviation > self.tolerance {
-                h *= (0.9 * (self.tolerance / deviation).sqrt()).max(0.25);
-                continue;
-            }
             if closing && out.len() >= 3 && self.closes(&out[0], &current, &next) {
                 return Ending::Closed;
             }
@@ -323,6 +314,66 @@ impl<S: Surface<D> + ?Sized, F: LevelFunction<D>, const D: usize> Tracer<'_, S, 
             current = next;
             tangent = next_tangent;
         }
+    }
+
+    /// One attempted step of length `h` from `current` along `tangent` (`sign` as in
+    /// [`Self::trace`]): predicted, corrected back onto the level set inside the domain, and
+    /// accepted when it moved forward little turned and within the tolerance of the chord.
+    /// A step that ends the trace at a pole or a singular point appends its last point to
+    /// `out`.
+    fn step(
+        &self,
+        current: &Probe<D>,
+        tangent: &Tangent<D>,
+        (h, sign): (f64, f64),
+        out: &mut Vec<Node<D>>,
+    ) -> Step<D> {
+        let (prediction, border) = self.predict(current, tangent, h);
+        let Some((prediction, border)) = prediction.map(|p| (p, border)) else {
+            return Step::End(Ending::Border); // on the border, heading out
+        };
+        let Some((next, moved, border)) = self.corrected_inside(prediction, border) else {
+            return Step::Shrink(0.5);
+        };
+        let chord = next.point - current.point;
+        let length = chord.norm();
+        if self.grid.pole_at(next.s).is_some() {
+            // A pole on the level set: the whole line is one point, where the curve ends
+            // (and is joined to the curve leaving it; see `scan.rs`).
+            if moved > 0.5 * h || length.is_nan() || length <= 0.0 {
+                return Step::Shrink(0.5);
+            }
+            out.push(next.node());
+            return Step::End(Ending::Border);
+        }
+        let Some(next_tangent) = self.tangent(&next, Some(tangent), sign) else {
+            if moved <= 0.5 * h && length > 0.0 {
+                out.push(next.node());
+            }
+            let (u, v) = self.at(next.s);
+            return Step::End(Ending::Stopped(SectionWarning::SingularPoint { u, v }));
+        };
+        let turn = angle(tangent.space, next_tangent.space);
+        let heading = if length > 0.0 {
+            angle(tangent.space, chord * (1.0 / length))
+        } else {
+            0.0
+        };
+        let moved_forward = length > 0.0; // false for NaN
+        if moved > 0.5 * h || turn > MAX_TURN || heading > MAX_TURN || !moved_forward {
+            return Step::Shrink(0.5);
+        }
+        let deviation = length * turn / 8.0;
+        if deviation > self.tolerance {
+            return Step::Shrink((0.9 * (self.tolerance / deviation).sqrt()).max(0.25));
+        }
+        Step::Accepted(Accepted {
+            next,
+            next_tangent,
+            length,
+            deviation,
+            border,
+        })
     }
 
     /// The predicted cell coordinates of a step of length `h`, clipped to an open border

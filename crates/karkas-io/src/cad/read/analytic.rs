@@ -355,275 +355,259 @@ impl BasisSurface {
     /// whole surface when bounded and without loops), as a NURBS with its closed directions
     /// marked.
     pub fn bounded(&self, loops: &[Vec<SampledEdge<'_>>]) -> Result<NurbsSurface<3>, String> {
-        let never = |_: Point3| false;
+        let bounds = LoopBounds { loops };
         match self {
             BasisSurface::Nurbs(s) => Ok(s.clone()),
-            BasisSurface::Plane(f) => {
-                let u = Coordinate {
-                    value: &|p| (p - f.origin).dot(f.x),
-                    angle: false,
-                }
-                .range(loops, &never);
-                let v = Coordinate {
-                    value: &|p| (p - f.origin).dot(f.y),
-                    angle: false,
-                }
-                .range(loops, &never);
-                plane(f, linear(u, "a plane")?, linear(v, "a plane")?).map_err(|e| e.to_string())
-            }
-            BasisSurface::Cylinder(f, r) => {
-                let near_axis = |p: Point3| radial(f, p) < 1e-9 * r;
-                let (u, full) = angles(
-                    Coordinate {
-                        value: &|p| azimuth(f, p),
-                        angle: true,
-                    }
-                    .range(loops, &near_axis),
-                );
-                let v = Coordinate {
-                    value: &|p| (p - f.origin).dot(f.z),
-                    angle: false,
-                }
-                .range(loops, &never);
-                let s = cylinder(f, *r, u, linear(v, "a cylinder")?).map_err(|e| e.to_string())?;
-                Ok(s.with_closed(full, false))
-            }
-            BasisSurface::Cone(f, r, alpha) => {
-                let scale = r.abs().max(1.0);
-                let near_axis = |p: Point3| radial(f, p) < 1e-9 * scale;
-                let (u, full) = angles(
-                    Coordinate {
-                        value: &|p| azimuth(f, p),
-                        angle: true,
-                    }
-                    .range(loops, &near_axis),
-                );
-                let c = alpha.cos();
-                let v = Coordinate {
-                    value: &|p| (p - f.origin).dot(f.z) / c,
-                    angle: false,
-                }
-                .range(loops, &never);
-                let s = cone(f, *r, *alpha, u, linear(v, "a cone")?).map_err(|e| e.to_string())?;
-                Ok(s.with_closed(full, false))
-            }
-            BasisSurface::Sphere(f, r) => {
-                let near_axis = |p: Point3| radial(f, p) < 1e-9 * r;
-                let (u, full) = angles(
-                    Coordinate {
-                        value: &|p| azimuth(f, p),
-                        angle: true,
-                    }
-                    .range(loops, &near_axis),
-                );
-                let latitude = |p: Point3| ((p - f.origin).dot(f.z) / r).clamp(-1.0, 1.0).asin();
-                let v = if full {
-                    (-FRAC_PI_2, FRAC_PI_2)
-                } else {
-                    linear(
-                        Coordinate {
-                            value: &latitude,
-                            angle: false,
-                        }
-                        .range(loops, &never),
-                        "a sphere",
-                    )?
-                };
-                let s = sphere(f, *r, u, v).map_err(|e| e.to_string())?;
-                Ok(s.with_closed(full, false))
-            }
-            BasisSurface::Torus(f, major, minor) => {
-                let near_axis = |p: Point3| radial(f, p) < 1e-9 * major;
-                let (u, full_u) = angles(
-                    Coordinate {
-                        value: &|p| azimuth(f, p),
-                        angle: true,
-                    }
-                    .range(loops, &near_axis),
-                );
-                let tube = |p: Point3| (p - f.origin).dot(f.z).atan2(radial(f, p) - major);
-                let (v, full_v) = angles(
-                    Coordinate {
-                        value: &tube,
-                        angle: true,
-                    }
-                    .range(loops, &never),
-                );
-                let s = torus(f, *major, *minor, u, v).map_err(|e| e.to_string())?;
-                Ok(s.with_closed(full_u, full_v))
-            }
+            BasisSurface::Plane(f) => bounds.plane(f),
+            BasisSurface::Cylinder(f, r) => bounds.cylinder(f, *r),
+            BasisSurface::Cone(f, r, alpha) => bounds.cone(f, *r, *alpha),
+            BasisSurface::Sphere(f, r) => bounds.sphere(f, *r),
+            BasisSurface::Torus(f, major, minor) => bounds.torus(f, *major, *minor),
             BasisSurface::Revolution {
                 profile,
                 origin,
                 axis,
-            } => {
-                let (v0, v1) = match profile.natural_range() {
-                    Some(r) => r,
-                    None => {
-                        // A line: its parameter where it meets each sample's circle.
-                        let BasisCurve::Line { origin: o, dir } = profile else {
-                            return Err("a surface of revolution of an unbounded curve".into());
-                        };
-                        let along = dir.dot(*axis);
-                        if along.abs() < 1e-12 {
-                            return Err(
-                                "a surface of revolution of a line square to its axis".into()
-                            );
-                        }
-                        let value = |p: Point3| (p - *o).dot(*axis) / along;
-                        linear(
-                            Coordinate {
-                                value: &value,
-                                angle: false,
-                            }
-                            .range(loops, &never),
-                            "a surface of revolution",
-                        )?
-                    }
-                };
-                let g = profile.bounded(v0, v1)?;
-                let mid = g.eval(0.5 * (v0 + v1));
-                let reference = mid - *origin - *axis * (mid - *origin).dot(*axis);
-                let frame = Frame::new(
-                    *origin,
-                    *axis,
-                    if reference.norm() > 0.0 {
-                        reference
-                    } else {
-                        any_normal(*axis)
-                    },
-                )
-                .map_err(|e| e.to_string())?;
-                let near_axis =
-                    |p: Point3| radial(&frame, p) < 1e-12 * (1.0 + (p - *origin).norm());
-                // The turn that carries the profile onto a point: its azimuth when the profile
-                // lies in the half-plane of the frame's x (a revolved sketch); otherwise the
-                // azimuth less that of the profile's point on the same circle, found by
-                // projecting onto the whole turn (whose v is the profile's parameter).
-                let size = g.control_points().iter().map(|q| (*q - *origin).norm());
-                let size = size.fold(0.0, f64::max);
-                let in_half_plane = g.control_points().iter().all(|q| {
-                    let d = *q - *origin;
-                    d.dot(frame.y).abs() <= 1e-12 * size && d.dot(frame.x) >= -1e-12 * size
-                });
-                let whole;
-                let projector = if in_half_plane {
-                    None
-                } else {
-                    whole =
-                        revolution(&g, *origin, *axis, (0.0, TAU)).map_err(|e| e.to_string())?;
-                    Some(SurfaceProjector::new(&whole, (64, 16), 0.0).map_err(|e| e.to_string())?)
-                };
-                let turn = |p: Point3| match &projector {
-                    None => azimuth(&frame, p),
-                    Some(s) => azimuth(&frame, p) - azimuth(&frame, g.eval(s.nearest(p).v)),
-                };
-                let (u, full) = angles(
-                    Coordinate {
-                        value: &turn,
-                        angle: true,
-                    }
-                    .range(loops, &near_axis),
-                );
-                let s = revolution(&g, *origin, *axis, u).map_err(|e| e.to_string())?;
-                Ok(s.with_closed(full, false))
+            } => bounds.revolution(profile, *origin, *axis),
+            BasisSurface::Extrusion { curve, dir } => bounds.extrusion(curve, *dir),
+        }
+    }
+}
+
+/// Never skips a sample.
+fn never(_: Point3) -> bool {
+    false
+}
+
+/// The loops of a face, and each kind of surface bounded by them.
+struct LoopBounds<'l, 'e> {
+    loops: &'l [Vec<SampledEdge<'e>>],
+}
+
+impl LoopBounds<'_, '_> {
+    /// The range of a linear coordinate over the loops, refused when empty.
+    fn linear(&self, value: &dyn Fn(Point3) -> f64, what: &str) -> Result<(f64, f64), String> {
+        linear(
+            Coordinate {
+                value,
+                angle: false,
             }
-            BasisSurface::Extrusion { curve, dir } => {
-                let g = match curve {
-                    BasisCurve::Nurbs(c) => c.clone(),
-                    BasisCurve::Line { origin, dir: e } => {
-                        // u along the line after removing the sweep: p - origin = u e + v d.
-                        let (ee, ed) = (1.0, e.dot(*dir));
-                        let det = ee - ed * ed;
-                        if det.abs() < 1e-12 {
-                            return Err("an extrusion of a line along itself".into());
-                        }
-                        let value = |p: Point3| {
-                            let w = p - *origin;
-                            (w.dot(*e) - ed * w.dot(*dir)) / det
-                        };
-                        let r = linear(
-                            Coordinate {
-                                value: &value,
-                                angle: false,
-                            }
-                            .range(loops, &never),
-                            "an extrusion",
-                        )?;
-                        curve.bounded(r.0, r.1)?
-                    }
-                    BasisCurve::Conic { frame, .. }
-                    | BasisCurve::Hyperbola { frame, .. }
-                    | BasisCurve::Parabola { frame, .. } => {
-                        let n = frame.z;
-                        let dn = dir.dot(n);
-                        if dn.abs() < 1e-12 {
-                            return Err("an extrusion of a conic along its own plane".into());
-                        }
-                        // The curve's parameter of the point where the sweep through `p`
-                        // meets the curve's plane.
-                        let value = |p: Point3| {
-                            let q = p - *dir * ((p - frame.origin).dot(n) / dn);
-                            curve.parameter_of(q).unwrap_or(f64::NAN)
-                        };
-                        let periodic = matches!(curve, BasisCurve::Conic { .. });
-                        let range = Coordinate {
-                            value: &value,
-                            angle: periodic,
-                        }
-                        .range(loops, &never);
-                        let r = if periodic {
-                            angles(range).0
-                        } else {
-                            linear(range, "an extrusion")?
-                        };
-                        curve.bounded(r.0, r.1)?
-                    }
+            .range(self.loops, &never),
+            what,
+        )
+    }
+
+    /// The range of an angle over the loops (samples where `skip` holds left out), and
+    /// whether it is a full turn.
+    fn angle(
+        &self,
+        value: &dyn Fn(Point3) -> f64,
+        skip: &dyn Fn(Point3) -> bool,
+    ) -> ((f64, f64), bool) {
+        angles(Coordinate { value, angle: true }.range(self.loops, skip))
+    }
+
+    /// The azimuth range about `f`'s axis, samples within `tolerance` of the axis left out.
+    fn azimuths(&self, f: &Frame, tolerance: f64) -> ((f64, f64), bool) {
+        self.angle(&|p| azimuth(f, p), &|p| radial(f, p) < tolerance)
+    }
+
+    fn plane(&self, f: &Frame) -> Result<NurbsSurface<3>, String> {
+        let u = self.linear(&|p| (p - f.origin).dot(f.x), "a plane")?;
+        let v = self.linear(&|p| (p - f.origin).dot(f.y), "a plane")?;
+        plane(f, u, v).map_err(|e| e.to_string())
+    }
+
+    fn cylinder(&self, f: &Frame, r: f64) -> Result<NurbsSurface<3>, String> {
+        let (u, full) = self.azimuths(f, 1e-9 * r);
+        let v = self.linear(&|p| (p - f.origin).dot(f.z), "a cylinder")?;
+        let s = cylinder(f, r, u, v).map_err(|e| e.to_string())?;
+        Ok(s.with_closed(full, false))
+    }
+
+    fn cone(&self, f: &Frame, r: f64, alpha: f64) -> Result<NurbsSurface<3>, String> {
+        let (u, full) = self.azimuths(f, 1e-9 * r.abs().max(1.0));
+        let c = alpha.cos();
+        let v = self.linear(&|p| (p - f.origin).dot(f.z) / c, "a cone")?;
+        let s = cone(f, r, alpha, u, v).map_err(|e| e.to_string())?;
+        Ok(s.with_closed(full, false))
+    }
+
+    fn sphere(&self, f: &Frame, r: f64) -> Result<NurbsSurface<3>, String> {
+        let (u, full) = self.azimuths(f, 1e-9 * r);
+        let latitude = |p: Point3| ((p - f.origin).dot(f.z) / r).clamp(-1.0, 1.0).asin();
+        let v = if full {
+            (-FRAC_PI_2, FRAC_PI_2)
+        } else {
+            self.linear(&latitude, "a sphere")?
+        };
+        let s = sphere(f, r, u, v).map_err(|e| e.to_string())?;
+        Ok(s.with_closed(full, false))
+    }
+
+    fn torus(&self, f: &Frame, major: f64, minor: f64) -> Result<NurbsSurface<3>, String> {
+        let (u, full_u) = self.azimuths(f, 1e-9 * major);
+        let tube = |p: Point3| (p - f.origin).dot(f.z).atan2(radial(f, p) - major);
+        let (v, full_v) = self.angle(&tube, &never);
+        let s = torus(f, major, minor, u, v).map_err(|e| e.to_string())?;
+        Ok(s.with_closed(full_u, full_v))
+    }
+
+    fn revolution(
+        &self,
+        profile: &BasisCurve,
+        origin: Point3,
+        axis: Point3,
+    ) -> Result<NurbsSurface<3>, String> {
+        let (v0, v1) = match profile.natural_range() {
+            Some(r) => r,
+            None => self.line_along_axis(profile, axis)?,
+        };
+        let g = profile.bounded(v0, v1)?;
+        let frame = profile_frame(&g, 0.5 * (v0 + v1), origin, axis)?;
+        let near_axis = |p: Point3| radial(&frame, p) < 1e-12 * (1.0 + (p - origin).norm());
+        let (u, full) = if in_half_plane(&g, &frame) {
+            self.angle(&|p| azimuth(&frame, p), &near_axis)
+        } else {
+            // The azimuth less that of the profile's point on the same circle, found by
+            // projecting onto the whole turn (whose v is the profile's parameter).
+            let whole = revolution(&g, origin, axis, (0.0, TAU)).map_err(|e| e.to_string())?;
+            let projector =
+                SurfaceProjector::new(&whole, (64, 16), 0.0).map_err(|e| e.to_string())?;
+            let turn =
+                |p: Point3| azimuth(&frame, p) - azimuth(&frame, g.eval(projector.nearest(p).v));
+            self.angle(&turn, &near_axis)
+        };
+        let s = revolution(&g, origin, axis, u).map_err(|e| e.to_string())?;
+        Ok(s.with_closed(full, false))
+    }
+
+    /// A revolved line's range: its parameter where it meets each sample's circle.
+    fn line_along_axis(&self, profile: &BasisCurve, axis: Point3) -> Result<(f64, f64), String> {
+        let BasisCurve::Line { origin: o, dir } = profile else {
+            return Err("a surface of revolution of an unbounded curve".into());
+        };
+        let along = dir.dot(axis);
+        if along.abs() < 1e-12 {
+            return Err("a surface of revolution of a line square to its axis".into());
+        }
+        self.linear(
+            &|p: Point3| (p - *o).dot(axis) / along,
+            "a surface of revolution",
+        )
+    }
+
+    fn extrusion(&self, curve: &BasisCurve, dir: Point3) -> Result<NurbsSurface<3>, String> {
+        let g = self.swept_curve(curve, dir)?;
+        let v = self.sweep_range(curve, &g, dir)?;
+        extrusion(&g, dir, v).map_err(|e| e.to_string())
+    }
+
+    /// The extruded curve, bounded to the loops' extent across the sweep.
+    fn swept_curve(&self, curve: &BasisCurve, dir: Point3) -> Result<NurbsCurve<3>, String> {
+        match curve {
+            BasisCurve::Nurbs(c) => Ok(c.clone()),
+            BasisCurve::Line { origin, dir: e } => {
+                // u along the line after removing the sweep: p - origin = u e + v d.
+                let (ee, ed) = (1.0, e.dot(dir));
+                let det = ee - ed * ed;
+                if det.abs() < 1e-12 {
+                    return Err("an extrusion of a line along itself".into());
+                }
+                let value = |p: Point3| {
+                    let w = p - *origin;
+                    (w.dot(*e) - ed * w.dot(dir)) / det
                 };
-                // v: the distance along the sweep, bounded by the samples against the curve's
-                // control points (the curve lies in their hull).
-                let along = |p: Point3| p.dot(*dir);
-                let (cmin, cmax) = g
-                    .control_points()
-                    .iter()
-                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), c| {
-                        (lo.min(along(*c)), hi.max(along(*c)))
-                    });
-                let v = if let BasisCurve::Nurbs(_) = curve {
-                    let r = Coordinate {
-                        value: &along,
-                        angle: false,
-                    }
-                    .range(loops, &never);
-                    let (lo, hi) = linear(r, "an extrusion")?;
-                    (lo - cmax, hi - cmin)
+                let r = self.linear(&value, "an extrusion")?;
+                curve.bounded(r.0, r.1)
+            }
+            BasisCurve::Conic { frame, .. }
+            | BasisCurve::Hyperbola { frame, .. }
+            | BasisCurve::Parabola { frame, .. } => {
+                let n = frame.z;
+                let dn = dir.dot(n);
+                if dn.abs() < 1e-12 {
+                    return Err("an extrusion of a conic along its own plane".into());
+                }
+                // The curve's parameter of the point where the sweep through `p` meets the
+                // curve's plane.
+                let value = |p: Point3| {
+                    let q = p - dir * ((p - frame.origin).dot(n) / dn);
+                    curve.parameter_of(q).unwrap_or(f64::NAN)
+                };
+                let r = if matches!(curve, BasisCurve::Conic { .. }) {
+                    self.angle(&value, &never).0
                 } else {
-                    let value = |p: Point3| match curve {
-                        BasisCurve::Line { origin, dir: e } => {
-                            let w = p - *origin;
-                            let ed = e.dot(*dir);
-                            (w.dot(*dir) - ed * w.dot(*e)) / (1.0 - ed * ed)
-                        }
-                        BasisCurve::Conic { frame, .. }
-                        | BasisCurve::Hyperbola { frame, .. }
-                        | BasisCurve::Parabola { frame, .. } => {
-                            (p - frame.origin).dot(frame.z) / dir.dot(frame.z)
-                        }
-                        BasisCurve::Nurbs(_) => 0.0,
-                    };
-                    linear(
-                        Coordinate {
-                            value: &value,
-                            angle: false,
-                        }
-                        .range(loops, &never),
-                        "an extrusion",
-                    )?
+                    self.linear(&value, "an extrusion")?
                 };
-                extrusion(&g, *dir, v).map_err(|e| e.to_string())
+                curve.bounded(r.0, r.1)
             }
         }
     }
+
+    /// v: the distance along the sweep, bounded by the samples against the curve's control
+    /// points (the curve lies in their hull).
+    fn sweep_range(
+        &self,
+        curve: &BasisCurve,
+        g: &NurbsCurve<3>,
+        dir: Point3,
+    ) -> Result<(f64, f64), String> {
+        let along = |p: Point3| p.dot(dir);
+        let (cmin, cmax) = g
+            .control_points()
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), c| {
+                (lo.min(along(*c)), hi.max(along(*c)))
+            });
+        if let BasisCurve::Nurbs(_) = curve {
+            let (lo, hi) = self.linear(&along, "an extrusion")?;
+            return Ok((lo - cmax, hi - cmin));
+        }
+        let value = |p: Point3| match curve {
+            BasisCurve::Line { origin, dir: e } => {
+                let w = p - *origin;
+                let ed = e.dot(dir);
+                (w.dot(dir) - ed * w.dot(*e)) / (1.0 - ed * ed)
+            }
+            BasisCurve::Conic { frame, .. }
+            | BasisCurve::Hyperbola { frame, .. }
+            | BasisCurve::Parabola { frame, .. } => {
+                (p - frame.origin).dot(frame.z) / dir.dot(frame.z)
+            }
+            BasisCurve::Nurbs(_) => 0.0,
+        };
+        self.linear(&value, "an extrusion")
+    }
+}
+
+/// The frame of a revolution: its axis, and its x toward the profile's point at `mid`
+/// (any normal of the axis when that point lies on it).
+fn profile_frame(
+    g: &NurbsCurve<3>,
+    mid: f64,
+    origin: Point3,
+    axis: Point3,
+) -> Result<Frame, String> {
+    let mid = g.eval(mid);
+    let reference = mid - origin - axis * (mid - origin).dot(axis);
+    let x = if reference.norm() > 0.0 {
+        reference
+    } else {
+        any_normal(axis)
+    };
+    Frame::new(origin, axis, x).map_err(|e| e.to_string())
+}
+
+/// Whether the profile lies in the half-plane of the frame's x (a revolved sketch), so that
+/// the turn carrying it onto a point is that point's azimuth.
+fn in_half_plane(g: &NurbsCurve<3>, frame: &Frame) -> bool {
+    let origin = frame.origin;
+    let size = g.control_points().iter().map(|q| (*q - origin).norm());
+    let size = size.fold(0.0, f64::max);
+    g.control_points().iter().all(|q| {
+        let d = *q - origin;
+        d.dot(frame.y).abs() <= 1e-12 * size && d.dot(frame.x) >= -1e-12 * size
+    })
 }
 
 /// The angle of `p` about `f`'s `z` axis from its `x` axis, in `(-π, π]`.

@@ -405,27 +405,10 @@ impl<'a> Builder<'a> {
         let weights = Grid::from_row_major(nu, nv, weights).map_err(|e| p.error(e.to_string()))?;
         let s = NurbsSurface::new((m1, knots_u), (m2, knots_v), control, weights)
             .map_err(|e| p.error(e.to_string()))?;
-        let closed = |u: bool| {
-            let (du, dv) = (s.domain_u(), s.domain_v());
-            let size = s
-                .control_points()
-                .as_slice()
-                .iter()
-                .map(|q| q.distance(*s.control_points().get(0, 0)))
-                .fold(0.0, f64::max);
-            (0..=8).all(|k| {
-                let t = k as f64 / 8.0;
-                let (a, b) = if u {
-                    let v = dv.start + t * dv.length();
-                    (s.eval(du.start, v), s.eval(du.end, v))
-                } else {
-                    let x = du.start + t * du.length();
-                    (s.eval(x, dv.start), s.eval(x, dv.end))
-                };
-                a.distance(b) <= 1e-10 * size
-            })
-        };
-        let (cu, cv) = (closed_u && closed(true), closed_v && closed(false));
+        let (cu, cv) = (
+            closed_u && ends_meet(&s, true),
+            closed_v && ends_meet(&s, false),
+        );
         Ok(Got::Read(s.with_closed(cu, cv)))
     }
 
@@ -562,6 +545,28 @@ impl<'a> Builder<'a> {
     fn skip(&mut self, what: String, why: &'static str) {
         *self.unread.entry((what, why)).or_insert(0) += 1;
     }
+}
+
+/// Whether the surface's first and last lines in `u` (or `v`) coincide.
+fn ends_meet(s: &NurbsSurface<3>, u: bool) -> bool {
+    let (du, dv) = (s.domain_u(), s.domain_v());
+    let size = s
+        .control_points()
+        .as_slice()
+        .iter()
+        .map(|q| q.distance(*s.control_points().get(0, 0)))
+        .fold(0.0, f64::max);
+    (0..=8).all(|k| {
+        let t = k as f64 / 8.0;
+        let (a, b) = if u {
+            let v = dv.start + t * dv.length();
+            (s.eval(du.start, v), s.eval(du.end, v))
+        } else {
+            let x = du.start + t * du.length();
+            (s.eval(x, dv.start), s.eval(x, dv.end))
+        };
+        a.distance(b) <= 1e-10 * size
+    })
 }
 
 /// The model-space images of parameter-space curves on `surface`, as polylines of 64

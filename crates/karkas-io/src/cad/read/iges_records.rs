@@ -71,126 +71,184 @@ pub(crate) fn read_records(
     reader: &mut dyn BufRead,
     wanted: &dyn Fn(i64) -> bool,
 ) -> Result<IgesFile, IoError> {
-    let mut file = IgesFile {
-        scale: 1.0,
-        unit_flag: 2,
-        ..Default::default()
+    let mut records = Records {
+        path,
+        wanted,
+        file: IgesFile {
+            scale: 1.0,
+            unit_flag: 2,
+            ..Default::default()
+        },
+        global: String::new(),
+        global_line: 0,
+        pending_d: None,
+        current: None,
+        held: 0,
     };
     let mut line_no = 0usize;
     let mut buf = Vec::new();
-    let mut global = String::new();
-    let mut global_line = 0;
-    let mut pending_d: Option<(String, usize)> = None;
-    // The entity whose parameter lines are being joined: (pointer, text, first line).
-    let mut current: Option<(i64, String, usize)> = None;
-    let mut held: u128 = 0;
     let mut terminated = false;
-    let mut section_order = Vec::new();
     loop {
         if !read_line_bytes(reader, path, &mut buf, line_no + 1)? {
             break;
         }
         line_no += 1;
-        while buf.last().is_some_and(|b| *b == b'\n' || *b == b'\r') {
-            buf.pop();
-        }
-        if buf.is_empty() {
+        let Some(text) = record_text(path, &mut buf, line_no)? else {
             continue;
+        };
+        if records.record(&text, line_no)? {
+            terminated = true;
+            break;
         }
-        if buf.iter().any(|&b| b == 0 || b >= 0x80) {
-            return Err(Location::new(path, line_no).error(
-                "a byte that is not ASCII text: not an IGES file (binary IGES is not read)",
-            ));
-        }
-        if buf.len() < 73 {
-            return Err(Location::new(path, line_no).error(format!(
-                "a record of {} columns: IGES records have 80 (the section letter in column 73)",
-                buf.len()
-            )));
-        }
-        let text = String::from_utf8_lossy(&buf).into_owned();
-        let section = buf[72] as char;
-        if section_order.last() != Some(&section) {
-            section_order.push(section);
-        }
-        match section {
+    }
+    records.finish(terminated, line_no)
+}
+
+/// The text of the 80-column record just read into `buf` (its line end dropped), `None`
+/// when blank; refused when not ASCII or shorter than the section letter's column.
+fn record_text(path: &Path, buf: &mut Vec<u8>, line_no: usize) -> Result<Option<String>, IoError> {
+    while buf.last().is_some_and(|b| *b == b'\n' || *b == b'\r') {
+        buf.pop();
+    }
+    if buf.is_empty() {
+        return Ok(None);
+    }
+    if buf.iter().any(|&b| b == 0 || b >= 0x80) {
+        return Err(Location::new(path, line_no)
+            .error("a byte that is not ASCII text: not an IGES file (binary IGES is not read)"));
+    }
+    if buf.len() < 73 {
+        return Err(Location::new(path, line_no).error(format!(
+            "a record of {} columns: IGES records have 80 (the section letter in column 73)",
+            buf.len()
+        )));
+    }
+    Ok(Some(String::from_utf8_lossy(buf).into_owned()))
+}
+
+/// The sections read so far, and the records not yet complete.
+struct Records<'a> {
+    path: &'a Path,
+    wanted: &'a dyn Fn(i64) -> bool,
+    file: IgesFile,
+    global: String,
+    global_line: usize,
+    /// The first record of a directory entry, waiting for its second.
+    pending_d: Option<(String, usize)>,
+    /// The entity whose parameter lines are being joined: (pointer, text, first line).
+    current: Option<(i64, String, usize)>,
+    /// Bytes kept, charged to the memory cap.
+    held: u128,
+}
+
+impl Records<'_> {
+    /// Takes one record by its section letter (column 73); `true` at the Terminate record.
+    fn record(&mut self, text: &str, line_no: usize) -> Result<bool, IoError> {
+        let path = self.path;
+        match text.as_bytes()[72] as char {
             'S' => {}
             'G' => {
-                if global.is_empty() {
-                    global_line = line_no;
+                if self.global.is_empty() {
+                    self.global_line = line_no;
                 }
-                global.push_str(&text[..72]);
-                if global.len() > MAX_LINE_BYTES {
+                self.global.push_str(&text[..72]);
+                if self.global.len() > MAX_LINE_BYTES {
                     return Err(Location::new(path, line_no).error("a global section longer than 1 MiB"));
                 }
             }
-            'D' => match pending_d.take() {
-                None => pending_d = Some((text, line_no)),
-                Some((first, first_line)) => {
-                    let entry = directory_entry(path, &first, &text, first_line)?;
-                    let pointer = (file.entries.len() * 2 + 1) as i64;
-                    held += 160;
-                    check_held_at(path, line_no, held)?;
-                    file.entries.insert(pointer, entry);
-                }
-            },
-            'P' => {
-                if pending_d.is_some() {
-                    return Err(Location::new(path, line_no).error("the directory section ends in the middle of an entry"));
-                }
-                let data = &text[..64.min(text.len())];
-                let pointer: i64 = text.get(64..72).map(str::trim).and_then(|s| s.parse().ok()).ok_or_else(|| {
-                    Location::new(path, line_no).error("columns 65-72 of a parameter record must hold its directory entry's number")
-                })?;
-                match &mut current {
-                    Some((p, joined, _)) if *p == pointer => {
-                        joined.push_str(data);
-                        if joined.len() > MAX_LINE_BYTES * 64 {
-                            return Err(Location::new(path, line_no).error("an entity's parameters longer than 64 MiB"));
-                        }
-                    }
-                    _ => {
-                        if let Some((p, joined, first)) = current.take() {
-                            held += store_params(path, &mut file, p, &joined, first, wanted)?;
-                            check_held_at(path, first, held)?;
-                        }
-                        current = Some((pointer, data.to_owned(), line_no));
-                    }
-                }
-            }
-            'T' => {
-                terminated = true;
-                break;
-            }
+            'D' => self.directory(text, line_no)?,
+            'P' => self.parameters(text, line_no)?,
+            'T' => return Ok(true),
             other => {
                 return Err(Location::new(path, line_no).error(format!(
                     "column 73 holds '{other}', not a section letter (S, G, D, P, T): not an IGES file?"
                 )))
             }
         }
+        Ok(false)
     }
-    if let Some((p, joined, first)) = current.take() {
-        held += store_params(path, &mut file, p, &joined, first, wanted)?;
-        check_held_at(path, first, held)?;
-    }
-    if !terminated {
-        return Err(Location::new(path, line_no.max(1))
-            .error("the file ends before its Terminate record (truncated?)"));
-    }
-    if global.is_empty() {
-        return Err(Location::new(path, 1).error("no global section: not an IGES file"));
-    }
-    read_global(path, &global, global_line, &mut file)?;
-    // Every kept entity got its parameters.
-    for (pointer, e) in &file.entries {
-        if wanted(e.kind) && e.params.is_none() {
-            return Err(Location::new(path, e.line).error(format!(
-                "directory entry {pointer} (type {}): its parameter lines are missing (truncated?)",
-                e.kind
-            )));
+
+    /// A directory record: the first of an entry waits for the second.
+    fn directory(&mut self, text: &str, line_no: usize) -> Result<(), IoError> {
+        match self.pending_d.take() {
+            None => self.pending_d = Some((text.to_owned(), line_no)),
+            Some((first, first_line)) => {
+                let entry = directory_entry(self.path, &first, text, first_line)?;
+                let pointer = (self.file.entries.len() * 2 + 1) as i64;
+                self.held += 160;
+                check_held_at(self.path, line_no, self.held)?;
+                self.file.entries.insert(pointer, entry);
+            }
         }
+        Ok(())
     }
-    Ok(file)
+
+    /// A parameter record: joined to its entity's, or the start of the next entity's.
+    fn parameters(&mut self, text: &str, line_no: usize) -> Result<(), IoError> {
+        let path = self.path;
+        if self.pending_d.is_some() {
+            return Err(Location::new(path, line_no)
+                .error("the directory section ends in the middle of an entry"));
+        }
+        let data = &text[..64.min(text.len())];
+        let pointer: i64 = text
+            .get(64..72)
+            .map(str::trim)
+            .and_then(|s| s.parse().ok())
+            .ok_or_else(|| {
+                Location::new(path, line_no).error(
+                    "columns 65-72 of a parameter record must hold its directory entry's number",
+                )
+            })?;
+        match &mut self.current {
+            Some((p, joined, _)) if *p == pointer => {
+                joined.push_str(data);
+                if joined.len() > MAX_LINE_BYTES * 64 {
+                    return Err(Location::new(path, line_no)
+                        .error("an entity's parameters longer than 64 MiB"));
+                }
+            }
+            _ => {
+                self.store_current()?;
+                self.current = Some((pointer, data.to_owned(), line_no));
+            }
+        }
+        Ok(())
+    }
+
+    /// Keeps the parameters of the entity whose lines were being joined.
+    fn store_current(&mut self) -> Result<(), IoError> {
+        if let Some((p, joined, first)) = self.current.take() {
+            self.held += store_params(self.path, &mut self.file, p, &joined, first, self.wanted)?;
+            check_held_at(self.path, first, self.held)?;
+        }
+        Ok(())
+    }
+
+    /// The file, once the last entity's parameters are kept, the Terminate record and the
+    /// global section met, and every wanted entity has its parameters.
+    fn finish(mut self, terminated: bool, line_no: usize) -> Result<IgesFile, IoError> {
+        let path = self.path;
+        self.store_current()?;
+        if !terminated {
+            return Err(Location::new(path, line_no.max(1))
+                .error("the file ends before its Terminate record (truncated?)"));
+        }
+        if self.global.is_empty() {
+            return Err(Location::new(path, 1).error("no global section: not an IGES file"));
+        }
+        let mut file = self.file;
+        read_global(path, &self.global, self.global_line, &mut file)?;
+        for (pointer, e) in &file.entries {
+            if (self.wanted)(e.kind) && e.params.is_none() {
+                return Err(Location::new(path, e.line).error(format!(
+                    "directory entry {pointer} (type {}): its parameter lines are missing (truncated?)",
+                    e.kind
+                )));
+            }
+        }
+        Ok(file)
+    }
 }
 
 /// The directory entry of the two records `a` (at line `line`) and `b`.

@@ -301,59 +301,8 @@ impl<'a> Geometry<'a> {
                     parameter_scale: magnitude,
                 }))
             }
-            "CIRCLE" | "ELLIPSE" => {
-                a.count(if kind == "CIRCLE" { 3 } else { 4 })?;
-                let frame = self.placement(a.reference(1)?, &a)?;
-                let r1 = Self::length(&a, 2, "a radius")?;
-                let r2 = if kind == "CIRCLE" {
-                    r1
-                } else {
-                    Self::length(&a, 3, "a semi-axis")?
-                };
-                Ok(Outcome::Read(FileCurve {
-                    basis: BasisCurve::Conic {
-                        frame,
-                        a: r1,
-                        b: r2,
-                    },
-                    parameter_scale: self.angle,
-                }))
-            }
-            "HYPERBOLA" => {
-                a.count(4)?;
-                let frame = self.placement(a.reference(1)?, &a)?;
-                let semi = Self::length(&a, 2, "a semi-axis")?;
-                let imaginary = Self::length(&a, 3, "a semi-imaginary axis")?;
-                plain(BasisCurve::Hyperbola {
-                    frame,
-                    a: semi,
-                    b: imaginary,
-                })
-            }
-            "PARABOLA" => {
-                a.count(3)?;
-                let frame = self.placement(a.reference(1)?, &a)?;
-                let focal = Self::length(&a, 2, "a focal distance")?;
-                plain(BasisCurve::Parabola { frame, focal })
-            }
-            "POLYLINE" => {
-                a.count(2)?;
-                let points = a
-                    .references(1)?
-                    .iter()
-                    .map(|&r| self.point(r, &a))
-                    .collect::<Result<Vec<_>, _>>()?;
-                let n = points.len();
-                if n < 2 {
-                    return Err(a.error("a polyline needs at least 2 points"));
-                }
-                let mut knots = vec![0.0];
-                knots.extend((0..n).map(|k| k as f64));
-                knots.push((n - 1) as f64);
-                let c = NurbsCurve::new(1, knots, points, vec![1.0; n])
-                    .map_err(|e| a.error(e.to_string()))?;
-                plain(BasisCurve::Nurbs(c))
-            }
+            "CIRCLE" | "ELLIPSE" | "HYPERBOLA" | "PARABOLA" => self.conic(kind, &a),
+            "POLYLINE" => plain(BasisCurve::Nurbs(self.polyline(&a)?)),
             "SURFACE_CURVE" | "SEAM_CURVE" | "INTERSECTION_CURVE" | "BOUNDED_SURFACE_CURVE" => {
                 if a.params.len() < 2 {
                     a.count(4)?;
@@ -427,6 +376,69 @@ impl<'a> Geometry<'a> {
         }))
     }
 
+    /// A conic by its placement and sizes (a circle's or an ellipse's parameter an angle in
+    /// the file's unit).
+    fn conic(&self, kind: &str, a: &Args<'_>) -> Result<Outcome<FileCurve>, IoError> {
+        let (basis, parameter_scale) = match kind {
+            "CIRCLE" | "ELLIPSE" => {
+                a.count(if kind == "CIRCLE" { 3 } else { 4 })?;
+                let frame = self.placement(a.reference(1)?, a)?;
+                let r1 = Self::length(a, 2, "a radius")?;
+                let r2 = if kind == "CIRCLE" {
+                    r1
+                } else {
+                    Self::length(a, 3, "a semi-axis")?
+                };
+                let conic = BasisCurve::Conic {
+                    frame,
+                    a: r1,
+                    b: r2,
+                };
+                (conic, self.angle)
+            }
+            "HYPERBOLA" => {
+                a.count(4)?;
+                let frame = self.placement(a.reference(1)?, a)?;
+                let semi = Self::length(a, 2, "a semi-axis")?;
+                let imaginary = Self::length(a, 3, "a semi-imaginary axis")?;
+                let hyperbola = BasisCurve::Hyperbola {
+                    frame,
+                    a: semi,
+                    b: imaginary,
+                };
+                (hyperbola, 1.0)
+            }
+            _ => {
+                a.count(3)?;
+                let frame = self.placement(a.reference(1)?, a)?;
+                let focal = Self::length(a, 2, "a focal distance")?;
+                (BasisCurve::Parabola { frame, focal }, 1.0)
+            }
+        };
+        Ok(Outcome::Read(FileCurve {
+            basis,
+            parameter_scale,
+        }))
+    }
+
+    /// A polyline as a B-spline of degree 1 through its points, at least 2.
+    fn polyline(&self, a: &Args<'_>) -> Result<NurbsCurve<3>, IoError> {
+        a.count(2)?;
+        let points = a
+            .references(1)?
+            .iter()
+            .map(|&r| self.point(r, a))
+            .collect::<Result<Vec<_>, _>>()?;
+        let n = points.len();
+        if n < 2 {
+            return Err(a.error("a polyline needs at least 2 points"));
+        }
+        let mut knots = vec![0.0];
+        knots.extend((0..n).map(|k| k as f64));
+        knots.push((n - 1) as f64);
+        NurbsCurve::new(1, knots, points, vec![1.0; n]).map_err(|e| a.error(e.to_string()))
+    }
+
     /// A B-spline curve in any of its forms: B_SPLINE_CURVE_WITH_KNOTS, or a complex
     /// instance of B_SPLINE_CURVE with knots (explicit, Bezier, uniform or quasi-uniform)
     /// and possibly RATIONAL_B_SPLINE_CURVE.
@@ -435,46 +447,13 @@ impl<'a> Geometry<'a> {
         id: u64,
         instance: &Instance,
     ) -> Result<Outcome<NurbsCurve<3>>, IoError> {
-        let args = |name: &str| {
-            instance
-                .part(name)
-                .map(|p| Args::of(self.path, id, instance, p))
-        };
-        // A simple instance (one part) has every attribute; its count is checked here. The
-        // subtypes whose knots are implied (Bezier, uniform, quasi-uniform) have B_SPLINE_CURVE's
-        // attributes only.
-        let one = instance.parts.len() == 1;
-        let simple = match (
-            args("B_SPLINE_CURVE_WITH_KNOTS"),
-            implied_simple(instance, IMPLIED_CURVES),
-        ) {
-            (Some(s), _) if one => {
-                s.count(9)?;
-                Some(s)
-            }
-            (_, Some(part)) if one => {
-                let s = Args::of(self.path, id, instance, part);
-                s.count(6)?;
-                Some(s)
-            }
-            _ => None,
-        };
-        let explicit = args("B_SPLINE_CURVE_WITH_KNOTS").is_some();
-        // The simple instance has every attribute, the name first; a complex instance's
-        // B_SPLINE_CURVE part only its own (degree, points, form, closed, self-intersect).
-        let (head, knots_part, at): (Args<'_>, Option<Args<'_>>, usize) =
-            match (simple, args("B_SPLINE_CURVE")) {
-                (Some(s), None) => (s, None, 1),
-                (_, Some(h)) => {
-                    h.count(5)?;
-                    (h, args("B_SPLINE_CURVE_WITH_KNOTS"), 0)
-                }
-                (None, None) => {
-                    let part = &instance.parts[0];
-                    return Err(Args::of(self.path, id, instance, part)
-                        .error("a B-spline curve without its B_SPLINE_CURVE part"));
-                }
-            };
+        let BsplineParts {
+            head,
+            knots_part,
+            rational,
+            at,
+            explicit,
+        } = bspline_parts(self.path, id, instance, &CURVE_LAYOUT)?;
         let degree = positive_degree(&head, at)?;
         let points = head
             .references(at + 1)?
@@ -491,7 +470,7 @@ impl<'a> Geometry<'a> {
             implied_knots(instance, degree, n)
                 .ok_or_else(|| head.error("a B-spline curve without knots"))?
         };
-        let weights = match args("RATIONAL_B_SPLINE_CURVE") {
+        let weights = match rational {
             Some(w) => {
                 w.count(1)?;
                 w.reals(0)?
@@ -556,20 +535,7 @@ impl<'a> Geometry<'a> {
                 a.count(3)?;
                 BasisSurface::Cylinder(frame(self, 1)?, Self::length(&a, 2, "a radius")?)
             }
-            "CONICAL_SURFACE" => {
-                a.count(4)?;
-                let r = a.real(2)?;
-                if !(r.is_finite() && r >= 0.0) {
-                    return Err(a.error(format!("a cone's radius must not be negative, got {r}")));
-                }
-                let alpha = a.real(3)? * self.angle;
-                if !(alpha.abs() < std::f64::consts::FRAC_PI_2 && alpha != 0.0) {
-                    return Err(a.error(format!(
-                        "a cone's half-angle must lie in (0, 90) degrees, got {alpha} rad"
-                    )));
-                }
-                BasisSurface::Cone(frame(self, 1)?, r, alpha)
-            }
+            "CONICAL_SURFACE" => self.cone(&a)?,
             "SPHERICAL_SURFACE" => {
                 a.count(3)?;
                 BasisSurface::Sphere(frame(self, 1)?, Self::length(&a, 2, "a radius")?)
@@ -599,45 +565,73 @@ impl<'a> Geometry<'a> {
                     dir,
                 }
             }
-            "RECTANGULAR_TRIMMED_SURFACE" => {
-                a.count(8)?;
-                let basis = read!(self.surface(a.reference(1)?, &a));
-                let scale = |s: &BasisSurface, u: bool| match s {
-                    BasisSurface::Nurbs(_) => 1.0,
-                    BasisSurface::Plane(_) => 1.0,
-                    BasisSurface::Cylinder(..) | BasisSurface::Cone(..) => {
-                        if u {
-                            self.angle
-                        } else {
-                            1.0
-                        }
-                    }
-                    BasisSurface::Revolution { .. } => {
-                        if u {
-                            self.angle
-                        } else {
-                            1.0
-                        }
-                    }
-                    BasisSurface::Extrusion { .. } => 1.0,
-                    _ => self.angle,
-                };
-                let (u1, u2) = (
-                    a.real(2)? * scale(&basis, true),
-                    a.real(3)? * scale(&basis, true),
-                );
-                let (v1, v2) = (
-                    a.real(4)? * scale(&basis, false),
-                    a.real(5)? * scale(&basis, false),
-                );
-                let order = |x: f64, y: f64| if x <= y { (x, y) } else { (y, x) };
-                let s = basis
-                    .over(order(u1, u2), order(v1, v2))
-                    .map_err(|e| a.error(e))?;
-                BasisSurface::Nurbs(s)
-            }
+            "RECTANGULAR_TRIMMED_SURFACE" => read!(self.rectangular_trimmed(&a)),
             _ => BasisSurface::Nurbs(read!(self.bspline_surface(id, instance))),
         }))
+    }
+
+    /// A cone: its placement, a radius `>= 0` at `v = 0` and a half-angle in `(0, 90)`
+    /// degrees.
+    fn cone(&self, a: &Args<'_>) -> Result<BasisSurface, IoError> {
+        a.count(4)?;
+        let r = a.real(2)?;
+        if !(r.is_finite() && r >= 0.0) {
+            return Err(a.error(format!("a cone's radius must not be negative, got {r}")));
+        }
+        let alpha = a.real(3)? * self.angle;
+        if !(alpha.abs() < std::f64::consts::FRAC_PI_2 && alpha != 0.0) {
+            return Err(a.error(format!(
+                "a cone's half-angle must lie in (0, 90) degrees, got {alpha} rad"
+            )));
+        }
+        Ok(BasisSurface::Cone(
+            self.placement(a.reference(1)?, a)?,
+            r,
+            alpha,
+        ))
+    }
+
+    /// A surface trimmed to a rectangle of its parameters (angles in the file's unit).
+    fn rectangular_trimmed(&mut self, a: &Args<'_>) -> Result<Outcome<BasisSurface>, IoError> {
+        a.count(8)?;
+        let basis = read!(self.surface(a.reference(1)?, a));
+        let (u1, u2) = (
+            a.real(2)? * self.parameter_scale(&basis, true),
+            a.real(3)? * self.parameter_scale(&basis, true),
+        );
+        let (v1, v2) = (
+            a.real(4)? * self.parameter_scale(&basis, false),
+            a.real(5)? * self.parameter_scale(&basis, false),
+        );
+        let order = |x: f64, y: f64| if x <= y { (x, y) } else { (y, x) };
+        let s = basis
+            .over(order(u1, u2), order(v1, v2))
+            .map_err(|e| a.error(e))?;
+        Ok(Outcome::Read(BasisSurface::Nurbs(s)))
+    }
+
+    /// The factor to radians of the surface's `u` (or `v`) parameter when it is an angle.
+    fn parameter_scale(&self, s: &BasisSurface, u: bool) -> f64 {
+        match s {
+            BasisSurface::Nurbs(_) => 1.0,
+            BasisSurface::Plane(_) => 1.0,
+            BasisSurface::Cylinder(..) | BasisSurface::Cone(..) => {
+                if u {
+                    self.angle
+                } else {
+                    1.0
+                }
+            }
+            BasisSurface::Revolution { .. } => {
+                if u {
+                    self.angle
+                } else {
+                    1.0
+                }
+            }
+            BasisSurface::Extrusion { .. } => 1.0,
+            _ => self.angle,
+        }
     }
 
     /// A B-spline surface in any of its forms (see [`Self::bspline_curve`]).
@@ -646,71 +640,16 @@ impl<'a> Geometry<'a> {
         id: u64,
         instance: &Instance,
     ) -> Result<Outcome<NurbsSurface<3>>, IoError> {
-        let args = |name: &str| {
-            instance
-                .part(name)
-                .map(|p| Args::of(self.path, id, instance, p))
-        };
-        let one = instance.parts.len() == 1;
-        let simple = match (
-            args("B_SPLINE_SURFACE_WITH_KNOTS"),
-            implied_simple(instance, IMPLIED_SURFACES),
-        ) {
-            (Some(s), _) if one => {
-                s.count(13)?;
-                Some(s)
-            }
-            (_, Some(part)) if one => {
-                let s = Args::of(self.path, id, instance, part);
-                s.count(8)?;
-                Some(s)
-            }
-            _ => None,
-        };
-        let explicit = args("B_SPLINE_SURFACE_WITH_KNOTS").is_some();
-        // As for curves: B_SPLINE_SURFACE's own attributes in a complex instance (degrees,
-        // points, form, closed in u and v, self-intersect), every attribute in the simple one.
-        let (head, knots_part, at) = match (simple, args("B_SPLINE_SURFACE")) {
-            (Some(s), None) => (s, None, 1),
-            (_, Some(h)) => {
-                h.count(7)?;
-                (h, args("B_SPLINE_SURFACE_WITH_KNOTS"), 0)
-            }
-            (None, None) => {
-                let part = &instance.parts[0];
-                return Err(Args::of(self.path, id, instance, part)
-                    .error("a B-spline surface without its B_SPLINE_SURFACE part"));
-            }
-        };
+        let BsplineParts {
+            head,
+            knots_part,
+            rational,
+            at,
+            explicit,
+        } = bspline_parts(self.path, id, instance, &SURFACE_LAYOUT)?;
         let du = positive_degree(&head, at)?;
         let dv = positive_degree(&head, at + 1)?;
-        let rows = head.list(at + 2)?;
-        let mut points = Vec::new();
-        let mut cols = None;
-        for row in rows {
-            let Value::List(row) = row else {
-                return Err(head.error(format!(
-                    "parameter {} must be a list of lists of points",
-                    at + 3
-                )));
-            };
-            if *cols.get_or_insert(row.len()) != row.len() {
-                return Err(head.error("the rows of control points differ in length"));
-            }
-            for v in row {
-                let Value::Ref(r) = v else {
-                    return Err(head.error(format!(
-                        "parameter {} must be a list of lists of points",
-                        at + 3
-                    )));
-                };
-                points.push(self.point(*r, &head)?);
-            }
-        }
-        let (nu, nv) = (rows.len(), cols.unwrap_or(0));
-        if nu == 0 || nv == 0 {
-            return Err(head.error("a B-spline surface without control points"));
-        }
+        let (points, nu, nv) = self.control_rows(&head, at + 2)?;
         let (knots_u, knots_v) = if at == 1 && explicit {
             (expand_knots(&head, 8, 10)?, expand_knots(&head, 9, 11)?)
         } else if let Some(k) = &knots_part {
@@ -725,26 +664,8 @@ impl<'a> Geometry<'a> {
                 _ => return Err(head.error("a B-spline surface without knots")),
             }
         };
-        let weights = match args("RATIONAL_B_SPLINE_SURFACE") {
-            Some(w) => {
-                w.count(1)?;
-                let mut all = Vec::with_capacity(nu * nv);
-                for row in w.list(0)? {
-                    let Value::List(row) = row else {
-                        return Err(w.error("the weights must be a list of lists"));
-                    };
-                    for x in row {
-                        all.push(real_of(x).ok_or_else(|| w.error("the weights must be numbers"))?);
-                    }
-                }
-                if all.len() != nu * nv {
-                    return Err(w.error(format!(
-                        "{} weights for {nu} x {nv} control points",
-                        all.len()
-                    )));
-                }
-                all
-            }
+        let weights = match rational {
+            Some(w) => weight_rows(&w, (nu, nv))?,
             None => vec![1.0; nu * nv],
         };
         let control =
@@ -758,6 +679,43 @@ impl<'a> Geometry<'a> {
         Ok(Outcome::Read(
             s.with_closed(closed_u && meet_u, closed_v && meet_v),
         ))
+    }
+
+    /// The control points of a B-spline surface, rows of references in parameter `k` of
+    /// `head`, and the counts of rows and columns.
+    fn control_rows(
+        &self,
+        head: &Args<'_>,
+        k: usize,
+    ) -> Result<(Vec<Point3>, usize, usize), IoError> {
+        let rows = head.list(k)?;
+        let mut points = Vec::new();
+        let mut cols = None;
+        let not_points = || {
+            head.error(format!(
+                "parameter {} must be a list of lists of points",
+                k + 1
+            ))
+        };
+        for row in rows {
+            let Value::List(row) = row else {
+                return Err(not_points());
+            };
+            if *cols.get_or_insert(row.len()) != row.len() {
+                return Err(head.error("the rows of control points differ in length"));
+            }
+            for v in row {
+                let Value::Ref(r) = v else {
+                    return Err(not_points());
+                };
+                points.push(self.point(*r, head)?);
+            }
+        }
+        let (nu, nv) = (rows.len(), cols.unwrap_or(0));
+        if nu == 0 || nv == 0 {
+            return Err(head.error("a B-spline surface without control points"));
+        }
+        Ok((points, nu, nv))
     }
 }
 
@@ -832,6 +790,125 @@ fn expand_knots(a: &Args<'_>, m: usize, k: usize) -> Result<Vec<f64>, IoError> {
         knots.extend(std::iter::repeat_n(x, n as usize));
     }
     Ok(knots)
+}
+
+/// The weights of a rational B-spline surface of `nu x nv` control points, rows of numbers
+/// in the only attribute of `w`.
+fn weight_rows(w: &Args<'_>, (nu, nv): (usize, usize)) -> Result<Vec<f64>, IoError> {
+    w.count(1)?;
+    let count = nu * nv;
+    let mut all = Vec::with_capacity(count);
+    for row in w.list(0)? {
+        let Value::List(row) = row else {
+            return Err(w.error("the weights must be a list of lists"));
+        };
+        for x in row {
+            all.push(real_of(x).ok_or_else(|| w.error("the weights must be numbers"))?);
+        }
+    }
+    if all.len() != count {
+        return Err(w.error(format!(
+            "{} weights for {nu} x {nv} control points",
+            all.len()
+        )));
+    }
+    Ok(all)
+}
+
+/// Where a B-spline entity's attributes lie in its simple and complex instances.
+struct BsplineLayout {
+    /// The entity (`B_SPLINE_CURVE`, `B_SPLINE_SURFACE`).
+    base: &'static str,
+    /// Its subtype with the knots listed.
+    with_knots: &'static str,
+    /// Its subtype with weights.
+    rational: &'static str,
+    /// Its subtypes with the knots implied.
+    implied: &'static [&'static str],
+    /// The attribute counts of a simple instance with the knots listed and with them
+    /// implied, and of the base part of a complex instance.
+    counts: (usize, usize, usize),
+    /// The error when the base part is missing.
+    missing: &'static str,
+}
+
+const CURVE_LAYOUT: BsplineLayout = BsplineLayout {
+    base: "B_SPLINE_CURVE",
+    with_knots: "B_SPLINE_CURVE_WITH_KNOTS",
+    rational: "RATIONAL_B_SPLINE_CURVE",
+    implied: IMPLIED_CURVES,
+    counts: (9, 6, 5),
+    missing: "a B-spline curve without its B_SPLINE_CURVE part",
+};
+
+const SURFACE_LAYOUT: BsplineLayout = BsplineLayout {
+    base: "B_SPLINE_SURFACE",
+    with_knots: "B_SPLINE_SURFACE_WITH_KNOTS",
+    rational: "RATIONAL_B_SPLINE_SURFACE",
+    implied: IMPLIED_SURFACES,
+    counts: (13, 8, 7),
+    missing: "a B-spline surface without its B_SPLINE_SURFACE part",
+};
+
+/// The parts of a B-spline instance: `head` holds the base entity's attributes from index
+/// `at` (1 in a simple instance, after the name; 0 in a complex one), `knots_part` the listed
+/// knots of a complex instance, `rational` the weights; `explicit` whether the knots are
+/// listed.
+struct BsplineParts<'a> {
+    head: Args<'a>,
+    knots_part: Option<Args<'a>>,
+    rational: Option<Args<'a>>,
+    at: usize,
+    explicit: bool,
+}
+
+/// Finds the parts of a B-spline instance. A simple instance (one part) has every
+/// attribute, its count checked here; the subtypes whose knots are implied (Bezier, uniform,
+/// quasi-uniform) have the base entity's attributes only. A complex instance's base part has
+/// only its own (degrees, points, form, closed, self-intersect).
+fn bspline_parts<'a>(
+    path: &'a Path,
+    id: u64,
+    instance: &'a Instance,
+    layout: &BsplineLayout,
+) -> Result<BsplineParts<'a>, IoError> {
+    let args = |name: &str| instance.part(name).map(|p| Args::of(path, id, instance, p));
+    let (listed, implied, complex) = layout.counts;
+    let one = instance.parts.len() == 1;
+    let simple = match (
+        args(layout.with_knots),
+        implied_simple(instance, layout.implied),
+    ) {
+        (Some(s), _) if one => {
+            s.count(listed)?;
+            Some(s)
+        }
+        (_, Some(part)) if one => {
+            let s = Args::of(path, id, instance, part);
+            s.count(implied)?;
+            Some(s)
+        }
+        _ => None,
+    };
+    let explicit = args(layout.with_knots).is_some();
+    let (head, knots_part, at) = match (simple, args(layout.base)) {
+        (Some(s), None) => (s, None, 1),
+        (_, Some(h)) => {
+            h.count(complex)?;
+            (h, args(layout.with_knots), 0)
+        }
+        (None, None) => {
+            let part = &instance.parts[0];
+            return Err(Args::of(path, id, instance, part).error(layout.missing));
+        }
+    };
+    Ok(BsplineParts {
+        head,
+        knots_part,
+        rational: args(layout.rational),
+        at,
+        explicit,
+    })
 }
 
 /// The curve subtypes whose knots are implied rather than listed.

@@ -209,6 +209,35 @@ impl Reader<'_, '_> {
         Ok(())
     }
 
+    /// Skips a comment after its `/` (the `*` still to come).
+    fn skip_comment(&mut self) -> Result<(), IoError> {
+        self.next_byte()?;
+        let start = self.bytes.line;
+        let mut star = false;
+        loop {
+            match self.next_byte()? {
+                None => {
+                    return Err(
+                        Location::new(self.path, start).error("a comment /* is never closed")
+                    )
+                }
+                Some(b'/') if star => return Ok(()),
+                Some(c) => star = c == b'*',
+            }
+        }
+    }
+
+    /// The instance number after a `#`.
+    fn instance_number(&mut self) -> Result<Token, IoError> {
+        let mut digits = Vec::new();
+        self.take_while(&mut digits, |c| c.is_ascii_digit())?;
+        let id = std::str::from_utf8(&digits)
+            .ok()
+            .and_then(|d| d.parse::<u64>().ok())
+            .ok_or_else(|| self.error("'#' must be followed by an instance number"))?;
+        Ok(Token::Instance(id))
+    }
+
     /// The next token, skipping white space and comments.
     fn token(&mut self) -> Result<Token, IoError> {
         loop {
@@ -218,19 +247,7 @@ impl Reader<'_, '_> {
             match b {
                 b' ' | b'\t' | b'\r' | b'\n' | b'\x0c' => continue,
                 b'/' if self.peek()? == Some(b'*') => {
-                    self.next_byte()?;
-                    let start = self.bytes.line;
-                    let mut star = false;
-                    loop {
-                        match self.next_byte()? {
-                            None => {
-                                return Err(Location::new(self.path, start)
-                                    .error("a comment /* is never closed"))
-                            }
-                            Some(b'/') if star => break,
-                            Some(c) => star = c == b'*',
-                        }
-                    }
+                    self.skip_comment()?;
                     continue;
                 }
                 b'(' => return Ok(Token::Open),
@@ -240,15 +257,7 @@ impl Reader<'_, '_> {
                 b'=' => return Ok(Token::Equals),
                 b'$' => return Ok(Token::Unset),
                 b'*' => return Ok(Token::Derived),
-                b'#' => {
-                    let mut digits = Vec::new();
-                    self.take_while(&mut digits, |c| c.is_ascii_digit())?;
-                    let id = std::str::from_utf8(&digits)
-                        .ok()
-                        .and_then(|d| d.parse::<u64>().ok())
-                        .ok_or_else(|| self.error("'#' must be followed by an instance number"))?;
-                    return Ok(Token::Instance(id));
-                }
+                b'#' => return self.instance_number(),
                 b'\'' => return self.string(),
                 b'"' => {
                     let mut hex = Vec::new();
@@ -449,6 +458,56 @@ impl Reader<'_, '_> {
         Ok(())
     }
 
+    /// The rest of a data section's start: `;`, or (edition 3) `('name',('schema'));`.
+    fn data_section_start(&mut self) -> Result<(), IoError> {
+        match self.token()? {
+            Token::Semicolon => {}
+            Token::Open => {
+                self.skip_params()?;
+                self.expect(Token::Semicolon, "';' after DATA(...)")?;
+            }
+            other => return Err(self.unexpected(&other, "';' after DATA")),
+        }
+        Ok(())
+    }
+
+    /// Instance `#id` after its number: kept in `exchange` when its type is `wanted`,
+    /// otherwise counted by type.
+    fn instance(
+        &mut self,
+        id: u64,
+        wanted: &dyn Fn(&str) -> bool,
+        exchange: &mut Exchange,
+    ) -> Result<(), IoError> {
+        let line = self.bytes.line;
+        self.current = Some(id);
+        self.expect(Token::Equals, "'=' after the instance number")?;
+        match self.instance_body(wanted)? {
+            Body::Kept(parts) => {
+                // The map's own entry and its share of the table's spare room.
+                self.held += 96;
+                check_held_at(self.path, line, self.held)?;
+                if exchange
+                    .instances
+                    .insert(id, Instance { line, parts })
+                    .is_some()
+                {
+                    return Err(Location::new(self.path, line)
+                        .error(format!("#{id}: the instance number is used twice")));
+                }
+            }
+            Body::Skipped(name) => {
+                let count = exchange.others.entry(name).or_insert(0);
+                if *count == 0 {
+                    self.held += 64;
+                }
+                *count += 1;
+            }
+        }
+        self.current = None;
+        Ok(())
+    }
+
     /// Reads `KEYWORD ( params )` parts up to `;` (the instance's `=` read), keeping their
     /// parameters when `wanted` holds one of the names.
     fn instance_body(&mut self, wanted: &dyn Fn(&str) -> bool) -> Result<Body, IoError> {
@@ -565,15 +624,7 @@ pub(crate) fn read_exchange(
                 r.expect(Token::Semicolon, "';' after HEADER")?
             }
             Token::Keyword(k) if &*k == "DATA" => {
-                // DATA; or (edition 3) DATA('name',('schema'));
-                match r.token()? {
-                    Token::Semicolon => {}
-                    Token::Open => {
-                        r.skip_params()?;
-                        r.expect(Token::Semicolon, "';' after DATA(...)")?;
-                    }
-                    other => return Err(r.unexpected(&other, "';' after DATA")),
-                }
+                r.data_section_start()?;
                 in_data = true;
             }
             Token::Keyword(k) if &*k == "ENDSEC" => {
@@ -586,34 +637,7 @@ pub(crate) fn read_exchange(
                 r.skip_params()?;
                 r.expect(Token::Semicolon, "';' after a header entity")?;
             }
-            Token::Instance(id) if in_data => {
-                let line = r.bytes.line;
-                r.current = Some(id);
-                r.expect(Token::Equals, "'=' after the instance number")?;
-                match r.instance_body(wanted)? {
-                    Body::Kept(parts) => {
-                        // The map's own entry and its share of the table's spare room.
-                        r.held += 96;
-                        check_held_at(path, line, r.held)?;
-                        if exchange
-                            .instances
-                            .insert(id, Instance { line, parts })
-                            .is_some()
-                        {
-                            return Err(Location::new(path, line)
-                                .error(format!("#{id}: the instance number is used twice")));
-                        }
-                    }
-                    Body::Skipped(name) => {
-                        let count = exchange.others.entry(name).or_insert(0);
-                        if *count == 0 {
-                            r.held += 64;
-                        }
-                        *count += 1;
-                    }
-                }
-                r.current = None;
-            }
+            Token::Instance(id) if in_data => r.instance(id, wanted, &mut exchange)?,
             Token::End => {
                 return Err(r.error("the file ends before END-ISO-10303-21; (truncated?)"));
             }
