@@ -38,6 +38,9 @@ import sys
 import numpy as np
 from scipy.spatial import cKDTree
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from fit_vs_scipy import naca2412  # noqa: E402  (the one closed form of the truth)
+
 SIGMA = 1e-4
 SAMPLES = 200_001
 DENSE = 2_000_001
@@ -46,19 +49,6 @@ DENSE = 2_000_001
 def ellipse(theta):
     """The true curve at parameters `theta` in [0, pi] (chord 1)."""
     return np.stack([0.5 * np.cos(theta), 0.2 * np.sin(theta)], axis=1)
-
-
-def naca2412(beta):
-    """NACA 2412, closed trailing edge; beta in [0, 2 pi], upper surface first."""
-    m, p, t = 0.02, 0.4, 0.12
-    x = 0.5 * (1 + np.cos(beta))
-    yt = 5 * t * (0.2969 * np.sqrt(x) - 0.1260 * x - 0.3516 * x**2 + 0.2843 * x**3 - 0.1036 * x**4)
-    fore = x < p
-    yc = np.where(fore, m / p**2 * (2 * p * x - x**2), m / (1 - p) ** 2 * (1 - 2 * p + 2 * p * x - x**2))
-    slope = np.where(fore, 2 * m / p**2 * (p - x), 2 * m / (1 - p) ** 2 * (p - x))
-    theta = np.arctan(slope)
-    side = np.where(beta <= np.pi, 1.0, -1.0)
-    return np.stack([x - side * yt * np.sin(theta), yc + side * yt * np.cos(theta)], axis=1)
 
 
 SHAPES = {
