@@ -70,3 +70,14 @@ def test_the_papers_measure_is_the_determinant_of_unit_rows():
     # Not 1 (the lines are skewed) and not the extension (the parameters are stretched).
     assert d.min() < 0.99
     assert np.all(np.abs(d - s.condition_measure()) > 1e-3)
+
+
+@pytest.mark.parametrize("scale", [1e-150, 1e150])
+def test_the_papers_measure_does_not_depend_on_the_grid_scale(scale):
+    # The sine of the angle between the grid lines (60 degrees) with uniform parameters,
+    # where E G of tangents this small or large underflows or overflows.
+    t = np.radians(60.0)
+    grid = scale * plane_grid(A, np.cos(t) * A + np.sin(t) * B)
+    d = karkas.BicubicSurface(grid, "uniform").condition_measure(paper=True)
+    assert np.all(np.isfinite(d))
+    np.testing.assert_allclose(d, np.sin(t), atol=1e-12)

@@ -248,6 +248,30 @@ fn report_gives_the_condition_measure_of_the_parameters() {
     // Without --report nothing is said about it.
     let o = karkas(&["surface", "bicubic", s(&input), "-o", s(&out)]);
     assert!(!stderr(&o).contains("condition measure"));
+    // The sine of an angle does not depend on the grid's scale: lines at 60 degrees scaled by
+    // 1e+-150 still give sin 60 with uniform parameters (E G would overflow or underflow).
+    for scale in [1e-150, 1e150] {
+        let (c, s_) = (60f64.to_radians().cos(), 60f64.to_radians().sin());
+        let text = grid_csv(4, 5, |i, j| {
+            let y = 0.7 * j as f64;
+            [scale * (i as f64 + c * y), scale * s_ * y, scale]
+        });
+        let input = write(dir.path(), "scaled.csv", &text);
+        let o = karkas(&[
+            "surface",
+            "bicubic",
+            "--param",
+            "uniform",
+            "--report",
+            s(&input),
+            "-o",
+            s(&out),
+        ]);
+        assert!(o.status.success(), "{}", stderr(&o));
+        let err = stderr(&o);
+        let paper = reported_on(&err, "the paper's |D|", "min");
+        assert!((paper - s_).abs() < 2e-6, "scale {scale}: {err}");
+    }
 }
 
 /// `--origin I,J`: the paper's origin node (i*, j*) of the chord parameters. On the grid of

@@ -70,15 +70,33 @@ pub fn condition_measure<const D: usize>(wu: Point<D>, wv: Point<D>) -> f64 {
 /// assert!(condition_measure(wu, wv) < 0.5);
 /// ```
 pub fn paper_condition_measure<const D: usize>(wu: Point<D>, wv: Point<D>) -> f64 {
-    let (e, f, g) = (wu.dot(wu), wu.dot(wv), wv.dot(wv));
-    let eg = e * g;
-    if !eg.is_finite() || !f.is_finite() {
-        return f64::NAN;
+    let (Some(a), Some(b)) = (unit_direction(wu), unit_direction(wv)) else {
+        return if is_finite(wu) && is_finite(wv) {
+            0.0
+        } else {
+            f64::NAN
+        };
+    };
+    // For unit a, b at an angle theta: |a - b| = 2 sin(theta / 2), |a + b| = 2 cos(theta / 2),
+    // so their product over 2 is sin theta, accurate for small and near-straight angles alike
+    // (unlike sqrt(1 - cos^2)).
+    ((a - b).norm() * (a + b).norm() * 0.5).min(1.0)
+}
+
+/// `p` scaled to unit length without overflow or underflow (divided by its largest
+/// component first, so that any finite `p` from 1e-300 to 1e300 works); `None` for a zero or
+/// non-finite `p`.
+fn unit_direction<const D: usize>(p: Point<D>) -> Option<Point<D>> {
+    let largest = p.max_abs();
+    if !(largest.is_finite() && largest > 0.0) {
+        return None;
     }
-    if eg <= 0.0 {
-        return 0.0;
-    }
-    ((eg - f * f).max(0.0) / eg).sqrt().min(1.0)
+    let scaled = p * (1.0 / largest);
+    Some(scaled * (1.0 / scaled.norm()))
+}
+
+fn is_finite<const D: usize>(p: Point<D>) -> bool {
+    p.0.iter().all(|c| c.is_finite())
 }
 
 /// The condition measures of a grid of nodes, summarized.
@@ -207,6 +225,43 @@ mod tests {
         assert_eq!(paper_condition_measure(ex, ex * 2.0), 0.0);
         assert_eq!(paper_condition_measure(Point3::ZERO, ey), 0.0);
         assert!(paper_condition_measure(Point3::new([f64::NAN, 0.0, 0.0]), ey).is_nan());
+    }
+
+    #[test]
+    fn the_papers_measure_does_not_depend_on_the_scale_of_the_tangents() {
+        // The sine of an angle: the same for tangents of 1e-150 and 1e150 as for unit ones,
+        // where forming E G directly underflows to 0 or overflows to NaN.
+        let t = 50f64.to_radians();
+        let (wu, wv) = (
+            Point3::new([1.0, 0.2, -0.3]),
+            Point3::new([t.cos(), t.sin(), 0.4]),
+        );
+        let unit = paper_condition_measure(wu, wv);
+        let (a, b) = (wu * (1.0 / wu.norm()), wv * (1.0 / wv.norm()));
+        let cross = Point3::new([
+            a.0[1] * b.0[2] - a.0[2] * b.0[1],
+            a.0[2] * b.0[0] - a.0[0] * b.0[2],
+            a.0[0] * b.0[1] - a.0[1] * b.0[0],
+        ]);
+        assert!(
+            (unit - cross.norm()).abs() < 1e-15,
+            "{unit} vs {}",
+            cross.norm()
+        );
+        for scale in [1e-300, 1e-150, 1e-20, 1e20, 1e150, 1e300] {
+            let d = paper_condition_measure(wu * scale, wv * scale);
+            assert!((d - unit).abs() < 1e-15, "scale {scale}: {d} vs {unit}");
+            let d = paper_condition_measure(wu * scale, wv);
+            assert!(
+                (d - unit).abs() < 1e-15,
+                "one tangent scaled by {scale}: {d}"
+            );
+        }
+        // Small angles keep their digits (1e-9 rad; sqrt(1 - cos^2) would give 0 or 1.5e-8).
+        let tiny =
+            paper_condition_measure(Point3::new([1.0, 0.0, 0.0]), Point3::new([1.0, 1e-9, 0.0]));
+        assert!((tiny - 1e-9).abs() < 1e-22, "{tiny}");
+        assert!(paper_condition_measure(Point3::new([f64::INFINITY, 0.0, 0.0]), wv).is_nan());
     }
 
     #[test]
