@@ -17,4 +17,6 @@ pub mod units;
 pub use entity::{
     curve_closed, curve_in_space, surface_closed, CadEntity, CadError, MAX_CAD_DEGREE,
 };
-pub use shell::{CadShell, Cap, CapError, FaceSurface, OrientedEdge, ShellEdge, ShellFace};
+pub use shell::{
+    CadShell, Cap, CapError, FaceSurface, OrientedEdge, ParameterSegment, ShellEdge, ShellFace,
+};

@@ -10,7 +10,9 @@
 //! - two sides that are one curve (a closed direction: the first and last control lines
 //!   coincide) are one edge, the seam, used twice in the loop in opposite senses;
 //! - two faces that share a side (the same B-spline curve, in either direction) share the
-//!   edge, as a closed shell needs.
+//!   edge, as a closed shell needs;
+//! - each use of an edge by a B-spline face records the side of the parameter rectangle it
+//!   is ([`ParameterSegment`]), which STEP writes as the edge's curve on that face.
 //!
 //! Vertices coincide within the shell's tolerance (by default `1e-9` of the control points'
 //! extent). The loop of a patch runs counter-clockwise in `(u, v)`, so the face's normal is
@@ -49,12 +51,38 @@ pub struct ShellEdge {
 }
 
 /// An edge used by a loop, along its curve (`forward`) or against it.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct OrientedEdge {
     /// The index of the edge in [`CadShell::edges`].
     pub edge: usize,
     /// True when the loop runs along the edge's curve.
     pub forward: bool,
+    /// Where the edge lies in the parameter plane of a B-spline face (a side of its
+    /// parameter rectangle); `None` on a plane.
+    pub on_face: Option<ParameterSegment>,
+}
+
+/// A straight segment of a B-spline face's parameter plane that an edge runs along: the
+/// surface at `start` is the edge's curve at its first parameter, at `end` at its last,
+/// and the parameters between map linearly (the edge is a side of the face's parameter
+/// rectangle). A STEP file carries it as the edge's curve on the face (`PCURVE`), so that a
+/// reader need not find it by projection, which folds where a side runs back along itself.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ParameterSegment {
+    /// `(u, v)` at the edge curve's first parameter.
+    pub start: [f64; 2],
+    /// `(u, v)` at the edge curve's last parameter.
+    pub end: [f64; 2],
+}
+
+impl ParameterSegment {
+    /// The segment run the other way.
+    fn reversed(self) -> ParameterSegment {
+        ParameterSegment {
+            start: self.end,
+            end: self.start,
+        }
+    }
 }
 
 /// The surface a face lies on.
@@ -199,22 +227,26 @@ impl CadShell {
     /// edges as the module docs say); returns its face index.
     pub fn add_surface(&mut self, surface: BSplineSurface<3>) -> usize {
         let (du, dv) = (surface.domain_u(), surface.domain_v());
-        // Counter-clockwise in (u, v): v = v0 forward, u = u1 forward, v = v1 back, u = u0 back.
+        let (u0, u1, v0, v1) = (du.start, du.end, dv.start, dv.end);
+        // Counter-clockwise in (u, v): v = v0 forward, u = u1 forward, v = v1 back, u = u0 back;
+        // each side's curve runs from the segment's start to its end.
         let sides = [
-            (surface.curve_at_v(dv.start), true),
-            (surface.curve_at_u(du.end), true),
-            (surface.curve_at_v(dv.end), false),
-            (surface.curve_at_u(du.start), false),
+            (surface.curve_at_v(v0), [u0, v0], [u1, v0], true),
+            (surface.curve_at_u(u1), [u1, v0], [u1, v1], true),
+            (surface.curve_at_v(v1), [u0, v1], [u1, v1], false),
+            (surface.curve_at_u(u0), [u0, v0], [u0, v1], false),
         ];
         let mut bound = Vec::new();
-        for (curve, forward) in sides {
+        for (curve, start, end, forward) in sides {
             if self.is_point(curve.control_points()) {
                 continue;
             }
             let (edge, along) = self.edge_for(curve);
+            let segment = ParameterSegment { start, end };
             bound.push(OrientedEdge {
                 edge,
                 forward: forward == along,
+                on_face: Some(if along { segment } else { segment.reversed() }),
             });
         }
         self.faces.push(ShellFace {
@@ -368,6 +400,7 @@ impl CadShell {
             .map(|(edge, &(f, _))| OrientedEdge {
                 edge,
                 forward: f == 0,
+                on_face: None,
             })
             .collect();
         let ends = |o: &OrientedEdge| {
@@ -477,8 +510,8 @@ fn reversed(bound: &[OrientedEdge]) -> Vec<OrientedEdge> {
         .iter()
         .rev()
         .map(|o| OrientedEdge {
-            edge: o.edge,
             forward: !o.forward,
+            ..*o
         })
         .collect()
 }
@@ -522,7 +555,7 @@ fn extent(points: impl Iterator<Item = Point3>) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use karkas::{Grid, Point};
+    use karkas::{Curve, Grid, Point};
     use std::f64::consts::PI;
 
     /// A bilinear-in-u, closed-in-v ruled tube around z between radii `r0` and `r1` at
@@ -620,5 +653,58 @@ mod tests {
         // A flat sheet and its cap: closed, enclosing nothing.
         assert!(shell.is_closed());
         assert!(shell.signed_volume().abs() < 1e-12);
+    }
+
+    /// Every use of an edge by a B-spline face: the surface along its parameter segment is
+    /// the edge's curve, parameter for parameter (at both ends and in between).
+    fn assert_segments_follow_their_edges(shell: &CadShell) {
+        for face in shell.faces() {
+            let FaceSurface::BSpline(s) = &face.surface else {
+                assert!(face.bound.iter().all(|o| o.on_face.is_none()));
+                continue;
+            };
+            for o in &face.bound {
+                let curve = &shell.edges()[o.edge].curve;
+                let segment = o.on_face.expect("a B-spline face's edge has its segment");
+                let d = curve.domain();
+                for f in [0.0, 0.3, 0.5, 1.0] {
+                    let t = d.start + f * (d.end - d.start);
+                    let uv =
+                        [0, 1].map(|c| segment.start[c] + f * (segment.end[c] - segment.start[c]));
+                    let gap = s.eval(uv[0], uv[1]).distance(curve.eval(t));
+                    assert!(gap < 1e-12, "{gap} at {f} of {o:?}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn each_side_knows_its_line_in_the_parameter_plane() {
+        // A seam used twice, a pole left out, a cap with none.
+        let mut cone = CadShell::of_surfaces(&[tube(1.5, 0.0, 2.0, 12)]);
+        assert_segments_follow_their_edges(&cone);
+        cone.cap_free_loops().unwrap();
+        cone.orient_outward();
+        assert_segments_follow_their_edges(&cone);
+        // Two sheets sharing a side that runs the other way on the second: its segment on
+        // the second face runs backwards, over the second's own parameters.
+        let first = Grid::from_fn(2, 3, |i, j| Point([i as f64, j as f64, 0.0]));
+        let second = Grid::from_fn(2, 3, |i, j| {
+            Point([1.0 + i as f64, 2.0 - j as f64, 0.5 * i as f64])
+        });
+        let k1 = vec![0.0, 0.0, 1.0, 1.0];
+        let a = BSplineSurface::new(
+            (1, k1.clone()),
+            (2, vec![0.0, 0.0, 0.0, 1.0, 1.0, 1.0]),
+            first,
+        );
+        let b = BSplineSurface::new((1, k1), (2, vec![3.0, 3.0, 3.0, 7.0, 7.0, 7.0]), second);
+        let shell = CadShell::of_surfaces(&[a.unwrap(), b.unwrap()]);
+        assert_eq!(shell.edges().len(), 7);
+        let shared = shell.faces()[1].bound[3];
+        assert_eq!(shared.edge, shell.faces()[0].bound[1].edge);
+        let segment = shared.on_face.unwrap();
+        assert_eq!((segment.start, segment.end), ([0.0, 7.0], [0.0, 3.0]));
+        assert_segments_follow_their_edges(&shell);
     }
 }

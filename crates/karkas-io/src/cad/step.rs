@@ -5,7 +5,9 @@
 //! `GEOMETRICALLY_BOUNDED_WIREFRAME_SHAPE_REPRESENTATION`; surfaces are
 //! `B_SPLINE_SURFACE_WITH_KNOTS` carried by an `ADVANCED_FACE` bounded by its boundary
 //! curves (the iso-lines at the domain ends, exact B-splines too; no edge at a pole, one seam
-//! edge used twice for a closed direction: [`CadShell`]), in an `OPEN_SHELL` of a
+//! edge used twice for a closed direction: [`CadShell`]), each edge a `SURFACE_CURVE` that
+//! also carries its line in the parameter plane of every B-spline face using it once
+//! (`PCURVE`), in an `OPEN_SHELL` of a
 //! `SHELL_BASED_SURFACE_MODEL` of a `MANIFOLD_SURFACE_SHAPE_REPRESENTATION`: the forms CAD
 //! systems import as wires and faces. A closed shell (a body closed by its poles and seams,
 //! or capped by planar faces, `PLANE`) is a `CLOSED_SHELL` of a `MANIFOLD_SOLID_BREP` in an
@@ -35,6 +37,8 @@ use crate::error::IoError;
 /// The entity instances of a STEP data section, numbered from 1.
 struct Data {
     lines: Vec<String>,
+    /// The context of parameter-plane curves, once one is written.
+    parameter_context: Option<String>,
 }
 
 impl Data {
@@ -91,8 +95,9 @@ impl Data {
         ))
     }
 
-    /// The faces of `shell` (see [`CadShell`]): its vertices, edges (each written once,
-    /// however many loops use it), loops and faces, in an `OPEN_SHELL` or, when it is
+    /// The faces of `shell` (see [`CadShell`]): its vertices, surfaces, edges (each written
+    /// once, however many loops use it, with its curve on each B-spline face that uses it
+    /// once: [`Data::edge_geometry`]), loops and faces, in an `OPEN_SHELL` or, when it is
     /// closed, a `CLOSED_SHELL`. Returns the shell's reference and whether it is closed.
     fn shell(&mut self, shell: &CadShell, name: &str) -> (String, bool) {
         let vertices: Vec<String> = shell
@@ -103,11 +108,22 @@ impl Data {
                 self.add(format!("VERTEX_POINT('',{point})"))
             })
             .collect();
-        let edges: Vec<String> = shell
-            .edges()
+        let names: Vec<String> = (0..shell.faces().len())
+            .map(|k| match k {
+                0 => name.to_owned(),
+                _ => format!("{name}_{k}"),
+            })
+            .collect();
+        let surfaces: Vec<String> = shell
+            .faces()
             .iter()
-            .map(|e| {
-                let geometry = self.curve(&e.curve, "");
+            .zip(&names)
+            .map(|(face, face_name)| self.face_surface(&face.surface, face_name))
+            .collect();
+        let edges: Vec<String> = (0..shell.edges().len())
+            .map(|k| {
+                let geometry = self.edge_geometry(shell, k, &surfaces);
+                let e = &shell.edges()[k];
                 self.add(format!(
                     "EDGE_CURVE('',{},{},{geometry},.T.)",
                     vertices[e.start], vertices[e.end]
@@ -115,22 +131,7 @@ impl Data {
             })
             .collect();
         let mut faces = Vec::new();
-        for (k, face) in shell.faces().iter().enumerate() {
-            let face_name = if k == 0 {
-                name.to_owned()
-            } else {
-                format!("{name}_{k}")
-            };
-            let surface = match &face.surface {
-                FaceSurface::BSpline(s) => self.surface(s, &face_name),
-                FaceSurface::Plane(plane) => {
-                    let origin = self.point(plane.origin);
-                    let axis = self.direction(plane.normal);
-                    let x = self.direction(plane.x_axis());
-                    let placement = self.add(format!("AXIS2_PLACEMENT_3D('',{origin},{axis},{x})"));
-                    self.add(format!("PLANE('{face_name}',{placement})"))
-                }
-            };
+        for ((face, surface), face_name) in shell.faces().iter().zip(&surfaces).zip(&names) {
             let bound = if face.bound.is_empty() {
                 // A face with no edge at all (every side a point): bounded by a vertex.
                 let vertex = vertices.first().cloned().unwrap_or_default();
@@ -162,6 +163,79 @@ impl Data {
             self.add(format!("{kind}('',({}))", faces.join(","))),
             closed,
         )
+    }
+
+    /// The surface of a face: a B-spline surface or a `PLANE`.
+    fn face_surface(&mut self, surface: &FaceSurface, name: &str) -> String {
+        match surface {
+            FaceSurface::BSpline(s) => self.surface(s, name),
+            FaceSurface::Plane(plane) => {
+                let origin = self.point(plane.origin);
+                let axis = self.direction(plane.normal);
+                let x = self.direction(plane.x_axis());
+                let placement = self.add(format!("AXIS2_PLACEMENT_3D('',{origin},{axis},{x})"));
+                self.add(format!("PLANE('{name}',{placement})"))
+            }
+        }
+    }
+
+    /// The geometry of edge `k` of `shell`: its 3-D curve, in a `SURFACE_CURVE` with one
+    /// `PCURVE` per B-spline face that uses the edge once (the side of the face's parameter
+    /// rectangle it is, a degree-1 B-spline over the edge curve's parameters). A reader that
+    /// derived these by projecting the curve would fold them where a side runs down a line
+    /// and back up it (the end section of a whole hull). Planes get none (a projection onto
+    /// a plane is exact), nor does a seam (used twice by its face).
+    fn edge_geometry(&mut self, shell: &CadShell, k: usize, surfaces: &[String]) -> String {
+        let edge = &shell.edges()[k];
+        let curve = self.curve(&edge.curve, "");
+        let domain = edge.curve.domain();
+        let mut pcurves = Vec::new();
+        for (face, surface) in shell.faces().iter().zip(surfaces) {
+            let uses: Vec<_> = face.bound.iter().filter(|o| o.edge == k).collect();
+            if let ([use_], FaceSurface::BSpline(_)) = (uses.as_slice(), &face.surface) {
+                if let Some(segment) = use_.on_face {
+                    let context = self.parameter_context();
+                    let start = self.point_2d(segment.start);
+                    let end = self.point_2d(segment.end);
+                    let line = self.add(format!(
+                        "B_SPLINE_CURVE_WITH_KNOTS('',1,({start},{end}),.POLYLINE_FORM.,.F.,.F.,(2,2),({}),.UNSPECIFIED.)",
+                        join_real(&[domain.start, domain.end])
+                    ));
+                    let representation = self.add(format!(
+                        "DEFINITIONAL_REPRESENTATION('',({line}),{context})"
+                    ));
+                    pcurves.push(self.add(format!("PCURVE('',{surface},{representation})")));
+                }
+            }
+        }
+        if pcurves.is_empty() {
+            return curve;
+        }
+        self.add(format!(
+            "SURFACE_CURVE('',{curve},({}),.CURVE_3D.)",
+            pcurves.join(",")
+        ))
+    }
+
+    /// The context of the parameter-plane curves, written once.
+    fn parameter_context(&mut self) -> String {
+        if let Some(context) = &self.parameter_context {
+            return context.clone();
+        }
+        let context = self.add(
+            "(GEOMETRIC_REPRESENTATION_CONTEXT(2)PARAMETRIC_REPRESENTATION_CONTEXT()REPRESENTATION_CONTEXT('2D SPACE',''))"
+                .into(),
+        );
+        self.parameter_context = Some(context.clone());
+        context
+    }
+
+    fn point_2d(&mut self, p: [f64; 2]) -> String {
+        self.add(format!(
+            "CARTESIAN_POINT('',({},{}))",
+            real(p[0]),
+            real(p[1])
+        ))
     }
 
     fn direction(&mut self, d: Point<3>) -> String {
@@ -309,7 +383,10 @@ pub fn step_text(entities: &[CadEntity<'_>], name: &str) -> String {
 /// [`step_text`] with the length unit `unit` ([`crate::cad::units`]).
 pub fn step_text_in(entities: &[CadEntity<'_>], name: &str, unit: LengthUnit) -> String {
     let name = step_string(name);
-    let mut data = Data { lines: Vec::new() };
+    let mut data = Data {
+        lines: Vec::new(),
+        parameter_context: None,
+    };
     let shape = data.product(&name);
     let context = data.context(unit);
     let placement = data.origin_placement();
@@ -589,7 +666,12 @@ mod tests {
         assert_eq!(count("EDGE_CURVE("), 4);
         assert_eq!(count("ORIENTED_EDGE("), 4);
         assert_eq!(count("VERTEX_POINT("), 4);
-        assert_eq!(count("B_SPLINE_CURVE_WITH_KNOTS("), 4);
+        // Four 3-D sides and their four lines in the parameter plane.
+        assert_eq!(count("B_SPLINE_CURVE_WITH_KNOTS("), 8);
+        assert_eq!(count("B_SPLINE_CURVE_WITH_KNOTS('',1,"), 4);
+        assert_eq!(count("SURFACE_CURVE('',#"), 4);
+        assert_eq!(count("PCURVE('',#"), 4);
+        assert_eq!(count("(GEOMETRIC_REPRESENTATION_CONTEXT(2)"), 1);
         assert_eq!(count("OPEN_SHELL("), 1);
         assert_eq!(count("SHELL_BASED_SURFACE_MODEL("), 1);
         assert_eq!(count("MANIFOLD_SURFACE_SHAPE_REPRESENTATION("), 1);

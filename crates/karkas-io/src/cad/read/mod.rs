@@ -187,6 +187,33 @@ mod tests {
         }
     }
 
+    #[test]
+    fn a_written_face_whose_ends_fold_reads_back_whole() {
+        // Like a whole hull's end sections: the sides u = 0 and u = 1 run down a line and
+        // back up it. The file's edges carry their lines in the parameter plane, so the face
+        // read back is the whole rectangle, near its folded sides too.
+        let grid = Grid::from_fn(3, 3, |i, j| {
+            let y = if i == 1 { 1.0 - j as f64 } else { 0.0 };
+            Point3::new([i as f64, y, if j == 1 { -1.0 } else { 0.0 }])
+        });
+        let k = vec![0.0, 0.0, 0.0, 1.0, 1.0, 1.0];
+        let s = karkas::bspline::BSplineSurface::new((2, k.clone()), (2, k), grid).unwrap();
+        let text = crate::step::step_text(&[CadEntity::Surface(&s)], "fold");
+        assert_eq!(text.matches("PCURVE(").count(), 4);
+        let m = read_text(&text, CadFormat::Step);
+        assert!(m.warning().is_none(), "{:?}", m.warning());
+        let domain = karkas::shape::FaceDomain::of(&m.shape.faces[0]).unwrap();
+        for (u, v) in [
+            (1e-3, 0.25),
+            (1e-3, 0.75),
+            (0.999, 0.25),
+            (0.999, 0.75),
+            (0.5, 0.5),
+        ] {
+            assert!(domain.contains(u, v), "({u}, {v}) left out");
+        }
+    }
+
     /// `text` with its instance `from(...)` rewritten as `to(...)` keeping the first `keep`
     /// attributes (a subtype whose knots are implied drops the knot attributes).
     fn implied_form(text: &str, from: &str, to: &str, keep: usize) -> String {
