@@ -194,10 +194,16 @@ fn write_fit_picture_or_samples<const D: usize>(
     fit: &CurveFit<D>,
     (ts, samples): (&[f64], &[Point<D>]),
 ) -> Result<()> {
-    let whiskers = whiskers(
-        &fit.spline,
-        points.iter().zip(fit.parameters.iter().copied()),
-    );
+    // The whiskers are drawn, not written: a CSV of samples needs none (two points per
+    // input point would double the memory of a large fit).
+    let whiskers = if format == OutputFormat::Csv {
+        Vec::new()
+    } else {
+        whiskers(
+            &fit.spline,
+            points.iter().zip(fit.parameters.iter().copied()),
+        )
+    };
     let comb = args.comb.teeth(&fit.spline, ts);
     let title = format!(
         "{}defect-2 cubic spline fit, {} knots, {} points, max deviation {:.3e}",

@@ -17,7 +17,7 @@
 //! its residual, so the solution is the same up to rounding, and it does not depend on the
 //! number of threads (each piece is rotated on its own, in the order of its points).
 
-use super::hermite::{hermite_basis, jump_coefficients};
+use super::hermite::{hermite_basis, jump_coefficients, HermiteSpline};
 use super::problem::{Problem, State};
 use crate::core::parallel::PARALLEL_THRESHOLD;
 use crate::solve::BandedLeastSquares;
@@ -25,33 +25,48 @@ use crate::{Point, Result};
 use rayon::prelude::*;
 
 /// The points grouped by the piece their parameter falls on (a counting sort), so that the
-/// least-squares rows can be added in the order of their first column.
+/// least-squares rows can be added in the order of their first column. Parameters in order
+/// (the usual case) need no sort: the points of a piece are a run of indices, and no index
+/// per point is kept.
 #[derive(Clone, Debug, Default)]
 struct PieceIndex {
-    /// Point indices, piece by piece.
+    /// Point indices, piece by piece; empty when the parameters are in order.
     order: Vec<usize>,
-    /// `order[start[k]..start[k + 1]]` are the points on piece `k`.
+    /// `order[start[k]..start[k + 1]]` (or those indices themselves, when `order` is empty)
+    /// are the points on piece `k`.
     start: Vec<usize>,
 }
 
 impl PieceIndex {
-    pub(crate) fn new(points: usize, pieces: usize) -> Self {
+    pub(crate) fn new(pieces: usize) -> Self {
         PieceIndex {
-            order: vec![0; points],
+            order: Vec::new(),
             start: vec![0; pieces + 1],
         }
     }
 
-    fn build(&mut self, piece: &[usize]) {
+    /// Groups the points by the piece of their parameter `params` on `spline`.
+    fn build<const D: usize>(&mut self, spline: &HermiteSpline<D>, params: &[f64]) {
+        let pieces = || {
+            params.iter().scan(0, move |k, &t| {
+                *k = spline.piece_near(t, *k);
+                Some(*k)
+            })
+        };
         self.start.fill(0);
-        for &k in piece {
+        for k in pieces() {
             self.start[k + 1] += 1;
         }
         for k in 1..self.start.len() {
             self.start[k] += self.start[k - 1];
         }
+        if params.windows(2).all(|pair| pair[0] <= pair[1]) {
+            self.order = Vec::new();
+            return;
+        }
+        self.order.resize(params.len(), 0);
         // Fill using `start` as running cursors, then shift it back.
-        for (i, &k) in piece.iter().enumerate() {
+        for (i, k) in pieces().enumerate() {
             self.order[self.start[k]] = i;
             self.start[k] += 1;
         }
@@ -61,8 +76,15 @@ impl PieceIndex {
         self.start[0] = 0;
     }
 
-    fn on_piece(&self, k: usize) -> &[usize] {
-        &self.order[self.start[k]..self.start[k + 1]]
+    /// The indices of the points on piece `k`, in order.
+    fn on_piece(&self, k: usize) -> impl Iterator<Item = usize> + '_ {
+        let range = self.start[k]..self.start[k + 1];
+        let (run, sorted) = if self.order.is_empty() {
+            (range, &[][..])
+        } else {
+            (0..0, &self.order[range])
+        };
+        run.chain(sorted.iter().copied())
     }
 }
 
@@ -81,7 +103,7 @@ impl<const D: usize> FixedScratch<D> {
     pub(crate) fn new(points: usize, pieces: usize) -> Self {
         let parallel = points >= PARALLEL_THRESHOLD;
         FixedScratch {
-            index: PieceIndex::new(points, pieces),
+            index: PieceIndex::new(pieces),
             factors: vec![PieceFactor::EMPTY; if parallel { pieces } else { 0 }],
         }
     }
@@ -191,7 +213,7 @@ fn piece_rows<const D: usize>(
         let (values, rhs) = pinned_row(problem.pins, last_col, 2 * k, values, rhs);
         row(values, rhs);
     };
-    for &i in index.on_piece(k) {
+    for i in index.on_piece(k) {
         let b = hermite_basis(state.spline.local(k, state.params[i]), h, 0);
         add(b, problem.points[i]);
     }
@@ -205,7 +227,7 @@ fn piece_rows<const D: usize>(
 }
 
 /// The least-squares spline for the parameters of `state` held fixed, into `state.spline`
-/// (the pieces of the parameters refreshed, the distances not); `coord`, `scratch` and `x`
+/// (the distances not refreshed); `coord`, `scratch` and `x`
 /// are scratch space sized for the problem.
 ///
 /// Errors: [`Error::SingularSystem`](crate::Error::SingularSystem) when the rows do not
@@ -218,11 +240,8 @@ pub(crate) fn solve_fixed<const D: usize>(
     state: &mut State<D>,
     p: f64,
 ) -> Result<()> {
-    for (k, &t) in state.piece.iter_mut().zip(&state.params) {
-        *k = state.spline.piece_near(t, *k);
-    }
     let FixedScratch { index, factors } = scratch;
-    index.build(&state.piece);
+    index.build(&state.spline, &state.params);
     let (index, state_ref) = (&*index, &*state);
     if !factors.is_empty() {
         factors

@@ -193,9 +193,10 @@ fn add_points<const D: usize>(
 ) {
     let spline = &state.spline;
     let knots = spline.knots();
+    let mut k = 0;
     for i in range {
         let (r, t) = (problem.points[i], state.params[i]);
-        let k = spline.piece_near(t, state.piece[i]);
+        k = spline.piece_near(t, k);
         let h = knots[k + 1] - knots[k];
         let b0 = hermite_basis((t - knots[k]) / h, h, 0);
         let q = piece_coefficients(spline, k);

@@ -53,8 +53,6 @@ pub(crate) struct NewtonModel<const D: usize> {
     coupled: Vec<f64>,
     /// The same with the safe `h` (see the module docs).
     coupled_safe: Vec<f64>,
-    /// The piece of every point (scratch of the assembly).
-    point_piece: Vec<usize>,
     /// The gradient at the current state.
     gradient: Gradient,
     /// The Newton step, interleaved layout.
@@ -64,14 +62,14 @@ pub(crate) struct NewtonModel<const D: usize> {
 }
 
 impl<const D: usize> NewtonModel<D> {
-    /// Buffers for `unknowns` coefficients on `pieces` pieces and `points` data points.
-    pub(crate) fn new(unknowns: usize, pieces: usize, points: usize) -> Self {
+    /// Buffers for `unknowns` coefficients on `pieces` pieces (none per point: the piece of
+    /// a point is found again where it is needed).
+    pub(crate) fn new(unknowns: usize, pieces: usize) -> Self {
         NewtonModel {
             hessian: BandedSpd::new(unknowns, 5 * D + 1),
             separable: vec![0.0; pieces * 16],
             coupled: vec![0.0; pieces * 16 * D * D],
             coupled_safe: vec![0.0; pieces * 16 * D * D],
-            point_piece: vec![0; points],
             gradient: Gradient::new(unknowns),
             step: vec![0.0; unknowns],
             damping: vec![0.0; unknowns],
@@ -98,25 +96,15 @@ impl<const D: usize> NewtonModel<D> {
         accumulate_gradient(problem, state, &mut self.gradient);
         let spline = &state.spline;
         let pieces = spline.knots().len() - 1;
-        for (slot, (&t, &hint)) in self
-            .point_piece
-            .iter_mut()
-            .zip(state.params.iter().zip(&state.piece))
-        {
-            *slot = spline.piece_near(t, hint);
-        }
-        let point_piece = &self.point_piece;
-        let kernel = BlockKernel {
-            problem,
-            state,
-            point_piece,
-        };
+        let params = &state.params;
+        let n = params.len();
+        let kernel = BlockKernel { problem, state };
         let (sep, coupled, safe) = (16, 16 * D * D, 16 * D * D);
         let threads = rayon::current_num_threads();
-        if point_piece.len() < PARALLEL_THRESHOLD || threads < 2 || pieces < 2 {
+        if n < PARALLEL_THRESHOLD || threads < 2 || pieces < 2 {
             kernel.fill(
                 0..pieces,
-                0..point_piece.len(),
+                0..n,
                 &mut self.separable,
                 &mut self.coupled,
                 &mut self.coupled_safe,
@@ -127,13 +115,12 @@ impl<const D: usize> NewtonModel<D> {
         // of the blocks and the span of the indices of its points (short: the parameters are
         // nearly sorted).
         let ranges = (2 * threads).min(pieces);
-        let n = point_piece.len();
         let mut bounds: Vec<usize> = (0..=ranges)
             .map(|r| {
                 if r == ranges {
                     pieces
                 } else {
-                    point_piece[r * n / ranges]
+                    spline.piece_near(params[r * n / ranges], 0)
                 }
             })
             .collect();
@@ -142,7 +129,9 @@ impl<const D: usize> NewtonModel<D> {
             bounds[r] = bounds[r].max(bounds[r - 1]);
         }
         let mut spans = vec![(usize::MAX, 0); ranges];
-        for (i, &k) in point_piece.iter().enumerate() {
+        let mut k = 0;
+        for (i, &t) in params.iter().enumerate() {
+            k = spline.piece_near(t, k);
             let r = bounds.partition_point(|&b| b <= k) - 1;
             let span = &mut spans[r.min(ranges - 1)];
             *span = (span.0.min(i), i + 1);
@@ -445,8 +434,6 @@ impl<const D: usize> Search<'_, '_, D> {
 struct BlockKernel<'s, 'a, const D: usize> {
     problem: &'s Problem<'a, D>,
     state: &'s State<D>,
-    /// The piece of every point.
-    point_piece: &'s [usize],
 }
 
 impl<const D: usize> BlockKernel<'_, '_, D> {
@@ -472,12 +459,10 @@ impl<const D: usize> BlockKernel<'_, '_, D> {
         // With ordered parameters, a run of points pooled to one parameter moves as one: its
         // `t` is eliminated jointly (see `Run`).
         let mut run: Option<Run<D>> = None;
+        let mut k = 0;
         for i in span {
-            let (r, t, k) = (
-                &self.problem.points[i],
-                self.state.params[i],
-                self.point_piece[i],
-            );
+            let (r, t) = (&self.problem.points[i], self.state.params[i]);
+            k = spline.piece_near(t, k);
             if !range.contains(&k) {
                 continue;
             }

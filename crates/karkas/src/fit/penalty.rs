@@ -395,8 +395,10 @@ pub fn fit_curve<const D: usize>(
     let settings = Settings::in_fit_units(options, unit);
     let noise = estimate_noise(&scaled);
     let start = start_parameters_for(&scaled, settings.start, noise.sigma)?;
-    fit_checked(&scaled, knots, &weights, start, &settings, &noise)
-        .map(|fit| with_warnings(points, unit.restore(fit, pinned_ends(points, options))))
+    let fit = fit_checked(&scaled, knots, &weights, start, &settings, &noise);
+    // The moved copy of the points is released before the shape guards look at the fit.
+    drop(scaled);
+    fit.map(|fit| with_warnings(points, unit.restore(fit, pinned_ends(points, options))))
 }
 
 /// The standard error of a least-squares spline on `knots` knots (`2 knots` coefficients per
@@ -476,7 +478,6 @@ pub(crate) fn fit_checked<const D: usize>(
     // can be far from the bound, and its foot points no guide.
     let mut p = seed_bound;
     state.params.copy_from_slice(&run.start);
-    state.piece.fill(0);
     run.solver.solve_fixed(&mut state, p)?;
     run.solver.project(&mut state);
     if options.penalty == PenaltyRule::ActiveBound {
@@ -587,7 +588,15 @@ impl<'a, const D: usize> Run<'a, D> {
     /// The result from `state` at the penalty `p` (every point projected once more).
     fn finish(&mut self, state: State<D>, p: f64, seed_bound: f64) -> CurveFit<D> {
         let state = projected(&mut self.solver, self.problem.ordered, state);
+        self.solver.release_trial();
+        self.start = Vec::new();
         let taper = self.problem.taper;
+        let data_term = state.data_term();
+        // The squared distances become the distances in place.
+        let mut distances = state.dist_sq;
+        for d in &mut distances {
+            *d = d.sqrt();
+        }
         CurveFit {
             jump_sum: state.spline.jump_penalty(self.weights),
             bending_energy: taper.bending_energy(&state.spline),
@@ -597,8 +606,8 @@ impl<'a, const D: usize> Run<'a, D> {
                 .map(|w| taper.share(w[0], w[1]))
                 .collect(),
             bending_weight: self.problem.bending,
-            data_term: state.data_term(),
-            distances: state.dist_sq.iter().map(|d| d.sqrt()).collect(),
+            data_term,
+            distances,
             parameters: state.params,
             spline: state.spline,
             penalty: p,
@@ -884,7 +893,6 @@ fn feasible_reference<const D: usize>(
         spline,
         params: if fitted { state.params } else { start.to_vec() },
         dist_sq: vec![0.0; start.len()],
-        piece: vec![0; start.len()],
         order: Default::default(),
     };
     let mut form = PowerForm::new(&lifted.spline);

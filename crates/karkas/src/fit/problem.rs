@@ -128,14 +128,15 @@ impl Projection {
     }
 }
 
-/// A spline and the parameters, squared distances and pieces of the data points on it.
+/// A spline and the parameters and squared distances of the data points on it. The piece of
+/// a parameter is not kept: it is found again where needed (`piece_near` from the previous
+/// point's piece, which the ordered parameters make the right guess), so that a state costs
+/// two numbers a point.
 #[derive(Clone, Debug)]
 pub(crate) struct State<const D: usize> {
     pub spline: HermiteSpline<D>,
     pub params: Vec<f64>,
     pub dist_sq: Vec<f64>,
-    /// The piece of every parameter (a hint kept up to date by the projection).
-    pub piece: Vec<usize>,
     /// Scratch space of the ordering of the parameters.
     pub order: OrderScratch,
 }
@@ -146,7 +147,8 @@ pub(crate) struct OrderScratch {
     pub blocks: Vec<Block>,
     /// The pooled runs of each part, with many points.
     pub parts: Vec<Vec<Block>>,
-    /// The parameters before the ordering.
+    /// The parameters before the ordering (allocated by each ordering and released after
+    /// it, so that states do not keep one each).
     pub previous: Vec<f64>,
 }
 
@@ -161,7 +163,6 @@ impl<const D: usize> State<D> {
                 vec![Point::ZERO; n],
             ),
             dist_sq: vec![0.0; params.len()],
-            piece: vec![0; params.len()],
             order: OrderScratch::default(),
             params,
         }

@@ -27,8 +27,8 @@ pub(crate) fn project<const D: usize>(
     project_within(points, projection, state, form, f64::INFINITY);
 }
 
-/// A chunk of the projection: its index, and its parameters, squared distances and pieces.
-type ChunkSlices<'s> = (usize, ((&'s mut [f64], &'s mut [f64]), &'s mut [usize]));
+/// A chunk of the projection: its index, and its parameters and squared distances.
+type ChunkSlices<'s> = (usize, (&'s mut [f64], &'s mut [f64]));
 
 /// Points per chunk of the projection: chunks are projected in parallel when there are
 /// enough points (every point is projected on its own, from its own previous foot point).
@@ -72,13 +72,14 @@ fn order_parameters<const D: usize>(
     let order = &mut state.order;
     order.previous.clear();
     order.previous.extend_from_slice(&state.params);
-    let (pieces, previous) = (&state.piece, &order.previous);
+    let previous = &order.previous;
     // The curvature of a point's squared distance at its foot point (held parameters stay).
     let weight = |i: usize| {
         if !projection.is_free(i, n) {
             return f64::MAX;
         }
-        let [p, d1, d2] = form.jet(pieces[i], previous[i]);
+        let t = previous[i];
+        let [p, d1, d2] = form.jet(form.piece_near(t, 0), t);
         let speed_sq = d1.norm_sq();
         (speed_sq + (p - points[i]).dot(d2))
             .max(1e-3 * speed_sq)
@@ -91,53 +92,58 @@ fn order_parameters<const D: usize>(
         isotonic(&mut state.params, weight, &mut order.blocks);
     }
     // The distance of a point whose parameter moved, at its new parameter.
-    type Moved<'s> = (usize, ((&'s f64, &'s f64), (&'s mut usize, &'s mut f64)));
-    let refresh = |(i, ((t, old), (piece, d))): Moved<'_>| {
+    type Moved<'s> = (usize, ((&'s f64, &'s f64), &'s mut f64));
+    let refresh = |(i, ((t, old), d)): Moved<'_>| {
         if t != old {
-            *piece = form.piece_near(*t, *piece);
-            *d = form.point(*piece, *t).distance_sq(points[i]);
+            *d = form
+                .point(form.piece_near(*t, 0), *t)
+                .distance_sq(points[i]);
         }
     };
     let (params, previous) = (&state.params, &state.order.previous);
-    let (pieces, dist_sq) = (&mut state.piece, &mut state.dist_sq);
+    let dist_sq = &mut state.dist_sq;
     if parallel {
         params
             .par_iter()
             .zip(previous)
-            .zip(pieces.par_iter_mut().zip(dist_sq.par_iter_mut()))
+            .zip(dist_sq.par_iter_mut())
             .enumerate()
             .for_each(refresh);
     } else {
         params
             .iter()
             .zip(previous)
-            .zip(pieces.iter_mut().zip(dist_sq.iter_mut()))
+            .zip(dist_sq.iter_mut())
             .enumerate()
             .for_each(refresh);
     }
+    // Released: the states of a fit would otherwise keep one each.
+    state.order.previous = Vec::new();
     state.data_term()
 }
 
 /// Projects the point of chunk index `j` (point `first + j`), or it and the next as a pair
 /// of free points (see `foot_point_pair`), adding their squared distances to `sum`; returns
-/// how many were projected.
+/// how many were projected. `piece` is a hint for the piece of the point's parameter (the
+/// previous point's piece), updated to the piece of the last point projected.
 fn project_next<const D: usize>(
     form: &PowerForm<D>,
     points: &[Point<D>],
     projection: Projection,
     (first, j): (usize, usize),
-    (params, dist_sq, piece): (&mut [f64], &mut [f64], &mut [usize]),
+    (params, dist_sq, piece): (&mut [f64], &mut [f64], &mut usize),
     sum: &mut f64,
 ) -> usize {
     let (n, len, i) = (points.len(), params.len(), first + j);
     if j + 1 < len && projection.is_free(i, n) && projection.is_free(i + 1, n) {
-        let (pa, pb) = piece[j..].split_at_mut(1);
+        let (mut pa, mut pb) = (*piece, *piece);
         let [a, b] = foot_point_pair(
             form,
             [points[i], points[i + 1]],
             [params[j], params[j + 1]],
-            [&mut pa[0], &mut pb[0]],
+            [&mut pa, &mut pb],
         );
+        *piece = pb;
         (params[j], dist_sq[j]) = a;
         (params[j + 1], dist_sq[j + 1]) = b;
         *sum += a.1;
@@ -146,10 +152,10 @@ fn project_next<const D: usize>(
     }
     let r = points[i];
     if projection.is_free(i, n) {
-        (params[j], dist_sq[j]) = foot_point_near(form, r, params[j], &mut piece[j]);
+        (params[j], dist_sq[j]) = foot_point_near(form, r, params[j], piece);
     } else {
-        piece[j] = form.piece_near(params[j], piece[j]);
-        dist_sq[j] = form.point(piece[j], params[j]).distance_sq(r);
+        *piece = form.piece_near(params[j], *piece);
+        dist_sq[j] = form.point(*piece, params[j]).distance_sq(r);
     }
     *sum += dist_sq[j];
     1
@@ -183,13 +189,14 @@ fn project_each<const D: usize>(
     // The sum of the chunks done (f64 bits), and whether one gave up.
     let done = AtomicU64::new(0f64.to_bits());
     let abandoned = AtomicBool::new(false);
-    let chunk = |(c, ((params, dist_sq), piece)): ChunkSlices<'_>| {
+    let chunk = |(c, (params, dist_sq)): ChunkSlices<'_>| {
         let first = c * PROJECTION_CHUNK;
         let len = params.len();
         let mut sum = 0.0;
         let mut j = 0;
+        let mut piece = 0;
         while j < len {
-            let slices = (&mut *params, &mut *dist_sq, &mut *piece);
+            let slices = (&mut *params, &mut *dist_sq, &mut piece);
             let taken = project_next(form, points, projection, (first, j), slices, &mut sum);
             j += taken;
             if j % 64 < taken
@@ -208,7 +215,6 @@ fn project_each<const D: usize>(
             .params
             .chunks_mut(PROJECTION_CHUNK)
             .zip(state.dist_sq.chunks_mut(PROJECTION_CHUNK))
-            .zip(state.piece.chunks_mut(PROJECTION_CHUNK))
             .enumerate();
         let mut total = 0.0;
         for item in chunks {
@@ -223,7 +229,6 @@ fn project_each<const D: usize>(
             .params
             .par_chunks_mut(PROJECTION_CHUNK)
             .zip(state.dist_sq.par_chunks_mut(PROJECTION_CHUNK))
-            .zip(state.piece.par_chunks_mut(PROJECTION_CHUNK))
             .enumerate()
             .map(chunk)
             .collect();

@@ -137,8 +137,6 @@ pub(crate) struct Solver<'a, const D: usize> {
     /// The power form of the spline being projected onto.
     power: PowerForm<D>,
     trial: State<D>,
-    /// The parameters held by the alternation step, while it tries the projection.
-    held: Vec<f64>,
 }
 
 impl<'a, const D: usize> Solver<'a, D> {
@@ -153,7 +151,7 @@ impl<'a, const D: usize> Solver<'a, D> {
             problem,
             coord: BandedLeastSquares::new(2 * n_knots, 6, D),
             fixed: FixedScratch::new(n, pieces),
-            model: NewtonModel::new(unknowns, pieces, n),
+            model: NewtonModel::new(unknowns, pieces),
             trial_gradient: Gradient::new(unknowns),
             x: vec![0.0; unknowns],
             power: PowerForm::new(template),
@@ -161,11 +159,17 @@ impl<'a, const D: usize> Solver<'a, D> {
                 spline: template.clone(),
                 params: vec![0.0; n],
                 dist_sq: vec![0.0; n],
-                piece: vec![0; n],
                 order: Default::default(),
             },
-            held: vec![0.0; n],
         }
+    }
+
+    /// Releases the per-point buffers of the trial state: the solver takes no further step
+    /// (a fit's result is being built; only [`Solver::project`] may follow).
+    pub fn release_trial(&mut self) {
+        self.trial.params = Vec::new();
+        self.trial.dist_sq = Vec::new();
+        self.trial.order = Default::default();
     }
 
     /// Keeps the foot-point parameters in the order of the points from now on (or not).
@@ -220,7 +224,6 @@ impl<'a, const D: usize> Solver<'a, D> {
     /// step that went astray costs little).
     fn step_into_trial(&mut self, state: &State<D>, p: f64, budget: f64) -> f64 {
         self.trial.params.copy_from_slice(&state.params);
-        self.trial.piece.copy_from_slice(&state.piece);
         copy_coefficients(&state.spline, &mut self.trial.spline);
         let step = self.model.step();
         let (values, derivatives) = self.trial.spline.coefficients_mut();
@@ -251,7 +254,6 @@ impl<'a, const D: usize> Solver<'a, D> {
     fn alternation_into_trial(&mut self, state: &State<D>, p: f64) -> f64 {
         let trial = &mut self.trial;
         trial.params.copy_from_slice(&state.params);
-        trial.piece.copy_from_slice(&state.piece);
         copy_coefficients(&state.spline, &mut trial.spline);
         let solved = solve_fixed(
             &self.problem,
@@ -271,20 +273,20 @@ impl<'a, const D: usize> Solver<'a, D> {
         }
         // The ordered projection solves a quadratic model of the distances, so it may lose
         // against the parameters held: keep whichever is lower, so that the step never
-        // raises F (the held parameters are ordered already).
+        // raises F (the held parameters are ordered already). The held parameters are those
+        // of `state`, so they are copied back from there, not kept a second time.
         let held = Projection {
             foot_points: false,
             ..projection
         };
         project(self.problem.points, held, trial, &mut self.power);
         let kept = objective(&self.problem, trial, p);
-        self.held.clone_from(&trial.params);
         project(self.problem.points, projection, trial, &mut self.power);
         let moved = objective(&self.problem, trial, p);
         if moved <= kept {
             return moved;
         }
-        trial.params.copy_from_slice(&self.held);
+        trial.params.copy_from_slice(&state.params);
         project(self.problem.points, held, trial, &mut self.power);
         kept
     }

@@ -32,13 +32,16 @@ const REVERSAL_SHARE: f64 = 0.05;
 /// assert!(points_out_of_order(&shuffled).is_some());
 /// ```
 pub fn points_out_of_order<const D: usize>(points: &[Point<D>]) -> Option<usize> {
-    let finite: Vec<Point<D>> = points.iter().copied().filter(|p| p.is_finite()).collect();
-    if finite.len() < 3 {
+    // The finite points, in order, without a copy of them (the list may be millions long).
+    let finite = || points.iter().copied().filter(|p| p.is_finite());
+    let count = finite().count();
+    if count < 3 {
         return None;
     }
-    let mut lo = finite[0];
-    let mut hi = finite[0];
-    for p in &finite {
+    let mut all = finite();
+    let first = all.next()?;
+    let (mut lo, mut hi) = (first, first);
+    for p in all {
         for d in 0..D {
             lo[d] = lo[d].min(p[d]);
             hi[d] = hi[d].max(p[d]);
@@ -48,14 +51,17 @@ pub fn points_out_of_order<const D: usize>(points: &[Point<D>]) -> Option<usize>
     if long.is_nan() || long <= 0.0 {
         return None;
     }
-    let reversals = finite
-        .windows(3)
-        .filter(|w| {
-            let (a, b) = (w[1] - w[0], w[2] - w[1]);
-            let (la, lb) = (a.norm(), b.norm());
-            la > long && lb > long && a.dot(b) < TURN_BACK_COSINE * la * lb
-        })
-        .count();
-    let needed = MIN_REVERSALS.max((REVERSAL_SHARE * finite.len() as f64).ceil() as usize);
+    let mut reversals = 0;
+    let mut all = finite();
+    let (mut a, mut b) = (all.next()?, all.next()?);
+    for c in all {
+        let (u, v) = (b - a, c - b);
+        let (lu, lv) = (u.norm(), v.norm());
+        if lu > long && lv > long && u.dot(v) < TURN_BACK_COSINE * lu * lv {
+            reversals += 1;
+        }
+        (a, b) = (b, c);
+    }
+    let needed = MIN_REVERSALS.max((REVERSAL_SHARE * count as f64).ceil() as usize);
     (reversals >= needed).then_some(reversals)
 }
