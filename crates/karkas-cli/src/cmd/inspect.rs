@@ -305,7 +305,7 @@ mod tests {
         };
         for k in 0..3000usize {
             let pick = |i: usize, r: f64| {
-                if (k + i) % 3 == 0 {
+                if (k + i).is_multiple_of(3) {
                     values[(k + i) % values.len()]
                 } else {
                     r
@@ -326,8 +326,8 @@ mod tests {
                     pick(7, -(k as f64)),
                 ]),
                 distance: pick(8, (k as f64 * 0.37).cos().abs()),
-                signed: (k % 4 != 0).then(|| pick(9, -(k as f64) * 1e-5)),
-                on_edge: k % 5 == 0,
+                signed: (!k.is_multiple_of(4)).then(|| pick(9, -(k as f64) * 1e-5)),
+                on_edge: k.is_multiple_of(5),
             };
             let mut text = Vec::new();
             report_row(&mut text, k, q, &f);
