@@ -6,13 +6,19 @@ the top one trimmed by 49 circles; 49 cylinders; 49 hole bottoms). The points: 1
 four within 2% of the model's size from its faces (Open CASCADE's feet of random points, moved
 along random directions), one in four over its bounding box grown by a fifth.
 
-Each round runs `karkas inspect MODEL --points SCAN.csv` with RAYON_NUM_THREADS=1 and =2
-interleaved, and reads the times karkas prints (faces prepared, points projected: the
-projection alone, without reading the 10^6-line CSV) and the process's wall and CPU time.
+Each round runs `karkas inspect MODEL --points SCAN.csv -o REPORT.csv` with RAYON_NUM_THREADS=1
+and =2 interleaved, and reads the times karkas prints (faces prepared, points projected: the
+projection alone, without reading the 10^6-line CSV or writing the report) and the process's
+wall and CPU time (end to end: reading, projecting, writing the report). The load average is
+printed beside the figures (the wall times mean little on a loaded machine).
 Before timing, the distances of the first 2,000 points are checked equal to Open CASCADE's
 BRepExtrema_DistShapeShape to 1e-9.
 
     python3 bench/inspect_model.py --karkas target/release/karkas [--rounds 3] [--points 1000000]
+        [--keep DIR]
+
+`--keep DIR` writes the model and the points to DIR once and reuses them on later runs (the
+Open CASCADE feet of the points take minutes).
 """
 
 import argparse
@@ -68,7 +74,8 @@ def run(karkas, model, scan, threads):
     env = dict(os.environ, RAYON_NUM_THREADS=str(threads))
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     start = time.perf_counter()
-    done = subprocess.run([karkas, "inspect", model, "--points", scan, "--worst", "1"],
+    report = os.path.join(os.path.dirname(scan), f"report-{threads}.csv")
+    done = subprocess.run([karkas, "inspect", model, "--points", scan, "--worst", "1", "-o", report],
                           capture_output=True, text=True, env=env)
     wall = time.perf_counter() - start
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
@@ -84,28 +91,36 @@ def main():
     parser.add_argument("--karkas", default="target/release/karkas")
     parser.add_argument("--rounds", type=int, default=3)
     parser.add_argument("--points", type=int, default=1_000_000)
+    parser.add_argument("--keep", help="a folder to keep the model and points in, and reuse")
     args = parser.parse_args()
-    folder = tempfile.mkdtemp(prefix="karkas-inspect-bench-")
+    folder = args.keep or tempfile.mkdtemp(prefix="karkas-inspect-bench-")
+    os.makedirs(folder, exist_ok=True)
     shape = holed_plate(holes=7)
     model = os.path.join(folder, "plate-49-holes.step")
     write_step(shape, model)
-    rng = np.random.default_rng(7)
-    pts = points(shape, args.points, rng)
-    scan = os.path.join(folder, "scan.csv")
-    np.savetxt(scan, pts, delimiter=",", header="x,y,z", comments="", fmt="%.17g")
+    scan = os.path.join(folder, f"scan-{args.points}.csv")
+    if os.path.exists(scan):
+        pts = np.loadtxt(scan, delimiter=",", skiprows=1, max_rows=2000)
+    else:
+        rng = np.random.default_rng(7)
+        pts = points(shape, args.points, rng)
+        np.savetxt(scan, pts, delimiter=",", header="x,y,z", comments="", fmt="%.17g")
     # Equal before timed.
     check = pts[:2000]
     check_folder = os.path.join(folder, "check")
     os.makedirs(check_folder, exist_ok=True)
     distance, _ = run_karkas(args.karkas, model, check, check_folder)
     error = float(np.max(np.abs(distance - occ_distances(shape, check))))
-    print(f"model: {faces(shape)} faces; {len(pts)} points; first 2,000 equal to OCC's to {error:.1e}")
+    print(f"model: {faces(shape)} faces; {args.points} points; first 2,000 equal to OCC's to {error:.1e}")
     if error > 1e-9:
         sys.exit("distances differ from Open CASCADE's")
     figures = {1: [], 2: []}
+    loads = []
     for _ in range(args.rounds):
         for threads in (1, 2):
+            loads.append(os.getloadavg()[0])
             figures[threads].append(run(args.karkas, model, scan, threads))
+    print(f"load average (1 min) during the runs: {min(loads):.1f} to {max(loads):.1f}")
     print("| threads | prepare s | project s | command wall s | command CPU s |")
     print("|---|---|---|---|---|")
     for threads, runs in figures.items():

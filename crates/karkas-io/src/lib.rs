@@ -58,6 +58,7 @@ pub mod pointset;
 pub mod range;
 pub mod samples;
 pub mod sections_table;
+pub mod shortest;
 pub mod skeleton;
 pub mod viewer;
 pub mod windio;
@@ -67,7 +68,6 @@ mod columns;
 mod lines;
 mod order_check;
 mod plain_decimal;
-mod shortest;
 mod store;
 
 pub use cad::{iges, step};

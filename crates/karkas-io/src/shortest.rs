@@ -14,8 +14,19 @@
 //! and rounds up as `std` does. Tests compare the bytes with `format!("{v}")` on random bit
 //! patterns, on values with short binary fractions (where ties live), subnormals and extremes
 //! included.
+//!
+//! [`push_debug`] writes `{:?}`'s form instead (`1.0`, `-0.0`, `1e-5`, `1e16`), which
+//! `karkas inspect`'s report uses: for `1e-4 <= |v| < 1e16` the digits of `{}` with `.0` after a
+//! whole number, outside it `std`'s own exponent form (rare in measured coordinates and
+//! distances).
 
 /// Appends `v` to `out` exactly as `format!("{v}")` writes it.
+///
+/// ```
+/// let mut out = Vec::new();
+/// karkas_io::shortest::push(&mut out, 100.0);
+/// assert_eq!(out, b"100");
+/// ```
 #[inline]
 pub fn push(out: &mut Vec<u8>, v: f64) {
     if v == 0.0 {
@@ -53,6 +64,39 @@ pub fn push(out: &mut Vec<u8>, v: f64) {
         }
     }
     push_digits(out, v, text);
+}
+
+/// Appends `v` to `out` exactly as `format!("{v:?}")` writes it.
+///
+/// ```
+/// let mut out = Vec::new();
+/// for v in [100.0, -0.0, 0.1 + 0.2, 1.5e-7, 2e16] {
+///     karkas_io::shortest::push_debug(&mut out, v);
+///     out.push(b',');
+/// }
+/// assert_eq!(out, b"100.0,-0.0,0.30000000000000004,1.5e-7,2e16,");
+/// ```
+#[inline]
+pub fn push_debug(out: &mut Vec<u8>, v: f64) {
+    if v == 0.0 {
+        out.extend_from_slice(if v.is_sign_negative() {
+            b"-0.0"
+        } else {
+            b"0.0"
+        });
+        return;
+    }
+    if !(1e-4..1e16).contains(&v.abs()) {
+        use std::io::Write as _;
+        // Writing to a vector cannot fail.
+        let _ = write!(out, "{v:?}");
+        return;
+    }
+    let start = out.len();
+    push(out, v);
+    if !out[start..].contains(&b'.') {
+        out.extend_from_slice(b".0");
+    }
 }
 
 /// Appends `v` (finite, not zero) from `ryu`'s `text` when its digits must be taken apart:
@@ -203,6 +247,12 @@ mod tests {
         String::from_utf8(out).unwrap()
     }
 
+    fn debug_shown(v: f64) -> String {
+        let mut out = b"x,".to_vec();
+        push_debug(&mut out, v);
+        String::from_utf8(out[2..].to_vec()).unwrap()
+    }
+
     #[test]
     fn extremes_are_written_as_display_writes_them() {
         let values = [
@@ -223,6 +273,9 @@ mod tests {
             -123.456,
             1e15,
             1e16,
+            9_999_999_999_999_998.0,
+            1e15 + 0.5,
+            4096.0,
             1e20,
             123.456,
             125_406_270_313.0 + 33.0 / 64.0,
@@ -243,6 +296,8 @@ mod tests {
         ];
         for v in values {
             assert_eq!(shown(v), format!("{v}"), "{v:e}");
+            assert_eq!(debug_shown(v), format!("{v:?}"), "{v:e}");
+            assert_eq!(debug_shown(-v), format!("{:?}", -v), "{v:e}");
         }
     }
 
@@ -254,6 +309,7 @@ mod tests {
             let v = f64::from_bits(bits);
             let text = shown(v);
             prop_assert_eq!(&text, &format!("{v}"));
+            prop_assert_eq!(debug_shown(v), format!("{v:?}"));
             if v.is_finite() {
                 // Read back bit for bit (negative zero included).
                 prop_assert_eq!(text.parse::<f64>().unwrap().to_bits(), bits);
@@ -278,11 +334,13 @@ mod tests {
             let scale = 2f64.powi(if up { shift } else { -shift });
             let v = m as f64 * scale;
             prop_assert_eq!(shown(v), format!("{v}"));
+            prop_assert_eq!(debug_shown(v), format!("{v:?}"));
         }
 
         #[test]
         fn ordinary_magnitudes_round_trip(v in -1e6f64..1e6) {
             prop_assert_eq!(shown(v), format!("{v}"));
+            prop_assert_eq!(debug_shown(v), format!("{v:?}"));
         }
     }
 }

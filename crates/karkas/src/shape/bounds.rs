@@ -137,6 +137,29 @@ impl BoxTree {
         index
     }
 
+    /// An item whose box is near `q`, found without a bound: from the root, the child whose
+    /// box is nearer is taken down to a leaf, and there the item of the nearest box (`None`
+    /// for an empty tree). Its face gives the search a first bound.
+    pub(super) fn descend(&self, q: Point3) -> Option<usize> {
+        let mut node = *self.nodes.first()?;
+        while !node.leaf {
+            let (left, right) = (self.nodes[node.first], self.nodes[node.last]);
+            node = if right.bounds.distance(q) < left.bounds.distance(q) {
+                right
+            } else {
+                left
+            };
+        }
+        let mut pick: Option<(f64, usize)> = None;
+        for &k in &self.items[node.first..node.last] {
+            let lower = self.boxes[k].distance(q);
+            if pick.is_none_or(|(best, _)| lower < best) {
+                pick = Some((lower, k));
+            }
+        }
+        pick.map(|(_, k)| k)
+    }
+
     /// Appends to `out` every item whose box is nearer `q` than `reach`, with that distance.
     pub(super) fn within(&self, q: Point3, reach: f64, out: &mut Vec<(f64, usize)>) {
         if self.nodes.is_empty() {
@@ -245,6 +268,16 @@ mod tests {
                 found.clear();
                 tree.within(q, reach, &mut found);
                 found.sort_by_key(|f| f.1);
+                // The descent ends at an item: one within any reach beyond its box.
+                let first = tree.descend(q);
+                assert_eq!(first.is_some(), count > 0);
+                if let Some(k) = first {
+                    let lower = boxes[k].distance(q);
+                    assert!(lower.is_finite());
+                    let mut near = Vec::new();
+                    tree.within(q, lower * (1.0 + 1e-12) + 1e-9, &mut near);
+                    assert!(near.iter().any(|f| f.1 == k), "{count}");
+                }
                 let want: Vec<(f64, usize)> = boxes
                     .iter()
                     .enumerate()

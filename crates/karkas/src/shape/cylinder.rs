@@ -75,74 +75,12 @@ struct Arc {
 impl Round {
     /// The cylinder `surface` is, as the module docs define it, or `None`.
     pub(super) fn of(surface: &NurbsSurface<3>) -> Option<Round> {
-        if !surface.is_closed_u() || surface.degree_v() != 1 || surface.degree_u() > 2 {
-            return None;
-        }
-        let control = surface.control_points();
-        let weights = surface.weights();
-        if control.cols() != 2 || control.rows() < 3 {
-            return None;
-        }
-        let (kv, ku) = (surface.knots_v(), surface.knots_u());
-        let (v0, v1) = (kv[1], kv[2]);
-        let axis = *control.get(0, 1) - *control.get(0, 0);
-        let length = axis.norm();
-        if !(length > 0.0 && v1 > v0) {
-            return None;
-        }
-        let same_shift = (0..control.rows()).all(|i| {
-            *weights.get(i, 0) == *weights.get(i, 1)
-                && (*control.get(i, 1) - *control.get(i, 0) - axis).norm()
-                    <= TOLERANCE * (length + control.get(i, 0).max_abs())
-        });
-        if !same_shift {
-            return None;
-        }
-        let far = control
-            .as_slice()
-            .iter()
-            .map(|p| p.max_abs())
-            .fold(0.0, f64::max);
+        let (v, axis, length) = translation(surface)?;
         let n = axis * (1.0 / length);
+        let (centre, radius, spans) = whole_circle(surface, v.0, n)?;
         let du = surface.domain_u();
-        let at = |u: f64| surface.eval(u, v0);
-        // The circle through three points a third of a turn apart.
-        let (a, b, c) = (
-            at(du.start),
-            at(du.start + du.length() / 3.0),
-            at(du.start + 2.0 * du.length() / 3.0),
-        );
-        let centre = circumcentre(a, b, c)?;
-        let radius = a.distance(centre);
-        let tolerance = TOLERANCE * (radius + far);
-        // The arcs close (their first and last control points meet): a whole turn.
-        let last = control.rows() - 1;
-        let closes = control.get(0, 0).distance(*control.get(last, 0)) <= tolerance
-            && weights.get(0, 0) == weights.get(last, 0)
-            && surface.is_clamped();
-        if radius.is_nan() || radius <= 0.0 || !closes {
-            return None;
-        }
-        let on_circle = |p: Point3| {
-            let r = p - centre;
-            r.dot(n).abs() <= tolerance && (r.norm() - radius).abs() <= tolerance
-        };
-        let spans: Vec<usize> = (0..ku.len() - 1)
-            .filter(|&i| ku[i + 1] > ku[i] && ku[i] >= du.start && ku[i + 1] <= du.end)
-            .collect();
-        for &i in &spans {
-            for k in 0..PER_SPAN {
-                let u = ku[i] + (ku[i + 1] - ku[i]) * (k as f64 + 0.5) / PER_SPAN as f64;
-                if !on_circle(at(u)) {
-                    return None;
-                }
-            }
-        }
-        if spans.is_empty() {
-            return None;
-        }
         let [p, su, sv, ..] =
-            surface.second_order(du.start + 0.5 * du.length() / spans.len() as f64, v0);
+            surface.second_order(du.start + 0.5 * du.length() / spans.len() as f64, v.0);
         let outward = if su.cross(sv).dot(p - centre) >= 0.0 {
             1.0
         } else {
@@ -161,7 +99,7 @@ impl Round {
             axis: n,
             length,
             radius,
-            v: (v0, v1),
+            v,
             arcs,
             outward,
         })
@@ -268,8 +206,87 @@ fn is_whole_cylinder(surface: &NurbsSurface<3>) -> bool {
     Round::of(surface).is_some()
 }
 
-/// The centre of the circle through `a`, `b` and `c`, when they are not on one line.
-fn circumcentre(a: Point3, b: Point3, c: Point3) -> Option<Point3> {
+/// The extrusion `surface` is when it is one: closed in `u`, degree 1 in `v` with two columns
+/// of control points that differ by one translation (with equal weights). Its `v` interval,
+/// the translation (the axis from `v0` to `v1`) and its length.
+fn translation(surface: &NurbsSurface<3>) -> Option<((f64, f64), Point3, f64)> {
+    if !surface.is_closed_u() || surface.degree_v() != 1 || surface.degree_u() > 2 {
+        return None;
+    }
+    let control = surface.control_points();
+    let weights = surface.weights();
+    if control.cols() != 2 || control.rows() < 3 {
+        return None;
+    }
+    let kv = surface.knots_v();
+    let (v0, v1) = (kv[1], kv[2]);
+    let axis = *control.get(0, 1) - *control.get(0, 0);
+    let length = axis.norm();
+    if !(length > 0.0 && v1 > v0) {
+        return None;
+    }
+    let same_shift = (0..control.rows()).all(|i| {
+        *weights.get(i, 0) == *weights.get(i, 1)
+            && (*control.get(i, 1) - *control.get(i, 0) - axis).norm()
+                <= TOLERANCE * (length + control.get(i, 0).max_abs())
+    });
+    same_shift.then_some(((v0, v1), axis, length))
+}
+
+/// The circle the curve `S(u, v0)` of the extrusion `surface` turns once around, in the plane
+/// of unit normal `n`, checked at [`PER_SPAN`] points of every knot span: its centre, its
+/// radius and the spans (indices into the `u` knots).
+fn whole_circle(
+    surface: &NurbsSurface<3>,
+    v0: f64,
+    n: Point3,
+) -> Option<(Point3, f64, Vec<usize>)> {
+    let control = surface.control_points();
+    let weights = surface.weights();
+    let ku = surface.knots_u();
+    let far = control
+        .as_slice()
+        .iter()
+        .map(|p| p.max_abs())
+        .fold(0.0, f64::max);
+    let du = surface.domain_u();
+    let at = |u: f64| surface.eval(u, v0);
+    // The circle through three points a third of a turn apart.
+    let (centre, _) = circumcentre(
+        at(du.start),
+        at(du.start + du.length() / 3.0),
+        at(du.start + 2.0 * du.length() / 3.0),
+    )?;
+    let radius = at(du.start).distance(centre);
+    let tolerance = TOLERANCE * (radius + far);
+    // The arcs close (their first and last control points meet): a whole turn.
+    let last = control.rows() - 1;
+    let closes = control.get(0, 0).distance(*control.get(last, 0)) <= tolerance
+        && weights.get(0, 0) == weights.get(last, 0)
+        && surface.is_clamped();
+    if radius.is_nan() || radius <= 0.0 || !closes {
+        return None;
+    }
+    let on_circle = |p: Point3| {
+        let r = p - centre;
+        r.dot(n).abs() <= tolerance && (r.norm() - radius).abs() <= tolerance
+    };
+    let spans: Vec<usize> = (0..ku.len() - 1)
+        .filter(|&i| ku[i + 1] > ku[i] && ku[i] >= du.start && ku[i + 1] <= du.end)
+        .collect();
+    let on = spans.iter().all(|&i| {
+        (0..PER_SPAN).all(|k| {
+            on_circle(at(
+                ku[i] + (ku[i + 1] - ku[i]) * (k as f64 + 0.5) / PER_SPAN as f64
+            ))
+        })
+    });
+    (on && !spans.is_empty()).then_some((centre, radius, spans))
+}
+
+/// The centre of the circle through `a`, `b`, `c` and the unit normal `(b - a) x (c - a)` of
+/// its plane; `None` when the points are on one line (or not finite).
+pub(super) fn circumcentre(a: Point3, b: Point3, c: Point3) -> Option<(Point3, Point3)> {
     let (ab, ac) = (b - a, c - a);
     let normal = ab.cross(ac);
     let n2 = normal.norm_sq();
@@ -278,7 +295,7 @@ fn circumcentre(a: Point3, b: Point3, c: Point3) -> Option<Point3> {
     }
     // a + (|ab|^2 (ac x n) + |ac|^2 (n x ab)) / (2 |n|^2).
     let offset = (ac.cross(normal) * ab.norm_sq() + normal.cross(ab) * ac.norm_sq()) * (0.5 / n2);
-    Some(a + offset)
+    Some((a + offset, normal * (1.0 / n2.sqrt())))
 }
 
 #[cfg(test)]

@@ -12,6 +12,7 @@
 //! three of its points a third of its domain apart, as `cylinder.rs` tells a cylinder (a
 //! rational quadratic span is a conic, fixed by five points).
 
+use super::cylinder::circumcentre;
 use crate::bspline::NurbsCurve;
 use crate::core::Curve;
 use crate::Point3;
@@ -90,15 +91,8 @@ fn circle(curve: &NurbsCurve<3>) -> Option<EdgeForm> {
         curve.eval(d.start + d.length() / 3.0),
         curve.eval(d.start + 2.0 * d.length() / 3.0),
     );
-    let (ab, ac) = (b - a, c - a);
-    let n = ab.cross(ac);
-    let n2 = n.norm_sq();
-    if n2.is_nan() || n2 <= 0.0 {
-        return None;
-    }
-    let centre = a + (ac.cross(n) * ab.norm_sq() + n.cross(ab) * ac.norm_sq()) * (0.5 / n2);
+    let (centre, normal) = circumcentre(a, b, c)?;
     let radius = a.distance(centre);
-    let normal = n * (1.0 / n2.sqrt());
     let far = curve
         .control_points()
         .iter()

@@ -11,8 +11,10 @@
 //! edges' segments, into a box (`bounds.rs`); the faces' boxes into a tree of boxes. For a
 //! query `q`:
 //!
-//! 1. the nearest point known to lie on the shape (a centre inside its face, or on an edge)
-//!    bounds the distance from above;
+//! 1. a first bound on the distance: the face whose box a descent of the tree of boxes reaches
+//!    (the nearer child at each node), solved as in step 3 when it is a plane or a whole
+//!    cylinder; else the nearest point known to lie on the shape (a centre inside its face, or
+//!    on an edge: a k-d tree of these, also asked when a face of neither form is reached);
 //! 2. the faces whose box is nearer than that bound are visited nearest box first, until the
 //!    box's distance reaches the best distance found;
 //! 3. a face on a plane (`flat.rs`) or a whole cylinder (`cylinder.rs`) has one local minimum
@@ -46,7 +48,7 @@ use super::edge_form::EdgeForm;
 use super::flat::Flat;
 use super::inside::InsideIndex;
 use super::{FaceDomain, Shape};
-use crate::bspline::NurbsCurve;
+use crate::bspline::{NurbsCurve, NurbsSurface};
 use crate::core::{Curve, Interval, Surface};
 use crate::geometry::surface_nearest::newton_foot;
 use crate::geometry::{SurfaceNearest, SurfaceProjector};
@@ -342,37 +344,91 @@ impl<'a> ShapeProjector<'a> {
     /// [`nearest`](ShapeProjector::nearest) with working lists kept between queries.
     ///
     /// The faces are visited by increasing lower bound (their box, `bounds.rs`) until it
-    /// reaches the best distance found. A face solved once a query (a plane, a whole
-    /// cylinder) gives its one foot, or when that lies outside the face, its edges' nearest
-    /// point; the other faces' cells are searched from the k-d tree afterwards, as one list.
+    /// reaches the best distance found, within a first bound (module docs, step 1). A face
+    /// solved once a query (a plane, a whole cylinder) gives its one foot, or when that lies
+    /// outside the face, its edges' nearest point; the other faces' cells are searched from the
+    /// k-d tree afterwards, as one list, within the reach the nearest anchor gives.
     fn nearest_with(&self, q: Point3, scratch: &mut Scratch) -> ShapeNearest {
         if !q.is_finite() || self.anchors.is_empty() {
             return ShapeNearest::UNDEFINED;
         }
-        let first = self.anchor_tree.nearest_one::<SquaredEuclidean>(&q.0).item as usize;
-        let anchor = self.cells[self.anchors[first.min(self.anchors.len() - 1)]];
-        let mut best = self.at_centre(&anchor, q);
+        let unset = ShapeNearest {
+            distance: f64::INFINITY,
+            ..ShapeNearest::UNDEFINED
+        };
+        // A first bound: the face the descent of the faces' box tree reaches, solved when it
+        // is solved once a query, else the nearest anchor.
+        let mut first: Option<(usize, ShapeNearest)> = None;
+        if let Some(k) = self.face_tree.descend(q).filter(|&k| self.once[k]) {
+            let mut found = unset;
+            self.search_once(k, q, &mut found, &mut scratch.cells);
+            first = Some((k, found));
+        }
+        let bound = match first {
+            Some((_, found)) if found.distance.is_finite() => found.distance,
+            _ => {
+                let mut anchor = unset;
+                self.improve_by_anchor(q, &mut anchor);
+                anchor.distance
+            }
+        };
         scratch.faces.clear();
-        self.face_tree.within(q, best.distance, &mut scratch.faces);
+        self.face_tree.within(q, bound, &mut scratch.faces);
         scratch
             .faces
             .sort_unstable_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+        // The faces by increasing lower bound, as if no bound were known: the first face's
+        // foot is taken in its turn.
+        let mut best = unset;
         let mut general = false;
         for i in 0..scratch.faces.len() {
             let (lower, k) = scratch.faces[i];
             if lower >= best.distance {
                 break;
             }
-            if self.once[k] {
-                self.search_once(k, q, &mut best, &mut scratch.cells);
-            } else {
-                general = true;
+            match first {
+                Some((first_k, found)) if first_k == k => {
+                    if found.distance < best.distance {
+                        best = found;
+                    }
+                    first = None;
+                }
+                _ if self.once[k] => self.search_once(k, q, &mut best, &mut scratch.cells),
+                _ if !general => {
+                    // The cells of other faces are searched within a reach of the best
+                    // distance: the nearest point known on the shape bounds it.
+                    general = true;
+                    self.improve_by_anchor(q, &mut best);
+                }
+                _ => {}
+            }
+        }
+        if let Some((_, found)) = first {
+            if found.distance < best.distance {
+                best = found;
             }
         }
         if general {
             self.search_cells(q, &mut best, &mut scratch.cells);
         }
+        if best.face == usize::MAX {
+            // No face held a foot (not expected: the nearest face's foot or edge is found).
+            self.improve_by_anchor(q, &mut best);
+        }
         self.sign(best, q)
+    }
+
+    /// Takes the nearest point known to lie on the shape (a cell centre inside its face, or on
+    /// an edge) when it is nearer than `best`.
+    fn improve_by_anchor(&self, q: Point3, best: &mut ShapeNearest) {
+        let first = self.anchor_tree.nearest_one::<SquaredEuclidean>(&q.0).item as usize;
+        let anchor = self.at_centre(
+            &self.cells[self.anchors[first.min(self.anchors.len() - 1)]],
+            q,
+        );
+        if anchor.distance < best.distance {
+            *best = anchor;
+        }
     }
 
     /// Searches face `k`, solved once a query: its one foot, or when that lies outside the
@@ -678,8 +734,53 @@ fn face_cells(
     size: f64,
 ) -> Result<(Vec<Cell>, Vec<usize>)> {
     let s = &face.surface;
+    let (nu, nv) = cell_counts(s, target);
+    let samples = CellSamples::of(s, nu, nv)?;
+    let whole = domain.is_whole();
+    let crossed = if whole {
+        Vec::new()
+    } else {
+        crossed_cells(domain, s, nu, nv)
+    };
+    let mut cells = Vec::with_capacity(nu * nv);
+    let mut anchors = Vec::new();
+    for a in 0..nu {
+        for b in 0..nv {
+            let (i, j) = (2 * a + 1, 2 * b + 1);
+            let (us, vs) = (&samples.us, &samples.vs);
+            let centre_inside = whole || inside.contains(us[i], vs[j]);
+            let keep = whole
+                || centre_inside
+                || crossed[a * nv + b]
+                || (0..3)
+                    .any(|di| (0..3).any(|dj| inside.contains(us[i + di - 1], vs[j + dj - 1])));
+            if !keep {
+                continue;
+            }
+            if centre_inside {
+                anchors.push(cells.len());
+            }
+            cells.push(Cell {
+                face: k,
+                place: Place::Surface {
+                    u: (us[i - 1], us[i + 1]),
+                    v: (vs[j - 1], vs[j + 1]),
+                },
+                centre: samples.at(i, j),
+                radius: samples.radius(i, j, size),
+            });
+        }
+    }
+    if !whole {
+        edge_cells(k, face, target, size, &mut cells, &mut anchors)?;
+    }
+    Ok((cells, anchors))
+}
+
+/// The cells along `u` and `v` of the surface `s`: its extent along each (the longest of 9
+/// polylines of 32 chords across it) over `target`, from 1 to [`MAX_CELLS`].
+fn cell_counts(s: &NurbsSurface<3>, target: f64) -> (usize, usize) {
     let (du, dv) = (s.domain_u(), s.domain_v());
-    // The surface's extent along u and v, measured on a 9 x 9 sample.
     let probe = |n: usize, along_u: bool| -> f64 {
         (0..=8)
             .map(|j| {
@@ -702,85 +803,80 @@ fn face_cells(
             .fold(0.0, f64::max)
     };
     let count = |length: f64| ((length / target).ceil() as usize).clamp(1, MAX_CELLS);
-    let (nu, nv) = (count(probe(32, true)), count(probe(32, false)));
-    // Samples at the cells' corners and midpoints: (2 nu + 1) x (2 nv + 1).
-    let (mu, mv) = (2 * nu + 1, 2 * nv + 1);
-    let us: Vec<f64> = (0..mu).map(|i| du.uniform(i, mu)).collect();
-    let vs: Vec<f64> = (0..mv).map(|j| dv.uniform(j, mv)).collect();
-    let mut grid = vec![Point3::ZERO; mu * mv];
-    s.eval_grid_into(&us, &vs, &mut grid);
-    if grid.iter().any(|p| !p.is_finite()) {
-        return Err(crate::Error::NonFiniteArgument {
-            what: "a sample of a face",
-        });
-    }
-    let at = |i: usize, j: usize| grid[i * mv + j];
-    let whole = domain.is_whole();
-    // Cells that hold a vertex of a trim loop are partly on the face.
-    let mut crossed = vec![false; nu * nv];
-    if !whole {
-        for l in &domain.loops {
-            for p in &l.points {
-                let a = (((p[0] - du.start) / du.length()) * nu as f64).floor();
-                let b = (((p[1] - dv.start) / dv.length()) * nv as f64).floor();
-                if a >= 0.0 && b >= 0.0 && (a as usize) < nu && (b as usize) < nv {
-                    crossed[a as usize * nv + b as usize] = true;
-                }
-            }
-        }
-    }
-    let mut cells = Vec::with_capacity(nu * nv);
-    let mut anchors = Vec::new();
-    for a in 0..nu {
-        for b in 0..nv {
-            let (i, j) = (2 * a + 1, 2 * b + 1);
-            let centre = at(i, j);
-            let mut far: f64 = 0.0;
-            for di in 0..3 {
-                for dj in 0..3 {
-                    far = far.max(centre.distance(at(i + di - 1, j + dj - 1)));
-                }
-            }
-            let two_chords = |p: Point3, m: Point3, q: Point3| p.distance(m) + m.distance(q);
-            let lu = two_chords(at(i - 1, j - 1), at(i, j - 1), at(i + 1, j - 1)).max(two_chords(
-                at(i - 1, j + 1),
-                at(i, j + 1),
-                at(i + 1, j + 1),
-            ));
-            let lv = two_chords(at(i - 1, j - 1), at(i - 1, j), at(i - 1, j + 1)).max(two_chords(
-                at(i + 1, j - 1),
-                at(i + 1, j),
-                at(i + 1, j + 1),
-            ));
-            let radius = RADIUS_MARGIN * far.max(0.5 * (lu + lv)) + 1e-12 * size;
-            let (u0, u1, v0, v1) = (us[i - 1], us[i + 1], vs[j - 1], vs[j + 1]);
-            let centre_inside = whole || inside.contains(us[i], vs[j]);
-            let keep = whole
-                || centre_inside
-                || crossed[a * nv + b]
-                || (0..3)
-                    .any(|di| (0..3).any(|dj| inside.contains(us[i + di - 1], vs[j + dj - 1])));
-            if !keep {
-                continue;
-            }
-            if centre_inside {
-                anchors.push(cells.len());
-            }
-            cells.push(Cell {
-                face: k,
-                place: Place::Surface {
-                    u: (u0, u1),
-                    v: (v0, v1),
-                },
-                centre,
-                radius,
+    (count(probe(32, true)), count(probe(32, false)))
+}
+
+/// The surface sampled at the corners and midpoints of `nu x nv` cells: `(2 nu + 1) x (2 nv +
+/// 1)` points, cell `(a, b)` centred at sample `(2 a + 1, 2 b + 1)`.
+struct CellSamples {
+    us: Vec<f64>,
+    vs: Vec<f64>,
+    grid: Vec<Point3>,
+}
+
+impl CellSamples {
+    /// The samples of `s`; an error when one is not finite.
+    fn of(s: &NurbsSurface<3>, nu: usize, nv: usize) -> Result<CellSamples> {
+        let (mu, mv) = (2 * nu + 1, 2 * nv + 1);
+        let us: Vec<f64> = (0..mu).map(|i| s.domain_u().uniform(i, mu)).collect();
+        let vs: Vec<f64> = (0..mv).map(|j| s.domain_v().uniform(j, mv)).collect();
+        let mut grid = vec![Point3::ZERO; mu * mv];
+        s.eval_grid_into(&us, &vs, &mut grid);
+        if grid.iter().any(|p| !p.is_finite()) {
+            return Err(crate::Error::NonFiniteArgument {
+                what: "a sample of a face",
             });
         }
+        Ok(CellSamples { us, vs, grid })
     }
-    if !whole {
-        edge_cells(k, face, target, size, &mut cells, &mut anchors)?;
+
+    /// Sample `(i, j)`.
+    fn at(&self, i: usize, j: usize) -> Point3 {
+        self.grid[i * self.vs.len() + j]
     }
-    Ok((cells, anchors))
+
+    /// The radius of the cell centred at sample `(i, j)`: the largest distance from the centre
+    /// to its corners and edge midpoints, or half the sum of its edges' two-chord lengths,
+    /// times [`RADIUS_MARGIN`], plus `1e-12` of the shape's `size`.
+    fn radius(&self, i: usize, j: usize, size: f64) -> f64 {
+        let at = |i: usize, j: usize| self.at(i, j);
+        let centre = at(i, j);
+        let mut far: f64 = 0.0;
+        for di in 0..3 {
+            for dj in 0..3 {
+                far = far.max(centre.distance(at(i + di - 1, j + dj - 1)));
+            }
+        }
+        let two_chords = |p: Point3, m: Point3, q: Point3| p.distance(m) + m.distance(q);
+        let lu = two_chords(at(i - 1, j - 1), at(i, j - 1), at(i + 1, j - 1)).max(two_chords(
+            at(i - 1, j + 1),
+            at(i, j + 1),
+            at(i + 1, j + 1),
+        ));
+        let lv = two_chords(at(i - 1, j - 1), at(i - 1, j), at(i - 1, j + 1)).max(two_chords(
+            at(i + 1, j - 1),
+            at(i + 1, j),
+            at(i + 1, j + 1),
+        ));
+        RADIUS_MARGIN * far.max(0.5 * (lu + lv)) + 1e-12 * size
+    }
+}
+
+/// Which of the `nu x nv` cells of `s`'s rectangle hold a vertex of a trim loop of `domain`
+/// (they are partly on the face), row by row in `u`.
+fn crossed_cells(domain: &FaceDomain, s: &NurbsSurface<3>, nu: usize, nv: usize) -> Vec<bool> {
+    let (du, dv) = (s.domain_u(), s.domain_v());
+    let mut crossed = vec![false; nu * nv];
+    for l in &domain.loops {
+        for p in &l.points {
+            let a = (((p[0] - du.start) / du.length()) * nu as f64).floor();
+            let b = (((p[1] - dv.start) / dv.length()) * nv as f64).floor();
+            if a >= 0.0 && b >= 0.0 && (a as usize) < nu && (b as usize) < nv {
+                crossed[a as usize * nv + b as usize] = true;
+            }
+        }
+    }
+    crossed
 }
 
 /// The segments of the edges of a trimmed face, each at most `target` long.
