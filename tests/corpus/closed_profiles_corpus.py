@@ -315,7 +315,12 @@ def main():
                         help="check no blunt file (the sharp ones as --limit says)")
     parser.add_argument("--names", nargs="+", metavar="FILE",
                         help="check only the files of these names (e.g. s4022.dat)")
+    parser.add_argument("--methods", nargs="+", choices=list(METHODS), default=list(METHODS),
+                        help="check only these methods of the sharp files (default: all)")
     args = parser.parse_args()
+    for name in list(METHODS):
+        if name not in args.methods:
+            del METHODS[name]
     files = airfoils(args.dir)
     if args.names:
         files = [p for p in files if p.name in set(args.names)]
@@ -352,7 +357,7 @@ def main():
                         print(f"FAIL {path.name}: {f}", flush=True)
     total = sum(v for k, v in counts.items() if k not in ("warned", "points", "known"))
     print(f"closed profiles: {len(sharp)} sharp files of {len(files)}, {len(chosen)} checked "
-          f"with fit, spline and ll --interpolate (x STEP, IGES, DXF); {len(blunt)} blunt "
+          f"with {', '.join(METHODS)} (x STEP, IGES, DXF); {len(blunt)} blunt "
           f"files (ends within {NEAR:g} of the size), {len(chosen_blunt)} checked with "
           f"--close-te: "
           + ", ".join(f"{v} {k}" for k, v in counts.items()))

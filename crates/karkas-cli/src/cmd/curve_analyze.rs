@@ -130,7 +130,7 @@ pub fn run(args: &CurveAnalyzeArgs) -> Result<()> {
     let spline = spline_options(args)?;
     check_unused(args, &methods)?;
     // Periodic ends say that the curve is closed, as --closed does.
-    let closed = args.closed || spline.ends == EndsKind::Periodic;
+    let closed = args.closed || spline.kind() == EndsKind::Periodic;
     if closed && methods.contains(&Method::Fit) {
         let option = if args.closed {
             "--closed"
@@ -154,14 +154,17 @@ pub fn run(args: &CurveAnalyzeArgs) -> Result<()> {
 fn spline_options(args: &CurveAnalyzeArgs) -> Result<SplineOptions> {
     let mut spline = args.spline.clone();
     spline.check()?;
-    match (args.closed, spline.ends) {
-        (true, EndsKind::NotAKnot) => spline.ends = EndsKind::Periodic,
-        (_, EndsKind::Periodic) | (false, EndsKind::NotAKnot) => {}
+    match (args.closed, spline.kind()) {
+        (true, EndsKind::NotAKnot) => spline.ends = Some(EndsKind::Periodic),
+        // The analysis keeps the documented not-a-knot ends at a shared end too: natural ends
+        // (curve spline's there) bring the curvature to 0 at the corner, an extremum the
+        // section does not have.
+        (false, _) if spline.ends.is_none() => spline.ends = Some(EndsKind::NotAKnot),
+        (_, EndsKind::Periodic) | (false, _) => {}
         (true, ends) => bail!(
             "--closed: a closed spline has periodic ends, not --ends {}",
             ends.name()
         ),
-        (false, _) => {}
     }
     Ok(spline)
 }
@@ -185,7 +188,7 @@ fn check_unused(args: &CurveAnalyzeArgs, methods: &[Method]) -> Result<()> {
     given(
         Method::Spline,
         &[
-            ("--ends", s.ends != EndsKind::NotAKnot),
+            ("--ends", s.kind() != EndsKind::NotAKnot),
             ("--start-tangent", s.start_tangent.is_some()),
             ("--end-tangent", s.end_tangent.is_some()),
         ],

@@ -32,7 +32,8 @@ pub struct CurveSplineArgs {
     /// Input points: CSV or whitespace columns x,y[,z], or an airfoil .dat (Selig or Lednicer).
     /// A first and last point within 1e-6 of the diagonal of the points' bounding box are one
     /// point (a sharp trailing edge; the rule of curve fit): the curve's ends meet there, at
-    /// their midpoint (not with --ends periodic).
+    /// their midpoint, in a corner with natural ends unless --ends says otherwise (not with
+    /// --ends periodic).
     input: PathBuf,
     #[command(flatten)]
     read: CurveInputOptions,
@@ -60,7 +61,7 @@ pub fn run(args: &CurveSplineArgs) -> Result<()> {
     args.spline.check()?;
     args.samples.check()?;
     args.cad.check(&formats)?;
-    let periodic = (args.spline.ends == EndsKind::Periodic).then_some("--ends periodic");
+    let periodic = (args.spline.kind() == EndsKind::Periodic).then_some("--ends periodic");
     args.close.check(&formats, periodic)?;
     for output in &args.output {
         ensure_distinct(&args.input, output)?;
@@ -73,16 +74,14 @@ impl CurveJob for CurveCommand<'_, CurveSplineArgs> {
         let Self { args, formats } = *self;
         curve_points(&args.input, points)?;
         args.close.check_points(points, &args.input)?;
-        // Ends that coincide by the shared-end rule meet exactly (the library's rule; the
-        // written input points say the same).
-        let shared;
-        let points = if args.spline.ends::<D>()?.is_periodic() {
-            points
-        } else {
-            shared = karkas::core::with_shared_end(points);
-            &shared
-        };
         let curve = args.spline.build(points, &args.input)?;
+        // The points the spline interpolates, written and checked: with open ends the
+        // library's (ends that coincide by the shared-end rule made one point); periodic ends
+        // keep the input's (the library appends the seam point).
+        let points = match args.spline.kind() {
+            EndsKind::Periodic => points,
+            _ => curve.values(),
+        };
         let remedy = "look at the points there (out of order, or very unevenly apart: curve fit \
                       follows such points)";
         warn_self_crossing(&curve, points, &args.input, remedy);
@@ -113,7 +112,7 @@ fn write_spline<const D: usize>(
     )?;
     let title = format!(
         "cubic spline, {}, {} points",
-        args.spline.describe(),
+        args.spline.describe(points),
         points.len()
     );
     let feet = curve.values().iter().zip(curve.knots().iter().copied());

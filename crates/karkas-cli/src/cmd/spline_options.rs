@@ -19,9 +19,11 @@ use std::path::Path;
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 pub enum EndsKind {
     /// The third derivative is continuous at the second and the second-to-last points (SciPy's
-    /// default).
+    /// default; the default here unless the first and last points are one point).
     NotAKnot,
-    /// Zero second derivative at both ends.
+    /// Zero second derivative at both ends (the default where the first and last points are
+    /// one point, a sharp trailing edge: there not-a-knot ends overshoot across the other
+    /// branch where the last points are sparse).
     Natural,
     /// Given first derivatives at the ends: --start-tangent and --end-tangent.
     Clamped,
@@ -49,10 +51,12 @@ pub struct Tangent(pub Vec<f64>);
 /// The options of a cubic interpolating spline through ordered points.
 #[derive(Clone, Debug, Args)]
 pub struct SplineOptions {
-    /// End conditions. periodic closes the curve: if the last point does not repeat the
-    /// first, the first is appended (as `curve ll --closed` joins its ends).
-    #[arg(long, value_enum, default_value_t = EndsKind::NotAKnot)]
-    pub ends: EndsKind,
+    /// End conditions [default: not-a-knot, but natural when the first and last points are one
+    /// point by the shared-end rule (a sharp trailing edge: the curve has a corner there)].
+    /// periodic closes the curve: if the last point does not repeat the first, the first is
+    /// appended (as `curve ll --closed` joins its ends).
+    #[arg(long, value_enum)]
+    pub ends: Option<EndsKind>,
     /// Parameters of the points: uniform (t_k = k), chord (cumulative chord length) or
     /// centripetal (cumulative square root of the chord length).
     #[arg(long, value_name = "RULE", default_value = "chord", value_parser = parse_param)]
@@ -79,12 +83,12 @@ impl SplineOptions {
         .filter(|(_, given)| *given)
         .map(|(option, _)| option)
         .collect();
-        if self.ends != EndsKind::Clamped {
+        if self.kind() != EndsKind::Clamped {
             if !given.is_empty() {
                 bail!(
                     "{}: end tangents are given only with --ends clamped, not {}",
                     given.join(" and "),
-                    self.ends.name()
+                    self.kind().name()
                 );
             }
         } else if self.start_tangent.is_none() {
@@ -95,10 +99,25 @@ impl SplineOptions {
         Ok(())
     }
 
-    /// The spline's end conditions for points of dimension `D`.
-    pub fn ends<const D: usize>(&self) -> Result<SplineEnds<D>> {
+    /// The kind of ends asked (not-a-knot when none are: see [`resolved`](Self::resolved)).
+    pub fn kind(&self) -> EndsKind {
+        self.ends.unwrap_or(EndsKind::NotAKnot)
+    }
+
+    /// The kind of ends of the spline through `points`: the asked ones, else the library's
+    /// default for them ([`SplineEnds::default_for`]: natural at a shared end, not-a-knot
+    /// otherwise).
+    pub fn resolved<const D: usize>(&self, points: &[Point<D>]) -> EndsKind {
+        self.ends.unwrap_or(match SplineEnds::default_for(points) {
+            SplineEnds::Natural => EndsKind::Natural,
+            _ => EndsKind::NotAKnot,
+        })
+    }
+
+    /// The spline's end conditions through `points` (of dimension `D`).
+    pub fn ends<const D: usize>(&self, points: &[Point<D>]) -> Result<SplineEnds<D>> {
         self.check()?;
-        Ok(match self.ends {
+        Ok(match self.resolved(points) {
             EndsKind::NotAKnot => SplineEnds::NotAKnot,
             EndsKind::Natural => SplineEnds::Natural,
             EndsKind::Periodic => SplineEnds::Periodic,
@@ -120,7 +139,7 @@ impl SplineOptions {
         points: &[Point<D>],
         what: &Path,
     ) -> Result<CubicSpline<D>> {
-        let ends = self.ends::<D>()?;
+        let ends = self.ends(points)?;
         let name = display_name(what);
         if points.len() < 2 {
             bail!(
@@ -156,17 +175,18 @@ impl SplineOptions {
             format!(
                 "{}: cubic spline ({} ends, {} parameters)",
                 name.display(),
-                self.ends.name(),
+                self.resolved(points).name(),
                 self.param.name()
             )
         })
     }
 
-    /// A short description for titles and reports, e.g. `not-a-knot ends, chord parameters`.
-    pub fn describe(&self) -> String {
+    /// A short description for titles and reports of the spline through `points`, e.g.
+    /// `not-a-knot ends, chord parameters`.
+    pub fn describe<const D: usize>(&self, points: &[Point<D>]) -> String {
         format!(
             "{} ends, {} parameters",
-            self.ends.name(),
+            self.resolved(points).name(),
             self.param.name()
         )
     }
@@ -244,7 +264,8 @@ mod tests {
         }
         assert!(parse(&["--param", "arc"]).is_err());
         let o = parse(&[]).unwrap();
-        assert_eq!(o.ends, EndsKind::NotAKnot);
+        assert_eq!(o.ends, None);
+        assert_eq!(o.kind(), EndsKind::NotAKnot);
         assert_eq!(o.param, CurveParameterization::ChordLength);
     }
 

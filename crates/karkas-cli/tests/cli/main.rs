@@ -37,6 +37,7 @@ mod section;
 mod section_methods;
 mod section_poles;
 mod section_scale;
+mod sharp_edges;
 mod surface_bicubic;
 mod surface_coons;
 mod surface_implicit;

@@ -12,7 +12,9 @@
 //!   the polygon's two stretches there lie on branches (the polygon turns at least pi/2 from
 //!   one to the other) that come within twice the largest point distance of each other: the
 //!   points do not tell such branches apart at the fit's accuracy (the two ends of a closed
-//!   contour, a thin cusped trailing edge);
+//!   contour, a thin cusped trailing edge) — except on either side of a shared end that the
+//!   fit's ends meet at (a sharp trailing edge, [`crate::core::shared_end`]): there the corner
+//!   tells the branches apart, and a crossing near it is a fault the tolerance mode repairs;
 //! - turning: between the foot points of points `i < j`, a curve through the points that
 //!   does not inflect between them turns at most as much as the polygon from the segment
 //!   before `i` to the segment after `j` (the exterior angles at `i..=j`); a run of points
@@ -252,6 +254,47 @@ impl<const D: usize> Guard<'_, D> {
 
     /// Crossings of the curve where the polygon does not cross itself.
     fn crossings(&self) -> Vec<FitWarning> {
+        let mut warnings: Vec<FitWarning> = self.crossing_at_shared_end().into_iter().collect();
+        warnings.extend(self.crossings_between_samples());
+        warnings
+    }
+
+    /// A crossing at a shared end that the fit's ends meet at: the curve's two branches
+    /// arrive at the corner in the other order than the points' (the corner turns the other
+    /// way), so they cross within the last pieces, right up to the corner, where no two
+    /// samples cross properly (they meet at the shared vertex).
+    fn crossing_at_shared_end(&self) -> Option<FitWarning> {
+        let n = self.points.len();
+        let spline = &self.fit.spline;
+        let d = spline.domain();
+        if n < 4 || !self.around_shared_end(0, n - 2) {
+            return None;
+        }
+        // The signed turn from the direction `a` into `b`, in (-pi, pi].
+        let turn =
+            |a: Point<D>, b: Point<D>| (a[0] * b[1] - a[1] * b[0]).atan2(a[0] * b[0] + a[1] * b[1]);
+        let polygon = turn(
+            self.points[n - 1] - self.points[n - 2],
+            self.points[1] - self.points[0],
+        );
+        let curve = turn(spline.deriv(d.end, 1), spline.deriv(d.start, 1));
+        // Only a corner (the points turn there by over pi/2: a sharp edge, not the seam of a
+        // smooth closed contour, whose tiny turn has no reliable sign) has an order of its
+        // branches.
+        let corner = polygon.abs() > 0.5 * std::f64::consts::PI;
+        (corner && polygon * curve < 0.0).then(|| FitWarning {
+            kind: FitWarningKind::SelfIntersection,
+            parameter: d.end,
+            message: format!(
+                "the curve crosses itself at its shared end {}: its two branches arrive there \
+                 in the other order than the points'",
+                coordinates(spline.eval(d.end))
+            ),
+        })
+    }
+
+    /// Crossings of two samples of the curve where the polygon does not cross itself.
+    fn crossings_between_samples(&self) -> Vec<FitWarning> {
         let plane = |p: &Point<D>| [p[0], p[1]];
         let curve: Vec<[f64; 2]> = self.samples.p.iter().map(plane).collect();
         let mut found = crossings(&curve);
@@ -284,7 +327,8 @@ impl<const D: usize> Guard<'_, D> {
                 );
                 let (ga, gb) = (self.gap(ta), self.gap(tb));
                 let matched = polygon_crosses_near(&polygon, ga, gb);
-                let unresolved = self.branches_touch(&polygon, ga, gb);
+                let unresolved =
+                    !self.around_shared_end(ga, gb) && self.branches_touch(&polygon, ga, gb);
                 (!matched && !unresolved).then(|| FitWarning {
                     kind: FitWarningKind::SelfIntersection,
                     parameter: ta,
@@ -327,6 +371,26 @@ impl<const D: usize> Guard<'_, D> {
             }
         }
         (ta, tb)
+    }
+
+    /// Whether the gaps `ga < gb` lie on either side of a shared end that the fit's two ends
+    /// meet at ([`crate::core::shared_end`]: a sharp trailing edge), nearer to each other
+    /// around that corner than along the points between them. There the two branches are
+    /// told apart by the corner itself: the curve must not cross from one to the other
+    /// however thin the edge, so [`branches_touch`](Self::branches_touch) excuses no such
+    /// crossing (the tolerance mode then repairs it, or warns).
+    fn around_shared_end(&self, ga: usize, gb: usize) -> bool {
+        let (ga, gb) = (ga.min(gb), ga.max(gb));
+        let gaps = self.points.len() - 1;
+        let d = self.fit.spline.domain();
+        let (first, last) = (self.fit.spline.eval(d.start), self.fit.spline.eval(d.end));
+        let Some(end) = crate::core::shared_end(self.points) else {
+            return false;
+        };
+        // Pinned ends meet to rounding (free ends, `--free-ends`, need not).
+        let size = end.distance(self.points[gaps / 2]);
+        let meet = first.distance(last) <= 1e-12 * size;
+        meet && ga + (gaps - gb) < gb - ga
     }
 
     /// Whether the polygon's gaps `ga` and `gb` are on two branches (the polygon turns by at

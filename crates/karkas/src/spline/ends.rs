@@ -1,5 +1,6 @@
 //! The end conditions of a cubic interpolating spline.
 
+use crate::core::shared_end;
 use crate::Point;
 
 /// The end conditions of a cubic interpolating spline with values in R^D (`D` matters only
@@ -30,5 +31,33 @@ impl<const D: usize> SplineEnds<D> {
     /// True for [`SplineEnds::Periodic`].
     pub fn is_periodic(&self) -> bool {
         matches!(self, SplineEnds::Periodic)
+    }
+
+    /// The ends of an open spline through `points` when none are asked (those of
+    /// `curve spline`): [`Natural`](SplineEnds::Natural) where the first and last points are
+    /// one point by the shared-end rule ([`shared_end`]: a closed profile, an airfoil's sharp
+    /// trailing edge), [`NotAKnot`](SplineEnds::NotAKnot) otherwise.
+    ///
+    /// Why: at a shared end the curve has a C^0 corner between two branches. Not-a-knot ends
+    /// make the first and last two pieces one cubic each, so where the last points before the
+    /// corner are sparse or unevenly spaced that cubic overshoots across the other branch
+    /// (SciPy's `CubicSpline` with not-a-knot ends does the same on such points); zero
+    /// curvature at the corner lets each branch run into it along its last points.
+    ///
+    /// ```
+    /// use karkas::spline::SplineEnds;
+    /// use karkas::Point;
+    ///
+    /// let open = [Point([1.0, 0.0]), Point([0.0, 0.1]), Point([0.0, -0.1]), Point([1.0, -0.01])];
+    /// let mut closed = open;
+    /// closed[3] = Point([1.0, 0.0]);
+    /// assert_eq!(SplineEnds::default_for(&open), SplineEnds::NotAKnot);
+    /// assert_eq!(SplineEnds::default_for(&closed), SplineEnds::Natural);
+    /// ```
+    pub fn default_for(points: &[Point<D>]) -> Self {
+        match shared_end(points) {
+            Some(_) => SplineEnds::Natural,
+            None => SplineEnds::NotAKnot,
+        }
     }
 }
