@@ -233,8 +233,9 @@ def test_closed_fit_says_the_repeated_last_point_was_dropped(tmp_path, points):
     )
     assert done.returncode == 2, done.stderr
     assert expected in done.stderr
-    # Three distinct points are enough: the message is not given when nothing was dropped.
-    assert karkas.fit_curve(np.array([[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]), knots=3, closed=True).max_distance < 1e-9
+    # Three distinct points are enough: nothing is dropped and the fit is made.
+    f = karkas.fit_curve(np.array([[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]), knots=3, closed=True)
+    assert f.parameters.shape == (3,)
 
 
 @pytest.mark.parametrize("poles", [False, True])
