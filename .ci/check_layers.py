@@ -10,6 +10,10 @@
    another file of the same crate (`super::x`, `crate::m::x`, `child::x`, inline or in `use`)
    depends on it; re-exports (`pub use`) are followed to the file that defines the item and
    are not dependencies themselves. Every cycle fails.
+3. Front ends (the CLI, Python and WASM crates in FRONT_ENDS) name the fit only through what
+   crates/karkas/src/fit/mod.rs exports: a path `karkas::fit::m::..` with `m` one of the fit's
+   own files or folders (its internals: the method, its measured-data stages, the tolerance
+   rounds and repairs) fails, and so does a `pub mod` in fit/mod.rs that would expose them.
 
 Usage: .ci/check_layers.py [--root DIR]    check the workspace (default: the repository)
        .ci/check_layers.py --self-test     check that a synthetic tree with an upward import
@@ -36,6 +40,9 @@ LAYERS = [
 ANYWHERE = {"error"}
 ONLY = {"bspline": {"core"}}
 LIBRARY = "crates/karkas"
+# Front ends and the library folders whose internals they may not name (rule 3).
+FRONT_ENDS = ["crates/karkas-cli", "crates/karkas-py", "crates/karkas-wasm"]
+SEALED = ["fit"]
 
 IDENT = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
 
@@ -351,6 +358,46 @@ def strongly_connected(edges):
     return result
 
 
+def check_sealed(root, rel):
+    """Rule 3: front ends name no internal module of a SEALED library folder."""
+    library = os.path.join(root, LIBRARY, "src")
+    sources = load_crate(library)
+    problems = []
+    internals = {}
+    for folder in SEALED:
+        source = sources.get((folder,))
+        if source is None:
+            continue
+        internals[folder] = source.children
+        with open(source.path, encoding="utf-8") as f:
+            tokens = tokenize(f.read())
+        for k in range(len(tokens) - 2):
+            if tokens[k][0] == "pub" and tokens[k + 1][0] == "mod":
+                problems.append(
+                    f"{rel(source.path)}:{tokens[k][1]}: pub mod {tokens[k + 2][0]} "
+                    f"(the internals of {folder} stay private; export items instead)"
+                )
+    for crate in FRONT_ENDS:
+        src = os.path.join(root, crate, "src")
+        for dirpath, _, names in os.walk(src):
+            for name in sorted(names):
+                if not name.endswith(".rs"):
+                    continue
+                path = os.path.join(dirpath, name)
+                with open(path, encoding="utf-8") as f:
+                    tokens = tokenize(f.read())
+                for k, (tok, line) in enumerate(tokens):
+                    if tok != "karkas" or (k and tokens[k - 1][0] == "::"):
+                        continue
+                    for segs in parse_path(tokens, k)[0]:
+                        if len(segs) >= 3 and segs[1] in internals and segs[2] in internals[segs[1]]:
+                            problems.append(
+                                f"{rel(path)}:{line}: karkas::{segs[1]}::{segs[2]} "
+                                f"(front ends use what {segs[1]}/mod.rs exports only)"
+                            )
+    return list(dict.fromkeys(problems))
+
+
 def run(root):
     def rel(path):
         return os.path.relpath(path, root)
@@ -359,6 +406,7 @@ def run(root):
     library = os.path.join(root, LIBRARY, "src")
     if os.path.isdir(library):
         problems += check_layers(library, rel)
+        problems += check_sealed(root, rel)
     crates = os.path.join(root, "crates")
     for name in sorted(os.listdir(crates)):
         src = os.path.join(crates, name, "src")
@@ -383,6 +431,12 @@ def self_test():
         "crates/karkas/src/ll/curve.rs": "use crate::{Point, Result};\n"
         "use super::surface::h;\npub fn g() {}\n",
         "crates/karkas/src/ll/surface.rs": "pub fn h() { super::curve::g() }\n",
+        # Rule 3: a front end naming a fit internal, and one exposed by `pub mod`.
+        "crates/karkas/src/fit/mod.rs": "mod penalty;\npub mod rounds;\npub use penalty::fit;\n",
+        "crates/karkas/src/fit/penalty.rs": "pub fn fit() {}\n",
+        "crates/karkas/src/fit/rounds.rs": "pub fn round() {}\n",
+        "crates/karkas-cli/src/main.rs": "use karkas::fit::{fit, penalty::Settings};\n"
+        "fn main() { karkas::fit::fit(); }\n",
     }
     with tempfile.TemporaryDirectory() as root:
         for path, text in files.items():
@@ -396,8 +450,13 @@ def self_test():
     assert expected_up in report, report
     assert "file-level import cycle" in report and "ll/surface.rs" in report, report
     assert "crates/karkas/src/core/grid.rs:1: core -> ll (runs up)" in report, report
-    assert len(problems) == 3, report
-    print("check_layers self-test: the synthetic upward import and cycle fail, as they must")
+    assert "crates/karkas-cli/src/main.rs:1: karkas::fit::penalty" in report, report
+    assert "crates/karkas/src/fit/mod.rs:2: pub mod rounds" in report, report
+    assert len(problems) == 5, report
+    print(
+        "check_layers self-test: the synthetic upward import, cycle and front end naming a fit "
+        "internal fail, as they must"
+    )
 
 
 def main(argv):
@@ -414,7 +473,10 @@ def main(argv):
     if problems:
         print(f"check_layers: {len(problems)} problem(s)")
         return 1
-    print("check_layers: imports run down the layers, no file-level cycle")
+    print(
+        "check_layers: imports run down the layers, no file-level cycle, front ends use the "
+        "fit's exports only"
+    )
     return 0
 
 

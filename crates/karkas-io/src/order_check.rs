@@ -12,7 +12,7 @@
 //!   with the median distance at those three lags (the largest of the three ratios, so that a
 //!   curve run through several times, whose points come back near themselves after one lap,
 //!   is not taken for a shuffled one) and warns when the ratio is below
-//!   [`OUT_OF_ORDER_RATIO`]. On ordered airfoil-like contours of 16 to 10^4 points, noisy up to
+//!   `OUT_OF_ORDER_RATIO` (2). On ordered airfoil-like contours of 16 to 10^4 points, noisy up to
 //!   a quarter of their thickness, the ratio is at least 3.3; on shuffled ones of 20 points
 //!   or more it is below 2 in 99 cases of 100, and within 1.1 of 1 from 1000 points.
 //!
@@ -22,11 +22,11 @@
 
 /// Below this ratio of the median distance at a long lag to that of consecutive points, the
 /// points are taken for far out of order.
-pub const OUT_OF_ORDER_RATIO: f64 = 2.0;
+const OUT_OF_ORDER_RATIO: f64 = 2.0;
 
 /// Fewer points than this are not checked for their order (the medians of shorter lists
 /// vary too much).
-pub const MIN_POINTS_FOR_ORDER: usize = 20;
+const MIN_POINTS_FOR_ORDER: usize = 20;
 
 /// The most distances a median is taken over.
 const SAMPLES: usize = 1 << 16;

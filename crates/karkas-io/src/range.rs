@@ -73,9 +73,9 @@ fn check_largest_coordinate(largest: f64, path: &Path) -> Result<(), IoError> {
 /// A lone point this many times farther from the others than their own extent is taken for
 /// a stray value: every tolerance of a method is relative to the model's size, which the one
 /// point then sets, so the others would look like one point or one line.
-pub const STRAY_RATIO: f64 = 1e9;
+const STRAY_RATIO: f64 = 1e9;
 
-/// The index of a lone point of `points` lying more than [`STRAY_RATIO`] times farther from
+/// The index of a lone point of `points` lying more than `STRAY_RATIO` (1e9) times farther from
 /// the others (from the per-axis median) than they spread themselves, and that ratio; `None`
 /// when there is no such point, or when the others all coincide. `O(n)`.
 pub fn stray_point<const D: usize>(points: &[Point<D>]) -> Option<(usize, f64)> {

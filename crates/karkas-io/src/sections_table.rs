@@ -10,6 +10,7 @@
 
 use std::path::{Path, PathBuf};
 
+use karkas::loft::WingPlacement;
 use karkas::Point3;
 
 use crate::error::{data_error, IoError, Location};
@@ -38,6 +39,18 @@ pub struct SectionRow {
     pub twist: f64,
     /// The dihedral in degrees, when given.
     pub dihedral: Option<f64>,
+}
+
+impl SectionRow {
+    /// The row's placement of its section on the wing.
+    pub fn placement(&self) -> WingPlacement {
+        WingPlacement {
+            leading_edge: self.leading_edge,
+            chord: self.chord,
+            twist: self.twist,
+            dihedral: self.dihedral,
+        }
+    }
 }
 
 /// Reads the sections table at `path` (`-`: standard input, whose files are then relative to

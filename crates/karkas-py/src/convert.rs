@@ -27,7 +27,7 @@ use crate::limits::{bytes_of, check_memory, new_empty_array, shape_text, zeros};
 
 /// Evaluations of at least this many points run with the GIL released (below it the release
 /// costs more than it frees).
-pub const DETACH_ABOVE: usize = 4096;
+const DETACH_ABOVE: usize = 4096;
 
 /// Runs `$body` with `$D` bound to the constant dimension `$d` (2 or 3; checked before).
 macro_rules! by_dim {

@@ -221,6 +221,26 @@ fn twists_grid<const D: usize>(t: &GridArray) -> PyResult<Grid<Point<D>>> {
     t.grid::<D>()
 }
 
+/// The twists as [`CoonsInput`] keeps them: rows, columns and the points row-major.
+fn twists_input(t: &GridArray) -> (usize, usize, FlatPoints) {
+    let (rows, cols) = t.rows_cols();
+    let flat = FlatPoints {
+        coords: t.flat().into_owned(),
+        dim: t.dim(),
+    };
+    (rows, cols, flat)
+}
+
+/// Warns (as `karkas surface coons --kind bicubic` does) that kind 'bicubic' without
+/// `u_derivs` and `v_derivs` takes the cross-boundary derivatives from the curves.
+fn warn_bicubic_from_curves(py: Python<'_>) -> PyResult<()> {
+    let message = c"kind 'bicubic' without u_derivs and v_derivs takes the cross-boundary \
+        derivatives from the two curves of each family (their tangents and the twists), \
+        which misses even a surface the operator reproduces from its own derivatives (a \
+        cubic); give u_derivs and v_derivs (--u-derivs/--v-derivs) to interpolate them";
+    PyErr::warn(py, &py.get_type::<KarkasWarning>(), message, 1)
+}
+
 #[pymethods]
 impl PyCoonsSurface {
     #[new]
@@ -261,24 +281,12 @@ impl PyCoonsSurface {
                 (Some(du), Some(dv)) => Some((given(du, "u_derivs")?, given(dv, "v_derivs")?)),
                 _ => None,
             },
-            twists: twists.as_ref().map(|t| {
-                let (rows, cols) = t.rows_cols();
-                let flat = FlatPoints {
-                    coords: t.flat().into_owned(),
-                    dim: t.dim(),
-                };
-                (rows, cols, flat)
-            }),
+            twists: twists.as_ref().map(twists_input),
             fit,
             tolerances: (crossing_tolerance, tolerance),
         };
         if kind.name() == "bicubic" && u_derivs.is_none() {
-            // The same warning as `karkas surface coons --kind bicubic`.
-            let message = c"kind 'bicubic' without u_derivs and v_derivs takes the cross-boundary \
-                derivatives from the two curves of each family (their tangents and the twists), \
-                which misses even a surface the operator reproduces from its own derivatives (a \
-                cubic); give u_derivs and v_derivs (--u-derivs/--v-derivs) to interpolate them";
-            PyErr::warn(py, &py.get_type::<KarkasWarning>(), message, 1)?;
+            warn_bicubic_from_curves(py)?;
         }
         let dim = first_dim(&v_curves, "v_curves")?;
         let (inner, counts): (Arc<dyn SurfaceImpl>, (usize, usize)) = by_dim!(dim, D => {

@@ -649,6 +649,23 @@ fn export_curve(
     })
 }
 
+/// The format of a surface's export and, for STEP and IGES, the surface's exact B-spline
+/// form (refused for a surface without one).
+fn surface_format(
+    obj: &Bound<'_, PyAny>,
+    path: &Path,
+    options: &Options,
+) -> PyResult<(OutputFormat, Option<BSplineSurface<3>>)> {
+    let no_exact = "this surface has no exact piecewise polynomial form";
+    let format = choose(path, options, &EXACT_SURFACE_FORMATS, no_exact)?;
+    let exact = if format.is_cad() {
+        Some(bspline_surface(obj, no_exact)?)
+    } else {
+        None
+    };
+    Ok((format, exact))
+}
+
 /// A surface: sampled (CSV, meshes, pictures, page) or its exact B-spline form.
 fn export_surface(
     py: Python<'_>,
@@ -657,10 +674,8 @@ fn export_surface(
     path: &Path,
     options: &Options,
 ) -> PyResult<()> {
-    let no_exact = "this surface has no exact piecewise polynomial form";
-    let format = choose(path, options, &EXACT_SURFACE_FORMATS, no_exact)?;
-    if format.is_cad() {
-        let b = bspline_surface(obj, no_exact)?;
+    let (format, exact) = surface_format(obj, path, options)?;
+    if let Some(b) = exact {
         return py
             .detach(|| write_cad_surface(&b, format, path))
             .map_err(write_error);
@@ -706,11 +721,9 @@ fn export_capped(
     path: &Path,
     options: &Options,
 ) -> PyResult<()> {
-    let no_exact = "this surface has no exact piecewise polynomial form";
-    let format = choose(path, options, &EXACT_SURFACE_FORMATS, no_exact)?;
+    let (format, exact) = surface_format(obj, path, options)?;
     let refuse = |why: String| OptionError::new_err(format!("cap: {why}"));
-    if format.is_cad() {
-        let b = bspline_surface(obj, no_exact)?;
+    if let Some(b) = exact {
         return py.detach(|| {
             let mut shell = CadShell::of_surfaces(std::slice::from_ref(&b));
             shell.cap_free_loops().map_err(|e| refuse(e.to_string()))?;

@@ -17,6 +17,7 @@ use crate::curve::PyCurve;
 use crate::erased::CurveView;
 use crate::erased::{CurveImpl, Wrapped};
 use crate::errors::{library_error, OptionError};
+use crate::geometry::fairness_dict;
 use crate::limits::{bytes_of, check_memory};
 
 /// Bytes the fairer works in per point (the spline, its banded systems, the report's
@@ -63,25 +64,6 @@ pub struct PyFairCurve {
     /// The fairness of the input: of the curve given, or of the cubic spline through the
     /// points (None when computed on demand).
     before: Option<CurveFairness>,
-}
-
-/// A fairness report as the dict of ``Curve.fairness``.
-fn fairness_dict<'py>(py: Python<'py>, f: &CurveFairness) -> PyResult<Bound<'py, PyDict>> {
-    let out = PyDict::new(py);
-    out.set_item("length", f.length)?;
-    out.set_item("curvature_min", f.curvature_min)?;
-    out.set_item("curvature_max", f.curvature_max)?;
-    out.set_item("curvature_extrema", f.curvature_extrema)?;
-    out.set_item("inflections", f.inflections)?;
-    let distance = f.max_distance_to_polygon;
-    out.set_item(
-        "max_distance_to_polygon",
-        distance.is_finite().then_some(distance),
-    )?;
-    out.set_item("fairness_energy", f.fairness_energy)?;
-    out.set_item("pieces", f.pieces)?;
-    out.set_item("curvature_jump", f.curvature_jump)?;
-    Ok(out)
 }
 
 impl PyFairCurve {

@@ -215,59 +215,11 @@ pub fn fit_curve(
     free_ends: bool,
     closed: bool,
 ) -> PyResult<Py<PyHermiteSpline>> {
-    let penalty = match penalty {
-        "active" => fit::PenaltyRule::ActiveBound,
-        "paper" => fit::PenaltyRule::SeedBound,
-        other => {
-            return Err(OptionError::new_err(format!(
-                "penalty must be 'active' or 'paper', got '{other}'"
-            )))
-        }
-    };
+    let penalty = penalty_rule(penalty)?;
     let (pts, dim) = PointsArray::extract_checked(points, "points")?;
-    let knots: Option<Vec<f64>> = match knots {
-        None => None,
-        Some(k) => match k.extract::<i64>() {
-            Ok(n) => {
-                if n < 2 {
-                    return Err(KnotsError::new_err(format!(
-                        "knots must be at least 2 (got {n})"
-                    )));
-                }
-                check_memory(
-                    py,
-                    &format!("fit_curve(knots={n})"),
-                    fit_bytes(pts.len(), n as usize, dim),
-                )?;
-                Some(fit::knots_from_list(&[n as f64]).map_err(library_error)?)
-            }
-            Err(_) => Some(extract_vector(k, "knots")?),
-        },
-    };
-    let target = match (knots, tolerance) {
-        (Some(_), Some(_)) => {
-            return Err(OptionError::new_err("give knots or tolerance, not both"))
-        }
-        (Some(knots), None) => Target::Knots(knots),
-        (None, Some(tolerance)) => Target::Tolerance(tolerance),
-        (None, None) => return Err(OptionError::new_err("give the knots or a tolerance")),
-    };
-    if pin_ends && free_ends {
-        return Err(OptionError::new_err("give pin_ends or free_ends, not both"));
-    }
-    if closed && (pin_ends || free_ends) {
-        return Err(OptionError::new_err(
-            "closed: a closed fit has no ends to pin or free (give closed or pin_ends/free_ends)",
-        ));
-    }
+    let target = Target::parse(py, knots, tolerance, pts.len(), dim)?;
     let mut options = FitOptions {
-        ends: if pin_ends {
-            FitEnds::Pinned
-        } else if free_ends {
-            FitEnds::Free
-        } else {
-            FitEnds::Auto
-        },
+        ends: fit_ends(pin_ends, free_ends, closed)?,
         corners: corners
             .map(|c| extract_vector(c, "corners"))
             .transpose()?
@@ -291,25 +243,110 @@ pub fn fit_curve(
     let (inner, sub): (Arc<dyn CurveImpl>, PyHermiteSpline) = by_dim!(dim, D => {
         let p = as_points::<D>(&flat);
         let (result, met) = py
-            .detach(|| -> karkas::Result<(fit::CurveFit<D>, Option<bool>)> {
-                match &target {
-                    Target::Knots(knots) if closed => {
-                        Ok((fit::fit_closed_curve(p, knots, &options)?, None))
-                    }
-                    Target::Tolerance(tol) if closed => {
-                        let a = fit::fit_closed_curve_adaptive(p, *tol, &options)?;
-                        Ok((a.fit, Some(a.tolerance_met)))
-                    }
-                    Target::Knots(knots) => Ok((fit::fit_curve(p, knots, &options)?, None)),
-                    Target::Tolerance(tol) => {
-                        let a = fit::fit_curve_adaptive(p, *tol, &options)?;
-                        Ok((a.fit, Some(a.tolerance_met)))
-                    }
-                }
-            })
+            .detach(|| target.fit(p, closed, &options))
             .map_err(library_error)?;
         let spline: HermiteSpline<D> = result.spline.clone();
-        let sub = PyHermiteSpline {
+        let sub = PyHermiteSpline::of_fit(&result, met);
+        (Arc::new(Wrapped::<_, D>(spline)) as Arc<dyn CurveImpl>, sub)
+    });
+    Py::new(py, sub.with_base(inner, dim))
+}
+
+/// The penalty rule of `penalty=`.
+fn penalty_rule(penalty: &str) -> PyResult<fit::PenaltyRule> {
+    match penalty {
+        "active" => Ok(fit::PenaltyRule::ActiveBound),
+        "paper" => Ok(fit::PenaltyRule::SeedBound),
+        other => Err(OptionError::new_err(format!(
+            "penalty must be 'active' or 'paper', got '{other}'"
+        ))),
+    }
+}
+
+/// The end policy of `pin_ends=`, `free_ends=` and `closed=` (at most one of them).
+fn fit_ends(pin_ends: bool, free_ends: bool, closed: bool) -> PyResult<FitEnds> {
+    if pin_ends && free_ends {
+        return Err(OptionError::new_err("give pin_ends or free_ends, not both"));
+    }
+    if closed && (pin_ends || free_ends) {
+        return Err(OptionError::new_err(
+            "closed: a closed fit has no ends to pin or free (give closed or pin_ends/free_ends)",
+        ));
+    }
+    Ok(if pin_ends {
+        FitEnds::Pinned
+    } else if free_ends {
+        FitEnds::Free
+    } else {
+        FitEnds::Auto
+    })
+}
+
+impl Target {
+    /// The target of `knots=` (a count, checked against the memory limit for `points`
+    /// points in `dim` dimensions, or the knots) or `tolerance=`: exactly one of them.
+    fn parse(
+        py: Python<'_>,
+        knots: Option<&Bound<'_, PyAny>>,
+        tolerance: Option<f64>,
+        points: usize,
+        dim: usize,
+    ) -> PyResult<Self> {
+        let knots: Option<Vec<f64>> = match knots {
+            None => None,
+            Some(k) => match k.extract::<i64>() {
+                Ok(n) => {
+                    if n < 2 {
+                        return Err(KnotsError::new_err(format!(
+                            "knots must be at least 2 (got {n})"
+                        )));
+                    }
+                    check_memory(
+                        py,
+                        &format!("fit_curve(knots={n})"),
+                        fit_bytes(points, n as usize, dim),
+                    )?;
+                    Some(fit::knots_from_list(&[n as f64]).map_err(library_error)?)
+                }
+                Err(_) => Some(extract_vector(k, "knots")?),
+            },
+        };
+        match (knots, tolerance) {
+            (Some(_), Some(_)) => Err(OptionError::new_err("give knots or tolerance, not both")),
+            (Some(knots), None) => Ok(Target::Knots(knots)),
+            (None, Some(tolerance)) => Ok(Target::Tolerance(tolerance)),
+            (None, None) => Err(OptionError::new_err("give the knots or a tolerance")),
+        }
+    }
+
+    /// The fit of `p` (closed or open) to this target, and for a tolerance whether it was
+    /// met.
+    fn fit<const D: usize>(
+        &self,
+        p: &[karkas::Point<D>],
+        closed: bool,
+        options: &FitOptions,
+    ) -> karkas::Result<(fit::CurveFit<D>, Option<bool>)> {
+        match self {
+            Target::Knots(knots) if closed => Ok((fit::fit_closed_curve(p, knots, options)?, None)),
+            Target::Tolerance(tol) if closed => {
+                let a = fit::fit_closed_curve_adaptive(p, *tol, options)?;
+                Ok((a.fit, Some(a.tolerance_met)))
+            }
+            Target::Knots(knots) => Ok((fit::fit_curve(p, knots, options)?, None)),
+            Target::Tolerance(tol) => {
+                let a = fit::fit_curve_adaptive(p, *tol, options)?;
+                Ok((a.fit, Some(a.tolerance_met)))
+            }
+        }
+    }
+}
+
+impl PyHermiteSpline {
+    /// The Python part of the fit `result` (`met`: whether its tolerance was met).
+    fn of_fit<const D: usize>(result: &fit::CurveFit<D>, met: Option<bool>) -> Self {
+        let spline = &result.spline;
+        PyHermiteSpline {
             knots: Numbers(spline.knots().to_vec()),
             values: FlatPoints::of(spline.values()),
             derivatives: FlatPoints::of(spline.derivatives()),
@@ -321,10 +358,8 @@ pub fn fit_curve(
             distances: Numbers(result.distances.clone()),
             noise: result.noise.sigma,
             warnings: result.warnings.iter().map(|w| w.message.clone()).collect(),
-        };
-        (Arc::new(Wrapped::<_, D>(spline)) as Arc<dyn CurveImpl>, sub)
-    });
-    Py::new(py, sub.with_base(inner, dim))
+        }
+    }
 }
 
 impl PyHermiteSpline {

@@ -752,22 +752,30 @@ impl PyCurve {
         )?;
         let inner = &self.inner;
         let f = py.detach(|| inner.fairness(&flat));
-        let out = PyDict::new(py);
-        out.set_item("length", f.length)?;
-        out.set_item("curvature_min", f.curvature_min)?;
-        out.set_item("curvature_max", f.curvature_max)?;
-        out.set_item("curvature_extrema", f.curvature_extrema)?;
-        out.set_item("inflections", f.inflections)?;
-        let distance = f.max_distance_to_polygon;
-        out.set_item(
-            "max_distance_to_polygon",
-            distance.is_finite().then_some(distance),
-        )?;
-        out.set_item("fairness_energy", f.fairness_energy)?;
-        out.set_item("pieces", f.pieces)?;
-        out.set_item("curvature_jump", f.curvature_jump)?;
-        Ok(out)
+        fairness_dict(py, &f)
     }
+}
+
+/// A fairness report as the dict of ``Curve.fairness``.
+pub(crate) fn fairness_dict<'py>(
+    py: Python<'py>,
+    f: &geometry::CurveFairness,
+) -> PyResult<Bound<'py, PyDict>> {
+    let out = PyDict::new(py);
+    out.set_item("length", f.length)?;
+    out.set_item("curvature_min", f.curvature_min)?;
+    out.set_item("curvature_max", f.curvature_max)?;
+    out.set_item("curvature_extrema", f.curvature_extrema)?;
+    out.set_item("inflections", f.inflections)?;
+    let distance = f.max_distance_to_polygon;
+    out.set_item(
+        "max_distance_to_polygon",
+        distance.is_finite().then_some(distance),
+    )?;
+    out.set_item("fairness_energy", f.fairness_energy)?;
+    out.set_item("pieces", f.pieces)?;
+    out.set_item("curvature_jump", f.curvature_jump)?;
+    Ok(out)
 }
 
 /// The `nu`-th derivative of a curve of dimension `D` as a library curve.

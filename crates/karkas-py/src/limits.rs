@@ -6,7 +6,7 @@
 //! will need before allocating anything and raises `MemoryError` naming the request, the
 //! estimate and the cap when the estimate exceeds `karkas.max_memory`. The cap is a plain
 //! module attribute, read again at every check (`karkas.max_memory = 2**30` takes effect at
-//! once; `None` removes the cap). Requests of at most [`CHECK_ABOVE`] bytes are never checked,
+//! once; `None` removes the cap). Requests of at most `CHECK_ABOVE` (2^20) bytes are never checked,
 //! so that evaluating one point costs no attribute lookup.
 //!
 //! The default is the command line's: `KARKAS_MAX_MEMORY` when set when the module is
@@ -28,7 +28,7 @@ use pyo3::types::PyTuple;
 pub const DEFAULT_MAX_MEMORY: u64 = karkas_io::input::DEFAULT_MAX_INPUT_BYTES;
 
 /// Requests of at most this many bytes (1 MiB) are not checked against the cap.
-pub const CHECK_ABOVE: u128 = 1 << 20;
+const CHECK_ABOVE: u128 = 1 << 20;
 
 /// The name of the module attribute holding the cap.
 const ATTRIBUTE: &str = "max_memory";

@@ -214,6 +214,30 @@ def test_closed_curve_fit(tmp_path, options, kwargs, scale, offset):
         karkas.fit_curve(pts, closed=True, pin_ends=True, **kwargs)
 
 
+@pytest.mark.parametrize("points", [[[1.0, 2.0]] * 3, [[1.0, 2.0], [3.0, 4.0], [1.0, 2.0]]])
+def test_closed_fit_says_the_repeated_last_point_was_dropped(tmp_path, points):
+    """A closed fit of three points whose last repeats the first has two points left: Python
+    and the CLI both say that the repeated point was dropped (not just "got 2")."""
+    pts = np.array(points)
+    expected = (
+        "a closed fit (after dropping its last point, which repeats the first) needs at least 3 points, got 2"
+    )
+    with pytest.raises(karkas.PointsError) as raised:
+        karkas.fit_curve(pts, knots=5, closed=True)
+    assert expected in str(raised.value)
+    path = write_curve(tmp_path / "three.csv", pts)
+    done = subprocess.run(
+        [str(BIN), "curve", "fit", str(path), "--closed", "--knots", "5", "-o", str(tmp_path / "out.csv")],
+        capture_output=True,
+        text=True,
+    )
+    assert done.returncode == 2, done.stderr
+    assert expected in done.stderr
+    # Three distinct points are enough: nothing is dropped and the fit is made.
+    f = karkas.fit_curve(np.array([[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]), knots=3, closed=True)
+    assert f.parameters.shape == (3,)
+
+
 @pytest.mark.parametrize("poles", [False, True])
 def test_curve_dps(tmp_path, wavy_file, poles):
     out = tmp_path / "out.csv"

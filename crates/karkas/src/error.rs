@@ -579,8 +579,8 @@ pub enum Error {
     },
     /// A point where the principal curvatures (nearly) agree, so that no principal
     /// direction is defined: a plane, a sphere or an umbilic region
-    /// ([`relay_grid`](crate::param::relay_grid), whose test is stated in
-    /// [`UMBILIC_RATIO`](crate::param::UMBILIC_RATIO)).
+    /// ([`relay_grid`](crate::param::relay_grid), whose module documentation states the
+    /// test).
     #[error(
         "the surface is umbilic near ({}, {}, {}) (principal curvatures {k1:.4e} and {k2:.4e} \
          nearly equal, as on a plane or a sphere): its lines of curvature are not defined",

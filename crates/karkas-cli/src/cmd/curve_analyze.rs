@@ -50,7 +50,7 @@ const DEFAULT_FIT_TOLERANCE: f64 = 1e-4;
 /// Samples of the fairness figures per piece, at most (with its working set per sample).
 const SAMPLES_PER_PIECE: u128 = 80;
 /// Samples per piece of the curvature plot or CSV.
-pub const PROFILE_PER_PIECE: usize = 16;
+const PROFILE_PER_PIECE: usize = 16;
 
 /// Arguments of `karkas curve analyze`.
 #[derive(Debug, Args)]

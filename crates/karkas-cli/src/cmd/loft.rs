@@ -171,16 +171,7 @@ fn build_loft(args: &LoftArgs, options: &LoftOptions) -> Result<Built> {
         bail!("give a sections table, --windio or --offsets");
     };
     let sections = read_sections(table)?;
-    let placements: Vec<WingPlacement> = sections
-        .rows
-        .iter()
-        .map(|r| WingPlacement {
-            leading_edge: r.leading_edge,
-            chord: r.chord,
-            twist: r.twist,
-            dihedral: r.dihedral,
-        })
-        .collect();
+    let placements: Vec<WingPlacement> = sections.rows.iter().map(SectionRow::placement).collect();
     let start = Instant::now();
     let loft = Loft::wing(&sections.profiles, &placements, options)
         .map_err(|e| section_error(table, &sections.rows, e))?;
@@ -211,7 +202,6 @@ pub fn run(args: &LoftArgs) -> Result<()> {
     };
     let (loft, source, time_ms, airfoil_stations) = build_loft(args, &options)?;
     let table = source.as_path();
-    let stations = loft.stations().to_vec();
     let cuts = match &args.sections_at {
         Some(at) => Some(cut_sections(&loft, &at.0)?),
         None => None,
@@ -220,11 +210,26 @@ pub fn run(args: &LoftArgs) -> Result<()> {
     if let (Some(cuts), Some(path), Some(f)) = (&cuts, &args.sections_out, sections_format) {
         write_sections(path, f, cuts)?;
     }
-    let title = format!("loft of {} sections ({})", stations.len(), args.span.name());
     let blunt = match args.cap.cap {
         true => trailing_edges(&loft)?,
         false => false,
     };
+    write_surface(args, &loft, format, table, blunt)?;
+    report(args, &loft, airfoil_stations, time_ms)?;
+    Ok(())
+}
+
+/// Writes the loft to `--output` in `format`: its B-spline faces (with the trailing-edge
+/// strip when capped and `blunt`) to a CAD file, else a sampled (capped) mesh.
+fn write_surface(
+    args: &LoftArgs,
+    loft: &Loft,
+    format: OutputFormat,
+    table: &Path,
+    blunt: bool,
+) -> Result<()> {
+    let stations = loft.stations();
+    let title = format!("loft of {} sections ({})", stations.len(), args.span.name());
     if format.is_cad() {
         let bspline = loft
             .to_bspline()
@@ -249,7 +254,7 @@ pub fn run(args: &LoftArgs) -> Result<()> {
             .unwrap_or((16 * (stations.len() - 1) + 1, 200));
         if args.cap.cap {
             write_capped_mesh(
-                &loft,
+                loft,
                 samples,
                 format,
                 &args.output,
@@ -258,7 +263,7 @@ pub fn run(args: &LoftArgs) -> Result<()> {
             )?;
         } else {
             write_sampled_surface(
-                &loft,
+                loft,
                 samples,
                 format,
                 &args.output,
@@ -268,6 +273,17 @@ pub fn run(args: &LoftArgs) -> Result<()> {
             )?;
         }
     }
+    Ok(())
+}
+
+/// Reports the loft on stderr, in the run record and (with `--json`) on stdout.
+fn report(
+    args: &LoftArgs,
+    loft: &Loft,
+    airfoil_stations: Option<Vec<f64>>,
+    time_ms: f64,
+) -> Result<()> {
+    let stations = loft.stations().to_vec();
     let (nu, nv) = loft.control_counts();
     let summary = LoftSummary {
         sections: stations.len(),

@@ -171,40 +171,7 @@ pub(crate) fn network_surface(
     files: &NetworkFiles<'_>,
     outputs: &[PathBuf],
 ) -> Result<(CoonsSurface<3>, CurveFamily, CurveFamily)> {
-    if files.u_derivs.is_some() != files.v_derivs.is_some() {
-        bail!("--u-derivs and --v-derivs go together: give both or neither");
-    }
-    if let Some(t) = files.tolerance {
-        if !(t.is_finite() && t >= 0.0) {
-            bail!("--tolerance must be a finite number >= 0, got {t}");
-        }
-    }
-    let with_derivs = files.u_derivs.is_some();
-    if with_derivs && !matches!(kind, Kind::Bicubic | Kind::Composite) {
-        bail!("--u-derivs and --v-derivs are used only by --kind bicubic and composite");
-    }
-    if files.twists.is_some() && !matches!(kind, Kind::Bicubic | Kind::Composite) {
-        bail!("--twists is used only by --kind bicubic and composite");
-    }
-    let mut named = vec![
-        ("--u-curves", files.u_curves),
-        ("--v-curves", files.v_curves),
-    ];
-    named.extend(files.u_derivs.map(|p| ("--u-derivs", p)));
-    named.extend(files.v_derivs.map(|p| ("--v-derivs", p)));
-    named.extend(files.twists.map(|p| ("--twists", p)));
-    one_standard_input(&named)?;
-    let inputs = [files.u_curves, files.v_curves]
-        .into_iter()
-        .chain(files.u_derivs)
-        .chain(files.v_derivs)
-        .chain(files.twists);
-    for input in inputs {
-        for output in outputs {
-            ensure_distinct(input, output)?;
-        }
-    }
-
+    files.check(kind, outputs)?;
     let u_family = read_family(files.u_curves)?;
     let v_family = read_family(files.v_curves)?;
     check_creases(files, &u_family, &v_family)?;
@@ -222,46 +189,12 @@ pub(crate) fn network_surface(
         files.creases,
     )
     .map_err(|e| places.explain(e))?;
-    let cross = match (files.u_derivs, files.v_derivs) {
-        (Some(du), Some(dv)) => {
-            let (du_family, dv_family) = (read_family(du)?, read_family(dv)?);
-            let derivs = network
-                .cross_derivatives(&dv_family.curves, &du_family.curves)
-                .with_context(|| format!("{}, {}", du.display(), dv.display()))?;
-            Some(derivs)
-        }
-        _ => match files.twists {
-            Some(path) => {
-                let twists = read_grid(path)?;
-                let derivs = CrossDerivatives::from_twists(network.network(), &twists)
-                    .with_context(|| {
-                        format!(
-                            "{}: {} v-curves x {} u-curves",
-                            path.display(),
-                            v_family.curves.len(),
-                            u_family.curves.len()
-                        )
-                    })?;
-                Some(derivs)
-            }
-            None => None,
-        },
-    };
+    let cross = files.cross_derivatives(&network, &u_family, &v_family)?;
     if kind == Kind::Gordon {
         warn_lagrange_seam(&network);
     }
     if kind == Kind::Bicubic && files.u_derivs.is_none() {
-        note(format!(
-            "karkas: warning: --kind bicubic without --u-derivs and --v-derivs takes the \
-             cross-boundary derivatives from the two curves of each family ({}), which \
-             misses even a surface the operator reproduces from its own derivatives (a \
-             cubic); give --u-derivs and --v-derivs to interpolate them",
-            if files.twists.is_some() {
-                "their tangents and the --twists at the corners"
-            } else {
-                "their tangents and twists by the spline-of-derivatives rule"
-            }
-        ));
+        warn_bicubic_from_curves(files.twists.is_some());
     }
     let compatibility = if files.repair {
         Compatibility::Repair
@@ -276,6 +209,95 @@ pub(crate) fn network_surface(
         report_repair(repair);
     }
     Ok((surface, u_family, v_family))
+}
+
+impl NetworkFiles<'_> {
+    /// Checks the options that go together or with `kind` only, and that no input is one of
+    /// `outputs`.
+    fn check(&self, kind: Kind, outputs: &[PathBuf]) -> Result<()> {
+        if self.u_derivs.is_some() != self.v_derivs.is_some() {
+            bail!("--u-derivs and --v-derivs go together: give both or neither");
+        }
+        if let Some(t) = self.tolerance {
+            if !(t.is_finite() && t >= 0.0) {
+                bail!("--tolerance must be a finite number >= 0, got {t}");
+            }
+        }
+        let with_derivs = self.u_derivs.is_some();
+        if with_derivs && !matches!(kind, Kind::Bicubic | Kind::Composite) {
+            bail!("--u-derivs and --v-derivs are used only by --kind bicubic and composite");
+        }
+        if self.twists.is_some() && !matches!(kind, Kind::Bicubic | Kind::Composite) {
+            bail!("--twists is used only by --kind bicubic and composite");
+        }
+        let mut named = vec![("--u-curves", self.u_curves), ("--v-curves", self.v_curves)];
+        named.extend(self.u_derivs.map(|p| ("--u-derivs", p)));
+        named.extend(self.v_derivs.map(|p| ("--v-derivs", p)));
+        named.extend(self.twists.map(|p| ("--twists", p)));
+        one_standard_input(&named)?;
+        let inputs = [self.u_curves, self.v_curves]
+            .into_iter()
+            .chain(self.u_derivs)
+            .chain(self.v_derivs)
+            .chain(self.twists);
+        for input in inputs {
+            for output in outputs {
+                ensure_distinct(input, output)?;
+            }
+        }
+        Ok(())
+    }
+
+    /// The cross-boundary derivatives of `--u-derivs` and `--v-derivs`, or from `--twists`,
+    /// or `None`.
+    fn cross_derivatives(
+        &self,
+        network: &PointNetwork<3>,
+        u_family: &CurveFamily,
+        v_family: &CurveFamily,
+    ) -> Result<Option<CrossDerivatives<3>>> {
+        Ok(match (self.u_derivs, self.v_derivs) {
+            (Some(du), Some(dv)) => {
+                let (du_family, dv_family) = (read_family(du)?, read_family(dv)?);
+                let derivs = network
+                    .cross_derivatives(&dv_family.curves, &du_family.curves)
+                    .with_context(|| format!("{}, {}", du.display(), dv.display()))?;
+                Some(derivs)
+            }
+            _ => match self.twists {
+                Some(path) => {
+                    let twists = read_grid(path)?;
+                    let derivs = CrossDerivatives::from_twists(network.network(), &twists)
+                        .with_context(|| {
+                            format!(
+                                "{}: {} v-curves x {} u-curves",
+                                path.display(),
+                                v_family.curves.len(),
+                                u_family.curves.len()
+                            )
+                        })?;
+                    Some(derivs)
+                }
+                None => None,
+            },
+        })
+    }
+}
+
+/// Warns that `--kind bicubic` without `--u-derivs` and `--v-derivs` takes the cross-boundary
+/// derivatives from the curves (and the corner twists from `--twists` when `twists`).
+fn warn_bicubic_from_curves(twists: bool) {
+    note(format!(
+        "karkas: warning: --kind bicubic without --u-derivs and --v-derivs takes the \
+         cross-boundary derivatives from the two curves of each family ({}), which \
+         misses even a surface the operator reproduces from its own derivatives (a \
+         cubic); give --u-derivs and --v-derivs to interpolate them",
+        if twists {
+            "their tangents and the --twists at the corners"
+        } else {
+            "their tangents and twists by the spline-of-derivatives rule"
+        }
+    ));
 }
 
 impl Kind {

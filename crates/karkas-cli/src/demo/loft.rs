@@ -16,7 +16,7 @@ use karkas::loft::{wing_frames, Loft, LoftOptions, WingPlacement, DEFAULT_TOLERA
 use karkas::{Curve, Point2, Point3, Surface};
 use karkas_io::points::{parse_curve_points, CurvePoints};
 use karkas_io::scene::{write_scene_svg, Scene, SceneCurves, SceneMesh, View};
-use karkas_io::sections_table::parse_sections_table;
+use karkas_io::sections_table::{parse_sections_table, SectionRow};
 use std::path::Path;
 use std::time::Instant;
 
@@ -60,15 +60,7 @@ pub fn shipped_wing() -> Result<(Vec<Vec<Point2>>, Vec<WingPlacement>)> {
             CurvePoints::Spatial(_) => return Err(anyhow!("{name}: not a planar profile")),
         }
     }
-    let placements = rows
-        .iter()
-        .map(|r| WingPlacement {
-            leading_edge: r.leading_edge,
-            chord: r.chord,
-            twist: r.twist,
-            dihedral: r.dihedral,
-        })
-        .collect();
+    let placements = rows.iter().map(SectionRow::placement).collect();
     Ok((profiles, placements))
 }
 

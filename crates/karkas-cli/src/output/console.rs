@@ -82,11 +82,11 @@ pub fn capture<R>(work: impl FnOnce() -> R) -> (R, Captured) {
 
 /// Ends farther apart than this share of the points' size are taken for an open curve that
 /// `--closed` (or periodic ends) joins on purpose, not for a near miss.
-pub const NEAR_MISS_SHARE: f64 = 1e-2;
+const NEAR_MISS_SHARE: f64 = 1e-2;
 
 /// Warns when an option closes `points` (`option`, e.g. `--closed`) and their last point
 /// misses the first by a little: more than rounding (`1e-12` of the largest coordinate) and at
-/// most [`NEAR_MISS_SHARE`] of the diagonal of the points' bounding box. The curve then closes
+/// most `NEAR_MISS_SHARE` (1e-2) of the diagonal of the points' bounding box. The curve then closes
 /// through a short extra piece between them rather than at the point the user meant.
 pub fn warn_near_miss<const D: usize>(option: &str, points: &[karkas::Point<D>]) {
     if let Some((gap, size)) = near_miss(points, 1e-12) {
@@ -102,7 +102,7 @@ pub fn warn_near_miss<const D: usize>(option: &str, points: &[karkas::Point<D>])
 /// Warns when the ends of an open curve through `points` nearly meet: the last point misses
 /// the first by more than the rule that makes them one point
 /// ([`karkas::fit::SHARED_END_TOLERANCE`] of the diagonal of the points' bounding box) and by
-/// at most [`NEAR_MISS_SHARE`] of it. The curve then stays open (a blunt trailing edge, or a
+/// at most `NEAR_MISS_SHARE` (1e-2) of it. The curve then stays open (a blunt trailing edge, or a
 /// sharp one given with a small error); `remedy` names the option that closes it.
 pub fn warn_open_near_miss<const D: usize>(points: &[karkas::Point<D>], remedy: &str) {
     if let Some((gap, size)) = near_miss(points, karkas::fit::SHARED_END_TOLERANCE) {
@@ -116,7 +116,7 @@ pub fn warn_open_near_miss<const D: usize>(points: &[karkas::Point<D>], remedy: 
 
 /// The distance of the last of `points` from the first and the diagonal of their bounding
 /// box, when the distance is above `least` of the diagonal (and of the largest coordinate)
-/// and at most [`NEAR_MISS_SHARE`] of it.
+/// and at most `NEAR_MISS_SHARE` (1e-2) of it.
 fn near_miss<const D: usize>(points: &[karkas::Point<D>], least: f64) -> Option<(f64, f64)> {
     let (Some(&first), Some(&last)) = (points.first(), points.last()) else {
         return None;

@@ -107,6 +107,21 @@ fn two_points_for_a_fit() {
 }
 
 #[test]
+fn three_points_of_a_closed_fit_one_repeated() {
+    // The last point repeats the first and is dropped: the message says so.
+    for text in ["x,y\n1,2\n1,2\n1,2\n", "x,y\n1,2\n3,4\n1,2\n"] {
+        refused(
+            &[("pts.csv", text)],
+            &[
+                "curve", "fit", "pts.csv", "--closed", "--knots", "5", "-o", "out.csv",
+            ],
+            "pts.csv: --closed: a closed fit (after dropping its last point, which repeats the \
+             first) needs at least 3 points, got 2",
+        );
+    }
+}
+
+#[test]
 fn nan_coordinate() {
     refused(
         &[("pts.csv", "x,y\n0,0\n1,nan\n2,0\n")],

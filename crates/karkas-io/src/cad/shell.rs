@@ -32,11 +32,11 @@ use karkas::{Point3, Surface};
 
 /// The tolerance of a shell relative to the extent of its control points: vertices this
 /// close are one vertex, a side whose control points all lie this close is a pole.
-pub const SHELL_RELATIVE_TOLERANCE: f64 = 1e-9;
+const SHELL_RELATIVE_TOLERANCE: f64 = 1e-9;
 
 /// The largest distance of a loop's control points from its best plane, relative to the
 /// shell's extent, for [`CadShell::cap_free_loops`] to cap it with a planar face.
-pub const CAP_RELATIVE_FLATNESS: f64 = 1e-6;
+pub(crate) const CAP_RELATIVE_FLATNESS: f64 = 1e-6;
 
 /// An edge of a shell: a B-spline curve from one vertex to another (the same vertex for a
 /// closed curve).
@@ -141,7 +141,7 @@ pub enum CapError {
         deviation: f64,
         /// The same relative to the shell's extent.
         relative: f64,
-        /// [`CAP_RELATIVE_FLATNESS`].
+        /// `CAP_RELATIVE_FLATNESS` (1e-6).
         limit: f64,
     },
 }
@@ -174,7 +174,7 @@ impl CadShell {
         }
     }
 
-    /// The shell of the patches `surfaces`, with the tolerance [`SHELL_RELATIVE_TOLERANCE`]
+    /// The shell of the patches `surfaces`, with the tolerance `SHELL_RELATIVE_TOLERANCE` (1e-9)
     /// of their control points' extent.
     ///
     /// # Examples
@@ -272,7 +272,7 @@ impl CadShell {
     ///
     /// Errors: no free edge ([`CapError::NothingToCap`]); free edges that branch
     /// ([`CapError::NotALoop`]); a loop whose control points stray more than
-    /// [`CAP_RELATIVE_FLATNESS`] of the shell's extent from their best plane
+    /// `CAP_RELATIVE_FLATNESS` (1e-6) of the shell's extent from their best plane
     /// ([`CapError::NotPlanar`]). Nothing is added on an error.
     pub fn cap_free_loops(&mut self) -> Result<Vec<Cap>, CapError> {
         let loops = self.free_loops()?;

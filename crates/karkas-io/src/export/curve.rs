@@ -15,7 +15,7 @@ use karkas::{Curve, Point, Point2, Point3};
 use std::path::Path;
 
 /// The most teeth a curvature comb gets (the picture draws at most
-/// [`DRAWN_TEETH`](crate::picture::comb::DRAWN_TEETH) of them as lines, all as the envelope
+/// `DRAWN_TEETH` (300) of them as lines, all as the envelope
 /// through their tips, fine enough to show the curvature ripple of every piece of a curve
 /// through a few hundred points).
 pub const COMB_TEETH: usize = 1200;

@@ -9,7 +9,7 @@
 //!   at the pole is left out, so the pole is closed by a fan and no triangle has zero area.
 //!   A closed direction's repeated row (column) is the first one (its seam welded).
 //! - Caps ([`cap_open_loops`]): the edges used by one triangle form the open boundary; each
-//!   of its loops must lie in a plane (within [`CAP_RELATIVE_FLATNESS`] of the mesh's size,
+//!   of its loops must lie in a plane (within `CAP_RELATIVE_FLATNESS` (1e-6) of the mesh's size,
 //!   the rule of the CAD caps, [`crate::cad::CadShell::cap_free_loops`]) and is closed by
 //!   the triangles of its polygon in that plane, found by ear clipping
 //!   ([`earcutr`], Mapbox's earcut: right for any simple polygon, star-shaped or not), over
@@ -169,7 +169,7 @@ pub struct MeshCap {
 ///
 /// Errors: [`CapError::NothingToCap`] (no open edge), [`CapError::NotALoop`] (a vertex
 /// where the open edges branch or end), [`CapError::NotPlanar`] (a loop farther than
-/// [`CAP_RELATIVE_FLATNESS`] of the mesh's size from its plane, or enclosing no area).
+/// `CAP_RELATIVE_FLATNESS` (1e-6) of the mesh's size from its plane, or enclosing no area).
 pub fn cap_open_loops(mesh: &mut TriangleMesh) -> Result<Vec<MeshCap>, CapError> {
     let loops = boundary_loops(mesh)?;
     if loops.is_empty() {

@@ -2,32 +2,32 @@
 //!
 //! A comb scaled to its longest tooth shows only the sharpest bend (an airfoil's leading
 //! edge) and is flat everywhere else. Here the teeth (equally spaced along the curve) are
-//! scaled so that the [`PERCENTILE`] percentile of their lengths is [`TOOTH_FRACTION`] of
+//! scaled so that the `PERCENTILE` (0.8) percentile of their lengths is `TOOTH_FRACTION` (0.07) of
 //! the curve's extent, the factor rounded to two significant digits so that the legend reads
 //! "tooth length = curvature x S". The 80th rather than the 90th percentile: on an airfoil
 //! the tenth of the arc round the nose holds the top decile of the curvature, so the 90th
 //! percentile still lets the nose set the scale and leaves the aft third flat. The few teeth
-//! that the scale makes longer than [`CLIP`] times the percentile tooth (on an airfoil, the
+//! that the scale makes longer than `CLIP` (3) times the percentile tooth (on an airfoil, the
 //! nose: about a tenth of the teeth) are clipped to that length, drawn in a darker colour and
 //! counted in the legend, so that no tooth leaves the picture and the clipped ones stay
 //! recognisable.
 
 /// The percentile of the curvature magnitudes that sets the scale.
-pub const PERCENTILE: f64 = 0.8;
+const PERCENTILE: f64 = 0.8;
 /// The length of the percentile tooth as a fraction of the curve's extent.
-pub const TOOTH_FRACTION: f64 = 0.07;
+const TOOTH_FRACTION: f64 = 0.07;
 /// Teeth are clipped at this many times the percentile tooth.
-pub const CLIP: f64 = 3.0;
+const CLIP: f64 = 3.0;
 /// The most teeth drawn as lines (every so many of the teeth; the envelope runs through the
 /// tips of all of them).
-pub const DRAWN_TEETH: usize = 300;
+pub(crate) const DRAWN_TEETH: usize = 300;
 
 /// A comb ready to draw.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ScaledComb {
     /// The teeth from the curve to their tips, in model units, and whether each was clipped.
     pub teeth: Vec<([(f64, f64); 2], bool)>,
-    /// Every how many teeth one is drawn as a line (at most [`DRAWN_TEETH`] drawn).
+    /// Every how many teeth one is drawn as a line (at most `DRAWN_TEETH` (300) drawn).
     pub stride: usize,
     /// Model units of tooth length per unit of curvature (square model units).
     pub factor: f64,

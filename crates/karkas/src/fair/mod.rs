@@ -55,5 +55,5 @@ mod shape;
 mod solver;
 mod space;
 
-pub use options::{FairEnds, FairOptions, POINTS_PER_SPAN, RESOLUTION_ULPS};
+pub use options::{FairEnds, FairOptions, RESOLUTION_ULPS};
 pub use result::{fair_curve, fair_existing_curve, FairCurve};

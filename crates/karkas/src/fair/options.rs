@@ -7,7 +7,7 @@ use crate::{Error, Point, Result};
 pub const RESOLUTION_ULPS: f64 = 256.0;
 /// Points per span of the fair spline (the spans follow the points: more where they are
 /// dense).
-pub const POINTS_PER_SPAN: f64 = 3.0;
+pub(crate) const POINTS_PER_SPAN: f64 = 3.0;
 
 /// What the faired curve keeps of the input at its ends.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]

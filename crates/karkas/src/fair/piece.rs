@@ -92,43 +92,9 @@ pub(crate) fn fair_piece<const D: usize>(
         let b = breaks(&params, end, spans, closed);
         let space = Space::new(b, closed);
         let count = space.controls();
-        let mut kinds = vec![Control::Free; count];
-        let mut pinned = vec![false; n];
-        if !closed {
-            for (side, &keep) in ends.iter().enumerate() {
-                let (first, second, point) = if side == 0 {
-                    (0, 1, points[0])
-                } else {
-                    (count - 1, count - 2, points[n - 1])
-                };
-                if keep != End::Free {
-                    kinds[first] = Control::Held(point);
-                    pinned[if side == 0 { 0 } else { n - 1 }] = true;
-                }
-                if let End::Tangent(direction) = keep {
-                    kinds[second] = Control::Along {
-                        base: point,
-                        direction,
-                    };
-                }
-            }
-        }
+        let (kinds, pinned) = end_controls(points, ends, count, closed);
         let layout = Layout::new(kinds.clone(), closed);
-        let mut controls: Vec<Point<D>> = kinds
-            .iter()
-            .map(|k| match k {
-                Control::Held(p) => *p,
-                Control::Along { base, .. } => *base,
-                Control::Free => Point::ZERO,
-            })
-            .collect();
-        // A start away from zero for the sliding controls: a third of the first span.
-        for (j, k) in kinds.iter().enumerate() {
-            if let Control::Along { base, direction } = k {
-                let h = space.width(if j == 1 { 0 } else { space.spans() - 1 });
-                controls[j] = base.add_scaled(h / 3.0 / direction.norm(), *direction);
-            }
-        }
+        let controls = start_controls(&kinds, &space);
         let mut solve = Solve {
             space: &space,
             layout: &layout,
@@ -162,4 +128,58 @@ pub(crate) fn fair_piece<const D: usize>(
         }
         spans = (2 * spans).min(most);
     }
+}
+
+/// The kinds of the controls (held or sliding at kept ends, free elsewhere) and which points
+/// are pinned, for `count` controls of an open piece's `points` with the ends `ends` (all free
+/// when `closed`).
+fn end_controls<const D: usize>(
+    points: &[Point<D>],
+    ends: [End<D>; 2],
+    count: usize,
+    closed: bool,
+) -> (Vec<Control<D>>, Vec<bool>) {
+    let n = points.len();
+    let mut kinds = vec![Control::Free; count];
+    let mut pinned = vec![false; n];
+    if !closed {
+        for (side, &keep) in ends.iter().enumerate() {
+            let (first, second, point) = if side == 0 {
+                (0, 1, points[0])
+            } else {
+                (count - 1, count - 2, points[n - 1])
+            };
+            if keep != End::Free {
+                kinds[first] = Control::Held(point);
+                pinned[if side == 0 { 0 } else { n - 1 }] = true;
+            }
+            if let End::Tangent(direction) = keep {
+                kinds[second] = Control::Along {
+                    base: point,
+                    direction,
+                };
+            }
+        }
+    }
+    (kinds, pinned)
+}
+
+/// The controls the solver starts from: held ones at their point, free ones at zero, sliding
+/// ones a third of the end span along their direction (a start away from zero).
+fn start_controls<const D: usize>(kinds: &[Control<D>], space: &Space) -> Vec<Point<D>> {
+    let mut controls: Vec<Point<D>> = kinds
+        .iter()
+        .map(|k| match k {
+            Control::Held(p) => *p,
+            Control::Along { base, .. } => *base,
+            Control::Free => Point::ZERO,
+        })
+        .collect();
+    for (j, k) in kinds.iter().enumerate() {
+        if let Control::Along { base, direction } = k {
+            let h = space.width(if j == 1 { 0 } else { space.spans() - 1 });
+            controls[j] = base.add_scaled(h / 3.0 / direction.norm(), *direction);
+        }
+    }
+    controls
 }

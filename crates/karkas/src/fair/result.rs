@@ -201,111 +201,16 @@ fn fair_points<const D: usize>(
     }
     let scaled: Vec<Point<D>> = points.iter().map(|&p| frame.unit(p)).collect();
     let tolerance = options.tolerance / size;
-    let n = scaled.len();
-    let end = |side: usize| match (options.ends, tangents) {
-        (FairEnds::Free, _) => End::Free,
-        (FairEnds::KeptWithTangents, Some(t)) if t[side].norm() > 0.0 => {
-            End::Tangent(t[side] * (1.0 / t[side].norm()))
-        }
-        _ => End::Point,
-    };
-    let pieces: Vec<Piece<D>>;
-    let order: Vec<usize>;
-    if options.corners.is_empty() {
-        order = (0..n).collect();
-        pieces = vec![fair_piece(
-            &scaled,
-            tolerance,
-            [end(0), end(1)],
-            options.closed,
-            0.0,
-        )?];
-    } else {
-        // A closed curve starts at its first corner and ends there again.
-        let mut cuts: Vec<usize> = options.corners.clone();
-        let rotated: Vec<usize> = if options.closed {
-            let first = cuts[0];
-            cuts = cuts.iter().map(|c| c - first).collect();
-            cuts.push(n);
-            (first..n).chain(0..=first).collect()
-        } else {
-            cuts.insert(0, 0);
-            cuts.push(n - 1);
-            (0..n).collect()
-        };
-        let mut list = Vec::with_capacity(cuts.len() - 1);
-        let mut start = 0.0;
-        for (k, w) in cuts.windows(2).enumerate() {
-            let ids = &rotated[w[0]..=w[1]];
-            let piece_points: Vec<Point<D>> = ids.iter().map(|&i| scaled[i]).collect();
-            if piece_points.len() < super::options::MIN_POINTS {
-                return Err(Error::TooFewPoints {
-                    what: "a fair curve's piece between corners",
-                    needed: super::options::MIN_POINTS,
-                    got: piece_points.len(),
-                });
-            }
-            let first = if k == 0 && !options.closed {
-                end(0)
-            } else {
-                End::Point
-            };
-            let last = if k + 2 == cuts.len() && !options.closed {
-                end(1)
-            } else {
-                End::Point
-            };
-            let piece = fair_piece(&piece_points, tolerance, [first, last], false, start)?;
-            start = *piece.space.breaks().last().unwrap_or(&start);
-            list.push(piece);
-        }
-        order = rotated;
-        pieces = list;
-    }
+    let ends = [0, 1].map(|side| end_condition(options.ends, tangents, side));
+    let (pieces, order) = fair_pieces(&scaled, tolerance, ends, options)?;
     let total = pieces
         .last()
         .map_or(1.0, |p| *p.space.breaks().last().unwrap_or(&1.0));
     let first_break = pieces[0].space.breaks()[0];
     let length = total - first_break;
-    // Join the pieces' clamped B-splines, sharing the corner controls.
-    let mut knots: Vec<f64> = Vec::new();
-    let mut controls: Vec<Point<D>> = Vec::new();
-    let unscale = |c: &Point<D>| frame.back(*c);
-    let mut curve = None;
-    if pieces.len() == 1 {
-        let spline = pieces[0].space.to_bspline(&pieces[0].controls)?;
-        let ks: Vec<f64> = spline
-            .knots()
-            .iter()
-            .map(|k| (k - first_break) / length)
-            .collect();
-        let cs: Vec<Point<D>> = spline.control_points().iter().map(unscale).collect();
-        curve = Some(BSplineCurve::new(3, ks, cs)?.with_closed(options.closed));
-    } else {
-        for (k, piece) in pieces.iter().enumerate() {
-            let spline = piece.space.to_bspline(&piece.controls)?;
-            let ks = spline.knots();
-            let cs = spline.control_points();
-            if k == 0 {
-                knots.extend_from_slice(&ks[..ks.len() - 1]);
-                controls.extend(cs.iter().map(unscale));
-            } else {
-                knots.extend_from_slice(&ks[4..ks.len() - 1]);
-                controls.extend(cs[1..].iter().map(unscale));
-            }
-        }
-        knots.push(total);
-        for k in knots.iter_mut() {
-            *k = (*k - first_break) / length;
-        }
-        curve = curve.or(Some(
-            BSplineCurve::new(3, knots, controls)?.with_closed(options.closed),
-        ));
-    }
-    let curve = curve.ok_or(Error::Internal {
-        what: "no fair piece",
-    })?;
+    let curve = join_pieces(&pieces, &frame, [first_break, total], options.closed)?;
     // The parameters and distances of the input points, in their input order.
+    let n = scaled.len();
     let mut parameters = vec![0.0; n];
     let mut distances = vec![0.0; n];
     for (k, piece) in pieces.iter().enumerate() {
@@ -327,4 +232,121 @@ fn fair_points<const D: usize>(
         parameters,
         distances,
     })
+}
+
+/// The condition at the curve's end `side` (0 first, 1 last): free, its point, or its point
+/// and the unit tangent given (when that is not zero).
+fn end_condition<const D: usize>(
+    ends: FairEnds,
+    tangents: Option<[Point<D>; 2]>,
+    side: usize,
+) -> End<D> {
+    match (ends, tangents) {
+        (FairEnds::Free, _) => End::Free,
+        (FairEnds::KeptWithTangents, Some(t)) if t[side].norm() > 0.0 => {
+            End::Tangent(t[side] * (1.0 / t[side].norm()))
+        }
+        _ => End::Point,
+    }
+}
+
+/// The faired pieces between the corners (one piece without corners), and the order of the
+/// points along them (a closed curve with corners starts at its first corner and ends there
+/// again).
+fn fair_pieces<const D: usize>(
+    scaled: &[Point<D>],
+    tolerance: f64,
+    [first_end, last_end]: [End<D>; 2],
+    options: &FairOptions,
+) -> Result<(Vec<Piece<D>>, Vec<usize>)> {
+    let n = scaled.len();
+    if options.corners.is_empty() {
+        let piece = fair_piece(
+            scaled,
+            tolerance,
+            [first_end, last_end],
+            options.closed,
+            0.0,
+        )?;
+        return Ok((vec![piece], (0..n).collect()));
+    }
+    let mut cuts: Vec<usize> = options.corners.clone();
+    let rotated: Vec<usize> = if options.closed {
+        let first = cuts[0];
+        cuts = cuts.iter().map(|c| c - first).collect();
+        cuts.push(n);
+        (first..n).chain(0..=first).collect()
+    } else {
+        cuts.insert(0, 0);
+        cuts.push(n - 1);
+        (0..n).collect()
+    };
+    let mut list = Vec::with_capacity(cuts.len() - 1);
+    let mut start = 0.0;
+    for (k, w) in cuts.windows(2).enumerate() {
+        let ids = &rotated[w[0]..=w[1]];
+        let piece_points: Vec<Point<D>> = ids.iter().map(|&i| scaled[i]).collect();
+        if piece_points.len() < super::options::MIN_POINTS {
+            return Err(Error::TooFewPoints {
+                what: "a fair curve's piece between corners",
+                needed: super::options::MIN_POINTS,
+                got: piece_points.len(),
+            });
+        }
+        let first = if k == 0 && !options.closed {
+            first_end
+        } else {
+            End::Point
+        };
+        let last = if k + 2 == cuts.len() && !options.closed {
+            last_end
+        } else {
+            End::Point
+        };
+        let piece = fair_piece(&piece_points, tolerance, [first, last], false, start)?;
+        start = *piece.space.breaks().last().unwrap_or(&start);
+        list.push(piece);
+    }
+    Ok((list, rotated))
+}
+
+/// The pieces' clamped B-splines joined into one (sharing the corner controls), its knots
+/// mapped from `[first_break, total]` to `[0, 1]` and its controls back to the points' frame.
+fn join_pieces<const D: usize>(
+    pieces: &[Piece<D>],
+    frame: &Frame<D>,
+    [first_break, total]: [f64; 2],
+    closed: bool,
+) -> Result<BSplineCurve<D>> {
+    let length = total - first_break;
+    let unscale = |c: &Point<D>| frame.back(*c);
+    if pieces.len() == 1 {
+        let spline = pieces[0].space.to_bspline(&pieces[0].controls)?;
+        let ks: Vec<f64> = spline
+            .knots()
+            .iter()
+            .map(|k| (k - first_break) / length)
+            .collect();
+        let cs: Vec<Point<D>> = spline.control_points().iter().map(unscale).collect();
+        return Ok(BSplineCurve::new(3, ks, cs)?.with_closed(closed));
+    }
+    let mut knots: Vec<f64> = Vec::new();
+    let mut controls: Vec<Point<D>> = Vec::new();
+    for (k, piece) in pieces.iter().enumerate() {
+        let spline = piece.space.to_bspline(&piece.controls)?;
+        let ks = spline.knots();
+        let cs = spline.control_points();
+        if k == 0 {
+            knots.extend_from_slice(&ks[..ks.len() - 1]);
+            controls.extend(cs.iter().map(unscale));
+        } else {
+            knots.extend_from_slice(&ks[4..ks.len() - 1]);
+            controls.extend(cs[1..].iter().map(unscale));
+        }
+    }
+    knots.push(total);
+    for k in knots.iter_mut() {
+        *k = (*k - first_break) / length;
+    }
+    Ok(BSplineCurve::new(3, knots, controls)?.with_closed(closed))
 }

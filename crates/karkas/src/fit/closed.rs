@@ -254,17 +254,25 @@ pub fn closed_bspline<const D: usize>(spline: &super::HermiteSpline<D>) -> Resul
 }
 
 /// The points of one period: a last point that repeats the first dropped; at least 3.
+///
+/// Runs once per closed fit call (its rounds check only their knots), as
+/// [`check_inputs`](super::penalty::check_inputs) does for the open fit, and is counted with it.
 fn one_period<const D: usize>(points: &[Point<D>]) -> Result<&[Point<D>]> {
+    #[cfg(test)]
+    super::penalty::checks::count();
     if let Some(index) = points.iter().position(|p| !p.is_finite()) {
         return Err(Error::NonFinitePoint { index });
     }
-    let period = match shared_end(points) {
-        Some(_) => &points[..points.len() - 1],
-        None => points,
+    let (period, what) = match shared_end(points) {
+        Some(_) => (
+            &points[..points.len() - 1],
+            "a closed fit (after dropping its last point, which repeats the first)",
+        ),
+        None => (points, "a closed fit"),
     };
     if period.len() < 3 {
         return Err(Error::TooFewPoints {
-            what: "a closed fit",
+            what,
             needed: 3,
             got: period.len(),
         });
@@ -530,4 +538,41 @@ fn step<const D: usize>(
         jump_sum,
         bending,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::penalty::checks;
+    use super::{fit_closed_curve, fit_closed_curve_adaptive};
+    use crate::fit::{uniform_knots, FitOptions};
+    use crate::Point;
+
+    /// 60 points of an ellipse with a bump: the tolerance fit needs several rounds.
+    fn frame() -> Vec<Point<2>> {
+        (0..60)
+            .map(|i| {
+                let a = std::f64::consts::TAU * i as f64 / 60.0;
+                let bump = 0.2 * (-(a - 1.0) * (a - 1.0) * 8.0).exp();
+                Point([3.0 * a.cos(), a.sin() + bump])
+            })
+            .collect()
+    }
+
+    #[test]
+    fn a_closed_tolerance_fit_checks_its_points_once() {
+        let points = frame();
+        let before = checks::so_far();
+        let result = fit_closed_curve_adaptive(&points, 1e-6, &FitOptions::default()).unwrap();
+        // Several rounds: each would count once more if it checked the points.
+        assert!(result.rounds >= 3, "{} rounds", result.rounds);
+        assert_eq!(checks::so_far() - before, 1);
+    }
+
+    #[test]
+    fn a_closed_fit_on_given_knots_checks_its_points_once() {
+        let points = frame();
+        let before = checks::so_far();
+        fit_closed_curve(&points, &uniform_knots(9), &FitOptions::default()).unwrap();
+        assert_eq!(checks::so_far() - before, 1);
+    }
 }

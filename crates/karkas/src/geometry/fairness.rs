@@ -45,7 +45,7 @@ const SAMPLES_PER_PIECE: usize = 48;
 /// Extra samples per degree of the pieces.
 const SAMPLES_PER_DEGREE: usize = 4;
 /// Values of `κ` and `dκ/ds` below this share of their scale count as zero.
-pub const ZERO_THRESHOLD: f64 = 1e-8;
+const ZERO_THRESHOLD: f64 = 1e-8;
 /// Relative accuracy of the fairness energy and the length.
 const RELATIVE_ACCURACY: f64 = 1e-10;
 /// Golden-section steps of a refinement (shrinks the bracket by `0.618^60 ~ 3e-13`).

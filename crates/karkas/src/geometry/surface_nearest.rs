@@ -280,80 +280,13 @@ pub(crate) fn newton_foot<S: Surface<D> + ?Sized, const D: usize>(
     let floor = 4.0 * f64::EPSILON * du.length().abs().max(dv.length().abs()).max(1.0);
     let tolerance = accuracy.max(floor);
     for _ in 0..MAX_STEPS {
-        let r = p - q;
-        let [_, su, sv, suu, suv, svv] = s.second_order(u, v);
-        let g = [su.dot(r), sv.dot(r)];
-        let gauss = [su.dot(su), su.dot(sv), sv.dot(sv)];
-        let full = [
-            gauss[0] + suu.dot(r),
-            gauss[1] + suv.dot(r),
-            gauss[2] + svv.dot(r),
-        ];
-        let solve = |h: [f64; 3]| {
-            let det = h[0] * h[2] - h[1] * h[1];
-            (det > 0.0 && h[0] > 0.0).then(|| {
-                (
-                    -(h[2] * g[0] - h[1] * g[1]) / det,
-                    -(h[0] * g[1] - h[1] * g[0]) / det,
-                )
-            })
-        };
-        let step = solve(full).or_else(|| solve(gauss)).or_else(|| {
-            // A singular first form (a degenerate edge): steepest descent along the
-            // parameter with a non-zero derivative.
-            let (eu, ev) = (gauss[0], gauss[2]);
-            (eu > 0.0 || ev > 0.0).then(|| {
-                (
-                    if eu > 0.0 { -g[0] / eu } else { 0.0 },
-                    if ev > 0.0 { -g[1] / ev } else { 0.0 },
-                )
-            })
-        });
-        let Some((mut step_u, mut step_v)) = step else {
+        let local = Quadratic::at(s, q, p, (u, v));
+        let Some(step) = local.step() else {
             break;
         };
-        // Projected Newton: a parameter held at an end of an open direction by a step
-        // pointing out of the domain stays there, and the other one takes the 1-D
-        // Newton step of the restricted problem.
-        let pushed = |t: f64, step: f64, d: Interval, closed: bool| {
-            !closed && ((t <= d.start && step < 0.0) || (t >= d.end && step > 0.0))
+        let Some((mut step_u, mut step_v)) = local.projected(step, (u, v), (du, dv), closed) else {
+            break;
         };
-        let one_d = |g: f64, h: f64, e: f64| {
-            if h > 0.0 {
-                -g / h
-            } else if e > 0.0 {
-                -g / e
-            } else {
-                0.0
-            }
-        };
-        match (
-            pushed(u, step_u, du, closed.0),
-            pushed(v, step_v, dv, closed.1),
-        ) {
-            // At a corner: the 1-D step along an edge of the domain when it points inside
-            // (the full step may leave across both ends while one gradient points in).
-            (true, true) => {
-                let along_v = one_d(g[1], full[2], gauss[2]);
-                let along_u = one_d(g[0], full[0], gauss[0]);
-                if along_v != 0.0 && !pushed(v, along_v, dv, closed.1) {
-                    (step_u, step_v) = (0.0, along_v);
-                } else if along_u != 0.0 && !pushed(u, along_u, du, closed.0) {
-                    (step_u, step_v) = (along_u, 0.0);
-                } else {
-                    break;
-                }
-            }
-            (true, false) => {
-                step_u = 0.0;
-                step_v = one_d(g[1], full[2], gauss[2]);
-            }
-            (false, true) => {
-                step_v = 0.0;
-                step_u = one_d(g[0], full[0], gauss[0]);
-            }
-            (false, false) => {}
-        }
         if !(step_u.is_finite() && step_v.is_finite()) {
             break;
         }
@@ -382,5 +315,109 @@ pub(crate) fn newton_foot<S: Surface<D> + ?Sized, const D: usize>(
         v,
         distance: dist2.sqrt(),
         point: p,
+    }
+}
+
+/// `|S(u, v) - q|^2 / 2` to second order at one parameter pair: its gradient `g`, the first
+/// form (Gauss–Newton's Hessian) and the full Hessian (both as `[uu, uv, vv]`).
+struct Quadratic {
+    g: [f64; 2],
+    gauss: [f64; 3],
+    full: [f64; 3],
+}
+
+impl Quadratic {
+    /// The quadratic at `(u, v)`, where the surface is at `p`.
+    fn at<S: Surface<D> + ?Sized, const D: usize>(
+        s: &S,
+        q: Point<D>,
+        p: Point<D>,
+        (u, v): (f64, f64),
+    ) -> Self {
+        let r = p - q;
+        let [_, su, sv, suu, suv, svv] = s.second_order(u, v);
+        let g = [su.dot(r), sv.dot(r)];
+        let gauss = [su.dot(su), su.dot(sv), sv.dot(sv)];
+        let full = [
+            gauss[0] + suu.dot(r),
+            gauss[1] + suv.dot(r),
+            gauss[2] + svv.dot(r),
+        ];
+        Quadratic { g, gauss, full }
+    }
+
+    /// The Newton step with the full Hessian where it is positive definite, Gauss–Newton's
+    /// where not, steepest descent where the first form is singular; `None` where the surface
+    /// has no derivative at all.
+    fn step(&self) -> Option<(f64, f64)> {
+        let g = self.g;
+        let solve = |h: [f64; 3]| {
+            let det = h[0] * h[2] - h[1] * h[1];
+            (det > 0.0 && h[0] > 0.0).then(|| {
+                (
+                    -(h[2] * g[0] - h[1] * g[1]) / det,
+                    -(h[0] * g[1] - h[1] * g[0]) / det,
+                )
+            })
+        };
+        solve(self.full).or_else(|| solve(self.gauss)).or_else(|| {
+            // A singular first form (a degenerate edge): steepest descent along the
+            // parameter with a non-zero derivative.
+            let (eu, ev) = (self.gauss[0], self.gauss[2]);
+            (eu > 0.0 || ev > 0.0).then(|| {
+                (
+                    if eu > 0.0 { -g[0] / eu } else { 0.0 },
+                    if ev > 0.0 { -g[1] / ev } else { 0.0 },
+                )
+            })
+        })
+    }
+
+    /// The 1-D Newton step along parameter `k` (0 for `u`, 1 for `v`) alone.
+    fn one_d(&self, k: usize) -> f64 {
+        let (g, h, e) = (self.g[k], self.full[2 * k], self.gauss[2 * k]);
+        if h > 0.0 {
+            -g / h
+        } else if e > 0.0 {
+            -g / e
+        } else {
+            0.0
+        }
+    }
+
+    /// Projected Newton: a parameter held at an end of an open direction by a step pointing
+    /// out of the domain stays there, and the other one takes the 1-D Newton step of the
+    /// restricted problem. `None` at a corner where no 1-D step along an edge points inside.
+    fn projected(
+        &self,
+        (step_u, step_v): (f64, f64),
+        (u, v): (f64, f64),
+        (du, dv): (Interval, Interval),
+        closed: (bool, bool),
+    ) -> Option<(f64, f64)> {
+        let pushed = |t: f64, step: f64, d: Interval, closed: bool| {
+            !closed && ((t <= d.start && step < 0.0) || (t >= d.end && step > 0.0))
+        };
+        match (
+            pushed(u, step_u, du, closed.0),
+            pushed(v, step_v, dv, closed.1),
+        ) {
+            // At a corner: the 1-D step along an edge of the domain when it points inside
+            // (the full step may leave across both ends while one gradient points in).
+            (true, true) => {
+                let along_v = self.one_d(1);
+                let along_u = self.one_d(0);
+                if along_v != 0.0 && !pushed(v, along_v, dv, closed.1) {
+                    Some((0.0, along_v))
+                } else if along_u != 0.0 && !pushed(u, along_u, du, closed.0) {
+                    Some((along_u, 0.0))
+                } else {
+                    None
+                }
+            }
+            (true, false) => Some((0.0, self.one_d(1))),
+            (false, true) => Some((self.one_d(0), 0.0)),
+            (false, false) => Some((step_u, step_v)),
+        }
     }
 }

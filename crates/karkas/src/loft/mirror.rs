@@ -9,7 +9,7 @@
 //! image exactly, so the whole surface is symmetric to rounding and as close to the offsets as
 //! the half loft. Where the half sections start off the centre plane (a flat bottom) the two
 //! halves are joined by the straight line between the mirrored start points, over
-//! `[1/2 - FLAT_HALF_WIDTH, 1/2 + FLAT_HALF_WIDTH]` of `v`.
+//! `[0.45, 0.55]` of `v`.
 
 use super::surface::Loft;
 use crate::bspline::BSplineSurface;
@@ -17,7 +17,7 @@ use crate::core::Grid;
 use crate::{Error, Point3, Result};
 
 /// Half the `v` range of a flat bottom between the two halves (when there is one).
-pub const FLAT_HALF_WIDTH: f64 = 0.05;
+const FLAT_HALF_WIDTH: f64 = 0.05;
 
 impl Loft {
     /// The whole body: this loft (its sections starting at `v = 0` on or near the mirror

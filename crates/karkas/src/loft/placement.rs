@@ -84,7 +84,46 @@ pub fn wing_frames(sections: &[WingPlacement]) -> Result<(Vec<SectionFrame>, Vec
             got: n,
         });
     }
-    let bad = |section: usize, reason: String| Error::LoftSection { section, reason };
+    check_placements(sections)?;
+    let (steps, stations) = span_steps(sections)?;
+    let frames = sections
+        .iter()
+        .enumerate()
+        .map(|(k, s)| {
+            let (span, z_scale) = match s.dihedral {
+                Some(d) => {
+                    let d = d.to_radians();
+                    (Point3::new([0.0, d.cos(), d.sin()]), 1.0)
+                }
+                None if k == 0 => (steps[0], 1.0),
+                None if k == n - 1 => (steps[n - 2], 1.0),
+                None => {
+                    let (a, b) = (steps[k - 1], steps[k]);
+                    let mean = (a + b) * 0.5;
+                    (mean * (1.0 / mean.norm()), (2.0 / (a.dot(b) + 1.0)).sqrt())
+                }
+            };
+            let x = Point3::new([1.0, 0.0, 0.0]);
+            let z = cross(x, span) * z_scale;
+            let twist = s.twist.to_radians();
+            SectionFrame {
+                origin: s.leading_edge,
+                x_axis: rotate(x, span, twist) * s.chord,
+                y_axis: rotate(z, span, twist) * s.chord,
+            }
+        })
+        .collect();
+    Ok((frames, stations))
+}
+
+/// The error of section `section` for `reason`.
+fn bad(section: usize, reason: String) -> Error {
+    Error::LoftSection { section, reason }
+}
+
+/// Checks that every leading edge, chord, twist and dihedral is finite and every chord
+/// positive.
+fn check_placements(sections: &[WingPlacement]) -> Result<()> {
     for (k, s) in sections.iter().enumerate() {
         if !s.leading_edge.is_finite() {
             return Err(bad(k, "the leading edge is not finite".into()));
@@ -96,6 +135,13 @@ pub fn wing_frames(sections: &[WingPlacement]) -> Result<(Vec<SectionFrame>, Vec
             return Err(bad(k, "the twist or dihedral is not finite".into()));
         }
     }
+    Ok(())
+}
+
+/// The unit `y`-`z` directions of the leading-edge polyline's steps and the span stations;
+/// errors for two leading edges at one station or one turning back along the span.
+fn span_steps(sections: &[WingPlacement]) -> Result<(Vec<Point3>, Vec<f64>)> {
+    let n = sections.len();
     let size = sections.iter().fold(0.0f64, |m, s| {
         m.max((s.leading_edge - sections[0].leading_edge).max_abs())
             .max(s.chord)
@@ -131,34 +177,7 @@ pub fn wing_frames(sections: &[WingPlacement]) -> Result<(Vec<SectionFrame>, Vec
         steps.push(step);
         stations[k] = stations[k - 1] + length;
     }
-    let frames = sections
-        .iter()
-        .enumerate()
-        .map(|(k, s)| {
-            let (span, z_scale) = match s.dihedral {
-                Some(d) => {
-                    let d = d.to_radians();
-                    (Point3::new([0.0, d.cos(), d.sin()]), 1.0)
-                }
-                None if k == 0 => (steps[0], 1.0),
-                None if k == n - 1 => (steps[n - 2], 1.0),
-                None => {
-                    let (a, b) = (steps[k - 1], steps[k]);
-                    let mean = (a + b) * 0.5;
-                    (mean * (1.0 / mean.norm()), (2.0 / (a.dot(b) + 1.0)).sqrt())
-                }
-            };
-            let x = Point3::new([1.0, 0.0, 0.0]);
-            let z = cross(x, span) * z_scale;
-            let twist = s.twist.to_radians();
-            SectionFrame {
-                origin: s.leading_edge,
-                x_axis: rotate(x, span, twist) * s.chord,
-                y_axis: rotate(z, span, twist) * s.chord,
-            }
-        })
-        .collect();
-    Ok((frames, stations))
+    Ok((steps, stations))
 }
 
 /// `a × b`.

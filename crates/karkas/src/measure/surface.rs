@@ -134,7 +134,7 @@ pub fn distance_to_implicit<I: ImplicitSurface + ?Sized>(
 
 /// Lattice steps along the largest side of the points' bounding box at which the patch of
 /// `F = 0` is sampled in [`hausdorff_points_implicit`].
-pub const PATCH_LATTICE_STEPS: usize = 64;
+const PATCH_LATTICE_STEPS: usize = 64;
 
 /// The two-sided Hausdorff distance between a point set and the patch of `F = 0` it covers
 /// (the rule of the command line's `hausdorff FILE --expr` and Python's

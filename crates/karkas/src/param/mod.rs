@@ -54,8 +54,5 @@ pub use condition::{condition_measure, paper_condition_measure, ConditionSummary
 pub use parameterization::{
     curve_parameters, grid_parameters, CurveParameterization, GridParameterization,
 };
-pub use relay::{
-    relay_grid, relay_surface, RelaidGrid, RelayOptions, DEFAULT_SUBSTEPS, SHRINK, SHRINK_ROUNDS,
-    UMBILIC_RATIO,
-};
+pub use relay::{relay_grid, relay_surface, RelaidGrid, RelayOptions, DEFAULT_SUBSTEPS};
 pub use spline::CubicSpline;

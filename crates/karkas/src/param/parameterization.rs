@@ -16,7 +16,7 @@
 //! - [`GridParameterization::Chord`]: the paper's rule: an origin node `(i*, j*)` gets
 //!   `(u, v) = (0, 0)`, and `u_i` (`v_j`) is the signed cumulative chord length along the grid
 //!   line `j = j*` (`i = i*`) through it; when that line is a pole (all its points one
-//!   point, within [`POLE_RELATIVE_TOLERANCE`] of the grid's extent: the nose of a body), the
+//!   point, within `1e-9` of the grid's extent: the nose of a body), the
 //!   nearest line that is not a pole is measured instead;
 //! - [`GridParameterization::AveragedChord`]: the step `u_i - u_{i-1}` is the mean over all
 //!   columns `j` of `|r_ij - r_{i-1,j}|` (likewise for `v`), starting at 0: less sensitive to
@@ -111,7 +111,7 @@ pub fn curve_parameters<const D: usize>(
 
 /// Lines of a grid whose points all lie within this fraction of the grid's extent of the
 /// first are poles (one point, e.g. the nose of a body).
-pub const POLE_RELATIVE_TOLERANCE: f64 = 1e-9;
+const POLE_RELATIVE_TOLERANCE: f64 = 1e-9;
 
 /// The line nearest to `line` (of `count`, nearer first, then lower) that is not a pole.
 fn nearest_line(line: usize, count: usize, pole: impl Fn(usize) -> bool) -> usize {

@@ -24,11 +24,11 @@
 //! - unless given, the steps are the largest that keep the spine and the rib inside the
 //!   interpolant's domain (in a closed direction: within half a period each way from the
 //!   start, so that a closed line is re-laid closed, its last node on its first); when a crossing falls outside it the steps are shrunk by
-//!   [`SHRINK`] and the net traced again, at most [`SHRINK_ROUNDS`] times.
+//!   0.85 and the net traced again, at most 24 times.
 //!
 //! Umbilics (principal curvatures equal, e.g. every point of a plane or sphere) have no
 //! principal directions: the relay refuses them with [`Error::UmbilicRegion`] at the first
-//! point met where `|k1 - k2| <= UMBILIC_RATIO max(|k1|, |k2|, 1 / L)` (`L` the grid's
+//! point met where `|k1 - k2| <= 0.1 max(|k1|, |k2|, 1 / L)` (`L` the grid's
 //! diameter). Every line is traced in a bounded number of steps.
 //!
 //! Cost: `O(N M)` for the interpolant, `O((M + N) substeps max(M, N))` frame evaluations for
@@ -44,13 +44,13 @@ use crate::{Error, Point3, Result};
 pub const DEFAULT_SUBSTEPS: usize = 32;
 
 /// The relative spread of the principal curvatures under which a point is an umbilic.
-pub const UMBILIC_RATIO: f64 = 0.1;
+const UMBILIC_RATIO: f64 = 0.1;
 
 /// The factor the automatic steps are shrunk by when a crossing falls outside the domain.
-pub const SHRINK: f64 = 0.85;
+const SHRINK: f64 = 0.85;
 
 /// The largest number of times the automatic steps are shrunk.
-pub const SHRINK_ROUNDS: usize = 24;
+const SHRINK_ROUNDS: usize = 24;
 
 /// How far (relative to the domain's span) the lines that are crossed to find the nodes run
 /// on beyond the domain (the interpolant continues its end patches): a line along an edge of
@@ -113,7 +113,7 @@ pub struct RelaidGrid {
 }
 
 /// The most nodes [`relay_grid`] lays (as `karkas surface relay --size` allows).
-pub const MAX_RELAY_NODES: usize = 1_000_000;
+const MAX_RELAY_NODES: usize = 1_000_000;
 
 /// Re-lays `grid` along the lines of curvature of its bicubic interpolant (chord-length
 /// parameters through node `(0, 0)`, not-a-knot ends or periodic in a closed direction), as

@@ -206,3 +206,25 @@ fn too_few_points_and_bad_corners_are_refused() {
     };
     assert!(fit_closed_curve(&points, &uniform_knots(5), &options).is_err());
 }
+
+#[test]
+fn too_few_points_after_dropping_a_repeated_last_point_say_so() {
+    let p = Point2::new([1.0, 2.0]);
+    let q = Point2::new([3.0, 4.0]);
+    let dropped = "a closed fit (after dropping its last point, which repeats the first) \
+                   needs at least 3 points, got 2";
+    for points in [vec![p, p, p], vec![p, q, p]] {
+        let knots = uniform_knots(5);
+        let by_knots = fit_closed_curve(&points, &knots, &FitOptions::default());
+        let by_tolerance = fit_closed_curve_adaptive(&points, 1e-3, &FitOptions::default());
+        for result in [by_knots.map(|_| ()), by_tolerance.map(|_| ())] {
+            assert_eq!(result.unwrap_err().to_string(), dropped);
+        }
+    }
+    // Two points, nothing dropped: the plain message.
+    let two = fit_closed_curve(&[p, q], &uniform_knots(5), &FitOptions::default());
+    assert_eq!(
+        two.unwrap_err().to_string(),
+        "a closed fit needs at least 3 points, got 2"
+    );
+}
