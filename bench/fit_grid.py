@@ -31,15 +31,17 @@ interior knots (at least 1):
     number of uniform interior knots in its chord-length parameters (``task=-1``), the job
     karkas is given.
 
-Distances from the truth, both ends included: 20,001 samples of each fit (uniform in its
-parameter, ends included) projected onto the true curve, and 20,001 samples of the true curve
+Distances from the truth, both ends included: 10,001 samples of each fit (uniform in its
+parameter, ends included) projected onto the true curve, and 10,001 samples of the true curve
 (uniform in arc length, ends included) projected onto the fit; each projection starts at the
-nearest of 100,001 samples of the curve projected onto and takes up to 6 Newton steps (kept
+nearest of 50,001 samples of the curve projected onto and takes up to 6 Newton steps (kept
 only where they bring it closer). Largest: over both ways; RMS: the truth's samples. The point
 of the truth nearest karkas's largest distance is reported as a share of the arc length ("end"
 when within 1% of an open end).
 
-Times: each fit timed in turn in one process (karkas, then splprep, repeated; medians):
+Times: wall and CPU time (the process's, user + system: the steadier figure on a loaded
+machine; on two threads it adds both threads') of each fit, timed in turn in one process
+(karkas, then splprep, repeated; medians):
 7 rounds at 10^3 points, 5 at 10^4, 3 at 10^5, 1 at 10^6. The first round is the call whose
 result is measured (splprep's in the K cell: the call that gave K). The whole grid runs once per thread
 count, each in a fresh process with RAYON_NUM_THREADS set before karkas is imported (splprep is
@@ -75,9 +77,9 @@ from scipy.spatial import cKDTree
 SIZES = (1_000, 10_000, 100_000, 1_000_000)
 NOISE = (1e-5, 1e-4, 1e-3, 3e-3, 1e-2)
 FACTORS = (0.5, 1.0, 2.0)
-FIT_SAMPLES = 20_001
-TRUTH_SAMPLES = 20_001
-SEED_SAMPLES = 100_001
+FIT_SAMPLES = 10_001
+TRUTH_SAMPLES = 10_001
+SEED_SAMPLES = 50_001
 CHECK_SIGMAS = 20.0
 
 
@@ -231,9 +233,9 @@ def run_cells(args, karkas):
                 pts = noisy_points(name, n, sigma, size)
                 s = n * (sigma * size) ** 2
                 smooth = lambda: splprep(pts.T, s=s, k=3, per=int(closed))[0]
-                rule_start = time.perf_counter()
+                rule_start, rule_cpu = time.perf_counter(), time.process_time()
                 rule_tck = smooth()
-                rule_s = time.perf_counter() - rule_start
+                rule_s, rule_cpu = time.perf_counter() - rule_start, time.process_time() - rule_cpu
                 rule = max(1, len(rule_tck[0]) - 8)
                 for factor in args.factors:
                     count = max(1, round(rule * factor))
@@ -246,15 +248,15 @@ def run_cells(args, karkas):
                     key = f"{name}/{n}/{sigma:g}/{factor:g}"
                     cell = dict(key=key, curve=name, n=n, sigma=sigma, factor=factor,
                                 rule=rule, knots=count, threads=os.environ.get("RAYON_NUM_THREADS"))
-                    start = time.perf_counter()
+                    start, cpu = time.perf_counter(), time.process_time()
                     fit = ours()
-                    ours_t = [time.perf_counter() - start]
+                    ours_t, ours_c = [time.perf_counter() - start], [time.process_time() - cpu]
                     if factor == 1.0:
-                        tck, peer_t = rule_tck, [rule_s]
+                        tck, peer_t, peer_c = rule_tck, [rule_s], [rule_cpu]
                     else:
-                        start = time.perf_counter()
+                        start, cpu = time.perf_counter(), time.process_time()
                         tck = peer()
-                        peer_t = [time.perf_counter() - start]
+                        peer_t, peer_c = [time.perf_counter() - start], [time.process_time() - cpu]
                     probe = fit(np.linspace(0.0, 1.0, 101))
                     cell["probe"] = probe.tolist()
                     cell["warnings"] = len(fit.warnings)
@@ -270,15 +272,20 @@ def run_cells(args, karkas):
                         cell["checked"] = bool(gap <= 1e-12 * size)
                     del fit, tck
                     for _ in range((args.rounds or rounds_for(n)) - 1):
-                        start = time.perf_counter()
+                        start, cpu = time.perf_counter(), time.process_time()
                         ours()
                         ours_t.append(time.perf_counter() - start)
-                        start = time.perf_counter()
+                        ours_c.append(time.process_time() - cpu)
+                        start, cpu = time.perf_counter(), time.process_time()
                         peer()
                         peer_t.append(time.perf_counter() - start)
+                        peer_c.append(time.process_time() - cpu)
                     cell.update(karkas_s=statistics.median(ours_t), splprep_s=statistics.median(peer_t),
+                                karkas_cpu=statistics.median(ours_c), splprep_cpu=statistics.median(peer_c),
                                 load=os.getloadavg()[0])
                     cells.append(cell)
+                    with open(args.out, "w") as f:
+                        json.dump(dict(threads=os.environ.get("RAYON_NUM_THREADS"), cells=cells), f)
                     print(f"  {key} knots {count}: karkas {cell['karkas_s'] * 1e3:.1f} ms, "
                           f"splprep {cell['splprep_s'] * 1e3:.1f} ms"
                           + (f", max {cell['karkas_max']:.2e} vs {cell['splprep_max']:.2e}" if measure else ""),
@@ -290,9 +297,7 @@ def child(args):
     warnings.simplefilter("ignore")
     import karkas
 
-    cells = run_cells(args, karkas)
-    with open(args.out, "w") as f:
-        json.dump(dict(threads=os.environ.get("RAYON_NUM_THREADS"), cells=cells), f)
+    run_cells(args, karkas)
 
 
 def table(runs, out):
@@ -300,14 +305,14 @@ def table(runs, out):
     first, *more = runs
     others = {r["threads"]: {c["key"]: c for c in r["cells"]} for r in more}
     heads = ["curve", "n", "sigma", "knots", "karkas ms (1 thr)", "splprep ms"]
-    heads += [f"ratio {r['threads']} thr" for r in runs]
+    heads += [f"ratio {r['threads']} thr" for r in runs] + ["CPU ratio 1 thr"]
     heads += ["max karkas", "max splprep", "RMS karkas", "RMS splprep", "worst at", "pass"]
     lines = ["| " + " | ".join(heads) + " |", "|" + "---|" * len(heads)]
     failing = []
     for c in first["cells"]:
         ratios = [c["splprep_s"] / c["karkas_s"]]
         ratios += [o[c["key"]]["splprep_s"] / o[c["key"]]["karkas_s"] for o in others.values() if c["key"] in o]
-        checked = c["checked"] and all(o[c["key"]]["checked"] for o in others.values() if c["key"] in o)
+        checked = c["checked"] and all(o[c["key"]].get("checked", False) for o in others.values() if c["key"] in o)
         fast = all(r >= 3.0 for r in ratios)
         close = c["karkas_max"] <= c["splprep_max"]
         where = c["karkas_where"]
@@ -319,6 +324,7 @@ def table(runs, out):
         knots = f"{c['knots']} ({'K' if c['factor'] == 1 else str(c['factor']) + 'K'})"
         row = [c["curve"], f"{c['n']:.0e}", f"{c['sigma']:g}", knots, f"{c['karkas_s'] * 1e3:.3g}",
                f"{c['splprep_s'] * 1e3:.3g}"] + [f"{r:.2f}" for r in ratios]
+        row += [f"{c['splprep_cpu'] / max(c['karkas_cpu'], 1e-9):.2f}"]
         row += [f"{c['karkas_max']:.2e}", f"{c['splprep_max']:.2e}", f"{c['karkas_rms']:.2e}",
                 f"{c['splprep_rms']:.2e}", at, verdict]
         lines.append("| " + " | ".join(row) + " |")
@@ -341,6 +347,9 @@ def main():
     ap.add_argument("--threads", default="1,2")
     ap.add_argument("--rounds", type=int, default=0, help="timing rounds (default by size)")
     ap.add_argument("--json", help="write every cell of every run here")
+    ap.add_argument("--work", help="keep each run's cells here (run-THREADS.json, written cell by cell)")
+    ap.add_argument("--table-from", help="print the table of the run files given (comma-separated), "
+                    "the first the measured run, as far as they got")
     # Internal: one run of the grid in this process.
     ap.add_argument("--child", action="store_true", help=argparse.SUPPRESS)
     ap.add_argument("--measure", action="store_true", help=argparse.SUPPRESS)
@@ -356,11 +365,20 @@ def main():
     if args.child:
         child(args)
         return
+    if args.table_from:
+        runs = []
+        for path in args.table_from.split(","):
+            with open(path) as f:
+                runs.append(json.load(f))
+        failing = table(runs, sys.stdout)
+        print("failing: " + (", ".join(failing) if failing else "none"))
+        return
     bad = [c for c in args.curves if c not in CURVES]
     if bad:
         sys.exit(f"--curves: unknown curve {bad[0]!r} (known: {', '.join(CURVES)})")
     runs = []
-    with tempfile.TemporaryDirectory() as tmp:
+    with tempfile.TemporaryDirectory() as scratch:
+        tmp = args.work or scratch
         for i, threads in enumerate(args.threads.split(",")):
             out = os.path.join(tmp, f"run-{threads}.json")
             cmd = [sys.executable, os.path.abspath(__file__), "--child", "--out", out]
