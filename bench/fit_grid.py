@@ -311,19 +311,21 @@ def table(runs, out):
     failing = []
     for c in first["cells"]:
         ratios = [c["splprep_s"] / c["karkas_s"]]
-        ratios += [o[c["key"]]["splprep_s"] / o[c["key"]]["karkas_s"] for o in others.values() if c["key"] in o]
+        ratios += [o[c["key"]]["splprep_s"] / o[c["key"]]["karkas_s"] if c["key"] in o else None
+                   for o in others.values()]
         checked = c["checked"] and all(o[c["key"]].get("checked", False) for o in others.values() if c["key"] in o)
-        fast = all(r >= 3.0 for r in ratios)
+        fast = all(r >= 3.0 for r in ratios if r is not None)
         close = c["karkas_max"] <= c["splprep_max"]
         where = c["karkas_where"]
         at = "end" if not CURVES[c["curve"]][2] and min(where, 1 - where) < 0.01 else f"{where:.2f}"
-        verdict = "yes" if fast and close and checked else ", ".join(
-            w for w, bad in (("time", not fast), ("max", not close), ("CHECK", not checked)) if bad)
+        verdict = "yes" if fast and close and checked and None not in ratios else ", ".join(
+            w for w, bad in (("time", not fast), ("max", not close), ("CHECK", not checked),
+                         ("a thread count not run", None in ratios)) if bad)
         if verdict != "yes":
             failing.append(c["key"])
         knots = f"{c['knots']} ({'K' if c['factor'] == 1 else str(c['factor']) + 'K'})"
         row = [c["curve"], f"{c['n']:.0e}", f"{c['sigma']:g}", knots, f"{c['karkas_s'] * 1e3:.3g}",
-               f"{c['splprep_s'] * 1e3:.3g}"] + [f"{r:.2f}" for r in ratios]
+               f"{c['splprep_s'] * 1e3:.3g}"] + ["not run" if r is None else f"{r:.2f}" for r in ratios]
         row += [f"{c['splprep_cpu'] / max(c['karkas_cpu'], 1e-9):.2f}"]
         row += [f"{c['karkas_max']:.2e}", f"{c['splprep_max']:.2e}", f"{c['karkas_rms']:.2e}",
                 f"{c['splprep_rms']:.2e}", at, verdict]
