@@ -717,6 +717,31 @@ fn duplicated_name(names: &[String]) -> Option<&'static str> {
 mod tests {
     use super::*;
 
+    /// A layout of `width` columns, `x` and `y` at `columns`, read by name with decimal points.
+    fn layout_of(sep: Separator, width: usize, (x, y): (usize, usize)) -> Layout {
+        Layout {
+            sep,
+            point: b'.',
+            point_open: false,
+            comma_decimals: false,
+            found: Found::ByName,
+            header: None,
+            width,
+            columns: Columns { x, y, z: None },
+            first_row: None,
+        }
+    }
+
+    /// Marsaglia's xorshift64 generator from `state` (nonzero).
+    fn xorshift(mut state: u64) -> impl FnMut() -> u64 {
+        move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state
+        }
+    }
+
     /// Commas or whitespace.
     fn sep_of(csv: bool) -> Separator {
         if csv {
@@ -759,21 +784,7 @@ mod tests {
 
     #[test]
     fn plain_rows_take_the_fast_path() {
-        let layout = Layout {
-            sep: Separator::Comma,
-            point: b'.',
-            point_open: false,
-            comma_decimals: false,
-            found: Found::ByName,
-            header: None,
-            width: 3,
-            columns: Columns {
-                x: 1,
-                y: 2,
-                z: None,
-            },
-            first_row: None,
-        };
+        let layout = layout_of(Separator::Comma, 3, (1, 2));
         let slot = [2, 0, 1];
         assert_eq!(
             fast_row::<2>(b"7, 1.5 ,-2e3", &layout, &slot),
@@ -786,21 +797,7 @@ mod tests {
         assert_eq!(fast_row::<2>(b"\"1\",2,3", &layout, &slot), None);
         assert_eq!(fast_row::<2>(b"1,2,3 # c", &layout, &slot), None);
         assert_eq!(fast_row::<2>(b"", &layout, &slot), None);
-        let layout = Layout {
-            sep: Separator::Whitespace,
-            point: b'.',
-            point_open: false,
-            comma_decimals: false,
-            found: Found::ByName,
-            header: None,
-            width: 2,
-            columns: Columns {
-                x: 0,
-                y: 1,
-                z: None,
-            },
-            first_row: None,
-        };
+        let layout = layout_of(Separator::Whitespace, 2, (0, 1));
         let slot = [0, 1];
         assert_eq!(fast_row::<2>(b" 1\t2 \r", &layout, &slot), Some([1.0, 2.0]));
         assert_eq!(fast_row::<2>(b"1 2#c", &layout, &slot), None);
@@ -853,13 +850,7 @@ mod tests {
     #[test]
     fn the_fast_path_agrees_with_the_careful_one() {
         const ALPHABET: &[u8] = b"0123456789.,-+e #\t\r\"xnaif ";
-        let mut state: u64 = 0x9e37_79b9_7f4a_7c15;
-        let mut next = move || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            state
-        };
+        let mut next = xorshift(0x9e37_79b9_7f4a_7c15);
         let mut agreed = 0;
         for k in 0..40_000 {
             let csv = k % 2 == 0;
@@ -868,21 +859,7 @@ mod tests {
                 .map(|_| ALPHABET[(next() % ALPHABET.len() as u64) as usize] as char)
                 .collect();
             let line = format!("{line}\n");
-            let layout = Layout {
-                sep: sep_of(csv),
-                point: b'.',
-                point_open: false,
-                comma_decimals: false,
-                found: Found::ByName,
-                header: None,
-                width: 2,
-                columns: Columns {
-                    x: 0,
-                    y: 1,
-                    z: None,
-                },
-                first_row: None,
-            };
+            let layout = layout_of(sep_of(csv), 2, (0, 1));
             let Some(fast) = fast_row::<2>(line.as_bytes(), &layout, &[0, 1]) else {
                 continue;
             };
@@ -901,13 +878,7 @@ mod tests {
     #[test]
     fn semicolons_tabs_and_decimal_commas_agree_with_the_careful_path() {
         const ALPHABET: &[u8] = b"0123456789012345678901234567890123456789.,;-+e #\t\"x ";
-        let mut state: u64 = 0x2545_f491_4f6c_dd1d;
-        let mut next = move || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            state
-        };
+        let mut next = xorshift(0x2545_f491_4f6c_dd1d);
         let mut agreed = 0;
         for k in 0..40_000 {
             let (sep, sep_text) = if k % 2 == 0 {
@@ -940,19 +911,10 @@ mod tests {
             let block = format!("{line}\n1{sep_text}2\n");
             for point in [b'.', b','] {
                 let layout = Layout {
-                    sep,
                     point,
-                    point_open: false,
                     comma_decimals: true,
-                    width: 2,
-                    columns: Columns {
-                        x: 0,
-                        y: 1,
-                        z: None,
-                    },
                     found: Found::NoHeader,
-                    first_row: None,
-                    header: None,
+                    ..layout_of(sep, 2, (0, 1))
                 };
                 let Some(points) = fast_lines::<2>(block.as_bytes(), &layout, &[0, 1]) else {
                     continue;
@@ -976,13 +938,7 @@ mod tests {
         // Rows of long numbers, followed by another row: the parser sees the bytes after
         // each number, as it does inside a block.
         const ALPHABET: &[u8] = b"0123456789012345678901234567890123456789.,-+e #\t\"x ";
-        let mut state: u64 = 0x853c_49e6_748f_ea9b;
-        let mut next = move || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            state
-        };
+        let mut next = xorshift(0x853c_49e6_748f_ea9b);
         let mut agreed = 0;
         for k in 0..40_000 {
             let csv = k % 2 == 0;
@@ -1015,21 +971,7 @@ mod tests {
                 };
             }
             let block = format!("{line}\n{}\n", if csv { "1,2" } else { "1 2" });
-            let layout = Layout {
-                sep: sep_of(csv),
-                point: b'.',
-                point_open: false,
-                comma_decimals: false,
-                found: Found::ByName,
-                header: None,
-                width: 2,
-                columns: Columns {
-                    x: 0,
-                    y: 1,
-                    z: None,
-                },
-                first_row: None,
-            };
+            let layout = layout_of(sep_of(csv), 2, (0, 1));
             let Some(points) = fast_lines::<2>(block.as_bytes(), &layout, &[0, 1]) else {
                 continue;
             };

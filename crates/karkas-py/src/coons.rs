@@ -25,21 +25,34 @@ fn point_lists<const D: usize>(
     lists: &[Bound<'_, PyAny>],
     what: &str,
 ) -> PyResult<Vec<Vec<Point<D>>>> {
+    let of_dimension = |i, pts: &PointsArray<'_>| match pts.dim() {
+        d if d == D => Ok(()),
+        d => Err(PointsError::new_err(format!(
+            "{what}[{i}] has {d} coordinates per point, expected {D}"
+        ))),
+    };
+    let copy = |pts: &PointsArray<'_>| as_points::<D>(&pts.flat()).to_vec();
+    counted_copies(lists, what, of_dimension, copy)
+}
+
+/// The arrays of a list (each (k, d), read as `what[i]`) each checked by `check`, then its
+/// copy by `copy` counted with the copies before it against `karkas.max_memory`.
+fn counted_copies<'py, T>(
+    lists: &[Bound<'py, PyAny>],
+    what: &str,
+    check: impl Fn(usize, &PointsArray<'py>) -> PyResult<()>,
+    copy: impl Fn(&PointsArray<'py>) -> T,
+) -> PyResult<Vec<T>> {
     let mut total: u128 = 0;
     lists
         .iter()
         .enumerate()
         .map(|(i, obj)| {
             let pts = PointsArray::extract(obj, &format!("{what}[{i}]"))?;
-            if pts.dim() != D {
-                return Err(PointsError::new_err(format!(
-                    "{what}[{i}] has {} coordinates per point, expected {D}",
-                    pts.dim()
-                )));
-            }
-            total = total.saturating_add(bytes_of(&[pts.len(), D], 8));
+            check(i, &pts)?;
+            total = total.saturating_add(bytes_of(&[pts.len(), pts.dim()], 8));
             check_memory(obj.py(), &format!("{what}[..{}]", i + 1), total)?;
-            Ok(as_points::<D>(&pts.flat()).to_vec())
+            Ok(copy(&pts))
         })
         .collect()
 }
@@ -155,20 +168,15 @@ pub struct CoonsInput {
 
 /// The point arrays of a list (each (k, d)), copied.
 fn given(lists: &[Bound<'_, PyAny>], what: &str) -> PyResult<Vec<FlatPoints>> {
-    let mut total: u128 = 0;
-    lists
-        .iter()
-        .enumerate()
-        .map(|(i, obj)| {
-            let pts = PointsArray::extract(obj, &format!("{what}[{i}]"))?;
-            total = total.saturating_add(bytes_of(&[pts.len(), pts.dim()], 8));
-            check_memory(obj.py(), &format!("{what}[..{}]", i + 1), total)?;
-            Ok(FlatPoints {
-                coords: pts.flat().into_owned(),
-                dim: pts.dim(),
-            })
-        })
-        .collect()
+    counted_copies(
+        lists,
+        what,
+        |_, _| Ok(()),
+        |pts| FlatPoints {
+            coords: pts.flat().into_owned(),
+            dim: pts.dim(),
+        },
+    )
 }
 
 /// The fit of the curves' points from `fit=`: `None` or `'spline'`, or `('ll', order)`.

@@ -508,30 +508,31 @@ pub fn export(
             flip_normals,
         },
     };
+    let request = Request(py, obj, &path, &options);
     if cap {
         let Ok(surface) = obj.cast::<PySurface>() else {
             return Err(OptionError::new_err(
                 "cap: only surfaces have boundary loops to cap",
             ));
         };
-        export_capped(py, obj, surface.get(), &path, &options)?;
+        request.capped(surface.get())?;
     } else if let Ok(curve) = obj.cast::<PyCurve>() {
-        export_curve(py, obj, curve.get(), &path, &options)?;
+        request.curve(curve.get())?;
     } else if let Ok(surface) = obj.cast::<PySurface>() {
-        export_surface(py, obj, surface.get(), &path, &options)?;
+        request.surface(surface.get())?;
     } else if obj.cast::<PyDiscreteSpline>().is_ok() {
-        export_discrete(py, obj, &path, &options)?;
+        request.discrete()?;
     } else if obj.cast::<PyTubeSurface>().is_ok() {
-        export_tube(py, obj, &path, &options)?;
+        request.tube()?;
     } else if ["t", "c", "k"]
         .iter()
         .all(|a| obj.hasattr(*a).unwrap_or(false))
     {
-        export_scipy_spline(py, obj, &path, &options)?;
+        request.scipy_spline()?;
     } else if let Ok(tuple) = obj.cast::<PyTuple>() {
-        export_mesh(py, tuple, &path, &options)?;
+        request.mesh(tuple)?;
     } else {
-        export_array(py, obj, &path, &options)?;
+        request.array()?;
     }
     Ok(path)
 }
@@ -586,67 +587,307 @@ fn flat_points(obj: &Bound<'_, PyAny>) -> PyResult<(Vec<f64>, usize)> {
     Ok((pts.flat().into_owned(), dim))
 }
 
-/// A curve: sampled (CSV, pictures, page) or its exact B-spline form (STEP, IGES).
-fn export_curve(
-    py: Python<'_>,
-    obj: &Bound<'_, PyAny>,
-    curve: &PyCurve,
-    path: &Path,
-    options: &Options,
-) -> PyResult<()> {
-    let no_exact = "this curve has no exact piecewise polynomial form";
-    let format = choose(path, options, &EXACT_CURVE_FORMATS, no_exact)?;
-    let dim = curve.inner.dim();
-    if format.is_cad() {
-        let (knots, control, degree, cdim) = bspline_curve(obj, no_exact)?;
-        let input = match &options.points {
-            Some((_, d)) if *d != cdim => {
-                return Err(OptionError::new_err(format!(
-                    "points have {d} coordinates, the curve {cdim}"
-                )))
-            }
-            Some((flat, _)) => flat.clone(),
-            None => Vec::new(),
+/// The flat coordinates of `points=` (none: empty), refused unless of dimension `dim`, that
+/// of `what` they are drawn over.
+fn input_points(options: &Options, dim: usize, what: &str) -> PyResult<Vec<f64>> {
+    match &options.points {
+        Some((_, d)) if *d != dim => Err(OptionError::new_err(format!(
+            "points have {d} coordinates, {what} {dim}"
+        ))),
+        Some((flat, _)) => Ok(flat.clone()),
+        None => Ok(Vec::new()),
+    }
+}
+
+/// The sample counts of a surface: `samples=`, else the default for `net=`'s lines (or for
+/// none), refused when `nu * nv` exceeds [`MAX_SAMPLES`].
+fn surface_counts(options: &Options) -> PyResult<(usize, usize)> {
+    let (nu, nv) = options.samples.unwrap_or_else(|| match &options.net {
+        Some(net) => (
+            default_surface_samples(net.rows()),
+            default_surface_samples(net.cols()),
+        ),
+        None => (default_surface_samples(0), default_surface_samples(0)),
+    });
+    if nu.saturating_mul(nv) > MAX_SAMPLES {
+        return Err(OptionError::new_err(format!(
+            "samples: at most {MAX_SAMPLES} samples can be written"
+        )));
+    }
+    Ok((nu, nv))
+}
+
+/// What `karkas.export` was asked, with the interpreter's token: the object to write, the
+/// file and the options.
+#[derive(Clone, Copy)]
+struct Request<'a, 'py>(Python<'py>, &'a Bound<'py, PyAny>, &'a Path, &'a Options);
+
+impl Request<'_, '_> {
+    /// A curve: sampled (CSV, pictures, page) or its exact B-spline form (STEP, IGES).
+    fn curve(&self, curve: &PyCurve) -> PyResult<()> {
+        let Request(py, obj, path, options) = *self;
+        let no_exact = "this curve has no exact piecewise polynomial form";
+        let format = choose(path, options, &EXACT_CURVE_FORMATS, no_exact)?;
+        let dim = curve.inner.dim();
+        if format.is_cad() {
+            let (knots, control, degree, cdim) = bspline_curve(obj, no_exact)?;
+            let input = input_points(options, cdim, "the curve")?;
+            return by_dim!(cdim, D => {
+                let b = BSplineCurve::<D>::new(degree, knots, as_points::<D>(&control).to_vec())
+                    .map_err(library_error)?;
+                let input = as_points::<D>(&input);
+                py.detach(|| {
+                    write_cad_curve_with_points(&b, input, format, path, path).map(|_| ())
+                })
+                .map_err(write_error)
+            });
+        }
+        let title = title_of(obj, options)?;
+        let input = input_points(options, dim, "the curve")?;
+        let n = match options.samples {
+            Some((n, _)) => n,
+            None => default_curve_samples(if input.is_empty() {
+                curve.inner.breakpoints().len().saturating_sub(1)
+            } else {
+                input.len() / dim
+            }),
         };
-        return by_dim!(cdim, D => {
+        let inner = &*curve.inner;
+        by_dim!(dim, D => {
+            let drawing = CurveDrawing {
+                title: &title,
+                input: as_points::<D>(&input),
+                closed_input: options.closed_points,
+                comb: options.comb,
+            };
+            py.detach(|| write_curve(&CurveView::<D>(inner), n, format, path, &drawing))
+                .map_err(write_error)
+        })
+    }
+
+    /// A surface: sampled (CSV, meshes, pictures, page) or its exact B-spline form.
+    fn surface(&self, surface: &PySurface) -> PyResult<()> {
+        let Request(py, obj, path, options) = *self;
+        let (format, exact) = surface_format(obj, path, options)?;
+        if let Some(b) = exact {
+            return py
+                .detach(|| write_cad_surface(&b, format, path))
+                .map_err(write_error);
+        }
+        let counts = surface_counts(options)?;
+        let title = title_of(obj, options)?;
+        let view = SurfaceView(&*surface.inner);
+        if OutputFormat::MESHES.contains(&format) && options.samples.is_none() {
+            return export_mesh_within(py, &view, format, path, &title, options);
+        }
+        let drawing = SurfaceDrawing {
+            title: &title,
+            net: options.net.as_ref(),
+            mesh: options.mesh,
+        };
+        py.detach(|| write_sampled_surface(&view, counts, format, path, &drawing))
+            .map_err(write_error)
+    }
+
+    /// A surface with its open planar boundary loops capped (`cap=True`, the command line's
+    /// `--cap`): STEP or IGES as a shell of its B-spline face and planar caps (a solid when it
+    /// closes, turned outwards), or a closed triangle mesh sampled uniformly
+    /// ([`body_mesh`]). Other formats, `mesh_tolerance`, and loops that are not planar (or none)
+    /// are refused naming `cap`.
+    fn capped(&self, surface: &PySurface) -> PyResult<()> {
+        let Request(py, obj, path, options) = *self;
+        let (format, exact) = surface_format(obj, path, options)?;
+        let refuse = |why: String| OptionError::new_err(format!("cap: {why}"));
+        if let Some(b) = exact {
+            return py.detach(|| {
+                let mut shell = CadShell::of_surfaces(std::slice::from_ref(&b));
+                shell.cap_free_loops().map_err(|e| refuse(e.to_string()))?;
+                if shell.is_closed() {
+                    shell.orient_outward();
+                }
+                let unit = CadUnits::default().cad_unit();
+                write_cad_shell(&shell, format, path, unit).map_err(write_error)
+            });
+        }
+        if !matches!(
+            format,
+            OutputFormat::Obj | OutputFormat::Stl | OutputFormat::Ply | OutputFormat::Glb
+        ) {
+            return Err(refuse(format!(
+                "only STEP, IGES and the triangle meshes (.step .iges .obj .stl .ply .glb) hold \
+             caps, not .{}",
+                format.extension()
+            )));
+        }
+        if options.mesh_tolerance.is_some() {
+            return Err(refuse(
+                "capped meshes are sampled uniformly (samples), not to mesh_tolerance".to_string(),
+            ));
+        }
+        let (nu, nv) = surface_counts(options)?;
+        let view = SurfaceView(&*surface.inner);
+        py.detach(|| {
+            let (_, _, samples) = sample_surface(&view, nu, nv);
+            let grid = Grid::from_row_major(nu, nv, samples).map_err(library_error)?;
+            let (body, _) = body_mesh(&grid, true).map_err(|e| refuse(e.to_string()))?;
+            write_mesh_as(format, path, &body, &options.mesh).map_err(write_error)
+        })
+    }
+
+    /// A discrete periodic spline: its values as CSV, a picture or the page; no exact form.
+    fn discrete(&self) -> PyResult<()> {
+        let Request(py, obj, path, options) = *self;
+        let format = choose(path, options, &CURVE_FORMATS, NO_EXACT_FORM)?;
+        let values = numpy_array(&obj.call_method0("values")?)?;
+        let (pts, dim) = PointsArray::extract_checked(&values, "values")?;
+        let flat = pts.flat().into_owned();
+        let title = title_of(obj, options)?;
+        let input = input_points(options, dim, "the spline")?;
+        let titles = DiscreteTitles {
+            picture: &title,
+            page: &title,
+        };
+        by_dim!(dim, D => py
+        .detach(|| write_discrete_curve(path, format, as_points::<D>(&flat), as_points::<D>(&input), &titles))
+        .map_err(write_error))
+    }
+
+    /// A discrete periodic tube: the CSV of its values `p,q,x,y,z`, or its closed grid as a mesh,
+    /// picture or page; no exact form.
+    fn tube(&self) -> PyResult<()> {
+        let Request(py, obj, path, options) = *self;
+        let format = choose(path, options, &SURFACE_FORMATS, NO_EXACT_FORM)?;
+        let title = title_of(obj, options)?;
+        if format == OutputFormat::Csv {
+            let values = grid3(&obj.call_method0("values")?)?;
+            return py
+                .detach(|| write_indexed_grid_csv(path, ["p", "q"], &values))
+                .map_err(write_error);
+        }
+        let grid = grid3(&obj.call_method0("closed_grid")?)?;
+        let drawing = SurfaceDrawing {
+            title: &title,
+            net: None,
+            mesh: options.mesh,
+        };
+        py.detach(|| write_surface(path, format, &grid, &drawing))
+            .map_err(write_error)
+    }
+
+    /// A point list `(n, d)` (drawn as a curve) or a grid `(nu, nv, 3)` (a frame: the page shows
+    /// it as the net), as `karkas convert` writes them.
+    fn array(&self) -> PyResult<()> {
+        let Request(py, obj, path, options) = *self;
+        let not_polynomial = "points and grids have no exact B-spline form";
+        let array = numpy_array(obj).map_err(|_| not_exportable(obj))?;
+        let ndim: usize = array.getattr("ndim")?.extract()?;
+        let title = options.title.clone().unwrap_or_default();
+        match ndim {
+            2 => {
+                let format = choose(path, options, &POINTS_FORMATS, not_polynomial)?;
+                let (pts, dim) = PointsArray::extract_checked(&array, "points")?;
+                let flat = pts.flat().into_owned();
+                let overlay = CurveOverlay::default();
+                by_dim!(dim, D => py
+                .detach(|| write_curve_figure(path, format, &title, as_points::<D>(&flat), &[], false, &overlay))
+                .map_err(write_error))
+            }
+            3 => {
+                let format = choose(path, options, &SURFACE_FORMATS, not_polynomial)?;
+                let grid = grid3(&array)?;
+                let drawing = SurfaceDrawing {
+                    title: &title,
+                    net: Some(options.net.as_ref().unwrap_or(&grid)),
+                    mesh: options.mesh,
+                };
+                py.detach(|| write_surface(path, format, &grid, &drawing))
+                    .map_err(write_error)
+            }
+            _ => Err(not_exportable(obj)),
+        }
+    }
+
+    /// A triangle mesh `(vertices (n, 3), faces (m, 3))`, as `read_mesh` returns it.
+    fn mesh(&self, tuple: &Bound<'_, PyTuple>) -> PyResult<()> {
+        let Request(py, _, path, options) = *self;
+        if tuple.len() != 2 {
+            return Err(not_exportable(tuple.as_any()));
+        }
+        let format = choose(
+            path,
+            options,
+            &MESH_FORMATS,
+            "meshes have no exact B-spline form",
+        )?;
+        let vertices = numpy_array(&tuple.get_item(0)?)?;
+        let (pts, dim) = PointsArray::extract_checked(&vertices, "vertices")?;
+        check_dim(dim, "vertices")?;
+        let flat = pts.flat().into_owned();
+        let positions: Vec<Point3> =
+            by_dim!(dim, D => as_points::<D>(&flat).iter().map(lift).collect());
+        let faces = py
+            .import("numpy")?
+            .call_method1("ascontiguousarray", (tuple.get_item(1)?, "int64"))?;
+        let faces: PyReadonlyArray2<'_, i64> = faces
+            .extract()
+            .map_err(|_| PyTypeError::new_err("faces must be an (m, 3) integer array"))?;
+        let faces = faces.as_array();
+        if faces.ncols() != 3 {
+            return Err(PyTypeError::new_err(
+                "faces must be an (m, 3) integer array",
+            ));
+        }
+        let n = positions.len().min(u32::MAX as usize) as i64;
+        let mut triangles = Vec::with_capacity(faces.nrows());
+        for (k, f) in faces.rows().into_iter().enumerate() {
+            if f.iter().any(|&i| !(0..n).contains(&i)) {
+                return Err(OptionError::new_err(format!(
+                    "faces[{k}] = {f}: vertex indices from 0 to {} expected",
+                    n - 1
+                )));
+            }
+            triangles.push([f[0] as u32, f[1] as u32, f[2] as u32]);
+        }
+        let mesh = TriangleMesh {
+            positions,
+            normals: Vec::new(),
+            triangles,
+            grid: None,
+        };
+        let title = options.title.clone().unwrap_or_default();
+        py.detach(|| write_triangle_mesh(path, format, mesh, &options.mesh, &title))
+            .map_err(write_error)
+    }
+
+    /// A SciPy B-spline: `scipy.interpolate.BSpline` (coefficients `(n, d)`, `d` in {2, 3}) or
+    /// `NdBSpline` of two variables (coefficients `(nu, nv, 3)`), written exactly as STEP or IGES
+    /// (a curve also as DXF, without input points).
+    fn scipy_spline(&self) -> PyResult<()> {
+        let Request(py, obj, path, options) = *self;
+        let only = "a SciPy B-spline is written as STEP, IGES or (a curve) DXF only";
+        let format = choose(path, options, &OutputFormat::CURVE_CAD, only)?;
+        let (t, c, k) = (obj.getattr("t")?, obj.getattr("c")?, obj.getattr("k")?);
+        if let Ok((tu, tv)) = t.extract::<(Bound<'_, PyAny>, Bound<'_, PyAny>)>() {
+            if format == OutputFormat::Dxf {
+                return Err(OptionError::new_err(format!(
+                    "{}: DXF is written for curves only (write .step or .iges)",
+                    path.display()
+                )));
+            }
+            let (ku, kv): (usize, usize) = k.extract()?;
+            let b = surface_form((&tu, &tv), &c, (ku, kv))?;
+            return py
+                .detach(|| write_cad_surface(&b, format, path))
+                .map_err(write_error);
+        }
+        let (knots, control, degree, dim) = curve_form(&t, &c, k.extract()?)?;
+        by_dim!(dim, D => {
             let b = BSplineCurve::<D>::new(degree, knots, as_points::<D>(&control).to_vec())
                 .map_err(library_error)?;
-            let input = as_points::<D>(&input);
-            py.detach(|| {
-                write_cad_curve_with_points(&b, input, format, path, path).map(|_| ())
-            })
-            .map_err(write_error)
-        });
+            py.detach(|| write_cad_curve(&b, format, path, path).map(|_| ()))
+                .map_err(write_error)
+        })
     }
-    let title = title_of(obj, options)?;
-    let input = match &options.points {
-        Some((flat, d)) if *d != dim => {
-            return Err(OptionError::new_err(format!(
-                "points have {d} coordinates, the curve {dim}"
-            )))
-        }
-        Some((flat, _)) => flat.clone(),
-        None => Vec::new(),
-    };
-    let n = match options.samples {
-        Some((n, _)) => n,
-        None => default_curve_samples(if input.is_empty() {
-            curve.inner.breakpoints().len().saturating_sub(1)
-        } else {
-            input.len() / dim
-        }),
-    };
-    let inner = &*curve.inner;
-    by_dim!(dim, D => {
-        let drawing = CurveDrawing {
-            title: &title,
-            input: as_points::<D>(&input),
-            closed_input: options.closed_points,
-            comb: options.comb,
-        };
-        py.detach(|| write_curve(&CurveView::<D>(inner), n, format, path, &drawing))
-            .map_err(write_error)
-    })
 }
 
 /// The format of a surface's export and, for STEP and IGES, the surface's exact B-spline
@@ -664,110 +905,6 @@ fn surface_format(
         None
     };
     Ok((format, exact))
-}
-
-/// A surface: sampled (CSV, meshes, pictures, page) or its exact B-spline form.
-fn export_surface(
-    py: Python<'_>,
-    obj: &Bound<'_, PyAny>,
-    surface: &PySurface,
-    path: &Path,
-    options: &Options,
-) -> PyResult<()> {
-    let (format, exact) = surface_format(obj, path, options)?;
-    if let Some(b) = exact {
-        return py
-            .detach(|| write_cad_surface(&b, format, path))
-            .map_err(write_error);
-    }
-    if options
-        .samples
-        .is_some_and(|(nu, nv)| nu.saturating_mul(nv) > MAX_SAMPLES)
-    {
-        return Err(OptionError::new_err(format!(
-            "samples: at most {MAX_SAMPLES} samples can be written"
-        )));
-    }
-    let title = title_of(obj, options)?;
-    let view = SurfaceView(&*surface.inner);
-    if OutputFormat::MESHES.contains(&format) && options.samples.is_none() {
-        return export_mesh_within(py, &view, format, path, &title, options);
-    }
-    let counts = options.samples.unwrap_or_else(|| match &options.net {
-        Some(net) => (
-            default_surface_samples(net.rows()),
-            default_surface_samples(net.cols()),
-        ),
-        None => (default_surface_samples(0), default_surface_samples(0)),
-    });
-    let drawing = SurfaceDrawing {
-        title: &title,
-        net: options.net.as_ref(),
-        mesh: options.mesh,
-    };
-    py.detach(|| write_sampled_surface(&view, counts, format, path, &drawing))
-        .map_err(write_error)
-}
-
-/// A surface with its open planar boundary loops capped (`cap=True`, the command line's
-/// `--cap`): STEP or IGES as a shell of its B-spline face and planar caps (a solid when it
-/// closes, turned outwards), or a closed triangle mesh sampled uniformly
-/// ([`body_mesh`]). Other formats, `mesh_tolerance`, and loops that are not planar (or none)
-/// are refused naming `cap`.
-fn export_capped(
-    py: Python<'_>,
-    obj: &Bound<'_, PyAny>,
-    surface: &PySurface,
-    path: &Path,
-    options: &Options,
-) -> PyResult<()> {
-    let (format, exact) = surface_format(obj, path, options)?;
-    let refuse = |why: String| OptionError::new_err(format!("cap: {why}"));
-    if let Some(b) = exact {
-        return py.detach(|| {
-            let mut shell = CadShell::of_surfaces(std::slice::from_ref(&b));
-            shell.cap_free_loops().map_err(|e| refuse(e.to_string()))?;
-            if shell.is_closed() {
-                shell.orient_outward();
-            }
-            let unit = CadUnits::default().cad_unit();
-            write_cad_shell(&shell, format, path, unit).map_err(write_error)
-        });
-    }
-    if !matches!(
-        format,
-        OutputFormat::Obj | OutputFormat::Stl | OutputFormat::Ply | OutputFormat::Glb
-    ) {
-        return Err(refuse(format!(
-            "only STEP, IGES and the triangle meshes (.step .iges .obj .stl .ply .glb) hold \
-             caps, not .{}",
-            format.extension()
-        )));
-    }
-    if options.mesh_tolerance.is_some() {
-        return Err(refuse(
-            "capped meshes are sampled uniformly (samples), not to mesh_tolerance".to_string(),
-        ));
-    }
-    let (nu, nv) = options.samples.unwrap_or_else(|| match &options.net {
-        Some(net) => (
-            default_surface_samples(net.rows()),
-            default_surface_samples(net.cols()),
-        ),
-        None => (default_surface_samples(0), default_surface_samples(0)),
-    });
-    if nu.saturating_mul(nv) > MAX_SAMPLES {
-        return Err(OptionError::new_err(format!(
-            "samples: at most {MAX_SAMPLES} samples can be written"
-        )));
-    }
-    let view = SurfaceView(&*surface.inner);
-    py.detach(|| {
-        let (_, _, samples) = sample_surface(&view, nu, nv);
-        let grid = Grid::from_row_major(nu, nv, samples).map_err(library_error)?;
-        let (body, _) = body_mesh(&grid, true).map_err(|e| refuse(e.to_string()))?;
-        write_mesh_as(format, path, &body, &options.mesh).map_err(write_error)
-    })
 }
 
 /// A surface as a mesh within `options.mesh_tolerance` (default
@@ -801,155 +938,6 @@ fn export_mesh_within(
         write_surface_at(view, (&found.us, &found.vs), format, path, &drawing)
     })
     .map_err(write_error)
-}
-
-/// A discrete periodic spline: its values as CSV, a picture or the page; no exact form.
-fn export_discrete(
-    py: Python<'_>,
-    obj: &Bound<'_, PyAny>,
-    path: &Path,
-    options: &Options,
-) -> PyResult<()> {
-    let format = choose(path, options, &CURVE_FORMATS, NO_EXACT_FORM)?;
-    let values = numpy_array(&obj.call_method0("values")?)?;
-    let (pts, dim) = PointsArray::extract_checked(&values, "values")?;
-    let flat = pts.flat().into_owned();
-    let title = title_of(obj, options)?;
-    let input = match &options.points {
-        Some((p, d)) if *d == dim => p.clone(),
-        Some((_, d)) => {
-            return Err(OptionError::new_err(format!(
-                "points have {d} coordinates, the spline {dim}"
-            )))
-        }
-        None => Vec::new(),
-    };
-    let titles = DiscreteTitles {
-        picture: &title,
-        page: &title,
-    };
-    by_dim!(dim, D => py
-        .detach(|| write_discrete_curve(path, format, as_points::<D>(&flat), as_points::<D>(&input), &titles))
-        .map_err(write_error))
-}
-
-/// A discrete periodic tube: the CSV of its values `p,q,x,y,z`, or its closed grid as a mesh,
-/// picture or page; no exact form.
-fn export_tube(
-    py: Python<'_>,
-    obj: &Bound<'_, PyAny>,
-    path: &Path,
-    options: &Options,
-) -> PyResult<()> {
-    let format = choose(path, options, &SURFACE_FORMATS, NO_EXACT_FORM)?;
-    let title = title_of(obj, options)?;
-    if format == OutputFormat::Csv {
-        let values = grid3(&obj.call_method0("values")?)?;
-        return py
-            .detach(|| write_indexed_grid_csv(path, ["p", "q"], &values))
-            .map_err(write_error);
-    }
-    let grid = grid3(&obj.call_method0("closed_grid")?)?;
-    let drawing = SurfaceDrawing {
-        title: &title,
-        net: None,
-        mesh: options.mesh,
-    };
-    py.detach(|| write_surface(path, format, &grid, &drawing))
-        .map_err(write_error)
-}
-
-/// A point list `(n, d)` (drawn as a curve) or a grid `(nu, nv, 3)` (a frame: the page shows
-/// it as the net), as `karkas convert` writes them.
-fn export_array(
-    py: Python<'_>,
-    obj: &Bound<'_, PyAny>,
-    path: &Path,
-    options: &Options,
-) -> PyResult<()> {
-    let not_polynomial = "points and grids have no exact B-spline form";
-    let array = numpy_array(obj).map_err(|_| not_exportable(obj))?;
-    let ndim: usize = array.getattr("ndim")?.extract()?;
-    let title = options.title.clone().unwrap_or_default();
-    match ndim {
-        2 => {
-            let format = choose(path, options, &POINTS_FORMATS, not_polynomial)?;
-            let (pts, dim) = PointsArray::extract_checked(&array, "points")?;
-            let flat = pts.flat().into_owned();
-            let overlay = CurveOverlay::default();
-            by_dim!(dim, D => py
-                .detach(|| write_curve_figure(path, format, &title, as_points::<D>(&flat), &[], false, &overlay))
-                .map_err(write_error))
-        }
-        3 => {
-            let format = choose(path, options, &SURFACE_FORMATS, not_polynomial)?;
-            let grid = grid3(&array)?;
-            let drawing = SurfaceDrawing {
-                title: &title,
-                net: Some(options.net.as_ref().unwrap_or(&grid)),
-                mesh: options.mesh,
-            };
-            py.detach(|| write_surface(path, format, &grid, &drawing))
-                .map_err(write_error)
-        }
-        _ => Err(not_exportable(obj)),
-    }
-}
-
-/// A triangle mesh `(vertices (n, 3), faces (m, 3))`, as `read_mesh` returns it.
-fn export_mesh(
-    py: Python<'_>,
-    tuple: &Bound<'_, PyTuple>,
-    path: &Path,
-    options: &Options,
-) -> PyResult<()> {
-    if tuple.len() != 2 {
-        return Err(not_exportable(tuple.as_any()));
-    }
-    let format = choose(
-        path,
-        options,
-        &MESH_FORMATS,
-        "meshes have no exact B-spline form",
-    )?;
-    let vertices = numpy_array(&tuple.get_item(0)?)?;
-    let (pts, dim) = PointsArray::extract_checked(&vertices, "vertices")?;
-    check_dim(dim, "vertices")?;
-    let flat = pts.flat().into_owned();
-    let positions: Vec<Point3> =
-        by_dim!(dim, D => as_points::<D>(&flat).iter().map(lift).collect());
-    let faces = py
-        .import("numpy")?
-        .call_method1("ascontiguousarray", (tuple.get_item(1)?, "int64"))?;
-    let faces: PyReadonlyArray2<'_, i64> = faces
-        .extract()
-        .map_err(|_| PyTypeError::new_err("faces must be an (m, 3) integer array"))?;
-    let faces = faces.as_array();
-    if faces.ncols() != 3 {
-        return Err(PyTypeError::new_err(
-            "faces must be an (m, 3) integer array",
-        ));
-    }
-    let n = positions.len().min(u32::MAX as usize) as i64;
-    let mut triangles = Vec::with_capacity(faces.nrows());
-    for (k, f) in faces.rows().into_iter().enumerate() {
-        if f.iter().any(|&i| !(0..n).contains(&i)) {
-            return Err(OptionError::new_err(format!(
-                "faces[{k}] = {f}: vertex indices from 0 to {} expected",
-                n - 1
-            )));
-        }
-        triangles.push([f[0] as u32, f[1] as u32, f[2] as u32]);
-    }
-    let mesh = TriangleMesh {
-        positions,
-        normals: Vec::new(),
-        triangles,
-        grid: None,
-    };
-    let title = options.title.clone().unwrap_or_default();
-    py.detach(|| write_triangle_mesh(path, format, mesh, &options.mesh, &title))
-        .map_err(write_error)
 }
 
 /// The `TypeError` for an object [`export`] cannot write.
@@ -992,40 +980,6 @@ fn curve_form(
     let count = knots.len().saturating_sub(k + 1);
     control.truncate(count * dim);
     Ok((knots, control, k, dim))
-}
-
-/// A SciPy B-spline: `scipy.interpolate.BSpline` (coefficients `(n, d)`, `d` in {2, 3}) or
-/// `NdBSpline` of two variables (coefficients `(nu, nv, 3)`), written exactly as STEP or IGES
-/// (a curve also as DXF, without input points).
-pub fn export_scipy_spline(
-    py: Python<'_>,
-    obj: &Bound<'_, PyAny>,
-    path: &Path,
-    options: &Options,
-) -> PyResult<()> {
-    let only = "a SciPy B-spline is written as STEP, IGES or (a curve) DXF only";
-    let format = choose(path, options, &OutputFormat::CURVE_CAD, only)?;
-    let (t, c, k) = (obj.getattr("t")?, obj.getattr("c")?, obj.getattr("k")?);
-    if let Ok((tu, tv)) = t.extract::<(Bound<'_, PyAny>, Bound<'_, PyAny>)>() {
-        if format == OutputFormat::Dxf {
-            return Err(OptionError::new_err(format!(
-                "{}: DXF is written for curves only (write .step or .iges)",
-                path.display()
-            )));
-        }
-        let (ku, kv): (usize, usize) = k.extract()?;
-        let b = surface_form((&tu, &tv), &c, (ku, kv))?;
-        return py
-            .detach(|| write_cad_surface(&b, format, path))
-            .map_err(write_error);
-    }
-    let (knots, control, degree, dim) = curve_form(&t, &c, k.extract()?)?;
-    by_dim!(dim, D => {
-        let b = BSplineCurve::<D>::new(degree, knots, as_points::<D>(&control).to_vec())
-            .map_err(library_error)?;
-        py.detach(|| write_cad_curve(&b, format, path, path).map(|_| ()))
-            .map_err(write_error)
-    })
 }
 
 /// The exact B-spline surface of `obj` by its `to_bspline()`: `((tu, tv), c, (ku, kv))`.

@@ -147,6 +147,20 @@ fn scalar_or_array<'py>(
     Ok(array_of(py, shape, values)?.into_any())
 }
 
+/// One value a parameter of `p` by `f` (given the flat parameters and the output; `work` a
+/// parameter, for [`maybe_detach`]): a float for a scalar parameter, else an array of its shape.
+fn per_parameter<'py>(
+    py: Python<'py>,
+    p: &Params<'_>,
+    work: usize,
+    f: impl FnOnce(&[f64], &mut [f64]) + Send,
+) -> PyResult<Bound<'py, PyAny>> {
+    let flat = p.flat().into_owned();
+    let mut out = vec![0.0; flat.len()];
+    maybe_detach(py, work * flat.len(), || f(&flat, &mut out));
+    scalar_or_array(py, matches!(p, Params::Scalar(_)), &p.shape(), &out)
+}
+
 /// A new float64 array of `shape` holding `values` (row-major).
 fn array_of<'py>(
     py: Python<'py>,
@@ -227,23 +241,12 @@ impl PyCurve {
         let tol = check_tol(tol)?;
         let (a, b) = self.inner.domain();
         let t0 = t0.unwrap_or(a);
-        let (scalar, shape, t1s) = match t1 {
-            None => (true, Vec::new(), vec![b]),
-            Some(obj) => {
-                let p = Params::extract(obj, "t1")?;
-                (
-                    matches!(p, Params::Scalar(_)),
-                    p.shape(),
-                    p.flat().into_owned(),
-                )
-            }
+        let t1 = match t1 {
+            None => Params::Scalar(b),
+            Some(obj) => Params::extract(obj, "t1")?,
         };
-        let mut out = vec![0.0; t1s.len()];
         let inner = &self.inner;
-        maybe_detach(py, 64 * t1s.len(), || {
-            inner.arc_lengths(t0, &t1s, tol, &mut out)
-        });
-        scalar_or_array(py, scalar, &shape, &out)
+        per_parameter(py, &t1, 64, |t1s, out| inner.arc_lengths(t0, t1s, tol, out))
     }
 
     /// Parameter reached after a given arc length.
@@ -289,18 +292,11 @@ impl PyCurve {
     ) -> PyResult<Bound<'py, PyAny>> {
         let tol = check_tol(tol)?;
         let t0 = t0.unwrap_or(self.inner.domain().0);
-        let p = Params::extract(s, "s")?;
-        let (scalar, shape, lengths) = (
-            matches!(p, Params::Scalar(_)),
-            p.shape(),
-            p.flat().into_owned(),
-        );
-        let mut out = vec![0.0; lengths.len()];
+        let s = Params::extract(s, "s")?;
         let inner = &self.inner;
-        maybe_detach(py, 256 * lengths.len(), || {
-            inner.inverse_arc_lengths(t0, &lengths, tol, &mut out)
-        });
-        scalar_or_array(py, scalar, &shape, &out)
+        per_parameter(py, &s, 256, |lengths, out| {
+            inner.inverse_arc_lengths(t0, lengths, tol, out)
+        })
     }
 
     /// Curvature of the curve.
@@ -335,12 +331,9 @@ impl PyCurve {
         py: Python<'py>,
         t: &Bound<'py, PyAny>,
     ) -> PyResult<Bound<'py, PyAny>> {
-        let p = Params::extract(t, "t")?;
-        let ts = p.flat().into_owned();
-        let mut out = vec![0.0; ts.len()];
         let inner = &self.inner;
-        maybe_detach(py, ts.len(), || inner.curvatures(&ts, &mut out));
-        scalar_or_array(py, matches!(p, Params::Scalar(_)), &p.shape(), &out)
+        let t = Params::extract(t, "t")?;
+        per_parameter(py, &t, 1, |ts, out| inner.curvatures(ts, out))
     }
 
     /// Torsion of a space curve.
@@ -376,12 +369,11 @@ impl PyCurve {
                 "torsion is defined for curves in 3-D only (this curve is 2-D)",
             ));
         }
-        let p = Params::extract(t, "t")?;
-        let ts = p.flat().into_owned();
-        let mut out = vec![0.0; ts.len()];
         let inner = &self.inner;
-        maybe_detach(py, ts.len(), || inner.torsions(&ts, &mut out));
-        scalar_or_array(py, matches!(p, Params::Scalar(_)), &p.shape(), &out)
+        let t = Params::extract(t, "t")?;
+        per_parameter(py, &t, 1, |ts, out| {
+            inner.torsions(ts, out);
+        })
     }
 
     /// Nearest points of the curve (orthogonal projection).

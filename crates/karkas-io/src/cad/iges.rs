@@ -300,58 +300,17 @@ fn rational_surface_parameters(s: &NurbsSurface<3>) -> Vec<String> {
     p
 }
 
+/// Entity 126 of a polynomial curve: unit weights, so `PROP3 = 1`; closed as
+/// [`curve_closed`] tells.
 fn curve_parameters(c: &BSplineCurve<3>) -> Vec<String> {
-    let n = c.control_points().len();
-    let planar = c.control_points().iter().all(|p| p[2] == 0.0);
-    let d = c.domain();
-    let mut p = vec![
-        "126".to_owned(),
-        (n - 1).to_string(),
-        c.degree().to_string(),
-        u8::from(planar).to_string(),
-        u8::from(curve_closed(c)).to_string(),
-        "1".to_owned(),
-        "0".to_owned(),
-    ];
-    p.extend(c.knots().iter().map(|&k| real(k)));
-    p.extend((0..n).map(|_| real(1.0)));
-    for q in c.control_points() {
-        p.extend([real(q[0]), real(q[1]), real(q[2])]);
-    }
-    p.extend([real(d.start), real(d.end)]);
-    let normal = if planar { [0.0, 0.0, 1.0] } else { [0.0; 3] };
-    p.extend(normal.iter().map(|&x| real(x)));
-    p
+    rational_curve_parameters(&NurbsCurve::from_bspline(c).with_closed(curve_closed(c)))
 }
 
+/// Entity 128 of a polynomial surface: unit weights, so `PROP3 = 1`; closed as
+/// [`surface_closed`] tells.
 fn surface_parameters(s: &BSplineSurface<3>) -> Vec<String> {
-    let grid = s.control_points();
-    let (rows, cols) = (grid.rows(), grid.cols());
-    let (du, dv) = (s.domain_u(), s.domain_v());
-    let mut p = vec![
-        "128".to_owned(),
-        (rows - 1).to_string(),
-        (cols - 1).to_string(),
-        s.degree_u().to_string(),
-        s.degree_v().to_string(),
-        u8::from(surface_closed(s).0).to_string(),
-        u8::from(surface_closed(s).1).to_string(),
-        "1".to_owned(),
-        "0".to_owned(),
-        "0".to_owned(),
-    ];
-    p.extend(s.knots_u().iter().map(|&k| real(k)));
-    p.extend(s.knots_v().iter().map(|&k| real(k)));
-    p.extend((0..rows * cols).map(|_| real(1.0)));
-    // The first index (u) runs fastest.
-    for j in 0..cols {
-        for i in 0..rows {
-            let q = grid.get(i, j);
-            p.extend([real(q[0]), real(q[1]), real(q[2])]);
-        }
-    }
-    p.extend([real(du.start), real(du.end), real(dv.start), real(dv.end)]);
-    p
+    let (closed_u, closed_v) = surface_closed(s);
+    rational_surface_parameters(&NurbsSurface::from_bspline(s).with_closed(closed_u, closed_v))
 }
 
 /// A Hollerith string `nHtext`.

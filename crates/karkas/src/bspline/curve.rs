@@ -23,13 +23,10 @@ pub struct BSplineCurve<const D: usize> {
     closed: bool,
 }
 
-/// Checks a clamped knot vector of degree `degree` for `count` control points.
-pub(crate) fn check_knots(degree: usize, knots: &[f64], count: usize) -> Result<()> {
-    let invalid = |index: usize, reason: &'static str| Error::InvalidKnot {
-        index,
-        value: knots.get(index).copied().unwrap_or(f64::NAN),
-        reason,
-    };
+/// Checks what every B-spline's knot vector of degree `degree` for `count` control points
+/// must be: the degree in `1..=MAX_DEGREE`, at least `degree + 1` control points, `count +
+/// degree + 1` knots, finite and nondecreasing (knots repeat in a B-spline's knot vector).
+pub(super) fn check_sizes(degree: usize, knots: &[f64], count: usize) -> Result<()> {
     if degree == 0 || degree > MAX_DEGREE {
         return Err(Error::InvalidOrder {
             order: degree,
@@ -50,8 +47,17 @@ pub(crate) fn check_knots(degree: usize, knots: &[f64], count: usize) -> Result<
             got: knots.len(),
         });
     }
-    // Finite and nondecreasing (knots repeat in a B-spline's knot vector).
-    check_order(knots, false)?;
+    check_order(knots, false)
+}
+
+/// Checks a clamped knot vector of degree `degree` for `count` control points.
+pub(crate) fn check_knots(degree: usize, knots: &[f64], count: usize) -> Result<()> {
+    let invalid = |index: usize, reason: &'static str| Error::InvalidKnot {
+        index,
+        value: knots.get(index).copied().unwrap_or(f64::NAN),
+        reason,
+    };
+    check_sizes(degree, knots, count)?;
     let (first, last) = (knots[0], knots[knots.len() - 1]);
     if knots[..=degree].iter().any(|&k| k != first) {
         return Err(invalid(

@@ -3,8 +3,7 @@
 //! homogeneous numerator `A = sum N w P` and denominator `w = sum N w` into those of
 //! `A / w` (Piegl and Tiller, *The NURBS Book*, (4.8) and (4.20); algorithms A4.2 and A4.4).
 
-use super::MAX_DEGREE;
-use crate::core::knots::check_order;
+use super::curve::check_sizes;
 use crate::{Error, Point, Result};
 
 /// Checks the knot vector of a B-spline of degree `degree` with `count` control points, as
@@ -13,27 +12,7 @@ use crate::{Error, Point, Result};
 /// knots[count]]`, no value repeated more than `degree + 1` times and none strictly inside
 /// the domain more than `degree` times (the curve would break there).
 pub(crate) fn check_general_knots(degree: usize, knots: &[f64], count: usize) -> Result<()> {
-    if degree == 0 || degree > MAX_DEGREE {
-        return Err(Error::InvalidOrder {
-            order: degree,
-            reason: "a B-spline degree must be in 1..=128",
-        });
-    }
-    if count < degree + 1 {
-        return Err(Error::TooFewPoints {
-            what: "a B-spline (control points)",
-            needed: degree + 1,
-            got: count,
-        });
-    }
-    if knots.len() != count + degree + 1 {
-        return Err(Error::CountMismatch {
-            what: "knots of a B-spline (control points + degree + 1)",
-            expected: count + degree + 1,
-            got: knots.len(),
-        });
-    }
-    check_order(knots, false)?;
+    check_sizes(degree, knots, count)?;
     let (start, end) = (knots[degree], knots[count]);
     if end <= start {
         return Err(Error::InvalidKnot {

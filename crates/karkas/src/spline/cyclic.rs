@@ -47,24 +47,61 @@ pub(crate) fn periodic_slopes<const D: usize>(
     let p = n - 1;
     let step = |k: usize| knots[k + 1] - knots[k];
     let divided = |k: usize, h: f64| (values[k + 1] - values[k]) * (1.0 / h);
-    let singular = |row: usize, pivot: f64| Error::SingularSystem { row, pivot };
-
     // The last row (unknown p - 1): its coefficient of m_0, its diagonal, its right-hand side
     // (eliminated as the forward pass goes), and its coefficient of m_{p-2}.
     let (h_pen, h_last) = (step(p - 2), step(p - 1));
     let (d_pen, d_last) = (divided(p - 2, h_pen), divided(p - 1, h_last));
-    let mut e = 0.5 * h_pen;
-    let mut d = h_pen + h_last;
-    let mut f = (d_pen * h_last + d_last * h_pen) * 1.5;
-    let lower_last = 0.5 * h_last;
+    let last_row = LastRow {
+        e: 0.5 * h_pen,
+        d: h_pen + h_last,
+        f: (d_pen * h_last + d_last * h_pen) * 1.5,
+    };
+    let mut forward = eliminate_forward(knots, values, last_row, (h_last, d_last))?;
+    forward.last_row.e = if forward.filling {
+        forward.last_row.e
+    } else {
+        0.0
+    } + 0.5 * h_last;
+    substitute_back(forward)
+}
 
-    // Row i normalised: m_i + upper[i] m_{i+1} + fill[i] m_{p-1} = slopes[i].
+/// The last row `e m_i + d m_{p-1} = f` while the forward pass eliminates its first unknowns.
+struct LastRow<const D: usize> {
+    e: f64,
+    d: f64,
+    f: Point<D>,
+}
+
+/// The rows `0..p-1` after the forward pass, and the last row with them eliminated.
+struct Forward<const D: usize> {
+    /// Row i normalised: `m_i + upper[i] m_{i+1} + fill[i] m_{p-1} = slopes[i]` (`fill`
+    /// shorter where it was dropped).
+    upper: Vec<f64>,
+    fill: Vec<f64>,
+    slopes: Vec<Point<D>>,
+    /// Whether the fill was still carried at the last row (else `last_row.e` is dropped too).
+    filling: bool,
+    last_row: LastRow<D>,
+}
+
+/// The forward pass over the rows `0..p-1`, starting from the step and divided difference of
+/// the seam's last piece (`h_{p-1}`, `delta_{p-1}`).
+fn eliminate_forward<const D: usize>(
+    knots: &[f64],
+    values: &[Point<D>],
+    LastRow {
+        mut e,
+        mut d,
+        mut f,
+    }: LastRow<D>,
+    (mut hp, mut dp): (f64, Point<D>),
+) -> Result<Forward<D>> {
+    let p = knots.len() - 1;
     // (Filled as they come: no pass to zero them first.)
     let mut upper = Vec::with_capacity(p - 1);
-    let mut slopes = Vec::with_capacity(n);
+    let mut slopes = Vec::with_capacity(p + 1);
     let mut fill: Vec<f64> = Vec::new();
     let mut filling = true;
-    let (mut hp, mut dp) = (h_last, d_last);
     // Row 0's coefficient of m_{p-1} is its "lower" one: start the fill at -1 times it.
     let (mut u_prev, mut s_prev, mut y_prev) = (0.0, -1.0, Point::ZERO);
     let rows = knots.windows(2).zip(values.windows(2)).take(p - 1);
@@ -75,7 +112,7 @@ pub(crate) fn periodic_slopes<const D: usize>(
         let rhs = (dp * hc + dc * hp) * 1.5;
         let pivot = diag - lower * u_prev;
         if !(pivot > 0.0 && pivot <= f64::MAX) {
-            return Err(singular(i, pivot));
+            return Err(Error::SingularSystem { row: i, pivot });
         }
         // The chain from row to row is u: its own division, off the one of 1 / pivot.
         let u = above / pivot;
@@ -98,15 +135,36 @@ pub(crate) fn periodic_slopes<const D: usize>(
         (hp, dp) = (hc, dc);
         (u_prev, s_prev, y_prev) = (u, s, y);
     }
+    let last_row = LastRow { e, d, f };
+    Ok(Forward {
+        upper,
+        fill,
+        slopes,
+        filling,
+        last_row,
+    })
+}
 
-    // Row p - 2 reaches m_{p-1} through both its upper and its fill coefficient.
-    let e = if filling { e } else { 0.0 } + lower_last;
+/// The last slope from the last row (row `p - 2` reaches `m_{p-1}` through both its upper and
+/// its fill coefficient), then the backward pass, and `m_{n-1} = m_0`.
+fn substitute_back<const D: usize>(forward: Forward<D>) -> Result<Vec<Point<D>>> {
+    let Forward {
+        upper,
+        fill,
+        mut slopes,
+        last_row: LastRow { e, d, f },
+        ..
+    } = forward;
+    let p = upper.len() + 1;
     let g = upper[p - 2] + fill.get(p - 2).copied().unwrap_or(0.0);
     let y_pen = slopes[p - 2];
     let f = f.add_scaled(-e, y_pen);
     let d = d - e * g;
     if !(d > 0.0 && d.is_finite()) {
-        return Err(singular(p - 1, d));
+        return Err(Error::SingularSystem {
+            row: p - 1,
+            pivot: d,
+        });
     }
     let last = f * (1.0 / d);
     slopes.push(last);

@@ -114,6 +114,122 @@ pub(crate) struct SlopeSystem {
     pub(super) upper_prime: Vec<f64>,
 }
 
+/// The C^2 row of an inner knot between steps `hp` and `hc`: `lambda`, `mu`, and the weights
+/// of `3 y'_i`.
+fn inner_row(hp: f64, hc: f64) -> (f64, f64, Weights) {
+    let lambda = hc / (hp + hc);
+    let mu = 1.0 - lambda;
+    let weights = [
+        -3.0 * lambda / hp,
+        3.0 * lambda / hp - 3.0 * mu / hc,
+        3.0 * mu / hc,
+    ];
+    (lambda, mu, weights)
+}
+
+/// The rows of not-a-knot ends on `n = h.len() + 1 >= 4` knots: the inner rows with `m_0` and
+/// `m_{n-1}` eliminated (3.10), and the end slopes (3.11), (3.12) to recover them.
+fn not_a_knot_rows(h: &[f64], rows: &mut Rows) -> Shape {
+    let n = h.len() + 1;
+    let (gs, ge) = (h[0] / h[1], h[n - 2] / h[n - 3]);
+    for k in 1..n - 1 {
+        let (lambda, mu, taps) = inner_row(h[k - 1], h[k]);
+        rows.push(if k == 1 {
+            // y'_1 + 2 g delta_1, eliminated m_0 (3.10).
+            let w = mu + 2.0 * gs;
+            let weights = [-lambda / h[0], lambda / h[0] - w / h[1], w / h[1]];
+            (0.0, 1.0 + gs, gs, weights)
+        } else if k == n - 2 {
+            let w = lambda + 2.0 * ge;
+            let weights = [-w / h[n - 3], w / h[n - 3] - mu / h[n - 2], mu / h[n - 2]];
+            (ge, 1.0 + ge, 0.0, weights)
+        } else {
+            (lambda, 2.0, mu, taps)
+        });
+    }
+    let (gs2, ge2) = (gs * gs, ge * ge);
+    // (3.11): m_0 = (g^2 - 1) m_1 + g^2 m_2 + 2 delta_0 - 2 g^2 delta_1.
+    let start = (
+        gs2 - 1.0,
+        gs2,
+        [
+            (0, -2.0 / h[0]),
+            (1, 2.0 / h[0] + 2.0 * gs2 / h[1]),
+            (2, -2.0 * gs2 / h[1]),
+        ],
+    );
+    // (3.12): m_{n-1} = (g^2 - 1) m_{n-2} + g^2 m_{n-3} + 2 delta_{n-2} - 2 g^2 delta_{n-3}.
+    let end = (
+        ge2 - 1.0,
+        ge2,
+        [
+            (n - 1, 2.0 / h[n - 2]),
+            (n - 2, -2.0 / h[n - 2] - 2.0 * ge2 / h[n - 3]),
+            (n - 3, 2.0 * ge2 / h[n - 3]),
+        ],
+    );
+    Shape::Tridiagonal {
+        first: 1,
+        ends: Some([start, end]),
+    }
+}
+
+/// The rows of natural (zero second derivative) or clamped (given slope) ends: every slope an
+/// unknown, the end rows `2 m_0 + m_1 = 3 delta_0` or `m_0 = given`.
+fn natural_or_clamped_rows(h: &[f64], natural: bool, rows: &mut Rows) -> Shape {
+    let n = h.len() + 1;
+    let none = [0.0; 3];
+    rows.push(if natural {
+        (0.0, 2.0, 1.0, [0.0, -3.0 / h[0], 3.0 / h[0]])
+    } else {
+        (0.0, 1.0, 0.0, none)
+    });
+    for k in 1..n - 1 {
+        let (lambda, mu, taps) = inner_row(h[k - 1], h[k]);
+        rows.push((lambda, 2.0, mu, taps));
+    }
+    rows.push(if natural {
+        let hl = h[n - 2];
+        (1.0, 2.0, 0.0, [-3.0 / hl, 3.0 / hl, 0.0])
+    } else {
+        (0.0, 1.0, 0.0, none)
+    });
+    Shape::Tridiagonal {
+        first: 0,
+        ends: None,
+    }
+}
+
+/// The periodic rows of the `p = h.len() >= 2` distinct points; for `p > 2` the corners moved
+/// out of the tridiagonal part for Sherman–Morrison (`z`, `zt`, `denom` filled once it is
+/// factored, by [`SlopeSystem::finish_cyclic`]).
+fn periodic_rows(h: &[f64], rows: &mut Rows) -> Shape {
+    let p = h.len();
+    for i in 0..p {
+        let prev = if i == 0 { p - 1 } else { i - 1 };
+        let (lambda, mu, taps) = inner_row(h[prev], h[i]);
+        rows.push((lambda, 2.0, mu, taps));
+    }
+    if p == 2 {
+        return Shape::CyclicPair;
+    }
+    // T = B + w v^T, w = (gamma, 0, .., corner_bottom), v = (1, 0, .., ratio).
+    let corner_top = rows.lower[0];
+    let corner_bottom = rows.upper[p - 1];
+    let gamma = -rows.diag[0];
+    rows.lower[0] = 0.0;
+    rows.diag[0] -= gamma;
+    rows.upper[p - 1] = 0.0;
+    rows.diag[p - 1] -= corner_bottom * corner_top / gamma;
+    Shape::Cyclic {
+        z: Vec::new(),
+        zt: Vec::new(),
+        ratio: corner_top / gamma,
+        denom: 0.0,
+        corner_bottom,
+    }
+}
+
 impl SlopeSystem {
     /// Factors the system of `knots` (strictly increasing, at least 2; periodic through 2
     /// knots: the constant) for the end conditions `ends` (only their kind matters here: clamped slopes
@@ -122,125 +238,29 @@ impl SlopeSystem {
         let n = knots.len();
         debug_assert!(n >= 2);
         let h: Vec<f64> = knots.windows(2).map(|w| w[1] - w[0]).collect();
-        // The C^2 row of an inner knot between steps hp and hc: lambda, mu, and the weights
-        // of 3 y'_i.
-        let inner = |hp: f64, hc: f64| -> (f64, f64, Weights) {
-            let lambda = hc / (hp + hc);
-            let mu = 1.0 - lambda;
-            let weights = [
-                -3.0 * lambda / hp,
-                3.0 * lambda / hp - 3.0 * mu / hc,
-                3.0 * mu / hc,
-            ];
-            (lambda, mu, weights)
-        };
         let mut rows = Rows::with_capacity(n);
         let shape = match ends {
             SplineEnds::NotAKnot if n == 2 => Shape::Segment { h: h[0] },
             SplineEnds::NotAKnot if n == 3 => {
-                let (_, _, taps) = inner(h[0], h[1]);
+                let (_, _, taps) = inner_row(h[0], h[1]);
                 rows.push((0.0, 1.0, 0.0, taps.map(|w| w / 3.0)));
                 Shape::Parabola { h: [h[0], h[1]] }
             }
-            SplineEnds::NotAKnot => {
-                let (gs, ge) = (h[0] / h[1], h[n - 2] / h[n - 3]);
-                for k in 1..n - 1 {
-                    let (lambda, mu, taps) = inner(h[k - 1], h[k]);
-                    rows.push(if k == 1 {
-                        // y'_1 + 2 g delta_1, eliminated m_0 (3.10).
-                        let w = mu + 2.0 * gs;
-                        let weights = [-lambda / h[0], lambda / h[0] - w / h[1], w / h[1]];
-                        (0.0, 1.0 + gs, gs, weights)
-                    } else if k == n - 2 {
-                        let w = lambda + 2.0 * ge;
-                        let weights = [-w / h[n - 3], w / h[n - 3] - mu / h[n - 2], mu / h[n - 2]];
-                        (ge, 1.0 + ge, 0.0, weights)
-                    } else {
-                        (lambda, 2.0, mu, taps)
-                    });
-                }
-                let (gs2, ge2) = (gs * gs, ge * ge);
-                // (3.11): m_0 = (g^2 - 1) m_1 + g^2 m_2 + 2 delta_0 - 2 g^2 delta_1.
-                let start = (
-                    gs2 - 1.0,
-                    gs2,
-                    [
-                        (0, -2.0 / h[0]),
-                        (1, 2.0 / h[0] + 2.0 * gs2 / h[1]),
-                        (2, -2.0 * gs2 / h[1]),
-                    ],
-                );
-                // (3.12): m_{n-1} = (g^2 - 1) m_{n-2} + g^2 m_{n-3} + 2 delta_{n-2} - 2 g^2 delta_{n-3}.
-                let end = (
-                    ge2 - 1.0,
-                    ge2,
-                    [
-                        (n - 1, 2.0 / h[n - 2]),
-                        (n - 2, -2.0 / h[n - 2] - 2.0 * ge2 / h[n - 3]),
-                        (n - 3, 2.0 * ge2 / h[n - 3]),
-                    ],
-                );
-                Shape::Tridiagonal {
-                    first: 1,
-                    ends: Some([start, end]),
-                }
-            }
-            SplineEnds::Natural | SplineEnds::Clamped { .. } => {
-                let natural = matches!(ends, SplineEnds::Natural);
-                let none = [0.0; 3];
-                rows.push(if natural {
-                    (0.0, 2.0, 1.0, [0.0, -3.0 / h[0], 3.0 / h[0]])
-                } else {
-                    (0.0, 1.0, 0.0, none)
-                });
-                for k in 1..n - 1 {
-                    let (lambda, mu, taps) = inner(h[k - 1], h[k]);
-                    rows.push((lambda, 2.0, mu, taps));
-                }
-                rows.push(if natural {
-                    let hl = h[n - 2];
-                    (1.0, 2.0, 0.0, [-3.0 / hl, 3.0 / hl, 0.0])
-                } else {
-                    (0.0, 1.0, 0.0, none)
-                });
-                Shape::Tridiagonal {
-                    first: 0,
-                    ends: None,
-                }
-            }
+            SplineEnds::NotAKnot => not_a_knot_rows(&h, &mut rows),
+            SplineEnds::Natural => natural_or_clamped_rows(&h, true, &mut rows),
+            SplineEnds::Clamped { .. } => natural_or_clamped_rows(&h, false, &mut rows),
             SplineEnds::Periodic if n == 2 => Shape::Constant,
-            SplineEnds::Periodic => {
-                let p = n - 1;
-                for i in 0..p {
-                    let prev = if i == 0 { p - 1 } else { i - 1 };
-                    let (lambda, mu, taps) = inner(h[prev], h[i]);
-                    rows.push((lambda, 2.0, mu, taps));
-                }
-                if p == 2 {
-                    Shape::CyclicPair
-                } else {
-                    // T = B + w v^T, w = (gamma, 0, .., corner_bottom), v = (1, 0, .., ratio).
-                    let corner_top = rows.lower[0];
-                    let corner_bottom = rows.upper[p - 1];
-                    let gamma = -rows.diag[0];
-                    rows.lower[0] = 0.0;
-                    rows.diag[0] -= gamma;
-                    rows.upper[p - 1] = 0.0;
-                    rows.diag[p - 1] -= corner_bottom * corner_top / gamma;
-                    Shape::Cyclic {
-                        z: Vec::new(), // filled once B is factored
-                        zt: Vec::new(),
-                        ratio: corner_top / gamma,
-                        denom: 0.0,
-                        corner_bottom,
-                    }
-                }
-            }
+            SplineEnds::Periodic => periodic_rows(&h, &mut rows),
         };
-        let len = rows.rhs.len();
         let wrap = matches!(ends, SplineEnds::Periodic).then_some(n - 2);
-        // Thomas factorization in place: the diagonal becomes the inverse pivots, the
-        // super-diagonal the scaled one.
+        let mut system = Self::factor(n, shape, wrap, rows)?;
+        system.finish_cyclic()?;
+        Ok(system)
+    }
+
+    /// The Thomas factorization of `rows` in place: the diagonal becomes the inverse pivots,
+    /// the super-diagonal the scaled one.
+    fn factor(n: usize, shape: Shape, wrap: Option<usize>, rows: Rows) -> Result<Self> {
         let Rows {
             lower,
             diag: mut inv_pivot,
@@ -248,7 +268,7 @@ impl SlopeSystem {
             rhs,
         } = rows;
         let mut previous = 0.0;
-        for r in 0..len {
+        for r in 0..rhs.len() {
             let pivot = inv_pivot[r] - lower[r] * previous;
             if pivot.abs() <= 1e-300 || !pivot.is_finite() {
                 return Err(Error::SingularSystem { row: r, pivot });
@@ -257,7 +277,7 @@ impl SlopeSystem {
             upper_prime[r] *= inv_pivot[r];
             previous = upper_prime[r];
         }
-        let mut system = SlopeSystem {
+        Ok(SlopeSystem {
             n,
             shape,
             rhs,
@@ -265,41 +285,47 @@ impl SlopeSystem {
             lower,
             inv_pivot,
             upper_prime,
-        };
-        if let Shape::Cyclic {
+        })
+    }
+
+    /// For a cyclic system (a no-op otherwise), the Sherman–Morrison vectors of the factored
+    /// tridiagonal part `B`: `B z = w`, `B^T zt = v`, and `denom = 1 + v . z`.
+    fn finish_cyclic(&mut self) -> Result<()> {
+        let Shape::Cyclic {
             ratio,
             corner_bottom,
             ..
-        } = system.shape
-        {
-            // B z = w with w = (gamma, 0, .., corner_bottom), gamma = -(diagonal of row 0).
-            let p = len;
-            let mut w = vec![Point([0.0]); p];
-            w[0] = Point([-2.0]);
-            w[p - 1] = Point([corner_bottom]);
-            system.sweep(&mut w, 1);
-            let z: Vec<f64> = w.iter().map(|v| v[0]).collect();
-            let denom = 1.0 + z[0] + ratio * z[p - 1];
-            if denom.abs() <= 1e-300 || !denom.is_finite() {
-                return Err(Error::SingularSystem {
-                    row: p - 1,
-                    pivot: denom,
-                });
-            }
-            // B^T zt = v with v = (1, 0, .., ratio).
-            let mut zt = vec![0.0; p];
-            zt[0] = 1.0;
-            zt[p - 1] += ratio;
-            system.sweep_transposed(&mut zt);
-            system.shape = Shape::Cyclic {
-                z,
-                zt,
-                ratio,
-                denom,
-                corner_bottom,
-            };
+        } = self.shape
+        else {
+            return Ok(());
+        };
+        // B z = w with w = (gamma, 0, .., corner_bottom), gamma = -(diagonal of row 0).
+        let p = self.rhs.len();
+        let mut w = vec![Point([0.0]); p];
+        w[0] = Point([-2.0]);
+        w[p - 1] = Point([corner_bottom]);
+        self.sweep(&mut w, 1);
+        let z: Vec<f64> = w.iter().map(|v| v[0]).collect();
+        let denom = 1.0 + z[0] + ratio * z[p - 1];
+        if denom.abs() <= 1e-300 || !denom.is_finite() {
+            return Err(Error::SingularSystem {
+                row: p - 1,
+                pivot: denom,
+            });
         }
-        Ok(system)
+        // B^T zt = v with v = (1, 0, .., ratio).
+        let mut zt = vec![0.0; p];
+        zt[0] = 1.0;
+        zt[p - 1] += ratio;
+        self.sweep_transposed(&mut zt);
+        self.shape = Shape::Cyclic {
+            z,
+            zt,
+            ratio,
+            denom,
+            corner_bottom,
+        };
+        Ok(())
     }
 
     /// The Thomas sweeps on `width` lines stored k-major (`x[r * width + line]`), in place.
@@ -337,9 +363,9 @@ impl SlopeSystem {
     ) {
         let n = self.n;
         debug_assert!(values.len() == n * width && slopes.len() == n * width);
-        let at = |k: usize, line: usize| values[k * width + line];
-        let combine = |taps: &Taps, line: usize| tap_sum(taps, |k| at(k, line));
-        let delta = |k: usize, h: f64, line: usize| (at(k + 1, line) - at(k, line)) * (1.0 / h);
+        let delta = |k: usize, h: f64, line: usize| {
+            (values[(k + 1) * width + line] - values[k * width + line]) * (1.0 / h)
+        };
         let first = match &self.shape {
             Shape::Tridiagonal { first, .. } => *first,
             Shape::Parabola { .. } => 1,
@@ -357,38 +383,8 @@ impl SlopeSystem {
             }
             _ => 0,
         };
-        let len = self.rhs.len();
-        // Right-hand sides, formed row by row over all lines (contiguous).
-        let line_of = |k: usize| &values[k * width..(k + 1) * width];
-        for (r, w) in self.rhs.iter().enumerate() {
-            let c = first + r;
-            let prev = match (c, self.wrap) {
-                (0, Some(p)) => Some(p),
-                (0, None) => None,
-                _ => Some(c - 1),
-            };
-            let row = &mut slopes[c * width..(c + 1) * width];
-            let center = line_of(c);
-            match (prev, c + 1 < n) {
-                (Some(pk), true) => {
-                    let (a, b) = (line_of(pk), line_of(c + 1));
-                    for (((s, &ya), &yc), &yb) in row.iter_mut().zip(a).zip(center).zip(b) {
-                        *s = row_rhs(ya, yc, yb, *w);
-                    }
-                }
-                (Some(pk), false) => {
-                    for ((s, &ya), &yc) in row.iter_mut().zip(line_of(pk)).zip(center) {
-                        *s = row_rhs(ya, yc, yc, *w);
-                    }
-                }
-                (None, _) => {
-                    for ((s, &yc), &yb) in row.iter_mut().zip(center).zip(line_of(c + 1)) {
-                        *s = row_rhs(yc, yc, yb, *w);
-                    }
-                }
-            }
-        }
-        let span = first * width..(first + len) * width;
+        self.form_rhs(values, slopes, width, first);
+        let span = first * width..(first + self.rhs.len()) * width;
         match &self.shape {
             Shape::Segment { .. } | Shape::Constant => {}
             Shape::Parabola { h } => {
@@ -410,16 +406,7 @@ impl SlopeSystem {
                 z, ratio, denom, ..
             } => {
                 self.sweep(&mut slopes[span], width);
-                let p = len;
-                for line in 0..width {
-                    let factor =
-                        (slopes[line] + slopes[(p - 1) * width + line] * *ratio) * (1.0 / denom);
-                    for (k, &zk) in z.iter().enumerate() {
-                        let s = &mut slopes[k * width + line];
-                        *s = s.add_scaled(-zk, factor);
-                    }
-                    slopes[(n - 1) * width + line] = slopes[line];
-                }
+                self.correct_cyclic(slopes, width, z, *ratio, *denom);
             }
             Shape::Tridiagonal { ends, .. } => {
                 if let (Some((start, end)), None) = (clamped, ends) {
@@ -429,19 +416,93 @@ impl SlopeSystem {
                     }
                 }
                 self.sweep(&mut slopes[span], width);
-                if let Some([start, end]) = ends {
-                    // The not-a-knot end slopes (3.11), (3.12) from the solved ones.
-                    for line in 0..width {
-                        let (a, b, taps) = start;
-                        slopes[line] = (slopes[width + line] * *a + slopes[2 * width + line] * *b)
-                            + combine(taps, line);
-                        let (a, b, taps) = end;
-                        slopes[(n - 1) * width + line] = (slopes[(n - 2) * width + line] * *a
-                            + slopes[(n - 3) * width + line] * *b)
-                            + combine(taps, line);
+                if let Some(ends) = ends {
+                    self.not_a_knot_end_slopes(values, slopes, width, ends);
+                }
+            }
+        }
+    }
+
+    /// The right-hand sides of the rows, formed row by row over all lines (contiguous), into
+    /// the rows' unknowns `first..first + rhs.len()` of `slopes`.
+    fn form_rhs<const D: usize>(
+        &self,
+        values: &[Point<D>],
+        slopes: &mut [Point<D>],
+        width: usize,
+        first: usize,
+    ) {
+        let line_of = |k: usize| &values[k * width..(k + 1) * width];
+        for (r, w) in self.rhs.iter().enumerate() {
+            let c = first + r;
+            let prev = match (c, self.wrap) {
+                (0, Some(p)) => Some(p),
+                (0, None) => None,
+                _ => Some(c - 1),
+            };
+            let row = &mut slopes[c * width..(c + 1) * width];
+            let center = line_of(c);
+            match (prev, c + 1 < self.n) {
+                (Some(pk), true) => {
+                    let (a, b) = (line_of(pk), line_of(c + 1));
+                    for (((s, &ya), &yc), &yb) in row.iter_mut().zip(a).zip(center).zip(b) {
+                        *s = row_rhs(ya, yc, yb, *w);
+                    }
+                }
+                (Some(pk), false) => {
+                    for ((s, &ya), &yc) in row.iter_mut().zip(line_of(pk)).zip(center) {
+                        *s = row_rhs(ya, yc, yc, *w);
+                    }
+                }
+                (None, _) => {
+                    for ((s, &yc), &yb) in row.iter_mut().zip(center).zip(line_of(c + 1)) {
+                        *s = row_rhs(yc, yc, yb, *w);
                     }
                 }
             }
+        }
+    }
+
+    /// The Sherman–Morrison correction of the cyclic solve, `m = y - factor z` with
+    /// `factor = (y_0 + ratio y_{p-1}) / denom`, and the repeated last slope `m_{n-1} = m_0`.
+    fn correct_cyclic<const D: usize>(
+        &self,
+        slopes: &mut [Point<D>],
+        width: usize,
+        z: &[f64],
+        ratio: f64,
+        denom: f64,
+    ) {
+        let p = z.len();
+        for line in 0..width {
+            let factor = (slopes[line] + slopes[(p - 1) * width + line] * ratio) * (1.0 / denom);
+            for (k, &zk) in z.iter().enumerate() {
+                let s = &mut slopes[k * width + line];
+                *s = s.add_scaled(-zk, factor);
+            }
+            slopes[(self.n - 1) * width + line] = slopes[line];
+        }
+    }
+
+    /// The not-a-knot end slopes (3.11), (3.12) from the solved ones:
+    /// `m = a m_near + b m_next + taps`.
+    fn not_a_knot_end_slopes<const D: usize>(
+        &self,
+        values: &[Point<D>],
+        slopes: &mut [Point<D>],
+        width: usize,
+        [start, end]: &[(f64, f64, Taps); 2],
+    ) {
+        let n = self.n;
+        for line in 0..width {
+            let combine = |taps: &Taps| tap_sum(taps, |k| values[k * width + line]);
+            let (a, b, taps) = start;
+            slopes[line] =
+                (slopes[width + line] * *a + slopes[2 * width + line] * *b) + combine(taps);
+            let (a, b, taps) = end;
+            slopes[(n - 1) * width + line] = (slopes[(n - 2) * width + line] * *a
+                + slopes[(n - 3) * width + line] * *b)
+                + combine(taps);
         }
     }
 }
