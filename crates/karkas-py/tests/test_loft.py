@@ -106,9 +106,13 @@ def test_monotone_placement_stays_between_neighbours_on_1000_lines():
     a_le, a_chord, a_twist, a_gap = figures(st)
     k = np.searchsorted(st, u) - 1
     violations = 0
-    for values, at in ((le, a_le), (chord, a_chord), (twist, a_twist)):
-        lo = np.minimum(at[k], at[k + 1]) - 1e-12
-        hi = np.maximum(at[k], at[k + 1]) + 1e-12
+    # The leading edge exactly; the chord (a share of the longer neighbouring chord) and the
+    # twist (radians) to the loft's tolerance, 1e-5 (docs/methods.md 7.3).
+    longer = np.maximum(a_chord[k], a_chord[k + 1])
+    for values, at, slack in ((le, a_le, 1e-12), (chord, a_chord, 1e-5 * longer), (twist, a_twist, np.degrees(1e-5))):
+        slack = slack[:, None] if np.ndim(slack) and np.ndim(values) > 1 else slack
+        lo = np.minimum(at[k], at[k + 1]) - slack
+        hi = np.maximum(at[k], at[k + 1]) + slack
         violations += int(np.sum((values < lo) | (values > hi)))
     # The trailing-edge branches never cross: the upper end stays above the lower one.
     violations += int(np.sum(gap[:, 2] < -1e-12))

@@ -143,13 +143,20 @@ pub fn monotone_violations(loft: &Loft) -> (Vec<String>, Vec<String>) {
                 out.push(format!("leading edge {}", ["x", "y", "z"][c]));
             }
         }
-        if !within(l.chord, a.chord, b.chord, 1e-12 * size) {
+        // Chord and twist to the loft's tolerance (docs/methods.md §7.3: a polynomial surface
+        // cannot turn a chord line at constant length), the leading edge exactly.
+        if !within(
+            l.chord,
+            a.chord,
+            b.chord,
+            DEFAULT_TOLERANCE * a.chord.max(b.chord),
+        ) {
             out.push(format!(
                 "chord {} not in [{}, {}]",
                 l.chord, a.chord, b.chord
             ));
         }
-        if !within(l.twist, a.twist, b.twist, 1e-9) {
+        if !within(l.twist, a.twist, b.twist, DEFAULT_TOLERANCE.to_degrees()) {
             out.push(format!(
                 "twist {} not in [{}, {}]",
                 l.twist, a.twist, b.twist
@@ -282,7 +289,7 @@ pub fn run(out: &Output) -> Result<Vec<Finding>> {
             e,
             format!(
                 "{SPAN_LINES} spanwise lines with chord, twist or leading edge outside the \
-                 neighbouring sections' range"
+                 neighbouring sections' range (chord and twist to the tolerance)"
             ),
             placement.len() as f64,
         ),

@@ -64,6 +64,7 @@ mod placement;
 mod profile;
 mod span;
 mod surface;
+mod wing_path;
 
 pub use blade::{blade_frames, BladeShape, Distribution};
 pub use pchip::pchip_slopes;

@@ -36,15 +36,15 @@ use crate::{Point2, Point3};
 
 /// A section's frame as a rotation (orthonormal `e`, `e[0]` along the x axis) and the axes'
 /// coordinates in it: `X = x_len e0`, `Y = y1 e0 + y2 e1`.
-struct SplitFrame {
-    e: [Point3; 3],
-    x_len: f64,
-    y1: f64,
-    y2: f64,
+pub(super) struct SplitFrame {
+    pub e: [Point3; 3],
+    pub x_len: f64,
+    pub y1: f64,
+    pub y2: f64,
 }
 
 impl SplitFrame {
-    fn new(f: &SectionFrame) -> Option<SplitFrame> {
+    pub(super) fn new(f: &SectionFrame) -> Option<SplitFrame> {
         let x_len = f.x_axis.norm();
         let e0 = f.x_axis * (1.0 / x_len);
         let y1 = f.y_axis.dot(e0);
@@ -116,7 +116,7 @@ fn turning(h: &[f64], frames: &[SectionFrame]) -> Option<(Vec<SplitFrame>, Vec<P
 /// middle (the mean of its end control points) at `(1, 0)`: the same placed points, the
 /// frames now carrying the chord line the surface shows. `None` when a chord line has no
 /// length.
-fn on_chord_lines(
+pub(super) fn on_chord_lines(
     frames: &[SectionFrame],
     profiles: &Grid<Point2>,
     (first, weights): (usize, [f64; 4]),

@@ -24,6 +24,7 @@
 use super::pchip::pchip_slopes;
 use super::placed_slopes::placed_slopes;
 use super::placement::SectionFrame;
+use super::wing_path::{Rows, WingPath};
 use crate::bspline::{hermite_curve, BSplineSurface, ToBSplineCurve};
 use crate::core::Grid;
 use crate::param::{CubicSpline, SplineEnds};
@@ -81,6 +82,9 @@ pub(crate) struct KeptLines<'a> {
     /// The sections' frames and their control points in their planes, when the loft knows
     /// them: the slopes are then taken through the placement (`placed_slopes.rs`).
     pub placement: Option<(&'a [SectionFrame], &'a Grid<Point2>)>,
+    /// The loft's tolerance (a share of each section's chord): how far the monotone rule lets
+    /// a wing's chord and twist pass their neighbours' range between sections.
+    pub tolerance: f64,
 }
 
 /// The surface over the span `stations` through the placed control nets `nets` (row `k`
@@ -118,32 +122,59 @@ pub(crate) fn span_surface(
             BSplineSurface::new((3, knots_u), (3, knots_v), control)
         }
         SpanRule::Monotone => {
-            let slopes = monotone_slopes(stations, nets, kept);
-            let mut columns = Vec::with_capacity(m);
-            let mut knots_u = Vec::new();
-            let (mut values, mut derivs) = (vec![Point3::ZERO; n], vec![Point3::ZERO; n]);
-            for i in 0..m {
-                for k in 0..n {
-                    values[k] = *nets.get(k, i);
-                    derivs[k] = *slopes.get(k, i);
-                }
-                let curve = hermite_curve(stations, &values, &derivs, 2)?;
-                knots_u = curve.knots().to_vec();
-                columns.push(curve.control_points().to_vec());
-            }
-            let rows = columns[0].len();
-            let control = Grid::from_fn(rows, m, |r, i| columns[i][r]);
-            BSplineSurface::new((3, knots_u), (3, knots_v), control)
+            let path = match (kept.leading_edge, kept.placement) {
+                (Some(le), Some(placement)) => WingPath::new(stations, placement, nets, le),
+                _ => None,
+            };
+            let slopes = monotone_slopes(stations, nets, kept, path.as_ref());
+            let rows = match &path {
+                Some(path) => path.refine(nets, &slopes, kept.tolerance),
+                None => Rows {
+                    stations: stations.to_vec(),
+                    values: nets.as_slice().to_vec(),
+                    slopes: slopes.as_slice().to_vec(),
+                },
+            };
+            hermite_surface(&rows, m, knots_v)
         }
     }
 }
 
+/// The surface whose `u` direction is the cubic Hermite interpolant (`C^1`, double knots) of
+/// the control rows `rows` (`m` control points a row) at their stations.
+fn hermite_surface(rows: &Rows, m: usize, knots_v: Vec<f64>) -> Result<BSplineSurface<3>> {
+    let n = rows.stations.len();
+    let mut columns = Vec::with_capacity(m);
+    let mut knots_u = Vec::new();
+    let (mut values, mut derivs) = (vec![Point3::ZERO; n], vec![Point3::ZERO; n]);
+    for i in 0..m {
+        for k in 0..n {
+            values[k] = rows.values[k * m + i];
+            derivs[k] = rows.slopes[k * m + i];
+        }
+        let curve = hermite_curve(&rows.stations, &values, &derivs, 2)?;
+        knots_u = curve.knots().to_vec();
+        columns.push(curve.control_points().to_vec());
+    }
+    let count = columns[0].len();
+    let control = Grid::from_fn(count, m, |r, i| columns[i][r]);
+    BSplineSurface::new((3, knots_u), (3, knots_v), control)
+}
+
 /// The monotone rule's slopes of every control point at every station (see the module docs).
-fn monotone_slopes(stations: &[f64], nets: &Grid<Point3>, kept: KeptLines) -> Grid<Point3> {
+fn monotone_slopes(
+    stations: &[f64],
+    nets: &Grid<Point3>,
+    kept: KeptLines,
+    path: Option<&WingPath>,
+) -> Grid<Point3> {
     let (n, m) = (nets.rows(), nets.cols());
-    let placed = kept.placement.and_then(|(frames, profiles)| {
-        placed_slopes(stations, frames, profiles, kept.leading_edge)
-    });
+    let placed = match path {
+        Some(path) => Some(path.station_slopes()),
+        None => kept.placement.and_then(|(frames, profiles)| {
+            placed_slopes(stations, frames, profiles, kept.leading_edge)
+        }),
+    };
     let through_placement = placed.is_some();
     let mut slopes = placed.unwrap_or_else(|| coordinate_slopes(stations, nets));
     // The trailing edge: its middle (through the placement, or interpolated on its own) and

@@ -207,6 +207,7 @@ impl Loft {
         let kept = KeptLines {
             leading_edge: split.then(|| basis_at(&knots, 0.5)),
             placement: Some((&frames, &profiles)),
+            tolerance: options.tolerance,
         };
         let surface = span_surface(options.rule, &stations, &nets, knots, kept)?;
         Ok(Loft {

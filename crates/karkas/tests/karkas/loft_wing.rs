@@ -282,65 +282,89 @@ impl Rng {
     }
 }
 
-/// A wing of `n` sections from `seed`: uneven stations, chords, twists and leading-edge
-/// heights drawn at random (neither monotone nor tuned), the dihedral given on some wings.
-fn random_wing(n: usize, seed: u64) -> (Vec<Vec<Point2>>, Vec<WingPlacement>) {
-    let mut rng = Rng(0x9e37_79b9_7f4a_7c15 ^ (seed * 0x2545_f491_4f6c_dd1d));
-    let given_dihedral = seed.is_multiple_of(3);
-    let (mut x, mut y, mut z) = (rng.between(-1.0, 1.0), rng.between(-2.0, 2.0), 0.0);
+/// A wing of 3 to 20 sections from `seed`, drawn to be hard: uneven stations, chords whose
+/// ratio to the one before runs from 1/5 to 5 (or repeats it), twists from -20 to 25 degrees
+/// that rise and fall at random (or repeat), sweep back and forward, dihedrals given (-30 to
+/// 45 degrees) or from leading edges climbing or falling up to 45 degrees, a root as far as
+/// 1000 chords from the origin, the whole wing scaled by 1e-3 to 1e3, blunt and sharp
+/// trailing edges mixed.
+fn random_wing(seed: u64) -> (Vec<Vec<Point2>>, Vec<WingPlacement>) {
+    let mut rng = Rng(0x9e37_79b9_7f4a_7c15 ^ (seed.wrapping_add(1) * 0x2545_f491_4f6c_dd1d));
+    let n = 3 + (rng.next() * 18.0) as usize;
+    let scale = 10f64.powf(rng.between(-3.0, 3.0));
+    let given_dihedral = rng.next() < 0.4;
+    let far = 10f64.powf(rng.between(-1.0, 3.0));
+    let mut le = [0, 1, 2].map(|_| scale * far * rng.between(-1.0, 1.0));
+    let (mut chord, mut twist) = (scale * rng.between(0.5, 2.0), rng.between(-20.0, 25.0));
     let mut profiles = Vec::with_capacity(n);
     let mut placements = Vec::with_capacity(n);
     for k in 0..n {
         if k > 0 {
-            let step = rng.between(0.2, 2.5);
-            let slope = rng.between(-0.1, 0.3);
-            x += step * rng.between(-0.2, 0.5);
-            y += step;
-            z += step * slope;
+            let step = scale * rng.between(0.05, 3.0);
+            le[0] += step * rng.between(-0.5, 1.5);
+            le[1] += step;
+            le[2] += step * rng.between(-1.0, 1.0);
+            if rng.next() > 0.15 {
+                chord *= 5f64.powf(rng.between(-1.0, 1.0));
+            }
+            if rng.next() > 0.15 {
+                twist = rng.between(-20.0, 25.0);
+            }
         }
         let a4 = if rng.next() < 0.5 { -0.1015 } else { -0.1036 };
         profiles.push(naca(
-            rng.between(0.0, 0.05),
-            rng.between(0.3, 0.5),
-            rng.between(0.08, 0.16),
+            rng.between(0.0, 0.06),
+            rng.between(0.2, 0.6),
+            rng.between(0.06, 0.2),
             a4,
-            40 + (rng.next() * 40.0) as usize,
+            30 + (rng.next() * 60.0) as usize,
         ));
         placements.push(WingPlacement {
-            leading_edge: at(x, y, z),
-            chord: rng.between(0.4, 2.0),
-            twist: rng.between(-6.0, 8.0),
-            dihedral: given_dihedral.then(|| rng.between(-5.0, 15.0)),
+            leading_edge: at(le[0], le[1], le[2]),
+            chord,
+            twist,
+            dihedral: given_dihedral.then(|| rng.between(-30.0, 45.0)),
         });
     }
     (profiles, placements)
 }
 
-/// The worst excess beyond the neighbours' range on 1000 lines along the span of `loft`:
-/// of the leading edge's coordinates and the chord over the largest chord, of the twist in
-/// degrees; and the lines whose trailing-edge branches cross.
-fn worst_excess(loft: &Loft) -> ([f64; 3], usize) {
+/// The lines among 1000 along the span of `loft` whose leading edge (any coordinate), chord
+/// or twist leave the range of the two sections around them by more than the loft's
+/// tolerance (the chord and the leading edge by that share of the longer neighbouring chord,
+/// the twist by that many radians), or whose trailing-edge branches cross (the upper end
+/// below the lower one along z, beyond the coordinates' round-off).
+fn violations_beyond_tolerance(loft: &Loft, tolerance: f64) -> Vec<String> {
     let stations = loft.stations().to_vec();
     let at_stations: Vec<Line> = stations.iter().map(|&u| line(loft, u)).collect();
-    let size = at_stations.iter().fold(0.0f64, |m, l| m.max(l.chord));
-    let beyond = |v: f64, a: f64, b: f64| (a.min(b) - v).max(v - a.max(b)).max(0.0);
-    let (mut worst, mut crossings) = ([0.0f64; 3], 0);
     let (first, last) = (stations[0], stations[stations.len() - 1]);
+    let mut violations = Vec::new();
     for j in 0..1000 {
         let u = first + (last - first) * (j as f64 + 0.5) / 1000.0;
         let k = (stations.partition_point(|&s| s <= u) - 1).min(stations.len() - 2);
         let (a, b) = (&at_stations[k], &at_stations[k + 1]);
         let l = line(loft, u);
+        let slack = tolerance * a.chord.max(b.chord);
         for c in 0..3 {
-            worst[0] = worst[0].max(beyond(l.le[c], a.le[c], b.le[c]) / size);
+            if !within(l.le[c], a.le[c], b.le[c], slack) {
+                violations.push(format!("{u}: leading edge {c}"));
+            }
         }
-        worst[1] = worst[1].max(beyond(l.chord, a.chord, b.chord) / size);
-        worst[2] = worst[2].max(beyond(l.twist, a.twist, b.twist));
-        if l.gap[2] < -1e-12 * size {
-            crossings += 1;
+        if !within(l.chord, a.chord, b.chord, slack) {
+            let beyond = (a.chord.min(b.chord) - l.chord).max(l.chord - a.chord.max(b.chord));
+            let share = beyond / a.chord.max(b.chord);
+            violations.push(format!("{u}: chord {share:.2e} of it beyond"));
+        }
+        if !within(l.twist, a.twist, b.twist, tolerance.to_degrees()) {
+            let beyond = (a.twist.min(b.twist) - l.twist).max(l.twist - a.twist.max(b.twist));
+            violations.push(format!("{u}: twist {beyond:.2e} degrees beyond"));
+        }
+        let round_off = 1e-12 * (l.chord + l.le.norm());
+        if l.gap[2] < -round_off {
+            violations.push(format!("{u}: trailing edges cross"));
         }
     }
-    (worst, crossings)
+    violations
 }
 
 /// The tapered wing of the other tests with a twist that rises then falls and one that falls
@@ -374,29 +398,29 @@ fn a_twist_that_turns_back_stays_between_its_neighbours() {
     }
 }
 
-/// A sweep of wings not tuned on (3 to 12 sections, uneven stations, chords and twists
-/// that rise and fall at random, given and derived dihedrals, 60 seeds, and the wing of the
-/// other tests with chords that grow then shrink or stay equal): the leading edge never
-/// leaves its neighbours' range and the trailing-edge branches never cross; the twist stays
-/// within its neighbours' range to 5e-3 degrees and the chord to 5e-3 of the largest chord
-/// (measured: 4.5e-3 degrees on one wing whose dihedral changes, 4.3e-3 where two
-/// neighbouring chords are equal).
-/// The chord cannot always stay within exactly: where two neighbours' chords are equal and
-/// their twists differ, the chord line would have to turn on a circle, which no polynomial
-/// does.
+/// A sweep of 500 wings not tuned on ([`random_wing`]: 3 to 20 sections, extreme taper,
+/// twist and dihedral, far from the origin, at scales 1e-3 to 1e3), and the wing of the
+/// other tests with chords that grow then shrink or stay equal: on every one of 1000 lines
+/// along the span the leading edge, chord and twist stay within their neighbours' range to
+/// the loft's tolerance and the trailing-edge branches never cross. The tolerance is the
+/// slack because a polynomial surface cannot do better: where two neighbours' chords are
+/// equal and their twists differ, the chord line would have to turn on a circle. Before the
+/// rule refined its pieces along the placement's path, 4.3e-3 of the chord and 4.5e-3
+/// degrees were passed on wings of a 64-wing sweep.
 #[test]
 fn the_monotone_rule_keeps_placement_between_neighbours_on_a_sweep_of_wings() {
-    let mut worst = [0.0f64; 3];
+    let tolerance = LoftOptions::default().tolerance;
     let mut failures = Vec::new();
     let mut check = |name: String, profiles: &[Vec<Point2>], placements: &[WingPlacement]| {
         let loft = Loft::wing(profiles, placements, &LoftOptions::default()).unwrap();
         assert!(loft.tolerance_met(), "{name}");
-        let (excess, crossings) = worst_excess(&loft);
-        for c in 0..3 {
-            worst[c] = worst[c].max(excess[c]);
-        }
-        if excess[0] > 1e-12 || excess[1] > 5e-3 || excess[2] > 5e-3 || crossings > 0 {
-            failures.push(format!("{name}: {excess:?}, {crossings} crossing"));
+        let violations = violations_beyond_tolerance(&loft, tolerance);
+        if !violations.is_empty() {
+            failures.push(format!(
+                "{name}: {} lines, {:?}",
+                violations.len(),
+                &violations[..violations.len().min(3)]
+            ));
         }
     };
     let (profiles, placements) = wing();
@@ -423,15 +447,14 @@ fn the_monotone_rule_keeps_placement_between_neighbours_on_a_sweep_of_wings() {
             &p,
         );
     }
-    for seed in 0..60u64 {
-        let n = 3 + (seed % 10) as usize;
-        let (profiles, placements) = random_wing(n, seed);
-        check(format!("seed {seed}, {n} sections"), &profiles, &placements);
+    for seed in 0..500u64 {
+        let (profiles, placements) = random_wing(seed);
+        check(
+            format!("seed {seed}, {} sections", profiles.len()),
+            &profiles,
+            &placements,
+        );
     }
-    eprintln!(
-        "worst excess: leading edge {:.2e}, chord {:.2e}, twist {:.2e} degrees",
-        worst[0], worst[1], worst[2]
-    );
     assert!(
         failures.is_empty(),
         "{} wings:\n{}",
