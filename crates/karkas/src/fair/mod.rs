@@ -28,8 +28,12 @@
 //! parameterized by chord length; a least-squares spline, reweighted until every point is
 //! within `0.9 T` of its parameter's point, starts a logarithmic-barrier method on
 //! `t (E + α ∫ |r'''|^2 dt) - sum ln(T^2 - |r(u_i) - p_i|^2)` with Gauss–Newton steps, the
-//! parameters moved to the foot points between stages. Every iterate keeps every point
-//! strictly inside its ball, so the hard bound holds by construction.
+//! parameters moved to the foot points after every step. The barrier first bounds the error
+//! across the curve (a slab around the tangent, `|e_⊥|^2 + β (e . τ)^2 < T^2`, so that the
+//! curve may slide along itself: the squared-distance idea of Wang, Pottmann and Liu); that
+//! result is kept when every point is then strictly inside its ball `|r(u_i) - p_i| < T`,
+//! otherwise the method runs again with the balls, whose every iterate keeps every point
+//! strictly inside: the hard bound holds either way.
 //!
 //! Cost: `O(n)` per Newton step for `n` points (banded systems of width `4 D`, `8 D` closed),
 //! but about 480 Newton steps for a noisy airfoil (every barrier stage runs its cap: the

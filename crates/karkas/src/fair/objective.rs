@@ -14,7 +14,9 @@
 //!   change when the curve is reparameterized, and `R` keeps the parameter even where `E`
 //!   alone would leave it free.
 //! - The logarithmic barrier of the hard bound `|r(u_i) - p_i| < T` (a ball around every point
-//!   at its parameter `u_i`): its gradient and matrix are exact.
+//!   at its parameter `u_i`): its gradient and matrix are exact. Or, first, of the slab
+//!   `|e_⊥|^2 + β (e . τ)^2 < T^2` around the tangent at `u_i`, the tangent held in the
+//!   Gauss–Newton matrix (docs/methods.md §8).
 //!
 //! Every term touches the four controls of one span, so the matrix is banded (the terms are
 //! summed span by span first, `fair/blocks.rs`).
@@ -46,14 +48,22 @@ pub(crate) struct Objective<'a, const D: usize> {
     pub(crate) layout: &'a Layout<D>,
     pub(crate) points: &'a [Point<D>],
     /// The span of every point's parameter and the value weights there.
-    pub(crate) basis: &'a [(usize, [f64; 4])],
+    pub(crate) basis: &'a [Basis],
     /// The bound `T`.
     pub(crate) tolerance: f64,
     /// The weight `α` of `R`.
     pub(crate) alpha: f64,
     /// The sign asked of `dκ/ds` at every quadrature node, if any.
     pub(crate) shape: Option<&'a Shape>,
+    /// Whether the bound is taken mostly across the curve: `|e_⊥|^2 + β (e . τ)^2 < T^2`,
+    /// `e_⊥` the part of `e = r(u_i) - p_i` normal to the unit tangent `τ` at `u_i` (a slab
+    /// around the tangent line), instead of the ball `|e| < T`.
+    pub(crate) slab: bool,
 }
+
+/// The span of a point's parameter and the weights of the value and of the first derivative
+/// there.
+pub(crate) type Basis = (usize, [f64; 4], [f64; 4]);
 
 /// The signs asked of `dκ/ds` at the quadrature nodes (span by span, node by node; 0 where
 /// free) and the penalty on the wrong sign: `ρ sum w h (min(0, σ F - margin))^2`.
@@ -117,11 +127,39 @@ impl<const D: usize> Objective<'_, D> {
 
     /// The error `r(u_i) - p_i` of every point, through `f(i, span, weights, error)`.
     fn errors(&self, controls: &[Point<D>], mut f: impl FnMut(usize, usize, &[f64; 4], Point<D>)) {
-        for (i, ((k, w), &p)) in self.basis.iter().zip(self.points).enumerate() {
+        for (i, ((k, w, _), &p)) in self.basis.iter().zip(self.points).enumerate() {
             let value = (0..4).fold(Point::ZERO, |acc, c| {
                 acc.add_scaled(w[c], controls[self.space.control(*k, c)])
             });
             f(i, *k, w, value - p);
+        }
+    }
+
+    /// The error of every point and the unit tangent at its parameter (zero unless the bound
+    /// is a slab), through `f(span, weights, error, tangent)`.
+    fn bound_errors(
+        &self,
+        controls: &[Point<D>],
+        mut f: impl FnMut(usize, &[f64; 4], Point<D>, Point<D>),
+    ) {
+        for ((k, w, w1), &p) in self.basis.iter().zip(self.points) {
+            let at = |weights: &[f64; 4]| {
+                (0..4).fold(Point::ZERO, |acc, c| {
+                    acc.add_scaled(weights[c], controls[self.space.control(*k, c)])
+                })
+            };
+            let tangent = if self.slab {
+                let d1 = at(w1);
+                let speed = d1.norm();
+                if speed > 0.0 {
+                    d1 * (1.0 / speed)
+                } else {
+                    Point::ZERO
+                }
+            } else {
+                Point::ZERO
+            };
+            f(*k, w, at(w) - p, tangent);
         }
     }
 
@@ -153,8 +191,8 @@ impl<const D: usize> Objective<'_, D> {
             parts.smoothness += h * self.space.eval_node(controls, k, 0, 3).norm_sq();
         }
         let t2 = self.tolerance * self.tolerance;
-        self.errors(controls, |_, _, _, e| {
-            let slack = t2 - e.norm_sq();
+        self.bound_errors(controls, |_, _, e, tangent| {
+            let slack = t2 - bound_sq(e, tangent);
             parts.barrier += if slack > 0.0 {
                 -(slack / t2).ln()
             } else {
@@ -219,12 +257,18 @@ impl<const D: usize> Objective<'_, D> {
             blocks.add_isotropic(k, w3, weight);
         }
         let t2 = self.tolerance * self.tolerance;
-        self.errors(controls, |_, k, w, e| {
-            let slack = t2 - e.norm_sq();
-            let along = w.map(|c| e * c);
+        self.bound_errors(controls, |k, w, e, tangent| {
+            // `e^T P e` with `P = I - (1 - β) τ τ^T` (`τ` held: Gauss–Newton).
+            let slack = t2 - bound_sq(e, tangent);
+            let pe = e - tangent * ((1.0 - SLAB_ALONG) * e.dot(tangent));
+            let along = w.map(|c| pe * c);
             blocks.add_gradient(k, &along, 2.0 / slack);
             blocks.add_square(k, &along, 4.0 / (slack * slack), 0.0);
             blocks.add_isotropic(k, w, 2.0 / slack);
+            if self.slab {
+                let row = w.map(|c| tangent * c);
+                blocks.add_square(k, &row, -2.0 * (1.0 - SLAB_ALONG) / slack, 0.0);
+            }
         });
         blocks.scatter(space, self.layout, g, h);
     }
@@ -296,6 +340,18 @@ impl<const D: usize> Objective<'_, D> {
         self.errors(controls, |i, _, _, e| out[i] = e.norm());
         out
     }
+}
+
+/// The share `β` of the error along the tangent that the slab's bound counts (its square):
+/// the bound is `|e_⊥|^2 + β (e . τ)^2 < T^2`, so that a point may lie up to `T / sqrt β`
+/// along the tangent from its parameter's point between foot-point updates, and no farther.
+const SLAB_ALONG: f64 = 0.25;
+
+/// The squared error the bound counts: `|e|^2 - (1 - β) (e . τ)^2` for the unit tangent `τ`
+/// (`|e|^2`, the ball, when `τ` is zero).
+pub(crate) fn bound_sq<const D: usize>(e: Point<D>, tangent: Point<D>) -> f64 {
+    let along = e.dot(tangent);
+    e.norm_sq() - (1.0 - SLAB_ALONG) * along * along
 }
 
 /// The unit vector along `axis`.

@@ -106,6 +106,7 @@ pub(crate) fn fair_piece<const D: usize>(
             basis: Vec::new(),
             controls,
             shape: None,
+            slab: false,
         };
         solve.refresh_basis();
         if solve.start()? {

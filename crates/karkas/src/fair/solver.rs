@@ -21,7 +21,7 @@
 
 use super::blocks::Blocks;
 use super::layout::Layout;
-use super::objective::{Objective, Shape};
+use super::objective::{bound_sq, Basis, Objective, Shape};
 use super::shape::demanded_signs;
 use super::space::Space;
 use crate::solve::BandedSpd;
@@ -54,6 +54,9 @@ const SHAPE_PASSES: usize = 2;
 const SHAPE_ROUNDS: usize = 3;
 /// The margin asked of `dκ/ds sqrt(|r'|)` on its side of zero, a share of its mean square.
 const SHAPE_MARGIN: f64 = 1e-4;
+/// Foot-point updates after the slab's barrier, before the points are checked against
+/// their balls.
+const FINAL_PROJECTIONS: usize = 4;
 /// Newton steps of a foot-point update.
 const PROJECTION_STEPS: usize = 4;
 
@@ -67,10 +70,12 @@ pub(crate) struct Solve<'a, const D: usize> {
     /// Points whose parameter stays put (kept ends).
     pub(crate) pinned: &'a [bool],
     pub(crate) params: Vec<f64>,
-    /// The span and value weights at every parameter (kept with `params`).
-    pub(crate) basis: Vec<(usize, [f64; 4])>,
+    /// The span and the value and slope weights at every parameter (kept with `params`).
+    pub(crate) basis: Vec<Basis>,
     pub(crate) controls: Vec<Point<D>>,
     pub(crate) shape: Option<Shape>,
+    /// Whether the barrier bounds the error across the curve only (see [`Objective::slab`]).
+    pub(crate) slab: bool,
 }
 
 impl<const D: usize> Solve<'_, D> {
@@ -83,6 +88,7 @@ impl<const D: usize> Solve<'_, D> {
             tolerance: self.tolerance,
             alpha: self.alpha,
             shape: self.shape.as_ref(),
+            slab: self.slab,
         }
     }
 
@@ -153,9 +159,31 @@ impl<const D: usize> Solve<'_, D> {
         Ok(false)
     }
 
+    /// The barrier method from a feasible start: first with the bound taken across the curve
+    /// (a slab around the tangent at every point's parameter, so that the curve may slide
+    /// along itself while the parameters follow to the foot points), kept when every point
+    /// then lies within `T` of its parameter's point; otherwise again with the balls.
+    pub(crate) fn fair(&mut self) {
+        let (controls, params) = (self.controls.clone(), self.params.clone());
+        self.slab = true;
+        self.fair_stages();
+        for _ in 0..FINAL_PROJECTIONS {
+            self.project();
+        }
+        self.slab = false;
+        let distances = self.objective().distances(&self.controls);
+        if distances.iter().all(|&d| d < self.tolerance) {
+            return;
+        }
+        self.controls = controls;
+        self.params = params;
+        self.refresh_basis();
+        self.fair_stages();
+    }
+
     /// The barrier method from a feasible start, then the same with the signs of `dκ/ds`
     /// the points demand (see [`demanded_signs`]).
-    pub(crate) fn fair(&mut self) {
+    fn fair_stages(&mut self) {
         let n = self.points.len() as f64;
         let first = self.objective().parts(&self.controls);
         let t = n / first.fairing(self.alpha).max(f64::MIN_POSITIVE);
@@ -266,7 +294,7 @@ impl<const D: usize> Solve<'_, D> {
         self.basis.clear();
         self.basis.extend(self.params.iter().map(|&u| {
             let (k, s) = space.locate(u);
-            (k, space.weights(k, s, 0))
+            (k, space.weights(k, s, 0), space.weights(k, s, 1))
         }));
     }
 
@@ -276,6 +304,7 @@ impl<const D: usize> Solve<'_, D> {
     pub(crate) fn project(&mut self) {
         let space = self.space;
         let controls = &self.controls;
+        let t2 = self.tolerance * self.tolerance;
         for (i, (u, &p)) in self.params.iter_mut().zip(self.points).enumerate() {
             if self.pinned[i] {
                 continue;
@@ -299,8 +328,10 @@ impl<const D: usize> Solve<'_, D> {
                 let (k, _) = space.locate(*u);
                 let limit = space.width(k);
                 let next = space.wrap(*u + step.clamp(-limit, limit));
-                let d = at(next, 0).distance_sq(p);
-                if d.is_nan() || d >= best {
+                let e = at(next, 0) - p;
+                let d = e.norm_sq();
+                if d.is_nan() || d >= best || (self.slab && !(bound_sq(e, unit(at(next, 1))) < t2))
+                {
                     break;
                 }
                 best = d;
@@ -308,5 +339,15 @@ impl<const D: usize> Solve<'_, D> {
             }
         }
         self.refresh_basis();
+    }
+}
+
+/// `d` over its length (zero when it is zero).
+fn unit<const D: usize>(d: Point<D>) -> Point<D> {
+    let length = d.norm();
+    if length > 0.0 {
+        d * (1.0 / length)
+    } else {
+        Point::ZERO
     }
 }
