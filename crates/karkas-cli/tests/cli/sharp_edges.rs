@@ -234,3 +234,35 @@ fn the_fit_keeps_the_branches_of_real_sparse_sharp_edges_apart_within_its_tolera
         );
     }
 }
+
+/// The number of knots `curve fit` reports ("N knots").
+fn knots(err: &str) -> usize {
+    let at = err.find(" knots, max deviation").expect(err);
+    let digits: String = err[..at]
+        .chars()
+        .rev()
+        .take_while(|c| c.is_ascii_digit())
+        .collect();
+    digits.chars().rev().collect::<String>().parse().unwrap()
+}
+
+#[test]
+fn the_fit_of_a_thin_cambered_sharp_edge_is_sound_without_excess_turning() {
+    // FX 38-153: a 2.7-degree trailing edge whose lower branch arrives from above the chord.
+    // The repair's curve through the points crossed there by 2 degrees (its end tangents,
+    // mirrored in the end chords, passed each other), so the fit fell back to a faulty one:
+    // 21 knots turning 4.858 rad against the allowed 4.725.
+    let dir = temp_dir();
+    let input = real("fx38153.dat");
+    let (curve, err) = samples(&["curve", "fit", "--tolerance", "1e-4"], &input, dir.path());
+    assert!(!err.contains("rad in all"), "{err}");
+    assert!(!err.contains("crosses itself"), "{err}");
+    let depth = crossing_depth(&curve);
+    assert!(depth >= -1e-9, "the branches cross by {depth:e}: {err}");
+    let deviation = max_deviation(&err);
+    assert!(deviation <= 1e-4, "max deviation {deviation:e}");
+    let (a, b) = (curve[0], curve[curve.len() - 1]);
+    assert!((a[0] - b[0]).hypot(a[1] - b[1]) <= 1e-12, "ends apart");
+    let count = knots(&err);
+    assert!((17..=45).contains(&count), "{count} knots");
+}

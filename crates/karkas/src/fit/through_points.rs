@@ -5,7 +5,10 @@
 //! The curve is a [`HermiteSpline`] whose knots are points of the data (the nodes), at their
 //! cumulative chord length, so that it runs at about the same speed everywhere. At each node
 //! the tangent bisects the angle between the chords to the neighbouring nodes (at an end it
-//! is the neighbour's tangent mirrored in the end chord, the end piece a near circular arc),
+//! is the neighbour's tangent mirrored in the end chord, the end piece a near circular arc;
+//! at a shared end where the points turn by more than pi/2, a sharp trailing edge, it is the
+//! points' own end chord, so that the corner turns as the polygon's and the two branches
+//! reach it in the points' order),
 //! so a piece turns by half the polygon's angle at either of its nodes, and the curve about
 //! as much as the polygon through its nodes, which turns no more than the points' polygon (a
 //! polygon inscribed in another turns no more than it). The tangent's length on a piece is a
@@ -84,6 +87,7 @@ pub(crate) fn through_points<const D: usize>(
         s: &s,
         tolerance,
         inflecting,
+        corner: corner_chords(points),
     };
     let mut at = vec![0];
     for i in 1..n - 1 {
@@ -119,6 +123,9 @@ struct Nodes<'a, const D: usize> {
     tolerance: f64,
     /// The length of the end tangents of an inflecting piece, as a share of its reach.
     inflecting: f64,
+    /// At a shared end that is a corner ([`corner_chords`]): the unit directions of the
+    /// points' first and last chords, the curve's end tangents there.
+    corner: Option<(Point<D>, Point<D>)>,
 }
 
 impl<const D: usize> Nodes<'_, D> {
@@ -134,6 +141,9 @@ impl<const D: usize> Nodes<'_, D> {
             }
         };
         let last = at.len() - 1;
+        if let (Some((first, final_chord)), true) = (self.corner, j == 0 || j == last) {
+            return if j == 0 { first } else { final_chord };
+        }
         if j == 0 || j == last {
             let (end, next) = if j == 0 { (0, 1) } else { (last, last - 1) };
             if at.len() == 2 {
@@ -314,6 +324,24 @@ impl<const D: usize> Nodes<'_, D> {
     }
 }
 
+/// The unit directions of the first and the last chord of `points` (repeated points
+/// skipped) when the points' ends are one shared end ([`crate::core::shared_end`]: a sharp
+/// trailing edge) where the polygon turns by more than pi/2: a corner whose two branches
+/// the curve must reach in the points' order. The mirrored end tangents of the module docs
+/// can pass each other on a thin edge (on fx38153 of the corpus, with the end nodes a few
+/// points in, by 2 degrees: the branches cross at the corner); along the points' own end
+/// chords the curve's corner turns as the polygon's.
+fn corner_chords<const D: usize>(points: &[Point<D>]) -> Option<(Point<D>, Point<D>)> {
+    crate::core::shared_end(points)?;
+    let (start, end) = (points[0], points[points.len() - 1]);
+    let unit = |v: Point<D>| v * (1.0 / v.norm());
+    let second = points.iter().find(|&&p| p != start)?;
+    let before_last = points.iter().rev().find(|&&p| p != end)?;
+    let (out, into) = (unit(*second - start), unit(end - *before_last));
+    let corner = into.angle_to(out) > 0.5 * std::f64::consts::PI;
+    (corner && out.is_finite() && into.is_finite()).then_some((out, into))
+}
+
 /// The point of the piece `c` (power form) at `u`, and its derivative.
 fn on_piece<const D: usize>(c: &[Point<D>; 4], u: f64) -> (Point<D>, Point<D>) {
     let point = ((c[3] * u + c[2]) * u + c[1]) * u + c[0];
@@ -430,6 +458,45 @@ mod tests {
             assert!(nearest <= tolerance + 5e-6, "point {i}: {nearest}");
             assert!(fit.distances[i] <= tolerance, "point {i}");
             assert!(fit.distances[i] <= nearest + 1e-12, "point {i}");
+        }
+    }
+
+    #[test]
+    fn a_thin_sharp_edge_keeps_the_order_of_its_branches_at_the_corner() {
+        // FX 38-153 (UIUC, data/sharp-edges/fx38153.dat): a cambered section whose sharp
+        // trailing edge is 2.7 degrees thin, its lower branch arriving from above the chord.
+        let text = include_str!("../../../../data/sharp-edges/fx38153.dat");
+        let points: Vec<Point2> = text
+            .lines()
+            .skip(1)
+            .filter(|l| !l.trim().is_empty())
+            .map(|l| {
+                let v: Vec<f64> = l.split_whitespace().map(|f| f.parse().unwrap()).collect();
+                Point2::new([v[0], v[1]])
+            })
+            .collect();
+        // The signed turn from the direction `a` into `b`.
+        let turn = |a: Point2, b: Point2| (a[0] * b[1] - a[1] * b[0]).atan2(a.dot(b));
+        let n = points.len();
+        let polygon = turn(points[n - 1] - points[n - 2], points[1] - points[0]);
+        assert!((polygon.to_degrees() - 177.3).abs() < 0.1, "{polygon}");
+        for tolerance in [1e-4, 3e-4, 1e-3] {
+            for inflecting in INFLECTING_SHARES {
+                let fit = curve_through(&points, tolerance, inflecting);
+                let d = fit.spline.domain();
+                let curve = turn(fit.spline.deriv(d.end, 1), fit.spline.deriv(d.start, 1));
+                // The same corner as the points': the end chords' 2.7 degrees.
+                assert!(
+                    (curve - polygon).abs() < 1e-12,
+                    "{tolerance}: {curve} vs {polygon}"
+                );
+                let crossing: Vec<_> = shape_warnings(&points, &fit)
+                    .into_iter()
+                    .filter(|w| w.kind == FitWarningKind::SelfIntersection)
+                    .collect();
+                assert!(crossing.is_empty(), "{tolerance}: {crossing:?}");
+                assert!(fit.distances.iter().all(|&e| e <= tolerance));
+            }
         }
     }
 
