@@ -251,11 +251,10 @@ fn face_triangles(
     let mut params: Vec<[f64; 2]> = Vec::new();
     let mut insert = |cdt: &mut ConstrainedDelaunayTriangulation<Point2<f64>>, uv: [f64; 2]| {
         let at = Point2::new(uv[0] * scale.0, uv[1] * scale.1);
-        cdt.insert(at).ok().map(|h| {
+        cdt.insert(at).ok().inspect(|h| {
             if h.index() >= params.len() {
                 params.resize(h.index() + 1, uv);
             }
-            h
         })
     };
     let near_loops = nodes_near_loops(domain, &us, &vs, scale);
@@ -459,7 +458,7 @@ impl Soup {
         let grid = SegmentGrid::new(&self.positions, &self.triangles, &boundary, reach);
         // The vertices to insert into each boundary side: for each other face whose boundary
         // passes within reach, its nearest side.
-        let mut inserts: HashMap<(usize, usize), Vec<(f64, u32)>> = HashMap::new();
+        let mut inserts: Inserts = HashMap::new();
         for (&v, faces) in &vertex_faces {
             let p = self.positions[v as usize];
             let mut best: HashMap<usize, (f64, f64, (usize, usize))> = HashMap::new();
@@ -506,8 +505,8 @@ impl Soup {
 
     /// Replaces each triangle with vertices to insert on its sides by a fan from the
     /// opposite corner (one side at a time; a triangle with two split sides is split twice).
-    fn split_sides(&mut self, inserts: HashMap<(usize, usize), Vec<(f64, u32)>>) {
-        let mut by_triangle: HashMap<usize, Vec<(usize, Vec<(f64, u32)>)>> = HashMap::new();
+    fn split_sides(&mut self, inserts: Inserts) {
+        let mut by_triangle: HashMap<usize, Vec<SideInserts>> = HashMap::new();
         for ((t, side), mut list) in inserts {
             list.sort_by(|x, y| x.0.total_cmp(&y.0));
             by_triangle.entry(t).or_default().push((side, list));
@@ -580,6 +579,11 @@ fn along(p: Point3, a: Point3, b: Point3) -> (f64, f64) {
     let s = (p - a).dot(d) / len2;
     (s, p.distance(a + d * s))
 }
+
+/// Vertices to insert into boundary sides, by (triangle, side): (place along the side, vertex).
+type Inserts = HashMap<(usize, usize), Vec<(f64, u32)>>;
+/// One side's insertions: the side (from its corner) and (place along it, vertex).
+type SideInserts = (usize, Vec<(f64, u32)>);
 
 /// Boundary sides bucketed by the cubes of side `reach` their boxes touch.
 struct SegmentGrid {
