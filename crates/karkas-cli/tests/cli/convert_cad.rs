@@ -84,7 +84,8 @@ fn bad_tolerances_and_inputs_exit_2_and_write_nothing() {
     let model = square(dir.path(), "square.step", [0.0; 3]);
     let out = dir.path().join("out.stl");
     for t in ["0", "-1", "nan", "inf"] {
-        let o = karkas(&["convert", s(&model), s(&out), "--tolerance", t]);
+        let option = format!("--tolerance={t}");
+        let o = karkas(&["convert", s(&model), s(&out), &option]);
         assert_eq!(o.status.code(), Some(2), "{t}: {}", stderr(&o));
         assert!(stderr(&o).contains("tolerance"), "{t}: {}", stderr(&o));
         assert!(!out.exists(), "{t}");
