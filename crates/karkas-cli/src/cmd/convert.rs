@@ -5,9 +5,12 @@
 //! - a triangle mesh: `.obj`, `.stl` (binary or ASCII), `.ply`;
 //! - a surface grid: CSV with header `i,j,x,y,z` (a frame) or `u,v,x,y,z` (samples, `u`
 //!   outer, as the surface commands write them);
-//! - a curve: any other CSV or whitespace columns `x,y[,z]`, or an airfoil `.dat`.
+//! - a curve: any other CSV or whitespace columns `x,y[,z]`, or an airfoil `.dat`;
+//! - a CAD model: `.step`, `.stp`, `.p21`, `.iges`, `.igs` (read by
+//!   `karkas_io::cad::read::read_cad`), meshed to the chordal tolerance `--tolerance`
+//!   (`karkas_io::mesh::shape_mesh`) and written as a mesh.
 //!
-//! Outputs: a mesh to `.obj .stl .ply .vtk .glb .html`; a grid to those and `.vts .svg .png`
+//! Outputs: a mesh or a CAD model to `.obj .stl .ply .vtk .glb .html`; a grid to those and `.vts .svg .png`
 //! and `.csv` (`i,j,x,y,z`); a curve to `.svg .png .html`. Any other pair is refused.
 //! `--flip-normals` turns a mesh output over (reversed winding and normals).
 
@@ -22,11 +25,12 @@ use crate::output::target::{output_format, shown};
 use anyhow::{bail, Context, Result};
 use clap::Args;
 use karkas::{Grid, Point3};
+use karkas_io::cad::read::read_cad;
 use karkas_io::export::mesh::write_triangle_mesh;
 use karkas_io::grid::parse_grid;
 use karkas_io::input::{display_name, Input as Source};
 use karkas_io::mesh::TriangleMesh;
-use karkas_io::mesh::{read_mesh, read_mesh_from, MeshOptions};
+use karkas_io::mesh::{read_mesh, read_mesh_from, shape_mesh, MeshOptions};
 use karkas_io::points::{parse_curve_points_with, CurvePoints, ReadOptions};
 use karkas_io::samples::parse_surface_samples;
 use karkas_io::svg::CurveOverlay;
@@ -46,6 +50,10 @@ pub struct ConvertArgs {
     /// Write .stl and .ply as ASCII instead of binary.
     #[arg(long)]
     ascii: bool,
+    /// A CAD model (.step .stp .iges .igs): the largest distance of the mesh from the model's
+    /// faces, in the file's units (default: 1e-3 of the model's bounding-box diagonal).
+    #[arg(long, value_name = "T")]
+    tolerance: Option<f64>,
     #[command(flatten)]
     mesh: MeshOutput,
 }
@@ -76,7 +84,13 @@ pub fn run(args: &ConvertArgs) -> Result<()> {
     let format = output_format(&args.output, &GRID_OUT)?;
     args.mesh.check(format)?;
     ensure_distinct(&args.input, &args.output)?;
-    let input = read_input(&args.input)?;
+    if args.tolerance.is_some() && !is_cad(&args.input) {
+        bail!(
+            "--tolerance: only a CAD model (.step .stp .iges .igs) is meshed to a tolerance, not {}",
+            args.input.display()
+        );
+    }
+    let input = read_input(&args.input, args.tolerance)?;
     let (kind, allowed): (&str, &[OutputFormat]) = match &input {
         Input::Mesh(_) => ("a triangle mesh", &MESH_OUT),
         Input::Grid(..) => ("a surface grid", &GRID_OUT),
@@ -162,14 +176,15 @@ fn write_any_mesh(
 }
 
 /// Reads `path` as a mesh, a grid or a curve (see the module docs). A text input (`-`:
-/// standard input) is read once: its header decides which reader parses the text.
-fn read_input(path: &Path) -> Result<Input> {
-    let ext = path
-        .extension()
-        .and_then(|e| e.to_str())
-        .map(str::to_ascii_lowercase);
+/// standard input) is read once: its header decides which reader parses the text. A CAD
+/// model is meshed to `tolerance` (see [`cad_mesh`]).
+fn read_input(path: &Path, tolerance: Option<f64>) -> Result<Input> {
+    let ext = extension(path);
     if matches!(ext.as_deref(), Some("obj" | "stl" | "ply")) {
         return Ok(Input::Mesh(read_mesh(path)?));
+    }
+    if is_cad(path) {
+        return Ok(Input::Mesh(cad_mesh(path, tolerance)?));
     }
     let mut input = Source::open(path)?;
     if karkas_io::input::is_stdin(path) && looks_like_a_mesh(&mut input)? {
@@ -193,6 +208,32 @@ fn read_input(path: &Path) -> Result<Input> {
             })
         }
     }
+}
+
+/// The lower-case extension of `path`.
+fn extension(path: &Path) -> Option<String> {
+    path.extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase)
+}
+
+/// True when `path` names a CAD model by its extension.
+fn is_cad(path: &Path) -> bool {
+    matches!(
+        extension(path).as_deref(),
+        Some("step" | "stp" | "p21" | "iges" | "igs")
+    )
+}
+
+/// The mesh of the CAD model `path` within `tolerance` of its faces (1e-3 of its size when
+/// not given); what the reader skipped is warned in one line.
+fn cad_mesh(path: &Path, tolerance: Option<f64>) -> Result<TriangleMesh> {
+    let model = read_cad(path)?;
+    if let Some(warning) = model.warning() {
+        note(format!("karkas: warning: {warning}"));
+    }
+    let tolerance = tolerance.unwrap_or(1e-3 * model.shape.size());
+    shape_mesh(&model.shape, tolerance).with_context(|| format!("cannot mesh {}", path.display()))
 }
 
 /// True when the first bytes of standard input (looked at, not consumed) are a mesh

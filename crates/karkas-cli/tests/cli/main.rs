@@ -10,6 +10,7 @@ mod closed_profiles;
 mod common;
 mod contract;
 mod convert;
+mod convert_cad;
 mod curve_analyze;
 mod curve_fair;
 mod curve_fit;

@@ -9,6 +9,7 @@
 //!   input by content ([`sniff_mesh_format`]).
 //! - [`closed`]: bodies: poles closed by fans, seams welded, planar caps, outward normals
 //!   and the enclosed volume ([`body_mesh`]).
+//! - [`shape_mesh`]: the faces of a CAD shape (a STEP or IGES model) to a chordal tolerance.
 //! - [`obj`] (Wavefront OBJ), [`stl`] (binary and ASCII STL), [`ply`] (Stanford PLY),
 //!   [`vtk`] (legacy VTK and XML structured grids `.vts`), [`glb`] (binary glTF 2.0).
 
@@ -20,6 +21,7 @@ pub(crate) mod normals;
 pub mod obj;
 pub mod ply;
 mod ply_read;
+mod shape_mesh;
 pub(crate) mod shared_vertices;
 pub mod stl;
 mod stl_read;
@@ -33,4 +35,5 @@ pub use any_format::{
 };
 pub use closed::{body_mesh, closed_grid_mesh, BodyMeshError, MeshBody, MeshCap};
 pub use error::MeshError;
+pub use shape_mesh::{shape_mesh, ShapeMeshError};
 pub use triangle_mesh::TriangleMesh;
