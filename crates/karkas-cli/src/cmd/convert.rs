@@ -91,23 +91,7 @@ pub fn run(args: &ConvertArgs) -> Result<()> {
         );
     }
     let input = read_input(&args.input, args.tolerance)?;
-    let (kind, allowed): (&str, &[OutputFormat]) = match &input {
-        Input::Mesh(_) => ("a triangle mesh", &MESH_OUT),
-        Input::Grid(..) => ("a surface grid", &GRID_OUT),
-        Input::Curve(..) => ("a curve", &CURVE_OUT),
-    };
-    if !allowed.contains(&format) {
-        let list: Vec<String> = allowed
-            .iter()
-            .map(|f| format!(".{}", f.extension()))
-            .collect();
-        bail!(
-            "cannot convert {} ({kind}) to .{}: {kind} converts to {}",
-            args.input.display(),
-            format.extension(),
-            list.join(", ")
-        );
-    }
+    check_allowed(&args.input, &input, format)?;
     check_memory(
         &format!("convert {}", args.input.display()),
         match &input {
@@ -160,6 +144,29 @@ pub fn run(args: &ConvertArgs) -> Result<()> {
         "karkas: wrote {} ({count} points)",
         shown(&args.output).display()
     ));
+    Ok(())
+}
+
+/// Refuses an output `format` that `input`'s kind (read from `path`) does not convert to.
+fn check_allowed(path: &Path, input: &Input, format: OutputFormat) -> Result<()> {
+    let (kind, allowed): (&str, &[OutputFormat]) = match input {
+        Input::Mesh(_) if is_cad(path) => ("a CAD model", &MESH_OUT),
+        Input::Mesh(_) => ("a triangle mesh", &MESH_OUT),
+        Input::Grid(..) => ("a surface grid", &GRID_OUT),
+        Input::Curve(..) => ("a curve", &CURVE_OUT),
+    };
+    if !allowed.contains(&format) {
+        let list: Vec<String> = allowed
+            .iter()
+            .map(|f| format!(".{}", f.extension()))
+            .collect();
+        bail!(
+            "cannot convert {} ({kind}) to .{}: {kind} converts to {}",
+            path.display(),
+            format.extension(),
+            list.join(", ")
+        );
+    }
     Ok(())
 }
 
