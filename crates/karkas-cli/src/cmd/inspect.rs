@@ -131,8 +131,7 @@ fn percentile(sorted: &[f64], p: f64) -> f64 {
 /// The summary: counts, largest, RMS and mean distance, percentiles, the signed range, and
 /// the `worst` farthest points.
 fn summary(points: &[Point3], found: &[ShapeNearest], worst: usize) -> String {
-    let mut sorted: Vec<f64> = found.iter().map(|f| f.distance).collect();
-    sorted.sort_by(f64::total_cmp);
+    let sorted = sorted_distances(found);
     let n = sorted.len() as f64;
     let rms = (sorted.iter().map(|d| d * d).sum::<f64>() / n).sqrt();
     let mean = sorted.iter().sum::<f64>() / n;
@@ -144,26 +143,22 @@ fn summary(points: &[Point3], found: &[ShapeNearest], worst: usize) -> String {
     for p in PERCENTILES {
         let _ = writeln!(text, "p{p} {}", percentile(&sorted, p));
     }
-    let signed: Vec<f64> = found.iter().filter_map(|f| f.signed).collect();
-    if !signed.is_empty() {
-        let low = signed.iter().copied().fold(f64::INFINITY, f64::min);
-        let high = signed.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    let (mut count, mut outside, mut inside) = (0usize, 0usize, 0usize);
+    let (mut low, mut high) = (f64::INFINITY, f64::NEG_INFINITY);
+    for s in found.iter().filter_map(|f| f.signed) {
+        count += 1;
+        outside += usize::from(s > 0.0);
+        inside += usize::from(s < 0.0);
+        low = low.min(s);
+        high = high.max(s);
+    }
+    if count > 0 {
         let _ = writeln!(
             text,
-            "signed {} points, min {low}, max {high}, outside {}, inside {}",
-            signed.len(),
-            signed.iter().filter(|&&s| s > 0.0).count(),
-            signed.iter().filter(|&&s| s < 0.0).count()
+            "signed {count} points, min {low}, max {high}, outside {outside}, inside {inside}"
         );
     }
-    let mut order: Vec<usize> = (0..found.len()).collect();
-    order.sort_by(|&a, &b| {
-        found[b]
-            .distance
-            .total_cmp(&found[a].distance)
-            .then(a.cmp(&b))
-    });
-    for (rank, &k) in order.iter().take(worst).enumerate() {
+    for (rank, k) in farthest(found, &sorted, worst).into_iter().enumerate() {
         let (q, f) = (points[k], &found[k]);
         let signed = f
             .signed
@@ -185,6 +180,71 @@ fn summary(points: &[Point3], found: &[ShapeNearest], worst: usize) -> String {
     text
 }
 
+/// The distances in increasing order (`f64::total_cmp`): an LSD radix sort of their bits
+/// mapped to keys in that order, four passes of 16 bits. Values equal by `total_cmp` have
+/// equal bits, so any correct sort gives these very values in this very order.
+fn sorted_distances(found: &[ShapeNearest]) -> Vec<f64> {
+    const SIGN: u64 = 1 << 63;
+    let key = |x: f64| {
+        let b = x.to_bits();
+        if b & SIGN == 0 {
+            b | SIGN
+        } else {
+            !b
+        }
+    };
+    let value = |k: u64| f64::from_bits(if k & SIGN != 0 { k & !SIGN } else { !k });
+    let mut keys: Vec<u64> = found.iter().map(|f| key(f.distance)).collect();
+    if keys.len() < 1 << 16 {
+        keys.sort_unstable();
+        return keys.into_iter().map(value).collect();
+    }
+    let mut counts = vec![[0usize; 1 << 16]; 4];
+    for &k in &keys {
+        for (pass, count) in counts.iter_mut().enumerate() {
+            count[((k >> (16 * pass)) & 0xffff) as usize] += 1;
+        }
+    }
+    let mut spare = vec![0u64; keys.len()];
+    for (pass, count) in counts.iter_mut().enumerate() {
+        if count.iter().any(|&c| c == keys.len()) {
+            continue; // every key has this digit: the pass would not move any
+        }
+        let mut next = 0;
+        for c in count.iter_mut() {
+            (*c, next) = (next, next + *c);
+        }
+        for &k in &keys {
+            let digit = ((k >> (16 * pass)) & 0xffff) as usize;
+            spare[count[digit]] = k;
+            count[digit] += 1;
+        }
+        std::mem::swap(&mut keys, &mut spare);
+    }
+    keys.into_iter().map(value).collect()
+}
+
+/// The indices of the `worst` farthest points, farthest first (ties by index): those at
+/// least as far as the `worst`-th largest of the `sorted` distances, ordered.
+fn farthest(found: &[ShapeNearest], sorted: &[f64], worst: usize) -> Vec<usize> {
+    let worst = worst.min(sorted.len());
+    if worst == 0 {
+        return Vec::new();
+    }
+    let threshold = sorted[sorted.len() - worst];
+    let mut order: Vec<usize> = (0..found.len())
+        .filter(|&k| found[k].distance.total_cmp(&threshold).is_ge())
+        .collect();
+    order.sort_unstable_by(|&a, &b| {
+        found[b]
+            .distance
+            .total_cmp(&found[a].distance)
+            .then(a.cmp(&b))
+    });
+    order.truncate(worst);
+    order
+}
+
 /// Rows of the report formatted at once (in parallel, then written in order).
 const ROWS_PER_CHUNK: usize = 8192;
 
@@ -200,23 +260,26 @@ fn write_report(
     writeln!(out, "{REPORT_HEADER}")?;
     let rows = points.len().min(found.len());
     let chunks = rows.div_ceil(ROWS_PER_CHUNK);
-    // Two chunks per thread at a time bound the memory the formatted rows take.
+    // Two chunks per thread at a time bound the memory the formatted rows take; their
+    // buffers are kept from batch to batch.
     let batch = 2 * rayon::current_num_threads().max(1);
+    let mut texts: Vec<Vec<u8>> = vec![Vec::new(); batch.min(chunks)];
     for first in (0..chunks).step_by(batch) {
-        let texts: Vec<Vec<u8>> = (first..(first + batch).min(chunks))
-            .into_par_iter()
-            .map(|c| {
-                let start = c * ROWS_PER_CHUNK;
+        let count = batch.min(chunks - first);
+        texts[..count]
+            .par_iter_mut()
+            .enumerate()
+            .for_each(|(i, text)| {
+                let start = (first + i) * ROWS_PER_CHUNK;
                 let end = (start + ROWS_PER_CHUNK).min(rows);
-                let mut text = Vec::with_capacity(200 * (end - start));
+                text.clear();
+                text.reserve(200 * (end - start));
                 for k in start..end {
-                    report_row(&mut text, k, points[k], &found[k]);
+                    report_row(text, k, points[k], &found[k]);
                 }
-                text
-            })
-            .collect();
-        for text in texts {
-            out.write_all(&text)?;
+            });
+        for text in &texts[..count] {
+            out.write_all(text)?;
         }
     }
     out.flush()
@@ -246,7 +309,7 @@ fn report_row(text: &mut Vec<u8>, k: usize, q: Point3, f: &ShapeNearest) {
 
 #[cfg(test)]
 mod tests {
-    use super::{percentile, report_row};
+    use super::{farthest, percentile, report_row, sorted_distances};
     use karkas::shape::ShapeNearest;
     use karkas::Point3;
     use std::fmt::Write as _;
@@ -332,6 +395,58 @@ mod tests {
             let mut text = Vec::new();
             report_row(&mut text, k, q, &f);
             assert_eq!(String::from_utf8(text).unwrap(), row_by_fmt(k, q, &f));
+        }
+    }
+
+    /// Results at the distances `d` (other fields fixed).
+    fn at_distances(d: &[f64]) -> Vec<ShapeNearest> {
+        d.iter()
+            .map(|&distance| ShapeNearest {
+                distance,
+                ..ShapeNearest::UNDEFINED
+            })
+            .collect()
+    }
+
+    #[test]
+    fn distances_sort_and_the_farthest_are_those_of_full_sorts() {
+        let special = [
+            0.0,
+            -0.0,
+            f64::NAN,
+            -f64::NAN,
+            f64::INFINITY,
+            1e-300,
+            5e-324,
+            -1.0,
+        ];
+        let mut state = 0x2545_f491_4f6c_dd1du64;
+        for n in [1usize, 7, 1000, 70_000, 200_000] {
+            let d: Vec<f64> = (0..n)
+                .map(|k| {
+                    state ^= state << 13;
+                    state ^= state >> 7;
+                    state ^= state << 17;
+                    match k % 5 {
+                        0 => special[(state % 8) as usize],
+                        1 => (state % 50) as f64 * 0.25, // many ties
+                        2 => f64::from_bits(state),
+                        _ => (state >> 11) as f64 / (1u64 << 53) as f64 * 20.0,
+                    }
+                })
+                .collect();
+            let found = at_distances(&d);
+            let mut want = d.clone();
+            want.sort_by(f64::total_cmp);
+            let got = sorted_distances(&found);
+            let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<u64>>();
+            assert_eq!(bits(&got), bits(&want), "{n}");
+            let mut order: Vec<usize> = (0..n).collect();
+            order.sort_by(|&a, &b| d[b].total_cmp(&d[a]).then(a.cmp(&b)));
+            for worst in [0, 1, 3, 10, n / 2, n, n + 5] {
+                let want: Vec<usize> = order.iter().copied().take(worst).collect();
+                assert_eq!(farthest(&found, &got, worst), want, "{n} {worst}");
+            }
         }
     }
 

@@ -44,6 +44,11 @@ impl Bounds {
     /// The distance from `q` to the box: zero inside it, infinite for the empty box. It never
     /// exceeds the distance from `q` to any point the box holds.
     pub(super) fn distance(&self, q: Point3) -> f64 {
+        self.distance_sq(q).sqrt()
+    }
+
+    /// The square of [`Bounds::distance`], before its square root (the same sum).
+    fn distance_sq(&self, q: Point3) -> f64 {
         if self.lo[0] > self.hi[0] {
             return f64::INFINITY;
         }
@@ -52,7 +57,7 @@ impl Bounds {
             let d = (self.lo[a] - q[a]).max(q[a] - self.hi[a]).max(0.0);
             sum += d * d;
         }
-        sum.sqrt()
+        sum
     }
 }
 
@@ -161,22 +166,32 @@ impl BoxTree {
     }
 
     /// Appends to `out` every item whose box is nearer `q` than `reach`, with that distance.
+    ///
+    /// Nodes are passed over by the squared distance, without its square root, only when it
+    /// exceeds `reach^2` by more than rounding: such a node's distance is at least `reach`
+    /// (the square root is correctly rounded), so the items found are those a test of every
+    /// distance finds.
     pub(super) fn within(&self, q: Point3, reach: f64, out: &mut Vec<(f64, usize)>) {
         if self.nodes.is_empty() {
             return;
         }
+        let far = reach * reach * (1.0 + 4.0 * f64::EPSILON);
         // The depth is below 64 for any count of items (the tree is balanced).
         let mut stack = [0usize; 64];
         let mut top = 1;
         while top > 0 {
             top -= 1;
             let node = self.nodes[stack[top]];
-            if node.bounds.distance(q) >= reach {
+            if node.bounds.distance_sq(q) > far {
                 continue;
             }
             if node.leaf {
                 for &k in &self.items[node.first..node.last] {
-                    let lower = self.boxes[k].distance(q);
+                    let square = self.boxes[k].distance_sq(q);
+                    if square > far {
+                        continue;
+                    }
+                    let lower = square.sqrt();
                     if lower < reach {
                         out.push((lower, k));
                     }
@@ -285,6 +300,21 @@ mod tests {
                     .filter(|f| f.0 < reach)
                     .collect();
                 assert_eq!(found, want, "{count}");
+                // A reach at a box's distance exactly, and one rounding step either side.
+                if let Some((lower, _)) = want.first().copied().filter(|w| w.0 > 0.0) {
+                    for reach in [lower.next_down(), lower, lower.next_up()] {
+                        found.clear();
+                        tree.within(q, reach, &mut found);
+                        found.sort_by_key(|f| f.1);
+                        let want: Vec<(f64, usize)> = boxes
+                            .iter()
+                            .enumerate()
+                            .map(|(k, b)| (b.distance(q), k))
+                            .filter(|f| f.0 < reach)
+                            .collect();
+                        assert_eq!(found, want, "{count} at {reach}");
+                    }
+                }
             }
         }
     }
