@@ -26,6 +26,7 @@ use super::shape::demanded_signs;
 use super::space::Space;
 use crate::solve::BandedSpd;
 use crate::{Point, Result};
+use std::cmp::Ordering;
 
 /// The share of `T` within which the start puts every point.
 const START_SHARE: f64 = 0.9;
@@ -330,7 +331,10 @@ impl<const D: usize> Solve<'_, D> {
                 let next = space.wrap(*u + step.clamp(-limit, limit));
                 let e = at(next, 0) - p;
                 let d = e.norm_sq();
-                if d.is_nan() || d >= best || (self.slab && !(bound_sq(e, unit(at(next, 1))) < t2))
+                if d.is_nan()
+                    || d >= best
+                    || (self.slab
+                        && bound_sq(e, unit(at(next, 1))).partial_cmp(&t2) != Some(Ordering::Less))
                 {
                     break;
                 }
