@@ -207,7 +207,7 @@ fn sorted_distances(found: &[ShapeNearest]) -> Vec<f64> {
     }
     let mut spare = vec![0u64; keys.len()];
     for (pass, count) in counts.iter_mut().enumerate() {
-        if count.iter().any(|&c| c == keys.len()) {
+        if count.contains(&keys.len()) {
             continue; // every key has this digit: the pass would not move any
         }
         let mut next = 0;
