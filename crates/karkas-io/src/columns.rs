@@ -898,7 +898,7 @@ mod tests {
                         .collect();
                     let point = (next() % (digits as u64 + 2)) as usize;
                     if point <= digits {
-                        text.insert(point, if next() % 3 == 0 { '.' } else { ',' });
+                        text.insert(point, if next().is_multiple_of(3) { '.' } else { ',' });
                     }
                     match next() % 4 {
                         0 => format!("-{text}"),
