@@ -118,8 +118,9 @@ impl CurveJob for CurveCommand<'_, CurveLlArgs> {
         };
         let remedy = if args.interpolate {
             "the interpolating LL curve takes its points at evenly spaced parameters and \
-             overshoots where they lie very unevenly apart: the approximating LL curve (without \
-             --interpolate), curve spline or curve fit follow them"
+             overshoots where they lie very unevenly apart (less at a higher --order, whose \
+             control points move less): the approximating LL curve (without --interpolate), \
+             curve spline or curve fit follow them"
         } else {
             "look at the points there (out of order, or a sharp turn)"
         };

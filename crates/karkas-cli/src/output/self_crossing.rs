@@ -39,7 +39,17 @@ pub fn warn_self_crossing<const D: usize>(
     }
     let n = (SAMPLES_PER_POINT * points.len()).min(MAX_CROSSING_SAMPLES);
     let (_, samples) = sample_curve(curve, n);
-    let line: Vec<Point2> = samples.iter().map(plane).collect();
+    let mut line: Vec<Point2> = samples.iter().map(plane).collect();
+    if polygon[0] == polygon[polygon.len() - 1] {
+        // The points' ends are one point (a shared end, or a closed curve's seam): the curve's
+        // ends meet there by construction, its two end samples only to round-off (the ends of
+        // the domain evaluate apart in the last bit). One bit apart, the first and last
+        // segments cross properly at the corner: a crossing of round-off, not of the curve.
+        let first = line[0];
+        if let Some(last) = line.last_mut() {
+            *last = first;
+        }
+    }
     let found = polyline_crossings(&line);
     let Some(first) = found.first() else {
         return;
