@@ -26,11 +26,15 @@
 //!
 //! Roughness within the precision the coordinates carry is not noise: `sigma` is 0 when it
 //! is at most ten times the coordinates' resolution (the range of their last written digit),
-//! the larger of the decimal quantum they are written in (every coordinate's difference from
-//! the first point's a multiple of `10^-k`, found from the values: an airfoil file with five
-//! decimals has `10^-5`; rounding to it is noise of `10^-5 / sqrt 12`, and tabulated
-//! sections carry a zigzag of a unit or two of the last decimal between neighbours) and 64
-//! units in the last place of the largest coordinate.
+//! the larger of 64 units in the last place of the largest coordinate and the finest of the
+//! coordinates' lattice spacings. A coordinate is on a lattice of spacing `q` when every
+//! point's difference from the first point's is a multiple of `q` (found from the values by
+//! Euclid's algorithm, whatever the base: an airfoil file with five decimals has `10^-5`,
+//! the same file multiplied by 7.57 has `7.57e-5`, so the rule is the same at every scale
+//! and offset); rounding to it is noise of `q / sqrt 12`, and tabulated sections carry a
+//! zigzag of a unit or two of the last decimal between neighbours. The finest coordinate
+//! decides, so that stations on a coarse grid (every 0.025 of the chord) beside a finely
+//! written coordinate do not hide noise.
 //!
 //! The bending term `lambda int |R''(t)|^2 dt` is weighted
 //! `lambda = (rho phi + s psi (sigma / L)^2) n tau`, with `n` the number of points, `L` the
@@ -133,6 +137,9 @@ const PLATEAU_ORDERS: usize = 4;
 /// last decimal (AH 80-140: every other point 1.6e-5 off at five decimals), whose scale on
 /// the ladder is 1.6 to 2.3 times its amplitude (5.9 units for AH 80-140).
 const RESOLUTION_STEPS: f64 = 10.0;
+/// Steps of its range a coordinate's lattice spacing spans at most: finer lattices are the
+/// doubles' own rounding, not digits written.
+const LATTICE_STEPS: f64 = 1e12;
 /// Windows an order needs to be on the ladder.
 const FEWEST_WINDOWS: usize = 3;
 
@@ -255,10 +262,10 @@ fn plateau(ladder: &[f64]) -> f64 {
     0.0
 }
 
-/// The finest roughness the coordinates can show: the larger of their decimal quantum (the
-/// largest `10^e` every coordinate's difference from the first point's is a multiple of, to
-/// a thousandth of it; none when some coordinate is not on such a grid within `10^12` steps
-/// of its range) and 64 units in the last place of the largest coordinate.
+/// The finest roughness the coordinates can show: the finest of their lattice spacings (see
+/// [`lattice_spacing`]; none when some coordinate is not on a lattice) and 64 units in the
+/// last place of the largest coordinate. Both scale with the points, so the rule is the same
+/// at every scale and offset: five decimals multiplied by 7.57 are a lattice of `7.57e-5`.
 fn resolution<const D: usize>(points: &[Point<D>]) -> f64 {
     let Some(first) = points.first() else {
         return 0.0;
@@ -268,33 +275,58 @@ fn resolution<const D: usize>(points: &[Point<D>]) -> f64 {
         .flat_map(|p| p.0)
         .fold(0.0f64, |m, c| m.max(c.abs()));
     let rounding = 64.0 * f64::EPSILON * magnitude;
-    let mut quantum = 0.0f64;
+    let mut finest = f64::INFINITY;
     for c in 0..D {
-        let range = points
-            .iter()
-            .fold(0.0f64, |m, p| m.max((p[c] - first[c]).abs()));
+        let differences = || points.iter().map(move |p| (p[c] - first[c]).abs());
+        let range = differences().fold(0.0f64, f64::max);
         if range == 0.0 {
             continue;
         }
-        if !range.is_finite() {
-            return rounding;
-        }
-        let coarsest = range.log10().floor() as i32;
-        let step = (coarsest - 12..=coarsest)
-            .rev()
-            .map(|e| 10f64.powi(e))
-            .find(|&q| {
-                points.iter().all(|p| {
-                    let steps = (p[c] - first[c]) / q;
-                    (steps - steps.round()).abs() <= 1e-3
-                })
-            });
-        match step {
-            Some(q) => quantum = quantum.max(q),
+        match lattice_spacing(differences, range) {
+            Some(q) => finest = finest.min(q),
             None => return rounding,
         }
     }
-    quantum.max(rounding)
+    if finest.is_finite() {
+        finest.max(rounding)
+    } else {
+        rounding
+    }
+}
+
+/// The spacing `q` of the coarsest lattice `{k q}` that holds every one of `differences` (to
+/// a thousandth of `q`), whose largest is `range`: their approximate greatest common divisor
+/// by Euclid's algorithm on remainders rounded to the nearest multiple, refined on the
+/// largest difference after each. `None` when it falls below `range / LATTICE_STEPS` (values computed
+/// in full precision), or is not finite.
+fn lattice_spacing<I: Iterator<Item = f64>>(
+    differences: impl Fn() -> I,
+    range: f64,
+) -> Option<f64> {
+    let floor = range / LATTICE_STEPS;
+    if !(floor > 0.0 && range.is_finite()) {
+        return None;
+    }
+    let (mut spacing, mut largest) = (0.0f64, 0.0f64);
+    for d in differences().filter(|&d| d > floor) {
+        let (mut a, mut b) = (spacing.max(d), spacing.min(d));
+        while b > floor {
+            (a, b) = (b, (a - b * (a / b).round()).abs());
+        }
+        if a <= floor {
+            return None;
+        }
+        // Refined on the largest difference, a multiple of the spacing, so that the rounding
+        // of the remainders does not build up over the differences.
+        largest = largest.max(d);
+        spacing = largest / (largest / a).round();
+    }
+    differences()
+        .all(|d| {
+            let steps = d / spacing;
+            (steps - steps.round()).abs() <= 1e-3
+        })
+        .then_some(spacing)
 }
 
 /// The total turning of the polygon through at most [`TURNING_VERTICES`] points spread
@@ -531,7 +563,7 @@ mod tests {
         // Exact points of a dense ellipse written with 5 decimals: the rounding (2.9e-6 per
         // coordinate) makes a plateau, below the quantum 1e-5.
         let dense = rounded(&ellipse(400), 5);
-        assert_eq!(resolution(&dense), 1e-5);
+        assert!((resolution(&dense) / 1e-5 - 1.0).abs() < 1e-9);
         assert_eq!(estimate_noise(&dense).sigma, 0.0);
         // Moved by an offset the quantum is the same.
         let moved: Vec<Point2> = dense
@@ -550,5 +582,44 @@ mod tests {
         assert!((sigma / 1e-3 - 1.0).abs() < 0.1, "{sigma}");
         // Coordinates not on a decimal grid have only the doubles' own resolution.
         assert!(resolution(&ellipse(400)) < 1e-13);
+    }
+
+    #[test]
+    fn the_resolution_is_the_same_at_every_scale() {
+        // Five decimals multiplied by a scale that is no power of ten or two are a lattice of
+        // the scaled quantum; the noise found on them scales with them.
+        let q = 1e5;
+        let written: Vec<Point2> = ellipse(400)
+            .iter()
+            .map(|p| Point2::new([(p[0] * q).round() / q, (p[1] * q).round() / q]))
+            .collect();
+        let noise = gaussian(5, 800);
+        let noisy: Vec<Point2> = written
+            .iter()
+            .enumerate()
+            .map(|(i, p)| *p + Point2::new([noise[2 * i], noise[2 * i + 1]]) * 3e-4)
+            .map(|p| Point2::new([(p[0] * q).round() / q, (p[1] * q).round() / q]))
+            .collect();
+        let unit = estimate_noise(&noisy).sigma;
+        for scale in [7.57, 6.2e151 / 1e150, 1e-140, 3.3e140] {
+            let scaled: Vec<Point2> = written.iter().map(|p| *p * scale).collect();
+            let found = resolution(&scaled) / scale;
+            assert!((found / 1e-5 - 1.0).abs() < 1e-9, "{scale}: {found}");
+            assert_eq!(estimate_noise(&scaled).sigma, 0.0, "{scale}");
+            let moved: Vec<Point2> = noisy
+                .iter()
+                .map(|p| (*p + Point2::new([1e3, -2e3])) * scale)
+                .collect();
+            let sigma = estimate_noise(&moved).sigma / scale;
+            assert!(
+                (sigma / unit - 1.0).abs() < 1e-6,
+                "{scale}: {sigma} vs {unit}"
+            );
+        }
+        // Stations on a coarse grid beside a finely written coordinate: the fine one decides.
+        let stations: Vec<Point2> = (0..=40)
+            .map(|k| Point2::new([0.025 * k as f64, ((0.3 * k as f64).sin() * q).round() / q]))
+            .collect();
+        assert!((resolution(&stations) / 1e-5 - 1.0).abs() < 1e-6);
     }
 }
