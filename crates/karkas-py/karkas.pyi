@@ -290,6 +290,7 @@ def fit_curve(
     penalty: Literal["active", "paper"] = "active",
     free_ends: bool = False,
     closed: bool = False,
+    starts: int = 1,
 ) -> HermiteSpline:
     """Fits points (n, d) with a C^1 cubic Hermite spline; give knots (count or array) or
     tolerance. The options and defaults are those of karkas curve fit."""

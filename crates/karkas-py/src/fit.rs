@@ -158,6 +158,12 @@ fn fit_bytes(points: usize, knots: usize, dim: usize) -> u128 {
 ///     inserting knots in every piece, the seam's included; a last point repeating the first
 ///     is dropped. The result's value and derivative at 1 equal those at 0. Not with
 ///     ``pin_ends`` or ``free_ends``; with ``eps`` the penalty follows the paper's rule.
+/// starts : int, optional
+///     Solve Pavlov's system from this many starting parameterizations (1 to 8, default 1:
+///     the paper's chord length; then cumulative chords to the powers 0.5, 0, 0.75, 0.25,
+///     1.5, 0.875, 0.625) and keep the fit with the smallest sum of squared distances among
+///     those that neither cross themselves nor turn beyond their points (as ``karkas curve
+///     fit --starts``). Open fits on given knots only.
 ///
 /// Returns
 /// -------
@@ -172,8 +178,9 @@ fn fit_bytes(points: usize, knots: usize, dim: usize) -> u128 {
 /// KnotsError
 ///     Knots not strictly increasing from 0 to 1, or fewer than 2.
 /// OptionError
-///     Both or neither of ``knots`` and ``tolerance``, an option out of range, or
-///     ``closed`` with ``pin_ends`` or ``free_ends``.
+///     Both or neither of ``knots`` and ``tolerance``, an option out of range,
+///     ``closed`` with ``pin_ends`` or ``free_ends``, or ``starts`` other than 1 without
+///     given knots or with ``closed``.
 ///
 /// Examples
 /// --------
@@ -196,9 +203,9 @@ fn fit_bytes(points: usize, knots: usize, dim: usize) -> u128 {
 /// >>> bool(e.max_distance < 1e-3)
 /// True
 #[pyfunction]
-#[pyo3(signature = (points, knots = None, tolerance = None, eps = None, pin_ends = false, corners = None, fairness = DEFAULT_FAIRNESS, smoothing = None, penalty = "active", free_ends = false, closed = false))]
+#[pyo3(signature = (points, knots = None, tolerance = None, eps = None, pin_ends = false, corners = None, fairness = DEFAULT_FAIRNESS, smoothing = None, penalty = "active", free_ends = false, closed = false, starts = 1))]
 #[pyo3(
-    text_signature = "(points, knots=None, tolerance=None, eps=None, pin_ends=False, corners=None, fairness=3e-11, smoothing=None, penalty='active', free_ends=False, closed=False)"
+    text_signature = "(points, knots=None, tolerance=None, eps=None, pin_ends=False, corners=None, fairness=3e-11, smoothing=None, penalty='active', free_ends=False, closed=False, starts=1)"
 )]
 #[allow(clippy::too_many_arguments)]
 pub fn fit_curve(
@@ -214,10 +221,16 @@ pub fn fit_curve(
     penalty: &str,
     free_ends: bool,
     closed: bool,
+    starts: usize,
 ) -> PyResult<Py<PyHermiteSpline>> {
     let penalty = penalty_rule(penalty)?;
     let (pts, dim) = PointsArray::extract_checked(points, "points")?;
     let target = Target::parse(py, knots, tolerance, pts.len(), dim)?;
+    if starts != 1 && (closed || !matches!(target, Target::Knots(_))) {
+        return Err(OptionError::new_err(
+            "starts: several starts apply to open fits on given knots (give knots=, not tolerance= or closed=True)",
+        ));
+    }
     let mut options = FitOptions {
         ends: fit_ends(pin_ends, free_ends, closed)?,
         corners: corners
@@ -227,6 +240,7 @@ pub fn fit_curve(
         fairness,
         smoothing,
         penalty,
+        starts,
         ..FitOptions::default()
     };
     if let Some(eps) = eps {

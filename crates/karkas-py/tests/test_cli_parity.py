@@ -102,6 +102,7 @@ def grid_file(tmp_path):
         (("surface", "dps-tube"), "r2", karkas.TubeSurface, "r2"),
         (("surface", "bicubic"), "param", karkas.BicubicSurface, "parameterization"),
         (("curve", "fit"), "fairness", karkas.fit_curve, "fairness"),
+        (("curve", "fit"), "starts", karkas.fit_curve, "starts"),
     ],
 )
 def test_defaults_are_the_same(command, option, python, keyword):
@@ -169,6 +170,7 @@ def test_curve_ll(tmp_path, wavy_file, options, kwargs):
         (["--knots", 6, "--corner", 0.4, "--fairness", 0], dict(knots=6, corners=[0.4], fairness=0.0)),
         (["--tolerance", 2e-3], dict(tolerance=2e-3)),
         (["--knots", "0,0.3,0.45,0.7,1", "--eps", 0.05, "--penalty", "paper"], dict(knots=[0, 0.3, 0.45, 0.7, 1], eps=0.05, penalty="paper")),
+        (["--knots", 6, "--starts", 5], dict(knots=6, starts=5)),
     ],
 )
 def test_curve_fit(tmp_path, wavy_file, options, kwargs):

@@ -274,3 +274,17 @@ def test_fit_penalty_rules():
     assert paper.jump_sum <= eps and paper.jump_sum < active.jump_sum
     with pytest.raises(karkas.OptionError, match="penalty must be 'active' or 'paper'"):
         karkas.fit_curve(pts, knots=5, penalty="soft")
+
+
+def test_fit_starts_keep_a_sound_fit_no_worse_than_one_start():
+    """starts=N keeps the sound fit with the smallest sum of squared distances; bad counts
+    and starts without given knots raise OptionError."""
+    t = np.linspace(0.0, 2.0 * np.pi, 16)
+    pts = np.column_stack([0.5 * (1 + np.cos(t)), 0.06 * np.sin(t) * (1 + 0.5 * np.cos(t))])
+    one = karkas.fit_curve(pts, knots=6)
+    many = karkas.fit_curve(pts, knots=6, starts=8)
+    assert np.sum(many.distances**2) <= np.sum(one.distances**2) * (1 + 1e-12)
+    assert not any("cross" in str(w) for w in many.warnings)
+    for bad in (dict(knots=6, starts=0), dict(knots=6, starts=9), dict(tolerance=1e-3, starts=2), dict(knots=6, closed=True, starts=2)):
+        with pytest.raises(karkas.OptionError):
+            karkas.fit_curve(pts, **bad)

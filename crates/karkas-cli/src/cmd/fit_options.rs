@@ -66,6 +66,18 @@ pub struct FitCurveOptions {
     /// p = H(q*) / eps, times 10 until the bound holds.
     #[arg(long, value_enum, default_value_t = Penalty::Active)]
     pub penalty: Penalty,
+    /// Solve Pavlov's system from N starting parameterizations on the given knots (1: the
+    /// paper's chord length; then cumulative chords to the powers 0.5, 0, 0.75, 0.25, 1.5,
+    /// 0.875, 0.625) and keep the fit with the smallest sum of squared distances among those
+    /// that do not cross themselves or turn beyond their points; 1 to 8 (open fits on given
+    /// knots).
+    #[arg(
+        long,
+        value_name = "N",
+        default_value_t = 1,
+        conflicts_with = "tolerance"
+    )]
+    pub starts: usize,
 }
 
 /// The rule for the penalty `p` (`--penalty`).
@@ -113,6 +125,9 @@ impl FitCurveOptions {
         if let Some(s) = self.smoothing.filter(|s| !(s.is_finite() && *s >= 0.0)) {
             bail!("--smoothing: must be a number >= 0, got {s}");
         }
+        if !(1..=8).contains(&self.starts) {
+            bail!("--starts: must be 1 to 8, got {}", self.starts);
+        }
         if let Some(tol) = self.tolerance {
             if !(tol.is_finite() && tol > 0.0) {
                 bail!("--tolerance: must be a positive number, got {tol}");
@@ -141,6 +156,7 @@ impl FitCurveOptions {
             fairness: self.fairness,
             smoothing: self.smoothing,
             penalty: self.penalty.to_library(),
+            starts: self.starts,
             ..Default::default()
         }
     }

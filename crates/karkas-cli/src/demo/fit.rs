@@ -8,7 +8,9 @@ use super::common::{Finding, Output};
 use crate::output::samples::sample_curve;
 use anyhow::{Context, Result};
 use karkas::fit::polyline_crossings;
-use karkas::fit::{fit_curve, CurveFit, FitOptions, PenaltyRule};
+use karkas::fit::{
+    fit_curve, shape_warnings, CurveFit, FitOptions, FitWarningKind, PenaltyRule, StartParameters,
+};
 use karkas::{Curve, Point2};
 use karkas_io::svg::{write_fit_svg, FitPlot};
 use karkas_io::write::{write_atomic, write_curve_csv};
@@ -69,8 +71,61 @@ pub fn run(out: &Output) -> Result<Vec<Finding>> {
     let per_point = write_deviations(out, &seed, &active)?;
     write_fit(out, &points, &active)?;
     let mut findings = summary(&points, &seed, &active);
+    findings.extend(starts(&points)?);
     findings.extend(per_point);
     Ok(findings)
+}
+
+/// The powers of the cumulative chords of `--starts 8`, in order (docs/methods.md §4).
+const START_POWERS: [f64; 8] = [1.0, 0.5, 0.0, 0.75, 0.25, 1.5, 0.875, 0.625];
+
+/// The paper's objective `H` from each start of `--starts 8` (bound active), how many of
+/// those fits cross themselves or turn beyond the points, and what `--starts 8` keeps.
+fn starts(points: &[Point2]) -> Result<Vec<Finding>> {
+    let (mut lowest, mut highest) = (f64::INFINITY, 0.0f64);
+    let mut unsound = 0;
+    for power in START_POWERS {
+        let options = FitOptions {
+            eps: EPS,
+            start: StartParameters::ChordPower(power),
+            ..Default::default()
+        };
+        let fit = fit_curve(points, &KNOTS, &options).context("hydrofoil fit, one start")?;
+        lowest = lowest.min(fit.data_term);
+        highest = highest.max(fit.data_term);
+        let faults = shape_warnings(points, &fit).iter().any(|w| {
+            matches!(
+                w.kind,
+                FitWarningKind::SelfIntersection | FitWarningKind::ExcessTurning
+            )
+        });
+        unsound += usize::from(faults);
+    }
+    let options = FitOptions {
+        eps: EPS,
+        starts: START_POWERS.len(),
+        ..Default::default()
+    };
+    let kept = fit_curve(points, &KNOTS, &options).context("hydrofoil fit, 8 starts")?;
+    Ok(vec![
+        Finding::new(
+            EXAMPLE,
+            "Pavlov's objective H (sum of squared distances) from the chord-length start, bound active",
+            fit_curve(points, &KNOTS, &FitOptions { eps: EPS, ..Default::default() })?.data_term,
+        ),
+        Finding::new(
+            EXAMPLE,
+            "lowest H of the 8 starts of --starts 8 (cumulative chords to the powers 1, 0.5, 0, 0.75, 0.25, 1.5, 0.875, 0.625)",
+            lowest,
+        ),
+        Finding::new(EXAMPLE, "highest H of the 8 starts", highest),
+        Finding::new(
+            EXAMPLE,
+            "starts of the 8 whose fit crosses itself or turns beyond the points",
+            unsound as f64,
+        ),
+        Finding::new(EXAMPLE, "H kept by --starts 8 (loop-free fits only, else the first start's)", kept.data_term),
+    ])
 }
 
 /// The table of each point's deviation under both penalties beside the paper's, and the

@@ -348,3 +348,64 @@ fn penalty_rules_meet_the_bound_actively_or_by_the_paper() {
     assert_eq!(o.status.code(), Some(2));
     assert!(stderr(&o).contains("--penalty"), "{}", stderr(&o));
 }
+
+/// `curve fit --json` of the paper's hydrofoil on its knots with `extra` options.
+fn hydrofoil_fit(extra: &[&str]) -> std::process::Output {
+    let input = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../data/hydrofoil-profile.csv"
+    );
+    let dir = temp_dir();
+    let out = dir.path().join("f.csv");
+    let mut args = vec![
+        "curve",
+        "fit",
+        "--knots",
+        "0,0.445,0.449,0.587,1",
+        "--eps",
+        "0.01",
+        "--penalty",
+        "paper",
+        "--json",
+        input,
+        "-o",
+        s(&out),
+    ];
+    args.extend_from_slice(extra);
+    karkas(&args)
+}
+
+#[test]
+fn more_starts_keep_a_sound_fit_no_worse_than_chord_length() {
+    let figures = |extra: &[&str]| {
+        let o = hydrofoil_fit(extra);
+        assert!(o.status.success(), "{extra:?}: {}", stderr(&o));
+        let v: serde_json::Value =
+            serde_json::from_str(&String::from_utf8_lossy(&o.stdout)).unwrap();
+        let crossing = v["warnings"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .any(|w| w.to_string().contains("cross"));
+        (v["rms_deviation"].as_f64().unwrap(), crossing)
+    };
+    let (one, _) = figures(&[]);
+    let (explicit_one, _) = figures(&["--starts", "1"]);
+    assert_eq!(one.to_bits(), explicit_one.to_bits());
+    let (eight, crossing) = figures(&["--starts", "8"]);
+    assert!(eight <= one * (1.0 + 1e-12), "{eight} vs {one}");
+    assert!(!crossing);
+}
+
+#[test]
+fn a_bad_number_of_starts_is_refused_naming_the_option() {
+    for extra in [
+        &["--starts", "0"][..],
+        &["--starts", "9"][..],
+        &["--starts", "x"][..],
+    ] {
+        let o = hydrofoil_fit(extra);
+        assert_eq!(o.status.code(), Some(2), "{extra:?}");
+        assert!(stderr(&o).contains("--starts"), "{extra:?}: {}", stderr(&o));
+    }
+}

@@ -100,6 +100,7 @@ pub fn check_clean_hydrofoil(out: &Path, examples: &[Value]) {
         .expect("the paper's crossings row");
     assert_eq!(crossing["karkas"].as_f64(), Some(2.0));
     assert!(paper["note"].as_str().unwrap().contains("cross themselves"));
+    check_starts(paper);
 
     let row = |prefix: &str| -> f64 {
         clean["rows"]
@@ -155,4 +156,30 @@ pub fn check_clean_hydrofoil(out: &Path, examples: &[Value]) {
     ] {
         assert!(html.contains(&format!("src=\"{picture}\"")), "{picture}");
     }
+}
+
+/// The note's statements on the starts: every start's H within 1e-4 of the chord-length
+/// start's, every start's fit crossing itself, the chord-length fit kept, and the paper's
+/// largest deviation below karkas's.
+fn check_starts(paper: &Value) {
+    let row = |prefix: &str| -> f64 {
+        paper["rows"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|r| r["measure"].as_str().unwrap().starts_with(prefix))
+            .and_then(|r| r["karkas"].as_f64())
+            .unwrap_or_else(|| panic!("no row {prefix}"))
+    };
+    let note = paper["note"].as_str().unwrap();
+    assert!(note.contains("within 1e-4") && note.contains("keeps the chord-length fit"));
+    let chord = row("Pavlov's objective H");
+    let lowest = row("lowest H of the 8 starts");
+    assert!(
+        lowest <= chord && chord - lowest <= 1e-4 * chord,
+        "{lowest} vs {chord}"
+    );
+    assert_eq!(row("starts of the 8 whose fit crosses itself"), 8.0);
+    assert_eq!(row("H kept by --starts 8").to_bits(), chord.to_bits());
+    assert!(row("max deviation, bound active") > 0.71);
 }

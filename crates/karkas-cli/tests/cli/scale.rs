@@ -4,9 +4,13 @@
 //! the limits (largest magnitude above 1e152 or below 1e-152) are refused with exit 2 and a
 //! message saying they are out of range.
 //!
-//! The tolerance mode of `curve fit` is compared at power-of-two scales, where the scaled
-//! input is exact: it decides to add and remove knots, and its result moves by about 2e-11
-//! when the unit points are perturbed by one ulp, which a decimal scale's rounding does.
+//! `curve fit` is compared exactly at power-of-two scales, where the scaled input is exact.
+//! At other scales the rounding of the scaled input moves every point by up to an ulp, and
+//! the fit moves with it by more than 1e-12: its iteration stops once no point's distance
+//! moves by more than a millionth of the RMS distance (so on exact points, where the
+//! distances are small, the shape is settled to about 1e-10 of the size), and the tolerance
+//! mode decides to add and remove knots (its result moves by about 2e-11 when the unit points
+//! move by one ulp). Given knots are held to [`SETTLED_FIT`] at those scales.
 
 use crate::common::{karkas, s, stderr, stdout, temp_dir, write};
 use proptest::prelude::*;
@@ -161,6 +165,20 @@ fn scaled_difference(unit: &Output, scaled: &Output, scale: f64) -> Option<f64> 
 }
 
 /// One command of the table: how to run it on data at `scale` in `dir`, and what it gives.
+/// The relative difference `curve fit --knots` is held to at scales that are not powers of
+/// two (see the module documentation): a thousand times the shape's settling on exact points.
+const SETTLED_FIT: f64 = 1e-9;
+
+/// The tolerance of `job` at a scale that rounds its input, for a command otherwise held to
+/// `tolerance`.
+fn rounded_input_tolerance(job: &Job, tolerance: f64) -> f64 {
+    if job.name == "curve fit --knots" {
+        tolerance.max(SETTLED_FIT)
+    } else {
+        tolerance
+    }
+}
+
 struct Job {
     name: &'static str,
     run: fn(&Path, f64) -> Result<Output, String>,
@@ -363,6 +381,7 @@ fn check_every_job(scale: f64, tolerance: f64) -> Result<(), TestCaseError> {
         let scaled = (job.run)(scaled_dir.path(), scale)
             .map_err(|e| TestCaseError::fail(format!("{} at {scale:e}: {e}", job.name)))?;
         let difference = scaled_difference(&unit, &scaled, scale);
+        let tolerance = rounded_input_tolerance(job, tolerance);
         prop_assert!(
             difference.is_some_and(|d| d <= tolerance),
             "{} at scale {scale:e}: relative difference {difference:?} (unit {unit:?}, scaled {scaled:?})",
@@ -383,14 +402,17 @@ proptest! {
     }
 
     #[test]
-    fn the_tolerance_mode_of_the_fit_is_exactly_equivariant(exponent in -498i32..=498) {
+    fn the_fit_is_exactly_equivariant_at_powers_of_two(exponent in -498i32..=498) {
         let scale = 2f64.powi(exponent);
-        let job = |d: &Path, k: f64| curve_job(d, k, &["curve", "fit", "--tolerance", &format!("{:e}", 1e-3 * k)]);
-        let (unit_dir, scaled_dir) = (temp_dir(), temp_dir());
-        let unit = job(unit_dir.path(), 1.0).map_err(TestCaseError::fail)?;
-        let scaled = job(scaled_dir.path(), scale).map_err(TestCaseError::fail)?;
-        let difference = scaled_difference(&unit, &scaled, scale);
-        prop_assert!(difference.is_some_and(|d| d <= 1e-12), "2^{exponent}: {difference:?}");
+        let tolerance_mode = |d: &Path, k: f64| curve_job(d, k, &["curve", "fit", "--tolerance", &format!("{:e}", 1e-3 * k)]);
+        let knots_mode = |d: &Path, k: f64| curve_job(d, k, &["curve", "fit", "--knots", "5"]);
+        for (name, job) in [("tolerance", &tolerance_mode as &dyn Fn(&Path, f64) -> Result<Output, String>), ("knots", &knots_mode)] {
+            let (unit_dir, scaled_dir) = (temp_dir(), temp_dir());
+            let unit = job(unit_dir.path(), 1.0).map_err(TestCaseError::fail)?;
+            let scaled = job(scaled_dir.path(), scale).map_err(TestCaseError::fail)?;
+            let difference = scaled_difference(&unit, &scaled, scale);
+            prop_assert!(difference.is_some_and(|d| d <= 1e-12), "{name} at 2^{exponent}: {difference:?}");
+        }
     }
 }
 
@@ -417,8 +439,9 @@ fn coordinates_at_the_limits_work_and_past_them_are_refused() {
             let scaled = (job.run)(scaled_dir.path(), scale)
                 .unwrap_or_else(|e| panic!("{} at {scale:e}: {e}", job.name));
             let difference = scaled_difference(&unit, &scaled, scale);
+            let tolerance = rounded_input_tolerance(job, 1e-12);
             assert!(
-                difference.is_some_and(|d| d <= 1e-12),
+                difference.is_some_and(|d| d <= tolerance),
                 "{} at {scale:e}: {difference:?}",
                 job.name
             );

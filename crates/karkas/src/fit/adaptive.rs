@@ -243,7 +243,9 @@ fn adaptive_rounds<const D: usize>(
             FitEnds::Auto => FitEnds::Shared,
             other => other,
         },
-        smoothing: Some(if tolerance < NOISE_FLOOR * sigma {
+        // With no noise found the smoothing weighs nothing: it is none, so that the rounds
+        // are those of `--smoothing 0` (no second pass without it).
+        smoothing: Some(if sigma == 0.0 || tolerance < NOISE_FLOOR * sigma {
             0.0
         } else {
             asked

@@ -116,6 +116,9 @@ pub enum StartParameters {
     Centripetal,
     /// Uniform: `t_i = (i - 1) / (n - 1)`.
     Uniform,
+    /// In proportion to cumulative chords raised to this power (finite, at least 0): 1 is
+    /// chord length, 0.5 centripetal, 0 uniform; the starts of [`super::FitOptions::starts`].
+    ChordPower(f64),
     /// Given by the caller: `n` values, nondecreasing, from 0 to 1.
     Given(Vec<f64>),
 }
@@ -166,39 +169,21 @@ pub(crate) fn start_parameters_for<const D: usize>(
     sigma: f64,
 ) -> Result<Vec<f64>> {
     let n = points.len();
-    let stride = noise_stride(points, sigma);
-    let chords = |power: f64| -> Result<Vec<f64>> {
-        // Cumulative chords through every `stride`-th point (and the last), in proportion to
-        // the index between them.
-        let mut acc = vec![0.0; n];
-        let mut total = 0.0;
-        let mut from = 0;
-        while from + 1 < n {
-            let to = (from + stride).min(n - 1);
-            let chord = points[from].distance(points[to]).powf(power);
-            for (j, a) in acc[from + 1..=to].iter_mut().enumerate() {
-                *a = total + chord * (j + 1) as f64 / (to - from) as f64;
-            }
-            total += chord;
-            from = to;
-        }
-        if !(total.is_finite() && total > 0.0) {
-            return Err(Error::TooFewPoints {
-                what: "a fit (distinct points)",
-                needed: 2,
-                got: 1,
-            });
-        }
-        for a in &mut acc {
-            *a /= total;
-        }
-        acc[n - 1] = 1.0;
-        Ok(acc)
-    };
+    let chords = |power: f64| chord_power_parameters(points, power, sigma);
     match rule {
         StartParameters::ChordLength => chords(1.0),
         StartParameters::Centripetal => chords(0.5),
         StartParameters::Uniform => Ok(uniform_knots(n)),
+        StartParameters::ChordPower(power) => {
+            if !(power.is_finite() && *power >= 0.0) {
+                return Err(Error::InvalidSetting {
+                    name: "start chord power",
+                    value: *power,
+                    reason: "must be finite and at least 0",
+                });
+            }
+            chords(*power)
+        }
         StartParameters::Given(ts) => {
             if ts.len() != n {
                 return Err(Error::InvalidSetting {
@@ -224,6 +209,44 @@ pub(crate) fn start_parameters_for<const D: usize>(
             Ok(ts.clone())
         }
     }
+}
+
+/// Parameters in proportion to the cumulative chords raised to `power` (1 chord length, 0.5
+/// centripetal, 0 uniform), the chords measured over strides of points at least
+/// [`CHORD_OVER_NOISE`] times the noise `sigma` apart.
+fn chord_power_parameters<const D: usize>(
+    points: &[Point<D>],
+    power: f64,
+    sigma: f64,
+) -> Result<Vec<f64>> {
+    let n = points.len();
+    let stride = noise_stride(points, sigma);
+    // Cumulative chords through every `stride`-th point (and the last), in proportion to
+    // the index between them.
+    let mut acc = vec![0.0; n];
+    let mut total = 0.0;
+    let mut from = 0;
+    while from + 1 < n {
+        let to = (from + stride).min(n - 1);
+        let chord = points[from].distance(points[to]).powf(power);
+        for (j, a) in acc[from + 1..=to].iter_mut().enumerate() {
+            *a = total + chord * (j + 1) as f64 / (to - from) as f64;
+        }
+        total += chord;
+        from = to;
+    }
+    if !(total.is_finite() && total > 0.0) {
+        return Err(Error::TooFewPoints {
+            what: "a fit (distinct points)",
+            needed: 2,
+            got: 1,
+        });
+    }
+    for a in &mut acc {
+        *a /= total;
+    }
+    acc[n - 1] = 1.0;
+    Ok(acc)
 }
 
 /// A previous fit's foot parameters as the next fit's start (the tolerance mode's rounds): clamped to `[0, 1]`,

@@ -52,7 +52,8 @@
 //! cubic spline on the same knots and a large `eps` gives the unconstrained C^1 fit; on a
 //! NACA section with known truth the fit approaches the true contour as knots are added.
 //! The objective is not convex in the parameters: the result is a local minimum reached
-//! from chord-length parameters.
+//! from chord-length parameters, or the best sound one of several starts
+//! ([`FitOptions::starts`]).
 //!
 //! Complexity: each iteration is `O(n D^2)` for `n` points in R^D (one pass to assemble the
 //! banded Newton system, one to project the points from their previous foot points, `O(1)`
@@ -72,6 +73,7 @@ mod gradient;
 mod guards;
 mod hermite;
 mod knots;
+mod multistart;
 mod newton;
 mod noise;
 mod order;

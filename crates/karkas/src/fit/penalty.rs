@@ -36,6 +36,7 @@ use super::ends::end_pins;
 use super::guards::with_warnings;
 use super::hermite::HermiteSpline;
 use super::knots::{check_knots, start_parameters_for, StartParameters};
+use super::multistart::{best_of_starts, MOST_STARTS};
 use super::noise::{estimate_noise, NoiseEstimate};
 use super::power::PowerForm;
 use super::problem::{Problem, State, Taper};
@@ -168,6 +169,15 @@ pub struct FitOptions {
     /// are farthest, and there more smoothing keeps wavy coordinates from making the curve
     /// turn to and fro.
     pub smoothing: Option<f64>,
+    /// Starts of Pavlov's system (4) on given knots ([`fit_curve`]; default 1, the paper's
+    /// chord-length start, or [`FitOptions::start`]): with `N > 1` the fit is solved again
+    /// from `N - 1` more starting parameterizations (cumulative chords to the powers 0.5, 0,
+    /// 0.75, 0.25, 1.5, 0.875, 0.625, in that order) and the fit with the smallest data term
+    /// `H` among those that neither cross themselves nor turn beyond their points is kept;
+    /// when none is sound, the first. At most 8. The objective is not convex in the
+    /// parameters, so another start can reach a lower `H` (docs/methods.md §4, "Starts").
+    /// The tolerance mode and closed fits start from their own rules and leave it unused.
+    pub starts: usize,
 }
 
 /// Where the ends of a fit lie (docs/methods.md §4, "Ends").
@@ -208,6 +218,7 @@ impl Default for FitOptions {
             settle_tolerance: DEFAULT_SETTLE_TOLERANCE,
             ordered: true,
             smoothing: None,
+            starts: 1,
         }
     }
 }
@@ -322,6 +333,13 @@ pub(crate) fn check_settings(options: &Settings<'_>) -> Result<()> {
             reason: "must lie in [0, 1)",
         });
     }
+    if !(1..=MOST_STARTS).contains(&options.starts) {
+        return Err(Error::InvalidSetting {
+            name: "starts",
+            value: options.starts as f64,
+            reason: "must be 1 to 8",
+        });
+    }
     if options.max_iterations == 0 {
         return Err(Error::InvalidSetting {
             name: "max_iterations",
@@ -394,8 +412,14 @@ pub fn fit_curve<const D: usize>(
     let scaled = unit.points(points);
     let settings = Settings::in_fit_units(options, unit);
     let noise = estimate_noise(&scaled);
-    let start = start_parameters_for(&scaled, settings.start, noise.sigma)?;
-    let fit = fit_checked(&scaled, knots, &weights, start, &settings, &noise);
+    let fit = if settings.starts > 1 {
+        best_of_starts(&scaled, settings.start, settings.starts, &noise, |start| {
+            fit_checked(&scaled, knots, &weights, start, &settings, &noise)
+        })
+    } else {
+        let start = start_parameters_for(&scaled, settings.start, noise.sigma)?;
+        fit_checked(&scaled, knots, &weights, start, &settings, &noise)
+    };
     // The moved copy of the points is released before the shape guards look at the fit.
     drop(scaled);
     fit.map(|fit| with_warnings(points, unit.restore(fit, pinned_ends(points, options))))
@@ -924,6 +948,7 @@ pub(crate) struct Settings<'a> {
     pub settle_tolerance: f64,
     pub ordered: bool,
     pub smoothing: Option<f64>,
+    pub starts: usize,
 }
 
 impl<'a> Settings<'a> {
@@ -959,6 +984,7 @@ impl<'a> Settings<'a> {
             settle_tolerance,
             ordered,
             smoothing,
+            starts,
         } = *options;
         Settings {
             eps,
@@ -973,6 +999,7 @@ impl<'a> Settings<'a> {
             settle_tolerance,
             ordered,
             smoothing,
+            starts,
         }
     }
 }

@@ -82,9 +82,9 @@ fn an_ellipse_is_fitted_closed_and_c1_across_the_seam() {
             // Shape: the curve lies near the exact ellipse (cubic error on exact points,
             // the noise's order on noisy ones).
             let off = curve_to_ellipse(s, centre);
-            // (The default smoothing reads the bends of 40 points as noise of about 3e-3
-            // and evens the curve accordingly: about 1e-4 off on exact points.)
-            let bound = if sigma == 0.0 { 4e-4 } else { 3e-3 };
+            // (No noise is found on the exact points, so the fit is the plain least-squares
+            // one: 5.4e-4 off on 10 pieces, its cubic error.)
+            let bound = if sigma == 0.0 { 7e-4 } else { 3e-3 };
             assert!(off < bound, "sigma {sigma}, {centre:?}, {pieces}: {off:e}");
             // The seam: value and first derivative equal on both sides.
             let size = 6.0;

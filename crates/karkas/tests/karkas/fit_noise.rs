@@ -232,3 +232,45 @@ fn the_default_smoothing_depends_on_the_mode() {
     assert_eq!(tolerance(None), tolerance(Some(TOLERANCE_SMOOTHING)));
     assert_ne!(tolerance(None), tolerance(Some(DEFAULT_SMOOTHING)));
 }
+
+#[test]
+fn on_exact_sparse_points_the_defaults_are_the_papers_method() {
+    // Exact points of NACA 2412 (cosine spacing, a sharp trailing edge at both ends) and of
+    // a spiral of two turns, 12 to 60 of them: no noise is found, and the default fit on
+    // given knots and in the tolerance mode is the one without smoothing, to the bit.
+    use karkas::fit::fit_curve_adaptive;
+    let section = |n: usize| -> Vec<Point2> {
+        (0..n)
+            .map(|i| naca(0.02, 0.4, 0.12, 2.0 * PI * i as f64 / (n - 1) as f64))
+            .collect()
+    };
+    let spiral = |n: usize| -> Vec<Point2> {
+        (0..n)
+            .map(|i| {
+                let a = 4.0 * PI * i as f64 / (n - 1) as f64;
+                Point2::new([(1.0 + 0.5 * a) * a.cos(), (1.0 + 0.5 * a) * a.sin()])
+            })
+            .collect()
+    };
+    let none = FitOptions {
+        smoothing: Some(0.0),
+        ..Default::default()
+    };
+    for n in [12, 30, 60] {
+        for points in [section(n), spiral(n)] {
+            let knots = uniform_knots((n / 3).max(4));
+            let default = fit_curve(&points, &knots, &FitOptions::default()).unwrap();
+            assert_eq!(default.noise.sigma, 0.0, "{n}");
+            let plain = fit_curve(&points, &knots, &none).unwrap();
+            assert_eq!(default.spline, plain.spline, "{n}");
+            let size = default.noise.size;
+            let adaptive = fit_curve_adaptive(&points, 1e-3 * size, &FitOptions::default());
+            let plain = fit_curve_adaptive(&points, 1e-3 * size, &none);
+            assert_eq!(
+                adaptive.unwrap().fit.spline,
+                plain.unwrap().fit.spline,
+                "{n}"
+            );
+        }
+    }
+}

@@ -28,6 +28,7 @@ mod fit_naca;
 mod fit_noise;
 mod fit_optimality;
 mod fit_parallel;
+mod fit_starts;
 mod fit_translation;
 mod geometry;
 mod geometry_batch;
