@@ -233,11 +233,31 @@ fn is_cad(path: &Path) -> bool {
 }
 
 /// The mesh of the CAD model `path` within `tolerance` of its faces (1e-3 of its size when
-/// not given); what the reader skipped is warned in one line.
+/// not given); what the reader skipped is warned in one line. A model without faces, or
+/// whose faces all collapse to one point, is refused before the tolerance is looked at.
 fn cad_mesh(path: &Path, tolerance: Option<f64>) -> Result<TriangleMesh> {
     let model = read_cad(path)?;
     if let Some(warning) = model.warning() {
         note(format!("karkas: warning: {warning}"));
+    }
+    let shape = &model.shape;
+    if shape.faces.is_empty() {
+        bail!(
+            "cannot mesh {}: the model has no faces to mesh ({} curves)",
+            path.display(),
+            shape.curves.len()
+        );
+    }
+    let mut corners = shape
+        .faces
+        .iter()
+        .flat_map(|f| f.surface.control_points().as_slice());
+    let first = corners.next().copied();
+    if corners.all(|p| Some(*p) == first) {
+        bail!(
+            "cannot mesh {}: the model's faces collapse to one point (their size is 0)",
+            path.display()
+        );
     }
     let tolerance = tolerance.unwrap_or(1e-3 * model.shape.size());
     shape_mesh(&model.shape, tolerance).with_context(|| format!("cannot mesh {}", path.display()))

@@ -13,7 +13,8 @@
 //! instance it does not define, a cycle of references, an entity with the wrong number or
 //! kind of parameters, or more data than the memory cap is refused with an
 //! [`IoError::Parse`] naming the line and the instance (STEP `#n` and its type; IGES the
-//! directory entry and its type).
+//! directory entry and its type). A model whose control points leave the range of coordinates
+//! karkas works with (`crate::range`: magnitudes up to 1e152) is refused as a whole.
 
 mod analytic;
 mod iges_build;
@@ -35,6 +36,8 @@ use std::path::Path;
 
 use crate::error::{data_error, IoError};
 use crate::input::{display_name, Input};
+use crate::range::check_coordinate_range;
+use karkas::shape::Shape;
 
 /// Reads the CAD file `path` (STEP or IGES, told by its content).
 ///
@@ -53,10 +56,29 @@ pub fn read_cad_from(
     format: CadFormat,
     reader: &mut dyn BufRead,
 ) -> Result<CadModel, IoError> {
-    match format {
-        CadFormat::Step => step_read::read_step(name, reader),
-        CadFormat::Iges => iges_build::read_iges(name, reader),
-    }
+    let model = match format {
+        CadFormat::Step => step_read::read_step(name, reader)?,
+        CadFormat::Iges => iges_build::read_iges(name, reader)?,
+    };
+    check_coordinate_range(model_coordinates(&model.shape), name)?;
+    Ok(model)
+}
+
+/// Every coordinate of the control points of `shape`'s surfaces, trimming edges and free
+/// curves.
+fn model_coordinates(shape: &Shape) -> impl Iterator<Item = f64> + '_ {
+    let surfaces = shape
+        .faces
+        .iter()
+        .flat_map(|f| f.surface.control_points().as_slice());
+    let edges = shape
+        .faces
+        .iter()
+        .flat_map(|f| &f.loops)
+        .flat_map(|l| &l.edges)
+        .flat_map(|e| e.curve.control_points());
+    let curves = shape.curves.iter().flat_map(|c| c.control_points());
+    surfaces.chain(edges).chain(curves).flat_map(|p| p.0)
 }
 
 /// Tells STEP from IGES by the first bytes (white space skipped).
