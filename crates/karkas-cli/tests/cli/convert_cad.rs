@@ -176,3 +176,33 @@ fn a_tolerance_far_below_the_model_is_refused_by_the_vertex_limit() {
     assert!(o.status.success(), "{}", stderr(&o));
     assert!(!read_obj(&coarse).1.is_empty());
 }
+
+#[test]
+fn a_model_on_standard_input_is_meshed() {
+    let dir = temp_dir();
+    let model = square_model(dir.path(), "square.step", [0.0; 3]);
+    let text = std::fs::read_to_string(&model).unwrap();
+    let out = dir.path().join("piped.obj");
+    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_karkas"))
+        .args(["convert", "-", s(&out), "--tolerance", "1e-3"])
+        .stdin(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    use std::io::Write as _;
+    child
+        .stdin
+        .take()
+        .unwrap()
+        .write_all(text.as_bytes())
+        .unwrap();
+    let o = child.wait_with_output().unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    // The same mesh as from the file itself.
+    let direct = dir.path().join("direct.obj");
+    let o = karkas(&["convert", s(&model), s(&direct), "--tolerance", "1e-3"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let (piped, file) = (read_obj(&out), read_obj(&direct));
+    assert!(!piped.1.is_empty());
+    assert_eq!(piped, file);
+}

@@ -81,23 +81,30 @@ fn model_coordinates(shape: &Shape) -> impl Iterator<Item = f64> + '_ {
     surfaces.chain(edges).chain(curves).flat_map(|p| p.0)
 }
 
-/// Tells STEP from IGES by the first bytes (white space skipped).
-fn sniff(name: &Path, reader: &mut dyn BufRead) -> Result<CadFormat, IoError> {
-    let head = reader.fill_buf().map_err(IoError::open(name))?;
+/// The CAD format the first bytes `head` of a file start (white space skipped): STEP's
+/// `ISO-10303-21`, or IGES's first 80-column record with the section letter in column 73;
+/// `None` for anything else.
+pub fn cad_format_of(head: &[u8]) -> Option<CadFormat> {
     let start = head
         .iter()
         .position(|b| !b.is_ascii_whitespace())
         .unwrap_or(head.len());
     if head[start..].starts_with(b"ISO-10303-21") {
-        return Ok(CadFormat::Step);
+        return Some(CadFormat::Step);
     }
     // IGES: a first line of 72 columns of text and the section letter S in column 73.
     let line_end = head.iter().position(|&b| b == b'\n').unwrap_or(head.len());
     let line = head[..line_end]
         .strip_suffix(b"\r")
         .unwrap_or(&head[..line_end]);
-    if line.len() >= 73 && (line[72] == b'S' || line[72] == b'G') {
-        return Ok(CadFormat::Iges);
+    (line.len() >= 73 && (line[72] == b'S' || line[72] == b'G')).then_some(CadFormat::Iges)
+}
+
+/// Tells STEP from IGES by the first bytes ([`cad_format_of`]).
+fn sniff(name: &Path, reader: &mut dyn BufRead) -> Result<CadFormat, IoError> {
+    let head = reader.fill_buf().map_err(IoError::open(name))?;
+    if let Some(format) = cad_format_of(head) {
+        return Ok(format);
     }
     Err(data_error(
         name,
