@@ -17,7 +17,7 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from check_layers import IDENT, tokenize  # noqa: E402
+from check_layers import IDENT, root_argument, rust_sources  # noqa: E402
 
 MAX_LINES = 80
 
@@ -55,18 +55,11 @@ def check(root):
     failures = []
     crates = os.path.join(root, "crates")
     for crate in sorted(os.listdir(crates)):
-        src = os.path.join(crates, crate, "src")
-        for folder, _, files in sorted(os.walk(src)):
-            for name in sorted(files):
-                if not name.endswith(".rs"):
-                    continue
-                path = os.path.join(folder, name)
-                with open(path, encoding="utf-8") as f:
-                    tokens = tokenize(f.read())
-                for fn, first, last in function_spans(tokens):
-                    if last - first + 1 > MAX_LINES:
-                        rel = os.path.relpath(path, root)
-                        failures.append(f"{rel}:{first}: fn {fn} spans {last - first + 1} lines")
+        for path, tokens in rust_sources(os.path.join(crates, crate, "src")):
+            for fn, first, last in function_spans(tokens):
+                if last - first + 1 > MAX_LINES:
+                    rel = os.path.relpath(path, root)
+                    failures.append(f"{rel}:{first}: fn {fn} spans {last - first + 1} lines")
     return failures
 
 
@@ -103,9 +96,7 @@ def main(argv):
     if "--self-test" in argv:
         self_test()
         return 0
-    root = argv[argv.index("--root") + 1] if "--root" in argv else os.path.join(
-        os.path.dirname(os.path.abspath(__file__)), "..")
-    failures = check(os.path.abspath(root))
+    failures = check(os.path.abspath(root_argument(argv)))
     for line in failures:
         print(line)
     if failures:

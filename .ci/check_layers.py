@@ -378,23 +378,16 @@ def check_sealed(root, rel):
                     f"(the internals of {folder} stay private; export items instead)"
                 )
     for crate in FRONT_ENDS:
-        src = os.path.join(root, crate, "src")
-        for dirpath, _, names in os.walk(src):
-            for name in sorted(names):
-                if not name.endswith(".rs"):
+        for path, tokens in rust_sources(os.path.join(root, crate, "src")):
+            for k, (tok, line) in enumerate(tokens):
+                if tok != "karkas" or (k and tokens[k - 1][0] == "::"):
                     continue
-                path = os.path.join(dirpath, name)
-                with open(path, encoding="utf-8") as f:
-                    tokens = tokenize(f.read())
-                for k, (tok, line) in enumerate(tokens):
-                    if tok != "karkas" or (k and tokens[k - 1][0] == "::"):
-                        continue
-                    for segs in parse_path(tokens, k)[0]:
-                        if len(segs) >= 3 and segs[1] in internals and segs[2] in internals[segs[1]]:
-                            problems.append(
-                                f"{rel(path)}:{line}: karkas::{segs[1]}::{segs[2]} "
-                                f"(front ends use what {segs[1]}/mod.rs exports only)"
-                            )
+                for segs in parse_path(tokens, k)[0]:
+                    if len(segs) >= 3 and segs[1] in internals and segs[2] in internals[segs[1]]:
+                        problems.append(
+                            f"{rel(path)}:{line}: karkas::{segs[1]}::{segs[2]} "
+                            f"(front ends use what {segs[1]}/mod.rs exports only)"
+                        )
     return list(dict.fromkeys(problems))
 
 
@@ -459,14 +452,29 @@ def self_test():
     )
 
 
+def root_argument(argv):
+    """The tree to check: `--root DIR`, else the repository holding this script."""
+    if "--root" in argv:
+        return argv[argv.index("--root") + 1]
+    return os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
+
+
+def rust_sources(src):
+    """(path, tokens) of every .rs file below the folder `src`, folders and files in name
+    order."""
+    for folder, _, names in sorted(os.walk(src)):
+        for name in sorted(names):
+            if name.endswith(".rs"):
+                path = os.path.join(folder, name)
+                with open(path, encoding="utf-8") as f:
+                    yield path, tokenize(f.read())
+
+
 def main(argv):
     if "--self-test" in argv:
         self_test()
         return 0
-    root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
-    if "--root" in argv:
-        root = argv[argv.index("--root") + 1]
-    root = os.path.normpath(root)
+    root = os.path.normpath(root_argument(argv))
     problems = run(root)
     for p in problems:
         print(p)

@@ -55,11 +55,13 @@ from OCP.Geom import (Geom_Circle, Geom_CylindricalSurface, Geom_Ellipse,
 from OCP.GeomConvert import GeomConvert
 from OCP.gp import gp_Ax1, gp_Ax2, gp_Ax3, gp_Dir, gp_Pnt, gp_Pnt2d, gp_Vec
 from OCP.IFSelect import IFSelect_RetDone
-from OCP.IGESControl import IGESControl_Reader, IGESControl_Writer
-from OCP.STEPControl import STEPControl_AsIs, STEPControl_Reader, STEPControl_Writer
+from OCP.IGESControl import IGESControl_Reader
+from OCP.STEPControl import STEPControl_Reader
 from OCP.TopAbs import TopAbs_EDGE, TopAbs_FACE, TopAbs_IN, TopAbs_OUT
 from OCP.TopExp import TopExp_Explorer
 from OCP.TopoDS import TopoDS
+
+from occ_shapes import write_iges, write_step
 
 try:  # OCP 7.7
     from OCP.TColgp import TColgp_Array1OfPnt as Array1OfPnt, TColgp_Array2OfPnt as Array2OfPnt
@@ -92,21 +94,6 @@ GRID = 100
 
 
 # -- Open CASCADE's files -----------------------------------------------------------------
-
-
-def write_step(shape, path):
-    w = STEPControl_Writer()
-    w.Transfer(shape, STEPControl_AsIs)
-    if w.Write(path) != IFSelect_RetDone:
-        raise RuntimeError(f"OCC could not write {path}")
-
-
-def write_iges(shape, path):
-    w = IGESControl_Writer("MM", 0)  # faces mode: 144 / 142 / 128
-    w.AddShape(shape)
-    w.ComputeModel()
-    if not w.Write(path):
-        raise RuntimeError(f"OCC could not write {path}")
 
 
 def bspline_curve():

@@ -41,28 +41,12 @@ from OCP.BRepPrimAPI import (BRepPrimAPI_MakeBox, BRepPrimAPI_MakeCylinder, BRep
 from OCP.Bnd import Bnd_Box
 from OCP.BRepBndLib import BRepBndLib
 from OCP.GProp import GProp_GProps
-from OCP.IFSelect import IFSelect_RetDone
-from OCP.IGESControl import IGESControl_Writer
-from OCP.STEPControl import STEPControl_AsIs, STEPControl_Writer
-from OCP.BRep import BRep_Builder
-from OCP.TopAbs import TopAbs_EDGE, TopAbs_FACE
+from OCP.TopAbs import TopAbs_EDGE
 from OCP.TopExp import TopExp_Explorer
-from OCP.TopoDS import TopoDS, TopoDS_Compound
+from OCP.TopoDS import TopoDS
 from OCP.gp import gp_Ax2, gp_Dir, gp_Pnt
 
-
-def write_step(shape, path):
-    w = STEPControl_Writer()
-    if w.Transfer(shape, STEPControl_AsIs) != IFSelect_RetDone or w.Write(path) != IFSelect_RetDone:
-        raise RuntimeError(f"Open CASCADE could not write {path}")
-
-
-def write_iges(shape, path):
-    w = IGESControl_Writer("MM", 0)
-    w.AddShape(shape)
-    w.ComputeModel()
-    if not w.Write(path):
-        raise RuntimeError(f"Open CASCADE could not write {path}")
+from occ_shapes import faces_of, write_iges, write_step
 
 
 def bbox_size(shape):
@@ -115,19 +99,6 @@ def cases():
         ("holed plate", plate, "step"),
         ("holed plate, NURBS", BRepBuilderAPI_NurbsConvert(plate, True).Shape(), "step"),
     ]
-
-
-def faces_of(shape):
-    """The faces of `shape` as a compound: distances to the boundary, not to the solid (which
-    is 0 inside)."""
-    compound = TopoDS_Compound()
-    builder = BRep_Builder()
-    builder.MakeCompound(compound)
-    e = TopExp_Explorer(shape, TopAbs_FACE)
-    while e.More():
-        builder.Add(compound, e.Current())
-        e.Next()
-    return compound
 
 
 def distances(shape, points):

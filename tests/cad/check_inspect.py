@@ -47,12 +47,10 @@ from OCP.BRepPrimAPI import (BRepPrimAPI_MakeBox, BRepPrimAPI_MakeCylinder, BRep
 from OCP.GeomAbs import GeomAbs_C2
 from OCP.GeomAPI import GeomAPI_PointsToBSplineSurface
 from OCP.gp import gp_Ax2, gp_Circ, gp_Dir, gp_Hypr, gp_Parab, gp_Pnt, gp_Vec
-from OCP.IFSelect import IFSelect_RetDone
-from OCP.IGESControl import IGESControl_Writer
-from OCP.STEPControl import STEPControl_AsIs, STEPControl_Writer
-from OCP.TopAbs import TopAbs_FACE, TopAbs_IN, TopAbs_OUT
-from OCP.TopExp import TopExp_Explorer
+from OCP.TopAbs import TopAbs_IN, TopAbs_OUT
 from OCP.TopoDS import TopoDS_Compound
+
+from occ_shapes import faces_of, write_iges, write_step
 
 try:  # OCP 7.7
     from OCP.TColgp import TColgp_Array1OfPnt as Array1OfPnt, TColgp_Array2OfPnt as Array2OfPnt
@@ -66,21 +64,6 @@ POINTS = 600
 def static(cls, name):
     """A static method: `Name_s` in OCP 7.7, `Name` in later releases."""
     return getattr(cls, name + "_s", None) or getattr(cls, name)
-
-
-def write_step(shape, path):
-    w = STEPControl_Writer()
-    w.Transfer(shape, STEPControl_AsIs)
-    if w.Write(path) != IFSelect_RetDone:
-        raise RuntimeError(f"OCC could not write {path}")
-
-
-def write_iges(shape, path):
-    w = IGESControl_Writer("MM", 0)  # faces mode: 144 / 142 / 128
-    w.AddShape(shape)
-    w.ComputeModel()
-    if not w.Write(path):
-        raise RuntimeError(f"OCC could not write {path}")
 
 
 def holed_plate(holes=3, origin=(100.0, -50.0, 20.0)):
@@ -189,19 +172,6 @@ def probe_points(shape, rng):
         foot = np.array(d.PointOnShape1(1).Coord())
         near.append(foot + rng.normal(scale=0.02 * size / math.sqrt(3), size=3))
     return np.vstack([spread, np.array(near)]), size
-
-
-def faces_of(shape):
-    """The faces of `shape` as a compound: distances to the boundary, not to the solid (which
-    is 0 inside)."""
-    compound = TopoDS_Compound()
-    builder = BRep_Builder()
-    builder.MakeCompound(compound)
-    e = TopExp_Explorer(shape, TopAbs_FACE)
-    while e.More():
-        builder.Add(compound, e.Current())
-        e.Next()
-    return compound
 
 
 def occ_distances(shape, points):

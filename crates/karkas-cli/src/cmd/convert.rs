@@ -6,7 +6,8 @@
 //! - a surface grid: CSV with header `i,j,x,y,z` (a frame) or `u,v,x,y,z` (samples, `u`
 //!   outer, as the surface commands write them);
 //! - a curve: any other CSV or whitespace columns `x,y[,z]`, or an airfoil `.dat`;
-//! - a CAD model: `.step`, `.stp`, `.p21`, `.iges`, `.igs` (read by
+//! - a CAD model: `.step`, `.stp`, `.p21`, `.iges`, `.igs`, or standard input that starts as
+//!   STEP or IGES does (read by
 //!   `karkas_io::cad::read::read_cad`), meshed to the chordal tolerance `--tolerance`
 //!   (`karkas_io::mesh::shape_mesh`) and written as a mesh.
 //!
@@ -25,7 +26,7 @@ use crate::output::target::{output_format, shown};
 use anyhow::{bail, Context, Result};
 use clap::Args;
 use karkas::{Grid, Point3};
-use karkas_io::cad::read::read_cad;
+use karkas_io::cad::read::{cad_format_of, read_cad, read_cad_from, CadModel};
 use karkas_io::export::mesh::write_triangle_mesh;
 use karkas_io::grid::parse_grid;
 use karkas_io::input::{display_name, Input as Source};
@@ -36,6 +37,7 @@ use karkas_io::samples::parse_surface_samples;
 use karkas_io::svg::CurveOverlay;
 use karkas_io::write::write_grid_csv;
 use karkas_io::OutputFormat;
+use std::io::BufRead;
 use std::path::{Path, PathBuf};
 
 /// Arguments of `karkas convert`.
@@ -84,7 +86,8 @@ pub fn run(args: &ConvertArgs) -> Result<()> {
     let format = output_format(&args.output, &GRID_OUT)?;
     args.mesh.check(format)?;
     ensure_distinct(&args.input, &args.output)?;
-    if args.tolerance.is_some() && !is_cad(&args.input) {
+    let stdin = karkas_io::input::is_stdin(&args.input);
+    if args.tolerance.is_some() && !is_cad(&args.input) && !stdin {
         bail!(
             "--tolerance: only a CAD model (.step .stp .iges .igs) is meshed to a tolerance, not {}",
             args.input.display()
@@ -191,11 +194,21 @@ fn read_input(path: &Path, tolerance: Option<f64>) -> Result<Input> {
         return Ok(Input::Mesh(read_mesh(path)?));
     }
     if is_cad(path) {
-        return Ok(Input::Mesh(cad_mesh(path, tolerance)?));
+        return Ok(Input::Mesh(cad_mesh(path, read_cad(path)?, tolerance)?));
     }
     let mut input = Source::open(path)?;
-    if karkas_io::input::is_stdin(path) && looks_like_a_mesh(&mut input)? {
-        return Ok(Input::Mesh(read_mesh_from(input, None)?));
+    if karkas_io::input::is_stdin(path) {
+        let head = input.fill_buf().context("cannot read <stdin>")?;
+        if let Some(format) = cad_format_of(head) {
+            let model = read_cad_from(&display_name(path), format, &mut input)?;
+            return Ok(Input::Mesh(cad_mesh(path, model, tolerance)?));
+        }
+        if tolerance.is_some() {
+            bail!("--tolerance: only a CAD model (STEP or IGES) is meshed to a tolerance, not <stdin>");
+        }
+        if looks_like_a_mesh(&mut input)? {
+            return Ok(Input::Mesh(read_mesh_from(input, None)?));
+        }
     }
     let text = input.read_text()?;
     let name = display_name(path);
@@ -232,21 +245,41 @@ fn is_cad(path: &Path) -> bool {
     )
 }
 
-/// The mesh of the CAD model `path` within `tolerance` of its faces (1e-3 of its size when
-/// not given); what the reader skipped is warned in one line.
-fn cad_mesh(path: &Path, tolerance: Option<f64>) -> Result<TriangleMesh> {
-    let model = read_cad(path)?;
+/// The mesh of the CAD model read from `path` within `tolerance` of its faces (1e-3 of its
+/// size when not given); what the reader skipped is warned in one line. A model without
+/// faces, or whose faces all collapse to one point, is refused before the tolerance is
+/// looked at.
+fn cad_mesh(path: &Path, model: CadModel, tolerance: Option<f64>) -> Result<TriangleMesh> {
+    let name = display_name(path);
     if let Some(warning) = model.warning() {
         note(format!("karkas: warning: {warning}"));
     }
+    let shape = &model.shape;
+    if shape.faces.is_empty() {
+        bail!(
+            "cannot mesh {}: the model has no faces to mesh ({} curves)",
+            name.display(),
+            shape.curves.len()
+        );
+    }
+    let mut corners = shape
+        .faces
+        .iter()
+        .flat_map(|f| f.surface.control_points().as_slice());
+    let first = corners.next().copied();
+    if corners.all(|p| Some(*p) == first) {
+        bail!(
+            "cannot mesh {}: the model's faces collapse to one point (their size is 0)",
+            name.display()
+        );
+    }
     let tolerance = tolerance.unwrap_or(1e-3 * model.shape.size());
-    shape_mesh(&model.shape, tolerance).with_context(|| format!("cannot mesh {}", path.display()))
+    shape_mesh(&model.shape, tolerance).with_context(|| format!("cannot mesh {}", name.display()))
 }
 
 /// True when the first bytes of standard input (looked at, not consumed) are a mesh
 /// ([`karkas_io::mesh::is_mesh_prefix`]). Files are told by extension.
 fn looks_like_a_mesh(input: &mut Source) -> Result<bool> {
-    use std::io::BufRead;
     let name = input.name.clone();
     let prefix = input
         .fill_buf()

@@ -1,5 +1,6 @@
 //! What every test of the command line uses: running the binary, temporary folders, writing
-//! inputs, reading the CSV files the CLI writes, and the check of a refused command.
+//! inputs, reading the CSV and OBJ files the CLI writes, a small CAD model, and the check of a
+//! refused command.
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
@@ -119,4 +120,43 @@ pub fn assert_rejected(args: &[&str], needles: impl Needles, out: &Path, before:
         Some(content) => assert_eq!(std::fs::read_to_string(out).unwrap(), content),
         None => assert!(!out.exists(), "{} was created", out.display()),
     }
+}
+
+/// The square [x0, x0 + 3] x [y0, y0 + 3] at z = z0 as a bicubic surface written to `name`.
+pub fn square_model(dir: &Path, name: &str, origin: [f64; 3]) -> PathBuf {
+    let grid = write(
+        dir,
+        "square.csv",
+        &grid_csv(4, 5, |i, j| {
+            [origin[0] + i as f64, origin[1] + 0.75 * j as f64, origin[2]]
+        }),
+    );
+    let out = dir.join(name);
+    let o = karkas(&["surface", "bicubic", s(&grid), "-o", s(&out)]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    out
+}
+
+/// The positions and 0-based triangles of an OBJ file karkas wrote.
+pub fn read_obj(path: &Path) -> (Vec<[f64; 3]>, Vec<[usize; 3]>) {
+    let text = std::fs::read_to_string(path).unwrap();
+    let mut positions = Vec::new();
+    let mut triangles = Vec::new();
+    for line in text.lines() {
+        let mut fields = line.split_whitespace();
+        match fields.next() {
+            Some("v") => {
+                let v: Vec<f64> = fields.map(|f| f.parse().unwrap()).collect();
+                positions.push([v[0], v[1], v[2]]);
+            }
+            Some("f") => {
+                let k: Vec<usize> = fields
+                    .map(|f| f.split('/').next().unwrap().parse::<usize>().unwrap() - 1)
+                    .collect();
+                triangles.push([k[0], k[1], k[2]]);
+            }
+            _ => {}
+        }
+    }
+    (positions, triangles)
 }

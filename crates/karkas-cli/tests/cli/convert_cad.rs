@@ -3,54 +3,17 @@
 //! input refused with exit 2 and nothing written. Curved and trimmed solids are checked
 //! against Open CASCADE and trimesh by tests/cad/check_convert.py.
 
-use crate::common::{grid_csv, karkas, s, stderr, temp_dir, write};
+use crate::common::{
+    assert_rejected, grid_csv, karkas, read_obj, s, square_model, stderr, temp_dir, write,
+};
 use std::path::{Path, PathBuf};
-
-/// The square [x0, x0 + 3] x [y0, y0 + 3] at z = z0 as a bicubic surface written to `name`.
-fn square(dir: &Path, name: &str, origin: [f64; 3]) -> PathBuf {
-    let grid = write(
-        dir,
-        "square.csv",
-        &grid_csv(4, 5, |i, j| {
-            [origin[0] + i as f64, origin[1] + 0.75 * j as f64, origin[2]]
-        }),
-    );
-    let out = dir.join(name);
-    let o = karkas(&["surface", "bicubic", s(&grid), "-o", s(&out)]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    out
-}
-
-/// The vertices and triangles of an OBJ file.
-fn read_obj(path: &Path) -> (Vec<[f64; 3]>, Vec<[usize; 3]>) {
-    let text = std::fs::read_to_string(path).unwrap();
-    let mut vertices = Vec::new();
-    let mut triangles = Vec::new();
-    for line in text.lines() {
-        let mut words = line.split_whitespace();
-        match words.next() {
-            Some("v") => {
-                let v: Vec<f64> = words.take(3).map(|w| w.parse().unwrap()).collect();
-                vertices.push([v[0], v[1], v[2]]);
-            }
-            Some("f") => {
-                let f: Vec<usize> = words
-                    .map(|w| w.split('/').next().unwrap().parse::<usize>().unwrap() - 1)
-                    .collect();
-                triangles.push([f[0], f[1], f[2]]);
-            }
-            _ => {}
-        }
-    }
-    (vertices, triangles)
-}
 
 #[test]
 fn a_flat_square_from_step_and_iges_meshes_to_its_exact_area() {
     let dir = temp_dir();
     let origin = [1e3, -2e3, 5.0];
     for name in ["square.step", "square.igs"] {
-        let model = square(dir.path(), name, origin);
+        let model = square_model(dir.path(), name, origin);
         let out = dir.path().join(format!("{name}.obj"));
         let o = karkas(&["convert", s(&model), s(&out), "--tolerance", "1e-3"]);
         assert!(o.status.success(), "{}", stderr(&o));
@@ -81,7 +44,7 @@ fn a_flat_square_from_step_and_iges_meshes_to_its_exact_area() {
 #[test]
 fn bad_tolerances_and_inputs_exit_2_and_write_nothing() {
     let dir = temp_dir();
-    let model = square(dir.path(), "square.step", [0.0; 3]);
+    let model = square_model(dir.path(), "square.step", [0.0; 3]);
     let out = dir.path().join("out.stl");
     for t in ["0", "-1", "nan", "inf"] {
         let option = format!("--tolerance={t}");
@@ -107,4 +70,139 @@ fn bad_tolerances_and_inputs_exit_2_and_write_nothing() {
     let o = karkas(&["convert", s(&model), s(&csv)]);
     assert_eq!(o.status.code(), Some(2));
     assert!(!csv.exists());
+}
+
+/// The header of the STEP file `model` (up to its DATA section) with `entities` as its data.
+fn step_with(model: &Path, entities: &str) -> String {
+    let text = std::fs::read_to_string(model).unwrap();
+    let head = &text[..text.find("DATA;\n").unwrap() + "DATA;\n".len()];
+    format!("{head}{entities}ENDSEC;\nEND-ISO-10303-21;\n")
+}
+
+#[test]
+fn a_model_without_faces_is_refused_as_such_before_the_tolerance() {
+    let dir = temp_dir();
+    let model = square_model(dir.path(), "square.step", [0.0; 3]);
+    let empty = write(dir.path(), "empty.step", &step_with(&model, ""));
+    let point = "#1=CARTESIAN_POINT('',(1.,2.,3.));\n";
+    let point = write(dir.path(), "point.step", &step_with(&model, point));
+    let points = write(dir.path(), "line.csv", "x,y\n0,0\n1,1\n2,0\n3,1\n");
+    let curve = dir.path().join("curve.step");
+    let o = karkas(&["curve", "spline", s(&points), "-o", s(&curve)]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    // An existing output is kept.
+    let out = write(dir.path(), "out.stl", "kept");
+    for (m, curves) in [(&empty, 0), (&point, 0), (&curve, 1)] {
+        let name = m.file_name().unwrap().to_str().unwrap();
+        let message = format!("cannot mesh {}: the model has no faces to mesh", s(m));
+        let count = format!("({curves} curves)");
+        let needles: &[&str] = &[&message, &count, name];
+        assert_rejected(&["convert", s(m), s(&out)], needles, &out, Some("kept"));
+        let o = karkas(&["convert", s(m), s(&out)]);
+        assert!(!stderr(&o).contains("tolerance"), "{}", stderr(&o));
+    }
+}
+
+/// A bicubic grid of 4 x 5 nodes `(i, 0.75 j, bulge i (3 - i)) * scale` written as `name`.
+fn scaled_model(dir: &Path, name: &str, scale: f64, bulge: f64) -> PathBuf {
+    let text = grid_csv(4, 5, |i, j| {
+        let (x, y) = (i as f64, 0.75 * j as f64);
+        [x * scale, y * scale, bulge * x * (3.0 - x) * scale]
+    });
+    let grid = write(dir, &format!("{name}.csv"), &text);
+    let out = dir.join(name);
+    let o = karkas(&["surface", "bicubic", s(&grid), "-o", s(&out)]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    out
+}
+
+#[test]
+fn models_at_the_ends_of_the_coordinate_range() {
+    let dir = temp_dir();
+    // 1e150, within the range: the square meshes to its area (spade's triangulation takes
+    // coordinates up to about 3e60 only, so parameters are scaled into its range).
+    let far = scaled_model(dir.path(), "far.step", 1e150, 0.0);
+    let out = dir.path().join("far.obj");
+    let o = karkas(&["convert", s(&far), s(&out)]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let (v, t) = read_obj(&out);
+    assert!(v.len() >= 4, "{} vertices", v.len());
+    let area: f64 = t
+        .iter()
+        .map(|tri| {
+            let [a, b, c] = tri.map(|k| v[k]);
+            0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]))
+        })
+        .sum();
+    assert!((area / 9e300 - 1.0).abs() < 1e-9, "area {area:e}");
+    // 1e307, out of range: both commands refuse the model (inspect used to panic).
+    let text = std::fs::read_to_string(&far)
+        .unwrap()
+        .replace("E150", "E307");
+    let beyond = write(dir.path(), "beyond.step", &text);
+    let points = write(dir.path(), "points.csv", "x,y,z\n1,2,3\n");
+    let report = dir.path().join("report.csv");
+    let needles: &[&str] = &["beyond.step", "coordinates out of range", "3e307"];
+    let stl = dir.path().join("beyond.stl");
+    assert_rejected(&["convert", s(&beyond), s(&stl)], needles, &stl, None);
+    let args = [
+        "inspect",
+        s(&beyond),
+        "--points",
+        s(&points),
+        "-o",
+        s(&report),
+    ];
+    assert_rejected(&args, needles, &report, None);
+}
+
+#[test]
+fn a_tolerance_far_below_the_model_is_refused_by_the_vertex_limit() {
+    let dir = temp_dir();
+    let model = scaled_model(dir.path(), "bulge.step", 1.0, 0.1);
+    let out = write(dir.path(), "out.stl", "kept");
+    let start = std::time::Instant::now();
+    let needles: &[&str] = &["bulge.step", "vertices", "give a larger tolerance"];
+    let args = ["convert", s(&model), s(&out), "--tolerance", "1e-300"];
+    assert_rejected(&args, needles, &out, Some("kept"));
+    assert!(
+        start.elapsed().as_secs_f64() < 60.0,
+        "{:?}",
+        start.elapsed()
+    );
+    // A tolerance far above the model's size gives a coarse mesh, not an error.
+    let coarse = dir.path().join("coarse.obj");
+    let o = karkas(&["convert", s(&model), s(&coarse), "--tolerance", "1e300"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(!read_obj(&coarse).1.is_empty());
+}
+
+#[test]
+fn a_model_on_standard_input_is_meshed() {
+    let dir = temp_dir();
+    let model = square_model(dir.path(), "square.step", [0.0; 3]);
+    let text = std::fs::read_to_string(&model).unwrap();
+    let out = dir.path().join("piped.obj");
+    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_karkas"))
+        .args(["convert", "-", s(&out), "--tolerance", "1e-3"])
+        .stdin(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    use std::io::Write as _;
+    child
+        .stdin
+        .take()
+        .unwrap()
+        .write_all(text.as_bytes())
+        .unwrap();
+    let o = child.wait_with_output().unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    // The same mesh as from the file itself.
+    let direct = dir.path().join("direct.obj");
+    let o = karkas(&["convert", s(&model), s(&direct), "--tolerance", "1e-3"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let (piped, file) = (read_obj(&out), read_obj(&direct));
+    assert!(!piped.1.is_empty());
+    assert_eq!(piped, file);
 }

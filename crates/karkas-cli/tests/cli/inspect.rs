@@ -2,23 +2,8 @@
 //! distances (a plane square read from STEP and IGES), the report's header (a contract) and
 //! the refusal of bad input with exit 2 naming the file and line.
 
-use crate::common::{grid_csv, karkas, s, stderr, stdout, temp_dir, write};
-use std::path::{Path, PathBuf};
-
-/// The square [x0, x0 + 3] x [y0, y0 + 3] at z = z0 as a bicubic surface written to `name`.
-fn square(dir: &Path, name: &str, origin: [f64; 3]) -> PathBuf {
-    let grid = write(
-        dir,
-        "square.csv",
-        &grid_csv(4, 5, |i, j| {
-            [origin[0] + i as f64, origin[1] + 0.75 * j as f64, origin[2]]
-        }),
-    );
-    let out = dir.join(name);
-    let o = karkas(&["surface", "bicubic", s(&grid), "-o", s(&out)]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    out
-}
+use crate::common::{karkas, s, square_model, stderr, stdout, temp_dir, write};
+use std::path::Path;
 
 /// The report's header and rows (an empty field read as NaN).
 fn read_report(path: &Path) -> (String, Vec<Vec<f64>>) {
@@ -83,7 +68,7 @@ fn distances_to_a_square_equal_the_closed_form_from_step_and_iges() {
     let dir = temp_dir();
     for origin in [[0.0, 0.0, 0.0], [1.0e3, -250.0, 40.0]] {
         for name in ["square.step", "square.igs"] {
-            let model = square(dir.path(), name, origin);
+            let model = square_model(dir.path(), name, origin);
             let (text, exact) = probes(origin);
             let points = write(dir.path(), "scan.csv", &text);
             let report = dir.path().join("report.csv");
@@ -140,7 +125,7 @@ fn distances_to_a_square_equal_the_closed_form_from_step_and_iges() {
 #[test]
 fn bad_points_and_bad_models_exit_2_naming_file_and_line() {
     let dir = temp_dir();
-    let model = square(dir.path(), "square.step", [0.0; 3]);
+    let model = square_model(dir.path(), "square.step", [0.0; 3]);
     let points = write(dir.path(), "scan.csv", "x,y,z\n1,2,3\n1,2,oops\n");
     let o = karkas(&["inspect", s(&model), "--points", s(&points)]);
     assert_eq!(o.status.code(), Some(2));

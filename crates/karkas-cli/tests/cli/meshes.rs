@@ -3,31 +3,7 @@
 
 use std::path::{Path, PathBuf};
 
-use crate::common::{assert_rejected, grid_csv, karkas, s, stderr, temp_dir, write};
-
-/// The positions and 0-based triangles of an OBJ file karkas wrote.
-fn read_obj(path: &Path) -> (Vec<[f64; 3]>, Vec<[usize; 3]>) {
-    let text = std::fs::read_to_string(path).unwrap();
-    let mut positions = Vec::new();
-    let mut triangles = Vec::new();
-    for line in text.lines() {
-        let mut fields = line.split_whitespace();
-        match fields.next() {
-            Some("v") => {
-                let v: Vec<f64> = fields.map(|f| f.parse().unwrap()).collect();
-                positions.push([v[0], v[1], v[2]]);
-            }
-            Some("f") => {
-                let k: Vec<usize> = fields
-                    .map(|f| f.split('/').next().unwrap().parse::<usize>().unwrap() - 1)
-                    .collect();
-                triangles.push([k[0], k[1], k[2]]);
-            }
-            _ => {}
-        }
-    }
-    (positions, triangles)
-}
+use crate::common::{assert_rejected, grid_csv, karkas, read_obj, s, stderr, temp_dir, write};
 
 /// Six times the signed volume the triangles enclose: positive when they wind outwards.
 fn signed_volume((positions, triangles): &(Vec<[f64; 3]>, Vec<[usize; 3]>)) -> f64 {

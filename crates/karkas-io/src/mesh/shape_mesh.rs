@@ -14,10 +14,16 @@
 //!   loops' segments as constraints (each loop thinned to the vertices that keep it within
 //!   half the tolerance on the surface) go into a constrained Delaunay triangulation (the `spade`
 //!   crate, built for it) in parameters scaled by the surface's mean speed in each direction,
-//!   so that triangles are well shaped on the surface; nodes within a third of a step of a
-//!   loop are left out (no slivers along the trim). A triangle is kept when its centroid lies
+//!   so that triangles are well shaped on the surface (and by a power of two that keeps any
+//!   model's parameters within the range `spade` takes); nodes within a third of a step of a
+//!   loop are left out (no slivers along the trim). The nodes are bulk loaded (near linear
+//!   time), the loops inserted after them. A triangle is kept when its centroid lies
 //!   in the face; it is wound counter-clockwise seen from the face's outside
 //!   ([`Face::same_sense`]).
+//! - **Bounded size.** A mesh of more than `MAX_VERTICES` (2^22, about 4.2 million) vertices,
+//!   counted from each face's parameter lines before it is triangulated, is refused with a
+//!   message asking for a larger tolerance: a tolerance far below the model's size costs an
+//!   error, not unbounded memory or time.
 //! - **One surface of all faces.** Vertices of all faces within `1e-9` of the model's size are
 //!   merged (shared corners, seams, poles), triangles that collapse are dropped, and where two
 //!   faces sampled a shared edge at different points, each boundary vertex is inserted into
@@ -33,14 +39,17 @@ use karkas::bspline::NurbsSurface;
 use karkas::core::Surface;
 use karkas::shape::{Face, FaceDomain, Shape};
 use karkas::Point3;
-use spade::{ConstrainedDelaunayTriangulation, Point2, Triangulation};
+use spade::{
+    mitigate_underflow, validate_vertex, ConstrainedDelaunayTriangulation, HasPosition, Point2,
+    Triangulation,
+};
 
 use crate::mesh::TriangleMesh;
 
-/// The most steps a knot span is cut into in one direction.
-const MAX_SPAN_STEPS: usize = 1024;
-/// The most vertices one mesh may have before it is refused.
-const MAX_VERTICES: usize = 1 << 26;
+/// The most vertices one mesh may have before it is refused (about twice as many triangles):
+/// this bounds the memory (a few hundred bytes a vertex while a face is triangulated) and the
+/// time of a tolerance far below the model's size.
+const MAX_VERTICES: usize = 1 << 22;
 
 /// What can stop a shape from being meshed.
 #[derive(Debug, thiserror::Error)]
@@ -53,12 +62,23 @@ pub enum ShapeMeshError {
     #[error("the model has no faces to mesh")]
     NoFaces,
     /// The mesh would take more vertices than the limit.
-    #[error("meshing face {face} to the tolerance takes more than {limit} vertices; give a larger tolerance")]
+    #[error(
+        "meshing face {face} to the tolerance takes more than {limit} vertices (the most a mesh \
+         may have, about twice as many triangles); give a larger tolerance"
+    )]
     TooManyVertices {
         /// The face (from 0) at which the limit was passed.
         face: usize,
         /// The limit.
         limit: usize,
+    },
+    /// A face's points could not be triangulated.
+    #[error("face {face}: its parameter points cannot be triangulated ({reason})")]
+    Triangulation {
+        /// The face, from 0.
+        face: usize,
+        /// Why, as the triangulation says it.
+        reason: String,
     },
     /// A face's trimming loops could not be placed on its surface.
     #[error("face {face}: {source}")]
@@ -90,11 +110,11 @@ pub enum ShapeMeshError {
 /// # Ok::<(), karkas::Error>(())
 /// ```
 pub fn shape_mesh(shape: &Shape, tolerance: f64) -> Result<TriangleMesh, ShapeMeshError> {
-    if !(tolerance > 0.0 && tolerance.is_finite()) {
-        return Err(ShapeMeshError::Tolerance(tolerance));
-    }
     if shape.faces.is_empty() {
         return Err(ShapeMeshError::NoFaces);
+    }
+    if !(tolerance > 0.0 && tolerance.is_finite()) {
+        return Err(ShapeMeshError::Tolerance(tolerance));
     }
     let mut soup = Soup::default();
     for (k, face) in shape.faces.iter().enumerate() {
@@ -143,6 +163,10 @@ fn parameter_lines(s: &NurbsSurface<3>, along_u: bool, tolerance: f64) -> Vec<f6
     let degree = if along_u { s.degree_u() } else { s.degree_v() };
     let mut lines = vec![mine[0]];
     for w in mine.windows(2) {
+        // Past the vertex limit the face is refused (see `face_triangles`): stop counting.
+        if lines.len() > MAX_VERTICES {
+            break;
+        }
         let (a, b) = (w[0], w[1]);
         let steps = if degree < 2 && !s.is_rational() {
             1
@@ -150,9 +174,9 @@ fn parameter_lines(s: &NurbsSurface<3>, along_u: bool, tolerance: f64) -> Vec<f6
             let m = largest_second_derivative(s, along_u, (a, b), &other);
             let n = ((b - a) * (m / (4.0 * tolerance)).sqrt()).ceil();
             if n.is_finite() {
-                (n as usize).clamp(1, MAX_SPAN_STEPS)
+                (n as usize).clamp(1, MAX_VERTICES)
             } else {
-                MAX_SPAN_STEPS
+                MAX_VERTICES
             }
         };
         lines.extend((1..=steps).map(|k| {
@@ -223,7 +247,56 @@ fn speeds(s: &NurbsSurface<3>, us: &[f64], vs: &[f64]) -> (f64, f64) {
     (mean(su), mean(sv))
 }
 
-/// Meshes one face into `soup` (see the module docs).
+/// A point of a face's triangulation: where it lies in the scaled parameter plane, and its
+/// surface parameters.
+#[derive(Clone, Copy)]
+struct Node {
+    at: Point2<f64>,
+    uv: [f64; 2],
+}
+
+impl HasPosition for Node {
+    type Scalar = f64;
+
+    fn position(&self) -> Point2<f64> {
+        self.at
+    }
+}
+
+/// Places surface parameters in the triangulation's plane: `u` and `v` times the mean speeds,
+/// the whole scaled by the power of two that brings the domain's farthest corner near 1, so
+/// that models of any size stay within the range `spade` accepts (a power of two changes no
+/// rounding, hence no triangle).
+struct ParameterPlane {
+    scale: (f64, f64),
+}
+
+impl ParameterPlane {
+    fn new(s: &NurbsSurface<3>, speeds: (f64, f64)) -> ParameterPlane {
+        let (du, dv) = (s.domain_u(), s.domain_v());
+        let far = (du.start.abs().max(du.end.abs()) * speeds.0)
+            .max(dv.start.abs().max(dv.end.abs()) * speeds.1);
+        let power = if far > 0.0 && far.is_finite() {
+            (-far.log2().ceil()).clamp(-1000.0, 1000.0) as i32
+        } else {
+            0
+        };
+        let unit = 2f64.powi(power);
+        ParameterPlane {
+            scale: (speeds.0 * unit, speeds.1 * unit),
+        }
+    }
+
+    /// The node of `uv`; `None` where the triangulation cannot take it (not finite).
+    fn node(&self, uv: [f64; 2]) -> Option<Node> {
+        let at = mitigate_underflow(Point2::new(uv[0] * self.scale.0, uv[1] * self.scale.1));
+        validate_vertex(&at).ok().map(|()| Node { at, uv })
+    }
+}
+
+/// Meshes one face into `soup` (see the module docs): the grid's nodes are loaded at once
+/// (`spade`'s bulk loading, near linear in their number), the loops' vertices and sides added
+/// to them.
 fn face_triangles(
     face: &Face,
     domain: &FaceDomain,
@@ -234,40 +307,40 @@ fn face_triangles(
     let s = &face.surface;
     let us = parameter_lines(s, true, tolerance);
     let vs = parameter_lines(s, false, tolerance);
-    let too_many = ShapeMeshError::TooManyVertices {
-        face: index,
-        limit: MAX_VERTICES,
-    };
     if us
         .len()
         .saturating_mul(vs.len())
         .saturating_add(soup.positions.len())
         > MAX_VERTICES
     {
-        return Err(too_many);
+        return Err(ShapeMeshError::TooManyVertices {
+            face: index,
+            limit: MAX_VERTICES,
+        });
     }
     let scale = speeds(s, &us, &vs);
-    let mut cdt = ConstrainedDelaunayTriangulation::<Point2<f64>>::new();
-    let mut params: Vec<[f64; 2]> = Vec::new();
-    let mut insert = |cdt: &mut ConstrainedDelaunayTriangulation<Point2<f64>>, uv: [f64; 2]| {
-        let at = Point2::new(uv[0] * scale.0, uv[1] * scale.1);
-        cdt.insert(at).ok().inspect(|h| {
-            if h.index() >= params.len() {
-                params.resize(h.index() + 1, uv);
-            }
-        })
-    };
+    let plane = ParameterPlane::new(s, scale);
     let near_loops = nodes_near_loops(domain, &us, &vs, scale);
+    let mut nodes = Vec::new();
     for (i, &u) in us.iter().enumerate() {
         for (j, &v) in vs.iter().enumerate() {
             if !near_loops[i * vs.len() + j] && domain.contains(u, v) {
-                insert(&mut cdt, [u, v]);
+                nodes.extend(plane.node([u, v]));
             }
         }
     }
+    let mut cdt = ConstrainedDelaunayTriangulation::<Node>::bulk_load(nodes).map_err(|e| {
+        ShapeMeshError::Triangulation {
+            face: index,
+            reason: e.to_string(),
+        }
+    })?;
     for l in &domain.loops {
         let kept = simplified(s, &l.points, tolerance / 2.0);
-        let handles: Vec<_> = kept.iter().filter_map(|&p| insert(&mut cdt, p)).collect();
+        let handles: Vec<_> = kept
+            .iter()
+            .filter_map(|&p| cdt.insert(plane.node(p)?).ok())
+            .collect();
         for k in 0..handles.len() {
             let (a, b) = (handles[k], handles[(k + 1) % handles.len()]);
             if a != b && cdt.can_add_constraint(a, b) {
@@ -276,11 +349,13 @@ fn face_triangles(
         }
     }
     let base = soup.positions.len();
-    soup.positions
-        .extend(params.iter().map(|p| s.eval(p[0], p[1])));
+    soup.positions.extend(
+        cdt.vertices()
+            .map(|n| s.eval(n.data().uv[0], n.data().uv[1])),
+    );
     for f in cdt.inner_faces() {
         let v = f.vertices();
-        let c = v.map(|h| params[h.fix().index()]);
+        let c = v.map(|h| h.data().uv);
         let centre = [
             (c[0][0] + c[1][0] + c[2][0]) / 3.0,
             (c[0][1] + c[1][1] + c[2][1]) / 3.0,

@@ -13,7 +13,8 @@
 //! instance it does not define, a cycle of references, an entity with the wrong number or
 //! kind of parameters, or more data than the memory cap is refused with an
 //! [`IoError::Parse`] naming the line and the instance (STEP `#n` and its type; IGES the
-//! directory entry and its type).
+//! directory entry and its type). A model whose control points leave the range of coordinates
+//! karkas works with (`crate::range`: magnitudes up to 1e152) is refused as a whole.
 
 mod analytic;
 mod iges_build;
@@ -35,6 +36,8 @@ use std::path::Path;
 
 use crate::error::{data_error, IoError};
 use crate::input::{display_name, Input};
+use crate::range::check_coordinate_range;
+use karkas::shape::Shape;
 
 /// Reads the CAD file `path` (STEP or IGES, told by its content).
 ///
@@ -53,29 +56,55 @@ pub fn read_cad_from(
     format: CadFormat,
     reader: &mut dyn BufRead,
 ) -> Result<CadModel, IoError> {
-    match format {
-        CadFormat::Step => step_read::read_step(name, reader),
-        CadFormat::Iges => iges_build::read_iges(name, reader),
-    }
+    let model = match format {
+        CadFormat::Step => step_read::read_step(name, reader)?,
+        CadFormat::Iges => iges_build::read_iges(name, reader)?,
+    };
+    check_coordinate_range(model_coordinates(&model.shape), name)?;
+    Ok(model)
 }
 
-/// Tells STEP from IGES by the first bytes (white space skipped).
-fn sniff(name: &Path, reader: &mut dyn BufRead) -> Result<CadFormat, IoError> {
-    let head = reader.fill_buf().map_err(IoError::open(name))?;
+/// Every coordinate of the control points of `shape`'s surfaces, trimming edges and free
+/// curves.
+fn model_coordinates(shape: &Shape) -> impl Iterator<Item = f64> + '_ {
+    let surfaces = shape
+        .faces
+        .iter()
+        .flat_map(|f| f.surface.control_points().as_slice());
+    let edges = shape
+        .faces
+        .iter()
+        .flat_map(|f| &f.loops)
+        .flat_map(|l| &l.edges)
+        .flat_map(|e| e.curve.control_points());
+    let curves = shape.curves.iter().flat_map(|c| c.control_points());
+    surfaces.chain(edges).chain(curves).flat_map(|p| p.0)
+}
+
+/// The CAD format the first bytes `head` of a file start (white space skipped): STEP's
+/// `ISO-10303-21`, or IGES's first 80-column record with the section letter in column 73;
+/// `None` for anything else.
+pub fn cad_format_of(head: &[u8]) -> Option<CadFormat> {
     let start = head
         .iter()
         .position(|b| !b.is_ascii_whitespace())
         .unwrap_or(head.len());
     if head[start..].starts_with(b"ISO-10303-21") {
-        return Ok(CadFormat::Step);
+        return Some(CadFormat::Step);
     }
     // IGES: a first line of 72 columns of text and the section letter S in column 73.
     let line_end = head.iter().position(|&b| b == b'\n').unwrap_or(head.len());
     let line = head[..line_end]
         .strip_suffix(b"\r")
         .unwrap_or(&head[..line_end]);
-    if line.len() >= 73 && (line[72] == b'S' || line[72] == b'G') {
-        return Ok(CadFormat::Iges);
+    (line.len() >= 73 && (line[72] == b'S' || line[72] == b'G')).then_some(CadFormat::Iges)
+}
+
+/// Tells STEP from IGES by the first bytes ([`cad_format_of`]).
+fn sniff(name: &Path, reader: &mut dyn BufRead) -> Result<CadFormat, IoError> {
+    let head = reader.fill_buf().map_err(IoError::open(name))?;
+    if let Some(format) = cad_format_of(head) {
+        return Ok(format);
     }
     Err(data_error(
         name,
