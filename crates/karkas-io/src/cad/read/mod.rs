@@ -1,5 +1,5 @@
 //! Reading CAD files: the geometry of STEP (ISO 10303-21 files of AP203, AP214 and AP242)
-//! and IGES 5.3 files as a karkas [`Shape`](karkas::shape::Shape) of rational B-spline faces
+//! and IGES 5.3 files as a karkas [`Shape`] of rational B-spline faces
 //! and curves.
 //!
 //! [`read_cad`] tells the format by the file's first bytes (`ISO-10303-21;`, or IGES's
