@@ -102,15 +102,7 @@ pub fn check_clean_hydrofoil(out: &Path, examples: &[Value]) {
     assert!(paper["note"].as_str().unwrap().contains("cross themselves"));
     check_starts(paper);
 
-    let row = |prefix: &str| -> f64 {
-        clean["rows"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .find(|r| r["measure"].as_str().unwrap().starts_with(prefix))
-            .and_then(|r| r["karkas"].as_f64())
-            .unwrap_or_else(|| panic!("no row {prefix}"))
-    };
+    let row = |prefix: &str| row_value(clean, prefix);
     let max_point = row("max point deviation");
     assert!(max_point < 1.5 * 0.71, "max point deviation {max_point}");
     assert!(row("f = sum J_L^2") <= 0.01 * (1.0 + 1e-6));
@@ -162,15 +154,7 @@ pub fn check_clean_hydrofoil(out: &Path, examples: &[Value]) {
 /// start's, every start's fit crossing itself, the chord-length fit kept, and the paper's
 /// largest deviation below karkas's.
 fn check_starts(paper: &Value) {
-    let row = |prefix: &str| -> f64 {
-        paper["rows"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .find(|r| r["measure"].as_str().unwrap().starts_with(prefix))
-            .and_then(|r| r["karkas"].as_f64())
-            .unwrap_or_else(|| panic!("no row {prefix}"))
-    };
+    let row = |prefix: &str| row_value(paper, prefix);
     let note = paper["note"].as_str().unwrap();
     assert!(note.contains("within 1e-4") && note.contains("keeps the chord-length fit"));
     let chord = row("Pavlov's objective H");
@@ -182,4 +166,15 @@ fn check_starts(paper: &Value) {
     assert_eq!(row("starts of the 8 whose fit crosses itself"), 8.0);
     assert_eq!(row("H kept by --starts 8").to_bits(), chord.to_bits());
     assert!(row("max deviation, bound active") > 0.71);
+}
+
+/// The karkas figure of the row of `example` whose measure starts with `prefix`.
+fn row_value(example: &Value, prefix: &str) -> f64 {
+    example["rows"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|r| r["measure"].as_str().unwrap().starts_with(prefix))
+        .and_then(|r| r["karkas"].as_f64())
+        .unwrap_or_else(|| panic!("no row {prefix}"))
 }
