@@ -6,10 +6,11 @@ the top one trimmed by 49 circles; 49 cylinders; 49 hole bottoms). The points: 1
 four within 2% of the model's size from its faces (Open CASCADE's feet of random points, moved
 along random directions), one in four over its bounding box grown by a fifth.
 
-Each round runs `karkas inspect MODEL --points SCAN.csv -o REPORT.csv` with RAYON_NUM_THREADS=1
-and =2 interleaved, and reads the times karkas prints (faces prepared, points projected: the
+Each round runs `karkas inspect MODEL --points SCAN.csv` (the summary alone) and the same with
+`-o REPORT.csv` (a row of 13 numbers per point, about 190 MB), with RAYON_NUM_THREADS=1 and =2
+interleaved, and reads the times karkas prints (faces prepared, points projected: the
 projection alone, without reading the 10^6-line CSV or writing the report) and the process's
-wall and CPU time (end to end: reading, projecting, writing the report). The load average is
+wall and CPU time (end to end: reading, projecting, writing the summary or the report). The load average is
 printed beside the figures (the wall times mean little on a loaded machine).
 Before timing, the distances of the first 2,000 points are checked equal to Open CASCADE's
 BRepExtrema_DistShapeShape to 1e-9.
@@ -70,13 +71,16 @@ def points(shape, count, rng):
     return out
 
 
-def run(karkas, model, scan, threads):
+def run(karkas, model, scan, threads, report):
+    """One `karkas inspect` of the scan: the summary alone, or with the per-point CSV report
+    (about 190 bytes a point) when `report`."""
     env = dict(os.environ, RAYON_NUM_THREADS=str(threads))
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     start = time.perf_counter()
-    report = os.path.join(os.path.dirname(scan), f"report-{threads}.csv")
-    done = subprocess.run([karkas, "inspect", model, "--points", scan, "--worst", "1", "-o", report],
-                          capture_output=True, text=True, env=env)
+    command = [karkas, "inspect", model, "--points", scan, "--worst", "1"]
+    if report:
+        command += ["-o", os.path.join(os.path.dirname(scan), f"report-{threads}.csv")]
+    done = subprocess.run(command, capture_output=True, text=True, env=env)
     wall = time.perf_counter() - start
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     if done.returncode != 0:
@@ -109,23 +113,24 @@ def main():
     check = pts[:2000]
     check_folder = os.path.join(folder, "check")
     os.makedirs(check_folder, exist_ok=True)
-    distance, _ = run_karkas(args.karkas, model, check, check_folder)
+    distance, *_ = run_karkas(args.karkas, model, check, check_folder)
     error = float(np.max(np.abs(distance - occ_distances(shape, check))))
     print(f"model: {faces(shape)} faces; {args.points} points; first 2,000 equal to OCC's to {error:.1e}")
     if error > 1e-9:
         sys.exit("distances differ from Open CASCADE's")
-    figures = {1: [], 2: []}
+    jobs = [(threads, report) for threads in (1, 2) for report in (False, True)]
+    figures = {job: [] for job in jobs}
     loads = []
     for _ in range(args.rounds):
-        for threads in (1, 2):
+        for threads, report in jobs:
             loads.append(os.getloadavg()[0])
-            figures[threads].append(run(args.karkas, model, scan, threads))
+            figures[threads, report].append(run(args.karkas, model, scan, threads, report))
     print(f"load average (1 min) during the runs: {min(loads):.1f} to {max(loads):.1f}")
-    print("| threads | prepare s | project s | command wall s | command CPU s |")
-    print("|---|---|---|---|---|")
-    for threads, runs in figures.items():
+    print("| threads | report | prepare s | project s | command wall s | command CPU s |")
+    print("|---|---|---|---|---|---|")
+    for (threads, report), runs in figures.items():
         med = [statistics.median(r[k] for r in runs) for k in range(4)]
-        print(f"| {threads} | {med[0]:.3f} | {med[1]:.3f} | {med[2]:.2f} | {med[3]:.2f} |")
+        print(f"| {threads} | {'-o' if report else 'summary'} | {med[0]:.3f} | {med[1]:.3f} | {med[2]:.2f} | {med[3]:.2f} |")
 
 
 if __name__ == "__main__":

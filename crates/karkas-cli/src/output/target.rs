@@ -48,6 +48,9 @@ pub fn output_format(output: &Path, allowed: &[OutputFormat]) -> Result<OutputFo
         }
         None => OutputFormat::from_path(output, allowed)?,
     };
+    if !is_stdout(output) {
+        ensure_place(output)?;
+    }
     if is_stdout(output) && is_binary(format) && std::io::stdout().is_terminal() {
         bail!(
             "{}: {} is binary and standard output is a terminal (redirect it to a file or a pipe)",
@@ -56,6 +59,24 @@ pub fn output_format(output: &Path, allowed: &[OutputFormat]) -> Result<OutputFo
         );
     }
     Ok(format)
+}
+
+/// Refuses, before any work, an output that cannot be written where it is: a folder, or a
+/// file in a folder that does not exist (the write would fail only after the computation).
+fn ensure_place(output: &Path) -> Result<()> {
+    if output.is_dir() {
+        bail!(
+            "cannot write {}: it is a folder",
+            output_name(output).display()
+        );
+    }
+    match output.parent().map(std::fs::metadata) {
+        // The message the write would give.
+        Some(Err(e)) if output.parent().is_some_and(|f| !f.as_os_str().is_empty()) => {
+            bail!("cannot write {}: {e}", output_name(output).display())
+        }
+        _ => Ok(()),
+    }
 }
 
 /// The formats of a command's outputs (`-o`, repeatable: one computation, every output),

@@ -149,4 +149,21 @@ fn bad_points_and_bad_models_exit_2_naming_file_and_line() {
     let o = karkas(&["inspect", s(&model), "--points", s(&good), "-o", s(&png)]);
     assert_eq!(o.status.code(), Some(2));
     assert!(!png.exists());
+    // A report in a folder that does not exist, or onto a folder: refused before the model
+    // is read and the points projected (no timing note), with the message the write gives.
+    let nowhere = dir.path().join("missing").join("r.csv");
+    let folder = dir.path().join("folder.csv");
+    std::fs::create_dir(&folder).unwrap();
+    for (report, says) in [
+        (&nowhere, "No such file or directory (os error 2)"),
+        (&folder, "it is a folder"),
+    ] {
+        let o = karkas(&["inspect", s(&model), "--points", s(&good), "-o", s(report)]);
+        assert_eq!(o.status.code(), Some(2));
+        let err = stderr(&o);
+        assert_eq!(
+            err,
+            format!("karkas: error: cannot write {}: {says}\n", report.display())
+        );
+    }
 }

@@ -262,6 +262,21 @@ fn span_of(knots: &[f64], count: usize, t: f64) -> usize {
     s.min(count - 1)
 }
 
+/// [`span_of`] found by walking from span `near` (the same span for nondecreasing knots): the
+/// points of a section and the steps of a projection move a span or two at a time, where the
+/// walk is cheaper than the binary search.
+#[inline]
+fn span_near(knots: &[f64], count: usize, t: f64, near: usize) -> usize {
+    let mut s = near.clamp(3, count - 1);
+    while s > 3 && t < knots[s] {
+        s -= 1;
+    }
+    while s + 1 < count && t >= knots[s + 1] {
+        s += 1;
+    }
+    s
+}
+
 /// Work buffers of one knot vector's fits.
 struct Scratch {
     solver: BandedLeastSquares,
@@ -334,8 +349,9 @@ fn fit_section(
             *next += 1;
         }
     };
+    let mut s = 3;
     for (i, (&ti, &p)) in t.iter().zip(points).enumerate() {
-        let s = span_of(knots, count, ti);
+        s = span_near(knots, count, ti, s);
         add_smoothing_until(solver, &mut next_smooth, s - 3);
         if !split_done && section.split.is_some_and(|k| k <= i) {
             let k = section.split.unwrap_or(i);
@@ -459,6 +475,45 @@ fn point_at(knots: &[f64], control: &[Point2], s: usize, t: f64) -> Point2 {
     p
 }
 
+/// A curve's cubic on each knot span in powers of `u = t - knots[s]`: the point and its first
+/// two derivatives then cost one Horner pass. The projection evaluates every span hundreds of
+/// times per fit, and the B-spline weights of [`cubic_derivatives`] (with their divisions by
+/// knot differences) would be recomputed at each; the cubics are built once per curve.
+struct SpanCubics {
+    /// `[a0, a1, a2, a3]` of span `s` at index `s - 3`: the point, the first derivative, half
+    /// the second and a sixth of the third at the span's start.
+    coefficients: Vec<[Point2; 4]>,
+}
+
+impl SpanCubics {
+    fn new(knots: &[f64], control: &[Point2]) -> Self {
+        let count = knots.len() - 4;
+        let coefficients = (3..count)
+            .map(|s| {
+                let h = knots[s + 1] - knots[s];
+                let [d0, d1, d2] = eval3(knots, control, s, knots[s]);
+                if h <= 0.0 {
+                    return [d0, d1, d2 * 0.5, Point2::ZERO];
+                }
+                let [_, _, e2] = eval3(knots, control, s, knots[s + 1]);
+                [d0, d1, d2 * 0.5, (e2 - d2) * (1.0 / (6.0 * h))]
+            })
+            .collect();
+        SpanCubics { coefficients }
+    }
+
+    /// The point and first two derivatives at `t` in span `s`.
+    #[inline]
+    fn eval3(&self, knots: &[f64], s: usize, t: f64) -> [Point2; 3] {
+        let u = t - knots[s];
+        let [a0, a1, a2, a3] = self.coefficients[s - 3];
+        let value = a0.add_scaled(u, a1.add_scaled(u, a2.add_scaled(u, a3)));
+        let first = a1.add_scaled(u, (a2 * 2.0).add_scaled(3.0 * u, a3));
+        let second = (a2 * 2.0).add_scaled(6.0 * u, a3);
+        [value, first, second]
+    }
+}
+
 /// The first control point whose basis function is nonzero at `t`, and the values of the
 /// four from there.
 pub(crate) fn basis_at(knots: &[f64], t: f64) -> (usize, [f64; 4]) {
@@ -492,6 +547,8 @@ fn project(
     let count = knots.len() - 4;
     let n = section.points.len();
     let split = section.split;
+    let cubics = SpanCubics::new(knots, control);
+    let mut previous = 3;
     for (i, (ti, &p)) in t.iter_mut().zip(section.points).enumerate() {
         let fixed = i == 0 || i + 1 == n || split == Some(i);
         let (lo, hi) = match split {
@@ -499,13 +556,13 @@ fn project(
             Some(_) => (0.5, 1.0),
             None => (0.0, 1.0),
         };
-        let mut s = span_of(knots, count, *ti);
+        let mut s = span_near(knots, count, *ti, previous);
         let dist_sq = if fixed {
             (point_at(knots, control, s, *ti) - p).norm_sq()
         } else {
             // Newton's method on the squared distance, each step at most one knot span long
             // and kept only when it brings the point closer (else halved, up to four times).
-            let [mut c, mut d1, mut d2] = eval3(knots, control, s, *ti);
+            let [mut c, mut d1, mut d2] = cubics.eval3(knots, s, *ti);
             let mut dist_sq = (c - p).norm_sq();
             for _ in 0..NEWTON_STEPS {
                 let r = c - p;
@@ -520,8 +577,8 @@ fn project(
                 let mut moved = false;
                 for _ in 0..5 {
                     let next = (*ti + step).clamp(lo, hi);
-                    let ns = span_of(knots, count, next);
-                    let e = eval3(knots, control, ns, next);
+                    let ns = span_near(knots, count, next, s);
+                    let e = cubics.eval3(knots, ns, next);
                     let nd = (e[0] - p).norm_sq();
                     if nd < dist_sq {
                         (*ti, s, dist_sq) = (next, ns, nd);
@@ -537,6 +594,7 @@ fn project(
             }
             dist_sq
         };
+        previous = s;
         if let Some(m) = measure.as_mut() {
             // The span of the breakpoints (span s of the knot vector is break span s - 3).
             m(s - 3, dist_sq.sqrt());
@@ -600,6 +658,49 @@ mod tests {
                             "{s} {f} {k} {a}"
                         );
                     }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn the_span_walk_finds_the_binary_search_span_from_any_start() {
+        let knots = clamped(&[0.0, 0.1, 0.15, 0.5, 0.52, 0.9, 1.0]);
+        let count = knots.len() - 4;
+        let ts = [
+            0.0, 0.05, 0.1, 0.12, 0.15, 0.3, 0.5, 0.51, 0.52, 0.7, 0.9, 0.95, 1.0,
+        ];
+        for &t in &ts {
+            for near in 0..count + 2 {
+                assert_eq!(
+                    span_near(&knots, count, t, near),
+                    span_of(&knots, count, t),
+                    "{t} {near}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn span_cubics_equal_the_b_spline_and_its_derivatives() {
+        // Uneven breaks (spans from 0.02 to 0.38 long) and control points far from the origin.
+        let knots = clamped(&[0.0, 0.1, 0.15, 0.5, 0.52, 0.9, 1.0]);
+        let control: Vec<Point2> = (0..knots.len() - 4)
+            .map(|j| Point2::new([1e3 + (j as f64 * 1.7).sin(), -2e3 + (j * j) as f64 * 0.3]))
+            .collect();
+        let cubics = SpanCubics::new(&knots, &control);
+        let largest = control.iter().map(|p| p.norm()).fold(0.0, f64::max);
+        for s in 3..knots.len() - 4 {
+            for f in [0.0, 0.25, 0.5, 0.77, 1.0] {
+                let t = knots[s] + f * (knots[s + 1] - knots[s]);
+                let want = eval3(&knots, &control, s, t);
+                let got = cubics.eval3(&knots, s, t);
+                // Both carry the rounding of the control points' size over the span's
+                // length to the derivative's order.
+                let h = knots[s + 1] - knots[s];
+                for (k, (g, w)) in got.iter().zip(&want).enumerate() {
+                    let size = largest / h.powi(k as i32);
+                    assert!((*g - *w).norm() < 1e-13 * size, "{s} {f} {k} {g:?} {w:?}");
                 }
             }
         }

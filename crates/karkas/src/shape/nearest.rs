@@ -89,7 +89,8 @@ pub struct ShapeNearest {
 }
 
 impl ShapeNearest {
-    /// The result for a query that has none (a non-finite coordinate, an empty shape).
+    /// The result for a query that has none (a non-finite coordinate, an empty shape, a
+    /// distance beyond the largest `f64`).
     pub const UNDEFINED: ShapeNearest = ShapeNearest {
         face: usize::MAX,
         u: f64::NAN,
@@ -336,7 +337,7 @@ impl<'a> ShapeProjector<'a> {
     }
 
     /// The nearest point of the shape's faces to `q` ([`ShapeNearest::UNDEFINED`] for a
-    /// non-finite `q` or a shape without faces).
+    /// non-finite `q`, a shape without faces, or a `q` so far that its distances overflow).
     pub fn nearest(&self, q: Point3) -> ShapeNearest {
         self.nearest_with(q, &mut Scratch::default())
     }
@@ -414,6 +415,10 @@ impl<'a> ShapeProjector<'a> {
         if best.face == usize::MAX {
             // No face held a foot (not expected: the nearest face's foot or edge is found).
             self.improve_by_anchor(q, &mut best);
+        }
+        if best.face == usize::MAX {
+            // Not even an anchor: every distance overflowed (a point beyond 1e154 or so).
+            return ShapeNearest::UNDEFINED;
         }
         self.sign(best, q)
     }
@@ -1045,6 +1050,21 @@ mod tests {
         assert_eq!(
             ShapeNearest::UNDEFINED.face,
             p.nearest(Point3::new([f64::NAN, 0.0, 0.0])).face
+        );
+        // So far that every distance overflows: no result (and no panic), alone and in a batch.
+        for far in [1e300, f64::MAX] {
+            let q = Point3::new([far, -far, far]);
+            assert_eq!(p.nearest(q).face, usize::MAX, "{far:e}");
+            let batch = p.nearest_all(&vec![q; 300]);
+            assert!(batch
+                .iter()
+                .all(|n| n.face == usize::MAX && n.distance.is_nan()));
+        }
+        // Far but finite distances are still found.
+        let n = p.nearest(Point3::new([0.0, 0.0, 1e150]));
+        assert!(
+            n.face != usize::MAX && (n.distance / 1e150 - 1.0).abs() < 1e-12,
+            "{n:?}"
         );
     }
 

@@ -130,10 +130,12 @@ impl BandedLeastSquares {
                 let radius = pivot.hypot(value);
                 let (c, s) = (pivot / radius, value / radius);
                 band_row[0] = radius;
+                // The rotated row is written one place to the left: its column `col` is
+                // now zero, and the next pivot column is `col + 1`.
                 for l in 1..w {
                     let (a, b) = (band_row[l], self.row[l]);
                     band_row[l] = c * a + s * b;
-                    self.row[l] = c * b - s * a;
+                    self.row[l - 1] = c * b - s * a;
                 }
                 for (a, b) in rhs_row.iter_mut().zip(self.row_rhs.iter_mut()) {
                     let (x, y) = (*a, *b);
@@ -141,8 +143,9 @@ impl BandedLeastSquares {
                     *b = c * y - s * x;
                 }
                 end = w.min(self.cols - col);
+            } else {
+                self.row.copy_within(1.., 0);
             }
-            self.row.copy_within(1.., 0);
             self.row[w - 1] = 0.0;
             end -= 1;
             col += 1;
