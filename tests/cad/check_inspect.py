@@ -136,7 +136,8 @@ def vase(skew=False):
 
 def cases():
     """(name, shape, is_solid, formats). IGES gets the plate as NURBS faces (entity 128):
-    karkas does not read IGES's analytic planes (108). The torus and the vase reach IGES as
+    karkas does not read IGES's analytic planes (108). The NURBS plate's STEP holds its hole
+    walls as periodic B-splines (unclamped knots), which karkas solves as cylinders. The torus and the vase reach IGES as
     surfaces of revolution (entity 120) of an arc and of a B-spline. IGES
     faces (entity 144) bound no solid: their distances are unsigned. The torus is one face
     bounded by its two seam circles, each used twice, with a tilted axis off the origin."""
@@ -144,7 +145,7 @@ def cases():
     torus = BRepPrimAPI_MakeTorus(gp_Ax2(gp_Pnt(1.0, 2.0, 3.0), gp_Dir(0.3, -0.2, 1.0)), 5.0, 1.5).Shape()
     return [
         ("plate-holes", plate, True, ("step",)),
-        ("plate-holes-nurbs", BRepBuilderAPI_NurbsConvert(plate, True).Shape(), True, ("igs",)),
+        ("plate-holes-nurbs", BRepBuilderAPI_NurbsConvert(plate, True).Shape(), True, ("step", "igs")),
         ("sphere", BRepPrimAPI_MakeSphere(gp_Pnt(1.0, 2.0, -3.0), 3.0).Shape(), True, ("step",)),
         ("bspline-face", bspline_face(), False, ("step", "igs")),
         ("torus", torus, True, ("step", "igs")),

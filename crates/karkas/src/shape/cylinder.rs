@@ -259,11 +259,17 @@ fn whole_circle(
     )?;
     let radius = at(du.start).distance(centre);
     let tolerance = TOLERANCE * (radius + far);
-    // The arcs close (their first and last control points meet): a whole turn.
+    // The arcs close: a whole turn. With clamped knots the first and last control points
+    // meet; with the unclamped knots of a periodic B-spline (as Open CASCADE writes a cylinder
+    // converted to NURBS: every span a Bezier arc between double knots, one knot outside the
+    // domain at each end) the curve's two ends do.
     let last = control.rows() - 1;
-    let closes = control.get(0, 0).distance(*control.get(last, 0)) <= tolerance
-        && weights.get(0, 0) == weights.get(last, 0)
-        && surface.is_clamped();
+    let closes = if surface.is_clamped() {
+        control.get(0, 0).distance(*control.get(last, 0)) <= tolerance
+            && weights.get(0, 0) == weights.get(last, 0)
+    } else {
+        at(du.start).distance(at(du.end)) <= tolerance
+    };
     if radius.is_nan() || radius <= 0.0 || !closes {
         return None;
     }
@@ -329,6 +335,93 @@ mod tests {
         assert!(!is_whole_cylinder(&cone));
         let flat = plane(&frame, (0.0, 1.0), (0.0, 1.0)).unwrap();
         assert!(!is_whole_cylinder(&flat));
+    }
+
+    /// A whole cylinder as Open CASCADE writes one converted to NURBS: three arcs of a third
+    /// of a turn (weights 1, 1/2, 1), double inner knots, and unclamped ends (one knot outside
+    /// the domain `[0, 2 pi]` at each end), radius `radius` about `centre`, `v` in `[0, 2.5]`
+    /// along `z`.
+    fn periodic_cylinder(centre: Point3, radius: f64) -> NurbsSurface<3> {
+        let third = TAU / 3.0;
+        let knots_u = vec![
+            -third,
+            0.0,
+            0.0,
+            third,
+            third,
+            2.0 * third,
+            2.0 * third,
+            TAU,
+            TAU,
+            TAU + third,
+        ];
+        let at = |k: usize| {
+            // Even k: on the circle at k * 60 degrees; odd k: the corner at twice the radius.
+            let angle = k as f64 * TAU / 6.0;
+            let r = if k.is_multiple_of(2) {
+                radius
+            } else {
+                2.0 * radius
+            };
+            centre + Point3::new([r * angle.cos(), r * angle.sin(), 0.0])
+        };
+        let lift = Point3::new([0.0, 0.0, 2.5]);
+        let control = crate::Grid::from_fn(7, 2, |i, j| at(i) + lift * j as f64);
+        let weights =
+            crate::Grid::from_fn(7, 2, |i, _| if i.is_multiple_of(2) { 1.0 } else { 0.5 });
+        NurbsSurface::new(
+            (2, knots_u),
+            (1, vec![0.0, 0.0, 2.5, 2.5]),
+            control,
+            weights,
+        )
+        .unwrap()
+        .with_closed(true, false)
+    }
+
+    #[test]
+    fn a_cylinder_with_unclamped_periodic_knots_is_solved_in_closed_form() {
+        let centre = Point3::new([105.0, -46.0, 21.5]);
+        for radius in [0.01, 2.0, 140.0] {
+            let s = periodic_cylinder(centre, radius);
+            let round = Round::of(&s).expect("a whole cylinder");
+            for k in 0..500 {
+                let angle = 0.37 + k as f64 * 0.913;
+                let rho = radius * (0.05 + 2.9 * ((k * 7919) % 1000) as f64 / 1000.0);
+                let h = -1.0 + 4.5 * ((k * 104_729) % 997) as f64 / 997.0;
+                let q = centre + Point3::new([rho * angle.cos(), rho * angle.sin(), h]);
+                let (u, v, p) = round.foot(q).unwrap();
+                let want = (rho - radius).hypot(h - h.clamp(0.0, 2.5));
+                let scale = radius + 200.0;
+                assert!(
+                    (p.distance(q) - want).abs() <= 1e-13 * scale,
+                    "{radius} {k}"
+                );
+                assert!(
+                    s.eval(u, v).distance(p) <= 1e-13 * scale,
+                    "{radius} {u} {v}"
+                );
+            }
+        }
+        // The same net with its first and last control points apart does not close.
+        let mut open = periodic_cylinder(centre, 2.0);
+        let moved = crate::Grid::from_fn(7, 2, |i, j| {
+            let p = *open.control_points().get(i, j);
+            if i == 6 {
+                p + Point3::new([0.0, 0.3, 0.0])
+            } else {
+                p
+            }
+        });
+        open = NurbsSurface::new(
+            (2, open.knots_u().to_vec()),
+            (1, open.knots_v().to_vec()),
+            moved,
+            open.weights().clone(),
+        )
+        .unwrap()
+        .with_closed(true, false);
+        assert!(Round::of(&open).is_none());
     }
 
     #[test]
