@@ -40,15 +40,19 @@ impl SectionFrame {
 
     /// The largest factor by which the map stretches a distance of the plane.
     pub fn stretch(&self) -> f64 {
-        // The largest singular value of [x_axis y_axis].
-        let (a, b, c) = (
-            self.x_axis.norm_sq(),
-            self.x_axis.dot(self.y_axis),
-            self.y_axis.norm_sq(),
-        );
+        // The largest singular value of [x_axis y_axis], computed on the axes over their
+        // largest component: the Gram matrix's entries are squares of lengths and its
+        // discriminant their fourth powers, which overflow for chords beyond about 1e77.
+        let unit = self.x_axis.max_abs().max(self.y_axis.max_abs());
+        if !(unit > 0.0 && unit.is_finite()) {
+            return unit;
+        }
+        let over_unit = |p: Point3| Point3::new(p.0.map(|c| c / unit));
+        let (x, y) = (over_unit(self.x_axis), over_unit(self.y_axis));
+        let (a, b, c) = (x.norm_sq(), x.dot(y), y.norm_sq());
         let mean = 0.5 * (a + c);
         let spread = (0.25 * (a - c) * (a - c) + b * b).sqrt();
-        (mean + spread).sqrt()
+        (mean + spread).sqrt() * unit
     }
 }
 
@@ -201,6 +205,32 @@ mod tests {
 
     fn at(x: f64, y: f64, z: f64) -> Point3 {
         Point3::new([x, y, z])
+    }
+
+    #[test]
+    fn the_stretch_holds_at_every_scale() {
+        // Axes of lengths 3 and 2, 60 degrees apart: the Gram matrix [[9, 3], [3, 4]] has
+        // the largest eigenvalue (13 + sqrt(61)) / 2.
+        let exact = ((13.0 + 61f64.sqrt()) / 2.0).sqrt();
+        let half = 3f64.sqrt();
+        for scale in [1e-300, 1e-150, 1e-5, 1.0, 1e5, 1e100, 1e150, 1e300] {
+            let frame = SectionFrame {
+                origin: at(1e8, -2e8, 0.0),
+                x_axis: at(3.0 * scale, 0.0, 0.0),
+                y_axis: at(scale, half * scale, 0.0),
+            };
+            let stretch = frame.stretch();
+            assert!(
+                (stretch / scale - exact).abs() < 1e-14 * exact,
+                "{scale}: {stretch}"
+            );
+        }
+        let flat = SectionFrame {
+            origin: at(0.0, 0.0, 0.0),
+            x_axis: at(0.0, 0.0, 0.0),
+            y_axis: at(0.0, 0.0, 0.0),
+        };
+        assert_eq!(flat.stretch(), 0.0);
     }
 
     #[test]
