@@ -41,8 +41,14 @@
 //! (BENCHMARKS.md, "Fairing speed"; `cargo bench -p karkas-bench --bench fair`), well above the
 //! 10 ms aimed at.
 //!
+//! The problem is not convex and the barrier ends in a local minimum; where that minimum's
+//! energy is above the energy of the cubic spline through the points (sparse points under a
+//! tolerance far below their spacing can end in a near-cusp between the quadrature nodes),
+//! that spline is returned instead (no corners and no kept tangents), so the energy after
+//! fairing is never above the one reported before.
+//!
 //! Guarantees (tested): every point within `T` of the curve (at its parameter, and so on
-//! dense samples); ends and tangent directions kept when asked; corners passed through; the
+//! dense samples); the energy at most the interpolating spline's where it is the fallback; ends and tangent directions kept when asked; corners passed through; the
 //! result equal to the one at the origin plus the offset for points moved far from it (to
 //! 64 units in the last place of the offset: the points are taken from their bounding box's
 //! corner, exactly); on noisy airfoils the energy at most that of SciPy's and Open

@@ -87,7 +87,11 @@ pub(crate) fn fair_piece<const D: usize>(
     let mut spans = ((n as f64 - 1.0) / POINTS_PER_SPAN)
         .round()
         .max(if closed { 4.0 } else { 1.0 }) as usize;
-    let most = if closed { n } else { n + 1 };
+    // At most one span per chord: breaks at the points' own parameters, where the start
+    // comes within the tolerance by (nearly) interpolating. More spans than chords would let
+    // the start kink between the points, which the energy (dominated by the most curved
+    // region) does not smooth out again.
+    let most = if closed { n } else { n - 1 };
     loop {
         let b = breaks(&params, end, spans, closed);
         let space = Space::new(b, closed);

@@ -3,7 +3,8 @@
 
 use super::options::{check, FairEnds, FairOptions};
 use super::piece::{fair_piece, End, Piece};
-use crate::bspline::BSplineCurve;
+use crate::bspline::{BSplineCurve, ToBSplineCurve};
+use crate::geometry::fairness::sampled_fairness_energy;
 use crate::geometry::{curve_fairness, CurveFairness};
 use crate::param::{CubicSpline, CurveParameterization};
 use crate::spline::SplineEnds;
@@ -226,7 +227,57 @@ fn fair_points<const D: usize>(
                 * size;
         }
     }
-    Ok(FairCurve {
+    let faired = FairCurve {
+        curve,
+        points: points.to_vec(),
+        parameters,
+        distances,
+    };
+    let energy = |fair: &FairCurve<D>| sampled_fairness_energy(&fair.curve);
+    Ok(match interpolant(points, options) {
+        Some(through) if energy(&through) < energy(&faired) => through,
+        _ => faired,
+    })
+}
+
+/// The cubic spline through the points (chord-length parameters, not-a-knot ends or
+/// periodic: the curve [`FairCurve::fairness_before`] measures) as a fair curve, when the
+/// options allow it (no corners, no kept tangents). It is within every tolerance (it passes
+/// through every point), so the fairer returns it where its own result, a local minimum of a
+/// problem that is not convex, has the higher energy: sparse points under a tolerance far
+/// below their spacing, where the barrier can end in a near-cusp between its quadrature
+/// nodes. The result's energy is then never above the one reported before fairing.
+fn interpolant<const D: usize>(
+    points: &[Point<D>],
+    options: &FairOptions,
+) -> Option<FairCurve<D>> {
+    if !options.corners.is_empty() || options.ends == FairEnds::KeptWithTangents {
+        return None;
+    }
+    let ends = if options.closed {
+        SplineEnds::Periodic
+    } else {
+        SplineEnds::NotAKnot
+    };
+    let spline = CubicSpline::through(points, CurveParameterization::ChordLength, ends).ok()?;
+    let curve = spline.to_bspline().ok()?;
+    let knots = spline.knots();
+    let (first, length) = (knots[0], knots[knots.len() - 1] - knots[0]);
+    if !(length > 0.0 && length.is_finite()) {
+        return None;
+    }
+    let unit = |k: f64| ((k - first) / length).clamp(0.0, 1.0);
+    let curve_knots: Vec<f64> = curve.knots().iter().map(|&k| unit(k)).collect();
+    let curve = BSplineCurve::new(3, curve_knots, curve.control_points().to_vec())
+        .ok()?
+        .with_closed(options.closed);
+    let parameters: Vec<f64> = knots[..points.len()].iter().map(|&k| unit(k)).collect();
+    let distances = parameters
+        .iter()
+        .zip(points)
+        .map(|(&t, &p)| curve.eval(t).distance(p))
+        .collect();
+    Some(FairCurve {
         curve,
         points: points.to_vec(),
         parameters,

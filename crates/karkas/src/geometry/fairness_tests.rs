@@ -1,6 +1,6 @@
 //! The fairness figures against closed forms and independent quadrature.
 
-use super::fairness::curve_fairness;
+use super::fairness::{curve_fairness, sampled_fairness_energy};
 use crate::core::{Curve, Interval, PiecewiseCurve, Side};
 use crate::Point;
 use std::f64::consts::PI;
@@ -233,6 +233,24 @@ fn an_ellipse_has_four_extrema_and_its_energy_by_independent_quadrature() {
         * PI
         / n as f64;
     assert!((f.length - perimeter).abs() < 1e-10 * perimeter);
+}
+
+#[test]
+fn the_sampled_energy_is_near_the_exact_one_on_smooth_curves() {
+    let ellipse = Closed {
+        f: ellipse,
+        domain: Interval::new(0.0, 2.0 * PI),
+        closed: true,
+    };
+    let exact = curve_fairness(&ellipse, &[]).fairness_energy;
+    let sampled = sampled_fairness_energy(&ellipse);
+    assert!((sampled - exact).abs() < 0.02 * exact, "{sampled} {exact}");
+    // y = x³ - x, the graph of the test below: its energy from the independent quadrature.
+    let cubic = Graph(vec![(-1.5, 1.5, vec![0.0, -1.0, 0.0, 1.0])]);
+    let y1 = |x: f64| 3.0 * x * x - 1.0;
+    let exact = graph_energy(|x| graph_curvature(y1(x), 6.0 * x), y1, -1.5, 1.5);
+    let sampled = sampled_fairness_energy(&cubic);
+    assert!((sampled - exact).abs() < 0.05 * exact, "{sampled} {exact}");
 }
 
 #[test]

@@ -143,3 +143,23 @@ pub fn nearest_by_sampling<C: karkas::Curve<2>>(c: &C, q: karkas::Point2, n: usi
     }
     best.0.min(c.eval(0.5 * (lo + hi)).distance(q))
 }
+
+/// Pavlov's hydrofoil profile (data/hydrofoil-profile.csv, the paper's table): 20 sparse
+/// points whose polygon crosses itself.
+pub fn hydrofoil() -> Vec<karkas::Point2> {
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../data/hydrofoil-profile.csv"
+    );
+    let text = std::fs::read_to_string(path).unwrap();
+    let points: Vec<karkas::Point2> = text
+        .lines()
+        .filter(|l| !l.starts_with('#') && !l.starts_with('x'))
+        .map(|l| {
+            let v: Vec<f64> = l.split(',').map(|s| s.trim().parse().unwrap()).collect();
+            karkas::Point2::new([v[0], v[1]])
+        })
+        .collect();
+    assert_eq!(points.len(), 20, "{path}");
+    points
+}

@@ -2,7 +2,7 @@
 //! the energy and the curvature extrema before and after, kept ends, tangents and corners,
 //! closed curves, curves given instead of points, points far from the origin, bad input.
 
-use crate::common::{nearest_by_sampling, Rng};
+use crate::common::{hydrofoil, nearest_by_sampling, Rng};
 use crate::fit_reference::naca;
 use karkas::fair::{fair_curve, fair_existing_curve, FairEnds, FairOptions};
 use karkas::param::{CubicSpline, CurveParameterization};
@@ -58,6 +58,51 @@ fn the_bound_holds_on_dense_samples_and_the_curve_is_fairer() {
         assert_eq!(
             after.curvature_jump, 0.0,
             "a C^2 curve has no curvature jumps"
+        );
+    }
+}
+
+/// NACA 0012 at `n` exact points in cosine spacing (a symmetric section: no inflection).
+fn sparse_naca0012(n: usize) -> Vec<Point2> {
+    (0..n)
+        .map(|i| naca(0.0, 0.4, 0.12, 2.0 * PI * i as f64 / (n - 1) as f64))
+        .collect()
+}
+
+#[test]
+fn sparse_points_under_a_tight_tolerance_are_never_made_less_fair() {
+    // Tolerances far below the points' spacing, where every curve within them nearly
+    // interpolates: the fairer once returned near-cusps (energies of 1e19 to 1e27 against
+    // the interpolant's 0.13 on the hydrofoil) and kinks at the points (16 inflections on a
+    // 21-point NACA 0012, whose interpolant has none).
+    let cases: Vec<(&str, Vec<Point2>, f64)> = vec![
+        ("hydrofoil", hydrofoil(), 3e-3),
+        ("hydrofoil", hydrofoil(), 3e-2),
+        ("hydrofoil", hydrofoil(), 10.0),
+        ("NACA 0012, 12 points", sparse_naca0012(12), 1e-4),
+        ("NACA 0012, 21 points", sparse_naca0012(21), 1e-5),
+        ("NACA 0012, 21 points", sparse_naca0012(21), 1e-4),
+        ("NACA 0012, 31 points", sparse_naca0012(31), 1e-4),
+    ];
+    for (name, points, tolerance) in cases {
+        let fair = fair_curve(&points, &FairOptions::new(tolerance)).unwrap();
+        let (before, after) = (fair.fairness_before().unwrap(), fair.fairness());
+        assert!(
+            after.fairness_energy <= before.fairness_energy * (1.0 + 1e-9),
+            "{name} at T {tolerance}: energy {:.4e} before, {:.4e} after",
+            before.fairness_energy,
+            after.fairness_energy
+        );
+        assert!(
+            after.inflections <= before.inflections,
+            "{name} at T {tolerance}: {} inflections before, {} after",
+            before.inflections,
+            after.inflections
+        );
+        let sampled = largest_distance(&fair.curve, &points);
+        assert!(
+            sampled <= tolerance * (1.0 + 1e-9),
+            "{name} at T {tolerance}: a point {sampled:.4e} from the curve"
         );
     }
 }

@@ -5,6 +5,7 @@
 //! a closed circle), of points that cross themselves (a nodal cubic, Pavlov's hydrofoil) must
 //! raise no crossing or turning warning.
 
+use crate::common::hydrofoil;
 use crate::fit_reference::naca;
 use karkas::fit::{
     estimate_noise, fit_curve, shape_warnings, uniform_knots, CurveFit, FitOptions, FitWarning,
@@ -283,22 +284,6 @@ fn points_that_cross_themselves_excuse_the_crossing_of_their_fit() {
     let c = brute_crossings(&samples);
     assert_eq!(c.len(), 1, "the fit crosses too");
     no_shape_warnings(&fit.warnings, "nodal cubic");
-}
-
-/// Pavlov's hydrofoil profile (data/hydrofoil-profile.csv).
-fn hydrofoil() -> Vec<Point2> {
-    let path = concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/../../data/hydrofoil-profile.csv"
-    );
-    let text = std::fs::read_to_string(path).unwrap();
-    text.lines()
-        .filter(|l| !l.starts_with('#') && !l.starts_with('x'))
-        .map(|l| {
-            let v: Vec<f64> = l.split(',').map(|s| s.trim().parse().unwrap()).collect();
-            Point2::new([v[0], v[1]])
-        })
-        .collect()
 }
 
 #[test]

@@ -2,6 +2,7 @@
 //! sound one with the smallest data term among the starts, each start recomputed here from
 //! its own cumulative chords.
 
+use crate::common::hydrofoil;
 use crate::fit_reference::naca;
 use karkas::fit::{
     fit_curve, shape_warnings, uniform_knots, CurveFit, FitOptions, FitWarningKind, PenaltyRule,
@@ -12,35 +13,6 @@ use std::f64::consts::PI;
 
 /// The powers of the cumulative chords of the starts, in order (docs/methods.md §4).
 const POWERS: [f64; 8] = [1.0, 0.5, 0.0, 0.75, 0.25, 1.5, 0.875, 0.625];
-
-/// Pavlov's hydrofoil (the paper's table), whose sparse points let other starts loop.
-fn hydrofoil() -> Vec<Point2> {
-    [
-        (94.80, 78.50),
-        (71.10, 52.60),
-        (47.40, 29.90),
-        (23.70, 7.90),
-        (0.00, -12.90),
-        (-23.70, -23.00),
-        (-47.10, -67.90),
-        (-74.80, -94.30),
-        (-106.60, -93.00),
-        (-115.00, -101.70),
-        (-106.60, -104.80),
-        (-94.80, -101.00),
-        (-71.10, -90.90),
-        (-47.40, -77.90),
-        (-23.70, -63.00),
-        (0.00, -48.50),
-        (23.70, -25.00),
-        (47.40, 0.00),
-        (71.10, 28.60),
-        (94.80, 62.60),
-    ]
-    .iter()
-    .map(|&(x, y)| Point2::new([x, y]))
-    .collect()
-}
 
 /// Parameters in proportion to the cumulative chords to `power`.
 fn chord_power(points: &[Point2], power: f64) -> Vec<f64> {
