@@ -360,7 +360,7 @@ fn close_columns(grid: &Grid<Point3>, option: &str, lines: &str) -> Result<Grid<
     let scale = grid
         .as_slice()
         .iter()
-        .fold(1.0f64, |m, p| m.max(p.max_abs()));
+        .fold(0.0f64, |m, p| m.max(p.max_abs()));
     let gap = |i: usize| grid.get(i, 0).distance(*grid.get(i, cols - 1));
     let repeats = (0..rows).all(|i| gap(i) <= 1e-12 * scale);
     let distinct = cols - usize::from(repeats);

@@ -149,7 +149,7 @@ impl SplineOptions {
             );
         }
         if ends.is_periodic() {
-            let scale = points.iter().fold(1.0f64, |m, p| m.max(p.max_abs()));
+            let scale = points.iter().fold(0.0f64, |m, p| m.max(p.max_abs()));
             let repeats = (points[points.len() - 1] - points[0]).max_abs() <= 1e-12 * scale;
             let distinct = points.len() - usize::from(repeats);
             if distinct < 3 {

@@ -121,7 +121,7 @@ fn near_miss<const D: usize>(points: &[karkas::Point<D>], least: f64) -> Option<
     let (Some(&first), Some(&last)) = (points.first(), points.last()) else {
         return None;
     };
-    let scale = points.iter().fold(1.0f64, |m, p| m.max(p.max_abs()));
+    let scale = points.iter().fold(0.0f64, |m, p| m.max(p.max_abs()));
     let (mut low, mut high) = ([f64::INFINITY; D], [f64::NEG_INFINITY; D]);
     for p in points {
         for c in 0..D {

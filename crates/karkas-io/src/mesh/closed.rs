@@ -53,7 +53,7 @@ impl GridPoles {
             return GridPoles::default();
         }
         let scale = points.iter().fold(0.0_f64, |s, p| s.max(p.max_abs()));
-        let tolerance = 1e-12 * scale.max(1.0);
+        let tolerance = 1e-12 * scale;
         let at = |a: usize, b: usize| points[a * nv + b];
         let row = |a: usize| (1..nv).all(|b| at(a, b).distance(at(a, 0)) <= tolerance);
         let col = |b: usize| (1..nu).all(|a| at(a, b).distance(at(0, b)) <= tolerance);

@@ -55,13 +55,13 @@ pub(crate) struct GridSeams {
 impl GridSeams {
     /// The seams of the `nu x nv` grid `points` (`points.len() == nu * nv`): a direction is
     /// closed when its last line of samples is its first within `1e-12` times the largest
-    /// coordinate (at least 1). O(nu + nv) after one pass for the scale.
+    /// coordinate. O(nu + nv) after one pass for the scale.
     pub(crate) fn detect(nu: usize, nv: usize, points: &[Point3]) -> GridSeams {
         if nu.checked_mul(nv) != Some(points.len()) {
             return GridSeams::open(nu, nv);
         }
         let scale = points.iter().fold(0.0_f64, |s, p| s.max(p.max_abs()));
-        let tolerance = 1e-12 * scale.max(1.0);
+        let tolerance = 1e-12 * scale;
         let at = |a: usize, b: usize| points[a * nv + b];
         let closed_u = nu >= 3 && (0..nv).all(|b| at(0, b).distance(at(nu - 1, b)) <= tolerance);
         let closed_v = nv >= 3 && (0..nu).all(|a| at(a, 0).distance(at(a, nv - 1)) <= tolerance);

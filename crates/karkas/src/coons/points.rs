@@ -299,7 +299,7 @@ impl<const D: usize> PointNetwork<D> {
                         if p.closed {
                             let scale = vectors.iter().fold(0.0f64, |s, v| s.max(v.max_abs()));
                             let (first, last) = (vectors[0], vectors[vectors.len() - 1]);
-                            if (first - last).max_abs() > CLOSING * scale.max(1.0) {
+                            if (first - last).max_abs() > CLOSING * scale {
                                 return Err(Error::UnclosedCrossDerivative {
                                     family: name,
                                     curve: c,

@@ -5,7 +5,8 @@ use super::{Grid, Point};
 use crate::{Error, Result};
 
 /// Relative distance under which two grid points count as the same (a seam line that repeats
-/// the first). Relative to the largest coordinate of the grid, at least 1.
+/// the first). Relative to the largest coordinate of the grid (no floor: a grid of size 1e-20
+/// has its seam told as one of size 1).
 const COINCIDENCE: f64 = 1e-12;
 
 impl<const D: usize> Grid<Point<D>> {
@@ -42,7 +43,7 @@ impl<const D: usize> Grid<Point<D>> {
         let scale = self
             .as_slice()
             .iter()
-            .fold(1.0f64, |m, p| m.max(p.max_abs()));
+            .fold(0.0f64, |m, p| m.max(p.max_abs()));
         let same = |a: &Point<D>, b: &Point<D>| (*a - *b).max_abs() <= COINCIDENCE * scale;
         let mut lines: Vec<Vec<Point<D>>> = (0..rows).map(|i| self.row(i).to_vec()).collect();
         if closed_v {
@@ -77,5 +78,37 @@ fn close_line<T: Clone>(items: &mut Vec<T>, repeats_first: bool) {
         items[last] = items[0].clone();
     } else {
         items.push(items[0].clone());
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::{Grid, Point2};
+
+    /// A ring of `n` points about the origin scaled by `s`, as a 2 x n grid (two rings).
+    fn rings(n: usize, s: f64, last_repeats: bool) -> Grid<Point2> {
+        let count = if last_repeats { n + 1 } else { n };
+        let ring: Vec<Point2> = (0..count)
+            .map(|j| {
+                let a = 2.0 * std::f64::consts::PI * (j % n) as f64 / n as f64;
+                Point2::new([s * a.cos(), s * a.sin()])
+            })
+            .collect();
+        let doubled: Vec<Point2> = ring.iter().chain(&ring).map(|&p| p * 2.0).collect();
+        Grid::from_row_major(2, count, [ring, doubled[count..].to_vec()].concat()).unwrap()
+    }
+
+    #[test]
+    fn a_seam_is_told_the_same_way_at_every_scale() {
+        for s in [1e-200, 1e-20, 1e-6, 1.0, 1e6, 1e200] {
+            // Distinct last column: the first is appended.
+            let open = rings(12, s, false).closed(false, true, "test").unwrap();
+            assert_eq!(open.cols(), 13, "scale {s}");
+            assert_eq!(open.get(0, 11), rings(12, s, false).get(0, 11), "scale {s}");
+            // A last column that repeats the first: kept, made an exact copy.
+            let repeated = rings(12, s, true).closed(false, true, "test").unwrap();
+            assert_eq!(repeated.cols(), 13, "scale {s}");
+            assert_eq!(repeated.get(1, 12), repeated.get(1, 0), "scale {s}");
+        }
     }
 }

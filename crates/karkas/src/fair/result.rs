@@ -233,7 +233,13 @@ fn fair_points<const D: usize>(
         parameters,
         distances,
     };
-    let energy = |fair: &FairCurve<D>| sampled_fairness_energy(&fair.curve);
+    // Energies compared in the fairer's frame (size one): they scale as 1/size^3 and would
+    // overflow both for points of size 1e-103 and below.
+    let energy = |fair: &FairCurve<D>| {
+        let controls = fair.curve.control_points().iter().map(|&c| frame.unit(c));
+        BSplineCurve::new(3, fair.curve.knots().to_vec(), controls.collect())
+            .map_or(f64::INFINITY, |unit| sampled_fairness_energy(&unit))
+    };
     Ok(match interpolant(points, options) {
         Some(through) if energy(&through) < energy(&faired) => through,
         _ => faired,
@@ -247,10 +253,7 @@ fn fair_points<const D: usize>(
 /// problem that is not convex, has the higher energy: sparse points under a tolerance far
 /// below their spacing, where the barrier can end in a near-cusp between its quadrature
 /// nodes. The result's energy is then never above the one reported before fairing.
-fn interpolant<const D: usize>(
-    points: &[Point<D>],
-    options: &FairOptions,
-) -> Option<FairCurve<D>> {
+fn interpolant<const D: usize>(points: &[Point<D>], options: &FairOptions) -> Option<FairCurve<D>> {
     if !options.corners.is_empty() || options.ends == FairEnds::KeptWithTangents {
         return None;
     }

@@ -22,9 +22,9 @@ pub(crate) fn validate<const D: usize>(points: &[Point<D>], what: &'static str) 
     }
 }
 
-/// The largest coordinate magnitude, at least 1 (so the tolerance is absolute near 0).
+/// The largest coordinate magnitude: the closing tolerance is relative to it at every scale.
 pub(crate) fn model_scale<const D: usize>(points: &[Point<D>]) -> f64 {
-    points.iter().fold(1.0f64, |m, p| m.max(p.max_abs()))
+    points.iter().fold(0.0f64, |m, p| m.max(p.max_abs()))
 }
 
 /// True when `a` and `b` coincide to the closing tolerance at `scale`.

@@ -52,7 +52,7 @@ impl Loft {
             .iter()
             .flat_map(|p| p.0)
             .fold(0.0f64, |m, c| m.max(c.abs()));
-        let on_plane = (0..rows).all(|i| net.get(i, 0)[axis].abs() <= 1e-12 * size.max(1.0));
+        let on_plane = (0..rows).all(|i| net.get(i, 0)[axis].abs() <= 1e-12 * size);
         let mirror = |p: Point3| {
             let mut q = p;
             q[axis] = -q[axis];

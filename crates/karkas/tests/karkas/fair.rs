@@ -104,6 +104,31 @@ fn sparse_points_under_a_tight_tolerance_are_never_made_less_fair() {
             sampled <= tolerance * (1.0 + 1e-9),
             "{name} at T {tolerance}: a point {sampled:.4e} from the curve"
         );
+        // The same choice at scales whose energies (1/size^3) leave the floating-point range.
+        for scale in [1e-150, 1e-120, 1e90] {
+            let small: Vec<Point2> = points.iter().map(|&p| p * scale).collect();
+            let tiny = fair_curve(&small, &FairOptions::new(tolerance * scale)).unwrap();
+            let size = fair
+                .curve
+                .control_points()
+                .iter()
+                .fold(0.0f64, |m, c| m.max(c.max_abs()));
+            assert_eq!(
+                tiny.curve.control_points().len(),
+                fair.curve.control_points().len()
+            );
+            for (a, b) in tiny
+                .curve
+                .control_points()
+                .iter()
+                .zip(fair.curve.control_points())
+            {
+                assert!(
+                    (*a * (1.0 / scale) - *b).max_abs() < 1e-9 * size,
+                    "{name} at T {tolerance}, scale {scale}: {a:?} against {b:?}"
+                );
+            }
+        }
     }
 }
 
