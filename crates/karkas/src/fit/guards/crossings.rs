@@ -55,28 +55,32 @@ pub(crate) fn crossing(vertices: &[[f64; 2]], j: usize, k: usize) -> Option<Cros
     if j.abs_diff(k) < 2 {
         return None;
     }
-    let (p, q) = (vertices[k], vertices[k + 1]);
-    let (c, d) = (vertices[j], vertices[j + 1]);
-    let (o1, o2) = (orient(p, q, c), orient(p, q, d));
-    let (o3, o4) = (orient(c, d, p), orient(c, d, q));
-    if !(o1 * o2 < 0.0 && o3 * o4 < 0.0) {
+    // The four vertices relative to `p` over their largest offset: the orientations are
+    // products of two offsets, which underflow for segments shorter than about 1e-154 (and
+    // the sign tests below compare signs, not products of two orientations, which
+    // underflowed for segments below about 1e-77).
+    // Taken in one order, so that the result is the same whichever segment is given first.
+    let (j, k) = (j.min(k), j.max(k));
+    let p = vertices[k];
+    let offsets =
+        [vertices[k + 1], vertices[j], vertices[j + 1]].map(|v| [v[0] - p[0], v[1] - p[1]]);
+    let unit = offsets.iter().flatten().fold(0.0f64, |m, c| m.max(c.abs()));
+    if !(unit > 0.0 && unit.is_finite()) {
         return None;
     }
-    let (sk, sj) = (o3 / (o3 - o4), o1 / (o1 - o2));
-    Some(if j < k {
-        Crossing {
-            a: j,
-            sa: sj,
-            b: k,
-            sb: sk,
-        }
-    } else {
-        Crossing {
-            a: k,
-            sa: sk,
-            b: j,
-            sb: sj,
-        }
+    let [q, c, d] = offsets.map(|v| [v[0] / unit, v[1] / unit]);
+    let p = [0.0, 0.0];
+    let (o1, o2) = (orient(p, q, c), orient(p, q, d));
+    let (o3, o4) = (orient(c, d, p), orient(c, d, q));
+    let opposite = |a: f64, b: f64| (a < 0.0 && b > 0.0) || (a > 0.0 && b < 0.0);
+    if !(opposite(o1, o2) && opposite(o3, o4)) {
+        return None;
+    }
+    Some(Crossing {
+        a: j,
+        sa: o1 / (o1 - o2),
+        b: k,
+        sb: o3 / (o3 - o4),
     })
 }
 
@@ -104,6 +108,19 @@ mod tests {
         assert_eq!(c.len(), 1, "{c:?}");
         assert_eq!((c[0].a, c[0].b), (0, 2));
         assert!((c[0].sa - 0.5).abs() < 1e-15 && (c[0].sb - 0.5).abs() < 1e-15);
+    }
+
+    #[test]
+    fn crossings_are_found_at_every_scale_and_offset() {
+        let bowtie = [[0.0, 0.0], [1.0, 1.0], [1.0, 0.0], [0.0, 1.0]];
+        for scale in [1e-300, 1e-160, 1e-80, 1.0, 1e80, 1e150] {
+            for offset in [0.0, 1e3 * scale] {
+                let v = bowtie.map(|p| [offset + scale * p[0], offset + scale * p[1]]);
+                let c = crossings(&v);
+                assert_eq!(c.len(), 1, "scale {scale}, offset {offset}");
+                assert!((c[0].sa - 0.5).abs() < 1e-12, "scale {scale}: {:?}", c[0]);
+            }
+        }
     }
 
     #[test]
