@@ -129,10 +129,7 @@ fn near_miss<const D: usize>(points: &[karkas::Point<D>], least: f64) -> Option<
             high[c] = high[c].max(p[c]);
         }
     }
-    let size = (0..D)
-        .map(|c| (high[c] - low[c]).powi(2))
-        .sum::<f64>()
-        .sqrt();
+    let size = (0..D).fold(0.0f64, |d, c| d.hypot(high[c] - low[c]));
     let gap = first.distance(last);
     (points.len() > 2 && gap > 1e-12 * scale && gap > least * size && gap <= NEAR_MISS_SHARE * size)
         .then_some((gap, size))

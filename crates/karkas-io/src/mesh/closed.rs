@@ -409,9 +409,8 @@ fn diagonal(points: &[Point3]) -> f64 {
         }
     }
     (0..3)
-        .map(|c| (high[c] - low[c]).powi(2))
-        .sum::<f64>()
-        .sqrt()
+        // `hypot` on the sides: their squares would underflow below about 1e-154 units.
+        .fold(0.0f64, |d, c| d.hypot(high[c] - low[c]))
 }
 
 #[cfg(test)]

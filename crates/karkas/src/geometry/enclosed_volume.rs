@@ -113,19 +113,22 @@ pub fn polygon_plane(points: &[Point3]) -> Option<(Plane, f64)> {
     }
     let n = points.len() as f64;
     let centroid = points.iter().fold(Point3::ZERO, |s, &p| s + p) * (1.0 / n);
-    let area = (0..points.len()).fold(Point3::ZERO, |s, k| {
-        let (a, b) = (
-            points[k] - centroid,
-            points[(k + 1) % points.len()] - centroid,
-        );
-        s + cross(a, b)
-    });
+    // The area vector of the points about the centroid over their largest offset: products of
+    // two lengths, which would underflow for polygons below about 1e-154 units (and overflow
+    // above 1e154).
     let size = points
         .iter()
-        .map(|p| p.distance(centroid))
+        .map(|p| (*p - centroid).max_abs())
         .fold(0.0, f64::max);
+    if !(size > 0.0 && size.is_finite()) {
+        return None;
+    }
+    let unit = |p: Point3| Point3::new((p - centroid).0.map(|c| c / size));
+    let area = (0..points.len()).fold(Point3::ZERO, |s, k| {
+        s + cross(unit(points[k]), unit(points[(k + 1) % points.len()]))
+    });
     let length = area.norm();
-    if length.is_nan() || length <= 1e-12 * size * size {
+    if length.is_nan() || length <= 1e-12 {
         return None;
     }
     let plane = Plane {
@@ -237,5 +240,16 @@ mod tests {
         assert!(polygon_plane(&bent).unwrap().1 > 0.005);
         let line: Vec<Point3> = (0..5).map(|k| Point3::new([k as f64, 0.0, 0.0])).collect();
         assert!(polygon_plane(&line).is_none());
+        // The same polygon at scales whose squared lengths leave the floating-point range.
+        for scale in [1e-200, 1e-120, 1e120, 1e200] {
+            let scaled: Vec<Point3> = points.iter().map(|&p| p * scale).collect();
+            let (fit, deviation) = polygon_plane(&scaled).unwrap();
+            assert!(deviation < 1e-12 * scale, "{scale}: {deviation}");
+            assert!(
+                (fit.normal.dot(n) - 1.0).abs() < 1e-12,
+                "{scale}: {:?}",
+                fit.normal
+            );
+        }
     }
 }

@@ -133,9 +133,8 @@ fn grid_extent<const D: usize>(grid: &Grid<Point<D>>) -> f64 {
         }
     }
     (0..D)
-        .map(|c| (high[c] - low[c]).powi(2))
-        .sum::<f64>()
-        .sqrt()
+        // `hypot` on the sides: their squares would underflow below about 1e-154 units.
+        .fold(0.0f64, |d, c| d.hypot(high[c] - low[c]))
 }
 
 /// The parameters `(u_i, v_j)` of the nodes of `grid` by the rule `kind`.
