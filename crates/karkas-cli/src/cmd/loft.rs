@@ -211,7 +211,7 @@ pub fn run(args: &LoftArgs) -> Result<()> {
         write_sections(path, f, cuts)?;
     }
     let blunt = match args.cap.cap {
-        true => trailing_edges(&loft)?,
+        true => trailing_edges(&loft, args.offsets.is_some())?,
         false => false,
     };
     write_surface(args, &loft, format, table, blunt)?;
@@ -491,13 +491,23 @@ fn parse_stations(text: &str) -> Result<Stations, String> {
 /// Whether `--cap` needs the flat trailing-edge face: true where every section's trailing edge
 /// is blunt, false where every one is sharp (the edge closes by itself); a wing blunt at some
 /// stations and sharp at others cannot be capped by planar faces, an error naming `--cap`.
-fn trailing_edges(loft: &Loft) -> Result<bool> {
+/// A hull's (`hull`) sections run from deck edge to deck edge: its "trailing edge" is the
+/// deck, open where the deck has a breadth and closed where both edges meet (a pointed bow or
+/// stern), and the message says so.
+fn trailing_edges(loft: &Loft, hull: bool) -> Result<bool> {
     let gaps = trailing_edge_gaps(loft);
     if gaps.iter().all(|&blunt| blunt) {
         return Ok(true);
     }
     if gaps.iter().all(|&blunt| !blunt) {
         return Ok(false);
+    }
+    if hull {
+        bail!(
+            "--cap: the deck edges meet at some stations (a half-breadth of 0 at the top \
+             waterline: a pointed bow or stern) and are apart at others; planar caps close a \
+             hull whose deck has a breadth at every station (a transom at each end) or none"
+        )
     }
     bail!(
         "--cap: the trailing edge is blunt at some sections and sharp at others; a closed \

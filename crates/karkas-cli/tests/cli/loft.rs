@@ -553,4 +553,20 @@ fn bad_tables_of_offsets_exit_2_naming_the_station_and_write_nothing() {
         &out,
         None,
     );
+    // A pointed hull cannot be capped: the message speaks of its deck, not of a trailing edge.
+    let path = write(d, "o.csv", &good);
+    assert_rejected(
+        &[
+            "loft",
+            "--offsets",
+            s(&path),
+            "--mirror",
+            "--cap",
+            "-o",
+            s(&out),
+        ],
+        &["--cap", "deck edges meet at some stations"][..],
+        &out,
+        None,
+    );
 }
