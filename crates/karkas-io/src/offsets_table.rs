@@ -16,6 +16,7 @@ use crate::input::display_name;
 use crate::lines::{
     csv_rows, header_columns, parse_coordinate, read_text, row_location, strip_bom,
 };
+use crate::range::check_coordinate_range;
 
 /// The required columns of a table of offsets.
 const NAMES: [&str; 3] = ["station", "waterline", "half_breadth"];
@@ -87,6 +88,12 @@ pub fn parse_offsets_table(text: &str, path: &Path) -> Result<Vec<OffsetStation>
     if stations.is_empty() {
         return Err(data_error(path, "no offsets found"));
     }
+    check_coordinate_range(
+        stations
+            .iter()
+            .flat_map(|s| s.offsets.iter().flat_map(|p| p.0).chain([s.station])),
+        path,
+    )?;
     Ok(stations)
 }
 

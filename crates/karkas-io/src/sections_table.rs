@@ -18,6 +18,7 @@ use crate::input::{display_name, excerpt, is_stdin};
 use crate::lines::{
     csv_rows, header_columns, parse_coordinate, read_text, row_location, strip_bom, Row,
 };
+use crate::range::check_coordinate_range;
 
 /// The required columns of a sections table.
 const NAMES: [&str; 6] = ["file", "x", "y", "z", "chord", "twist"];
@@ -84,9 +85,18 @@ pub fn parse_sections_table(
     if data.is_empty() {
         return Err(data_error(path, "no sections found"));
     }
-    data.iter()
+    let sections: Vec<SectionRow> = data
+        .iter()
         .map(|row| read_row(row, path, folder, (&index, dihedral, width)))
-        .collect()
+        .collect::<Result<_, _>>()?;
+    // The placed profiles reach about a chord from their leading edges.
+    check_coordinate_range(
+        sections
+            .iter()
+            .flat_map(|s| s.leading_edge.0.into_iter().chain([s.chord])),
+        path,
+    )?;
+    Ok(sections)
 }
 
 /// One data row.

@@ -165,14 +165,15 @@ fn scaled_difference(unit: &Output, scaled: &Output, scale: f64) -> Option<f64> 
 }
 
 /// One command of the table: how to run it on data at `scale` in `dir`, and what it gives.
-/// The relative difference `curve fit --knots` is held to at scales that are not powers of
-/// two (see the module documentation): a thousand times the shape's settling on exact points.
+/// The relative difference `curve fit --knots` and `loft` (whose sections are fitted and
+/// projected the same way) are held to at scales that are not powers of two (see the module
+/// documentation): a thousand times the shape's settling on exact points.
 const SETTLED_FIT: f64 = 1e-9;
 
 /// The tolerance of `job` at a scale that rounds its input, for a command otherwise held to
 /// `tolerance`.
 fn rounded_input_tolerance(job: &Job, tolerance: f64) -> f64 {
-    if job.name == "curve fit --knots" {
+    if job.name == "curve fit --knots" || job.name == "loft" {
         tolerance.max(SETTLED_FIT)
     } else {
         tolerance
@@ -280,6 +281,34 @@ fn analyze_json(input: &Path) -> Result<serde_json::Value, String> {
     serde_json::from_str(&stdout(&o)).map_err(|e| e.to_string())
 }
 
+/// `loft` of the shipped wing's table with its positions and chords scaled (the airfoil
+/// files, in unit chord, copied beside it).
+fn loft_job(dir: &Path, scale: f64) -> Result<Output, String> {
+    let wing = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../data/loft-wing");
+    let mut table = String::from("file,x,y,z,chord,twist,dihedral\n");
+    for row in std::fs::read_to_string(wing.join("wing.csv"))
+        .map_err(|e| e.to_string())?
+        .lines()
+        .skip(1)
+    {
+        let fields: Vec<&str> = row.split(',').collect();
+        std::fs::copy(wing.join(fields[0]), dir.join(fields[0])).map_err(|e| e.to_string())?;
+        let scaled: Vec<String> = fields[1..5]
+            .iter()
+            .map(|v| format!("{:e}", v.parse::<f64>().unwrap_or(f64::NAN) * scale))
+            .collect();
+        table.push_str(&format!(
+            "{},{},{}\n",
+            fields[0],
+            scaled.join(","),
+            fields[5..].join(",")
+        ));
+    }
+    let input = write(dir, "wing.csv", &table);
+    let out = dir.join("o.csv");
+    output_of(&["loft", s(&input), "-o", s(&out)], Some(&out))
+}
+
 const JOBS: &[Job] = &[
     Job {
         name: "curve ll",
@@ -312,6 +341,18 @@ const JOBS: &[Job] = &[
     Job {
         name: "surface bicubic",
         run: |d, k| grid_job(d, k, &["surface", "bicubic"], &[]),
+    },
+    Job {
+        name: "surface bicubic --closed-v",
+        run: |d, k| grid_job(d, k, &["surface", "bicubic", "--closed-v"], &[]),
+    },
+    Job {
+        name: "surface ll --closed-v",
+        run: |d, k| grid_job(d, k, &["surface", "ll", "--closed-v"], &[]),
+    },
+    Job {
+        name: "loft",
+        run: loft_job,
     },
     Job {
         name: "surface coons --kind gordon",
@@ -406,7 +447,8 @@ proptest! {
         let scale = 2f64.powi(exponent);
         let tolerance_mode = |d: &Path, k: f64| curve_job(d, k, &["curve", "fit", "--tolerance", &format!("{:e}", 1e-3 * k)]);
         let knots_mode = |d: &Path, k: f64| curve_job(d, k, &["curve", "fit", "--knots", "5"]);
-        for (name, job) in [("tolerance", &tolerance_mode as &dyn Fn(&Path, f64) -> Result<Output, String>), ("knots", &knots_mode)] {
+        let fair = |d: &Path, k: f64| curve_job(d, k, &["curve", "fair", "--tolerance", &format!("{:e}", 1e-3 * k)]);
+        for (name, job) in [("tolerance", &tolerance_mode as &dyn Fn(&Path, f64) -> Result<Output, String>), ("knots", &knots_mode), ("fair", &fair)] {
             let (unit_dir, scaled_dir) = (temp_dir(), temp_dir());
             let unit = job(unit_dir.path(), 1.0).map_err(TestCaseError::fail)?;
             let scaled = job(scaled_dir.path(), scale).map_err(TestCaseError::fail)?;
