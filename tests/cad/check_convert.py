@@ -16,7 +16,8 @@ model's size):
 - the mesh's vertices lie on the model (Open CASCADE's distance to the shape at most 1e-6 of
   the size) and the midpoints of its triangles' sides within 1.05 T of it
   (BRepExtrema_DistShapeShape, on a sample of 400 a model);
-- a smaller tolerance gives no fewer triangles and a volume no farther from the exact one.
+- a smaller tolerance gives no fewer triangles and a volume no farther from the exact one;
+- a second run writes the same file, byte for byte.
 One line per case; exit status 1 on any failure.
 
 Usage: python3 tests/cad/check_convert.py --karkas target/release/karkas [--keep DIR]
@@ -124,6 +125,11 @@ def check(karkas, name, shape, kind, share, folder, rng):
     mesh = trimesh.load(out, force="mesh", process=True)
     volume, area = volume_and_area(shape)
     faults = []
+    again = subprocess.run([karkas, "convert", model, out + ".again.stl", "--tolerance", repr(tol)],
+                           capture_output=True, text=True)
+    with open(out, "rb") as a, open(out + ".again.stl", "rb") as b:
+        if again.returncode != 0 or a.read() != b.read():
+            faults.append("a second run writes a different file")
     if not mesh.is_watertight:
         faults.append("not watertight")
     if not mesh.is_volume:

@@ -33,7 +33,7 @@
 //! Written here rather than taken from a crate: no maintained Rust crate meshes trimmed NURBS
 //! faces; the triangulation itself is `spade`'s.
 
-use std::collections::HashMap;
+use std::collections::{BTreeMap, HashMap};
 
 use karkas::bspline::NurbsSurface;
 use karkas::core::Surface;
@@ -520,7 +520,7 @@ impl Soup {
     fn close_t_junctions(&mut self, reach: f64) {
         let boundary = self.boundary_sides();
         // Each boundary vertex's faces, to look only across faces.
-        let mut vertex_faces: HashMap<u32, Vec<usize>> = HashMap::new();
+        let mut vertex_faces: BTreeMap<u32, Vec<usize>> = BTreeMap::new();
         for &(t, side) in &boundary {
             let tri = self.triangles[t];
             for c in [tri.corners[side], tri.corners[(side + 1) % 3]] {
@@ -533,10 +533,10 @@ impl Soup {
         let grid = SegmentGrid::new(&self.positions, &self.triangles, &boundary, reach);
         // The vertices to insert into each boundary side: for each other face whose boundary
         // passes within reach, its nearest side.
-        let mut inserts: Inserts = HashMap::new();
+        let mut inserts: Inserts = BTreeMap::new();
         for (&v, faces) in &vertex_faces {
             let p = self.positions[v as usize];
-            let mut best: HashMap<usize, (f64, f64, (usize, usize))> = HashMap::new();
+            let mut best: BTreeMap<usize, (f64, f64, (usize, usize))> = BTreeMap::new();
             for &(t, side) in grid.near(p) {
                 let tri = self.triangles[t];
                 let (a, b) = (tri.corners[side], tri.corners[(side + 1) % 3]);
@@ -581,7 +581,7 @@ impl Soup {
     /// Replaces each triangle with vertices to insert on its sides by a fan from the
     /// opposite corner (one side at a time; a triangle with two split sides is split twice).
     fn split_sides(&mut self, inserts: Inserts) {
-        let mut by_triangle: HashMap<usize, Vec<SideInserts>> = HashMap::new();
+        let mut by_triangle: BTreeMap<usize, Vec<SideInserts>> = BTreeMap::new();
         for ((t, side), mut list) in inserts {
             list.sort_by(|x, y| x.0.total_cmp(&y.0));
             by_triangle.entry(t).or_default().push((side, list));
@@ -656,7 +656,7 @@ fn along(p: Point3, a: Point3, b: Point3) -> (f64, f64) {
 }
 
 /// Vertices to insert into boundary sides, by (triangle, side): (place along the side, vertex).
-type Inserts = HashMap<(usize, usize), Vec<(f64, u32)>>;
+type Inserts = BTreeMap<(usize, usize), Vec<(f64, u32)>>;
 /// One side's insertions: the side (from its corner) and (place along it, vertex).
 type SideInserts = (usize, Vec<(f64, u32)>);
 

@@ -23,6 +23,9 @@
 //!   Gauss–Legendre on its polynomial cells; planar caps by their area vectors) and the
 //!   plane of a closed polygon.
 //! - [`points_out_of_order`]: whether a point list follows one curve in its order.
+//! - [`parameter_on_curve`]: the parameter of a point that lies on a curve (a CAD vertex on its
+//!   edge), by Newton's method from the nearest of a few samples, without the global search's
+//!   arc lengths.
 //! - [`surface_frame`]: the unit normal and the principal curvatures and directions from the
 //!   first and second fundamental forms.
 //! - [`surface_nearest`]: the globally nearest point of a surface, candidates from a sampled
@@ -43,6 +46,7 @@ mod fairness_tests;
 pub mod mesh_parameters;
 mod nearest_grid;
 mod point_order;
+mod point_parameter;
 mod polygon_distance;
 mod quadrature;
 mod segment_polynomials;
@@ -60,5 +64,6 @@ pub use enclosed_volume::{area_vector, flux_volume, polygon_plane, Plane};
 pub use fairness::{curvature_profile, curve_fairness, CurvatureSample, CurveFairness};
 pub use mesh_parameters::{mesh_parameters, surface_size, MeshParameters};
 pub use point_order::points_out_of_order;
+pub use point_parameter::parameter_on_curve;
 pub use surface_frame::{normal, principal_curvatures, PrincipalCurvatures};
 pub use surface_nearest::{SurfaceNearest, SurfaceProjector};

@@ -48,6 +48,7 @@ mod param_bicubic;
 mod param_condition;
 mod param_relay;
 mod param_spline;
+mod point_parameter;
 mod robust_properties;
 mod section_poles;
 mod section_tolerance;

@@ -14,12 +14,34 @@
 use karkas::bspline::conic::{elliptic_arc, hyperbolic_arc, line_segment, parabolic_arc};
 use karkas::bspline::sweep::{cone, cylinder, extrusion, plane, revolution, sphere, torus, Frame};
 use karkas::bspline::{NurbsCurve, NurbsSurface};
-use karkas::geometry::{CurveProjector, SurfaceProjector};
+use karkas::geometry::{parameter_on_curve, CurveProjector, SurfaceProjector};
 use karkas::{Curve, Point3};
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
 /// Samples of an edge when a face's parameter range is measured.
 const RANGE_SAMPLES: usize = 32;
+
+/// How near a point must be to a B-spline basis curve for its parameter to be found locally
+/// (a vertex on its edge's curve; see [`parameter_on_curve`]): `ON_CURVE` of the curve's
+/// control box plus rounding of its coordinates. Farther points take the global search.
+fn on_curve_tolerance(c: &NurbsCurve<3>) -> f64 {
+    let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
+    for p in c.control_points() {
+        for k in 0..3 {
+            lo[k] = lo[k].min(p[k]);
+            hi[k] = hi[k].max(p[k]);
+        }
+    }
+    let extent = (0..3).map(|k| hi[k] - lo[k]).fold(0.0, f64::hypot);
+    let far = (0..3)
+        .map(|k| lo[k].abs().max(hi[k].abs()))
+        .fold(0.0, f64::max);
+    ON_CURVE * extent + 64.0 * f64::EPSILON * far
+}
+
+/// The share of a curve's size within which a vertex counts as on it (a near-touch of the
+/// curve with itself closer than this is below the file's precision).
+const ON_CURVE: f64 = 1e-7;
 
 /// A curve as a file defines it.
 #[derive(Clone, Debug)]
@@ -60,9 +82,12 @@ impl BasisCurve {
             BasisCurve::Parabola { frame, focal } => {
                 Ok((p - frame.origin).dot(frame.y) / (2.0 * focal))
             }
-            BasisCurve::Nurbs(c) => CurveProjector::new(c, 0.0)
-                .map(|projector| projector.nearest(p).t)
-                .map_err(|e| e.to_string()),
+            BasisCurve::Nurbs(c) => match parameter_on_curve(c, p, on_curve_tolerance(c)) {
+                Some(t) => Ok(t),
+                None => CurveProjector::new(c, 0.0)
+                    .map(|projector| projector.nearest(p).t)
+                    .map_err(|e| e.to_string()),
+            },
         }
     }
 
@@ -758,5 +783,33 @@ mod tests {
         assert!(e.contains("unbounded"), "{e}");
         let s = BasisSurface::Sphere(frame(), 2.0).bounded(&[]).unwrap();
         assert_eq!(s.domain_v().start, -FRAC_PI_2);
+    }
+
+    #[test]
+    fn a_vertex_on_a_nurbs_curve_or_off_it_gets_the_global_searchs_parameter() {
+        // A rational circle of radius 3 (three arcs) far from the origin.
+        let (x, y) = (Point3::new([3.0, 0.0, 0.0]), Point3::new([0.0, 3.0, 0.0]));
+        let c = elliptic_arc(Point3::new([5e4, 1.0, -7.0]), x, y, (0.0, 1.5 * PI)).unwrap();
+        let projector = CurveProjector::new(&c, 0.0).unwrap();
+        let basis = BasisCurve::Nurbs(c.clone());
+        for k in 0..=40 {
+            let on = c.eval(c.domain().uniform(k, 41));
+            // On the curve (the local path), and 1e-3 off it outward (the global search).
+            let off = on + (on - Point3::new([5e4, 1.0, -7.0])) * 1e-3;
+            for q in [on, off] {
+                let t = basis.parameter_of(q).unwrap();
+                let global = projector.nearest(q);
+                assert!(
+                    (c.eval(t).distance(q) - global.distance).abs() <= 1e-12 * 5e4,
+                    "{q:?}: {t} against {}",
+                    global.t
+                );
+                assert!(
+                    (t - global.t).abs() < 1e-9,
+                    "{q:?}: {t} against {}",
+                    global.t
+                );
+            }
+        }
     }
 }
