@@ -10,6 +10,7 @@ use crate::output::console::note;
 use anyhow::{bail, Result};
 use karkas::geometry::points_out_of_order;
 use karkas::Point;
+use karkas_io::cad::read::CadModel;
 use karkas_io::input::{display_name, is_stdin};
 use karkas_io::points::{read_curve_points_with, CurvePoints};
 use karkas_io::range::check_stray_point;
@@ -139,6 +140,22 @@ pub fn warn_of_reading(input: &Path, warnings: &[String]) {
             display_name(input).display()
         ));
     }
+}
+
+/// Warns in one line of what the reader of the CAD model `path` skipped, and refuses a model
+/// without faces: `{lead}{name}: the model has no faces to {purpose} ({n} curves)`.
+pub fn faces_of_model(path: &Path, model: &CadModel, lead: &str, purpose: &str) -> Result<()> {
+    if let Some(warning) = model.warning() {
+        note(format!("karkas: warning: {warning}"));
+    }
+    if model.shape.faces.is_empty() {
+        bail!(
+            "{lead}{}: the model has no faces to {purpose} ({} curves)",
+            display_name(path).display(),
+            model.shape.curves.len()
+        );
+    }
+    Ok(())
 }
 
 /// Refuses a curve input whose points all coincide.

@@ -16,6 +16,7 @@
 //! `--flip-normals` turns a mesh output over (reversed winding and normals).
 
 use crate::args::MeshOutput;
+use crate::input::faces_of_model;
 use crate::output::console::note;
 use crate::output::curve::{to_space, write_curve_figure};
 use crate::output::formats::SURFACE_FORMATS;
@@ -238,7 +239,7 @@ fn extension(path: &Path) -> Option<String> {
 }
 
 /// True when `path` names a CAD model by its extension.
-fn is_cad(path: &Path) -> bool {
+pub(crate) fn is_cad(path: &Path) -> bool {
     matches!(
         extension(path).as_deref(),
         Some("step" | "stp" | "p21" | "iges" | "igs")
@@ -251,17 +252,8 @@ fn is_cad(path: &Path) -> bool {
 /// looked at.
 fn cad_mesh(path: &Path, model: CadModel, tolerance: Option<f64>) -> Result<TriangleMesh> {
     let name = display_name(path);
-    if let Some(warning) = model.warning() {
-        note(format!("karkas: warning: {warning}"));
-    }
+    faces_of_model(path, &model, "cannot mesh ", "mesh")?;
     let shape = &model.shape;
-    if shape.faces.is_empty() {
-        bail!(
-            "cannot mesh {}: the model has no faces to mesh ({} curves)",
-            name.display(),
-            shape.curves.len()
-        );
-    }
     let mut corners = shape
         .faces
         .iter()

@@ -20,7 +20,7 @@ use std::fmt::Write as _;
 use std::io::Write as _;
 use std::path::PathBuf;
 
-use crate::input::one_standard_input;
+use crate::input::{faces_of_model, one_standard_input};
 use crate::output::console::note;
 use crate::output::memory::check_memory;
 use crate::output::overwrite::ensure_distinct;
@@ -70,16 +70,7 @@ pub fn run(args: &InspectArgs) -> Result<()> {
     }
     let model = read_cad(&args.model)?;
     let model_name = display_name(&args.model);
-    if let Some(warning) = model.warning() {
-        note(format!("karkas: warning: {warning}"));
-    }
-    if model.shape.faces.is_empty() {
-        bail!(
-            "{}: the model has no faces to measure against ({} curves)",
-            model_name.display(),
-            model.shape.curves.len()
-        );
-    }
+    faces_of_model(&args.model, &model, "", "measure against")?;
     let points = read_point_set(&args.points)?;
     if points.is_empty() {
         bail!("{}: no points", display_name(&args.points).display());

@@ -14,6 +14,7 @@ pub mod hausdorff;
 pub mod inspect;
 pub mod loft;
 pub mod section;
+mod section_model;
 pub mod spline_options;
 mod surface_bicubic;
 mod surface_coons;

@@ -8,6 +8,8 @@
 //! are numbered from 0 over all pieces, planes taken in this order: every `--plane` as given,
 //! then the `--x` values, the `--y` values, the `--z` values.
 
+use super::convert::is_cad;
+use super::section_model::cut_model;
 use super::surface_coons::{network_surface, Kind, NetworkFiles};
 use crate::args::{
     parse_finite_list, parse_pair_with, parse_whole, read_grid_for, GridParamOption,
@@ -55,12 +57,13 @@ impl SurfaceMethod {
 #[derive(Debug, Args)]
 pub struct SectionArgs {
     /// Input grid (--method ll and bicubic): CSV with header i,j,x,y,z (indices from 0, rows
-    /// in any order).
+    /// in any order); or a CAD model (STEP or IGES), whose faces are cut within their trims.
     #[arg(value_name = "INPUT_GRID")]
     input: Option<PathBuf>,
-    /// The surface to cut.
+    /// The surface to cut (needed for a grid or a curve network; a CAD model, INPUT_GRID
+    /// ending in .step, .stp, .p21, .iges or .igs, takes none: its faces are cut).
     #[arg(long, value_enum)]
-    method: SurfaceMethod,
+    method: Option<SurfaceMethod>,
     /// --method ll: --order, --interpolate; --method ll and bicubic: --closed-u, --closed-v.
     #[command(flatten)]
     ll: LlSurfaceOptions,
@@ -182,7 +185,19 @@ pub fn run(args: &SectionArgs) -> Result<()> {
         }
     }
     let cuts = planes(args)?;
-    match (args.method, &args.input) {
+    if let Some(model) = args.input.as_deref().filter(|p| is_cad(p)) {
+        check_model_options(args, format)?;
+        let planes: Vec<(Plane<3>, String)> =
+            cuts.into_iter().map(|c| (c.plane, c.label)).collect();
+        return cut_model(model, &args.output, args.tolerance, &planes);
+    }
+    let Some(method) = args.method else {
+        bail!(
+            "--method is needed: ll or bicubic for a grid, coons for a curve network (a CAD \
+             model, .step/.stp/.p21/.iges/.igs, takes none)"
+        );
+    };
+    match (method, &args.input) {
         (SurfaceMethod::Coons, _) => cut_network(args, format, &cuts),
         (method, Some(input)) => cut_grid(args, format, &cuts, method, input),
         (method, None) => bail!(
@@ -275,7 +290,9 @@ fn cut_grid(
 /// Refuses the options the chosen `--method` does not use, and a grid given to `--method
 /// coons`, naming them.
 fn check_method_options(args: &SectionArgs) -> Result<()> {
-    let method = args.method;
+    let Some(method) = args.method else {
+        return Ok(());
+    };
     let groups = [
         (
             SurfaceMethod::Ll,
@@ -327,6 +344,34 @@ fn check_method_options(args: &SectionArgs) -> Result<()> {
                 input.display()
             );
         }
+    }
+    Ok(())
+}
+
+/// Refuses, for a CAD model, the options that build a surface and the pictures, naming them.
+fn check_model_options(args: &SectionArgs, format: OutputFormat) -> Result<()> {
+    let given = [
+        (args.method.is_some(), "--method"),
+        (args.ll.order.is_some(), "--order"),
+        (args.ll.interpolate, "--interpolate"),
+        (args.ll.closed.closed_u, "--closed-u"),
+        (args.ll.closed.closed_v, "--closed-v"),
+        (args.param.param.is_some(), "--param"),
+        (args.kind.is_some(), "--kind"),
+        (args.u_curves.is_some(), "--u-curves"),
+        (args.v_curves.is_some(), "--v-curves"),
+        (args.cells.is_some(), "--cells"),
+    ];
+    let named: Vec<&str> = given.iter().filter(|g| g.0).map(|g| g.1).collect();
+    if !named.is_empty() {
+        bail!(
+            "{} {} not used with a CAD model: its faces are cut as they are",
+            named.join(", "),
+            if named.len() == 1 { "is" } else { "are" }
+        );
+    }
+    if format != OutputFormat::Csv {
+        bail!("the sections of a CAD model are written as CSV only (section,t,x,y,z)");
     }
     Ok(())
 }

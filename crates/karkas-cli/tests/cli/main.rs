@@ -35,6 +35,7 @@ mod pictures;
 mod reading;
 mod scale;
 mod section;
+mod section_cad;
 mod section_methods;
 mod section_poles;
 mod section_scale;

@@ -8,7 +8,8 @@
 //! surface is found once in the surface's parameters ([`FaceDomain`], `trim.rs`): each loop
 //! sampled along its edges, every sample inverted onto the surface, the polygons closed
 //! across periodic directions on the face's side. [`ShapeProjector`] (`nearest.rs`) finds the
-//! nearest point of the faces to any point, signed where a face bounds a solid.
+//! nearest point of the faces to any point, signed where a face bounds a solid;
+//! [`ShapeSectioner`] (`plane_sections.rs`) cuts the faces by planes.
 
 mod bounds;
 mod cylinder;
@@ -18,9 +19,11 @@ mod face;
 mod flat;
 mod inside;
 mod nearest;
+mod plane_sections;
 
 pub use domain::{FaceDomain, ParameterLoop};
 pub use face::{Edge, EdgeLoop, Face, Shape};
 pub use nearest::{ShapeNearest, ShapeProjector};
+pub use plane_sections::{ShapeSection, ShapeSectionPiece, ShapeSectioner};
 
 use crate::bspline::{NurbsCurve, NurbsSurface};
