@@ -69,6 +69,7 @@ mod lines;
 mod order_check;
 mod plain_decimal;
 mod store;
+mod writeback;
 
 pub use cad::{iges, step};
 pub use error::{GeometryError, IoError, Location};

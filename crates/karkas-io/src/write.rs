@@ -4,7 +4,9 @@
 //! Every output goes through [`write_atomic`]: the content is written to a temporary file in
 //! the destination's directory and renamed over the destination only when complete, so a
 //! failed or interrupted run never leaves a truncated file or destroys the previous one. The
-//! path `-` means standard output, written as the content is produced.
+//! path `-` means standard output, written as the content is produced. The temporary file is
+//! synced to disk before the rename; a large one is synced in the background while it is
+//! written (the private `writeback` module), so that last sync waits for its tail only.
 //!
 //! The temporary file is named after the destination and the writing process,
 //! `.NAME.karkas-tmp-PID-N`: a file left by a killed run is obviously stale, and the next write
@@ -24,6 +26,7 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use karkas::{Grid, Point, Point3};
 
 use crate::error::IoError;
+use crate::writeback::Writeback;
 
 /// The output path that means standard output.
 pub const STDOUT: &str = "-";
@@ -85,11 +88,10 @@ pub fn write_atomic(
     remove_stale(dir, &stem);
     let (file, temp) = create_temp(dir, &stem, path).map_err(error)?;
     let guard = TempGuard(Some(temp));
-    let mut out = BufWriter::with_capacity(1 << 16, file);
+    let mut out = BufWriter::with_capacity(1 << 16, Writeback::new(file));
     fill(&mut out).map_err(error)?;
     let file = out.into_inner().map_err(|e| error(e.into_error()))?;
-    file.sync_all().map_err(error)?;
-    drop(file);
+    drop(file.finish().map_err(error)?);
     let temp = guard.0.as_deref().unwrap_or(path);
     std::fs::rename(temp, path).map_err(error)?;
     guard.persisted();

@@ -206,3 +206,87 @@ fn a_model_on_standard_input_is_meshed() {
     assert!(!piped.1.is_empty());
     assert_eq!(piped, file);
 }
+
+/// The signed distance of `p` from the box `[lo, hi]` with every edge rounded to radius `r`:
+/// the distance from the box shrunk by `r`, less `r`.
+fn rounded_box_distance(p: [f64; 3], lo: [f64; 3], hi: [f64; 3], r: f64) -> f64 {
+    let q: [f64; 3] = std::array::from_fn(|i| {
+        let (centre, half) = (0.5 * (lo[i] + hi[i]), 0.5 * (hi[i] - lo[i]) - r);
+        (p[i] - centre).abs() - half
+    });
+    let outside = q.iter().map(|x| x.max(0.0).powi(2)).sum::<f64>().sqrt();
+    let inside = q.iter().fold(f64::NEG_INFINITY, |m, &x| m.max(x)).min(0.0);
+    outside + inside - r
+}
+
+#[test]
+fn a_filleted_box_meshes_closed_on_its_surface_with_its_exact_volume() {
+    // Open CASCADE's box with every edge filleted (data/cad/README.md): three blends meet at
+    // each corner on a sphere's pole, and the fillets' cylinders end on its arcs.
+    let model = format!(
+        "{}/../../data/cad/filleted-box.step",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let (lo, hi, r) = ([-20.0, 5.0, 7.0], [-8.0, 13.0, 12.0], 1.5);
+    let (a, b, c) = (12.0 - 2.0 * r, 8.0 - 2.0 * r, 5.0 - 2.0 * r);
+    let pi = std::f64::consts::PI;
+    let volume = a * b * c
+        + 2.0 * r * (a * b + b * c + a * c)
+        + pi * r * r * (a + b + c)
+        + 4.0 / 3.0 * pi * r.powi(3);
+    let area = 2.0 * (a * b + b * c + a * c) + 2.0 * pi * r * (a + b + c) + 4.0 * pi * r * r;
+    let dir = temp_dir();
+    for tolerance in [0.15, 0.05, 0.015, 0.005] {
+        let out = dir.path().join(format!("box-{tolerance}.obj"));
+        let o = karkas(&[
+            "convert",
+            &model,
+            s(&out),
+            "--tolerance",
+            &tolerance.to_string(),
+        ]);
+        assert!(o.status.success(), "{}", stderr(&o));
+        let (v, t) = read_obj(&out);
+        // Closed and oriented: each side used once in each direction.
+        let mut sides = std::collections::BTreeMap::new();
+        for tri in &t {
+            for k in 0..3 {
+                *sides.entry((tri[k], tri[(k + 1) % 3])).or_insert(0) += 1;
+            }
+        }
+        for (&(p, q), &n) in &sides {
+            assert_eq!(n, 1, "T {tolerance}: side {p}-{q} used {n} times one way");
+            assert_eq!(
+                sides.get(&(q, p)),
+                Some(&1),
+                "T {tolerance}: side {p}-{q} open"
+            );
+        }
+        for p in &v {
+            let d = rounded_box_distance(*p, lo, hi, r);
+            assert!(
+                d.abs() < 1e-9,
+                "T {tolerance}: vertex {p:?} {d:e} off the surface"
+            );
+        }
+        let mut enclosed = 0.0;
+        for tri in &t {
+            let [p, q, w] = tri.map(|k| v[k]);
+            let mid: [f64; 3] = std::array::from_fn(|i| 0.5 * (p[i] + q[i]));
+            let d = rounded_box_distance(mid, lo, hi, r);
+            assert!(
+                d.abs() <= tolerance,
+                "T {tolerance}: side {p:?}-{q:?} {d:e} off"
+            );
+            enclosed += (p[0] * (q[1] * w[2] - q[2] * w[1]) - p[1] * (q[0] * w[2] - q[2] * w[0])
+                + p[2] * (q[0] * w[1] - q[1] * w[0]))
+                / 6.0;
+        }
+        // Outward winding, and no more volume missing than a layer of the tolerance.
+        assert!(enclosed > 0.0, "T {tolerance}: volume {enclosed}");
+        assert!(
+            (volume - enclosed).abs() <= tolerance * area,
+            "T {tolerance}: volume {enclosed} against {volume}"
+        );
+    }
+}

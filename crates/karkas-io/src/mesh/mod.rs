@@ -16,12 +16,14 @@
 mod any_format;
 pub mod closed;
 pub(crate) mod error;
+mod face_loops;
 pub mod glb;
 pub(crate) mod normals;
 pub mod obj;
 pub mod ply;
 mod ply_read;
 mod shape_mesh;
+mod shape_seams;
 pub(crate) mod shared_vertices;
 pub mod stl;
 mod stl_read;

@@ -12,44 +12,63 @@
 //!   stay one step.
 //! - **Triangulation.** The nodes of those lines inside the face, the loops' vertices and the
 //!   loops' segments as constraints (each loop thinned to the vertices that keep it within
-//!   half the tolerance on the surface) go into a constrained Delaunay triangulation (the `spade`
+//!   half the tolerance on the surface, its corners and the ends of a pole kept:
+//!   [`super::face_loops`]) go into a constrained Delaunay triangulation (the `spade`
 //!   crate, built for it) in parameters scaled by the surface's mean speed in each direction,
 //!   so that triangles are well shaped on the surface (and by a power of two that keeps any
 //!   model's parameters within the range `spade` takes); nodes within a third of a step of a
 //!   loop are left out (no slivers along the trim). The nodes are bulk loaded (near linear
-//!   time), the loops inserted after them. A triangle is kept when its centroid lies
-//!   in the face; it is wound counter-clockwise seen from the face's outside
-//!   ([`Face::same_sense`]).
+//!   time), the loops inserted after them. A triangle is kept when its centroid lies inside
+//!   the thinned loops and it is not flat in the parameters; it is wound counter-clockwise
+//!   seen from the face's outside ([`Face::same_sense`]).
+//! - **Refinement.** A side whose chord passes farther than the tolerance from the surface at
+//!   its middle is split there, round by round ([`refine`]): the parameter lines bound the
+//!   sides along them, not a side across them, which a face trimmed by a curve can have
+//!   (a fillet's cylinder cut by a mitre, whose straight direction has lines at its ends).
 //! - **Bounded size.** A mesh of more than `MAX_VERTICES` (2^22, about 4.2 million) vertices,
 //!   counted from each face's parameter lines before it is triangulated, is refused with a
 //!   message asking for a larger tolerance: a tolerance far below the model's size costs an
 //!   error, not unbounded memory or time.
 //! - **One surface of all faces.** Vertices of all faces within `1e-9` of the model's size are
-//!   merged (shared corners, seams, poles), triangles that collapse are dropped, and where two
+//!   merged (shared corners, seams, poles), triangles that collapse are dropped, boundary
+//!   vertices of two faces within a hundredth of the tolerance are merged (one edge sampled
+//!   at the same places on two surfaces, apart by the model's gap), and where two
 //!   faces sampled a shared edge at different points, each boundary vertex is inserted into
 //!   the nearest boundary segment of every other face that passes within the tolerance of it
-//!   (the T-junctions closed), so that a closed shell comes out watertight.
+//!   and runs along one of its own boundary sides (the T-junctions closed,
+//!   [`super::shape_seams`]), so that a closed shell comes out watertight.
 //!
 //! Written here rather than taken from a crate: no maintained Rust crate meshes trimmed NURBS
 //! faces; the triangulation itself is `spade`'s.
 
-use std::collections::{BTreeMap, HashMap};
-
 use karkas::bspline::NurbsSurface;
 use karkas::core::Surface;
-use karkas::shape::{Face, FaceDomain, Shape};
+use karkas::shape::{Face, FaceDomain, ParameterLoop, Shape};
 use karkas::Point3;
 use spade::{
     mitigate_underflow, validate_vertex, ConstrainedDelaunayTriangulation, HasPosition, Point2,
     Triangulation,
 };
 
+use crate::mesh::face_loops::{nodes_near_loops, simplified};
+use crate::mesh::shape_seams::{Soup, Tri};
 use crate::mesh::TriangleMesh;
 
 /// The most vertices one mesh may have before it is refused (about twice as many triangles):
 /// this bounds the memory (a few hundred bytes a vertex while a face is triangulated) and the
 /// time of a tolerance far below the model's size.
 const MAX_VERTICES: usize = 1 << 22;
+
+/// A triangle whose doubled area in the parameter plane is at most this share of its longest
+/// side squared is flat there (see [`flat_in_parameters`]).
+const FLAT: f64 = 1e-9;
+
+/// Boundary vertices of two faces closer than this share of the tolerance are one vertex.
+const SNAP: f64 = 1e-2;
+
+/// The most rounds of [`refine`]: each halves the sides it splits, and a side's distance
+/// from the surface falls with the square of its length.
+const REFINE_ROUNDS: usize = 24;
 
 /// What can stop a shape from being meshed.
 #[derive(Debug, thiserror::Error)]
@@ -124,6 +143,7 @@ pub fn shape_mesh(shape: &Shape, tolerance: f64) -> Result<TriangleMesh, ShapeMe
     }
     let weld = 1e-9 * shape.size().max(f64::MIN_POSITIVE);
     soup.weld(weld);
+    soup.snap_boundaries((SNAP * tolerance).max(weld));
     soup.close_t_junctions(tolerance.max(weld));
     Ok(TriangleMesh {
         positions: soup.positions,
@@ -131,20 +151,6 @@ pub fn shape_mesh(shape: &Shape, tolerance: f64) -> Result<TriangleMesh, ShapeMe
         triangles: soup.triangles.iter().map(|t| t.corners).collect(),
         grid: None,
     })
-}
-
-/// Triangles of many faces before they are joined.
-#[derive(Default)]
-struct Soup {
-    positions: Vec<Point3>,
-    triangles: Vec<Tri>,
-}
-
-/// A triangle and the face it came from.
-#[derive(Clone, Copy)]
-struct Tri {
-    corners: [u32; 3],
-    face: usize,
 }
 
 /// The parameter lines of one direction of `s` (see the module docs): `along_u` for `u`.
@@ -321,10 +327,11 @@ fn face_triangles(
     let scale = speeds(s, &us, &vs);
     let plane = ParameterPlane::new(s, scale);
     let near_loops = nodes_near_loops(domain, &us, &vs, scale);
+    let polygon = mesh_polygon(s, domain, tolerance);
     let mut nodes = Vec::new();
     for (i, &u) in us.iter().enumerate() {
         for (j, &v) in vs.iter().enumerate() {
-            if !near_loops[i * vs.len() + j] && domain.contains(u, v) {
+            if !near_loops[i * vs.len() + j] && polygon.contains(u, v) {
                 nodes.extend(plane.node([u, v]));
             }
         }
@@ -335,9 +342,9 @@ fn face_triangles(
             reason: e.to_string(),
         }
     })?;
-    for l in &domain.loops {
-        let kept = simplified(s, &l.points, tolerance / 2.0);
-        let handles: Vec<_> = kept
+    for l in &polygon.loops {
+        let handles: Vec<_> = l
+            .points
             .iter()
             .filter_map(|&p| cdt.insert(plane.node(p)?).ok())
             .collect();
@@ -348,6 +355,49 @@ fn face_triangles(
             }
         }
     }
+    refine(
+        &mut cdt,
+        s,
+        &plane,
+        &polygon,
+        tolerance,
+        index,
+        soup.positions.len(),
+    )?;
+    emit(face, &cdt, &polygon, index, soup);
+    Ok(())
+}
+
+/// The face as its mesh bounds it: the loops thinned to the vertices that go into the
+/// triangulation ([`simplified`]). Nodes and triangles are kept inside these, not inside the
+/// loops as sampled, or those between a side and the stretch of loop it stands for overlap
+/// the ones inside the side.
+fn mesh_polygon(s: &NurbsSurface<3>, domain: &FaceDomain, tolerance: f64) -> FaceDomain {
+    FaceDomain {
+        u: domain.u,
+        v: domain.v,
+        loops: domain
+            .loops
+            .iter()
+            .map(|l| ParameterLoop {
+                points: simplified(s, &l.points, tolerance / 2.0),
+            })
+            .collect(),
+    }
+}
+
+/// Adds the triangles of `cdt` inside `polygon` to `soup`, wound counter-clockwise seen
+/// from the face's outside; those flat in the parameters are left out (corners on one line
+/// there, to round-off: a flap of three loop vertices along an iso-parameter line, which is
+/// a real triangle on the surface).
+fn emit(
+    face: &Face,
+    cdt: &ConstrainedDelaunayTriangulation<Node>,
+    polygon: &FaceDomain,
+    index: usize,
+    soup: &mut Soup,
+) {
+    let s = &face.surface;
     let base = soup.positions.len();
     soup.positions.extend(
         cdt.vertices()
@@ -360,7 +410,7 @@ fn face_triangles(
             (c[0][0] + c[1][0] + c[2][0]) / 3.0,
             (c[0][1] + c[1][1] + c[2][1]) / 3.0,
         ];
-        if !domain.contains(centre[0], centre[1]) {
+        if !polygon.contains(centre[0], centre[1]) || flat_in_parameters(v.map(|h| h.data().at)) {
             continue;
         }
         let mut t = v.map(|h| (base + h.fix().index()) as u32);
@@ -372,336 +422,115 @@ fn face_triangles(
             face: index,
         });
     }
+}
+
+/// Splits the sides of the face's triangles whose chord passes farther than the tolerance
+/// from the surface at its middle ([`off_surface`]), round by round, the loops' sides left as they are. The parameter
+/// lines bound the sides along the lines, not a side across them: a ruled face trimmed by
+/// a curve, whose straight direction has lines at its two ends only, was fanned from one
+/// corner by chords through the body. A side no longer than the tolerance is left: its
+/// middle is within half its length of its ends, on the surface.
+fn refine(
+    cdt: &mut ConstrainedDelaunayTriangulation<Node>,
+    s: &NurbsSurface<3>,
+    plane: &ParameterPlane,
+    domain: &FaceDomain,
+    tolerance: f64,
+    index: usize,
+    base: usize,
+) -> Result<(), ShapeMeshError> {
+    for _ in 0..REFINE_ROUNDS {
+        let at: Vec<Point3> = cdt
+            .vertices()
+            .map(|n| s.eval(n.data().uv[0], n.data().uv[1]))
+            .collect();
+        let mut seen = std::collections::HashSet::new();
+        let mut splits = Vec::new();
+        for f in cdt.inner_faces() {
+            let c = f.vertices().map(|h| h.data().uv);
+            let centre = [
+                (c[0][0] + c[1][0] + c[2][0]) / 3.0,
+                (c[0][1] + c[1][1] + c[2][1]) / 3.0,
+            ];
+            if !domain.contains(centre[0], centre[1]) {
+                continue;
+            }
+            for e in f.adjacent_edges() {
+                if e.is_constraint_edge() || !seen.insert(e.fix().as_undirected()) {
+                    continue;
+                }
+                let [a, b] = e.vertices();
+                let (ua, ub) = (a.data().uv, b.data().uv);
+                let mid = [0.5 * (ua[0] + ub[0]), 0.5 * (ua[1] + ub[1])];
+                let (pa, pb) = (at[a.fix().index()], at[b.fix().index()]);
+                if pa.distance(pb) > tolerance
+                    && off_surface(s, mid, (pa + pb) * 0.5) > tolerance
+                    && domain.contains(mid[0], mid[1])
+                {
+                    splits.extend(plane.node(mid));
+                }
+            }
+        }
+        if splits.is_empty() {
+            return Ok(());
+        }
+        if base + cdt.num_vertices() + splits.len() > MAX_VERTICES {
+            return Err(ShapeMeshError::TooManyVertices {
+                face: index,
+                limit: MAX_VERTICES,
+            });
+        }
+        for node in splits {
+            let _ = cdt.insert(node);
+        }
+    }
     Ok(())
 }
 
-/// The vertices of the closed loop `points` (in `s`'s parameters) that keep its image on the
-/// surface within `tolerance` of the loop's (Douglas and Peucker's rule on the surface points,
-/// the loop cut at its first vertex and the one farthest from it).
-fn simplified(s: &NurbsSurface<3>, points: &[[f64; 2]], tolerance: f64) -> Vec<[f64; 2]> {
-    let n = points.len();
-    if n < 4 {
-        return points.to_vec();
-    }
-    let at: Vec<Point3> = points.iter().map(|p| s.eval(p[0], p[1])).collect();
-    let far = (1..n)
-        .max_by(|&a, &b| at[a].distance(at[0]).total_cmp(&at[b].distance(at[0])))
-        .unwrap_or(n / 2);
-    let mut keep = vec![false; n + 1];
-    keep[0] = true;
-    keep[far] = true;
-    keep[n] = true;
-    let mut stack = vec![(0, far), (far, n)];
-    while let Some((a, b)) = stack.pop() {
-        let (pa, pb) = (at[a % n], at[b % n]);
-        let worst = (a + 1..b)
-            .map(|k| (k, along(at[k], pa, pb)))
-            .map(|(k, (t, d))| {
-                (
-                    k,
-                    if (0.0..=1.0).contains(&t) {
-                        d
-                    } else {
-                        at[k].distance(pa).min(at[k].distance(pb))
-                    },
-                )
-            })
-            .max_by(|x, y| x.1.total_cmp(&y.1));
-        if let Some((k, d)) = worst {
-            if d > tolerance {
-                keep[k] = true;
-                stack.push((a, k));
-                stack.push((k, b));
-            }
-        }
-    }
-    (0..n).filter(|&k| keep[k]).map(|k| points[k]).collect()
-}
-
-/// For each node `(us[i], vs[j])` (row-major), whether it lies within a third of the
-/// smaller adjacent step of a loop segment, in scaled parameters.
-fn nodes_near_loops(domain: &FaceDomain, us: &[f64], vs: &[f64], scale: (f64, f64)) -> Vec<bool> {
-    let mut near = vec![false; us.len() * vs.len()];
-    let gap = |lines: &[f64], i: usize| {
-        let before = if i > 0 {
-            lines[i] - lines[i - 1]
-        } else {
-            f64::INFINITY
-        };
-        let after = if i + 1 < lines.len() {
-            lines[i + 1] - lines[i]
-        } else {
-            f64::INFINITY
-        };
-        before.min(after)
-    };
-    let widest = |lines: &[f64]| lines.windows(2).map(|w| w[1] - w[0]).fold(0.0, f64::max);
-    let (reach_u, reach_v) = (widest(us) / 3.0, widest(vs) / 3.0);
-    for l in &domain.loops {
-        for k in 0..l.points.len() {
-            let (p, q) = (l.points[k], l.points[(k + 1) % l.points.len()]);
-            let i0 = us.partition_point(|&u| u < p[0].min(q[0]) - reach_u);
-            let i1 = us.partition_point(|&u| u <= p[0].max(q[0]) + reach_u);
-            let j0 = vs.partition_point(|&v| v < p[1].min(q[1]) - reach_v);
-            let j1 = vs.partition_point(|&v| v <= p[1].max(q[1]) + reach_v);
-            for i in i0..i1 {
-                for j in j0..j1 {
-                    let limit = (gap(us, i) * scale.0).min(gap(vs, j) * scale.1) / 3.0;
-                    let d = segment_distance([us[i], vs[j]], p, q, scale);
-                    if d < limit {
-                        near[i * vs.len() + j] = true;
-                    }
-                }
-            }
-        }
-    }
-    near
-}
-
-/// The distance of `x` from the segment `p q`, in parameters scaled by `scale`.
-fn segment_distance(x: [f64; 2], p: [f64; 2], q: [f64; 2], scale: (f64, f64)) -> f64 {
-    let s = |a: [f64; 2]| [a[0] * scale.0, a[1] * scale.1];
-    let (x, p, q) = (s(x), s(p), s(q));
-    let d = [q[0] - p[0], q[1] - p[1]];
-    let len2 = d[0] * d[0] + d[1] * d[1];
-    let t = if len2 > 0.0 {
-        (((x[0] - p[0]) * d[0] + (x[1] - p[1]) * d[1]) / len2).clamp(0.0, 1.0)
-    } else {
+/// How far the chord's middle `chord` lies off the surface at the side's middle parameters
+/// `uv`: along the surface's normal there, since near a pole those parameters may land
+/// beside the chord's middle rather than under it. 0 where the normal is not defined.
+fn off_surface(s: &NurbsSurface<3>, uv: [f64; 2], chord: Point3) -> f64 {
+    let n = karkas::geometry::surface_frame::normal(s, uv[0], uv[1]);
+    let d = (chord - s.eval(uv[0], uv[1])).dot(n).abs();
+    if d.is_nan() {
         0.0
-    };
-    let e = [x[0] - p[0] - t * d[0], x[1] - p[1] - t * d[1]];
-    (e[0] * e[0] + e[1] * e[1]).sqrt()
-}
-
-impl Soup {
-    /// Merges vertices within `eps` of each other and drops the triangles that collapse.
-    fn weld(&mut self, eps: f64) {
-        let cell = |p: Point3| [0, 1, 2].map(|c| (p[c] / eps).floor() as i64);
-        let mut buckets: HashMap<[i64; 3], Vec<u32>> = HashMap::new();
-        let mut map = vec![0u32; self.positions.len()];
-        let mut kept: Vec<Point3> = Vec::new();
-        for (i, &p) in self.positions.iter().enumerate() {
-            let c = cell(p);
-            let mut found = None;
-            'search: for dx in -1..=1 {
-                for dy in -1..=1 {
-                    for dz in -1..=1 {
-                        let key = [c[0] + dx, c[1] + dy, c[2] + dz];
-                        if let Some(list) = buckets.get(&key) {
-                            if let Some(&k) =
-                                list.iter().find(|&&k| kept[k as usize].distance(p) <= eps)
-                            {
-                                found = Some(k);
-                                break 'search;
-                            }
-                        }
-                    }
-                }
-            }
-            map[i] = found.unwrap_or_else(|| {
-                kept.push(p);
-                let k = (kept.len() - 1) as u32;
-                buckets.entry(c).or_default().push(k);
-                k
-            });
-        }
-        self.positions = kept;
-        for t in &mut self.triangles {
-            t.corners = t.corners.map(|c| map[c as usize]);
-        }
-        self.triangles.retain(|t| {
-            let [a, b, c] = t.corners;
-            a != b && b != c && a != c
-        });
-    }
-
-    /// Splits each boundary segment (a side of one triangle only) at the boundary vertices of
-    /// other faces within `reach` of it, nearest segment first (see the module docs).
-    fn close_t_junctions(&mut self, reach: f64) {
-        let boundary = self.boundary_sides();
-        // Each boundary vertex's faces, to look only across faces.
-        let mut vertex_faces: BTreeMap<u32, Vec<usize>> = BTreeMap::new();
-        for &(t, side) in &boundary {
-            let tri = self.triangles[t];
-            for c in [tri.corners[side], tri.corners[(side + 1) % 3]] {
-                let faces = vertex_faces.entry(c).or_default();
-                if !faces.contains(&tri.face) {
-                    faces.push(tri.face);
-                }
-            }
-        }
-        let grid = SegmentGrid::new(&self.positions, &self.triangles, &boundary, reach);
-        // The vertices to insert into each boundary side: for each other face whose boundary
-        // passes within reach, its nearest side.
-        let mut inserts: Inserts = BTreeMap::new();
-        for (&v, faces) in &vertex_faces {
-            let p = self.positions[v as usize];
-            let mut best: BTreeMap<usize, (f64, f64, (usize, usize))> = BTreeMap::new();
-            for &(t, side) in grid.near(p) {
-                let tri = self.triangles[t];
-                let (a, b) = (tri.corners[side], tri.corners[(side + 1) % 3]);
-                if a == v || b == v || faces.contains(&tri.face) {
-                    continue;
-                }
-                let (pa, pb) = (self.positions[a as usize], self.positions[b as usize]);
-                let (s, d) = along(p, pa, pb);
-                let nearer = best.get(&tri.face).is_none_or(|x| d < x.0);
-                if s > 0.0 && s < 1.0 && d <= reach && nearer {
-                    best.insert(tri.face, (d, s, (t, side)));
-                }
-            }
-            for (_, (_, s, key)) in best {
-                inserts.entry(key).or_default().push((s, v));
-            }
-        }
-        self.split_sides(inserts);
-    }
-
-    /// The sides used by one triangle only, as (triangle, side from corner `side` to the next).
-    fn boundary_sides(&self) -> Vec<(usize, usize)> {
-        let mut uses: HashMap<(u32, u32), u32> = HashMap::new();
-        for t in &self.triangles {
-            for k in 0..3 {
-                let (a, b) = (t.corners[k], t.corners[(k + 1) % 3]);
-                *uses.entry((a.min(b), a.max(b))).or_default() += 1;
-            }
-        }
-        let mut out = Vec::new();
-        for (i, t) in self.triangles.iter().enumerate() {
-            for k in 0..3 {
-                let (a, b) = (t.corners[k], t.corners[(k + 1) % 3]);
-                if uses[&(a.min(b), a.max(b))] == 1 {
-                    out.push((i, k));
-                }
-            }
-        }
-        out
-    }
-
-    /// Replaces each triangle with vertices to insert on its sides by a fan from the
-    /// opposite corner (one side at a time; a triangle with two split sides is split twice).
-    fn split_sides(&mut self, inserts: Inserts) {
-        let mut by_triangle: BTreeMap<usize, Vec<SideInserts>> = BTreeMap::new();
-        for ((t, side), mut list) in inserts {
-            list.sort_by(|x, y| x.0.total_cmp(&y.0));
-            by_triangle.entry(t).or_default().push((side, list));
-        }
-        let mut removed = vec![false; self.triangles.len()];
-        let mut added = Vec::new();
-        for (t, sides) in by_triangle {
-            removed[t] = true;
-            // The triangle's boundary with the inserted vertices, corner by corner.
-            let tri = self.triangles[t];
-            let mut ring: Vec<u32> = Vec::new();
-            for k in 0..3 {
-                ring.push(tri.corners[k]);
-                if let Some((_, list)) = sides.iter().find(|(s, _)| *s == k) {
-                    ring.extend(list.iter().map(|&(_, v)| v));
-                }
-            }
-            let n = ring.len();
-            let apex = (0..n).find(|&i| {
-                [ring[i], ring[(i + 1) % n], ring[(i + n - 1) % n]]
-                    .iter()
-                    .all(|c| tri.corners.contains(c))
-            });
-            match apex {
-                // One side split: a fan from the corner opposite it.
-                Some(apex) => {
-                    for k in 1..n - 1 {
-                        let (b, c) = (ring[(apex + k) % n], ring[(apex + k + 1) % n]);
-                        added.push(Tri {
-                            corners: [ring[apex], b, c],
-                            face: tri.face,
-                        });
-                    }
-                }
-                // More sides split: a fan from the triangle's centroid, a new vertex.
-                None => {
-                    let p = tri.corners.map(|c| self.positions[c as usize]);
-                    self.positions.push((p[0] + p[1] + p[2]) * (1.0 / 3.0));
-                    let centre = (self.positions.len() - 1) as u32;
-                    for k in 0..n {
-                        let (b, c) = (ring[k], ring[(k + 1) % n]);
-                        added.push(Tri {
-                            corners: [centre, b, c],
-                            face: tri.face,
-                        });
-                    }
-                }
-            }
-        }
-        let mut kept: Vec<Tri> = self
-            .triangles
-            .iter()
-            .zip(&removed)
-            .filter(|(_, &r)| !r)
-            .map(|(t, _)| *t)
-            .collect();
-        kept.extend(added);
-        self.triangles = kept;
+    } else {
+        d
     }
 }
 
-/// Where `p` projects onto the line `a b` (0 at `a`, 1 at `b`) and its distance from the
-/// segment there.
-fn along(p: Point3, a: Point3, b: Point3) -> (f64, f64) {
-    let d = b - a;
-    let len2 = d.dot(d);
-    if len2 <= 0.0 {
-        return (0.0, p.distance(a));
-    }
-    let s = (p - a).dot(d) / len2;
-    (s, p.distance(a + d * s))
+/// True when the triangle `at` (in the scaled parameter plane) has no area to speak of: its
+/// corners lie on one line to within round-off of their coordinates.
+fn flat_in_parameters(at: [Point2<f64>; 3]) -> bool {
+    let (a, b) = (
+        [at[1].x - at[0].x, at[1].y - at[0].y],
+        [at[2].x - at[0].x, at[2].y - at[0].y],
+    );
+    let c = [at[2].x - at[1].x, at[2].y - at[1].y];
+    let longest = [a, b, c]
+        .iter()
+        .map(|d| d[0] * d[0] + d[1] * d[1])
+        .fold(0.0f64, f64::max);
+    (a[0] * b[1] - a[1] * b[0]).abs() <= FLAT * longest
 }
 
-/// Vertices to insert into boundary sides, by (triangle, side): (place along the side, vertex).
-type Inserts = BTreeMap<(usize, usize), Vec<(f64, u32)>>;
-/// One side's insertions: the side (from its corner) and (place along it, vertex).
-type SideInserts = (usize, Vec<(f64, u32)>);
+#[cfg(test)]
+mod tests {
+    use super::flat_in_parameters;
+    use spade::Point2;
 
-/// Boundary sides bucketed by the cubes of side `reach` their boxes touch.
-struct SegmentGrid {
-    cell: f64,
-    buckets: HashMap<[i64; 3], Vec<(usize, usize)>>,
-}
-
-impl SegmentGrid {
-    fn new(
-        positions: &[Point3],
-        triangles: &[Tri],
-        sides: &[(usize, usize)],
-        reach: f64,
-    ) -> SegmentGrid {
-        // Cells no smaller than the longest side over 8, so a side spans a few cells.
-        let longest = sides
-            .iter()
-            .map(|&(t, k)| {
-                let c = triangles[t].corners;
-                positions[c[k] as usize].distance(positions[c[(k + 1) % 3] as usize])
-            })
-            .fold(0.0, f64::max);
-        let cell = (longest / 8.0).max(reach).max(f64::MIN_POSITIVE);
-        let mut buckets: HashMap<[i64; 3], Vec<(usize, usize)>> = HashMap::new();
-        for &(t, k) in sides {
-            let c = triangles[t].corners;
-            let (a, b) = (positions[c[k] as usize], positions[c[(k + 1) % 3] as usize]);
-            let lo = [0, 1, 2].map(|i| ((a[i].min(b[i]) - reach) / cell).floor() as i64);
-            let hi = [0, 1, 2].map(|i| ((a[i].max(b[i]) + reach) / cell).floor() as i64);
-            for x in lo[0]..=hi[0] {
-                for y in lo[1]..=hi[1] {
-                    for z in lo[2]..=hi[2] {
-                        buckets.entry([x, y, z]).or_default().push((t, k));
-                    }
-                }
-            }
-        }
-        SegmentGrid { cell, buckets }
-    }
-
-    /// The sides whose boxes (grown by the reach) touch `p`'s cell.
-    fn near(&self, p: Point3) -> &[(usize, usize)] {
-        let key = [0, 1, 2].map(|i| (p[i] / self.cell).floor() as i64);
-        self.buckets.get(&key).map_or(&[], Vec::as_slice)
+    #[test]
+    fn three_points_of_one_line_to_round_off_are_flat_and_a_thin_triangle_is_not() {
+        let at = |y: f64| {
+            [
+                Point2::new(0.0, 0.0),
+                Point2::new(0.5, y),
+                Point2::new(1.0, 0.0),
+            ]
+        };
+        assert!(flat_in_parameters(at(1e-16)));
+        assert!(flat_in_parameters(at(-1e-17)));
+        assert!(!flat_in_parameters(at(1e-3)));
     }
 }

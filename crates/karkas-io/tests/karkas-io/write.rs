@@ -116,6 +116,41 @@ fn failed_fill_leaves_destination_and_no_temp_file() {
 }
 
 #[test]
+fn a_large_output_synced_as_it_is_written_arrives_whole() {
+    // 40 MiB in pieces of odd sizes: the disk write is asked for in the background every
+    // 16 MiB; the file must hold every byte in order, and a failure after those requests
+    // must still leave the previous file and no temporary one.
+    let (dir, path) = scratch("large.bin");
+    let piece: Vec<u8> = (0..99_991u32).map(|k| (k % 251) as u8).collect();
+    let total = 40 << 20;
+    write_atomic(&path, |out| {
+        let mut written = 0;
+        while written < total {
+            let n = piece.len().min(total - written);
+            out.write_all(&piece[..n])?;
+            written += n;
+        }
+        Ok(())
+    })
+    .unwrap();
+    let back = std::fs::read(&path).unwrap();
+    assert_eq!(back.len(), total);
+    for (k, chunk) in back.chunks(piece.len()).enumerate() {
+        assert_eq!(chunk, &piece[..chunk.len()], "piece {k}");
+    }
+    let e = write_atomic(&path, |out| {
+        for _ in 0..300 {
+            out.write_all(&piece)?;
+        }
+        Err(io::Error::other("stopped"))
+    })
+    .unwrap_err();
+    assert!(e.to_string().contains("stopped"), "{e}");
+    assert_eq!(std::fs::read(&path).unwrap().len(), total);
+    assert_eq!(entries(dir.path()), ["large.bin"]);
+}
+
+#[test]
 fn missing_directory_is_a_write_error() {
     let (_dir, path) = scratch("no/such/dir/out.csv");
     let e = write_curve_csv(&path, &[0.0], &[Point([0.0, 0.0])]).unwrap_err();
