@@ -9,7 +9,9 @@ Open CASCADE (cadquery-ocp) builds and writes the models: a box, a cylinder, a s
 cylinders) and the same plate with every face converted to NURBS, away from the origin; a box
 with every edge filleted (three blends meet on a sphere's pole at each corner), the same as
 NURBS and 10^4 away from the origin (meshed to OBJ there: STL's single precision is 1e-3 at
-10^4), and a box with five edges filleted (two fillets meet in a mitre). For each model and
+10^4), and a box with five edges filleted (two fillets meet in a mitre); the filleted box and
+the plate also as Open CASCADE's IGES (planes, entity 108, bounded in model space; faces that do
+not say their outside). For each model and
 two tolerances (1e-2 and 1e-3 of the model's size):
 - trimesh: `is_watertight` and `is_volume`; its volume within `T A` of Open CASCADE's (A the
   model's area: a mesh within T of every face encloses at most that much more or less) and its
@@ -102,6 +104,7 @@ def cases():
         ("filleted box", filleted, "step"),
         ("filleted box, NURBS", BRepBuilderAPI_NurbsConvert(filleted, True).Shape(), "step"),
         ("filleted box, far", filleted_box(corner=(1e4, 5.0, 7.0)), "step"),
+        ("filleted box, IGES", filleted, "iges"),
         ("box, five edges filleted", filleted_box((1.0, 2.0, 3.0), (3.0, 4.0, 5.0), 0.7, {0, 1, 2, 5, 8}), "step"),
         ("box", BRepPrimAPI_MakeBox(gp_Pnt(10.0, 20.0, 30.0), 4.0, 5.0, 6.0).Shape(), "step"),
         ("cylinder", BRepPrimAPI_MakeCylinder(axis, 2.0, 7.0).Shape(), "step"),
@@ -109,6 +112,7 @@ def cases():
         ("torus", BRepPrimAPI_MakeTorus(axis, 5.0, 1.5).Shape(), "step"),
         ("holed plate", plate, "step"),
         ("holed plate, NURBS", BRepBuilderAPI_NurbsConvert(plate, True).Shape(), "step"),
+        ("holed plate, IGES", plate, "iges"),
     ]
 
 

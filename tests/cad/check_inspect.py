@@ -135,8 +135,8 @@ def vase(skew=False):
 
 
 def cases():
-    """(name, shape, is_solid, formats). IGES gets the plate as NURBS faces (entity 128):
-    karkas does not read IGES's analytic planes (108). The NURBS plate's STEP holds its hole
+    """(name, shape, is_solid, formats). IGES gets the plate with its analytic planes (entity
+    108, bounded in model space) and as NURBS faces (entity 128). The NURBS plate's STEP holds its hole
     walls as periodic B-splines (unclamped knots), which karkas solves as cylinders. The torus and the vase reach IGES as
     surfaces of revolution (entity 120) of an arc and of a B-spline. IGES
     faces (entity 144) bound no solid: their distances are unsigned. The torus is one face
@@ -144,9 +144,9 @@ def cases():
     plate = holed_plate()
     torus = BRepPrimAPI_MakeTorus(gp_Ax2(gp_Pnt(1.0, 2.0, 3.0), gp_Dir(0.3, -0.2, 1.0)), 5.0, 1.5).Shape()
     return [
-        ("plate-holes", plate, True, ("step",)),
+        ("plate-holes", plate, True, ("step", "igs")),
         ("plate-holes-nurbs", BRepBuilderAPI_NurbsConvert(plate, True).Shape(), True, ("step", "igs")),
-        ("sphere", BRepPrimAPI_MakeSphere(gp_Pnt(1.0, 2.0, -3.0), 3.0).Shape(), True, ("step",)),
+        ("sphere", BRepPrimAPI_MakeSphere(gp_Pnt(1.0, 2.0, -3.0), 3.0).Shape(), True, ("step", "igs")),
         ("bspline-face", bspline_face(), False, ("step", "igs")),
         ("torus", torus, True, ("step", "igs")),
         ("vase", vase(), False, ("step", "igs")),

@@ -6,8 +6,8 @@
 //! - a surface grid: CSV with header `i,j,x,y,z` (a frame) or `u,v,x,y,z` (samples, `u`
 //!   outer, as the surface commands write them);
 //! - a curve: any other CSV or whitespace columns `x,y[,z]`, or an airfoil `.dat`;
-//! - a CAD model: `.step`, `.stp`, `.p21`, `.iges`, `.igs`, or standard input that starts as
-//!   STEP or IGES does (read by
+//! - a CAD model: `.step`, `.stp`, `.p21`, `.iges`, `.igs`, or any other input (standard
+//!   input, a pipe, a file named otherwise) that starts as STEP or IGES does (read by
 //!   `karkas_io::cad::read::read_cad`), meshed to the chordal tolerance `--tolerance`
 //!   (`karkas_io::mesh::shape_mesh`) and written as a mesh.
 //!
@@ -44,8 +44,9 @@ use std::path::{Path, PathBuf};
 /// Arguments of `karkas convert`.
 #[derive(Debug, Args)]
 pub struct ConvertArgs {
-    /// Input: a mesh (.obj .stl .ply), a grid CSV (i,j,x,y,z or u,v,x,y,z) or curve points
-    /// (CSV / columns x,y[,z], airfoil .dat).
+    /// Input: a mesh (.obj .stl .ply), a CAD model (.step .stp .p21 .iges .igs), a grid CSV
+    /// (i,j,x,y,z or u,v,x,y,z) or curve points (CSV / columns x,y[,z], airfoil .dat). An
+    /// input named otherwise (- for standard input, a pipe) is told by its first bytes.
     input: PathBuf,
     /// Output, by extension: .obj .stl .ply .vtk .vts .glb .html .svg .png .csv (which ones
     /// depend on the input, see karkas convert --help).
@@ -53,7 +54,7 @@ pub struct ConvertArgs {
     /// Write .stl and .ply as ASCII instead of binary.
     #[arg(long)]
     ascii: bool,
-    /// A CAD model (.step .stp .iges .igs): the largest distance of the mesh from the model's
+    /// A CAD model (STEP or IGES): the largest distance of the mesh from the model's
     /// faces, in the file's units (default: 1e-3 of the model's bounding-box diagonal).
     #[arg(long, value_name = "T")]
     tolerance: Option<f64>,
@@ -87,13 +88,6 @@ pub fn run(args: &ConvertArgs) -> Result<()> {
     let format = output_format(&args.output, &GRID_OUT)?;
     args.mesh.check(format)?;
     ensure_distinct(&args.input, &args.output)?;
-    let stdin = karkas_io::input::is_stdin(&args.input);
-    if args.tolerance.is_some() && !is_cad(&args.input) && !stdin {
-        bail!(
-            "--tolerance: only a CAD model (.step .stp .iges .igs) is meshed to a tolerance, not {}",
-            args.input.display()
-        );
-    }
     let input = read_input(&args.input, args.tolerance)?;
     check_allowed(&args.input, &input, format)?;
     check_memory(
@@ -186,33 +180,38 @@ fn write_any_mesh(
     Ok(write_triangle_mesh(output, format, mesh, options, title)?)
 }
 
-/// Reads `path` as a mesh, a grid or a curve (see the module docs). A text input (`-`:
-/// standard input) is read once: its header decides which reader parses the text. A CAD
-/// model is meshed to `tolerance` (see [`cad_mesh`]).
+/// Reads `path` as a mesh, a grid or a curve (see the module docs). A mesh or CAD extension
+/// decides the reader; any other input (standard input `-`, a pipe such as `<(cat m.step)`,
+/// a file named otherwise) is opened once and its first bytes decide: STEP or IGES, a mesh,
+/// else text whose header decides which reader parses it. A CAD model is meshed to
+/// `tolerance` (see [`cad_mesh`]); `tolerance` on any other input is refused.
 fn read_input(path: &Path, tolerance: Option<f64>) -> Result<Input> {
     let ext = extension(path);
-    if matches!(ext.as_deref(), Some("obj" | "stl" | "ply")) {
-        return Ok(Input::Mesh(read_mesh(path)?));
-    }
     if is_cad(path) {
         return Ok(Input::Mesh(cad_mesh(path, read_cad(path)?, tolerance)?));
     }
+    if tolerance.is_some() && matches!(ext.as_deref(), Some("obj" | "stl" | "ply")) {
+        bail!("{}", not_a_model(path));
+    }
+    if matches!(ext.as_deref(), Some("obj" | "stl" | "ply")) {
+        return Ok(Input::Mesh(read_mesh(path)?));
+    }
+    let name = display_name(path);
     let mut input = Source::open(path)?;
-    if karkas_io::input::is_stdin(path) {
-        let head = input.fill_buf().context("cannot read <stdin>")?;
-        if let Some(format) = cad_format_of(head) {
-            let model = read_cad_from(&display_name(path), format, &mut input)?;
-            return Ok(Input::Mesh(cad_mesh(path, model, tolerance)?));
-        }
-        if tolerance.is_some() {
-            bail!("--tolerance: only a CAD model (STEP or IGES) is meshed to a tolerance, not <stdin>");
-        }
-        if looks_like_a_mesh(&mut input)? {
-            return Ok(Input::Mesh(read_mesh_from(input, None)?));
-        }
+    let head = input
+        .fill_buf()
+        .with_context(|| format!("cannot read {}", name.display()))?;
+    if let Some(format) = cad_format_of(head) {
+        let model = read_cad_from(&name, format, &mut input)?;
+        return Ok(Input::Mesh(cad_mesh(path, model, tolerance)?));
+    }
+    if tolerance.is_some() {
+        bail!("{}", not_a_model(path));
+    }
+    if looks_like_a_mesh(&mut input)? {
+        return Ok(Input::Mesh(read_mesh_from(input, None)?));
     }
     let text = input.read_text()?;
-    let name = display_name(path);
     match csv_header(&text).as_deref() {
         Some(h) if h.contains(&"i".to_owned()) && h.contains(&"j".to_owned()) => {
             Ok(Input::Grid(parse_grid(&text, &name)?, true))
@@ -269,8 +268,17 @@ fn cad_mesh(path: &Path, model: CadModel, tolerance: Option<f64>) -> Result<Tria
     shape_mesh(&model.shape, tolerance).with_context(|| format!("cannot mesh {}", name.display()))
 }
 
-/// True when the first bytes of standard input (looked at, not consumed) are a mesh
-/// ([`karkas_io::mesh::is_mesh_prefix`]). Files are told by extension.
+/// The refusal of `--tolerance` on an input that is not a CAD model.
+fn not_a_model(path: &Path) -> String {
+    format!(
+        "--tolerance: only a CAD model (STEP or IGES: .step .stp .p21 .iges .igs, or content \
+         that starts as one does) is meshed to a tolerance, not {}",
+        display_name(path).display()
+    )
+}
+
+/// True when the first bytes of an input named by no mesh extension (looked at, not
+/// consumed) are a mesh ([`karkas_io::mesh::is_mesh_prefix`]).
 fn looks_like_a_mesh(input: &mut Source) -> Result<bool> {
     let name = input.name.clone();
     let prefix = input

@@ -24,6 +24,8 @@ use clap::{Args, ValueEnum};
 use karkas::param::BicubicSurface;
 use karkas::section::{cells_for_grid, Plane, Section, SectionOptions, Sectioner, MAX_CELLS};
 use karkas::{Point3, Surface};
+use karkas_io::cad::read::{read_cad, read_cad_if_model, CadModel};
+use karkas_io::input::display_name;
 use karkas_io::scene::{write_scene_png, write_scene_svg, Scene, SceneCurves, SceneMesh, View};
 use karkas_io::write::write_sections_csv;
 use karkas_io::OutputFormat;
@@ -61,7 +63,8 @@ pub struct SectionArgs {
     #[arg(value_name = "INPUT_GRID")]
     input: Option<PathBuf>,
     /// The surface to cut (needed for a grid or a curve network; a CAD model, INPUT_GRID
-    /// ending in .step, .stp, .p21, .iges or .igs, takes none: its faces are cut).
+    /// ending in .step, .stp, .p21, .iges or .igs, or without --method any input that
+    /// starts as STEP or IGES does, such as a pipe, takes none: its faces are cut).
     #[arg(long, value_enum)]
     method: Option<SurfaceMethod>,
     /// --method ll: --order, --interpolate; --method ll and bicubic: --closed-u, --closed-v.
@@ -185,16 +188,19 @@ pub fn run(args: &SectionArgs) -> Result<()> {
         }
     }
     let cuts = planes(args)?;
-    if let Some(model) = args.input.as_deref().filter(|p| is_cad(p)) {
-        check_model_options(args, format)?;
+    if let Some((path, model)) = model_input(args, format)? {
         let planes: Vec<(Plane<3>, String)> =
             cuts.into_iter().map(|c| (c.plane, c.label)).collect();
-        return cut_model(model, &args.output, args.tolerance, &planes);
+        return cut_model(path, &model, &args.output, args.tolerance, &planes);
     }
     let Some(method) = args.method else {
         bail!(
             "--method is needed: ll or bicubic for a grid, coons for a curve network (a CAD \
-             model, .step/.stp/.p21/.iges/.igs, takes none)"
+             model, STEP or IGES, takes none{})",
+            args.input.as_deref().map_or_else(String::new, |p| format!(
+                "; {} is neither",
+                display_name(p).display()
+            ))
         );
     };
     match (method, &args.input) {
@@ -204,6 +210,29 @@ pub fn run(args: &SectionArgs) -> Result<()> {
             "--method {} needs INPUT_GRID, the grid CSV to build the surface from",
             method.name()
         ),
+    }
+}
+
+/// The CAD model INPUT names, read: a model by its extension (the model options checked
+/// first), or, without `--method`, any input whose first bytes are STEP or IGES (standard
+/// input, a pipe, a file named otherwise); `None` for a grid or a network.
+fn model_input(args: &SectionArgs, format: OutputFormat) -> Result<Option<(&Path, CadModel)>> {
+    let Some(path) = args.input.as_deref() else {
+        return Ok(None);
+    };
+    if is_cad(path) {
+        check_model_options(args, format)?;
+        return Ok(Some((path, read_cad(path)?)));
+    }
+    if args.method.is_some() {
+        return Ok(None);
+    }
+    match read_cad_if_model(path)? {
+        Some(model) => {
+            check_model_options(args, format)?;
+            Ok(Some((path, model)))
+        }
+        None => Ok(None),
     }
 }
 

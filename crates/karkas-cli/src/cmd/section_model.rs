@@ -10,7 +10,7 @@ use anyhow::{bail, Context, Result};
 use karkas::section::Plane;
 use karkas::shape::{ShapeSection, ShapeSectioner};
 use karkas::Point3;
-use karkas_io::cad::read::read_cad;
+use karkas_io::cad::read::CadModel;
 use karkas_io::input::display_name;
 use karkas_io::write::write_sections_csv;
 use std::path::Path;
@@ -18,17 +18,17 @@ use std::path::Path;
 /// The smallest `--tolerance`, relative to the model's size (as for a grid's surface).
 const MIN_RELATIVE_TOLERANCE: f64 = 1e-12;
 
-/// Cuts the faces of the model `path` by the planes of `cuts` (each with how the user wrote
-/// it) and writes the pieces to `output`.
+/// Cuts the faces of `model`, read from `path`, by the planes of `cuts` (each with how the
+/// user wrote it) and writes the pieces to `output`.
 pub(super) fn cut_model(
     path: &Path,
+    model: &CadModel,
     output: &Path,
     tolerance: Option<f64>,
     cuts: &[(Plane<3>, String)],
 ) -> Result<()> {
-    let model = read_cad(path)?;
     let name = display_name(path);
-    faces_of_model(path, &model, "", "cut")?;
+    faces_of_model(path, model, "", "cut")?;
     let shape = &model.shape;
     let size = shape.size();
     if let Some(t) = tolerance {

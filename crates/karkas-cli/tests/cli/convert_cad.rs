@@ -222,11 +222,18 @@ fn rounded_box_distance(p: [f64; 3], lo: [f64; 3], hi: [f64; 3], r: f64) -> f64 
 #[test]
 fn a_filleted_box_meshes_closed_on_its_surface_with_its_exact_volume() {
     // Open CASCADE's box with every edge filleted (data/cad/README.md): three blends meet at
-    // each corner on a sphere's pole, and the fillets' cylinders end on its arcs.
-    let model = format!(
-        "{}/../../data/cad/filleted-box.step",
-        env!("CARGO_MANIFEST_DIR")
-    );
+    // each corner on a sphere's pole, and the fillets' cylinders end on its arcs. As IGES its
+    // flat sides are planes (entity 108) and its faces say nothing of their outside: the
+    // blends' surfaces run the other way round from the planes.
+    for name in ["filleted-box.step", "filleted-box.igs"] {
+        let model = format!("{}/../../data/cad/{name}", env!("CARGO_MANIFEST_DIR"));
+        filleted_box_meshes(&model);
+    }
+}
+
+/// The checks of [`a_filleted_box_meshes_closed_on_its_surface_with_its_exact_volume`] on
+/// the model file `model`.
+fn filleted_box_meshes(model: &str) {
     let (lo, hi, r) = ([-20.0, 5.0, 7.0], [-8.0, 13.0, 12.0], 1.5);
     let (a, b, c) = (12.0 - 2.0 * r, 8.0 - 2.0 * r, 5.0 - 2.0 * r);
     let pi = std::f64::consts::PI;
@@ -240,7 +247,7 @@ fn a_filleted_box_meshes_closed_on_its_surface_with_its_exact_volume() {
         let out = dir.path().join(format!("box-{tolerance}.obj"));
         let o = karkas(&[
             "convert",
-            &model,
+            model,
             s(&out),
             "--tolerance",
             &tolerance.to_string(),
@@ -255,18 +262,21 @@ fn a_filleted_box_meshes_closed_on_its_surface_with_its_exact_volume() {
             }
         }
         for (&(p, q), &n) in &sides {
-            assert_eq!(n, 1, "T {tolerance}: side {p}-{q} used {n} times one way");
+            assert_eq!(
+                n, 1,
+                "{model} T {tolerance}: side {p}-{q} used {n} times one way"
+            );
             assert_eq!(
                 sides.get(&(q, p)),
                 Some(&1),
-                "T {tolerance}: side {p}-{q} open"
+                "{model} T {tolerance}: side {p}-{q} open"
             );
         }
         for p in &v {
             let d = rounded_box_distance(*p, lo, hi, r);
             assert!(
                 d.abs() < 1e-9,
-                "T {tolerance}: vertex {p:?} {d:e} off the surface"
+                "{model} T {tolerance}: vertex {p:?} {d:e} off the surface"
             );
         }
         let mut enclosed = 0.0;
@@ -276,17 +286,93 @@ fn a_filleted_box_meshes_closed_on_its_surface_with_its_exact_volume() {
             let d = rounded_box_distance(mid, lo, hi, r);
             assert!(
                 d.abs() <= tolerance,
-                "T {tolerance}: side {p:?}-{q:?} {d:e} off"
+                "{model} T {tolerance}: side {p:?}-{q:?} {d:e} off"
             );
             enclosed += (p[0] * (q[1] * w[2] - q[2] * w[1]) - p[1] * (q[0] * w[2] - q[2] * w[0])
                 + p[2] * (q[0] * w[1] - q[1] * w[0]))
                 / 6.0;
         }
         // Outward winding, and no more volume missing than a layer of the tolerance.
-        assert!(enclosed > 0.0, "T {tolerance}: volume {enclosed}");
+        assert!(enclosed > 0.0, "{model} T {tolerance}: volume {enclosed}");
         assert!(
             (volume - enclosed).abs() <= tolerance * area,
-            "T {tolerance}: volume {enclosed} against {volume}"
+            "{model} T {tolerance}: volume {enclosed} against {volume}"
         );
     }
+}
+
+/// Runs `karkas ARGS` with `input` on standard input.
+fn karkas_fed(args: &[&str], input: &[u8]) -> std::process::Output {
+    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_karkas"))
+        .args(args)
+        .stdin(std::process::Stdio::piped())
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    use std::io::Write as _;
+    // The command may refuse before reading all of it: a broken pipe is its answer.
+    let _ = child.stdin.take().unwrap().write_all(input);
+    child.wait_with_output().unwrap()
+}
+
+#[test]
+fn a_model_or_mesh_named_by_no_known_extension_is_told_by_its_content() {
+    // A pipe (`<(cat m.step)` is /dev/fd/63), /dev/stdin, or a file named otherwise: STEP and
+    // IGES by their first bytes, as `-` is; the same mesh as from the file named .step/.igs.
+    let dir = temp_dir();
+    for name in ["square.step", "square.igs"] {
+        let model = square_model(dir.path(), name, [2.0, -1.0, 0.5]);
+        let direct = dir.path().join(format!("{name}.direct.obj"));
+        let o = karkas(&["convert", s(&model), s(&direct), "--tolerance", "1e-3"]);
+        assert!(o.status.success(), "{}", stderr(&o));
+        let renamed = dir.path().join(format!("{name}.model"));
+        std::fs::copy(&model, &renamed).unwrap();
+        let by_name = dir.path().join(format!("{name}.renamed.obj"));
+        let o = karkas(&["convert", s(&renamed), s(&by_name), "--tolerance", "1e-3"]);
+        assert!(o.status.success(), "{name}: {}", stderr(&o));
+        let piped = dir.path().join(format!("{name}.piped.obj"));
+        let text = std::fs::read(&model).unwrap();
+        let args = ["convert", "/dev/stdin", s(&piped), "--tolerance", "1e-3"];
+        let o = karkas_fed(&args, &text);
+        assert!(o.status.success(), "{name}: {}", stderr(&o));
+        let expected = read_obj(&direct);
+        assert!(!expected.1.is_empty());
+        assert_eq!(read_obj(&by_name), expected, "{name}");
+        assert_eq!(read_obj(&piped), expected, "{name}");
+    }
+    // A binary STL through a pipe is a mesh (it was read as curve points before).
+    let model = square_model(dir.path(), "square.step", [0.0; 3]);
+    let stl = dir.path().join("square.stl");
+    let o = karkas(&["convert", s(&model), s(&stl)]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let from_pipe = dir.path().join("from-pipe.obj");
+    let o = karkas_fed(
+        &["convert", "/dev/stdin", s(&from_pipe)],
+        &std::fs::read(&stl).unwrap(),
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_eq!(
+        read_obj(&from_pipe).1.len(),
+        read_obj(&model_mesh(&model, dir.path())).1.len()
+    );
+    // --tolerance on points through a pipe, and on a mesh, is refused naming the option.
+    let svg = dir.path().join("points.svg");
+    let args = ["convert", "/dev/stdin", s(&svg), "--tolerance", "1e-3"];
+    let o = karkas_fed(&args, b"x,y\n0,0\n1,1\n2,0\n");
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("--tolerance") && stderr(&o).contains("/dev/stdin"));
+    assert!(!svg.exists());
+    let obj = dir.path().join("again.obj");
+    let o = karkas(&["convert", s(&stl), s(&obj), "--tolerance", "1e-3"]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(!obj.exists());
+}
+
+/// The OBJ mesh of `model` at its default tolerance, written into `dir`.
+fn model_mesh(model: &Path, dir: &Path) -> PathBuf {
+    let out = dir.join("model-default.obj");
+    let o = karkas(&["convert", s(model), s(&out)]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    out
 }

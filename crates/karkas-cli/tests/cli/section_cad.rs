@@ -132,6 +132,47 @@ fn a_closed_body_exported_to_step_cuts_as_the_surface_of_its_grid() {
 }
 
 #[test]
+fn a_model_named_by_no_cad_extension_is_cut_when_no_method_is_given() {
+    // A pipe (`<(cat m.step)`), /dev/stdin or a file named otherwise: STEP and IGES told by
+    // their first bytes, cut as the file named .step/.igs is; with --method it is a grid.
+    let dir = temp_dir();
+    for name in ["square.step", "square.igs"] {
+        let model = square_model(dir.path(), name, [0.0; 3]);
+        let direct = dir.path().join(format!("{name}.csv"));
+        let o = karkas(&["section", s(&model), "--x", "1.25", "-o", s(&direct)]);
+        assert!(o.status.success(), "{name}: {}", stderr(&o));
+        let renamed = dir.path().join(format!("{name}.txt"));
+        std::fs::copy(&model, &renamed).unwrap();
+        let out = dir.path().join(format!("{name}.renamed.csv"));
+        let o = karkas(&["section", s(&renamed), "--x", "1.25", "-o", s(&out)]);
+        assert!(o.status.success(), "{name}: {}", stderr(&o));
+        assert_eq!(pieces(&out), pieces(&direct), "{name}");
+        let piped = dir.path().join(format!("{name}.piped.csv"));
+        let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_karkas"))
+            .args(["section", "/dev/stdin", "--x", "1.25", "-o", s(&piped)])
+            .stdin(std::process::Stdio::piped())
+            .stderr(std::process::Stdio::piped())
+            .spawn()
+            .unwrap();
+        use std::io::Write as _;
+        let text = std::fs::read(&model).unwrap();
+        child.stdin.take().unwrap().write_all(&text).unwrap();
+        let o = child.wait_with_output().unwrap();
+        assert!(o.status.success(), "{name}: {}", stderr(&o));
+        assert_eq!(pieces(&piped), pieces(&direct), "{name}");
+    }
+    // Text that is neither STEP nor IGES, without --method: the message names the input.
+    let out = dir.path().join("none.csv");
+    let points = write(dir.path(), "points.txt", "x,y\n0,0\n1,1\n");
+    assert_rejected(
+        &["section", s(&points), "--x", "0.5", "-o", s(&out)],
+        "points.txt is neither",
+        &out,
+        None,
+    );
+}
+
+#[test]
 fn options_that_build_a_surface_pictures_and_bad_tolerances_are_refused_for_a_model() {
     let dir = temp_dir();
     let model = square_model(dir.path(), "square.step", [0.0; 3]);

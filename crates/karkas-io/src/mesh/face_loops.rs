@@ -17,11 +17,11 @@ pub(crate) fn simplified(
     points: &[[f64; 2]],
     tolerance: f64,
 ) -> Vec<[f64; 2]> {
+    let (points, at) = without_jogs(s, points, JOG_IMAGE * tolerance);
     let n = points.len();
     if n < 4 {
-        return points.to_vec();
+        return points;
     }
-    let at: Vec<Point3> = points.iter().map(|p| s.eval(p[0], p[1])).collect();
     let far = (1..n)
         .max_by(|&a, &b| at[a].distance(at[0]).total_cmp(&at[b].distance(at[0])))
         .unwrap_or(n / 2);
@@ -59,6 +59,45 @@ pub(crate) fn simplified(
     }
     (0..n).filter(|&k| keep[k]).map(|k| points[k]).collect()
 }
+
+/// The points of the closed loop `points` with their images on `s`, less each point whose
+/// image lies within `same` of the last point kept and whose parameters differ from its by
+/// less than [`JOG`] of the domain: the end of one edge and the start of the next where a
+/// model written face by face (IGES) lets them miss each other by the writer's resolution
+/// (Open CASCADE's: 1e-7 to 2e-7 apart). Such a jog would be two corners a hair apart,
+/// which the faces around it cannot all share, and a sliver triangle between them; the
+/// points of a pole, one image over a stretch of parameters, are kept.
+fn without_jogs(
+    s: &NurbsSurface<3>,
+    points: &[[f64; 2]],
+    same: f64,
+) -> (Vec<[f64; 2]>, Vec<Point3>) {
+    let (du, dv) = (s.domain_u().length(), s.domain_v().length());
+    let jog = |a: ([f64; 2], Point3), b: ([f64; 2], Point3)| {
+        a.1.distance(b.1) <= same
+            && (a.0[0] - b.0[0]).abs() <= JOG * du
+            && (a.0[1] - b.0[1]).abs() <= JOG * dv
+    };
+    let mut kept: Vec<([f64; 2], Point3)> = Vec::with_capacity(points.len());
+    for &p in points {
+        let image = (p, s.eval(p[0], p[1]));
+        if kept.last().is_none_or(|&last| !jog(last, image)) {
+            kept.push(image);
+        }
+    }
+    // The loop closes: its last point against its first.
+    while kept.len() > 1 && jog(kept[kept.len() - 1], kept[0]) {
+        kept.pop();
+    }
+    kept.into_iter().unzip()
+}
+
+/// The share of a surface's parameter domain within which two loop points with one image are
+/// a jog of the model's edges, not a stretch of a pole.
+const JOG: f64 = 1e-6;
+/// The share of the tolerance within which the images of a jog's two points lie: far below
+/// what the mesh resolves.
+const JOG_IMAGE: f64 = 1e-3;
 
 /// The vertices of the closed polygon `at` (a loop's image on the surface) that must stay in
 /// its mesh: both ends of a run of vertices at one point (within `same`: a pole, where a

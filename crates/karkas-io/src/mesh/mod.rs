@@ -17,6 +17,7 @@ mod any_format;
 pub mod closed;
 pub(crate) mod error;
 mod face_loops;
+mod face_orientation;
 pub mod glb;
 pub(crate) mod normals;
 pub mod obj;

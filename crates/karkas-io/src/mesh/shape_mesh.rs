@@ -37,6 +37,9 @@
 //!   the nearest boundary segment of every other face that passes within the tolerance of it
 //!   and runs along one of its own boundary sides (the T-junctions closed,
 //!   [`super::shape_seams`]), so that a closed shell comes out watertight.
+//! - **One winding.** Faces that run a shared side the same way (an IGES solid, whose faces
+//!   do not say their outside) are turned to agree, and a closed part outward
+//!   ([`super::face_orientation`]).
 //!
 //! Written here rather than taken from a crate: no maintained Rust crate meshes trimmed NURBS
 //! faces; the triangulation itself is `spade`'s.
@@ -51,6 +54,7 @@ use spade::{
 };
 
 use crate::mesh::face_loops::{nodes_near_loops, simplified};
+use crate::mesh::face_orientation::orient_faces;
 use crate::mesh::shape_seams::{Soup, Tri};
 use crate::mesh::TriangleMesh;
 
@@ -145,6 +149,7 @@ pub fn shape_mesh(shape: &Shape, tolerance: f64) -> Result<TriangleMesh, ShapeMe
     soup.weld(weld);
     soup.snap_boundaries((SNAP * tolerance).max(weld));
     soup.close_t_junctions(tolerance.max(weld));
+    orient_faces(&soup.positions, &mut soup.triangles);
     Ok(TriangleMesh {
         positions: soup.positions,
         normals: Vec::new(),

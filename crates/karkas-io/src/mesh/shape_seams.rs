@@ -20,7 +20,7 @@ pub(crate) struct Soup {
 }
 
 /// A triangle and the face it came from.
-#[derive(Clone, Copy)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) struct Tri {
     pub(crate) corners: [u32; 3],
     pub(crate) face: usize,

@@ -1,6 +1,7 @@
 //! IGES 5.3 entities to a karkas [`Shape`]: circular arcs (100), composite curves (102),
-//! lines (110), rational B-spline curves (126) and surfaces (128), curves on a parametric
-//! surface (142) and trimmed surfaces (144), each through its transformation matrix (124).
+//! elliptic arcs (104, form 1: [`elliptic_conic`]), planes (108) under trimmed surfaces, lines (110), surfaces of revolution (120), rational
+//! B-spline curves (126) and surfaces (128), curves on a parametric surface (142) and trimmed
+//! surfaces (144), each through its transformation matrix (124).
 //!
 //! A trimmed surface becomes a [`Face`] whose loops are its boundaries: the model-space
 //! curves of each 142 as the edges, and its parameter-space curve, when given, as the loop's
@@ -19,18 +20,17 @@ use karkas::bspline::{NurbsCurve, NurbsSurface};
 use karkas::shape::{Edge, EdgeLoop, Face, Shape};
 use karkas::{Curve, Grid, Point3, Surface};
 
+use super::iges_plane::PlaneFrame;
 use super::iges_records::{read_records, Entry, Field, IgesFile};
 use super::model::{CadFormat, CadModel, LengthUnit, Unread};
 use crate::error::{IoError, Location};
 
 /// The entity types read.
-const READ: &[i64] = &[100, 102, 110, 120, 124, 126, 128, 142, 144];
+const READ: &[i64] = &[100, 102, 104, 108, 110, 120, 124, 126, 128, 142, 144];
 
 /// Geometric entity types karkas does not read, with their names.
 const UNREAD: &[(i64, &str)] = &[
-    (104, "conic arc"),
     (106, "copious data"),
-    (108, "plane"),
     (112, "parametric spline curve"),
     (114, "parametric spline surface"),
     (118, "ruled surface"),
@@ -275,6 +275,13 @@ impl<'a> Builder<'a> {
                 }
                 vec![line_segment(a, b, (0.0, length)).map_err(|m| p.error(m.to_string()))?]
             }
+            104 if p.entry.form == 1 => vec![elliptic_conic(&p)?],
+            104 => {
+                return Ok(Got::Skip(
+                    format!("entity 104 (conic arc) form {}", p.entry.form),
+                    "only the ellipse (form 1) is read",
+                ))
+            }
             126 => vec![self.bspline_curve(&p)?],
             102 => {
                 let n = p.count(1, 1 << 20)?;
@@ -513,27 +520,20 @@ impl<'a> Builder<'a> {
         let p = self.params(pointer, None)?;
         self.used.insert(pointer);
         let basis = p.int(1)?;
+        let kind = self.params(basis, Some(&p))?.entry.kind;
+        if kind == 108 {
+            return self.trimmed_plane(&p, basis);
+        }
         // A surface of revolution's parameters differ from IGES's: its loops are inverted.
-        let own_parameters = self.params(basis, Some(&p))?.entry.kind != 120;
+        let own_parameters = kind != 120;
         let surface = match self.surface(basis, &p)? {
             Got::Read(s) => s,
             Got::Skip(what, why) => return Ok(Got::Skip(what, why)),
         };
-        let n1 = p.int(2)?;
-        let n2 = p.count(3, 1 << 20)?;
-        let mut loops = Vec::new();
-        if n1 != 0 {
-            match self.boundary(p.int(4)?, &p, &surface, true, own_parameters)? {
-                Got::Read(l) => loops.push(l),
-                Got::Skip(what, why) => return Ok(Got::Skip(what, why)),
-            }
-        }
-        for i in 0..n2 {
-            match self.boundary(p.int(5 + i)?, &p, &surface, false, own_parameters)? {
-                Got::Read(l) => loops.push(l),
-                Got::Skip(what, why) => return Ok(Got::Skip(what, why)),
-            }
-        }
+        let loops = match self.loops(&p, &surface, own_parameters)? {
+            Got::Read(loops) => loops,
+            Got::Skip(what, why) => return Ok(Got::Skip(what, why)),
+        };
         Ok(Got::Read(Face {
             surface,
             loops,
@@ -542,9 +542,116 @@ impl<'a> Builder<'a> {
         }))
     }
 
+    /// Entity 144 on a plane (108): IGES gives a plane no parameters, so the loops are the
+    /// model-space curves and the surface the flat patch over them ([`PlaneFrame`]).
+    fn trimmed_plane(&mut self, p: &Params<'_>, basis: i64) -> Result<Got<Face>, IoError> {
+        self.enter(basis, p)?;
+        self.visiting.remove(&basis);
+        if p.int(2)? == 0 {
+            return Ok(Got::Skip(
+                "trimmed surfaces on entity 108 (plane) with no outer boundary".into(),
+                "a plane has no bounds of its own",
+            ));
+        }
+        let plane = self.params(basis, Some(p))?;
+        let coefficients = [1, 2, 3, 4].map(|i| plane.number(i));
+        let [a, b, c, d] = coefficients;
+        let map = self.transform(plane.entry, &plane)?;
+        let frame = PlaneFrame::new([a?, b?, c?, d?], |q| map.apply(q))
+            .ok_or_else(|| plane.error("a plane whose normal (A, B, C) is zero"))?;
+        // The loops do not depend on the surface when they are taken in model space.
+        let placeholder = frame
+            .patch([0.0, 1.0], [0.0, 1.0])
+            .ok_or_else(|| plane.error("a plane karkas cannot place"))?;
+        let loops = match self.loops(p, &placeholder, false)? {
+            Got::Read(loops) => loops,
+            Got::Skip(what, why) => return Ok(Got::Skip(what, why)),
+        };
+        let Some(surface) = frame.patch_over(&loops) else {
+            return Ok(Got::Skip(
+                "trimmed surfaces on entity 108 (plane) without an extent".into(),
+                "the face's loops span no area",
+            ));
+        };
+        Ok(Got::Read(Face {
+            surface,
+            loops,
+            same_sense: true,
+            bounds_solid: false,
+        }))
+    }
+
+    /// The outer and inner boundaries (142) of the trimmed surface `p` on `surface`.
+    fn loops(
+        &mut self,
+        p: &Params<'_>,
+        surface: &NurbsSurface<3>,
+        own_parameters: bool,
+    ) -> Result<Got<Vec<EdgeLoop>>, IoError> {
+        let n1 = p.int(2)?;
+        let n2 = p.count(3, 1 << 20)?;
+        let mut loops = Vec::new();
+        let outer = (n1 != 0).then_some(4);
+        for (slot, is_outer) in outer
+            .map(|s| (s, true))
+            .into_iter()
+            .chain((0..n2).map(|i| (5 + i, false)))
+        {
+            match self.boundary(p.int(slot)?, p, surface, is_outer, own_parameters)? {
+                Got::Read(l) => loops.push(l),
+                Got::Skip(what, why) => return Ok(Got::Skip(what, why)),
+            }
+        }
+        Ok(Got::Read(loops))
+    }
+
     fn skip(&mut self, what: String, why: &'static str) {
         *self.unread.entry((what, why)).or_insert(0) += 1;
     }
+}
+
+/// Entity 104 form 1, an elliptic arc of `A x^2 + B x y + C y^2 + D x + E y + F = 0` in the
+/// plane `z = ZT`, counter-clockwise from `(X1, Y1)` to `(X2, Y2)` (the whole ellipse when
+/// they coincide): its centre `c` solves `[2A B; B 2C] c = -(D, E)`, its axes are the
+/// eigenvectors of `[A B/2; B/2 C]` (the first at `atan2(B, A - C) / 2`), with semi-axes
+/// `sqrt(-Q(c) / λ)`, so the arc is `c + cos θ r1 v1 + sin θ r2 v2` with `v2` a quarter
+/// turn counter-clockwise from `v1`, exactly ([`elliptic_arc`]).
+fn elliptic_conic(p: &Params<'_>) -> Result<NurbsCurve<3>, IoError> {
+    let [a, b, c, d, e, f, zt, x1, y1, x2, y2] = [1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11]
+        .map(|i| p.number(i))
+        .into_iter()
+        .collect::<Result<Vec<f64>, _>>()?
+        .try_into()
+        .map_err(|_| p.error("an elliptic arc needs 11 parameters"))?;
+    let det = 4.0 * a * c - b * b;
+    let not_an_ellipse = || p.error("a conic arc of form 1 whose coefficients are not an ellipse");
+    if !(det > 0.0 && det.is_finite()) {
+        return Err(not_an_ellipse());
+    }
+    let (x0, y0) = ((-2.0 * c * d + b * e) / det, (b * d - 2.0 * a * e) / det);
+    let value = f + 0.5 * (d * x0 + e * y0);
+    let angle = 0.5 * b.atan2(a - c);
+    let (cos, sin) = (angle.cos(), angle.sin());
+    let l1 = a * cos * cos + b * cos * sin + c * sin * sin;
+    let l2 = a * sin * sin - b * cos * sin + c * cos * cos;
+    let (r1, r2) = ((-value / l1).sqrt(), (-value / l2).sqrt());
+    if !(r1 > 0.0 && r2 > 0.0 && r1.is_finite() && r2.is_finite()) {
+        return Err(not_an_ellipse());
+    }
+    let (v1, v2) = ([cos, sin], [-sin, cos]);
+    let theta = |x: f64, y: f64| {
+        let (dx, dy) = (x - x0, y - y0);
+        ((dx * v2[0] + dy * v2[1]) / r2).atan2((dx * v1[0] + dy * v1[1]) / r1)
+    };
+    let t0 = theta(x1, y1);
+    let mut t1 = theta(x2, y2);
+    while t1 <= t0 + 1e-12 {
+        t1 += std::f64::consts::TAU;
+    }
+    let centre = Point3::new([x0, y0, zt]);
+    let x = Point3::new([r1 * v1[0], r1 * v1[1], 0.0]);
+    let y = Point3::new([r2 * v2[0], r2 * v2[1], 0.0]);
+    elliptic_arc(centre, x, y, (t0, t1)).map_err(|m| p.error(m.to_string()))
 }
 
 /// Whether the surface's first and last lines in `u` (or `v`) coincide.
@@ -659,7 +766,11 @@ pub(crate) fn read_iges(name: &Path, reader: &mut dyn BufRead) -> Result<CadMode
                 Got::Read(s) => shape.faces.push(Face::whole(s)),
                 Got::Skip(what, why) => b.skip(what, why),
             },
-            100 | 102 | 110 | 126 => match b.curve(pointer, &from)? {
+            108 => b.skip(
+                "entity 108 (plane) outside a trimmed surface".into(),
+                "entity type not read",
+            ),
+            100 | 102 | 104 | 110 | 126 => match b.curve(pointer, &from)? {
                 Got::Read(mut c) => shape.curves.append(&mut c),
                 Got::Skip(what, why) => b.skip(what, why),
             },

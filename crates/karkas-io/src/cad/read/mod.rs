@@ -18,6 +18,7 @@
 
 mod analytic;
 mod iges_build;
+mod iges_plane;
 mod iges_records;
 mod model;
 mod step_args;
@@ -48,6 +49,22 @@ pub fn read_cad(path: &Path) -> Result<CadModel, IoError> {
     let name = display_name(path);
     let format = sniff(&name, &mut input)?;
     read_cad_from(&name, format, &mut input)
+}
+
+/// Reads `path` as a CAD model when its first bytes are STEP or IGES ([`cad_format_of`]),
+/// opening it once (so that a pipe such as `<(cat model.step)` or standard input, `-`, can be
+/// read); `Ok(None)` when they are neither, so that the caller may say what else it expected.
+///
+/// Errors: the input cannot be opened or read, or it is a malformed model (as
+/// [`read_cad`]).
+pub fn read_cad_if_model(path: &Path) -> Result<Option<CadModel>, IoError> {
+    let mut input = Input::open(path)?;
+    let name = display_name(path);
+    let head = input.fill_buf().map_err(IoError::open(&name))?;
+    match cad_format_of(head) {
+        Some(format) => read_cad_from(&name, format, &mut input).map(Some),
+        None => Ok(None),
+    }
 }
 
 /// Reads a CAD file of `format` from `reader`, named `name` in messages.
@@ -361,5 +378,158 @@ mod tests {
             .unwrap_err()
             .to_string()
             .contains("not a CAD file"));
+    }
+}
+
+#[cfg(test)]
+mod conic_tests {
+    use super::*;
+    use karkas::{Curve, Point3};
+
+    /// An IGES file of independent entities `(type, form, parameters without the type)`.
+    fn iges(entities: &[(i64, i64, String)]) -> String {
+        let line = |text: &str, letter: char, n: usize| format!("{text:72}{letter}{n:7}\n");
+        let mut out = line("", 'S', 1);
+        let global = "1H,,1H;,1Ht,1Ht,1Ht,1Ht,32,38,6,308,15,1Ht,1.,2,2HMM,1,0.01,\
+                      15H20260101.000000,1E-07,10.,1Ht,,11,0,15H20260101.000000;";
+        let globals: Vec<String> = global
+            .as_bytes()
+            .chunks(72)
+            .map(|c| String::from_utf8_lossy(c).into_owned())
+            .collect();
+        for (k, g) in globals.iter().enumerate() {
+            out += &line(g, 'G', k + 1);
+        }
+        let (mut directory, mut parameters) = (Vec::new(), Vec::new());
+        for (k, (kind, form, params)) in entities.iter().enumerate() {
+            let pointer = 2 * k + 1;
+            let text = format!("{kind},{params};");
+            let start = parameters.len() + 1;
+            let mut rest = text.as_str();
+            while !rest.is_empty() {
+                let cut = if rest.len() <= 64 {
+                    rest.len()
+                } else {
+                    rest[..64].rfind(',').map_or(64, |i| i + 1)
+                };
+                parameters.push(format!("{:64} {pointer:7}", &rest[..cut]));
+                rest = &rest[cut..];
+            }
+            let count = parameters.len() + 1 - start;
+            directory.push(format!(
+                "{kind:8}{start:8}{:8}{:8}{:8}{:8}{:8}{:8}00000000",
+                0, 0, 0, 0, 0, 0
+            ));
+            directory.push(format!("{kind:8}{:8}{:8}{count:8}{form:8}", 0, 0));
+        }
+        for (k, d) in directory.iter().enumerate() {
+            out += &line(d, 'D', k + 1);
+        }
+        for (k, p) in parameters.iter().enumerate() {
+            out += &line(p, 'P', k + 1);
+        }
+        let tail = format!(
+            "S{:7}G{:7}D{:7}P{:7}",
+            1,
+            globals.len(),
+            directory.len(),
+            parameters.len()
+        );
+        out + &line(&tail, 'T', 1)
+    }
+
+    #[test]
+    fn an_elliptic_arc_of_general_coefficients_is_read_exactly_and_counter_clockwise() {
+        // Centre (2, -1), semi-axes 3 and 1, the first turned 30 degrees, in z = 1.5; the arc
+        // from angle 0.3 to 2.0 about the centre's frame.
+        let (x0, y0, a, b, turn) = (2.0, -1.0, 3.0, 1.0, 30f64.to_radians());
+        let (c, s) = (turn.cos(), turn.sin());
+        let qa = c * c / (a * a) + s * s / (b * b);
+        let qb = 2.0 * c * s * (1.0 / (a * a) - 1.0 / (b * b));
+        let qc = s * s / (a * a) + c * c / (b * b);
+        let qd = -2.0 * qa * x0 - qb * y0;
+        let qe = -qb * x0 - 2.0 * qc * y0;
+        let qf = qa * x0 * x0 + qb * x0 * y0 + qc * y0 * y0 - 1.0;
+        let at = |t: f64| {
+            let (u, v) = (a * t.cos(), b * t.sin());
+            [x0 + c * u - s * v, y0 + s * u + c * v]
+        };
+        let (p, q, middle) = (at(0.3), at(2.0), at(1.15));
+        let params = format!(
+            "{qa:?},{qb:?},{qc:?},{qd:?},{qe:?},{qf:?},1.5,{:?},{:?},{:?},{:?}",
+            p[0], p[1], q[0], q[1]
+        );
+        // The same coefficients times -2 are the same ellipse.
+        let negated: Vec<String> = [qa, qb, qc, qd, qe, qf]
+            .iter()
+            .map(|x| format!("{:?}", -2.0 * x))
+            .collect();
+        let negated = format!(
+            "{},1.5,{:?},{:?},{:?},{:?}",
+            negated.join(","),
+            p[0],
+            p[1],
+            q[0],
+            q[1]
+        );
+        for text in [params, negated] {
+            let model = read_cad_from(
+                Path::new("e.igs"),
+                CadFormat::Iges,
+                &mut iges(&[(104, 1, text)]).as_bytes(),
+            )
+            .unwrap();
+            assert!(model.warning().is_none(), "{:?}", model.warning());
+            let curve = &model.shape.curves[0];
+            let d = curve.domain();
+            let ends = [curve.eval(d.start), curve.eval(d.end)];
+            assert!(
+                ends[0].distance(Point3::new([p[0], p[1], 1.5])) < 1e-12,
+                "{ends:?}"
+            );
+            assert!(
+                ends[1].distance(Point3::new([q[0], q[1], 1.5])) < 1e-12,
+                "{ends:?}"
+            );
+            let mut passes_middle = false;
+            for k in 0..=200 {
+                let r = curve.eval(d.uniform(k, 201));
+                let (x, y) = (r[0], r[1]);
+                let value = qa * x * x + qb * x * y + qc * y * y + qd * x + qe * y + qf;
+                assert!(value.abs() < 1e-12 && (r[2] - 1.5).abs() < 1e-15, "{r:?}");
+                passes_middle |= r.distance(Point3::new([middle[0], middle[1], 1.5])) < 0.05;
+            }
+            // Counter-clockwise from p to q: through the point at angle 1.15, not the
+            // other way round the ellipse.
+            assert!(passes_middle);
+        }
+    }
+
+    #[test]
+    fn other_conics_are_named_as_not_read_and_a_false_ellipse_is_refused() {
+        let hyperbola = "1.,0.,-1.,0.,0.,-1.,0.,1.,0.,2.,1.7320508075688772".to_string();
+        let model = read_cad_from(
+            Path::new("h.igs"),
+            CadFormat::Iges,
+            &mut iges(&[(104, 2, hyperbola.clone())]).as_bytes(),
+        )
+        .unwrap();
+        let warning = model.warning().unwrap_or_default();
+        assert!(
+            warning.contains("entity 104 (conic arc) form 2"),
+            "{warning}"
+        );
+        // Form 1 (ellipse) with a hyperbola's coefficients: an error naming the entry.
+        let error = read_cad_from(
+            Path::new("h.igs"),
+            CadFormat::Iges,
+            &mut iges(&[(104, 1, hyperbola)]).as_bytes(),
+        )
+        .unwrap_err()
+        .to_string();
+        assert!(
+            error.contains("not an ellipse") && error.contains("h.igs"),
+            "{error}"
+        );
     }
 }
