@@ -623,8 +623,15 @@ fn elliptic_conic(p: &Params<'_>) -> Result<NurbsCurve<3>, IoError> {
         .collect::<Result<Vec<f64>, _>>()?
         .try_into()
         .map_err(|_| p.error("an elliptic arc needs 11 parameters"))?;
-    let det = 4.0 * a * c - b * b;
     let not_an_ellipse = || p.error("a conic arc of form 1 whose coefficients are not an ellipse");
+    // The quadratic part scaled to order one: an ellipse of radius 1e150 has A = C = 1e-300,
+    // whose product would underflow.
+    let m = a.abs().max(b.abs()).max(c.abs());
+    if !(m > 0.0 && m.is_finite()) {
+        return Err(not_an_ellipse());
+    }
+    let [a, b, c, d, e, f] = [a, b, c, d, e, f].map(|x| x / m);
+    let det = 4.0 * a * c - b * b;
     if !(det > 0.0 && det.is_finite()) {
         return Err(not_an_ellipse());
     }

@@ -440,9 +440,17 @@ mod conic_tests {
 
     #[test]
     fn an_elliptic_arc_of_general_coefficients_is_read_exactly_and_counter_clockwise() {
+        for scale in [1.0, 1e-150, 1e150] {
+            elliptic_arc_at(scale);
+        }
+    }
+
+    /// The elliptic arc of the test above with every length times `scale`.
+    fn elliptic_arc_at(scale: f64) {
         // Centre (2, -1), semi-axes 3 and 1, the first turned 30 degrees, in z = 1.5; the arc
         // from angle 0.3 to 2.0 about the centre's frame.
-        let (x0, y0, a, b, turn) = (2.0, -1.0, 3.0, 1.0, 30f64.to_radians());
+        let (x0, y0, a, b, turn) = (2.0 * scale, -scale, 3.0 * scale, scale, 30f64.to_radians());
+        let zt = 1.5 * scale;
         let (c, s) = (turn.cos(), turn.sin());
         let qa = c * c / (a * a) + s * s / (b * b);
         let qb = 2.0 * c * s * (1.0 / (a * a) - 1.0 / (b * b));
@@ -456,7 +464,7 @@ mod conic_tests {
         };
         let (p, q, middle) = (at(0.3), at(2.0), at(1.15));
         let params = format!(
-            "{qa:?},{qb:?},{qc:?},{qd:?},{qe:?},{qf:?},1.5,{:?},{:?},{:?},{:?}",
+            "{qa:?},{qb:?},{qc:?},{qd:?},{qe:?},{qf:?},{zt:?},{:?},{:?},{:?},{:?}",
             p[0], p[1], q[0], q[1]
         );
         // The same coefficients times -2 are the same ellipse.
@@ -465,7 +473,7 @@ mod conic_tests {
             .map(|x| format!("{:?}", -2.0 * x))
             .collect();
         let negated = format!(
-            "{},1.5,{:?},{:?},{:?},{:?}",
+            "{},{zt:?},{:?},{:?},{:?},{:?}",
             negated.join(","),
             p[0],
             p[1],
@@ -484,11 +492,11 @@ mod conic_tests {
             let d = curve.domain();
             let ends = [curve.eval(d.start), curve.eval(d.end)];
             assert!(
-                ends[0].distance(Point3::new([p[0], p[1], 1.5])) < 1e-12,
+                ends[0].distance(Point3::new([p[0], p[1], zt])) < 1e-12 * scale,
                 "{ends:?}"
             );
             assert!(
-                ends[1].distance(Point3::new([q[0], q[1], 1.5])) < 1e-12,
+                ends[1].distance(Point3::new([q[0], q[1], zt])) < 1e-12 * scale,
                 "{ends:?}"
             );
             let mut passes_middle = false;
@@ -496,8 +504,11 @@ mod conic_tests {
                 let r = curve.eval(d.uniform(k, 201));
                 let (x, y) = (r[0], r[1]);
                 let value = qa * x * x + qb * x * y + qc * y * y + qd * x + qe * y + qf;
-                assert!(value.abs() < 1e-12 && (r[2] - 1.5).abs() < 1e-15, "{r:?}");
-                passes_middle |= r.distance(Point3::new([middle[0], middle[1], 1.5])) < 0.05;
+                assert!(
+                    value.abs() < 1e-12 && (r[2] - zt).abs() <= 1e-15 * scale,
+                    "{r:?}"
+                );
+                passes_middle |= r.distance(Point3::new([middle[0], middle[1], zt])) < 0.05 * scale;
             }
             // Counter-clockwise from p to q: through the point at angle 1.15, not the
             // other way round the ellipse.
