@@ -190,10 +190,10 @@ fn read_input(path: &Path, tolerance: Option<f64>) -> Result<Input> {
     if is_cad(path) {
         return Ok(Input::Mesh(cad_mesh(path, read_cad(path)?, tolerance)?));
     }
-    if tolerance.is_some() && matches!(ext.as_deref(), Some("obj" | "stl" | "ply")) {
-        bail!("{}", not_a_model(path));
-    }
     if matches!(ext.as_deref(), Some("obj" | "stl" | "ply")) {
+        if tolerance.is_some() {
+            bail!("{}", not_a_model(path));
+        }
         return Ok(Input::Mesh(read_mesh(path)?));
     }
     let name = display_name(path);

@@ -13,7 +13,7 @@
 //!
 //! Cost: O(triangles) with a hash map of the sides.
 
-use std::collections::{HashMap, VecDeque};
+use std::collections::{BTreeMap, HashMap, VecDeque};
 
 use karkas::Point3;
 
@@ -25,8 +25,9 @@ use super::shape_seams::Tri;
 pub(crate) fn orient_faces(positions: &[Point3], triangles: &mut [Tri]) {
     let sides = sides(triangles);
     let faces = triangles.iter().map(|t| t.face + 1).max().unwrap_or(0);
-    // Votes between pairs of faces: (same direction, opposite direction) over their sides.
-    let mut votes: HashMap<(usize, usize), (usize, usize)> = HashMap::new();
+    // Votes between pairs of faces: (same direction, opposite direction) over their sides,
+    // in the faces' order, so that the walk and the mesh are the same on every run.
+    let mut votes: BTreeMap<(usize, usize), (usize, usize)> = BTreeMap::new();
     for uses in sides.values().filter(|u| u.len() == 2) {
         let ((f, a), (g, b)) = (uses[0], uses[1]);
         if f == g {

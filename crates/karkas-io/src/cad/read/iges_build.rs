@@ -1,7 +1,8 @@
 //! IGES 5.3 entities to a karkas [`Shape`]: circular arcs (100), composite curves (102),
-//! elliptic arcs (104, form 1: [`elliptic_conic`]), planes (108) under trimmed surfaces, lines (110), surfaces of revolution (120), rational
-//! B-spline curves (126) and surfaces (128), curves on a parametric surface (142) and trimmed
-//! surfaces (144), each through its transformation matrix (124).
+//! elliptic arcs (104, form 1: [`elliptic_conic`]), planes (108) under trimmed surfaces,
+//! lines (110), surfaces of revolution (120), rational B-spline curves (126) and surfaces
+//! (128), curves on a parametric surface (142) and trimmed surfaces (144), each through its
+//! transformation matrix (124).
 //!
 //! A trimmed surface becomes a [`Face`] whose loops are its boundaries: the model-space
 //! curves of each 142 as the edges, and its parameter-space curve, when given, as the loop's
@@ -452,14 +453,15 @@ impl<'a> Builder<'a> {
         Ok(Got::Read(s.with_closed(whole, false)))
     }
 
-    /// Entity 142: the loop of model-space edges and the parameter-space curves.
+    /// Entity 142: the loop of model-space edges and the parameter-space curves. `surface` is
+    /// the surface whose parameters are IGES's; `None` for a plane (108) or a surface of
+    /// revolution (120), whose loops are taken in model space only.
     fn boundary(
         &mut self,
         pointer: i64,
         from: &Params<'_>,
-        surface: &NurbsSurface<3>,
+        surface: Option<&NurbsSurface<3>>,
         outer: bool,
-        own_parameters: bool,
     ) -> Result<Got<EdgeLoop>, IoError> {
         self.enter(pointer, from)?;
         self.visiting.remove(&pointer);
@@ -469,13 +471,18 @@ impl<'a> Builder<'a> {
         }
         let (b, c, pref) = (p.int(3)?, p.int(4)?, p.int(5)?);
         let mut parameter_curves = Vec::new();
-        if !own_parameters && c == 0 {
-            return Ok(Got::Skip(
-                "trimmed surfaces on entity 120 bounded in parameter space only".into(),
-                "the face's loop has no model-space curve",
-            ));
-        }
-        if b != 0 && pref != 2 && own_parameters {
+        let Some(surface) = surface else {
+            if c == 0 {
+                return Ok(Got::Skip(
+                    "trimmed surfaces on a plane (108) or a surface of revolution (120) \
+                     bounded in parameter space only"
+                        .into(),
+                    "the face's loop has no model-space curve",
+                ));
+            }
+            return self.model_loop(c, &p, outer);
+        };
+        if b != 0 && pref != 2 {
             match self.curve(b, &p)? {
                 Got::Read(pieces) => {
                     parameter_curves = pieces
@@ -515,6 +522,29 @@ impl<'a> Builder<'a> {
         }))
     }
 
+    /// A loop of the model-space curve `c` of the boundary `p` alone.
+    fn model_loop(
+        &mut self,
+        c: i64,
+        p: &Params<'_>,
+        outer: bool,
+    ) -> Result<Got<EdgeLoop>, IoError> {
+        Ok(match self.curve(c, p)? {
+            Got::Read(pieces) => Got::Read(EdgeLoop {
+                edges: pieces
+                    .into_iter()
+                    .map(|curve| Edge {
+                        curve,
+                        forward: true,
+                    })
+                    .collect(),
+                outer,
+                parameter_curves: Vec::new(),
+            }),
+            Got::Skip(what, why) => Got::Skip(what, why),
+        })
+    }
+
     /// Entity 144.
     fn trimmed(&mut self, pointer: i64) -> Result<Got<Face>, IoError> {
         let p = self.params(pointer, None)?;
@@ -525,12 +555,12 @@ impl<'a> Builder<'a> {
             return self.trimmed_plane(&p, basis);
         }
         // A surface of revolution's parameters differ from IGES's: its loops are inverted.
-        let own_parameters = kind != 120;
         let surface = match self.surface(basis, &p)? {
             Got::Read(s) => s,
             Got::Skip(what, why) => return Ok(Got::Skip(what, why)),
         };
-        let loops = match self.loops(&p, &surface, own_parameters)? {
+        let own = (kind != 120).then_some(&surface);
+        let loops = match self.loops(&p, own)? {
             Got::Read(loops) => loops,
             Got::Skip(what, why) => return Ok(Got::Skip(what, why)),
         };
@@ -559,11 +589,7 @@ impl<'a> Builder<'a> {
         let map = self.transform(plane.entry, &plane)?;
         let frame = PlaneFrame::new([a?, b?, c?, d?], |q| map.apply(q))
             .ok_or_else(|| plane.error("a plane whose normal (A, B, C) is zero"))?;
-        // The loops do not depend on the surface when they are taken in model space.
-        let placeholder = frame
-            .patch([0.0, 1.0], [0.0, 1.0])
-            .ok_or_else(|| plane.error("a plane karkas cannot place"))?;
-        let loops = match self.loops(p, &placeholder, false)? {
+        let loops = match self.loops(p, None)? {
             Got::Read(loops) => loops,
             Got::Skip(what, why) => return Ok(Got::Skip(what, why)),
         };
@@ -581,12 +607,12 @@ impl<'a> Builder<'a> {
         }))
     }
 
-    /// The outer and inner boundaries (142) of the trimmed surface `p` on `surface`.
+    /// The outer and inner boundaries (142) of the trimmed surface `p` (on `surface`, as for
+    /// [`Builder::boundary`]).
     fn loops(
         &mut self,
         p: &Params<'_>,
-        surface: &NurbsSurface<3>,
-        own_parameters: bool,
+        surface: Option<&NurbsSurface<3>>,
     ) -> Result<Got<Vec<EdgeLoop>>, IoError> {
         let n1 = p.int(2)?;
         let n2 = p.count(3, 1 << 20)?;
@@ -597,7 +623,7 @@ impl<'a> Builder<'a> {
             .into_iter()
             .chain((0..n2).map(|i| (5 + i, false)))
         {
-            match self.boundary(p.int(slot)?, p, surface, is_outer, own_parameters)? {
+            match self.boundary(p.int(slot)?, p, surface, is_outer)? {
                 Got::Read(l) => loops.push(l),
                 Got::Skip(what, why) => return Ok(Got::Skip(what, why)),
             }

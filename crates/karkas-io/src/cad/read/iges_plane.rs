@@ -81,7 +81,7 @@ impl PlaneFrame {
     }
 
     /// The bilinear patch `o + s e1 + t e2` over `s` in `[s0, s1]`, `t` in `[t0, t1]`.
-    pub(super) fn patch(&self, [s0, s1]: [f64; 2], [t0, t1]: [f64; 2]) -> Option<NurbsSurface<3>> {
+    fn patch(&self, [s0, s1]: [f64; 2], [t0, t1]: [f64; 2]) -> Option<NurbsSurface<3>> {
         let at = |s: f64, t: f64| self.origin + self.e1 * s + self.e2 * t;
         let corners = vec![at(s0, t0), at(s0, t1), at(s1, t0), at(s1, t1)];
         let control = Grid::from_row_major(2, 2, corners).ok()?;
